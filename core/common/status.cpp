@@ -1,0 +1,24 @@
+#include "common/status.h"
+
+namespace fog {
+
+const char* statusCodeName(StatusCode code) {
+  switch (code) {
+    case StatusCode::kOk: return "ok";
+    case StatusCode::kInvalidArgument: return "invalid argument";
+    case StatusCode::kOutOfRange: return "out of range";
+    case StatusCode::kInsufficientData: return "insufficient data";
+    case StatusCode::kCorruptData: return "corrupt data";
+    case StatusCode::kIoError: return "I/O error";
+    case StatusCode::kNotConverged: return "not converged";
+    case StatusCode::kInternal: return "internal error";
+  }
+  return "unknown";
+}
+
+std::string Status::toString() const {
+  if (isOk()) return "ok";
+  return std::string(statusCodeName(code_)) + ": " + message_;
+}
+
+}  // namespace fog

@@ -1,0 +1,163 @@
+#include "common/test_plan.h"
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "common/units.h"
+
+namespace fog {
+
+const char* axisName(Axis axis) {
+  switch (axis) {
+    case Axis::kX: return "x";
+    case Axis::kY: return "y";
+    case Axis::kZ: return "z";
+  }
+  return "?";
+}
+
+Result<Axis> parseAxis(std::string_view text) {
+  if (text == "x" || text == "X") return Axis::kX;
+  if (text == "y" || text == "Y") return Axis::kY;
+  if (text == "z" || text == "Z") return Axis::kZ;
+  return invalidArgument("axis must be x, y or z, not '" + std::string(text) + "'");
+}
+
+namespace {
+bool fail(std::string* error, const std::string& message) {
+  if (error) *error = message;
+  return false;
+}
+std::string num(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+}  // namespace
+
+bool TestPoint::isValid(const TurntableLimits& limits, std::string* error) const {
+  if (!std::isfinite(frequencyHz) || frequencyHz <= 0.0)
+    return fail(error, "frequency must be > 0 Hz, got " + num(frequencyHz));
+  if (frequencyHz > limits.maxFrequencyHz)
+    return fail(error, "frequency " + num(frequencyHz) + " Hz is beyond the table limit of " +
+                           num(limits.maxFrequencyHz) + " Hz");
+  if (!std::isfinite(amplitudeDeg) || amplitudeDeg <= 0.0)
+    return fail(error, "amplitude must be > 0 deg, got " + num(amplitudeDeg));
+  if (amplitudeDeg > limits.maxAmplitudeDeg)
+    return fail(error, "amplitude " + num(amplitudeDeg) + " deg is beyond the table limit of " +
+                           num(limits.maxAmplitudeDeg) + " deg");
+  const double w = kTwoPi * frequencyHz;
+  const double peakRate = w * amplitudeDeg;
+  if (peakRate > limits.maxRateDegPerS)
+    return fail(error, "peak rate " + num(peakRate) + " deg/s exceeds the table limit of " +
+                           num(limits.maxRateDegPerS) + " deg/s; lower the frequency or amplitude");
+  const double peakAccel = w * w * amplitudeDeg;
+  if (peakAccel > limits.maxAccelDegPerS2)
+    return fail(error, "peak acceleration " + num(peakAccel) + " deg/s^2 exceeds the table limit of " +
+                           num(limits.maxAccelDegPerS2) +
+                           " deg/s^2; lower the frequency or amplitude");
+  if (!std::isfinite(durationS) || durationS < 2.0 * periodS())
+    return fail(error, "duration " + num(durationS) + " s is under two swing periods (" +
+                           num(2.0 * periodS()) + " s); a delay needs at least two whole periods");
+  if (durationS > 24.0 * 3600.0)
+    return fail(error, "duration " + num(durationS) + " s is over 24 h; split the test into points");
+  if (!std::isfinite(settleS) || settleS < 0.0)
+    return fail(error, "settle time must be >= 0 s, got " + num(settleS));
+  if (!std::isfinite(startPhaseDeg)) return fail(error, "start phase must be finite");
+  return true;
+}
+
+bool TestPlan::isValid(const TurntableLimits& limits, std::string* error) const {
+  if (points.empty()) return fail(error, "the test plan has no test points");
+  if (!std::isfinite(restBetweenS) || restBetweenS < 0.0)
+    return fail(error, "rest time between points must be >= 0 s");
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    std::string why;
+    if (!points[i].isValid(limits, &why))
+      return fail(error, "test point " + std::to_string(i + 1) + ": " + why);
+  }
+  return true;
+}
+
+double TestPlan::totalDurationS() const {
+  double total = 0.0;
+  for (const auto& p : points) total += p.settleS + p.durationS + restBetweenS;
+  return total;
+}
+
+TestPlan TestPlan::paperSlow() {
+  TestPlan plan;
+  plan.points.push_back({Axis::kX, 0.1, 10.0, 294.0, 5.0, 0.0});
+  return plan;
+}
+
+TestPlan TestPlan::paperFast() {
+  TestPlan plan;
+  plan.points.push_back({Axis::kX, 1.0, 3.0, 60.0, 2.0, 0.0});
+  return plan;
+}
+
+Result<TestPlan> testPlanFromJson(std::string_view text) {
+  using nlohmann::json;
+  json doc = json::parse(text, nullptr, /*allow_exceptions=*/false);
+  if (doc.is_discarded()) return invalidArgument("the test plan is not valid JSON");
+  if (!doc.is_object() || !doc.contains("points") || !doc["points"].is_array())
+    return invalidArgument("the test plan needs a \"points\" array");
+  TestPlan plan;
+  for (auto it = doc.begin(); it != doc.end(); ++it) {
+    if (it.key() == "points") continue;
+    if (it.key() == "rest_between_s" && it->is_number()) {
+      plan.restBetweenS = it->get<double>();
+      continue;
+    }
+    return invalidArgument("unknown or non-numeric key \"" + it.key() + "\" in the test plan");
+  }
+  int index = 0;
+  for (const auto& p : doc["points"]) {
+    ++index;
+    const std::string where = "test point " + std::to_string(index) + ": ";
+    if (!p.is_object()) return invalidArgument(where + "must be an object");
+    TestPoint point;
+    double periods = 0.0;
+    for (auto it = p.begin(); it != p.end(); ++it) {
+      const std::string& key = it.key();
+      if (key == "axis") {
+        if (!it->is_string()) return invalidArgument(where + "\"axis\" must be \"x\", \"y\" or \"z\"");
+        auto axis = parseAxis(it->get<std::string>());
+        if (!axis) return invalidArgument(where + axis.status().message());
+        point.axis = *axis;
+        continue;
+      }
+      if (!it->is_number()) return invalidArgument(where + "\"" + key + "\" must be a number");
+      const double v = it->get<double>();
+      if (key == "frequency_hz") point.frequencyHz = v;
+      else if (key == "amplitude_deg") point.amplitudeDeg = v;
+      else if (key == "duration_s") point.durationS = v;
+      else if (key == "settle_s") point.settleS = v;
+      else if (key == "start_phase_deg") point.startPhaseDeg = v;
+      else if (key == "periods") periods = v;
+      else return invalidArgument(where + "unknown key \"" + key + "\"");
+    }
+    if (periods != 0.0) point.durationS = periods / point.frequencyHz;
+    plan.points.push_back(point);
+  }
+  return plan;
+}
+
+std::string testPlanToJson(const TestPlan& plan) {
+  nlohmann::json doc;
+  doc["rest_between_s"] = plan.restBetweenS;
+  doc["points"] = nlohmann::json::array();
+  for (const auto& p : plan.points) {
+    doc["points"].push_back({{"axis", axisName(p.axis)},
+                             {"frequency_hz", p.frequencyHz},
+                             {"amplitude_deg", p.amplitudeDeg},
+                             {"duration_s", p.durationS},
+                             {"settle_s", p.settleS},
+                             {"start_phase_deg", p.startPhaseDeg}});
+  }
+  return doc.dump(2);
+}
+
+}  // namespace fog

@@ -1,0 +1,62 @@
+#pragma once
+// The test plan: which axis swings, how, and for how long. Shared by the
+// simulator (which executes it), the analysis (which labels its results) and
+// the command line / GUI (which edit it).
+
+#include <array>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "common/status.h"
+
+namespace fog {
+
+enum class Axis { kX = 0, kY = 1, kZ = 2 };
+inline constexpr int kAxisCount = 3;
+const char* axisName(Axis axis);  // "x", "y", "z"
+Result<Axis> parseAxis(std::string_view text);
+
+// Mechanical limits of the turntable. Defaults describe a typical precision
+// three-axis table; a plan outside them is refused before a run starts.
+struct TurntableLimits {
+  double maxAmplitudeDeg = 45.0;
+  double maxFrequencyHz = 20.0;
+  double maxRateDegPerS = 400.0;        // peak 2*pi*f*A
+  double maxAccelDegPerS2 = 3000.0;     // peak (2*pi*f)^2*A
+};
+
+// One sinusoidal swing: angle = amplitude * sin(2*pi*f*(t - t_start) + startPhase).
+struct TestPoint {
+  Axis axis = Axis::kX;
+  double frequencyHz = 0.1;
+  double amplitudeDeg = 10.0;
+  double durationS = 294.0;  // recorded time after settling
+  double settleS = 5.0;      // swing time before recording starts
+  double startPhaseDeg = 0.0;
+
+  double periodS() const { return 1.0 / frequencyHz; }
+  // Empty when valid; otherwise what is wrong and what to do.
+  bool isValid(const TurntableLimits& limits, std::string* error) const;
+};
+
+struct TestPlan {
+  std::vector<TestPoint> points;
+  double restBetweenS = 1.0;  // table at rest between test points
+
+  bool isValid(const TurntableLimits& limits, std::string* error) const;
+  double totalDurationS() const;
+
+  // The paper's two conditions on the X axis: 0.1 Hz / 10 deg for 4.9 min and
+  // 1 Hz / 3 deg.
+  static TestPlan paperSlow();  // 0.1 Hz / 10 deg, 294 s
+  static TestPlan paperFast();  // 1 Hz / 3 deg, 60 s
+};
+
+// JSON plan file: {"points":[{"axis":"x","frequency_hz":0.1,"amplitude_deg":10,
+// "duration_s":294,"settle_s":5}], "rest_between_s":1}. Unknown keys are
+// refused so that a typo is not silently ignored.
+Result<TestPlan> testPlanFromJson(std::string_view json);
+std::string testPlanToJson(const TestPlan& plan);
+
+}  // namespace fog

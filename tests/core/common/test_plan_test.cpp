@@ -1,0 +1,75 @@
+#include "common/test_plan.h"
+
+#include <gtest/gtest.h>
+
+namespace fog {
+namespace {
+
+TEST(TestPlan, PaperConditionsAreValid) {
+  std::string why;
+  EXPECT_TRUE(TestPlan::paperSlow().isValid(TurntableLimits{}, &why)) << why;
+  EXPECT_TRUE(TestPlan::paperFast().isValid(TurntableLimits{}, &why)) << why;
+}
+
+TEST(TestPlan, RefusesNonPositiveFrequencyAndAmplitude) {
+  TestPoint p;
+  std::string why;
+  p.frequencyHz = 0.0;
+  EXPECT_FALSE(p.isValid(TurntableLimits{}, &why));
+  EXPECT_NE(why.find("frequency must be > 0"), std::string::npos) << why;
+  p = TestPoint{};
+  p.amplitudeDeg = -1.0;
+  EXPECT_FALSE(p.isValid(TurntableLimits{}, &why));
+  EXPECT_NE(why.find("amplitude must be > 0"), std::string::npos) << why;
+}
+
+TEST(TestPlan, RefusesDurationUnderTwoPeriods) {
+  TestPoint p;
+  p.frequencyHz = 0.1;
+  p.durationS = 19.9;
+  std::string why;
+  EXPECT_FALSE(p.isValid(TurntableLimits{}, &why));
+  EXPECT_NE(why.find("under two swing periods"), std::string::npos) << why;
+  p.durationS = 20.0;
+  EXPECT_TRUE(p.isValid(TurntableLimits{}, &why)) << why;
+}
+
+TEST(TestPlan, RefusesMotionBeyondTableLimits) {
+  TestPoint p;
+  p.frequencyHz = 10.0;
+  p.amplitudeDeg = 10.0;  // 628 deg/s peak
+  p.durationS = 10.0;
+  std::string why;
+  EXPECT_FALSE(p.isValid(TurntableLimits{}, &why));
+  EXPECT_NE(why.find("peak rate"), std::string::npos) << why;
+}
+
+TEST(TestPlan, JsonRoundTrip) {
+  TestPlan plan = TestPlan::paperSlow();
+  plan.points.push_back({Axis::kZ, 1.0, 3.0, 60.0, 2.0, 0.0});
+  auto back = testPlanFromJson(testPlanToJson(plan));
+  ASSERT_TRUE(back.isOk()) << back.status().toString();
+  ASSERT_EQ(back->points.size(), 2u);
+  EXPECT_EQ(back->points[1].axis, Axis::kZ);
+  EXPECT_DOUBLE_EQ(back->points[1].frequencyHz, 1.0);
+  EXPECT_DOUBLE_EQ(back->points[0].durationS, 294.0);
+}
+
+TEST(TestPlan, JsonPeriodsSetDuration) {
+  auto plan = testPlanFromJson(R"({"points":[{"periods":30,"frequency_hz":0.5}]})");
+  ASSERT_TRUE(plan.isOk()) << plan.status().toString();
+  EXPECT_DOUBLE_EQ(plan->points[0].durationS, 60.0);
+}
+
+TEST(TestPlan, JsonErrorsSayWhatIsWrong) {
+  EXPECT_EQ(testPlanFromJson("{").status().code(), StatusCode::kInvalidArgument);
+  auto typo = testPlanFromJson(R"({"points":[{"frequncy_hz":1}]})");
+  ASSERT_FALSE(typo.isOk());
+  EXPECT_NE(typo.status().message().find("frequncy_hz"), std::string::npos);
+  auto axis = testPlanFromJson(R"({"points":[{"axis":"w"}]})");
+  ASSERT_FALSE(axis.isOk());
+  EXPECT_NE(axis.status().message().find("axis"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace fog
