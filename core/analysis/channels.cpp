@@ -1,0 +1,123 @@
+#include "analysis/channels.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace fog::analysis {
+
+void GyroChannel::setNoise(double qDeg2PerS, double s2Deg2) {
+  arwVarianceDeg2PerS = qDeg2PerS;
+  quantisationVarianceDeg2 = s2Deg2;
+  const std::size_t n = size();
+  cholDiag.assign(n, 0.0);
+  cholSub.assign(n, 0.0);
+  for (std::size_t k = 0; k < n; ++k) {
+    const double diag = qDeg2PerS * (endS[k] - startS[k]) + 2.0 * s2Deg2;
+    double sub = 0.0;
+    if (k > 0 && continuesPrevious[k]) sub = -s2Deg2 / cholDiag[k - 1];
+    cholSub[k] = sub;
+    cholDiag[k] = std::sqrt(std::max(diag - sub * sub, 1e-30));
+  }
+}
+
+void GyroChannel::whiten(double* x, std::size_t stride) const {
+  const std::size_t n = size();
+  double previous = 0.0;
+  for (std::size_t k = 0; k < n; ++k) {
+    double& v = x[k * stride];
+    v = (v - cholSub[k] * previous) / cholDiag[k];
+    previous = v;
+  }
+}
+
+void estimateGyroNoise(GyroChannel& gyro, const std::vector<double>& r) {
+  const std::size_t n = r.size();
+  double g0 = 0.0, g1 = 0.0;
+  std::size_t n1 = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    g0 += r[k] * r[k];
+    if (k > 0 && gyro.continuesPrevious[k]) {
+      g1 += r[k] * r[k - 1];
+      ++n1;
+    }
+  }
+  g0 /= static_cast<double>(std::max<std::size_t>(n, 1));
+  g1 = n1 ? g1 / static_cast<double>(n1) : 0.0;
+  // g0 = q*dt + 2*s2 and g1 = -s2 for this noise model.
+  const double s2 = std::max(-g1, 0.0);
+  const double white = std::max(g0 - 2.0 * s2, 1e-6 * g0);
+  gyro.setNoise(white / gyro.framePeriodS, s2);
+}
+
+namespace {
+double median(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
+  return v[v.size() / 2];
+}
+}  // namespace
+
+Result<Channels> makeChannels(const TestPointData& data, double incrementScale) {
+  const int axis = static_cast<int>(data.axis);
+  if (data.table.size() < 16 || data.imu.size() < 16)
+    return insufficientData("test point " + std::to_string(data.index + 1) + " has " +
+                            std::to_string(data.table.size()) + " table and " +
+                            std::to_string(data.imu.size()) +
+                            " IMU samples; a delay needs at least two whole swing periods of both");
+  Channels ch;
+  ch.axis = axis;
+  ch.startS = std::max(data.table.front().timeS, data.imu.front().timeS);
+  ch.endS = std::min(data.table.back().timeS, data.imu.back().timeS);
+  if (!(ch.endS > ch.startS))
+    return insufficientData("table and IMU samples of test point " + std::to_string(data.index + 1) +
+                            " do not overlap in time");
+  ch.referenceS = 0.5 * (ch.startS + ch.endS);
+
+  ch.table.timeS.reserve(data.table.size());
+  ch.table.angleDeg.reserve(data.table.size());
+  for (const auto& s : data.table) {
+    if (!std::isfinite(s.timeS) || !std::isfinite(s.angleDeg[axis])) continue;
+    ch.table.timeS.push_back(s.timeS - ch.referenceS);
+    ch.table.angleDeg.push_back(s.angleDeg[axis]);
+  }
+
+  std::vector<double> intervals;
+  intervals.reserve(data.imu.size());
+  for (std::size_t k = 1; k < data.imu.size(); ++k)
+    if (data.imu[k].lostBefore == 0) intervals.push_back(data.imu[k].timeS - data.imu[k - 1].timeS);
+  GyroChannel& g = ch.gyro;
+  g.framePeriodS = median(intervals);
+  if (!(g.framePeriodS > 0.0)) return corruptData("IMU frame times do not increase");
+
+  const std::size_t n = data.imu.size() - 1;
+  g.startS.reserve(n);
+  g.endS.reserve(n);
+  g.incrementDeg.reserve(n);
+  g.continuesPrevious.reserve(n);
+  // The first frame only marks where integration starts: its increment
+  // belongs to an interval before the record.
+  for (std::size_t k = 1; k < data.imu.size(); ++k) {
+    const auto& s = data.imu[k];
+    const bool continuous = s.lostBefore == 0;
+    const double end = s.timeS - ch.referenceS;
+    // After lost frames the interval started one frame period earlier, at the
+    // lost frame's sample; its exact stamp is unknown.
+    const double start = continuous ? data.imu[k - 1].timeS - ch.referenceS : end - g.framePeriodS;
+    g.lostFrames += s.lostBefore;
+    g.startS.push_back(start);
+    g.endS.push_back(end);
+    g.incrementDeg.push_back(s.incrementDeg[axis] * incrementScale);
+    g.continuesPrevious.push_back(continuous && !g.continuesPrevious.empty());
+  }
+  return ch;
+}
+
+std::vector<double> cumulativeGyroAngle(const GyroChannel& gyro) {
+  std::vector<double> out(gyro.size());
+  double sum = 0.0;
+  for (std::size_t k = 0; k < gyro.size(); ++k) out[k] = (sum += gyro.incrementDeg[k]);
+  return out;
+}
+
+}  // namespace fog::analysis

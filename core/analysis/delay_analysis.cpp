@@ -1,0 +1,295 @@
+#include "analysis/delay_analysis.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "analysis/statistics.h"
+#include "common/units.h"
+
+namespace fog::analysis {
+
+namespace {
+
+std::string fmt(double v, int precision = 4) {
+  std::ostringstream s;
+  s.setf(std::ios::fixed);
+  s.precision(precision);
+  s << v;
+  return s.str();
+}
+
+// Linear fits over one window of samples at a fixed frequency, for the
+// per-period track; returns the phase angle psi of a*sin + b*cos.
+bool windowPhase(const TableChannel& table, std::size_t i0, std::size_t i1, double w, double& psi) {
+  Eigen::Matrix3d xtx = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d xty = Eigen::Vector3d::Zero();
+  for (std::size_t i = i0; i < i1; ++i) {
+    const Eigen::Vector3d x(std::sin(w * table.timeS[i]), std::cos(w * table.timeS[i]), 1.0);
+    xtx.noalias() += x * x.transpose();
+    xty.noalias() += x * table.angleDeg[i];
+  }
+  if (i1 - i0 < 8) return false;
+  const Eigen::Vector3d p = xtx.ldlt().solve(xty);
+  psi = std::atan2(p[1], p[0]);
+  return true;
+}
+
+bool windowPhase(const GyroChannel& g, std::size_t k0, std::size_t k1, double w, double& psi) {
+  Eigen::Matrix3d xtx = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d xty = Eigen::Vector3d::Zero();
+  for (std::size_t k = k0; k < k1; ++k) {
+    const double t1 = g.endS[k], t0 = g.startS[k];
+    const Eigen::Vector3d x(std::sin(w * t1) - std::sin(w * t0), std::cos(w * t1) - std::cos(w * t0), t1 - t0);
+    xtx.noalias() += x * x.transpose();
+    xty.noalias() += x * g.incrementDeg[k];
+  }
+  if (k1 - k0 < 8) return false;
+  const Eigen::Vector3d p = xtx.ldlt().solve(xty);
+  psi = std::atan2(p[1], p[0]);
+  return true;
+}
+
+std::vector<PeriodDelay> periodTrack(const Channels& ch, double w, double referenceS) {
+  std::vector<PeriodDelay> out;
+  const double period = kTwoPi / w;
+  const auto& tt = ch.table.timeS;
+  const auto& ge = ch.gyro.endS;
+  const double first = std::max(tt.front(), ch.gyro.startS.front());
+  const double last = std::min(tt.back(), ge.back());
+  const int count = static_cast<int>(std::floor((last - first) / period));
+  std::size_t i = 0, k = 0;
+  for (int j = 0; j < count; ++j) {
+    const double a = first + j * period, b = a + period;
+    while (i < tt.size() && tt[i] < a) ++i;
+    std::size_t i1 = i;
+    while (i1 < tt.size() && tt[i1] < b) ++i1;
+    while (k < ge.size() && ch.gyro.startS[k] < a) ++k;
+    std::size_t k1 = k;
+    while (k1 < ge.size() && ge[k1] <= b) ++k1;
+    double psiT = 0.0, psiG = 0.0;
+    if (windowPhase(ch.table, i, i1, w, psiT) && windowPhase(ch.gyro, k, k1, w, psiG))
+      out.push_back({referenceS + 0.5 * (a + b), wrapToHalfPeriod((psiT - psiG) / w, period) * 1e3});
+    i = i1;
+    k = k1;
+  }
+  return out;
+}
+
+}  // namespace
+
+DelayBreakdown delayBreakdown(double lagMs, double lagStdMs, const BenchConstants& constants) {
+  DelayBreakdown b;
+  b.lagMs = lagMs;
+  b.lagStdMs = lagStdMs;
+  b.imuDelayMs = lagMs + constants.tableReadDelayMs;
+  b.imuDelayStdMs = std::hypot(lagStdMs, constants.tableReadDelayStdMs);
+  b.gyroDelayMs = b.imuDelayMs - constants.boardDelayMs;
+  b.gyroDelayStdMs = std::hypot(b.imuDelayStdMs, constants.boardDelayStdMs);
+  return b;
+}
+
+double lagFromPhasesMs(double tablePhaseMs, double gyroPhaseMs, double periodMs) {
+  return wrapToHalfPeriod(gyroPhaseMs - tablePhaseMs, periodMs);
+}
+
+Result<double> estimateSwingFrequencyHz(const TableChannel& table) {
+  const auto& y = table.angleDeg;
+  if (y.size() < 8) return insufficientData("too few table samples to find the swing frequency");
+  const auto [lo, hi] = std::minmax_element(y.begin(), y.end());
+  const double mid = 0.5 * (*lo + *hi), hysteresis = 0.25 * (*hi - *lo);
+  if (!(hysteresis > 0.0)) return insufficientData("the table did not move on the swing axis");
+  // Upward zero crossings of (y - mid), armed only after y went below -hysteresis.
+  std::vector<double> crossings;
+  bool armed = false;
+  for (std::size_t i = 1; i < y.size(); ++i) {
+    if (y[i] - mid < -hysteresis) armed = true;
+    if (armed && y[i - 1] - mid < 0.0 && y[i] - mid >= 0.0) {
+      const double f = (mid - y[i - 1]) / (y[i] - y[i - 1]);
+      crossings.push_back(table.timeS[i - 1] + f * (table.timeS[i] - table.timeS[i - 1]));
+      armed = false;
+    }
+  }
+  if (crossings.size() < 3)
+    return insufficientData("the table angle shows fewer than two whole swing periods");
+  const double period = (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1);
+  return 1.0 / period;
+}
+
+double lagCramerRaoBoundS(double w, double recordS, double tableAmplitudeDeg, double tableIntervalS,
+                          double tableNoiseDeg, double gyroAmplitudeDeg, double gyroIntervalS,
+                          double gyroQuantisationVarDeg2, double gyroArwVarDeg2PerS) {
+  // One-sided angle-noise densities at the swing frequency (deg^2/Hz): white
+  // noise sigma^2 sampled every dt gives 2*sigma^2*dt; an angle random walk of
+  // rate variance q gives 2*q/w^2. Phase variance = S/(A^2*T); lag = phase/w.
+  const double sTable = 2.0 * tableNoiseDeg * tableNoiseDeg * tableIntervalS;
+  const double sGyro = 2.0 * gyroQuantisationVarDeg2 * gyroIntervalS + 2.0 * gyroArwVarDeg2PerS / (w * w);
+  const double var = (sTable / (tableAmplitudeDeg * tableAmplitudeDeg) +
+                      sGyro / (gyroAmplitudeDeg * gyroAmplitudeDeg)) /
+                     (recordS * w * w);
+  return std::sqrt(var);
+}
+
+Result<TestPointResult> analyzeTestPoint(const TestPointData& data, double incrementScale,
+                                         const BenchConstants& constants) {
+  auto channels = makeChannels(data, incrementScale);
+  if (!channels) return channels.status();
+  Channels& ch = *channels;
+  TestPointResult r;
+  r.index = data.index;
+  r.axis = data.axis;
+  r.durationS = ch.endS - ch.startS;
+  r.tableSamples = ch.table.timeS.size();
+  r.imuSamples = data.imu.size();
+  r.lostImuFrames = ch.gyro.lostFrames;
+
+  // Nominal frequency: what the plan said, checked against the data.
+  auto measured = estimateSwingFrequencyHz(ch.table);
+  if (!measured) return measured.status();
+  double f0 = data.nominalFrequencyHz > 0.0 ? data.nominalFrequencyHz : *measured;
+  if (std::abs(*measured / f0 - 1.0) > 0.01) {
+    r.warnings.push_back("the table swung at " + fmt(*measured, 5) + " Hz, not the planned " + fmt(f0, 5) +
+                         " Hz; fitting from the measured frequency");
+    f0 = *measured;
+  }
+  r.nominalFrequencyHz = f0;
+  r.periods = r.durationS * f0;
+  if (r.periods < 2.0)
+    return insufficientData("test point " + std::to_string(data.index + 1) + " covers " + fmt(r.periods, 2) +
+                            " swing periods; a delay needs at least two whole periods");
+  const double w0 = kTwoPi * f0;
+
+  // 1. 3-parameter fits at the nominal frequency (gyro: OLS first, to learn its noise).
+  r.tableNominal = fitTableLinear(ch.table, w0, ch.referenceS);
+  ch.table.noiseDeg = std::max(r.tableNominal.residualRmsDeg, 1e-12);
+  estimateGyroNoise(ch.gyro, gyroIncrementResiduals(ch.gyro, fitGyroLinear(ch.gyro, w0, ch.referenceS, false)));
+  r.gyroNominal = fitGyroLinear(ch.gyro, w0, ch.referenceS, true);
+
+  // 2. 4-parameter fits, frequency free; noise re-estimated from the better fits.
+  auto table4 = fitTableNonlinear(ch.table, r.tableNominal);
+  if (!table4) return table4.status();
+  ch.table.noiseDeg = std::max(table4->residualRmsDeg, 1e-12);
+  estimateGyroNoise(ch.gyro, gyroIncrementResiduals(
+                                 ch.gyro, fitGyroLinear(ch.gyro, table4->omegaRadPerS, ch.referenceS, true)));
+  auto gyro4 = fitGyroNonlinear(ch.gyro, r.gyroNominal);
+  if (!gyro4) return gyro4.status();
+  r.tableFit = *table4;
+  r.gyroFit = *gyro4;
+  // The cumulative gyro angle's offset, for plots that overlay the fit.
+  {
+    const auto angle = cumulativeGyroAngle(ch.gyro);
+    double sum = 0.0;
+    const double w = r.gyroFit.omegaRadPerS;
+    for (std::size_t k = 0; k < angle.size(); ++k) {
+      const double t = ch.gyro.endS[k];
+      sum += angle[k] - (r.gyroFit.a * std::sin(w * t) + r.gyroFit.b * std::cos(w * t) + r.gyroFit.trendDegPerS * t);
+    }
+    r.gyroFit.offsetDeg = sum / static_cast<double>(angle.size());
+  }
+
+  // 3. Joint fit: one frequency, the delay as a parameter.
+  auto joint = fitJoint(ch, r.tableFit, r.gyroFit);
+  if (!joint) return joint.status();
+  r.joint = *joint;
+  r.lagMs = joint->lagS * 1e3;
+  r.lagStdMs = joint->lagStdS * 1e3;
+
+  // Noise and the bound.
+  r.noise.tableNoiseDeg = ch.table.noiseDeg;
+  r.noise.gyroQuantisationDeg = std::sqrt(ch.gyro.quantisationVarianceDeg2);
+  r.noise.gyroArwDegPerSqrtH = std::sqrt(ch.gyro.arwVarianceDeg2PerS) * 60.0;
+  const double tableInterval = r.durationS / static_cast<double>(std::max<std::size_t>(r.tableSamples - 1, 1));
+  const double amplitude = std::hypot(joint->a, joint->b);
+  r.crlbMs = 1e3 * lagCramerRaoBoundS(joint->omegaRadPerS, r.durationS, amplitude, tableInterval,
+                                      ch.table.noiseDeg, amplitude * std::abs(joint->gain),
+                                      ch.gyro.framePeriodS, ch.gyro.quantisationVarianceDeg2,
+                                      ch.gyro.arwVarianceDeg2PerS);
+  r.stdOverCrlb = r.crlbMs > 0.0 ? r.lagStdMs / r.crlbMs : 0.0;
+
+  const DelayBreakdown breakdown = delayBreakdown(r.lagMs, r.lagStdMs, constants);
+  r.imuDelayMs = breakdown.imuDelayMs;
+  r.imuDelayStdMs = breakdown.imuDelayStdMs;
+  r.gyroDelayMs = breakdown.gyroDelayMs;
+  r.gyroDelayStdMs = breakdown.gyroDelayStdMs;
+  r.magnitudeRatio = joint->gain;
+  r.phaseDeg = -joint->omegaRadPerS * joint->lagS * kDegPerRad;
+
+  // Per-period delays.
+  r.periodTrack = periodTrack(ch, joint->omegaRadPerS, ch.referenceS);
+  std::vector<double> lags;
+  for (const auto& p : r.periodTrack) lags.push_back(p.lagMs);
+  const auto spread = meanAndSpread(lags);
+  r.periodMeanLagMs = spread.mean;
+  r.periodScatterMs = spread.stdDev;
+
+  // What the user should know about this result.
+  if (r.lostImuFrames > 0)
+    r.warnings.push_back(std::to_string(r.lostImuFrames) + " IMU frames were lost; their increments are missing");
+  if (joint->chiSquarePerDof > 2.0 || joint->chiSquarePerDof < 0.5)
+    r.warnings.push_back("the residuals do not match the noise model (chi^2/dof = " +
+                         fmt(joint->chiSquarePerDof, 2) + "); an unmodelled effect may be present");
+  if (data.nominalAmplitudeDeg > 0.0 && std::abs(amplitude / data.nominalAmplitudeDeg - 1.0) > 0.05)
+    r.warnings.push_back("the table swung " + fmt(amplitude, 3) + " deg, not the planned " +
+                         fmt(data.nominalAmplitudeDeg, 3) + " deg");
+  return r;
+}
+
+std::vector<FrequencyConsistency> frequencyConsistency(const std::vector<TestPointResult>& points) {
+  std::vector<FrequencyConsistency> out;
+  for (int a = 0; a < kAxisCount; ++a) {
+    std::vector<const TestPointResult*> onAxis;
+    for (const auto& p : points)
+      if (static_cast<int>(p.axis) == a && p.lagStdMs > 0.0) onAxis.push_back(&p);
+    if (onAxis.size() < 2) continue;
+    // Distinct frequencies only make a frequency test.
+    bool distinct = false;
+    for (const auto* p : onAxis)
+      if (std::abs(p->nominalFrequencyHz / onAxis.front()->nominalFrequencyHz - 1.0) > 1e-3) distinct = true;
+    if (!distinct) continue;
+    FrequencyConsistency c;
+    c.axis = static_cast<Axis>(a);
+    c.points = static_cast<int>(onAxis.size());
+    double sw = 0.0, swx = 0.0;
+    for (const auto* p : onAxis) {
+      const double wgt = 1.0 / (p->lagStdMs * p->lagStdMs);
+      sw += wgt;
+      swx += wgt * p->lagMs;
+    }
+    c.weightedLagMs = swx / sw;
+    c.weightedLagStdMs = std::sqrt(1.0 / sw);
+    for (const auto* p : onAxis) c.chiSquare += std::pow((p->lagMs - c.weightedLagMs) / p->lagStdMs, 2);
+    c.dof = c.points - 1;
+    c.pValue = chiSquareSurvival(c.chiSquare, c.dof);
+    c.consistentWithPureDelay = c.pValue >= 0.01;
+    out.push_back(c);
+  }
+  return out;
+}
+
+Result<DelayReport> analyzeRecording(const Recording& recording, const BenchConstants& constants) {
+  DelayReport report;
+  report.constants = constants;
+  report.health = recording.health;
+  double scale = 1.0;
+  if (!(recording.pulseEquivalentDeg > 0.0)) {
+    if (!(constants.pulseEquivalentDeg > 0.0))
+      return invalidArgument("the stream does not state the gyro pulse equivalent; give it "
+                             "(degrees per pulse) as a bench constant");
+    scale = constants.pulseEquivalentDeg;
+  }
+  for (const auto& tp : recording.testPoints) {
+    auto r = analyzeTestPoint(tp, scale, constants);
+    if (r) report.points.push_back(std::move(*r));
+    else report.failedPoints.push_back("test point " + std::to_string(tp.index + 1) + ": " + r.status().message());
+  }
+  if (report.points.empty()) {
+    if (report.failedPoints.empty()) return insufficientData("the recording holds no test point");
+    std::string why = report.failedPoints.front();
+    return insufficientData("no test point gave a delay; " + why);
+  }
+  report.consistency = frequencyConsistency(report.points);
+  return report;
+}
+
+}  // namespace fog::analysis

@@ -1,0 +1,123 @@
+#pragma once
+// Delay analysis of a recording (DESIGN section 2): per test point, the
+// 3-parameter fits at the nominal frequency, the 4-parameter fits with the
+// frequency free, the joint fit whose delay is a parameter, the Cramer-Rao
+// bound for the measured noise, the per-period delay track and the delay
+// breakdown; across test points, delay against frequency and whether it is
+// consistent with a pure delay.
+//
+// Breakdown (the paper's): IMU delay = lag + table read delay;
+// gyro's own delay = IMU delay - board delay.
+
+#include <string>
+#include <vector>
+
+#include "analysis/joint_fit.h"
+#include "analysis/sine_fit.h"
+#include "common/recording.h"
+#include "common/status.h"
+
+namespace fog::analysis {
+
+// Constants of the bench, measured elsewhere, with their standard uncertainties.
+struct BenchConstants {
+  double tableReadDelayMs = 0.05;
+  double tableReadDelayStdMs = 0.0;
+  double boardDelayMs = 0.28;  // IMU processing board, measured on the board
+  double boardDelayStdMs = 0.0;
+  // Degrees per gyro pulse; used only when the stream does not state it.
+  double pulseEquivalentDeg = 0.0;
+};
+
+// Noise seen in the session, estimated from fit residuals.
+struct NoiseEstimate {
+  double tableNoiseDeg = 0.0;         // encoder white noise (1 sigma)
+  double gyroQuantisationDeg = 0.0;   // white angle noise of the pulse output (1 sigma)
+  double gyroArwDegPerSqrtH = 0.0;    // angle random walk
+};
+
+struct PeriodDelay {
+  double timeS = 0.0;  // middle of the period, session time
+  double lagMs = 0.0;
+};
+
+struct TestPointResult {
+  int index = 0;
+  Axis axis = Axis::kX;
+  double nominalFrequencyHz = 0.0;
+  double durationS = 0.0;
+  double periods = 0.0;
+  std::size_t tableSamples = 0, imuSamples = 0, lostImuFrames = 0;
+
+  SineFit tableNominal, gyroNominal;  // 3-parameter, at the nominal frequency
+  SineFit tableFit, gyroFit;          // 4-parameter, frequency free
+  JointFit joint;                     // shared frequency, delay as a parameter
+  NoiseEstimate noise;
+
+  double lagMs = 0.0, lagStdMs = 0.0;  // positive: gyro output lags the table
+  double crlbMs = 0.0;                 // Cramer-Rao bound on the lag for the measured noise
+  double stdOverCrlb = 0.0;
+  double imuDelayMs = 0.0, imuDelayStdMs = 0.0;
+  double gyroDelayMs = 0.0, gyroDelayStdMs = 0.0;
+  // ISO 16063-15 style: gyro/table amplitude ratio and phase (deg) at this frequency.
+  double magnitudeRatio = 0.0;
+  double phaseDeg = 0.0;
+
+  std::vector<PeriodDelay> periodTrack;
+  double periodMeanLagMs = 0.0, periodScatterMs = 0.0;
+
+  std::vector<std::string> warnings;
+};
+
+// Delay against frequency on one axis.
+struct FrequencyConsistency {
+  Axis axis = Axis::kX;
+  int points = 0;
+  double weightedLagMs = 0.0, weightedLagStdMs = 0.0;
+  double chiSquare = 0.0;
+  int dof = 0;
+  double pValue = 1.0;
+  bool consistentWithPureDelay = true;  // p >= 0.01
+};
+
+struct DelayReport {
+  std::vector<TestPointResult> points;
+  std::vector<std::string> failedPoints;  // one line per test point that gave no delay, saying why
+  std::vector<FrequencyConsistency> consistency;  // axes with two or more frequencies
+  BenchConstants constants;
+  StreamHealth health;
+};
+
+// The paper's breakdown of a measured lag into IMU and gyro delay, with
+// uncertainties (lag and constants independent).
+struct DelayBreakdown {
+  double lagMs = 0.0, lagStdMs = 0.0;
+  double imuDelayMs = 0.0, imuDelayStdMs = 0.0;
+  double gyroDelayMs = 0.0, gyroDelayStdMs = 0.0;
+};
+DelayBreakdown delayBreakdown(double lagMs, double lagStdMs, const BenchConstants& constants);
+// Lag from two fitted phases in the paper's convention (gyro t0 - table t0),
+// wrapped into (-T/2, T/2].
+double lagFromPhasesMs(double tablePhaseMs, double gyroPhaseMs, double periodMs);
+
+// incrementScale: see makeChannels().
+Result<TestPointResult> analyzeTestPoint(const TestPointData& data, double incrementScale,
+                                         const BenchConstants& constants);
+
+// Analyses every test point. Fails only when no test point gives a delay.
+Result<DelayReport> analyzeRecording(const Recording& recording, const BenchConstants& constants);
+
+std::vector<FrequencyConsistency> frequencyConsistency(const std::vector<TestPointResult>& points);
+
+// Swing frequency from the table's zero crossings (for streams that do not
+// state the nominal one). Fails when fewer than two periods are seen.
+Result<double> estimateSwingFrequencyHz(const TableChannel& table);
+
+// Asymptotic Cramer-Rao bound on the lag (s) for sinusoids of the given
+// amplitudes over recordS seconds in the measured noise.
+double lagCramerRaoBoundS(double omegaRadPerS, double recordS, double tableAmplitudeDeg,
+                          double tableIntervalS, double tableNoiseDeg, double gyroAmplitudeDeg,
+                          double gyroIntervalS, double gyroQuantisationVarDeg2,
+                          double gyroArwVarDeg2PerS);
+
+}  // namespace fog::analysis

@@ -1,0 +1,174 @@
+#include "analysis/delay_analysis.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "analysis/statistics.h"
+#include "analysis/theory.h"
+#include "synthetic.h"
+
+namespace fog::analysis {
+namespace {
+
+using testing::makeSynthetic;
+using testing::SyntheticSpec;
+
+// The paper's X axis at 0.1 Hz / 10 deg: fitted phases -1865.3085 ms (table)
+// and -1864.8427 ms (gyro), periods ~10000.08 ms.
+TEST(DelayBreakdown, ReproducesPaperFromFittedPhases) {
+  const double lag = lagFromPhasesMs(-1865.3085, -1864.8427, 10000.0837);
+  EXPECT_NEAR(lag, 0.4658, 1e-9);
+  const auto b = delayBreakdown(lag, 0.0, BenchConstants{});
+  EXPECT_NEAR(b.imuDelayMs, 0.5158, 1e-9);
+  EXPECT_NEAR(b.gyroDelayMs, 0.2358, 1e-9);
+}
+
+TEST(DelayBreakdown, WrapsLagAcrossThePeriodBoundary) {
+  EXPECT_NEAR(lagFromPhasesMs(4999.9, -4999.8, 10000.0), 0.3, 1e-9);
+  EXPECT_NEAR(lagFromPhasesMs(-4999.8, 4999.9, 10000.0), -0.3, 1e-9);
+}
+
+TEST(DelayBreakdown, PropagatesUncertainties) {
+  BenchConstants c;
+  c.tableReadDelayStdMs = 0.003;
+  c.boardDelayStdMs = 0.004;
+  const auto b = delayBreakdown(0.4, 0.012, c);
+  EXPECT_NEAR(b.imuDelayStdMs, std::hypot(0.012, 0.003), 1e-12);
+  EXPECT_NEAR(b.gyroDelayStdMs, std::sqrt(0.012 * 0.012 + 0.003 * 0.003 + 0.004 * 0.004), 1e-12);
+}
+
+TEST(Theory, PaperResolutionFigures) {
+  // 0.5 deg/h over one period / (2*pi*f*A): 7.4 us at 1 Hz / 3 deg, ~0.2 ms at 0.1 Hz / 10 deg.
+  EXPECT_NEAR(paperResolutionS(0.5, 1.0, 3.0) * 1e6, 7.4, 0.05);
+  EXPECT_NEAR(paperResolutionS(0.5, 0.1, 10.0) * 1e3, 0.22, 0.005);
+}
+
+TEST(Theory, PaperBudgetStaysUnder0p8Ms) {
+  const auto b = delayBudget(TheoryInputs{});
+  EXPECT_NEAR(b.eigenPeriodUs, 3.34, 0.01);  // the paper's "about 3.4 us for 1000 m"
+  EXPECT_LT(b.totalMaxMs, 0.8);
+  EXPECT_GT(b.totalMaxMs, 0.7);
+  EXPECT_NEAR(b.boardMaxMs, 0.25, 0.01);  // the paper's "board about 0.3 ms"
+}
+
+TEST(Statistics, ChiSquareSurvivalKnownValues) {
+  EXPECT_NEAR(chiSquareSurvival(3.841459, 1), 0.05, 1e-6);
+  EXPECT_NEAR(chiSquareSurvival(9.210340, 2), 0.01, 1e-6);
+  EXPECT_NEAR(chiSquareSurvival(18.307038, 10), 0.05, 1e-6);
+  EXPECT_DOUBLE_EQ(chiSquareSurvival(0.0, 3), 1.0);
+}
+
+TEST(SwingFrequency, EstimatedFromZeroCrossings) {
+  SyntheticSpec s;
+  s.frequencyHz = 0.37;
+  s.durationS = 30.0;
+  auto ch = makeChannels(makeSynthetic(s), 1.0);
+  ASSERT_TRUE(ch.isOk());
+  auto f = estimateSwingFrequencyHz(ch->table);
+  ASSERT_TRUE(f.isOk()) << f.status().toString();
+  EXPECT_NEAR(*f, 0.37, 0.37 * 1e-4);
+}
+
+TEST(DelayAnalysis, NoiselessDataGiveTheExactLag) {
+  SyntheticSpec s;
+  s.tableQuantumDeg = 0.0;
+  s.pulseEquivalentDeg = 0.0;
+  s.trendDegPerS = 2e-3;
+  auto r = analyzeTestPoint(makeSynthetic(s), 1.0, BenchConstants{});
+  ASSERT_TRUE(r.isOk()) << r.status().toString();
+  EXPECT_NEAR(r->lagMs, 0.4658, 1e-6);  // 1 ns
+  EXPECT_NEAR(r->joint.trendDegPerS, 2e-3, 1e-9);
+  EXPECT_NEAR(r->magnitudeRatio, 1.0, 1e-9);
+}
+
+TEST(DelayAnalysis, RecoversLagFrequencyAndAmplitudeUnderQuantisation) {
+  SyntheticSpec s;
+  s.frequencyHz = 1.0 * (1.0 - 8.37e-6);  // the table's rate error, as in the paper
+  s.lagS = 0.5467e-3;
+  auto data = makeSynthetic(s);
+  data.nominalFrequencyHz = 1.0;
+  auto r = analyzeTestPoint(data, 1.0, BenchConstants{});
+  ASSERT_TRUE(r.isOk()) << r.status().toString();
+  EXPECT_NEAR(r->lagMs, 0.5467, 3.0 * r->lagStdMs + 1e-6);
+  EXPECT_LT(r->lagStdMs, 1e-3);  // under 1 us with quantisation only
+  EXPECT_NEAR(r->tableFit.frequencyHz, s.frequencyHz, 5.0 * r->tableFit.frequencyStdHz);
+  EXPECT_NEAR(r->tableFit.periodMs, 1000.00837, 1e-4);
+  EXPECT_NEAR(r->tableFit.amplitudeDeg, 3.0, 1e-5);
+  EXPECT_NEAR(r->gyroFit.amplitudeDeg, 3.0, 1e-4);
+  EXPECT_NEAR(r->imuDelayMs, r->lagMs + 0.05, 1e-12);
+  EXPECT_NEAR(r->gyroDelayMs, r->lagMs + 0.05 - 0.28, 1e-12);
+  // The per-period track scatters around the joint result.
+  ASSERT_GE(r->periodTrack.size(), 18u);
+  EXPECT_NEAR(r->periodMeanLagMs, r->lagMs, 3.0 * r->periodScatterMs / std::sqrt(18.0));
+}
+
+TEST(DelayAnalysis, PhaseFollowsThePaperConvention) {
+  // angle = A*sin(w*t + 0.3) = A*sin(w*(t - t0)) with t0 = -0.3/w.
+  SyntheticSpec s;
+  s.frequencyHz = 0.5;
+  s.durationS = 40.0;
+  auto r = analyzeTestPoint(makeSynthetic(s), 1.0, BenchConstants{});
+  ASSERT_TRUE(r.isOk());
+  const double t0 = -0.3 / (kTwoPi * 0.5);
+  EXPECT_NEAR(r->tableFit.phaseMs, t0 * 1e3, 1e-3);
+  EXPECT_NEAR(r->gyroFit.phaseMs - r->tableFit.phaseMs, 0.4658, 3e-3);
+}
+
+TEST(DelayAnalysis, RefusesUnderTwoPeriods) {
+  SyntheticSpec s;
+  s.frequencyHz = 0.1;
+  s.durationS = 15.0;
+  auto r = analyzeTestPoint(makeSynthetic(s), 1.0, BenchConstants{});
+  ASSERT_FALSE(r.isOk());
+  EXPECT_EQ(r.status().code(), StatusCode::kInsufficientData);
+  EXPECT_NE(r.status().message().find("two whole"), std::string::npos) << r.status().message();
+}
+
+TEST(DelayAnalysis, RefusesTooFewSamples) {
+  TestPointData d;
+  d.table.resize(3);
+  d.imu.resize(3);
+  auto r = analyzeTestPoint(d, 1.0, BenchConstants{});
+  ASSERT_FALSE(r.isOk());
+  EXPECT_EQ(r.status().code(), StatusCode::kInsufficientData);
+}
+
+TEST(DelayAnalysis, StreamWithoutPulseEquivalentNeedsTheConstant) {
+  Recording rec;
+  rec.pulseEquivalentDeg = 0.0;
+  rec.testPoints.push_back(makeSynthetic(SyntheticSpec{}));
+  auto r = analyzeRecording(rec, BenchConstants{});
+  ASSERT_FALSE(r.isOk());
+  EXPECT_NE(r.status().message().find("pulse equivalent"), std::string::npos);
+}
+
+// Monte Carlo: with angle random walk dominating, the reported standard
+// error must match the scatter of the estimates, and the scatter must sit at
+// the Cramer-Rao bound (the fit is efficient).
+TEST(DelayAnalysis, StandardErrorMatchesMonteCarloScatterAndBound) {
+  const int trials = 60;
+  std::vector<double> lags, stds, bounds;
+  for (int i = 0; i < trials; ++i) {
+    SyntheticSpec s;
+    s.durationS = 20.0;
+    s.arwDegPerSqrtS = 0.02 / 60.0;
+    s.seed = 1000u + static_cast<unsigned>(i);
+    auto r = analyzeTestPoint(makeSynthetic(s), 1.0, BenchConstants{});
+    ASSERT_TRUE(r.isOk()) << r.status().toString();
+    lags.push_back(r->lagMs);
+    stds.push_back(r->lagStdMs);
+    bounds.push_back(r->crlbMs);
+  }
+  const auto lag = meanAndSpread(lags);
+  const auto sd = meanAndSpread(stds);
+  const auto bound = meanAndSpread(bounds);
+  // With 60 trials the scatter itself is known to ~9 % (1 sigma).
+  EXPECT_NEAR(lag.mean, 0.4658, 3.0 * lag.stdOfMean);
+  EXPECT_NEAR(sd.mean / lag.stdDev, 1.0, 0.25);
+  EXPECT_LT(lag.stdDev / bound.mean, 1.3);
+  EXPECT_NEAR(sd.mean / bound.mean, 1.0, 0.1);
+}
+
+}  // namespace
+}  // namespace fog::analysis
