@@ -1,0 +1,280 @@
+#include "model/simulator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "common/units.h"
+#include "model/random.h"
+#include "protocol/frame.h"
+
+namespace fog::model {
+
+namespace {
+
+constexpr double kNever = std::numeric_limits<double>::infinity();
+
+// The FOG of one axis: sensed cumulative angle from motion, bias, Earth rate,
+// angle random walk and a Gauss-Markov bias wander; pulse output with the
+// quantisation remainder carried from frame to frame.
+struct GyroChannel {
+  double constantRateDegPerS = 0.0;
+  double arwDegPerSqrtS = 0.0;
+  double wanderSigmaDegPerS = 0.0;
+  double wanderCorrelationS = 1.0;
+
+  double lastTimeS = 0.0;
+  double arwAngleDeg = 0.0;     // Wiener process
+  double wanderRateDegPerS = 0.0;
+  double wanderAngleDeg = 0.0;  // integral of the wander rate
+  std::int64_t lastCount = 0;
+
+  // Noise angle at t (t increasing between calls): exact Wiener increments and
+  // an exact Gauss-Markov update; the wander integral uses the rate at the
+  // start of each 2 ms interval, accurate for correlation times of seconds.
+  double noiseAngleDeg(double t, Random& rng) {
+    const double dt = t - lastTimeS;
+    if (dt > 0.0) {
+      arwAngleDeg += arwDegPerSqrtS * std::sqrt(dt) * rng.normal();
+      wanderAngleDeg += wanderRateDegPerS * dt;
+      const double decay = std::exp(-dt / wanderCorrelationS);
+      wanderRateDegPerS = wanderRateDegPerS * decay +
+                          wanderSigmaDegPerS * std::sqrt(1.0 - decay * decay) * rng.normal();
+      lastTimeS = t;
+    }
+    return constantRateDegPerS * t + arwAngleDeg + wanderAngleDeg;
+  }
+};
+
+std::uint32_t toCounter(double stampS, const SamplingBoardParams& b) {
+  const double ticks = std::floor(std::max(stampS, 0.0) * b.counterHz);
+  const std::uint64_t raw = static_cast<std::uint64_t>(ticks) + b.counterStart;
+  const std::uint64_t mask = b.counterBits >= 64 ? ~0ULL : ((1ULL << b.counterBits) - 1ULL);
+  return static_cast<std::uint32_t>(raw & mask);
+}
+
+std::int32_t toMicroDeg(double deg) { return static_cast<std::int32_t>(std::llround(deg * 1e6)); }
+
+}  // namespace
+
+class Simulator::Impl {
+ public:
+  Impl(const SimConfig& config, const Turntable& table,
+       std::vector<std::unique_ptr<Effect>>& effects)
+      : c_(config), table_(table), effects_(effects), noiseRng_(Random::derive(config.seed, 0)) {
+    for (int a = 0; a < kAxisCount; ++a) {
+      GyroChannel& g = gyro_[a];
+      g.constantRateDegPerS =
+          degPerHourToDegPerS(c_.fog.biasDegPerH[a] + c_.earth.projectionDegPerH(static_cast<Axis>(a)));
+      g.arwDegPerSqrtS = degPerSqrtHourToDegPerSqrtS(c_.fog.arwDegPerSqrtH);
+      g.wanderSigmaDegPerS = degPerHourToDegPerS(c_.fog.biasInstabilityDegPerH);
+      g.wanderCorrelationS = c_.fog.biasCorrelationS;
+    }
+    for (std::size_t i = 0; i < effects_.size(); ++i) {
+      effectRngs_.emplace_back(Random::derive(config.seed, 100 + i));
+      effects_[i]->reset(effectRngs_.back());
+    }
+    // Start of the first interval: the pulse count one frame before the first.
+    const double u0 = imuSenseTime(-1);
+    for (int a = 0; a < kAxisCount; ++a) gyro_[a].lastTimeS = u0;
+    const auto sensed = sensedAngles(u0);
+    for (int a = 0; a < kAxisCount; ++a)
+      gyro_[a].lastCount = static_cast<std::int64_t>(std::floor(sensed[a] / c_.fog.pulseEquivalentDeg));
+    statusEvents_.reserve(table_.schedule().size() * 3);
+    for (const auto& s : table_.schedule())
+      for (double t : {s.swingStartS, s.recordStartS, s.recordEndS}) statusEvents_.push_back(t);
+    std::sort(statusEvents_.begin(), statusEvents_.end());
+    prepareTable();
+    prepareImu();
+  }
+
+  // Emits frames whose stamps are below untilS, in stamp order.
+  void advance(double untilS, std::vector<std::uint8_t>& out) {
+    for (;;) {
+      const double tStatus = nextStatusTimeS();
+      const double t = std::min({tStatus, table_.endS() < tableStampS_ ? kNever : tableStampS_,
+                                 table_.endS() < imuStampS_ ? kNever : imuStampS_});
+      if (!(t < untilS) || t == kNever) return;
+      discarded_.clear();
+      if (t == tStatus) {
+        emitStatus(t, out);
+      } else if (t == tableStampS_) {
+        // A dropped frame still uses its sequence number, as on a lossy link.
+        writer_.table(toCounter(tableStampS_, c_.samplingBoard), tablePayload_,
+                      tableDropped_ ? discarded_ : out);
+        ++tableIndex_;
+        prepareTable();
+      } else {
+        writer_.imu(toCounter(imuStampS_, c_.samplingBoard), imuPayload_, imuDropped_ ? discarded_ : out);
+        ++imuIndex_;
+        prepareImu();
+      }
+    }
+  }
+
+ private:
+  std::array<double, kAxisCount> motion(double t) const {
+    auto angles = table_.anglesDeg(t);
+    for (const auto& e : effects_) e->onTableMotion(t, angles);
+    return angles;
+  }
+
+  double imuSampleTime(std::int64_t k) const {
+    return c_.imuBoard.firstSampleS +
+           static_cast<double>(k) * c_.imuBoard.framePeriodS * (1.0 + c_.imuBoard.clockErrorPpm * 1e-6);
+  }
+  // The instant whose motion the pulse register holds when sample k is taken.
+  double imuSenseTime(std::int64_t k) const {
+    return imuSampleTime(k) - c_.fog.sampleAfterUpdateS - c_.fog.loopDelayS();
+  }
+
+  std::array<double, kAxisCount> sensedAngles(double u) {
+    GyroContext context{u, motion(u)};
+    std::array<double, kAxisCount> sensed{};
+    for (int a = 0; a < kAxisCount; ++a)
+      sensed[a] = context.tableAngleDeg[a] + gyro_[a].noiseAngleDeg(u, noiseRng_);
+    for (const auto& e : effects_) e->onGyroAngle(context, sensed);
+    return sensed;
+  }
+
+  void prepareTable() {
+    const double stamp = static_cast<double>(tableIndex_) * c_.encoder.samplePeriodS;
+    auto reading = motion(stamp - c_.encoder.readDelayS);
+    for (const auto& e : effects_) e->onEncoderReading(stamp - c_.encoder.readDelayS, reading);
+    for (int a = 0; a < kAxisCount; ++a) {
+      const double q = c_.encoder.quantumDeg;
+      const double v = q > 0.0 ? std::round(reading[a] / q) * q : reading[a];
+      tablePayload_.angleMicroDeg[a] = toMicroDeg(v);
+    }
+    tableStampS_ = stamp;
+    tableDropped_ = false;
+    for (const auto& e : effects_) e->onTableStamp(tableStampS_, tableDropped_);
+  }
+
+  void prepareImu() {
+    const auto sensed = sensedAngles(imuSenseTime(imuIndex_));
+    for (int a = 0; a < kAxisCount; ++a) {
+      const auto count = static_cast<std::int64_t>(std::floor(sensed[a] / c_.fog.pulseEquivalentDeg));
+      imuPayload_.pulses[a] = static_cast<std::int32_t>(count - gyro_[a].lastCount);
+      gyro_[a].lastCount = count;
+    }
+    imuPayload_.temperatureCentiC = static_cast<std::int16_t>(std::lround(c_.fog.temperatureC * 100.0));
+    imuStampS_ = imuSampleTime(imuIndex_) + c_.imuBoard.boardDelayS();
+    imuDropped_ = false;
+    for (const auto& e : effects_) e->onImuStamp(imuStampS_, imuDropped_);
+  }
+
+  double nextStatusTimeS() const {
+    const double periodic = static_cast<double>(statusIndex_) * c_.samplingBoard.statusPeriodS;
+    const double event = nextEvent_ < statusEvents_.size() ? statusEvents_[nextEvent_] : kNever;
+    const double t = std::min(periodic, event);
+    return t <= table_.endS() ? t : kNever;
+  }
+
+  void emitStatus(double t, std::vector<std::uint8_t>& out) {
+    while (nextEvent_ < statusEvents_.size() && statusEvents_[nextEvent_] <= t) ++nextEvent_;
+    while (static_cast<double>(statusIndex_) * c_.samplingBoard.statusPeriodS <= t) ++statusIndex_;
+    protocol::StatusPayload s;
+    s.counterHz = static_cast<std::uint32_t>(std::lround(c_.samplingBoard.counterHz));
+    s.counterBits = static_cast<std::uint8_t>(c_.samplingBoard.counterBits);
+    s.pulseEquivalentDeg = c_.fog.pulseEquivalentDeg;
+    s.phase = protocol::TestPhase::kIdle;
+    for (const auto& p : table_.schedule()) {
+      if (t < p.swingStartS || t >= p.recordEndS) continue;
+      s.testPoint = static_cast<std::uint16_t>(p.index);
+      s.axis = static_cast<std::uint8_t>(p.point.axis);
+      s.phase = t < p.recordStartS ? protocol::TestPhase::kSettling : protocol::TestPhase::kRecording;
+      s.nominalFrequencyMicroHz = static_cast<std::uint32_t>(std::lround(p.point.frequencyHz * 1e6));
+      s.nominalAmplitudeMicroDeg = static_cast<std::uint32_t>(std::lround(p.point.amplitudeDeg * 1e6));
+    }
+    if (s.phase == protocol::TestPhase::kIdle && !table_.schedule().empty() &&
+        t >= table_.schedule().back().recordEndS)
+      s.phase = protocol::TestPhase::kDone;
+    writer_.status(toCounter(t, c_.samplingBoard), s, out);
+  }
+
+  const SimConfig& c_;
+  const Turntable& table_;
+  std::vector<std::unique_ptr<Effect>>& effects_;
+  Random noiseRng_;
+  std::vector<Random> effectRngs_;
+  std::array<GyroChannel, kAxisCount> gyro_{};
+  protocol::FrameWriter writer_;
+  std::vector<std::uint8_t> discarded_;
+
+  std::int64_t tableIndex_ = 0;
+  double tableStampS_ = 0.0;
+  bool tableDropped_ = false;
+  protocol::TablePayload tablePayload_;
+
+  std::int64_t imuIndex_ = 0;
+  double imuStampS_ = 0.0;
+  bool imuDropped_ = false;
+  protocol::ImuPayload imuPayload_;
+
+  std::int64_t statusIndex_ = 0;
+  std::vector<double> statusEvents_;
+  std::size_t nextEvent_ = 0;
+};
+
+Simulator::Simulator(const SimConfig& config, const TestPlan& plan)
+    : config_(config), plan_(plan), turntable_(plan, config.turntable) {}
+
+Simulator::~Simulator() = default;
+
+Result<std::unique_ptr<Simulator>> Simulator::create(const SimConfig& config, const TestPlan& plan) {
+  std::string why;
+  if (!config.isValid(&why)) return invalidArgument("simulator configuration: " + why);
+  if (!plan.isValid(config.turntable.limits, &why)) return invalidArgument(why);
+  return std::make_unique<Simulator>(config, plan);
+}
+
+void Simulator::addEffect(std::unique_ptr<Effect> effect) { effects_.push_back(std::move(effect)); }
+
+void Simulator::start() { impl_ = std::make_unique<Impl>(config_, turntable_, effects_); }
+
+bool Simulator::advance(double untilS, std::vector<std::uint8_t>& out) {
+  if (!impl_) start();
+  const double until = std::min(untilS, endS() + 1e-9);
+  if (until > nowS_) {
+    impl_->advance(until, out);
+    nowS_ = until;
+  }
+  return nowS_ < endS();
+}
+
+void Simulator::runToEnd(std::vector<std::uint8_t>& out) { advance(endS() + 1.0, out); }
+
+std::vector<TestPointTruth> Simulator::truth() const {
+  std::vector<TestPointTruth> out;
+  for (const auto& s : turntable_.schedule()) {
+    TestPointTruth t;
+    t.index = s.index;
+    t.axis = s.point.axis;
+    t.frequencyHz = s.angularFrequencyRadPerS / kTwoPi;
+    t.amplitudeDeg = s.point.amplitudeDeg;
+    t.lagS = config_.trueLagS();
+    t.imuDelayS = config_.trueImuDelayS();
+    t.gyroDelayS = config_.trueGyroDelayS();
+    const int a = static_cast<int>(s.point.axis);
+    t.gyroTrendDegPerS =
+        degPerHourToDegPerS(config_.fog.biasDegPerH[a] + config_.earth.projectionDegPerH(s.point.axis));
+    out.push_back(t);
+  }
+  return out;
+}
+
+Result<SimulatedRun> simulate(const SimConfig& config, const TestPlan& plan,
+                              std::vector<std::unique_ptr<Effect>> effects) {
+  auto sim = Simulator::create(config, plan);
+  if (!sim) return sim.status();
+  for (auto& e : effects) (*sim)->addEffect(std::move(e));
+  SimulatedRun run;
+  // Frames are ~22 bytes; 1.5 kHz of them plus status.
+  run.bytes.reserve(static_cast<std::size_t>((*sim)->endS() * 1510.0 * 26.0));
+  (*sim)->runToEnd(run.bytes);
+  run.truth = (*sim)->truth();
+  return run;
+}
+
+}  // namespace fog::model

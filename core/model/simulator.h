@@ -1,0 +1,79 @@
+#pragma once
+// Simulator: runs a test plan through the modelled chain and emits the
+// sampling board's byte stream (docs/protocol.md), exactly what a real board
+// sends, so every consumer goes through the same decoder.
+//
+// Deterministic: the same configuration, plan, effects and seed give
+// bit-identical bytes. Motion is analytic; noise processes are sampled exactly
+// at the instants the chain observes them, so there is no integration step.
+// Not thread-safe; one simulator per thread.
+
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "common/status.h"
+#include "common/test_plan.h"
+#include "model/effect.h"
+#include "model/sim_config.h"
+#include "model/turntable.h"
+
+namespace fog::model {
+
+// What the simulation built in, per test point, to compare estimates against.
+struct TestPointTruth {
+  int index = 0;
+  Axis axis = Axis::kX;
+  double frequencyHz = 0.0;  // true swing frequency (with the table's rate error)
+  double amplitudeDeg = 0.0;
+  double lagS = 0.0;          // gyro output behind the stamped table angle
+  double imuDelayS = 0.0;     // lag + table read delay
+  double gyroDelayS = 0.0;    // IMU delay - board delay
+  double gyroTrendDegPerS = 0.0;  // bias + Earth-rate projection on the swing axis
+};
+
+class Simulator {
+ public:
+  // The configuration and plan must be valid (see create()).
+  Simulator(const SimConfig& config, const TestPlan& plan);
+  ~Simulator();
+
+  // Checks configuration and plan, then builds a simulator.
+  static Result<std::unique_ptr<Simulator>> create(const SimConfig& config, const TestPlan& plan);
+
+  // Effects must be added before the first advance().
+  void addEffect(std::unique_ptr<Effect> effect);
+
+  // Appends every frame stamped before untilS (true seconds since the start)
+  // to out. Returns false once the whole plan has been emitted.
+  bool advance(double untilS, std::vector<std::uint8_t>& out);
+  // Runs to the end of the plan.
+  void runToEnd(std::vector<std::uint8_t>& out);
+
+  double timeS() const { return nowS_; }
+  double endS() const { return turntable_.endS(); }
+  std::vector<TestPointTruth> truth() const;
+  const SimConfig& config() const { return config_; }
+
+ private:
+  class Impl;
+  void start();
+
+  SimConfig config_;
+  TestPlan plan_;
+  Turntable turntable_;
+  std::vector<std::unique_ptr<Effect>> effects_;
+  std::unique_ptr<Impl> impl_;
+  double nowS_ = 0.0;
+};
+
+// Convenience: the whole run's bytes and its truth.
+struct SimulatedRun {
+  std::vector<std::uint8_t> bytes;
+  std::vector<TestPointTruth> truth;
+};
+Result<SimulatedRun> simulate(const SimConfig& config, const TestPlan& plan,
+                              std::vector<std::unique_ptr<Effect>> effects = {});
+
+}  // namespace fog::model
