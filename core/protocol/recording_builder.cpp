@@ -1,0 +1,147 @@
+#include "protocol/recording_builder.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <variant>
+
+namespace fog::protocol {
+
+void RecordingBuilder::add(std::span<const DecodedFrame> frames) {
+  for (const auto& f : frames) add(f);
+}
+
+void RecordingBuilder::onStatus(const StatusPayload& s) {
+  if (s.counterHz > 0) counterHz_ = s.counterHz;
+  if (s.counterBits >= 8 && s.counterBits <= 32) counterBits_ = s.counterBits;
+  if (std::isfinite(s.pulseEquivalentDeg) && s.pulseEquivalentDeg > 0.0) pulseEquivalentDeg_ = s.pulseEquivalentDeg;
+  collecting_ = s.phase == TestPhase::kRecording;
+  if (!collecting_) return;
+  if (!sawRecording_) {
+    sawRecording_ = true;
+    whole_ = Segment{};  // the fallback is no longer needed
+  }
+  if (segments_.empty() || segments_.back().testPoint != s.testPoint) {
+    Segment seg;
+    seg.testPoint = s.testPoint;
+    seg.axis = s.axis < kAxisCount ? static_cast<Axis>(s.axis) : Axis::kX;
+    seg.nominalFrequencyHz = s.nominalFrequencyMicroHz * 1e-6;
+    seg.nominalAmplitudeDeg = s.nominalAmplitudeMicroDeg * 1e-6;
+    segments_.push_back(std::move(seg));
+  }
+}
+
+void RecordingBuilder::add(const DecodedFrame& f) {
+  ++framesAdded_;
+  if (!haveFirst_) {
+    haveFirst_ = true;
+    firstTicks_ = f.ticks;
+  }
+  const std::int64_t ticks = f.ticks - firstTicks_;
+  if (const auto* s = std::get_if<StatusPayload>(&f.frame.payload)) {
+    onStatus(*s);
+    return;
+  }
+  Segment* targets[2] = {collecting_ ? &segments_.back() : nullptr, sawRecording_ ? nullptr : &whole_};
+  if (const auto* t = std::get_if<TablePayload>(&f.frame.payload)) {
+    RawTable r;
+    r.ticks = ticks;
+    for (int a = 0; a < kAxisCount; ++a) r.angleDeg[a] = t->angleMicroDeg[a] * 1e-6;
+    for (auto* seg : targets)
+      if (seg) seg->table.push_back(r);
+  } else if (const auto* m = std::get_if<ImuPayload>(&f.frame.payload)) {
+    RawImu r;
+    r.ticks = ticks;
+    r.pulses = m->pulses;
+    r.temperatureC = m->temperatureCentiC / 100.0;
+    r.lostBefore = f.lostBefore;
+    r.pulseEquivalentDeg = pulseEquivalentDeg_;
+    for (auto* seg : targets)
+      if (seg) seg->imu.push_back(r);
+  }
+}
+
+Recording RecordingBuilder::finish(const StreamHealth& health) {
+  Recording rec;
+  rec.counterHz = counterHz_;
+  rec.counterBits = counterBits_;
+  rec.pulseEquivalentDeg = pulseEquivalentDeg_;
+  rec.health = health;
+
+  if (!sawRecording_) {
+    // No test plan in the stream: the largest swing names the axis.
+    std::array<double, kAxisCount> lo, hi;
+    lo.fill(std::numeric_limits<double>::infinity());
+    hi.fill(-std::numeric_limits<double>::infinity());
+    for (const auto& t : whole_.table)
+      for (int a = 0; a < kAxisCount; ++a) {
+        lo[a] = std::min(lo[a], t.angleDeg[a]);
+        hi[a] = std::max(hi[a], t.angleDeg[a]);
+      }
+    int best = 0;
+    for (int a = 1; a < kAxisCount; ++a)
+      if (hi[a] - lo[a] > hi[best] - lo[best]) best = a;
+    whole_.testPoint = 0;
+    whole_.axis = static_cast<Axis>(best);
+    segments_.clear();
+    segments_.push_back(std::move(whole_));
+  }
+
+  const double secondsPerTick = 1.0 / counterHz_;
+  for (auto& seg : segments_) {
+    if (seg.table.empty() && seg.imu.empty()) continue;
+    TestPointData tp;
+    tp.index = seg.testPoint;
+    tp.axis = seg.axis;
+    tp.nominalFrequencyHz = seg.nominalFrequencyHz;
+    tp.nominalAmplitudeDeg = seg.nominalAmplitudeDeg;
+    tp.table.reserve(seg.table.size());
+    for (const auto& t : seg.table) tp.table.push_back(TableSample{static_cast<double>(t.ticks) * secondsPerTick, t.angleDeg});
+    tp.imu.reserve(seg.imu.size());
+    for (const auto& m : seg.imu) {
+      // Raw pulses when the stream never states the pulse equivalent.
+      const double scale = m.pulseEquivalentDeg > 0.0 ? m.pulseEquivalentDeg
+                           : pulseEquivalentDeg_ > 0.0 ? pulseEquivalentDeg_
+                                                       : 1.0;
+      ImuSample s;
+      s.timeS = static_cast<double>(m.ticks) * secondsPerTick;
+      for (int a = 0; a < kAxisCount; ++a) s.incrementDeg[a] = m.pulses[a] * scale;
+      s.temperatureC = m.temperatureC;
+      s.lostBefore = m.lostBefore;
+      tp.imu.push_back(s);
+    }
+    rec.testPoints.push_back(std::move(tp));
+  }
+
+  *this = RecordingBuilder{};
+  return rec;
+}
+
+Result<Recording> decodeRecording(std::span<const std::uint8_t> bytes) {
+  Decoder decoder;
+  RecordingBuilder builder;
+  std::vector<DecodedFrame> frames;
+  // Chunks keep the intermediate frame list small for long recordings.
+  constexpr std::size_t kChunk = 1 << 16;
+  for (std::size_t at = 0; at < bytes.size(); at += kChunk) {
+    frames.clear();
+    decoder.push(bytes.subspan(at, std::min(kChunk, bytes.size() - at)), frames);
+    builder.add(frames);
+  }
+  const StreamHealth health = decoder.health();
+  if (builder.framesAdded() == 0)
+    return corruptData("no valid sampling-board frames found in " + std::to_string(bytes.size()) +
+                       " bytes; is this a fogbench raw stream, or is the baud rate wrong?");
+  Recording rec = builder.finish(health);
+  const bool usable = std::any_of(rec.testPoints.begin(), rec.testPoints.end(),
+                                  [](const TestPointData& tp) { return !tp.table.empty() && !tp.imu.empty(); });
+  if (!usable)
+    return insufficientData("the stream holds " + std::to_string(health.tableFrames) + " table, " +
+                            std::to_string(health.imuFrames) + " IMU and " + std::to_string(health.statusFrames) +
+                            " status frames, but no test point has both table and IMU samples; "
+                            "was a test point recorded while both the turntable and the IMU were connected?");
+  return rec;
+}
+
+}  // namespace fog::protocol

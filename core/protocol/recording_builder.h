@@ -1,0 +1,95 @@
+#pragma once
+// Turns decoded sampling-board frames into a fog::Recording, split into test
+// points by the STATUS frames (docs/protocol.md, "From frames to a recording").
+//
+//   RecordingBuilder b;
+//   b.add(frames);            // as often as frames arrive, in stream order
+//   Recording r = b.finish(decoder.health());
+//
+// Rules:
+//  - Times are seconds on the board counter: (ticks - ticks of the first frame
+//    added) / counterHz, counterHz from the latest STATUS frame (default
+//    10 MHz; a STATUS value of 0 is ignored).
+//  - While the latest STATUS says phase == kRecording, table and IMU samples go
+//    to the current test point; a recording STATUS with a testPoint value other
+//    than the current one starts a new TestPointData (index = testPoint, axis,
+//    nominal frequency and amplitude from that STATUS). Samples in other phases
+//    are not collected.
+//  - Table: angleDeg = angleMicroDeg * 1e-6. IMU: incrementDeg = pulses *
+//    pulseEquivalentDeg of the latest STATUS (or of the last STATUS of the
+//    stream with a usable value when none was known yet); temperatureC =
+//    centi-degC / 100; lostBefore = the decoder's sequence gap.
+//  - No STATUS with phase kRecording in the whole stream: everything becomes
+//    one test point, index 0, whose axis is the one with the largest table
+//    angle peak-to-peak; nominal frequency and amplitude 0 (unknown).
+//  - Pulse equivalent unknown (no STATUS with a finite value > 0):
+//    Recording.pulseEquivalentDeg stays 0 and incrementDeg holds raw pulse
+//    counts; the analysis must then be given the pulse equivalent.
+//  - Test points without any sample are dropped.
+// Not thread-safe; one builder per stream.
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "common/recording.h"
+#include "common/status.h"
+#include "protocol/decoder.h"
+
+namespace fog::protocol {
+
+class RecordingBuilder {
+ public:
+  void add(const DecodedFrame& frame);
+  void add(std::span<const DecodedFrame> frames);
+
+  // Number of frames added since construction or the last finish().
+  std::size_t framesAdded() const { return framesAdded_; }
+
+  // Builds the recording from everything added, copies `health` (normally the
+  // decoder's) into it, and resets the builder for a new stream.
+  fog::Recording finish(const fog::StreamHealth& health = {});
+
+ private:
+  struct RawTable {
+    std::int64_t ticks = 0;
+    std::array<double, kAxisCount> angleDeg{};
+  };
+  struct RawImu {
+    std::int64_t ticks = 0;
+    std::array<std::int32_t, kAxisCount> pulses{};
+    double temperatureC = 0.0;
+    std::uint32_t lostBefore = 0;
+    double pulseEquivalentDeg = 0.0;  // in force when received; 0 = not yet known
+  };
+  struct Segment {
+    int testPoint = 0;
+    Axis axis = Axis::kX;
+    double nominalFrequencyHz = 0.0;
+    double nominalAmplitudeDeg = 0.0;
+    std::vector<RawTable> table;
+    std::vector<RawImu> imu;
+  };
+
+  void onStatus(const StatusPayload& status);
+
+  std::size_t framesAdded_ = 0;
+  bool haveFirst_ = false;
+  std::int64_t firstTicks_ = 0;
+  double counterHz_ = 10e6;
+  int counterBits_ = 32;
+  double pulseEquivalentDeg_ = 0.0;  // latest usable value, 0 = none yet
+  bool sawRecording_ = false;        // any STATUS with phase kRecording
+  bool collecting_ = false;          // latest STATUS says kRecording
+  std::vector<Segment> segments_;
+  Segment whole_;  // every sample, kept until the first recording STATUS (fallback)
+};
+
+// Decodes a complete raw stream and builds its recording. Errors:
+// kCorruptData when the bytes hold no valid frame at all; kInsufficientData
+// when frames exist but no test point has both table and IMU samples.
+fog::Result<fog::Recording> decodeRecording(std::span<const std::uint8_t> bytes);
+
+}  // namespace fog::protocol
