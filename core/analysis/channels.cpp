@@ -31,23 +31,38 @@ void GyroChannel::whiten(double* x, std::size_t stride) const {
   }
 }
 
-void estimateGyroNoise(GyroChannel& gyro, const std::vector<double>& r) {
+void estimateGyroNoise(GyroChannel& gyro, const std::vector<double>& r, double blockS) {
   const std::size_t n = r.size();
-  double g0 = 0.0, g1 = 0.0;
+  // Pulse quantisation from the lag-1 autocovariance (g1 = -s2): at the frame
+  // level quantisation dominates, so this is where it is seen best.
+  double g1 = 0.0;
   std::size_t n1 = 0;
-  for (std::size_t k = 0; k < n; ++k) {
-    g0 += r[k] * r[k];
-    if (k > 0 && gyro.continuesPrevious[k]) {
+  for (std::size_t k = 1; k < n; ++k)
+    if (gyro.continuesPrevious[k]) {
       g1 += r[k] * r[k - 1];
       ++n1;
     }
-  }
-  g0 /= static_cast<double>(std::max<std::size_t>(n, 1));
   g1 = n1 ? g1 / static_cast<double>(n1) : 0.0;
-  // g0 = q*dt + 2*s2 and g1 = -s2 for this noise model.
   const double s2 = std::max(-g1, 0.0);
-  const double white = std::max(g0 - 2.0 * s2, 1e-6 * g0);
-  gyro.setNoise(white / gyro.framePeriodS, s2);
+  // Angle random walk from overlapping sums of M increments: their variance
+  // is q*M*dt + 2*s2 (quantisation enters only at the two ends). Block sums
+  // see the noise at low frequencies, near the swing, where the lag is
+  // decided; per-frame variances would be swamped by quantisation.
+  const std::size_t m = std::clamp<std::size_t>(
+      static_cast<std::size_t>(std::llround(blockS / gyro.framePeriodS)), 1, std::max<std::size_t>(n / 8, 1));
+  std::vector<double> prefix(n + 1, 0.0);
+  for (std::size_t k = 0; k < n; ++k) prefix[k + 1] = prefix[k] + r[k];
+  double v = 0.0;
+  std::size_t blocks = 0;
+  for (std::size_t k = 0; k + m <= n; ++k) {
+    const double sum = prefix[k + m] - prefix[k];
+    v += sum * sum;
+    ++blocks;
+  }
+  v /= static_cast<double>(std::max<std::size_t>(blocks, 1));
+  const double floorVar = 1e-6 * (v + 2.0 * s2) + 1e-30;
+  const double q = std::max(v - 2.0 * s2, floorVar) / (static_cast<double>(m) * gyro.framePeriodS);
+  gyro.setNoise(q, s2);
 }
 
 namespace {

@@ -65,9 +65,10 @@ struct Channels {
 // in degrees; the pulse equivalent when the stream carried raw pulses).
 Result<Channels> makeChannels(const TestPointData& data, double incrementScale);
 
-// Estimates q and s2 from residuals of increments (lag-0 and lag-1
-// autocovariance) and applies them to the channel.
-void estimateGyroNoise(GyroChannel& gyro, const std::vector<double>& residualDeg);
+// Estimates q and s2 from residuals of increments and applies them to the
+// channel: s2 from the lag-1 autocovariance, q from the variance of sums of
+// increments over blockS seconds.
+void estimateGyroNoise(GyroChannel& gyro, const std::vector<double>& residualDeg, double blockS);
 
 // Cumulative gyro angle at each interval end (starting from 0 before the
 // first interval); lost frames' increments are missing.

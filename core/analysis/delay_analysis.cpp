@@ -163,15 +163,20 @@ Result<TestPointResult> analyzeTestPoint(const TestPointData& data, double incre
   // 1. 3-parameter fits at the nominal frequency (gyro: OLS first, to learn its noise).
   r.tableNominal = fitTableLinear(ch.table, w0, ch.referenceS);
   ch.table.noiseDeg = std::max(r.tableNominal.residualRmsDeg, 1e-12);
-  estimateGyroNoise(ch.gyro, gyroIncrementResiduals(ch.gyro, fitGyroLinear(ch.gyro, w0, ch.referenceS, false)));
+  // ARW is judged over blocks of a twentieth of a period (0.05 .. 1 s): long
+  // enough to rise above pulse quantisation, short enough for many blocks.
+  const double noiseBlockS = std::clamp(0.05 / f0, 0.05, 1.0);
+  estimateGyroNoise(ch.gyro, gyroIncrementResiduals(ch.gyro, fitGyroLinear(ch.gyro, w0, ch.referenceS, false)),
+                    noiseBlockS);
   r.gyroNominal = fitGyroLinear(ch.gyro, w0, ch.referenceS, true);
 
   // 2. 4-parameter fits, frequency free; noise re-estimated from the better fits.
   auto table4 = fitTableNonlinear(ch.table, r.tableNominal);
   if (!table4) return table4.status();
   ch.table.noiseDeg = std::max(table4->residualRmsDeg, 1e-12);
-  estimateGyroNoise(ch.gyro, gyroIncrementResiduals(
-                                 ch.gyro, fitGyroLinear(ch.gyro, table4->omegaRadPerS, ch.referenceS, true)));
+  estimateGyroNoise(ch.gyro,
+                    gyroIncrementResiduals(ch.gyro, fitGyroLinear(ch.gyro, table4->omegaRadPerS, ch.referenceS, true)),
+                    noiseBlockS);
   auto gyro4 = fitGyroNonlinear(ch.gyro, r.gyroNominal);
   if (!gyro4) return gyro4.status();
   r.tableFit = *table4;

@@ -47,7 +47,9 @@ struct GyroChannel {
 };
 
 std::uint32_t toCounter(double stampS, const SamplingBoardParams& b) {
-  const double ticks = std::floor(std::max(stampS, 0.0) * b.counterHz);
+  // The counter floors true time; the tiny offset keeps instants that fall
+  // exactly on a tick (k * 1 ms) from landing one tick early through rounding.
+  const double ticks = std::floor(std::max(stampS, 0.0) * b.counterHz + 1e-6);
   const std::uint64_t raw = static_cast<std::uint64_t>(ticks) + b.counterStart;
   const std::uint64_t mask = b.counterBits >= 64 ? ~0ULL : ((1ULL << b.counterBits) - 1ULL);
   return static_cast<std::uint32_t>(raw & mask);

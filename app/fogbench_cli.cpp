@@ -1,0 +1,65 @@
+// fogbench-cli: the headless bench. Wires the simulator, the decoder and the
+// analysis together; see `fogbench-cli help`.
+
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "cli_arguments.h"
+#include "cli_commands.h"
+#include "common/version.h"
+
+namespace {
+
+const char* kHelp = R"(fogbench-cli: measure how late a fiber-optic gyro IMU reports rotation.
+
+usage:
+  fogbench-cli run [plan] [simulator options] [constants] [--save-raw FILE] [--json]
+      Run a test plan on the built-in simulator and print the delay report.
+      plan: --plan FILE.json | --preset paper|paper-slow|paper-fast (default paper:
+            0.1 Hz / 10 deg for 294 s and 1 Hz / 3 deg for 60 s on X)
+            | --axis x --freq-hz 0.1 --amp-deg 10 --duration-s 294 [--settle-s 5]
+      --source sim (the only source so far), --seed N,
+      --gyro-delay-ms D (gyro's own delay, default 0.2358),
+      --arw-deg-sqrt-h, --bias-instability-deg-h, --pulse-equivalent-deg,
+      --table-freq-error-ppm, --counter-hz, --counter-bits, --counter-start
+  fogbench-cli analyze FILE [constants] [--json]
+      The same report from a saved raw sampling-board byte stream.
+  fogbench-cli theory [--freq-hz F --amp-deg A --duration-s T] [--stability-deg-h S]
+                      [--fibre-length-m L] [--arw-deg-sqrt-h N] [--json]
+      The paper's delay budget and resolution figure, and the bench's bound.
+  fogbench-cli accuracy [--seeds N] [--threads K]
+      Monte Carlo study of both paper conditions (docs/accuracy.md).
+  fogbench-cli --version | help
+
+constants: --read-delay-ms (0.05) --read-delay-std-ms (0) --board-delay-ms (0.28)
+           --board-delay-std-ms (0) --pulse-equivalent-deg (when the stream lacks it)
+exit codes: 0 ok, 1 the data gave no result, 2 bad command line or input.
+)";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::string> args(argv + 1, argv + argc);
+  if (args.empty() || args[0] == "help" || args[0] == "--help" || args[0] == "-h") {
+    std::cout << kHelp;
+    return args.empty() ? 2 : 0;
+  }
+  if (args[0] == "--version" || args[0] == "version") {
+    std::cout << "fogbench-cli " << FOG_VERSION << "\n";
+    return 0;
+  }
+  const std::string command = args[0];
+  args.erase(args.begin());
+  auto parsed = fog::app::CliArguments::parse(args, {"json"});
+  if (!parsed) {
+    std::cerr << "fogbench-cli: " << parsed.status().message() << "\n";
+    return 2;
+  }
+  if (command == "run") return fog::app::runCommand(*parsed);
+  if (command == "analyze") return fog::app::analyzeCommand(*parsed);
+  if (command == "theory") return fog::app::theoryCommand(*parsed);
+  if (command == "accuracy") return fog::app::accuracyCommand(*parsed);
+  std::cerr << "fogbench-cli: unknown command '" << command << "' (try fogbench-cli help)\n";
+  return 2;
+}

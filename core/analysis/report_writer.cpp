@@ -1,0 +1,174 @@
+#include "analysis/report_writer.h"
+
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace fog::analysis {
+
+namespace {
+
+std::string f(const char* format, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, format, v);
+  return buf;
+}
+
+std::string axisUpper(Axis a) {
+  std::string s = axisName(a);
+  s[0] = static_cast<char>(s[0] - 'a' + 'A');
+  return s;
+}
+
+void fitRow(std::ostringstream& o, const char* name, const SineFit& s, bool frequencyFree) {
+  o << "    " << name << "  period " << f("%12.4f", s.periodMs)
+    << (frequencyFree ? " ± " + f("%.4f", s.periodStdMs) : std::string(" (nominal)"))
+    << " ms   phase " << f("%11.4f", s.phaseMs) << " ± " << f("%.4f", s.phaseStdMs) << " ms   amplitude "
+    << f("%.5f", s.amplitudeDeg) << " deg\n";
+}
+
+nlohmann::json fitJson(const SineFit& s) {
+  return {{"period_ms", s.periodMs},         {"period_std_ms", s.periodStdMs},
+          {"phase_ms", s.phaseMs},           {"phase_std_ms", s.phaseStdMs},
+          {"amplitude_deg", s.amplitudeDeg}, {"amplitude_std_deg", s.amplitudeStdDeg},
+          {"frequency_hz", s.frequencyHz},   {"offset_deg", s.offsetDeg},
+          {"trend_deg_per_s", s.trendDegPerS}, {"residual_rms_deg", s.residualRmsDeg},
+          {"chi2_per_dof", s.chiSquarePerDof}, {"samples", s.samples}};
+}
+
+}  // namespace
+
+std::string formatReportText(const DelayReport& report, const ReportContext& context) {
+  std::ostringstream o;
+  const auto& c = report.constants;
+  const auto& h = report.health;
+  o << "fogbench delay report\n";
+  if (!context.source.empty()) o << "source: " << context.source << "\n";
+  o << "stream: " << h.tableFrames << " table, " << h.imuFrames << " IMU, " << h.statusFrames
+    << " status frames; " << h.checksumFailures << " checksum failures, " << h.lostFrames << " lost, "
+    << h.duplicateFrames << " duplicated, " << h.bytesSkipped << " bytes skipped\n";
+  o << "bench constants: table read delay " << f("%.4f", c.tableReadDelayMs) << " ± "
+    << f("%.4f", c.tableReadDelayStdMs) << " ms, board delay " << f("%.4f", c.boardDelayMs) << " ± "
+    << f("%.4f", c.boardDelayStdMs) << " ms\n";
+
+  for (std::size_t i = 0; i < report.points.size(); ++i) {
+    const auto& p = report.points[i];
+    o << "\nTest point " << p.index + 1 << ": " << axisUpper(p.axis) << " axis, " << f("%g", p.nominalFrequencyHz)
+      << " Hz / " << f("%.3f", p.tableFit.amplitudeDeg) << " deg, " << f("%.1f", p.durationS) << " s ("
+      << f("%.1f", p.periods) << " periods)\n";
+    o << "  fits (angle = A sin(2 pi (t - t0) / T); t0 is the phase):\n";
+    fitRow(o, "table 3-parameter", p.tableNominal, false);
+    fitRow(o, "gyro  3-parameter", p.gyroNominal, false);
+    fitRow(o, "table 4-parameter", p.tableFit, true);
+    fitRow(o, "gyro  4-parameter", p.gyroFit, true);
+    o << "    joint fit: frequency " << f("%.9f", p.joint.frequencyHz) << " Hz, gyro/table amplitude "
+      << f("%.6f", p.magnitudeRatio) << ", trend " << f("%.3e", p.joint.trendDegPerS) << " deg/s ("
+      << f("%.3f", p.joint.trendDegPerS * 3600.0) << " deg/h), chi2/dof " << f("%.3f", p.joint.chiSquarePerDof)
+      << "\n";
+    o << "  delay:\n";
+    o << "    measured lag (gyro behind table) " << f("%9.4f", p.lagMs) << " ± " << f("%.4f", p.lagStdMs)
+      << " ms   (CRLB " << f("%.4f", p.crlbMs) << " ms, std/CRLB " << f("%.2f", p.stdOverCrlb) << ")\n";
+    o << "  + table read delay                 " << f("%9.4f", c.tableReadDelayMs) << " ms\n";
+    o << "  = IMU delay                        " << f("%9.4f", p.imuDelayMs) << " ± "
+      << f("%.4f", p.imuDelayStdMs) << " ms\n";
+    o << "  - processing board delay           " << f("%9.4f", c.boardDelayMs) << " ms\n";
+    o << "  = gyro's own delay                 " << f("%9.4f", p.gyroDelayMs) << " ± "
+      << f("%.4f", p.gyroDelayStdMs) << " ms\n";
+    if (i < context.trueLagMs.size())
+      o << "    simulator truth: lag " << f("%.4f", context.trueLagMs[i]) << " ms (error "
+        << f("%+.4f", p.lagMs - context.trueLagMs[i]) << " ms = "
+        << f("%+.1f", (p.lagMs - context.trueLagMs[i]) / p.lagStdMs) << " std)\n";
+    o << "  per-period delay: " << p.periodTrack.size() << " periods, mean " << f("%.4f", p.periodMeanLagMs)
+      << " ms, scatter " << f("%.4f", p.periodScatterMs) << " ms\n";
+    o << "  noise: encoder " << f("%.2e", p.noise.tableNoiseDeg) << " deg, pulse output "
+      << f("%.2e", p.noise.gyroQuantisationDeg) << " deg, angle random walk "
+      << f("%.4f", p.noise.gyroArwDegPerSqrtH) << " deg/sqrt(h)\n";
+    if (p.lostImuFrames) o << "  lost IMU frames: " << p.lostImuFrames << "\n";
+    for (const auto& w : p.warnings) o << "  warning: " << w << "\n";
+  }
+  for (const auto& fp : report.failedPoints) o << "\nno delay from " << fp << "\n";
+  for (const auto& cc : report.consistency) {
+    o << "\nDelay against frequency, " << axisUpper(cc.axis) << " axis (" << cc.points
+      << " frequencies): weighted lag " << f("%.4f", cc.weightedLagMs) << " ± " << f("%.4f", cc.weightedLagStdMs)
+      << " ms, chi2 " << f("%.2f", cc.chiSquare) << " on " << cc.dof << " dof, p = " << f("%.3f", cc.pValue)
+      << ": "
+      << (cc.consistentWithPureDelay ? "consistent with a pure delay"
+                                     : "NOT a pure delay (frequency-dependent: lag, filtering or dynamics)")
+      << "\n";
+  }
+  return o.str();
+}
+
+std::string formatReportJson(const DelayReport& report, const ReportContext& context) {
+  using nlohmann::json;
+  json doc;
+  doc["software"] = "fogbench";
+  doc["source"] = context.source;
+  const auto& c = report.constants;
+  doc["constants"] = {{"table_read_delay_ms", c.tableReadDelayMs},
+                      {"table_read_delay_std_ms", c.tableReadDelayStdMs},
+                      {"board_delay_ms", c.boardDelayMs},
+                      {"board_delay_std_ms", c.boardDelayStdMs}};
+  const auto& h = report.health;
+  doc["stream"] = {{"table_frames", h.tableFrames},         {"imu_frames", h.imuFrames},
+                   {"status_frames", h.statusFrames},       {"checksum_failures", h.checksumFailures},
+                   {"bytes_skipped", h.bytesSkipped},       {"lost_frames", h.lostFrames},
+                   {"duplicate_frames", h.duplicateFrames}, {"out_of_order_frames", h.outOfOrderFrames},
+                   {"counter_wraps", h.counterWraps}};
+  doc["test_points"] = json::array();
+  for (std::size_t i = 0; i < report.points.size(); ++i) {
+    const auto& p = report.points[i];
+    json tp = {{"index", p.index},
+               {"axis", axisName(p.axis)},
+               {"frequency_hz", p.nominalFrequencyHz},
+               {"amplitude_deg", p.tableFit.amplitudeDeg},
+               {"duration_s", p.durationS},
+               {"periods", p.periods},
+               {"table_fit", fitJson(p.tableFit)},
+               {"gyro_fit", fitJson(p.gyroFit)},
+               {"table_fit_nominal", fitJson(p.tableNominal)},
+               {"gyro_fit_nominal", fitJson(p.gyroNominal)},
+               {"joint_fit",
+                {{"frequency_hz", p.joint.frequencyHz},
+                 {"frequency_std_hz", p.joint.frequencyStdHz},
+                 {"magnitude_ratio", p.magnitudeRatio},
+                 {"magnitude_ratio_std", p.joint.gainStd},
+                 {"phase_deg", p.phaseDeg},
+                 {"trend_deg_per_s", p.joint.trendDegPerS},
+                 {"chi2_per_dof", p.joint.chiSquarePerDof}}},
+               {"lag_ms", p.lagMs},
+               {"lag_std_ms", p.lagStdMs},
+               {"crlb_ms", p.crlbMs},
+               {"lag_std_over_crlb", p.stdOverCrlb},
+               {"imu_delay_ms", p.imuDelayMs},
+               {"imu_delay_std_ms", p.imuDelayStdMs},
+               {"gyro_delay_ms", p.gyroDelayMs},
+               {"gyro_delay_std_ms", p.gyroDelayStdMs},
+               {"noise",
+                {{"table_noise_deg", p.noise.tableNoiseDeg},
+                 {"gyro_quantisation_deg", p.noise.gyroQuantisationDeg},
+                 {"gyro_arw_deg_per_sqrt_h", p.noise.gyroArwDegPerSqrtH}}},
+               {"lost_imu_frames", p.lostImuFrames},
+               {"warnings", p.warnings}};
+    json track = json::array();
+    for (const auto& d : p.periodTrack) track.push_back({{"time_s", d.timeS}, {"lag_ms", d.lagMs}});
+    tp["period_track"] = track;
+    tp["period_scatter_ms"] = p.periodScatterMs;
+    if (i < context.trueLagMs.size()) tp["true_lag_ms"] = context.trueLagMs[i];
+    doc["test_points"].push_back(tp);
+  }
+  doc["frequency_consistency"] = json::array();
+  for (const auto& cc : report.consistency)
+    doc["frequency_consistency"].push_back({{"axis", axisName(cc.axis)},
+                                            {"points", cc.points},
+                                            {"weighted_lag_ms", cc.weightedLagMs},
+                                            {"weighted_lag_std_ms", cc.weightedLagStdMs},
+                                            {"chi2", cc.chiSquare},
+                                            {"dof", cc.dof},
+                                            {"p_value", cc.pValue},
+                                            {"consistent_with_pure_delay", cc.consistentWithPureDelay}});
+  doc["failed_points"] = report.failedPoints;
+  return doc.dump(2);
+}
+
+}  // namespace fog::analysis

@@ -1,0 +1,29 @@
+#pragma once
+// The delay report as a person reads it (plain text) and as a program reads
+// it (JSON). Numbers in JSON are plain, locale-independent doubles.
+//
+// JSON layout: {"software": ..., "source": ..., "constants": {...},
+//   "stream": {...}, "test_points": [{"axis", "frequency_hz", "amplitude_deg",
+//   "table_fit": {"period_ms", "phase_ms", "amplitude_deg", ...},
+//   "gyro_fit": {...}, "lag_ms", "lag_std_ms", "crlb_ms", "imu_delay_ms",
+//   "gyro_delay_ms", ...}], "frequency_consistency": [...], "failed_points": [...]}
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "analysis/delay_analysis.h"
+
+namespace fog::analysis {
+
+// What the analysis does not know about where the data came from.
+struct ReportContext {
+  std::string source;  // "simulator (seed 1)", "raw stream run.bin"
+  // Known true lag per test point (simulator only), for comparison.
+  std::vector<double> trueLagMs;
+};
+
+std::string formatReportText(const DelayReport& report, const ReportContext& context);
+std::string formatReportJson(const DelayReport& report, const ReportContext& context);
+
+}  // namespace fog::analysis
