@@ -82,7 +82,6 @@ void appendFrame(const Frame& frame, std::vector<std::uint8_t>& out) {
   const FrameType type = payloadType(frame);
   assert(type == frame.type && "Frame::type disagrees with its payload");
   const std::size_t start = out.size();
-  out.reserve(start + frameSize(type));
   put8(out, kSync0);
   put8(out, kSync1);
   put8(out, static_cast<std::uint8_t>(type));

@@ -1,0 +1,237 @@
+#include "protocol/recording_builder.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "test_streams.h"
+
+namespace fog::protocol {
+namespace {
+
+using testing::imuWith;
+using testing::tableAt;
+
+StatusPayload statusFor(std::uint16_t testPoint, TestPhase phase, std::uint8_t axis = 0) {
+  StatusPayload s;
+  s.counterHz = 1000000;
+  s.pulseEquivalentDeg = 5e-5;
+  s.testPoint = testPoint;
+  s.axis = axis;
+  s.phase = phase;
+  s.nominalFrequencyMicroHz = 1000000;
+  s.nominalAmplitudeMicroDeg = 3000000;
+  return s;
+}
+
+// Counter in microseconds (counterHz 1 MHz in the status frames).
+class StreamBuilder {
+ public:
+  StreamBuilder& status(std::uint32_t us, const StatusPayload& s) { return w_.status(us, s, bytes), *this; }
+  StreamBuilder& table(std::uint32_t us, const TablePayload& t) { return w_.table(us, t, bytes), *this; }
+  StreamBuilder& imu(std::uint32_t us, const ImuPayload& m) { return w_.imu(us, m, bytes), *this; }
+  StreamBuilder& skipImu() {
+    std::vector<std::uint8_t> lost;
+    return w_.imu(0, {}, lost), *this;
+  }
+  std::vector<std::uint8_t> bytes;
+
+ private:
+  FrameWriter w_;
+};
+
+TEST(RecordingBuilder, StatusFramesSplitTheStreamIntoTestPoints) {
+  StreamBuilder s;
+  s.status(1000, statusFor(kNoTestPoint, TestPhase::kIdle))
+      .table(1500, tableAt(1))  // idle: not collected
+      .status(2000, statusFor(0, TestPhase::kSettling, 1))
+      .table(2500, tableAt(2))  // settling: not collected
+      .status(3000, statusFor(0, TestPhase::kRecording, 1))
+      .table(3000, tableAt(0, 1500000))
+      .imu(3400, imuWith(10, 20, -30))
+      .table(4000, tableAt(0, 2500000))
+      .skipImu()
+      .skipImu()
+      .table(5000, tableAt(0, -250000))
+      .imu(5400, imuWith(1, 2, 3));
+  auto settle1 = statusFor(1, TestPhase::kSettling, 2);
+  auto record1 = statusFor(1, TestPhase::kRecording, 2);
+  record1.nominalFrequencyMicroHz = 100000;
+  record1.nominalAmplitudeMicroDeg = 10000000;
+  s.status(6000, settle1)
+      .table(6500, tableAt(9))  // settling: not collected
+      .status(7000, record1)
+      .table(7000, tableAt(0, 0, 4000000))
+      .imu(7400, imuWith(0, 0, 100))
+      .status(8000, statusFor(1, TestPhase::kDone, 2))
+      .table(8500, tableAt(9));  // done: not collected
+
+  auto rec = decodeRecording(s.bytes);
+  ASSERT_TRUE(rec.isOk()) << rec.status().toString();
+  EXPECT_EQ(rec->counterHz, 1e6);
+  EXPECT_EQ(rec->pulseEquivalentDeg, 5e-5);
+  ASSERT_EQ(rec->testPoints.size(), 2u);
+
+  const auto& p0 = rec->testPoints[0];
+  EXPECT_EQ(p0.index, 0);
+  EXPECT_EQ(p0.axis, Axis::kY);
+  EXPECT_DOUBLE_EQ(p0.nominalFrequencyHz, 1.0);
+  EXPECT_DOUBLE_EQ(p0.nominalAmplitudeDeg, 3.0);
+  ASSERT_EQ(p0.table.size(), 3u);
+  EXPECT_DOUBLE_EQ(p0.table[0].timeS, 0.002);  // (3000 - 1000) us
+  EXPECT_DOUBLE_EQ(p0.table[1].angleDeg[1], 2.5);
+  EXPECT_DOUBLE_EQ(p0.table[2].angleDeg[1], -0.25);
+  ASSERT_EQ(p0.imu.size(), 2u);
+  EXPECT_DOUBLE_EQ(p0.imu[0].timeS, 0.0024);
+  EXPECT_DOUBLE_EQ(p0.imu[0].incrementDeg[0], 10 * 5e-5);
+  EXPECT_DOUBLE_EQ(p0.imu[0].incrementDeg[2], -30 * 5e-5);
+  EXPECT_DOUBLE_EQ(p0.imu[0].temperatureC, 25.12);
+  EXPECT_EQ(p0.imu[0].lostBefore, 0u);
+  EXPECT_EQ(p0.imu[1].lostBefore, 2u);
+
+  const auto& p1 = rec->testPoints[1];
+  EXPECT_EQ(p1.index, 1);
+  EXPECT_EQ(p1.axis, Axis::kZ);
+  EXPECT_DOUBLE_EQ(p1.nominalFrequencyHz, 0.1);
+  EXPECT_DOUBLE_EQ(p1.nominalAmplitudeDeg, 10.0);
+  ASSERT_EQ(p1.table.size(), 1u);
+  EXPECT_DOUBLE_EQ(p1.table[0].angleDeg[2], 4.0);
+  ASSERT_EQ(p1.imu.size(), 1u);
+  EXPECT_DOUBLE_EQ(p1.imu[0].timeS, 0.0064);
+
+  EXPECT_EQ(rec->health.tableFrames, 8u);
+  EXPECT_EQ(rec->health.lostFrames, 2u);
+}
+
+TEST(RecordingBuilder, RecordingPausedAndResumedOnTheSameTestPointStaysOneTestPoint) {
+  StreamBuilder s;
+  s.status(0, statusFor(4, TestPhase::kRecording))
+      .table(100, tableAt(1))
+      .imu(150, imuWith(1))
+      .status(200, statusFor(4, TestPhase::kSettling))
+      .table(300, tableAt(2))
+      .status(400, statusFor(4, TestPhase::kRecording))
+      .table(500, tableAt(3));
+  auto rec = decodeRecording(s.bytes);
+  ASSERT_TRUE(rec.isOk()) << rec.status().toString();
+  ASSERT_EQ(rec->testPoints.size(), 1u);
+  EXPECT_EQ(rec->testPoints[0].index, 4);
+  EXPECT_EQ(rec->testPoints[0].table.size(), 2u);
+}
+
+TEST(RecordingBuilder, TestPointsWithoutSamplesAreDropped) {
+  StreamBuilder s;
+  s.status(0, statusFor(2, TestPhase::kRecording))
+      .status(100, statusFor(3, TestPhase::kRecording))
+      .table(200, tableAt(1))
+      .imu(300, imuWith(1));
+  auto rec = decodeRecording(s.bytes);
+  ASSERT_TRUE(rec.isOk()) << rec.status().toString();
+  ASSERT_EQ(rec->testPoints.size(), 1u);
+  EXPECT_EQ(rec->testPoints[0].index, 3);
+}
+
+TEST(RecordingBuilder, WithoutRecordingStatusTheWholeStreamIsOneTestPointOnTheLargestSwing) {
+  StreamBuilder s;
+  // No status at all: 10 MHz default, pulse equivalent unknown.
+  for (int i = 0; i < 100; ++i) {
+    const auto t = static_cast<std::uint32_t>(5000 + i * 10000);
+    const double phase = 2.0 * std::numbers::pi * i / 50.0;
+    s.table(t, tableAt(static_cast<std::int32_t>(2e6 * std::sin(phase)),
+                       static_cast<std::int32_t>(-3e6 * std::sin(phase)), 1000000));
+    if (i % 2 == 0) s.imu(t + 3000, imuWith(7, -9, 0));
+  }
+  auto rec = decodeRecording(s.bytes);
+  ASSERT_TRUE(rec.isOk()) << rec.status().toString();
+  ASSERT_EQ(rec->testPoints.size(), 1u);
+  const auto& p = rec->testPoints[0];
+  EXPECT_EQ(p.index, 0);
+  EXPECT_EQ(p.axis, Axis::kY);
+  EXPECT_EQ(p.nominalFrequencyHz, 0.0);
+  EXPECT_EQ(p.nominalAmplitudeDeg, 0.0);
+  EXPECT_EQ(rec->counterHz, 10e6);
+  EXPECT_EQ(rec->pulseEquivalentDeg, 0.0);
+  ASSERT_EQ(p.table.size(), 100u);
+  ASSERT_EQ(p.imu.size(), 50u);
+  EXPECT_DOUBLE_EQ(p.table[1].timeS, 0.001);
+  EXPECT_DOUBLE_EQ(p.imu[0].timeS, 0.0003);
+  // Unknown pulse equivalent: increments stay in raw pulses.
+  EXPECT_EQ(p.imu[0].incrementDeg[0], 7.0);
+  EXPECT_EQ(p.imu[0].incrementDeg[1], -9.0);
+}
+
+TEST(RecordingBuilder, FallbackTakesPulseEquivalentAndCounterFromAnIdleStatus) {
+  StreamBuilder s;
+  s.table(0, tableAt(0, 0, 1)).imu(100, imuWith(4));
+  auto idle = statusFor(kNoTestPoint, TestPhase::kIdle);
+  idle.pulseEquivalentDeg = 1e-4;
+  s.status(500, idle).table(1000, tableAt(0, 0, -1)).imu(1100, imuWith(6));
+  auto rec = decodeRecording(s.bytes);
+  ASSERT_TRUE(rec.isOk()) << rec.status().toString();
+  ASSERT_EQ(rec->testPoints.size(), 1u);
+  const auto& p = rec->testPoints[0];
+  EXPECT_EQ(p.axis, Axis::kZ);
+  EXPECT_EQ(rec->pulseEquivalentDeg, 1e-4);
+  ASSERT_EQ(p.imu.size(), 2u);
+  // The status came after the first IMU frame: its value is applied to both.
+  EXPECT_DOUBLE_EQ(p.imu[0].incrementDeg[0], 4e-4);
+  EXPECT_DOUBLE_EQ(p.imu[1].incrementDeg[0], 6e-4);
+  EXPECT_DOUBLE_EQ(p.imu[1].timeS, 1100 / 1e6);  // counterHz from the status
+}
+
+TEST(RecordingBuilder, FinishResetsTheBuilder) {
+  StreamBuilder s;
+  s.status(0, statusFor(0, TestPhase::kRecording)).table(10, tableAt(1)).imu(20, imuWith(1));
+  Decoder d;
+  std::vector<DecodedFrame> frames;
+  d.push(s.bytes, frames);
+  RecordingBuilder b;
+  b.add(frames);
+  EXPECT_EQ(b.framesAdded(), 3u);
+  const Recording first = b.finish(d.health());
+  EXPECT_EQ(first.testPoints.size(), 1u);
+  EXPECT_EQ(first.health.tableFrames, 1u);
+  EXPECT_EQ(b.framesAdded(), 0u);
+  const Recording empty = b.finish();
+  EXPECT_TRUE(empty.testPoints.empty());
+}
+
+TEST(DecodeRecording, BytesWithoutAnyFrameAreCorruptDataWithAHint) {
+  std::vector<std::uint8_t> bytes(100, 0x55);
+  auto rec = decodeRecording(bytes);
+  ASSERT_FALSE(rec.isOk());
+  EXPECT_EQ(rec.status().code(), StatusCode::kCorruptData);
+  EXPECT_EQ(rec.status().message(),
+            "no valid sampling-board frames found in 100 bytes; is this a fogbench raw stream, or is the "
+            "baud rate wrong?");
+}
+
+TEST(DecodeRecording, EmptyInputIsCorruptData) {
+  auto rec = decodeRecording({});
+  ASSERT_FALSE(rec.isOk());
+  EXPECT_EQ(rec.status().code(), StatusCode::kCorruptData);
+}
+
+TEST(DecodeRecording, TableWithoutImuIsInsufficientData) {
+  StreamBuilder s;
+  s.status(0, statusFor(0, TestPhase::kRecording)).table(10, tableAt(1)).table(20, tableAt(2));
+  auto rec = decodeRecording(s.bytes);
+  ASSERT_FALSE(rec.isOk());
+  EXPECT_EQ(rec.status().code(), StatusCode::kInsufficientData);
+  EXPECT_NE(rec.status().message().find("2 table, 0 IMU and 1 status frames"), std::string::npos)
+      << rec.status().message();
+}
+
+TEST(DecodeRecording, TableAndImuInDifferentTestPointsIsInsufficientData) {
+  StreamBuilder s;
+  s.status(0, statusFor(0, TestPhase::kRecording)).table(10, tableAt(1))
+      .status(100, statusFor(1, TestPhase::kRecording)).imu(110, imuWith(1));
+  auto rec = decodeRecording(s.bytes);
+  ASSERT_FALSE(rec.isOk());
+  EXPECT_EQ(rec.status().code(), StatusCode::kInsufficientData);
+}
+
+}  // namespace
+}  // namespace fog::protocol
