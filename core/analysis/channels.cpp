@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+
 namespace fog::analysis {
 
 void GyroChannel::setNoise(double qDeg2PerS, double s2Deg2) {
@@ -21,13 +22,23 @@ void GyroChannel::setNoise(double qDeg2PerS, double s2Deg2) {
   }
 }
 
-void GyroChannel::whiten(double* x, std::size_t stride) const {
+void GyroChannel::whiten(double* x) const {
   const std::size_t n = size();
   double previous = 0.0;
   for (std::size_t k = 0; k < n; ++k) {
-    double& v = x[k * stride];
-    v = (v - cholSub[k] * previous) / cholDiag[k];
-    previous = v;
+    x[k] = (x[k] - cholSub[k] * previous) / cholDiag[k];
+    previous = x[k];
+  }
+}
+
+void GyroChannel::whitenRows(double* x, std::size_t columns) const {
+  const std::size_t n = size();
+  for (std::size_t j = 0; j < columns; ++j) x[j] /= cholDiag[0];
+  for (std::size_t k = 1; k < n; ++k) {
+    double* row = x + k * columns;
+    const double* prev = row - columns;
+    const double m = cholSub[k], inv = 1.0 / cholDiag[k];
+    for (std::size_t j = 0; j < columns; ++j) row[j] = (row[j] - m * prev[j]) * inv;
   }
 }
 

@@ -17,6 +17,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "analysis/sin_cos_series.h"
 #include "common/recording.h"
 #include "common/status.h"
 
@@ -46,9 +47,36 @@ struct GyroChannel {
   std::size_t size() const { return incrementDeg.size(); }
   // Sets the noise model and factorises the covariance.
   void setNoise(double qDeg2PerS, double s2Deg2);
-  // In-place z = L^-1 x for a vector laid out like incrementDeg; element k
-  // at x[k * stride].
-  void whiten(double* x, std::size_t stride = 1) const;
+  // In-place z = L^-1 x for a vector laid out like incrementDeg.
+  void whiten(double* x) const;
+  // The same for each column of a row-major matrix with one row per increment.
+  void whitenRows(double* x, std::size_t columns) const;
+};
+
+// sin/cos of w*(t - shift) at each increment's end (s1, c1) and start
+// (s0, c0), walking the channel in order; a start that continues the previous
+// interval reuses its end.
+class GyroSinCosStream {
+ public:
+  GyroSinCosStream(const GyroChannel& gyro, double w, double shift) : g_(gyro), w_(w), shift_(shift), ends_(w, shift) {}
+  void next(std::size_t k, double& s1, double& c1, double& s0, double& c0) {
+    if (g_.continuesPrevious[k]) {
+      s0 = lastS_;
+      c0 = lastC_;
+    } else {
+      s0 = std::sin(w_ * (g_.startS[k] - shift_));
+      c0 = std::cos(w_ * (g_.startS[k] - shift_));
+    }
+    ends_.next(g_.endS[k], s1, c1);
+    lastS_ = s1;
+    lastC_ = c1;
+  }
+
+ private:
+  const GyroChannel& g_;
+  double w_, shift_;
+  SinCosStream ends_;
+  double lastS_ = 0.0, lastC_ = 1.0;
 };
 
 struct Channels {

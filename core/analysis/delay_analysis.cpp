@@ -3,8 +3,11 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <future>
 #include <sstream>
 
+#include "analysis/least_squares.h"
+#include "analysis/sin_cos_series.h"
 #include "analysis/statistics.h"
 #include "common/units.h"
 
@@ -20,32 +23,16 @@ std::string fmt(double v, int precision = 4) {
   return s.str();
 }
 
-// Linear fits over one window of samples at a fixed frequency, for the
-// per-period track; returns the phase angle psi of a*sin + b*cos.
-bool windowPhase(const TableChannel& table, std::size_t i0, std::size_t i1, double w, double& psi) {
-  Eigen::Matrix3d xtx = Eigen::Matrix3d::Zero();
-  Eigen::Vector3d xty = Eigen::Vector3d::Zero();
-  for (std::size_t i = i0; i < i1; ++i) {
-    const Eigen::Vector3d x(std::sin(w * table.timeS[i]), std::cos(w * table.timeS[i]), 1.0);
-    xtx.noalias() += x * x.transpose();
-    xty.noalias() += x * table.angleDeg[i];
+// Phase angle psi of a*sin + b*cos from the Gram matrix of
+// [sin-like, cos-like, third regressor, y] over one window.
+bool windowPhase(const NormalSums<4>& gram, std::size_t rows, double& psi) {
+  if (rows < 8) return false;
+  Eigen::Matrix3d xtx;
+  Eigen::Vector3d xty;
+  for (int i = 0; i < 3; ++i) {
+    xty[i] = gram.jtj[3][i];
+    for (int j = 0; j <= i; ++j) xtx(i, j) = xtx(j, i) = gram.jtj[i][j];
   }
-  if (i1 - i0 < 8) return false;
-  const Eigen::Vector3d p = xtx.ldlt().solve(xty);
-  psi = std::atan2(p[1], p[0]);
-  return true;
-}
-
-bool windowPhase(const GyroChannel& g, std::size_t k0, std::size_t k1, double w, double& psi) {
-  Eigen::Matrix3d xtx = Eigen::Matrix3d::Zero();
-  Eigen::Vector3d xty = Eigen::Vector3d::Zero();
-  for (std::size_t k = k0; k < k1; ++k) {
-    const double t1 = g.endS[k], t0 = g.startS[k];
-    const Eigen::Vector3d x(std::sin(w * t1) - std::sin(w * t0), std::cos(w * t1) - std::cos(w * t0), t1 - t0);
-    xtx.noalias() += x * x.transpose();
-    xty.noalias() += x * g.incrementDeg[k];
-  }
-  if (k1 - k0 < 8) return false;
   const Eigen::Vector3d p = xtx.ldlt().solve(xty);
   psi = std::atan2(p[1], p[0]);
   return true;
@@ -55,24 +42,36 @@ std::vector<PeriodDelay> periodTrack(const Channels& ch, double w, double refere
   std::vector<PeriodDelay> out;
   const double period = kTwoPi / w;
   const auto& tt = ch.table.timeS;
-  const auto& ge = ch.gyro.endS;
-  const double first = std::max(tt.front(), ch.gyro.startS.front());
-  const double last = std::min(tt.back(), ge.back());
+  const auto& g = ch.gyro;
+  SinCosStream tablePhase(w, 0.0);
+  GyroSinCosStream gyroPhase(g, w, 0.0);
+  const double first = std::max(tt.front(), g.startS.front());
+  const double last = std::min(tt.back(), g.endS.back());
   const int count = static_cast<int>(std::floor((last - first) / period));
   std::size_t i = 0, k = 0;
   for (int j = 0; j < count; ++j) {
     const double a = first + j * period, b = a + period;
-    while (i < tt.size() && tt[i] < a) ++i;
-    std::size_t i1 = i;
-    while (i1 < tt.size() && tt[i1] < b) ++i1;
-    while (k < ge.size() && ch.gyro.startS[k] < a) ++k;
-    std::size_t k1 = k;
-    while (k1 < ge.size() && ge[k1] <= b) ++k1;
+    // One small 3-parameter fit per channel and period, at the joint frequency.
+    // The phase streams must see every sample in order, also those skipped.
+    double sn, cs, s1, c1, s0, c0;
+    for (; i < tt.size() && tt[i] < a; ++i) tablePhase.next(tt[i], sn, cs);
+    NormalSums<4> table, gyro;
+    const std::size_t i0 = i;
+    for (; i < tt.size() && tt[i] < b; ++i) {
+      double v[4] = {0.0, 0.0, 1.0, ch.table.angleDeg[i]};
+      tablePhase.next(tt[i], v[0], v[1]);
+      table.add(v, 0.0);
+    }
+    for (; k < g.size() && g.startS[k] < a; ++k) gyroPhase.next(k, s1, c1, s0, c0);
+    const std::size_t k0 = k;
+    for (; k < g.size() && g.endS[k] <= b; ++k) {
+      gyroPhase.next(k, s1, c1, s0, c0);
+      const double v[4] = {s1 - s0, c1 - c0, g.endS[k] - g.startS[k], g.incrementDeg[k]};
+      gyro.add(v, 0.0);
+    }
     double psiT = 0.0, psiG = 0.0;
-    if (windowPhase(ch.table, i, i1, w, psiT) && windowPhase(ch.gyro, k, k1, w, psiG))
+    if (windowPhase(table, i - i0, psiT) && windowPhase(gyro, k - k0, psiG))
       out.push_back({referenceS + 0.5 * (a + b), wrapToHalfPeriod((psiT - psiG) / w, period) * 1e3});
-    i = i1;
-    k = k1;
   }
   return out;
 }
@@ -160,41 +159,45 @@ Result<TestPointResult> analyzeTestPoint(const TestPointData& data, double incre
                             " swing periods; a delay needs at least two whole periods");
   const double w0 = kTwoPi * f0;
 
-  // 1. 3-parameter fits at the nominal frequency (gyro: OLS first, to learn its noise).
+  // 1. The table: 3-parameter fit at the nominal frequency, then 4-parameter.
   r.tableNominal = fitTableLinear(ch.table, w0, ch.referenceS);
   ch.table.noiseDeg = std::max(r.tableNominal.residualRmsDeg, 1e-12);
-  // ARW is judged over blocks of a twentieth of a period (0.05 .. 1 s): long
-  // enough to rise above pulse quantisation, short enough for many blocks.
-  const double noiseBlockS = std::clamp(0.05 / f0, 0.05, 1.0);
-  estimateGyroNoise(ch.gyro, gyroIncrementResiduals(ch.gyro, fitGyroLinear(ch.gyro, w0, ch.referenceS, false)),
-                    noiseBlockS);
-  r.gyroNominal = fitGyroLinear(ch.gyro, w0, ch.referenceS, true);
-
-  // 2. 4-parameter fits, frequency free; noise re-estimated from the better fits.
   auto table4 = fitTableNonlinear(ch.table, r.tableNominal);
   if (!table4) return table4.status();
   ch.table.noiseDeg = std::max(table4->residualRmsDeg, 1e-12);
-  estimateGyroNoise(ch.gyro,
-                    gyroIncrementResiduals(ch.gyro, fitGyroLinear(ch.gyro, table4->omegaRadPerS, ch.referenceS, true)),
-                    noiseBlockS);
-  auto gyro4 = fitGyroNonlinear(ch.gyro, r.gyroNominal);
+
+  // 2. The gyro's noise, from the residuals of a fit at the table's measured
+  // frequency (at the nominal one, 8 ppm of error would dominate the slow
+  // part of the residuals). ARW is judged over blocks of a twentieth of a
+  // period (0.05 .. 1 s): long enough to rise above pulse quantisation, short
+  // enough for many blocks.
+  const SineFit gyroStart = fitGyroLinear(ch.gyro, table4->omegaRadPerS, ch.referenceS, false);
+  estimateGyroNoise(ch.gyro, gyroIncrementResiduals(ch.gyro, gyroStart), std::clamp(0.05 / f0, 0.05, 1.0));
+
+  // 3. The gyro: 3-parameter fit at the nominal frequency (beside, on the
+  // second core), then 4-parameter.
+  auto gyroNominal = std::async(std::launch::async, [&] { return fitGyroLinear(ch.gyro, w0, ch.referenceS, true); });
+  auto gyro4 = fitGyroNonlinear(ch.gyro, gyroStart);
+  r.gyroNominal = gyroNominal.get();
   if (!gyro4) return gyro4.status();
   r.tableFit = *table4;
   r.gyroFit = *gyro4;
   // The cumulative gyro angle's offset, for plots that overlay the fit.
   {
     const auto angle = cumulativeGyroAngle(ch.gyro);
+    std::vector<double> sn(angle.size()), cs(angle.size());
+    sinCosSeries(ch.gyro.endS.data(), angle.size(), r.gyroFit.omegaRadPerS, 0.0, sn.data(), cs.data());
     double sum = 0.0;
-    const double w = r.gyroFit.omegaRadPerS;
-    for (std::size_t k = 0; k < angle.size(); ++k) {
-      const double t = ch.gyro.endS[k];
-      sum += angle[k] - (r.gyroFit.a * std::sin(w * t) + r.gyroFit.b * std::cos(w * t) + r.gyroFit.trendDegPerS * t);
-    }
+    for (std::size_t k = 0; k < angle.size(); ++k)
+      sum += angle[k] - (r.gyroFit.a * sn[k] + r.gyroFit.b * cs[k] + r.gyroFit.trendDegPerS * ch.gyro.endS[k]);
     r.gyroFit.offsetDeg = sum / static_cast<double>(angle.size());
   }
 
-  // 3. Joint fit: one frequency, the delay as a parameter.
+  // 4. Joint fit: one frequency, the delay as a parameter. The per-period
+  // track needs only a frequency close to the swing's; it runs beside.
+  auto track = std::async(std::launch::async, [&] { return periodTrack(ch, table4->omegaRadPerS, ch.referenceS); });
   auto joint = fitJoint(ch, r.tableFit, r.gyroFit);
+  r.periodTrack = track.get();
   if (!joint) return joint.status();
   r.joint = *joint;
   r.lagMs = joint->lagS * 1e3;
@@ -221,7 +224,6 @@ Result<TestPointResult> analyzeTestPoint(const TestPointData& data, double incre
   r.phaseDeg = -joint->omegaRadPerS * joint->lagS * kDegPerRad;
 
   // Per-period delays.
-  r.periodTrack = periodTrack(ch, joint->omegaRadPerS, ch.referenceS);
   std::vector<double> lags;
   for (const auto& p : r.periodTrack) lags.push_back(p.lagMs);
   const auto spread = meanAndSpread(lags);

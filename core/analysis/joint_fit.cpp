@@ -1,10 +1,10 @@
 #include "analysis/joint_fit.h"
 
-#include <ceres/ceres.h>
-
 #include <cmath>
+#include <future>
 
 #include "analysis/least_squares.h"
+#include "analysis/sin_cos_series.h"
 #include "common/units.h"
 
 namespace fog::analysis {
@@ -13,73 +13,89 @@ namespace {
 
 enum Param { kW = 0, kA, kB, kC, kG, kLag, kD, kParams };
 
-class TableJointCost final : public ceres::CostFunction {
+// Residuals: the table's (weighted by its white noise), then the gyro
+// increments' (whitened by their noise model).
+class JointProblem final : public LeastSquaresProblem {
  public:
-  explicit TableJointCost(const TableChannel& table) : t_(table) {
-    set_num_residuals(static_cast<int>(table.timeS.size()));
-    mutable_parameter_block_sizes()->push_back(kParams);
-  }
-  bool Evaluate(double const* const* p, double* residuals, double** jacobians) const override {
-    const double w = p[0][kW], a = p[0][kA], b = p[0][kB], c = p[0][kC];
-    const double inv = 1.0 / t_.noiseDeg;
-    double* J = jacobians ? jacobians[0] : nullptr;
-    for (std::size_t i = 0; i < t_.timeS.size(); ++i) {
-      const double t = t_.timeS[i];
-      const double s = std::sin(w * t), co = std::cos(w * t);
-      residuals[i] = (t_.angleDeg[i] - (a * s + b * co + c)) * inv;
-      if (J) {
-        double* row = J + kParams * i;
-        row[kW] = -(a * co - b * s) * t * inv;
-        row[kA] = -s * inv;
-        row[kB] = -co * inv;
-        row[kC] = -inv;
-        row[kG] = row[kLag] = row[kD] = 0.0;
-      }
+  JointProblem(const TableChannel& table, const GyroChannel& gyro)
+      : t_(table), g_(gyro), nT_(table.timeS.size()), nG_(gyro.size()) {}
+  std::size_t numResiduals() const override { return nT_ + nG_; }
+  int numParameters() const override { return kParams; }
+
+  // The table and gyro rows are independent sums: each pass runs them on two
+  // threads (the bench machine has two cores) and adds the results.
+  double accumulate(const double* x, Eigen::MatrixXd* jtj, Eigen::VectorXd* jtr) const override {
+    NormalSums<4> tableSums;
+    NormalSums<kParams> gyroSums;
+    const bool withJacobian = jtj != nullptr;
+    auto table = std::async(std::launch::async, [&] { return accumulateTable(x, withJacobian, tableSums); });
+    const double rssGyro = accumulateGyro(x, withJacobian, gyroSums);
+    const double rss = table.get() + rssGyro;
+    if (withJacobian) {
+      // The table rows touch only (w, a, b, c), the first four parameters.
+      static_assert(kW == 0 && kA == 1 && kB == 2 && kC == 3);
+      tableSums.addTo(*jtj, *jtr);
+      gyroSums.addTo(*jtj, *jtr);
     }
-    return true;
+    return rss;
   }
 
  private:
-  const TableChannel& t_;
-};
-
-class GyroJointCost final : public ceres::CostFunction {
- public:
-  explicit GyroJointCost(const GyroChannel& gyro) : g_(gyro) {
-    set_num_residuals(static_cast<int>(gyro.size()));
-    mutable_parameter_block_sizes()->push_back(kParams);
+  // Table rows: a*sin(w*t) + b*cos(w*t) + c, parameters (w, a, b, c).
+  double accumulateTable(const double* x, bool withJacobian, NormalSums<4>& sums) const {
+    const double w = x[kW], a = x[kA], b = x[kB], c = x[kC];
+    const double inv = 1.0 / t_.noiseDeg;
+    SinCosStream phase(w, 0.0);
+    double rss = 0.0;
+    for (std::size_t i = 0; i < nT_; ++i) {
+      double sn, cs;
+      phase.next(t_.timeS[i], sn, cs);
+      const double r = (t_.angleDeg[i] - (a * sn + b * cs + c)) * inv;
+      rss += r * r;
+      if (withJacobian) {
+        const double row[4] = {-(a * cs - b * sn) * t_.timeS[i] * inv, -sn * inv, -cs * inv, -inv};
+        sums.add(row, r);
+      }
+    }
+    return rss;
   }
-  bool Evaluate(double const* const* p, double* residuals, double** jacobians) const override {
-    const double w = p[0][kW], a = p[0][kA], b = p[0][kB], g = p[0][kG], lag = p[0][kLag], d = p[0][kD];
-    double* J = jacobians ? jacobians[0] : nullptr;
-    for (std::size_t k = 0; k < g_.size(); ++k) {
+
+  // Gyro rows: g*(a*sin(w*(t - lag)) + b*cos(w*(t - lag))) + d*t, differenced
+  // over each frame and whitened.
+  double accumulateGyro(const double* x, bool withJacobian, NormalSums<kParams>& sums) const {
+    const double w = x[kW], a = x[kA], b = x[kB], g = x[kG], lag = x[kLag], d = x[kD];
+    GyroSinCosStream phase(g_, w, lag);
+    double rss = 0.0;
+    double prev[kParams + 1] = {};  // previous whitened row and residual
+    for (std::size_t k = 0; k < nG_; ++k) {
+      double s1, c1, s0, c0;
+      phase.next(k, s1, c1, s0, c0);
       const double t1 = g_.endS[k] - lag, t0 = g_.startS[k] - lag;
-      const double s1 = std::sin(w * t1), c1 = std::cos(w * t1);
-      const double s0 = std::sin(w * t0), c0 = std::cos(w * t0);
       const double ds = s1 - s0, dc = c1 - c0;
       const double dt = g_.endS[k] - g_.startS[k];
-      residuals[k] = g_.incrementDeg[k] - (g * (a * ds + b * dc) + d * dt);
-      if (J) {
-        double* row = J + kParams * k;
-        // derivative of a*cos(w*x) - b*sin(w*x) terms
-        const double q1 = a * c1 - b * s1, q0 = a * c0 - b * s0;
-        row[kW] = -g * (q1 * t1 - q0 * t0);
-        row[kA] = -g * ds;
-        row[kB] = -g * dc;
-        row[kC] = 0.0;
-        row[kG] = -(a * ds + b * dc);
-        row[kLag] = g * w * (q1 - q0);
-        row[kD] = -dt;
-      }
+      // d/dx of a*sin(w*x) + b*cos(w*x) is w*(a*cos - b*sin)
+      const double q1 = a * c1 - b * s1, q0 = a * c0 - b * s0;
+      double raw[kParams + 1];
+      raw[kW] = -g * (q1 * t1 - q0 * t0);
+      raw[kA] = -g * ds;
+      raw[kB] = -g * dc;
+      raw[kC] = 0.0;
+      raw[kG] = -(a * ds + b * dc);
+      raw[kLag] = g * w * (q1 - q0);
+      raw[kD] = -dt;
+      raw[kParams] = g_.incrementDeg[k] - (g * (a * ds + b * dc) + d * dt);
+      const double m = g_.cholSub[k], inv = 1.0 / g_.cholDiag[k];
+      const int from = withJacobian ? 0 : kParams;
+      for (int j = from; j <= kParams; ++j) prev[j] = (raw[j] - m * prev[j]) * inv;
+      rss += prev[kParams] * prev[kParams];
+      if (withJacobian) sums.add(prev, prev[kParams]);
     }
-    g_.whiten(residuals);
-    if (J)
-      for (int col = 0; col < kParams; ++col) g_.whiten(J + col, kParams);
-    return true;
+    return rss;
   }
 
- private:
+  const TableChannel& t_;
   const GyroChannel& g_;
+  std::size_t nT_, nG_;
 };
 
 }  // namespace
@@ -98,10 +114,7 @@ Result<JointFit> fitJoint(const Channels& ch, const SineFit& tableFit, const Sin
   x0[kLag] = wrapToHalfPeriod((psiT - psiG) / w, period);
   x0[kD] = gyroFit.trendDegPerS;
 
-  std::vector<std::unique_ptr<ceres::CostFunction>> costs;
-  costs.push_back(std::make_unique<TableJointCost>(ch.table));
-  costs.push_back(std::make_unique<GyroJointCost>(ch.gyro));
-  auto sol = solveLeastSquares(std::move(costs), x0);
+  auto sol = solveLeastSquares(JointProblem(ch.table, ch.gyro), x0);
   if (!sol) return Status(sol.status().code(), "joint fit: " + sol.status().message());
 
   JointFit f;

@@ -1,63 +1,94 @@
 #include "analysis/least_squares.h"
 
-#include <ceres/ceres.h>
+#include <ceres/tiny_solver.h>
 
 #include <cmath>
+#include <string>
 
 namespace fog::analysis {
 
-Result<LeastSquaresSolution> solveLeastSquares(std::vector<std::unique_ptr<ceres::CostFunction>> costs,
-                                               const Eigen::VectorXd& x0) {
-  const int p = static_cast<int>(x0.size());
-  LeastSquaresSolution out;
-  out.x = x0;
+namespace {
 
-  ceres::Problem::Options problemOptions;
-  problemOptions.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
-  ceres::Problem problem(problemOptions);
-  for (auto& c : costs) {
-    problem.AddResidualBlock(c.get(), nullptr, out.x.data());
-    out.residuals += static_cast<std::size_t>(c->num_residuals());
+// Full symmetric J^T J from the accumulated lower triangle.
+Eigen::MatrixXd symmetric(const Eigen::MatrixXd& lower) { return lower.selfadjointView<Eigen::Lower>(); }
+
+// Presents the problem to ceres::TinySolver as its (p+1)-residual equivalent.
+struct CompressedProblem {
+  using Scalar = double;
+  enum { NUM_RESIDUALS = Eigen::Dynamic, NUM_PARAMETERS = Eigen::Dynamic };
+  const LeastSquaresProblem& problem;
+  // The normal matrix of the last full evaluation, kept for the covariance:
+  // TinySolver stops after a step too small to matter, so this is J^T J a
+  // negligible step from the solution, and saves one more pass over the data.
+  mutable Eigen::MatrixXd lastJtj;
+  int NumResiduals() const { return problem.numParameters() + 1; }
+  int NumParameters() const { return problem.numParameters(); }
+
+  bool operator()(const double* x, double* residuals, double* jacobian) const {
+    const int p = problem.numParameters();
+    if (!jacobian) {
+      const double rss = problem.accumulate(x, nullptr, nullptr);
+      for (int i = 0; i < p; ++i) residuals[i] = 0.0;
+      residuals[p] = std::sqrt(rss);
+      return std::isfinite(rss);
+    }
+    Eigen::MatrixXd jtj = Eigen::MatrixXd::Zero(p, p);
+    Eigen::VectorXd jtr = Eigen::VectorXd::Zero(p);
+    const double rss = problem.accumulate(x, &jtj, &jtr);
+    if (!std::isfinite(rss)) return false;
+    jtj = symmetric(jtj);
+    lastJtj = jtj;
+    // A tiny ridge only if the normal matrix is numerically singular.
+    Eigen::LLT<Eigen::MatrixXd> llt(jtj);
+    for (double ridge = 1e-14; llt.info() != Eigen::Success && ridge < 1.0; ridge *= 100.0)
+      llt.compute(jtj + ridge * jtj.diagonal().cwiseAbs().maxCoeff() * Eigen::MatrixXd::Identity(p, p));
+    if (llt.info() != Eigen::Success) return false;
+    const Eigen::MatrixXd l = llt.matrixL();
+    const Eigen::VectorXd z = l.triangularView<Eigen::Lower>().solve(jtr);
+    Eigen::Map<Eigen::MatrixXd> j(jacobian, p + 1, p);
+    j.topRows(p) = l.transpose();
+    j.row(p).setZero();
+    for (int i = 0; i < p; ++i) residuals[i] = z[i];
+    residuals[p] = std::sqrt(std::max(rss - z.squaredNorm(), 0.0));
+    return true;
   }
-  if (out.residuals <= static_cast<std::size_t>(p))
+};
+
+}  // namespace
+
+Result<LeastSquaresSolution> solveLeastSquares(const LeastSquaresProblem& problem, const Eigen::VectorXd& x0) {
+  const int p = problem.numParameters();
+  const std::size_t n = problem.numResiduals();
+  if (n <= static_cast<std::size_t>(p))
     return insufficientData("not enough samples to fit " + std::to_string(p) + " parameters");
 
-  ceres::Solver::Options options;
-  options.linear_solver_type = ceres::DENSE_NORMAL_CHOLESKY;
-  options.max_num_iterations = 50;
-  // Tight: the delay is a small difference of two phases.
-  options.function_tolerance = 1e-13;
-  options.parameter_tolerance = 1e-13;
-  options.gradient_tolerance = 1e-16;
-  options.num_threads = 1;
-  options.logging_type = ceres::SILENT;
-  ceres::Solver::Summary summary;
-  ceres::Solve(options, &problem, &summary);
-  out.iterations = static_cast<int>(summary.iterations.size());
-  if (!summary.IsSolutionUsable() || summary.termination_type == ceres::NO_CONVERGENCE)
-    return Status(StatusCode::kNotConverged, "the fit did not converge: " + summary.message);
+  LeastSquaresSolution out;
+  out.x = x0;
+  out.residuals = n;
+  CompressedProblem compressed{problem, {}};
+  ceres::TinySolver<CompressedProblem> solver;
+  solver.options.max_num_iterations = 50;
+  // TinySolver's cost-change test is absolute. The cost is ~N/2 at the
+  // optimum and evaluates with ~1e-11 relative rounding noise, so stop when a
+  // step changes it by under 1e-10 relative: near the optimum that is a
+  // parameter change of under 1 % of its standard error.
+  solver.options.function_tolerance = 1e-10 * static_cast<double>(n);
+  solver.options.parameter_tolerance = 1e-14;
+  solver.options.gradient_tolerance = 1e-12;
+  // The starts come from linear fits: the first steps can be Gauss-Newton steps.
+  solver.options.initial_trust_region_radius = 1e12;
+  const auto& summary = solver.Solve(compressed, &out.x);
+  out.iterations = summary.iterations;
+  if (summary.status == ceres::TinySolver<CompressedProblem>::HIT_MAX_ITERATIONS || !out.x.allFinite())
+    return Status(StatusCode::kNotConverged,
+                  "the fit did not converge in " + std::to_string(summary.iterations) + " iterations");
 
-  // Covariance from J^T J at the solution, accumulated per residual block.
-  Eigen::MatrixXd jtj = Eigen::MatrixXd::Zero(p, p);
-  double chi2 = 0.0;
-  const double* params[] = {out.x.data()};
-  std::vector<double> r, j;
-  for (auto& c : costs) {
-    const auto n = static_cast<std::size_t>(c->num_residuals());
-    r.resize(n);
-    j.resize(n * static_cast<std::size_t>(p));
-    double* jac[] = {j.data()};
-    if (!c->Evaluate(params, r.data(), jac)) return Status(StatusCode::kInternal, "cost evaluation failed");
-    Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> J(
-        j.data(), static_cast<Eigen::Index>(n), p);
-    jtj.noalias() += J.transpose() * J;
-    for (double v : r) chi2 += v * v;
-  }
-  out.chiSquare = chi2;
-  const double scale = chi2 / static_cast<double>(out.residuals - static_cast<std::size_t>(p));
-  Eigen::LDLT<Eigen::MatrixXd> ldlt(jtj);
-  if (ldlt.info() != Eigen::Success || ldlt.rcond() < 1e-300)
+  // Covariance from the last J^T J; chi^2 is TinySolver's cost at the solution.
+  out.chiSquare = 2.0 * summary.final_cost;
+  Eigen::LDLT<Eigen::MatrixXd> ldlt(compressed.lastJtj);
+  if (ldlt.info() != Eigen::Success || !(ldlt.rcond() > 1e-300))
     return Status(StatusCode::kNotConverged, "the fit's parameters are not determined by the data");
+  const double scale = out.chiSquare / static_cast<double>(n - static_cast<std::size_t>(p));
   out.covariance = ldlt.solve(Eigen::MatrixXd::Identity(p, p)) * scale;
   for (int i = 0; i < p; ++i)
     if (!(out.covariance(i, i) >= 0.0) || !std::isfinite(out.covariance(i, i)))

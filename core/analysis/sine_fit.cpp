@@ -1,11 +1,11 @@
 #include "analysis/sine_fit.h"
 
-#include <ceres/ceres.h>
-
 #include <Eigen/Dense>
 #include <cmath>
+#include <future>
 
 #include "analysis/least_squares.h"
+#include "analysis/sin_cos_series.h"
 #include "common/units.h"
 
 namespace fog::analysis {
@@ -49,144 +49,178 @@ void finishFit(SineFit& f, const Eigen::MatrixXd* cov, int ia, int ib, int iw) {
 }
 
 // Table: y = a*sin(w*t) + b*cos(w*t) + c, parameters (a, b, c, w).
-class TableSineCost final : public ceres::CostFunction {
+class TableSineProblem final : public LeastSquaresProblem {
  public:
-  explicit TableSineCost(const TableChannel& table) : t_(table) {
-    set_num_residuals(static_cast<int>(table.timeS.size()));
-    mutable_parameter_block_sizes()->push_back(4);
-  }
-  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
-    const double a = parameters[0][0], b = parameters[0][1], c = parameters[0][2], w = parameters[0][3];
-    const double inv = 1.0 / t_.noiseDeg;
-    const std::size_t n = t_.timeS.size();
-    double* J = jacobians ? jacobians[0] : nullptr;
-    for (std::size_t i = 0; i < n; ++i) {
-      const double t = t_.timeS[i];
-      const double s = std::sin(w * t), co = std::cos(w * t);
-      residuals[i] = (t_.angleDeg[i] - (a * s + b * co + c)) * inv;
-      if (J) {
-        double* row = J + 4 * i;
-        row[0] = -s * inv;
-        row[1] = -co * inv;
-        row[2] = -inv;
-        row[3] = -(a * co - b * s) * t * inv;
-      }
+  explicit TableSineProblem(const TableChannel& table) : t_(table), n_(table.timeS.size()) {}
+  std::size_t numResiduals() const override { return n_; }
+  int numParameters() const override { return 4; }
+  // Rows are independent: the two halves are summed on two threads.
+  double accumulate(const double* x, Eigen::MatrixXd* jtj, Eigen::VectorXd* jtr) const override {
+    NormalSums<4> first, second;
+    const bool withJacobian = jtj != nullptr;
+    auto half = std::async(std::launch::async, [&] { return accumulateRows(x, 0, n_ / 2, withJacobian, first); });
+    const double rss = accumulateRows(x, n_ / 2, n_, withJacobian, second) + half.get();
+    if (withJacobian) {
+      first.addTo(*jtj, *jtr);
+      second.addTo(*jtj, *jtr);
     }
-    return true;
+    return rss;
   }
 
  private:
+  double accumulateRows(const double* x, std::size_t begin, std::size_t end, bool withJacobian,
+                        NormalSums<4>& sums) const {
+    const double a = x[0], b = x[1], c = x[2], w = x[3];
+    const double inv = 1.0 / t_.noiseDeg;
+    SinCosStream phase(w, 0.0);
+    double rss = 0.0;
+    for (std::size_t i = begin; i < end; ++i) {
+      double sn, cs;
+      phase.next(t_.timeS[i], sn, cs);
+      const double r = (t_.angleDeg[i] - (a * sn + b * cs + c)) * inv;
+      rss += r * r;
+      if (withJacobian) {
+        const double row[4] = {-sn * inv, -cs * inv, -inv, -(a * cs - b * sn) * t_.timeS[i] * inv};
+        sums.add(row, r);
+      }
+    }
+    return rss;
+  }
+
   const TableChannel& t_;
+  std::size_t n_;
 };
 
 // Gyro increments: d_k = f(t_k) - f(s_k), f = a*sin(w*t) + b*cos(w*t) + g*t,
 // parameters (a, b, g, w), whitened by the channel's noise model.
-class GyroSineCost final : public ceres::CostFunction {
+class GyroSineProblem final : public LeastSquaresProblem {
  public:
-  explicit GyroSineCost(const GyroChannel& gyro) : g_(gyro) {
-    set_num_residuals(static_cast<int>(gyro.size()));
-    mutable_parameter_block_sizes()->push_back(4);
-  }
-  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
-    const double a = parameters[0][0], b = parameters[0][1], d = parameters[0][2], w = parameters[0][3];
-    const std::size_t n = g_.size();
-    double* J = jacobians ? jacobians[0] : nullptr;
-    for (std::size_t k = 0; k < n; ++k) {
-      const double t1 = g_.endS[k], t0 = g_.startS[k];
-      const double s1 = std::sin(w * t1), c1 = std::cos(w * t1);
-      const double s0 = std::sin(w * t0), c0 = std::cos(w * t0);
-      residuals[k] = g_.incrementDeg[k] - (a * (s1 - s0) + b * (c1 - c0) + d * (t1 - t0));
-      if (J) {
-        double* row = J + 4 * k;
-        row[0] = -(s1 - s0);
-        row[1] = -(c1 - c0);
-        row[2] = -(t1 - t0);
-        row[3] = -(a * (t1 * c1 - t0 * c0) - b * (t1 * s1 - t0 * s0));
-      }
+  explicit GyroSineProblem(const GyroChannel& gyro) : g_(gyro), n_(gyro.size()) {}
+  std::size_t numResiduals() const override { return n_; }
+  int numParameters() const override { return 4; }
+  double accumulate(const double* x, Eigen::MatrixXd* jtj, Eigen::VectorXd* jtr) const override {
+    const double a = x[0], b = x[1], d = x[2], w = x[3];
+    GyroSinCosStream phase(g_, w, 0.0);
+    const auto& te = g_.endS;
+    const auto& ts = g_.startS;
+    double rss = 0.0;
+    NormalSums<4> sums;
+    double prev[5] = {0, 0, 0, 0, 0};  // previous whitened row and residual
+    for (std::size_t k = 0; k < n_; ++k) {
+      double s1, c1, s0, c0;
+      phase.next(k, s1, c1, s0, c0);
+      const double raw[5] = {-(s1 - s0), -(c1 - c0), -(te[k] - ts[k]),
+                             -(a * (te[k] * c1 - ts[k] * c0) - b * (te[k] * s1 - ts[k] * s0)),
+                             g_.incrementDeg[k] - (a * (s1 - s0) + b * (c1 - c0) + d * (te[k] - ts[k]))};
+      const double m = g_.cholSub[k], inv = 1.0 / g_.cholDiag[k];
+      const int from = jtj ? 0 : 4;
+      for (int j = from; j < 5; ++j) prev[j] = (raw[j] - m * prev[j]) * inv;
+      rss += prev[4] * prev[4];
+      if (jtj) sums.add(prev, prev[4]);
     }
-    g_.whiten(residuals);
-    if (J)
-      for (int col = 0; col < 4; ++col) g_.whiten(J + col, 4);
-    return true;
+    if (jtj) sums.addTo(*jtj, *jtr);
+    return rss;
   }
 
  private:
   const GyroChannel& g_;
+  std::size_t n_;
 };
 
 }  // namespace
 
+namespace {
+
+// Solves the 3-parameter least-squares problem from the Gram matrix of
+// [x0 x1 x2 y] (lower triangle): parameters, their unscaled covariance
+// inverse and the residual sum of squares, without a second pass.
+struct Linear3 {
+  Eigen::Vector3d p;
+  Eigen::Matrix3d xtx;
+  double rss = 0.0;
+};
+Linear3 solveGram(const NormalSums<4>& g) {
+  Eigen::Matrix4d m;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j <= i; ++j) m(i, j) = m(j, i) = g.jtj[i][j];
+  Linear3 out;
+  out.xtx = m.topLeftCorner<3, 3>();
+  const Eigen::Vector3d xty = m.block<3, 1>(0, 3);
+  out.p = out.xtx.ldlt().solve(xty);
+  out.rss = std::max(m(3, 3) - 2.0 * out.p.dot(xty) + out.p.dot(out.xtx * out.p), 0.0);
+  return out;
+}
+
+}  // namespace
+
 SineFit fitTableLinear(const TableChannel& table, double w, double referenceS) {
-  Eigen::Matrix3d xtx = Eigen::Matrix3d::Zero();
-  Eigen::Vector3d xty = Eigen::Vector3d::Zero();
   const std::size_t n = table.timeS.size();
+  SinCosStream phase(w, 0.0);
+  NormalSums<4> gram;
   for (std::size_t i = 0; i < n; ++i) {
-    const Eigen::Vector3d x(std::sin(w * table.timeS[i]), std::cos(w * table.timeS[i]), 1.0);
-    xtx.noalias() += x * x.transpose();
-    xty.noalias() += x * table.angleDeg[i];
+    double v[4] = {0.0, 0.0, 1.0, table.angleDeg[i]};
+    phase.next(table.timeS[i], v[0], v[1]);
+    gram.add(v, 0.0);
   }
-  const Eigen::Vector3d p = xtx.ldlt().solve(xty);
+  const Linear3 lin = solveGram(gram);
   SineFit f;
-  f.a = p[0];
-  f.b = p[1];
-  f.offsetDeg = p[2];
+  f.a = lin.p[0];
+  f.b = lin.p[1];
+  f.offsetDeg = lin.p[2];
   f.omegaRadPerS = w;
   f.referenceS = referenceS;
   f.samples = n;
-  const auto r = tableResiduals(table, f);
-  double rss = 0.0;
-  for (double v : r) rss += v * v;
-  f.residualRmsDeg = std::sqrt(rss / static_cast<double>(n));
-  const double sigma2 = rss / static_cast<double>(n - 3);
+  f.residualRmsDeg = std::sqrt(lin.rss / static_cast<double>(n));
+  const double sigma2 = lin.rss / static_cast<double>(n - 3);
   f.chiSquarePerDof = sigma2 / (table.noiseDeg * table.noiseDeg);
-  const Eigen::MatrixXd cov = xtx.inverse() * sigma2;
+  const Eigen::MatrixXd cov = lin.xtx.inverse() * sigma2;
   finishFit(f, &cov, 0, 1, -1);
   return f;
 }
 
 SineFit fitGyroLinear(const GyroChannel& gyro, double w, double referenceS, bool weighted) {
   const std::size_t n = gyro.size();
-  Eigen::MatrixXd x(n, 3);
-  Eigen::VectorXd y(n);
+  GyroSinCosStream phase(gyro, w, 0.0);
+  // Gram matrices of the raw and (when weighted) the whitened rows.
+  NormalSums<4> raw, white;
+  double prev[4] = {0, 0, 0, 0};
   for (std::size_t k = 0; k < n; ++k) {
-    const double t1 = gyro.endS[k], t0 = gyro.startS[k];
-    x(k, 0) = std::sin(w * t1) - std::sin(w * t0);
-    x(k, 1) = std::cos(w * t1) - std::cos(w * t0);
-    x(k, 2) = t1 - t0;
-    y[k] = gyro.incrementDeg[k];
+    double s1, c1, s0, c0;
+    phase.next(k, s1, c1, s0, c0);
+    const double v[4] = {s1 - s0, c1 - c0, gyro.endS[k] - gyro.startS[k], gyro.incrementDeg[k]};
+    raw.add(v, 0.0);
+    if (weighted) {
+      const double m = gyro.cholSub[k], inv = 1.0 / gyro.cholDiag[k];
+      for (int j = 0; j < 4; ++j) prev[j] = (v[j] - m * prev[j]) * inv;
+      white.add(prev, 0.0);
+    }
   }
-  if (weighted) {
-    for (int c = 0; c < 3; ++c) gyro.whiten(x.col(c).data());
-    gyro.whiten(y.data());
-  }
-  const Eigen::Matrix3d xtx = x.transpose() * x;
-  const Eigen::Vector3d p = xtx.ldlt().solve(x.transpose() * y);
-  const double rss = (y - x * p).squaredNorm();
+  const Linear3 lin = solveGram(weighted ? white : raw);
   SineFit f;
-  f.a = p[0];
-  f.b = p[1];
-  f.trendDegPerS = p[2];
+  f.a = lin.p[0];
+  f.b = lin.p[1];
+  f.trendDegPerS = lin.p[2];
   f.omegaRadPerS = w;
   f.referenceS = referenceS;
   f.samples = n;
-  const double sigma2 = rss / static_cast<double>(n - 3);
+  const double sigma2 = lin.rss / static_cast<double>(n - 3);
   f.chiSquarePerDof = weighted ? sigma2 : 0.0;
-  const Eigen::MatrixXd cov = xtx.inverse() * sigma2;
+  const Eigen::MatrixXd cov = lin.xtx.inverse() * sigma2;
   f.trendStdDegPerS = std::sqrt(cov(2, 2));
   finishFit(f, &cov, 0, 1, -1);
-  const auto r = gyroIncrementResiduals(gyro, f);
-  double raw = 0.0;
-  for (double v : r) raw += v * v;
-  f.residualRmsDeg = std::sqrt(raw / static_cast<double>(n));
+  // Raw residual RMS from the raw Gram matrix at these parameters.
+  Eigen::Matrix4d m;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j <= i; ++j) m(i, j) = m(j, i) = raw.jtj[i][j];
+  const Eigen::Vector4d q(lin.p[0], lin.p[1], lin.p[2], -1.0);
+  f.residualRmsDeg = std::sqrt(std::max(q.dot(m * q), 0.0) / static_cast<double>(n));
   return f;
 }
 
 Result<SineFit> fitTableNonlinear(const TableChannel& table, const SineFit& start) {
-  std::vector<std::unique_ptr<ceres::CostFunction>> costs;
-  costs.push_back(std::make_unique<TableSineCost>(table));
   Eigen::VectorXd x0(4);
   x0 << start.a, start.b, start.offsetDeg, start.omegaRadPerS;
-  auto sol = solveLeastSquares(std::move(costs), x0);
+  auto sol = solveLeastSquares(TableSineProblem(table), x0);
   if (!sol) return Status(sol.status().code(), "table sine fit: " + sol.status().message());
   SineFit f;
   f.a = sol->x[0];
@@ -203,11 +237,9 @@ Result<SineFit> fitTableNonlinear(const TableChannel& table, const SineFit& star
 }
 
 Result<SineFit> fitGyroNonlinear(const GyroChannel& gyro, const SineFit& start) {
-  std::vector<std::unique_ptr<ceres::CostFunction>> costs;
-  costs.push_back(std::make_unique<GyroSineCost>(gyro));
   Eigen::VectorXd x0(4);
   x0 << start.a, start.b, start.trendDegPerS, start.omegaRadPerS;
-  auto sol = solveLeastSquares(std::move(costs), x0);
+  auto sol = solveLeastSquares(GyroSineProblem(gyro), x0);
   if (!sol) return Status(sol.status().code(), "gyro sine fit: " + sol.status().message());
   SineFit f;
   f.a = sol->x[0];
@@ -228,22 +260,21 @@ Result<SineFit> fitGyroNonlinear(const GyroChannel& gyro, const SineFit& start) 
 }
 
 std::vector<double> tableResiduals(const TableChannel& table, const SineFit& f) {
-  std::vector<double> r(table.timeS.size());
-  const double w = f.omegaRadPerS;
-  for (std::size_t i = 0; i < r.size(); ++i) {
-    const double t = table.timeS[i];
-    r[i] = table.angleDeg[i] - (f.a * std::sin(w * t) + f.b * std::cos(w * t) + f.offsetDeg);
-  }
+  const std::size_t n = table.timeS.size();
+  std::vector<double> r(n), sn(n), cs(n);
+  sinCosSeries(table.timeS.data(), n, f.omegaRadPerS, 0.0, sn.data(), cs.data());
+  for (std::size_t i = 0; i < n; ++i) r[i] = table.angleDeg[i] - (f.a * sn[i] + f.b * cs[i] + f.offsetDeg);
   return r;
 }
 
 std::vector<double> gyroIncrementResiduals(const GyroChannel& gyro, const SineFit& f) {
   std::vector<double> r(gyro.size());
-  const double w = f.omegaRadPerS;
+  GyroSinCosStream phase(gyro, f.omegaRadPerS, 0.0);
   for (std::size_t k = 0; k < r.size(); ++k) {
-    const double t1 = gyro.endS[k], t0 = gyro.startS[k];
-    r[k] = gyro.incrementDeg[k] - (f.a * (std::sin(w * t1) - std::sin(w * t0)) +
-                                   f.b * (std::cos(w * t1) - std::cos(w * t0)) + f.trendDegPerS * (t1 - t0));
+    double s1, c1, s0, c0;
+    phase.next(k, s1, c1, s0, c0);
+    r[k] = gyro.incrementDeg[k] -
+           (f.a * (s1 - s0) + f.b * (c1 - c0) + f.trendDegPerS * (gyro.endS[k] - gyro.startS[k]));
   }
   return r;
 }
