@@ -16,7 +16,7 @@ done
 cmake --preset release >/dev/null
 cmake --build --preset release
 
-if [[ $headless -eq 0 && ( -n ${DISPLAY:-} || -n ${WAYLAND_DISPLAY:-} ) && -x build/release/ui/fogbench ]]; then
-  exec build/release/ui/fogbench --run "${args[@]}"
+if [[ $headless -eq 0 && ( -n ${DISPLAY:-} || -n ${WAYLAND_DISPLAY:-} ) && -x build/release/app/fogbench ]]; then
+  exec build/release/app/fogbench --run "${args[@]}"
 fi
 exec build/release/app/fogbench-cli run "${args[@]}"

@@ -20,11 +20,14 @@ std::string axisUpper(Axis a) {
   return s;
 }
 
+// An uncertainty with two significant digits, however small.
+std::string sd(double v) { return f("%.2g", v); }
+
 void fitRow(std::ostringstream& o, const char* name, const SineFit& s, bool frequencyFree) {
   o << "    " << name << "  period " << f("%12.4f", s.periodMs)
-    << (frequencyFree ? " ± " + f("%.4f", s.periodStdMs) : std::string(" (nominal)"))
-    << " ms   phase " << f("%11.4f", s.phaseMs) << " ± " << f("%.4f", s.phaseStdMs) << " ms   amplitude "
-    << f("%.5f", s.amplitudeDeg) << " deg\n";
+    << (frequencyFree ? " ± " + sd(s.periodStdMs) : std::string(" (nominal)")) << " ms   phase "
+    << f("%11.4f", s.phaseMs) << " ± " << sd(s.phaseStdMs) << " ms   amplitude " << f("%.5f", s.amplitudeDeg)
+    << " deg\n";
 }
 
 nlohmann::json fitJson(const SineFit& s) {
@@ -51,8 +54,7 @@ std::string formatReportText(const DelayReport& report, const ReportContext& con
     << f("%.4f", c.tableReadDelayStdMs) << " ms, board delay " << f("%.4f", c.boardDelayMs) << " ± "
     << f("%.4f", c.boardDelayStdMs) << " ms\n";
 
-  for (std::size_t i = 0; i < report.points.size(); ++i) {
-    const auto& p = report.points[i];
+  for (const auto& p : report.points) {
     o << "\nTest point " << p.index + 1 << ": " << axisUpper(p.axis) << " axis, " << f("%g", p.nominalFrequencyHz)
       << " Hz / " << f("%.3f", p.tableFit.amplitudeDeg) << " deg, " << f("%.1f", p.durationS) << " s ("
       << f("%.1f", p.periods) << " periods)\n";
@@ -66,18 +68,19 @@ std::string formatReportText(const DelayReport& report, const ReportContext& con
       << f("%.3f", p.joint.trendDegPerS * 3600.0) << " deg/h), chi2/dof " << f("%.3f", p.joint.chiSquarePerDof)
       << "\n";
     o << "  delay:\n";
-    o << "    measured lag (gyro behind table) " << f("%9.4f", p.lagMs) << " ± " << f("%.4f", p.lagStdMs)
-      << " ms   (CRLB " << f("%.4f", p.crlbMs) << " ms, std/CRLB " << f("%.2f", p.stdOverCrlb) << ")\n";
+    o << "    measured lag (gyro behind table) " << f("%9.4f", p.lagMs) << " ± " << sd(p.lagStdMs)
+      << " ms   (CRLB " << sd(p.crlbMs) << " ms, std/CRLB " << f("%.2f", p.stdOverCrlb) << ")\n";
     o << "  + table read delay                 " << f("%9.4f", c.tableReadDelayMs) << " ms\n";
-    o << "  = IMU delay                        " << f("%9.4f", p.imuDelayMs) << " ± "
-      << f("%.4f", p.imuDelayStdMs) << " ms\n";
+    o << "  = IMU delay                        " << f("%9.4f", p.imuDelayMs) << " ± " << sd(p.imuDelayStdMs)
+      << " ms\n";
     o << "  - processing board delay           " << f("%9.4f", c.boardDelayMs) << " ms\n";
-    o << "  = gyro's own delay                 " << f("%9.4f", p.gyroDelayMs) << " ± "
-      << f("%.4f", p.gyroDelayStdMs) << " ms\n";
-    if (i < context.trueLagMs.size())
-      o << "    simulator truth: lag " << f("%.4f", context.trueLagMs[i]) << " ms (error "
-        << f("%+.4f", p.lagMs - context.trueLagMs[i]) << " ms = "
-        << f("%+.1f", (p.lagMs - context.trueLagMs[i]) / p.lagStdMs) << " std)\n";
+    o << "  = gyro's own delay                 " << f("%9.4f", p.gyroDelayMs) << " ± " << sd(p.gyroDelayStdMs)
+      << " ms\n";
+    if (static_cast<std::size_t>(p.index) < context.trueLagMs.size()) {
+      const double truth = context.trueLagMs[static_cast<std::size_t>(p.index)];
+      o << "    simulator truth: lag " << f("%.4f", truth) << " ms (error " << f("%+.4f", p.lagMs - truth)
+        << " ms = " << f("%+.1f", (p.lagMs - truth) / p.lagStdMs) << " std)\n";
+    }
     o << "  per-period delay: " << p.periodTrack.size() << " periods, mean " << f("%.4f", p.periodMeanLagMs)
       << " ms, scatter " << f("%.4f", p.periodScatterMs) << " ms\n";
     o << "  noise: encoder " << f("%.2e", p.noise.tableNoiseDeg) << " deg, pulse output "
@@ -116,8 +119,7 @@ std::string formatReportJson(const DelayReport& report, const ReportContext& con
                    {"duplicate_frames", h.duplicateFrames}, {"out_of_order_frames", h.outOfOrderFrames},
                    {"counter_wraps", h.counterWraps}};
   doc["test_points"] = json::array();
-  for (std::size_t i = 0; i < report.points.size(); ++i) {
-    const auto& p = report.points[i];
+  for (const auto& p : report.points) {
     json tp = {{"index", p.index},
                {"axis", axisName(p.axis)},
                {"frequency_hz", p.nominalFrequencyHz},
@@ -154,7 +156,8 @@ std::string formatReportJson(const DelayReport& report, const ReportContext& con
     for (const auto& d : p.periodTrack) track.push_back({{"time_s", d.timeS}, {"lag_ms", d.lagMs}});
     tp["period_track"] = track;
     tp["period_scatter_ms"] = p.periodScatterMs;
-    if (i < context.trueLagMs.size()) tp["true_lag_ms"] = context.trueLagMs[i];
+    if (static_cast<std::size_t>(p.index) < context.trueLagMs.size())
+      tp["true_lag_ms"] = context.trueLagMs[static_cast<std::size_t>(p.index)];
     doc["test_points"].push_back(tp);
   }
   doc["frequency_consistency"] = json::array();

@@ -19,7 +19,7 @@ namespace fog::analysis {
 // What the analysis does not know about where the data came from.
 struct ReportContext {
   std::string source;  // "simulator (seed 1)", "raw stream run.bin"
-  // Known true lag per test point (simulator only), for comparison.
+  // Known true lag per test point, by test point index (simulator only).
   std::vector<double> trueLagMs;
 };
 
