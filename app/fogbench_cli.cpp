@@ -51,6 +51,12 @@ int main(int argc, char** argv) {
   }
   const std::string command = args[0];
   args.erase(args.begin());
+  for (const std::string& a : args) {
+    if (a == "--help" || a == "-h") {
+      std::cout << kHelp;
+      return 0;
+    }
+  }
   auto parsed = fog::app::CliArguments::parse(args, {"json"});
   if (!parsed) {
     std::cerr << "fogbench-cli: " << parsed.status().message() << "\n";
