@@ -165,6 +165,15 @@ Result<TestPointResult> analyzeTestPoint(const TestPointData& data, double incre
   auto table4 = fitTableNonlinear(ch.table, r.tableNominal);
   if (!table4) return table4.status();
   ch.table.noiseDeg = std::max(table4->residualRmsDeg, 1e-12);
+  // The table's noise is measured from these residuals, so against it the
+  // fit's chi^2/dof is N/(N - 4) by construction (not the value against the
+  // 3-parameter residual it was weighted with).
+  table4->chiSquarePerDof = static_cast<double>(table4->samples) / static_cast<double>(table4->samples - 4);
+  // Against the same noise, the nominal-frequency fit shows what a frequency
+  // error costs (like the gyro's nominal fit, which is whitened).
+  const double nominalRatio = r.tableNominal.residualRmsDeg / ch.table.noiseDeg;
+  r.tableNominal.chiSquarePerDof = nominalRatio * nominalRatio * static_cast<double>(r.tableNominal.samples) /
+                                   static_cast<double>(r.tableNominal.samples - 3);
 
   // 2. The gyro's noise, from the residuals of a fit at the table's measured
   // frequency (at the nominal one, 8 ppm of error would dominate the slow

@@ -105,6 +105,7 @@ std::string formatReportText(const DelayReport& report, const ReportContext& con
 std::string formatReportJson(const DelayReport& report, const ReportContext& context) {
   using nlohmann::json;
   json doc;
+  doc["report_format"] = 1;  // bump on any incompatible change (docs/report.md)
   doc["software"] = "fogbench";
   doc["source"] = context.source;
   const auto& c = report.constants;
@@ -155,6 +156,7 @@ std::string formatReportJson(const DelayReport& report, const ReportContext& con
     json track = json::array();
     for (const auto& d : p.periodTrack) track.push_back({{"time_s", d.timeS}, {"lag_ms", d.lagMs}});
     tp["period_track"] = track;
+    tp["period_mean_lag_ms"] = p.periodMeanLagMs;
     tp["period_scatter_ms"] = p.periodScatterMs;
     if (static_cast<std::size_t>(p.index) < context.trueLagMs.size())
       tp["true_lag_ms"] = context.trueLagMs[static_cast<std::size_t>(p.index)];
