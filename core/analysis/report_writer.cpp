@@ -1,5 +1,7 @@
 #include "analysis/report_writer.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -22,6 +24,19 @@ std::string axisUpper(Axis a) {
 
 // An uncertainty with two significant digits, however small.
 std::string sd(double v) { return f("%.2g", v); }
+
+// Decimals (in ms) that show an uncertainty to two significant digits, and
+// never fewer than the paper's four: 0.0015 -> 4, 0.00010 -> 5.
+int decimalsFor(double stdMs) {
+  if (!(stdMs > 0.0)) return 4;
+  return std::clamp(1 - static_cast<int>(std::floor(std::log10(stdMs))), 4, 7);
+}
+
+std::string fixed(double v, int decimals, int width = 0) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%*.*f", width, decimals, v);
+  return buf;
+}
 
 void fitRow(std::ostringstream& o, const char* name, const SineFit& s, bool frequencyFree) {
   o << "    " << name << "  period " << f("%12.4f", s.periodMs)
@@ -68,18 +83,19 @@ std::string formatReportText(const DelayReport& report, const ReportContext& con
       << f("%.3f", p.joint.trendDegPerS * 3600.0) << " deg/h), chi2/dof " << f("%.3f", p.joint.chiSquarePerDof)
       << "\n";
     o << "  delay:\n";
-    o << "    measured lag (gyro behind table) " << f("%9.4f", p.lagMs) << " ± " << sd(p.lagStdMs)
+    const int d = decimalsFor(p.lagStdMs);
+    o << "    measured lag (gyro behind table) " << fixed(p.lagMs, d, 9) << " ± " << fixed(p.lagStdMs, d)
       << " ms   (CRLB " << sd(p.crlbMs) << " ms, std/CRLB " << f("%.2f", p.stdOverCrlb) << ")\n";
-    o << "  + table read delay                 " << f("%9.4f", c.tableReadDelayMs) << " ms\n";
-    o << "  = IMU delay                        " << f("%9.4f", p.imuDelayMs) << " ± " << sd(p.imuDelayStdMs)
+    o << "  + table read delay                 " << fixed(c.tableReadDelayMs, d, 9) << " ms\n";
+    o << "  = IMU delay                        " << fixed(p.imuDelayMs, d, 9) << " ± " << fixed(p.imuDelayStdMs, d)
       << " ms\n";
-    o << "  - processing board delay           " << f("%9.4f", c.boardDelayMs) << " ms\n";
-    o << "  = gyro's own delay                 " << f("%9.4f", p.gyroDelayMs) << " ± " << sd(p.gyroDelayStdMs)
-      << " ms\n";
+    o << "  - processing board delay           " << fixed(c.boardDelayMs, d, 9) << " ms\n";
+    o << "  = gyro's own delay                 " << fixed(p.gyroDelayMs, d, 9) << " ± "
+      << fixed(p.gyroDelayStdMs, d) << " ms\n";
     if (static_cast<std::size_t>(p.index) < context.trueLagMs.size()) {
       const double truth = context.trueLagMs[static_cast<std::size_t>(p.index)];
-      o << "    simulator truth: lag " << f("%.4f", truth) << " ms (error " << f("%+.4f", p.lagMs - truth)
-        << " ms = " << f("%+.1f", (p.lagMs - truth) / p.lagStdMs) << " std)\n";
+      o << "    simulator truth: lag " << fixed(truth, d) << " ms (error " << (p.lagMs >= truth ? "+" : "")
+        << fixed(p.lagMs - truth, d) << " ms = " << f("%+.1f", (p.lagMs - truth) / p.lagStdMs) << " std)\n";
     }
     o << "  per-period delay: " << p.periodTrack.size() << " periods, mean " << f("%.4f", p.periodMeanLagMs)
       << " ms, scatter " << f("%.4f", p.periodScatterMs) << " ms\n";
@@ -92,7 +108,8 @@ std::string formatReportText(const DelayReport& report, const ReportContext& con
   for (const auto& fp : report.failedPoints) o << "\nno delay from " << fp << "\n";
   for (const auto& cc : report.consistency) {
     o << "\nDelay against frequency, " << axisUpper(cc.axis) << " axis (" << cc.points
-      << " frequencies): weighted lag " << f("%.4f", cc.weightedLagMs) << " ± " << f("%.4f", cc.weightedLagStdMs)
+      << " frequencies): weighted lag " << fixed(cc.weightedLagMs, decimalsFor(cc.weightedLagStdMs)) << " ± "
+      << fixed(cc.weightedLagStdMs, decimalsFor(cc.weightedLagStdMs))
       << " ms, chi2 " << f("%.2f", cc.chiSquare) << " on " << cc.dof << " dof, p = " << f("%.3f", cc.pValue)
       << ": "
       << (cc.consistentWithPureDelay ? "consistent with a pure delay"
