@@ -3,7 +3,13 @@
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+
+#include "analysis/channels.h"
 #include "analysis/delay_analysis.h"
+#include "analysis/joint_fit.h"
+#include "analysis/sine_fit.h"
+#include "common/units.h"
 #include "model/simulator.h"
 #include "protocol/recording_builder.h"
 
@@ -35,6 +41,80 @@ void BM_AnalyzeFastSession(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_AnalyzeFastSession)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+
+// The stages of the slow session's analysis, one at a time, each from the
+// inputs analyzeTestPoint gives it (some of them run concurrently there).
+struct SlowStages {
+  fog::TestPointData data;
+  double scale = 0.0, w0 = 0.0;
+  fog::analysis::Channels ch;
+  fog::analysis::SineFit tableLinear, table4, gyroStart, gyro4;
+  SlowStages() {
+    const fog::Recording rec = decoded(fog::TestPlan::paperSlow());
+    data = rec.testPoints[0];
+    scale = rec.pulseEquivalentDeg;
+    w0 = fog::kTwoPi * data.nominalFrequencyHz;
+    ch = *fog::analysis::makeChannels(data, scale);
+    tableLinear = fog::analysis::fitTableLinear(ch.table, w0, ch.referenceS);
+    ch.table.noiseDeg = tableLinear.residualRmsDeg;
+    table4 = *fog::analysis::fitTableNonlinear(ch.table, tableLinear);
+    ch.table.noiseDeg = table4.residualRmsDeg;
+    gyroStart = fog::analysis::fitGyroLinear(ch.gyro, table4.omegaRadPerS, ch.referenceS, false);
+    fog::analysis::estimateGyroNoise(ch.gyro, fog::analysis::gyroIncrementResiduals(ch.gyro, gyroStart),
+                                     std::clamp(0.05 / data.nominalFrequencyHz, 0.05, 1.0));
+    gyro4 = *fog::analysis::fitGyroNonlinear(ch.gyro, gyroStart);
+  }
+};
+const SlowStages& slowStages() {
+  static const SlowStages s;
+  return s;
+}
+
+void BM_StageChannels(benchmark::State& state) {
+  const auto& s = slowStages();
+  for (auto _ : state) benchmark::DoNotOptimize(fog::analysis::makeChannels(s.data, s.scale));
+}
+BENCHMARK(BM_StageChannels)->Unit(benchmark::kMillisecond);
+
+void BM_StageLinearFits(benchmark::State& state) {  // table, gyro unweighted, gyro weighted
+  const auto& s = slowStages();
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(fog::analysis::fitTableLinear(s.ch.table, s.w0, s.ch.referenceS));
+    benchmark::DoNotOptimize(fog::analysis::fitGyroLinear(s.ch.gyro, s.w0, s.ch.referenceS, false));
+    benchmark::DoNotOptimize(fog::analysis::fitGyroLinear(s.ch.gyro, s.w0, s.ch.referenceS, true));
+  }
+}
+BENCHMARK(BM_StageLinearFits)->Unit(benchmark::kMillisecond);
+
+void BM_StageGyroNoise(benchmark::State& state) {
+  const auto& s = slowStages();
+  for (auto _ : state) {
+    fog::analysis::GyroChannel gyro = s.ch.gyro;
+    fog::analysis::estimateGyroNoise(gyro, fog::analysis::gyroIncrementResiduals(gyro, s.gyroStart), 0.5);
+    benchmark::DoNotOptimize(gyro);
+  }
+}
+BENCHMARK(BM_StageGyroNoise)->Unit(benchmark::kMillisecond);
+
+void BM_StageTableNonlinear(benchmark::State& state) {
+  const auto& s = slowStages();
+  fog::analysis::TableChannel table = s.ch.table;
+  table.noiseDeg = s.tableLinear.residualRmsDeg;
+  for (auto _ : state) benchmark::DoNotOptimize(fog::analysis::fitTableNonlinear(table, s.tableLinear));
+}
+BENCHMARK(BM_StageTableNonlinear)->Unit(benchmark::kMillisecond);
+
+void BM_StageGyroNonlinear(benchmark::State& state) {
+  const auto& s = slowStages();
+  for (auto _ : state) benchmark::DoNotOptimize(fog::analysis::fitGyroNonlinear(s.ch.gyro, s.gyroStart));
+}
+BENCHMARK(BM_StageGyroNonlinear)->Unit(benchmark::kMillisecond);
+
+void BM_StageJoint(benchmark::State& state) {
+  const auto& s = slowStages();
+  for (auto _ : state) benchmark::DoNotOptimize(fog::analysis::fitJoint(s.ch, s.table4, s.gyro4));
+}
+BENCHMARK(BM_StageJoint)->Unit(benchmark::kMillisecond);
 
 // Simulator speed: seconds of simulated session per second of wall time.
 void BM_SimulateSlowSession(benchmark::State& state) {
