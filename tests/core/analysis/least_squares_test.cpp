@@ -13,20 +13,24 @@
 namespace fog::analysis {
 namespace {
 
-// y = A exp(-k t) + noise, parameters (A, k), unit weights.
-class ExponentialDecay final : public LeastSquaresProblem {
+// y_i = model(t_i, x) with unit weights and two parameters; the model returns
+// its value and fills d model / d x.
+using Model = double (*)(double t, const double* x, double* gradient);
+
+class CurveFit final : public LeastSquaresProblem {
  public:
-  ExponentialDecay(std::vector<double> t, std::vector<double> y) : t_(std::move(t)), y_(std::move(y)) {}
+  CurveFit(Model model, std::vector<double> t, std::vector<double> y)
+      : model_(model), t_(std::move(t)), y_(std::move(y)) {}
   std::size_t numResiduals() const override { return t_.size(); }
   int numParameters() const override { return 2; }
   double accumulate(const double* x, Eigen::MatrixXd* jtj, Eigen::VectorXd* jtr) const override {
     NormalSums<2> sums;
     double rss = 0.0;
     for (std::size_t i = 0; i < t_.size(); ++i) {
-      const double e = std::exp(-x[1] * t_[i]);
-      const double r = y_[i] - x[0] * e;
+      double gradient[2];
+      const double r = y_[i] - model_(t_[i], x, gradient);
       rss += r * r;
-      const double row[2] = {-e, x[0] * t_[i] * e};
+      const double row[2] = {-gradient[0], -gradient[1]};
       sums.add(row, r);
     }
     if (jtj) sums.addTo(*jtj, *jtr);
@@ -34,31 +38,24 @@ class ExponentialDecay final : public LeastSquaresProblem {
   }
 
  private:
+  Model model_;
   std::vector<double> t_, y_;
 };
 
-// y = p0 + p1 t: linear, so one Gauss-Newton step lands on the optimum.
-class StraightLine final : public LeastSquaresProblem {
- public:
-  StraightLine(std::vector<double> t, std::vector<double> y) : t_(std::move(t)), y_(std::move(y)) {}
-  std::size_t numResiduals() const override { return t_.size(); }
-  int numParameters() const override { return 2; }
-  double accumulate(const double* x, Eigen::MatrixXd* jtj, Eigen::VectorXd* jtr) const override {
-    NormalSums<2> sums;
-    double rss = 0.0;
-    for (std::size_t i = 0; i < t_.size(); ++i) {
-      const double r = y_[i] - (x[0] + x[1] * t_[i]);
-      rss += r * r;
-      const double row[2] = {-1.0, -t_[i]};
-      sums.add(row, r);
-    }
-    if (jtj) sums.addTo(*jtj, *jtr);
-    return rss;
-  }
+// A exp(-k t), parameters (A, k).
+double exponentialDecay(double t, const double* x, double* gradient) {
+  const double e = std::exp(-x[1] * t);
+  gradient[0] = e;
+  gradient[1] = -x[0] * t * e;
+  return x[0] * e;
+}
 
- private:
-  std::vector<double> t_, y_;
-};
+// p0 + p1 t: linear, so one Gauss-Newton step lands on the optimum.
+double straightLine(double t, const double* x, double* gradient) {
+  gradient[0] = 1.0;
+  gradient[1] = t;
+  return x[0] + x[1] * t;
+}
 
 struct Data {
   std::vector<double> t, y;
@@ -92,9 +89,9 @@ TEST(LeastSquares, StraightLineGivesTheClosedFormSolutionAndCovariance) {
   }
   const Eigen::Vector2d ols = (x.transpose() * x).ldlt().solve(x.transpose() * y);
   const double rss = (y - x * ols).squaredNorm();
-  const Eigen::Matrix2d cov = (x.transpose() * x).inverse() * rss / (d.t.size() - 2.0);
+  const Eigen::Matrix2d cov = (x.transpose() * x).inverse() * rss / (static_cast<double>(d.t.size()) - 2.0);
 
-  auto sol = solveLeastSquares(StraightLine(d.t, d.y), Eigen::Vector2d(0.0, 0.0));
+  auto sol = solveLeastSquares(CurveFit(straightLine, d.t, d.y), Eigen::Vector2d(0.0, 0.0));
   ASSERT_TRUE(sol.isOk()) << sol.status().toString();
   EXPECT_EQ(sol->iterations, 2);  // one step to the optimum, one pass to see it is there
   EXPECT_NEAR(sol->x[0], ols[0], 1e-12);
@@ -106,7 +103,7 @@ TEST(LeastSquares, StraightLineGivesTheClosedFormSolutionAndCovariance) {
 
 TEST(LeastSquares, FarStartFallsBackToLevenbergMarquardtAndAgreesWithANearStart) {
   const Data d = decay(5.0, 2.0, 0.05, 500);
-  const ExponentialDecay problem(d.t, d.y);
+  const CurveFit problem(exponentialDecay, d.t, d.y);
   // From the truth's neighbourhood Gauss-Newton converges in a few passes.
   auto near = solveLeastSquares(problem, Eigen::Vector2d(5.1, 2.05));
   ASSERT_TRUE(near.isOk()) << near.status().toString();
@@ -125,7 +122,7 @@ TEST(LeastSquares, FarStartFallsBackToLevenbergMarquardtAndAgreesWithANearStart)
 }
 
 TEST(LeastSquares, FewerResidualsThanParametersIsInsufficientData) {
-  auto sol = solveLeastSquares(StraightLine({0.0, 1.0}, {1.0, 2.0}), Eigen::Vector2d(0.0, 0.0));
+  auto sol = solveLeastSquares(CurveFit(straightLine, {0.0, 1.0}, {1.0, 2.0}), Eigen::Vector2d(0.0, 0.0));
   ASSERT_FALSE(sol.isOk());
   EXPECT_EQ(sol.status().code(), StatusCode::kInsufficientData);
 }
