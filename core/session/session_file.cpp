@@ -1,0 +1,770 @@
+#include "session/session_file.h"
+
+#include <sqlite3.h>
+
+#include <array>
+#include <bit>
+#include <cstdio>
+#include <cstring>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <span>
+#include <utility>
+
+#include "common/version.h"
+#include "protocol/recording_builder.h"
+
+namespace fog::session {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// Schema 1. docs/sessions.md documents every column; keep the two in step.
+// Changing anything here means a new kSchemaVersion and a migration below.
+constexpr const char* kSchemaV1 = R"sql(
+CREATE TABLE session (
+  id INTEGER PRIMARY KEY CHECK (id = 1),
+  operator TEXT NOT NULL,
+  imu_model TEXT NOT NULL,
+  imu_serial TEXT NOT NULL,
+  source TEXT NOT NULL,
+  software_version TEXT NOT NULL,
+  created_utc TEXT NOT NULL,
+  notes TEXT NOT NULL,
+  table_read_delay_ms REAL NOT NULL,
+  table_read_delay_std_ms REAL NOT NULL,
+  board_delay_ms REAL NOT NULL,
+  board_delay_std_ms REAL NOT NULL,
+  latitude_deg REAL NOT NULL,
+  pulse_equivalent_deg REAL NOT NULL,
+  counter_hz REAL NOT NULL,
+  counter_bits INTEGER NOT NULL,
+  test_plan_json TEXT NOT NULL,
+  state TEXT NOT NULL,
+  incomplete_reason TEXT NOT NULL DEFAULT '',
+  finished_utc TEXT NOT NULL DEFAULT ''
+);
+CREATE TABLE raw_chunk (
+  seq INTEGER PRIMARY KEY,
+  byte_offset INTEGER NOT NULL,
+  data BLOB NOT NULL,
+  data_fnv1a INTEGER NOT NULL,
+  committed_utc TEXT NOT NULL
+);
+CREATE TABLE decoded (
+  id INTEGER PRIMARY KEY CHECK (id = 1),
+  raw_bytes INTEGER NOT NULL,
+  counter_hz REAL NOT NULL,
+  counter_bits INTEGER NOT NULL,
+  pulse_equivalent_deg REAL NOT NULL,
+  table_frames INTEGER NOT NULL,
+  imu_frames INTEGER NOT NULL,
+  status_frames INTEGER NOT NULL,
+  checksum_failures INTEGER NOT NULL,
+  bytes_skipped INTEGER NOT NULL,
+  lost_frames INTEGER NOT NULL,
+  duplicate_frames INTEGER NOT NULL,
+  out_of_order_frames INTEGER NOT NULL,
+  counter_wraps INTEGER NOT NULL
+);
+CREATE TABLE test_point (
+  position INTEGER PRIMARY KEY,
+  point_index INTEGER NOT NULL,
+  axis TEXT NOT NULL,
+  nominal_frequency_hz REAL NOT NULL,
+  nominal_amplitude_deg REAL NOT NULL,
+  table_samples INTEGER NOT NULL,
+  imu_samples INTEGER NOT NULL
+);
+CREATE TABLE table_block (
+  test_point INTEGER NOT NULL,
+  block INTEGER NOT NULL,
+  samples INTEGER NOT NULL,
+  data BLOB NOT NULL,
+  data_fnv1a INTEGER NOT NULL,
+  PRIMARY KEY (test_point, block)
+);
+CREATE TABLE imu_block (
+  test_point INTEGER NOT NULL,
+  block INTEGER NOT NULL,
+  samples INTEGER NOT NULL,
+  data BLOB NOT NULL,
+  data_fnv1a INTEGER NOT NULL,
+  PRIMARY KEY (test_point, block)
+);
+CREATE TABLE result (
+  id INTEGER PRIMARY KEY AUTOINCREMENT,
+  created_utc TEXT NOT NULL,
+  settings_json TEXT NOT NULL,
+  report_json TEXT NOT NULL
+);
+)sql";
+
+// Sample blocks: small enough to stay far below SQLite's 1 GB value limit
+// whatever the test point's length, large enough that a block costs little.
+constexpr std::size_t kSamplesPerBlock = 65536;
+constexpr std::size_t kTableRecordBytes = 4 * 8;      // time_s, x, y, z (deg), float64 LE
+constexpr std::size_t kImuRecordBytes = 5 * 8 + 4;    // time_s, dx, dy, dz (deg), temperature_c, lost_before u32
+// A raw chunk is committed early once this large, so memory stays bounded
+// when bytes arrive faster than real time (replay, benchmarks).
+constexpr std::size_t kMaxPendingRaw = 1 << 20;
+
+// --- little helpers -------------------------------------------------------
+
+class Stmt {
+ public:
+  Stmt(sqlite3* db, const char* sql) { rc_ = sqlite3_prepare_v2(db, sql, -1, &stmt_, nullptr); }
+  ~Stmt() { sqlite3_finalize(stmt_); }
+  Stmt(const Stmt&) = delete;
+  Stmt& operator=(const Stmt&) = delete;
+  bool ok() const { return rc_ == SQLITE_OK && stmt_ != nullptr; }
+  sqlite3_stmt* get() const { return stmt_; }
+  void bind(int i, double v) { sqlite3_bind_double(stmt_, i, v); }
+  void bind(int i, std::int64_t v) { sqlite3_bind_int64(stmt_, i, v); }
+  void bind(int i, const std::string& v) {
+    sqlite3_bind_text(stmt_, i, v.data(), static_cast<int>(v.size()), SQLITE_TRANSIENT);
+  }
+  void bindBlob(int i, const void* data, std::size_t size) {
+    // A zero-length blob must still be a blob, not NULL (NOT NULL columns).
+    sqlite3_bind_blob64(stmt_, i, size ? data : "", static_cast<sqlite3_uint64>(size), SQLITE_STATIC);
+  }
+  int step() { return sqlite3_step(stmt_); }
+  std::string text(int i) const {
+    const auto* p = sqlite3_column_text(stmt_, i);
+    return p ? std::string(reinterpret_cast<const char*>(p), static_cast<std::size_t>(sqlite3_column_bytes(stmt_, i)))
+             : std::string();
+  }
+  double real(int i) const { return sqlite3_column_double(stmt_, i); }
+  std::int64_t integer(int i) const { return sqlite3_column_int64(stmt_, i); }
+  std::span<const std::uint8_t> blob(int i) const {
+    const void* p = sqlite3_column_blob(stmt_, i);
+    const int n = sqlite3_column_bytes(stmt_, i);
+    if (!p || n <= 0) return {};
+    return {static_cast<const std::uint8_t*>(p), static_cast<std::size_t>(n)};
+  }
+
+ private:
+  sqlite3_stmt* stmt_ = nullptr;
+  int rc_ = SQLITE_ERROR;
+};
+
+bool exec(sqlite3* db, const char* sql) { return sqlite3_exec(db, sql, nullptr, nullptr, nullptr) == SQLITE_OK; }
+
+std::string sqliteMessage(sqlite3* db) { return db ? sqlite3_errmsg(db) : "out of memory"; }
+
+Result<std::int64_t> pragmaInt(sqlite3* db, const char* sql) {
+  Stmt s(db, sql);
+  if (!s.ok() || s.step() != SQLITE_ROW) return ioError(sqliteMessage(db));
+  return s.integer(0);
+}
+
+void putDouble(std::uint8_t* at, double v) {
+  auto bits = std::bit_cast<std::uint64_t>(v);
+  for (int i = 0; i < 8; ++i) at[i] = static_cast<std::uint8_t>(bits >> (8 * i));
+}
+double getDouble(const std::uint8_t* at) {
+  std::uint64_t bits = 0;
+  for (int i = 0; i < 8; ++i) bits |= static_cast<std::uint64_t>(at[i]) << (8 * i);
+  return std::bit_cast<double>(bits);
+}
+void putU32(std::uint8_t* at, std::uint32_t v) {
+  for (int i = 0; i < 4; ++i) at[i] = static_cast<std::uint8_t>(v >> (8 * i));
+}
+std::uint32_t getU32(const std::uint8_t* at) {
+  std::uint32_t v = 0;
+  for (int i = 0; i < 4; ++i) v |= static_cast<std::uint32_t>(at[i]) << (8 * i);
+  return v;
+}
+// FNV-1a 64 of every stored blob: SQLite checks its page structure but not
+// the bytes inside a blob, and a damaged raw stream must never pass as data.
+std::int64_t fnv1a(std::span<const std::uint8_t> data) {
+  std::uint64_t h = 0xcbf29ce484222325ULL;
+  for (std::uint8_t b : data) h = (h ^ b) * 0x100000001b3ULL;
+  return std::bit_cast<std::int64_t>(h);
+}
+std::int64_t fnv1a(const std::vector<std::uint8_t>& data) { return fnv1a(std::span<const std::uint8_t>(data)); }
+
+std::uint32_t bigEndian32(const std::uint8_t* at) {
+  return (std::uint32_t{at[0]} << 24) | (std::uint32_t{at[1]} << 16) | (std::uint32_t{at[2]} << 8) | at[3];
+}
+
+// What the first 100 bytes (the SQLite header) say, read before SQLite sees
+// the file so that each kind of wrong file gets its own clear message.
+struct HeaderInfo {
+  std::uint32_t applicationId = 0;
+  int userVersion = 0;
+  std::string truncated;  // non-empty: why the file is shorter than its header says
+};
+
+// Errors only for a file that is missing, unreadable, empty or not SQLite.
+Result<HeaderInfo> readHeader(const std::string& path) {
+  std::error_code ec;
+  const auto status = fs::status(path, ec);
+  if (ec || !fs::exists(status))
+    return ioError("cannot open session '" + path + "': no such file; check the path");
+  if (fs::is_directory(status)) return ioError("'" + path + "' is a folder, not a fogbench session file");
+  const auto size = fs::file_size(path, ec);
+  if (ec) return ioError("cannot read '" + path + "': " + ec.message());
+  if (size == 0)
+    return corruptData("'" + path + "' is empty (0 bytes), not a fogbench session; it was never written");
+  std::ifstream in(path, std::ios::binary);
+  std::array<std::uint8_t, 100> h{};
+  in.read(reinterpret_cast<char*>(h.data()), h.size());
+  if (!in && in.gcount() == 0) return ioError("cannot read '" + path + "'; check its permissions");
+  static constexpr char kMagic[] = "SQLite format 3";  // 16 bytes with the NUL
+  if (size < h.size() || std::memcmp(h.data(), kMagic, sizeof kMagic) != 0)
+    return corruptData("'" + path + "' is not a fogbench session (not an SQLite database)");
+  HeaderInfo info;
+  info.applicationId = bigEndian32(h.data() + 68);
+  info.userVersion = static_cast<int>(bigEndian32(h.data() + 60));
+  // Truncation: the header's page count is trustworthy when its "version
+  // valid for" matches the change counter (SQLite file format, section 1.3.7).
+  std::uint64_t pageSize = (std::uint64_t{h[16]} << 8) | h[17];
+  if (pageSize == 1) pageSize = 65536;
+  const std::uint64_t pages = bigEndian32(h.data() + 28);
+  if (pages != 0 && bigEndian32(h.data() + 24) == bigEndian32(h.data() + 92) && size < pages * pageSize)
+    info.truncated = "'" + path + "' is truncated: it holds " + std::to_string(size) + " of its " +
+                     std::to_string(pages * pageSize) + " bytes; copy it again from the original or restore a backup";
+  return info;
+}
+
+// A session file this build may open: fogbench's id, not truncated.
+Result<HeaderInfo> checkHeader(const std::string& path) {
+  auto info = readHeader(path);
+  if (!info) return info;
+  if (info->applicationId != static_cast<std::uint32_t>(kApplicationId)) {
+    char id[16];
+    std::snprintf(id, sizeof id, "0x%08X", info->applicationId);
+    return corruptData("'" + path + "' is an SQLite database but not a fogbench session (application_id " + id +
+                       ")");
+  }
+  if (!info->truncated.empty()) return corruptData(info->truncated);
+  return info;
+}
+
+std::string newerSchemaMessage(const std::string& path, std::int64_t version) {
+  return "'" + path + "' was written by a newer fogbench (schema " + std::to_string(version) +
+         "; this one reads up to " + std::to_string(kSchemaVersion) + "): update fogbench";
+}
+
+// Authoritative identity and version check through SQLite (the header read
+// above may predate changes still in the WAL).
+Result<int> checkIdentity(sqlite3* db, const std::string& path) {
+  auto app = pragmaInt(db, "PRAGMA application_id");
+  if (!app)
+    return corruptData("cannot read session '" + path + "': " + app.status().message() +
+                       "; the file is damaged, restore it from a backup");
+  if (*app != kApplicationId) return corruptData("'" + path + "' is not a fogbench session");
+  auto version = pragmaInt(db, "PRAGMA user_version");
+  if (!version) return corruptData("cannot read session '" + path + "': " + version.status().message());
+  if (*version > kSchemaVersion) return invalidArgument(newerSchemaMessage(path, *version));
+  if (*version < 1)
+    return corruptData("'" + path + "' has no session schema (user_version " + std::to_string(*version) +
+                       "); it was not written completely");
+  return static_cast<int>(*version);
+}
+
+// Migrations from older schemas, applied inside the caller's write
+// transaction before anything is written. Schema 1 is the first: none yet.
+// A new version adds a step here ("if (from < 2) { ALTER TABLE ...; }") and
+// SessionReader learns to read every older layout without migrating it.
+Status migrate(sqlite3* db, int from) {
+  if (from == kSchemaVersion) return Status::ok();
+  (void)db;
+  return Status(StatusCode::kInternal, "no migration from schema " + std::to_string(from));
+}
+
+}  // namespace
+
+std::string utcNow() {
+  const std::time_t t = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&t, &tm);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
+  return buf;
+}
+
+bool looksLikeSession(const std::string& path) {
+  auto h = readHeader(path);
+  return h.isOk() && h->applicationId == static_cast<std::uint32_t>(kApplicationId);
+}
+
+bool isSqliteFile(const std::string& path) { return readHeader(path).isOk(); }
+
+// --- SessionWriter ---------------------------------------------------------
+
+Result<std::unique_ptr<SessionWriter>> SessionWriter::create(const std::string& path, const SessionInfo& infoIn) {
+  std::error_code ec;
+  if (fs::exists(path, ec))
+    return ioError("'" + path + "' already exists; a session file is never overwritten: choose another name");
+  for (const char* suffix : {"-wal", "-journal", "-shm"}) {
+    if (fs::exists(path + suffix, ec))
+      return ioError("a leftover '" + path + suffix + "' from an earlier file of the same name exists; move it "
+                     "away or delete it, or choose another name");
+  }
+  SessionInfo info = infoIn;
+  if (info.createdUtc.empty()) info.createdUtc = utcNow();
+  if (info.softwareVersion.empty()) info.softwareVersion = FOG_VERSION;
+
+  std::unique_ptr<SessionWriter> w(new SessionWriter());
+  w->path_ = path;
+  const int rc = sqlite3_open_v2(path.c_str(), &w->db_, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE, nullptr);
+  auto abandon = [&](const std::string& what) -> Status {
+    std::string msg = "cannot create session '" + path + "': " + what + " (" + sqliteMessage(w->db_) + ")";
+    sqlite3_close(w->db_);
+    w->db_ = nullptr;
+    fs::remove(path, ec);  // our own half-made file; holds no data yet
+    fs::remove(path + "-journal", ec);
+    fs::remove(path + "-wal", ec);
+    fs::remove(path + "-shm", ec);
+    return ioError(msg + "; check the folder exists and is writable");
+  };
+  if (rc != SQLITE_OK) return abandon("open failed");
+  sqlite3_extended_result_codes(w->db_, 1);
+  // Everything that identifies the file goes in one rollback-journal
+  // transaction, written to the main file before WAL mode is switched on:
+  // a file is either a complete empty session or not a session at all.
+  const std::string ids = "PRAGMA application_id = " + std::to_string(kApplicationId) +
+                          "; PRAGMA user_version = " + std::to_string(kSchemaVersion) + ";";
+  if (!exec(w->db_, "BEGIN") || !exec(w->db_, ids.c_str()) || !exec(w->db_, kSchemaV1)) return abandon("schema");
+  {
+    Stmt s(w->db_,
+           "INSERT INTO session (id, operator, imu_model, imu_serial, source, software_version, created_utc, notes,"
+           " table_read_delay_ms, table_read_delay_std_ms, board_delay_ms, board_delay_std_ms, latitude_deg,"
+           " pulse_equivalent_deg, counter_hz, counter_bits, test_plan_json, state)"
+           " VALUES (1, ?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, 'recording')");
+    if (!s.ok()) return abandon("metadata");
+    s.bind(1, info.operatorName);
+    s.bind(2, info.imuModel);
+    s.bind(3, info.imuSerial);
+    s.bind(4, info.source);
+    s.bind(5, info.softwareVersion);
+    s.bind(6, info.createdUtc);
+    s.bind(7, info.notes);
+    s.bind(8, info.bench.tableReadDelayMs);
+    s.bind(9, info.bench.tableReadDelayStdMs);
+    s.bind(10, info.bench.boardDelayMs);
+    s.bind(11, info.bench.boardDelayStdMs);
+    s.bind(12, info.bench.latitudeDeg);
+    s.bind(13, info.bench.pulseEquivalentDeg);
+    s.bind(14, info.bench.counterHz);
+    s.bind(15, std::int64_t{info.bench.counterBits});
+    s.bind(16, testPlanToJson(info.plan));
+    if (s.step() != SQLITE_DONE) return abandon("metadata");
+  }
+  if (!exec(w->db_, "COMMIT")) return abandon("commit");
+  // WAL: a commit appends to the -wal file and a crash never leaves a torn
+  // database; synchronous=FULL syncs every commit, so even a power cut keeps
+  // all committed chunks (a handful of syncs per second costs nothing).
+  auto mode = [&]() -> std::string {
+    Stmt s(w->db_, "PRAGMA journal_mode = WAL");
+    return s.ok() && s.step() == SQLITE_ROW ? s.text(0) : std::string();
+  }();
+  if (mode != "wal" || !exec(w->db_, "PRAGMA synchronous = FULL")) return abandon("WAL journal");
+  return w;
+}
+
+SessionWriter::~SessionWriter() {
+  if (db_) {
+    // Not finished: keep what was given (state stays "recording", which the
+    // reader reports as interrupted), exactly as after a crash.
+    if (broken_.isOk()) (void)commitPending();
+    sqlite3_close(db_);
+  }
+}
+
+Status SessionWriter::fail(const std::string& what) {
+  broken_ = ioError("writing session '" + path_ + "' failed while " + what + ": " + sqliteMessage(db_) +
+                    "; the data committed so far is kept; check free disk space");
+  exec(db_, "ROLLBACK");
+  return broken_;
+}
+
+Status SessionWriter::commitPending() {
+  if (pending_.empty()) return Status::ok();
+  Stmt s(db_, "INSERT INTO raw_chunk (seq, byte_offset, data, data_fnv1a, committed_utc) VALUES (?1, ?2, ?3, ?4, ?5)");
+  if (!s.ok()) return fail("storing raw bytes");
+  s.bind(1, nextChunk_);
+  s.bind(2, static_cast<std::int64_t>(committed_));
+  s.bindBlob(3, pending_.data(), pending_.size());
+  s.bind(4, fnv1a(pending_));
+  s.bind(5, utcNow());
+  // Autocommit: one statement, one transaction, one WAL sync.
+  if (s.step() != SQLITE_DONE) return fail("storing raw bytes");
+  ++nextChunk_;
+  ++commits_;
+  committed_ += pending_.size();
+  pending_.clear();
+  return Status::ok();
+}
+
+Status SessionWriter::appendRaw(const std::uint8_t* data, std::size_t size) {
+  if (!broken_.isOk()) return broken_;
+  if (finished_) return invalidArgument("session '" + path_ + "' is finished; it accepts no more data");
+  const auto now = std::chrono::steady_clock::now();
+  if (size > 0) {
+    if (pending_.empty()) oldestPending_ = now;
+    pending_.insert(pending_.end(), data, data + size);
+    appended_ += size;
+  }
+  if (!pending_.empty() && (now - oldestPending_ >= kCommitInterval || pending_.size() >= kMaxPendingRaw))
+    return commitPending();
+  return Status::ok();
+}
+
+Status SessionWriter::flush() {
+  if (!broken_.isOk()) return broken_;
+  if (finished_) return Status::ok();
+  return commitPending();
+}
+
+Status SessionWriter::storeRecording(const Recording& rec) {
+  if (!broken_.isOk()) return broken_;
+  if (finished_) return invalidArgument("session '" + path_ + "' is finished; it accepts no more data");
+  if (auto s = commitPending(); !s.isOk()) return s;
+  if (!exec(db_, "BEGIN IMMEDIATE")) return fail("storing decoded samples");
+  if (!exec(db_, "DELETE FROM decoded; DELETE FROM test_point; DELETE FROM table_block; DELETE FROM imu_block;"))
+    return fail("storing decoded samples");
+  {
+    Stmt s(db_,
+           "INSERT INTO decoded VALUES (1, ?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13)");
+    if (!s.ok()) return fail("storing decoded samples");
+    const auto& h = rec.health;
+    s.bind(1, static_cast<std::int64_t>(committed_));
+    s.bind(2, rec.counterHz);
+    s.bind(3, std::int64_t{rec.counterBits});
+    s.bind(4, rec.pulseEquivalentDeg);
+    const std::uint64_t counters[] = {h.tableFrames,     h.imuFrames,       h.statusFrames,
+                                      h.checksumFailures, h.bytesSkipped,   h.lostFrames,
+                                      h.duplicateFrames,  h.outOfOrderFrames, h.counterWraps};
+    for (int i = 0; i < 9; ++i) s.bind(5 + i, static_cast<std::int64_t>(counters[i]));
+    if (s.step() != SQLITE_DONE) return fail("storing decoded samples");
+  }
+  Stmt point(db_, "INSERT INTO test_point VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7)");
+  Stmt tableBlock(db_, "INSERT INTO table_block VALUES (?1, ?2, ?3, ?4, ?5)");
+  Stmt imuBlock(db_, "INSERT INTO imu_block VALUES (?1, ?2, ?3, ?4, ?5)");
+  if (!point.ok() || !tableBlock.ok() || !imuBlock.ok()) return fail("storing decoded samples");
+  std::vector<std::uint8_t> buf;
+  for (std::size_t p = 0; p < rec.testPoints.size(); ++p) {
+    const auto& tp = rec.testPoints[p];
+    const auto pos = static_cast<std::int64_t>(p);
+    point.bind(1, pos);
+    point.bind(2, std::int64_t{tp.index});
+    point.bind(3, std::string(axisName(tp.axis)));
+    point.bind(4, tp.nominalFrequencyHz);
+    point.bind(5, tp.nominalAmplitudeDeg);
+    point.bind(6, static_cast<std::int64_t>(tp.table.size()));
+    point.bind(7, static_cast<std::int64_t>(tp.imu.size()));
+    if (point.step() != SQLITE_DONE) return fail("storing decoded samples");
+    sqlite3_reset(point.get());
+    for (std::size_t first = 0, block = 0; first < tp.table.size(); first += kSamplesPerBlock, ++block) {
+      const std::size_t n = std::min(kSamplesPerBlock, tp.table.size() - first);
+      buf.resize(n * kTableRecordBytes);
+      for (std::size_t i = 0; i < n; ++i) {
+        const auto& t = tp.table[first + i];
+        std::uint8_t* at = buf.data() + i * kTableRecordBytes;
+        putDouble(at, t.timeS);
+        for (int a = 0; a < kAxisCount; ++a) putDouble(at + 8 * (a + 1), t.angleDeg[static_cast<std::size_t>(a)]);
+      }
+      tableBlock.bind(1, pos);
+      tableBlock.bind(2, static_cast<std::int64_t>(block));
+      tableBlock.bind(3, static_cast<std::int64_t>(n));
+      tableBlock.bindBlob(4, buf.data(), buf.size());
+      tableBlock.bind(5, fnv1a(buf));
+      if (tableBlock.step() != SQLITE_DONE) return fail("storing decoded samples");
+      sqlite3_reset(tableBlock.get());
+    }
+    for (std::size_t first = 0, block = 0; first < tp.imu.size(); first += kSamplesPerBlock, ++block) {
+      const std::size_t n = std::min(kSamplesPerBlock, tp.imu.size() - first);
+      buf.resize(n * kImuRecordBytes);
+      for (std::size_t i = 0; i < n; ++i) {
+        const auto& m = tp.imu[first + i];
+        std::uint8_t* at = buf.data() + i * kImuRecordBytes;
+        putDouble(at, m.timeS);
+        for (int a = 0; a < kAxisCount; ++a)
+          putDouble(at + 8 * (a + 1), m.incrementDeg[static_cast<std::size_t>(a)]);
+        putDouble(at + 32, m.temperatureC);
+        putU32(at + 40, m.lostBefore);
+      }
+      imuBlock.bind(1, pos);
+      imuBlock.bind(2, static_cast<std::int64_t>(block));
+      imuBlock.bind(3, static_cast<std::int64_t>(n));
+      imuBlock.bindBlob(4, buf.data(), buf.size());
+      imuBlock.bind(5, fnv1a(buf));
+      if (imuBlock.step() != SQLITE_DONE) return fail("storing decoded samples");
+      sqlite3_reset(imuBlock.get());
+    }
+  }
+  if (!exec(db_, "COMMIT")) return fail("storing decoded samples");
+  return Status::ok();
+}
+
+Status SessionWriter::finish(bool complete, const std::string& reason) {
+  if (!broken_.isOk()) return broken_;
+  if (finished_) return Status::ok();
+  if (auto s = commitPending(); !s.isOk()) return s;
+  {
+    Stmt s(db_, "UPDATE session SET state = ?1, incomplete_reason = ?2, finished_utc = ?3 WHERE id = 1");
+    if (!s.ok()) return fail("marking the session finished");
+    s.bind(1, std::string(complete ? "complete" : "incomplete"));
+    s.bind(2, complete ? std::string() : (reason.empty() ? std::string("stopped before the end") : reason));
+    s.bind(3, utcNow());
+    if (s.step() != SQLITE_DONE) return fail("marking the session finished");
+  }
+  finished_ = true;
+  // Back to a single self-contained file: checkpoint the WAL into the main
+  // file and drop it. Everything is committed already, so a failure here
+  // loses nothing (the -wal file simply stays beside the session).
+  exec(db_, "PRAGMA wal_checkpoint(TRUNCATE)");
+  exec(db_, "PRAGMA journal_mode = DELETE");
+  if (sqlite3_close(db_) != SQLITE_OK) return fail("closing the file");
+  db_ = nullptr;
+  return Status::ok();
+}
+
+// --- SessionReader ---------------------------------------------------------
+
+Result<std::unique_ptr<SessionReader>> SessionReader::open(const std::string& path) {
+  auto header = checkHeader(path);
+  if (!header) return header.status();
+  if (header->userVersion > kSchemaVersion) return invalidArgument(newerSchemaMessage(path, header->userVersion));
+
+  std::unique_ptr<SessionReader> r(new SessionReader());
+  r->path_ = path;
+  if (sqlite3_open_v2(path.c_str(), &r->db_, SQLITE_OPEN_READONLY, nullptr) != SQLITE_OK)
+    return ioError("cannot open session '" + path + "': " + sqliteMessage(r->db_) + "; check its permissions");
+  auto version = checkIdentity(r->db_, path);
+  if (!version) return version.status();
+  r->schemaVersion_ = *version;
+
+  Stmt s(r->db_,
+         "SELECT operator, imu_model, imu_serial, source, software_version, created_utc, notes,"
+         " table_read_delay_ms, table_read_delay_std_ms, board_delay_ms, board_delay_std_ms, latitude_deg,"
+         " pulse_equivalent_deg, counter_hz, counter_bits, test_plan_json, state, incomplete_reason"
+         " FROM session WHERE id = 1");
+  if (!s.ok()) return r->readError("reading its metadata");
+  const int rc = s.step();
+  if (rc != SQLITE_ROW) {
+    if (rc == SQLITE_DONE) return corruptData("session '" + path + "' has no metadata row; the file is damaged");
+    return r->readError("reading its metadata");
+  }
+  auto& info = r->info_;
+  info.operatorName = s.text(0);
+  info.imuModel = s.text(1);
+  info.imuSerial = s.text(2);
+  info.source = s.text(3);
+  info.softwareVersion = s.text(4);
+  info.createdUtc = s.text(5);
+  info.notes = s.text(6);
+  info.bench.tableReadDelayMs = s.real(7);
+  info.bench.tableReadDelayStdMs = s.real(8);
+  info.bench.boardDelayMs = s.real(9);
+  info.bench.boardDelayStdMs = s.real(10);
+  info.bench.latitudeDeg = s.real(11);
+  info.bench.pulseEquivalentDeg = s.real(12);
+  info.bench.counterHz = s.real(13);
+  info.bench.counterBits = static_cast<int>(s.integer(14));
+  auto plan = testPlanFromJson(s.text(15));
+  if (!plan)
+    return corruptData("session '" + path + "': its stored test plan is unreadable (" + plan.status().message() +
+                       ")");
+  info.plan = std::move(*plan);
+  r->state_ = s.text(16);
+  r->reason_ = s.text(17);
+  return r;
+}
+
+SessionReader::~SessionReader() { sqlite3_close(db_); }
+
+Status SessionReader::readError(const std::string& what) const {
+  return corruptData("cannot read session '" + path_ + "' (" + what + "): " + sqliteMessage(db_) +
+                     "; the file is damaged, restore it from a backup");
+}
+
+std::string SessionReader::incompleteReason() const {
+  if (state_ == "complete") return {};
+  if (state_ == "incomplete") return reason_;
+  return "recording was interrupted: the recording program stopped without finishing the session "
+         "(crash, kill or power cut); everything committed until then is kept";
+}
+
+bool SessionReader::isReadOnly() const { return sqlite3_db_readonly(db_, "main") == 1; }
+
+std::uint64_t SessionReader::rawByteCount() const {
+  Stmt s(db_, "SELECT coalesce(sum(length(data)), 0) FROM raw_chunk");
+  return s.ok() && s.step() == SQLITE_ROW ? static_cast<std::uint64_t>(s.integer(0)) : 0;
+}
+
+Result<std::vector<std::uint8_t>> SessionReader::rawBytes() const {
+  std::vector<std::uint8_t> out;
+  out.reserve(rawByteCount());
+  Stmt s(db_, "SELECT seq, byte_offset, data, data_fnv1a FROM raw_chunk ORDER BY seq");
+  if (!s.ok()) return readError("reading the raw stream");
+  int rc;
+  std::int64_t expectSeq = 0;
+  while ((rc = s.step()) == SQLITE_ROW) {
+    if (s.integer(0) != expectSeq || s.integer(1) != static_cast<std::int64_t>(out.size()))
+      return corruptData("session '" + path_ + "': the raw stream has a gap at byte " + std::to_string(out.size()) +
+                         " (chunk " + std::to_string(expectSeq) + "); the file is damaged");
+    auto data = s.blob(2);
+    if (fnv1a(data) != s.integer(3))
+      return corruptData("session '" + path_ + "': raw stream chunk " + std::to_string(expectSeq) + " (bytes " +
+                         std::to_string(out.size()) + ".." + std::to_string(out.size() + data.size()) +
+                         ") fails its checksum; the file is damaged, restore it from a backup");
+    out.insert(out.end(), data.begin(), data.end());
+    ++expectSeq;
+  }
+  if (rc != SQLITE_DONE) return readError("reading the raw stream");
+  return out;
+}
+
+bool SessionReader::hasStoredRecording() const {
+  Stmt s(db_, "SELECT count(*) FROM decoded");
+  return s.ok() && s.step() == SQLITE_ROW && s.integer(0) > 0;
+}
+
+Result<Recording> SessionReader::recording() const {
+  if (!hasStoredRecording()) {
+    auto raw = rawBytes();
+    if (!raw) return raw.status();
+    auto rec = protocol::decodeRecording(*raw);
+    if (!rec) return Status(rec.status().code(), "session '" + path_ + "': " + rec.status().message());
+    return rec;
+  }
+  Recording rec;
+  {
+    Stmt s(db_, "SELECT counter_hz, counter_bits, pulse_equivalent_deg, table_frames, imu_frames, status_frames,"
+                " checksum_failures, bytes_skipped, lost_frames, duplicate_frames, out_of_order_frames, counter_wraps"
+                " FROM decoded WHERE id = 1");
+    if (!s.ok() || s.step() != SQLITE_ROW) return readError("reading the decoded samples");
+    rec.counterHz = s.real(0);
+    rec.counterBits = static_cast<int>(s.integer(1));
+    rec.pulseEquivalentDeg = s.real(2);
+    std::uint64_t* counters[] = {&rec.health.tableFrames,      &rec.health.imuFrames,
+                                 &rec.health.statusFrames,     &rec.health.checksumFailures,
+                                 &rec.health.bytesSkipped,     &rec.health.lostFrames,
+                                 &rec.health.duplicateFrames,  &rec.health.outOfOrderFrames,
+                                 &rec.health.counterWraps};
+    for (int i = 0; i < 9; ++i) *counters[i] = static_cast<std::uint64_t>(s.integer(3 + i));
+  }
+  Stmt points(db_, "SELECT position, point_index, axis, nominal_frequency_hz, nominal_amplitude_deg, table_samples,"
+                   " imu_samples FROM test_point ORDER BY position");
+  Stmt tableBlocks(db_, "SELECT samples, data, data_fnv1a FROM table_block WHERE test_point = ?1 ORDER BY block");
+  Stmt imuBlocks(db_, "SELECT samples, data, data_fnv1a FROM imu_block WHERE test_point = ?1 ORDER BY block");
+  if (!points.ok() || !tableBlocks.ok() || !imuBlocks.ok()) return readError("reading the decoded samples");
+  auto damaged = [&](const std::string& what) {
+    return corruptData("session '" + path_ + "': decoded samples are damaged (" + what +
+                       "); analyse the raw stream instead");
+  };
+  int rc;
+  while ((rc = points.step()) == SQLITE_ROW) {
+    TestPointData tp;
+    const std::int64_t pos = points.integer(0);
+    tp.index = static_cast<int>(points.integer(1));
+    auto axis = parseAxis(points.text(2));
+    if (!axis) return damaged("axis '" + points.text(2) + "'");
+    tp.axis = *axis;
+    tp.nominalFrequencyHz = points.real(3);
+    tp.nominalAmplitudeDeg = points.real(4);
+    const auto tableCount = points.integer(5), imuCount = points.integer(6);
+    if (tableCount < 0 || imuCount < 0) return damaged("negative sample count");
+    tp.table.reserve(static_cast<std::size_t>(tableCount));
+    tp.imu.reserve(static_cast<std::size_t>(imuCount));
+    tableBlocks.bind(1, pos);
+    while ((rc = tableBlocks.step()) == SQLITE_ROW) {
+      const auto n = static_cast<std::size_t>(tableBlocks.integer(0));
+      auto data = tableBlocks.blob(1);
+      if (data.size() != n * kTableRecordBytes || fnv1a(data) != tableBlocks.integer(2))
+        return damaged("a table block fails its size or checksum check");
+      for (std::size_t i = 0; i < n; ++i) {
+        const std::uint8_t* at = data.data() + i * kTableRecordBytes;
+        TableSample t;
+        t.timeS = getDouble(at);
+        for (int a = 0; a < kAxisCount; ++a) t.angleDeg[static_cast<std::size_t>(a)] = getDouble(at + 8 * (a + 1));
+        tp.table.push_back(t);
+      }
+    }
+    if (rc != SQLITE_DONE) return readError("reading the decoded samples");
+    sqlite3_reset(tableBlocks.get());
+    imuBlocks.bind(1, pos);
+    while ((rc = imuBlocks.step()) == SQLITE_ROW) {
+      const auto n = static_cast<std::size_t>(imuBlocks.integer(0));
+      auto data = imuBlocks.blob(1);
+      if (data.size() != n * kImuRecordBytes || fnv1a(data) != imuBlocks.integer(2))
+        return damaged("an IMU block fails its size or checksum check");
+      for (std::size_t i = 0; i < n; ++i) {
+        const std::uint8_t* at = data.data() + i * kImuRecordBytes;
+        ImuSample m;
+        m.timeS = getDouble(at);
+        for (int a = 0; a < kAxisCount; ++a)
+          m.incrementDeg[static_cast<std::size_t>(a)] = getDouble(at + 8 * (a + 1));
+        m.temperatureC = getDouble(at + 32);
+        m.lostBefore = getU32(at + 40);
+        tp.imu.push_back(m);
+      }
+    }
+    if (rc != SQLITE_DONE) return readError("reading the decoded samples");
+    sqlite3_reset(imuBlocks.get());
+    if (tp.table.size() != static_cast<std::size_t>(tableCount) || tp.imu.size() != static_cast<std::size_t>(imuCount))
+      return damaged("sample count of test point " + std::to_string(pos));
+    rec.testPoints.push_back(std::move(tp));
+  }
+  if (rc != SQLITE_DONE) return readError("reading the decoded samples");
+  return rec;
+}
+
+Result<std::vector<StoredResult>> SessionReader::results() const {
+  std::vector<StoredResult> out;
+  Stmt s(db_, "SELECT id, created_utc, settings_json, report_json FROM result ORDER BY id");
+  if (!s.ok()) return readError("reading the results");
+  int rc;
+  while ((rc = s.step()) == SQLITE_ROW) out.push_back({s.integer(0), s.text(1), s.text(2), s.text(3)});
+  if (rc != SQLITE_DONE) return readError("reading the results");
+  return out;
+}
+
+// --- addResult -------------------------------------------------------------
+
+Status addResult(const std::string& path, const std::string& settingsJson, const std::string& reportJson) {
+  auto header = checkHeader(path);
+  if (!header) return header.status();
+  if (header->userVersion > kSchemaVersion) return invalidArgument(newerSchemaMessage(path, header->userVersion));
+  sqlite3* db = nullptr;
+  struct Closer {
+    sqlite3*& db;
+    ~Closer() { sqlite3_close(db); }
+  } closer{db};
+  if (sqlite3_open_v2(path.c_str(), &db, SQLITE_OPEN_READWRITE, nullptr) != SQLITE_OK)
+    return ioError("cannot open session '" + path + "' to store a result: " + sqliteMessage(db) +
+                   "; check the file is writable");
+  sqlite3_busy_timeout(db, 5000);  // a recorder or another analysis may hold the lock briefly
+  auto failed = [&](const char* what) {
+    Status s = ioError("cannot store the result in session '" + path + "' (" + what + "): " + sqliteMessage(db) +
+                       "; the session is unchanged");
+    exec(db, "ROLLBACK");
+    return s;
+  };
+  if (!exec(db, "BEGIN IMMEDIATE")) return failed("locking");
+  auto version = checkIdentity(db, path);
+  if (!version) {
+    exec(db, "ROLLBACK");
+    return version.status();
+  }
+  if (auto s = migrate(db, *version); !s.isOk()) {
+    exec(db, "ROLLBACK");
+    return s;
+  }
+  Stmt s(db, "INSERT INTO result (created_utc, settings_json, report_json) VALUES (?1, ?2, ?3)");
+  if (!s.ok()) return failed("inserting");
+  s.bind(1, utcNow());
+  s.bind(2, settingsJson);
+  s.bind(3, reportJson);
+  if (s.step() != SQLITE_DONE) return failed("inserting");
+  if (!exec(db, "COMMIT")) return failed("committing");
+  return Status::ok();
+}
+
+}  // namespace fog::session
