@@ -1,0 +1,41 @@
+#pragma once
+// Export of a session in the CSV layout of docs/formats.md, readable back by
+// csv_import and by any spreadsheet or script:
+//   metadata.json   session info, bench constants, test points, stream health
+//   table.csv       test_point,time_s,x_deg,y_deg,z_deg
+//   gyro.csv        test_point,time_s,x_inc_deg,y_inc_deg,z_inc_deg,temperature_c,lost_before
+// and, when an analysis report is given,
+//   fits.csv        every fit of every test point, with standard errors
+//   residuals_<N>.csv  per test point N (1-based): residuals of the
+//                   4-parameter table and gyro fits
+//   report.json     analysis::formatReportJson
+//
+// Numbers are written with std::to_chars: the shortest text that reads back
+// to the same double (at most 17 significant digits), locale-independent.
+// Gyro increments are written in degrees: a recording that holds raw pulses
+// (pulseEquivalentDeg == 0) is scaled by info.bench.pulseEquivalentDeg.
+//
+// The directory is created if needed. It must be empty, unless overwrite is
+// set; even then it may hold only files of a previous export (the names
+// above), which are removed first, so that no foreign file is ever replaced
+// and no stale residuals file survives.
+// Errors: kInvalidArgument (directory not empty, foreign files, no pulse
+// equivalent for raw pulses), kIoError (cannot create or write).
+
+#include <string>
+
+#include "analysis/delay_analysis.h"
+#include "common/recording.h"
+#include "common/session_info.h"
+#include "common/status.h"
+
+namespace fog::io {
+
+Status exportCsv(const std::string& dir, const SessionInfo& info, const Recording& rec,
+                 const analysis::DelayReport* report, bool overwrite = false);
+
+// The text the exporter writes for a double (std::to_chars, shortest
+// round-trip form). Exposed so that converters and tests use the same rule.
+std::string formatDouble(double v);
+
+}  // namespace fog::io

@@ -1,0 +1,475 @@
+#include "io/csv_import.h"
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <optional>
+#include <string_view>
+#include <system_error>
+
+#include "io/metadata.h"
+
+namespace fog::io {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+Result<std::string> readWholeFile(const std::string& path) {
+  std::error_code ec;
+  if (!fs::exists(path, ec)) return ioError(path + " does not exist; check the path (docs/formats.md lists the files)");
+  if (fs::is_directory(path, ec)) return ioError(path + " is a directory, not a file");
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (!f) return ioError("cannot open " + path + " for reading; check its permissions");
+  std::string text;
+  char buf[1 << 16];
+  std::size_t n;
+  while ((n = std::fread(buf, 1, sizeof buf, f)) > 0) text.append(buf, n);
+  const bool failed = std::ferror(f) != 0;
+  std::fclose(f);
+  if (failed) return ioError("error while reading " + path);
+  // A UTF-8 byte-order mark, as some spreadsheets write it.
+  if (text.size() >= 3 && text.compare(0, 3, "\xEF\xBB\xBF") == 0) text.erase(0, 3);
+  return text;
+}
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
+  return s;
+}
+
+// Walks the lines of a CSV text, skipping blank lines and '#' comments;
+// counts every physical line so that errors point at the right one.
+class LineReader {
+ public:
+  explicit LineReader(std::string_view text) : text_(text) {}
+  // False at the end of the text.
+  bool next(std::string_view& line) {
+    while (pos_ < text_.size()) {
+      const std::size_t end = std::min(text_.find('\n', pos_), text_.size());
+      std::string_view raw = text_.substr(pos_, end - pos_);
+      pos_ = end + 1;
+      ++lineNo_;
+      if (!raw.empty() && raw.back() == '\r') raw.remove_suffix(1);
+      const std::string_view t = trim(raw);
+      if (t.empty() || t.front() == '#') continue;
+      line = raw;
+      return true;
+    }
+    return false;
+  }
+  std::size_t lineNo() const { return lineNo_; }
+
+ private:
+  std::string_view text_;
+  std::size_t pos_ = 0;
+  std::size_t lineNo_ = 0;
+};
+
+void splitFields(std::string_view line, std::vector<std::string_view>& out) {
+  out.clear();
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = line.find(',', start);
+    if (comma == std::string_view::npos) {
+      out.push_back(trim(line.substr(start)));
+      return;
+    }
+    out.push_back(trim(line.substr(start, comma - start)));
+    start = comma + 1;
+  }
+}
+
+// Columns a stream may have. Index in this list = column id.
+constexpr std::array<const char*, 5> kTableColumns = {"test_point", "time_s", "x_deg", "y_deg", "z_deg"};
+constexpr std::array<const char*, 7> kGyroColumns = {"test_point", "time_s",        "x_inc_deg",  "y_inc_deg",
+                                                     "z_inc_deg",  "temperature_c", "lost_before"};
+enum Column { kTestPoint = 0, kTime = 1, kAxis0 = 2, kTemperature = 5, kLostBefore = 6 };
+
+std::string list(const char* const* names, std::size_t n) {
+  std::string s;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (i) s += ',';
+    s += names[i];
+  }
+  return s;
+}
+
+// One data file being parsed: where to find each column, and how to word errors.
+class CsvStream {
+ public:
+  CsvStream(std::string path, const std::string& text, const char* const* names, std::size_t count)
+      : path_(std::move(path)), lines_(text), names_(names), count_(count), where_(count, -1) {}
+
+  // Reads the header line. Unknown, duplicate or empty names are refused.
+  Status readHeader() {
+    std::string_view line;
+    if (!lines_.next(line))
+      return corruptData(path_ + " is empty: it needs a header line (" + list(names_, count_) +
+                         ") and data rows (docs/formats.md)");
+    headerLine_ = lines_.lineNo();
+    splitFields(line, fields_);
+    for (std::size_t i = 0; i < fields_.size(); ++i) {
+      const std::string name(fields_[i]);
+      int id = -1;
+      for (std::size_t k = 0; k < count_; ++k)
+        if (name == names_[k]) id = static_cast<int>(k);
+      if (id < 0)
+        return corruptData(path_ + " line " + std::to_string(headerLine_) + ", column " + std::to_string(i + 1) +
+                           ": unknown column \"" + name + "\"; this file takes the columns " + list(names_, count_) +
+                           " (any order); rename or delete the column");
+      if (where_[static_cast<std::size_t>(id)] >= 0)
+        return corruptData(path_ + " line " + std::to_string(headerLine_) + ": column \"" + name +
+                           "\" appears twice; keep one");
+      where_[static_cast<std::size_t>(id)] = static_cast<int>(i);
+    }
+    columns_ = fields_.size();
+    return Status::ok();
+  }
+
+  bool has(int id) const { return where_[static_cast<std::size_t>(id)] >= 0; }
+  const std::string& path() const { return path_; }
+  std::size_t lineNo() const { return lines_.lineNo(); }
+
+  // Next data row; false at the end. Fails on a wrong number of values.
+  Result<bool> nextRow() {
+    std::string_view line;
+    if (!lines_.next(line)) return false;
+    splitFields(line, fields_);
+    if (fields_.size() != columns_)
+      return corruptData(path_ + " line " + std::to_string(lines_.lineNo()) + ": " + std::to_string(fields_.size()) +
+                         " values, but the header (line " + std::to_string(headerLine_) + ") has " +
+                         std::to_string(columns_) + " columns; every row needs one value per column, "
+                         "separated by ',' (the decimal point is '.')");
+    return true;
+  }
+
+  std::string_view field(int id) const {
+    return fields_[static_cast<std::size_t>(where_[static_cast<std::size_t>(id)])];
+  }
+
+  Status error(int id, const std::string& what) const {
+    return corruptData(path_ + " line " + std::to_string(lines_.lineNo()) + ", column \"" + names_[id] +
+                       "\": " + what);
+  }
+
+  // The field as the user wrote it, in quotes, for messages.
+  std::string quoted(int id) const {
+    std::string q(1, '"');
+    q.append(field(id));
+    q += '"';
+    return q;
+  }
+
+  // A finite double: std::from_chars, locale-independent, the whole field.
+  Status number(int id, double& out) const {
+    std::string_view s = field(id);
+    if (s.empty()) return error(id, "empty value; every row needs a number here");
+    if (s.front() == '+') s.remove_prefix(1);
+    const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
+    if (ec == std::errc::result_out_of_range) return error(id, quoted(id) + " is out of the range of a double");
+    if (ec != std::errc() || end != s.data() + s.size())
+      return error(id, quoted(id) + " is not a number (write e.g. 1.25 or -3.5e-05; the decimal point is '.')");
+    if (!std::isfinite(out))
+      return error(id, quoted(id) + " is not finite; NaN and infinity are refused: drop the row or fill the gap");
+    return Status::ok();
+  }
+
+  Status integer(int id, std::uint64_t& out, std::uint64_t min, std::uint64_t max, const char* meaning) const {
+    const std::string_view s = field(id);
+    const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
+    if (ec != std::errc() || end != s.data() + s.size() || s.empty() || out < min || out > max)
+      return error(id, quoted(id) + " is not " + meaning);
+    return Status::ok();
+  }
+
+ private:
+  std::string path_;
+  LineReader lines_;
+  const char* const* names_;
+  std::size_t count_;
+  std::vector<int> where_;  // column id -> field position, -1 when absent
+  std::vector<std::string_view> fields_;
+  std::size_t columns_ = 0, headerLine_ = 0;
+};
+
+#define FOG_RETURN_IF_ERROR(expr)        \
+  do {                                   \
+    Status status_ = (expr);             \
+    if (!status_.isOk()) return status_; \
+  } while (false)
+
+// Per test point, the last time seen and its line: times must increase
+// strictly within a test point (analysis and the increment model need it).
+struct TimeCheck {
+  std::vector<double> last;
+  std::vector<std::size_t> line;
+  explicit TimeCheck(std::size_t n) : last(n, -HUGE_VAL), line(n, 0) {}
+};
+
+Status testPointOf(const CsvStream& s, std::size_t count, std::size_t& tp) {
+  if (!s.has(kTestPoint)) {
+    tp = 0;
+    return Status::ok();
+  }
+  std::uint64_t v = 0;
+  const std::string meaning =
+      "a test point number from 1 to " + std::to_string(count) + " (metadata lists " + std::to_string(count) + ")";
+  FOG_RETURN_IF_ERROR(s.integer(kTestPoint, v, 1, count, meaning.c_str()));
+  tp = static_cast<std::size_t>(v - 1);
+  return Status::ok();
+}
+
+Status timeOf(const CsvStream& s, std::size_t tp, TimeCheck& check, double& t) {
+  FOG_RETURN_IF_ERROR(s.number(kTime, t));
+  if (!(t > check.last[tp]))
+    return s.error(kTime, std::string(s.field(kTime)) + " s is not after the previous time of test point " +
+                              std::to_string(tp + 1) + " (line " + std::to_string(check.line[tp]) +
+                              "); times must increase strictly within a test point: sort the rows by time "
+                              "and drop duplicates");
+  check.last[tp] = t;
+  check.line[tp] = s.lineNo();
+  return Status::ok();
+}
+
+Status needsTestPointColumn(const CsvStream& s, std::size_t count) {
+  if (count > 1 && !s.has(kTestPoint))
+    return corruptData(s.path() + " has no \"test_point\" column, but the metadata lists " + std::to_string(count) +
+                       " test points; add the column (1 .. " + std::to_string(count) + ") to say which row is which");
+  return Status::ok();
+}
+
+Status parseTable(CsvStream& s, std::vector<TestPointData>& points) {
+  FOG_RETURN_IF_ERROR(s.readHeader());
+  if (!s.has(kTime)) return corruptData(s.path() + ": missing column \"time_s\" (seconds on the common clock)");
+  if (!s.has(kAxis0) && !s.has(kAxis0 + 1) && !s.has(kAxis0 + 2))
+    return corruptData(s.path() + ": no angle column; give at least the swing axis' one (x_deg, y_deg or z_deg)");
+  FOG_RETURN_IF_ERROR(needsTestPointColumn(s, points.size()));
+  TimeCheck check(points.size());
+  std::size_t rows = 0;
+  while (true) {
+    auto more = s.nextRow();
+    if (!more) return more.status();
+    if (!*more) break;
+    ++rows;
+    std::size_t tp = 0;
+    FOG_RETURN_IF_ERROR(testPointOf(s, points.size(), tp));
+    TableSample sample;
+    FOG_RETURN_IF_ERROR(timeOf(s, tp, check, sample.timeS));
+    for (int a = 0; a < kAxisCount; ++a)
+      if (s.has(kAxis0 + a)) FOG_RETURN_IF_ERROR(s.number(kAxis0 + a, sample.angleDeg[static_cast<std::size_t>(a)]));
+    points[tp].table.push_back(sample);
+  }
+  if (rows == 0) return corruptData(s.path() + " has a header but no data rows");
+  return Status::ok();
+}
+
+Status parseGyro(CsvStream& s, std::vector<TestPointData>& points) {
+  FOG_RETURN_IF_ERROR(s.readHeader());
+  if (!s.has(kTime)) return corruptData(s.path() + ": missing column \"time_s\" (seconds on the common clock)");
+  if (!s.has(kAxis0) && !s.has(kAxis0 + 1) && !s.has(kAxis0 + 2))
+    return corruptData(s.path() + ": no increment column; give at least the swing axis' one "
+                                  "(x_inc_deg, y_inc_deg or z_inc_deg)");
+  FOG_RETURN_IF_ERROR(needsTestPointColumn(s, points.size()));
+  TimeCheck check(points.size());
+  std::size_t rows = 0;
+  while (true) {
+    auto more = s.nextRow();
+    if (!more) return more.status();
+    if (!*more) break;
+    ++rows;
+    std::size_t tp = 0;
+    FOG_RETURN_IF_ERROR(testPointOf(s, points.size(), tp));
+    ImuSample sample;
+    FOG_RETURN_IF_ERROR(timeOf(s, tp, check, sample.timeS));
+    for (int a = 0; a < kAxisCount; ++a)
+      if (s.has(kAxis0 + a))
+        FOG_RETURN_IF_ERROR(s.number(kAxis0 + a, sample.incrementDeg[static_cast<std::size_t>(a)]));
+    if (s.has(kTemperature)) FOG_RETURN_IF_ERROR(s.number(kTemperature, sample.temperatureC));
+    if (s.has(kLostBefore)) {
+      std::uint64_t lost = 0;
+      FOG_RETURN_IF_ERROR(
+          s.integer(kLostBefore, lost, 0, 0xFFFFFFFFu, "a count of lost IMU frames (an integer >= 0)"));
+      sample.lostBefore = static_cast<std::uint32_t>(lost);
+    }
+    points[tp].imu.push_back(sample);
+  }
+  if (rows == 0) return corruptData(s.path() + " has a header but no data rows");
+  return Status::ok();
+}
+
+std::string upper(Axis a) {
+  std::string s = axisName(a);
+  s[0] = static_cast<char>(s[0] - 'a' + 'A');
+  return s;
+}
+
+Result<ImportedSession> importTexts(const std::string& what, const std::string& metaPath,
+                                    const std::string& metaText, const std::string& tablePath,
+                                    const std::string& tableText, const std::string& gyroPath,
+                                    const std::string& gyroText) {
+  auto meta = detail::metadataFromJson(metaPath, metaText);
+  if (!meta) return meta.status();
+  const std::size_t count = meta->testPoints.size();
+  std::vector<TestPointData> points(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    points[i].index = static_cast<int>(i);
+    points[i].axis = meta->testPoints[i].axis;
+    points[i].nominalFrequencyHz = meta->testPoints[i].frequencyHz;
+    points[i].nominalAmplitudeDeg = meta->testPoints[i].amplitudeDeg;
+  }
+
+  CsvStream table(tablePath, tableText, kTableColumns.data(), kTableColumns.size());
+  FOG_RETURN_IF_ERROR(parseTable(table, points));
+  CsvStream gyro(gyroPath, gyroText, kGyroColumns.data(), kGyroColumns.size());
+  FOG_RETURN_IF_ERROR(parseGyro(gyro, points));
+
+  ImportedSession out;
+  out.notes.push_back("imported " + what);
+  // The swing axis must be there; the others are read as 0 (another bench may
+  // record only the axis it swings).
+  for (const auto& p : points) {
+    if (p.table.empty() && p.imu.empty()) continue;
+    const int a = static_cast<int>(p.axis);
+    if (!table.has(kAxis0 + a))
+      return corruptData(tablePath + ": no \"" + kTableColumns[static_cast<std::size_t>(kAxis0 + a)] +
+                         "\" column, but test point " + std::to_string(p.index + 1) + " swings the " + upper(p.axis) +
+                         " axis (" + metaPath + "); add the column or correct the axis");
+    if (!gyro.has(kAxis0 + a))
+      return corruptData(gyroPath + ": no \"" + kGyroColumns[static_cast<std::size_t>(kAxis0 + a)] +
+                         "\" column, but test point " + std::to_string(p.index + 1) + " swings the " + upper(p.axis) +
+                         " axis (" + metaPath + "); add the column or correct the axis");
+  }
+  for (int a = 0; a < kAxisCount; ++a) {
+    if (!table.has(kAxis0 + a))
+      out.notes.push_back(tablePath + " has no " + kTableColumns[static_cast<std::size_t>(kAxis0 + a)] +
+                          " column: " + upper(static_cast<Axis>(a)) + " angles read as 0");
+    if (!gyro.has(kAxis0 + a))
+      out.notes.push_back(gyroPath + " has no " + kGyroColumns[static_cast<std::size_t>(kAxis0 + a)] +
+                          " column: " + upper(static_cast<Axis>(a)) + " increments read as 0");
+  }
+  if (!gyro.has(kTemperature)) out.notes.push_back(gyroPath + " has no temperature_c column: temperatures read as 0");
+
+  SessionInfo& info = out.info;
+  info = meta->info;
+  info.source = "import " + what + (meta->info.source.empty() ? "" : " (recorded by: " + meta->info.source + ")");
+  Recording& rec = out.recording;
+  rec.counterHz = info.bench.counterHz;
+  rec.counterBits = info.bench.counterBits;
+  // The increments are in degrees; a pulse equivalent > 0 tells the analysis so.
+  rec.pulseEquivalentDeg = info.bench.pulseEquivalentDeg;
+  StreamHealth counted;
+  for (std::size_t i = 0; i < count; ++i) {
+    auto& p = points[i];
+    const auto& m = meta->testPoints[i];
+    TestPoint plan;
+    plan.axis = m.axis;
+    plan.frequencyHz = m.frequencyHz;
+    plan.amplitudeDeg = m.amplitudeDeg;
+    plan.durationS = m.hasPlan ? m.durationS : (p.table.size() > 1 ? p.table.back().timeS - p.table.front().timeS : 0.0);
+    plan.settleS = m.settleS;
+    plan.startPhaseDeg = m.startPhaseDeg;
+    info.plan.points.push_back(plan);
+
+    counted.tableFrames += p.table.size();
+    counted.imuFrames += p.imu.size();
+    for (const auto& s : p.imu) counted.lostFrames += s.lostBefore;
+    if (p.table.empty() && p.imu.empty()) {
+      out.notes.push_back("test point " + std::to_string(i + 1) + " has no data in either file; left out");
+      continue;
+    }
+    if (p.table.empty() || p.imu.empty())
+      out.notes.push_back("test point " + std::to_string(i + 1) + " has no " + (p.table.empty() ? "table" : "gyro") +
+                          " rows; it cannot give a delay");
+    rec.testPoints.push_back(std::move(p));
+  }
+  rec.health = meta->hasStream ? meta->stream : counted;
+  if (rec.testPoints.empty()) return corruptData(what + " holds no data for any test point");
+  return out;
+}
+
+}  // namespace
+
+analysis::BenchConstants benchConstantsOf(const SessionInfo& info) {
+  analysis::BenchConstants c;
+  c.tableReadDelayMs = info.bench.tableReadDelayMs;
+  c.tableReadDelayStdMs = info.bench.tableReadDelayStdMs;
+  c.boardDelayMs = info.bench.boardDelayMs;
+  c.boardDelayStdMs = info.bench.boardDelayStdMs;
+  c.pulseEquivalentDeg = info.bench.pulseEquivalentDeg;
+  return c;
+}
+
+Result<ImportedSession> importCsvDirectory(const std::string& dir) {
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec))
+    return ioError(dir + " is not a directory; give the directory that holds metadata.json, table.csv and gyro.csv");
+  const fs::path d(dir);
+  const std::string metaPath = (d / "metadata.json").string();
+  const std::string tablePath = (d / "table.csv").string();
+  const std::string gyroPath = (d / "gyro.csv").string();
+  auto meta = readWholeFile(metaPath);
+  if (!meta) return meta.status();
+  auto table = readWholeFile(tablePath);
+  if (!table) return table.status();
+  auto gyro = readWholeFile(gyroPath);
+  if (!gyro) return gyro.status();
+  return importTexts(dir, metaPath, *meta, tablePath, *table, gyroPath, *gyro);
+}
+
+Result<ImportedSession> importCsvFiles(const std::vector<std::string>& paths) {
+  if (paths.size() != 3)
+    return invalidArgument("give three files (metadata JSON, table CSV, gyro CSV), not " +
+                           std::to_string(paths.size()));
+  std::optional<std::size_t> meta, table, gyro;
+  std::vector<std::string> texts;
+  for (std::size_t i = 0; i < paths.size(); ++i) {
+    auto text = readWholeFile(paths[i]);
+    if (!text) return text.status();
+    texts.push_back(std::move(*text));
+    const std::string& t = texts.back();
+    const auto first = t.find_first_not_of(" \t\r\n");
+    std::optional<std::size_t>* slot = nullptr;
+    const char* kind = "";
+    if (first != std::string::npos && t[first] == '{') {
+      slot = &meta;
+      kind = "metadata";
+    } else {
+      // Identified by the header's names, so a file may be called anything.
+      LineReader lines(t);
+      std::string_view header;
+      std::vector<std::string_view> names;
+      if (!lines.next(header))
+        return corruptData(paths[i] + " is empty: a table or gyro file needs a header line and data rows, "
+                                      "metadata a JSON object (docs/formats.md)");
+      splitFields(header, names);
+      auto hasName = [&](const char* n) { return std::find(names.begin(), names.end(), n) != names.end(); };
+      if (hasName("x_inc_deg") || hasName("y_inc_deg") || hasName("z_inc_deg")) {
+        slot = &gyro;
+        kind = "gyro";
+      } else if (hasName("x_deg") || hasName("y_deg") || hasName("z_deg")) {
+        slot = &table;
+        kind = "table";
+      } else {
+        return invalidArgument("cannot tell what " + paths[i] +
+                               " holds: it is not JSON metadata and its header has neither an angle column "
+                               "(x_deg, y_deg, z_deg) nor an increment column (x_inc_deg, y_inc_deg, z_inc_deg)");
+      }
+    }
+    if (slot->has_value())
+      return invalidArgument("both " + paths[**slot] + " and " + paths[i] + " look like the " + kind +
+                             " file; give one metadata, one table and one gyro file");
+    *slot = i;
+  }
+  if (!meta || !table || !gyro)
+    return invalidArgument(std::string("missing the ") + (!meta ? "metadata" : !table ? "table" : "gyro") +
+                           " file; give one metadata, one table and one gyro file");
+  return importTexts(paths[*meta] + ", " + paths[*table] + ", " + paths[*gyro], paths[*meta], texts[*meta],
+                     paths[*table], texts[*table], paths[*gyro], texts[*gyro]);
+}
+
+}  // namespace fog::io

@@ -1,0 +1,59 @@
+#pragma once
+// Import of data recorded on another bench (or exported by fogbench) from the
+// CSV layout of docs/formats.md: metadata.json, table.csv, gyro.csv.
+//
+// Contract:
+//  - The result is what the sampling-board decoder would have produced: a
+//    fog::Recording that analysis::analyzeRecording accepts unchanged, and the
+//    fog::SessionInfo written in metadata.json.
+//  - Parsing is locale-independent ('.' decimal point, std::from_chars) and
+//    exact: a number written with std::to_chars (as csv_export does) reads
+//    back to the same double, so export -> import -> analysis reproduces the
+//    original analysis bit for bit.
+//  - Columns are found by header name, in any order; an unknown column is
+//    refused (a typo must not silently drop data). Lines starting with '#'
+//    and blank lines are skipped; CRLF line endings and a UTF-8 byte-order
+//    mark are accepted.
+//  - Errors name the file, the line (1-based, counting every physical line)
+//    and the column, say what is wrong and what to do:
+//      kIoError       a file is missing or unreadable
+//      kCorruptData   any bad content: not a number, NaN/inf, time not
+//                     increasing, missing/unknown/duplicate column, wrong
+//                     number of values, empty file, bad metadata
+//      kInvalidArgument  importCsvFiles was given the wrong set of files
+//  - Nothing is read from the network and no file is written.
+
+#include <string>
+#include <vector>
+
+#include "analysis/delay_analysis.h"
+#include "common/recording.h"
+#include "common/session_info.h"
+#include "common/status.h"
+
+namespace fog::io {
+
+struct ImportedSession {
+  SessionInfo info;
+  Recording recording;
+  // Things the user should know that are not errors: axes absent from the
+  // files (read as 0), test points without data, the files read.
+  std::vector<std::string> notes;
+};
+
+// Reads <dir>/metadata.json, <dir>/table.csv and <dir>/gyro.csv. Other files
+// in the directory (an export's fits.csv, residuals_*.csv, report.json) are
+// ignored.
+Result<ImportedSession> importCsvDirectory(const std::string& dir);
+
+// The same from three explicitly named files in any order: the metadata is
+// the one whose content starts with '{' (JSON); of the CSV files the gyro
+// stream is the one whose header has an increment column (x_inc_deg,
+// y_inc_deg or z_inc_deg), the table stream the one with an angle column
+// (x_deg, y_deg or z_deg).
+Result<ImportedSession> importCsvFiles(const std::vector<std::string>& paths);
+
+// The bench constants the analysis needs, from the session's settings.
+analysis::BenchConstants benchConstantsOf(const SessionInfo& info);
+
+}  // namespace fog::io

@@ -1,0 +1,230 @@
+#include "io/metadata.h"
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <set>
+
+namespace fog::io::detail {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+// Reads one JSON object's keys, refusing unknown ones so that a typo is not
+// silently replaced by a default.
+class Reader {
+ public:
+  Reader(const std::string& path, const Json& object, std::string where)
+      : path_(path), j_(object), where_(std::move(where)) {}
+
+  Status checkKeys(const std::set<std::string>& known) const {
+    for (const auto& item : j_.items())
+      if (!known.count(item.key())) {
+        std::string list;
+        for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
+        return corruptData(path_ + ": unknown key \"" + name(item.key()) + "\"; known keys here: " + list +
+                           " (docs/formats.md)");
+      }
+    return Status::ok();
+  }
+
+  bool has(const char* key) const { return j_.contains(key) && !j_.at(key).is_null(); }
+
+  Status string(const char* key, std::string& out) const {
+    if (!has(key)) return Status::ok();
+    if (!j_.at(key).is_string()) return corruptData(path_ + ": \"" + name(key) + "\" must be a string");
+    out = j_.at(key).get<std::string>();
+    return Status::ok();
+  }
+
+  // A finite number >= min; required when `required` (otherwise `out` keeps its default).
+  Status number(const char* key, double& out, bool required, double min = -HUGE_VAL) const {
+    if (!has(key)) {
+      if (required)
+        return corruptData(path_ + ": missing \"" + name(key) + "\"; it is required (docs/formats.md)");
+      return Status::ok();
+    }
+    const Json& v = j_.at(key);
+    if (!v.is_number()) return corruptData(path_ + ": \"" + name(key) + "\" must be a number, not " + v.dump());
+    const double d = v.get<double>();
+    if (!std::isfinite(d) || d < min)
+      return corruptData(path_ + ": \"" + name(key) + "\" = " + v.dump() + " is out of range" +
+                         (min > -HUGE_VAL ? " (must be >= " + Json(min).dump() + ")" : ""));
+    out = d;
+    return Status::ok();
+  }
+
+  Status integer(const char* key, std::uint64_t& out) const {
+    if (!has(key)) return Status::ok();
+    const Json& v = j_.at(key);
+    if (!v.is_number_unsigned() && !(v.is_number_integer() && v.get<std::int64_t>() >= 0))
+      return corruptData(path_ + ": \"" + name(key) + "\" must be a non-negative integer, not " + v.dump());
+    out = v.get<std::uint64_t>();
+    return Status::ok();
+  }
+
+  std::string name(const std::string& key) const { return where_.empty() ? key : where_ + "." + key; }
+
+ private:
+  const std::string& path_;
+  const Json& j_;
+  std::string where_;
+};
+
+#define FOG_RETURN_IF_ERROR(expr)      \
+  do {                                 \
+    Status status_ = (expr);           \
+    if (!status_.isOk()) return status_; \
+  } while (false)
+
+}  // namespace
+
+std::string metadataToJson(const Metadata& meta) {
+  const SessionInfo& s = meta.info;
+  const BenchSettings& b = s.bench;
+  Json j;
+  j["format"] = kFormatName;
+  j["format_version"] = kFormatVersion;
+  j["operator"] = s.operatorName;
+  j["imu_model"] = s.imuModel;
+  j["imu_serial"] = s.imuSerial;
+  j["source"] = s.source;
+  j["software_version"] = s.softwareVersion;
+  j["created_utc"] = s.createdUtc;
+  j["notes"] = s.notes;
+  j["bench"] = {{"table_read_delay_ms", b.tableReadDelayMs}, {"table_read_delay_std_ms", b.tableReadDelayStdMs},
+                {"board_delay_ms", b.boardDelayMs},          {"board_delay_std_ms", b.boardDelayStdMs},
+                {"latitude_deg", b.latitudeDeg},             {"pulse_equivalent_deg", b.pulseEquivalentDeg},
+                {"counter_hz", b.counterHz},                 {"counter_bits", b.counterBits}};
+  j["rest_between_s"] = s.plan.restBetweenS;
+  Json points = Json::array();
+  for (const auto& p : meta.testPoints) {
+    Json e = {{"axis", axisName(p.axis)}, {"frequency_hz", p.frequencyHz}, {"amplitude_deg", p.amplitudeDeg}};
+    if (p.hasPlan) {
+      e["duration_s"] = p.durationS;
+      e["settle_s"] = p.settleS;
+      e["start_phase_deg"] = p.startPhaseDeg;
+    }
+    points.push_back(std::move(e));
+  }
+  j["test_points"] = std::move(points);
+  if (meta.hasStream) {
+    const StreamHealth& h = meta.stream;
+    j["stream"] = {{"table_frames", h.tableFrames},         {"imu_frames", h.imuFrames},
+                   {"status_frames", h.statusFrames},       {"checksum_failures", h.checksumFailures},
+                   {"bytes_skipped", h.bytesSkipped},       {"lost_frames", h.lostFrames},
+                   {"duplicate_frames", h.duplicateFrames}, {"out_of_order_frames", h.outOfOrderFrames},
+                   {"counter_wraps", h.counterWraps}};
+  }
+  return j.dump(2) + "\n";
+}
+
+Result<Metadata> metadataFromJson(const std::string& path, const std::string& text) {
+  Json j;
+  try {
+    j = Json::parse(text);
+  } catch (const nlohmann::json::parse_error& e) {
+    return corruptData(path + ": not valid JSON (" + e.what() + "); metadata must be one JSON object (docs/formats.md)");
+  }
+  if (!j.is_object()) return corruptData(path + ": must hold one JSON object {...} (docs/formats.md)");
+
+  Metadata meta;
+  SessionInfo& s = meta.info;
+  const Reader top(path, j, "");
+  FOG_RETURN_IF_ERROR(top.checkKeys({"format", "format_version", "operator", "imu_model", "imu_serial", "source",
+                                     "software_version", "created_utc", "notes", "bench", "rest_between_s",
+                                     "test_points", "stream"}));
+  std::string format;
+  FOG_RETURN_IF_ERROR(top.string("format", format));
+  if (top.has("format") && format != kFormatName)
+    return corruptData(path + ": \"format\" is \"" + format + "\", expected \"" + kFormatName + "\"");
+  if (top.has("format_version")) {
+    const Json& v = j.at("format_version");
+    if (!v.is_number_integer() || v.get<std::int64_t>() < 1 || v.get<std::int64_t>() > kFormatVersion)
+      return corruptData(path + ": \"format_version\" " + v.dump() + " is not supported; this fogbench reads version " +
+                         std::to_string(kFormatVersion));
+  }
+  FOG_RETURN_IF_ERROR(top.string("operator", s.operatorName));
+  FOG_RETURN_IF_ERROR(top.string("imu_model", s.imuModel));
+  FOG_RETURN_IF_ERROR(top.string("imu_serial", s.imuSerial));
+  FOG_RETURN_IF_ERROR(top.string("source", s.source));
+  FOG_RETURN_IF_ERROR(top.string("software_version", s.softwareVersion));
+  FOG_RETURN_IF_ERROR(top.string("created_utc", s.createdUtc));
+  FOG_RETURN_IF_ERROR(top.string("notes", s.notes));
+  FOG_RETURN_IF_ERROR(top.number("rest_between_s", s.plan.restBetweenS, false, 0.0));
+
+  // The delays and the pulse equivalent belong to the bench that recorded
+  // the data: defaulting them to this bench's values would give a wrong
+  // breakdown without a word, so they are required.
+  if (!j.contains("bench") || !j.at("bench").is_object())
+    return corruptData(path + ": missing \"bench\" object with table_read_delay_ms, board_delay_ms and "
+                              "pulse_equivalent_deg (docs/formats.md)");
+  const Reader bench(path, j.at("bench"), "bench");
+  BenchSettings& b = s.bench;
+  FOG_RETURN_IF_ERROR(bench.checkKeys({"table_read_delay_ms", "table_read_delay_std_ms", "board_delay_ms",
+                                       "board_delay_std_ms", "latitude_deg", "pulse_equivalent_deg", "counter_hz",
+                                       "counter_bits"}));
+  FOG_RETURN_IF_ERROR(bench.number("table_read_delay_ms", b.tableReadDelayMs, true));
+  FOG_RETURN_IF_ERROR(bench.number("table_read_delay_std_ms", b.tableReadDelayStdMs, false, 0.0));
+  FOG_RETURN_IF_ERROR(bench.number("board_delay_ms", b.boardDelayMs, true));
+  FOG_RETURN_IF_ERROR(bench.number("board_delay_std_ms", b.boardDelayStdMs, false, 0.0));
+  FOG_RETURN_IF_ERROR(bench.number("latitude_deg", b.latitudeDeg, false, -90.0));
+  if (b.latitudeDeg > 90.0) return corruptData(path + ": \"bench.latitude_deg\" must be within [-90, 90]");
+  FOG_RETURN_IF_ERROR(bench.number("pulse_equivalent_deg", b.pulseEquivalentDeg, true));
+  if (!(b.pulseEquivalentDeg > 0.0))
+    return corruptData(path + ": \"bench.pulse_equivalent_deg\" must be > 0 (degrees per gyro pulse)");
+  FOG_RETURN_IF_ERROR(bench.number("counter_hz", b.counterHz, false));
+  if (!(b.counterHz > 0.0)) return corruptData(path + ": \"bench.counter_hz\" must be > 0");
+  std::uint64_t bits = static_cast<std::uint64_t>(b.counterBits);
+  FOG_RETURN_IF_ERROR(bench.integer("counter_bits", bits));
+  if (bits < 1 || bits > 64) return corruptData(path + ": \"bench.counter_bits\" must be 1 .. 64");
+  b.counterBits = static_cast<int>(bits);
+
+  if (!j.contains("test_points") || !j.at("test_points").is_array() || j.at("test_points").empty())
+    return corruptData(path + ": missing \"test_points\": a non-empty array with one {\"axis\": \"x\", ...} per "
+                              "test point (docs/formats.md)");
+  const Json& points = j.at("test_points");
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const std::string where = "test_points[" + std::to_string(i) + "]";
+    if (!points[i].is_object()) return corruptData(path + ": \"" + where + "\" must be an object");
+    const Reader r(path, points[i], where);
+    FOG_RETURN_IF_ERROR(
+        r.checkKeys({"axis", "frequency_hz", "amplitude_deg", "duration_s", "settle_s", "start_phase_deg"}));
+    MetaTestPoint p;
+    std::string axis;
+    FOG_RETURN_IF_ERROR(r.string("axis", axis));
+    auto parsed = parseAxis(axis);
+    if (!r.has("axis") || !parsed)
+      return corruptData(path + ": \"" + where + ".axis\" must be \"x\", \"y\" or \"z\" (the swing axis)");
+    p.axis = *parsed;
+    FOG_RETURN_IF_ERROR(r.number("frequency_hz", p.frequencyHz, false, 0.0));
+    FOG_RETURN_IF_ERROR(r.number("amplitude_deg", p.amplitudeDeg, false, 0.0));
+    p.hasPlan = r.has("duration_s");
+    FOG_RETURN_IF_ERROR(r.number("duration_s", p.durationS, false, 0.0));
+    FOG_RETURN_IF_ERROR(r.number("settle_s", p.settleS, false, 0.0));
+    FOG_RETURN_IF_ERROR(r.number("start_phase_deg", p.startPhaseDeg, false));
+    meta.testPoints.push_back(p);
+  }
+
+  if (j.contains("stream")) {
+    if (!j.at("stream").is_object()) return corruptData(path + ": \"stream\" must be an object");
+    const Reader r(path, j.at("stream"), "stream");
+    FOG_RETURN_IF_ERROR(r.checkKeys({"table_frames", "imu_frames", "status_frames", "checksum_failures",
+                                     "bytes_skipped", "lost_frames", "duplicate_frames", "out_of_order_frames",
+                                     "counter_wraps"}));
+    StreamHealth& h = meta.stream;
+    FOG_RETURN_IF_ERROR(r.integer("table_frames", h.tableFrames));
+    FOG_RETURN_IF_ERROR(r.integer("imu_frames", h.imuFrames));
+    FOG_RETURN_IF_ERROR(r.integer("status_frames", h.statusFrames));
+    FOG_RETURN_IF_ERROR(r.integer("checksum_failures", h.checksumFailures));
+    FOG_RETURN_IF_ERROR(r.integer("bytes_skipped", h.bytesSkipped));
+    FOG_RETURN_IF_ERROR(r.integer("lost_frames", h.lostFrames));
+    FOG_RETURN_IF_ERROR(r.integer("duplicate_frames", h.duplicateFrames));
+    FOG_RETURN_IF_ERROR(r.integer("out_of_order_frames", h.outOfOrderFrames));
+    FOG_RETURN_IF_ERROR(r.integer("counter_wraps", h.counterWraps));
+    meta.hasStream = true;
+  }
+  return meta;
+}
+
+}  // namespace fog::io::detail

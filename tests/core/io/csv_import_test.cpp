@@ -1,0 +1,413 @@
+// The CSV importer on small hand-written files: what it accepts (column
+// order, comments, CRLF, a bench that records only X) and how it words every
+// kind of bad input (file, line, column, what to do).
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <random>
+
+#include "analysis/delay_analysis.h"
+#include "common/units.h"
+#include "io/csv_export.h"
+#include "io/csv_import.h"
+#include "io_test_util.h"
+
+namespace fog::io {
+namespace {
+
+using testing::freshDir;
+using testing::readText;
+using testing::writeText;
+
+const char* kMetadata = R"({
+  "operator": "A. Tester", "imu_model": "FOG-3", "imu_serial": "SN 42",
+  "bench": {"table_read_delay_ms": 0.05, "board_delay_ms": 0.28, "pulse_equivalent_deg": 5e-5},
+  "test_points": [{"axis": "x", "frequency_hz": 1, "amplitude_deg": 3}]
+})";
+
+// Line 1 is the header; data rows are lines 2, 3, 4.
+const char* kTable =
+    "test_point,time_s,x_deg,y_deg,z_deg\n"
+    "1,0.001,0.1,0,0\n"
+    "1,0.002,0.2,0,0\n"
+    "1,0.003,0.3,0,0\n";
+const char* kGyro =
+    "test_point,time_s,x_inc_deg,y_inc_deg,z_inc_deg,temperature_c,lost_before\n"
+    "1,0.002,0.001,0,0,25.5,0\n"
+    "1,0.004,0.002,0,0,25.5,1\n";
+
+std::string goodDir(const char* metadata = kMetadata, const char* table = kTable, const char* gyro = kGyro) {
+  const std::string dir = freshDir();
+  writeText(dir, "metadata.json", metadata);
+  writeText(dir, "table.csv", table);
+  writeText(dir, "gyro.csv", gyro);
+  return dir;
+}
+
+TEST(CsvImport, ReadsTheDocumentedLayout) {
+  const std::string dir = goodDir();
+  auto s = importCsvDirectory(dir);
+  ASSERT_TRUE(s.isOk()) << s.status().toString();
+  EXPECT_EQ(s->info.operatorName, "A. Tester");
+  EXPECT_EQ(s->info.imuModel, "FOG-3");
+  EXPECT_EQ(s->info.imuSerial, "SN 42");
+  EXPECT_NE(s->info.source.find(dir), std::string::npos);
+  EXPECT_DOUBLE_EQ(s->info.bench.pulseEquivalentDeg, 5e-5);
+  ASSERT_EQ(s->info.plan.points.size(), 1u);
+  EXPECT_EQ(s->info.plan.points[0].axis, Axis::kX);
+  const Recording& r = s->recording;
+  EXPECT_DOUBLE_EQ(r.pulseEquivalentDeg, 5e-5);
+  ASSERT_EQ(r.testPoints.size(), 1u);
+  const auto& p = r.testPoints[0];
+  EXPECT_EQ(p.index, 0);
+  EXPECT_DOUBLE_EQ(p.nominalFrequencyHz, 1.0);
+  EXPECT_DOUBLE_EQ(p.nominalAmplitudeDeg, 3.0);
+  ASSERT_EQ(p.table.size(), 3u);
+  EXPECT_EQ(p.table[2].timeS, 0.003);
+  EXPECT_EQ(p.table[2].angleDeg[0], 0.3);
+  ASSERT_EQ(p.imu.size(), 2u);
+  EXPECT_EQ(p.imu[1].incrementDeg[0], 0.002);
+  EXPECT_EQ(p.imu[1].temperatureC, 25.5);
+  EXPECT_EQ(p.imu[1].lostBefore, 1u);
+  // Without a "stream" section the health is counted from the rows.
+  EXPECT_EQ(r.health.tableFrames, 3u);
+  EXPECT_EQ(r.health.imuFrames, 2u);
+  EXPECT_EQ(r.health.lostFrames, 1u);
+  const auto c = benchConstantsOf(s->info);
+  EXPECT_DOUBLE_EQ(c.tableReadDelayMs, 0.05);
+  EXPECT_DOUBLE_EQ(c.boardDelayMs, 0.28);
+}
+
+bool sameRecording(const Recording& a, const Recording& b) {
+  if (a.testPoints.size() != b.testPoints.size()) return false;
+  for (std::size_t i = 0; i < a.testPoints.size(); ++i) {
+    const auto &p = a.testPoints[i], &q = b.testPoints[i];
+    if (p.index != q.index || p.axis != q.axis || p.table.size() != q.table.size() || p.imu.size() != q.imu.size())
+      return false;
+    for (std::size_t k = 0; k < p.table.size(); ++k)
+      if (p.table[k].timeS != q.table[k].timeS || p.table[k].angleDeg != q.table[k].angleDeg) return false;
+    for (std::size_t k = 0; k < p.imu.size(); ++k)
+      if (p.imu[k].timeS != q.imu[k].timeS || p.imu[k].incrementDeg != q.imu[k].incrementDeg ||
+          p.imu[k].temperatureC != q.imu[k].temperatureC || p.imu[k].lostBefore != q.imu[k].lostBefore)
+        return false;
+  }
+  return true;
+}
+
+TEST(CsvImport, ColumnsInAnyOrderGiveTheSameData) {
+  auto plain = importCsvDirectory(goodDir());
+  ASSERT_TRUE(plain.isOk()) << plain.status().toString();
+  auto shuffled = importCsvDirectory(goodDir(kMetadata,
+                                             "z_deg,x_deg,time_s,y_deg,test_point\n"
+                                             "0,0.1,0.001,0,1\n"
+                                             "0,0.2,0.002,0,1\n"
+                                             "0,0.3,0.003,0,1\n",
+                                             "lost_before,temperature_c,x_inc_deg,time_s,test_point,z_inc_deg,y_inc_deg\n"
+                                             "0,25.5,0.001,0.002,1,0,0\n"
+                                             "1,25.5,0.002,0.004,1,0,0\n"));
+  ASSERT_TRUE(shuffled.isOk()) << shuffled.status().toString();
+  EXPECT_TRUE(sameRecording(plain->recording, shuffled->recording));
+}
+
+TEST(CsvImport, CommentsBlankLinesCrlfBomAndSpacesAreAccepted) {
+  auto plain = importCsvDirectory(goodDir());
+  ASSERT_TRUE(plain.isOk()) << plain.status().toString();
+  auto decorated = importCsvDirectory(goodDir(kMetadata,
+                                              "\xEF\xBB\xBF# exported by bench B\r\n"
+                                              "# angles in degrees\r\n"
+                                              "test_point, time_s, x_deg, y_deg, z_deg\r\n"
+                                              "1,0.001,0.1,0,0\r\n"
+                                              "\r\n"
+                                              "  # a comment between rows\r\n"
+                                              "1, 0.002 ,+0.2,0,0\r\n"
+                                              "1,0.003,0.3,0,0",  // no final line end
+                                              "# gyro\r\n"
+                                              "test_point,time_s,x_inc_deg,y_inc_deg,z_inc_deg,temperature_c,lost_before\r\n"
+                                              "1,0.002,0.001,0,0,25.5,0\r\n"
+                                              "1,0.004,0.002,0,0,25.5,1\r\n\r\n"));
+  ASSERT_TRUE(decorated.isOk()) << decorated.status().toString();
+  EXPECT_TRUE(sameRecording(plain->recording, decorated->recording));
+}
+
+TEST(CsvImport, FilesAreIdentifiedByContentNotName) {
+  auto reference = importCsvDirectory(goodDir());
+  ASSERT_TRUE(reference.isOk());
+  const std::string dir = freshDir("-named");
+  writeText(dir, "b.csv", kGyro);
+  writeText(dir, "meta.txt", kMetadata);
+  writeText(dir, "a.csv", kTable);
+  const auto p = [&](const char* n) { return (std::filesystem::path(dir) / n).string(); };
+  auto s = importCsvFiles({p("b.csv"), p("meta.txt"), p("a.csv")});
+  ASSERT_TRUE(s.isOk()) << s.status().toString();
+  EXPECT_TRUE(sameRecording(s->recording, reference->recording));
+
+  auto twoTables = importCsvFiles({p("a.csv"), p("meta.txt"), p("a.csv")});
+  ASSERT_FALSE(twoTables.isOk());
+  EXPECT_EQ(twoTables.status().code(), StatusCode::kInvalidArgument);
+  EXPECT_NE(twoTables.status().message().find("look like the table file"), std::string::npos)
+      << twoTables.status().message();
+  auto two = importCsvFiles({p("a.csv"), p("b.csv")});
+  ASSERT_FALSE(two.isOk());
+  EXPECT_EQ(two.status().code(), StatusCode::kInvalidArgument);
+}
+
+// Another bench: one test point, only the X axis, no test_point, temperature
+// or lost_before column, times printed with 6 decimals. A 1 Hz / 3 deg swing
+// whose gyro lags by 0.5 ms must be measured as such.
+TEST(CsvImport, AnotherBenchWithOnlyTheXAxisIsAnalysed) {
+  const double f = 1.0, amp = 3.0, lagS = 0.5e-3, pulse = 1e-4;
+  std::mt19937_64 rng(3);
+  std::normal_distribution<double> noise(0.0, 2e-4);
+  const auto angle = [&](double t) { return amp * std::sin(kTwoPi * f * t + 0.4); };
+  std::string table = "# bench B export, X axis only\ntime_s,x_deg\n";
+  std::string gyro = "time_s,x_inc_deg\n";
+  char line[96];
+  for (int ms = 0; ms < 20000; ++ms) {
+    const double t = 0.5 + ms * 1e-3;
+    std::snprintf(line, sizeof line, "%.6f,%.7f\n", t, angle(t) + noise(rng));
+    table += line;
+  }
+  // Gyro: pulses of the lagged angle, integrated, every 2 ms.
+  long previous = std::lround(std::floor(angle(0.5 - lagS) / pulse));
+  for (int k = 1; k <= 10000; ++k) {
+    const double t = 0.5 + k * 2e-3;
+    const long pulses = std::lround(std::floor(angle(t - lagS) / pulse));
+    std::snprintf(line, sizeof line, "%.6f,%.4f\n", t, static_cast<double>(pulses - previous) * pulse);
+    gyro += line;
+    previous = pulses;
+  }
+  const std::string dir = goodDir(R"({"bench": {"table_read_delay_ms": 0.03, "board_delay_ms": 0.2,
+                                      "pulse_equivalent_deg": 1e-4},
+                                      "test_points": [{"axis": "x"}]})",
+                                  table.c_str(), gyro.c_str());
+  auto s = importCsvDirectory(dir);
+  ASSERT_TRUE(s.isOk()) << s.status().toString();
+  const auto& p = s->recording.testPoints.at(0);
+  EXPECT_EQ(p.table.size(), 20000u);
+  EXPECT_EQ(p.imu.size(), 10000u);
+  EXPECT_EQ(p.table[5].angleDeg[1], 0.0);  // absent axes read as 0 ...
+  int axisNotes = 0;
+  for (const auto& n : s->notes)
+    if (n.find("read as 0") != std::string::npos) ++axisNotes;
+  EXPECT_EQ(axisNotes, 5);  // ... and each is noted: y/z angles, y/z increments, temperature
+
+  auto report = analysis::analyzeRecording(s->recording, benchConstantsOf(s->info));
+  ASSERT_TRUE(report.isOk()) << report.status().toString();
+  const auto& r = report->points.at(0);
+  EXPECT_NEAR(r.nominalFrequencyHz, 1.0, 1e-3);  // estimated from the table: metadata gave none
+  EXPECT_NEAR(r.lagMs, 0.5, 0.01);
+  EXPECT_NEAR(r.imuDelayMs, 0.53, 0.01);  // this bench's read delay, not ours
+  EXPECT_NEAR(r.gyroDelayMs, 0.33, 0.01);
+}
+
+// ---- errors -----------------------------------------------------------
+
+struct BadCase {
+  const char* name;
+  const char* file;  // which of the three files is replaced
+  std::string content;
+  StatusCode code;
+  std::string message;  // must appear in the error, after "<dir>/"
+};
+
+// Short test names in CTest instead of the parameter's bytes.
+void PrintTo(const BadCase& c, std::ostream* os) { *os << c.name; }
+
+class CsvImportError : public ::testing::TestWithParam<BadCase> {};
+
+TEST_P(CsvImportError, NamesFileLineAndColumn) {
+  const BadCase& c = GetParam();
+  const std::string dir = goodDir();
+  writeText(dir, c.file, c.content);
+  auto s = importCsvDirectory(dir);
+  ASSERT_FALSE(s.isOk()) << c.name << " was accepted";
+  EXPECT_EQ(s.status().code(), c.code) << s.status().toString();
+  const std::string where = (std::filesystem::path(dir) / "").string();
+  EXPECT_NE(s.status().message().find(where + c.message), std::string::npos)
+      << "expected \"" << c.message << "\" in: " << s.status().message();
+}
+
+const std::string kTableHeader = "test_point,time_s,x_deg,y_deg,z_deg\n";
+const std::string kGyroHeader = "test_point,time_s,x_inc_deg,y_inc_deg,z_inc_deg,temperature_c,lost_before\n";
+
+INSTANTIATE_TEST_SUITE_P(
+    AllKinds, CsvImportError,
+    ::testing::Values(
+        BadCase{"NotANumber", "table.csv", kTableHeader + "1,0.001,0.1,0,0\n1,0.002,0.2,0,0\n1,0.003,1.2.3,0,0\n",
+                StatusCode::kCorruptData, "table.csv line 4, column \"x_deg\": \"1.2.3\" is not a number"},
+        BadCase{"DecimalComma", "table.csv", kTableHeader + "1;0,001;0,1;0;0\n", StatusCode::kCorruptData,
+                "table.csv line 2: 3 values, but the header (line 1) has 5 columns"},
+        BadCase{"Empty", "table.csv", kTableHeader + "1,0.001,,0,0\n", StatusCode::kCorruptData,
+                "table.csv line 2, column \"x_deg\": empty value"},
+        BadCase{"NaN", "gyro.csv", kGyroHeader + "1,0.002,nan,0,0,25,0\n", StatusCode::kCorruptData,
+                "gyro.csv line 2, column \"x_inc_deg\": \"nan\" is not finite"},
+        BadCase{"Inf", "table.csv", kTableHeader + "1,0.001,0.1,0,-inf\n", StatusCode::kCorruptData,
+                "table.csv line 2, column \"z_deg\": \"-inf\" is not finite"},
+        BadCase{"OutOfRange", "table.csv", kTableHeader + "1,1e999,0.1,0,0\n", StatusCode::kCorruptData,
+                "table.csv line 2, column \"time_s\": \"1e999\" is out of the range"},
+        BadCase{"TimeRepeated", "table.csv", kTableHeader + "1,0.001,0.1,0,0\n# c\n1,0.001,0.2,0,0\n",
+                StatusCode::kCorruptData,
+                "table.csv line 4, column \"time_s\": 0.001 s is not after the previous time of test point 1 "
+                "(line 2)"},
+        BadCase{"TimeBackwards", "gyro.csv", kGyroHeader + "1,0.004,0,0,0,25,0\n1,0.002,0,0,0,25,0\n",
+                StatusCode::kCorruptData, "gyro.csv line 3, column \"time_s\": 0.002 s is not after"},
+        BadCase{"MissingTime", "table.csv", "test_point,x_deg\n1,0.1\n", StatusCode::kCorruptData,
+                "table.csv: missing column \"time_s\""},
+        BadCase{"MissingSwingAxis", "gyro.csv", "test_point,time_s,y_inc_deg\n1,0.002,0\n",
+                StatusCode::kCorruptData,
+                "gyro.csv: no \"x_inc_deg\" column, but test point 1 swings the X axis"},
+        BadCase{"NoAngleColumn", "table.csv", "test_point,time_s\n1,0.001\n", StatusCode::kCorruptData,
+                "table.csv: no angle column"},
+        BadCase{"UnknownColumn", "table.csv", "test_point,time_s,x_deg,x_rate\n1,0.001,0.1,2\n",
+                StatusCode::kCorruptData, "table.csv line 1, column 4: unknown column \"x_rate\""},
+        BadCase{"DuplicateColumn", "table.csv", "time_s,x_deg,time_s\n1,2,3\n", StatusCode::kCorruptData,
+                "table.csv line 1: column \"time_s\" appears twice"},
+        BadCase{"TooFewValues", "gyro.csv", kGyroHeader + "1,0.002,0.001,0,0,25\n", StatusCode::kCorruptData,
+                "gyro.csv line 2: 6 values, but the header (line 1) has 7 columns"},
+        BadCase{"TooManyValues", "table.csv", kTableHeader + "1,0.001,0.1,0,0,7\n", StatusCode::kCorruptData,
+                "table.csv line 2: 6 values, but the header (line 1) has 5 columns"},
+        BadCase{"EmptyFile", "table.csv", "", StatusCode::kCorruptData, "table.csv is empty"},
+        BadCase{"OnlyComments", "gyro.csv", "# nothing\n\n# here\n", StatusCode::kCorruptData, "gyro.csv is empty"},
+        BadCase{"HeaderOnly", "table.csv", kTableHeader, StatusCode::kCorruptData,
+                "table.csv has a header but no data rows"},
+        BadCase{"TestPointOutOfPlan", "table.csv", kTableHeader + "2,0.001,0.1,0,0\n", StatusCode::kCorruptData,
+                "table.csv line 2, column \"test_point\": \"2\" is not a test point number from 1 to 1"},
+        BadCase{"NegativeLost", "gyro.csv", kGyroHeader + "1,0.002,0,0,0,25,-1\n", StatusCode::kCorruptData,
+                "gyro.csv line 2, column \"lost_before\": \"-1\" is not a count"},
+        BadCase{"MetadataNotJson", "metadata.json", "{\"bench\": {", StatusCode::kCorruptData,
+                "metadata.json: not valid JSON"},
+        BadCase{"MetadataUnknownKey", "metadata.json",
+                R"({"bench": {"table_read_delay_ms": 0.05, "board_delay_ms": 0.28, "pulse_equivalent_deg": 5e-5,
+                    "board_dealy_ms": 1}, "test_points": [{"axis": "x"}]})",
+                StatusCode::kCorruptData, "metadata.json: unknown key \"bench.board_dealy_ms\""},
+        BadCase{"MetadataMissingPulseEquivalent", "metadata.json",
+                R"({"bench": {"table_read_delay_ms": 0.05, "board_delay_ms": 0.28}, "test_points": [{"axis": "x"}]})",
+                StatusCode::kCorruptData, "metadata.json: missing \"bench.pulse_equivalent_deg\""},
+        BadCase{"MetadataBadAxis", "metadata.json",
+                R"({"bench": {"table_read_delay_ms": 0.05, "board_delay_ms": 0.28, "pulse_equivalent_deg": 5e-5},
+                    "test_points": [{"axis": "w"}]})",
+                StatusCode::kCorruptData, "metadata.json: \"test_points[0].axis\" must be"},
+        BadCase{"MetadataNoTestPoints", "metadata.json",
+                R"({"bench": {"table_read_delay_ms": 0.05, "board_delay_ms": 0.28, "pulse_equivalent_deg": 5e-5}})",
+                StatusCode::kCorruptData, "metadata.json: missing \"test_points\""}),
+    [](const ::testing::TestParamInfo<BadCase>& param) { return std::string(param.param.name); });
+
+TEST(CsvImportErrors, MissingFileIsAnIoErrorNamingIt) {
+  const std::string dir = goodDir();
+  std::filesystem::remove(std::filesystem::path(dir) / "gyro.csv");
+  auto s = importCsvDirectory(dir);
+  ASSERT_FALSE(s.isOk());
+  EXPECT_EQ(s.status().code(), StatusCode::kIoError);
+  EXPECT_NE(s.status().message().find((std::filesystem::path(dir) / "gyro.csv").string() + " does not exist"),
+            std::string::npos)
+      << s.status().message();
+
+  auto noDir = importCsvDirectory(dir + "/nowhere");
+  ASSERT_FALSE(noDir.isOk());
+  EXPECT_EQ(noDir.status().code(), StatusCode::kIoError);
+  EXPECT_NE(noDir.status().message().find("nowhere is not a directory"), std::string::npos);
+
+  auto files = importCsvFiles({dir + "/metadata.json", dir + "/table.csv", dir + "/missing.csv"});
+  ASSERT_FALSE(files.isOk());
+  EXPECT_EQ(files.status().code(), StatusCode::kIoError);
+  EXPECT_NE(files.status().message().find("missing.csv does not exist"), std::string::npos);
+}
+
+TEST(CsvImportErrors, TestPointColumnIsRequiredWithSeveralTestPoints) {
+  const std::string dir = goodDir(R"({"bench": {"table_read_delay_ms": 0.05, "board_delay_ms": 0.28,
+                                      "pulse_equivalent_deg": 5e-5},
+                                      "test_points": [{"axis": "x"}, {"axis": "y"}]})",
+                                  "time_s,x_deg,y_deg\n0.001,0,0\n");
+  auto s = importCsvDirectory(dir);
+  ASSERT_FALSE(s.isOk());
+  EXPECT_NE(s.status().message().find("table.csv has no \"test_point\" column, but the metadata lists 2 test points"),
+            std::string::npos)
+      << s.status().message();
+}
+
+TEST(CsvImport, TestPointsWithoutDataAreLeftOutAndNoted) {
+  const std::string dir = goodDir(R"({"bench": {"table_read_delay_ms": 0.05, "board_delay_ms": 0.28,
+                                      "pulse_equivalent_deg": 5e-5},
+                                      "test_points": [{"axis": "x"}, {"axis": "z", "frequency_hz": 2}]})");
+  auto s = importCsvDirectory(dir);
+  ASSERT_TRUE(s.isOk()) << s.status().toString();
+  EXPECT_EQ(s->recording.testPoints.size(), 1u);
+  EXPECT_EQ(s->info.plan.points.size(), 2u);  // the plan keeps it
+  EXPECT_EQ(s->info.plan.points[1].axis, Axis::kZ);
+  bool noted = false;
+  for (const auto& n : s->notes) noted = noted || n.find("test point 2 has no data") != std::string::npos;
+  EXPECT_TRUE(noted);
+}
+
+// ---- export ---------------------------------------------------------------
+
+TEST(CsvExport, RefusesANonEmptyDirectoryUnlessOverwritingAPreviousExport) {
+  auto s = importCsvDirectory(goodDir());
+  ASSERT_TRUE(s.isOk());
+  const std::string dir = freshDir("-out");
+  writeText(dir, "residuals_7.csv", "stale");
+  Status st = exportCsv(dir, s->info, s->recording, nullptr);
+  EXPECT_EQ(st.code(), StatusCode::kInvalidArgument) << st.toString();
+  EXPECT_NE(st.message().find("is not empty"), std::string::npos) << st.message();
+
+  st = exportCsv(dir, s->info, s->recording, nullptr, /*overwrite=*/true);
+  ASSERT_TRUE(st.isOk()) << st.toString();
+  EXPECT_FALSE(std::filesystem::exists(std::filesystem::path(dir) / "residuals_7.csv"));  // stale one removed
+  EXPECT_TRUE(std::filesystem::exists(std::filesystem::path(dir) / "gyro.csv"));
+
+  writeText(dir, "notes.txt", "mine");
+  st = exportCsv(dir, s->info, s->recording, nullptr, /*overwrite=*/true);
+  EXPECT_EQ(st.code(), StatusCode::kInvalidArgument);
+  EXPECT_NE(st.message().find("notes.txt, which is not from a fogbench export"), std::string::npos) << st.message();
+  EXPECT_EQ(readText((std::filesystem::path(dir) / "notes.txt").string()), "mine");
+}
+
+TEST(CsvExport, CreatesNestedDirectories) {
+  auto s = importCsvDirectory(goodDir());
+  ASSERT_TRUE(s.isOk());
+  const std::string dir = freshDir("-out") + "/a/b";
+  ASSERT_TRUE(exportCsv(dir, s->info, s->recording, nullptr).isOk());
+  auto back = importCsvDirectory(dir);
+  ASSERT_TRUE(back.isOk()) << back.status().toString();
+  EXPECT_TRUE(sameRecording(s->recording, back->recording));
+  EXPECT_EQ(back->info.imuSerial, "SN 42");
+}
+
+TEST(CsvExport, RawPulsesAreWrittenInDegrees) {
+  auto s = importCsvDirectory(goodDir());
+  ASSERT_TRUE(s.isOk());
+  Recording raw = s->recording;
+  raw.pulseEquivalentDeg = 0.0;  // as decoded from a stream that never stated it
+  for (auto& i : raw.testPoints[0].imu) i.incrementDeg = {20.0, -3.0, 0.0};
+  SessionInfo info = s->info;
+  info.bench.pulseEquivalentDeg = 1e-4;
+  const std::string dir = freshDir("-out");
+  ASSERT_TRUE(exportCsv(dir, info, raw, nullptr).isOk());
+  auto back = importCsvDirectory(dir);
+  ASSERT_TRUE(back.isOk()) << back.status().toString();
+  EXPECT_DOUBLE_EQ(back->recording.pulseEquivalentDeg, 1e-4);
+  EXPECT_DOUBLE_EQ(back->recording.testPoints[0].imu[0].incrementDeg[0], 20.0 * 1e-4);
+  EXPECT_DOUBLE_EQ(back->recording.testPoints[0].imu[0].incrementDeg[1], -3.0 * 1e-4);
+
+  info.bench.pulseEquivalentDeg = 0.0;
+  const Status st = exportCsv(freshDir("-none"), info, raw, nullptr);
+  EXPECT_EQ(st.code(), StatusCode::kInvalidArgument);
+  EXPECT_NE(st.message().find("raw gyro pulses"), std::string::npos);
+}
+
+TEST(CsvExport, NumbersAreShortestRoundTripText) {
+  EXPECT_EQ(formatDouble(0.1), "0.1");
+  EXPECT_EQ(formatDouble(-2.5e-5), "-2.5e-05");
+  EXPECT_EQ(formatDouble(294.0), "294");
+  for (double v : {1.0 / 3.0, 5e-5 * 12345.0, 1865.3085123456789, 1e-300, -0.0}) {
+    const std::string t = formatDouble(v);
+    EXPECT_LE(t.size(), 24u);
+    EXPECT_EQ(std::strtod(t.c_str(), nullptr), v) << t;
+  }
+}
+
+}  // namespace
+}  // namespace fog::io
