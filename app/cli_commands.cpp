@@ -19,6 +19,8 @@
 #include "common/version.h"
 #include "model/simulator.h"
 #include "protocol/recording_builder.h"
+#include "session/session_file.h"
+#include "session_commands.h"
 
 namespace fog::app {
 
@@ -163,6 +165,8 @@ int runCommand(CliArguments& args) {
   if (!plan) return fail(plan.status(), 2);
   auto config = readSimConfig(args);
   if (!config) return fail(config.status(), 2);
+  auto sessionOut = readSessionOutput(args);
+  if (!sessionOut) return fail(sessionOut.status(), 2);
   if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
   if (!args.positionals().empty()) return fail(invalidArgument("unexpected argument '" + args.positionals()[0] + "'"), 2);
   if (source != "sim") return fail(invalidArgument("source '" + source + "' is not available; use --source sim"), 2);
@@ -179,10 +183,19 @@ int runCommand(CliArguments& args) {
   analysis::ReportContext context;
   context.source = "simulator, seed " + std::to_string(config->seed) + ", fogbench " + FOG_VERSION;
   for (const auto& t : run->truth) context.trueLagMs.push_back(t.lagS * 1e3);
-  return printReport(analysis::analyzeRecording(*recording, *constants), context, json);
+  auto report = analysis::analyzeRecording(*recording, *constants);
+  if (*sessionOut) {
+    auto s = recordSimulatedSession(**sessionOut, *plan, *config, *constants, run->bytes, *recording, report, context);
+    if (!s.isOk()) return fail(s, 2);
+  }
+  return printReport(report, context, json);
 }
 
 int analyzeCommand(CliArguments& args) {
+  // A session file (any SQLite file: the session reader says clearly when it
+  // is a foreign or damaged one) rather than a raw stream.
+  if (args.positionals().size() == 1 && session::isSqliteFile(args.positionals()[0]))
+    return analyzeSessionCommand(args, args.positionals()[0]);
   const bool json = args.flag("json");
   auto constants = readConstants(args);
   if (!constants) return fail(constants.status(), 2);

@@ -8,6 +8,10 @@
 #include "cli_arguments.h"
 #include "cli_commands.h"
 #include "common/version.h"
+#include "session_commands.h"
+#ifdef FOG_HAVE_REPORT
+#include "report_command.h"
+#endif
 
 namespace {
 
@@ -23,13 +27,25 @@ usage:
       --gyro-delay-ms D (gyro's own delay, default 0.2358),
       --arw-deg-sqrt-h, --bias-instability-deg-h, --pulse-equivalent-deg,
       --table-freq-error-ppm, --counter-hz, --counter-bits, --counter-start
-  fogbench-cli analyze FILE [constants] [--json]
-      The same report from a saved raw sampling-board byte stream.
+      --out SESSION.fbs [--operator NAME --imu-model M --imu-serial S --notes TEXT]:
+            record the run into a new session file (raw stream, samples, result)
+  fogbench-cli analyze FILE [constants] [--json] [--no-store]
+      The same report from a saved raw sampling-board byte stream, or from a
+      session file (its own bench constants unless given; the result is stored
+      in the session as a new row unless --no-store).
+  fogbench-cli sessions DIR [--json]
+      List the sessions in a folder: date, operator, IMU, axes, state, latest lag.
+  fogbench-cli replay SESSION.fbs [--speed X | --afap] [constants] [--json]
+      Feed a session's raw stream through the decoder at X times real time
+      (default 1) or as fast as possible, and report.
   fogbench-cli theory [--freq-hz F --amp-deg A --duration-s T] [--stability-deg-h S]
                       [--fibre-length-m L] [--arw-deg-sqrt-h N] [--json]
       The paper's delay budget and resolution figure, and the bench's bound.
   fogbench-cli accuracy [--seeds N] [--threads K]
       Monte Carlo study of both paper conditions (docs/accuracy.md).
+  fogbench-cli report (FILE.bin | --preset NAME [--seed N]) [--pdf OUT.pdf] [--png-dir DIR [--dpi 100]]
+                      [--limit-ms 0.8] [--imu-model M --imu-serial S --operator NAME] [constants]
+      The calibration report (docs/report.md): PASS when IMU delay + 2 sigma < limit.
   fogbench-cli --version | help
 
 constants: --read-delay-ms (0.05) --read-delay-std-ms (0) --board-delay-ms (0.28)
@@ -57,15 +73,25 @@ int main(int argc, char** argv) {
       return 0;
     }
   }
-  auto parsed = fog::app::CliArguments::parse(args, {"json"});
+  auto parsed = fog::app::CliArguments::parse(args, {"json", "no-store", "afap"});
   if (!parsed) {
     std::cerr << "fogbench-cli: " << parsed.status().message() << "\n";
     return 2;
   }
   if (command == "run") return fog::app::runCommand(*parsed);
   if (command == "analyze") return fog::app::analyzeCommand(*parsed);
+  if (command == "sessions") return fog::app::sessionsCommand(*parsed);
+  if (command == "replay") return fog::app::replayCommand(*parsed);
   if (command == "theory") return fog::app::theoryCommand(*parsed);
   if (command == "accuracy") return fog::app::accuracyCommand(*parsed);
+  if (command == "report") {
+#ifdef FOG_HAVE_REPORT
+    return fog::app::reportCommand(*parsed);
+#else
+    std::cerr << "fogbench-cli: this build has no report renderer (no Qt/Qwt); build with the release preset\n";
+    return 2;
+#endif
+  }
   std::cerr << "fogbench-cli: unknown command '" << command << "' (try fogbench-cli help)\n";
   return 2;
 }

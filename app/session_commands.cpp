@@ -1,0 +1,311 @@
+#include "session_commands.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "common/version.h"
+#include "session/replay.h"
+#include "session/session_file.h"
+
+namespace fog::app {
+
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+int fail(const Status& s, int code) {
+  std::cerr << "fogbench-cli: " << s.message() << "\n";
+  return code;
+}
+// Unusable data: 1; everything else (bad file, bad option): 2.
+int exitCodeFor(const Status& s) {
+  return s.code() == StatusCode::kInsufficientData || s.code() == StatusCode::kNotConverged ? 1 : 2;
+}
+
+// The session's own bench constants, each overridable on the command line.
+Result<analysis::BenchConstants> sessionConstants(CliArguments& args, const BenchSettings& bench) {
+  analysis::BenchConstants c;
+  c.tableReadDelayMs = bench.tableReadDelayMs;
+  c.tableReadDelayStdMs = bench.tableReadDelayStdMs;
+  c.boardDelayMs = bench.boardDelayMs;
+  c.boardDelayStdMs = bench.boardDelayStdMs;
+  c.pulseEquivalentDeg = bench.pulseEquivalentDeg;
+  struct Field {
+    const char* name;
+    double* target;
+  } fields[] = {{"read-delay-ms", &c.tableReadDelayMs},
+                {"read-delay-std-ms", &c.tableReadDelayStdMs},
+                {"board-delay-ms", &c.boardDelayMs},
+                {"board-delay-std-ms", &c.boardDelayStdMs},
+                {"pulse-equivalent-deg", &c.pulseEquivalentDeg}};
+  for (auto& f : fields) {
+    auto v = args.number(f.name, *f.target);
+    if (!v) return v.status();
+    *f.target = *v;
+  }
+  if (c.tableReadDelayStdMs < 0 || c.boardDelayStdMs < 0)
+    return invalidArgument("uncertainties of bench constants must be >= 0");
+  return c;
+}
+
+std::string sessionSource(const session::SessionReader& r, const std::string& what) {
+  std::string s = what + " " + r.path();
+  if (!r.info().source.empty()) s += " (" + r.info().source + ")";
+  if (!r.complete()) s += " [incomplete: " + r.incompleteReason() + "]";
+  return s;
+}
+
+std::string axesOf(const TestPlan& plan) {
+  std::string out;
+  for (int a = 0; a < kAxisCount; ++a) {
+    const bool used = std::any_of(plan.points.begin(), plan.points.end(),
+                                  [&](const TestPoint& p) { return static_cast<int>(p.axis) == a; });
+    if (used) out += (out.empty() ? "" : ",") + std::string(axisName(static_cast<Axis>(a)));
+  }
+  return out.empty() ? "-" : out;
+}
+
+}  // namespace
+
+std::string analysisSettingsJson(const analysis::BenchConstants& c, const std::string& how) {
+  json doc = {{"table_read_delay_ms", c.tableReadDelayMs},
+              {"table_read_delay_std_ms", c.tableReadDelayStdMs},
+              {"board_delay_ms", c.boardDelayMs},
+              {"board_delay_std_ms", c.boardDelayStdMs},
+              {"pulse_equivalent_deg", c.pulseEquivalentDeg},
+              {"software_version", FOG_VERSION},
+              {"analysed_by", how}};
+  return doc.dump();
+}
+
+Result<std::optional<SessionOutput>> readSessionOutput(CliArguments& args) {
+  auto out = args.text("out");
+  auto op = args.text("operator");
+  auto model = args.text("imu-model");
+  auto serial = args.text("imu-serial");
+  auto notes = args.text("notes");
+  if (!out) {
+    if (op || model || serial || notes)
+      return invalidArgument("--operator, --imu-model, --imu-serial and --notes describe a session: give --out "
+                             "SESSION.fbs too");
+    return std::optional<SessionOutput>();
+  }
+  std::error_code ec;
+  if (fs::exists(*out, ec))
+    return invalidArgument("'" + *out + "' already exists; a session file is never overwritten: choose another name");
+  SessionOutput s;
+  s.path = *out;
+  s.info.operatorName = op.value_or("");
+  s.info.imuModel = model.value_or("");
+  s.info.imuSerial = serial.value_or("");
+  s.info.notes = notes.value_or("");
+  return std::optional<SessionOutput>(std::move(s));
+}
+
+Status recordSimulatedSession(const SessionOutput& out, const TestPlan& plan, const model::SimConfig& config,
+                              const analysis::BenchConstants& constants, const std::vector<std::uint8_t>& bytes,
+                              const Recording& recording, const Result<analysis::DelayReport>& report,
+                              const analysis::ReportContext& context) {
+  SessionInfo info = out.info;
+  info.source = context.source;
+  info.softwareVersion = FOG_VERSION;
+  info.createdUtc = session::utcNow();
+  info.plan = plan;
+  info.bench.tableReadDelayMs = constants.tableReadDelayMs;
+  info.bench.tableReadDelayStdMs = constants.tableReadDelayStdMs;
+  info.bench.boardDelayMs = constants.boardDelayMs;
+  info.bench.boardDelayStdMs = constants.boardDelayStdMs;
+  info.bench.latitudeDeg = config.earth.latitudeDeg;
+  info.bench.pulseEquivalentDeg = config.fog.pulseEquivalentDeg;
+  info.bench.counterHz = config.samplingBoard.counterHz;
+  info.bench.counterBits = config.samplingBoard.counterBits;
+  auto writer = session::SessionWriter::create(out.path, info);
+  if (!writer) return writer.status();
+  // In serial-read-sized pieces, as a live source delivers them.
+  constexpr std::size_t kChunk = 4096;
+  for (std::size_t at = 0; at < bytes.size(); at += kChunk)
+    if (auto s = (*writer)->appendRaw(bytes.data() + at, std::min(kChunk, bytes.size() - at)); !s.isOk()) return s;
+  if (auto s = (*writer)->storeRecording(recording); !s.isOk()) return s;
+  if (auto s = (*writer)->finish(true, ""); !s.isOk()) return s;
+  if (!report) return Status::ok();
+  return session::addResult(out.path, analysisSettingsJson(constants, "fogbench-cli run"),
+                            analysis::formatReportJson(*report, context));
+}
+
+int analyzeSessionCommand(CliArguments& args, const std::string& path) {
+  const bool json = args.flag("json");
+  const bool noStore = args.flag("no-store");
+  auto reader = session::SessionReader::open(path);
+  if (!reader) {
+    (void)args.checkAllUsed();
+    return fail(reader.status(), 2);
+  }
+  auto constants = sessionConstants(args, (*reader)->info().bench);
+  if (!constants) return fail(constants.status(), 2);
+  if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
+  if (args.positionals().size() != 1) return fail(invalidArgument("analyze needs exactly one FILE"), 2);
+  auto recording = (*reader)->recording();
+  if (!recording) return fail(recording.status(), exitCodeFor(recording.status()));
+  analysis::ReportContext context;
+  context.source = sessionSource(**reader, "session");
+  auto report = analysis::analyzeRecording(*recording, *constants);
+  if (!report) return fail(report.status(), exitCodeFor(report.status()));
+  std::cout << (json ? analysis::formatReportJson(*report, context) + "\n"
+                     : analysis::formatReportText(*report, context));
+  if (noStore) return 0;
+  reader->reset();  // close before writing
+  if (auto s = session::addResult(path, analysisSettingsJson(*constants, "fogbench-cli analyze"),
+                                  analysis::formatReportJson(*report, context));
+      !s.isOk())
+    return fail(Status(s.code(), "the report above was not stored: " + s.message()), 2);
+  if (!json) std::cout << "Result stored in session " << path << ".\n";
+  return 0;
+}
+
+int sessionsCommand(CliArguments& args) {
+  const bool asJson = args.flag("json");
+  if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
+  if (args.positionals().size() != 1) return fail(invalidArgument("sessions needs exactly one DIR"), 2);
+  const fs::path dir = args.positionals()[0];
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) return fail(ioError("'" + dir.string() + "' is not a folder"), 2);
+
+  std::vector<fs::path> files;
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
+    if (it->is_regular_file(ec)) files.push_back(it->path());
+  if (ec) return fail(ioError("cannot list '" + dir.string() + "': " + ec.message()), 2);
+  std::sort(files.begin(), files.end());
+
+  json list = json::array();
+  int skipped = 0;
+  for (const auto& f : files) {
+    const std::string p = f.string();
+    const std::string name = f.filename().string();
+    // SQLite's side files of a session being recorded (or killed while
+    // recording) belong to that session: neither listed nor "skipped".
+    bool sideFile = false;
+    for (const char* suffix : {"-wal", "-shm", "-journal"}) {
+      const std::string sfx = suffix;
+      if (name.size() > sfx.size() && name.compare(name.size() - sfx.size(), sfx.size(), sfx) == 0 &&
+          fs::exists(p.substr(0, p.size() - sfx.size()), ec))
+        sideFile = true;
+    }
+    if (sideFile) continue;
+    if (!session::looksLikeSession(p)) {
+      ++skipped;
+      continue;
+    }
+    json e = {{"file", name}};
+    auto r = session::SessionReader::open(p);
+    if (!r) {
+      e["error"] = r.status().message();
+      list.push_back(e);
+      continue;
+    }
+    const auto& info = (*r)->info();
+    e["created_utc"] = info.createdUtc;
+    e["operator"] = info.operatorName;
+    e["imu_model"] = info.imuModel;
+    e["imu_serial"] = info.imuSerial;
+    e["axes"] = axesOf(info.plan);
+    e["complete"] = (*r)->complete();
+    if (!(*r)->complete()) e["incomplete_reason"] = (*r)->incompleteReason();
+    e["lag_ms"] = json::array();
+    e["imu_delay_ms"] = json::array();
+    auto results = (*r)->results();
+    e["results"] = results ? results->size() : 0;
+    if (results && !results->empty()) {
+      const auto doc = json::parse(results->back().reportJson, nullptr, false);
+      if (doc.is_object() && doc.contains("test_points") && doc["test_points"].is_array()) {
+        for (const auto& tp : doc["test_points"]) {
+          if (tp.contains("lag_ms") && tp["lag_ms"].is_number()) e["lag_ms"].push_back(tp["lag_ms"]);
+          if (tp.contains("imu_delay_ms") && tp["imu_delay_ms"].is_number())
+            e["imu_delay_ms"].push_back(tp["imu_delay_ms"]);
+        }
+      }
+    }
+    list.push_back(e);
+  }
+  if (asJson) {
+    std::cout << json({{"folder", dir.string()}, {"sessions", list}, {"skipped_files", skipped}}).dump(2) << "\n";
+    return 0;
+  }
+  auto joinMs = [](const json& values) {
+    std::string s;
+    char buf[32];
+    for (const auto& v : values) {
+      std::snprintf(buf, sizeof buf, "%.4f", v.get<double>());
+      s += (s.empty() ? "" : " / ") + std::string(buf);
+    }
+    return s.empty() ? std::string("-") : s;
+  };
+  std::vector<std::vector<std::string>> rows = {
+      {"file", "created (UTC)", "operator", "IMU", "axes", "state", "lag (ms)", "IMU delay (ms)"}};
+  for (const auto& e : list) {
+    if (e.contains("error")) {
+      rows.push_back({e["file"], "-", "-", "-", "-", "unreadable: " + e["error"].get<std::string>(), "-", "-"});
+      continue;
+    }
+    std::string imu = e["imu_model"].get<std::string>();
+    if (!e["imu_serial"].get<std::string>().empty()) imu += (imu.empty() ? "" : " ") + e["imu_serial"].get<std::string>();
+    rows.push_back({e["file"], e["created_utc"], e["operator"].get<std::string>().empty() ? "-" : e["operator"],
+                    imu.empty() ? "-" : imu, e["axes"], e["complete"].get<bool>() ? "complete" : "incomplete",
+                    joinMs(e["lag_ms"]), joinMs(e["imu_delay_ms"])});
+  }
+  std::vector<std::size_t> width(rows[0].size(), 0);
+  for (const auto& row : rows)
+    for (std::size_t c = 0; c < row.size(); ++c) width[c] = std::max(width[c], row[c].size());
+  for (const auto& row : rows) {
+    std::string line;
+    for (std::size_t c = 0; c < row.size(); ++c)
+      line += row[c] + (c + 1 < row.size() ? std::string(width[c] - row[c].size() + 2, ' ') : "");
+    std::cout << line << "\n";
+  }
+  std::cout << list.size() << (list.size() == 1 ? " session" : " sessions") << " in " << dir.string() << "; "
+            << skipped << " other " << (skipped == 1 ? "file" : "files") << " skipped\n";
+  return 0;
+}
+
+int replayCommand(CliArguments& args) {
+  const bool json = args.flag("json");
+  const bool afap = args.flag("afap");
+  auto speedText = args.text("speed");
+  auto speed = args.number("speed", 1.0);
+  if (!speed) return fail(speed.status(), 2);
+  if (afap && speedText) return fail(invalidArgument("give --speed X or --afap, not both"), 2);
+  if (*speed <= 0) return fail(invalidArgument("--speed must be > 0 (1 = real time); --afap for as fast as possible"), 2);
+  if (args.positionals().size() != 1) {
+    (void)args.checkAllUsed();
+    return fail(invalidArgument("replay needs exactly one SESSION.fbs"), 2);
+  }
+  const std::string path = args.positionals()[0];
+  auto reader = session::SessionReader::open(path);
+  if (!reader) return fail(reader.status(), 2);
+  auto constants = sessionConstants(args, (*reader)->info().bench);
+  if (!constants) return fail(constants.status(), 2);
+  if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
+  auto bytes = (*reader)->rawBytes();
+  if (!bytes) return fail(bytes.status(), 2);
+
+  session::ReplayOptions options;
+  options.speed = afap ? 0.0 : *speed;
+  if (!afap)
+    std::cerr << "fogbench-cli: replaying " << path << " at " << *speed << "x (Ctrl-C stops)\n";
+  auto replayed = session::replay(*bytes, options);
+  if (!replayed) return fail(Status(replayed.status().code(), path + ": " + replayed.status().message()),
+                             exitCodeFor(replayed.status()));
+  analysis::ReportContext context;
+  context.source = sessionSource(**reader, "replay of session");
+  auto report = analysis::analyzeRecording(replayed->recording, *constants);
+  if (!report) return fail(report.status(), exitCodeFor(report.status()));
+  std::cout << (json ? analysis::formatReportJson(*report, context) + "\n"
+                     : analysis::formatReportText(*report, context));
+  return 0;
+}
+
+}  // namespace fog::app

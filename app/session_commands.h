@@ -1,0 +1,45 @@
+#pragma once
+// fogbench-cli commands around session files (.fbs, docs/sessions.md):
+// recording a simulated run into a session, analysing a session (storing the
+// result), listing a folder of sessions, replaying a session's raw stream.
+// Exit codes as everywhere in fogbench-cli: 0 ok, 1 the data gave no result,
+// 2 bad command line or input (one line on stderr saying what is wrong).
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "analysis/delay_analysis.h"
+#include "analysis/report_writer.h"
+#include "cli_arguments.h"
+#include "common/session_info.h"
+#include "common/test_plan.h"
+#include "model/sim_config.h"
+
+namespace fog::app {
+
+// `run ... --out SESSION.fbs [--operator NAME --imu-model M --imu-serial S --notes TEXT]`.
+struct SessionOutput {
+  std::string path;
+  SessionInfo info;  // operator, IMU and notes from the command line; the rest is filled when recording
+};
+// Reads --out and the metadata options (marks them used). Empty without
+// --out; an error when metadata options come without --out or the file exists.
+Result<std::optional<SessionOutput>> readSessionOutput(CliArguments& args);
+
+// Records a simulated run into a new session: the raw bytes streamed in
+// through appendRaw (as a live source would), the decoded recording, and -
+// when the analysis gave a report - that report with the settings behind it.
+Status recordSimulatedSession(const SessionOutput& out, const TestPlan& plan, const model::SimConfig& config,
+                              const analysis::BenchConstants& constants, const std::vector<std::uint8_t>& bytes,
+                              const Recording& recording, const Result<analysis::DelayReport>& report,
+                              const analysis::ReportContext& context);
+
+// The settings a result was produced with, stored beside it.
+std::string analysisSettingsJson(const analysis::BenchConstants& constants, const std::string& how);
+
+int analyzeSessionCommand(CliArguments& args, const std::string& path);  // analyze SESSION.fbs
+int sessionsCommand(CliArguments& args);                                  // sessions DIR
+int replayCommand(CliArguments& args);                                    // replay SESSION.fbs
+
+}  // namespace fog::app

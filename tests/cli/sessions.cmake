@@ -1,0 +1,86 @@
+# Session files end to end (docs/sessions.md):
+#   run --out S.fbs -> analyze S.fbs gives the same delay lines (stored as a
+#   new result), replay --afap gives them too, sessions DIR lists S.fbs with
+#   its operator, IMU and lag; bad files exit 2 with a one-line reason.
+#   -DCLI=path -DDIR=scratch folder
+set(dir ${DIR}/sessions_test)
+file(REMOVE_RECURSE ${dir})
+file(MAKE_DIRECTORY ${dir})
+set(s ${dir}/run1.fbs)
+
+function(run_ok out_var)
+  execute_process(COMMAND ${CLI} ${ARGN} RESULT_VARIABLE c OUTPUT_VARIABLE o ERROR_VARIABLE e)
+  if(NOT c EQUAL 0)
+    message(FATAL_ERROR "'${ARGN}' failed (${c}): ${e}")
+  endif()
+  set(${out_var} "${o}" PARENT_SCOPE)
+endfunction()
+
+function(expect_bad_file needle)
+  execute_process(COMMAND ${CLI} ${ARGN} RESULT_VARIABLE c OUTPUT_VARIABLE o ERROR_VARIABLE e)
+  string(STRIP "${e}" e)
+  string(FIND "${e}" "\n" newline)
+  if(NOT c EQUAL 2 OR e STREQUAL "" OR NOT newline EQUAL -1 OR NOT e MATCHES "${needle}")
+    message(FATAL_ERROR "'${ARGN}': expected exit 2 and one line matching '${needle}', got ${c}:\n${e}")
+  endif()
+endfunction()
+
+function(delay_lines out_var text)
+  string(REGEX MATCHALL "measured lag[^\n]*|= IMU delay[^\n]*|= gyro's own delay[^\n]*" lines "${text}")
+  if(NOT lines)
+    message(FATAL_ERROR "no delay lines in:\n${text}")
+  endif()
+  set(${out_var} "${lines}" PARENT_SCOPE)
+endfunction()
+
+run_ok(run_out run --axis z --freq-hz 1 --amp-deg 3 --duration-s 12 --seed 5 --out ${s}
+       --operator "Ann Lee" --imu-model FOG-9 --imu-serial SN-77 --notes "cli test")
+run_ok(analyze_out analyze ${s})
+delay_lines(a "${run_out}")
+delay_lines(b "${analyze_out}")
+if(NOT a STREQUAL b)
+  message(FATAL_ERROR "run --out and analyze of the session differ:\n${a}\nvs\n${b}")
+endif()
+if(NOT analyze_out MATCHES "source: session .*run1.fbs")
+  message(FATAL_ERROR "analyze does not name the session as its source:\n${analyze_out}")
+endif()
+run_ok(replay_out replay ${s} --afap)
+delay_lines(c "${replay_out}")
+if(NOT a STREQUAL c)
+  message(FATAL_ERROR "run --out and replay --afap differ:\n${a}\nvs\n${c}")
+endif()
+# Other constants: a different gyro delay, the same lag; --no-store.
+run_ok(other_out analyze ${s} --board-delay-ms 0.3 --no-store)
+if(NOT other_out MATCHES "= gyro's own delay +0\\.2155")
+  message(FATAL_ERROR "--board-delay-ms 0.3 did not override the session's constant:\n${other_out}")
+endif()
+
+# Listing: one session (two results: run's and analyze's), one skipped file.
+file(WRITE ${dir}/notes.txt "not a session\n")
+run_ok(list_out sessions ${dir})
+string(REGEX MATCH "measured lag \\(gyro behind table\\) +([0-9.]+)" m "${run_out}")
+string(SUBSTRING "${CMAKE_MATCH_1}" 0 6 lag4)  # 0.4655
+if(NOT list_out MATCHES "run1\\.fbs +[0-9T:-]+Z +Ann Lee +FOG-9 SN-77 +z +complete +${lag4}")
+  message(FATAL_ERROR "sessions does not list run1.fbs with its metadata and lag ${lag4}:\n${list_out}")
+endif()
+if(NOT list_out MATCHES "1 session in .*; 1 other file skipped")
+  message(FATAL_ERROR "sessions does not count the skipped file:\n${list_out}")
+endif()
+run_ok(json_out sessions ${dir} --json)
+string(JSON results GET "${json_out}" sessions 0 results)
+string(JSON skipped GET "${json_out}" skipped_files)
+if(NOT results EQUAL 2 OR NOT skipped EQUAL 1)
+  message(FATAL_ERROR "sessions --json: expected 2 results (run, analyze) and 1 skipped file:\n${json_out}")
+endif()
+
+# Bad files: exit 2, one line saying what is wrong.
+expect_bad_file("already exists" run --preset paper-fast --out ${s})
+expect_bad_file("no such file" replay ${dir}/missing.fbs --afap)
+expect_bad_file("not an SQLite database" replay ${dir}/notes.txt --afap)
+file(WRITE ${dir}/empty.fbs "")
+expect_bad_file("is empty \\(0 bytes\\)" replay ${dir}/empty.fbs --afap)
+execute_process(COMMAND head -c 60000 ${s} OUTPUT_FILE ${dir}/truncated.fbs)
+expect_bad_file("is truncated" analyze ${dir}/truncated.fbs)
+expect_bad_file("is truncated" replay ${dir}/truncated.fbs --afap)
+expect_bad_file("is not a folder" sessions ${dir}/notes.txt)
+expect_bad_file("not both" replay ${s} --afap --speed 2)

@@ -1,0 +1,192 @@
+// The calibration report drawn from a simulated 1 Hz / 3 deg session: pages,
+// PDF file, what a reader sees on them, and the pass/fail rule.
+
+#include <QFile>
+#include <QTemporaryDir>
+#include <QtTest>
+#include <cmath>
+
+#include "analysis/delay_analysis.h"
+#include "model/simulator.h"
+#include "protocol/recording_builder.h"
+#include "ui/report/calibration_report.h"
+
+using fog::report::ReportInput;
+
+class ReportTest : public QObject {
+  Q_OBJECT
+
+ private:
+  ReportInput session_;
+
+  // Fraction of pixels that are not white.
+  static double inkFraction(const QImage& image) {
+    qint64 ink = 0;
+    for (int y = 0; y < image.height(); ++y)
+      for (int x = 0; x < image.width(); ++x)
+        if (image.pixel(x, y) != qRgb(255, 255, 255)) ++ink;
+    return static_cast<double>(ink) / (static_cast<double>(image.width()) * image.height());
+  }
+
+  const fog::analysis::TestPointResult& point() const { return session_.delays.points.front(); }
+
+ private slots:
+  void initTestCase() {
+    fog::TestPlan plan = fog::TestPlan::paperFast();
+    plan.points.front().durationS = 20.0;  // 1 Hz / 3 deg, 20 periods
+    fog::model::SimConfig config;
+    auto run = fog::model::simulate(config, plan);
+    QVERIFY2(run.isOk(), run.status().message().c_str());
+    auto recording = fog::protocol::decodeRecording(run->bytes);
+    QVERIFY(recording.isOk());
+    auto delays = fog::analysis::analyzeRecording(*recording, fog::analysis::BenchConstants{});
+    QVERIFY2(delays.isOk(), delays.status().message().c_str());
+    QCOMPARE(delays->points.size(), std::size_t(1));
+
+    session_.info.imuModel = "FOG-IMU test unit";
+    session_.info.imuSerial = "SN-0042";
+    session_.info.operatorName = "Test Operator";
+    session_.info.source = "simulator, seed 1";
+    session_.info.createdUtc = "2026-01-02T03:04:05Z";
+    session_.info.softwareVersion = "0.1.0";
+    session_.info.plan = plan;
+    session_.recording = std::move(*recording);
+    session_.delays = std::move(*delays);
+    session_.rawBytes = std::move(run->bytes);
+  }
+
+  // One test point: summary, constants and plan, plots, fits and delay. Every
+  // page is A4 at the asked resolution and carries more than a header's ink.
+  void rendersFourInkedA4Pages() {
+    QStringList text;
+    auto pages = fog::report::renderCalibrationPages(session_, 60, &text);
+    QVERIFY2(pages.isOk(), pages.status().message().c_str());
+    QCOMPARE(pages->size(), std::size_t(4));
+    for (std::size_t i = 0; i < pages->size(); ++i) {
+      const QImage& page = (*pages)[i];
+      QCOMPARE(page.width(), qRound(210.0 / 25.4 * 60));
+      QCOMPARE(page.height(), qRound(297.0 / 25.4 * 60));
+      const double ink = inkFraction(page);
+      QVERIFY2(ink > 0.08, qPrintable(QString("page %1 has %2 % ink").arg(i + 1).arg(100 * ink)));
+    }
+    QVERIFY(text.contains("Page 1 of 4"));
+    QVERIFY(text.contains("Page 4 of 4"));
+  }
+
+  // What the reader must find: identity, the hash of the raw bytes, the lag
+  // with the decimals of the text report, and the verdict.
+  void pagesShowIdentityHashLagAndVerdict() {
+    QStringList text;
+    auto pages = fog::report::renderCalibrationPages(session_, 40, &text);
+    QVERIFY(pages.isOk());
+    const QString all = text.join('\n');
+    QVERIFY(all.contains("FOG-IMU test unit"));
+    QVERIFY(all.contains("SN-0042"));
+    QVERIFY(all.contains("Test Operator"));
+    const QString hash = fog::report::rawDataSha256(session_.rawBytes);
+    QCOMPARE(hash.size(), 64);
+    QVERIFY(text.contains(hash));
+    const QString lag = QString::number(point().lagMs, 'f', 5);  // std ~0.0002 ms: 5 decimals
+    QVERIFY2(all.contains(lag), qPrintable(lag));
+    QVERIFY(std::abs(point().imuDelayMs - 0.5158) < 0.005);
+    QVERIFY(text.contains("PASS"));
+    QVERIFY(!text.contains("FAIL"));
+    QVERIFY(all.contains(QString("PASS: IMU delay %1 ± ").arg(QString::number(point().imuDelayMs, 'f', 5))));
+    QVERIFY(all.contains("< 0.8 ms limit (margin "));
+  }
+
+  void sha256MatchesTheStandardVector() {
+    const std::vector<std::uint8_t> abc{'a', 'b', 'c'};
+    QCOMPARE(fog::report::rawDataSha256(abc),
+             QString("ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad"));
+    QVERIFY(fog::report::rawDataSha256({}).isEmpty());
+  }
+
+  // PASS needs IMU delay + 2 sigma below the limit: a limit below the delay
+  // fails, and so does one inside the 2-sigma guard band.
+  void limitBelowTheDelayOrInsideTheGuardBandFails() {
+    const double d = point().imuDelayMs, sd = point().imuDelayStdMs;
+    QVERIFY(sd > 0.0);
+    QVERIFY(fog::report::calibrationVerdict(session_.delays, d + 3 * sd).pass);
+    QVERIFY(!fog::report::calibrationVerdict(session_.delays, d + 1 * sd).pass);
+    const auto below = fog::report::calibrationVerdict(session_.delays, d - 0.01);
+    QVERIFY(!below.pass);
+    QVERIFY(below.headline.startsWith("FAIL"));
+    QCOMPARE(below.points.size(), std::size_t(1));
+    QVERIFY(below.points.front().line.startsWith("FAIL: IMU delay"));
+    QVERIFY(below.points.front().line.contains("over by"));
+
+    ReportInput strict = session_;
+    strict.imuDelayLimitMs = d - 0.01;
+    QStringList text;
+    QVERIFY(fog::report::renderCalibrationPages(strict, 40, &text).isOk());
+    QVERIFY(text.contains("FAIL"));
+    QVERIFY(!text.contains("PASS"));
+  }
+
+  // A test point that gave no delay fails the session even when the others pass.
+  void aMissingTestPointFailsTheSession() {
+    auto delays = session_.delays;
+    delays.failedPoints.push_back("test point 2: under two swing periods");
+    const auto v = fog::report::calibrationVerdict(delays, 0.8);
+    QVERIFY(v.points.front().pass);
+    QVERIFY(!v.pass);
+    QVERIFY(v.headline.contains("1 test point(s) gave no delay"));
+  }
+
+  void pdfIsWrittenAndStartsWithTheMagic() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = dir.filePath("report.pdf");
+    const auto status = fog::report::writeCalibrationPdf(session_, path);
+    QVERIFY2(status.isOk(), status.message().c_str());
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QByteArray bytes = file.readAll();
+    QVERIFY(bytes.startsWith("%PDF"));
+    QVERIFY(bytes.size() > 20000);
+    QCOMPARE(bytes.count("/Type /Page\n"), 4);
+  }
+
+  void unwritablePdfPathIsAnError() {
+    const auto status = fog::report::writeCalibrationPdf(session_, "/nonexistent-dir/for/sure/report.pdf");
+    QVERIFY(!status.isOk());
+    QVERIFY2(QString::fromStdString(status.message()).contains("cannot write"), status.message().c_str());
+  }
+
+  void nonPositiveLimitIsRefused() {
+    ReportInput bad = session_;
+    bad.imuDelayLimitMs = 0.0;
+    QVERIFY(!fog::report::renderCalibrationPages(bad, 40).isOk());
+    bad.imuDelayLimitMs = std::nan("");
+    QVERIFY(!fog::report::checkReportInput(bad).isOk());
+  }
+
+  // Imported data: no raw stream, no plan. The report says so and still draws
+  // every page.
+  void importedDataWithoutRawBytesStillRenders() {
+    ReportInput imported = session_;
+    imported.rawBytes.clear();
+    imported.info.plan = {};
+    imported.info.source = "import run1/";
+    QStringList text;
+    auto pages = fog::report::renderCalibrationPages(imported, 40, &text);
+    QVERIFY2(pages.isOk(), pages.status().message().c_str());
+    QCOMPARE(pages->size(), std::size_t(4));
+    QVERIFY(text.contains("no raw stream (imported)"));
+    QVERIFY(text.join('\n').contains("not recorded with the data"));
+    for (const auto& page : *pages) QVERIFY(inkFraction(page) > 0.08);
+  }
+
+  // Data missing for an analysed test point cannot be plotted: an error, not a crash.
+  void recordingWithoutTheAnalysedPointIsRefused() {
+    ReportInput broken = session_;
+    broken.recording.testPoints.clear();
+    const auto pages = fog::report::renderCalibrationPages(broken, 40);
+    QVERIFY(!pages.isOk());
+    QVERIFY(QString::fromStdString(pages.status().message()).contains("no data for analysed test point 1"));
+  }
+};
+
+QTEST_MAIN(ReportTest)
+#include "report_test.moc"

@@ -1,0 +1,808 @@
+#include "ui/report/calibration_report.h"
+
+#include <QApplication>
+#include <QCryptographicHash>
+#include <QDateTime>
+#include <QFileInfo>
+#include <QPageLayout>
+#include <QPageSize>
+#include <QPdfWriter>
+#include <algorithm>
+#include <cmath>
+#include <qwt_plot.h>
+
+#include "analysis/theory.h"
+#include "common/version.h"
+#include "ui/report/page_flow.h"
+#include "ui/report/report_plots.h"
+#include "ui/test_point_traces.h"
+
+namespace fog::report {
+
+using analysis::DelayReport;
+using analysis::SineFit;
+using analysis::TestPointResult;
+using detail::PageFlow;
+using detail::Table;
+
+namespace {
+
+const QColor kTableData(120, 170, 215);
+const QColor kTableFit(8, 48, 107);
+const QColor kGyroData(250, 175, 110);
+const QColor kGyroFit(165, 15, 21);
+const QColor kPassColour(20, 110, 40);
+const QColor kFailColour(180, 20, 20);
+const QColor kMuted(90, 90, 90);
+
+constexpr double kCoverage = 2.0;  // the acceptance rule's k
+
+// ---- numbers -------------------------------------------------------------
+
+QString fixed(double v, int decimals) { return QString::number(v, 'f', decimals); }
+
+// An uncertainty to two significant digits without an exponent: 0.00051, 0.88, 12.
+QString plain2(double v) {
+  if (!(v > 0.0)) return "0";
+  return fixed(v, std::clamp(1 - static_cast<int>(std::floor(std::log10(v))), 0, 9));
+}
+
+// Decimals (ms) that show an uncertainty to two significant digits and never
+// fewer than the paper's four: 0.0015 -> 4, 0.00010 -> 5 (as the text report).
+int decimalsFor(double stdMs) {
+  if (!(stdMs > 0.0)) return 4;
+  return std::clamp(1 - static_cast<int>(std::floor(std::log10(stdMs))), 4, 7);
+}
+
+QString valueWithStd(double v, double sd, int decimals) { return fixed(v, decimals) + " ± " + fixed(sd, decimals); }
+
+QString limitText(double limitMs) { return QString::number(limitMs, 'g', 6); }
+
+QString orNotRecorded(const std::string& s) {
+  return s.empty() ? QObject::tr("not recorded") : QString::fromStdString(s);
+}
+
+QString axisUpper(Axis a) { return QString(axisName(a)).toUpper(); }
+
+// Two short lines, for narrow table cells.
+QString shortCondition(const TestPointResult& p) {
+  return QObject::tr("%1 axis\n%2 Hz / %3°, %4 s")
+      .arg(axisUpper(p.axis))
+      .arg(p.nominalFrequencyHz)
+      .arg(fixed(p.tableFit.amplitudeDeg, 2))
+      .arg(fixed(p.durationS, 0));
+}
+
+QString condition(const TestPointResult& p) {
+  return QObject::tr("%1 axis, %2 Hz / %3°, %4 s")
+      .arg(axisUpper(p.axis))
+      .arg(p.nominalFrequencyHz)
+      .arg(fixed(p.tableFit.amplitudeDeg, 3))
+      .arg(fixed(p.durationS, 1));
+}
+
+// ---- page targets --------------------------------------------------------
+
+constexpr double kMmPerInch = 25.4;
+
+class PdfTarget : public detail::PageTarget {
+ public:
+  explicit PdfTarget(const QString& path) : writer_(path) {
+    writer_.setPageSize(QPageSize(QPageSize::A4));
+    writer_.setPageMargins(QMarginsF(0, 0, 0, 0), QPageLayout::Millimeter);
+    writer_.setResolution(600);
+    writer_.setCreator(QStringLiteral("fogbench " FOG_VERSION));
+  }
+  void setTitle(const QString& t) { writer_.setTitle(t); }
+  bool open() {
+    opened_ = painter_.begin(&writer_);
+    return opened_;
+  }
+  void close() {
+    if (painter_.isActive()) painter_.end();
+  }
+  const QPaintDevice* metricsDevice() const override { return &writer_; }
+  double dotsPerMm() const override { return writer_.resolution() / kMmPerInch; }
+  QPainter* beginPage() override {
+    if (pages_++ > 0) writer_.newPage();
+    painter_.setRenderHint(QPainter::Antialiasing, true);
+    return &painter_;
+  }
+  void endPage() override {}
+
+ private:
+  QPdfWriter writer_;
+  QPainter painter_;
+  bool opened_ = false;
+  int pages_ = 0;
+};
+
+class ImageTarget : public detail::PageTarget {
+ public:
+  explicit ImageTarget(int dpi) : dpi_(dpi), metrics_(1, 1, QImage::Format_RGB32) { setDpi(metrics_); }
+  const QPaintDevice* metricsDevice() const override { return &metrics_; }
+  double dotsPerMm() const override { return dpi_ / kMmPerInch; }
+  QPainter* beginPage() override {
+    const auto w = static_cast<int>(std::lround(PageFlow::kPageWidthMm * dotsPerMm()));
+    const auto h = static_cast<int>(std::lround(PageFlow::kPageHeightMm * dotsPerMm()));
+    pages_.emplace_back(w, h, QImage::Format_RGB32);
+    setDpi(pages_.back());
+    pages_.back().fill(Qt::white);
+    painter_.begin(&pages_.back());  // ended before the vector can grow again
+    painter_.setRenderHint(QPainter::Antialiasing, true);
+    painter_.setRenderHint(QPainter::TextAntialiasing, true);
+    return &painter_;
+  }
+  void endPage() override {
+    if (painter_.isActive()) painter_.end();
+  }
+  std::vector<QImage> take() { return std::move(pages_); }
+
+ private:
+  void setDpi(QImage& image) const {
+    const int dpm = static_cast<int>(std::lround(dpi_ / 0.0254));
+    image.setDotsPerMeterX(dpm);
+    image.setDotsPerMeterY(dpm);
+  }
+  int dpi_;
+  QImage metrics_;
+  std::vector<QImage> pages_;
+  QPainter painter_;
+};
+
+// Measures with another target's device, draws nothing.
+class MeasureTarget : public detail::PageTarget {
+ public:
+  explicit MeasureTarget(const detail::PageTarget& real) : real_(real) {}
+  const QPaintDevice* metricsDevice() const override { return real_.metricsDevice(); }
+  double dotsPerMm() const override { return real_.dotsPerMm(); }
+  QPainter* beginPage() override { return nullptr; }
+  void endPage() override {}
+
+ private:
+  const detail::PageTarget& real_;
+};
+
+// ---- content -------------------------------------------------------------
+
+struct Content {
+  const ReportInput& in;
+  Verdict verdict;
+  QString hash;                                // empty: no raw stream
+  std::vector<ui::TestPointTraces> traces;     // one per analysed test point
+  QString producedUtc;
+};
+
+void decorate(PageFlow& flow, const Content& c, int page, int pageCount) {
+  const double left = PageFlow::kLeftMm, width = PageFlow::kContentWidthMm;
+  const QFont small = PageFlow::font(7.5);
+  const auto& info = c.in.info;
+  const QString imu = QObject::tr("IMU %1 · S/N %2").arg(orNotRecorded(info.imuModel), orNotRecorded(info.imuSerial));
+  flow.text(QRectF(left, 10.0, width, 5.0), Qt::AlignLeft | Qt::AlignBottom,
+            QObject::tr("fogbench · IMU delay calibration report"), small, kMuted);
+  flow.text(QRectF(left, 10.0, width, 5.0), Qt::AlignRight | Qt::AlignBottom, imu, small, kMuted);
+  flow.line(left, 15.5, left + width, 15.5, kMuted, 0.2);
+
+  const double footer = PageFlow::kPageHeightMm - 14.0;
+  flow.line(left, footer, left + width, footer, kMuted, 0.2);
+  const QString session =
+      QObject::tr("Session %1 · raw data %2 · fogbench %3")
+          .arg(info.createdUtc.empty() ? QObject::tr("(date not recorded)") : QString::fromStdString(info.createdUtc),
+               c.hash.isEmpty() ? QObject::tr("not hashed (imported)") : "SHA-256 " + c.hash.left(16) + "…",
+               QStringLiteral(FOG_VERSION));
+  flow.text(QRectF(left, footer + 1.0, width, 5.0), Qt::AlignLeft | Qt::AlignTop, session, small, kMuted);
+  if (pageCount > 0)
+    flow.text(QRectF(left, footer + 1.0, width, 5.0), Qt::AlignRight | Qt::AlignTop,
+              QObject::tr("Page %1 of %2").arg(page).arg(pageCount), small, kMuted);
+}
+
+QString rawDataText(const Content& c) {
+  if (c.in.rawBytes.empty()) return QObject::tr("no raw stream (imported)");
+  QString digits = QString::number(static_cast<qulonglong>(c.in.rawBytes.size()));
+  for (int i = digits.size() - 3; i > 0; i -= 3) digits.insert(i, QChar(0x2009));  // thin space between groups
+  return QObject::tr("%1 bytes of sampling-board stream").arg(digits);
+}
+
+void verdictBox(PageFlow& flow, const Content& c) {
+  const double left = PageFlow::kLeftMm, width = PageFlow::kContentWidthMm;
+  const double wordWidth = 36.0, pad = 3.0;
+  const double textWidth = width - wordWidth - 2 * pad;
+  const QFont word = PageFlow::font(24.0, true), head = PageFlow::font(9.5, true), body = PageFlow::font(8.5);
+  const QColor colour = c.verdict.pass ? kPassColour : kFailColour;
+
+  QStringList lines;
+  for (const auto& p : c.verdict.points) {
+    const auto& r = *std::find_if(c.in.delays.points.begin(), c.in.delays.points.end(),
+                                  [&](const TestPointResult& t) { return t.index == p.index; });
+    lines << QObject::tr("Test point %1 (%2): %3").arg(p.index + 1).arg(condition(r), p.line);
+  }
+  for (const auto& f : c.in.delays.failedPoints) lines << QObject::tr("FAIL: no delay from %1").arg(QString::fromStdString(f));
+  const QString rule =
+      QObject::tr("Rule: a test point passes when its IMU delay plus %1 standard uncertainties (1σ, including the "
+                  "bench constants) is below the limit of %2 ms; the session passes when every test point of the "
+                  "plan gave a delay and passes.")
+          .arg(kCoverage)
+          .arg(limitText(c.in.imuDelayLimitMs));
+
+  const QString& headline = c.verdict.headline;
+  double h = flow.textHeightMm(headline, head, textWidth) + 1.5;
+  for (const auto& l : lines) h += flow.textHeightMm(l, body, textWidth) + 1.0;
+  h += flow.textHeightMm(rule, PageFlow::font(7.5), textWidth);
+  h = std::max(h + 2 * pad, 22.0);
+
+  flow.ensureSpace(h);
+  const double top = flow.y();
+  flow.rect(QRectF(left, top, width, h), colour, c.verdict.pass ? QColor(235, 246, 236) : QColor(252, 235, 235), 0.6);
+  flow.text(QRectF(left, top, wordWidth, h), Qt::AlignCenter, c.verdict.pass ? "PASS" : "FAIL", word, colour);
+  double y = top + pad;
+  const double x = left + wordWidth + pad;
+  auto put = [&](const QString& s, const QFont& f, const QColor& col, double after) {
+    const double th = flow.textHeightMm(s, f, textWidth);
+    flow.text(QRectF(x, y, textWidth, th), Qt::AlignLeft | Qt::TextWordWrap, s, f, col);
+    y += th + after;
+  };
+  put(headline, head, colour, 1.5);
+  for (const auto& l : lines) put(l, body, Qt::black, 1.0);
+  put(rule, PageFlow::font(7.5), kMuted, 0.0);
+  flow.space(h + 3.0);
+}
+
+void signatureBlock(PageFlow& flow) {
+  const double left = PageFlow::kLeftMm, width = PageFlow::kContentWidthMm;
+  const QFont f = PageFlow::font(8.5);
+  flow.ensureSpace(30.0);
+  const double half = width / 2.0;
+  for (int col = 0; col < 2; ++col) {
+    const double x = left + col * half;
+    const QString role = col == 0 ? QObject::tr("Tested by") : QObject::tr("Reviewed and approved by");
+    flow.text(QRectF(x, flow.y(), half - 6.0, 5.0), Qt::AlignLeft, role, PageFlow::font(8.5, true));
+    const double sy = flow.y() + 14.0;
+    flow.line(x, sy, x + half - 8.0, sy, Qt::black, 0.2);
+    flow.text(QRectF(x, sy + 0.8, half - 8.0, 5.0), Qt::AlignLeft, QObject::tr("Name, signature"), f, kMuted);
+    const double dy = sy + 10.0;
+    flow.line(x, dy, x + half - 8.0, dy, Qt::black, 0.2);
+    flow.text(QRectF(x, dy + 0.8, half - 8.0, 5.0), Qt::AlignLeft, QObject::tr("Date"), f, kMuted);
+  }
+  flow.space(30.0);
+}
+
+void firstPage(PageFlow& flow, const Content& c) {
+  const auto& info = c.in.info;
+  const auto& d = c.in.delays;
+  const double left = PageFlow::kLeftMm, width = PageFlow::kContentWidthMm;
+  const QFont title = PageFlow::font(20.0, true);
+  flow.text(QRectF(left, flow.y(), width, 10.0), Qt::AlignLeft | Qt::AlignVCenter,
+            QObject::tr("IMU delay calibration report"), title, QColor(20, 40, 90));
+  flow.space(11.0);
+  flow.text(QRectF(left, flow.y(), width, 6.0), Qt::AlignLeft | Qt::AlignVCenter,
+            QObject::tr("%1, serial number %2").arg(orNotRecorded(info.imuModel), orNotRecorded(info.imuSerial)),
+            PageFlow::font(12.0), Qt::black);
+  flow.space(9.0);
+  verdictBox(flow, c);
+
+  flow.heading(QObject::tr("Session"));
+  flow.keyValues(
+      {
+          {QObject::tr("IMU model"), orNotRecorded(info.imuModel)},
+          {QObject::tr("IMU serial number"), orNotRecorded(info.imuSerial)},
+          {QObject::tr("Operator"), orNotRecorded(info.operatorName)},
+          {QObject::tr("Recorded (UTC)"), orNotRecorded(info.createdUtc)},
+          {QObject::tr("Data source"), orNotRecorded(info.source)},
+          {QObject::tr("Recorded with"),
+           info.softwareVersion.empty() ? QObject::tr("not recorded")
+                                        : "fogbench " + QString::fromStdString(info.softwareVersion)},
+          {QObject::tr("Report produced"), QObject::tr("%1 by fogbench %2").arg(c.producedUtc, QStringLiteral(FOG_VERSION))},
+          {QObject::tr("Raw data"), rawDataText(c)},
+          {QObject::tr("Raw data SHA-256"), c.hash.isEmpty() ? QObject::tr("none: no raw stream (imported)") : c.hash},
+          {QObject::tr("Notes"), info.notes.empty() ? QObject::tr("none") : QString::fromStdString(info.notes)},
+      },
+      38.0);
+
+  flow.heading(QObject::tr("Results"));
+  Table t;
+  t.columns = {{"#", 6, Qt::AlignLeft},
+               {QObject::tr("condition"), 29, Qt::AlignLeft},
+               {QObject::tr("lag ± 1σ (ms)"), 33, Qt::AlignRight},
+               {QObject::tr("CRLB (ms)"), 18, Qt::AlignRight},
+               {QObject::tr("IMU delay ± 1σ (ms)"), 33, Qt::AlignRight},
+               {QObject::tr("gyro delay ± 1σ (ms)"), 33, Qt::AlignRight},
+               {QObject::tr("verdict"), 22, Qt::AlignHCenter}};
+  for (std::size_t i = 0; i < d.points.size(); ++i) {
+    const auto& p = d.points[i];
+    const int dec = decimalsFor(p.lagStdMs);
+    t.rows.push_back({QString::number(p.index + 1), shortCondition(p), valueWithStd(p.lagMs, p.lagStdMs, dec),
+                      fixed(p.crlbMs, dec),
+                      valueWithStd(p.imuDelayMs, p.imuDelayStdMs, dec),
+                      valueWithStd(p.gyroDelayMs, p.gyroDelayStdMs, dec),
+                      c.verdict.points[i].pass ? "PASS" : "FAIL"});
+  }
+  flow.table(t);
+  for (const auto& f : d.failedPoints)
+    flow.paragraph(QObject::tr("No delay from %1").arg(QString::fromStdString(f)), PageFlow::font(8.5), kFailColour);
+  for (const auto& cc : d.consistency) {
+    const int dec = decimalsFor(cc.weightedLagStdMs);
+    flow.paragraph(QObject::tr("Delay against frequency, %1 axis (%2 frequencies): weighted lag %3 ms, χ² %4 on %5 "
+                               "dof, p = %6: %7.")
+                       .arg(axisUpper(cc.axis))
+                       .arg(cc.points)
+                       .arg(valueWithStd(cc.weightedLagMs, cc.weightedLagStdMs, dec))
+                       .arg(fixed(cc.chiSquare, 2))
+                       .arg(cc.dof)
+                       .arg(fixed(cc.pValue, 3))
+                       .arg(cc.consistentWithPureDelay ? QObject::tr("consistent with a pure delay")
+                                                       : QObject::tr("NOT a pure delay (frequency-dependent)")),
+                   PageFlow::font(8.5));
+  }
+  flow.paragraph(QObject::tr("Lag: gyro output behind the stamped table angle (joint fit). IMU delay = lag + table "
+                             "read delay; gyro delay = IMU delay − processing-board delay. CRLB: Cramér–Rao bound "
+                             "on the lag for the noise measured in this session."),
+                 PageFlow::font(7.5), kMuted);
+
+  flow.heading(QObject::tr("Sign-off"));
+  signatureBlock(flow);
+}
+
+void constantsAndPlanPage(PageFlow& flow, const Content& c) {
+  const auto& info = c.in.info;
+  const auto& d = c.in.delays;
+  const auto& k = d.constants;
+  const auto& rec = c.in.recording;
+
+  flow.heading(QObject::tr("Bench constants"));
+  Table consts;
+  consts.columns = {{QObject::tr("quantity"), 48, Qt::AlignLeft},
+                    {QObject::tr("value"), 34, Qt::AlignRight},
+                    {QObject::tr("std. uncertainty"), 30, Qt::AlignRight},
+                    {QObject::tr("role"), 62, Qt::AlignLeft}};
+  auto uncertainty = [](double sd) { return sd > 0.0 ? fixed(sd, 4) + " ms" : QObject::tr("0 (taken as exact)"); };
+  const double pulse = rec.pulseEquivalentDeg > 0.0 ? rec.pulseEquivalentDeg : k.pulseEquivalentDeg;
+  consts.rows = {
+      {QObject::tr("table read delay"), fixed(k.tableReadDelayMs, 4) + " ms", uncertainty(k.tableReadDelayStdMs),
+       QObject::tr("added to the lag: IMU delay")},
+      {QObject::tr("processing-board delay"), fixed(k.boardDelayMs, 4) + " ms", uncertainty(k.boardDelayStdMs),
+       QObject::tr("subtracted from the IMU delay: gyro delay")},
+      {QObject::tr("gyro pulse equivalent"),
+       QObject::tr("%1″/pulse").arg(QString::number(pulse * 3600.0, 'g', 4)), "",
+       rec.pulseEquivalentDeg > 0.0 ? QObject::tr("stated by the stream") : QObject::tr("bench setting")},
+      {QObject::tr("sampling-board counter"),
+       QObject::tr("%1 MHz, %2 bit").arg(rec.counterHz / 1e6).arg(rec.counterBits), "",
+       QObject::tr("common time base of both channels")},
+      {QObject::tr("latitude"), QObject::tr("%1°").arg(info.bench.latitudeDeg), "",
+       QObject::tr("Earth rate, absorbed by the fitted gyro trend")},
+  };
+  flow.table(consts);
+
+  flow.heading(QObject::tr("Test plan"));
+  if (!info.plan.points.empty()) {
+    Table plan;
+    plan.columns = {{"#", 10, Qt::AlignLeft},
+                    {QObject::tr("axis"), 16, Qt::AlignLeft},
+                    {QObject::tr("frequency (Hz)"), 30, Qt::AlignRight},
+                    {QObject::tr("amplitude (°)"), 30, Qt::AlignRight},
+                    {QObject::tr("duration (s)"), 30, Qt::AlignRight},
+                    {QObject::tr("settle (s)"), 26, Qt::AlignRight},
+                    {QObject::tr("start phase (°)"), 32, Qt::AlignRight}};
+    for (std::size_t i = 0; i < info.plan.points.size(); ++i) {
+      const auto& p = info.plan.points[i];
+      plan.rows.push_back({QString::number(i + 1), axisUpper(p.axis), QString::number(p.frequencyHz),
+                           QString::number(p.amplitudeDeg), QString::number(p.durationS),
+                           QString::number(p.settleS), QString::number(p.startPhaseDeg)});
+    }
+    flow.table(plan);
+    flow.paragraph(QObject::tr("Table at rest for %1 s between test points.").arg(info.plan.restBetweenS),
+                   PageFlow::font(8.5));
+  } else {
+    Table plan;
+    plan.columns = {{"#", 10, Qt::AlignLeft},
+                    {QObject::tr("axis"), 16, Qt::AlignLeft},
+                    {QObject::tr("nominal frequency (Hz)"), 44, Qt::AlignRight},
+                    {QObject::tr("nominal amplitude (°)"), 44, Qt::AlignRight},
+                    {QObject::tr("recorded (s)"), 30, Qt::AlignRight}};
+    for (const auto& tp : rec.testPoints) {
+      const double span = tp.table.size() > 1 ? tp.table.back().timeS - tp.table.front().timeS : 0.0;
+      auto nominal = [](double v) { return v > 0.0 ? QString::number(v) : QObject::tr("not stated"); };
+      plan.rows.push_back({QString::number(tp.index + 1), axisUpper(tp.axis), nominal(tp.nominalFrequencyHz),
+                           nominal(tp.nominalAmplitudeDeg), fixed(span, 1)});
+    }
+    flow.paragraph(QObject::tr("The plan was not recorded with the data; the test points as the stream states them:"),
+                   PageFlow::font(8.5));
+    flow.table(plan);
+  }
+
+  flow.heading(QObject::tr("Data integrity"));
+  const auto& h = d.health;
+  auto n = [](std::uint64_t v) { return QString::number(static_cast<qulonglong>(v)); };
+  Table health;
+  health.columns = {{"", 52, Qt::AlignLeft}, {"", 30, Qt::AlignRight}, {"", 62, Qt::AlignLeft}, {"", 30, Qt::AlignRight}};
+  health.rows = {{QObject::tr("table frames"), n(h.tableFrames), QObject::tr("checksum failures"), n(h.checksumFailures)},
+                 {QObject::tr("IMU frames"), n(h.imuFrames), QObject::tr("lost frames"), n(h.lostFrames)},
+                 {QObject::tr("status frames"), n(h.statusFrames), QObject::tr("duplicate / out-of-order frames"),
+                  n(h.duplicateFrames) + " / " + n(h.outOfOrderFrames)},
+                 {QObject::tr("counter wraps"), n(h.counterWraps), QObject::tr("bytes skipped"), n(h.bytesSkipped)}};
+  flow.table(health);
+
+  flow.heading(QObject::tr("Delay budget: the paper's theory beside the measurement"));
+  const analysis::TheoryInputs theoryIn;
+  const auto budget = analysis::delayBudget(theoryIn);
+  auto range = [](double lo, double hi) { return lo == hi ? fixed(lo, 4) : fixed(lo, 4) + " – " + fixed(hi, 4); };
+  auto measured = [&](auto value, auto sd) {
+    QStringList s;
+    for (const auto& p : d.points)
+      s << QObject::tr("#%1: %2").arg(p.index + 1).arg(valueWithStd(value(p), sd(p), decimalsFor(sd(p))));
+    return s.join("\n");
+  };
+  Table theory;
+  theory.columns = {{QObject::tr("stage"), 50, Qt::AlignLeft},
+                    {QObject::tr("theory (ms)"), 30, Qt::AlignRight},
+                    {QObject::tr("basis"), 48, Qt::AlignLeft},
+                    {QObject::tr("measured (ms)"), 46, Qt::AlignRight}};
+  double gyroMin = 0.0, gyroMax = 0.0;
+  for (const auto& l : budget.lines) {
+    theory.rows.push_back({QString::fromStdString(l.stage), range(l.minMs, l.maxMs), QString::fromStdString(l.basis), ""});
+    theory.boldRows.push_back(false);
+    if (l.stage.rfind("board:", 0) != 0) {
+      gyroMin += l.minMs;
+      gyroMax += l.maxMs;
+    }
+  }
+  theory.rows.push_back({QObject::tr("gyro's own delay"), range(gyroMin, gyroMax),
+                         QObject::tr("sensing, loop and pulse update"),
+                         measured([](const TestPointResult& p) { return p.gyroDelayMs; },
+                                  [](const TestPointResult& p) { return p.gyroDelayStdMs; })});
+  theory.rows.push_back({QObject::tr("processing board"), range(budget.totalMinMs - gyroMin, budget.boardMaxMs),
+                         QObject::tr("sampling, compensation, serial"),
+                         QObject::tr("%1 (bench constant)").arg(fixed(k.boardDelayMs, 4))});
+  theory.rows.push_back({QObject::tr("IMU delay (total)"), range(budget.totalMinMs, budget.totalMaxMs),
+                         QObject::tr("the paper: < 0.8 ms"),
+                         measured([](const TestPointResult& p) { return p.imuDelayMs; },
+                                  [](const TestPointResult& p) { return p.imuDelayStdMs; })});
+  theory.boldRows.insert(theory.boldRows.end(), {true, true, true});
+  flow.table(theory);
+  flow.paragraph(QObject::tr("Theory with the paper's figures: %1 m of fibre (eigen period %2 µs), loop delay ≤ %3 "
+                             "eigen periods, pulse output updated every %4 ms, %5 MHz board clock, %6-byte frames at "
+                             "%7 Mbaud.")
+                     .arg(theoryIn.fibreLengthM)
+                     .arg(fixed(budget.eigenPeriodUs, 2))
+                     .arg(theoryIn.loopDelayEigenPeriods)
+                     .arg(theoryIn.pulseUpdatePeriodS * 1e3)
+                     .arg(theoryIn.boardClockHz / 1e6)
+                     .arg(theoryIn.frameBytes)
+                     .arg(theoryIn.baud / 1e6),
+                 PageFlow::font(7.5), kMuted);
+
+  Table resolution;
+  resolution.columns = {{QObject::tr("test point"), 64, Qt::AlignLeft},
+                        {QObject::tr("paper's resolution, 0.5 °/h (µs)"), 40, Qt::AlignRight},
+                        {QObject::tr("Cramér–Rao bound (µs)"), 36, Qt::AlignRight},
+                        {QObject::tr("lag std. error (µs)"), 34, Qt::AlignRight}};
+  for (const auto& p : d.points)
+    resolution.rows.push_back(
+        {QObject::tr("#%1: %2").arg(p.index + 1).arg(shortCondition(p).replace('\n', ", ")),
+         fixed(analysis::paperResolutionS(0.5, p.nominalFrequencyHz, p.tableFit.amplitudeDeg) * 1e6, 2),
+         fixed(p.crlbMs * 1e3, 3), fixed(p.lagStdMs * 1e3, 3)});
+  flow.table(resolution);
+  flow.paragraph(QObject::tr("The paper's resolution figure is the gyro's angle error over one period divided by "
+                             "the peak rate; the bench's own uncertainty is the joint fit's standard error, checked "
+                             "against the Cramér–Rao bound for the noise measured in this session."),
+                 PageFlow::font(7.5), kMuted);
+}
+
+double traceRms(const ui::Trace& t) {
+  if (t.y.empty()) return 0.0;
+  double s = 0.0;
+  for (double v : t.y) s += v * v;
+  return std::sqrt(s / static_cast<double>(t.y.size()));
+}
+
+void plotsPage(PageFlow& flow, const TestPointResult& p, const ui::TestPointTraces& tr) {
+  flow.newPage();
+  flow.heading(QObject::tr("Test point %1: %2 — angles and fits").arg(p.index + 1).arg(condition(p)));
+  const double periodS = p.joint.frequencyHz > 0.0 ? 1.0 / p.joint.frequencyHz : 1.0 / p.nominalFrequencyHz;
+  const auto& tx = tr.tableNormalised.x;
+  const double start = tx.empty() ? 0.0 : tx.front(), end = tx.empty() ? 1.0 : tx.back();
+  const double mid = 0.5 * (start + end);
+  const double w0 = std::max(start, mid - 1.5 * periodS), w1 = std::min(end, mid + 1.5 * periodS);
+  flow.paragraph(QObject::tr("Angles: the middle three periods (%1 s to %2 s on the board's time axis), offset "
+                             "removed; the gyro angle is the sum of its increments with the fitted trend (bias + "
+                             "Earth rate) removed. Fits: the 4-parameter fits of the table below. Residuals: the "
+                             "whole record (%3 s), data minus fit; the table's are its encoder quantisation, the "
+                             "gyro's its angle random walk and pulse quantisation.")
+                     .arg(fixed(w0, 1), fixed(w1, 1), fixed(p.durationS, 1)),
+                 PageFlow::font(8.0), kMuted);
+  const double plotH = (flow.remainingMm() - 4 * PageFlow::kPlotGapMm) / 4.0;
+  const double tableAmp = std::hypot(tr.tableFit.a, tr.tableFit.b);
+  const double gyroAmp = std::hypot(tr.gyroFit.a, tr.gyroFit.b);
+
+  flow.plot(plotH, [&](double wMm, double) {
+    detail::PlotSpec s;
+    s.title = QObject::tr("Table angle (offset removed) and fit");
+    s.xTitle = QObject::tr("time (s)");
+    s.yTitle = QObject::tr("angle (°)");
+    s.x0 = w0;
+    s.x1 = w1;
+    s.yRange = {-1.15 * tableAmp, 1.15 * tableAmp};
+    s.widthMm = wMm;
+    s.curves = {{QObject::tr("table angle (encoder, 1 ms)"), QPen(kTableData, 3.0), &tr.tableNormalised, tableAmp, {}},
+                {QObject::tr("fit: A = %1°, T = %2 ms").arg(fixed(p.tableFit.amplitudeDeg, 4), fixed(p.tableFit.periodMs, 4)),
+                 QPen(kTableFit, 1.0, Qt::DashLine), nullptr, 1.0,
+                 [&tr, tableAmp](double t) { return tr.tableFitNormalised(t) * tableAmp; }}};
+    return detail::makePlot(s);
+  });
+  flow.plot(plotH, [&](double wMm, double) {
+    detail::PlotSpec s;
+    s.title = QObject::tr("Gyro angle (offset and trend removed) and fit");
+    s.xTitle = QObject::tr("time (s)");
+    s.yTitle = QObject::tr("angle (°)");
+    s.x0 = w0;
+    s.x1 = w1;
+    s.yRange = {-1.15 * gyroAmp, 1.15 * gyroAmp};
+    s.widthMm = wMm;
+    s.curves = {{QObject::tr("gyro angle (summed increments, 2 ms)"), QPen(kGyroData, 3.0), &tr.gyroNormalised, gyroAmp, {}},
+                {QObject::tr("fit: A = %1°, T = %2 ms").arg(fixed(p.gyroFit.amplitudeDeg, 4), fixed(p.gyroFit.periodMs, 4)),
+                 QPen(kGyroFit, 1.0, Qt::DashLine), nullptr, 1.0,
+                 [&tr, gyroAmp](double t) { return tr.gyroFitNormalised(t) * gyroAmp; }}};
+    return detail::makePlot(s);
+  });
+  flow.plot(plotH, [&](double wMm, double) {
+    detail::PlotSpec s;
+    s.title = QObject::tr("Table residuals");
+    s.xTitle = QObject::tr("time (s)");
+    s.yTitle = QObject::tr("table − fit (arcsec)");
+    s.x0 = start;
+    s.x1 = end;
+    s.widthMm = wMm;
+    s.curves = {{QObject::tr("table angle − fit, RMS %1″").arg(fixed(traceRms(tr.tableResidualArcsec), 3)),
+                 QPen(kTableFit, 0.8), &tr.tableResidualArcsec, 1.0, {}}};
+    return detail::makePlot(s);
+  });
+  flow.plot(plotH, [&](double wMm, double) {
+    detail::PlotSpec s;
+    s.title = QObject::tr("Gyro residuals (cumulative angle)");
+    s.xTitle = QObject::tr("time (s)");
+    s.yTitle = QObject::tr("gyro − fit (arcsec)");
+    s.x0 = start;
+    s.x1 = end;
+    s.widthMm = wMm;
+    s.curves = {{QObject::tr("gyro angle − fit, RMS %1″").arg(fixed(traceRms(tr.gyroResidualArcsec), 3)),
+                 QPen(kGyroFit, 0.8), &tr.gyroResidualArcsec, 1.0, {}}};
+    return detail::makePlot(s);
+  });
+}
+
+QStringList fitRow(const QString& name, const SineFit& f, bool frequencyFree) {
+  return {name,
+          fixed(f.periodMs, 4),
+          frequencyFree ? plain2(f.periodStdMs * 1e3) : QObject::tr("nominal"),
+          fixed(f.phaseMs, 4),
+          plain2(f.phaseStdMs * 1e3),
+          fixed(f.amplitudeDeg, 5),
+          plain2(f.amplitudeStdDeg * 3600.0),
+          fixed(f.chiSquarePerDof, 2)};
+}
+
+void resultsPage(PageFlow& flow, const Content& c, const TestPointResult& p, const PointVerdict& v) {
+  const auto& k = c.in.delays.constants;
+  flow.newPage();
+  flow.heading(QObject::tr("Test point %1: %2 — fits and delay").arg(p.index + 1).arg(condition(p)));
+
+  Table fits;
+  fits.columns = {{QObject::tr("fit"), 36, Qt::AlignLeft},
+                  {QObject::tr("period T (ms)"), 22, Qt::AlignRight},
+                  {QObject::tr("σ(T) (µs)"), 18, Qt::AlignRight},
+                  {QObject::tr("phase t₀ (ms)"), 23, Qt::AlignRight},
+                  {QObject::tr("σ(t₀) (µs)"), 18, Qt::AlignRight},
+                  {QObject::tr("amplitude A (°)"), 22, Qt::AlignRight},
+                  {QObject::tr("σ(A) (″)"), 17, Qt::AlignRight},
+                  {QObject::tr("χ²/dof"), 18, Qt::AlignRight}};
+  fits.rows = {fitRow(QObject::tr("table, 3-parameter"), p.tableNominal, false),
+               fitRow(QObject::tr("gyro, 3-parameter"), p.gyroNominal, false),
+               fitRow(QObject::tr("table, 4-parameter"), p.tableFit, true),
+               fitRow(QObject::tr("gyro, 4-parameter"), p.gyroFit, true)};
+  const double f = p.joint.frequencyHz;
+  const int dec = decimalsFor(p.lagStdMs);
+  fits.rows.push_back({QObject::tr("joint: lag as t₀"), f > 0.0 ? fixed(1e3 / f, 4) : "—",
+                       plain2(f > 0.0 ? 1e6 * p.joint.frequencyStdHz / (f * f) : 0.0), fixed(p.lagMs, dec),
+                       plain2(p.lagStdMs * 1e3), fixed(std::hypot(p.joint.a, p.joint.b), 5), "—",
+                       fixed(p.joint.chiSquarePerDof, 2)});
+  fits.boldRows = {false, false, false, false, true};
+  flow.table(fits);
+  flow.paragraph(QObject::tr("angle = A sin(2π (t − t₀)/T) + offset (gyro: + trend·t), t₀ wrapped into (−T/2, T/2]; "
+                             "σ: standard uncertainties (1σ). 3-parameter fits at the nominal frequency (a χ²/dof far "
+                             "above 1 says the table's frequency is off nominal), 4-parameter fits with the frequency "
+                             "free, and the joint fit: one frequency for both channels and the lag (gyro t₀ − table "
+                             "t₀) as a parameter; its gyro/table amplitude ratio is %1 ± %2.")
+                     .arg(fixed(p.magnitudeRatio, 6), plain2(p.joint.gainStd)),
+                 PageFlow::font(7.5), kMuted);
+
+  Table delay;
+  delay.columns = {{QObject::tr("quantity"), 62, Qt::AlignLeft},
+                   {QObject::tr("value (ms)"), 24, Qt::AlignRight},
+                   {QObject::tr("1σ (ms)"), 22, Qt::AlignRight},
+                   {QObject::tr("basis"), 66, Qt::AlignLeft}};
+  delay.rows = {
+      {QObject::tr("measured lag (gyro behind table)"), fixed(p.lagMs, dec), fixed(p.lagStdMs, dec),
+       QObject::tr("joint fit; CRLB %1 ms, σ/CRLB %2").arg(fixed(p.crlbMs, dec), fixed(p.stdOverCrlb, 2))},
+      {QObject::tr("+ table read delay"), fixed(k.tableReadDelayMs, dec), fixed(k.tableReadDelayStdMs, dec),
+       QObject::tr("bench constant")},
+      {QObject::tr("= IMU delay"), fixed(p.imuDelayMs, dec), fixed(p.imuDelayStdMs, dec),
+       QObject::tr("limit %1 ms: %2").arg(limitText(c.in.imuDelayLimitMs), v.pass ? "PASS" : "FAIL")},
+      {QObject::tr("− processing-board delay"), fixed(k.boardDelayMs, dec), fixed(k.boardDelayStdMs, dec),
+       QObject::tr("bench constant")},
+      {QObject::tr("= gyro's own delay"), fixed(p.gyroDelayMs, dec), fixed(p.gyroDelayStdMs, dec), ""},
+      {QObject::tr("per-period lag, mean and scatter"), fixed(p.periodMeanLagMs, dec), fixed(p.periodScatterMs, dec),
+       QObject::tr("%1 whole periods, 3-parameter fits").arg(p.periodTrack.size())},
+  };
+  delay.boldRows = {true, false, true, false, true, false};
+  flow.heading(QObject::tr("Delay"));
+  flow.table(delay);
+  flow.paragraph(v.line, PageFlow::font(9.0, true), v.pass ? kPassColour : kFailColour);
+
+  if (!p.periodTrack.empty()) {
+    flow.plot(58.0, [&](double wMm, double) {
+      detail::PlotSpec s;
+      s.title = QObject::tr("Lag per swing period");
+      s.xTitle = QObject::tr("time (s)");
+      s.yTitle = QObject::tr("lag (ms)");
+      const double half = 0.5 * (f > 0.0 ? 1.0 / f : 1.0);
+      s.x0 = p.periodTrack.front().timeS - half;
+      s.x1 = p.periodTrack.back().timeS + half;
+      s.widthMm = wMm;
+      auto track = std::make_shared<ui::Trace>();
+      for (const auto& d : p.periodTrack) {
+        track->x.push_back(d.timeS);
+        track->y.push_back(d.lagMs);
+      }
+      s.curves = {{QObject::tr("one period"), QPen(kTableFit), track.get(), 1.0, {}, true}};
+      s.horizontalLine = p.lagMs;
+      s.horizontalLineTitle = QObject::tr("joint fit, %1 ms").arg(fixed(p.lagMs, dec));
+      auto plot = detail::makePlot(s);  // copies the points: the track may go
+      return plot;
+    });
+  }
+
+  flow.heading(QObject::tr("Noise and fit quality"));
+  std::vector<std::pair<QString, QString>> rows = {
+      {QObject::tr("encoder noise"), QObject::tr("%1″ (1σ)").arg(fixed(p.noise.tableNoiseDeg * 3600.0, 3))},
+      {QObject::tr("gyro pulse quantisation"), QObject::tr("%1″ (1σ)").arg(fixed(p.noise.gyroQuantisationDeg * 3600.0, 3))},
+      {QObject::tr("gyro angle random walk"), QObject::tr("%1 °/√h").arg(fixed(p.noise.gyroArwDegPerSqrtH, 4))},
+      {QObject::tr("gyro trend"), QObject::tr("%1 °/h (bias + Earth rate)").arg(fixed(p.joint.trendDegPerS * 3600.0, 3))},
+      {QObject::tr("samples"), QObject::tr("%1 table, %2 IMU, %3 IMU frames lost")
+                                   .arg(static_cast<qulonglong>(p.tableSamples))
+                                   .arg(static_cast<qulonglong>(p.imuSamples))
+                                   .arg(static_cast<qulonglong>(p.lostImuFrames))},
+  };
+  flow.keyValues(rows, 48.0);
+  if (!p.warnings.empty()) {
+    flow.heading(QObject::tr("Warnings"));
+    for (const auto& w : p.warnings) flow.paragraph("• " + QString::fromStdString(w), PageFlow::font(8.5), kFailColour);
+  }
+}
+
+void layOut(PageFlow& flow, const Content& c) {
+  flow.newPage();
+  firstPage(flow, c);
+  flow.newPage();
+  constantsAndPlanPage(flow, c);
+  const auto& points = c.in.delays.points;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    plotsPage(flow, points[i], c.traces[i]);
+    resultsPage(flow, c, points[i], c.verdict.points[i]);
+  }
+  flow.finish();
+}
+
+Result<Content> prepare(const ReportInput& in) {
+  if (auto s = checkReportInput(in); !s.isOk()) return s;
+  if (!qobject_cast<QApplication*>(QCoreApplication::instance()))
+    return Status(StatusCode::kInternal, "the report's plots need a QApplication");
+  Content c{in, calibrationVerdict(in.delays, in.imuDelayLimitMs), rawDataSha256(in.rawBytes), {},
+            QDateTime::currentDateTimeUtc().toString(Qt::ISODate)};
+  const double scale = in.recording.pulseEquivalentDeg > 0.0 ? 1.0 : in.delays.constants.pulseEquivalentDeg;
+  for (const auto& p : in.delays.points) {
+    const auto& tps = in.recording.testPoints;
+    const auto data = std::find_if(tps.begin(), tps.end(), [&](const TestPointData& d) { return d.index == p.index; });
+    auto traces = ui::makeTestPointTraces(*data, p, scale);
+    if (!traces)
+      return Status(traces.status().code(),
+                    "test point " + std::to_string(p.index + 1) + " cannot be plotted: " + traces.status().message());
+    c.traces.push_back(std::move(*traces));
+  }
+  return c;
+}
+
+// Lays the pages out once to count them, then draws them.
+template <typename Target>
+void render(Target& target, const Content& c, QStringList* drawn) {
+  auto deco = [&c](PageFlow& f, int page, int count) { decorate(f, c, page, count); };
+  MeasureTarget measure(target);
+  PageFlow counting(measure, 0, deco, nullptr);
+  layOut(counting, c);
+  PageFlow drawing(target, counting.page(), deco, drawn);
+  layOut(drawing, c);
+}
+
+}  // namespace
+
+QString rawDataSha256(const std::vector<std::uint8_t>& bytes) {
+  if (bytes.empty()) return {};
+  QCryptographicHash hash(QCryptographicHash::Sha256);
+  constexpr std::size_t kChunk = std::size_t(1) << 26;  // keeps the length within int on Qt 5
+  for (std::size_t at = 0; at < bytes.size(); at += kChunk) {
+    const auto n = static_cast<int>(std::min(kChunk, bytes.size() - at));
+    const char* data = reinterpret_cast<const char*>(bytes.data() + at);
+#if QT_VERSION >= QT_VERSION_CHECK(6, 3, 0)
+    hash.addData(QByteArrayView(data, n));
+#else
+    hash.addData(data, n);
+#endif
+  }
+  return QString::fromLatin1(hash.result().toHex());
+}
+
+Verdict calibrationVerdict(const DelayReport& delays, double limitMs) {
+  Verdict v;
+  int failed = 0;
+  for (const auto& p : delays.points) {
+    const int dec = decimalsFor(p.imuDelayStdMs);
+    const double upper = p.imuDelayMs + kCoverage * p.imuDelayStdMs;
+    PointVerdict pv;
+    pv.index = p.index;
+    pv.pass = upper < limitMs;
+    pv.line = QObject::tr("%1: IMU delay %2 ms, + 2σ = %3 ms %4 %5 ms limit (%6 %7 ms)")
+                  .arg(pv.pass ? "PASS" : "FAIL", valueWithStd(p.imuDelayMs, p.imuDelayStdMs, dec), fixed(upper, dec),
+                       pv.pass ? "<" : "≥", limitText(limitMs), pv.pass ? QObject::tr("margin") : QObject::tr("over by"),
+                       fixed(std::abs(limitMs - upper), dec));
+    failed += pv.pass ? 0 : 1;
+    v.points.push_back(pv);
+  }
+  const auto missing = static_cast<int>(delays.failedPoints.size());
+  v.pass = !delays.points.empty() && failed == 0 && missing == 0;
+  if (v.pass) {
+    v.headline = QObject::tr("PASS: every test point's IMU delay + 2σ is below the %1 ms limit.").arg(limitText(limitMs));
+  } else if (delays.points.empty()) {
+    v.headline = QObject::tr("FAIL: no test point gave a delay.");  // cannot happen after analyzeRecording()
+  } else {
+    QStringList why;
+    if (failed > 0)
+      why << QObject::tr("%1 of %2 test points exceed the limit").arg(failed).arg(delays.points.size());
+    if (missing > 0) why << QObject::tr("%1 test point(s) gave no delay").arg(missing);
+    v.headline = QObject::tr("FAIL against the %1 ms limit: %2.").arg(limitText(limitMs), why.join("; "));
+  }
+  return v;
+}
+
+Status checkReportInput(const ReportInput& in) {
+  if (!std::isfinite(in.imuDelayLimitMs) || !(in.imuDelayLimitMs > 0.0))
+    return invalidArgument("the IMU delay limit must be a number > 0 ms");
+  for (const auto& p : in.delays.points) {
+    const auto& tps = in.recording.testPoints;
+    if (std::none_of(tps.begin(), tps.end(), [&](const TestPointData& d) { return d.index == p.index; }))
+      return invalidArgument("the recording has no data for analysed test point " + std::to_string(p.index + 1));
+  }
+  return Status::ok();
+}
+
+Status writeCalibrationPdf(const ReportInput& in, const QString& pdfPath) {
+  auto content = prepare(in);
+  if (!content) return content.status();
+  PdfTarget target(pdfPath);
+  target.setTitle(QObject::tr("IMU delay calibration report: %1 %2")
+                      .arg(QString::fromStdString(in.info.imuModel), QString::fromStdString(in.info.imuSerial)));
+  if (!target.open()) return ioError("cannot write the PDF '" + pdfPath.toStdString() + "'");
+  render(target, *content, nullptr);
+  target.close();
+  if (!QFileInfo(pdfPath).isFile() || QFileInfo(pdfPath).size() == 0)
+    return ioError("the PDF '" + pdfPath.toStdString() + "' was not written");
+  return Status::ok();
+}
+
+Result<std::vector<QImage>> renderCalibrationPages(const ReportInput& in, int dpi, QStringList* drawnText) {
+  if (dpi < 30 || dpi > 1200) return invalidArgument("page images need 30 to 1200 dpi");
+  auto content = prepare(in);
+  if (!content) return content.status();
+  ImageTarget target(dpi);
+  render(target, *content, drawnText);
+  return target.take();
+}
+
+}  // namespace fog::report

@@ -1,0 +1,77 @@
+#pragma once
+// The calibration report: a signed-off record of one session's IMU delay
+// measurement, as a PDF (A4 portrait) or as page images (for previews and
+// tests) drawn by the same code.
+//
+// Pages: (1) identity, verdict, results summary, signatures; (2) bench
+// constants, test plan, stream health, the paper's delay budget beside the
+// measurement; then per analysed test point (3) the table and gyro angles with
+// their fitted sinusoids and the residuals of both fits, (4) the fit table,
+// the delay breakdown with uncertainties and Cramer-Rao bound, the per-period
+// lag track and the test point's verdict. Every page carries a header with
+// the IMU's identity and a footer with the session, the raw data hash and
+// "page n of N".
+//
+// Acceptance rule (one-sided, coverage factor k = 2): a test point PASSES
+// when IMU delay + 2 sigma < limit, so a delay that is only probably below the
+// limit fails. The session passes when every test point of the plan gave a
+// delay and every one passes.
+//
+// Needs a QApplication (the plots are Qwt widgets); any platform works,
+// including offscreen. Not thread-safe: call from the GUI thread.
+
+#include <QImage>
+#include <QString>
+#include <QStringList>
+#include <cstdint>
+#include <vector>
+
+#include "analysis/delay_analysis.h"
+#include "common/recording.h"
+#include "common/session_info.h"
+#include "common/status.h"
+
+namespace fog::report {
+
+struct ReportInput {
+  SessionInfo info;
+  Recording recording;  // the decoded data the delays were computed from (plotted)
+  analysis::DelayReport delays;
+  // The raw sampling-board byte stream, hashed onto the report. Empty for
+  // imported data: the report then says "no raw stream (imported)".
+  std::vector<std::uint8_t> rawBytes;
+  double imuDelayLimitMs = 0.8;
+};
+
+// SHA-256 of the bytes, 64 lower-case hex digits; empty for no bytes.
+QString rawDataSha256(const std::vector<std::uint8_t>& bytes);
+
+// The verdict of one test point against the limit, e.g.
+// "PASS: IMU delay 0.5158 ± 0.0015 ms; + 2σ = 0.5188 ms < 0.8 ms limit (margin 0.2812 ms)".
+struct PointVerdict {
+  int index = 0;  // test point index (0-based)
+  bool pass = false;
+  QString line;
+};
+struct Verdict {
+  bool pass = false;
+  QString headline;  // "PASS" or "FAIL: ..." with the reason in a few words
+  std::vector<PointVerdict> points;  // one per analysed test point, report order
+};
+Verdict calibrationVerdict(const analysis::DelayReport& delays, double imuDelayLimitMs);
+
+// Checks what the drawing needs: a finite limit > 0, and recording data for
+// every analysed test point.
+Status checkReportInput(const ReportInput& in);
+
+// Writes the report as a PDF. Fails with a one-line reason (unwritable path,
+// bad input).
+Status writeCalibrationPdf(const ReportInput& in, const QString& pdfPath);
+
+// The same pages as images at `dpi` (white background). When drawnText is
+// given, every string drawn on the pages (outside the plots) is appended to
+// it, in drawing order: what a reader of the page sees, for tests.
+Result<std::vector<QImage>> renderCalibrationPages(const ReportInput& in, int dpi,
+                                                   QStringList* drawnText = nullptr);
+
+}  // namespace fog::report
