@@ -20,20 +20,12 @@
 #include "model/simulator.h"
 #include "protocol/recording_builder.h"
 #include "session/session_file.h"
+#include "cli_common.h"
 #include "session_commands.h"
 
 namespace fog::app {
 
 namespace {
-
-int fail(const Status& s, int code) {
-  std::cerr << "fogbench-cli: " << s.message() << "\n";
-  return code;
-}
-// Bad command line or input file: 2; data that gives no result: 1.
-int exitCodeFor(const Status& s) {
-  return s.code() == StatusCode::kInsufficientData || s.code() == StatusCode::kNotConverged ? 1 : 2;
-}
 
 #define FOG_TRY_NUMBER(var, args, name, fallback) \
   double var = 0.0;                               \
@@ -42,25 +34,6 @@ int exitCodeFor(const Status& s) {
     if (!v_) return fail(v_.status(), 2);         \
     var = *v_;                                    \
   }
-
-Result<analysis::BenchConstants> readConstants(CliArguments& args) {
-  analysis::BenchConstants c;
-  struct Field {
-    const char* name;
-    double* target;
-  } fields[] = {{"read-delay-ms", &c.tableReadDelayMs},
-                {"read-delay-std-ms", &c.tableReadDelayStdMs},
-                {"board-delay-ms", &c.boardDelayMs},
-                {"board-delay-std-ms", &c.boardDelayStdMs}};
-  for (auto& fld : fields) {
-    auto v = args.number(fld.name, *fld.target);
-    if (!v) return v.status();
-    *fld.target = *v;
-  }
-  if (c.tableReadDelayStdMs < 0 || c.boardDelayStdMs < 0)
-    return invalidArgument("uncertainties of bench constants must be >= 0");
-  return c;
-}
 
 Result<TestPlan> readPlan(CliArguments& args) {
   auto file = args.text("plan");
@@ -100,15 +73,7 @@ Result<TestPlan> readPlan(CliArguments& args) {
     plan.points.push_back(p);
     return plan;
   }
-  const std::string name = preset.value_or("paper");
-  if (name == "paper-slow") return TestPlan::paperSlow();
-  if (name == "paper-fast") return TestPlan::paperFast();
-  if (name == "paper") {
-    TestPlan plan = TestPlan::paperSlow();
-    plan.points.push_back(TestPlan::paperFast().points.front());
-    return plan;
-  }
-  return invalidArgument("unknown preset '" + name + "' (paper, paper-slow, paper-fast)");
+  return presetPlan(preset.value_or("paper"));
 }
 
 Result<model::SimConfig> readSimConfig(CliArguments& args) {
@@ -197,11 +162,12 @@ int analyzeCommand(CliArguments& args) {
   if (args.positionals().size() == 1 && session::isSqliteFile(args.positionals()[0]))
     return analyzeSessionCommand(args, args.positionals()[0]);
   const bool json = args.flag("json");
-  auto constants = readConstants(args);
+  // A raw stream states its pulse equivalent in its STATUS frames; there is
+  // no session to fall back on, so only the command line can supply one.
+  BenchSettings noPulseEquivalent;
+  noPulseEquivalent.pulseEquivalentDeg = 0.0;
+  auto constants = readConstants(args, noPulseEquivalent);
   if (!constants) return fail(constants.status(), 2);
-  auto pe = args.number("pulse-equivalent-deg", 0.0);
-  if (!pe) return fail(pe.status(), 2);
-  constants->pulseEquivalentDeg = *pe;
   if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
   if (args.positionals().size() != 1) return fail(invalidArgument("analyze needs exactly one FILE"), 2);
   const std::string path = args.positionals()[0];

@@ -38,14 +38,20 @@ usage:
   fogbench-cli replay SESSION.fbs [--speed X | --afap] [constants] [--json]
       Feed a session's raw stream through the decoder at X times real time
       (default 1) or as fast as possible, and report.
+  fogbench-cli import DIR | META.json TABLE.csv GYRO.csv --out SESSION.fbs [--operator NAME ...]
+      Make a session of data from another bench (the CSV layout of docs/formats.md).
+  fogbench-cli export SESSION.fbs [--csv DIR] [--results-json FILE.json] [--overwrite] [constants]
+      Decoded samples, fits and residuals as CSV (readable back by import);
+      the stored results and the current analysis as JSON.
   fogbench-cli theory [--freq-hz F --amp-deg A --duration-s T] [--stability-deg-h S]
                       [--fibre-length-m L] [--arw-deg-sqrt-h N] [--json]
       The paper's delay budget and resolution figure, and the bench's bound.
   fogbench-cli accuracy [--seeds N] [--threads K]
       Monte Carlo study of both paper conditions (docs/accuracy.md).
-  fogbench-cli report (FILE.bin | --preset NAME [--seed N]) [--pdf OUT.pdf] [--png-dir DIR [--dpi 100]]
+  fogbench-cli report (SESSION.fbs | FILE.bin | --preset NAME [--seed N]) [--pdf OUT.pdf] [--png-dir DIR [--dpi 100]]
                       [--limit-ms 0.8] [--imu-model M --imu-serial S --operator NAME] [constants]
-      The calibration report (docs/report.md): PASS when IMU delay + 2 sigma < limit.
+      The calibration report (docs/report.md): PASS when IMU delay + 2 sigma < limit;
+      a session brings its own identity and constants.
   fogbench-cli --version | help
 
 constants: --read-delay-ms (0.05) --read-delay-std-ms (0) --board-delay-ms (0.28)
@@ -73,7 +79,7 @@ int main(int argc, char** argv) {
       return 0;
     }
   }
-  auto parsed = fog::app::CliArguments::parse(args, {"json", "no-store", "afap"});
+  auto parsed = fog::app::CliArguments::parse(args, {"json", "no-store", "afap", "overwrite"});
   if (!parsed) {
     std::cerr << "fogbench-cli: " << parsed.status().message() << "\n";
     return 2;
@@ -82,6 +88,8 @@ int main(int argc, char** argv) {
   if (command == "analyze") return fog::app::analyzeCommand(*parsed);
   if (command == "sessions") return fog::app::sessionsCommand(*parsed);
   if (command == "replay") return fog::app::replayCommand(*parsed);
+  if (command == "import") return fog::app::importCommand(*parsed);
+  if (command == "export") return fog::app::exportCommand(*parsed);
   if (command == "theory") return fog::app::theoryCommand(*parsed);
   if (command == "accuracy") return fog::app::accuracyCommand(*parsed);
   if (command == "report") {

@@ -10,52 +10,16 @@
 #include <iterator>
 
 #include "analysis/delay_analysis.h"
+#include "cli_common.h"
 #include "common/version.h"
 #include "model/simulator.h"
 #include "protocol/recording_builder.h"
+#include "session/session_file.h"
 #include "ui/report/calibration_report.h"
 
 namespace fog::app {
 
 namespace {
-
-int fail(const std::string& message, int code) {
-  std::cerr << "fogbench-cli: " << message << "\n";
-  return code;
-}
-
-// The bench constants, as `run` and `analyze` read them.
-Result<analysis::BenchConstants> readConstants(CliArguments& args) {
-  analysis::BenchConstants c;
-  struct Field {
-    const char* name;
-    double* target;
-  } fields[] = {{"read-delay-ms", &c.tableReadDelayMs},
-                {"read-delay-std-ms", &c.tableReadDelayStdMs},
-                {"board-delay-ms", &c.boardDelayMs},
-                {"board-delay-std-ms", &c.boardDelayStdMs},
-                {"pulse-equivalent-deg", &c.pulseEquivalentDeg}};
-  for (auto& fld : fields) {
-    auto v = args.number(fld.name, *fld.target);
-    if (!v) return v.status();
-    *fld.target = *v;
-  }
-  if (c.tableReadDelayStdMs < 0 || c.boardDelayStdMs < 0)
-    return invalidArgument("uncertainties of bench constants must be >= 0");
-  return c;
-}
-
-// The presets of `run`.
-Result<TestPlan> presetPlan(const std::string& name) {
-  if (name == "paper-slow") return TestPlan::paperSlow();
-  if (name == "paper-fast") return TestPlan::paperFast();
-  if (name == "paper") {
-    TestPlan plan = TestPlan::paperSlow();
-    plan.points.push_back(TestPlan::paperFast().points.front());
-    return plan;
-  }
-  return invalidArgument("unknown preset '" + name + "' (paper, paper-slow, paper-fast)");
-}
 
 std::string nowUtc() {
   return QDateTime::currentDateTimeUtc().toString(Qt::ISODate).toStdString();
@@ -91,15 +55,32 @@ Result<report::ReportInput> simulatedSession(const std::string& preset, double s
   return in;
 }
 
-// A saved raw sampling-board stream, as `analyze` reads it.
-Result<report::ReportInput> rawStreamSession(const std::string& path) {
+// A session file (recorded or imported) or a saved raw sampling-board
+// stream, as `analyze` reads them. A session brings its own identity and
+// bench constants; a raw stream has neither.
+Result<report::ReportInput> fileSession(const std::string& path) {
+  report::ReportInput in;
+  if (session::isSqliteFile(path)) {
+    auto reader = session::SessionReader::open(path);
+    if (!reader) return reader.status();
+    auto recording = (*reader)->recording();
+    if (!recording) return recording.status();
+    auto bytes = (*reader)->rawBytes();
+    if (!bytes) return bytes.status();
+    in.info = (*reader)->info();
+    in.info.source = "session " + path + (in.info.source.empty() ? "" : " (" + in.info.source + ")");
+    if (!(*reader)->complete()) in.info.source += " [incomplete: " + (*reader)->incompleteReason() + "]";
+    in.recording = std::move(*recording);
+    in.rawBytes = std::move(*bytes);
+    return in;
+  }
   std::ifstream file(path, std::ios::binary);
   if (!file) return ioError("cannot read '" + path + "'");
   std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
   auto recording = protocol::decodeRecording(bytes);
   if (!recording) return Status(StatusCode::kCorruptData, path + ": " + recording.status().message());
-  report::ReportInput in;
   in.info.source = "raw stream " + path;
+  in.info.bench.pulseEquivalentDeg = 0.0;  // only the stream or the command line can tell
   in.recording = std::move(*recording);
   in.rawBytes = std::move(bytes);
   return in;
@@ -127,40 +108,49 @@ int reportCommand(CliArguments& args) {
   auto seed = args.number("seed", 1.0);
   auto limit = args.number("limit-ms", 0.8);
   auto dpi = args.number("dpi", 100.0);
-  auto constants = readConstants(args);
   const auto imuModel = args.text("imu-model");
   const auto imuSerial = args.text("imu-serial");
   const auto operatorName = args.text("operator");
   for (const auto* r : {&seed, &limit, &dpi})
-    if (!*r) return fail(r->status().message(), 2);
-  if (!constants) return fail(constants.status().message(), 2);
-  if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s.message(), 2);
+    if (!*r) return fail(r->status(), 2);
   const auto& files = args.positionals();
-  if (files.size() > 1) return fail("report takes one SESSION file", 2);
-  if (files.empty() == !preset) return fail("report needs one SESSION file or --preset NAME", 2);
-  if (!pdf && !pngDir) return fail("report needs --pdf OUT.pdf and/or --png-dir DIR", 2);
-  if (!(*limit > 0.0)) return fail("--limit-ms must be > 0", 2);
-  if (*dpi < 30 || *dpi > 600 || *dpi != std::floor(*dpi)) return fail("--dpi must be a whole number in 30 .. 600", 2);
-  if (args.text("seed") && !preset) return fail("--seed applies to --preset only", 2);
-
-  auto input = preset ? simulatedSession(*preset, *seed) : rawStreamSession(files.front());
-  if (!input) return fail(input.status().message(), 2);
+  Status bad;
+  if (!pdf && !pngDir) bad = invalidArgument("report needs --pdf OUT.pdf and/or --png-dir DIR");
+  else if (!(*limit > 0.0)) bad = invalidArgument("--limit-ms must be > 0");
+  else if (*dpi < 30 || *dpi > 600 || *dpi != std::floor(*dpi))
+    bad = invalidArgument("--dpi must be a whole number in 30 .. 600");
+  else if (args.text("seed") && !preset) bad = invalidArgument("--seed applies to --preset only");
+  if (!bad.isOk()) {
+    (void)args.checkAllUsed();
+    return fail(bad, 2);
+  }
+  if (files.size() > 1) {
+    (void)args.checkAllUsed();
+    return fail(invalidArgument("report takes one SESSION file"), 2);
+  }
+  if (files.empty() == !preset) {
+    (void)args.checkAllUsed();
+    return fail(invalidArgument("report needs one SESSION file or --preset NAME"), 2);
+  }
+  auto input = preset ? simulatedSession(*preset, *seed) : fileSession(files.front());
+  if (!input) {
+    (void)args.checkAllUsed();
+    return fail(input.status(), 2);
+  }
   report::ReportInput& in = *input;
+  // The session's own constants, unless the command line gives others.
+  auto constants = readConstants(args, in.info.bench);
+  if (!constants) return fail(constants.status(), 2);
+  if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
+
   if (imuModel) in.info.imuModel = *imuModel;
   if (imuSerial) in.info.imuSerial = *imuSerial;
   if (operatorName) in.info.operatorName = *operatorName;
-  in.info.bench.tableReadDelayMs = constants->tableReadDelayMs;
-  in.info.bench.tableReadDelayStdMs = constants->tableReadDelayStdMs;
-  in.info.bench.boardDelayMs = constants->boardDelayMs;
-  in.info.bench.boardDelayStdMs = constants->boardDelayStdMs;
+  storeConstants(*constants, in.info.bench);
   in.imuDelayLimitMs = *limit;
 
   auto delays = analysis::analyzeRecording(in.recording, *constants);
-  if (!delays) {
-    const bool noResult = delays.status().code() == StatusCode::kInsufficientData ||
-                          delays.status().code() == StatusCode::kNotConverged;
-    return fail(delays.status().message(), noResult ? 1 : 2);
-  }
+  if (!delays) return fail(delays.status(), exitCodeFor(delays.status()));
   in.delays = std::move(*delays);
 
   chooseQtPlatform();
@@ -171,17 +161,17 @@ int reportCommand(CliArguments& args) {
   QApplication app(argc, argv);
 
   if (pdf) {
-    if (auto s = report::writeCalibrationPdf(in, QString::fromStdString(*pdf)); !s.isOk()) return fail(s.message(), 2);
+    if (auto s = report::writeCalibrationPdf(in, QString::fromStdString(*pdf)); !s.isOk()) return fail(s, 2);
     std::cout << "calibration report: " << *pdf << "\n";
   }
   if (pngDir) {
     const QString dir = QString::fromStdString(*pngDir);
-    if (!QDir().mkpath(dir)) return fail("cannot create the directory '" + *pngDir + "'", 2);
+    if (!QDir().mkpath(dir)) return fail(ioError("cannot create the directory '" + *pngDir + "'"), 2);
     auto pages = report::renderCalibrationPages(in, static_cast<int>(*dpi));
-    if (!pages) return fail(pages.status().message(), 2);
+    if (!pages) return fail(pages.status(), 2);
     for (std::size_t i = 0; i < pages->size(); ++i) {
       const QString path = QDir(dir).filePath(QString("report-page-%1.png").arg(i + 1));
-      if (!(*pages)[i].save(path)) return fail("cannot write '" + path.toStdString() + "'", 2);
+      if (!(*pages)[i].save(path)) return fail(ioError("cannot write '" + path.toStdString() + "'"), 2);
       std::cout << "page " << i + 1 << ": " << path.toStdString() << "\n";
     }
   }

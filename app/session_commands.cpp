@@ -4,10 +4,14 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "cli_common.h"
 #include "common/version.h"
+#include "io/csv_export.h"
+#include "io/csv_import.h"
 #include "session/replay.h"
 #include "session/session_file.h"
 
@@ -17,41 +21,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
-
-int fail(const Status& s, int code) {
-  std::cerr << "fogbench-cli: " << s.message() << "\n";
-  return code;
-}
-// Unusable data: 1; everything else (bad file, bad option): 2.
-int exitCodeFor(const Status& s) {
-  return s.code() == StatusCode::kInsufficientData || s.code() == StatusCode::kNotConverged ? 1 : 2;
-}
-
-// The session's own bench constants, each overridable on the command line.
-Result<analysis::BenchConstants> sessionConstants(CliArguments& args, const BenchSettings& bench) {
-  analysis::BenchConstants c;
-  c.tableReadDelayMs = bench.tableReadDelayMs;
-  c.tableReadDelayStdMs = bench.tableReadDelayStdMs;
-  c.boardDelayMs = bench.boardDelayMs;
-  c.boardDelayStdMs = bench.boardDelayStdMs;
-  c.pulseEquivalentDeg = bench.pulseEquivalentDeg;
-  struct Field {
-    const char* name;
-    double* target;
-  } fields[] = {{"read-delay-ms", &c.tableReadDelayMs},
-                {"read-delay-std-ms", &c.tableReadDelayStdMs},
-                {"board-delay-ms", &c.boardDelayMs},
-                {"board-delay-std-ms", &c.boardDelayStdMs},
-                {"pulse-equivalent-deg", &c.pulseEquivalentDeg}};
-  for (auto& f : fields) {
-    auto v = args.number(f.name, *f.target);
-    if (!v) return v.status();
-    *f.target = *v;
-  }
-  if (c.tableReadDelayStdMs < 0 || c.boardDelayStdMs < 0)
-    return invalidArgument("uncertainties of bench constants must be >= 0");
-  return c;
-}
 
 std::string sessionSource(const session::SessionReader& r, const std::string& what) {
   std::string s = what + " " + r.path();
@@ -116,10 +85,7 @@ Status recordSimulatedSession(const SessionOutput& out, const TestPlan& plan, co
   info.softwareVersion = FOG_VERSION;
   info.createdUtc = session::utcNow();
   info.plan = plan;
-  info.bench.tableReadDelayMs = constants.tableReadDelayMs;
-  info.bench.tableReadDelayStdMs = constants.tableReadDelayStdMs;
-  info.bench.boardDelayMs = constants.boardDelayMs;
-  info.bench.boardDelayStdMs = constants.boardDelayStdMs;
+  storeConstants(constants, info.bench);
   info.bench.latitudeDeg = config.earth.latitudeDeg;
   info.bench.pulseEquivalentDeg = config.fog.pulseEquivalentDeg;
   info.bench.counterHz = config.samplingBoard.counterHz;
@@ -145,7 +111,7 @@ int analyzeSessionCommand(CliArguments& args, const std::string& path) {
     (void)args.checkAllUsed();
     return fail(reader.status(), 2);
   }
-  auto constants = sessionConstants(args, (*reader)->info().bench);
+  auto constants = readConstants(args, (*reader)->info().bench);
   if (!constants) return fail(constants.status(), 2);
   if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
   if (args.positionals().size() != 1) return fail(invalidArgument("analyze needs exactly one FILE"), 2);
@@ -286,7 +252,7 @@ int replayCommand(CliArguments& args) {
   const std::string path = args.positionals()[0];
   auto reader = session::SessionReader::open(path);
   if (!reader) return fail(reader.status(), 2);
-  auto constants = sessionConstants(args, (*reader)->info().bench);
+  auto constants = readConstants(args, (*reader)->info().bench);
   if (!constants) return fail(constants.status(), 2);
   if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
   auto bytes = (*reader)->rawBytes();
@@ -305,6 +271,125 @@ int replayCommand(CliArguments& args) {
   if (!report) return fail(report.status(), exitCodeFor(report.status()));
   std::cout << (json ? analysis::formatReportJson(*report, context) + "\n"
                      : analysis::formatReportText(*report, context));
+  return 0;
+}
+
+int importCommand(CliArguments& args) {
+  auto out = readSessionOutput(args);
+  if (!out) return fail(out.status(), 2);
+  if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
+  if (!*out) return fail(invalidArgument("import needs --out SESSION.fbs: the session file to create"), 2);
+  const auto& inputs = args.positionals();
+  if (inputs.size() != 1 && inputs.size() != 3)
+    return fail(invalidArgument("import takes one DIR (metadata.json, table.csv, gyro.csv) or those three FILES"), 2);
+  auto imported = inputs.size() == 1 ? io::importCsvDirectory(inputs[0]) : io::importCsvFiles(inputs);
+  if (!imported) return fail(imported.status(), 2);
+
+  SessionInfo info = imported->info;
+  const std::string from = inputs.size() == 1 ? inputs[0] : inputs[0] + ", " + inputs[1] + ", " + inputs[2];
+  info.source = "import of " + from + (info.source.empty() ? "" : " (" + info.source + ")");
+  if (info.softwareVersion.empty()) info.softwareVersion = std::string("unknown; imported by fogbench ") + FOG_VERSION;
+  if (info.createdUtc.empty()) info.createdUtc = session::utcNow();
+  // Metadata given on the command line wins over the files'.
+  const SessionInfo& cli = (*out)->info;
+  for (auto [field, given] : {std::pair{&info.operatorName, &cli.operatorName}, {&info.imuModel, &cli.imuModel},
+                              {&info.imuSerial, &cli.imuSerial}, {&info.notes, &cli.notes}})
+    if (!given->empty()) *field = *given;
+
+  auto writer = session::SessionWriter::create((*out)->path, info);
+  if (!writer) return fail(writer.status(), 2);
+  if (auto s = (*writer)->storeRecording(imported->recording); !s.isOk()) return fail(s, 2);
+  if (auto s = (*writer)->finish(true, ""); !s.isOk()) return fail(s, 2);
+
+  std::size_t tableSamples = 0, imuSamples = 0;
+  for (const auto& tp : imported->recording.testPoints) {
+    tableSamples += tp.table.size();
+    imuSamples += tp.imu.size();
+  }
+  std::cout << "Imported " << imported->recording.testPoints.size() << " test point(s), " << tableSamples
+            << " table and " << imuSamples << " gyro samples from " << from << " into " << (*out)->path << ".\n";
+  for (const auto& note : imported->notes) std::cout << "  note: " << note << "\n";
+  std::cout << "Analyse it with: fogbench-cli analyze " << (*out)->path << "\n";
+  return 0;
+}
+
+int exportCommand(CliArguments& args) {
+  const auto csvDir = args.text("csv");
+  const auto jsonPath = args.text("results-json");
+  const bool overwrite = args.flag("overwrite");
+  if (args.positionals().size() != 1) {
+    (void)args.checkAllUsed();
+    return fail(invalidArgument("export needs exactly one SESSION.fbs"), 2);
+  }
+  const std::string path = args.positionals()[0];
+  auto reader = session::SessionReader::open(path);
+  if (!reader) {
+    (void)args.checkAllUsed();
+    return fail(reader.status(), 2);
+  }
+  auto constants = readConstants(args, (*reader)->info().bench);
+  if (!constants) return fail(constants.status(), 2);
+  if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
+  if (!csvDir && !jsonPath) return fail(invalidArgument("export needs --csv DIR and/or --results-json FILE.json"), 2);
+  std::error_code ec;
+  if (jsonPath && !overwrite && fs::exists(*jsonPath, ec))
+    return fail(invalidArgument("'" + *jsonPath + "' already exists; add --overwrite to replace it"), 2);
+
+  auto recording = (*reader)->recording();
+  if (!recording) return fail(recording.status(), 2);
+  // The fits and residuals come from an analysis with the session's
+  // constants (or those given); data that supports no delay is still
+  // exported, only without fits.
+  auto report = analysis::analyzeRecording(*recording, *constants);
+  if (!report)
+    std::cerr << "fogbench-cli: note: no analysis to export (" << report.status().message()
+              << "); samples are exported without fits\n";
+  analysis::ReportContext context;
+  context.source = sessionSource(**reader, "session");
+
+  if (csvDir) {
+    SessionInfo info = (*reader)->info();
+    storeConstants(*constants, info.bench);
+    if (auto s = io::exportCsv(*csvDir, info, *recording, report ? &*report : nullptr, overwrite); !s.isOk())
+      return fail(overwrite || s.code() != StatusCode::kInvalidArgument ? s : Status(s.code(), s.message() + " (--overwrite)"), 2);
+    std::cout << "CSV export of " << path << ": " << *csvDir << "\n";
+  }
+  if (jsonPath) {
+    const SessionInfo& info = (*reader)->info();
+    auto stored = (*reader)->results();
+    if (!stored) return fail(stored.status(), 2);
+    json results = json::array();
+    for (const auto& r : *stored)
+      results.push_back({{"id", r.id},
+                         {"created_utc", r.createdUtc},
+                         {"settings", json::parse(r.settingsJson, nullptr, false)},
+                         {"report", json::parse(r.reportJson, nullptr, false)}});
+    json doc = {{"format", "fogbench-results"},
+                {"format_version", 1},
+                {"session",
+                 {{"file", path},
+                  {"operator", info.operatorName},
+                  {"imu_model", info.imuModel},
+                  {"imu_serial", info.imuSerial},
+                  {"source", info.source},
+                  {"software_version", info.softwareVersion},
+                  {"created_utc", info.createdUtc},
+                  {"notes", info.notes},
+                  {"complete", (*reader)->complete()},
+                  {"incomplete_reason", (*reader)->incompleteReason()},
+                  {"raw_bytes", (*reader)->rawByteCount()}}},
+                {"stored_results", results},
+                {"current_analysis",
+                 report ? json{{"settings", json::parse(analysisSettingsJson(*constants, "fogbench-cli export"))},
+                               {"report", json::parse(analysis::formatReportJson(*report, context))}}
+                        : json{{"error", report.status().message()}}}};
+    std::ofstream file(*jsonPath, std::ios::binary | std::ios::trunc);
+    file << doc.dump(2) << "\n";
+    file.close();
+    if (!file) return fail(ioError("cannot write '" + *jsonPath + "'"), 2);
+    std::cout << "JSON results of " << path << ": " << *jsonPath << " (" << stored->size() << " stored result"
+              << (stored->size() == 1 ? "" : "s") << " and the current analysis)\n";
+  }
   return 0;
 }
 

@@ -1,7 +1,9 @@
 #pragma once
 // fogbench-cli commands around session files (.fbs, docs/sessions.md):
 // recording a simulated run into a session, analysing a session (storing the
-// result), listing a folder of sessions, replaying a session's raw stream.
+// result), listing a folder of sessions, replaying a session's raw stream,
+// importing the CSV layout of docs/formats.md into a session and exporting a
+// session's samples, fits and residuals as CSV and its results as JSON.
 // Exit codes as everywhere in fogbench-cli: 0 ok, 1 the data gave no result,
 // 2 bad command line or input (one line on stderr saying what is wrong).
 
@@ -41,5 +43,7 @@ std::string analysisSettingsJson(const analysis::BenchConstants& constants, cons
 int analyzeSessionCommand(CliArguments& args, const std::string& path);  // analyze SESSION.fbs
 int sessionsCommand(CliArguments& args);                                  // sessions DIR
 int replayCommand(CliArguments& args);                                    // replay SESSION.fbs
+int importCommand(CliArguments& args);                                    // import DIR|FILES --out SESSION.fbs
+int exportCommand(CliArguments& args);                                    // export SESSION.fbs --csv DIR / --results-json F
 
 }  // namespace fog::app

@@ -1,8 +1,12 @@
 # Session files end to end (docs/sessions.md):
 #   run --out S.fbs -> analyze S.fbs gives the same delay lines (stored as a
 #   new result), replay --afap gives them too, sessions DIR lists S.fbs with
-#   its operator, IMU and lag; bad files exit 2 with a one-line reason.
-#   -DCLI=path -DDIR=scratch folder
+#   its operator, IMU and lag; export --csv -> import -> analyze gives the
+#   same delay lines to the last printed digit; export --results-json holds
+#   the stored results; bad files exit 2 with a one-line reason.
+#   With -DHAVE_REPORT=ON, the calibration report of the recorded and of the
+#   imported session, with the session's identity on it.
+#   -DCLI=path -DDIR=scratch folder [-DHAVE_REPORT=ON]
 set(dir ${DIR}/sessions_test)
 file(REMOVE_RECURSE ${dir})
 file(MAKE_DIRECTORY ${dir})
@@ -73,6 +77,49 @@ if(NOT results EQUAL 2 OR NOT skipped EQUAL 1)
   message(FATAL_ERROR "sessions --json: expected 2 results (run, analyze) and 1 skipped file:\n${json_out}")
 endif()
 
+# Export -> import -> analyze: the same delay lines to the last printed digit.
+run_ok(export_out export ${s} --csv ${dir}/export --results-json ${dir}/results.json)
+foreach(f metadata.json table.csv gyro.csv fits.csv residuals_1.csv report.json)
+  if(NOT EXISTS ${dir}/export/${f})
+    message(FATAL_ERROR "export --csv did not write ${f}:\n${export_out}")
+  endif()
+endforeach()
+file(READ ${dir}/results.json results_json)
+string(JSON n_stored LENGTH "${results_json}" stored_results)
+string(JSON current_lag GET "${results_json}" current_analysis report test_points 0 lag_ms)
+string(JSON stored_operator GET "${results_json}" session operator)
+if(NOT n_stored EQUAL 2 OR NOT current_lag MATCHES "^0\\.4" OR NOT stored_operator STREQUAL "Ann Lee")
+  message(FATAL_ERROR "export --results-json: expected 2 stored results, a lag and the operator:\n${results_json}")
+endif()
+run_ok(import_out import ${dir}/export --out ${dir}/imported.fbs)
+if(NOT import_out MATCHES "Imported 1 test point\\(s\\), 12000 table and 6000 gyro samples")
+  message(FATAL_ERROR "import does not say what it read:\n${import_out}")
+endif()
+run_ok(reimport_out analyze ${dir}/imported.fbs)
+delay_lines(d "${reimport_out}")
+if(NOT a STREQUAL d)
+  message(FATAL_ERROR "run --out and export -> import -> analyze differ:\n${a}\nvs\n${d}")
+endif()
+run_ok(reimport_list sessions ${dir})
+if(NOT reimport_list MATCHES "imported\\.fbs +[0-9T:-]+Z +Ann Lee +FOG-9 SN-77 +z +complete")
+  message(FATAL_ERROR "the imported session does not keep the metadata:\n${reimport_list}")
+endif()
+expect_bad_file("is not empty.*--overwrite" export ${s} --csv ${dir}/export)
+run_ok(overwrite_out export ${s} --csv ${dir}/export --overwrite)
+expect_bad_file("already exists; add --overwrite" export ${s} --results-json ${dir}/results.json)
+expect_bad_file("needs --csv DIR and/or --results-json" export ${s})
+expect_bad_file("already exists" import ${dir}/export --out ${s})
+expect_bad_file("import needs --out" import ${dir}/export)
+file(MAKE_DIRECTORY ${dir}/broken)
+file(COPY ${dir}/export/metadata.json ${dir}/export/gyro.csv DESTINATION ${dir}/broken)
+file(STRINGS ${dir}/export/table.csv table_lines LIMIT_COUNT 3)
+list(GET table_lines 1 table_header)  # line 1 is a comment
+file(WRITE ${dir}/broken/table.csv "${table_header}\n1,0.001,abc,0,0\n")
+expect_bad_file("table\\.csv.*line 2.*x_deg" import ${dir}/broken --out ${dir}/broken.fbs)
+if(EXISTS ${dir}/broken.fbs)
+  message(FATAL_ERROR "a failed import left a session file behind")
+endif()
+
 # Bad files: exit 2, one line saying what is wrong.
 expect_bad_file("already exists" run --preset paper-fast --out ${s})
 expect_bad_file("no such file" replay ${dir}/missing.fbs --afap)
@@ -84,3 +131,19 @@ expect_bad_file("is truncated" analyze ${dir}/truncated.fbs)
 expect_bad_file("is truncated" replay ${dir}/truncated.fbs --afap)
 expect_bad_file("is not a folder" sessions ${dir}/notes.txt)
 expect_bad_file("not both" replay ${s} --afap --speed 2)
+
+if(HAVE_REPORT)
+  foreach(name run1 imported)
+    run_ok(report_out report ${dir}/${name}.fbs --pdf ${dir}/${name}.pdf)
+    if(NOT report_out MATCHES "test point 1: PASS: IMU delay 0\\.5[0-9]+ ±" OR NOT EXISTS ${dir}/${name}.pdf)
+      message(FATAL_ERROR "report of ${name}.fbs:\n${report_out}")
+    endif()
+  endforeach()
+  # A session's own constants are used: a larger board delay does not change the
+  # IMU delay, a larger read delay does (0.05 -> 0.45 ms fails the 0.8 ms limit).
+  run_ok(report_out report ${s} --pdf ${dir}/late.pdf --read-delay-ms 0.45)
+  if(NOT report_out MATCHES "FAIL: IMU delay 0\\.9")
+    message(FATAL_ERROR "report --read-delay-ms 0.45 did not move the IMU delay:\n${report_out}")
+  endif()
+  expect_bad_file("is truncated" report ${dir}/truncated.fbs --pdf ${dir}/t.pdf)
+endif()

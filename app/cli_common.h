@@ -1,0 +1,36 @@
+#pragma once
+// Pieces every fogbench-cli command shares: the one-line error convention,
+// exit codes, the bench-constant options and the named test plans.
+//
+// Exit codes: 0 ok, 1 the data gave no result (too little data, no
+// convergence), 2 bad command line or input (one line on stderr).
+
+#include <string>
+
+#include "analysis/delay_analysis.h"
+#include "cli_arguments.h"
+#include "common/session_info.h"
+#include "common/status.h"
+#include "common/test_plan.h"
+
+namespace fog::app {
+
+// Prints "fogbench-cli: <message>" on stderr and returns `code`.
+int fail(const Status& s, int code);
+// 1 for kInsufficientData / kNotConverged, 2 for everything else.
+int exitCodeFor(const Status& s);
+
+// The bench constants as the session (or the defaults) has them, each
+// overridable on the command line: --read-delay-ms, --read-delay-std-ms,
+// --board-delay-ms, --board-delay-std-ms, --pulse-equivalent-deg.
+Result<analysis::BenchConstants> readConstants(CliArguments& args, const BenchSettings& defaults = {});
+// A session's bench settings as the analysis takes them.
+analysis::BenchConstants constantsOf(const BenchSettings& bench);
+// Writes the constants back into the settings a session stores.
+void storeConstants(const analysis::BenchConstants& constants, BenchSettings& bench);
+
+// The named plans of `run --preset` and `report --preset`: paper (both paper
+// conditions on X), paper-slow (0.1 Hz / 10 deg), paper-fast (1 Hz / 3 deg).
+Result<TestPlan> presetPlan(const std::string& name);
+
+}  // namespace fog::app
