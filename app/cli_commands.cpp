@@ -12,6 +12,8 @@
 #include <sstream>
 #include <thread>
 
+#include "acquisition/acquisition.h"
+#include "acquisition/simulator_source.h"
 #include "analysis/delay_analysis.h"
 #include "analysis/report_writer.h"
 #include "analysis/statistics.h"
@@ -118,12 +120,38 @@ int printReport(const Result<analysis::DelayReport>& report, const analysis::Rep
   return 0;
 }
 
+// Copies every byte a source delivers into a file (--save-raw) on its way
+// to the acquisition.
+class RawFileTee : public acquisition::ByteSource {
+ public:
+  RawFileTee(acquisition::ByteSource& inner, const std::string& path)
+      : inner_(inner), file_(path, std::ios::binary | std::ios::trunc) {}
+  bool isOpen() const { return file_.is_open(); }
+  bool close() {
+    file_.close();
+    return !file_.fail();
+  }
+  Result<acquisition::ReadOutcome> read(std::vector<std::uint8_t>& out, std::chrono::milliseconds timeout) override {
+    const std::size_t before = out.size();
+    auto r = inner_.read(out, timeout);
+    file_.write(reinterpret_cast<const char*>(out.data() + before), static_cast<std::streamsize>(out.size() - before));
+    return r;
+  }
+  std::string description() const override { return inner_.description(); }
+
+ private:
+  acquisition::ByteSource& inner_;
+  std::ofstream file_;
+};
+
 }  // namespace
 
 int runCommand(CliArguments& args) {
   const bool json = args.flag("json");
   auto source = args.text("source").value_or("sim");
   auto savePath = args.text("save-raw");
+  auto speed = args.number("speed", 0.0);
+  if (!speed) return fail(speed.status(), 2);
   auto constants = readConstants(args);
   if (!constants) return fail(constants.status(), 2);
   auto plan = readPlan(args);
@@ -135,25 +163,31 @@ int runCommand(CliArguments& args) {
   if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
   if (!args.positionals().empty()) return fail(invalidArgument("unexpected argument '" + args.positionals()[0] + "'"), 2);
   if (source != "sim") return fail(invalidArgument("source '" + source + "' is not available; use --source sim"), 2);
+  if (*speed < 0) return fail(invalidArgument("--speed must be >= 0 (1 = real time, 0 = as fast as possible)"), 2);
 
-  auto run = model::simulate(*config, *plan);
-  if (!run) return fail(run.status(), 2);
-  if (savePath) {
-    std::ofstream out(*savePath, std::ios::binary);
-    out.write(reinterpret_cast<const char*>(run->bytes.data()), static_cast<std::streamsize>(run->bytes.size()));
-    if (!out) return fail(ioError("cannot write raw stream to '" + *savePath + "'"), 2);
-  }
-  auto recording = protocol::decodeRecording(run->bytes);
-  if (!recording) return fail(recording.status(), 1);
-  analysis::ReportContext context;
-  context.source = "simulator, seed " + std::to_string(config->seed) + ", fogbench " + FOG_VERSION;
-  for (const auto& t : run->truth) context.trueLagMs.push_back(t.lagS * 1e3);
-  auto report = analysis::analyzeRecording(*recording, *constants);
+  auto simulator = acquisition::SimulatorSource::create(*config, *plan, *speed);
+  if (!simulator) return fail(simulator.status(), 2);
+  acquisition::AcquisitionOptions options;
+  options.constants = *constants;
+  options.reportContext.source = "simulator, seed " + std::to_string(config->seed) + ", fogbench " + FOG_VERSION;
+  for (const auto& t : (*simulator)->truth()) options.reportContext.trueLagMs.push_back(t.lagS * 1e3);
   if (*sessionOut) {
-    auto s = recordSimulatedSession(**sessionOut, *plan, *config, *constants, run->bytes, *recording, report, context);
-    if (!s.isOk()) return fail(s, 2);
+    options.sessionPath = (*sessionOut)->path;
+    options.info = simulatedSessionInfo((*sessionOut)->info, *plan, *config, *constants);
+    options.info.source = options.reportContext.source;
   }
-  return printReport(report, context, json);
+  std::unique_ptr<RawFileTee> tee;
+  acquisition::ByteSource* from = simulator->get();
+  if (savePath) {
+    tee = std::make_unique<RawFileTee>(*from, *savePath);
+    if (!tee->isOpen()) return fail(ioError("cannot write raw stream to '" + *savePath + "'"), 2);
+    from = tee.get();
+  }
+  auto run = acquisition::acquire(*from, options, nullptr);
+  if (!run) return fail(run.status(), 2);
+  if (tee && !tee->close()) return fail(ioError("cannot write raw stream to '" + *savePath + "'"), 2);
+  if (!run->recordingStatus.isOk()) return fail(run->recordingStatus, 1);
+  return printReport(run->report, options.reportContext, json);
 }
 
 int analyzeCommand(CliArguments& args) {

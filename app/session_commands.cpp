@@ -9,10 +9,11 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_common.h"
+#include "acquisition/acquisition.h"
+#include "acquisition/replay_source.h"
 #include "common/version.h"
 #include "io/csv_export.h"
 #include "io/csv_import.h"
-#include "session/replay.h"
 #include "session/session_file.h"
 
 namespace fog::app {
@@ -41,17 +42,6 @@ std::string axesOf(const TestPlan& plan) {
 
 }  // namespace
 
-std::string analysisSettingsJson(const analysis::BenchConstants& c, const std::string& how) {
-  json doc = {{"table_read_delay_ms", c.tableReadDelayMs},
-              {"table_read_delay_std_ms", c.tableReadDelayStdMs},
-              {"board_delay_ms", c.boardDelayMs},
-              {"board_delay_std_ms", c.boardDelayStdMs},
-              {"pulse_equivalent_deg", c.pulseEquivalentDeg},
-              {"software_version", FOG_VERSION},
-              {"analysed_by", how}};
-  return doc.dump();
-}
-
 Result<std::optional<SessionOutput>> readSessionOutput(CliArguments& args) {
   auto out = args.text("out");
   auto op = args.text("operator");
@@ -76,12 +66,9 @@ Result<std::optional<SessionOutput>> readSessionOutput(CliArguments& args) {
   return std::optional<SessionOutput>(std::move(s));
 }
 
-Status recordSimulatedSession(const SessionOutput& out, const TestPlan& plan, const model::SimConfig& config,
-                              const analysis::BenchConstants& constants, const std::vector<std::uint8_t>& bytes,
-                              const Recording& recording, const Result<analysis::DelayReport>& report,
-                              const analysis::ReportContext& context) {
-  SessionInfo info = out.info;
-  info.source = context.source;
+SessionInfo simulatedSessionInfo(const SessionInfo& given, const TestPlan& plan, const model::SimConfig& config,
+                                 const analysis::BenchConstants& constants) {
+  SessionInfo info = given;
   info.softwareVersion = FOG_VERSION;
   info.createdUtc = session::utcNow();
   info.plan = plan;
@@ -90,17 +77,7 @@ Status recordSimulatedSession(const SessionOutput& out, const TestPlan& plan, co
   info.bench.pulseEquivalentDeg = config.fog.pulseEquivalentDeg;
   info.bench.counterHz = config.samplingBoard.counterHz;
   info.bench.counterBits = config.samplingBoard.counterBits;
-  auto writer = session::SessionWriter::create(out.path, info);
-  if (!writer) return writer.status();
-  // In serial-read-sized pieces, as a live source delivers them.
-  constexpr std::size_t kChunk = 4096;
-  for (std::size_t at = 0; at < bytes.size(); at += kChunk)
-    if (auto s = (*writer)->appendRaw(bytes.data() + at, std::min(kChunk, bytes.size() - at)); !s.isOk()) return s;
-  if (auto s = (*writer)->storeRecording(recording); !s.isOk()) return s;
-  if (auto s = (*writer)->finish(true, ""); !s.isOk()) return s;
-  if (!report) return Status::ok();
-  return session::addResult(out.path, analysisSettingsJson(constants, "fogbench-cli run"),
-                            analysis::formatReportJson(*report, context));
+  return info;
 }
 
 int analyzeSessionCommand(CliArguments& args, const std::string& path) {
@@ -125,7 +102,7 @@ int analyzeSessionCommand(CliArguments& args, const std::string& path) {
                      : analysis::formatReportText(*report, context));
   if (noStore) return 0;
   reader->reset();  // close before writing
-  if (auto s = session::addResult(path, analysisSettingsJson(*constants, "fogbench-cli analyze"),
+  if (auto s = session::addResult(path, acquisition::analysisSettingsJson(*constants, "fogbench-cli analyze"),
                                   analysis::formatReportJson(*report, context));
       !s.isOk())
     return fail(Status(s.code(), "the report above was not stored: " + s.message()), 2);
@@ -258,16 +235,18 @@ int replayCommand(CliArguments& args) {
   auto bytes = (*reader)->rawBytes();
   if (!bytes) return fail(bytes.status(), 2);
 
-  session::ReplayOptions options;
-  options.speed = afap ? 0.0 : *speed;
-  if (!afap)
-    std::cerr << "fogbench-cli: replaying " << path << " at " << *speed << "x (Ctrl-C stops)\n";
-  auto replayed = session::replay(*bytes, options);
-  if (!replayed) return fail(Status(replayed.status().code(), path + ": " + replayed.status().message()),
-                             exitCodeFor(replayed.status()));
+  acquisition::ReplaySource source(std::move(*bytes), afap ? 0.0 : *speed, "session " + path);
+  if (!afap) std::cerr << "fogbench-cli: " << source.description() << " (Ctrl-C stops)\n";
+  acquisition::AcquisitionOptions options;
+  options.constants = *constants;
+  auto replayed = acquisition::acquire(source, options, nullptr);
+  if (!replayed) return fail(replayed.status(), 2);
+  if (!replayed->recordingStatus.isOk())
+    return fail(Status(replayed->recordingStatus.code(), path + ": " + replayed->recordingStatus.message()),
+                exitCodeFor(replayed->recordingStatus));
   analysis::ReportContext context;
   context.source = sessionSource(**reader, "replay of session");
-  auto report = analysis::analyzeRecording(replayed->recording, *constants);
+  const auto& report = replayed->report;
   if (!report) return fail(report.status(), exitCodeFor(report.status()));
   std::cout << (json ? analysis::formatReportJson(*report, context) + "\n"
                      : analysis::formatReportText(*report, context));
@@ -380,7 +359,7 @@ int exportCommand(CliArguments& args) {
                   {"raw_bytes", (*reader)->rawByteCount()}}},
                 {"stored_results", results},
                 {"current_analysis",
-                 report ? json{{"settings", json::parse(analysisSettingsJson(*constants, "fogbench-cli export"))},
+                 report ? json{{"settings", json::parse(acquisition::analysisSettingsJson(*constants, "fogbench-cli export"))},
                                {"report", json::parse(analysis::formatReportJson(*report, context))}}
                         : json{{"error", report.status().message()}}}};
     std::ofstream file(*jsonPath, std::ios::binary | std::ios::trunc);

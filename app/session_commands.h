@@ -29,16 +29,11 @@ struct SessionOutput {
 // --out; an error when metadata options come without --out or the file exists.
 Result<std::optional<SessionOutput>> readSessionOutput(CliArguments& args);
 
-// Records a simulated run into a new session: the raw bytes streamed in
-// through appendRaw (as a live source would), the decoded recording, and -
-// when the analysis gave a report - that report with the settings behind it.
-Status recordSimulatedSession(const SessionOutput& out, const TestPlan& plan, const model::SimConfig& config,
-                              const analysis::BenchConstants& constants, const std::vector<std::uint8_t>& bytes,
-                              const Recording& recording, const Result<analysis::DelayReport>& report,
-                              const analysis::ReportContext& context);
-
-// The settings a result was produced with, stored beside it.
-std::string analysisSettingsJson(const analysis::BenchConstants& constants, const std::string& how);
+// The metadata of a session recorded from the simulator: what the command
+// line gave, plus the plan, the bench constants and the simulated chain's
+// latitude, pulse equivalent and counter.
+SessionInfo simulatedSessionInfo(const SessionInfo& given, const TestPlan& plan, const model::SimConfig& config,
+                                 const analysis::BenchConstants& constants);
 
 int analyzeSessionCommand(CliArguments& args, const std::string& path);  // analyze SESSION.fbs
 int sessionsCommand(CliArguments& args);                                  // sessions DIR

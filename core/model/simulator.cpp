@@ -237,12 +237,15 @@ void Simulator::start() { impl_ = std::make_unique<Impl>(config_, turntable_, ef
 
 bool Simulator::advance(double untilS, std::vector<std::uint8_t>& out) {
   if (!impl_) start();
-  const double until = std::min(untilS, endS() + 1e-9);
+  // Frames stamped at endS() itself belong to the plan: the stream ends just
+  // after it, so only a step past endS() emits the last of them.
+  const double last = endS() + 1e-9;
+  const double until = std::min(untilS, last);
   if (until > nowS_) {
     impl_->advance(until, out);
     nowS_ = until;
   }
-  return nowS_ < endS();
+  return nowS_ < last;
 }
 
 void Simulator::runToEnd(std::vector<std::uint8_t>& out) { advance(endS() + 1.0, out); }

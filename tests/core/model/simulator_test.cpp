@@ -42,6 +42,21 @@ TEST(Simulator, ChunkedAdvanceEqualsOneRun) {
   EXPECT_EQ(bytes, whole->bytes);
 }
 
+TEST(Simulator, ChunkedAdvanceLandingOnTheEndEqualsOneRun) {
+  // Steps that land exactly on the end of the plan must still emit the frames
+  // stamped at that instant (a paced source steps to round times).
+  SimConfig c;
+  auto whole = simulate(c, shortPlan());
+  ASSERT_TRUE(whole.isOk());
+  auto sim = Simulator::create(c, shortPlan());
+  ASSERT_TRUE(sim.isOk());
+  const double step = (*sim)->endS() / 8.0;
+  std::vector<std::uint8_t> bytes;
+  for (int i = 1; (*sim)->advance(step * i, bytes); ++i) {
+  }
+  EXPECT_EQ(bytes, whole->bytes);
+}
+
 TEST(Simulator, RefusesImpossibleConfigurations) {
   SimConfig c;
   c.fog.setOwnDelayS(0.9e-3);  // beyond one 0.5 ms pulse update period

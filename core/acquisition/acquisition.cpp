@@ -1,0 +1,143 @@
+#include "acquisition/acquisition.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "common/version.h"
+#include "protocol/recording_builder.h"
+#include "session/session_file.h"
+
+namespace fog::acquisition {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
+
+std::string fixed1(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.1f", v);
+  return b;
+}
+
+// Same verdicts as protocol::decodeRecording, so live, replayed and decoded
+// data fail alike.
+Status usability(bool anyFrames, const Recording& rec, std::uint64_t bytes) {
+  if (!anyFrames)
+    return corruptData("no valid sampling-board frames found in " + std::to_string(bytes) +
+                       " bytes; is this a fogbench raw stream, or is the baud rate wrong?");
+  const bool usable = std::any_of(rec.testPoints.begin(), rec.testPoints.end(),
+                                  [](const TestPointData& tp) { return !tp.table.empty() && !tp.imu.empty(); });
+  if (!usable) return insufficientData("the stream holds no test point with both table and IMU samples");
+  return Status::ok();
+}
+
+}  // namespace
+
+std::string analysisSettingsJson(const analysis::BenchConstants& c, const std::string& producedBy) {
+  nlohmann::json doc = {{"table_read_delay_ms", c.tableReadDelayMs},
+                        {"table_read_delay_std_ms", c.tableReadDelayStdMs},
+                        {"board_delay_ms", c.boardDelayMs},
+                        {"board_delay_std_ms", c.boardDelayStdMs},
+                        {"pulse_equivalent_deg", c.pulseEquivalentDeg},
+                        {"software_version", FOG_VERSION},
+                        {"analysed_by", producedBy}};
+  return doc.dump();
+}
+
+Result<AcquisitionResult> acquire(ByteSource& source, const AcquisitionOptions& options,
+                                  const std::atomic<bool>* stop,
+                                  const std::function<void(AcquisitionBatch&&)>& observer) {
+  std::unique_ptr<session::SessionWriter> writer;
+  if (!options.sessionPath.empty()) {
+    SessionInfo info = options.info;
+    if (info.source.empty()) info.source = source.description();
+    auto created = session::SessionWriter::create(options.sessionPath, info);
+    if (!created) return created.status();
+    writer = std::move(*created);
+  }
+
+  protocol::Decoder decoder;
+  protocol::RecordingBuilder builder;
+  std::vector<std::uint8_t> bytes;
+  std::vector<protocol::DecodedFrame> decoded;
+  AcquisitionBatch batch;
+  AcquisitionResult result;
+  const auto started = Clock::now();
+  auto lastBatch = started;
+  auto lastByte = started;
+  bool ended = false;
+
+  auto deliver = [&](Clock::time_point now) {
+    lastBatch = now;
+    if (!observer) {
+      batch.frames.clear();
+      return;
+    }
+    batch.health = decoder.health();
+    batch.bytesReceived = result.bytesReceived;
+    batch.bytesCommitted = writer ? writer->committedBytes() : 0;
+    batch.silentForS = now - lastByte >= options.stallWarning ? seconds(now - lastByte) : 0.0;
+    observer(std::move(batch));
+    batch = AcquisitionBatch{};
+  };
+
+  while (!ended) {
+    if (stop && stop->load()) {
+      result.incompleteReason = "stopped by the operator after " + fixed1(seconds(Clock::now() - started)) + " s";
+      break;
+    }
+    bytes.clear();
+    auto got = source.read(bytes, options.readTimeout);
+    const auto now = Clock::now();
+    if (!got) {
+      result.incompleteReason = got.status().message() + " (after " + fixed1(seconds(now - started)) + " s)";
+      break;
+    }
+    ended = got->endOfStream;
+    if (!bytes.empty()) {
+      lastByte = now;
+      result.bytesReceived += bytes.size();
+      if (writer) {
+        // Stored before anything else happens to them.
+        if (auto s = writer->appendRaw(bytes.data(), bytes.size()); !s.isOk()) return s;
+      }
+      decoded.clear();
+      decoder.push(bytes, decoded);
+      builder.add(decoded);
+      batch.frames.insert(batch.frames.end(), decoded.begin(), decoded.end());
+    } else if (writer) {
+      // A quiet line still commits what is buffered on time.
+      if (auto s = writer->appendRaw(nullptr, 0); !s.isOk()) return s;
+    }
+    if (now - lastBatch >= options.batchInterval) deliver(now);
+  }
+  result.complete = ended && result.incompleteReason.empty();
+  deliver(Clock::now());
+
+  const bool anyFrames = builder.framesAdded() > 0;
+  result.recording = builder.finish(decoder.health());
+  result.recordingStatus = usability(anyFrames, result.recording, result.bytesReceived);
+  if (result.recordingStatus.isOk()) result.report = analysis::analyzeRecording(result.recording, options.constants);
+  else result.report = result.recordingStatus;
+
+  if (writer) {
+    if (anyFrames)
+      if (auto s = writer->storeRecording(result.recording); !s.isOk()) return s;
+    if (auto s = writer->finish(result.complete, result.incompleteReason); !s.isOk()) return s;
+    result.sessionPath = options.sessionPath;
+    writer.reset();
+    if (result.report) {
+      if (auto s = session::addResult(options.sessionPath, analysisSettingsJson(options.constants, "acquisition"),
+                                      analysis::formatReportJson(*result.report, options.reportContext));
+          !s.isOk())
+        return s;
+    }
+  }
+  return result;
+}
+
+}  // namespace fog::acquisition

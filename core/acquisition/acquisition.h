@@ -1,0 +1,82 @@
+#pragma once
+// One acquisition run: bytes from a ByteSource are recorded into a session
+// file as they arrive (crash-safe, docs/sessions.md), decoded by the same
+// decoder every source uses, handed to an observer in batches for live
+// display, and at the end stored as decoded samples and analysed.
+//
+//   std::atomic<bool> stop{false};
+//   AcquisitionOptions o; o.sessionPath = "run1.fbs"; o.info = ...; o.constants = ...;
+//   auto r = acquire(source, o, &stop, [&](AcquisitionBatch&& b) { queue.push(std::move(b)); });
+//
+// Contracts:
+//  - Runs in the calling thread until the source ends, `stop` becomes true,
+//    or the source fails. The observer is called from that thread, about
+//    every batchInterval while data flows (and at least every stallWarning
+//    while it does not); it must not block for long (hand the batch to
+//    another thread). The engine never waits on its observer's consumer.
+//  - Nothing received is ever lost: every byte goes to the session before it
+//    is decoded. A stop or a source failure ends the run as incomplete, with
+//    the reason in the session ("stopped by the operator after 12.3 s",
+//    "serial port vanished: ..."), and everything received so far is stored
+//    and analysed like a complete run.
+//  - The returned Result is an error only when nothing could be recorded
+//    (the session file could not be created, or writing to it failed:
+//    then the run stops at once, because recording without storing is what
+//    the bench must never do). Data problems are not errors: the analysis
+//    status says why no delay was reported.
+//  - Without a sessionPath nothing is written (the command line's quick runs).
+
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "acquisition/byte_source.h"
+#include "analysis/delay_analysis.h"
+#include "analysis/report_writer.h"
+#include "common/recording.h"
+#include "common/session_info.h"
+#include "common/status.h"
+#include "protocol/decoder.h"
+
+namespace fog::acquisition {
+
+struct AcquisitionOptions {
+  std::string sessionPath;  // empty: do not record
+  SessionInfo info;         // stored in the session (plan, bench constants, who, source)
+  analysis::BenchConstants constants;
+  analysis::ReportContext reportContext;  // source line and truth for the stored report
+  std::chrono::milliseconds readTimeout{20};
+  std::chrono::milliseconds batchInterval{33};  // ~30 batches per second
+  std::chrono::milliseconds stallWarning{1000}; // "no data for 1.0 s" from here on
+};
+
+struct AcquisitionBatch {
+  std::vector<protocol::DecodedFrame> frames;  // new since the previous batch, stream order
+  StreamHealth health;                         // decoder counters so far
+  std::uint64_t bytesReceived = 0;
+  std::uint64_t bytesCommitted = 0;            // safely in the session file
+  double silentForS = 0.0;                     // > 0: no byte has arrived for this long
+};
+
+struct AcquisitionResult {
+  bool complete = false;         // the source ended by itself
+  std::string incompleteReason;  // why not
+  std::uint64_t bytesReceived = 0;
+  std::string sessionPath;       // empty when nothing was recorded
+  Recording recording;           // decoded; empty test points when nothing decodable arrived
+  Status recordingStatus;        // ok, or why the stream gave no usable test point
+  Result<analysis::DelayReport> report = Status(StatusCode::kInsufficientData, "not analysed");
+};
+
+Result<AcquisitionResult> acquire(ByteSource& source, const AcquisitionOptions& options,
+                                  const std::atomic<bool>* stop,
+                                  const std::function<void(AcquisitionBatch&&)>& observer = {});
+
+// The settings a stored result was produced with (bench constants, software
+// version, what produced it), as JSON.
+std::string analysisSettingsJson(const analysis::BenchConstants& constants, const std::string& producedBy);
+
+}  // namespace fog::acquisition

@@ -1,0 +1,48 @@
+#include "acquisition/simulator_source.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace fog::acquisition {
+
+namespace {
+// As fast as possible, the simulator still hands out its stream in pieces so
+// that a consumer can show progress and stop it.
+constexpr double kUnpacedStepS = 0.25;
+// When paced, bytes are released in steps no finer than this (a serial read).
+constexpr double kPacedStepS = 0.005;
+}  // namespace
+
+Result<std::unique_ptr<SimulatorSource>> SimulatorSource::create(
+    const model::SimConfig& config, const TestPlan& plan, double speed,
+    std::vector<std::unique_ptr<model::Effect>> effects) {
+  auto sim = model::Simulator::create(config, plan);
+  if (!sim) return sim.status();
+  for (auto& e : effects) (*sim)->addEffect(std::move(e));
+  return std::unique_ptr<SimulatorSource>(new SimulatorSource(std::move(*sim), speed));
+}
+
+Result<ReadOutcome> SimulatorSource::read(std::vector<std::uint8_t>& out, std::chrono::milliseconds timeout) {
+  if (ended_) return ReadOutcome{0, true};
+  const std::size_t before = out.size();
+  double untilS = 0.0;
+  if (clock_.asFastAsPossible()) {
+    untilS = simulator_->timeS() + kUnpacedStepS;
+  } else {
+    if (!clock_.waitFor(simulator_->timeS() + kPacedStepS, timeout)) return ReadOutcome{0, false};
+    untilS = clock_.streamTimeNowS();
+  }
+  const bool more = simulator_->advance(untilS, out);
+  ended_ = !more;
+  return ReadOutcome{out.size() - before, ended_};
+}
+
+std::string SimulatorSource::description() const {
+  char speed[48];
+  if (clock_.asFastAsPossible()) std::snprintf(speed, sizeof speed, "as fast as possible");
+  else if (clock_.speed() == 1.0) std::snprintf(speed, sizeof speed, "real time");
+  else std::snprintf(speed, sizeof speed, "%gx real time", clock_.speed());
+  return "simulator, seed " + std::to_string(simulator_->config().seed) + ", " + speed;
+}
+
+}  // namespace fog::acquisition

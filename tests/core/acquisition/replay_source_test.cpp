@@ -1,0 +1,83 @@
+// ReplaySource: a recorded stream through the same acquisition path as a live
+// source, paced by its own board counter or as fast as possible.
+
+#include "acquisition/replay_source.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+
+#include "acquisition/acquisition.h"
+#include "protocol/recording_builder.h"
+#include "session_test_util.h"
+
+namespace fog::acquisition {
+namespace {
+
+double secondsToAcquire(ByteSource& source, AcquisitionResult* out) {
+  const auto start = std::chrono::steady_clock::now();
+  auto r = acquire(source, AcquisitionOptions{}, nullptr);
+  const double took = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_TRUE(r.isOk()) << r.status().message();
+  if (r && out) *out = std::move(*r);
+  return took;
+}
+
+TEST(ReplaySource, HandsOutEveryByteOnceInOrder) {
+  const auto& bytes = fog::test::shortRun().bytes;
+  ReplaySource source(bytes, 0.0, "test");
+  std::vector<std::uint8_t> seen;
+  for (int guard = 0; guard < 100000; ++guard) {
+    auto r = source.read(seen, std::chrono::milliseconds(10));
+    ASSERT_TRUE(r.isOk());
+    if (r->endOfStream) break;
+  }
+  EXPECT_TRUE(seen == bytes);
+  EXPECT_EQ(source.bytesRead(), bytes.size());
+  EXPECT_EQ(source.description(), "replay of test at as fast as possible");
+}
+
+TEST(ReplaySource, AsFastAsPossibleGivesTheSameRecordingAsDecoding) {
+  const auto& bytes = fog::test::shortRun().bytes;
+  ReplaySource source(bytes, 0.0, "test");
+  AcquisitionResult r;
+  secondsToAcquire(source, &r);
+  EXPECT_TRUE(r.complete);
+  EXPECT_EQ(r.bytesReceived, bytes.size());
+  auto direct = protocol::decodeRecording(bytes);
+  ASSERT_TRUE(direct.isOk());
+  ASSERT_TRUE(r.recordingStatus.isOk());
+  fog::test::expectSameRecording(r.recording, *direct);
+}
+
+TEST(ReplaySource, RealTimePacingTakesAboutTheStreamsDuration) {
+  // The first 2 s of the 12-s stream at 1x: at least 1.5 s of wall-clock time
+  // (no upper bound: a busy machine may be late).
+  const auto& all = fog::test::shortRun().bytes;
+  ReplaySource source(std::vector<std::uint8_t>(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(all.size() / 6)),
+                      1.0, "test");
+  EXPECT_GE(secondsToAcquire(source, nullptr), 1.5);
+}
+
+TEST(ReplaySource, SpeedUpShortensThePacing) {
+  // 12 s of stream at 10x: at least 1.1 s, and still the same recording.
+  const auto& bytes = fog::test::shortRun().bytes;
+  ReplaySource source(bytes, 10.0, "test");
+  AcquisitionResult r;
+  EXPECT_GE(secondsToAcquire(source, &r), 1.1);
+  fog::test::expectSameRecording(r.recording, *protocol::decodeRecording(bytes));
+}
+
+TEST(ReplaySource, GarbageFailsLikeDecoding) {
+  std::vector<std::uint8_t> junk(5000, 0x11);
+  ReplaySource source(junk, 0.0, "junk");
+  AcquisitionResult r;
+  secondsToAcquire(source, &r);
+  EXPECT_TRUE(r.complete);
+  EXPECT_EQ(r.recordingStatus.code(), StatusCode::kCorruptData);
+  EXPECT_EQ(r.recordingStatus.message(), protocol::decodeRecording(junk).status().message());
+  EXPECT_FALSE(r.report.isOk());
+}
+
+}  // namespace
+}  // namespace fog::acquisition
