@@ -1,0 +1,106 @@
+#include "acquisition/live_traces.h"
+
+#include <Eigen/Cholesky>
+#include <cmath>
+#include <numbers>
+#include <variant>
+
+namespace fog::acquisition {
+
+LiveTraces::LiveTraces(double windowS) : windowS_(windowS > 0.0 ? windowS : 20.0) {}
+
+void LiveTraces::clear() { *this = LiveTraces(windowS_); }
+
+void LiveTraces::startTestPoint(int index, Axis axis, double frequencyHz) {
+  testPoint_ = index;
+  axis_ = axis;
+  frequencyHz_ = frequencyHz;
+  recordingStartS_ = -1.0;
+  pointStartS_ = streamTimeS_;
+  gyroAngleDeg_ = 0.0;
+  normal_.setZero();
+  rhs_.setZero();
+  fitSamples_ = 0;
+  table_.clear();
+  gyro_.clear();
+}
+
+Eigen::Vector4d LiveTraces::basis(double t) const {
+  const double x = t - pointStartS_;
+  if (!(frequencyHz_ > 0.0)) return {1.0, x, 0.0, 0.0};
+  const double w = 2.0 * std::numbers::pi * frequencyHz_;
+  return {1.0, x, std::sin(w * x), std::cos(w * x)};
+}
+
+void LiveTraces::add(std::span<const protocol::DecodedFrame> frames) {
+  for (const auto& f : frames) {
+    ++frames_;
+    if (!haveFirst_) {
+      haveFirst_ = true;
+      firstTicks_ = f.ticks;
+    }
+    if (const auto* s = std::get_if<protocol::StatusPayload>(&f.frame.payload)) {
+      if (s->counterHz > 0) counterHz_ = s->counterHz;
+      if (std::isfinite(s->pulseEquivalentDeg) && s->pulseEquivalentDeg > 0) pulseEquivalentDeg_ = s->pulseEquivalentDeg;
+    }
+    streamTimeS_ = static_cast<double>(f.ticks - firstTicks_) / counterHz_;
+    if (const auto* s = std::get_if<protocol::StatusPayload>(&f.frame.payload)) {
+      const int index = s->testPoint == protocol::kNoTestPoint ? -1 : s->testPoint;
+      if (index >= 0 && (index != testPoint_ || s->axis != static_cast<int>(axis_)) && s->axis < kAxisCount)
+        startTestPoint(index, static_cast<Axis>(s->axis), s->nominalFrequencyMicroHz * 1e-6);
+      if (s->phase == protocol::TestPhase::kRecording && phase_ != protocol::TestPhase::kRecording)
+        recordingStartS_ = streamTimeS_;
+      phase_ = s->phase;
+    } else if (const auto* t = std::get_if<protocol::TablePayload>(&f.frame.payload)) {
+      table_.push_back({streamTimeS_, t->angleMicroDeg[static_cast<std::size_t>(axis_)] * 1e-6});
+    } else if (const auto* g = std::get_if<protocol::ImuPayload>(&f.frame.payload)) {
+      // Raw pulses until the pulse equivalent is known: the shape is right,
+      // only the scale is not.
+      const double scale = pulseEquivalentDeg_ > 0.0 ? pulseEquivalentDeg_ : 1.0;
+      gyroAngleDeg_ += g->pulses[static_cast<std::size_t>(axis_)] * scale;
+      gyro_.push_back({streamTimeS_, gyroAngleDeg_});
+      const Eigen::Vector4d b = basis(streamTimeS_);
+      normal_.noalias() += b * b.transpose();
+      rhs_.noalias() += b * gyroAngleDeg_;
+      ++fitSamples_;
+    }
+  }
+  trim();
+}
+
+void LiveTraces::trim() {
+  const double oldest = streamTimeS_ - windowS_;
+  while (!table_.empty() && table_.front().timeS < oldest) table_.pop_front();
+  while (!gyro_.empty() && gyro_.front().timeS < oldest) gyro_.pop_front();
+}
+
+Eigen::Vector4d LiveTraces::trend() const {
+  // A handful of samples before anything is subtracted.
+  const bool sine = frequencyHz_ > 0.0;
+  if (fitSamples_ < 8) return Eigen::Vector4d::Zero();
+  if (!sine) {
+    const Eigen::Matrix2d n = normal_.topLeftCorner<2, 2>();
+    const Eigen::LDLT<Eigen::Matrix2d> ldlt(n);
+    if (ldlt.info() != Eigen::Success || !(ldlt.rcond() > 1e-12)) return Eigen::Vector4d::Zero();
+    const Eigen::Vector2d ab = ldlt.solve(rhs_.head<2>());
+    return {ab[0], ab[1], 0.0, 0.0};
+  }
+  const Eigen::LDLT<Eigen::Matrix4d> ldlt(normal_);
+  if (ldlt.info() != Eigen::Success || !(ldlt.rcond() > 1e-12)) return Eigen::Vector4d::Zero();
+  return ldlt.solve(rhs_);
+}
+
+double LiveTraces::gyroTrendDegPerS() const { return trend()[1]; }
+
+std::vector<LiveTraces::Point> LiveTraces::gyroDetrended() const {
+  const Eigen::Vector4d c = trend();
+  std::vector<Point> out;
+  out.reserve(gyro_.size());
+  for (const auto& p : gyro_) {
+    const double x = p.timeS - pointStartS_;
+    out.push_back({p.timeS, p.angleDeg - c[0] - c[1] * x});
+  }
+  return out;
+}
+
+}  // namespace fog::acquisition

@@ -1,0 +1,89 @@
+#pragma once
+// What the live plots show while a run is under way, computed from decoded
+// frames as they arrive: the table angle and the integrated gyro angle of the
+// axis that swings now, with the gyro's bias + Earth-rate trend removed on
+// the fly, over a scrolling window; and where the run stands (test point,
+// phase, board time).
+//
+// The trend is removed by a running least-squares fit of
+//   gyro angle = a + b t + c sin(w t) + d cos(w t)
+// over the current test point (w: the nominal swing frequency its STATUS
+// frames announce; without one, a straight line), so the display is level
+// from the first periods on, not only once the sinusoid has averaged out.
+// It is for display only: the analysis fits the recording afterwards.
+//
+// Plain C++, no Qt; not thread-safe (the GUI thread owns one).
+
+#include <array>
+#include <cstdint>
+#include <deque>
+#include <span>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "common/test_plan.h"
+#include "protocol/decoder.h"
+
+namespace fog::acquisition {
+
+class LiveTraces {
+ public:
+  // windowS: how much history the plots keep (board seconds).
+  explicit LiveTraces(double windowS = 20.0);
+
+  void add(std::span<const protocol::DecodedFrame> frames);
+  void clear();
+
+  struct Point {
+    double timeS;
+    double angleDeg;
+  };
+  // Within the last windowS of board time, oldest first.
+  const std::deque<Point>& table() const { return table_; }
+  // The integrated gyro angle with the current trend estimate removed.
+  std::vector<Point> gyroDetrended() const;
+  // The fitted trend (bias + Earth rate), deg/s; 0 until there is a fit.
+  double gyroTrendDegPerS() const;
+
+  int testPoint() const { return testPoint_; }  // -1 before a STATUS names one
+  Axis axis() const { return axis_; }
+  protocol::TestPhase phase() const { return phase_; }
+  double nominalFrequencyHz() const { return frequencyHz_; }
+  double streamTimeS() const { return streamTimeS_; }
+  // Board time at which the current test point entered its recording phase;
+  // negative while it has not.
+  double recordingStartS() const { return recordingStartS_; }
+  std::uint64_t framesSeen() const { return frames_; }
+
+ private:
+  void startTestPoint(int index, Axis axis, double frequencyHz);
+  void trim();
+  // The running fit's coefficients [a, b, c, d] (zeros when singular).
+  Eigen::Vector4d trend() const;
+  Eigen::Vector4d basis(double t) const;
+
+  double windowS_;
+  std::deque<Point> table_;
+  std::deque<Point> gyro_;  // raw integrated angle
+
+  bool haveFirst_ = false;
+  std::int64_t firstTicks_ = 0;
+  double counterHz_ = 10e6;
+  double pulseEquivalentDeg_ = 0.0;
+  double streamTimeS_ = 0.0;
+  std::uint64_t frames_ = 0;
+
+  int testPoint_ = -1;
+  Axis axis_ = Axis::kX;
+  protocol::TestPhase phase_ = protocol::TestPhase::kIdle;
+  double frequencyHz_ = 0.0;
+  double recordingStartS_ = -1.0;
+  double pointStartS_ = 0.0;  // origin of the fit's time axis (conditioning)
+  double gyroAngleDeg_ = 0.0;
+  Eigen::Matrix4d normal_ = Eigen::Matrix4d::Zero();
+  Eigen::Vector4d rhs_ = Eigen::Vector4d::Zero();
+  std::size_t fitSamples_ = 0;
+};
+
+}  // namespace fog::acquisition

@@ -1,0 +1,88 @@
+// LiveTraces: what the live plots show, from decoded frames as they arrive.
+
+#include "acquisition/live_traces.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "model/simulator.h"
+#include "session_test_util.h"
+
+namespace fog::acquisition {
+namespace {
+
+std::vector<protocol::DecodedFrame> decodeAll(const std::vector<std::uint8_t>& bytes) {
+  protocol::Decoder d;
+  std::vector<protocol::DecodedFrame> frames;
+  d.push(bytes, frames);
+  return frames;
+}
+
+TEST(LiveTraces, FollowsTheTestPointAndRemovesTheGyroTrend) {
+  // 1 Hz / 3 deg on Z for 8 s; a large bias (36 deg/h) so a trend left in
+  // would show: over 8 s it would add 0.08 deg.
+  model::SimConfig config;
+  config.fog.biasDegPerH = {0.0, 0.0, 36.0};
+  auto run = model::simulate(config, fog::test::shortPlan());
+  ASSERT_TRUE(run.isOk());
+  const auto frames = decodeAll(run->bytes);
+
+  LiveTraces live(5.0);
+  // In pieces, as the GUI drains them.
+  for (std::size_t at = 0; at < frames.size(); at += 50)
+    live.add(std::span(frames).subspan(at, std::min<std::size_t>(50, frames.size() - at)));
+
+  EXPECT_EQ(live.testPoint(), 0);
+  EXPECT_EQ(live.axis(), Axis::kZ);
+  EXPECT_DOUBLE_EQ(live.nominalFrequencyHz(), 1.0);
+  EXPECT_EQ(live.framesSeen(), frames.size());
+  EXPECT_NEAR(live.streamTimeS(), static_cast<double>(frames.back().ticks - frames.front().ticks) / 10e6, 1e-12);
+  // 1 s at rest, then 2 s of settling.
+  EXPECT_NEAR(live.recordingStartS(), 3.0, 0.11);
+
+  // The trend: the truth's bias + Earth rate, within 2 %.
+  const double truthTrend = run->truth.at(0).gyroTrendDegPerS;
+  EXPECT_NEAR(live.gyroTrendDegPerS(), truthTrend, 0.02 * std::abs(truthTrend));
+
+  // The window keeps the last 5 s; the detrended gyro swings like the table:
+  // same mean (within 0.005 deg) and amplitude (within 0.5 %).
+  ASSERT_FALSE(live.table().empty());
+  EXPECT_GE(live.table().front().timeS, live.streamTimeS() - 5.0);
+  const auto gyro = live.gyroDetrended();
+  ASSERT_GT(gyro.size(), 2000u);
+  EXPECT_GE(gyro.front().timeS, live.streamTimeS() - 5.0);
+  auto stats = [](const auto& points, double fromS, double toS) {
+    double sum = 0.0, sum2 = 0.0;
+    int n = 0;
+    for (const auto& p : points)
+      if (p.timeS >= fromS && p.timeS < toS) {
+        sum += p.angleDeg;
+        sum2 += p.angleDeg * p.angleDeg;
+        ++n;
+      }
+    const double mean = sum / n;
+    return std::pair{mean, std::sqrt(sum2 / n - mean * mean)};
+  };
+  // Whole periods inside the recording phase (the stream's tail is run-out).
+  const double from = std::ceil(live.streamTimeS() - 4.5), to = from + 3.0;
+  const auto [tableMean, tableRms] = stats(live.table(), from, to);
+  const auto [gyroMean, gyroRms] = stats(gyro, from, to);
+  EXPECT_NEAR(tableRms, 3.0 / std::sqrt(2.0), 0.01);
+  EXPECT_NEAR(gyroRms, tableRms, 0.005 * tableRms);
+  EXPECT_NEAR(gyroMean, tableMean, 0.005);
+}
+
+TEST(LiveTraces, ClearStartsAfresh) {
+  const auto frames = decodeAll(fog::test::shortRun().bytes);
+  LiveTraces live(5.0);
+  live.add(frames);
+  live.clear();
+  EXPECT_EQ(live.testPoint(), -1);
+  EXPECT_TRUE(live.table().empty());
+  EXPECT_TRUE(live.gyroDetrended().empty());
+  EXPECT_EQ(live.gyroTrendDegPerS(), 0.0);
+}
+
+}  // namespace
+}  // namespace fog::acquisition
