@@ -1,11 +1,15 @@
 // fogbench: the desktop bench. Wires the application, the command line and
 // the main window; everything else lives in ui/ and core/.
 //
-//   fogbench [--preset NAME] [--seed N] [--run] [--screenshot FILE]
+//   fogbench [--preset NAME] [--seed N] [--speed X] [--replay SESSION.fbs]
+//            [--session-folder DIR] [--open SESSION.fbs] [--run]
+//            [--view configure|live|results|sessions]
+//            [--screenshot FILE [--screenshot-after S]]
 //
-// --screenshot FILE waits for the run (so it implies --run), saves an image
-// of the window to FILE and quits; exit code 1 when the run gave no result
-// or the image could not be written.
+// --screenshot FILE saves an image of the window and quits: for the
+// configure view at once, for the live view S seconds into the run (default
+// 3), for the results and sessions views when the run (or --open) ended.
+// Exit code 1 when the run gave no result or the image could not be written.
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -16,58 +20,98 @@
 #include "common/version.h"
 #include "ui/bench_presets.h"
 #include "ui/main_window.h"
+#include "ui/plan_editor.h"
+
+namespace {
+
+int fail(const QString& message) {
+  std::fprintf(stderr, "fogbench: %s\n", qPrintable(message));
+  return 2;
+}
+
+void saveAndQuit(fog::ui::MainWindow& window, const QString& path, bool succeeded) {
+  // Let pending layout and paint events settle before grabbing.
+  QTimer::singleShot(300, &window, [&window, path, succeeded] {
+    const bool saved = window.grab().save(path);
+    if (!saved) std::fprintf(stderr, "fogbench: cannot write '%s'\n", qPrintable(path));
+    QApplication::exit(saved && succeeded ? 0 : 1);
+  });
+}
+
+}  // namespace
 
 int main(int argc, char* argv[]) {
   QApplication app(argc, argv);
+  QApplication::setOrganizationName("fogbench");
   QApplication::setApplicationName("fogbench");
   QApplication::setApplicationVersion(FOG_VERSION);
 
   QStringList presetNames;
   for (const auto& p : fog::ui::benchPresets()) presetNames << p.name;
+  const QStringList views = {"configure", "live", "results", "sessions"};
 
   QCommandLineParser parser;
   parser.setApplicationDescription("Fiber-optic gyro IMU delay test bench");
   parser.addHelpOption();
   parser.addVersionOption();
-  const QCommandLineOption runOption("run", "Start the selected plan at once.");
+  const QCommandLineOption runOption("run", "Start the run at once.");
   const QCommandLineOption presetOption(
-      "preset", QString("Plan preset: %1 (default %2).").arg(presetNames.join(", "), presetNames.front()), "NAME");
+      "preset", QString("Test plan preset: %1 (default %2).").arg(presetNames.join(", "), presetNames.front()), "NAME");
   const QCommandLineOption seedOption("seed", "Simulator seed (default 1).", "N");
-  const QCommandLineOption screenshotOption(
-      "screenshot", "Run, save an image of the window with the results to FILE, and quit.", "FILE");
-  parser.addOptions({runOption, presetOption, seedOption, screenshotOption});
+  const QCommandLineOption speedOption("speed", "Pace: X times real time, 0 as fast as possible (default 1).", "X");
+  const QCommandLineOption replayOption("replay", "Replay this session instead of simulating.", "SESSION");
+  const QCommandLineOption folderOption("session-folder", "Record sessions into DIR (and browse it).", "DIR");
+  const QCommandLineOption openOption("open", "Open this session for review.", "SESSION");
+  const QCommandLineOption viewOption("view", "Show this view: " + views.join(", ") + ".", "NAME");
+  const QCommandLineOption screenshotOption("screenshot", "Save an image of the window to FILE and quit.", "FILE");
+  const QCommandLineOption afterOption("screenshot-after", "Live view: seconds into the run (default 3).", "S");
+  parser.addOptions({runOption, presetOption, seedOption, speedOption, replayOption, folderOption, openOption,
+                     viewOption, screenshotOption, afterOption});
   parser.process(app);
 
   fog::ui::MainWindow window;
-  if (parser.isSet(presetOption) && !window.selectPreset(parser.value(presetOption))) {
-    std::fprintf(stderr, "fogbench: unknown preset '%s' (%s)\n", qPrintable(parser.value(presetOption)),
-                 qPrintable(presetNames.join(", ")));
-    return 2;
-  }
-  if (parser.isSet(seedOption)) {
-    bool ok = false;
-    const int seed = parser.value(seedOption).toInt(&ok);
-    if (!ok || seed < 0) {
-      std::fprintf(stderr, "fogbench: --seed needs a whole number >= 0\n");
-      return 2;
-    }
-    window.setSeed(seed);
-  }
+  if (parser.isSet(presetOption) && !window.planEditor()->loadPreset(parser.value(presetOption)))
+    return fail(QString("unknown preset '%1' (%2)").arg(parser.value(presetOption), presetNames.join(", ")));
+  bool ok = true;
+  const int seed = parser.isSet(seedOption) ? parser.value(seedOption).toInt(&ok) : 1;
+  if (!ok || seed < 0) return fail("--seed needs a whole number >= 0");
+  const double speed = parser.isSet(speedOption) ? parser.value(speedOption).toDouble(&ok) : 1.0;
+  if (!ok || speed < 0) return fail("--speed needs a number >= 0 (1 = real time, 0 = as fast as possible)");
+  window.useSimulator(speed, seed);
+  if (parser.isSet(replayOption)) window.useReplay(parser.value(replayOption), speed);
+  if (parser.isSet(folderOption)) window.setSessionFolder(parser.value(folderOption));
+  const QString view = parser.value(viewOption);
+  if (!view.isEmpty() && !views.contains(view)) return fail("--view must be one of " + views.join(", "));
+  const double after = parser.isSet(afterOption) ? parser.value(afterOption).toDouble(&ok) : 3.0;
+  if (!ok || after < 0) return fail("--screenshot-after needs seconds >= 0");
 
   const QString screenshot = parser.value(screenshotOption);
+  const bool run = parser.isSet(runOption) || (!screenshot.isEmpty() && (view == "live" || view == "results" ||
+                                                                         (view == "sessions" && !parser.isSet(openOption))));
   if (!screenshot.isEmpty()) {
-    QObject::connect(&window, &fog::ui::MainWindow::runEnded, &window, [&window, screenshot](bool succeeded) {
-      // Let pending layout and paint events settle before grabbing.
-      QTimer::singleShot(200, &window, [&window, screenshot, succeeded] {
-        const bool saved = window.grab().save(screenshot);
-        if (!saved) std::fprintf(stderr, "fogbench: cannot write '%s'\n", qPrintable(screenshot));
-        QApplication::exit(saved && succeeded ? 0 : 1);
-      });
-    });
+    if (view == "configure" || (view.isEmpty() && !run && !parser.isSet(openOption))) {
+      QTimer::singleShot(0, &window, [&window, screenshot] { saveAndQuit(window, screenshot, true); });
+    } else if (view == "live") {
+      QTimer::singleShot(static_cast<int>(after * 1000.0) + 200, &window,
+                         [&window, screenshot] { saveAndQuit(window, screenshot, window.isRunning()); });
+    } else {
+      auto done = [&window, screenshot, view](bool succeeded) {
+        if (view == "sessions") window.showView(fog::ui::MainWindow::kSessions);
+        saveAndQuit(window, screenshot, succeeded);
+      };
+      QObject::connect(&window, &fog::ui::MainWindow::runEnded, &window, done);
+      QObject::connect(&window, &fog::ui::MainWindow::sessionOpened, &window, done);
+    }
   }
 
-  window.resize(1400, 900);
+  window.resize(1500, 950);
   window.show();
-  if (parser.isSet(runOption) || !screenshot.isEmpty()) QTimer::singleShot(0, &window, &fog::ui::MainWindow::startRun);
+  if (view == "sessions") window.showView(fog::ui::MainWindow::kSessions);
+  if (parser.isSet(openOption)) {
+    const QString path = parser.value(openOption);
+    QTimer::singleShot(0, &window, [&window, path] { window.openSession(path); });
+  } else if (run) {
+    QTimer::singleShot(0, &window, &fog::ui::MainWindow::startRun);
+  }
   return QApplication::exec();
 }

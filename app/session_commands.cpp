@@ -15,6 +15,7 @@
 #include "io/csv_export.h"
 #include "io/csv_import.h"
 #include "session/session_file.h"
+#include "session/session_list.h"
 
 namespace fog::app {
 
@@ -30,15 +31,6 @@ std::string sessionSource(const session::SessionReader& r, const std::string& wh
   return s;
 }
 
-std::string axesOf(const TestPlan& plan) {
-  std::string out;
-  for (int a = 0; a < kAxisCount; ++a) {
-    const bool used = std::any_of(plan.points.begin(), plan.points.end(),
-                                  [&](const TestPoint& p) { return static_cast<int>(p.axis) == a; });
-    if (used) out += (out.empty() ? "" : ",") + std::string(axisName(static_cast<Axis>(a)));
-  }
-  return out.empty() ? "-" : out;
-}
 
 }  // namespace
 
@@ -114,68 +106,33 @@ int sessionsCommand(CliArguments& args) {
   const bool asJson = args.flag("json");
   if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
   if (args.positionals().size() != 1) return fail(invalidArgument("sessions needs exactly one DIR"), 2);
-  const fs::path dir = args.positionals()[0];
-  std::error_code ec;
-  if (!fs::is_directory(dir, ec)) return fail(ioError("'" + dir.string() + "' is not a folder"), 2);
-
-  std::vector<fs::path> files;
-  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
-    if (it->is_regular_file(ec)) files.push_back(it->path());
-  if (ec) return fail(ioError("cannot list '" + dir.string() + "': " + ec.message()), 2);
-  std::sort(files.begin(), files.end());
+  const std::string dir = args.positionals()[0];
+  auto listing = session::listSessions(dir);
+  if (!listing) return fail(listing.status(), 2);
 
   json list = json::array();
-  int skipped = 0;
-  for (const auto& f : files) {
-    const std::string p = f.string();
-    const std::string name = f.filename().string();
-    // SQLite's side files of a session being recorded (or killed while
-    // recording) belong to that session: neither listed nor "skipped".
-    bool sideFile = false;
-    for (const char* suffix : {"-wal", "-shm", "-journal"}) {
-      const std::string sfx = suffix;
-      if (name.size() > sfx.size() && name.compare(name.size() - sfx.size(), sfx.size(), sfx) == 0 &&
-          fs::exists(p.substr(0, p.size() - sfx.size()), ec))
-        sideFile = true;
-    }
-    if (sideFile) continue;
-    if (!session::looksLikeSession(p)) {
-      ++skipped;
-      continue;
-    }
-    json e = {{"file", name}};
-    auto r = session::SessionReader::open(p);
-    if (!r) {
-      e["error"] = r.status().message();
+  for (const auto& s : listing->sessions) {
+    json e = {{"file", s.fileName}};
+    if (!s.error.empty()) {
+      e["error"] = s.error;
       list.push_back(e);
       continue;
     }
-    const auto& info = (*r)->info();
-    e["created_utc"] = info.createdUtc;
-    e["operator"] = info.operatorName;
-    e["imu_model"] = info.imuModel;
-    e["imu_serial"] = info.imuSerial;
-    e["axes"] = axesOf(info.plan);
-    e["complete"] = (*r)->complete();
-    if (!(*r)->complete()) e["incomplete_reason"] = (*r)->incompleteReason();
-    e["lag_ms"] = json::array();
-    e["imu_delay_ms"] = json::array();
-    auto results = (*r)->results();
-    e["results"] = results ? results->size() : 0;
-    if (results && !results->empty()) {
-      const auto doc = json::parse(results->back().reportJson, nullptr, false);
-      if (doc.is_object() && doc.contains("test_points") && doc["test_points"].is_array()) {
-        for (const auto& tp : doc["test_points"]) {
-          if (tp.contains("lag_ms") && tp["lag_ms"].is_number()) e["lag_ms"].push_back(tp["lag_ms"]);
-          if (tp.contains("imu_delay_ms") && tp["imu_delay_ms"].is_number())
-            e["imu_delay_ms"].push_back(tp["imu_delay_ms"]);
-        }
-      }
-    }
+    e["created_utc"] = s.info.createdUtc;
+    e["operator"] = s.info.operatorName;
+    e["imu_model"] = s.info.imuModel;
+    e["imu_serial"] = s.info.imuSerial;
+    e["axes"] = session::axesOf(s.info.plan);
+    e["complete"] = s.complete;
+    if (!s.complete) e["incomplete_reason"] = s.incompleteReason;
+    e["lag_ms"] = s.lagMs;
+    e["imu_delay_ms"] = s.imuDelayMs;
+    e["results"] = s.results;
     list.push_back(e);
   }
   if (asJson) {
-    std::cout << json({{"folder", dir.string()}, {"sessions", list}, {"skipped_files", skipped}}).dump(2) << "\n";
+    std::cout << json({{"folder", dir}, {"sessions", list}, {"skipped_files", listing->skippedFiles}}).dump(2)
+              << "\n";
     return 0;
   }
   auto joinMs = [](const json& values) {
@@ -209,8 +166,9 @@ int sessionsCommand(CliArguments& args) {
       line += row[c] + (c + 1 < row.size() ? std::string(width[c] - row[c].size() + 2, ' ') : "");
     std::cout << line << "\n";
   }
-  std::cout << list.size() << (list.size() == 1 ? " session" : " sessions") << " in " << dir.string() << "; "
-            << skipped << " other " << (skipped == 1 ? "file" : "files") << " skipped\n";
+  const int skipped = listing->skippedFiles;
+  std::cout << list.size() << (list.size() == 1 ? " session" : " sessions") << " in " << dir << "; " << skipped
+            << " other " << (skipped == 1 ? "file" : "files") << " skipped\n";
   return 0;
 }
 

@@ -1,299 +1,574 @@
 #include "ui/main_window.h"
 
+#include <QCheckBox>
 #include <QComboBox>
-#include <QFontDatabase>
-#include <QFontInfo>
+#include <QDateTime>
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
-#include <QPlainTextEdit>
-#include <QProgressBar>
+#include <QLineEdit>
+#include <QPointer>
 #include <QPushButton>
+#include <QSettings>
 #include <QSpinBox>
 #include <QSplitter>
+#include <QStandardPaths>
 #include <QStatusBar>
+#include <QTabWidget>
 #include <QToolBar>
 #include <QVBoxLayout>
+#include <QtConcurrent/QtConcurrentRun>
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "ui/bench_presets.h"
-#include "ui/series_plot.h"
+#include "acquisition/replay_source.h"
+#include "acquisition/simulator_source.h"
+#include "analysis/report_writer.h"
+#include "common/version.h"
+#include "session/session_file.h"
+#include "ui/bench_settings_dialog.h"
+#include "ui/live_view.h"
+#include "ui/plan_editor.h"
+#include "ui/result_view.h"
+#include "ui/session_browser.h"
 
 namespace fog::ui {
 
 namespace {
-
-const QColor kTableData(31, 119, 180);
-const QColor kGyroData(255, 127, 14);
-const QColor kTableFit(8, 48, 107);
-const QColor kGyroFit(165, 15, 21);
-
-QString number(double value, int decimals) { return QString::number(value, 'f', decimals); }
-
-QString pointLabel(const analysis::TestPointResult& p) {
-  return QObject::tr("%1: %2 axis, %3 Hz / %4°")
-      .arg(p.index + 1)
-      .arg(QString(axisName(p.axis)).toUpper())
-      .arg(p.nominalFrequencyHz)
-      .arg(number(p.tableFit.amplitudeDeg, 2));
-}
 
 QString durationText(double seconds) {
   const auto s = static_cast<long long>(std::ceil(std::max(seconds, 0.0)));
   return s >= 60 ? QObject::tr("%1 min %2 s").arg(s / 60).arg(s % 60, 2, 10, QChar('0')) : QObject::tr("%1 s").arg(s);
 }
 
+analysis::BenchConstants constantsOf(const BenchSettings& b) {
+  analysis::BenchConstants c;
+  c.tableReadDelayMs = b.tableReadDelayMs;
+  c.tableReadDelayStdMs = b.tableReadDelayStdMs;
+  c.boardDelayMs = b.boardDelayMs;
+  c.boardDelayStdMs = b.boardDelayStdMs;
+  c.pulseEquivalentDeg = b.pulseEquivalentDeg;
+  return c;
+}
+
+// The simulated chain follows the bench's constants, so that the simulator
+// behaves like the bench the operator described.
+model::SimConfig simConfigOf(const BenchSettings& b, int seed) {
+  model::SimConfig c;
+  c.seed = static_cast<std::uint64_t>(seed);
+  c.encoder.readDelayS = b.tableReadDelayMs * 1e-3;
+  c.imuBoard.processingS = b.boardDelayMs * 1e-3 - c.imuBoard.serialS();
+  c.earth.latitudeDeg = b.latitudeDeg;
+  c.fog.pulseEquivalentDeg = b.pulseEquivalentDeg;
+  c.samplingBoard.counterHz = b.counterHz;
+  c.samplingBoard.counterBits = b.counterBits;
+  return c;
+}
+
+QString defaultSessionFolder() {
+  return QDir(QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation)).filePath("fogbench-sessions");
+}
+
 }  // namespace
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
-  setWindowTitle(tr("fogbench — FOG IMU delay bench"));
-  buildControls();
-  buildResults();
-  connect(&runner_, &BenchRunner::progressed, this, &MainWindow::showProgress);
-  connect(&runner_, &BenchRunner::finished, this, &MainWindow::showOutcome);
-  connect(&runner_, &BenchRunner::failed, this, &MainWindow::showFailure);
-  connect(&runner_, &BenchRunner::cancelled, this, &MainWindow::showCancelled);
+  setWindowTitle(tr("fogbench %1 — FOG IMU delay bench").arg(FOG_VERSION));
+
+  tabs_ = new QTabWidget();
+  tabs_->setObjectName("viewTabs");
+  tabs_->addTab(buildConfigureView(), tr("Configure"));
+  liveView_ = new LiveView();
+  liveView_->setObjectName("liveView");
+  tabs_->addTab(liveView_, tr("Live"));
+  resultView_ = new ResultView();
+  resultView_->setObjectName("resultView");
+  tabs_->addTab(resultView_, tr("Results"));
+  sessionBrowser_ = new SessionBrowser();
+  sessionBrowser_->setObjectName("sessionBrowser");
+  tabs_->addTab(sessionBrowser_, tr("Sessions"));
+  setCentralWidget(tabs_);
+  buildToolBar();
+  setBenchSettings(loadBenchSettings());
+
+  framesLabel_ = new QLabel();
+  framesLabel_->setObjectName("framesLabel");
+  statusBar()->addPermanentWidget(framesLabel_);
+  showHealth({}, 0);
+
+  connect(&runner_, &AcquisitionRunner::finished, this, &MainWindow::showOutcome);
+  connect(&runner_, &AcquisitionRunner::failed, this, &MainWindow::showFailure);
+  liveTimer_.setInterval(33);
+  connect(&liveTimer_, &QTimer::timeout, this, &MainWindow::drainLive);
+  connect(planEditor_, &PlanEditor::validityChanged, this, &MainWindow::updateRunButton);
+  connect(sessionBrowser_, &SessionBrowser::openRequested, this, &MainWindow::openSession);
+  connect(sessionBrowser_, &SessionBrowser::reanalyseRequested, this, [this](const QString& path) {
+    loadSession(path, true, [this](std::shared_ptr<const RunOutcome> o) {
+      if (o) sessionBrowser_->refresh();
+    });
+  });
+  connect(sessionBrowser_, &SessionBrowser::compareRequested, this, &MainWindow::compareSessions);
+
+  QSettings settings;
+  setSessionFolder(settings.value("sessions/folder", defaultSessionFolder()).toString());
   setRunning(false);
-  statusBar()->showMessage(tr("Choose a plan and press Run."));
+  tell(tr("Configure a plan and press Run."));
 }
 
 MainWindow::~MainWindow() = default;
 
-void MainWindow::buildControls() {
-  auto* bar = addToolBar(tr("Run"));
-  bar->setObjectName("runToolBar");
-  bar->setMovable(false);
+QWidget* MainWindow::buildConfigureView() {
+  auto* page = new QWidget();
+  auto* layout = new QHBoxLayout(page);
 
-  bar->addWidget(new QLabel(tr(" Plan ")));
-  presetCombo_ = new QComboBox();
-  presetCombo_->setObjectName("presetCombo");
-  for (const auto& preset : benchPresets()) presetCombo_->addItem(preset.label, preset.name);
-  bar->addWidget(presetCombo_);
+  auto* planBox = new QGroupBox(tr("Test plan"));
+  auto* planLayout = new QVBoxLayout(planBox);
+  planEditor_ = new PlanEditor();
+  planEditor_->setObjectName("planEditor");
+  planLayout->addWidget(planEditor_);
+  layout->addWidget(planBox, 3);
 
-  bar->addWidget(new QLabel(tr("  Seed ")));
+  auto* side = new QVBoxLayout();
+  auto* sourceBox = new QGroupBox(tr("Source"));
+  auto* sourceForm = new QFormLayout(sourceBox);
+  sourceCombo_ = new QComboBox();
+  sourceCombo_->setObjectName("sourceCombo");
+  sourceCombo_->addItem(tr("Built-in simulator"), "sim");
+  sourceCombo_->addItem(tr("Replay of a session"), "replay");
+  speedCombo_ = new QComboBox();
+  speedCombo_->setObjectName("speedCombo");
+  speedCombo_->addItem(tr("Real time"), 1.0);
+  speedCombo_->addItem(tr("5× real time"), 5.0);
+  speedCombo_->addItem(tr("20× real time"), 20.0);
+  speedCombo_->addItem(tr("As fast as possible"), 0.0);
   seedSpin_ = new QSpinBox();
   seedSpin_->setObjectName("seedSpin");
   seedSpin_->setRange(0, std::numeric_limits<int>::max());
   seedSpin_->setValue(1);
   seedSpin_->setToolTip(tr("Simulator seed: the same seed gives the same data"));
-  bar->addWidget(seedSpin_);
-  bar->addSeparator();
+  auto* replayRow = new QHBoxLayout();
+  replayEdit_ = new QLineEdit();
+  replayEdit_->setObjectName("replayEdit");
+  replayEdit_->setPlaceholderText(tr("session file (.fbs) to replay"));
+  auto* browse = new QPushButton(tr("Browse…"));
+  replayRow->addWidget(replayEdit_, 1);
+  replayRow->addWidget(browse);
+  sourceForm->addRow(tr("Source"), sourceCombo_);
+  sourceForm->addRow(tr("Pace"), speedCombo_);
+  sourceForm->addRow(tr("Seed"), seedSpin_);
+  sourceForm->addRow(tr("Replay"), replayRow);
+  side->addWidget(sourceBox);
 
+  auto* sessionBox = new QGroupBox(tr("Session"));
+  auto* sessionForm = new QFormLayout(sessionBox);
+  recordCheck_ = new QCheckBox(tr("Record a session file (crash-safe)"));
+  recordCheck_->setObjectName("recordCheck");
+  recordCheck_->setChecked(true);
+  auto* folderRow = new QHBoxLayout();
+  folderEdit_ = new QLineEdit();
+  folderEdit_->setObjectName("sessionFolderEdit");
+  auto* chooseFolder = new QPushButton(tr("Choose…"));
+  folderRow->addWidget(folderEdit_, 1);
+  folderRow->addWidget(chooseFolder);
+  operatorEdit_ = new QLineEdit();
+  operatorEdit_->setObjectName("operatorEdit");
+  imuModelEdit_ = new QLineEdit();
+  imuModelEdit_->setObjectName("imuModelEdit");
+  imuSerialEdit_ = new QLineEdit();
+  imuSerialEdit_->setObjectName("imuSerialEdit");
+  notesEdit_ = new QLineEdit();
+  sessionForm->addRow(recordCheck_);
+  sessionForm->addRow(tr("Folder"), folderRow);
+  sessionForm->addRow(tr("Operator"), operatorEdit_);
+  sessionForm->addRow(tr("IMU model"), imuModelEdit_);
+  sessionForm->addRow(tr("IMU serial"), imuSerialEdit_);
+  sessionForm->addRow(tr("Notes"), notesEdit_);
+  side->addWidget(sessionBox);
+
+  auto* constantsBox = new QGroupBox(tr("Bench constants"));
+  auto* constantsLayout = new QVBoxLayout(constantsBox);
+  constantsLabel_ = new QLabel();
+  constantsLabel_->setObjectName("constantsLabel");
+  constantsLabel_->setWordWrap(true);
+  auto* edit = new QPushButton(tr("Edit bench constants…"));
+  edit->setObjectName("editConstantsButton");
+  constantsLayout->addWidget(constantsLabel_);
+  constantsLayout->addWidget(edit);
+  side->addWidget(constantsBox);
+
+  configureMessage_ = new QLabel();
+  configureMessage_->setObjectName("configureMessage");
+  configureMessage_->setWordWrap(true);
+  side->addWidget(configureMessage_);
+  side->addStretch(1);
+  layout->addLayout(side, 2);
+
+  auto sourceChanged = [this] {
+    const bool sim = sourceCombo_->currentData().toString() == "sim";
+    seedSpin_->setEnabled(sim);
+    replayEdit_->setEnabled(!sim);
+    updateRunButton();
+  };
+  connect(sourceCombo_, qOverload<int>(&QComboBox::currentIndexChanged), this, sourceChanged);
+  connect(replayEdit_, &QLineEdit::textChanged, this, &MainWindow::updateRunButton);
+  connect(browse, &QPushButton::clicked, this, [this] {
+    const QString path = QFileDialog::getOpenFileName(this, tr("Session to replay"), sessionFolder(),
+                                                      tr("fogbench sessions (*.fbs)"));
+    if (!path.isEmpty()) replayEdit_->setText(path);
+  });
+  connect(chooseFolder, &QPushButton::clicked, this, [this] {
+    const QString dir = QFileDialog::getExistingDirectory(this, tr("Session folder"), sessionFolder());
+    if (!dir.isEmpty()) setSessionFolder(dir);
+  });
+  connect(folderEdit_, &QLineEdit::editingFinished, this, [this] { setSessionFolder(folderEdit_->text()); });
+  connect(recordCheck_, &QCheckBox::toggled, folderEdit_, &QWidget::setEnabled);
+  connect(edit, &QPushButton::clicked, this, [this] {
+    BenchSettingsDialog dialog(bench_, this);
+    if (dialog.exec() == QDialog::Accepted) {
+      setBenchSettings(dialog.settings());
+      saveBenchSettings(bench_);
+    }
+  });
+  return page;
+}
+
+void MainWindow::buildToolBar() {
+  auto* bar = addToolBar(tr("Run"));
+  bar->setObjectName("runToolBar");
+  bar->setMovable(false);
   runButton_ = new QPushButton(tr("Run"));
   runButton_->setObjectName("runButton");
   stopButton_ = new QPushButton(tr("Stop"));
   stopButton_->setObjectName("stopButton");
+  stopButton_->setToolTip(tr("End the run now; everything received so far is kept and analysed"));
   bar->addWidget(runButton_);
   bar->addWidget(stopButton_);
   connect(runButton_, &QPushButton::clicked, this, &MainWindow::startRun);
   connect(stopButton_, &QPushButton::clicked, this, &MainWindow::stopRun);
-
-  framesLabel_ = new QLabel();
-  framesLabel_->setObjectName("framesLabel");
-  progressBar_ = new QProgressBar();
-  progressBar_->setObjectName("progressBar");
-  progressBar_->setRange(0, 1000);
-  progressBar_->setMaximumWidth(220);
-  remainingLabel_ = new QLabel();
-  statusBar()->addPermanentWidget(framesLabel_);
-  statusBar()->addPermanentWidget(progressBar_);
-  statusBar()->addPermanentWidget(remainingLabel_);
-  showHealth({});
 }
 
-void MainWindow::buildResults() {
-  auto* top = new QWidget();
-  auto* topLayout = new QVBoxLayout(top);
-  topLayout->setContentsMargins(6, 6, 6, 0);
+void MainWindow::showView(View view) { tabs_->setCurrentIndex(view); }
+MainWindow::View MainWindow::currentView() const { return static_cast<View>(tabs_->currentIndex()); }
 
-  auto* selectorRow = new QHBoxLayout();
-  selectorRow->addWidget(new QLabel(tr("Test point")));
-  testPointCombo_ = new QComboBox();
-  testPointCombo_->setObjectName("testPointCombo");
-  testPointCombo_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
-  selectorRow->addWidget(testPointCombo_);
-  lagLabel_ = new QLabel();
-  lagLabel_->setObjectName("lagLabel");
-  lagLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
-  selectorRow->addSpacing(12);
-  selectorRow->addWidget(lagLabel_, 1);
-  topLayout->addLayout(selectorRow);
-  connect(testPointCombo_, qOverload<int>(&QComboBox::currentIndexChanged), this, &MainWindow::showTestPoint);
-
-  anglePlot_ = new SeriesPlot(tr("Normalised angles and fits"), tr("(angle − offset) / amplitude"));
-  anglePlot_->setObjectName("anglePlot");
-  residualPlot_ = new SeriesPlot(tr("Residuals (data − fit)"), tr("residual (arcsec)"));
-  residualPlot_->setObjectName("residualPlot");
-  auto* plots = new QSplitter(Qt::Horizontal);
-  plots->addWidget(anglePlot_);
-  plots->addWidget(residualPlot_);
-  topLayout->addWidget(plots, 1);
-
-  reportView_ = new QPlainTextEdit();
-  reportView_->setObjectName("reportView");
-  reportView_->setReadOnly(true);
-  reportView_->setLineWrapMode(QPlainTextEdit::NoWrap);
-  // The report is laid out in columns. Some platforms (offscreen) answer the
-  // fixed-font query with a proportional font; ask fontconfig's alias then.
-  QFont mono = QFontDatabase::systemFont(QFontDatabase::FixedFont);
-  if (!QFontInfo(mono).fixedPitch()) {
-    mono.setFamily("monospace");
-    mono.setStyleHint(QFont::TypeWriter);
+void MainWindow::useSimulator(double speed, int seed) {
+  sourceCombo_->setCurrentIndex(sourceCombo_->findData("sim"));
+  const int i = speedCombo_->findData(speed);
+  if (i >= 0) speedCombo_->setCurrentIndex(i);
+  else {
+    speedCombo_->addItem(tr("%1× real time").arg(speed), speed);
+    speedCombo_->setCurrentIndex(speedCombo_->count() - 1);
   }
-  reportView_->setFont(mono);
-  reportView_->setPlaceholderText(tr("The delay report appears here after a run."));
-
-  auto* split = new QSplitter(Qt::Vertical);
-  split->addWidget(top);
-  split->addWidget(reportView_);
-  split->setStretchFactor(0, 3);
-  split->setStretchFactor(1, 2);
-  setCentralWidget(split);
+  seedSpin_->setValue(seed);
 }
 
-bool MainWindow::selectPreset(const QString& name) {
-  const int i = presetCombo_->findData(name);
-  if (i < 0) return false;
-  presetCombo_->setCurrentIndex(i);
-  return true;
+void MainWindow::useReplay(const QString& sessionPath, double speed) {
+  useSimulator(speed, seedSpin_->value());
+  sourceCombo_->setCurrentIndex(sourceCombo_->findData("replay"));
+  replayEdit_->setText(sessionPath);
 }
 
-void MainWindow::setSeed(int seed) { seedSpin_->setValue(seed); }
+void MainWindow::setSessionFolder(const QString& folder) {
+  folderEdit_->setText(folder);
+  recordCheck_->setChecked(!folder.isEmpty());
+  if (!folder.isEmpty()) {
+    QSettings().setValue("sessions/folder", folder);
+    if (sessionBrowser_->folder() != folder) sessionBrowser_->setFolder(folder);
+  }
+}
 
-bool MainWindow::isRunning() const { return runner_.isRunning(); }
+QString MainWindow::sessionFolder() const { return recordCheck_->isChecked() ? folderEdit_->text() : QString(); }
 
-const analysis::DelayReport* MainWindow::lastReport() const { return outcome_ ? &outcome_->report : nullptr; }
+void MainWindow::setBenchSettings(const BenchSettings& s) {
+  bench_ = s;
+  constantsLabel_->setText(tr("table read delay %1 ms · board delay %2 ms · latitude %3° · pulse equivalent %4° · "
+                              "counter %5 MHz / %6 bit")
+                               .arg(s.tableReadDelayMs)
+                               .arg(s.boardDelayMs)
+                               .arg(s.latitudeDeg)
+                               .arg(s.pulseEquivalentDeg)
+                               .arg(s.counterHz / 1e6)
+                               .arg(s.counterBits));
+}
 
-QString MainWindow::reportText() const { return reportView_->toPlainText(); }
+const RunOutcome* MainWindow::lastOutcome() const { return shown_.get(); }
+
+void MainWindow::tell(const QString& message) {
+  lastMessage_ = message;
+  statusBar()->showMessage(message);
+}
+
+SessionInfo MainWindow::sessionInfo() const {
+  SessionInfo info;
+  info.operatorName = operatorEdit_->text().toStdString();
+  info.imuModel = imuModelEdit_->text().toStdString();
+  info.imuSerial = imuSerialEdit_->text().toStdString();
+  info.notes = notesEdit_->text().toStdString();
+  info.softwareVersion = FOG_VERSION;
+  info.createdUtc = session::utcNow();
+  info.bench = bench_;
+  return info;
+}
+
+void MainWindow::updateRunButton() {
+  QString why;
+  if (runner_.isRunning()) why = tr("a run is under way");
+  else if (sourceCombo_->currentData().toString() == "sim" && !planEditor_->isValid()) why = planEditor_->problem();
+  else if (sourceCombo_->currentData().toString() == "replay" && replayEdit_->text().isEmpty())
+    why = tr("choose the session file to replay");
+  runButton_->setEnabled(why.isEmpty());
+  runButton_->setToolTip(why.isEmpty() ? tr("Start the run") : tr("Cannot run: %1").arg(why));
+  if (!runner_.isRunning()) {
+    configureMessage_->setText(why.isEmpty() ? QString()
+                                             : tr("<span style='color:#b00000'>Cannot run: %1</span>")
+                                                   .arg(why.toHtmlEscaped()));
+  }
+}
 
 void MainWindow::startRun() {
   if (runner_.isRunning()) return;
-  const auto preset = findBenchPreset(presetCombo_->currentData().toString());
-  if (!preset) {
-    showFailure(tr("no plan is selected"));
+  updateRunButton();
+  if (!runButton_->isEnabled()) {
+    showFailure(runButton_->toolTip());
     return;
   }
-  BenchJob job;
-  job.plan = preset->plan;
-  job.config.seed = static_cast<std::uint64_t>(seedSpin_->value());
-  std::string why;
-  if (!job.plan.isValid(job.config.turntable.limits, &why)) {
-    showFailure(tr("the plan cannot run: %1").arg(QString::fromStdString(why)));
-    return;
+  const double speed = speedCombo_->currentData().toDouble();
+  const bool sim = sourceCombo_->currentData().toString() == "sim";
+  RunRequest request;
+  request.options.info = sessionInfo();
+  request.options.constants = constantsOf(bench_);
+  TestPlan plan;
+  if (sim) {
+    plan = planEditor_->plan();
+    const auto config = simConfigOf(bench_, seedSpin_->value());
+    auto source = acquisition::SimulatorSource::create(config, plan, speed);
+    if (!source) {
+      showFailure(QString::fromStdString(source.status().message()));
+      return;
+    }
+    request.truth = (*source)->truth();
+    request.options.info.source = (*source)->description();
+    request.source = std::shared_ptr<acquisition::ByteSource>(std::move(*source));
+  } else {
+    const QString path = replayEdit_->text();
+    auto reader = session::SessionReader::open(path.toStdString());
+    if (!reader) {
+      showFailure(QString::fromStdString(reader.status().message()));
+      return;
+    }
+    auto bytes = (*reader)->rawBytes();
+    if (!bytes) {
+      showFailure(QString::fromStdString(bytes.status().message()));
+      return;
+    }
+    plan = (*reader)->info().plan;
+    // A replay records into a new session like a live run, and keeps the
+    // original's identity and constants.
+    const SessionInfo original = (*reader)->info();
+    request.options.info = original;
+    request.options.info.createdUtc = session::utcNow();
+    request.options.info.softwareVersion = FOG_VERSION;
+    request.options.constants = constantsOf(original.bench);
+    auto source = std::make_shared<acquisition::ReplaySource>(std::move(*bytes), speed,
+                                                              "session " + QFileInfo(path).fileName().toStdString());
+    request.options.info.source = source->description();
+    request.source = source;
+  }
+  request.options.info.plan = plan;
+  request.options.reportContext.source = request.options.info.source + ", fogbench " + FOG_VERSION;
+  const QString folder = sessionFolder();
+  if (!folder.isEmpty()) {
+    if (!QDir().mkpath(folder)) {
+      showFailure(tr("cannot create the session folder '%1'; choose another one").arg(folder));
+      return;
+    }
+    const QString name = QDateTime::currentDateTimeUtc().toString("yyyyMMdd-HHmmss-zzz") +
+                         (imuSerialEdit_->text().isEmpty() ? QString() : "-" + imuSerialEdit_->text()) + ".fbs";
+    request.options.sessionPath = QDir(folder).filePath(name).toStdString();
   }
 
-  outcome_.reset();
-  testPointCombo_->clear();
-  lagLabel_->clear();
-  anglePlot_->clearCurves();
-  anglePlot_->showAll();
-  residualPlot_->clearCurves();
-  residualPlot_->showAll();
-  reportView_->clear();
-  showHealth({});
-  progressBar_->setValue(0);
-  remainingLabel_->clear();
+  resultView_->clear();
+  shown_.reset();
+  liveView_->startRun(plan, speed);
+  showHealth({}, 0);
   runClock_.start();
-  if (!runner_.start(job)) return;
+  if (!runner_.start(std::move(request))) return;
   setRunning(true);
-  statusBar()->showMessage(tr("Running %1, seed %2 …").arg(preset->label).arg(seedSpin_->value()));
+  liveTimer_.start();
+  showView(kLive);
+  tell(tr("Running: %1 …").arg(sim ? tr("simulator, seed %1").arg(seedSpin_->value()) : replayEdit_->text()));
 }
 
 void MainWindow::stopRun() {
   if (!runner_.isRunning()) return;
-  runner_.cancel();
+  runner_.stop();
   stopButton_->setEnabled(false);
-  statusBar()->showMessage(tr("Stopping …"));
+  tell(tr("Stopping: everything received so far is kept …"));
 }
 
 void MainWindow::setRunning(bool running) {
-  runButton_->setEnabled(!running);
   stopButton_->setEnabled(running);
-  presetCombo_->setEnabled(!running);
-  seedSpin_->setEnabled(!running);
-  progressBar_->setVisible(running);
-  remainingLabel_->setVisible(running);
-}
-
-void MainWindow::showProgress(const BenchProgress& progress) {
-  const double fraction = progress.totalS > 0.0 ? progress.simulatedS / progress.totalS : 1.0;
-  progressBar_->setValue(static_cast<int>(std::lround(1000.0 * std::clamp(fraction, 0.0, 1.0))));
-  remainingLabel_->setText(progress.analysing ? tr("analysing …")
-                                              : tr("%1 left").arg(durationText(progress.remainingS)));
-  showHealth(progress.health);
-}
-
-void MainWindow::showHealth(const StreamHealth& h) {
-  framesLabel_->setText(tr("Frames decoded: %1 table, %2 IMU, %3 status  ·  checksum failures: %4 ")
-                            .arg(h.tableFrames)
-                            .arg(h.imuFrames)
-                            .arg(h.statusFrames)
-                            .arg(h.checksumFailures));
-}
-
-void MainWindow::showOutcome(std::shared_ptr<const BenchOutcome> outcome) {
-  outcome_ = std::move(outcome);
-  setRunning(false);
-  showHealth(outcome_->recording.health);
-  reportView_->setPlainText(QString::fromStdString(outcome_->reportText));
-  {
-    const QSignalBlocker block(testPointCombo_);
-    testPointCombo_->clear();
-    for (const auto& p : outcome_->report.points) testPointCombo_->addItem(pointLabel(p));
+  planEditor_->setReadOnly(running);
+  for (QWidget* w : std::initializer_list<QWidget*>{sourceCombo_, speedCombo_, seedSpin_, replayEdit_, recordCheck_,
+                                                    folderEdit_})
+    w->setEnabled(!running);
+  if (!running) {
+    seedSpin_->setEnabled(sourceCombo_->currentData().toString() == "sim");
+    replayEdit_->setEnabled(sourceCombo_->currentData().toString() == "replay");
+    folderEdit_->setEnabled(recordCheck_->isChecked());
   }
-  testPointCombo_->setCurrentIndex(0);
-  showTestPoint(0);
-  statusBar()->showMessage(tr("Done in %1: %2 test point(s) analysed, %3 without a delay")
-                               .arg(durationText(static_cast<double>(runClock_.elapsed()) / 1e3))
-                               .arg(outcome_->report.points.size())
-                               .arg(outcome_->report.failedPoints.size()));
-  emit runEnded(true);
+  updateRunButton();
+}
+
+void MainWindow::drainLive() {
+  auto batches = runner_.takeBatches();
+  for (const auto& b : batches) liveView_->addFrames(b.frames);
+  if (!batches.empty()) {
+    const auto& last = batches.back();
+    showHealth(last.health, runner_.droppedFrames());
+    if (last.silentForS > 0.0)
+      tell(tr("No data from the source for %1 s — check the connection").arg(last.silentForS, 0, 'f', 1));
+  }
+  liveView_->refresh();
+}
+
+void MainWindow::showHealth(const StreamHealth& h, std::uint64_t dropped) {
+  QString text = tr("frames: %1 table · %2 IMU · %3 status  ·  checksum failures: %4  ·  lost: %5  ·  duplicates: %6")
+                     .arg(h.tableFrames)
+                     .arg(h.imuFrames)
+                     .arg(h.statusFrames)
+                     .arg(h.checksumFailures)
+                     .arg(h.lostFrames)
+                     .arg(h.duplicateFrames);
+  if (dropped > 0) text += tr("  ·  display skipped %1 frames (all recorded)").arg(dropped);
+  framesLabel_->setText(text + " ");
+}
+
+void MainWindow::showOutcome(std::shared_ptr<const RunOutcome> outcome) {
+  liveTimer_.stop();
+  drainLive();
+  liveView_->endRun();
+  setRunning(false);
+  shown_ = outcome;
+  showHealth(outcome->recording.health, runner_.droppedFrames());
+  resultView_->showOutcome(outcome);
+  const bool delay = outcome->report.isOk();
+  QString message;
+  if (!outcome->complete)
+    message = tr("Run incomplete (%1); ").arg(QString::fromStdString(outcome->incompleteReason));
+  else
+    message = tr("Run done in %1; ").arg(durationText(static_cast<double>(runClock_.elapsed()) / 1e3));
+  message += delay ? tr("%1 test point(s) analysed, %2 without a delay")
+                         .arg(outcome->report->points.size())
+                         .arg(outcome->report->failedPoints.size())
+                   : tr("no delay: %1").arg(QString::fromStdString(outcome->report.status().message()));
+  if (!outcome->sessionPath.empty())
+    message += tr(". Saved as %1").arg(QFileInfo(QString::fromStdString(outcome->sessionPath)).fileName());
+  tell(message);
+  configureMessage_->setText(message.toHtmlEscaped());
+  sessionBrowser_->refresh();
+  if (!outcome->sessionPath.empty()) sessionBrowser_->selectPath(QString::fromStdString(outcome->sessionPath));
+  showView(kResults);
+  emit runEnded(delay);
 }
 
 void MainWindow::showFailure(const QString& message) {
+  liveTimer_.stop();
   setRunning(false);
-  statusBar()->showMessage(tr("Run failed: %1").arg(message));
-  reportView_->setPlainText(tr("The run gave no result.\n\n%1\n").arg(message));
+  tell(tr("Run failed: %1").arg(message));
+  configureMessage_->setText(tr("<span style='color:#b00000'>Run failed: %1</span>").arg(message.toHtmlEscaped()));
   emit runEnded(false);
 }
 
-void MainWindow::showCancelled() {
-  setRunning(false);
-  statusBar()->showMessage(tr("Run stopped; nothing was analysed."));
-  emit runEnded(false);
+void MainWindow::loadSession(const QString& path, bool reanalyse,
+                             std::function<void(std::shared_ptr<const RunOutcome>)> done) {
+  tell(reanalyse ? tr("Re-analysing %1 …").arg(path) : tr("Opening %1 …").arg(path));
+  const BenchSettings bench = bench_;
+  // QFuture needs a default-constructible value: the outcome, or why not.
+  struct Loaded {
+    std::shared_ptr<RunOutcome> outcome;
+    Status status;
+  };
+  auto* watcher = new QFutureWatcher<Loaded>(this);
+  connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, path, reanalyse, done] {
+    const Loaded result = watcher->result();
+    watcher->deleteLater();
+    if (!result.outcome) {
+      tell(tr("Cannot open %1: %2").arg(path, QString::fromStdString(result.status.message())));
+      done(nullptr);
+      return;
+    }
+    tell(reanalyse ? tr("%1: re-analysed with the bench constants; the result was added to the session").arg(path)
+                   : tr("%1: read-only review").arg(path));
+    done(result.outcome);
+  });
+  // Reading and fitting a long session takes a while: off the GUI thread.
+  watcher->setFuture(QtConcurrent::run([path, reanalyse, bench]() -> Loaded {
+    auto reader = session::SessionReader::open(path.toStdString());
+    if (!reader) return {nullptr, reader.status()};
+    auto recording = (*reader)->recording();
+    if (!recording) return {nullptr, recording.status()};
+    auto outcome = std::make_shared<RunOutcome>();
+    outcome->info = (*reader)->info();
+    outcome->sessionPath = path.toStdString();
+    outcome->complete = (*reader)->complete();
+    outcome->incompleteReason = (*reader)->incompleteReason();
+    outcome->recording = std::move(*recording);
+    // Review uses the session's own constants; a re-analysis the bench's.
+    if (reanalyse) outcome->info.bench = bench;
+    const auto constants = constantsOf(outcome->info.bench);
+    outcome->report = analysis::analyzeRecording(outcome->recording, constants);
+    const std::string source = "session " + path.toStdString() + " (" + (*reader)->info().source + ")";
+    reader->reset();
+    if (reanalyse && outcome->report) {
+      analysis::ReportContext context;
+      context.source = source;
+      if (auto s = session::addResult(path.toStdString(), acquisition::analysisSettingsJson(constants, "fogbench GUI"),
+                                      analysis::formatReportJson(*outcome->report, context));
+          !s.isOk())
+        return {nullptr, s};
+    }
+    completeOutcome(*outcome, source);
+    return {outcome, Status::ok()};
+  }));
 }
 
-void MainWindow::showTestPoint(int position) {
-  anglePlot_->clearCurves();
-  residualPlot_->clearCurves();
-  if (!outcome_ || position < 0 || position >= static_cast<int>(outcome_->traces.size())) {
-    lagLabel_->clear();
-    anglePlot_->showAll();
-    residualPlot_->showAll();
-    return;
+void MainWindow::openSession(const QString& path) {
+  loadSession(path, false, [this](std::shared_ptr<const RunOutcome> outcome) {
+    if (outcome) {
+      shown_ = outcome;
+      resultView_->showOutcome(outcome);
+      showView(kResults);
+    }
+    emit sessionOpened(outcome != nullptr);
+  });
+}
+
+void MainWindow::compareSessions(const QString& first, const QString& second) {
+  auto* dialog = new QWidget(this, Qt::Window);
+  dialog->setAttribute(Qt::WA_DeleteOnClose);
+  dialog->setObjectName("compareWindow");
+  dialog->setWindowTitle(tr("Compare %1 and %2").arg(QFileInfo(first).fileName(), QFileInfo(second).fileName()));
+  auto* split = new QSplitter(Qt::Horizontal, dialog);
+  auto* layout = new QVBoxLayout(dialog);
+  layout->addWidget(split);
+  for (const QString& path : {first, second}) {
+    auto* column = new QWidget();
+    auto* v = new QVBoxLayout(column);
+    v->addWidget(new QLabel(QString("<b>%1</b>").arg(QFileInfo(path).fileName().toHtmlEscaped())));
+    auto* view = new ResultView();
+    v->addWidget(view, 1);
+    split->addWidget(column);
+    QPointer<ResultView> guard(view);
+    loadSession(path, false, [guard](std::shared_ptr<const RunOutcome> o) {
+      if (guard && o) guard->showOutcome(o);
+    });
   }
-  const auto i = static_cast<std::size_t>(position);
-  const auto& p = outcome_->report.points[i];
-  QString lag = tr("<b>lag %1 ± %2 ms</b>  ·  IMU delay %3 ms  ·  gyro's own delay %4 ms")
-                    .arg(number(p.lagMs, 4), number(p.lagStdMs, 4), number(p.imuDelayMs, 4), number(p.gyroDelayMs, 4));
-  for (const auto& t : outcome_->truth)
-    if (t.index == p.index) lag += tr("  ·  simulator truth: lag %1 ms").arg(number(t.lagS * 1e3, 4));
-  lagLabel_->setText(lag);
-
-  // Aliasing pointers: the plots share the outcome, nothing is copied.
-  const std::shared_ptr<const TestPointTraces> traces(outcome_, &outcome_->traces[i]);
-  auto part = [&](const Trace& t) { return std::shared_ptr<const Trace>(outcome_, &t); };
-  anglePlot_->addData(tr("table"), QPen(kTableData), part(traces->tableNormalised));
-  anglePlot_->addData(tr("gyro (integrated, trend removed)"), QPen(kGyroData), part(traces->gyroNormalised));
-  anglePlot_->addFunction(tr("table fit"), QPen(kTableFit, 1.5),
-                          [traces](double t) { return traces->tableFitNormalised(t); });
-  anglePlot_->addFunction(tr("gyro fit"), QPen(kGyroFit, 1.5, Qt::DashLine),
-                          [traces](double t) { return traces->gyroFitNormalised(t); });
-  anglePlot_->showAll();
-  residualPlot_->addData(tr("gyro"), QPen(kGyroData), part(traces->gyroResidualArcsec));
-  residualPlot_->addData(tr("table"), QPen(kTableData), part(traces->tableResidualArcsec));
-  residualPlot_->showAll();
+  dialog->resize(1600, 900);
+  dialog->show();
 }
 
 }  // namespace fog::ui

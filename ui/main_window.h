@@ -1,83 +1,130 @@
 #pragma once
-// The bench window: choose a plan preset and a seed, Run (or Stop), watch
-// progress, then inspect each test point: normalised table and gyro angles
-// with their fitted sinusoids, the fit residuals, and the delay report.
+// The bench window a lab operator works in, in four views:
+//   Configure  the test plan, the source (simulator, replay of a session),
+//              the session's metadata and where it is recorded
+//   Live       the scrolling table and gyro angles, progress, counters
+//   Results    curves, fits, delay breakdown, delay vs frequency, report
+//   Sessions   the session browser: review, re-analyse, compare
+// Run and Stop are always at hand; Stop ends the run and keeps everything
+// recorded so far. Bench constants are set in a dialog and remembered.
 //
-// The window owns a BenchRunner and only reacts to its signals; it never
-// waits for the worker. Failures are shown in the status bar and the report
-// panel.
+// The window owns an AcquisitionRunner and reacts to its signals; it drains
+// the runner's buffer on a ~30 Hz timer and never waits for a worker.
+// Failures are shown in the status bar and on the Configure view (no modal
+// dialog unless the operator asked for an action), so an unattended window
+// never blocks.
 
 #include <QElapsedTimer>
+#include <QFutureWatcher>
 #include <QMainWindow>
+#include <QTimer>
 #include <memory>
 
-#include "analysis/delay_analysis.h"
-#include "ui/bench_runner.h"
+#include "common/session_info.h"
+#include "ui/acquisition_runner.h"
 
+class QCheckBox;
 class QComboBox;
 class QLabel;
-class QPlainTextEdit;
-class QProgressBar;
+class QLineEdit;
 class QPushButton;
 class QSpinBox;
+class QTabWidget;
 
 namespace fog::ui {
 
-class SeriesPlot;
+class LiveView;
+class PlanEditor;
+class ResultView;
+class SessionBrowser;
 
 class MainWindow : public QMainWindow {
   Q_OBJECT
 
  public:
+  enum View { kConfigure = 0, kLive, kResults, kSessions };
+
   explicit MainWindow(QWidget* parent = nullptr);
   ~MainWindow() override;
 
-  // Selects a preset by name (see benchPresets()); false for an unknown name.
-  bool selectPreset(const QString& name);
-  void setSeed(int seed);
-  bool isRunning() const;
+  PlanEditor* planEditor() const { return planEditor_; }
+  LiveView* liveView() const { return liveView_; }
+  ResultView* resultView() const { return resultView_; }
+  SessionBrowser* sessionBrowser() const { return sessionBrowser_; }
+  void showView(View view);
+  View currentView() const;
 
-  // The report of the last finished run, null before one finished.
-  const analysis::DelayReport* lastReport() const;
-  QString reportText() const;
-  SeriesPlot* anglePlot() const { return anglePlot_; }
-  SeriesPlot* residualPlot() const { return residualPlot_; }
+  // Source: the simulator at `speed` x real time (0: as fast as possible),
+  // or the replay of a session file.
+  void useSimulator(double speed, int seed);
+  void useReplay(const QString& sessionPath, double speed);
+  // Where sessions are recorded; empty: runs are not recorded.
+  void setSessionFolder(const QString& folder);
+  QString sessionFolder() const;
+  void setBenchSettings(const BenchSettings& settings);
+  const BenchSettings& benchSettings() const { return bench_; }
+
+  bool isRunning() const { return runner_.isRunning(); }
+  // The last run's or opened session's result (null before one).
+  const RunOutcome* lastOutcome() const;
+  // What the operator was last told in the status bar.
+  QString lastMessage() const { return lastMessage_; }
 
  public slots:
   void startRun();
   void stopRun();
+  // Opens a session read-only (in the background) and shows its result.
+  void openSession(const QString& path);
 
  signals:
   // Every started run ends with this, once its results (or error) are shown.
   void runEnded(bool succeeded);
+  // Every openSession ends with this.
+  void sessionOpened(bool succeeded);
 
  private:
-  void buildControls();
-  void buildResults();
+  QWidget* buildConfigureView();
+  void buildToolBar();
+  void drainLive();
   void setRunning(bool running);
-  void showProgress(const BenchProgress& progress);
-  void showOutcome(std::shared_ptr<const BenchOutcome> outcome);
+  void showOutcome(std::shared_ptr<const RunOutcome> outcome);
   void showFailure(const QString& message);
-  void showCancelled();
-  void showTestPoint(int position);
-  void showHealth(const StreamHealth& health);
+  void showHealth(const StreamHealth& health, std::uint64_t dropped);
+  void tell(const QString& message);
+  void loadSession(const QString& path, bool reanalyse, std::function<void(std::shared_ptr<const RunOutcome>)> done);
+  void compareSessions(const QString& first, const QString& second);
+  void updateRunButton();
+  SessionInfo sessionInfo() const;
 
-  BenchRunner runner_;
-  std::shared_ptr<const BenchOutcome> outcome_;
+  AcquisitionRunner runner_;
+  QTimer liveTimer_;
   QElapsedTimer runClock_;
+  BenchSettings bench_;
+  std::shared_ptr<const RunOutcome> shown_;
+  QString lastMessage_;
+  int pendingLoads_ = 0;
 
-  QComboBox* presetCombo_ = nullptr;
-  QSpinBox* seedSpin_ = nullptr;
+  QTabWidget* tabs_ = nullptr;
+  PlanEditor* planEditor_ = nullptr;
+  LiveView* liveView_ = nullptr;
+  ResultView* resultView_ = nullptr;
+  SessionBrowser* sessionBrowser_ = nullptr;
+
   QPushButton* runButton_ = nullptr;
   QPushButton* stopButton_ = nullptr;
-  QProgressBar* progressBar_ = nullptr;
-  QLabel* remainingLabel_ = nullptr;
+  QComboBox* sourceCombo_ = nullptr;
+  QComboBox* speedCombo_ = nullptr;
+  QSpinBox* seedSpin_ = nullptr;
+  QLineEdit* replayEdit_ = nullptr;
+  QCheckBox* recordCheck_ = nullptr;
+  QLineEdit* folderEdit_ = nullptr;
+  QLineEdit* operatorEdit_ = nullptr;
+  QLineEdit* imuModelEdit_ = nullptr;
+  QLineEdit* imuSerialEdit_ = nullptr;
+  QLineEdit* notesEdit_ = nullptr;
+  QLabel* configureMessage_ = nullptr;
+  QLabel* constantsLabel_ = nullptr;
   QLabel* framesLabel_ = nullptr;
-  QComboBox* testPointCombo_ = nullptr;
-  QLabel* lagLabel_ = nullptr;
-  SeriesPlot* anglePlot_ = nullptr;
-  SeriesPlot* residualPlot_ = nullptr;
-  QPlainTextEdit* reportView_ = nullptr;
 };
 
 }  // namespace fog::ui

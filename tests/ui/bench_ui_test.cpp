@@ -1,120 +1,283 @@
-// The bench window as a user drives it: pick a preset, press Run, read the
-// result; press Stop mid-run; and the curve thinning behind the plots.
+// The desktop bench as an operator drives it, on the offscreen platform:
+// edit a plan (and be told what is wrong), run on the simulator and watch it
+// live, read the result, stop a run and keep what was recorded, open a saved
+// session from the browser, re-analyse and export.
 
-#include <QComboBox>
+#include <QCryptographicHash>
+#include <QDoubleSpinBox>
+#include <QFile>
 #include <QLabel>
 #include <QPushButton>
 #include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTableWidget>
+#include <QTemporaryDir>
 #include <QtTest>
 #include <cmath>
 #include <vector>
 
+#include "session/session_file.h"
 #include "ui/curve_decimation.h"
+#include "ui/delta_picker.h"
+#include "ui/live_view.h"
 #include "ui/main_window.h"
+#include "ui/plan_editor.h"
+#include "ui/plot_export.h"
+#include "ui/result_view.h"
 #include "ui/series_plot.h"
+#include "ui/session_browser.h"
 
 using fog::ui::MainWindow;
+using fog::ui::PlanEditor;
 
 class BenchUiTest : public QObject {
   Q_OBJECT
 
  private:
-  static void choosePreset(MainWindow& window, const QString& name) {
-    auto* combo = window.findChild<QComboBox*>("presetCombo");
-    QVERIFY(combo);
-    const int i = combo->findData(name);
-    QVERIFY(i >= 0);
-    combo->setCurrentIndex(i);
+  QTemporaryDir sessions_;
+
+  static QPushButton* button(QWidget& w, const char* name) {
+    auto* b = w.findChild<QPushButton*>(name);
+    if (!b) qFatal("no button %s", name);
+    return b;
   }
-  static void clickButton(MainWindow& window, const char* name) {
-    auto* button = window.findChild<QPushButton*>(name);
-    QVERIFY(button);
-    QVERIFY(button->isEnabled());
-    QTest::mouseClick(button, Qt::LeftButton);
+  static void click(QWidget& w, const char* name) {
+    auto* b = button(w, name);
+    QVERIFY2(b->isEnabled(), name);
+    QTest::mouseClick(b, Qt::LeftButton);
+  }
+  static void setValue(PlanEditor* editor, int row, PlanEditor::Column column, double value) {
+    auto* spin = qobject_cast<QDoubleSpinBox*>(editor->cellEditor(row, column));
+    QVERIFY(spin);
+    spin->setValue(value);
+  }
+  static QByteArray sha256(const QString& path) {
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly)) return {};
+    return QCryptographicHash::hash(f.readAll(), QCryptographicHash::Sha256);
+  }
+  std::unique_ptr<MainWindow> window() {
+    auto w = std::make_unique<MainWindow>();
+    w->setSessionFolder(sessions_.path());
+    w->resize(1400, 900);
+    w->show();
+    return w;
   }
 
  private slots:
-  // Quick preset, 1 Hz / 3 deg for 20 s with the paper's delays: the bench
-  // must show the paper's 0.4658 ms lag, its report and both plots.
-  void quickRunShowsThePaperLag() {
-    MainWindow window;
-    window.resize(1200, 800);
-    window.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&window));
-    QSignalSpy ended(&window, &MainWindow::runEnded);
-    choosePreset(window, "quick");
-    clickButton(window, "runButton");
-    QVERIFY(window.isRunning());
+  void initTestCase() {
+    // Settings (bench constants, folder) go to a test location, never the user's.
+    QStandardPaths::setTestModeEnabled(true);
+    QCoreApplication::setOrganizationName("fogbench-tests");
+    QVERIFY(sessions_.isValid());
+  }
 
-    QTRY_VERIFY_WITH_TIMEOUT(!ended.isEmpty(), 120000);
-    QCOMPARE(ended.size(), 1);
+  // A value beyond the table's limits is explained next to the field, and Run
+  // is refused until it is fixed; periods and duration follow each other.
+  void planEditorExplainsABadValueBeforeARunCanStart() {
+    auto w = window();
+    auto* editor = w->planEditor();
+    QVERIFY(editor->loadPreset("paper-fast"));
+    QVERIFY(editor->isValid());
+    QVERIFY(button(*w, "runButton")->isEnabled());
+
+    setValue(editor, 0, PlanEditor::kFrequency, 30.0);  // the table stops at 20 Hz
+    QVERIFY(!editor->isValid());
+    const QString check = editor->table()->item(0, PlanEditor::kCheck)->text();
+    QVERIFY2(check.contains("frequency 30 Hz is beyond the table limit of 20 Hz"), qPrintable(check));
+    QVERIFY(editor->cellEditor(0, PlanEditor::kFrequency)->toolTip().contains("beyond the table limit"));
+    QVERIFY(!button(*w, "runButton")->isEnabled());
+    QVERIFY(button(*w, "runButton")->toolTip().contains("test point 1: frequency 30 Hz"));
+    QVERIFY(w->findChild<QLabel*>("configureMessage")->text().contains("Cannot run"));
+
+    setValue(editor, 0, PlanEditor::kFrequency, 2.0);
+    setValue(editor, 0, PlanEditor::kAmplitude, 3.0);
+    QVERIFY(editor->isValid());
+    QVERIFY(button(*w, "runButton")->isEnabled());
+    // 2 Hz: 20 periods are 10 s; 0.5 s is under two periods and refused.
+    setValue(editor, 0, PlanEditor::kPeriods, 20.0);
+    QCOMPARE(qobject_cast<QDoubleSpinBox*>(editor->cellEditor(0, PlanEditor::kDuration))->value(), 10.0);
+    setValue(editor, 0, PlanEditor::kDuration, 0.5);
+    QVERIFY(editor->problem().contains("under two swing periods"));
+    QVERIFY(!button(*w, "runButton")->isEnabled());
+
+    // Several test points; removing them all is explained too.
+    setValue(editor, 0, PlanEditor::kDuration, 10.0);
+    click(*w, "addPointButton");
+    QCOMPARE(editor->plan().points.size(), std::size_t(2));
+    QVERIFY(editor->isValid());
+    editor->table()->selectRow(0);
+    click(*w, "removePointButton");
+    editor->table()->selectRow(0);
+    click(*w, "removePointButton");
+    QVERIFY(editor->problem().contains("no test points"));
+  }
+
+  // The quick plan on the simulator at 20x: frames appear live, then the
+  // result with the paper's lag, its tables and plots, and a session file.
+  void quickRunShowsItLiveThenTheResult() {
+    auto w = window();
+    QSignalSpy ended(w.get(), &MainWindow::runEnded);
+    QVERIFY(w->planEditor()->loadPreset("quick"));
+    w->useSimulator(20.0, 1);
+    click(*w, "runButton");
+    QVERIFY(w->isRunning());
+    QCOMPARE(w->currentView(), MainWindow::kLive);
+    // Live: frames and a drawn curve while the run is under way.
+    QTRY_VERIFY_WITH_TIMEOUT(w->liveView()->traces().framesSeen() > 5000, 20000);
+    QTRY_VERIFY_WITH_TIMEOUT(w->liveView()->shownTablePoints() > 100, 5000);
+    QVERIFY(w->isRunning());
+    QVERIFY(w->liveView()->planProgress() > 0.0);
+
+    QTRY_VERIFY_WITH_TIMEOUT(!ended.isEmpty(), 60000);
     QCOMPARE(ended.front().front().toBool(), true);
-    const auto* report = window.lastReport();
-    QVERIFY(report);
-    QCOMPARE(report->points.size(), std::size_t(1));
-    QVERIFY2(std::abs(report->points.front().lagMs - 0.4658) < 0.01,
-             qPrintable(QString("lag %1 ms").arg(report->points.front().lagMs)));
-    QVERIFY(window.reportText().contains("simulator truth: lag 0.4658"));
-    QVERIFY(window.findChild<QLabel*>("lagLabel")->text().contains("lag 0.46"));
-    QVERIFY(window.findChild<QLabel*>("framesLabel")->text().contains("checksum failures: 0"));
+    QCOMPARE(w->currentView(), MainWindow::kResults);
+    const auto* outcome = w->lastOutcome();
+    QVERIFY(outcome && outcome->report);
+    QVERIFY(outcome->complete);
+    const double lag = outcome->report->points.front().lagMs;
+    QVERIFY2(std::abs(lag - 0.4658) < 0.01, qPrintable(QString("lag %1 ms").arg(lag)));
+    QVERIFY(w->resultView()->reportText().contains("simulator truth: lag 0.4658"));
+    QVERIFY(w->findChild<QLabel*>("lagLabel")->text().contains("lag 0.46"));
+    QVERIFY(w->findChild<QLabel*>("framesLabel")->text().contains("checksum failures: 0"));
+    // The live view saw every frame the run decoded.
+    const auto& h = outcome->recording.health;
+    QCOMPARE(w->liveView()->traces().framesSeen(), h.tableFrames + h.imuFrames + h.statusFrames);
 
-    // Angles: table, gyro, and the two fits; residuals: gyro and table.
-    auto* angles = window.anglePlot();
-    auto* residuals = window.residualPlot();
+    // Fit table (3- and 4-parameter fits of both channels, joint fit) and the
+    // breakdown, IMU delay = lag + 0.05 ms.
+    QCOMPARE(w->resultView()->fitTable()->rowCount(), 5);
+    QCOMPARE(w->resultView()->delayTable()->rowCount(), 5);
+    QVERIFY(w->resultView()->delayTable()->item(2, 0)->text().contains("IMU delay"));
+    const double imu = w->resultView()->delayTable()->item(2, 1)->text().toDouble();
+    QVERIFY(std::abs(imu - (lag + 0.05)) < 1e-4);
+    auto* angles = w->resultView()->anglePlot();
     QCOMPARE(angles->curveCount(), 4);
-    QCOMPARE(residuals->curveCount(), 2);
-    QVERIFY(angles->dataPoints(0) > 15000);  // 20 s of 1 ms table samples
-    QVERIFY(angles->dataPoints(1) > 7000);   // 20 s of 2 ms IMU frames
-    for (int i = 0; i < angles->curveCount(); ++i) {
-      QVERIFY(angles->shownPoints(i) > 100);
-      QVERIFY(angles->shownPoints(i) <= std::size_t(4 * angles->canvas()->width() + 2) ||
-              angles->shownPoints(i) == angles->dataPoints(i));
-    }
-    QVERIFY(angles->shownPoints(0) < angles->dataPoints(0));  // thinned, not all 20k points
-    for (int i = 0; i < residuals->curveCount(); ++i) QVERIFY(residuals->shownPoints(i) > 100);
-    QVERIFY(!window.findChild<QPushButton*>("stopButton")->isEnabled());
+    QVERIFY(angles->dataPoints(0) > 15000);
+    QVERIFY(angles->shownPoints(0) < angles->dataPoints(0));  // thinned
+    QVERIFY(!w->resultView()->frequencyPlot()->itemList().isEmpty());
+
+    // Recorded: the session is in the folder and listed with its lag.
+    QVERIFY(QFile::exists(QString::fromStdString(outcome->sessionPath)));
+    w->showView(MainWindow::kSessions);
+    auto* table = w->sessionBrowser()->table();
+    QVERIFY(table->rowCount() >= 1);
+    QVERIFY(w->sessionBrowser()->selectedPaths().contains(QString::fromStdString(outcome->sessionPath)));
+    QVERIFY(!button(*w, "stopButton")->isEnabled());
   }
 
-  // Stop during the paper plan ends the run without a result, and the next
-  // run works. Stop follows Run at once: the whole plan takes well under a
-  // second on a fast machine, so waiting for progress first would race.
-  void stopCancelsARunAndLeavesTheWindowUsable() {
-    MainWindow window;
-    window.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&window));
-    QSignalSpy ended(&window, &MainWindow::runEnded);
-    choosePreset(window, "paper");
-    clickButton(window, "runButton");
-    QVERIFY(window.isRunning());
-    QVERIFY(!window.findChild<QPushButton*>("runButton")->isEnabled());
-    clickButton(window, "stopButton");
-
+  // Stop mid-run: the run ends incomplete, everything received is kept,
+  // stored, analysed as far as it goes, and the window is ready again.
+  void stopKeepsEverythingRecordedSoFar() {
+    auto w = window();
+    QSignalSpy ended(w.get(), &MainWindow::runEnded);
+    QVERIFY(w->planEditor()->loadPreset("paper-fast"));  // 60 s at real time
+    w->useSimulator(1.0, 2);
+    click(*w, "runButton");
+    QTRY_VERIFY_WITH_TIMEOUT(w->liveView()->traces().framesSeen() > 3000, 20000);  // ~2 s of stream
+    click(*w, "stopButton");
     QTRY_VERIFY_WITH_TIMEOUT(!ended.isEmpty(), 30000);
-    QCOMPARE(ended.front().front().toBool(), false);
-    QVERIFY(!window.isRunning());
-    QVERIFY(window.lastReport() == nullptr);
-    QCOMPARE(window.anglePlot()->curveCount(), 0);
-    QVERIFY(window.findChild<QPushButton*>("runButton")->isEnabled());
-    QVERIFY(!window.findChild<QPushButton*>("stopButton")->isEnabled());
-
-    choosePreset(window, "quick");
-    clickButton(window, "runButton");
-    QTRY_VERIFY_WITH_TIMEOUT(ended.size() == 2, 120000);
-    QCOMPARE(ended.back().front().toBool(), true);
-    QVERIFY(window.lastReport());
+    QVERIFY(!w->isRunning());
+    const auto* outcome = w->lastOutcome();
+    QVERIFY(outcome);
+    QVERIFY(!outcome->complete);
+    QVERIFY(QString::fromStdString(outcome->incompleteReason).contains("stopped by the operator"));
+    QVERIFY(w->lastMessage().contains("Run incomplete"));
+    auto reader = fog::session::SessionReader::open(outcome->sessionPath);
+    QVERIFY2(reader.isOk(), reader.status().message().c_str());
+    QVERIFY(!(*reader)->complete());
+    QVERIFY((*reader)->rawByteCount() > 3000u * 26u);
+    QVERIFY(button(*w, "runButton")->isEnabled());
   }
 
-  // Closing the window mid-run cancels the worker: no crash, no hang.
-  void destroyingTheWindowMidRunCancelsTheWorker() {
-    auto window = std::make_unique<MainWindow>();
-    window->show();
-    choosePreset(*window, "paper");
-    clickButton(*window, "runButton");
-    QVERIFY(window->isRunning());
+  // A saved session opens read-only in the browser; re-analysis adds a
+  // result and leaves the recorded data alone; two sessions compare side by side.
+  void openASavedSessionFromTheBrowser() {
+    auto w = window();
+    auto* browser = w->sessionBrowser();
+    browser->refresh();
+    QString complete;
+    for (int r = 0; r < browser->table()->rowCount(); ++r)
+      if (browser->table()->item(r, 5)->text() == "complete") complete = browser->table()->item(r, 0)->data(Qt::UserRole).toString();
+    QVERIFY2(!complete.isEmpty(), "the quick run's session should be listed as complete");
+    const QByteArray before = sha256(complete);
+    const auto resultsBefore = (*fog::session::SessionReader::open(complete.toStdString()))->results()->size();
+
+    QSignalSpy opened(w.get(), &MainWindow::sessionOpened);
+    QVERIFY(browser->selectPath(complete));
+    click(*w, "openSessionButton");
+    QTRY_VERIFY_WITH_TIMEOUT(!opened.isEmpty(), 30000);
+    QCOMPARE(opened.front().front().toBool(), true);
+    QCOMPARE(w->currentView(), MainWindow::kResults);
+    QVERIFY(w->lastOutcome() && w->lastOutcome()->report);
+    QVERIFY(std::abs(w->lastOutcome()->report->points.front().lagMs - 0.4658) < 0.01);
+    QVERIFY(w->lastMessage().contains("read-only review"));
+    QCOMPARE(sha256(complete), before);  // review never writes
+
+    // Re-analysis with other constants: one more result, same raw data.
+    fog::BenchSettings other = w->benchSettings();
+    other.boardDelayMs = 0.3;
+    w->setBenchSettings(other);
+    QVERIFY(browser->selectPath(complete));
+    click(*w, "reanalyseButton");
+    QTRY_VERIFY_WITH_TIMEOUT(w->lastMessage().contains("re-analysed"), 30000);
+    auto reader = fog::session::SessionReader::open(complete.toStdString());
+    QVERIFY(reader.isOk());
+    QCOMPARE((*reader)->results()->size(), resultsBefore + 1);
+
+    // Compare the two sessions of the folder.
+    const QStringList all = [&] {
+      QStringList paths;
+      for (int r = 0; r < browser->table()->rowCount(); ++r)
+        paths << browser->table()->item(r, 0)->data(Qt::UserRole).toString();
+      return paths;
+    }();
+    QVERIFY(all.size() >= 2);
+    browser->table()->clearSelection();
+    browser->table()->setSelectionMode(QAbstractItemView::MultiSelection);
+    browser->selectPath(all[0]);
+    browser->selectPath(all[1]);
+    click(*w, "compareButton");
+    QWidget* compare = w->findChild<QWidget*>("compareWindow");
+    QVERIFY(compare);
+    QTRY_VERIFY_WITH_TIMEOUT(compare->findChildren<fog::ui::ResultView*>().size() == 2 &&
+                                 compare->findChildren<fog::ui::ResultView*>()[0]->outcome() &&
+                                 compare->findChildren<fog::ui::ResultView*>()[1]->outcome(),
+                             30000);
+  }
+
+  // Plots export as PNG, SVG and PDF; a bad name is explained.
+  void plotsExport() {
+    QTemporaryDir dir;
+    auto w = window();
+    auto* plot = w->liveView()->tablePlot();
+    for (const char* name : {"p.png", "p.svg", "p.pdf"}) {
+      const QString path = dir.filePath(name);
+      const auto s = fog::ui::exportPlot(plot, path);
+      QVERIFY2(s.isOk(), s.message().c_str());
+      QVERIFY(QFileInfo(path).size() > 500);
+    }
+    QVERIFY(!fog::ui::exportPlot(plot, dir.filePath("p.txt")).isOk());
+    QVERIFY(!fog::ui::exportPlot(plot, "/nonexistent-dir/p.pdf").isOk());
+  }
+
+  // Closing the window mid-run stops the worker: no crash, no hang.
+  void destroyingTheWindowMidRunStopsTheWorker() {
+    auto w = window();
+    w->planEditor()->loadPreset("paper");
+    w->useSimulator(1.0, 3);
+    click(*w, "runButton");
+    QVERIFY(w->isRunning());
     QElapsedTimer clock;
     clock.start();
-    window.reset();
+    w.reset();
     QVERIFY(clock.elapsed() < 5000);
+  }
+
+  void durationsReadWell() {
+    QCOMPARE(fog::ui::formatDuration(0.0004658), QString("465.8 µs"));
+    QCOMPARE(fog::ui::formatDuration(0.0123), QString("12.3000 ms"));
+    QCOMPARE(fog::ui::formatDuration(-1.5), QString("-1.5000 s"));
   }
 
   // Thinning keeps each column's extremes, bounds the point count, and keeps

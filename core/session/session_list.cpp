@@ -1,0 +1,77 @@
+#include "session/session_list.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "session/session_file.h"
+
+namespace fog::session {
+
+namespace fs = std::filesystem;
+
+std::string axesOf(const TestPlan& plan) {
+  std::string out;
+  for (int a = 0; a < kAxisCount; ++a) {
+    const bool used = std::any_of(plan.points.begin(), plan.points.end(),
+                                  [&](const TestPoint& p) { return static_cast<int>(p.axis) == a; });
+    if (used) out += (out.empty() ? "" : ",") + std::string(axisName(static_cast<Axis>(a)));
+  }
+  return out.empty() ? "-" : out;
+}
+
+Result<SessionListing> listSessions(const std::string& dirText) {
+  const fs::path dir = dirText;
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) return ioError("'" + dir.string() + "' is not a folder");
+  std::vector<fs::path> files;
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
+    if (it->is_regular_file(ec)) files.push_back(it->path());
+  if (ec) return ioError("cannot list '" + dir.string() + "': " + ec.message());
+  std::sort(files.begin(), files.end());
+
+  SessionListing listing;
+  for (const auto& f : files) {
+    const std::string p = f.string();
+    const std::string name = f.filename().string();
+    // SQLite's side files of a session being recorded (or killed while
+    // recording) belong to that session: neither listed nor "skipped".
+    bool sideFile = false;
+    for (const std::string sfx : {"-wal", "-shm", "-journal"})
+      if (name.size() > sfx.size() && name.compare(name.size() - sfx.size(), sfx.size(), sfx) == 0 &&
+          fs::exists(p.substr(0, p.size() - sfx.size()), ec))
+        sideFile = true;
+    if (sideFile) continue;
+    if (!looksLikeSession(p)) {
+      ++listing.skippedFiles;
+      continue;
+    }
+    SessionSummary s;
+    s.path = p;
+    s.fileName = name;
+    auto r = SessionReader::open(p);
+    if (!r) {
+      s.error = r.status().message();
+      listing.sessions.push_back(std::move(s));
+      continue;
+    }
+    s.info = (*r)->info();
+    s.complete = (*r)->complete();
+    s.incompleteReason = (*r)->incompleteReason();
+    auto results = (*r)->results();
+    if (results) s.results = results->size();
+    if (results && !results->empty()) {
+      const auto doc = nlohmann::json::parse(results->back().reportJson, nullptr, false);
+      if (doc.is_object() && doc.contains("test_points") && doc["test_points"].is_array()) {
+        for (const auto& tp : doc["test_points"]) {
+          if (tp.contains("lag_ms") && tp["lag_ms"].is_number()) s.lagMs.push_back(tp["lag_ms"]);
+          if (tp.contains("imu_delay_ms") && tp["imu_delay_ms"].is_number()) s.imuDelayMs.push_back(tp["imu_delay_ms"]);
+        }
+      }
+    }
+    listing.sessions.push_back(std::move(s));
+  }
+  return listing;
+}
+
+}  // namespace fog::session

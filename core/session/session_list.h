@@ -1,0 +1,37 @@
+#pragma once
+// A folder of session files at a glance: for the CLI's `sessions DIR` and the
+// GUI's session browser. Qt-free.
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "common/session_info.h"
+#include "common/status.h"
+
+namespace fog::session {
+
+struct SessionSummary {
+  std::string path;
+  std::string fileName;
+  std::string error;  // non-empty: the file looks like a session but cannot be read; says why
+  SessionInfo info;
+  bool complete = false;
+  std::string incompleteReason;
+  std::size_t results = 0;
+  // Per test point, from the latest stored result (empty without one).
+  std::vector<double> lagMs, imuDelayMs;
+};
+
+struct SessionListing {
+  std::vector<SessionSummary> sessions;  // by file name
+  int skippedFiles = 0;                   // files that are not sessions (SQLite side files not counted)
+};
+
+// Errors: `dir` is not a folder or cannot be listed (kIoError).
+Result<SessionListing> listSessions(const std::string& dir);
+
+// "x,z": the axes a plan swings, "-" for none.
+std::string axesOf(const TestPlan& plan);
+
+}  // namespace fog::session

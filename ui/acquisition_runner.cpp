@@ -1,0 +1,77 @@
+#include "ui/acquisition_runner.h"
+
+#include <QMetaObject>
+#include <QtConcurrent/QtConcurrentRun>
+
+namespace fog::ui {
+
+AcquisitionRunner::AcquisitionRunner(QObject* parent) : QObject(parent) {
+  qRegisterMetaType<std::shared_ptr<const fog::ui::RunOutcome>>();
+}
+
+AcquisitionRunner::~AcquisitionRunner() {
+  stop_.store(true);
+  future_.waitForFinished();
+}
+
+bool AcquisitionRunner::start(RunRequest request) {
+  if (running_ || !request.source) return false;
+  running_ = true;
+  stop_.store(false);
+  dropped_.store(0);
+  {
+    std::lock_guard lock(mutex_);
+    buffer_.clear();
+    bufferedFrames_ = 0;
+  }
+  future_ = QtConcurrent::run([this, request = std::move(request)] {
+    auto result = acquisition::acquire(*request.source, request.options, &stop_,
+                                       [this](acquisition::AcquisitionBatch&& b) { push(std::move(b)); });
+    std::shared_ptr<RunOutcome> outcome;
+    if (result) {
+      outcome = std::make_shared<RunOutcome>();
+      outcome->info = request.options.info;
+      outcome->sessionPath = result->sessionPath;
+      outcome->complete = result->complete;
+      outcome->incompleteReason = result->incompleteReason;
+      outcome->recording = std::move(result->recording);
+      outcome->report = std::move(result->report);
+      outcome->truth = request.truth;
+      completeOutcome(*outcome, request.options.reportContext.source);
+    }
+    const QString error = result ? QString() : QString::fromStdString(result.status().message());
+    QMetaObject::invokeMethod(
+        this,
+        [this, outcome, error] {
+          running_ = false;
+          if (outcome) emit finished(outcome);
+          else emit failed(error);
+        },
+        Qt::QueuedConnection);
+  });
+  return true;
+}
+
+void AcquisitionRunner::stop() { stop_.store(true); }
+
+void AcquisitionRunner::push(acquisition::AcquisitionBatch&& batch) {
+  std::lock_guard lock(mutex_);
+  bufferedFrames_ += batch.frames.size();
+  buffer_.push_back(std::move(batch));
+  // Drop the oldest frames for display, keeping the newest batch's counters.
+  while (bufferedFrames_ > kMaxBufferedFrames && buffer_.size() > 1) {
+    bufferedFrames_ -= buffer_.front().frames.size();
+    dropped_ += buffer_.front().frames.size();
+    buffer_.erase(buffer_.begin());
+  }
+}
+
+std::vector<acquisition::AcquisitionBatch> AcquisitionRunner::takeBatches() {
+  std::lock_guard lock(mutex_);
+  std::vector<acquisition::AcquisitionBatch> out;
+  out.swap(buffer_);
+  bufferedFrames_ = 0;
+  return out;
+}
+
+}  // namespace fog::ui

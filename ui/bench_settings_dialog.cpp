@@ -1,0 +1,120 @@
+#include "ui/bench_settings_dialog.h"
+
+#include <QDialogButtonBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QSettings>
+#include <QSpinBox>
+#include <QVBoxLayout>
+
+namespace fog::ui {
+
+namespace {
+
+QDoubleSpinBox* spin(double min, double max, int decimals, const QString& suffix, double value) {
+  auto* s = new QDoubleSpinBox();
+  s->setRange(min, max);
+  s->setDecimals(decimals);
+  s->setSuffix(suffix);
+  s->setValue(value);
+  return s;
+}
+
+}  // namespace
+
+BenchSettings loadBenchSettings() {
+  QSettings q;
+  q.beginGroup("bench");
+  const BenchSettings d;
+  BenchSettings s;
+  s.tableReadDelayMs = q.value("table_read_delay_ms", d.tableReadDelayMs).toDouble();
+  s.tableReadDelayStdMs = q.value("table_read_delay_std_ms", d.tableReadDelayStdMs).toDouble();
+  s.boardDelayMs = q.value("board_delay_ms", d.boardDelayMs).toDouble();
+  s.boardDelayStdMs = q.value("board_delay_std_ms", d.boardDelayStdMs).toDouble();
+  s.latitudeDeg = q.value("latitude_deg", d.latitudeDeg).toDouble();
+  s.pulseEquivalentDeg = q.value("pulse_equivalent_deg", d.pulseEquivalentDeg).toDouble();
+  s.counterHz = q.value("counter_hz", d.counterHz).toDouble();
+  s.counterBits = q.value("counter_bits", d.counterBits).toInt();
+  return s;
+}
+
+void saveBenchSettings(const BenchSettings& s) {
+  QSettings q;
+  q.beginGroup("bench");
+  q.setValue("table_read_delay_ms", s.tableReadDelayMs);
+  q.setValue("table_read_delay_std_ms", s.tableReadDelayStdMs);
+  q.setValue("board_delay_ms", s.boardDelayMs);
+  q.setValue("board_delay_std_ms", s.boardDelayStdMs);
+  q.setValue("latitude_deg", s.latitudeDeg);
+  q.setValue("pulse_equivalent_deg", s.pulseEquivalentDeg);
+  q.setValue("counter_hz", s.counterHz);
+  q.setValue("counter_bits", s.counterBits);
+}
+
+BenchSettingsDialog::BenchSettingsDialog(const BenchSettings& s, QWidget* parent) : QDialog(parent) {
+  setWindowTitle(tr("Bench constants"));
+  setObjectName("benchSettingsDialog");
+  auto* form = new QFormLayout();
+  readDelay_ = spin(0.0, 100.0, 4, tr(" ms"), s.tableReadDelayMs);
+  readDelayStd_ = spin(0.0, 100.0, 4, tr(" ms"), s.tableReadDelayStdMs);
+  boardDelay_ = spin(0.0, 100.0, 4, tr(" ms"), s.boardDelayMs);
+  boardDelayStd_ = spin(0.0, 100.0, 4, tr(" ms"), s.boardDelayStdMs);
+  latitude_ = spin(-90.0, 90.0, 4, tr(" °"), s.latitudeDeg);
+  pulseEquivalent_ = spin(0.0, 1.0, 9, tr(" °/pulse"), s.pulseEquivalentDeg);
+  counterMHz_ = spin(0.001, 1000.0, 3, tr(" MHz"), s.counterHz / 1e6);
+  counterBits_ = new QSpinBox();
+  counterBits_->setRange(8, 32);
+  counterBits_->setValue(s.counterBits);
+  counterBits_->setSuffix(tr(" bit"));
+  readDelay_->setObjectName("readDelaySpin");
+  boardDelay_->setObjectName("boardDelaySpin");
+  form->addRow(tr("Table angle read delay"), readDelay_);
+  form->addRow(tr("  its standard uncertainty"), readDelayStd_);
+  form->addRow(tr("Processing-board delay"), boardDelay_);
+  form->addRow(tr("  its standard uncertainty"), boardDelayStd_);
+  form->addRow(tr("Latitude"), latitude_);
+  form->addRow(tr("Gyro pulse equivalent"), pulseEquivalent_);
+  form->addRow(tr("Sampling-board counter"), counterMHz_);
+  form->addRow(tr("Counter width"), counterBits_);
+
+  auto* note = new QLabel(tr("IMU delay = measured lag + table read delay; gyro's own delay = IMU delay − "
+                             "processing-board delay. The pulse equivalent is used only when the board's stream "
+                             "does not state it; the simulator uses these values for the chain it simulates."));
+  note->setWordWrap(true);
+  auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel |
+                                       QDialogButtonBox::RestoreDefaults);
+  connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
+  connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+  connect(buttons->button(QDialogButtonBox::RestoreDefaults), &QPushButton::clicked, this, [this] {
+    const BenchSettings d;
+    readDelay_->setValue(d.tableReadDelayMs);
+    readDelayStd_->setValue(d.tableReadDelayStdMs);
+    boardDelay_->setValue(d.boardDelayMs);
+    boardDelayStd_->setValue(d.boardDelayStdMs);
+    latitude_->setValue(d.latitudeDeg);
+    pulseEquivalent_->setValue(d.pulseEquivalentDeg);
+    counterMHz_->setValue(d.counterHz / 1e6);
+    counterBits_->setValue(d.counterBits);
+  });
+  auto* layout = new QVBoxLayout(this);
+  layout->addLayout(form);
+  layout->addWidget(note);
+  layout->addWidget(buttons);
+}
+
+BenchSettings BenchSettingsDialog::settings() const {
+  BenchSettings s;
+  s.tableReadDelayMs = readDelay_->value();
+  s.tableReadDelayStdMs = readDelayStd_->value();
+  s.boardDelayMs = boardDelay_->value();
+  s.boardDelayStdMs = boardDelayStd_->value();
+  s.latitudeDeg = latitude_->value();
+  s.pulseEquivalentDeg = pulseEquivalent_->value();
+  s.counterHz = counterMHz_->value() * 1e6;
+  s.counterBits = counterBits_->value();
+  return s;
+}
+
+}  // namespace fog::ui

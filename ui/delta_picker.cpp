@@ -1,0 +1,41 @@
+#include "ui/delta_picker.h"
+
+#include <cmath>
+#include <qwt_picker_machine.h>
+#include <qwt_plot.h>
+#include <qwt_text.h>
+
+namespace fog::ui {
+
+QString formatDuration(double s) {
+  const double a = std::abs(s);
+  if (a < 1e-3) return QObject::tr("%1 µs").arg(s * 1e6, 0, 'f', 1);
+  if (a < 1.0) return QObject::tr("%1 ms").arg(s * 1e3, 0, 'f', 4);
+  return QObject::tr("%1 s").arg(s, 0, 'f', 4);
+}
+
+DeltaPicker::DeltaPicker(QWidget* canvas, QString unit)
+    : QwtPlotPicker(QwtPlot::xBottom, QwtPlot::yLeft, QwtPicker::PolygonRubberBand, QwtPicker::AlwaysOn, canvas),
+      unit_(std::move(unit)) {
+  setStateMachine(new QwtPickerDragLineMachine());
+  setRubberBandPen(QPen(QColor(80, 80, 80), 1, Qt::DashLine));
+  setTrackerPen(QPen(Qt::black));
+}
+
+QString DeltaPicker::readout(const QPointF& pos) const {
+  QString text = tr("t = %1 s, %2 %3").arg(pos.x(), 0, 'f', 4).arg(pos.y(), 0, 'g', 6).arg(unit_);
+  const QPolygon band = selection();
+  if (isActive() && band.size() >= 2) {
+    const QPointF start = invTransform(band.front());
+    text += tr("\nΔt = %1, Δ = %2 %3").arg(formatDuration(pos.x() - start.x())).arg(pos.y() - start.y(), 0, 'g', 4).arg(unit_);
+  }
+  return text;
+}
+
+QwtText DeltaPicker::trackerTextF(const QPointF& pos) const {
+  QwtText t(readout(pos));
+  t.setBackgroundBrush(QColor(255, 255, 255, 220));
+  return t;
+}
+
+}  // namespace fog::ui

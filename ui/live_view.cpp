@@ -1,0 +1,274 @@
+#include "ui/live_view.h"
+
+#include <QDoubleSpinBox>
+#include <QEvent>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QVBoxLayout>
+#include <algorithm>
+#include <cmath>
+#include <qwt_legend.h>
+#include <qwt_plot.h>
+#include <qwt_plot_canvas.h>
+#include <qwt_plot_curve.h>
+#include <qwt_plot_grid.h>
+#include <qwt_plot_magnifier.h>
+#include <qwt_plot_panner.h>
+#include <qwt_scale_div.h>
+#include <qwt_scale_widget.h>
+#include <vector>
+
+#include "ui/curve_decimation.h"
+#include "ui/delta_picker.h"
+
+namespace fog::ui {
+
+namespace {
+
+const QColor kTableColour(31, 119, 180);
+const QColor kGyroColour(255, 127, 14);
+
+// Plan time of the whole run as the simulator lays it out: rest, then per
+// test point settle + record + rest.
+double planTotalS(const TestPlan& plan) {
+  double t = plan.restBetweenS;
+  for (const auto& p : plan.points) t += p.settleS + p.durationS + plan.restBetweenS;
+  return t;
+}
+
+QString clockText(double s) {
+  const auto whole = static_cast<long long>(std::ceil(std::max(0.0, s)));
+  return QObject::tr("%1:%2").arg(whole / 60).arg(whole % 60, 2, 10, QChar('0'));
+}
+
+}  // namespace
+
+QwtPlot* LiveView::makePlot(const QString& title, const QString& yTitle, QwtPlotCurve** curve, const QColor& colour,
+                            const QString& unit) {
+  auto* plot = new QwtPlot();
+  plot->setTitle(title);
+  plot->setAxisTitle(QwtPlot::xBottom, tr("board time (s)"));
+  plot->setAxisTitle(QwtPlot::yLeft, yTitle);
+  plot->setCanvasBackground(Qt::white);
+  auto* grid = new QwtPlotGrid();
+  grid->setMajorPen(QPen(QColor(220, 220, 220), 0, Qt::DotLine));
+  grid->attach(plot);
+  *curve = new QwtPlotCurve(title);
+  (*curve)->setPen(QPen(colour, 1.2));
+  (*curve)->setRenderHint(QwtPlotItem::RenderAntialiased, false);
+  (*curve)->setPaintAttribute(QwtPlotCurve::ClipPolygons, true);
+  (*curve)->attach(plot);
+
+  new DeltaPicker(plot->canvas(), unit);
+  auto* panner = new QwtPlotPanner(plot->canvas());
+  panner->setMouseButton(Qt::RightButton);
+  panner->setOrientations(Qt::Horizontal);
+  // The wheel zooms the time axis only: the value axis keeps autoscaling.
+  auto* magnifier = new QwtPlotMagnifier(plot->canvas());
+  magnifier->setMouseButton(Qt::NoButton);
+  magnifier->setAxisEnabled(QwtPlot::yLeft, false);
+  connect(panner, &QwtPlotPanner::panned, this, [this] { setFollowing(false); });
+  plot->canvas()->installEventFilter(this);  // a wheel zoom stops the scrolling too
+  // Both plots show the same stretch of time.
+  connect(plot->axisWidget(QwtPlot::xBottom), &QwtScaleWidget::scaleDivChanged, this, [this, plot] {
+    if (following_ || syncingScales_) return;
+    syncingScales_ = true;
+    const auto div = plot->axisScaleDiv(QwtPlot::xBottom);
+    for (auto* other : {tablePlot_, gyroPlot_})
+      if (other && other != plot) {
+        other->setAxisScale(QwtPlot::xBottom, div.lowerBound(), div.upperBound());
+        other->replot();
+      }
+    syncingScales_ = false;
+    dirty_ = true;
+  });
+  plot->setAxisAutoScale(QwtPlot::yLeft, true);
+  return plot;
+}
+
+LiveView::LiveView(QWidget* parent) : QWidget(parent) {
+  auto* layout = new QVBoxLayout(this);
+  auto* state = new QHBoxLayout();
+  stateLabel_ = new QLabel(tr("No run yet: configure a plan and press Run."));
+  stateLabel_->setObjectName("liveStateLabel");
+  state->addWidget(stateLabel_, 1);
+  state->addWidget(new QLabel(tr("Window")));
+  windowSpin_ = new QDoubleSpinBox();
+  windowSpin_->setRange(0.5, 120.0);
+  windowSpin_->setValue(10.0);
+  windowSpin_->setSuffix(tr(" s"));
+  windowSpin_->setToolTip(tr("How much of the stream the plots show while following"));
+  state->addWidget(windowSpin_);
+  followButton_ = new QPushButton(tr("Follow live"));
+  followButton_->setObjectName("followButton");
+  followButton_->setCheckable(true);
+  state->addWidget(followButton_);
+  layout->addLayout(state);
+
+  tablePlot_ = makePlot(tr("Turntable angle"), tr("angle (°)"), &tableCurve_, kTableColour, "°");
+  tablePlot_->setObjectName("liveTablePlot");
+  gyroPlot_ = makePlot(tr("Gyro angle (integrated, bias + Earth rate removed)"), tr("angle (°)"), &gyroCurve_,
+                       kGyroColour, "°");
+  gyroPlot_->setObjectName("liveGyroPlot");
+  layout->addWidget(tablePlot_, 1);
+  layout->addWidget(gyroPlot_, 1);
+
+  auto* progress = new QHBoxLayout();
+  progress->addWidget(new QLabel(tr("Test point")));
+  pointBar_ = new QProgressBar();
+  pointBar_->setObjectName("pointProgress");
+  pointBar_->setRange(0, 1000);
+  pointBar_->setFormat("%p%");
+  progress->addWidget(pointBar_, 1);
+  progress->addWidget(new QLabel(tr("Plan")));
+  planBar_ = new QProgressBar();
+  planBar_->setObjectName("planProgress");
+  planBar_->setRange(0, 1000);
+  planBar_->setFormat("%p%");
+  progress->addWidget(planBar_, 2);
+  remainingLabel_ = new QLabel();
+  remainingLabel_->setObjectName("remainingLabel");
+  remainingLabel_->setMinimumWidth(160);
+  progress->addWidget(remainingLabel_);
+  layout->addLayout(progress);
+
+  connect(followButton_, &QPushButton::toggled, this, [this](bool on) { setFollowing(on); });
+  connect(windowSpin_, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this] {
+    dirty_ = true;
+    refresh();
+  });
+  setFollowing(true);
+}
+
+bool LiveView::eventFilter(QObject* watched, QEvent* event) {
+  if (event->type() == QEvent::Wheel) setFollowing(false);
+  return QWidget::eventFilter(watched, event);
+}
+
+void LiveView::setFollowing(bool following) {
+  following_ = following;
+  {
+    const QSignalBlocker block(followButton_);
+    followButton_->setChecked(following);
+  }
+  if (following) {
+    dirty_ = true;
+    refresh();
+  }
+}
+
+void LiveView::startRun(const TestPlan& plan, double speed) {
+  traces_.clear();
+  plan_ = plan;
+  speed_ = speed;
+  wall_.start();
+  tableCurve_->setSamples(QVector<QPointF>());
+  gyroCurve_->setSamples(QVector<QPointF>());
+  setFollowing(true);
+  pointBar_->setValue(0);
+  planBar_->setValue(0);
+  stateLabel_->setText(tr("Waiting for the first frames …"));
+  dirty_ = true;
+  refresh();
+}
+
+void LiveView::addFrames(std::span<const protocol::DecodedFrame> frames) {
+  if (frames.empty()) return;
+  // While the operator inspects a zoomed stretch, the history must not scroll
+  // out from under them: the window of kept data is generous.
+  traces_.add(frames);
+  dirty_ = true;
+}
+
+void LiveView::endRun() {
+  updateProgress();
+  remainingLabel_->setText(tr("run ended"));
+}
+
+std::size_t LiveView::shownTablePoints() const { return tableCurve_->dataSize(); }
+std::size_t LiveView::shownGyroPoints() const { return gyroCurve_->dataSize(); }
+
+double LiveView::planProgress() const {
+  const double total = planTotalS(plan_);
+  return total > 0.0 ? std::clamp(traces_.streamTimeS() / total, 0.0, 1.0) : 0.0;
+}
+
+double LiveView::pointProgress() const {
+  const int i = traces_.testPoint();
+  if (i < 0 || i >= static_cast<int>(plan_.points.size()) || traces_.recordingStartS() < 0.0) return 0.0;
+  const double d = plan_.points[static_cast<std::size_t>(i)].durationS;
+  return d > 0.0 ? std::clamp((traces_.streamTimeS() - traces_.recordingStartS()) / d, 0.0, 1.0) : 0.0;
+}
+
+QString LiveView::remainingText() const {
+  const double total = planTotalS(plan_);
+  if (plan_.points.empty() || total <= 0.0) return tr("plan unknown");
+  const double wallS = static_cast<double>(wall_.elapsed()) / 1e3;
+  // The stream's own pace once it is measurable; the requested speed before.
+  const double rate = wallS > 2.0 && traces_.streamTimeS() > 0.0 ? traces_.streamTimeS() / wallS
+                      : speed_ > 0.0                             ? speed_
+                                                                 : 0.0;
+  if (rate <= 0.0) return tr("as fast as possible");
+  return tr("%1 left of %2").arg(clockText((total - traces_.streamTimeS()) / rate)).arg(clockText(total / rate));
+}
+
+void LiveView::updateProgress() {
+  pointBar_->setValue(static_cast<int>(std::lround(1000.0 * pointProgress())));
+  planBar_->setValue(static_cast<int>(std::lround(1000.0 * planProgress())));
+  remainingLabel_->setText(remainingText());
+  const int i = traces_.testPoint();
+  QString phase;
+  switch (traces_.phase()) {
+    case protocol::TestPhase::kIdle: phase = tr("table at rest"); break;
+    case protocol::TestPhase::kSettling: phase = tr("settling"); break;
+    case protocol::TestPhase::kRecording: phase = tr("recording"); break;
+    case protocol::TestPhase::kDone: phase = tr("done"); break;
+  }
+  if (i < 0) {
+    stateLabel_->setText(tr("t = %1 s · %2").arg(traces_.streamTimeS(), 0, 'f', 1).arg(phase));
+    return;
+  }
+  stateLabel_->setText(tr("Test point %1 of %2 · %3 axis, %4 Hz · %5 · t = %6 s · gyro trend %7 °/h")
+                           .arg(i + 1)
+                           .arg(plan_.points.empty() ? QStringLiteral("?") : QString::number(plan_.points.size()))
+                           .arg(QString(axisName(traces_.axis())).toUpper())
+                           .arg(traces_.nominalFrequencyHz())
+                           .arg(phase)
+                           .arg(traces_.streamTimeS(), 0, 'f', 1)
+                           .arg(traces_.gyroTrendDegPerS() * 3600.0, 0, 'f', 2));
+}
+
+void LiveView::refresh() {
+  if (!dirty_) return;
+  dirty_ = false;
+  updateProgress();
+  const double now = traces_.streamTimeS();
+  // Until a whole window has arrived, the stream fills it from the left.
+  double x0 = std::max(0.0, now - windowSpin_->value()), x1 = std::max(now, windowSpin_->value());
+  if (!following_) {
+    const auto div = tablePlot_->axisScaleDiv(QwtPlot::xBottom);
+    x0 = div.lowerBound();
+    x1 = div.upperBound();
+  }
+  const int columns = std::max(tablePlot_->canvas()->width(), 100);
+  std::vector<double> x, y;
+  auto draw = [&](QwtPlotCurve* curve, const auto& points) {
+    x.clear();
+    y.clear();
+    for (const auto& p : points) {
+      x.push_back(p.timeS);
+      y.push_back(p.angleDeg);
+    }
+    curve->setSamples(decimateMinMax(x, y, x0, x1, columns));
+  };
+  draw(tableCurve_, traces_.table());
+  draw(gyroCurve_, traces_.gyroDetrended());
+  for (auto* plot : {tablePlot_, gyroPlot_}) {
+    if (following_) plot->setAxisScale(QwtPlot::xBottom, x0, std::max(x1, x0 + 1e-3));
+    plot->replot();
+  }
+}
+
+}  // namespace fog::ui

@@ -1,0 +1,81 @@
+#pragma once
+// The live view of a run: the turntable angle and the integrated gyro angle
+// (bias and Earth-rate trend removed on the fly) of the swinging axis,
+// scrolling over the last few seconds, with progress for the test point and
+// the whole plan. It paints only what the GUI timer hands it (about 30 times
+// a second); it never talks to the worker.
+//
+// Mouse: wheel zooms the time axis, right-drag pans, left-drag measures the
+// time and value difference between two points. Zooming or panning stops the
+// scrolling; "Follow live" resumes it.
+
+#include <QElapsedTimer>
+#include <QWidget>
+#include <span>
+
+#include "acquisition/live_traces.h"
+#include "common/test_plan.h"
+
+class QLabel;
+class QProgressBar;
+class QPushButton;
+class QDoubleSpinBox;
+class QwtPlot;
+class QwtPlotCurve;
+
+namespace fog::ui {
+
+class LiveView : public QWidget {
+  Q_OBJECT
+
+ public:
+  explicit LiveView(QWidget* parent = nullptr);
+
+  // A new run of `plan` (empty plan: unknown, e.g. a serial board's own).
+  void startRun(const TestPlan& plan, double speed);
+  void addFrames(std::span<const protocol::DecodedFrame> frames);
+  // Redraws with everything added since the last call.
+  void refresh();
+  void endRun();
+
+  const acquisition::LiveTraces& traces() const { return traces_; }
+  // Points currently drawn in the table / gyro curve (after thinning).
+  std::size_t shownTablePoints() const;
+  std::size_t shownGyroPoints() const;
+  QwtPlot* tablePlot() const { return tablePlot_; }
+  QwtPlot* gyroPlot() const { return gyroPlot_; }
+  // Progress of the current test point and of the plan, 0..1.
+  double pointProgress() const;
+  double planProgress() const;
+  QString remainingText() const;
+
+ protected:
+  bool eventFilter(QObject* watched, QEvent* event) override;
+
+ private:
+  QwtPlot* makePlot(const QString& title, const QString& yTitle, QwtPlotCurve** curve, const QColor& colour,
+                    const QString& unit);
+  void setFollowing(bool following);
+  void updateProgress();
+
+  acquisition::LiveTraces traces_{120.0};
+  TestPlan plan_;
+  double speed_ = 1.0;
+  bool following_ = true;
+  bool dirty_ = false;
+  bool syncingScales_ = false;
+  QElapsedTimer wall_;
+
+  QwtPlot* tablePlot_ = nullptr;
+  QwtPlot* gyroPlot_ = nullptr;
+  QwtPlotCurve* tableCurve_ = nullptr;
+  QwtPlotCurve* gyroCurve_ = nullptr;
+  QLabel* stateLabel_ = nullptr;
+  QProgressBar* pointBar_ = nullptr;
+  QProgressBar* planBar_ = nullptr;
+  QLabel* remainingLabel_ = nullptr;
+  QDoubleSpinBox* windowSpin_ = nullptr;
+  QPushButton* followButton_ = nullptr;
+};
+
+}  // namespace fog::ui

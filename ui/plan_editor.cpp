@@ -1,0 +1,271 @@
+#include "ui/plan_editor.h"
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QPushButton>
+#include <QSignalBlocker>
+#include <QTableWidget>
+#include <QVBoxLayout>
+#include <cmath>
+
+#include "ui/bench_presets.h"
+
+namespace fog::ui {
+
+namespace {
+
+QDoubleSpinBox* makeSpin(double min, double max, int decimals, const QString& suffix) {
+  auto* s = new QDoubleSpinBox();
+  s->setRange(min, max);
+  s->setDecimals(decimals);
+  s->setSuffix(suffix);
+  s->setKeyboardTracking(false);
+  s->setFrame(false);
+  s->setButtonSymbols(QAbstractSpinBox::NoButtons);
+  s->setAlignment(Qt::AlignRight);
+  return s;
+}
+
+QString durationText(double s) {
+  return s >= 120 ? QObject::tr("%1 min").arg(s / 60.0, 0, 'f', 1) : QObject::tr("%1 s").arg(s, 0, 'f', 0);
+}
+
+}  // namespace
+
+PlanEditor::PlanEditor(QWidget* parent) : QWidget(parent) {
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(0, 0, 0, 0);
+
+  auto* top = new QHBoxLayout();
+  top->addWidget(new QLabel(tr("Preset")));
+  presetCombo_ = new QComboBox();
+  presetCombo_->setObjectName("planPresetCombo");
+  for (const auto& p : benchPresets()) presetCombo_->addItem(p.label, p.name);
+  top->addWidget(presetCombo_);
+  auto* load = new QPushButton(tr("Load preset"));
+  load->setObjectName("loadPresetButton");
+  top->addWidget(load);
+  top->addStretch(1);
+  top->addWidget(new QLabel(tr("Rest between points")));
+  restSpin_ = makeSpin(0.0, 3600.0, 1, tr(" s"));
+  restSpin_->setObjectName("restSpin");
+  restSpin_->setFrame(true);
+  restSpin_->setButtonSymbols(QAbstractSpinBox::UpDownArrows);
+  top->addWidget(restSpin_);
+  layout->addLayout(top);
+
+  table_ = new QTableWidget(0, kColumnCount);
+  table_->setObjectName("planTable");
+  table_->setHorizontalHeaderLabels({tr("Axis"), tr("Frequency"), tr("Amplitude"), tr("Duration"), tr("Periods"),
+                                     tr("Settle"), tr("Check")});
+  table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+  table_->horizontalHeader()->setSectionResizeMode(kCheck, QHeaderView::Stretch);
+  table_->setSelectionBehavior(QAbstractItemView::SelectRows);
+  table_->setSelectionMode(QAbstractItemView::SingleSelection);
+  table_->verticalHeader()->setSectionResizeMode(QHeaderView::Fixed);
+  layout->addWidget(table_, 1);
+
+  auto* buttons = new QHBoxLayout();
+  addButton_ = new QPushButton(tr("Add test point"));
+  addButton_->setObjectName("addPointButton");
+  removeButton_ = new QPushButton(tr("Remove"));
+  removeButton_->setObjectName("removePointButton");
+  upButton_ = new QPushButton(tr("Move up"));
+  downButton_ = new QPushButton(tr("Move down"));
+  for (auto* b : {addButton_, removeButton_, upButton_, downButton_}) buttons->addWidget(b);
+  buttons->addStretch(1);
+  summary_ = new QLabel();
+  summary_->setObjectName("planSummary");
+  summary_->setWordWrap(true);
+  buttons->addWidget(summary_, 2);
+  layout->addLayout(buttons);
+
+  connect(load, &QPushButton::clicked, this, [this] { loadPreset(presetCombo_->currentData().toString()); });
+  connect(addButton_, &QPushButton::clicked, this, [this] {
+    const int rows = table_->rowCount();
+    addRow(rows > 0 ? rowPoint(rows - 1) : TestPoint{});
+    table_->selectRow(rows);
+    validate();
+  });
+  connect(removeButton_, &QPushButton::clicked, this, &PlanEditor::removeSelectedRow);
+  connect(upButton_, &QPushButton::clicked, this, [this] { moveSelectedRow(-1); });
+  connect(downButton_, &QPushButton::clicked, this, [this] { moveSelectedRow(+1); });
+  connect(restSpin_, qOverload<double>(&QDoubleSpinBox::valueChanged), this, &PlanEditor::validate);
+
+  loadPreset(benchPresets().front().name);
+}
+
+QDoubleSpinBox* PlanEditor::spin(int row, Column column) const {
+  return qobject_cast<QDoubleSpinBox*>(table_->cellWidget(row, column));
+}
+
+QWidget* PlanEditor::cellEditor(int row, Column column) const { return table_->cellWidget(row, column); }
+
+void PlanEditor::addRow(const TestPoint& p) {
+  const int row = table_->rowCount();
+  table_->insertRow(row);
+  auto* axis = new QComboBox();
+  axis->addItems({"X", "Y", "Z"});
+  axis->setCurrentIndex(static_cast<int>(p.axis));
+  axis->setFrame(false);
+  table_->setCellWidget(row, kAxis, axis);
+  // Wide ranges on purpose: the limits are the table's, checked and explained
+  // by validate(), not silently clamped by the field.
+  auto* f = makeSpin(0.0, 1000.0, 4, tr(" Hz"));
+  auto* a = makeSpin(0.0, 360.0, 3, tr(" °"));
+  auto* d = makeSpin(0.0, 1e6, 1, tr(" s"));
+  auto* n = makeSpin(0.0, 1e7, 1, QString());
+  auto* s = makeSpin(-1e6, 1e6, 1, tr(" s"));
+  f->setValue(p.frequencyHz);
+  a->setValue(p.amplitudeDeg);
+  d->setValue(p.durationS);
+  s->setValue(p.settleS);
+  n->setValue(p.durationS * p.frequencyHz);
+  f->setToolTip(tr("Swing frequency"));
+  a->setToolTip(tr("Swing amplitude (peak)"));
+  d->setToolTip(tr("Recorded time after settling; or give whole periods in the next column"));
+  n->setToolTip(tr("Recorded swing periods (duration × frequency)"));
+  s->setToolTip(tr("Swing time before recording starts"));
+  table_->setCellWidget(row, kFrequency, f);
+  table_->setCellWidget(row, kAmplitude, a);
+  table_->setCellWidget(row, kDuration, d);
+  table_->setCellWidget(row, kPeriods, n);
+  table_->setCellWidget(row, kSettle, s);
+  auto* check = new QTableWidgetItem();
+  check->setFlags(Qt::ItemIsEnabled | Qt::ItemIsSelectable);
+  table_->setItem(row, kCheck, check);
+
+  // Rows move, so look the row up when an edit arrives.
+  auto rowOf = [this](QWidget* w) {
+    for (int r = 0; r < table_->rowCount(); ++r)
+      for (int c = 0; c < kCheck; ++c)
+        if (table_->cellWidget(r, c) == w) return r;
+    return -1;
+  };
+  connect(axis, qOverload<int>(&QComboBox::currentIndexChanged), this, &PlanEditor::validate);
+  for (auto [w, col] : {std::pair{f, kFrequency}, {d, kDuration}, {n, kPeriods}, {a, kAmplitude}, {s, kSettle}})
+    connect(w, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this, w = w, col = col, rowOf] {
+      syncPeriods(rowOf(w), col);
+      validate();
+    });
+}
+
+void PlanEditor::syncPeriods(int row, Column edited) {
+  if (row < 0 || syncing_) return;
+  syncing_ = true;
+  const double f = spin(row, kFrequency)->value();
+  if (edited == kPeriods && f > 0) spin(row, kDuration)->setValue(spin(row, kPeriods)->value() / f);
+  else if (edited == kDuration || edited == kFrequency) spin(row, kPeriods)->setValue(spin(row, kDuration)->value() * f);
+  syncing_ = false;
+}
+
+TestPoint PlanEditor::rowPoint(int row) const {
+  TestPoint p;
+  p.axis = static_cast<Axis>(qobject_cast<QComboBox*>(table_->cellWidget(row, kAxis))->currentIndex());
+  p.frequencyHz = spin(row, kFrequency)->value();
+  p.amplitudeDeg = spin(row, kAmplitude)->value();
+  p.durationS = spin(row, kDuration)->value();
+  p.settleS = spin(row, kSettle)->value();
+  return p;
+}
+
+TestPlan PlanEditor::plan() const {
+  TestPlan plan;
+  plan.restBetweenS = restSpin_->value();
+  for (int r = 0; r < table_->rowCount(); ++r) plan.points.push_back(rowPoint(r));
+  return plan;
+}
+
+void PlanEditor::setPlan(const TestPlan& plan) {
+  {
+    const QSignalBlocker block(restSpin_);
+    restSpin_->setValue(plan.restBetweenS);
+  }
+  table_->setRowCount(0);
+  for (const auto& p : plan.points) addRow(p);
+  if (table_->rowCount() > 0) table_->selectRow(0);
+  validate();
+}
+
+bool PlanEditor::loadPreset(const QString& name) {
+  const auto preset = findBenchPreset(name);
+  if (!preset) return false;
+  presetCombo_->setCurrentIndex(presetCombo_->findData(name));
+  setPlan(preset->plan);
+  return true;
+}
+
+void PlanEditor::setLimits(const TurntableLimits& limits) {
+  limits_ = limits;
+  validate();
+}
+
+void PlanEditor::setReadOnly(bool readOnly) {
+  table_->setEnabled(!readOnly);
+  for (auto* w : std::initializer_list<QWidget*>{presetCombo_, restSpin_, addButton_, removeButton_, upButton_,
+                                                 downButton_})
+    w->setEnabled(!readOnly);
+}
+
+void PlanEditor::removeSelectedRow() {
+  const int row = table_->currentRow();
+  if (row < 0) return;
+  table_->removeRow(row);
+  if (table_->rowCount() > 0) table_->selectRow(std::min(row, table_->rowCount() - 1));
+  validate();
+}
+
+void PlanEditor::moveSelectedRow(int by) {
+  const int row = table_->currentRow();
+  const int to = row + by;
+  if (row < 0 || to < 0 || to >= table_->rowCount()) return;
+  TestPlan p = plan();
+  std::swap(p.points[static_cast<std::size_t>(row)], p.points[static_cast<std::size_t>(to)]);
+  setPlan(p);
+  table_->selectRow(to);
+}
+
+void PlanEditor::validate() {
+  QString first;
+  double totalS = restSpin_->value();
+  for (int r = 0; r < table_->rowCount(); ++r) {
+    const TestPoint p = rowPoint(r);
+    std::string why;
+    const bool ok = p.isValid(limits_, &why);
+    auto* check = table_->item(r, kCheck);
+    check->setText(ok ? tr("ok: %1 periods, %2 in all").arg(p.durationS * p.frequencyHz, 0, 'f', 1)
+                            .arg(durationText(p.settleS + p.durationS))
+                      : QString::fromStdString(why));
+    check->setForeground(ok ? QColor(0, 110, 0) : QColor(190, 0, 0));
+    check->setToolTip(check->text());
+    // Mark the field the message is about.
+    const QString w = QString::fromStdString(why);
+    const Column bad = w.startsWith("frequency") || w.startsWith("peak") ? kFrequency
+                       : w.startsWith("amplitude")                       ? kAmplitude
+                       : w.startsWith("duration")                        ? kDuration
+                       : w.startsWith("settle")                          ? kSettle
+                                                                         : kCheck;
+    for (int c = kFrequency; c < kCheck; ++c) {
+      auto* s = spin(r, static_cast<Column>(c));
+      const bool flagged = !ok && (c == bad || (bad == kDuration && c == kPeriods));
+      s->setStyleSheet(flagged ? "background: #ffd6d6;" : QString());
+      s->setToolTip(flagged ? w : QString());
+    }
+    if (!ok && first.isEmpty()) first = tr("test point %1: %2").arg(r + 1).arg(w);
+    totalS += p.settleS + p.durationS + restSpin_->value();
+  }
+  if (table_->rowCount() == 0) first = tr("the test plan has no test points: add one or load a preset");
+  const bool changed = first != problem_;
+  problem_ = first;
+  summary_->setText(problem_.isEmpty()
+                        ? tr("%1 test point(s), %2 in all").arg(table_->rowCount()).arg(durationText(totalS))
+                        : tr("<span style='color:#b00000'>Cannot run: %1</span>").arg(problem_.toHtmlEscaped()));
+  removeButton_->setEnabled(table_->rowCount() > 0);
+  emit planChanged();
+  if (changed) emit validityChanged(problem_.isEmpty(), problem_);
+}
+
+}  // namespace fog::ui

@@ -1,0 +1,72 @@
+#pragma once
+// The test plan editor: one row per test point (axis, swing frequency,
+// amplitude, duration in seconds or whole periods, settle time), rows added,
+// removed and reordered, the paper's conditions as presets. Every row is
+// checked against the turntable's limits as it is edited; a bad value is
+// explained in the row itself (and in the tooltip of the field), and the plan
+// is only valid when every row is.
+
+#include <QString>
+#include <QWidget>
+
+#include "common/test_plan.h"
+
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QPushButton;
+class QTableWidget;
+
+namespace fog::ui {
+
+class PlanEditor : public QWidget {
+  Q_OBJECT
+
+ public:
+  // Columns of the table.
+  enum Column { kAxis = 0, kFrequency, kAmplitude, kDuration, kPeriods, kSettle, kCheck, kColumnCount };
+
+  explicit PlanEditor(QWidget* parent = nullptr);
+
+  void setPlan(const TestPlan& plan);
+  // The plan as edited (also when invalid).
+  TestPlan plan() const;
+  bool isValid() const { return problem_.isEmpty(); }
+  // Empty when valid; otherwise the first problem, "test point 2: ...".
+  QString problem() const { return problem_; }
+  // Loads the preset called `name` (see benchPresets()); false if unknown.
+  bool loadPreset(const QString& name);
+  void setLimits(const TurntableLimits& limits);
+  void setReadOnly(bool readOnly);
+
+  QTableWidget* table() const { return table_; }
+  // The editor of a cell (a QComboBox for kAxis, QDoubleSpinBox otherwise).
+  QWidget* cellEditor(int row, Column column) const;
+
+ signals:
+  void planChanged();
+  void validityChanged(bool valid, const QString& problem);
+
+ private:
+  void addRow(const TestPoint& point);
+  void removeSelectedRow();
+  void moveSelectedRow(int by);
+  void syncPeriods(int row, Column edited);
+  void validate();
+  TestPoint rowPoint(int row) const;
+  QDoubleSpinBox* spin(int row, Column column) const;
+
+  TurntableLimits limits_;
+  QTableWidget* table_ = nullptr;
+  QComboBox* presetCombo_ = nullptr;
+  QDoubleSpinBox* restSpin_ = nullptr;
+  QLabel* summary_ = nullptr;
+  QPushButton* addButton_ = nullptr;
+  QPushButton* removeButton_ = nullptr;
+  QPushButton* upButton_ = nullptr;
+  QPushButton* downButton_ = nullptr;
+  QString problem_;
+  bool syncing_ = false;
+};
+
+}  // namespace fog::ui

@@ -1,0 +1,373 @@
+#include "ui/result_view.h"
+
+#include <QComboBox>
+#include <QFileDialog>
+#include <QFontDatabase>
+#include <QFontInfo>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QInputDialog>
+#include <QLabel>
+#include <QMenu>
+#include <QMessageBox>
+#include <QPlainTextEdit>
+#include <QSplitter>
+#include <QTableWidget>
+#include <QToolButton>
+#include <QVBoxLayout>
+#include <algorithm>
+#include <cmath>
+#include <qwt_interval_symbol.h>
+#include <qwt_legend.h>
+#include <qwt_plot.h>
+#include <qwt_plot_curve.h>
+#include <qwt_plot_grid.h>
+#include <qwt_plot_intervalcurve.h>
+#include <qwt_plot_marker.h>
+#include <qwt_scale_div.h>
+#include <qwt_symbol.h>
+
+#include "analysis/theory.h"
+#include "ui/plot_export.h"
+#include "ui/report/calibration_report.h"
+#include "ui/series_plot.h"
+
+namespace fog::ui {
+
+namespace {
+
+const QColor kTableData(31, 119, 180);
+const QColor kGyroData(255, 127, 14);
+const QColor kTableFit(8, 48, 107);
+const QColor kGyroFit(165, 15, 21);
+const QColor kAxisColour[kAxisCount] = {QColor(31, 119, 180), QColor(44, 160, 44), QColor(214, 39, 40)};
+
+QString num(double value, int decimals) { return QString::number(value, 'f', decimals); }
+
+QString pointLabel(const analysis::TestPointResult& p) {
+  return QObject::tr("%1: %2 axis, %3 Hz / %4°")
+      .arg(p.index + 1)
+      .arg(QString(axisName(p.axis)).toUpper())
+      .arg(p.nominalFrequencyHz)
+      .arg(num(p.tableFit.amplitudeDeg, 2));
+}
+
+QTableWidget* makeTable(const QStringList& headers) {
+  auto* t = new QTableWidget(0, static_cast<int>(headers.size()));
+  t->setHorizontalHeaderLabels(headers);
+  t->verticalHeader()->setVisible(false);
+  t->setEditTriggers(QAbstractItemView::NoEditTriggers);
+  t->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+  t->horizontalHeader()->setStretchLastSection(true);
+  t->setSelectionMode(QAbstractItemView::ContiguousSelection);
+  return t;
+}
+
+void setRow(QTableWidget* t, int row, const QStringList& cells, bool bold = false) {
+  for (int c = 0; c < cells.size(); ++c) {
+    auto* item = new QTableWidgetItem(cells[c]);
+    if (c > 0) item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+    if (bold) {
+      QFont f = item->font();
+      f.setBold(true);
+      item->setFont(f);
+    }
+    t->setItem(row, c, item);
+  }
+}
+
+}  // namespace
+
+ResultView::ResultView(QWidget* parent) : QWidget(parent) {
+  auto* layout = new QVBoxLayout(this);
+  auto* row = new QHBoxLayout();
+  row->addWidget(new QLabel(tr("Test point")));
+  testPointCombo_ = new QComboBox();
+  testPointCombo_->setObjectName("testPointCombo");
+  testPointCombo_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+  row->addWidget(testPointCombo_);
+  lagLabel_ = new QLabel();
+  lagLabel_->setObjectName("lagLabel");
+  lagLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  row->addSpacing(12);
+  row->addWidget(lagLabel_, 1);
+  exportButton_ = new QToolButton();
+  exportButton_->setObjectName("exportButton");
+  exportButton_->setText(tr("Export"));
+  exportButton_->setPopupMode(QToolButton::InstantPopup);
+  row->addWidget(exportButton_);
+  layout->addLayout(row);
+  connect(testPointCombo_, qOverload<int>(&QComboBox::currentIndexChanged), this, &ResultView::showTestPoint);
+
+  anglePlot_ = new SeriesPlot(tr("Normalised angles and fits"), tr("(angle − offset) / amplitude"));
+  anglePlot_->setObjectName("anglePlot");
+  residualPlot_ = new SeriesPlot(tr("Residuals (data − fit)"), tr("residual (arcsec)"));
+  residualPlot_->setObjectName("residualPlot");
+  auto* left = new QSplitter(Qt::Vertical);
+  left->addWidget(anglePlot_);
+  left->addWidget(residualPlot_);
+
+  fitTable_ = makeTable({tr("fit"), tr("period (ms)"), tr("σ (µs)"), tr("phase t₀ (ms)"), tr("σ (µs)"),
+                         tr("amplitude (°)"), tr("χ²/dof")});
+  fitTable_->setObjectName("fitTable");
+  delayTable_ = makeTable({tr("delay"), tr("value (ms)"), tr("1σ (ms)"), tr("theory (ms)"), tr("basis")});
+  delayTable_->setObjectName("delayTable");
+  buildFrequencyPlot();
+  auto* right = new QSplitter(Qt::Vertical);
+  right->addWidget(fitTable_);
+  right->addWidget(delayTable_);
+  right->addWidget(frequencyPlot_);
+  right->setStretchFactor(2, 1);
+
+  reportView_ = new QPlainTextEdit();
+  reportView_->setObjectName("reportView");
+  reportView_->setReadOnly(true);
+  reportView_->setLineWrapMode(QPlainTextEdit::NoWrap);
+  // Some platforms (offscreen) answer the fixed-font query with a
+  // proportional font; ask fontconfig's alias then.
+  QFont mono = QFontDatabase::systemFont(QFontDatabase::FixedFont);
+  if (!QFontInfo(mono).fixedPitch()) {
+    mono.setFamily("monospace");
+    mono.setStyleHint(QFont::TypeWriter);
+  }
+  reportView_->setFont(mono);
+  reportView_->setPlaceholderText(tr("The delay report appears here after a run."));
+
+  auto* top = new QSplitter(Qt::Horizontal);
+  top->addWidget(left);
+  top->addWidget(right);
+  top->setStretchFactor(0, 1);
+  top->setStretchFactor(1, 1);
+  auto* all = new QSplitter(Qt::Vertical);
+  all->addWidget(top);
+  all->addWidget(reportView_);
+  all->setStretchFactor(0, 4);
+  all->setStretchFactor(1, 1);
+  layout->addWidget(all, 1);
+
+  auto* menu = new QMenu(exportButton_);
+  auto addPlotExport = [this, menu](const QString& label, QwtPlot* plot) {
+    menu->addAction(label, this, [this, plot] {
+      const QString path =
+          QFileDialog::getSaveFileName(this, tr("Export plot"), plot->objectName() + ".png", plotExportFilter());
+      if (path.isEmpty()) return;
+      if (auto s = exportPlot(plot, path); !s.isOk())
+        QMessageBox::warning(this, tr("Export plot"), QString::fromStdString(s.message()));
+    });
+  };
+  addPlotExport(tr("Angles plot…"), anglePlot_);
+  addPlotExport(tr("Residuals plot…"), residualPlot_);
+  addPlotExport(tr("Delay vs frequency plot…"), frequencyPlot_);
+  menu->addSeparator();
+  menu->addAction(tr("Calibration report (PDF)…"), this, [this] {
+    if (!outcome_ || !outcome_->report) return;
+    bool ok = false;
+    const double limit = QInputDialog::getDouble(this, tr("Calibration report"),
+                                                 tr("Pass when IMU delay + 2σ is below (ms):"), 0.8, 0.001, 100.0, 3,
+                                                 &ok);
+    if (!ok) return;
+    const QString path = QFileDialog::getSaveFileName(this, tr("Calibration report"), "calibration-report.pdf",
+                                                      tr("PDF document (*.pdf)"));
+    if (path.isEmpty()) return;
+    if (auto s = writeReportPdf(path, limit); !s.isOk())
+      QMessageBox::warning(this, tr("Calibration report"), QString::fromStdString(s.message()));
+  });
+  exportButton_->setMenu(menu);
+  clear();
+}
+
+void ResultView::buildFrequencyPlot() {
+  frequencyPlot_ = new QwtPlot();
+  frequencyPlot_->setObjectName("frequencyPlot");
+  frequencyPlot_->setTitle(tr("Lag against swing frequency"));
+  frequencyPlot_->setAxisTitle(QwtPlot::xBottom, tr("swing frequency (Hz)"));
+  frequencyPlot_->setAxisTitle(QwtPlot::yLeft, tr("lag (ms), ±1σ"));
+  frequencyPlot_->setCanvasBackground(Qt::white);
+  frequencyPlot_->insertLegend(new QwtLegend(), QwtPlot::BottomLegend);
+  frequencyPlot_->setMinimumHeight(200);
+}
+
+void ResultView::clear() {
+  outcome_.reset();
+  {
+    const QSignalBlocker block(testPointCombo_);
+    testPointCombo_->clear();
+  }
+  lagLabel_->setText(tr("No result yet."));
+  anglePlot_->clearCurves();
+  anglePlot_->showAll();
+  residualPlot_->clearCurves();
+  residualPlot_->showAll();
+  fitTable_->setRowCount(0);
+  delayTable_->setRowCount(0);
+  frequencyPlot_->detachItems();
+  frequencyPlot_->replot();
+  reportView_->clear();
+  exportButton_->setEnabled(false);
+}
+
+QString ResultView::reportText() const { return reportView_->toPlainText(); }
+
+void ResultView::showOutcome(std::shared_ptr<const RunOutcome> outcome) {
+  clear();
+  outcome_ = std::move(outcome);
+  if (!outcome_) return;
+  reportView_->setPlainText(QString::fromStdString(outcome_->reportText));
+  exportButton_->setEnabled(true);
+  if (!outcome_->report) {
+    lagLabel_->setText(tr("<b>No delay:</b> %1").arg(QString::fromStdString(outcome_->report.status().message())));
+    return;
+  }
+  {
+    const QSignalBlocker block(testPointCombo_);
+    for (const auto& p : outcome_->report->points) testPointCombo_->addItem(pointLabel(p));
+  }
+  showFrequencyPlot();
+  testPointCombo_->setCurrentIndex(0);
+  showTestPoint(0);
+}
+
+void ResultView::fillTables(std::size_t i) {
+  const auto& p = outcome_->report->points[i];
+  fitTable_->setRowCount(5);
+  auto fitRow = [&](int row, const QString& name, const analysis::SineFit& f, bool nominal) {
+    setRow(fitTable_, row,
+           {name, num(f.periodMs, 4), nominal ? tr("nominal") : num(f.periodStdMs * 1e3, 3), num(f.phaseMs, 4),
+            num(f.phaseStdMs * 1e3, 3), num(f.amplitudeDeg, 5), num(f.chiSquarePerDof, 2)});
+  };
+  fitRow(0, tr("table, 3-parameter"), p.tableNominal, true);
+  fitRow(1, tr("gyro, 3-parameter"), p.gyroNominal, true);
+  fitRow(2, tr("table, 4-parameter"), p.tableFit, false);
+  fitRow(3, tr("gyro, 4-parameter"), p.gyroFit, false);
+  const double periodMs = 1e3 / p.joint.frequencyHz;
+  const double periodStdUs = 1e6 * p.joint.frequencyStdHz / (p.joint.frequencyHz * p.joint.frequencyHz);
+  setRow(fitTable_, 4,
+         {tr("joint: lag as t₀"), num(periodMs, 4), num(periodStdUs, 3), num(p.joint.lagS * 1e3, 5),
+          num(p.joint.lagStdS * 1e6, 3), tr("gain %1").arg(num(p.joint.gain, 6)), num(p.joint.chiSquarePerDof, 2)},
+         true);
+
+  const auto& c = outcome_->report->constants;
+  const auto budget = analysis::delayBudget(analysis::TheoryInputs{});
+  auto range = [](double lo, double hi) { return QString("%1 – %2").arg(num(lo, 4), num(hi, 4)); };
+  delayTable_->setRowCount(5);
+  setRow(delayTable_, 0,
+         {tr("measured lag (gyro behind table)"), num(p.lagMs, 5), num(p.lagStdMs, 5), QString(),
+          tr("joint fit; CRLB %1 ms, σ/CRLB %2").arg(num(p.crlbMs, 5), num(p.stdOverCrlb, 2))},
+         true);
+  setRow(delayTable_, 1,
+         {tr("+ table read delay"), num(c.tableReadDelayMs, 5), num(c.tableReadDelayStdMs, 5), QString(),
+          tr("bench constant")});
+  setRow(delayTable_, 2,
+         {tr("= IMU delay"), num(p.imuDelayMs, 5), num(p.imuDelayStdMs, 5),
+          range(budget.totalMinMs, budget.totalMaxMs), tr("the paper: < 0.8 ms")},
+         true);
+  setRow(delayTable_, 3,
+         {tr("− processing-board delay"), num(c.boardDelayMs, 5), num(c.boardDelayStdMs, 5),
+          num(budget.boardMaxMs, 4), tr("bench constant; theory: sampling, compensation, serial frame")});
+  setRow(delayTable_, 4,
+         {tr("= gyro's own delay"), num(p.gyroDelayMs, 5), num(p.gyroDelayStdMs, 5),
+          range(std::max(0.0, budget.totalMinMs - budget.boardMaxMs), budget.totalMaxMs - budget.boardMaxMs),
+          tr("sensing, loop and pulse update")},
+         true);
+}
+
+void ResultView::showTestPoint(int position) {
+  anglePlot_->clearCurves();
+  residualPlot_->clearCurves();
+  if (!outcome_ || !outcome_->report || position < 0 ||
+      position >= static_cast<int>(outcome_->traces.size())) {
+    anglePlot_->showAll();
+    residualPlot_->showAll();
+    return;
+  }
+  const auto i = static_cast<std::size_t>(position);
+  const auto& p = outcome_->report->points[i];
+  QString lag = tr("<b>lag %1 ± %2 ms</b>  ·  IMU delay %3 ms  ·  gyro's own delay %4 ms")
+                    .arg(num(p.lagMs, 4), num(p.lagStdMs, 4), num(p.imuDelayMs, 4), num(p.gyroDelayMs, 4));
+  for (const auto& t : outcome_->truth)
+    if (t.index == p.index) lag += tr("  ·  simulator truth: lag %1 ms").arg(num(t.lagS * 1e3, 4));
+  if (!outcome_->complete) lag += tr("  ·  <span style='color:#b00000'>incomplete run</span>");
+  lagLabel_->setText(lag);
+  fillTables(i);
+
+  // Aliasing pointers: the plots share the outcome, nothing is copied.
+  const std::shared_ptr<const TestPointTraces> traces(outcome_, &outcome_->traces[i]);
+  auto part = [&](const Trace& t) { return std::shared_ptr<const Trace>(outcome_, &t); };
+  anglePlot_->addData(tr("table"), QPen(kTableData), part(traces->tableNormalised));
+  anglePlot_->addData(tr("gyro (integrated, trend removed)"), QPen(kGyroData), part(traces->gyroNormalised));
+  anglePlot_->addFunction(tr("table fit"), QPen(kTableFit, 1.5),
+                          [traces](double t) { return traces->tableFitNormalised(t); });
+  anglePlot_->addFunction(tr("gyro fit"), QPen(kGyroFit, 1.5, Qt::DashLine),
+                          [traces](double t) { return traces->gyroFitNormalised(t); });
+  anglePlot_->showAll();
+  residualPlot_->addData(tr("gyro"), QPen(kGyroData), part(traces->gyroResidualArcsec));
+  residualPlot_->addData(tr("table"), QPen(kTableData), part(traces->tableResidualArcsec));
+  residualPlot_->showAll();
+}
+
+void ResultView::showFrequencyPlot() {
+  frequencyPlot_->detachItems();
+  auto* grid = new QwtPlotGrid();
+  grid->setMajorPen(QPen(QColor(220, 220, 220), 0, Qt::DotLine));
+  grid->attach(frequencyPlot_);
+  const auto& report = *outcome_->report;
+  double fMin = 1e300, fMax = 0.0;
+  for (int a = 0; a < kAxisCount; ++a) {
+    QVector<QPointF> points;
+    QVector<QwtIntervalSample> bars;
+    for (const auto& p : report.points) {
+      if (static_cast<int>(p.axis) != a) continue;
+      const double f = p.joint.frequencyHz > 0.0 ? p.joint.frequencyHz : p.nominalFrequencyHz;
+      points.push_back({f, p.lagMs});
+      bars.push_back(QwtIntervalSample(f, p.lagMs - p.lagStdMs, p.lagMs + p.lagStdMs));
+      fMin = std::min(fMin, f);
+      fMax = std::max(fMax, f);
+    }
+    if (points.isEmpty()) continue;
+    const QColor colour = kAxisColour[a];
+    auto* curve = new QwtPlotCurve(tr("%1 axis").arg(QString(axisName(static_cast<Axis>(a))).toUpper()));
+    curve->setStyle(QwtPlotCurve::NoCurve);
+    curve->setSymbol(new QwtSymbol(QwtSymbol::Ellipse, QBrush(colour), QPen(colour), QSize(8, 8)));
+    curve->setSamples(points);
+    curve->attach(frequencyPlot_);
+    auto* errors = new QwtPlotIntervalCurve();
+    errors->setStyle(QwtPlotIntervalCurve::NoCurve);
+    errors->setSymbol(new QwtIntervalSymbol(QwtIntervalSymbol::Bar));
+    errors->setPen(QPen(colour, 1.5));
+    errors->setSamples(bars);
+    errors->setItemAttribute(QwtPlotItem::Legend, false);
+    errors->attach(frequencyPlot_);
+  }
+  for (const auto& c : report.consistency) {
+    auto* mean = new QwtPlotMarker();
+    mean->setLineStyle(QwtPlotMarker::HLine);
+    mean->setLinePen(QPen(kAxisColour[static_cast<int>(c.axis)], 1, Qt::DashLine));
+    mean->setYValue(c.weightedLagMs);
+    mean->setLabel(QwtText(tr("%1: weighted %2 ms, %3 with a pure delay (p = %4)")
+                               .arg(QString(axisName(c.axis)).toUpper())
+                               .arg(num(c.weightedLagMs, 4))
+                               .arg(c.consistentWithPureDelay ? tr("consistent") : tr("NOT consistent"))
+                               .arg(num(c.pValue, 3))));
+    mean->setLabelAlignment(Qt::AlignLeft | Qt::AlignTop);
+    mean->attach(frequencyPlot_);
+  }
+  if (fMax > 0.0) {
+    // Margins so that points at the ends are not on the frame.
+    const double span = std::max(fMax - fMin, 0.2 * fMax);
+    frequencyPlot_->setAxisScale(QwtPlot::xBottom, std::max(0.0, fMin - 0.15 * span), fMax + 0.15 * span);
+  }
+  frequencyPlot_->setAxisAutoScale(QwtPlot::yLeft, true);
+  frequencyPlot_->replot();
+}
+
+Status ResultView::writeReportPdf(const QString& path, double imuDelayLimitMs) const {
+  if (!outcome_ || !outcome_->report) return insufficientData("there is no delay result to report");
+  report::ReportInput in;
+  in.info = outcome_->info;
+  in.recording = outcome_->recording;
+  in.delays = *outcome_->report;
+  in.imuDelayLimitMs = imuDelayLimitMs;
+  return report::writeCalibrationPdf(in, path);
+}
+
+}  // namespace fog::ui

@@ -1,0 +1,66 @@
+#pragma once
+// The result of a run or of a reviewed session: per test point the measured
+// curves with their fitted sinusoids (normalised as in the paper) and the
+// residuals, the fit table (period and phase in ms, amplitude), the delay
+// breakdown (measured lag, + table read delay = IMU delay, − board delay =
+// gyro's own delay) with uncertainties beside the paper's theory budget; the
+// delay against frequency across test points; and the text report. Every plot
+// can be exported (PNG/SVG/PDF), and the calibration report written as PDF.
+
+#include <QWidget>
+#include <memory>
+
+#include "ui/run_outcome.h"
+
+class QComboBox;
+class QLabel;
+class QPlainTextEdit;
+class QTableWidget;
+class QToolButton;
+class QwtPlot;
+
+namespace fog::ui {
+
+class SeriesPlot;
+
+class ResultView : public QWidget {
+  Q_OBJECT
+
+ public:
+  explicit ResultView(QWidget* parent = nullptr);
+
+  void showOutcome(std::shared_ptr<const RunOutcome> outcome);
+  void clear();
+  const RunOutcome* outcome() const { return outcome_.get(); }
+  // Shared ownership of what is shown (for exporting off the widget).
+  std::shared_ptr<const RunOutcome> sharedOutcome() const { return outcome_; }
+  void showTestPoint(int position);
+
+  SeriesPlot* anglePlot() const { return anglePlot_; }
+  SeriesPlot* residualPlot() const { return residualPlot_; }
+  QwtPlot* frequencyPlot() const { return frequencyPlot_; }
+  QTableWidget* fitTable() const { return fitTable_; }
+  QTableWidget* delayTable() const { return delayTable_; }
+  QString reportText() const;
+
+  // Writes the calibration report of what is shown (see ui/report).
+  Status writeReportPdf(const QString& path, double imuDelayLimitMs) const;
+
+ private:
+  void buildFrequencyPlot();
+  void showFrequencyPlot();
+  void fillTables(std::size_t i);
+
+  std::shared_ptr<const RunOutcome> outcome_;
+  QComboBox* testPointCombo_ = nullptr;
+  QLabel* lagLabel_ = nullptr;
+  QToolButton* exportButton_ = nullptr;
+  SeriesPlot* anglePlot_ = nullptr;
+  SeriesPlot* residualPlot_ = nullptr;
+  QwtPlot* frequencyPlot_ = nullptr;
+  QTableWidget* fitTable_ = nullptr;
+  QTableWidget* delayTable_ = nullptr;
+  QPlainTextEdit* reportView_ = nullptr;
+};
+
+}  // namespace fog::ui

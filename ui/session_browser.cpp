@@ -1,0 +1,175 @@
+#include "ui/session_browser.h"
+
+#include <QDir>
+#include <QFileDialog>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+#include "session/session_list.h"
+
+namespace fog::ui {
+
+namespace {
+
+enum Column { kFile = 0, kCreated, kOperator, kImu, kAxes, kState, kLag, kImuDelay, kColumns };
+
+QString joinMs(const std::vector<double>& values) {
+  QStringList parts;
+  for (double v : values) parts << QString::number(v, 'f', 4);
+  return parts.isEmpty() ? QStringLiteral("-") : parts.join(" / ");
+}
+
+}  // namespace
+
+SessionBrowser::SessionBrowser(QWidget* parent) : QWidget(parent) {
+  auto* layout = new QVBoxLayout(this);
+  auto* top = new QHBoxLayout();
+  top->addWidget(new QLabel(tr("Folder")));
+  folderEdit_ = new QLineEdit();
+  folderEdit_->setObjectName("sessionFolderEdit");
+  top->addWidget(folderEdit_, 1);
+  auto* choose = new QPushButton(tr("Choose…"));
+  auto* refreshButton = new QPushButton(tr("Refresh"));
+  refreshButton->setObjectName("refreshSessionsButton");
+  top->addWidget(choose);
+  top->addWidget(refreshButton);
+  layout->addLayout(top);
+
+  table_ = new QTableWidget(0, kColumns);
+  table_->setObjectName("sessionTable");
+  table_->setHorizontalHeaderLabels({tr("File"), tr("Recorded (UTC)"), tr("Operator"), tr("IMU"), tr("Axes"),
+                                     tr("State"), tr("Lag (ms)"), tr("IMU delay (ms)")});
+  table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+  table_->horizontalHeader()->setStretchLastSection(true);
+  table_->verticalHeader()->setVisible(false);
+  table_->setSelectionBehavior(QAbstractItemView::SelectRows);
+  table_->setSelectionMode(QAbstractItemView::ExtendedSelection);
+  table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+  table_->setSortingEnabled(false);
+  layout->addWidget(table_, 1);
+
+  auto* buttons = new QHBoxLayout();
+  openButton_ = new QPushButton(tr("Open (read-only)"));
+  openButton_->setObjectName("openSessionButton");
+  reanalyseButton_ = new QPushButton(tr("Re-analyse with the bench constants"));
+  reanalyseButton_->setObjectName("reanalyseButton");
+  reanalyseButton_->setToolTip(tr("Adds a new result to the session; its raw data never changes"));
+  compareButton_ = new QPushButton(tr("Compare the two selected"));
+  compareButton_->setObjectName("compareButton");
+  summary_ = new QLabel();
+  summary_->setObjectName("sessionSummary");
+  for (auto* b : {openButton_, reanalyseButton_, compareButton_}) buttons->addWidget(b);
+  buttons->addStretch(1);
+  buttons->addWidget(summary_);
+  layout->addLayout(buttons);
+
+  connect(choose, &QPushButton::clicked, this, [this] {
+    const QString dir = QFileDialog::getExistingDirectory(this, tr("Session folder"), folder());
+    if (!dir.isEmpty()) setFolder(dir);
+  });
+  connect(refreshButton, &QPushButton::clicked, this, &SessionBrowser::refresh);
+  connect(folderEdit_, &QLineEdit::editingFinished, this, [this] {
+    refresh();
+    emit folderChanged(folder());
+  });
+  connect(table_, &QTableWidget::itemSelectionChanged, this, &SessionBrowser::updateButtons);
+  connect(table_, &QTableWidget::cellDoubleClicked, this, [this](int row, int) {
+    emit openRequested(table_->item(row, kFile)->data(Qt::UserRole).toString());
+  });
+  connect(openButton_, &QPushButton::clicked, this, [this] {
+    const auto paths = selectedPaths();
+    if (!paths.isEmpty()) emit openRequested(paths.front());
+  });
+  connect(reanalyseButton_, &QPushButton::clicked, this, [this] {
+    const auto paths = selectedPaths();
+    if (!paths.isEmpty()) emit reanalyseRequested(paths.front());
+  });
+  connect(compareButton_, &QPushButton::clicked, this, [this] {
+    const auto paths = selectedPaths();
+    if (paths.size() == 2) emit compareRequested(paths[0], paths[1]);
+  });
+  updateButtons();
+}
+
+void SessionBrowser::setFolder(const QString& folder) {
+  folderEdit_->setText(QDir::toNativeSeparators(folder));
+  refresh();
+  emit folderChanged(folder);
+}
+
+QString SessionBrowser::folder() const { return QDir::fromNativeSeparators(folderEdit_->text()); }
+
+void SessionBrowser::refresh() {
+  table_->setRowCount(0);
+  const QString dir = folder();
+  if (dir.isEmpty()) {
+    summary_->setText(tr("Choose the folder that holds the session files (.fbs)."));
+    updateButtons();
+    return;
+  }
+  auto listing = session::listSessions(dir.toStdString());
+  if (!listing) {
+    summary_->setText(QString::fromStdString(listing.status().message()));
+    updateButtons();
+    return;
+  }
+  for (const auto& s : listing->sessions) {
+    const int row = table_->rowCount();
+    table_->insertRow(row);
+    auto set = [&](int column, const QString& text) {
+      auto* item = new QTableWidgetItem(text);
+      item->setToolTip(text);
+      table_->setItem(row, column, item);
+    };
+    set(kFile, QString::fromStdString(s.fileName));
+    table_->item(row, kFile)->setData(Qt::UserRole, QString::fromStdString(s.path));
+    if (!s.error.empty()) {
+      set(kState, tr("unreadable: %1").arg(QString::fromStdString(s.error)));
+      table_->item(row, kState)->setForeground(QColor(190, 0, 0));
+      continue;
+    }
+    QString imu = QString::fromStdString(s.info.imuModel);
+    if (!s.info.imuSerial.empty()) imu += (imu.isEmpty() ? "" : " ") + QString::fromStdString(s.info.imuSerial);
+    set(kCreated, QString::fromStdString(s.info.createdUtc));
+    set(kOperator, QString::fromStdString(s.info.operatorName));
+    set(kImu, imu);
+    set(kAxes, QString::fromStdString(session::axesOf(s.info.plan)).toUpper());
+    set(kState, s.complete ? tr("complete") : tr("incomplete: %1").arg(QString::fromStdString(s.incompleteReason)));
+    if (!s.complete) table_->item(row, kState)->setForeground(QColor(170, 90, 0));
+    set(kLag, joinMs(s.lagMs));
+    set(kImuDelay, joinMs(s.imuDelayMs));
+  }
+  summary_->setText(tr("%n session(s)", nullptr, static_cast<int>(listing->sessions.size())) + "; " +
+                    tr("%n other file(s) skipped", nullptr, listing->skippedFiles));
+  updateButtons();
+}
+
+QStringList SessionBrowser::selectedPaths() const {
+  QStringList paths;
+  for (int row = 0; row < table_->rowCount(); ++row)
+    if (table_->item(row, kFile)->isSelected()) paths << table_->item(row, kFile)->data(Qt::UserRole).toString();
+  return paths;
+}
+
+bool SessionBrowser::selectPath(const QString& path) {
+  for (int row = 0; row < table_->rowCount(); ++row)
+    if (table_->item(row, kFile)->data(Qt::UserRole).toString() == path) {
+      table_->selectRow(row);
+      return true;
+    }
+  return false;
+}
+
+void SessionBrowser::updateButtons() {
+  const int n = static_cast<int>(selectedPaths().size());
+  openButton_->setEnabled(n >= 1);
+  reanalyseButton_->setEnabled(n >= 1);
+  compareButton_->setEnabled(n == 2);
+}
+
+}  // namespace fog::ui

@@ -1,0 +1,50 @@
+#pragma once
+// The session browser: the sessions in a folder (date, operator, IMU, axes,
+// state, headline delay), opened read-only for review. Opening, re-analysing
+// and comparing are requested through signals; the window that owns the
+// browser does the (background) work, so the browser never blocks.
+
+#include <QString>
+#include <QWidget>
+
+class QLineEdit;
+class QLabel;
+class QPushButton;
+class QTableWidget;
+
+namespace fog::ui {
+
+class SessionBrowser : public QWidget {
+  Q_OBJECT
+
+ public:
+  explicit SessionBrowser(QWidget* parent = nullptr);
+
+  void setFolder(const QString& folder);
+  QString folder() const;
+  // Reads the folder again.
+  void refresh();
+  QTableWidget* table() const { return table_; }
+  // The paths of the selected rows, in table order.
+  QStringList selectedPaths() const;
+  // Selects the row of `path`; false when it is not listed.
+  bool selectPath(const QString& path);
+
+ signals:
+  void openRequested(const QString& path);
+  void reanalyseRequested(const QString& path);
+  void compareRequested(const QString& first, const QString& second);
+  void folderChanged(const QString& folder);
+
+ private:
+  void updateButtons();
+
+  QLineEdit* folderEdit_ = nullptr;
+  QTableWidget* table_ = nullptr;
+  QLabel* summary_ = nullptr;
+  QPushButton* openButton_ = nullptr;
+  QPushButton* reanalyseButton_ = nullptr;
+  QPushButton* compareButton_ = nullptr;
+};
+
+}  // namespace fog::ui
