@@ -23,7 +23,8 @@ usage:
       plan: --plan FILE.json | --preset paper|paper-slow|paper-fast (default paper:
             0.1 Hz / 10 deg for 294 s and 1 Hz / 3 deg for 60 s on X)
             | --axis x --freq-hz 0.1 --amp-deg 10 --duration-s 294 [--settle-s 5]
-      --source sim (the only source so far), --seed N,
+      --source sim (the only source so far), --seed N, --speed X (X times real time; default 0:
+      as fast as possible),
       --gyro-delay-ms D (gyro's own delay, default 0.2358),
       --arw-deg-sqrt-h, --bias-instability-deg-h, --pulse-equivalent-deg,
       --table-freq-error-ppm, --counter-hz, --counter-bits, --counter-start

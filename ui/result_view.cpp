@@ -66,7 +66,10 @@ QTableWidget* makeTable(const QStringList& headers) {
 void setRow(QTableWidget* t, int row, const QStringList& cells, bool bold = false) {
   for (int c = 0; c < cells.size(); ++c) {
     auto* item = new QTableWidgetItem(cells[c]);
-    if (c > 0) item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+    // Numbers (and ranges of them) right-aligned, words left.
+    bool number = false;
+    cells[c].section(' ', 0, 0).toDouble(&number);
+    item->setTextAlignment((number ? Qt::AlignRight : Qt::AlignLeft) | Qt::AlignVCenter);
     if (bold) {
       QFont f = item->font();
       f.setBold(true);
