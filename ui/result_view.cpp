@@ -28,6 +28,7 @@
 #include <qwt_symbol.h>
 
 #include "analysis/theory.h"
+#include "session/session_file.h"
 #include "ui/plot_export.h"
 #include "ui/report/calibration_report.h"
 #include "ui/series_plot.h"
@@ -370,6 +371,14 @@ Status ResultView::writeReportPdf(const QString& path, double imuDelayLimitMs) c
   in.recording = outcome_->recording;
   in.delays = *outcome_->report;
   in.imuDelayLimitMs = imuDelayLimitMs;
+  // The report carries the hash of the raw stream the result came from.
+  if (!outcome_->sessionPath.empty()) {
+    auto reader = session::SessionReader::open(outcome_->sessionPath);
+    if (!reader) return reader.status();
+    auto bytes = (*reader)->rawBytes();
+    if (!bytes) return bytes.status();
+    in.rawBytes = std::move(*bytes);
+  }
   return report::writeCalibrationPdf(in, path);
 }
 

@@ -164,6 +164,15 @@ class BenchUiTest : public QObject {
     QVERIFY(table->rowCount() >= 1);
     QVERIFY(w->sessionBrowser()->selectedPaths().contains(QString::fromStdString(outcome->sessionPath)));
     QVERIFY(!button(*w, "stopButton")->isEnabled());
+
+    // The calibration report of what is shown.
+    QTemporaryDir dir;
+    const QString pdf = dir.filePath("report.pdf");
+    const auto written = w->resultView()->writeReportPdf(pdf, 0.8);
+    QVERIFY2(written.isOk(), written.message().c_str());
+    QFile file(pdf);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    QVERIFY(file.read(8).startsWith("%PDF-1."));
   }
 
   // Stop mid-run: the run ends incomplete, everything received is kept,
