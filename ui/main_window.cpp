@@ -11,6 +11,8 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMenuBar>
+#include <QMessageBox>
 #include <QPointer>
 #include <QPushButton>
 #include <QSettings>
@@ -25,6 +27,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <qwt_global.h>
 
 #include "acquisition/replay_source.h"
 #include "acquisition/simulator_source.h"
@@ -236,7 +239,20 @@ QWidget* MainWindow::buildConfigureView() {
   return page;
 }
 
+QString MainWindow::aboutText() const {
+  return tr("<h3>fogbench %1</h3><p>Fiber-optic gyro IMU delay test bench: swing the IMU on a turntable, "
+            "stamp table angle and gyro increments with one counter, fit sinusoids to both and turn their "
+            "phase difference into the IMU's delay, with its uncertainty.</p>"
+            "<p>Built with Qt %2 (running on %3) and Qwt %4.</p>")
+      .arg(FOG_VERSION, QT_VERSION_STR, qVersion(), QWT_VERSION_STR);
+}
+
 void MainWindow::buildToolBar() {
+  auto* help = menuBar()->addMenu(tr("&Help"));
+  auto* about = help->addAction(tr("&About fogbench"));
+  about->setObjectName("aboutAction");
+  connect(about, &QAction::triggered, this, [this] { QMessageBox::about(this, tr("About fogbench"), aboutText()); });
+
   auto* bar = addToolBar(tr("Run"));
   bar->setObjectName("runToolBar");
   bar->setMovable(false);

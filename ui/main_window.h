@@ -67,6 +67,8 @@ class MainWindow : public QMainWindow {
   bool isRunning() const { return runner_.isRunning(); }
   // The last run's or opened session's result (null before one).
   const RunOutcome* lastOutcome() const;
+  // The About box's text: version of fogbench, Qt and Qwt.
+  QString aboutText() const;
   // What the operator was last told in the status bar.
   QString lastMessage() const { return lastMessage_; }
 

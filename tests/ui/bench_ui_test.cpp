@@ -3,6 +3,7 @@
 // live, read the result, stop a run and keep what was recorded, open a saved
 // session from the browser, re-analyse and export.
 
+#include <QAction>
 #include <QCryptographicHash>
 #include <QDoubleSpinBox>
 #include <QFile>
@@ -16,6 +17,7 @@
 #include <cmath>
 #include <vector>
 
+#include "common/version.h"
 #include "session/session_file.h"
 #include "ui/curve_decimation.h"
 #include "ui/delta_picker.h"
@@ -281,6 +283,14 @@ class BenchUiTest : public QObject {
     clock.start();
     w.reset();
     QVERIFY(clock.elapsed() < 5000);
+  }
+
+  // One version everywhere: the About box says the CMake project version.
+  void aboutBoxShowsTheVersion() {
+    auto w = window();
+    QVERIFY(w->findChild<QAction*>("aboutAction"));
+    QVERIFY(w->aboutText().contains(QString("fogbench %1").arg(FOG_VERSION)));
+    QVERIFY(w->windowTitle().contains(FOG_VERSION));
   }
 
   void durationsReadWell() {
