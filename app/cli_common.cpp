@@ -13,16 +13,6 @@ int exitCodeFor(const Status& s) {
   return s.code() == StatusCode::kInsufficientData || s.code() == StatusCode::kNotConverged ? 1 : 2;
 }
 
-analysis::BenchConstants constantsOf(const BenchSettings& bench) {
-  analysis::BenchConstants c;
-  c.tableReadDelayMs = bench.tableReadDelayMs;
-  c.tableReadDelayStdMs = bench.tableReadDelayStdMs;
-  c.boardDelayMs = bench.boardDelayMs;
-  c.boardDelayStdMs = bench.boardDelayStdMs;
-  c.pulseEquivalentDeg = bench.pulseEquivalentDeg;
-  return c;
-}
-
 void storeConstants(const analysis::BenchConstants& c, BenchSettings& bench) {
   bench.tableReadDelayMs = c.tableReadDelayMs;
   bench.tableReadDelayStdMs = c.tableReadDelayStdMs;
@@ -32,7 +22,7 @@ void storeConstants(const analysis::BenchConstants& c, BenchSettings& bench) {
 }
 
 Result<analysis::BenchConstants> readConstants(CliArguments& args, const BenchSettings& defaults) {
-  analysis::BenchConstants c = constantsOf(defaults);
+  analysis::BenchConstants c = analysis::benchConstantsOf(defaults);
   struct Field {
     const char* name;
     double* target;

@@ -24,8 +24,6 @@ int exitCodeFor(const Status& s);
 // overridable on the command line: --read-delay-ms, --read-delay-std-ms,
 // --board-delay-ms, --board-delay-std-ms, --pulse-equivalent-deg.
 Result<analysis::BenchConstants> readConstants(CliArguments& args, const BenchSettings& defaults = {});
-// A session's bench settings as the analysis takes them.
-analysis::BenchConstants constantsOf(const BenchSettings& bench);
 // Writes the constants back into the settings a session stores.
 void storeConstants(const analysis::BenchConstants& constants, BenchSettings& bench);
 

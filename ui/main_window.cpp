@@ -49,16 +49,6 @@ QString durationText(double seconds) {
   return s >= 60 ? QObject::tr("%1 min %2 s").arg(s / 60).arg(s % 60, 2, 10, QChar('0')) : QObject::tr("%1 s").arg(s);
 }
 
-analysis::BenchConstants constantsOf(const BenchSettings& b) {
-  analysis::BenchConstants c;
-  c.tableReadDelayMs = b.tableReadDelayMs;
-  c.tableReadDelayStdMs = b.tableReadDelayStdMs;
-  c.boardDelayMs = b.boardDelayMs;
-  c.boardDelayStdMs = b.boardDelayStdMs;
-  c.pulseEquivalentDeg = b.pulseEquivalentDeg;
-  return c;
-}
-
 // The simulated chain follows the bench's constants, so that the simulator
 // behaves like the bench the operator described.
 model::SimConfig simConfigOf(const BenchSettings& b, int seed) {
@@ -355,7 +345,7 @@ void MainWindow::startRun() {
   const bool sim = sourceCombo_->currentData().toString() == "sim";
   RunRequest request;
   request.options.info = sessionInfo();
-  request.options.constants = constantsOf(bench_);
+  request.options.constants = analysis::benchConstantsOf(bench_);
   TestPlan plan;
   if (sim) {
     plan = planEditor_->plan();
@@ -387,7 +377,7 @@ void MainWindow::startRun() {
     request.options.info = original;
     request.options.info.createdUtc = session::utcNow();
     request.options.info.softwareVersion = FOG_VERSION;
-    request.options.constants = constantsOf(original.bench);
+    request.options.constants = analysis::benchConstantsOf(original.bench);
     auto source = std::make_shared<acquisition::ReplaySource>(std::move(*bytes), speed,
                                                               "session " + QFileInfo(path).fileName().toStdString());
     request.options.info.source = source->description();
@@ -535,7 +525,7 @@ void MainWindow::loadSession(const QString& path, bool reanalyse,
     outcome->recording = std::move(*recording);
     // Review uses the session's own constants; a re-analysis the bench's.
     if (reanalyse) outcome->info.bench = bench;
-    const auto constants = constantsOf(outcome->info.bench);
+    const auto constants = analysis::benchConstantsOf(outcome->info.bench);
     outcome->report = analysis::analyzeRecording(outcome->recording, constants);
     const std::string source = "session " + path.toStdString() + " (" + (*reader)->info().source + ")";
     reader->reset();

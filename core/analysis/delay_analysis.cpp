@@ -13,6 +13,16 @@
 
 namespace fog::analysis {
 
+BenchConstants benchConstantsOf(const BenchSettings& bench) {
+  BenchConstants c;
+  c.tableReadDelayMs = bench.tableReadDelayMs;
+  c.tableReadDelayStdMs = bench.tableReadDelayStdMs;
+  c.boardDelayMs = bench.boardDelayMs;
+  c.boardDelayStdMs = bench.boardDelayStdMs;
+  c.pulseEquivalentDeg = bench.pulseEquivalentDeg;
+  return c;
+}
+
 namespace {
 
 std::string fmt(double v, int precision = 4) {

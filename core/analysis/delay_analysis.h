@@ -15,6 +15,7 @@
 #include "analysis/joint_fit.h"
 #include "analysis/sine_fit.h"
 #include "common/recording.h"
+#include "common/session_info.h"
 #include "common/status.h"
 
 namespace fog::analysis {
@@ -28,6 +29,9 @@ struct BenchConstants {
   // Degrees per gyro pulse; used only when the stream does not state it.
   double pulseEquivalentDeg = 0.0;
 };
+
+// The constants a session's bench settings give the analysis.
+BenchConstants benchConstantsOf(const BenchSettings& bench);
 
 // Noise seen in the session, estimated from fit residuals.
 struct NoiseEstimate {

@@ -394,16 +394,6 @@ Result<ImportedSession> importTexts(const std::string& what, const std::string& 
 
 }  // namespace
 
-analysis::BenchConstants benchConstantsOf(const SessionInfo& info) {
-  analysis::BenchConstants c;
-  c.tableReadDelayMs = info.bench.tableReadDelayMs;
-  c.tableReadDelayStdMs = info.bench.tableReadDelayStdMs;
-  c.boardDelayMs = info.bench.boardDelayMs;
-  c.boardDelayStdMs = info.bench.boardDelayStdMs;
-  c.pulseEquivalentDeg = info.bench.pulseEquivalentDeg;
-  return c;
-}
-
 Result<ImportedSession> importCsvDirectory(const std::string& dir) {
   std::error_code ec;
   if (!fs::is_directory(dir, ec))

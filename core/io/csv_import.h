@@ -53,7 +53,4 @@ Result<ImportedSession> importCsvDirectory(const std::string& dir);
 // (x_deg, y_deg or z_deg).
 Result<ImportedSession> importCsvFiles(const std::vector<std::string>& paths);
 
-// The bench constants the analysis needs, from the session's settings.
-analysis::BenchConstants benchConstantsOf(const SessionInfo& info);
-
 }  // namespace fog::io

@@ -76,7 +76,7 @@ TEST(CsvImport, ReadsTheDocumentedLayout) {
   EXPECT_EQ(r.health.tableFrames, 3u);
   EXPECT_EQ(r.health.imuFrames, 2u);
   EXPECT_EQ(r.health.lostFrames, 1u);
-  const auto c = benchConstantsOf(s->info);
+  const auto c = analysis::benchConstantsOf(s->info.bench);
   EXPECT_DOUBLE_EQ(c.tableReadDelayMs, 0.05);
   EXPECT_DOUBLE_EQ(c.boardDelayMs, 0.28);
 }
@@ -194,7 +194,7 @@ TEST(CsvImport, AnotherBenchWithOnlyTheXAxisIsAnalysed) {
     if (n.find("read as 0") != std::string::npos) ++axisNotes;
   EXPECT_EQ(axisNotes, 5);  // ... and each is noted: y/z angles, y/z increments, temperature
 
-  auto report = analysis::analyzeRecording(s->recording, benchConstantsOf(s->info));
+  auto report = analysis::analyzeRecording(s->recording, analysis::benchConstantsOf(s->info.bench));
   ASSERT_TRUE(report.isOk()) << report.status().toString();
   const auto& r = report->points.at(0);
   EXPECT_NEAR(r.nominalFrequencyHz, 1.0, 1e-3);  // estimated from the table: metadata gave none
