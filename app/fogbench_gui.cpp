@@ -4,7 +4,7 @@
 //   fogbench [--preset NAME] [--seed N] [--speed X] [--replay SESSION.fbs]
 //            [--session-folder DIR] [--open SESSION.fbs] [--run]
 //            [--view configure|live|results|sessions]
-//            [--screenshot FILE [--screenshot-after S]]
+//            [--screenshot FILE [--screenshot-after S]] [--language system|en|zh_CN]
 //
 // --screenshot FILE saves an image of the window and quits: for the
 // configure view at once, for the live view S seconds into the run (default
@@ -19,6 +19,7 @@
 
 #include "common/version.h"
 #include "ui/bench_presets.h"
+#include "ui/language.h"
 #include "ui/main_window.h"
 #include "ui/plan_editor.h"
 
@@ -45,6 +46,11 @@ int main(int argc, char* argv[]) {
   QApplication::setOrganizationName("fogbench");
   QApplication::setApplicationName("fogbench");
   QApplication::setApplicationVersion(FOG_VERSION);
+  // --language overrides the remembered choice for this run (tests, screenshots).
+  QString language = fog::ui::languageSetting();
+  for (int i = 1; i + 1 < argc; ++i)
+    if (QString(argv[i]) == "--language") language = argv[i + 1];
+  fog::ui::installTranslations(app, language);
 
   QStringList presetNames;
   for (const auto& p : fog::ui::benchPresets()) presetNames << p.name;
@@ -65,8 +71,9 @@ int main(int argc, char* argv[]) {
   const QCommandLineOption viewOption("view", "Show this view: " + views.join(", ") + ".", "NAME");
   const QCommandLineOption screenshotOption("screenshot", "Save an image of the window to FILE and quit.", "FILE");
   const QCommandLineOption afterOption("screenshot-after", "Live view: seconds into the run (default 3).", "S");
+  const QCommandLineOption languageOption("language", "GUI language for this run: system, en or zh_CN.", "CODE");
   parser.addOptions({runOption, presetOption, seedOption, speedOption, replayOption, folderOption, openOption,
-                     viewOption, screenshotOption, afterOption});
+                     viewOption, screenshotOption, afterOption, languageOption});
   parser.process(app);
 
   fog::ui::MainWindow window;

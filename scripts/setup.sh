@@ -9,9 +9,9 @@ packages=(
   libeigen3-dev libceres-dev
   libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev
   qtbase5-dev libqt5svg5-dev libqt5opengl5-dev libqt5serialport5-dev
-  libqwt-qt5-dev libsqlite3-dev
+  libqwt-qt5-dev libsqlite3-dev qttools5-dev qttools5-dev-tools
   clang libclang-rt-14-dev
-  xvfb xauth
+  xvfb xauth fonts-wqy-microhei
 )
 
 missing=()

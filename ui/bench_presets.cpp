@@ -1,5 +1,7 @@
 #include "ui/bench_presets.h"
 
+#include <QCoreApplication>
+
 namespace fog::ui {
 
 namespace {
@@ -20,12 +22,18 @@ TestPlan quickPlan() {
 
 const std::vector<BenchPreset>& benchPresets() {
   static const std::vector<BenchPreset> presets = {
-      {"paper", "Paper: 0.1 Hz / 10° 294 s + 1 Hz / 3° 60 s", paperPlan()},
-      {"paper-slow", "Paper slow: 0.1 Hz / 10°, 294 s", TestPlan::paperSlow()},
-      {"paper-fast", "Paper fast: 1 Hz / 3°, 60 s", TestPlan::paperFast()},
-      {"quick", "Quick: 1 Hz / 3°, 20 s", quickPlan()},
+      {"paper", QT_TRANSLATE_NOOP("BenchPreset", "Paper: 0.1 Hz / 10° 294 s + 1 Hz / 3° 60 s"), paperPlan()},
+      {"paper-slow", QT_TRANSLATE_NOOP("BenchPreset", "Paper slow: 0.1 Hz / 10°, 294 s"), TestPlan::paperSlow()},
+      {"paper-fast", QT_TRANSLATE_NOOP("BenchPreset", "Paper fast: 1 Hz / 3°, 60 s"), TestPlan::paperFast()},
+      {"quick", QT_TRANSLATE_NOOP("BenchPreset", "Quick: 1 Hz / 3°, 20 s"), quickPlan()},
   };
   return presets;
+}
+
+QString BenchPreset::displayLabel() const {
+  // lupdate files the labels under "BenchPreset"; the translation scripts
+  // qualify every context with the namespace.
+  return QCoreApplication::translate("fog::ui::BenchPreset", label.toUtf8().constData());
 }
 
 std::optional<BenchPreset> findBenchPreset(const QString& name) {

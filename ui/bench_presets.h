@@ -11,8 +11,10 @@ namespace fog::ui {
 
 struct BenchPreset {
   QString name;   // as given on the command line: "paper", "quick", ...
-  QString label;  // as shown in the selector
+  QString label;  // English, as in the source; see displayLabel()
   TestPlan plan;
+  // The label in the GUI's language.
+  QString displayLabel() const;
 };
 
 // In display order; the first is the default.

@@ -1,5 +1,7 @@
 #include "ui/delta_picker.h"
 
+#include "ui/language.h"
+
 #include <cmath>
 #include <qwt_picker_machine.h>
 #include <qwt_plot.h>
@@ -9,9 +11,9 @@ namespace fog::ui {
 
 QString formatDuration(double s) {
   const double a = std::abs(s);
-  if (a < 1e-3) return QObject::tr("%1 µs").arg(s * 1e6, 0, 'f', 1);
-  if (a < 1.0) return QObject::tr("%1 ms").arg(s * 1e3, 0, 'f', 4);
-  return QObject::tr("%1 s").arg(s, 0, 'f', 4);
+  if (a < 1e-3) return QObject::tr("%1 µs").arg(localNumber(s * 1e6, 'f', 1));
+  if (a < 1.0) return QObject::tr("%1 ms").arg(localNumber(s * 1e3, 'f', 4));
+  return QObject::tr("%1 s").arg(localNumber(s, 'f', 4));
 }
 
 DeltaPicker::DeltaPicker(QWidget* canvas, QString unit)
@@ -23,11 +25,11 @@ DeltaPicker::DeltaPicker(QWidget* canvas, QString unit)
 }
 
 QString DeltaPicker::readout(const QPointF& pos) const {
-  QString text = tr("t = %1 s, %2 %3").arg(pos.x(), 0, 'f', 4).arg(pos.y(), 0, 'g', 6).arg(unit_);
+  QString text = tr("t = %1 s, %2 %3").arg(localNumber(pos.x(), 'f', 4), localNumber(pos.y(), 'g', 6), unit_);
   const QPolygon band = selection();
   if (isActive() && band.size() >= 2) {
     const QPointF start = invTransform(band.front());
-    text += tr("\nΔt = %1, Δ = %2 %3").arg(formatDuration(pos.x() - start.x())).arg(pos.y() - start.y(), 0, 'g', 4).arg(unit_);
+    text += tr("\nΔt = %1, Δ = %2 %3").arg(formatDuration(pos.x() - start.x()), localNumber(pos.y() - start.y(), 'g', 4), unit_);
   }
   return text;
 }

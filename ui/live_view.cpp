@@ -22,6 +22,7 @@
 
 #include "ui/curve_decimation.h"
 #include "ui/delta_picker.h"
+#include "ui/language.h"
 
 namespace fog::ui {
 
@@ -227,17 +228,17 @@ void LiveView::updateProgress() {
     case protocol::TestPhase::kDone: phase = tr("done"); break;
   }
   if (i < 0) {
-    stateLabel_->setText(tr("t = %1 s · %2").arg(traces_.streamTimeS(), 0, 'f', 1).arg(phase));
+    stateLabel_->setText(tr("t = %1 s · %2").arg(localNumber(traces_.streamTimeS(), 'f', 1), phase));
     return;
   }
   stateLabel_->setText(tr("Test point %1 of %2 · %3 axis, %4 Hz · %5 · t = %6 s · gyro trend %7 °/h")
                            .arg(i + 1)
                            .arg(plan_.points.empty() ? QStringLiteral("?") : QString::number(plan_.points.size()))
                            .arg(QString(axisName(traces_.axis())).toUpper())
-                           .arg(traces_.nominalFrequencyHz())
+                           .arg(localNumber(traces_.nominalFrequencyHz(), 'g', 6))
                            .arg(phase)
-                           .arg(traces_.streamTimeS(), 0, 'f', 1)
-                           .arg(traces_.gyroTrendDegPerS() * 3600.0, 0, 'f', 2));
+                           .arg(localNumber(traces_.streamTimeS(), 'f', 1))
+                           .arg(localNumber(traces_.gyroTrendDegPerS() * 3600.0, 'f', 2)));
 }
 
 void LiveView::refresh() {

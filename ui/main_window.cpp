@@ -1,5 +1,6 @@
 #include "ui/main_window.h"
 
+#include <QActionGroup>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDateTime>
@@ -35,6 +36,7 @@
 #include "common/version.h"
 #include "session/session_file.h"
 #include "ui/bench_settings_dialog.h"
+#include "ui/language.h"
 #include "ui/live_view.h"
 #include "ui/plan_editor.h"
 #include "ui/result_view.h"
@@ -238,6 +240,24 @@ QString MainWindow::aboutText() const {
 }
 
 void MainWindow::buildToolBar() {
+  auto* settings = menuBar()->addMenu(tr("&Settings"));
+  settings->addAction(tr("&Bench constants…"), this, [this] { findChild<QPushButton*>("editConstantsButton")->click(); });
+  auto* languages = settings->addMenu(tr("&Language"));
+  auto* group = new QActionGroup(languages);
+  const QString current = languageSetting();
+  QStringList codes = {"system"};
+  codes << availableLanguages();
+  for (const QString& code : codes) {
+    auto* action = languages->addAction(code == "system" ? tr("System default") : languageName(code));
+    action->setObjectName("language_" + code);
+    action->setCheckable(true);
+    action->setChecked(code == current);
+    group->addAction(action);
+    connect(action, &QAction::triggered, this, [this, code] {
+      setLanguageSetting(code);
+      tell(tr("The language changes when fogbench starts again."));
+    });
+  }
   auto* help = menuBar()->addMenu(tr("&Help"));
   auto* about = help->addAction(tr("&About fogbench"));
   about->setObjectName("aboutAction");

@@ -43,7 +43,7 @@ PlanEditor::PlanEditor(QWidget* parent) : QWidget(parent) {
   top->addWidget(new QLabel(tr("Preset")));
   presetCombo_ = new QComboBox();
   presetCombo_->setObjectName("planPresetCombo");
-  for (const auto& p : benchPresets()) presetCombo_->addItem(p.label, p.name);
+  for (const auto& p : benchPresets()) presetCombo_->addItem(p.displayLabel(), p.name);
   top->addWidget(presetCombo_);
   auto* load = new QPushButton(tr("Load preset"));
   load->setObjectName("loadPresetButton");

@@ -29,6 +29,7 @@
 
 #include "analysis/theory.h"
 #include "session/session_file.h"
+#include "ui/language.h"
 #include "ui/plot_export.h"
 #include "ui/report/calibration_report.h"
 #include "ui/series_plot.h"
@@ -43,7 +44,7 @@ const QColor kTableFit(8, 48, 107);
 const QColor kGyroFit(165, 15, 21);
 const QColor kAxisColour[kAxisCount] = {QColor(31, 119, 180), QColor(44, 160, 44), QColor(214, 39, 40)};
 
-QString num(double value, int decimals) { return QString::number(value, 'f', decimals); }
+QString num(double value, int decimals) { return localNumber(value, 'f', decimals); }
 
 QString pointLabel(const analysis::TestPointResult& p) {
   return QObject::tr("%1: %2 axis, %3 Hz / %4°")

@@ -11,6 +11,7 @@
 #include <QVBoxLayout>
 
 #include "session/session_list.h"
+#include "ui/language.h"
 
 namespace fog::ui {
 
@@ -20,7 +21,7 @@ enum Column { kFile = 0, kCreated, kOperator, kImu, kAxes, kState, kLag, kImuDel
 
 QString joinMs(const std::vector<double>& values) {
   QStringList parts;
-  for (double v : values) parts << QString::number(v, 'f', 4);
+  for (double v : values) parts << localNumber(v, 'f', 4);
   return parts.isEmpty() ? QStringLiteral("-") : parts.join(" / ");
 }
 

@@ -11,6 +11,7 @@
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QStandardPaths>
+#include <QTabWidget>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -20,6 +21,7 @@
 #include "common/version.h"
 #include "session/session_file.h"
 #include "ui/curve_decimation.h"
+#include "ui/language.h"
 #include "ui/delta_picker.h"
 #include "ui/live_view.h"
 #include "ui/main_window.h"
@@ -320,6 +322,20 @@ class BenchUiTest : public QObject {
     QCOMPARE(zoomed.front().x(), x[9999]);
     QVERIFY(fog::ui::decimateMinMax(x, y, 1.0, 1.0, 500).isEmpty());
     QVERIFY(fog::ui::decimateMinMax({}, {}, 0.0, 1.0, 500).isEmpty());
+  }
+
+  // Runs last: it installs the Chinese translation into the application.
+  void chineseGuiWhenChosen() {
+    QCOMPARE(fog::ui::installTranslations(*qApp, "zh_CN"), QString("zh_CN"));
+    auto w = window();
+    auto* tabs = w->findChild<QTabWidget*>("viewTabs");
+    QVERIFY(tabs);
+    QCOMPARE(tabs->tabText(0), QString::fromUtf8("配置"));
+    QCOMPARE(tabs->tabText(1), QString::fromUtf8("实时"));
+    QCOMPARE(button(*w, "runButton")->text(), QString::fromUtf8("运行"));
+    // Numbers follow the locale; the files the bench writes do not (CSV/JSON
+    // use std::to_chars, see docs/formats.md).
+    QCOMPARE(QLocale().name(), QString("zh_CN"));
   }
 };
 

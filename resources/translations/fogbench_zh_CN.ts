@@ -1,0 +1,2110 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="zh_CN">
+<context>
+    <name>fog::ui::BenchPreset</name>
+    <message>
+        <location filename="../../ui/bench_presets.cpp" line="+25"/>
+        <source>Paper: 0.1 Hz / 10° 294 s + 1 Hz / 3° 60 s</source>
+        <translation>论文：0.1 Hz / 10° 294 s + 1 Hz / 3° 60 s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Paper slow: 0.1 Hz / 10°, 294 s</source>
+        <translation>论文慢速：0.1 Hz / 10°，294 s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Paper fast: 1 Hz / 3°, 60 s</source>
+        <translation>论文快速：1 Hz / 3°，60 s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Quick: 1 Hz / 3°, 20 s</source>
+        <translation>快速：1 Hz / 3°，20 s</translation>
+    </message>
+</context>
+<context>
+    <name>fog::ui::BenchSettingsDialog</name>
+    <message>
+        <location filename="../../ui/bench_settings_dialog.cpp" line="+57"/>
+        <source>Bench constants</source>
+        <translation>测试台常数</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+1"/>
+        <location line="+1"/>
+        <location line="+1"/>
+        <source> ms</source>
+        <translation> ms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> °</source>
+        <translation> °</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> °/pulse</source>
+        <translation> °/脉冲</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> MHz</source>
+        <translation> MHz</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source> bit</source>
+        <translation> 位</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Table angle read delay</source>
+        <translation>转台角度读数延迟</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+2"/>
+        <source>  its standard uncertainty</source>
+        <translation>  其标准不确定度</translation>
+    </message>
+    <message>
+        <location line="-1"/>
+        <source>Processing-board delay</source>
+        <translation>处理板延迟</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Latitude</source>
+        <translation>纬度</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Gyro pulse equivalent</source>
+        <translation>陀螺脉冲当量</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Sampling-board counter</source>
+        <translation>采样板计数器</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Counter width</source>
+        <translation>计数器位宽</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>IMU delay = measured lag + table read delay; gyro&apos;s own delay = IMU delay − processing-board delay. The pulse equivalent is used only when the board&apos;s stream does not state it; the simulator uses these values for the chain it simulates.</source>
+        <translation>IMU 延迟 = 测得滞后 + 转台读数延迟；陀螺自身延迟 = IMU 延迟 − 处理板延迟。仅当采样板数据流未给出脉冲当量时才使用此处的值；仿真器按这些数值构建其仿真链路。</translation>
+    </message>
+</context>
+<context>
+    <name>fog::ui::DeltaPicker</name>
+    <message>
+        <location filename="../../ui/delta_picker.cpp" line="+28"/>
+        <source>t = %1 s, %2 %3</source>
+        <translation>t = %1 s，%2 %3</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>
+Δt = %1, Δ = %2 %3</source>
+        <translation>
+Δt = %1，Δ = %2 %3</translation>
+    </message>
+</context>
+<context>
+    <name>fog::ui::LiveView</name>
+    <message>
+        <location filename="../../ui/live_view.cpp" line="+53"/>
+        <source>board time (s)</source>
+        <translation>采样板时间 (s)</translation>
+    </message>
+    <message>
+        <location line="+42"/>
+        <source>No run yet: configure a plan and press Run.</source>
+        <translation>尚未运行：请配置测试计划并按“运行”。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Window</source>
+        <translation>窗口</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>How much of the stream the plots show while following</source>
+        <translation>跟随时曲线显示的数据时长</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Follow live</source>
+        <translation>跟随实时</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Turntable angle</source>
+        <translation>转台角度</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location line="+2"/>
+        <source>angle (°)</source>
+        <translation>角度 (°)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Gyro angle (integrated, bias + Earth rate removed)</source>
+        <translation>陀螺角度（积分，已去除零偏 + 地球自转）</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Test point</source>
+        <translation>测试点</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Plan</source>
+        <translation>计划</translation>
+    </message>
+    <message>
+        <location line="+47"/>
+        <source>Waiting for the first frames …</source>
+        <translation>等待首批数据帧 …</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>run ended</source>
+        <translation>运行结束</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>plan unknown</source>
+        <translation>计划未知</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>as fast as possible</source>
+        <translation>尽可能快</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 left of %2</source>
+        <translation>剩余 %1 / 共 %2</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>table at rest</source>
+        <translation>转台静止</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>settling</source>
+        <translation>稳定中</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>recording</source>
+        <translation>记录中</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>done</source>
+        <translation>完成</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>t = %1 s · %2</source>
+        <translation>t = %1 s · %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Test point %1 of %2 · %3 axis, %4 Hz · %5 · t = %6 s · gyro trend %7 °/h</source>
+        <translation>测试点 %1 / %2 · %3 轴，%4 Hz · %5 · t = %6 s · 陀螺趋势 %7 °/h</translation>
+    </message>
+</context>
+<context>
+    <name>fog::ui::MainWindow</name>
+    <message>
+        <location filename="../../ui/main_window.cpp" line="+75"/>
+        <source>fogbench %1 — FOG IMU delay bench</source>
+        <translation>fogbench %1 —— 光纤陀螺 IMU 延迟测试台</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Configure</source>
+        <translation>配置</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Live</source>
+        <translation>实时</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Results</source>
+        <translation>结果</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Sessions</source>
+        <translation>会话</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>Configure a plan and press Run.</source>
+        <translation>请配置测试计划并按“运行”。</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Test plan</source>
+        <translation>测试计划</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <location line="+24"/>
+        <source>Source</source>
+        <translation>数据源</translation>
+    </message>
+    <message>
+        <location line="-20"/>
+        <source>Built-in simulator</source>
+        <translation>内置仿真器</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Replay of a session</source>
+        <translation>回放会话</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Real time</source>
+        <translation>实时</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>5× real time</source>
+        <translation>5 倍实时</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>20× real time</source>
+        <translation>20 倍实时</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>As fast as possible</source>
+        <translation>尽可能快</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Simulator seed: the same seed gives the same data</source>
+        <translation>仿真器种子：相同种子产生相同数据</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>session file (.fbs) to replay</source>
+        <translation>要回放的会话文件（.fbs）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Browse…</source>
+        <translation>浏览…</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Pace</source>
+        <translation>速度</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Seed</source>
+        <translation>种子</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Replay</source>
+        <translation>回放</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Session</source>
+        <translation>会话</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Record a session file (crash-safe)</source>
+        <translation>记录会话文件（防崩溃）</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Choose…</source>
+        <translation>选择…</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Folder</source>
+        <translation>文件夹</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Operator</source>
+        <translation>操作员</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>IMU model</source>
+        <translation>IMU 型号</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>IMU serial</source>
+        <translation>IMU 序列号</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Notes</source>
+        <translation>备注</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Bench constants</source>
+        <translation>测试台常数</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Edit bench constants…</source>
+        <translation>编辑测试台常数…</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>Session to replay</source>
+        <translation>要回放的会话</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>fogbench sessions (*.fbs)</source>
+        <translation>fogbench 会话 (*.fbs)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Session folder</source>
+        <translation>会话文件夹</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>&lt;h3&gt;fogbench %1&lt;/h3&gt;&lt;p&gt;Fiber-optic gyro IMU delay test bench: swing the IMU on a turntable, stamp table angle and gyro increments with one counter, fit sinusoids to both and turn their phase difference into the IMU&apos;s delay, with its uncertainty.&lt;/p&gt;&lt;p&gt;Built with Qt %2 (running on %3) and Qwt %4.&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;fogbench %1&lt;/h3&gt;&lt;p&gt;光纤陀螺 IMU 延迟测试台：转台带动 IMU 摆动，用同一计数器为转台角度和陀螺增量打时间戳，对两者拟合正弦，并将相位差换算为 IMU 延迟及其不确定度。&lt;/p&gt;&lt;p&gt;基于 Qt %2（运行于 %3）和 Qwt %4 构建。&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>&amp;Settings</source>
+        <translation>设置(&amp;S)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Bench constants…</source>
+        <translation>测试台常数(&amp;B)…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Language</source>
+        <translation>语言(&amp;L)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>System default</source>
+        <translation>跟随系统</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>The language changes when fogbench starts again.</source>
+        <translation>重新启动 fogbench 后语言才会更改。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Help</source>
+        <translation>帮助(&amp;H)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;About fogbench</source>
+        <translation>关于 fogbench(&amp;A)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>About fogbench</source>
+        <translation>关于 fogbench</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+3"/>
+        <source>Run</source>
+        <translation>运行</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Stop</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>End the run now; everything received so far is kept and analysed</source>
+        <translation>立即结束运行；已接收的全部数据都会保留并分析</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>%1× real time</source>
+        <translation>%1 倍实时</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>table read delay %1 ms · board delay %2 ms · latitude %3° · pulse equivalent %4° · counter %5 MHz / %6 bit</source>
+        <translation>转台读数延迟 %1 ms · 处理板延迟 %2 ms · 纬度 %3° · 脉冲当量 %4° · 计数器 %5 MHz / %6 位</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>a run is under way</source>
+        <translation>正在运行</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>choose the session file to replay</source>
+        <translation>请选择要回放的会话文件</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Start the run</source>
+        <translation>开始运行</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Cannot run: %1</source>
+        <translation>无法运行：%1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&lt;span style=&apos;color:#b00000&apos;&gt;Cannot run: %1&lt;/span&gt;</source>
+        <translation>&lt;span style=&apos;color:#b00000&apos;&gt;无法运行：%1&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <location line="+59"/>
+        <source>cannot create the session folder &apos;%1&apos;; choose another one</source>
+        <translation>无法创建会话文件夹“%1”；请另选一个</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Running: %1 …</source>
+        <translation>运行中：%1 …</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>simulator, seed %1</source>
+        <translation>仿真器，种子 %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Stopping: everything received so far is kept …</source>
+        <translation>正在停止：已接收的数据全部保留 …</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>No data from the source for %1 s — check the connection</source>
+        <translation>数据源已 %1 s 无数据——请检查连接</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>frames: %1 table · %2 IMU · %3 status  ·  checksum failures: %4  ·  lost: %5  ·  duplicates: %6</source>
+        <translation>帧：转台 %1 · IMU %2 · 状态 %3  ·  校验失败：%4  ·  丢失：%5  ·  重复：%6</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>  ·  display skipped %1 frames (all recorded)</source>
+        <translation>  ·  显示跳过 %1 帧（全部已记录）</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Run incomplete (%1); </source>
+        <translation>运行未完成（%1）；</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Run done in %1; </source>
+        <translation>运行完成，用时 %1；</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 test point(s) analysed, %2 without a delay</source>
+        <translation>已分析 %1 个测试点，%2 个未得到延迟</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>no delay: %1</source>
+        <translation>无延迟结果：%1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>. Saved as %1</source>
+        <translation>。已保存为 %1</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Run failed: %1</source>
+        <translation>运行失败：%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&lt;span style=&apos;color:#b00000&apos;&gt;Run failed: %1&lt;/span&gt;</source>
+        <translation>&lt;span style=&apos;color:#b00000&apos;&gt;运行失败：%1&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Re-analysing %1 …</source>
+        <translation>正在重新分析 %1 …</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Opening %1 …</source>
+        <translation>正在打开 %1 …</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Cannot open %1: %2</source>
+        <translation>无法打开 %1：%2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: re-analysed with the bench constants; the result was added to the session</source>
+        <translation>%1：已按测试台常数重新分析，结果已添加到会话</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1: read-only review</source>
+        <translation>%1：只读查看</translation>
+    </message>
+    <message>
+        <location line="+49"/>
+        <source>Compare %1 and %2</source>
+        <translation>比较 %1 与 %2</translation>
+    </message>
+</context>
+<context>
+    <name>fog::ui::PlanEditor</name>
+    <message>
+        <location filename="../../ui/plan_editor.cpp" line="+43"/>
+        <source>Preset</source>
+        <translation>预设</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Load preset</source>
+        <translation>载入预设</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Rest between points</source>
+        <translation>测试点间静止时间</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+66"/>
+        <location line="+2"/>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <location line="-59"/>
+        <source>Axis</source>
+        <translation>轴</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Frequency</source>
+        <translation>频率</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Amplitude</source>
+        <translation>幅值</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Duration</source>
+        <translation>时长</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Periods</source>
+        <translation>周期数</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Settle</source>
+        <translation>稳定</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Check</source>
+        <translation>检查</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Add test point</source>
+        <translation>添加测试点</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Remove</source>
+        <translation>删除</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Move up</source>
+        <translation>上移</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Move down</source>
+        <translation>下移</translation>
+    </message>
+    <message>
+        <location line="+40"/>
+        <source> Hz</source>
+        <translation> Hz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> °</source>
+        <translation> °</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Swing frequency</source>
+        <translation>摆动频率</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Swing amplitude (peak)</source>
+        <translation>摆动幅值（峰值）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Recorded time after settling; or give whole periods in the next column</source>
+        <translation>稳定后的记录时长；也可在下一列填写整周期数</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Recorded swing periods (duration × frequency)</source>
+        <translation>记录的摆动周期数（时长 × 频率）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Swing time before recording starts</source>
+        <translation>开始记录前的摆动时间</translation>
+    </message>
+    <message>
+        <location line="+108"/>
+        <source>ok: %1 periods, %2 in all</source>
+        <translation>正常：%1 个周期，共 %2</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>test point %1: %2</source>
+        <translation>测试点 %1：%2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the test plan has no test points: add one or load a preset</source>
+        <translation>测试计划中没有测试点：请添加或载入预设</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 test point(s), %2 in all</source>
+        <translation>%1 个测试点，共 %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&lt;span style=&apos;color:#b00000&apos;&gt;Cannot run: %1&lt;/span&gt;</source>
+        <translation>&lt;span style=&apos;color:#b00000&apos;&gt;无法运行：%1&lt;/span&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>QObject</name>
+    <message>
+        <location filename="../../ui/delta_picker.cpp" line="-18"/>
+        <source>%1 µs</source>
+        <translation>%1 µs</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location filename="../../ui/main_window.cpp" line="-529"/>
+        <location filename="../../ui/plan_editor.cpp" line="-232"/>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <location filename="../../ui/live_view.cpp" line="-190"/>
+        <source>%1:%2</source>
+        <translation>%1:%2</translation>
+    </message>
+    <message>
+        <location filename="../../ui/main_window.cpp" line="+0"/>
+        <source>%1 min %2 s</source>
+        <translation>%1 分 %2 秒</translation>
+    </message>
+    <message>
+        <location filename="../../ui/plan_editor.cpp" line="+0"/>
+        <source>%1 min</source>
+        <translation>%1 分钟</translation>
+    </message>
+    <message>
+        <location filename="../../ui/plot_export.cpp" line="+11"/>
+        <source>PNG image (*.png);;SVG drawing (*.svg);;PDF document (*.pdf)</source>
+        <translation>PNG 图像 (*.png);;SVG 矢量图 (*.svg);;PDF 文档 (*.pdf)</translation>
+    </message>
+    <message>
+        <location filename="../../ui/report/calibration_report.cpp" line="+62"/>
+        <location line="+230"/>
+        <source>not recorded</source>
+        <translation>未记录</translation>
+    </message>
+    <message>
+        <location line="-223"/>
+        <source>%1 axis
+%2 Hz / %3°, %4 s</source>
+        <translation>%1 轴
+%2 Hz / %3°，%4 s</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 axis, %2 Hz / %3°, %4 s</source>
+        <translation>%1 轴，%2 Hz / %3°，%4 s</translation>
+    </message>
+    <message>
+        <location line="+103"/>
+        <source>IMU %1 · S/N %2</source>
+        <translation>IMU %1 · 序列号 %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>fogbench · IMU delay calibration report</source>
+        <translation>fogbench · IMU 延迟标定报告</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Session %1 · raw data %2 · fogbench %3</source>
+        <translation>会话 %1 · 原始数据 %2 · fogbench %3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>(date not recorded)</source>
+        <translation>（未记录日期）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not hashed (imported)</source>
+        <translation>未计算哈希（导入）</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Page %1 of %2</source>
+        <translation>第 %1 页，共 %2 页</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>no raw stream (imported)</source>
+        <translation>无原始数据流（导入）</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 bytes of sampling-board stream</source>
+        <translation>采样板数据流 %1 字节</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Test point %1 (%2): %3</source>
+        <translation>测试点 %1（%2）：%3</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>FAIL: no delay from %1</source>
+        <translation>不合格：%1 未得到延迟</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Rule: a test point passes when its IMU delay plus %1 standard uncertainties (1σ, including the bench constants) is below the limit of %2 ms; the session passes when every test point of the plan gave a delay and passes.</source>
+        <translation>判定规则：测试点的 IMU 延迟加 %1 倍标准不确定度（1σ，含测试台常数）低于 %2 ms 限值时合格；计划中每个测试点都得到延迟且合格时，本次会话合格。</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>Tested by</source>
+        <translation>测试人</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Reviewed and approved by</source>
+        <translation>审核批准人</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Name, signature</source>
+        <translation>姓名、签字</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Date</source>
+        <translation>日期</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>IMU delay calibration report</source>
+        <translation>IMU 延迟标定报告</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1, serial number %2</source>
+        <translation>%1，序列号 %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Session</source>
+        <translation>会话</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>IMU model</source>
+        <translation>IMU 型号</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>IMU serial number</source>
+        <translation>IMU 序列号</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Operator</source>
+        <translation>操作员</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Recorded (UTC)</source>
+        <translation>记录时间 (UTC)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Data source</source>
+        <translation>数据来源</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Recorded with</source>
+        <translation>记录软件</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Report produced</source>
+        <translation>报告生成</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1 by fogbench %2</source>
+        <translation>%1，由 fogbench %2 生成</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Raw data</source>
+        <translation>原始数据</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Raw data SHA-256</source>
+        <translation>原始数据 SHA-256</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>none: no raw stream (imported)</source>
+        <translation>无：无原始数据流（导入）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Notes</source>
+        <translation>备注</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>none</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Results</source>
+        <translation>结果</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>condition</source>
+        <translation>条件</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>lag ± 1σ (ms)</source>
+        <translation>滞后 ± 1σ (ms)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CRLB (ms)</source>
+        <translation>CRLB (ms)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>IMU delay ± 1σ (ms)</source>
+        <translation>IMU 延迟 ± 1σ (ms)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>gyro delay ± 1σ (ms)</source>
+        <translation>陀螺延迟 ± 1σ (ms)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>verdict</source>
+        <translation>结论</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>No delay from %1</source>
+        <translation>%1 未得到延迟</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Delay against frequency, %1 axis (%2 frequencies): weighted lag %3 ms, χ² %4 on %5 dof, p = %6: %7.</source>
+        <translation>延迟随频率变化，%1 轴（%2 个频率）：加权滞后 %3 ms，χ² = %4，自由度 %5，p = %6：%7。</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>consistent with a pure delay</source>
+        <translation>与纯延迟一致</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>NOT a pure delay (frequency-dependent)</source>
+        <translation>不是纯延迟（随频率变化）</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Lag: gyro output behind the stamped table angle (joint fit). IMU delay = lag + table read delay; gyro delay = IMU delay − processing-board delay. CRLB: Cramér–Rao bound on the lag for the noise measured in this session.</source>
+        <translation>滞后：陀螺输出相对于打时间戳的转台角度的滞后（联合拟合）。IMU 延迟 = 滞后 + 转台读数延迟；陀螺延迟 = IMU 延迟 − 处理板延迟。CRLB：按本次会话实测噪声计算的滞后 Cramér–Rao 界。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Sign-off</source>
+        <translation>签署</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Bench constants</source>
+        <translation>测试台常数</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+265"/>
+        <source>quantity</source>
+        <translation>量</translation>
+    </message>
+    <message>
+        <location line="-264"/>
+        <source>value</source>
+        <translation>数值</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>std. uncertainty</source>
+        <translation>标准不确定度</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>role</source>
+        <translation>作用</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>0 (taken as exact)</source>
+        <translation>0（视为精确）</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>table read delay</source>
+        <translation>转台读数延迟</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>added to the lag: IMU delay</source>
+        <translation>加到滞后上：IMU 延迟</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>processing-board delay</source>
+        <translation>处理板延迟</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>subtracted from the IMU delay: gyro delay</source>
+        <translation>从 IMU 延迟中扣除：陀螺延迟</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>gyro pulse equivalent</source>
+        <translation>陀螺脉冲当量</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1″/pulse</source>
+        <translation>%1″/脉冲</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>stated by the stream</source>
+        <translation>由数据流给出</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>bench setting</source>
+        <translation>测试台设置</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>sampling-board counter</source>
+        <translation>采样板计数器</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 MHz, %2 bit</source>
+        <translation>%1 MHz，%2 位</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>common time base of both channels</source>
+        <translation>两通道的公共时间基准</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>latitude</source>
+        <translation>纬度</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1°</source>
+        <translation>%1°</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Earth rate, absorbed by the fitted gyro trend</source>
+        <translation>地球自转角速率，由拟合的陀螺趋势项吸收</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Test plan</source>
+        <translation>测试计划</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+18"/>
+        <source>axis</source>
+        <translation>轴</translation>
+    </message>
+    <message>
+        <location line="-17"/>
+        <source>frequency (Hz)</source>
+        <translation>频率 (Hz)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>amplitude (°)</source>
+        <translation>幅值 (°)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>duration (s)</source>
+        <translation>时长 (s)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>settle (s)</source>
+        <translation>稳定 (s)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>start phase (°)</source>
+        <translation>起始相位 (°)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Table at rest for %1 s between test points.</source>
+        <translation>测试点之间转台静止 %1 s。</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>nominal frequency (Hz)</source>
+        <translation>标称频率 (Hz)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>nominal amplitude (°)</source>
+        <translation>标称幅值 (°)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>recorded (s)</source>
+        <translation>记录时长 (s)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>not stated</source>
+        <translation>未给出</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The plan was not recorded with the data; the test points as the stream states them:</source>
+        <translation>数据未附带测试计划；以下为数据流给出的测试点：</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Data integrity</source>
+        <translation>数据完整性</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>table frames</source>
+        <translation>转台帧</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>checksum failures</source>
+        <translation>校验失败</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>IMU frames</source>
+        <translation>IMU 帧</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>lost frames</source>
+        <translation>丢失帧</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>status frames</source>
+        <translation>状态帧</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>duplicate / out-of-order frames</source>
+        <translation>重复 / 乱序帧</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>counter wraps</source>
+        <translation>计数器回绕</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>bytes skipped</source>
+        <translation>跳过字节</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Delay budget: the paper&apos;s theory beside the measurement</source>
+        <translation>延迟预算：论文理论值与测量值对照</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <location line="+49"/>
+        <source>#%1: %2</source>
+        <translation>#%1：%2</translation>
+    </message>
+    <message>
+        <location line="-45"/>
+        <source>stage</source>
+        <translation>环节</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>theory (ms)</source>
+        <translation>理论值 (ms)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+184"/>
+        <source>basis</source>
+        <translation>依据</translation>
+    </message>
+    <message>
+        <location line="-183"/>
+        <source>measured (ms)</source>
+        <translation>测量值 (ms)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>gyro&apos;s own delay</source>
+        <translation>陀螺自身延迟</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>sensing, loop and pulse update</source>
+        <translation>敏感、闭环与脉冲更新</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>processing board</source>
+        <translation>处理板</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>sampling, compensation, serial</source>
+        <translation>采样、补偿、串口</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 (bench constant)</source>
+        <translation>%1（测试台常数）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>IMU delay (total)</source>
+        <translation>IMU 延迟（总计）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the paper: &lt; 0.8 ms</source>
+        <translation>论文：&lt; 0.8 ms</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Theory with the paper&apos;s figures: %1 m of fibre (eigen period %2 µs), loop delay ≤ %3 eigen periods, pulse output updated every %4 ms, %5 MHz board clock, %6-byte frames at %7 Mbaud.</source>
+        <translation>按论文参数的理论值：光纤 %1 m（本征周期 %2 µs），回路延迟 ≤ %3 个本征周期，脉冲输出每 %4 ms 更新，处理板时钟 %5 MHz，%6 字节帧、%7 Mbaud。</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>test point</source>
+        <translation>测试点</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>paper&apos;s resolution, 0.5 °/h (µs)</source>
+        <translation>论文分辨率，0.5 °/h (µs)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Cramér–Rao bound (µs)</source>
+        <translation>Cramér–Rao 界 (µs)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>lag std. error (µs)</source>
+        <translation>滞后标准误差 (µs)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>The paper&apos;s resolution figure is the gyro&apos;s angle error over one period divided by the peak rate; the bench&apos;s own uncertainty is the joint fit&apos;s standard error, checked against the Cramér–Rao bound for the noise measured in this session.</source>
+        <translation>论文的分辨率指标为陀螺在一个周期内的角度误差除以峰值角速率；本测试台自身的不确定度为联合拟合的标准误差，并以本次会话实测噪声的 Cramér–Rao 界加以核对。</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Test point %1: %2 — angles and fits</source>
+        <translation>测试点 %1：%2 —— 角度及拟合</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Angles: the middle three periods (%1 s to %2 s on the board&apos;s time axis), offset removed; the gyro angle is the sum of its increments with the fitted trend (bias + Earth rate) removed. Fits: the 4-parameter fits of the table below. Residuals: the whole record (%3 s), data minus fit; the table&apos;s are its encoder quantisation, the gyro&apos;s its angle random walk and pulse quantisation.</source>
+        <translation>角度：中间三个周期（采样板时间轴上 %1 s 至 %2 s），已去除偏置；陀螺角度为其增量之和，并去除了拟合的趋势项（零偏 + 地球自转）。拟合：下表中的四参数拟合。残差：整段记录（%3 s），数据减拟合；转台残差为编码器量化，陀螺残差为角度随机游走和脉冲量化。</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Table angle (offset removed) and fit</source>
+        <translation>转台角度（已去除偏置）及拟合</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+15"/>
+        <location line="+15"/>
+        <location line="+12"/>
+        <location line="+83"/>
+        <source>time (s)</source>
+        <translation>时间 (s)</translation>
+    </message>
+    <message>
+        <location line="-124"/>
+        <location line="+15"/>
+        <source>angle (°)</source>
+        <translation>角度 (°)</translation>
+    </message>
+    <message>
+        <location line="-10"/>
+        <source>table angle (encoder, 1 ms)</source>
+        <translation>转台角度（编码器，1 ms）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+15"/>
+        <source>fit: A = %1°, T = %2 ms</source>
+        <translation>拟合：A = %1°，T = %2 ms</translation>
+    </message>
+    <message>
+        <location line="-8"/>
+        <source>Gyro angle (offset and trend removed) and fit</source>
+        <translation>陀螺角度（已去除偏置和趋势）及拟合</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>gyro angle (summed increments, 2 ms)</source>
+        <translation>陀螺角度（增量累加，2 ms）</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Table residuals</source>
+        <translation>转台残差</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>table − fit (arcsec)</source>
+        <translation>转台 − 拟合（角秒）</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>table angle − fit, RMS %1″</source>
+        <translation>转台角度 − 拟合，RMS %1″</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Gyro residuals (cumulative angle)</source>
+        <translation>陀螺残差（累积角度）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>gyro − fit (arcsec)</source>
+        <translation>陀螺 − 拟合（角秒）</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>gyro angle − fit, RMS %1″</source>
+        <translation>陀螺角度 − 拟合，RMS %1″</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>nominal</source>
+        <translation>标称</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Test point %1: %2 — fits and delay</source>
+        <translation>测试点 %1：%2 —— 拟合与延迟</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>fit</source>
+        <translation>拟合</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>period T (ms)</source>
+        <translation>周期 T (ms)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>σ(T) (µs)</source>
+        <translation>σ(T) (µs)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>phase t₀ (ms)</source>
+        <translation>相位 t₀ (ms)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>σ(t₀) (µs)</source>
+        <translation>σ(t₀) (µs)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>amplitude A (°)</source>
+        <translation>幅值 A (°)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>σ(A) (″)</source>
+        <translation>σ(A) (″)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>χ²/dof</source>
+        <translation>χ²/dof</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>table, 3-parameter</source>
+        <translation>转台，三参数</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>gyro, 3-parameter</source>
+        <translation>陀螺，三参数</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>table, 4-parameter</source>
+        <translation>转台，四参数</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>gyro, 4-parameter</source>
+        <translation>陀螺，四参数</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>joint: lag as t₀</source>
+        <translation>联合：以滞后为 t₀</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>angle = A sin(2π (t − t₀)/T) + offset (gyro: + trend·t), t₀ wrapped into (−T/2, T/2]; σ: standard uncertainties (1σ). 3-parameter fits at the nominal frequency (a χ²/dof far above 1 says the table&apos;s frequency is off nominal), 4-parameter fits with the frequency free, and the joint fit: one frequency for both channels and the lag (gyro t₀ − table t₀) as a parameter; its gyro/table amplitude ratio is %1 ± %2.</source>
+        <translation>角度 = A sin(2π (t − t₀)/T) + 偏置（陀螺：+ 趋势·t），t₀ 折算到 (−T/2, T/2]；σ：标准不确定度（1σ）。三参数拟合采用标称频率（χ²/dof 远大于 1 说明转台频率偏离标称值），四参数拟合频率自由，联合拟合两通道共用一个频率并以滞后（陀螺 t₀ − 转台 t₀）为参数；其陀螺/转台幅值比为 %1 ± %2。</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>value (ms)</source>
+        <translation>数值 (ms)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>1σ (ms)</source>
+        <translation>1σ (ms)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>measured lag (gyro behind table)</source>
+        <translation>测得滞后（陀螺落后于转台）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>joint fit; CRLB %1 ms, σ/CRLB %2</source>
+        <translation>联合拟合；CRLB %1 ms，σ/CRLB %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>+ table read delay</source>
+        <translation>+ 转台读数延迟</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+4"/>
+        <source>bench constant</source>
+        <translation>测试台常数</translation>
+    </message>
+    <message>
+        <location line="-3"/>
+        <source>= IMU delay</source>
+        <translation>= IMU 延迟</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>limit %1 ms: %2</source>
+        <translation>限值 %1 ms：%2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>− processing-board delay</source>
+        <translation>− 处理板延迟</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>= gyro&apos;s own delay</source>
+        <translation>= 陀螺自身延迟</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>per-period lag, mean and scatter</source>
+        <translation>逐周期滞后的均值与离散度</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 whole periods, 3-parameter fits</source>
+        <translation>%1 个整周期，三参数拟合</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Delay</source>
+        <translation>延迟</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Lag per swing period</source>
+        <translation>各摆动周期的滞后</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>lag (ms)</source>
+        <translation>滞后 (ms)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>one period</source>
+        <translation>单个周期</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>joint fit, %1 ms</source>
+        <translation>联合拟合，%1 ms</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Noise and fit quality</source>
+        <translation>噪声与拟合质量</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>encoder noise</source>
+        <translation>编码器噪声</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location line="+1"/>
+        <source>%1″ (1σ)</source>
+        <translation>%1″（1σ）</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>gyro pulse quantisation</source>
+        <translation>陀螺脉冲量化</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>gyro angle random walk</source>
+        <translation>陀螺角度随机游走</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1 °/√h</source>
+        <translation>%1 °/√h</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>gyro trend</source>
+        <translation>陀螺趋势</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1 °/h (bias + Earth rate)</source>
+        <translation>%1 °/h（零偏 + 地球自转）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>samples</source>
+        <translation>样本</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1 table, %2 IMU, %3 IMU frames lost</source>
+        <translation>转台 %1，IMU %2，丢失 IMU 帧 %3</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Warnings</source>
+        <translation>警告</translation>
+    </message>
+    <message>
+        <location line="+75"/>
+        <source>%1: IMU delay %2 ms, + 2σ = %3 ms %4 %5 ms limit (%6 %7 ms)</source>
+        <translation>%1：IMU 延迟 %2 ms，+ 2σ = %3 ms %4 %5 ms 限值（%6 %7 ms）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>margin</source>
+        <translation>余量</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>over by</source>
+        <translation>超出</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>PASS: every test point&apos;s IMU delay + 2σ is below the %1 ms limit.</source>
+        <translation>合格：每个测试点的 IMU 延迟 + 2σ 均低于 %1 ms 限值。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>FAIL: no test point gave a delay.</source>
+        <translation>不合格：没有测试点得到延迟。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 of %2 test points exceed the limit</source>
+        <translation>%2 个测试点中有 %1 个超出限值</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 test point(s) gave no delay</source>
+        <translation>%1 个测试点未得到延迟</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>FAIL against the %1 ms limit: %2.</source>
+        <translation>未通过 %1 ms 限值：%2。</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>IMU delay calibration report: %1 %2</source>
+        <translation>IMU 延迟标定报告：%1 %2</translation>
+    </message>
+    <message>
+        <location filename="../../ui/result_view.cpp" line="+50"/>
+        <source>%1: %2 axis, %3 Hz / %4°</source>
+        <translation>%1：%2 轴，%3 Hz / %4°</translation>
+    </message>
+</context>
+<context>
+    <name>fog::ui::ResultView</name>
+    <message>
+        <location line="+39"/>
+        <source>Test point</source>
+        <translation>测试点</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Export</source>
+        <translation>导出</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Normalised angles and fits</source>
+        <translation>归一化角度及拟合</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>(angle − offset) / amplitude</source>
+        <translation>（角度 − 偏置）/ 幅值</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Residuals (data − fit)</source>
+        <translation>残差（数据 − 拟合）</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>residual (arcsec)</source>
+        <translation>残差（角秒）</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>fit</source>
+        <translation>拟合</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>period (ms)</source>
+        <translation>周期 (ms)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>σ (µs)</source>
+        <translation>σ (µs)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>phase t₀ (ms)</source>
+        <translation>相位 t₀ (ms)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>amplitude (°)</source>
+        <translation>幅值 (°)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>χ²/dof</source>
+        <translation>χ²/dof</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>delay</source>
+        <translation>延迟</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>value (ms)</source>
+        <translation>数值 (ms)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>1σ (ms)</source>
+        <translation>1σ (ms)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>theory (ms)</source>
+        <translation>理论值 (ms)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>basis</source>
+        <translation>依据</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>The delay report appears here after a run.</source>
+        <translation>运行结束后，延迟报告显示在这里。</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <location line="+3"/>
+        <source>Export plot</source>
+        <translation>导出曲线</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Angles plot…</source>
+        <translation>角度曲线…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Residuals plot…</source>
+        <translation>残差曲线…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Delay vs frequency plot…</source>
+        <translation>延迟-频率曲线…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Calibration report (PDF)…</source>
+        <translation>标定报告（PDF）…</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+4"/>
+        <location line="+4"/>
+        <source>Calibration report</source>
+        <translation>标定报告</translation>
+    </message>
+    <message>
+        <location line="-7"/>
+        <source>Pass when IMU delay + 2σ is below (ms):</source>
+        <translation>IMU 延迟 + 2σ 低于此值时合格（ms）：</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>PDF document (*.pdf)</source>
+        <translation>PDF 文档 (*.pdf)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Lag against swing frequency</source>
+        <translation>滞后随摆动频率的变化</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>swing frequency (Hz)</source>
+        <translation>摆动频率 (Hz)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>lag (ms), ±1σ</source>
+        <translation>滞后 (ms)，±1σ</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>No result yet.</source>
+        <translation>尚无结果。</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>&lt;b&gt;No delay:&lt;/b&gt; %1</source>
+        <translation>&lt;b&gt;无延迟结果：&lt;/b&gt;%1</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>nominal</source>
+        <translation>标称</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>table, 3-parameter</source>
+        <translation>转台，三参数</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>gyro, 3-parameter</source>
+        <translation>陀螺，三参数</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>table, 4-parameter</source>
+        <translation>转台，四参数</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>gyro, 4-parameter</source>
+        <translation>陀螺，四参数</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>joint: lag as t₀</source>
+        <translation>联合：以滞后为 t₀</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>gain %1</source>
+        <translation>增益 %1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>measured lag (gyro behind table)</source>
+        <translation>测得滞后（陀螺落后于转台）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>joint fit; CRLB %1 ms, σ/CRLB %2</source>
+        <translation>联合拟合；CRLB %1 ms，σ/CRLB %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>+ table read delay</source>
+        <translation>+ 转台读数延迟</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>bench constant</source>
+        <translation>测试台常数</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>= IMU delay</source>
+        <translation>= IMU 延迟</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the paper: &lt; 0.8 ms</source>
+        <translation>论文：&lt; 0.8 ms</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>− processing-board delay</source>
+        <translation>− 处理板延迟</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>bench constant; theory: sampling, compensation, serial frame</source>
+        <translation>测试台常数；理论：采样、补偿、串口帧</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>= gyro&apos;s own delay</source>
+        <translation>= 陀螺自身延迟</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>sensing, loop and pulse update</source>
+        <translation>敏感、闭环与脉冲更新</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>&lt;b&gt;lag %1 ± %2 ms&lt;/b&gt;  ·  IMU delay %3 ms  ·  gyro&apos;s own delay %4 ms</source>
+        <translation>&lt;b&gt;滞后 %1 ± %2 ms&lt;/b&gt;  ·  IMU 延迟 %3 ms  ·  陀螺自身延迟 %4 ms</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>  ·  simulator truth: lag %1 ms</source>
+        <translation>  ·  仿真真值：滞后 %1 ms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>  ·  &lt;span style=&apos;color:#b00000&apos;&gt;incomplete run&lt;/span&gt;</source>
+        <translation>  ·  &lt;span style=&apos;color:#b00000&apos;&gt;运行未完成&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <location line="+8"/>
+        <source>table</source>
+        <translation>转台</translation>
+    </message>
+    <message>
+        <location line="-7"/>
+        <source>gyro (integrated, trend removed)</source>
+        <translation>陀螺（积分，已去除趋势）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>table fit</source>
+        <translation>转台拟合</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>gyro fit</source>
+        <translation>陀螺拟合</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>gyro</source>
+        <translation>陀螺</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>%1 axis</source>
+        <translation>%1 轴</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>%1: weighted %2 ms, %3 with a pure delay (p = %4)</source>
+        <translation>%1：加权 %2 ms，与纯延迟%3（p = %4）</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>consistent</source>
+        <translation>一致</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>NOT consistent</source>
+        <translation>不一致</translation>
+    </message>
+</context>
+<context>
+    <name>fog::ui::SeriesPlot</name>
+    <message>
+        <location filename="../../ui/series_plot.cpp" line="+46"/>
+        <source>time (s)</source>
+        <translation>时间 (s)</translation>
+    </message>
+</context>
+<context>
+    <name>fog::ui::SessionBrowser</name>
+    <message>
+        <location filename="../../ui/session_browser.cpp" line="+33"/>
+        <source>Folder</source>
+        <translation>文件夹</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Choose…</source>
+        <translation>选择…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Refresh</source>
+        <translation>刷新</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>File</source>
+        <translation>文件</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Recorded (UTC)</source>
+        <translation>记录时间 (UTC)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Operator</source>
+        <translation>操作员</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>IMU</source>
+        <translation>IMU</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Axes</source>
+        <translation>轴</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>State</source>
+        <translation>状态</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Lag (ms)</source>
+        <translation>滞后 (ms)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>IMU delay (ms)</source>
+        <translation>IMU 延迟 (ms)</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Open (read-only)</source>
+        <translation>打开（只读）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Re-analyse with the bench constants</source>
+        <translation>按测试台常数重新分析</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Adds a new result to the session; its raw data never changes</source>
+        <translation>向会话添加一条新结果；原始数据不会改变</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Compare the two selected</source>
+        <translation>比较所选的两个</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Session folder</source>
+        <translation>会话文件夹</translation>
+    </message>
+    <message>
+        <location line="+39"/>
+        <source>Choose the folder that holds the session files (.fbs).</source>
+        <translation>请选择存放会话文件（.fbs）的文件夹。</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>unreadable: %1</source>
+        <translation>无法读取：%1</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>complete</source>
+        <translation>完成</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>incomplete: %1</source>
+        <translation>未完成：%1</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+5"/>
+        <source>%n session(s)</source>
+        <translation>
+            <numerusform>%n 个会话</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>%n other file(s) skipped</source>
+        <translation>
+            <numerusform>跳过其他文件 %n 个</numerusform>
+        </translation>
+    </message>
+</context>
+</TS>

@@ -1,0 +1,51 @@
+#include "ui/language.h"
+
+#include <QCoreApplication>
+#include <QLibraryInfo>
+#include <QLocale>
+#include <QSettings>
+#include <QTranslator>
+
+// The .qm files are compiled into fog_ui, a static library: referencing the
+// resource's initialiser keeps it in the program.
+static void initTranslationResources() { Q_INIT_RESOURCE(translations); }
+
+namespace fog::ui {
+
+QString languageSetting() { return QSettings().value("ui/language", "system").toString(); }
+
+void setLanguageSetting(const QString& language) { QSettings().setValue("ui/language", language); }
+
+QStringList availableLanguages() { return {"en", "zh_CN"}; }
+
+QString languageName(const QString& code) {
+  if (code == "zh_CN") return QStringLiteral("简体中文");
+  if (code == "en") return QStringLiteral("English");
+  return code;
+}
+
+QString localNumber(double value, char format, int precision) { return QLocale().toString(value, format, precision); }
+
+QString installTranslations(QCoreApplication& app, const QString& language) {
+  QString code = language;
+  if (code.isEmpty() || code == "system") code = QLocale::system().name().startsWith("zh") ? "zh_CN" : "en";
+  if (!availableLanguages().contains(code)) code = "en";
+  QLocale::setDefault(QLocale(code == "en" ? QString("en_US") : code));
+  if (code == "en") return code;
+  initTranslationResources();
+  // Ours, compiled into the program; Qt's own (standard dialogs) where the
+  // system has them.
+  auto* ours = new QTranslator(&app);
+  if (ours->load(":/translations/fogbench_" + code + ".qm")) QCoreApplication::installTranslator(ours);
+  else return "en";
+  auto* qt = new QTranslator(&app);
+#if QT_VERSION >= QT_VERSION_CHECK(6, 0, 0)
+  const QString qtDir = QLibraryInfo::path(QLibraryInfo::TranslationsPath);
+#else
+  const QString qtDir = QLibraryInfo::location(QLibraryInfo::TranslationsPath);
+#endif
+  if (qt->load("qtbase_" + code, qtDir)) QCoreApplication::installTranslator(qt);
+  return code;
+}
+
+}  // namespace fog::ui
