@@ -14,6 +14,7 @@
 #include "common/version.h"
 #include "io/csv_export.h"
 #include "io/csv_import.h"
+#include "io/imported_session.h"
 #include "session/session_file.h"
 #include "session/session_list.h"
 
@@ -222,21 +223,14 @@ int importCommand(CliArguments& args) {
   auto imported = inputs.size() == 1 ? io::importCsvDirectory(inputs[0]) : io::importCsvFiles(inputs);
   if (!imported) return fail(imported.status(), 2);
 
-  SessionInfo info = imported->info;
   const std::string from = inputs.size() == 1 ? inputs[0] : inputs[0] + ", " + inputs[1] + ", " + inputs[2];
-  info.source = "import of " + from + (info.source.empty() ? "" : " (" + info.source + ")");
-  if (info.softwareVersion.empty()) info.softwareVersion = std::string("unknown; imported by fogbench ") + FOG_VERSION;
-  if (info.createdUtc.empty()) info.createdUtc = session::utcNow();
   // Metadata given on the command line wins over the files'.
   const SessionInfo& cli = (*out)->info;
+  SessionInfo& info = imported->info;
   for (auto [field, given] : {std::pair{&info.operatorName, &cli.operatorName}, {&info.imuModel, &cli.imuModel},
                               {&info.imuSerial, &cli.imuSerial}, {&info.notes, &cli.notes}})
     if (!given->empty()) *field = *given;
-
-  auto writer = session::SessionWriter::create((*out)->path, info);
-  if (!writer) return fail(writer.status(), 2);
-  if (auto s = (*writer)->storeRecording(imported->recording); !s.isOk()) return fail(s, 2);
-  if (auto s = (*writer)->finish(true, ""); !s.isOk()) return fail(s, 2);
+  if (auto s = io::saveImportedSession(*imported, from, (*out)->path); !s.isOk()) return fail(s, 2);
 
   std::size_t tableSamples = 0, imuSamples = 0;
   for (const auto& tp : imported->recording.testPoints) {

@@ -34,6 +34,8 @@
 #include "acquisition/simulator_source.h"
 #include "analysis/report_writer.h"
 #include "common/version.h"
+#include "io/csv_import.h"
+#include "io/imported_session.h"
 #include "session/session_file.h"
 #include "ui/bench_settings_dialog.h"
 #include "ui/language.h"
@@ -107,6 +109,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     });
   });
   connect(sessionBrowser_, &SessionBrowser::compareRequested, this, &MainWindow::compareSessions);
+  connect(sessionBrowser_, &SessionBrowser::importRequested, this, &MainWindow::importCsv);
 
   QSettings settings;
   setSessionFolder(settings.value("sessions/folder", defaultSessionFolder()).toString());
@@ -571,6 +574,38 @@ void MainWindow::openSession(const QString& path) {
     }
     emit sessionOpened(outcome != nullptr);
   });
+}
+
+void MainWindow::importCsv(const QString& csvFolder) {
+  QString folder = sessionBrowser_->folder();
+  if (folder.isEmpty()) folder = sessionFolder();
+  if (folder.isEmpty() || !QDir().mkpath(folder)) {
+    tell(tr("Choose a session folder to import into first."));
+    emit importEnded(QString());
+    return;
+  }
+  const QString path = QDir(folder).filePath(QDateTime::currentDateTimeUtc().toString("yyyyMMdd-HHmmss-zzz") +
+                                             "-import-" + QFileInfo(csvFolder).fileName() + ".fbs");
+  tell(tr("Importing %1 …").arg(csvFolder));
+  auto* watcher = new QFutureWatcher<Status>(this);
+  connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, path, csvFolder] {
+    const Status s = watcher->result();
+    watcher->deleteLater();
+    if (!s.isOk()) {
+      tell(tr("Cannot import %1: %2").arg(csvFolder, QString::fromStdString(s.message())));
+      emit importEnded(QString());
+      return;
+    }
+    sessionBrowser_->refresh();
+    sessionBrowser_->selectPath(path);
+    tell(tr("Imported %1 as %2").arg(csvFolder, QFileInfo(path).fileName()));
+    emit importEnded(path);
+  });
+  watcher->setFuture(QtConcurrent::run([csvFolder, path]() -> Status {
+    auto imported = io::importCsvDirectory(csvFolder.toStdString());
+    if (!imported) return imported.status();
+    return io::saveImportedSession(*imported, csvFolder.toStdString(), path.toStdString());
+  }));
 }
 
 void MainWindow::compareSessions(const QString& first, const QString& second) {

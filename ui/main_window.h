@@ -77,12 +77,17 @@ class MainWindow : public QMainWindow {
   void stopRun();
   // Opens a session read-only (in the background) and shows its result.
   void openSession(const QString& path);
+  // Imports a folder in the CSV layout (docs/formats.md) as a new session in
+  // the browser's folder, in the background.
+  void importCsv(const QString& csvFolder);
 
  signals:
   // Every started run ends with this, once its results (or error) are shown.
   void runEnded(bool succeeded);
   // Every openSession ends with this.
   void sessionOpened(bool succeeded);
+  // Every importCsv ends with this: the new session, or empty on failure.
+  void importEnded(const QString& sessionPath);
 
  private:
   QWidget* buildConfigureView();

@@ -62,9 +62,12 @@ SessionBrowser::SessionBrowser(QWidget* parent) : QWidget(parent) {
   reanalyseButton_->setToolTip(tr("Adds a new result to the session; its raw data never changes"));
   compareButton_ = new QPushButton(tr("Compare the two selected"));
   compareButton_->setObjectName("compareButton");
+  importButton_ = new QPushButton(tr("Import CSV data…"));
+  importButton_->setObjectName("importButton");
+  importButton_->setToolTip(tr("Data from another bench (metadata.json, table.csv, gyro.csv) becomes a session here"));
   summary_ = new QLabel();
   summary_->setObjectName("sessionSummary");
-  for (auto* b : {openButton_, reanalyseButton_, compareButton_}) buttons->addWidget(b);
+  for (auto* b : {openButton_, reanalyseButton_, compareButton_, importButton_}) buttons->addWidget(b);
   buttons->addStretch(1);
   buttons->addWidget(summary_);
   layout->addLayout(buttons);
@@ -93,6 +96,10 @@ SessionBrowser::SessionBrowser(QWidget* parent) : QWidget(parent) {
   connect(compareButton_, &QPushButton::clicked, this, [this] {
     const auto paths = selectedPaths();
     if (paths.size() == 2) emit compareRequested(paths[0], paths[1]);
+  });
+  connect(importButton_, &QPushButton::clicked, this, [this] {
+    const QString dir = QFileDialog::getExistingDirectory(this, tr("Folder with metadata.json, table.csv, gyro.csv"));
+    if (!dir.isEmpty()) emit importRequested(dir);
   });
   updateButtons();
 }

@@ -34,6 +34,8 @@ class SessionBrowser : public QWidget {
   void openRequested(const QString& path);
   void reanalyseRequested(const QString& path);
   void compareRequested(const QString& first, const QString& second);
+  // A folder in the CSV layout of docs/formats.md to import as a session.
+  void importRequested(const QString& csvFolder);
   void folderChanged(const QString& folder);
 
  private:
@@ -45,6 +47,7 @@ class SessionBrowser : public QWidget {
   QPushButton* openButton_ = nullptr;
   QPushButton* reanalyseButton_ = nullptr;
   QPushButton* compareButton_ = nullptr;
+  QPushButton* importButton_ = nullptr;
 };
 
 }  // namespace fog::ui

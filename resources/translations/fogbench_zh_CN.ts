@@ -233,7 +233,7 @@
 <context>
     <name>fog::ui::MainWindow</name>
     <message>
-        <location filename="../../ui/main_window.cpp" line="+75"/>
+        <location filename="../../ui/main_window.cpp" line="+77"/>
         <source>fogbench %1 — FOG IMU delay bench</source>
         <translation>fogbench %1 —— 光纤陀螺 IMU 延迟测试台</translation>
     </message>
@@ -258,7 +258,7 @@
         <translation>会话</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+27"/>
         <source>Configure a plan and press Run.</source>
         <translation>请配置测试计划并按“运行”。</translation>
     </message>
@@ -591,6 +591,26 @@
     </message>
     <message>
         <location line="+49"/>
+        <source>Choose a session folder to import into first.</source>
+        <translation>请先选择导入目标会话文件夹。</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Importing %1 …</source>
+        <translation>正在导入 %1 …</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Cannot import %1: %2</source>
+        <translation>无法导入 %1：%2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Imported %1 as %2</source>
+        <translation>已将 %1 导入为 %2</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>Compare %1 and %2</source>
         <translation>比较 %1 与 %2</translation>
     </message>
@@ -749,7 +769,7 @@
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../../ui/main_window.cpp" line="-529"/>
+        <location filename="../../ui/main_window.cpp" line="-562"/>
         <location filename="../../ui/plan_editor.cpp" line="-232"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
@@ -2068,12 +2088,27 @@
         <translation>比较所选的两个</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+2"/>
+        <source>Import CSV data…</source>
+        <translation>导入 CSV 数据…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Data from another bench (metadata.json, table.csv, gyro.csv) becomes a session here</source>
+        <translation>将其他测试台的数据（metadata.json、table.csv、gyro.csv）导入为此处的会话</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>Session folder</source>
         <translation>会话文件夹</translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+25"/>
+        <source>Folder with metadata.json, table.csv, gyro.csv</source>
+        <translation>包含 metadata.json、table.csv、gyro.csv 的文件夹</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>Choose the folder that holds the session files (.fbs).</source>
         <translation>请选择存放会话文件（.fbs）的文件夹。</translation>
     </message>

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "common/version.h"
+#include "io/csv_export.h"
 #include "session/session_file.h"
 #include "ui/curve_decimation.h"
 #include "ui/language.h"
@@ -257,6 +258,43 @@ class BenchUiTest : public QObject {
                                  compare->findChildren<fog::ui::ResultView*>()[0]->outcome() &&
                                  compare->findChildren<fog::ui::ResultView*>()[1]->outcome(),
                              30000);
+  }
+
+  // Data from another bench (here: a CSV export of the quick run) is imported
+  // into the folder as a session and reviewed like a recorded one.
+  void importedCsvBecomesASession() {
+    auto w = window();
+    QString complete;
+    auto* browser = w->sessionBrowser();
+    for (int r = 0; r < browser->table()->rowCount(); ++r)
+      if (browser->table()->item(r, 5)->text() == "complete")
+        complete = browser->table()->item(r, 0)->data(Qt::UserRole).toString();
+    QVERIFY(!complete.isEmpty());
+    auto reader = fog::session::SessionReader::open(complete.toStdString());
+    QVERIFY(reader.isOk());
+    QTemporaryDir csv;
+    QVERIFY(fog::io::exportCsv(csv.filePath("run").toStdString(), (*reader)->info(), *(*reader)->recording(), nullptr)
+                .isOk());
+    QSignalSpy imported(w.get(), &MainWindow::importEnded);
+    w->importCsv(csv.filePath("run"));
+    QTRY_VERIFY_WITH_TIMEOUT(!imported.isEmpty(), 30000);
+    const QString path = imported.front().front().toString();
+    QVERIFY2(!path.isEmpty(), qPrintable(w->lastMessage()));
+    QVERIFY(w->sessionBrowser()->selectedPaths().contains(path));
+    QSignalSpy opened(w.get(), &MainWindow::sessionOpened);
+    w->openSession(path);
+    QTRY_VERIFY_WITH_TIMEOUT(!opened.isEmpty(), 30000);
+    QVERIFY(w->lastOutcome() && w->lastOutcome()->report);
+    QVERIFY(std::abs(w->lastOutcome()->report->points.front().lagMs - 0.4658) < 0.01);
+    QVERIFY(QString::fromStdString(w->lastOutcome()->info.source).startsWith("import of"));
+
+    // A folder that is not in the layout is refused with the reason.
+    QTemporaryDir empty;
+    w->importCsv(empty.path());
+    QTRY_VERIFY_WITH_TIMEOUT(imported.size() == 2, 30000);
+    QVERIFY(imported.back().front().toString().isEmpty());
+    QVERIFY2(w->lastMessage().contains("Cannot import") && w->lastMessage().contains("metadata.json"),
+             qPrintable(w->lastMessage()));
   }
 
   // Plots export as PNG, SVG and PDF; a bad name is explained.

@@ -1,0 +1,19 @@
+#include "io/imported_session.h"
+
+#include "common/version.h"
+#include "session/session_file.h"
+
+namespace fog::io {
+
+Status saveImportedSession(const ImportedSession& imported, const std::string& from, const std::string& path) {
+  SessionInfo info = imported.info;
+  info.source = "import of " + from + (info.source.empty() ? "" : " (" + info.source + ")");
+  if (info.softwareVersion.empty()) info.softwareVersion = std::string("unknown; imported by fogbench ") + FOG_VERSION;
+  if (info.createdUtc.empty()) info.createdUtc = session::utcNow();
+  auto writer = session::SessionWriter::create(path, info);
+  if (!writer) return writer.status();
+  if (auto s = (*writer)->storeRecording(imported.recording); !s.isOk()) return s;
+  return (*writer)->finish(true, "");
+}
+
+}  // namespace fog::io
