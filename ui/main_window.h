@@ -109,7 +109,6 @@ class MainWindow : public QMainWindow {
   BenchSettings bench_;
   std::shared_ptr<const RunOutcome> shown_;
   QString lastMessage_;
-  int pendingLoads_ = 0;
 
   QTabWidget* tabs_ = nullptr;
   PlanEditor* planEditor_ = nullptr;
