@@ -72,6 +72,9 @@ class Simulator::Impl {
       g.wanderSigmaDegPerS = degPerHourToDegPerS(c_.fog.biasInstabilityDegPerH);
       g.wanderCorrelationS = c_.fog.biasCorrelationS;
     }
+    // Effects may keep the reference reset() hands them: the streams must
+    // never move, so the vector is sized before any is handed out.
+    effectRngs_.reserve(effects_.size());
     for (std::size_t i = 0; i < effects_.size(); ++i) {
       effectRngs_.emplace_back(Random::derive(config.seed, 100 + i));
       effects_[i]->reset(effectRngs_.back());
