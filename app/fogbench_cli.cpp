@@ -8,6 +8,7 @@
 #include "cli_arguments.h"
 #include "cli_commands.h"
 #include "common/version.h"
+#include "diagnose_command.h"
 #include "session_commands.h"
 #ifdef FOG_HAVE_REPORT
 #include "report_command.h"
@@ -53,6 +54,11 @@ usage:
                       [--limit-ms 0.8] [--imu-model M --imu-serial S --operator NAME] [constants]
       The calibration report (docs/report.md): PASS when IMU delay + 2 sigma < limit;
       a session brings its own identity and constants.
+  fogbench-cli diagnose SESSION.fbs|FILE.bin [--json] [--seeds K] [--threads T] [constants]
+      Sim-to-real gap diagnosis (docs/diagnosis.md): where real and simulated data
+      differ, which effect explains it, held-out shrink, alias groups, verdict.
+  fogbench-cli bench-diagnosis [--trials N] [--seed S] [--threads T]
+      Blind check of the diagnosis on sessions with withheld effects.
   fogbench-cli --version | help
 
 constants: --read-delay-ms (0.05) --read-delay-std-ms (0) --board-delay-ms (0.28)
@@ -93,6 +99,8 @@ int main(int argc, char** argv) {
   if (command == "export") return fog::app::exportCommand(*parsed);
   if (command == "theory") return fog::app::theoryCommand(*parsed);
   if (command == "accuracy") return fog::app::accuracyCommand(*parsed);
+  if (command == "diagnose") return fog::app::diagnoseCommand(*parsed);
+  if (command == "bench-diagnosis") return fog::app::benchDiagnosisCommand(*parsed);
   if (command == "report") {
 #ifdef FOG_HAVE_REPORT
     return fog::app::reportCommand(*parsed);

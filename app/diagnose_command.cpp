@@ -1,0 +1,106 @@
+#include "diagnose_command.h"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+
+#include "cli_common.h"
+#include "diagnosis/blind_check.h"
+#include "diagnosis/diagnosis.h"
+#include "protocol/recording_builder.h"
+#include "session/session_file.h"
+
+namespace fog::app {
+
+namespace {
+
+Result<int> wholeNumber(CliArguments& args, const std::string& name, double fallback, double min) {
+  auto v = args.number(name, fallback);
+  if (!v) return v.status();
+  if (*v < min || *v != std::floor(*v))
+    return invalidArgument("--" + name + " must be a whole number >= " + std::to_string(static_cast<int>(min)));
+  return static_cast<int>(*v);
+}
+
+}  // namespace
+
+int diagnoseCommand(CliArguments& args) {
+  const bool json = args.flag("json");
+  auto seeds = wholeNumber(args, "seeds", 4, 2);
+  auto threads = wholeNumber(args, "threads", 2, 1);
+  if (!seeds) return fail(seeds.status(), 2);
+  if (!threads) return fail(threads.status(), 2);
+  if (args.positionals().size() != 1) {
+    (void)args.checkAllUsed();
+    return fail(invalidArgument("diagnose needs exactly one SESSION.fbs or raw stream FILE"), 2);
+  }
+  const std::string path = args.positionals()[0];
+  Recording recording;
+  SessionInfo info;
+  bool haveInfo = false;
+  analysis::BenchConstants constants;
+  if (session::isSqliteFile(path)) {
+    auto reader = session::SessionReader::open(path);
+    if (!reader) {
+      (void)args.checkAllUsed();
+      return fail(reader.status(), 2);
+    }
+    auto c = readConstants(args, (*reader)->info().bench);
+    if (!c) return fail(c.status(), 2);
+    if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
+    auto rec = (*reader)->recording();  // stored samples (imports have no raw bytes) or the decoded raw stream
+    if (!rec) return fail(rec.status(), exitCodeFor(rec.status()));
+    recording = std::move(*rec);
+    info = (*reader)->info();
+    haveInfo = true;
+    constants = *c;
+  } else {
+    BenchSettings noPulseEquivalent;
+    noPulseEquivalent.pulseEquivalentDeg = 0.0;
+    auto c = readConstants(args, noPulseEquivalent);
+    if (!c) return fail(c.status(), 2);
+    if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return fail(ioError("cannot read '" + path + "'"), 2);
+    std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    auto rec = protocol::decodeRecording(bytes);
+    if (!rec) return fail(Status(rec.status().code(), path + ": " + rec.status().message()), 2);
+    recording = std::move(*rec);
+    constants = *c;
+  }
+  diagnosis::DiagnosisOptions options;
+  options.monteCarloSeeds = *seeds;
+  options.threads = *threads;
+  auto d = diagnosis::diagnose(recording, haveInfo ? &info : nullptr, constants, options);
+  if (!d) return fail(d.status(), exitCodeFor(d.status()));
+  std::cout << (json ? diagnosis::formatDiagnosisJson(*d) + "\n" : diagnosis::formatDiagnosisText(*d));
+  return 0;
+}
+
+int benchDiagnosisCommand(CliArguments& args) {
+  auto trials = wholeNumber(args, "trials", 40, 1);
+  auto seed = wholeNumber(args, "seed", 1, 0);
+  auto threads = wholeNumber(args, "threads", 2, 1);
+  for (const auto* r : {&trials, &seed, &threads})
+    if (!*r) return fail(r->status(), 2);
+  if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
+  if (!args.positionals().empty()) return fail(invalidArgument("unexpected argument '" + args.positionals()[0] + "'"), 2);
+  diagnosis::BlindCheckOptions options;
+  options.trials = *trials;
+  options.seed = static_cast<std::uint64_t>(*seed);
+  options.threads = *threads;
+  auto summary = diagnosis::runBlindCheck(options, [](const diagnosis::TrialResult& r) {
+    std::string truth;
+    for (const auto& t : r.truth) truth += (truth.empty() ? "" : " + ") + t;
+    std::fprintf(stderr, "trial %3d %-7s %-48s x%-5.1f -> %-26s shrink %4.0f %% (%.2f s)%s\n", r.trial + 1,
+                 diagnosis::trialKindName(r.kind), truth.empty() ? "-" : truth.c_str(), r.magnitude, r.verdict.c_str(),
+                 100.0 * r.heldOutShrink, r.elapsedS, r.error.empty() ? "" : (" " + r.error).c_str());
+  });
+  if (!summary) return fail(summary.status(), exitCodeFor(summary.status()));
+  std::cout << diagnosis::formatBlindCheck(*summary);
+  return 0;
+}
+
+}  // namespace fog::app

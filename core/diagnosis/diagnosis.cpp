@@ -1,0 +1,843 @@
+#include "diagnosis/diagnosis.h"
+
+#include <ceres/ceres.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <map>
+#include <mutex>
+#include <nlohmann/json.hpp>
+#include <numeric>
+#include <thread>
+
+#include "common/units.h"
+#include "model/simulator.h"
+#include "protocol/recording_builder.h"
+
+namespace fog::diagnosis {
+
+namespace {
+
+using EffectList = std::vector<std::pair<EffectId, std::vector<double>>>;
+
+// Runs jobs on up to `threads` threads; each job writes its own slot.
+void parallelFor(std::size_t n, int threads, const std::function<void(std::size_t)>& job) {
+  std::atomic<std::size_t> next{0};
+  auto worker = [&] {
+    for (std::size_t i = next++; i < n; i = next++) job(i);
+  };
+  const int t = std::max(1, std::min<int>(threads, static_cast<int>(n)));
+  std::vector<std::thread> pool;
+  for (int k = 1; k < t; ++k) pool.emplace_back(worker);
+  worker();
+  for (auto& th : pool) th.join();
+}
+
+struct Replay {
+  Calibration cal;
+  FeatureReference ref;
+  EffectContext context;
+
+  Result<FeatureSet> run(std::uint64_t seed, const EffectList& effects) const {
+    model::SimConfig config = cal.config;
+    config.seed = seed;
+    std::vector<std::unique_ptr<model::Effect>> list;
+    for (const auto& [id, p] : effects) list.push_back(makeEffect(id, p, context));
+    auto sim = model::simulate(config, cal.plan, std::move(list));
+    if (!sim) return sim.status();
+    auto rec = protocol::decodeRecording(sim->bytes);
+    if (!rec) return rec.status();
+    return extractFeatures(*rec, ref);
+  }
+};
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
+  return v[v.size() / 2];
+}
+
+// Sets the replay's chain so that its lag equals lagS, preferring the gyro's
+// own delay, then the board's processing time, then the table read delay.
+void setLag(model::SimConfig& c, double lagS, std::vector<std::string>& notes) {
+  const double loop = c.fog.loopDelayS(), update = c.fog.pulseUpdatePeriodS;
+  double own = lagS + c.encoder.readDelayS - c.imuBoard.boardDelayS();
+  double extra = 0.0;
+  if (own >= loop + 0.95 * update) {
+    extra = own - (loop + 0.5 * update);
+    own = loop + 0.5 * update;
+  } else if (own < loop) {
+    extra = own - loop;
+    own = loop;
+  }
+  c.fog.setOwnDelayS(own);
+  c.imuBoard.processingS += extra;
+  if (c.imuBoard.processingS < 0.0) {
+    c.encoder.readDelayS = std::min(0.9 * c.encoder.samplePeriodS, c.encoder.readDelayS - c.imuBoard.processingS);
+    c.imuBoard.processingS = 0.0;
+  }
+  if (std::abs(c.trueLagS() - lagS) > 1e-9) notes.push_back("the replay cannot reach the measured lag exactly");
+}
+
+std::string groupKey(const FeatureKey& k) {
+  return std::to_string(static_cast<int>(k.channel)) + "|" + k.quantity + "|" + std::to_string(k.harmonic) + "|" +
+         std::to_string(k.axis) + "|" + std::to_string(k.point);
+}
+
+double floorFor(const FeatureKey& k, double mean) {
+  if (k.unit == "frames") return 0.5;
+  if (k.unit == "us^2") return 1e-3 + 1e-3 * std::abs(mean);
+  if (k.unit == "udeg^2") return 1e-3 * std::abs(mean) + 1e-6;
+  if (k.channel == Channel::kTiming) return 0.05;  // interval ppm
+  return 1e-6;
+}
+
+struct Stats {
+  std::vector<double> mean, sigma, z;
+  std::vector<bool> held;
+};
+
+double chi2(const std::vector<double>& r, const std::vector<bool>& mask, bool which) {
+  double s = 0.0;
+  for (std::size_t i = 0; i < r.size(); ++i)
+    if (mask[i] == which) s += r[i] * r[i];
+  return s;
+}
+
+// Weighted least squares of z on the columns (already divided by sigma) over
+// the rows with held == false (training) or all rows.
+struct LinearFit {
+  Eigen::VectorXd p, stdErr;
+  bool ok = false;
+};
+LinearFit fitColumns(const std::vector<std::vector<double>>& cols, const std::vector<double>& z,
+                     const std::vector<bool>& held, bool trainingOnly) {
+  const std::size_t k = cols.size();
+  Eigen::MatrixXd ata = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(k));
+  Eigen::VectorXd atz = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(k));
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < z.size(); ++i) {
+    if (trainingOnly && held[i]) continue;
+    ++n;
+    for (std::size_t a = 0; a < k; ++a) {
+      atz(static_cast<Eigen::Index>(a)) += cols[a][i] * z[i];
+      for (std::size_t b = 0; b < k; ++b)
+        ata(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b)) += cols[a][i] * cols[b][i];
+    }
+  }
+  LinearFit f;
+  if (n <= k) return f;
+  Eigen::LDLT<Eigen::MatrixXd> ldlt(ata);
+  if (ldlt.info() != Eigen::Success || ata.diagonal().minCoeff() <= 0.0) return f;
+  f.p = ldlt.solve(atz);
+  f.stdErr = ata.inverse().diagonal().cwiseSqrt();
+  f.ok = f.p.allFinite();
+  return f;
+}
+
+// Subtracts from z its least-squares fit on the columns, fitted on the
+// training rows (or all rows) and applied everywhere; returns the coefficients.
+Eigen::VectorXd projectOut(const std::vector<std::vector<double>>& cols, std::vector<double>& z,
+                           const std::vector<bool>& held, bool trainingOnly) {
+  const LinearFit f = fitColumns(cols, z, held, trainingOnly);
+  if (!f.ok) return Eigen::VectorXd::Zero(static_cast<Eigen::Index>(cols.size()));
+  for (std::size_t i = 0; i < z.size(); ++i)
+    for (std::size_t c = 0; c < cols.size(); ++c) z[i] -= cols[c][i] * f.p(static_cast<Eigen::Index>(c));
+  return f.p;
+}
+
+std::vector<HeldOutShrink> shrinkPerChannel(const std::vector<GapCell>& cells, const std::vector<double>& before,
+                                            const std::vector<double>& after, HeldOutShrink* total) {
+  std::vector<HeldOutShrink> out;
+  HeldOutShrink all;
+  for (int c = 0; c < kChannelCount; ++c) {
+    HeldOutShrink s;
+    s.channel = static_cast<Channel>(c);
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+      if (!cells[i].heldOut || static_cast<int>(cells[i].key.channel) != c) continue;
+      ++s.cells;
+      s.before += before[i] * before[i];
+      s.after += after[i] * after[i];
+    }
+    all.cells += s.cells;
+    all.before += s.before;
+    all.after += s.after;
+    s.before -= s.cells, s.after -= s.cells;
+    s.shrink = s.before > 0.0 ? 1.0 - std::max(0.0, s.after) / s.before : 0.0;
+    out.push_back(s);
+  }
+  all.before -= all.cells, all.after -= all.cells;
+  all.shrink = all.before > 0.0 ? 1.0 - std::max(0.0, all.after) / all.before : 0.0;
+  if (total) *total = all;
+  return out;
+}
+
+std::vector<ChannelGap> channelGaps(const std::vector<GapCell>& cells, bool after) {
+  std::vector<ChannelGap> out;
+  for (int c = 0; c < kChannelCount; ++c) {
+    ChannelGap g;
+    g.channel = static_cast<Channel>(c);
+    for (const auto& cell : cells) {
+      if (static_cast<int>(cell.key.channel) != c) continue;
+      const double z = after ? cell.zAfter : cell.z;
+      ++g.cells;
+      g.chiSquare += z * z;
+      g.maxAbsZ = std::max(g.maxAbsZ, std::abs(z));
+    }
+    g.rmsZ = g.cells ? std::sqrt(g.chiSquare / g.cells) : 0.0;
+    out.push_back(g);
+  }
+  return out;
+}
+
+// Ceres cost: the training z-residuals of the real features against the
+// replay with the effect at the given parameters.
+struct ForwardCost {
+  const Replay* replay;
+  EffectId id;
+  std::uint64_t seed;
+  const std::vector<double>* base;   // replay features without the effect (same seed)
+  const Stats* stats;
+  const std::vector<double>* real;
+  std::vector<std::size_t> rows;
+  const std::vector<std::vector<double>>* nuisance;
+  bool operator()(double const* const* params, double* residuals) const {
+    const std::size_t k = effectSpec(id).parameters.size();
+    std::vector<double> p(params[0], params[0] + k);
+    auto f = replay->run(seed, {{id, p}});
+    if (!f || f->values.size() != base->size()) return false;
+    std::vector<double> z(real->size());
+    for (std::size_t i = 0; i < z.size(); ++i)
+      z[i] = ((*real)[i] - stats->mean[i] - (f->values[i] - (*base)[i])) / stats->sigma[i];
+    projectOut(*nuisance, z, stats->held, true);
+    for (std::size_t r = 0; r < rows.size(); ++r) residuals[r] = z[rows[r]];
+    return true;
+  }
+};
+
+std::string fmt(const char* f, double v) {
+  char b[64];
+  std::snprintf(b, sizeof b, f, v);
+  return b;
+}
+
+}  // namespace
+
+Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, const analysis::BenchConstants& constants,
+                           const DiagnosisOptions& options) {
+  const auto started = std::chrono::steady_clock::now();
+  Diagnosis d;
+  Recording recording = input;
+  // Raw pulse counts (a stream without its pulse equivalent) become degrees.
+  if (recording.pulseEquivalentDeg <= 0.0) {
+    const double pe = constants.pulseEquivalentDeg > 0.0 ? constants.pulseEquivalentDeg
+                                                        : (info ? info->bench.pulseEquivalentDeg : 0.0);
+    if (pe <= 0.0) return invalidArgument("the stream does not state its pulse equivalent: give --pulse-equivalent-deg");
+    for (auto& tp : recording.testPoints)
+      for (auto& m : tp.imu)
+        for (double& v : m.incrementDeg) v *= pe;
+    recording.pulseEquivalentDeg = pe;
+  }
+  auto report = analysis::analyzeRecording(recording, constants);
+  if (!report) return report.status();
+
+  // Keep the test points the analysis could measure, in recording order.
+  Recording used = recording;
+  used.testPoints.clear();
+  std::vector<const analysis::TestPointResult*> results;
+  for (const auto& tp : recording.testPoints)
+    for (const auto& r : report->points)
+      if (r.index == tp.index && r.axis == tp.axis) {
+        used.testPoints.push_back(tp);
+        results.push_back(&r);
+        break;
+      }
+  if (used.testPoints.empty()) return insufficientData("no test point gave a delay: nothing to diagnose");
+  for (const auto& f : report->failedPoints) d.notes.push_back("left out: " + f);
+
+  // ---- Calibration -------------------------------------------------------
+  Replay replay;
+  Calibration& cal = replay.cal;
+  model::SimConfig& c = cal.config;
+  c.samplingBoard.counterHz = recording.counterHz > 0 ? recording.counterHz : c.samplingBoard.counterHz;
+  c.samplingBoard.counterBits = recording.counterBits >= 16 ? recording.counterBits : c.samplingBoard.counterBits;
+  c.fog.pulseEquivalentDeg = recording.pulseEquivalentDeg;
+  if (info) c.earth.latitudeDeg = info->bench.latitudeDeg;
+  replay.context.earth = c.earth;
+  cal.plan.restBetweenS = 1.0;
+  std::vector<double> ppm, arw;
+  double wsum = 0.0, lagSum = 0.0;
+  for (std::size_t i = 0; i < used.testPoints.size(); ++i) {
+    const auto& tp = used.testPoints[i];
+    const auto& r = *results[i];
+    const double fitHz = r.tableFit.frequencyHz > 0 ? r.tableFit.frequencyHz : r.joint.frequencyHz;
+    const double nominalHz = tp.nominalFrequencyHz > 0 ? tp.nominalFrequencyHz : fitHz;
+    ppm.push_back((fitHz / nominalHz - 1.0) * 1e6);
+    arw.push_back(r.noise.gyroArwDegPerSqrtH);
+    const double w = 1.0 / std::max(r.lagStdMs * r.lagStdMs, 1e-12);
+    wsum += w;
+    lagSum += w * r.lagMs;
+    TestPoint p;
+    p.axis = tp.axis;
+    p.frequencyHz = nominalHz;
+    p.amplitudeDeg = std::abs(r.tableFit.amplitudeDeg);
+    p.durationS = tp.table.back().timeS - tp.table.front().timeS + 0.0005;
+    p.settleS = 2.0;
+    if (info)
+      for (const auto& q : info->plan.points)
+        if (&q - info->plan.points.data() == tp.index) p.settleS = q.settleS, p.startPhaseDeg = q.startPhaseDeg;
+    cal.plan.points.push_back(p);
+    PointReference pr;
+    pr.omegaRadPerS = kTwoPi * fitHz;
+    pr.segments = segmentsFor(p.durationS, fitHz);
+    pr.swingAxis = static_cast<int>(tp.axis);
+    replay.ref.points.push_back(pr);
+  }
+  replay.ref.tablePeriodS = c.encoder.samplePeriodS;
+  replay.ref.imuPeriodS = c.imuBoard.framePeriodS;
+  cal.tableFrequencyErrorPpm = std::accumulate(ppm.begin(), ppm.end(), 0.0) / static_cast<double>(ppm.size());
+  c.turntable.frequencyErrorPpm = std::clamp(cal.tableFrequencyErrorPpm, -999.0, 999.0);
+  cal.arwDegPerSqrtH = median(arw);
+  c.fog.arwDegPerSqrtH = cal.arwDegPerSqrtH;
+  cal.lagMs = lagSum / wsum;
+  setLag(c, cal.lagMs * 1e-3, d.notes);
+
+  auto realFeatures = extractFeatures(used, replay.ref);
+  if (!realFeatures) return realFeatures.status();
+  const auto& keys = realFeatures->keys;
+  const std::vector<double>& real = realFeatures->values;
+  {
+    std::vector<double> tableMs;
+    std::array<double, kAxisCount> trendSum{}, trendN{};
+    for (std::size_t i = 0; i < keys.size(); ++i) {
+      if (keys[i].channel == Channel::kTable && keys[i].quantity == "residual_ms") tableMs.push_back(real[i]);
+      if (keys[i].quantity == "trend") {
+        trendSum[static_cast<std::size_t>(keys[i].axis)] += real[i];
+        trendN[static_cast<std::size_t>(keys[i].axis)] += 1.0;
+      }
+    }
+    // White encoder noise sigma^2 = q^2 / 12 for a quantising encoder.
+    cal.encoderNoiseDeg = std::sqrt(median(tableMs)) * 1e-6;
+    c.encoder.quantumDeg = std::sqrt(12.0) * cal.encoderNoiseDeg;
+    // A constant bias is what the replay takes from the data; a wrong Earth-
+    // rate projection is therefore absorbed here (alias group below).
+    for (int a = 0; a < kAxisCount; ++a) {
+      const double trend = trendN[static_cast<std::size_t>(a)] > 0 ? trendSum[static_cast<std::size_t>(a)] / trendN[static_cast<std::size_t>(a)] : 0.0;
+      cal.biasDegPerH[static_cast<std::size_t>(a)] = trend - c.earth.projectionDegPerH(static_cast<Axis>(a));
+      c.fog.biasDegPerH[static_cast<std::size_t>(a)] = std::clamp(cal.biasDegPerH[static_cast<std::size_t>(a)], -3000.0, 3000.0);
+    }
+  }
+  if (std::string why; !c.isValid(&why)) return invalidArgument("the calibrated replay is not a valid chain: " + why);
+
+  // ---- Replays: Monte Carlo spread and effect signatures -----------------
+  struct Job {
+    std::uint64_t seed;
+    EffectList effects;
+    int effectIndex = -1, parameter = -1;
+  };
+  std::vector<Job> jobs;
+  const int K = std::max(2, options.monteCarloSeeds);
+  for (int k = 0; k < K; ++k) jobs.push_back({options.seed + static_cast<std::uint64_t>(k), {}});
+  const auto& library = effectLibrary();
+  for (std::size_t e = 0; e < library.size(); ++e) {
+    if (!library[e].identifiable) continue;
+    for (std::size_t j = 0; j < library[e].parameters.size(); ++j) {
+      std::vector<double> p(library[e].parameters.size(), 0.0);
+      p[j] = library[e].parameters[j].reference;
+      jobs.push_back({options.seed, {{library[e].id, p}}, static_cast<int>(e), static_cast<int>(j)});
+    }
+  }
+  std::vector<Result<FeatureSet>> outputs(jobs.size(), Status(StatusCode::kInternal, "not run"));
+  parallelFor(jobs.size(), options.threads, [&](std::size_t i) { outputs[i] = replay.run(jobs[i].seed, jobs[i].effects); });
+  for (std::size_t i = 0; i < outputs.size(); ++i) {
+    if (!outputs[i]) return Status(outputs[i].status().code(), "replay: " + outputs[i].status().message());
+    if (outputs[i]->values.size() != real.size())
+      return Status(StatusCode::kInternal, "the replay's features do not line up with the session's");
+  }
+
+  // ---- Gap map -------------------------------------------------------------
+  const std::size_t n = real.size();
+  Stats st;
+  st.mean.assign(n, 0.0);
+  st.sigma.assign(n, 0.0);
+  st.z.assign(n, 0.0);
+  st.held.assign(n, false);
+  for (int k = 0; k < K; ++k)
+    for (std::size_t i = 0; i < n; ++i) st.mean[i] += outputs[static_cast<std::size_t>(k)]->values[i] / K;
+  std::map<std::string, std::pair<double, double>> pooled;  // sum of squares, dof
+  for (std::size_t i = 0; i < n; ++i) {
+    auto& g = pooled[groupKey(keys[i])];
+    for (int k = 0; k < K; ++k) {
+      const double dv = outputs[static_cast<std::size_t>(k)]->values[i] - st.mean[i];
+      g.first += dv * dv;
+    }
+    g.second += K - 1;
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto& g = pooled[groupKey(keys[i])];
+    const double var = g.first / std::max(1.0, g.second) * (1.0 + 1.0 / K);
+    const double fl = floorFor(keys[i], st.mean[i]);
+    const double formal = realFeatures->formalStd[i];
+    st.sigma[i] = std::sqrt(std::max(var, formal * formal) + fl * fl);
+    st.z[i] = (real[i] - st.mean[i]) / st.sigma[i];
+    st.held[i] = keys[i].segment % 2 == 1;
+    d.gapMap.push_back({keys[i], real[i], st.mean[i], st.sigma[i], st.z[i], st.z[i], st.held[i]});
+  }
+  d.cells = static_cast<int>(n);
+  d.chiSquare = chi2(st.z, st.held, false) + chi2(st.z, st.held, true);
+  const double cells = static_cast<double>(n);
+  d.gapSignificant = d.chiSquare - cells > options.gapSigma * std::sqrt(2.0 * cells);
+  d.gapBefore = channelGaps(d.gapMap, false);
+  const std::vector<double>& base = outputs[0]->values;
+  // Nuisance directions the calibration already owns: one delay for the whole
+  // session (the alias group) and one constant trend per gyro axis (bias).
+  // Every fit includes them, so an effect is credited only with what they
+  // cannot absorb.
+  std::vector<std::vector<double>> nuisance(1 + kAxisCount, std::vector<double>(n, 0.0));
+  for (std::size_t i = 0; i < n; ++i) {
+    if (keys[i].quantity == "delay") nuisance[0][i] = 1.0 / st.sigma[i];
+    if (keys[i].quantity == "trend") nuisance[1 + static_cast<std::size_t>(keys[i].axis)][i] = 1.0 / st.sigma[i];
+  }
+  for (auto it = nuisance.begin(); it != nuisance.end();)
+    it = std::all_of(it->begin(), it->end(), [](double v) { return v == 0.0; }) ? nuisance.erase(it) : it + 1;
+  const std::size_t nNuis = nuisance.size();
+  std::vector<double> z0 = st.z;
+  projectOut(nuisance, z0, st.held, true);
+
+  // ---- Effects: linear scores ----------------------------------------------
+  struct Candidate {
+    std::size_t lib;
+    std::vector<std::vector<double>> cols;  // signature per parameter, in z units per parameter unit
+    EffectFit fit;
+    std::vector<double> zAfter;
+  };
+  std::vector<Candidate> cands;
+  std::size_t nTrain = 0, nHeld = 0;
+  for (bool h : st.held) (h ? nHeld : nTrain)++;
+  const double chiTrain = chi2(z0, st.held, false), chiHeld = chi2(z0, st.held, true);
+  for (std::size_t e = 0; e < library.size(); ++e) {
+    if (!library[e].identifiable) continue;
+    Candidate cand;
+    cand.lib = e;
+    for (std::size_t j = 0; j < jobs.size(); ++j) {
+      if (jobs[j].effectIndex != static_cast<int>(e)) continue;
+      const double ref = library[e].parameters[static_cast<std::size_t>(jobs[j].parameter)].reference;
+      std::vector<double> col(n);
+      for (std::size_t i = 0; i < n; ++i) col[i] = (outputs[j]->values[i] - base[i]) / ref / st.sigma[i];
+      cand.cols.push_back(std::move(col));
+    }
+    EffectFit& f = cand.fit;
+    for (const auto& col : cand.cols) {
+      std::vector<double> r = col;
+      std::vector<bool> none(n, false);
+      projectOut(nuisance, r, none, false);
+      double norm2 = 0.0;
+      for (double v : r) norm2 += v * v;
+      // Linear: 5 / |signature per unit|. Nonlinear (the lag acts through
+      // its square once the delay is calibrated away): scale quadratically
+      // from the reference magnitude.
+      const double ref = library[e].parameters[cand.cols.size() > 1 ? 0 : 0].reference;
+      const double th = norm2 <= 0.0         ? 0.0
+                        : library[e].linear ? 5.0 / std::sqrt(norm2)
+                                            : ref * std::sqrt(5.0 / (std::sqrt(norm2) * ref));
+      f.detectionThresholds.push_back(th);
+    }
+    f.name = library[e].name;
+    f.description = library[e].description;
+    f.parameters = library[e].parameters;
+    std::vector<std::vector<double>> withNuisance = nuisance;
+    withNuisance.insert(withNuisance.end(), cand.cols.begin(), cand.cols.end());
+    const LinearFit train = fitColumns(withNuisance, st.z, st.held, true);
+    const LinearFit all = fitColumns(withNuisance, st.z, st.held, false);
+    if (!train.ok || !all.ok) {
+      f.note = "no signature in this session's features";
+      f.values.assign(f.parameters.size(), 0.0);
+      f.standardErrors.assign(f.parameters.size(), 0.0);
+      f.score = -1e9;
+      cands.push_back(std::move(cand));
+      continue;
+    }
+    std::vector<double> zTrain(n), zAll(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      double pt = 0, pa = 0;
+      for (std::size_t j = 0; j < withNuisance.size(); ++j) {
+        pt += withNuisance[j][i] * train.p(static_cast<Eigen::Index>(j));
+        pa += withNuisance[j][i] * all.p(static_cast<Eigen::Index>(j));
+      }
+      zTrain[i] = st.z[i] - pt;
+      zAll[i] = st.z[i] - pa;
+    }
+    const double k = static_cast<double>(cand.cols.size());
+    f.trainDeltaChi2 = chiTrain - chi2(zTrain, st.held, false);
+    f.heldOutDeltaChi2 = chiHeld - chi2(zTrain, st.held, true);
+    f.score = f.trainDeltaChi2 - k * std::log(static_cast<double>(nTrain));
+    const double chiAfter = chi2(zAll, st.held, false) + chi2(zAll, st.held, true);
+    const double scale = std::sqrt(std::max(1.0, chiAfter / std::max(1.0, static_cast<double>(n) - k)));
+    for (std::size_t j = 0; j < cand.cols.size(); ++j) {
+      f.values.push_back(all.p(static_cast<Eigen::Index>(nNuis + j)));
+      f.standardErrors.push_back(all.stdErr(static_cast<Eigen::Index>(nNuis + j)) * scale);
+    }
+    cand.zAfter = zTrain;
+    HeldOutShrink total;
+    f.perChannel = shrinkPerChannel(d.gapMap, z0, zTrain, &total);
+    f.heldOutShrink = total.shrink;
+    cands.push_back(std::move(cand));
+  }
+  std::sort(cands.begin(), cands.end(), [](const Candidate& a, const Candidate& b) { return a.fit.score > b.fit.score; });
+
+  // ---- Exact re-evaluation of the best few (Ceres for nonlinear ones) -------
+  std::vector<std::size_t> trainRows;
+  for (std::size_t i = 0; i < n; ++i)
+    if (!st.held[i]) trainRows.push_back(i);
+  auto exactZ = [&](const EffectList& effects, std::vector<double>& zOut) -> bool {
+    auto f = replay.run(options.seed, effects);
+    if (!f || f->values.size() != n) return false;
+    zOut.resize(n);
+    for (std::size_t i = 0; i < n; ++i) zOut[i] = (real[i] - st.mean[i] - (f->values[i] - base[i])) / st.sigma[i];
+    projectOut(nuisance, zOut, st.held, true);
+    return true;
+  };
+  const int refine = std::min<int>(options.refineTop, static_cast<int>(cands.size()));
+  // Nonlinear fits first (sequential: each Ceres evaluation is a replay), then
+  // the exact evaluations in parallel.
+  for (int r = 0; r < refine; ++r) {
+    Candidate& cand = cands[static_cast<std::size_t>(r)];
+    const EffectSpec& spec = library[cand.lib];
+    if (spec.linear || cand.fit.score < 0.0) continue;
+    std::vector<double> p = cand.fit.values;
+    for (std::size_t j = 0; j < p.size(); ++j) p[j] = std::max(p[j], 0.1 * spec.parameters[j].reference);
+    auto* functor = new ForwardCost{&replay, spec.id, options.seed, &base, &st, &real, trainRows, &nuisance};
+    auto* cost = new ceres::DynamicNumericDiffCostFunction<ForwardCost, ceres::CENTRAL>(functor, ceres::TAKE_OWNERSHIP);
+    cost->AddParameterBlock(static_cast<int>(p.size()));
+    cost->SetNumResiduals(static_cast<int>(trainRows.size()));
+    ceres::Problem problem;
+    problem.AddResidualBlock(cost, nullptr, p.data());
+    for (std::size_t j = 0; j < p.size(); ++j) problem.SetParameterLowerBound(p.data(), static_cast<int>(j), 0.0);
+    ceres::Solver::Options so;
+    so.max_num_iterations = 6;
+    so.logging_type = ceres::SILENT;
+    so.linear_solver_type = ceres::DENSE_QR;
+    ceres::Solver::Summary summary;
+    ceres::Solve(so, &problem, &summary);
+    cand.fit.values = p;
+    cand.fit.note = "fitted with Ceres on the forward model (" + std::to_string(summary.iterations.size()) + " iterations)";
+  }
+  std::vector<std::vector<double>> zExact(static_cast<std::size_t>(refine));
+  std::vector<char> okExact(static_cast<std::size_t>(refine), 0);
+  parallelFor(static_cast<std::size_t>(refine), options.threads, [&](std::size_t r) {
+    const Candidate& cand = cands[r];
+    okExact[r] = cand.fit.score > -1e8 && exactZ({{library[cand.lib].id, cand.fit.values}}, zExact[r]);
+  });
+  const double lnN = std::log(static_cast<double>(n));
+  for (int r = 0; r < refine; ++r) {
+    Candidate& cand = cands[static_cast<std::size_t>(r)];
+    if (!okExact[static_cast<std::size_t>(r)]) continue;
+    const auto& z = zExact[static_cast<std::size_t>(r)];
+    EffectFit& f = cand.fit;
+    f.exact = true;
+    f.trainDeltaChi2 = chiTrain - chi2(z, st.held, false);
+    f.heldOutDeltaChi2 = chiHeld - chi2(z, st.held, true);
+    const double k = static_cast<double>(f.parameters.size());
+    HeldOutShrink total;
+    f.perChannel = shrinkPerChannel(d.gapMap, z0, z, &total);
+    f.heldOutShrink = total.shrink;
+    const double allDelta = f.trainDeltaChi2 + f.heldOutDeltaChi2;
+    f.kept = f.heldOutDeltaChi2 >= options.heldOutDeltaChi2 && allDelta > k * lnN;
+    cand.zAfter = z;
+  }
+
+  // ---- Two effects at once ---------------------------------------------------
+  std::vector<std::size_t> kept;
+  for (int r = 0; r < refine; ++r)
+    if (cands[static_cast<std::size_t>(r)].fit.kept) kept.push_back(static_cast<std::size_t>(r));
+  std::sort(kept.begin(), kept.end(), [&](std::size_t a, std::size_t b) {
+    return cands[a].fit.heldOutDeltaChi2 > cands[b].fit.heldOutDeltaChi2;
+  });
+  std::vector<double> zModel = z0;
+  std::vector<std::size_t> model;
+  if (!kept.empty()) {
+    model.push_back(kept[0]);
+    zModel = cands[kept[0]].zAfter;
+  }
+  if (options.allowPairs && !model.empty()) {
+    // The best partner by the joint linear fit on training blocks, among the
+    // top candidates; then checked on the exact forward model.
+    const std::size_t first = model[0];
+    double bestTrain = -1e300;
+    std::size_t partner = cands.size();
+    LinearFit bestFit;
+    const std::size_t top = std::min<std::size_t>(cands.size(), 5);
+    for (std::size_t j = 0; j < top; ++j) {
+      if (j == first || cands[j].fit.score < -1e8) continue;
+      std::vector<std::vector<double>> cols = nuisance;
+      cols.insert(cols.end(), cands[first].cols.begin(), cands[first].cols.end());
+      cols.insert(cols.end(), cands[j].cols.begin(), cands[j].cols.end());
+      const LinearFit lf = fitColumns(cols, st.z, st.held, true);
+      if (!lf.ok) continue;
+      std::vector<double> zt(n);
+      for (std::size_t i = 0; i < n; ++i) {
+        double pr = 0;
+        for (std::size_t c2 = 0; c2 < cols.size(); ++c2) pr += cols[c2][i] * lf.p(static_cast<Eigen::Index>(c2));
+        zt[i] = st.z[i] - pr;
+      }
+      const double t = chiTrain - chi2(zt, st.held, false);
+      if (t > bestTrain) bestTrain = t, partner = j, bestFit = lf;
+    }
+    if (partner < cands.size()) {
+      const std::size_t k1 = cands[first].cols.size();
+      std::vector<double> p1 = cands[first].fit.values, p2;
+      if (library[cands[first].lib].linear)
+        for (std::size_t j = 0; j < k1; ++j) p1[j] = bestFit.p(static_cast<Eigen::Index>(nNuis + j));
+      for (std::size_t j = 0; j < cands[partner].cols.size(); ++j)
+        p2.push_back(bestFit.p(static_cast<Eigen::Index>(nNuis + k1 + j)));
+      if (!library[cands[partner].lib].linear)
+        for (double& v : p2) v = std::max(v, 0.0);
+      std::vector<double> zPair;
+      if (exactZ({{library[cands[first].lib].id, p1}, {library[cands[partner].lib].id, p2}}, zPair)) {
+        const double gainHeld = chi2(zModel, st.held, true) - chi2(zPair, st.held, true);
+        const double gainAll = gainHeld + chi2(zModel, st.held, false) - chi2(zPair, st.held, false);
+        const double k2 = static_cast<double>(p2.size());
+        if (gainHeld >= options.heldOutDeltaChi2 && gainAll > k2 * lnN) {
+          model.push_back(partner);
+          zModel = zPair;
+          Candidate& pc = cands[partner];
+          pc.fit.kept = true;
+          pc.fit.values = p2;
+          pc.fit.note = "kept together with " + cands[first].fit.name;
+          if (library[cands[first].lib].linear) cands[first].fit.values = p1;
+        }
+      }
+    }
+  }
+
+  // ---- Verdict ---------------------------------------------------------------
+  for (std::size_t i = 0; i < n; ++i) d.gapMap[i].zAfter = zModel[i];
+  d.gapAfter = channelGaps(d.gapMap, true);
+  HeldOutShrink total;
+  d.heldOut = shrinkPerChannel(d.gapMap, z0, zModel, &total);
+  const double remaining = chi2(zModel, st.held, true) - static_cast<double>(nHeld);
+  const bool remainingSignificant = remaining > options.gapSigma * std::sqrt(2.0 * static_cast<double>(nHeld));
+  for (std::size_t m : model) d.verdictEffects.push_back(cands[m].fit.name);
+  if (model.empty()) {
+    d.verdict = d.gapSignificant ? "unexplained" : "none";
+    d.verdictReason = d.gapSignificant ? "the gap is significant and no effect in the library closes it on held-out blocks"
+                                       : "real and simulated data agree within the simulator's own spread";
+  } else if (remainingSignificant && total.shrink < 0.9) {
+    d.verdict = "unexplained";
+    d.verdictReason = cands[model[0]].fit.name + " closes only " + fmt("%.0f", 100.0 * total.shrink) +
+                      " % of the held-out gap; the rest is not in the library";
+  } else {
+    d.verdict = cands[model[0]].fit.name;
+    d.verdictReason = "closes " + fmt("%.0f", 100.0 * total.shrink) + " % of the held-out gap";
+  }
+  for (auto& cand : cands) d.effects.push_back(cand.fit);
+
+  // ---- Alias groups ----------------------------------------------------------
+  d.aliasGroups.push_back(
+      {"constant delay",
+       {"pure gyro delay", "first-order lag with time constant <= 5 ms", "table read delay", "timestamp offset",
+        "fixed serial / board latency"},
+       "lag " + fmt("%.4f", cal.lagMs) + " ms (taken as the replay's nominal delay)",
+       "swing data shift all of them by one constant at every frequency: measure the read delay and the board "
+       "latency on the board (loop-back / sync pulse), and separate a lag from a delay with a step or a swing "
+       "above 1/(2 pi tau) (~30 Hz for 5 ms)"});
+  d.aliasGroups.push_back(
+      {"constant rate", {"gyro bias", "earth_rate_projection (latitude / heading error)"},
+       "bias " + fmt("%+.3f", cal.biasDegPerH[0]) + " / " + fmt("%+.3f", cal.biasDegPerH[1]) + " / " +
+           fmt("%+.3f", cal.biasDegPerH[2]) + " deg/h (X/Y/Z, over the nominal Earth rate)",
+       "a constant rate per axis looks the same either way: a multi-position static test (IMU turned to four "
+       "headings) separates the Earth rate from the bias"});
+
+  // ---- Views for plots ------------------------------------------------------
+  for (std::size_t p = 0; p < used.testPoints.size(); ++p) {
+    PointView v;
+    v.point = static_cast<int>(p);
+    v.axis = used.testPoints[p].axis;
+    v.frequencyHz = cal.plan.points[p].frequencyHz;
+    v.amplitudeDeg = cal.plan.points[p].amplitudeDeg;
+    v.real = realFeatures->spectra[p];
+    v.simulated = outputs[0]->spectra[p];
+    for (std::size_t h = 0; h < v.simulated.gyroHarmonicPpm.size(); ++h) {
+      double m = 0, s = 0;
+      for (int k = 0; k < K; ++k) m += outputs[static_cast<std::size_t>(k)]->spectra[p].gyroHarmonicPpm[h] / K;
+      for (int k = 0; k < K; ++k) {
+        const double dv = outputs[static_cast<std::size_t>(k)]->spectra[p].gyroHarmonicPpm[h] - m;
+        s += dv * dv / (K - 1);
+      }
+      v.simHarmonicStdPpm.push_back(std::sqrt(s));
+    }
+    const double span = cal.plan.points[p].durationS;
+    const int segs = replay.ref.points[p].segments;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (keys[i].point != static_cast<int>(p) || keys[i].quantity != "delay") continue;
+      v.segmentMidS.push_back(-0.5 * span + (keys[i].segment + 0.5) * span / segs);
+      v.realDelayUs.push_back(real[i]);
+      v.simDelayUs.push_back(st.mean[i]);
+      v.simDelayStdUs.push_back(st.sigma[i]);
+    }
+    d.points.push_back(std::move(v));
+  }
+  d.realTiming = auditTiming(used, replay.ref.tablePeriodS, replay.ref.imuPeriodS);
+  {
+    model::SimConfig c0 = c;
+    c0.seed = options.seed;
+    auto sim = model::simulate(c0, cal.plan);
+    if (sim)
+      if (auto rec = protocol::decodeRecording(sim->bytes))
+        d.simTiming = auditTiming(*rec, replay.ref.tablePeriodS, replay.ref.imuPeriodS);
+  }
+  d.calibration = cal;
+  d.elapsedS = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  return d;
+}
+
+std::string formatDiagnosisJson(const Diagnosis& d) {
+  using nlohmann::json;
+  json j;
+  j["verdict"] = d.verdict;
+  j["verdict_effects"] = d.verdictEffects;
+  j["verdict_reason"] = d.verdictReason;
+  json gap = json::object();
+  for (int c = 0; c < kChannelCount; ++c) {
+    const auto& b = d.gapBefore[static_cast<std::size_t>(c)];
+    const auto& a = d.gapAfter[static_cast<std::size_t>(c)];
+    const auto& h = d.heldOut[static_cast<std::size_t>(c)];
+    gap[channelName(static_cast<Channel>(c))] = {
+        {"cells", b.cells},          {"before", b.rmsZ},           {"after", a.rmsZ},
+        {"max_abs_z_before", b.maxAbsZ}, {"max_abs_z_after", a.maxAbsZ}, {"heldout_excess_chi2_before", h.before},
+        {"heldout_excess_chi2_after", h.after}, {"heldout_shrink", h.shrink}};
+  }
+  j["gap"] = gap;
+  j["gap_significant"] = d.gapSignificant;
+  j["chi2"] = d.chiSquare;
+  j["cells"] = d.cells;
+  json effects = json::array();
+  for (const auto& e : d.effects) {
+    json params = json::object();
+    for (std::size_t p = 0; p < e.parameters.size(); ++p)
+      params[e.parameters[p].name] = {{"value", e.values[p]}, {"std", e.standardErrors[p]}, {"unit", e.parameters[p].unit}};
+    json per = json::object();
+    for (const auto& s : e.perChannel) per[channelName(s.channel)] = s.shrink;
+    effects.push_back({{"name", e.name},
+                       {"description", e.description},
+                       {"parameters", params},
+                       {"heldout_shrink", e.heldOutShrink},
+                       {"heldout_shrink_per_channel", per},
+                       {"score", e.score},
+                       {"train_delta_chi2", e.trainDeltaChi2},
+                       {"heldout_delta_chi2", e.heldOutDeltaChi2},
+                       {"exact", e.exact},
+                       {"kept", e.kept},
+                       {"note", e.note}});
+  }
+  j["effects"] = effects;
+  json aliases = json::array();
+  for (const auto& a : d.aliasGroups)
+    aliases.push_back({{"name", a.name}, {"members", a.members}, {"value", a.value}, {"separating_test", a.separatingTest}});
+  j["alias_groups"] = aliases;
+  auto timing = [](const TimingAudit& t) {
+    auto s = [](const StreamTiming& x) {
+      return json{{"samples", x.samples}, {"interval_mean_ppm", x.intervalMeanPpm}, {"interval_std_us", x.intervalStdUs},
+                  {"gaps", x.gaps}, {"duplicates", x.duplicates}};
+    };
+    return json{{"table", s(t.table)}, {"imu", s(t.imu)}, {"lost_frames", t.lostFrames},
+                {"duplicate_frames", t.duplicateFrames}, {"counter_wraps", t.counterWraps},
+                {"checksum_failures", t.checksumFailures}, {"out_of_order_frames", t.outOfOrderFrames}};
+  };
+  j["timing"] = {{"real", timing(d.realTiming)}, {"simulated", timing(d.simTiming)}};
+  const auto& c = d.calibration;
+  j["calibration"] = {{"lag_ms", c.lagMs},
+                      {"table_frequency_error_ppm", c.tableFrequencyErrorPpm},
+                      {"encoder_noise_deg", c.encoderNoiseDeg},
+                      {"arw_deg_sqrt_h", c.arwDegPerSqrtH},
+                      {"bias_deg_h", c.biasDegPerH}};
+  json cells = json::array();
+  for (const auto& g : d.gapMap)
+    cells.push_back({{"channel", channelName(g.key.channel)}, {"quantity", g.key.quantity}, {"unit", g.key.unit},
+                     {"harmonic", g.key.harmonic}, {"axis", g.key.axis}, {"point", g.key.point},
+                     {"segment", g.key.segment}, {"real", g.real}, {"sim_mean", g.simMean}, {"sim_std", g.simStd},
+                     {"z", g.z}, {"z_after", g.zAfter}, {"heldout", g.heldOut}});
+  j["gap_map"] = cells;
+  j["notes"] = d.notes;
+  j["elapsed_s"] = d.elapsedS;
+  return j.dump(2);
+}
+
+std::string formatDiagnosisText(const Diagnosis& d) {
+  std::string s;
+  char b[512];
+  std::snprintf(b, sizeof b, "Sim-to-real diagnosis: %d gap-map cells, chi2 %.1f (%s)\n", d.cells, d.chiSquare,
+                d.gapSignificant ? "significant gap" : "no significant gap");
+  s += b;
+  const auto& c = d.calibration;
+  std::snprintf(b, sizeof b,
+                "  replay calibrated to: lag %.4f ms, table frequency %+.2f ppm, encoder noise %.2g deg, ARW %.4f "
+                "deg/sqrt(h), bias %+.3f/%+.3f/%+.3f deg/h\n",
+                c.lagMs, c.tableFrequencyErrorPpm, c.encoderNoiseDeg, c.arwDegPerSqrtH, c.biasDegPerH[0],
+                c.biasDegPerH[1], c.biasDegPerH[2]);
+  s += b;
+  s += "\nTiming audit            real                         replay\n";
+  auto line = [&](const char* name, const StreamTiming& r, const StreamTiming& m) {
+    std::snprintf(b, sizeof b, "  %-6s interval  %+9.3f ppm, std %7.3f us, gaps %zu, dup %zu | %+9.3f ppm, std %7.3f us, gaps %zu\n",
+                  name, r.intervalMeanPpm, r.intervalStdUs, r.gaps, r.duplicates, m.intervalMeanPpm, m.intervalStdUs, m.gaps);
+    s += b;
+  };
+  line("table", d.realTiming.table, d.simTiming.table);
+  line("imu", d.realTiming.imu, d.simTiming.imu);
+  std::snprintf(b, sizeof b, "  lost %llu / %llu, duplicates %llu / %llu, wraps %llu / %llu, checksum failures %llu / %llu\n",
+                (unsigned long long)d.realTiming.lostFrames, (unsigned long long)d.simTiming.lostFrames,
+                (unsigned long long)d.realTiming.duplicateFrames, (unsigned long long)d.simTiming.duplicateFrames,
+                (unsigned long long)d.realTiming.counterWraps, (unsigned long long)d.simTiming.counterWraps,
+                (unsigned long long)d.realTiming.checksumFailures, (unsigned long long)d.simTiming.checksumFailures);
+  s += b;
+  s += "\nGap per channel (rms z; 1 = within the simulator's spread)    before   after   held-out shrink\n";
+  for (int ch = 0; ch < kChannelCount; ++ch) {
+    std::snprintf(b, sizeof b, "  %-12s %4d cells                                   %7.2f %7.2f   %5.0f %%\n",
+                  channelName(static_cast<Channel>(ch)), d.gapBefore[static_cast<std::size_t>(ch)].cells,
+                  d.gapBefore[static_cast<std::size_t>(ch)].rmsZ, d.gapAfter[static_cast<std::size_t>(ch)].rmsZ,
+                  100.0 * d.heldOut[static_cast<std::size_t>(ch)].shrink);
+    s += b;
+  }
+  std::vector<const GapCell*> worst;
+  for (const auto& g : d.gapMap) worst.push_back(&g);
+  std::sort(worst.begin(), worst.end(), [](const GapCell* a, const GapCell* b2) { return std::abs(a->z) > std::abs(b2->z); });
+  s += "  largest cells:\n";
+  for (std::size_t i = 0; i < std::min<std::size_t>(5, worst.size()); ++i) {
+    const auto& g = *worst[i];
+    std::snprintf(b, sizeof b, "    point %d segment %d %-10s %-18s axis %2d: real %.4g, replay %.4g +- %.3g %s (z %+.1f)\n",
+                  g.key.point + 1, g.key.segment + 1, channelName(g.key.channel), g.key.quantity.c_str(), g.key.axis,
+                  g.real, g.simMean, g.simStd, g.key.unit.c_str(), g.z);
+    s += b;
+  }
+  s += "\nEffects, ranked (score = training delta chi2 - k ln n)\n";
+  for (const auto& e : d.effects) {
+    std::string params;
+    for (std::size_t p = 0; p < e.parameters.size(); ++p) {
+      std::snprintf(b, sizeof b, "%s%s %.4g +- %.2g %s", p ? ", " : "", e.parameters[p].name.c_str(), e.values[p],
+                    e.standardErrors[p], e.parameters[p].unit.c_str());
+      params += b;
+    }
+    std::snprintf(b, sizeof b, "  %-26s score %9.1f  held-out shrink %5.0f %%%s  %s\n", e.name.c_str(), e.score,
+                  100.0 * e.heldOutShrink, e.kept ? "  KEPT" : "", params.c_str());
+    s += b;
+  }
+  s += "\nAlias groups (swing data cannot separate these)\n";
+  for (const auto& a : d.aliasGroups) {
+    std::string m;
+    for (const auto& x : a.members) m += (m.empty() ? "" : ", ") + x;
+    s += "  " + a.name + ": " + m + "\n    " + a.value + "\n    to separate: " + a.separatingTest + "\n";
+  }
+  for (const auto& n : d.notes) s += "note: " + n + "\n";
+  s += "\nVerdict: " + d.verdict;
+  if (d.verdictEffects.size() > 1) s += " (+ " + d.verdictEffects[1] + ")";
+  s += " - " + d.verdictReason + "\n";
+  std::snprintf(b, sizeof b, "(diagnosis took %.2f s)\n", d.elapsedS);
+  s += b;
+  return s;
+}
+
+}  // namespace fog::diagnosis

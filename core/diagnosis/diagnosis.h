@@ -1,0 +1,153 @@
+#pragma once
+// Sim-to-real gap diagnosis (DESIGN section 5, docs/diagnosis.md).
+//
+//   auto d = diagnosis::diagnose(recording, &info, constants, {});
+//   d->verdict  // "scale_factor_error", "none" or "unexplained"
+//
+// 1. Replay: the session's test points are rebuilt as a plan and run on the
+//    simulator with the nominal model, calibrated to the session (table
+//    frequency error, encoder noise, ARW, pulse equivalent, gyro bias per
+//    axis, the measured lag as the nominal delay, counter settings).
+// 2. Timing audit of the real stream and the replay.
+// 3. Gap map: residual features (features.h) of the real recording as
+//    z-scores against the replay's Monte Carlo spread (a few seeds; spread
+//    pooled over the segments of a test point).
+// 4. Effects (effects.h): each one's signature is the change of the features
+//    when it is added to the replay (common random numbers); linear effects are
+//    fitted by weighted least squares on the training blocks (even segments),
+//    the others with Ceres on the full forward model. An effect is kept only
+//    when the held-out blocks (odd segments) improve beyond chance and BIC on
+//    all blocks agrees; two effects at once are tried.
+// 5. Verdict: the best kept effect; "none" when real and replay agree;
+//    "unexplained" when the gap is significant and nothing in the library
+//    closes it on held-out blocks.
+//
+// Contracts: Qt-free; thread-safe (no shared state; it starts its own worker
+// threads); errors are Status values, never exceptions. Deterministic for a
+// given recording and options.
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "analysis/delay_analysis.h"
+#include "common/recording.h"
+#include "common/session_info.h"
+#include "common/status.h"
+#include "diagnosis/effects.h"
+#include "diagnosis/features.h"
+#include "model/sim_config.h"
+
+namespace fog::diagnosis {
+
+struct DiagnosisOptions {
+  int monteCarloSeeds = 4;   // replays used for the simulator's own spread
+  int threads = 2;           // worker threads for the replays
+  std::uint64_t seed = 9001; // seeds of the replays: seed, seed + 1, ...
+  // Held-out improvement (delta chi-square on odd segments) an effect must reach.
+  double heldOutDeltaChi2 = 16.0;
+  // The whole gap is "significant" when chi2 - n exceeds this many sigma of chi2(n).
+  double gapSigma = 5.0;
+  int refineTop = 3;         // effects re-evaluated on the exact forward model
+  bool allowPairs = true;
+};
+
+struct Calibration {
+  model::SimConfig config;   // the replay's nominal configuration
+  TestPlan plan;             // the replay's plan (one point per analysed test point)
+  double lagMs = 0.0;        // weighted mean measured lag, the replay's nominal delay
+  double tableFrequencyErrorPpm = 0.0;
+  double encoderNoiseDeg = 0.0;
+  double arwDegPerSqrtH = 0.0;
+  std::array<double, kAxisCount> biasDegPerH{};
+};
+
+// One cell of the gap map: a feature of the real session against the replay.
+struct GapCell {
+  FeatureKey key;
+  double real = 0.0, simMean = 0.0, simStd = 0.0;
+  double z = 0.0;             // (real - simMean) / simStd
+  double zAfter = 0.0;        // the same with the verdict's effects added (= z when none)
+  bool heldOut = false;       // odd segment: not used to fit effects
+};
+
+// Headline gap of one channel: chi2 of its cells and sqrt(chi2 / n) (1 = no gap).
+struct ChannelGap {
+  Channel channel = Channel::kTable;
+  int cells = 0;
+  double chiSquare = 0.0;
+  double rmsZ = 0.0;
+  double maxAbsZ = 0.0;
+};
+
+// Held-out gap before / after an effect, as the excess chi2 over its cells
+// (chi2 - n, 0 = noise only); shrink = 1 - after / before.
+struct HeldOutShrink {
+  Channel channel = Channel::kTable;
+  int cells = 0;
+  double before = 0.0, after = 0.0, shrink = 0.0;
+};
+
+struct EffectFit {
+  std::string name, description;
+  std::vector<EffectParameter> parameters;
+  std::vector<double> values, standardErrors;  // fitted on all blocks, in the parameters' units
+  double score = 0.0;            // training delta chi2 - k ln n (BIC-penalised); ranks the effects
+  double trainDeltaChi2 = 0.0, heldOutDeltaChi2 = 0.0;
+  double heldOutShrink = 0.0;    // all held-out cells together
+  std::vector<HeldOutShrink> perChannel;
+  // Per parameter: the magnitude whose signature alone gives delta chi2 = 25
+  // over all cells of this session (5 sigma), from the linear signature.
+  std::vector<double> detectionThresholds;
+  bool exact = false;            // evaluated on the full forward model (not the linear signature)
+  bool kept = false;
+  std::string note;
+};
+
+struct AliasGroup {
+  std::string name;
+  std::vector<std::string> members;
+  std::string value;           // what the data does fix, "lag 0.4658 ms"
+  std::string separatingTest;  // what would tell the members apart
+};
+
+// Per test point, what a GUI draws.
+struct PointView {
+  int point = 0;
+  Axis axis = Axis::kX;
+  double frequencyHz = 0.0, amplitudeDeg = 0.0;
+  PointSpectrum real, simulated;          // simulated: the first replay
+  std::vector<double> simHarmonicStdPpm;  // gyro harmonic spread over the replays
+  std::vector<double> segmentMidS;        // relative to the record middle
+  std::vector<double> realDelayUs, simDelayUs, simDelayStdUs;  // per segment
+};
+
+struct Diagnosis {
+  Calibration calibration;
+  TimingAudit realTiming, simTiming;
+  std::vector<GapCell> gapMap;
+  std::vector<ChannelGap> gapBefore, gapAfter;  // all cells, per channel
+  double chiSquare = 0.0;                        // all cells, before
+  int cells = 0;
+  bool gapSignificant = false;
+  std::vector<PointView> points;
+  std::vector<EffectFit> effects;                // ranked, best first
+  std::vector<HeldOutShrink> heldOut;            // held-out shrink of the verdict's model per channel
+  std::vector<std::string> verdictEffects;       // the kept effects
+  std::string verdict;                           // effect name, "none" or "unexplained"
+  std::string verdictReason;
+  std::vector<AliasGroup> aliasGroups;
+  std::vector<std::string> notes;
+  double elapsedS = 0.0;
+};
+
+// info may be null (a raw stream): the plan is then rebuilt from the
+// recording alone. Fails when the analysis gives no delay for any test point.
+Result<Diagnosis> diagnose(const Recording& recording, const SessionInfo* info,
+                           const analysis::BenchConstants& constants, const DiagnosisOptions& options = {});
+
+std::string formatDiagnosisText(const Diagnosis& d);
+std::string formatDiagnosisJson(const Diagnosis& d);
+
+}  // namespace fog::diagnosis

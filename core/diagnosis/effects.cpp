@@ -1,0 +1,354 @@
+#include "diagnosis/effects.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+#include "common/units.h"
+#include "model/random.h"
+
+namespace fog::diagnosis {
+
+namespace {
+
+using Angles = std::array<double, kAxisCount>;
+
+// Integrates a rate error (deg/s, a function of the true table angles) along
+// the instants the FOG is sampled, trapezoidal; the simulator calls the gyro
+// hook every 2 ms in time order, far finer than any swing period.
+class RateErrorEffect : public model::Effect {
+ public:
+  void onGyroAngle(const model::GyroContext& c, Angles& sensed) override {
+    const Angles rate = rateErrorDegPerS(c.timeS, c.tableAngleDeg);
+    if (started_) {
+      const double dt = c.timeS - lastS_;
+      for (int a = 0; a < kAxisCount; ++a) accumulated_[a] += 0.5 * (rate[a] + lastRate_[a]) * dt;
+    }
+    started_ = true;
+    lastS_ = c.timeS;
+    lastRate_ = rate;
+    for (int a = 0; a < kAxisCount; ++a) sensed[a] += accumulated_[a];
+  }
+
+ protected:
+  virtual Angles rateErrorDegPerS(double timeS, const Angles& tableDeg) = 0;
+
+ private:
+  bool started_ = false;
+  double lastS_ = 0.0;
+  Angles lastRate_{}, accumulated_{};
+};
+
+// Bias ramp of every gyro, starting at the first sensed instant: a warming
+// IMU. driftDegPerHPerMin: deg/h of bias gained per minute.
+class BiasDrift final : public RateErrorEffect {
+ public:
+  explicit BiasDrift(double driftDegPerHPerMin) : d_(driftDegPerHPerMin) {}
+  std::string name() const override { return "bias_drift"; }
+
+ protected:
+  Angles rateErrorDegPerS(double t, const Angles&) override {
+    if (!haveStart_) t0_ = t, haveStart_ = true;
+    const double r = degPerHourToDegPerS(d_ * (t - t0_) / 60.0);
+    return {r, r, r};
+  }
+
+ private:
+  double d_, t0_ = 0.0;
+  bool haveStart_ = false;
+};
+
+// Gyro rate error k * g * sin(tilt) of the horizontal axes X and Y: a gyro
+// whose bias depends on the specific force across it sees the gravity
+// component that its own axis' rotation tilts into the cross direction.
+// Rotation about the vertical (Z) does not change gravity: no effect there.
+class GSensitivity final : public RateErrorEffect {
+ public:
+  explicit GSensitivity(double degPerHPerG) : k_(degPerHPerG) {}
+  std::string name() const override { return "g_sensitivity"; }
+
+ protected:
+  Angles rateErrorDegPerS(double, const Angles& table) override {
+    return {degPerHourToDegPerS(k_ * std::sin(table[0] * kRadPerDeg)),
+            degPerHourToDegPerS(k_ * std::sin(table[1] * kRadPerDeg)), 0.0};
+  }
+
+ private:
+  double k_;
+};
+
+// Errors that depend on the increments of the true table angle between two
+// gyro samples: asymmetry (|dtheta|) and cubic nonlinearity (dtheta * rate^2).
+class IncrementEffect : public model::Effect {
+ public:
+  void onGyroAngle(const model::GyroContext& c, Angles& sensed) override {
+    if (started_) {
+      const double dt = c.timeS - lastS_;
+      for (int a = 0; a < kAxisCount; ++a)
+        if (dt > 0.0) accumulated_[a] += error(c.tableAngleDeg[a] - last_[a], dt);
+    }
+    started_ = true;
+    lastS_ = c.timeS;
+    last_ = c.tableAngleDeg;
+    for (int a = 0; a < kAxisCount; ++a) sensed[a] += accumulated_[a];
+  }
+
+ protected:
+  virtual double error(double dThetaDeg, double dtS) const = 0;
+
+ private:
+  bool started_ = false;
+  double lastS_ = 0.0;
+  Angles last_{}, accumulated_{};
+};
+
+// Scale factor (1 + k) for positive rates and (1 - k) for negative ones.
+class ScaleFactorAsymmetry final : public IncrementEffect {
+ public:
+  explicit ScaleFactorAsymmetry(double ppm) : k_(ppm * 1e-6) {}
+  std::string name() const override { return "scale_factor_asymmetry"; }
+
+ protected:
+  double error(double d, double) const override { return k_ * std::abs(d); }
+
+ private:
+  double k_;
+};
+
+// Rate error k * rate * (rate / 100 deg/s)^2: k is the scale-factor error at
+// 100 deg/s.
+class ScaleFactorNonlinearity final : public IncrementEffect {
+ public:
+  explicit ScaleFactorNonlinearity(double ppmAt100) : k_(ppmAt100 * 1e-6) {}
+  std::string name() const override { return "scale_factor_nonlinearity"; }
+
+ protected:
+  double error(double d, double dt) const override {
+    const double r = d / dt / 100.0;
+    return k_ * d * r * r;
+  }
+
+ private:
+  double k_;
+};
+
+class ScaleFactorError final : public model::Effect {
+ public:
+  explicit ScaleFactorError(double ppm) : k_(ppm * 1e-6) {}
+  std::string name() const override { return "scale_factor_error"; }
+  void onGyroAngle(const model::GyroContext& c, Angles& sensed) override {
+    for (int a = 0; a < kAxisCount; ++a) sensed[a] += k_ * c.tableAngleDeg[a];
+  }
+
+ private:
+  double k_;
+};
+
+// Every gyro senses m times the rotation of each other axis (small-angle
+// misalignment, the same for every pair).
+class Misalignment final : public model::Effect {
+ public:
+  explicit Misalignment(double microRad) : m_(microRad * 1e-6) {}
+  std::string name() const override { return "misalignment"; }
+  void onGyroAngle(const model::GyroContext& c, Angles& sensed) override {
+    const Angles& t = c.tableAngleDeg;
+    const double sum = t[0] + t[1] + t[2];
+    for (int b = 0; b < kAxisCount; ++b) sensed[b] += m_ * (sum - t[b]);
+  }
+
+ private:
+  double m_;
+};
+
+// y += (1 - exp(-dt/tau)) * (x - y) at every gyro sample: the gyro output is
+// a first-order low-pass of the sensed angle.
+class FirstOrderLag final : public model::Effect {
+ public:
+  explicit FirstOrderLag(double tauMs) : tau_(tauMs * 1e-3) {}
+  std::string name() const override { return "first_order_lag"; }
+  void onGyroAngle(const model::GyroContext& c, Angles& sensed) override {
+    if (tau_ <= 0.0) return;
+    if (!started_) {
+      state_ = sensed;
+      started_ = true;
+    }
+    const double k = 1.0 - std::exp(-(c.timeS - lastS_) / tau_);
+    for (int a = 0; a < kAxisCount; ++a) state_[a] += k * (sensed[a] - state_[a]);
+    lastS_ = c.timeS;
+    sensed = state_;
+  }
+
+ private:
+  double tau_;
+  double lastS_ = 0.0;
+  bool started_ = false;
+  Angles state_{};
+};
+
+// The table's motion itself is distorted, as a pure function of the angle
+// (so the encoder and the gyro both see it): theta + c2 * theta^2 / 10 deg -
+// c3 * theta^3 / (10 deg)^2. At 10 deg amplitude c2 / 2 and c3 / 4 are the
+// relative 2nd and 3rd harmonics.
+class TableHarmonicDistortion final : public model::Effect {
+ public:
+  TableHarmonicDistortion(double c2Ppm, double c3Ppm) : c2_(c2Ppm * 1e-6), c3_(c3Ppm * 1e-6) {}
+  std::string name() const override { return "table_harmonic_distortion"; }
+  void onTableMotion(double, Angles& angle) const override {
+    for (double& th : angle) {
+      const double x = th / 10.0;
+      th += 10.0 * (c2_ * x * x - c3_ * x * x * x);
+    }
+  }
+
+ private:
+  double c2_, c3_;
+};
+
+// Encoder reading error periodic in the angle (grating / interpolation error),
+// period kPeriodDeg: es * sin(2 pi theta / P) + ec * cos(2 pi theta / P).
+class EncoderCyclicError final : public model::Effect {
+ public:
+  static constexpr double kPeriodDeg = 10.0;
+  EncoderCyclicError(double sinArcsec, double cosArcsec) : s_(sinArcsec / kArcsecPerDeg), c_(cosArcsec / kArcsecPerDeg) {}
+  std::string name() const override { return "encoder_cyclic_error"; }
+  void onEncoderReading(double, Angles& reading) override {
+    for (double& r : reading) {
+      const double ph = kTwoPi * r / kPeriodDeg;
+      r += s_ * std::sin(ph) + c_ * std::cos(ph);
+    }
+  }
+
+ private:
+  double s_, c_;
+};
+
+class TimestampJitter final : public model::Effect {
+ public:
+  explicit TimestampJitter(double varianceUs2) : sigmaS_(std::sqrt(std::max(varianceUs2, 0.0)) * 1e-6) {}
+  std::string name() const override { return "timestamp_jitter"; }
+  // The simulator keeps the Random it hands out in a growing vector, so the
+  // effect keeps its own copy of the stream.
+  void reset(model::Random& rng) override { rng_ = rng; }
+  void onImuStamp(double& stampS, bool&) override { stampS += sigmaS_ * rng_.normal(); }
+
+ private:
+  double sigmaS_;
+  model::Random rng_{0};
+};
+
+// The IMU frames' stamps run eps off the table's: stamp * (1 + eps).
+class ClockDrift final : public model::Effect {
+ public:
+  explicit ClockDrift(double ppm) : eps_(ppm * 1e-6) {}
+  std::string name() const override { return "clock_drift"; }
+  void onImuStamp(double& stampS, bool&) override { stampS += eps_ * stampS; }
+
+ private:
+  double eps_;
+};
+
+class DroppedFrames final : public model::Effect {
+ public:
+  explicit DroppedFrames(double perMille) : p_(perMille * 1e-3) {}
+  std::string name() const override { return "dropped_frames"; }
+  void reset(model::Random& rng) override { rng_ = rng; }
+  void onImuStamp(double&, bool& drop) override {
+    if (rng_.uniform() < p_) drop = true;
+  }
+
+ private:
+  double p_;
+  model::Random rng_{0};
+};
+
+// The Earth rate the IMU really senses, for a latitude and heading off the
+// nominal ones by dLat and dHeading (rotation about up): the difference to
+// the nominal projection is a constant rate per axis.
+class EarthRateProjection final : public model::Effect {
+ public:
+  EarthRateProjection(double dLatDeg, double dHeadingDeg, const model::EarthParams& nominal) {
+    model::EarthParams actual = nominal;
+    actual.latitudeDeg = std::clamp(nominal.latitudeDeg + dLatDeg, -90.0, 90.0);
+    const double h = dHeadingDeg * kRadPerDeg;
+    for (auto& v : actual.axisEnu) {
+      const double e = v[0], n = v[1];
+      v[0] = std::cos(h) * e + std::sin(h) * n;
+      v[1] = -std::sin(h) * e + std::cos(h) * n;
+    }
+    for (int a = 0; a < kAxisCount; ++a)
+      rate_[a] = degPerHourToDegPerS(actual.projectionDegPerH(static_cast<Axis>(a)) -
+                                     nominal.projectionDegPerH(static_cast<Axis>(a)));
+  }
+  std::string name() const override { return "earth_rate_projection"; }
+  void onGyroAngle(const model::GyroContext& c, Angles& sensed) override {
+    for (int a = 0; a < kAxisCount; ++a) sensed[a] += rate_[a] * c.timeS;
+  }
+
+ private:
+  Angles rate_{};
+};
+
+std::vector<EffectSpec> buildLibrary() {
+  using E = EffectId;
+  return {
+      {E::kBiasDrift, "bias_drift", "gyro bias ramp (temperature-like), all axes", {{"drift", "deg/h per min", 0.1}}},
+      {E::kScaleFactorError, "scale_factor_error", "gyro scale factor error", {{"scale_factor", "ppm", 200.0}}},
+      {E::kScaleFactorAsymmetry, "scale_factor_asymmetry", "scale factor differs for positive / negative rate",
+       {{"asymmetry", "ppm", 200.0}}},
+      {E::kScaleFactorNonlinearity, "scale_factor_nonlinearity", "cubic scale-factor nonlinearity (error at 100 deg/s)",
+       {{"nonlinearity", "ppm at 100 deg/s", 2000.0}}},
+      {E::kMisalignment, "misalignment", "cross-axis coupling of every axis into the others",
+       {{"coupling", "urad", 200.0}}},
+      {E::kGSensitivity, "g_sensitivity", "g-sensitive bias: rate error k*g*sin(tilt) on X and Y",
+       {{"g_sensitivity", "deg/h/g", 5.0}}},
+      {E::kFirstOrderLag, "first_order_lag", "first-order low-pass of the gyro output", {{"time_constant", "ms", 2.0}},
+       false},
+      {E::kTableHarmonicDistortion, "table_harmonic_distortion", "2nd/3rd harmonic in the table motion",
+       {{"h2_at_10deg", "ppm", 200.0}, {"h3_at_10deg", "ppm", 400.0}}},
+      {E::kEncoderCyclicError, "encoder_cyclic_error", "encoder error periodic in angle (10 deg period)",
+       {{"sin_amplitude", "arcsec", 1.0}, {"cos_amplitude", "arcsec", 1.0}}},
+      {E::kTimestampJitter, "timestamp_jitter", "white jitter on the IMU frame stamps",
+       {{"jitter_variance", "us^2", 100.0}}},
+      {E::kClockDrift, "clock_drift", "IMU stamps drift against the table's time base", {{"drift", "ppm", 10.0}}},
+      {E::kDroppedFrames, "dropped_frames", "IMU frames lost at random", {{"loss_rate", "per mille", 5.0}}},
+      {E::kEarthRateProjection, "earth_rate_projection", "wrong latitude / heading for the Earth-rate projection",
+       {{"latitude_error", "deg", 5.0}, {"heading_error", "deg", 5.0}}, false, false},
+  };
+}
+
+}  // namespace
+
+const std::vector<EffectSpec>& effectLibrary() {
+  static const std::vector<EffectSpec> library = buildLibrary();
+  return library;
+}
+
+const EffectSpec& effectSpec(EffectId id) { return effectLibrary().at(static_cast<std::size_t>(id)); }
+
+Result<EffectId> effectIdFromName(const std::string& name) {
+  for (const auto& s : effectLibrary())
+    if (s.name == name) return s.id;
+  return invalidArgument("unknown effect '" + name + "'");
+}
+
+std::unique_ptr<model::Effect> makeEffect(EffectId id, const std::vector<double>& p, const EffectContext& context) {
+  assert(p.size() == effectSpec(id).parameters.size());
+  switch (id) {
+    case EffectId::kBiasDrift: return std::make_unique<BiasDrift>(p[0]);
+    case EffectId::kScaleFactorError: return std::make_unique<ScaleFactorError>(p[0]);
+    case EffectId::kScaleFactorAsymmetry: return std::make_unique<ScaleFactorAsymmetry>(p[0]);
+    case EffectId::kScaleFactorNonlinearity: return std::make_unique<ScaleFactorNonlinearity>(p[0]);
+    case EffectId::kMisalignment: return std::make_unique<Misalignment>(p[0]);
+    case EffectId::kGSensitivity: return std::make_unique<GSensitivity>(p[0]);
+    case EffectId::kFirstOrderLag: return std::make_unique<FirstOrderLag>(p[0]);
+    case EffectId::kTableHarmonicDistortion: return std::make_unique<TableHarmonicDistortion>(p[0], p[1]);
+    case EffectId::kEncoderCyclicError: return std::make_unique<EncoderCyclicError>(p[0], p[1]);
+    case EffectId::kTimestampJitter: return std::make_unique<TimestampJitter>(p[0]);
+    case EffectId::kClockDrift: return std::make_unique<ClockDrift>(p[0]);
+    case EffectId::kDroppedFrames: return std::make_unique<DroppedFrames>(p[0]);
+    case EffectId::kEarthRateProjection: return std::make_unique<EarthRateProjection>(p[0], p[1], context.earth);
+  }
+  return nullptr;
+}
+
+}  // namespace fog::diagnosis

@@ -1,0 +1,76 @@
+#pragma once
+// The effect library of the sim-to-real diagnosis (docs/diagnosis.md): every
+// candidate unmodelled effect as a parametric model::Effect that plugs into
+// the simulator's hooks (core/model/effect.h) without touching its stages,
+// plus what the diagnosis needs to fit it: named parameters with units, a
+// reference magnitude, and whether the features respond linearly.
+//
+// Contracts:
+//  - makeEffect(id, params, context) builds a fresh, unreset effect; the same
+//    parameters, context and seed give the same stream (effects draw only from
+//    the Random they are reset with).
+//  - Parameters are in the units of EffectParameter::unit; zero parameters
+//    leave the chain exactly unchanged.
+//  - Qt-free; effects are not thread-safe (one simulator per thread).
+
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "common/status.h"
+#include "model/effect.h"
+#include "model/sim_config.h"
+
+namespace fog::diagnosis {
+
+enum class EffectId {
+  kBiasDrift,              // temperature-like ramp of every gyro's bias
+  kScaleFactorError,       // gyro scale factor off by a constant
+  kScaleFactorAsymmetry,   // different scale factor for positive and negative rates
+  kScaleFactorNonlinearity,// cubic rate term
+  kMisalignment,           // cross-axis coupling of the swing into the other gyros
+  kGSensitivity,           // rate error proportional to the tilt of a horizontal axis
+  kFirstOrderLag,          // first-order low-pass of the gyro output
+  kTableHarmonicDistortion,// 2nd/3rd harmonic in the table motion itself
+  kEncoderCyclicError,     // encoder reading error periodic in angle
+  kTimestampJitter,        // white jitter on the IMU frame stamps
+  kClockDrift,             // IMU stamps run off the table's time base
+  kDroppedFrames,          // IMU frames lost at random
+  kEarthRateProjection,    // wrong latitude / heading for the Earth-rate projection
+};
+inline constexpr int kEffectCount = 13;
+
+struct EffectParameter {
+  std::string name;  // "scale_factor_ppm"
+  std::string unit;  // "ppm"
+  double reference = 0.0;  // magnitude used for the linear signature
+};
+
+struct EffectSpec {
+  EffectId id;
+  std::string name;         // stable key, "scale_factor_error"
+  std::string description;  // one line for reports
+  std::vector<EffectParameter> parameters;
+  // Features respond linearly in the parameters (fitted by variable
+  // projection); otherwise fitted with Ceres on the full forward model.
+  bool linear = true;
+  // False when swing data cannot tell it from a nominal parameter the replay
+  // calibrates (then it is reported in an alias group, never fitted).
+  bool identifiable = true;
+};
+
+// What some effects need to know about the nominal chain.
+struct EffectContext {
+  model::EarthParams earth;  // nominal Earth-rate projection (kEarthRateProjection)
+};
+
+const std::vector<EffectSpec>& effectLibrary();
+const EffectSpec& effectSpec(EffectId id);
+Result<EffectId> effectIdFromName(const std::string& name);
+
+// params.size() must equal the spec's parameter count.
+std::unique_ptr<model::Effect> makeEffect(EffectId id, const std::vector<double>& params,
+                                          const EffectContext& context = {});
+
+}  // namespace fog::diagnosis

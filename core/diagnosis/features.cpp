@@ -1,0 +1,370 @@
+#include "diagnosis/features.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+
+#include "common/units.h"
+
+namespace fog::diagnosis {
+
+namespace {
+
+constexpr int kHarmonics = 5;
+constexpr int kTableCols = 2 * kHarmonics + 2;  // harmonics, offset, trend
+constexpr int kGyroCols = 2 * kHarmonics + 1;   // harmonics, trend (the offset cancels in increments)
+
+using TableMatrix = Eigen::Matrix<double, kTableCols, kTableCols>;
+using TableVector = Eigen::Matrix<double, kTableCols, 1>;
+using GyroMatrix = Eigen::Matrix<double, kGyroCols, kGyroCols>;
+using GyroRhs = Eigen::Matrix<double, kGyroCols, kAxisCount>;
+using GyroVector = Eigen::Matrix<double, kGyroCols, 1>;
+
+// sin(h x), cos(h x) for h = 1..5 by the angle-addition recurrence.
+void harmonics(double x, double* out) {
+  const double s1 = std::sin(x), c1 = std::cos(x);
+  double s = s1, c = c1;
+  for (int h = 0; h < kHarmonics; ++h) {
+    out[2 * h] = s;
+    out[2 * h + 1] = c;
+    const double sn = s * c1 + c * s1;
+    c = c * c1 - s * s1;
+    s = sn;
+  }
+}
+
+void gyroBasis(double w, double tau, double* out) {
+  harmonics(w * tau, out);
+  out[kGyroCols - 1] = tau;
+}
+
+struct Interval {
+  double sum = 0.0, sumSq = 0.0;
+  std::size_t n = 0;
+  void add(double v) {
+    sum += v;
+    sumSq += v * v;
+    ++n;
+  }
+  double mean() const { return n ? sum / static_cast<double>(n) : 0.0; }
+  double variance() const {
+    if (n < 2) return 0.0;
+    const double m = mean();
+    return std::max(0.0, (sumSq - static_cast<double>(n) * m * m) / static_cast<double>(n - 1));
+  }
+};
+
+struct SegmentSums {
+  TableMatrix tXtX = TableMatrix::Zero();
+  TableVector tXty = TableVector::Zero();
+  double tyty = 0.0;
+  std::size_t tn = 0;
+  GyroMatrix gXtX = GyroMatrix::Zero();
+  GyroRhs gXty = GyroRhs::Zero();
+  std::array<double, kAxisCount> gyty{};
+  std::size_t gn = 0;
+  Interval tableIntervalUs, imuIntervalUs;
+  double lost = 0.0;
+
+  void operator+=(const SegmentSums& o) {
+    tXtX += o.tXtX, tXty += o.tXty, tyty += o.tyty, tn += o.tn;
+    gXtX += o.gXtX, gXty += o.gXty, gn += o.gn;
+    for (int a = 0; a < kAxisCount; ++a) gyty[a] += o.gyty[a];
+  }
+};
+
+struct SegmentFit {
+  TableVector table;
+  GyroRhs gyro;  // one column per axis
+  double tableMs = 0.0, gyroMs = 0.0;  // residual mean square, deg^2 (swing axis for the gyro)
+  TableVector tableVar;                // formal variances of the coefficients
+  GyroRhs gyroVar;
+  std::size_t tableN = 0;
+};
+
+Result<SegmentFit> solve(const SegmentSums& s, int swingAxis) {
+  if (s.tn < 4 * kTableCols || s.gn < 4 * kGyroCols)
+    return insufficientData("a segment has too few samples for the harmonic fit");
+  SegmentFit f;
+  Eigen::LDLT<TableMatrix> tl(s.tXtX);
+  Eigen::LDLT<GyroMatrix> gl(s.gXtX);
+  if (tl.info() != Eigen::Success || gl.info() != Eigen::Success)
+    return insufficientData("a segment's harmonic fit is singular (under one swing period?)");
+  f.table = tl.solve(s.tXty);
+  f.gyro = gl.solve(s.gXty);
+  // rss = y'y - b'X'y for the least-squares b; the cancellation leaves ample
+  // digits for angles of degrees and residuals of micro-degrees.
+  const double trss = s.tyty - f.table.dot(s.tXty);
+  const double grss = s.gyty[swingAxis] - f.gyro.col(swingAxis).dot(s.gXty.col(swingAxis));
+  f.tableMs = std::max(0.0, trss) / static_cast<double>(s.tn - kTableCols);
+  f.gyroMs = std::max(0.0, grss) / static_cast<double>(s.gn - kGyroCols);
+  f.tableN = s.tn;
+  f.tableVar = tl.solve(TableMatrix::Identity()).diagonal() * f.tableMs;
+  const GyroVector ginv = gl.solve(GyroMatrix::Identity()).diagonal();
+  for (int a = 0; a < kAxisCount; ++a) {
+    const double rss = s.gyty[static_cast<std::size_t>(a)] - f.gyro.col(a).dot(s.gXty.col(a));
+    f.gyroVar.col(a) = ginv * (std::max(0.0, rss) / static_cast<double>(s.gn - kGyroCols));
+  }
+  return f;
+}
+
+double wrapPi(double x) {
+  x = std::remainder(x, kTwoPi);
+  return x;
+}
+
+// Harmonic h of (ah, bh) relative to the fundamental (a1, b1): in phase and in
+// quadrature with the fundamental's phase carried to harmonic h, ppm.
+void relative(double ah, double bh, double a1, double b1, int h, double& inPhase, double& quadrature) {
+  const double amp = std::hypot(a1, b1);
+  const double phi1 = std::atan2(b1, a1);
+  const double bAmp = std::hypot(ah, bh), phih = std::atan2(bh, ah);
+  const double d = phih - h * phi1;
+  inPhase = amp > 0.0 ? bAmp / amp * std::cos(d) * 1e6 : 0.0;
+  quadrature = amp > 0.0 ? bAmp / amp * std::sin(d) * 1e6 : 0.0;
+}
+
+struct Emitter {
+  FeatureSet& out;
+  int point = 0, segment = 0;
+  void add(Channel c, const char* quantity, const char* unit, int harmonic, int axis, double value, double formal = 0.0) {
+    out.keys.push_back({c, quantity, unit, harmonic, axis, point, segment});
+    out.values.push_back(value);
+    out.formalStd.push_back(formal);
+  }
+};
+
+const char* kInPhase[] = {"", "", "h2_in_phase", "h3_in_phase", "h4_in_phase", "h5_in_phase"};
+const char* kQuadrature[] = {"", "", "h2_quadrature", "h3_quadrature", "h4_quadrature", "h5_quadrature"};
+
+void emitSegment(Emitter& e, const SegmentFit& f, const SegmentSums& s, const PointReference& ref,
+                 const FeatureReference& fr) {
+  const int ax = ref.swingAxis;
+  const double ta = f.table(0), tb = f.table(1);
+  const double ga = f.gyro(0, ax), gb = f.gyro(1, ax);
+  const double tAmp0 = std::hypot(ta, tb);
+  // Relative standard error (ppm) of harmonic h of the table / of the gyro axis a.
+  auto tRel = [&](int h) { return std::sqrt(0.5 * (f.tableVar(2 * (h - 1)) + f.tableVar(2 * (h - 1) + 1))) / tAmp0 * 1e6; };
+  auto gRel = [&](int h, int a, double amp) {
+    return std::sqrt(0.5 * (f.gyroVar(2 * (h - 1), a) + f.gyroVar(2 * (h - 1) + 1, a))) / amp * 1e6;
+  };
+  // Table channel: harmonics 2..5 of the motion as the encoder reports it.
+  for (int h = 2; h <= kHarmonics; ++h) {
+    double i = 0, q = 0;
+    relative(f.table(2 * (h - 1)), f.table(2 * (h - 1) + 1), ta, tb, h, i, q);
+    e.add(Channel::kTable, kInPhase[h], "ppm", h, -1, i, tRel(h));
+    e.add(Channel::kTable, kQuadrature[h], "ppm", h, -1, q, tRel(h));
+  }
+  // Mean square of uniform quantisation noise: variance 0.8 sigma^4 / N.
+  e.add(Channel::kTable, "residual_ms", "udeg^2", -1, -1, f.tableMs * 1e12,
+        f.tableMs * 1e12 * std::sqrt(0.8 / static_cast<double>(f.tableN)));
+  // Gyro minus table: the fundamental's gain and delay, and how the gyro's
+  // harmonics differ from the table's.
+  const double tAmp = std::hypot(ta, tb), gAmp = std::hypot(ga, gb);
+  const double rel1 = std::hypot(tRel(1), gRel(1, ax, gAmp));  // ppm of the fundamental
+  e.add(Channel::kGyroMinusTable, "gain", "ppm", 1, ax, (gAmp / tAmp - 1.0) * 1e6, rel1);
+  e.add(Channel::kGyroMinusTable, "delay", "us", 1, ax,
+        wrapPi(std::atan2(tb, ta) - std::atan2(gb, ga)) / ref.omegaRadPerS * 1e6, rel1 / ref.omegaRadPerS);
+  for (int h = 2; h <= kHarmonics; ++h) {
+    double ti = 0, tq = 0, gi = 0, gq = 0;
+    relative(f.table(2 * (h - 1)), f.table(2 * (h - 1) + 1), ta, tb, h, ti, tq);
+    relative(f.gyro(2 * (h - 1), ax), f.gyro(2 * (h - 1) + 1, ax), ga, gb, h, gi, gq);
+    const double fs = std::hypot(tRel(h), gRel(h, ax, gAmp));
+    e.add(Channel::kGyroMinusTable, kInPhase[h], "ppm", h, ax, gi - ti, fs);
+    e.add(Channel::kGyroMinusTable, kQuadrature[h], "ppm", h, ax, gq - tq, fs);
+  }
+  // Gyro channel: trend (harmonic 0) and residual of the swing axis; what the
+  // other two gyros see of the swing, and their trends.
+  e.add(Channel::kGyro, "residual_ms", "udeg^2", -1, ax, f.gyroMs * 1e12,
+        f.gyroMs * 1e12 * std::sqrt(2.0 / static_cast<double>(s.gn)));
+  for (int a = 0; a < kAxisCount; ++a) {
+    e.add(Channel::kGyro, "trend", "deg/h", 0, a, f.gyro(kGyroCols - 1, a) * kSecondsPerHour,
+          std::sqrt(f.gyroVar(kGyroCols - 1, a)) * kSecondsPerHour);
+    if (a == ax) continue;
+    double i = 0, q = 0;
+    relative(f.gyro(0, a), f.gyro(1, a), ta, tb, 1, i, q);
+    e.add(Channel::kGyro, "cross_in_phase", "ppm", 1, a, i, gRel(1, a, tAmp0));
+    e.add(Channel::kGyro, "cross_quadrature", "ppm", 1, a, q, gRel(1, a, tAmp0));
+  }
+  // Timing of both streams inside the segment.
+  e.add(Channel::kTiming, "table_interval", "ppm", -1, -1,
+        (s.tableIntervalUs.mean() * 1e-6 / fr.tablePeriodS - 1.0) * 1e6);
+  e.add(Channel::kTiming, "table_interval_var", "us^2", -1, -1, s.tableIntervalUs.variance());
+  e.add(Channel::kTiming, "imu_interval", "ppm", -1, -1, (s.imuIntervalUs.mean() * 1e-6 / fr.imuPeriodS - 1.0) * 1e6);
+  e.add(Channel::kTiming, "imu_interval_var", "us^2", -1, -1, s.imuIntervalUs.variance());
+  e.add(Channel::kTiming, "imu_lost", "frames", -1, -1, s.lost);
+}
+
+double medianInterval(const std::vector<ImuSample>& imu) {
+  std::vector<double> d;
+  d.reserve(imu.size());
+  for (std::size_t k = 1; k < imu.size(); ++k) d.push_back(imu[k].timeS - imu[k - 1].timeS);
+  if (d.empty()) return 0.0;
+  std::nth_element(d.begin(), d.begin() + static_cast<std::ptrdiff_t>(d.size() / 2), d.end());
+  return d[d.size() / 2];
+}
+
+}  // namespace
+
+const char* channelName(Channel c) {
+  switch (c) {
+    case Channel::kTable: return "table";
+    case Channel::kGyro: return "gyro";
+    case Channel::kGyroMinusTable: return "gyro-table";
+    case Channel::kTiming: return "timing";
+  }
+  return "?";
+}
+
+int segmentsFor(double durationS, double frequencyHz) {
+  const double periods = durationS * frequencyHz;
+  return std::clamp(static_cast<int>(std::floor(periods / 2.0)), 1, 4);
+}
+
+Result<FeatureSet> extractFeatures(const Recording& recording, const FeatureReference& reference) {
+  if (recording.testPoints.size() != reference.points.size())
+    return invalidArgument("the recording has " + std::to_string(recording.testPoints.size()) +
+                           " test points, the feature reference " + std::to_string(reference.points.size()));
+  FeatureSet out;
+  for (std::size_t p = 0; p < recording.testPoints.size(); ++p) {
+    const TestPointData& tp = recording.testPoints[p];
+    const PointReference& ref = reference.points[p];
+    if (tp.table.size() < 100 || tp.imu.size() < 50)
+      return insufficientData("test point " + std::to_string(p + 1) + " has too few samples for the gap map");
+    const double w = ref.omegaRadPerS;
+    const double start = tp.table.front().timeS, end = tp.table.back().timeS;
+    const double mid = 0.5 * (start + end), span = end - start;
+    const int nSeg = std::max(1, ref.segments);
+    auto segmentOf = [&](double t) {
+      return std::clamp(static_cast<int>(std::floor((t - start) / span * nSeg)), 0, nSeg - 1);
+    };
+    std::vector<SegmentSums> seg(static_cast<std::size_t>(nSeg));
+
+    double row[kTableCols];
+    for (std::size_t i = 0; i < tp.table.size(); ++i) {
+      const double tau = tp.table[i].timeS - mid;
+      harmonics(w * tau, row);
+      row[kTableCols - 2] = 1.0;
+      row[kTableCols - 1] = tau;
+      const Eigen::Map<const TableVector> x(row);
+      SegmentSums& s = seg[static_cast<std::size_t>(segmentOf(tp.table[i].timeS))];
+      const double y = tp.table[i].angleDeg[static_cast<std::size_t>(ref.swingAxis)];
+      s.tXtX.selfadjointView<Eigen::Upper>().rankUpdate(x);
+      s.tXty += x * y;
+      s.tyty += y * y;
+      ++s.tn;
+      if (i > 0) {
+        const double dUs = (tp.table[i].timeS - tp.table[i - 1].timeS) * 1e6;
+        if (dUs > 0.0 && dUs < 1.5 * reference.tablePeriodS * 1e6) s.tableIntervalUs.add(dUs);
+      }
+    }
+
+    const double frame = medianInterval(tp.imu);
+    double phiEnd[kGyroCols], phiStart[kGyroCols], dx[kGyroCols];
+    for (std::size_t k = 0; k < tp.imu.size(); ++k) {
+      const ImuSample& m = tp.imu[k];
+      const bool continues = k > 0 && m.lostBefore == 0;
+      if (continues)
+        std::copy(phiEnd, phiEnd + kGyroCols, phiStart);
+      else
+        gyroBasis(w, m.timeS - frame - mid, phiStart);
+      gyroBasis(w, m.timeS - mid, phiEnd);
+      for (int c = 0; c < kGyroCols; ++c) dx[c] = phiEnd[c] - phiStart[c];
+      const Eigen::Map<const GyroVector> x(dx);
+      SegmentSums& s = seg[static_cast<std::size_t>(segmentOf(m.timeS))];
+      s.gXtX.selfadjointView<Eigen::Upper>().rankUpdate(x);
+      for (int a = 0; a < kAxisCount; ++a) {
+        s.gXty.col(a) += x * m.incrementDeg[static_cast<std::size_t>(a)];
+        s.gyty[static_cast<std::size_t>(a)] += m.incrementDeg[static_cast<std::size_t>(a)] * m.incrementDeg[static_cast<std::size_t>(a)];
+      }
+      ++s.gn;
+      s.lost += m.lostBefore;
+      if (k > 0) {
+        const double dUs = (m.timeS - tp.imu[k - 1].timeS) * 1e6;
+        if (dUs > 0.0 && dUs < 1.5 * reference.imuPeriodS * 1e6) s.imuIntervalUs.add(dUs);
+      }
+    }
+
+    SegmentSums whole;
+    for (auto& s : seg) {
+      s.tXtX = s.tXtX.selfadjointView<Eigen::Upper>();
+      s.gXtX = s.gXtX.selfadjointView<Eigen::Upper>();
+      whole += s;
+    }
+    for (int s = 0; s < nSeg; ++s) {
+      auto fit = solve(seg[static_cast<std::size_t>(s)], ref.swingAxis);
+      if (!fit) return Status(fit.status().code(), "test point " + std::to_string(p + 1) + ": " + fit.status().message());
+      Emitter e{out, static_cast<int>(p), s};
+      emitSegment(e, *fit, seg[static_cast<std::size_t>(s)], ref, reference);
+    }
+
+    // Whole-record view for plots: spectra and the cumulative gyro residual.
+    auto wf = solve(whole, ref.swingAxis);
+    if (!wf) return wf.status();
+    PointSpectrum sp;
+    const int ax = ref.swingAxis;
+    const double tAmp = std::hypot(wf->table(0), wf->table(1)), gAmp = std::hypot(wf->gyro(0, ax), wf->gyro(1, ax));
+    sp.tableHarmonicPpm.push_back(0.0);
+    sp.gyroHarmonicPpm.push_back(wf->gyro(kGyroCols - 1, ax) * kSecondsPerHour);
+    for (int h = 1; h <= kHarmonics; ++h) {
+      sp.tableHarmonicPpm.push_back(std::hypot(wf->table(2 * (h - 1)), wf->table(2 * (h - 1) + 1)) / tAmp * 1e6);
+      sp.gyroHarmonicPpm.push_back(std::hypot(wf->gyro(2 * (h - 1), ax), wf->gyro(2 * (h - 1) + 1, ax)) / gAmp * 1e6);
+    }
+    sp.gainPpm = (gAmp / tAmp - 1.0) * 1e6;
+    sp.delayUs = wrapPi(std::atan2(wf->table(1), wf->table(0)) - std::atan2(wf->gyro(1, ax), wf->gyro(0, ax))) / w * 1e6;
+    const std::size_t stride = std::max<std::size_t>(1, tp.imu.size() / 400);
+    double cumulative = 0.0;
+    const GyroVector beta = wf->gyro.col(ax);
+    for (std::size_t k = 0; k < tp.imu.size(); ++k) {
+      const ImuSample& m = tp.imu[k];
+      const bool continues = k > 0 && m.lostBefore == 0;
+      if (continues)
+        std::copy(phiEnd, phiEnd + kGyroCols, phiStart);
+      else
+        gyroBasis(w, m.timeS - frame - mid, phiStart);
+      gyroBasis(w, m.timeS - mid, phiEnd);
+      double model = 0.0;
+      for (int c = 0; c < kGyroCols; ++c) model += (phiEnd[c] - phiStart[c]) * beta(c);
+      cumulative += m.incrementDeg[static_cast<std::size_t>(ax)] - model;
+      if (k % stride == 0) {
+        sp.residualTimeS.push_back(m.timeS - mid);
+        sp.gyroResidualDeg.push_back(cumulative);
+      }
+    }
+    out.spectra.push_back(std::move(sp));
+  }
+  return out;
+}
+
+TimingAudit auditTiming(const Recording& recording, double tablePeriodS, double imuPeriodS) {
+  TimingAudit a;
+  Interval t, m;
+  auto scan = [](const auto& samples, double nominal, Interval& iv, StreamTiming& st) {
+    st.samples += samples.size();
+    for (std::size_t i = 1; i < samples.size(); ++i) {
+      const double d = samples[i].timeS - samples[i - 1].timeS;
+      if (d <= 0.0)
+        ++st.duplicates;
+      else if (d > 1.5 * nominal)
+        ++st.gaps;
+      else
+        iv.add(d * 1e6);
+    }
+  };
+  for (const auto& tp : recording.testPoints) {
+    scan(tp.table, tablePeriodS, t, a.table);
+    scan(tp.imu, imuPeriodS, m, a.imu);
+  }
+  a.table.intervalMeanPpm = t.n ? (t.mean() * 1e-6 / tablePeriodS - 1.0) * 1e6 : 0.0;
+  a.table.intervalStdUs = std::sqrt(t.variance());
+  a.imu.intervalMeanPpm = m.n ? (m.mean() * 1e-6 / imuPeriodS - 1.0) * 1e6 : 0.0;
+  a.imu.intervalStdUs = std::sqrt(m.variance());
+  a.lostFrames = recording.health.lostFrames;
+  a.duplicateFrames = recording.health.duplicateFrames;
+  a.counterWraps = recording.health.counterWraps;
+  a.checksumFailures = recording.health.checksumFailures;
+  a.outOfOrderFrames = recording.health.outOfOrderFrames;
+  return a;
+}
+
+}  // namespace fog::diagnosis

@@ -1,0 +1,95 @@
+#pragma once
+// Residual features of one recording, the coordinates of the gap map
+// (docs/diagnosis.md): per test point and per time segment, per channel
+// (table, gyro, gyro-minus-table, timing), per harmonic 0..5 of the swing
+// frequency and per axis. Real and simulated recordings go through the same
+// function with the same FeatureReference, so their features line up index by
+// index and can be compared as z-scores.
+//
+// Each segment is fitted by linear least squares at the reference frequency:
+//   table(t) = sum_{h=1..5} (a_h sin h w t + b_h cos h w t) + c + d t
+//   gyro increments d_k = Phi(t_k) - Phi(s_k), Phi the same harmonic series
+//   plus a trend (the exact difference model of core/analysis), for the
+//   swing axis and the two other axes.
+// Harmonics are reported relative to the channel's fundamental, in phase and
+// in quadrature with it (ppm), so they do not depend on the swing's start phase.
+// Qt-free; pure functions, thread-safe.
+
+#include <string>
+#include <vector>
+
+#include "common/recording.h"
+#include "common/status.h"
+
+namespace fog::diagnosis {
+
+enum class Channel { kTable = 0, kGyro = 1, kGyroMinusTable = 2, kTiming = 3 };
+inline constexpr int kChannelCount = 4;
+const char* channelName(Channel c);  // "table", "gyro", "gyro-table", "timing"
+
+struct FeatureKey {
+  Channel channel = Channel::kTable;
+  std::string quantity;  // "h3_in_phase", "delay", "gain", "trend", "cross_in_phase", "residual_ms", ...
+  std::string unit;      // "ppm", "us", "deg/h", "udeg^2", "us^2", "frames"
+  int harmonic = -1;     // 0..5 where the feature belongs to one harmonic, else -1
+  int axis = -1;         // gyro axis (0..2) the feature is measured on, -1 for table/timing
+  int point = 0;         // test point position in the recording
+  int segment = 0;       // time segment within the test point
+};
+
+struct PointReference {
+  double omegaRadPerS = 0.0;  // reference swing frequency (the real session's table fit)
+  int segments = 4;
+  int swingAxis = 0;
+};
+
+struct FeatureReference {
+  std::vector<PointReference> points;
+  double tablePeriodS = 1e-3;  // nominal intervals the timing features are stated against
+  double imuPeriodS = 2e-3;
+};
+
+// Whole-record view of one test point, for plotting.
+struct PointSpectrum {
+  // Amplitude of harmonic h (0..5) relative to the fundamental, ppm; h = 0 is
+  // the gyro trend in deg/h (table: 0), h = 1 is 1e6.
+  std::vector<double> tableHarmonicPpm, gyroHarmonicPpm;
+  double delayUs = 0.0;           // gyro behind table, from the fundamentals
+  double gainPpm = 0.0;           // gyro/table amplitude - 1
+  std::vector<double> residualTimeS;   // decimated, relative to the record middle
+  std::vector<double> gyroResidualDeg; // cumulative gyro-angle residual of the whole-record fit
+};
+
+struct FeatureSet {
+  std::vector<FeatureKey> keys;
+  std::vector<double> values;
+  // White-noise standard error of each value from its own least-squares fit
+  // (0 where there is none): the spread that a deterministic replay stage,
+  // such as the encoder quantising exact motion, cannot show across seeds.
+  std::vector<double> formalStd;
+  std::vector<PointSpectrum> spectra;  // one per test point
+};
+
+// Segments per test point: 4, fewer when the point has under 8 periods
+// (at least 2 periods per segment), at least 1.
+int segmentsFor(double durationS, double frequencyHz);
+
+// Fails when a test point has too little data or the reference does not
+// match the recording's test points.
+Result<FeatureSet> extractFeatures(const Recording& recording, const FeatureReference& reference);
+
+// Timing audit of one stream (docs/diagnosis.md).
+struct StreamTiming {
+  std::size_t samples = 0;
+  double intervalMeanPpm = 0.0;   // mean interval against nominal, ppm
+  double intervalStdUs = 0.0;     // spread of the intervals (gaps excluded)
+  std::size_t gaps = 0;           // intervals over 1.5 nominal
+  std::size_t duplicates = 0;     // intervals <= 0
+};
+struct TimingAudit {
+  StreamTiming table, imu;
+  std::uint64_t lostFrames = 0, duplicateFrames = 0, counterWraps = 0, checksumFailures = 0, outOfOrderFrames = 0;
+};
+TimingAudit auditTiming(const Recording& recording, double tablePeriodS, double imuPeriodS);
+
+}  // namespace fog::diagnosis

@@ -1,0 +1,115 @@
+// Blind regression set: a few short sessions (the blind-check plan, two
+// minutes of data) simulated with a withheld effect and diagnosed blind.
+// A change that breaks naming, fitting, held-out shrink or the "unexplained"
+// answer fails here.
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "diagnosis/blind_check.h"
+#include "diagnosis/diagnosis.h"
+#include "model/simulator.h"
+#include "protocol/recording_builder.h"
+
+namespace fog::diagnosis {
+namespace {
+
+Diagnosis diagnoseWith(std::vector<std::unique_ptr<model::Effect>> effects, std::uint64_t seed) {
+  model::SimConfig c;
+  c.seed = seed;
+  c.fog.setOwnDelayS(0.31e-3);
+  const TestPlan plan = blindCheckPlan();
+  auto run = model::simulate(c, plan, std::move(effects));
+  EXPECT_TRUE(run.isOk());
+  auto rec = protocol::decodeRecording(run->bytes);
+  EXPECT_TRUE(rec.isOk());
+  SessionInfo info;
+  info.plan = plan;
+  auto d = diagnose(*rec, &info, {}, {});
+  EXPECT_TRUE(d.isOk()) << d.status().toString();
+  return *d;
+}
+
+Diagnosis diagnoseWith(EffectId id, std::vector<double> params, std::uint64_t seed) {
+  std::vector<std::unique_ptr<model::Effect>> e;
+  e.push_back(makeEffect(id, params));
+  return diagnoseWith(std::move(e), seed);
+}
+
+const EffectFit& fitOf(const Diagnosis& d, const std::string& name) {
+  for (const auto& e : d.effects)
+    if (e.name == name) return e;
+  ADD_FAILURE() << name << " not ranked";
+  return d.effects.front();
+}
+
+TEST(Diagnosis, CleanSessionHasNoGapAndNoVerdict) {
+  const Diagnosis d = diagnoseWith({}, 21);
+  EXPECT_EQ(d.verdict, "none") << d.verdictReason;
+  EXPECT_FALSE(d.gapSignificant);
+  for (const auto& g : d.gapBefore) EXPECT_LT(g.rmsZ, 2.0) << channelName(g.channel);
+  // The replay is calibrated to the session: its delay is the measured lag.
+  EXPECT_NEAR(d.calibration.lagMs, 0.31 + 0.28 - 0.05, 0.002);
+  EXPECT_NEAR(d.calibration.tableFrequencyErrorPpm, -8.37, 0.5);
+  EXPECT_NEAR(d.calibration.arwDegPerSqrtH, 0.004, 0.0015);
+  ASSERT_GE(d.aliasGroups.size(), 1u);
+  EXPECT_EQ(d.aliasGroups[0].name, "constant delay");
+}
+
+// 200 ppm scale-factor error (~10x its threshold in this plan): named,
+// recovered within 5 %, and the held-out gap closes by >= 80 %.
+TEST(Diagnosis, ScaleFactorErrorIsNamedFittedAndClosesTheHeldOutGap) {
+  const Diagnosis d = diagnoseWith(EffectId::kScaleFactorError, {200.0}, 22);
+  EXPECT_EQ(d.verdict, "scale_factor_error") << d.verdictReason;
+  const EffectFit& f = fitOf(d, "scale_factor_error");
+  EXPECT_NEAR(f.values[0], 200.0, 10.0);
+  EXPECT_GT(f.standardErrors[0], 0.0);
+  EXPECT_GE(f.heldOutShrink, 0.8);
+  EXPECT_TRUE(d.gapSignificant);
+  const auto j = nlohmann::json::parse(formatDiagnosisJson(d));
+  EXPECT_EQ(j["verdict"], "scale_factor_error");
+  for (const char* c : {"table", "gyro", "gyro-table", "timing"}) {
+    EXPECT_TRUE(j["gap"][c].contains("before")) << c;
+    EXPECT_TRUE(j["gap"][c].contains("after")) << c;
+  }
+  EXPECT_LT(j["gap"]["gyro-table"]["after"].get<double>(), j["gap"]["gyro-table"]["before"].get<double>());
+  const auto& top = j["effects"][0];
+  for (const char* k : {"name", "parameters", "heldout_shrink", "score"}) EXPECT_TRUE(top.contains(k)) << k;
+}
+
+// Cross-axis coupling of 150 urad: the other gyros see the swing in phase.
+TEST(Diagnosis, MisalignmentIsNamedAndRecovered) {
+  const Diagnosis d = diagnoseWith(EffectId::kMisalignment, {150.0}, 23);
+  EXPECT_EQ(d.verdict, "misalignment") << d.verdictReason;
+  EXPECT_NEAR(fitOf(d, "misalignment").values[0], 150.0, 10.0);
+}
+
+// g-sensitivity only shows through the delay's frequency dependence (1 Hz vs
+// 0.1 Hz): the plan's two frequencies must separate it from a pure delay.
+// Known: its estimate comes out ~25 % low (docs/diagnosis.md); 30 % stated.
+TEST(Diagnosis, GSensitivityIsSeparatedFromAPureDelayByTwoFrequencies) {
+  const Diagnosis d = diagnoseWith(EffectId::kGSensitivity, {40.0}, 24);
+  EXPECT_EQ(d.verdict, "g_sensitivity") << d.verdictReason;
+  EXPECT_NEAR(fitOf(d, "g_sensitivity").values[0], 40.0, 12.0);
+}
+
+TEST(Diagnosis, ClockDriftIsNamedAndRecovered) {
+  const Diagnosis d = diagnoseWith(EffectId::kClockDrift, {0.5}, 25);
+  EXPECT_EQ(d.verdict, "clock_drift") << d.verdictReason;
+  EXPECT_NEAR(fitOf(d, "clock_drift").values[0], 0.5, 0.05);
+}
+
+// A gyro bias step half-way through is not in the library (a ramp fits it
+// only in part): the gap is real and unexplained. (A 7.3 Hz gyro vibration
+// is currently misnamed first_order_lag: docs/diagnosis.md, known failures.)
+TEST(Diagnosis, OutOfLibraryBiasStepIsUnexplained) {
+  std::vector<std::unique_ptr<model::Effect>> e;
+  e.push_back(makeOutsideEffect(OutsideEffect::kBiasStep, 4.0));
+  const Diagnosis d = diagnoseWith(std::move(e), 26);
+  EXPECT_TRUE(d.gapSignificant);
+  EXPECT_EQ(d.verdict, "unexplained") << d.verdictReason;
+}
+
+}  // namespace
+}  // namespace fog::diagnosis

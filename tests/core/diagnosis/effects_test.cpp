@@ -1,0 +1,217 @@
+// Each library effect does what its documentation says: injected at a known
+// magnitude into the simulator, the feature (or analysis) estimator recovers
+// it within a stated tolerance. Runs with and without the effect share a seed,
+// so the noise cancels in the differences.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "analysis/delay_analysis.h"
+#include "common/units.h"
+#include "diagnosis/effects.h"
+#include "diagnosis/features.h"
+#include "model/simulator.h"
+#include "protocol/recording_builder.h"
+
+namespace fog::diagnosis {
+namespace {
+
+TestPlan onePoint(Axis axis, double hz, double amp, double durationS) {
+  TestPlan p;
+  p.points.push_back({axis, hz, amp, durationS, 1.0, 0.0});
+  return p;
+}
+
+Recording simulateWith(const TestPlan& plan, std::vector<std::unique_ptr<model::Effect>> effects = {}) {
+  model::SimConfig c;
+  c.seed = 5;
+  auto run = model::simulate(c, plan, std::move(effects));
+  EXPECT_TRUE(run.isOk());
+  auto rec = protocol::decodeRecording(run->bytes);
+  EXPECT_TRUE(rec.isOk());
+  return *rec;
+}
+
+FeatureReference referenceFor(const TestPlan& plan) {
+  FeatureReference r;
+  for (const auto& p : plan.points)
+    r.points.push_back({kTwoPi * p.frequencyHz * (1.0 - 8.37e-6), segmentsFor(p.durationS, p.frequencyHz),
+                        static_cast<int>(p.axis)});
+  return r;
+}
+
+// Mean over segments of one feature (by quantity and axis) of test point 0.
+double feature(const FeatureSet& f, const std::string& quantity, int axis = -2, int segment = -1) {
+  double s = 0;
+  int n = 0;
+  for (std::size_t i = 0; i < f.keys.size(); ++i)
+    if (f.keys[i].point == 0 && f.keys[i].quantity == quantity && (axis == -2 || f.keys[i].axis == axis) &&
+        (segment < 0 || f.keys[i].segment == segment))
+      s += f.values[i], ++n;
+  EXPECT_GT(n, 0) << quantity;
+  return s / n;
+}
+
+struct Pair {
+  FeatureSet clean, with;
+};
+Pair features(const TestPlan& plan, EffectId id, std::vector<double> params) {
+  std::vector<std::unique_ptr<model::Effect>> e;
+  e.push_back(makeEffect(id, params));
+  auto a = extractFeatures(simulateWith(plan), referenceFor(plan));
+  auto b = extractFeatures(simulateWith(plan, std::move(e)), referenceFor(plan));
+  EXPECT_TRUE(a.isOk() && b.isOk());
+  return {*a, *b};
+}
+
+TEST(EffectLibrary, HasEveryRequiredEffectWithUnitsAndReferences) {
+  EXPECT_EQ(effectLibrary().size(), static_cast<std::size_t>(kEffectCount));
+  for (const auto& s : effectLibrary()) {
+    EXPECT_EQ(effectSpec(s.id).name, s.name);
+    EXPECT_EQ(*effectIdFromName(s.name), s.id);
+    for (const auto& p : s.parameters) {
+      EXPECT_FALSE(p.unit.empty()) << s.name;
+      EXPECT_GT(p.reference, 0.0) << s.name;
+    }
+  }
+  EXPECT_FALSE(effectIdFromName("warp_drive").isOk());
+}
+
+TEST(EffectLibrary, ZeroParametersLeaveTheStreamUnchanged) {
+  const TestPlan plan = onePoint(Axis::kX, 1.0, 3.0, 4.0);
+  model::SimConfig c;
+  auto plain = model::simulate(c, plan);
+  for (const auto& s : effectLibrary()) {
+    std::vector<std::unique_ptr<model::Effect>> e;
+    e.push_back(makeEffect(s.id, std::vector<double>(s.parameters.size(), 0.0)));
+    auto with = model::simulate(c, plan, std::move(e));
+    EXPECT_EQ(with->bytes, plain->bytes) << s.name;
+  }
+}
+
+// Gyro/table gain - 1 = scale-factor error: 500 ppm within 2 ppm.
+TEST(EffectSignature, ScaleFactorErrorIsAGain) {
+  const auto f = features(onePoint(Axis::kX, 1.0, 3.0, 20.0), EffectId::kScaleFactorError, {500.0});
+  EXPECT_NEAR(feature(f.with, "gain") - feature(f.clean, "gain"), 500.0, 2.0);
+}
+
+// Asymmetry k adds k * mean|rate| = k * (2/pi) * A * w to the trend:
+// 10000 ppm at 1 Hz / 3 deg -> 432 deg/h, within 2 %.
+TEST(EffectSignature, ScaleFactorAsymmetryAddsATrendAndEvenHarmonics) {
+  const auto f = features(onePoint(Axis::kX, 1.0, 3.0, 20.0), EffectId::kScaleFactorAsymmetry, {10000.0});
+  const double expected = 0.01 * (2.0 / kPi) * 3.0 * kTwoPi * kSecondsPerHour;
+  EXPECT_NEAR(feature(f.with, "trend", 0) - feature(f.clean, "trend", 0), expected, 0.02 * expected);
+  EXPECT_GT(std::abs(feature(f.with, "h2_in_phase", 0) - feature(f.clean, "h2_in_phase", 0)), 1000.0);
+}
+
+// Cubic term k (r/100)^2 r with r = R cos: gain + 3/4 k (R/100)^2 and, once
+// integrated to an angle, a 3rd harmonic k/12 (R/100)^2; k = 10 % at
+// R = 18.85 deg/s -> 2665 ppm gain (3 %) and 296 ppm at 3rd harmonic (5 %).
+TEST(EffectSignature, ScaleFactorNonlinearityGivesAmplitudeDependentGainAndThirdHarmonic) {
+  const auto f = features(onePoint(Axis::kX, 1.0, 3.0, 20.0), EffectId::kScaleFactorNonlinearity, {1e5});
+  const double r = 3.0 * kTwoPi / 100.0;
+  EXPECT_NEAR(feature(f.with, "gain") - feature(f.clean, "gain"), 0.75 * 1e5 * r * r, 0.03 * 0.75 * 1e5 * r * r);
+  const double h3 = std::hypot(feature(f.with, "h3_in_phase", 0) - feature(f.clean, "h3_in_phase", 0),
+                               feature(f.with, "h3_quadrature", 0) - feature(f.clean, "h3_quadrature", 0));
+  EXPECT_NEAR(h3, 1e5 / 12.0 * r * r, 0.05 * 1e5 / 12.0 * r * r);
+}
+
+// Coupling m into the other gyros: their in-phase response is m (ppm = urad).
+TEST(EffectSignature, MisalignmentCouplesTheSwingIntoTheOtherAxes) {
+  const auto f = features(onePoint(Axis::kX, 1.0, 3.0, 20.0), EffectId::kMisalignment, {1000.0});
+  for (int a : {1, 2}) {
+    EXPECT_NEAR(feature(f.with, "cross_in_phase", a) - feature(f.clean, "cross_in_phase", a), 1000.0, 5.0);
+    EXPECT_NEAR(feature(f.with, "cross_quadrature", a) - feature(f.clean, "cross_quadrature", a), 0.0, 5.0);
+  }
+}
+
+// Rate error k*sin(theta) on X delays the gyro by k (deg/s) * (pi/180) / w^2;
+// 100 deg/h/g at 0.1 Hz: 1.227 ms, within 3 %. Nothing on Z.
+TEST(EffectSignature, GSensitivityDelayFallsWithFrequencySquaredAndSparesZ) {
+  const double w = kTwoPi * 0.1;
+  const double expectedUs = 100.0 / kSecondsPerHour * kRadPerDeg / (w * w) * 1e6;
+  const auto x = features(onePoint(Axis::kX, 0.1, 10.0, 40.0), EffectId::kGSensitivity, {100.0});
+  EXPECT_NEAR(feature(x.with, "delay") - feature(x.clean, "delay"), expectedUs, 0.03 * expectedUs);
+  const auto z = features(onePoint(Axis::kZ, 0.1, 10.0, 40.0), EffectId::kGSensitivity, {100.0});
+  EXPECT_NEAR(feature(z.with, "delay") - feature(z.clean, "delay"), 0.0, 0.01);
+}
+
+// Sampled first-order filter (2 ms frames): delay atan2(q sin wT, 1 - q cos wT)/w, within 5 us.
+TEST(EffectSignature, FirstOrderLagDelayMatchesTheFilter) {
+  const double tau = 0.02, dt = 2e-3, q = std::exp(-dt / tau), w = kTwoPi * 1.0;
+  const auto f = features(onePoint(Axis::kX, 1.0, 3.0, 20.0), EffectId::kFirstOrderLag, {tau * 1e3});
+  const double expectedUs = std::atan2(q * std::sin(w * dt), 1.0 - q * std::cos(w * dt)) / w * 1e6;
+  EXPECT_NEAR(feature(f.with, "delay") - feature(f.clean, "delay"), expectedUs, 5.0);
+  EXPECT_LT(feature(f.with, "gain") - feature(f.clean, "gain"), -5000.0);  // |H| < 1
+}
+
+// Bias ramp d deg/h per minute: segment trends grow by d * dt / 60 s.
+TEST(EffectSignature, BiasDriftRampsTheTrendAcrossSegments) {
+  const auto f = features(onePoint(Axis::kX, 0.1, 10.0, 60.0), EffectId::kBiasDrift, {6.0});
+  const double first = feature(f.with, "trend", 0, 0) - feature(f.clean, "trend", 0, 0);
+  const double last = feature(f.with, "trend", 0, 2) - feature(f.clean, "trend", 0, 2);
+  EXPECT_NEAR(last - first, 6.0 * 40.0 / 60.0, 0.05);
+}
+
+// theta - c3 theta^3 / (10 deg)^2: at 10 deg the 3rd harmonic is +c3/4 in
+// phase, in table and gyro alike (gyro - table: nothing).
+TEST(EffectSignature, TableDistortionShowsInBothChannels) {
+  const auto f = features(onePoint(Axis::kX, 0.1, 10.0, 40.0), EffectId::kTableHarmonicDistortion, {0.0, 4000.0});
+  EXPECT_NEAR(feature(f.with, "h3_in_phase", -1) - feature(f.clean, "h3_in_phase", -1), 1000.0, 20.0);
+  EXPECT_NEAR(feature(f.with, "h3_in_phase", 0) - feature(f.clean, "h3_in_phase", 0), 0.0, 5.0);
+}
+
+// Encoder error es sin(2 pi theta / 10 deg) at 0.3 deg swing is nearly a
+// table scale error 2 pi es / 10 deg: the gyro/table gain drops by that (5 %).
+TEST(EffectSignature, EncoderCyclicErrorIsSeenByTheTableOnly) {
+  const auto f = features(onePoint(Axis::kX, 1.0, 0.3, 20.0), EffectId::kEncoderCyclicError, {36.0, 0.0});
+  const double scale = kTwoPi * 0.01 / 10.0;
+  EXPECT_NEAR(feature(f.with, "gain") - feature(f.clean, "gain"), -scale * 1e6, 0.05 * scale * 1e6);
+}
+
+TEST(EffectSignature, TimestampJitterAddsTwiceItsVarianceToTheIntervals) {
+  const auto f = features(onePoint(Axis::kX, 1.0, 3.0, 20.0), EffectId::kTimestampJitter, {400.0});
+  EXPECT_NEAR(feature(f.with, "imu_interval_var") - feature(f.clean, "imu_interval_var"), 800.0, 80.0);
+}
+
+TEST(EffectSignature, ClockDriftShowsInTheImuIntervalsAndTheDelayTrack) {
+  const auto f = features(onePoint(Axis::kX, 1.0, 3.0, 20.0), EffectId::kClockDrift, {50.0});
+  EXPECT_NEAR(feature(f.with, "imu_interval") - feature(f.clean, "imu_interval"), 50.0, 0.5);
+  // The IMU stamps fall behind by 50 ppm of session time: 15 s between the
+  // first and last segment middles -> 750 us more delay.
+  const double d0 = feature(f.with, "delay", -2, 0), d3 = feature(f.with, "delay", -2, 3);
+  EXPECT_NEAR(d3 - d0, 50e-6 * 15.0 * 1e6, 10.0);
+}
+
+// 10 per mille over 10 000 frames: 100 +- 30 (3 sigma binomial).
+TEST(EffectSignature, DroppedFramesAreCountedAsLost) {
+  const auto f = features(onePoint(Axis::kX, 1.0, 3.0, 20.0), EffectId::kDroppedFrames, {10.0});
+  EXPECT_NEAR(feature(f.with, "imu_lost") * 4.0, 100.0, 30.0);
+  EXPECT_EQ(feature(f.clean, "imu_lost"), 0.0);
+}
+
+// 10 deg latitude error: Y (north) gyro trend changes by
+// 15.041 (cos 50 - cos 40) deg/h, Z (up) by 15.041 (sin 50 - sin 40).
+TEST(EffectSignature, EarthRateProjectionChangesTheTrends) {
+  const auto f = features(onePoint(Axis::kX, 1.0, 3.0, 20.0), EffectId::kEarthRateProjection, {10.0, 0.0});
+  const double c = kEarthRateDegPerH;
+  EXPECT_NEAR(feature(f.with, "trend", 1) - feature(f.clean, "trend", 1),
+              c * (std::cos(50 * kRadPerDeg) - std::cos(40 * kRadPerDeg)), 0.05);
+  EXPECT_NEAR(feature(f.with, "trend", 2) - feature(f.clean, "trend", 2),
+              c * (std::sin(50 * kRadPerDeg) - std::sin(40 * kRadPerDeg)), 0.05);
+}
+
+TEST(TimingAudit, CountsGapsAndMeasuresIntervals) {
+  std::vector<std::unique_ptr<model::Effect>> e;
+  e.push_back(makeEffect(EffectId::kClockDrift, {20.0}));
+  const Recording rec = simulateWith(onePoint(Axis::kX, 1.0, 3.0, 10.0), std::move(e));
+  const TimingAudit a = auditTiming(rec, 1e-3, 2e-3);
+  EXPECT_NEAR(a.imu.intervalMeanPpm, 20.0, 0.2);
+  EXPECT_NEAR(a.table.intervalMeanPpm, 0.0, 0.2);
+  EXPECT_EQ(a.imu.gaps, 0u);
+  EXPECT_EQ(a.table.duplicates, 0u);
+}
+
+}  // namespace
+}  // namespace fog::diagnosis
