@@ -22,6 +22,8 @@ class CliArguments {
   std::optional<std::string> text(const std::string& name);
   // Missing: fallback; present but not a finite number: an error.
   Result<double> number(const std::string& name, double fallback);
+  // Whether an option was given at all (does not mark it used).
+  bool has(const std::string& name) const { return values_.count(name) > 0 || flags_.count(name) > 0; }
   const std::vector<std::string>& positionals() const { return positionals_; }
   // An error naming the first option nobody asked for, if any.
   Status checkAllUsed() const;

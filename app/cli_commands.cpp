@@ -19,11 +19,16 @@
 #include "analysis/statistics.h"
 #include "analysis/theory.h"
 #include "common/version.h"
+#include "diagnosis/effects.h"
 #include "model/simulator.h"
 #include "protocol/recording_builder.h"
 #include "session/session_file.h"
 #include "cli_common.h"
 #include "session_commands.h"
+#include "sim_options.h"
+#ifdef FOG_HAVE_SERIAL
+#include "serial_command.h"
+#endif
 
 namespace fog::app {
 
@@ -37,87 +42,45 @@ namespace {
     var = *v_;                                    \
   }
 
-Result<TestPlan> readPlan(CliArguments& args) {
-  auto file = args.text("plan");
-  auto preset = args.text("preset");
-  auto axis = args.text("axis");
-  auto freq = args.number("freq-hz", 0.0);
-  auto amp = args.number("amp-deg", 0.0);
-  auto duration = args.number("duration-s", 0.0);
-  auto settle = args.number("settle-s", -1.0);
-  for (const auto* r : {&freq, &amp, &duration, &settle})
-    if (!*r) return r->status();
-  const bool single = axis || args.text("freq-hz") || args.text("amp-deg") || args.text("duration-s");
-  if ((file ? 1 : 0) + (preset ? 1 : 0) + (single ? 1 : 0) > 1)
-    return invalidArgument("give one of --plan, --preset or --axis/--freq-hz/--amp-deg/--duration-s");
-  if (file) {
-    std::ifstream in(*file);
-    if (!in) return ioError("cannot read plan file '" + *file + "'");
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    auto plan = testPlanFromJson(text);
-    if (!plan) return invalidArgument(*file + ": " + plan.status().message());
-    return plan;
-  }
-  if (single) {
-    TestPoint p;
-    if (axis) {
-      auto a = parseAxis(*axis);
-      if (!a) return a.status();
-      p.axis = *a;
-    }
-    if (!args.text("freq-hz") || !args.text("amp-deg"))
-      return invalidArgument("a single test point needs --freq-hz and --amp-deg");
-    p.frequencyHz = *freq;
-    p.amplitudeDeg = *amp;
-    p.durationS = args.text("duration-s") ? *duration : 30.0 / std::max(p.frequencyHz, 1e-9);
-    p.settleS = *settle >= 0.0 ? *settle : std::min(5.0, 1.0 / std::max(p.frequencyHz, 1e-9));
-    TestPlan plan;
-    plan.points.push_back(p);
-    return plan;
-  }
-  return presetPlan(preset.value_or("paper"));
-}
-
-Result<model::SimConfig> readSimConfig(CliArguments& args) {
-  model::SimConfig c;
-  auto seed = args.number("seed", 1.0);
-  if (!seed) return seed.status();
-  if (*seed < 0 || *seed != std::floor(*seed)) return invalidArgument("--seed must be a whole number >= 0");
-  c.seed = static_cast<std::uint64_t>(*seed);
-  struct Field {
-    const char* name;
-    double* target;
-    double scale;
-  } fields[] = {{"arw-deg-sqrt-h", &c.fog.arwDegPerSqrtH, 1.0},
-                {"bias-instability-deg-h", &c.fog.biasInstabilityDegPerH, 1.0},
-                {"pulse-equivalent-deg", &c.fog.pulseEquivalentDeg, 1.0},
-                {"table-freq-error-ppm", &c.turntable.frequencyErrorPpm, 1.0},
-                {"counter-hz", &c.samplingBoard.counterHz, 1.0},
-                {"latitude-deg", &c.earth.latitudeDeg, 1.0}};
-  for (auto& f : fields) {
-    auto v = args.number(f.name, *f.target);
-    if (!v) return v.status();
-    *f.target = *v;
-  }
-  auto gyroDelay = args.number("gyro-delay-ms", c.fog.ownDelayS() * 1e3);
-  auto bits = args.number("counter-bits", c.samplingBoard.counterBits);
-  auto start = args.number("counter-start", c.samplingBoard.counterStart);
-  for (const auto* r : {&gyroDelay, &bits, &start})
-    if (!*r) return r->status();
-  c.fog.setOwnDelayS(*gyroDelay * 1e-3);
-  c.samplingBoard.counterBits = static_cast<int>(*bits);
-  if (*start < 0 || *start > 4294967295.0) return invalidArgument("--counter-start must be within 0 .. 2^32-1");
-  c.samplingBoard.counterStart = static_cast<std::uint32_t>(*start);
-  std::string why;
-  if (!c.isValid(&why)) return invalidArgument(why);
-  return c;
-}
-
 int printReport(const Result<analysis::DelayReport>& report, const analysis::ReportContext& context, bool json) {
   if (!report) return fail(report.status(), exitCodeFor(report.status()));
   std::cout << (json ? analysis::formatReportJson(*report, context) + "\n"
                      : analysis::formatReportText(*report, context));
   return 0;
+}
+
+// --effect NAME=V[,V...][+NAME=V...]: unmodelled effects from the diagnosis
+// library (docs/diagnosis.md) added to the simulated chain.
+Result<std::vector<std::unique_ptr<model::Effect>>> readEffects(const std::string& text, const model::SimConfig& config) {
+  std::vector<std::unique_ptr<model::Effect>> effects;
+  std::stringstream list(text);
+  std::string item;
+  while (std::getline(list, item, '+')) {
+    const auto eq = item.find('=');
+    auto id = diagnosis::effectIdFromName(item.substr(0, eq));
+    if (!id) return id.status();
+    const auto& spec = diagnosis::effectSpec(*id);
+    std::vector<double> values;
+    std::stringstream numbers(eq == std::string::npos ? "" : item.substr(eq + 1));
+    std::string number;
+    while (std::getline(numbers, number, ',')) {
+      char* end = nullptr;
+      const double v = std::strtod(number.c_str(), &end);
+      if (number.empty() || *end != '\0' || !std::isfinite(v))
+        return invalidArgument("--effect " + spec.name + ": '" + number + "' is not a number");
+      values.push_back(v);
+    }
+    if (values.size() != spec.parameters.size()) {
+      std::string names;
+      for (const auto& p : spec.parameters) names += (names.empty() ? "" : ",") + p.name + " (" + p.unit + ")";
+      return invalidArgument("--effect " + spec.name + " takes " + std::to_string(spec.parameters.size()) +
+                             " value(s): " + names);
+    }
+    diagnosis::EffectContext context;
+    context.earth = config.earth;
+    effects.push_back(diagnosis::makeEffect(*id, values, context));
+  }
+  return effects;
 }
 
 // Copies every byte a source delivers into a file (--save-raw) on its way
@@ -149,6 +112,15 @@ class RawFileTee : public acquisition::ByteSource {
 int runCommand(CliArguments& args) {
   const bool json = args.flag("json");
   auto source = args.text("source").value_or("sim");
+  if (source == "serial") {
+#ifdef FOG_HAVE_SERIAL
+    return runSerialCommand(args);
+#else
+    return fail(invalidArgument("the serial source needs the Qt build of fogbench-cli (QSerialPort; the release "
+                                "preset); this build has no Qt"),
+                2);
+#endif
+  }
   auto savePath = args.text("save-raw");
   auto speed = args.number("speed", 0.0);
   if (!speed) return fail(speed.status(), 2);
@@ -160,16 +132,21 @@ int runCommand(CliArguments& args) {
   if (!config) return fail(config.status(), 2);
   auto sessionOut = readSessionOutput(args);
   if (!sessionOut) return fail(sessionOut.status(), 2);
+  const auto effectText = args.text("effect");
   if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
   if (!args.positionals().empty()) return fail(invalidArgument("unexpected argument '" + args.positionals()[0] + "'"), 2);
-  if (source != "sim") return fail(invalidArgument("source '" + source + "' is not available; use --source sim"), 2);
+  if (source != "sim") return fail(invalidArgument("source '" + source + "' is not available; use --source sim or serial"), 2);
   if (*speed < 0) return fail(invalidArgument("--speed must be >= 0 (1 = real time, 0 = as fast as possible)"), 2);
+  auto effects = effectText ? readEffects(*effectText, *config) : Result<std::vector<std::unique_ptr<model::Effect>>>(
+                                                                      std::vector<std::unique_ptr<model::Effect>>{});
+  if (!effects) return fail(effects.status(), 2);
 
-  auto simulator = acquisition::SimulatorSource::create(*config, *plan, *speed);
+  auto simulator = acquisition::SimulatorSource::create(*config, *plan, *speed, std::move(*effects));
   if (!simulator) return fail(simulator.status(), 2);
   acquisition::AcquisitionOptions options;
   options.constants = *constants;
-  options.reportContext.source = "simulator, seed " + std::to_string(config->seed) + ", fogbench " + FOG_VERSION;
+  options.reportContext.source = "simulator, seed " + std::to_string(config->seed) +
+                                 (effectText ? ", effect " + *effectText : std::string()) + ", fogbench " + FOG_VERSION;
   for (const auto& t : (*simulator)->truth()) options.reportContext.trueLagMs.push_back(t.lagS * 1e3);
   if (*sessionOut) {
     options.sessionPath = (*sessionOut)->path;

@@ -28,7 +28,8 @@ Result<analysis::BenchConstants> readConstants(CliArguments& args, const BenchSe
 void storeConstants(const analysis::BenchConstants& constants, BenchSettings& bench);
 
 // The named plans of `run --preset` and `report --preset`: paper (both paper
-// conditions on X), paper-slow (0.1 Hz / 10 deg), paper-fast (1 Hz / 3 deg).
+// conditions on X), paper-slow (0.1 Hz / 10 deg), paper-fast (1 Hz / 3 deg),
+// noise (600 s static segment on X, then paper-fast).
 Result<TestPlan> presetPlan(const std::string& name);
 
 }  // namespace fog::app

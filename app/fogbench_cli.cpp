@@ -9,9 +9,13 @@
 #include "cli_commands.h"
 #include "common/version.h"
 #include "diagnose_command.h"
+#include "noise_command.h"
 #include "session_commands.h"
 #ifdef FOG_HAVE_REPORT
 #include "report_command.h"
+#endif
+#ifdef FOG_HAVE_SERIAL
+#include "serial_command.h"
 #endif
 
 namespace {
@@ -21,16 +25,27 @@ const char* kHelp = R"(fogbench-cli: measure how late a fiber-optic gyro IMU rep
 usage:
   fogbench-cli run [plan] [simulator options] [constants] [--save-raw FILE] [--json]
       Run a test plan on the built-in simulator and print the delay report.
-      plan: --plan FILE.json | --preset paper|paper-slow|paper-fast (default paper:
+      plan: --plan FILE.json | --preset paper|paper-slow|paper-fast|noise (default paper:
             0.1 Hz / 10 deg for 294 s and 1 Hz / 3 deg for 60 s on X)
             | --axis x --freq-hz 0.1 --amp-deg 10 --duration-s 294 [--settle-s 5]
-      --source sim (the only source so far), --seed N, --speed X (X times real time; default 0:
+      --source sim (default), --seed N, --speed X (X times real time; default 0:
       as fast as possible),
       --gyro-delay-ms D (gyro's own delay, default 0.2358),
       --arw-deg-sqrt-h, --bias-instability-deg-h, --pulse-equivalent-deg,
-      --table-freq-error-ppm, --counter-hz, --counter-bits, --counter-start
+      --table-freq-error-ppm, --counter-hz, --counter-bits, --counter-start,
+      --effect NAME=V[,V][+NAME=V...] (unmodelled effects from docs/diagnosis.md,
+      e.g. scale_factor_error=200)
       --out SESSION.fbs [--operator NAME --imu-model M --imu-serial S --notes TEXT]:
             record the run into a new session file (raw stream, samples, result)
+  fogbench-cli run --source serial --port DEV [--baud 921600] [--parity none|even|odd]
+                  [--data-bits 8] [--stop-bits 1] [--stall-warning-s 2] [--stall-timeout-s 10]
+                  [plan] [constants] [--out SESSION.fbs ...] [--json]
+      Record a sampling board on a serial port (Qt build) until its plan is done;
+      the plan, if given, is stored as the one intended (the board runs its own).
+      A port that vanishes or a line silent for --stall-timeout-s ends the run as
+      incomplete, keeping everything received (docs/serial.md).
+  fogbench-cli ports
+      List the serial ports (Qt build).
   fogbench-cli analyze FILE [constants] [--json] [--no-store]
       The same report from a saved raw sampling-board byte stream, or from a
       session file (its own bench constants unless given; the result is stored
@@ -59,6 +74,11 @@ usage:
       differ, which effect explains it, held-out shrink, alias groups, verdict.
   fogbench-cli bench-diagnosis [--trials N] [--seed S] [--threads T]
       Blind check of the diagnosis on sessions with withheld effects.
+  fogbench-cli noise SESSION.fbs|FILE.bin [--json] [--axis x|y|z] [--taus-per-octave N]
+                     [--freq-hz F --amp-deg A --duration-s T] [--latitude-deg L]
+      Gyro noise from the static segments (docs/noise.md): Allan deviation with
+      confidence intervals, IEEE 952 noise terms, bias, Earth-corrected bias and
+      the predicted lag sigma of a swing test. Exit 1 when there is no static segment.
   fogbench-cli --version | help
 
 constants: --read-delay-ms (0.05) --read-delay-std-ms (0) --board-delay-ms (0.28)
@@ -92,6 +112,15 @@ int main(int argc, char** argv) {
     return 2;
   }
   if (command == "run") return fog::app::runCommand(*parsed);
+  if (command == "ports") {
+#ifdef FOG_HAVE_SERIAL
+    return fog::app::portsCommand(*parsed);
+#else
+    std::cerr << "fogbench-cli: listing serial ports needs the Qt build (QSerialPort; the release preset); this "
+                 "build has no Qt\n";
+    return 2;
+#endif
+  }
   if (command == "analyze") return fog::app::analyzeCommand(*parsed);
   if (command == "sessions") return fog::app::sessionsCommand(*parsed);
   if (command == "replay") return fog::app::replayCommand(*parsed);
@@ -101,6 +130,7 @@ int main(int argc, char** argv) {
   if (command == "accuracy") return fog::app::accuracyCommand(*parsed);
   if (command == "diagnose") return fog::app::diagnoseCommand(*parsed);
   if (command == "bench-diagnosis") return fog::app::benchDiagnosisCommand(*parsed);
+  if (command == "noise") return fog::app::noiseCommand(*parsed);
   if (command == "report") {
 #ifdef FOG_HAVE_REPORT
     return fog::app::reportCommand(*parsed);

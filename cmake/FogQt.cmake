@@ -1,7 +1,7 @@
 # Picks the Qt and Qwt pair: Qt 6 + Qwt >= 6.2 where both are installed,
 # otherwise Qt 5.15 + Qwt 6.1 (Debian 12 packages Qwt only for Qt 5).
 # Defines QT_VERSION_MAJOR, the Qt targets as Qt::<Module>, and Qwt::Qwt.
-set(FOG_QT_COMPONENTS Core Gui Widgets Svg PrintSupport Concurrent Test)
+set(FOG_QT_COMPONENTS Core Gui Widgets Svg PrintSupport Concurrent Test SerialPort)
 
 find_package(Qt6 QUIET COMPONENTS ${FOG_QT_COMPONENTS})
 if(Qt6_FOUND)

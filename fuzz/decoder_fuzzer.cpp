@@ -1,7 +1,8 @@
 // libFuzzer entry for the sampling-board decoder and recording builder.
 //
 // The input is decoded twice: in one piece and in chunks whose sizes come from
-// a generator seeded by the input, and both must agree (frames and health).
+// a generator seeded by the input, and both must agree (frames, the damage
+// attributed to each frame, and health).
 // Every push must leave fewer than kMaxFrameBytes pending, and
 // decodeRecording must return a value or a status, never crash.
 
@@ -57,6 +58,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     check(chunkedFrames[i].ticks == wholeFrames[i].ticks);
     check(chunkedFrames[i].frame.sequence == wholeFrames[i].frame.sequence);
     check(chunkedFrames[i].frame.counter == wholeFrames[i].frame.counter);
+    // Damage is attributed to the same frame however the input is split.
+    check(chunkedFrames[i].lostBefore == wholeFrames[i].lostBefore);
+    check(chunkedFrames[i].duplicatesBefore == wholeFrames[i].duplicatesBefore);
+    check(chunkedFrames[i].checksumFailuresBefore == wholeFrames[i].checksumFailuresBefore);
+    check(chunkedFrames[i].outOfOrderBefore == wholeFrames[i].outOfOrderBefore);
+    check(chunkedFrames[i].bytesSkippedBefore == wholeFrames[i].bytesSkippedBefore);
   }
   check(sameHealth(whole.health(), chunked.health()));
   check(whole.pendingBytes() == chunked.pendingBytes());

@@ -1,5 +1,6 @@
-// Writes a few small, valid sampling-board streams as libFuzzer seeds:
-//   fog_fuzz_seed_corpus fuzz/corpus/decoder
+// Writes a few small, valid sampling-board streams as libFuzzer seeds, and,
+// given a second folder, small session files made from them:
+//   fog_fuzz_seed_corpus fuzz/corpus/decoder [SESSION_SEED_DIR]
 
 #include <cstdint>
 #include <cstdio>
@@ -8,6 +9,8 @@
 #include <vector>
 
 #include "protocol/frame.h"
+#include "protocol/recording_builder.h"
+#include "session/session_file.h"
 
 namespace {
 
@@ -53,11 +56,30 @@ std::vector<std::uint8_t> recording(int ms, std::uint32_t start, int bits) {
   return out;
 }
 
+// A session holding `stream`: finished (complete or not) with its decoded
+// samples and a result, or left as a crashed recorder leaves it.
+bool writeSession(const std::string& path, const std::vector<std::uint8_t>& stream, int kind) {
+  std::remove(path.c_str());
+  fog::SessionInfo info;
+  info.operatorName = "fuzz";
+  info.source = "fog_fuzz_seed_corpus";
+  info.plan.points.push_back(fog::TestPlan::paperFast().points.front());
+  auto writer = fog::session::SessionWriter::create(path, info);
+  if (!writer) return false;
+  if (!(*writer)->appendRaw(stream.data(), stream.size()).isOk()) return false;
+  if (kind == 2) return (*writer)->flush().isOk();  // interrupted: no finish()
+  auto rec = decodeRecording(stream);
+  if (rec && !(*writer)->storeRecording(*rec).isOk()) return false;
+  if (!(*writer)->finish(kind == 0, kind == 0 ? "" : "serial port vanished (after 0.1 s)").isOk()) return false;
+  writer->reset();
+  return fog::session::addResult(path, R"({"analysed_by":"seed"})", R"({"report_format":1,"test_points":[]})").isOk();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 2) {
-    std::fprintf(stderr, "usage: %s <corpus directory>\n", argv[0]);
+  if (argc != 2 && argc != 3) {
+    std::fprintf(stderr, "usage: %s <decoder corpus directory> [<session corpus directory>]\n", argv[0]);
     return 2;
   }
   const std::string dir = argv[1];
@@ -87,6 +109,17 @@ int main(int argc, char** argv) {
   if (!ok) {
     std::fprintf(stderr, "could not write the seeds to %s\n", dir.c_str());
     return 1;
+  }
+  if (argc == 3) {
+    const std::string sessions = argv[2];
+    ok &= writeSession(sessions + "/complete.fbs", recording(40, 1000, 32), 0);
+    ok &= writeSession(sessions + "/incomplete.fbs", recording(20, 0xFFFF0000u, 32), 1);
+    ok &= writeSession(sessions + "/interrupted.fbs", recording(20, 5000, 16), 2);
+    ok &= writeSession(sessions + "/garbage_stream.fbs", messy, 0);
+    if (!ok) {
+      std::fprintf(stderr, "could not write the session seeds to %s\n", sessions.c_str());
+      return 1;
+    }
   }
   return 0;
 }

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Set up, build and run every test: the full build (core, CLI, GUI) through
 # CTest, then a headless build without Qt, which proves core/ and the CLI need
-# no Qt, and runs its core tests again.
+# no Qt, and runs its core tests again; last, the libFuzzer targets run for a
+# bounded time each (FUZZ_SECONDS, default 60).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -16,3 +17,20 @@ echo "== headless build: core and CLI only, no Qt =="
 cmake --preset headless
 cmake --build --preset headless
 ctest --preset headless --output-on-failure -j2
+
+echo "== fuzzing: sampling-board decoder and session reader (libFuzzer + ASan/UBSan, clang) =="
+# Bounded: FUZZ_SECONDS each (default 60). Seeds: the committed decoder corpus
+# and small simulated streams and sessions written by fog_fuzz_seed_corpus.
+# A crash fails the run and leaves its input in the scratch folder printed
+# below (docs/reliability.md).
+fuzz_seconds="${FUZZ_SECONDS:-60}"
+cmake --preset fuzz
+cmake --build --preset fuzz --target fog_fuzz_decoder fog_fuzz_session fog_fuzz_seed_corpus
+fuzz_dir="$(mktemp -d /tmp/fogbench-fuzz.XXXXXX)"
+echo "fuzz scratch: $fuzz_dir"
+mkdir -p "$fuzz_dir"/{seed-decoder,seed-session,decoder,session}
+build/fuzz/fuzz/fog_fuzz_seed_corpus "$fuzz_dir/seed-decoder" "$fuzz_dir/seed-session"
+build/fuzz/fuzz/fog_fuzz_decoder -max_total_time="$fuzz_seconds" -print_final_stats=1 \
+  -artifact_prefix="$fuzz_dir/decoder-" "$fuzz_dir/decoder" fuzz/corpus/decoder "$fuzz_dir/seed-decoder"
+build/fuzz/fuzz/fog_fuzz_session -max_total_time="$fuzz_seconds" -print_final_stats=1 \
+  -artifact_prefix="$fuzz_dir/session-" "$fuzz_dir/session" "$fuzz_dir/seed-session"

@@ -70,6 +70,7 @@ Result<AcquisitionResult> acquire(ByteSource& source, const AcquisitionOptions& 
   auto lastBatch = started;
   auto lastByte = started;
   bool ended = false;
+  bool boardRecorded = false;  // a STATUS with phase recording has been seen
 
   auto deliver = [&](Clock::time_point now) {
     lastBatch = now;
@@ -109,11 +110,23 @@ Result<AcquisitionResult> acquire(ByteSource& source, const AcquisitionOptions& 
       decoder.push(bytes, decoded);
       builder.add(decoded);
       batch.frames.insert(batch.frames.end(), decoded.begin(), decoded.end());
+      if (options.endWhenBoardDone)
+        for (const auto& d : decoded) {
+          const auto* status = std::get_if<protocol::StatusPayload>(&d.frame.payload);
+          if (!status) continue;
+          if (status->phase == protocol::TestPhase::kRecording) boardRecorded = true;
+          if (status->phase == protocol::TestPhase::kDone && boardRecorded) ended = true;
+        }
     } else if (writer) {
       // A quiet line still commits what is buffered on time.
       if (auto s = writer->appendRaw(nullptr, 0); !s.isOk()) return s;
     }
     if (now - lastBatch >= options.batchInterval) deliver(now);
+    if (!ended && options.stallLimit.count() > 0 && now - lastByte >= options.stallLimit) {
+      result.incompleteReason = "no data for " + fixed1(seconds(now - lastByte)) + " s from " +
+                                source.description() + " (after " + fixed1(seconds(now - started)) + " s)";
+      break;
+    }
   }
   result.complete = ended && result.incompleteReason.empty();
   deliver(Clock::now());

@@ -25,6 +25,9 @@
 //    the bench must never do). Data problems are not errors: the analysis
 //    status says why no delay was reported.
 //  - Without a sessionPath nothing is written (the command line's quick runs).
+//  - With a stallLimit, a source silent for that long ends the run as
+//    incomplete ("no data for 10 s"); with endWhenBoardDone the board's
+//    "done" STATUS after a recording phase ends it as complete.
 
 #include <atomic>
 #include <chrono>
@@ -51,6 +54,12 @@ struct AcquisitionOptions {
   std::chrono::milliseconds readTimeout{20};
   std::chrono::milliseconds batchInterval{33};  // ~30 batches per second
   std::chrono::milliseconds stallWarning{1000}; // "no data for 1.0 s" from here on
+  // No byte for this long ends the run as incomplete ("no data for 10 s");
+  // zero: wait for ever (the simulator and replay never stall).
+  std::chrono::milliseconds stallLimit{0};
+  // A live board keeps sending after its plan: end the run as complete at
+  // the first STATUS frame saying phase "done" after a recording phase.
+  bool endWhenBoardDone = false;
 };
 
 struct AcquisitionBatch {

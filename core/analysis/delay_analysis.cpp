@@ -6,6 +6,7 @@
 #include <future>
 #include <sstream>
 
+#include "analysis/data_coverage.h"
 #include "analysis/least_squares.h"
 #include "analysis/sin_cos_series.h"
 #include "analysis/statistics.h"
@@ -153,6 +154,16 @@ Result<TestPointResult> analyzeTestPoint(const TestPointData& data, double incre
   r.imuSamples = data.imu.size();
   r.lostImuFrames = ch.gyro.lostFrames;
 
+  // What is missing, and whether the rest can still support a delay: checked
+  // before the frequency is estimated from zero crossings a gap would hide.
+  const DataCoverage coverage = measureCoverage(data);
+  r.lostTableFrames = coverage.lostTableFrames;
+  r.coveredS = coverage.coveredS();
+  r.largestGapS = coverage.largestGapS;
+  r.damage = data.health;
+  if (const double f = data.nominalFrequencyHz > 0.0 ? data.nominalFrequencyHz : 0.0; f > 0.0)
+    if (auto why = coverageRefusal(coverage, f); !why.empty()) return insufficientData(why);
+
   // Nominal frequency: what the plan said, checked against the data.
   auto measured = estimateSwingFrequencyHz(ch.table);
   if (!measured) return measured.status();
@@ -164,6 +175,8 @@ Result<TestPointResult> analyzeTestPoint(const TestPointData& data, double incre
   }
   r.nominalFrequencyHz = f0;
   r.periods = r.durationS * f0;
+  if (!(data.nominalFrequencyHz > 0.0))
+    if (auto why = coverageRefusal(coverage, f0); !why.empty()) return insufficientData(why);
   if (r.periods < 2.0)
     return insufficientData("test point " + std::to_string(data.index + 1) + " covers " + fmt(r.periods, 2) +
                             " swing periods; a delay needs at least two whole periods");
@@ -252,6 +265,10 @@ Result<TestPointResult> analyzeTestPoint(const TestPointData& data, double incre
   // What the user should know about this result.
   if (r.lostImuFrames > 0)
     r.warnings.push_back(std::to_string(r.lostImuFrames) + " IMU frames were lost; their increments are missing");
+  if (r.lostTableFrames > 0)
+    r.warnings.push_back(std::to_string(r.lostTableFrames) + " table frames were lost; the data cover " +
+                         fmt(r.coveredS, 2) + " of " + fmt(r.durationS, 2) + " s (longest gap " +
+                         fmt(r.largestGapS * 1e3, 1) + " ms)");
   if (joint->chiSquarePerDof > 2.0 || joint->chiSquarePerDof < 0.5)
     r.warnings.push_back("the residuals do not match the noise model (chi^2/dof = " +
                          fmt(joint->chiSquarePerDof, 2) + "); an unmodelled effect may be present");
@@ -305,11 +322,24 @@ Result<DelayReport> analyzeRecording(const Recording& recording, const BenchCons
     scale = constants.pulseEquivalentDeg;
   }
   for (const auto& tp : recording.testPoints) {
+    if (tp.kind == TestPointKind::kStatic) {
+      StaticSegment s;
+      s.index = tp.index;
+      s.axis = tp.axis;
+      s.imuSamples = tp.imu.size();
+      s.durationS = tp.imu.size() > 1 ? tp.imu.back().timeS - tp.imu.front().timeS : 0.0;
+      report.staticSegments.push_back(s);
+      continue;
+    }
     auto r = analyzeTestPoint(tp, scale, constants);
     if (r) report.points.push_back(std::move(*r));
     else report.failedPoints.push_back("test point " + std::to_string(tp.index + 1) + ": " + r.status().message());
   }
   if (report.points.empty()) {
+    if (report.failedPoints.empty() && !report.staticSegments.empty())
+      return insufficientData("the recording holds only static segments (" +
+                              std::to_string(report.staticSegments.size()) +
+                              "): they measure gyro noise, not delay; use fogbench-cli noise");
     if (report.failedPoints.empty()) return insufficientData("the recording holds no test point");
     std::string why = report.failedPoints.front();
     return insufficientData("no test point gave a delay; " + why);

@@ -52,6 +52,13 @@ struct TestPointResult {
   double durationS = 0.0;
   double periods = 0.0;
   std::size_t tableSamples = 0, imuSamples = 0, lostImuFrames = 0;
+  // How the stream's damage affected this test point (data_coverage.h):
+  // table frames missing from the stamp grid, the time the data cover and the
+  // longest stretch without data; the stream's counters met while the point
+  // was recorded (zero when the source cannot tell).
+  std::size_t lostTableFrames = 0;
+  double coveredS = 0.0, largestGapS = 0.0;
+  StreamHealth damage;
 
   SineFit tableNominal, gyroNominal;  // 3-parameter, at the nominal frequency
   SineFit tableFit, gyroFit;          // 4-parameter, frequency free
@@ -84,8 +91,18 @@ struct FrequencyConsistency {
   bool consistentWithPureDelay = true;  // p >= 0.01
 };
 
+// A static segment of the recording (table at rest): no delay to measure; its
+// gyro noise is analysed by fog::noise (fogbench-cli noise).
+struct StaticSegment {
+  int index = 0;
+  Axis axis = Axis::kX;
+  double durationS = 0.0;
+  std::size_t imuSamples = 0;
+};
+
 struct DelayReport {
   std::vector<TestPointResult> points;
+  std::vector<StaticSegment> staticSegments;  // skipped by the delay analysis, never failures
   std::vector<std::string> failedPoints;  // one line per test point that gave no delay, saying why
   std::vector<FrequencyConsistency> consistency;  // axes with two or more frequencies
   BenchConstants constants;
@@ -108,7 +125,9 @@ double lagFromPhasesMs(double tablePhaseMs, double gyroPhaseMs, double periodMs)
 Result<TestPointResult> analyzeTestPoint(const TestPointData& data, double incrementScale,
                                          const BenchConstants& constants);
 
-// Analyses every test point. Fails only when no test point gives a delay.
+// Analyses every swing test point; static segments are listed in
+// staticSegments and not analysed. Fails only when no test point gives a
+// delay (a recording of static segments only says so).
 Result<DelayReport> analyzeRecording(const Recording& recording, const BenchConstants& constants);
 
 std::vector<FrequencyConsistency> frequencyConsistency(const std::vector<TestPointResult>& points);

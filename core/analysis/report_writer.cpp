@@ -103,8 +103,18 @@ std::string formatReportText(const DelayReport& report, const ReportContext& con
       << f("%.2e", p.noise.gyroQuantisationDeg) << " deg, angle random walk "
       << f("%.4f", p.noise.gyroArwDegPerSqrtH) << " deg/sqrt(h)\n";
     if (p.lostImuFrames) o << "  lost IMU frames: " << p.lostImuFrames << "\n";
+    if (p.lostImuFrames || p.lostTableFrames || p.damage.duplicateFrames || p.damage.checksumFailures ||
+        p.damage.bytesSkipped)
+      o << "  affected: " << p.lostTableFrames << " table and " << p.lostImuFrames << " IMU frames lost, "
+        << p.damage.duplicateFrames << " duplicated, " << p.damage.checksumFailures << " checksum failures, "
+        << p.damage.bytesSkipped << " bytes skipped; data cover " << f("%.2f", p.coveredS) << " of "
+        << f("%.2f", p.durationS) << " s (" << f("%.2f", p.durationS > 0 ? 100.0 * p.coveredS / p.durationS : 0.0)
+        << " %), longest gap " << f("%.1f", p.largestGapS * 1e3) << " ms\n";
     for (const auto& w : p.warnings) o << "  warning: " << w << "\n";
   }
+  for (const auto& s : report.staticSegments)
+    o << "\nTest point " << s.index + 1 << ": static segment, " << axisUpper(s.axis) << " axis, "
+      << f("%.1f", s.durationS) << " s at rest: no delay to measure (gyro noise: fogbench-cli noise)\n";
   for (const auto& fp : report.failedPoints) o << "\nno delay from " << fp << "\n";
   for (const auto& cc : report.consistency) {
     o << "\nDelay against frequency, " << axisUpper(cc.axis) << " axis (" << cc.points
@@ -169,6 +179,16 @@ std::string formatReportJson(const DelayReport& report, const ReportContext& con
                  {"gyro_quantisation_deg", p.noise.gyroQuantisationDeg},
                  {"gyro_arw_deg_per_sqrt_h", p.noise.gyroArwDegPerSqrtH}}},
                {"lost_imu_frames", p.lostImuFrames},
+               {"affected",
+                {{"lost_table_frames", p.lostTableFrames},
+                 {"lost_imu_frames", p.lostImuFrames},
+                 {"duplicate_frames", p.damage.duplicateFrames},
+                 {"checksum_failures", p.damage.checksumFailures},
+                 {"bytes_skipped", p.damage.bytesSkipped},
+                 {"out_of_order_frames", p.damage.outOfOrderFrames},
+                 {"covered_s", p.coveredS},
+                 {"time_covered", p.durationS > 0 ? p.coveredS / p.durationS : 0.0},
+                 {"largest_gap_s", p.largestGapS}}},
                {"warnings", p.warnings}};
     json track = json::array();
     for (const auto& d : p.periodTrack) track.push_back({{"time_s", d.timeS}, {"lag_ms", d.lagMs}});
@@ -190,6 +210,12 @@ std::string formatReportJson(const DelayReport& report, const ReportContext& con
                                             {"p_value", cc.pValue},
                                             {"consistent_with_pure_delay", cc.consistentWithPureDelay}});
   doc["failed_points"] = report.failedPoints;
+  doc["static_segments"] = json::array();
+  for (const auto& s : report.staticSegments)
+    doc["static_segments"].push_back({{"index", s.index},
+                                      {"axis", axisName(s.axis)},
+                                      {"duration_s", s.durationS},
+                                      {"imu_samples", s.imuSamples}});
   return doc.dump(2);
 }
 

@@ -48,8 +48,14 @@ struct TestPointData {
   Axis axis = Axis::kX;
   double nominalFrequencyHz = 0.0;  // 0 when the source does not say
   double nominalAmplitudeDeg = 0.0; // 0 when the source does not say
+  TestPointKind kind = TestPointKind::kSwing;  // kStatic: table at rest (gyro noise)
   std::vector<TableSample> table;
   std::vector<ImuSample> imu;
+  // Frames and damage met while this test point was recorded (frames lost by
+  // sequence gaps, duplicates, checksum failures, bytes skipped), from the
+  // decoder; all zero when the source cannot tell (imported data, samples
+  // stored in a session file, which keeps only the stream-wide counters).
+  StreamHealth health;
 };
 
 struct Recording {

@@ -24,6 +24,21 @@ Result<Axis> parseAxis(std::string_view text) {
   return invalidArgument("axis must be x, y or z, not '" + std::string(text) + "'");
 }
 
+const char* testPointKindName(TestPointKind kind) {
+  return kind == TestPointKind::kStatic ? "static" : "swing";
+}
+
+TestPoint TestPoint::staticSegment(Axis axis, double durationS, double settleS) {
+  TestPoint p;
+  p.axis = axis;
+  p.kind = TestPointKind::kStatic;
+  p.frequencyHz = 0.0;
+  p.amplitudeDeg = 0.0;
+  p.durationS = durationS;
+  p.settleS = settleS;
+  return p;
+}
+
 namespace {
 bool fail(std::string* error, const std::string& message) {
   if (error) *error = message;
@@ -37,6 +52,18 @@ std::string num(double v) {
 }  // namespace
 
 bool TestPoint::isValid(const TurntableLimits& limits, std::string* error) const {
+  if (isStatic()) {
+    if (frequencyHz != 0.0 || amplitudeDeg != 0.0 || startPhaseDeg != 0.0)
+      return fail(error, "a static segment has no frequency, amplitude or start phase (got " + num(frequencyHz) +
+                             " Hz, " + num(amplitudeDeg) + " deg, " + num(startPhaseDeg) + " deg); leave them out");
+    if (!std::isfinite(durationS) || durationS <= 0.0)
+      return fail(error, "a static segment needs a duration > 0 s, got " + num(durationS));
+    if (durationS > 24.0 * 3600.0)
+      return fail(error, "duration " + num(durationS) + " s is over 24 h; split the test into points");
+    if (!std::isfinite(settleS) || settleS < 0.0)
+      return fail(error, "settle time must be >= 0 s, got " + num(settleS));
+    return true;
+  }
   if (!std::isfinite(frequencyHz) || frequencyHz <= 0.0)
     return fail(error, "frequency must be > 0 Hz, got " + num(frequencyHz));
   if (frequencyHz > limits.maxFrequencyHz)
@@ -120,8 +147,16 @@ Result<TestPlan> testPlanFromJson(std::string_view text) {
     if (!p.is_object()) return invalidArgument(where + "must be an object");
     TestPoint point;
     double periods = 0.0;
+    bool gaveFrequency = false, gaveAmplitude = false;
     for (auto it = p.begin(); it != p.end(); ++it) {
       const std::string& key = it.key();
+      if (key == "kind") {
+        const std::string kind = it->is_string() ? it->get<std::string>() : "";
+        if (kind == "static") point.kind = TestPointKind::kStatic;
+        else if (kind == "swing") point.kind = TestPointKind::kSwing;
+        else return invalidArgument(where + "\"kind\" must be \"swing\" or \"static\"");
+        continue;
+      }
       if (key == "axis") {
         if (!it->is_string()) return invalidArgument(where + "\"axis\" must be \"x\", \"y\" or \"z\"");
         auto axis = parseAxis(it->get<std::string>());
@@ -131,13 +166,25 @@ Result<TestPlan> testPlanFromJson(std::string_view text) {
       }
       if (!it->is_number()) return invalidArgument(where + "\"" + key + "\" must be a number");
       const double v = it->get<double>();
-      if (key == "frequency_hz") point.frequencyHz = v;
-      else if (key == "amplitude_deg") point.amplitudeDeg = v;
+      if (key == "frequency_hz") {
+        point.frequencyHz = v;
+        gaveFrequency = true;
+      } else if (key == "amplitude_deg") {
+        point.amplitudeDeg = v;
+        gaveAmplitude = true;
+      }
       else if (key == "duration_s") point.durationS = v;
       else if (key == "settle_s") point.settleS = v;
       else if (key == "start_phase_deg") point.startPhaseDeg = v;
       else if (key == "periods") periods = v;
       else return invalidArgument(where + "unknown key \"" + key + "\"");
+    }
+    if (point.isStatic()) {
+      // A static segment has no swing: the defaults do not apply, and values
+      // given are kept so that validation can say they do not belong.
+      if (!gaveFrequency) point.frequencyHz = 0.0;
+      if (!gaveAmplitude) point.amplitudeDeg = 0.0;
+      if (periods != 0.0) return invalidArgument(where + "a static segment has no periods; give \"duration_s\"");
     }
     if (periods != 0.0) point.durationS = periods / point.frequencyHz;
     plan.points.push_back(point);
@@ -150,6 +197,13 @@ std::string testPlanToJson(const TestPlan& plan) {
   doc["rest_between_s"] = plan.restBetweenS;
   doc["points"] = nlohmann::json::array();
   for (const auto& p : plan.points) {
+    if (p.isStatic()) {
+      doc["points"].push_back({{"kind", "static"},
+                               {"axis", axisName(p.axis)},
+                               {"duration_s", p.durationS},
+                               {"settle_s", p.settleS}});
+      continue;
+    }
     doc["points"].push_back({{"axis", axisName(p.axis)},
                              {"frequency_hz", p.frequencyHz},
                              {"amplitude_deg", p.amplitudeDeg},

@@ -26,7 +26,14 @@ struct TurntableLimits {
   double maxAccelDegPerS2 = 3000.0;     // peak (2*pi*f)^2*A
 };
 
-// One sinusoidal swing: angle = amplitude * sin(2*pi*f*(t - t_start) + startPhase).
+// A test point either swings its axis or holds the table at rest (a static
+// segment, for gyro noise: bias, Earth rate and noise only; docs/noise.md).
+enum class TestPointKind { kSwing = 0, kStatic = 1 };
+const char* testPointKindName(TestPointKind kind);  // "swing", "static"
+
+// One sinusoidal swing: angle = amplitude * sin(2*pi*f*(t - t_start) + startPhase);
+// or, with kind == kStatic, the table at rest for settleS + durationS
+// (frequency and amplitude 0; `axis` names the gyro of interest).
 struct TestPoint {
   Axis axis = Axis::kX;
   double frequencyHz = 0.1;
@@ -34,8 +41,13 @@ struct TestPoint {
   double durationS = 294.0;  // recorded time after settling
   double settleS = 5.0;      // swing time before recording starts
   double startPhaseDeg = 0.0;
+  TestPointKind kind = TestPointKind::kSwing;  // last, so positional initialisers stay valid
 
-  double periodS() const { return 1.0 / frequencyHz; }
+  bool isStatic() const { return kind == TestPointKind::kStatic; }
+  // 0 for a static segment.
+  double periodS() const { return isStatic() ? 0.0 : 1.0 / frequencyHz; }
+  // A static segment: table at rest for durationS after settleS.
+  static TestPoint staticSegment(Axis axis, double durationS, double settleS = 0.0);
   // Empty when valid; otherwise what is wrong and what to do.
   bool isValid(const TurntableLimits& limits, std::string* error) const;
 };
@@ -55,7 +67,10 @@ struct TestPlan {
 
 // JSON plan file: {"points":[{"axis":"x","frequency_hz":0.1,"amplitude_deg":10,
 // "duration_s":294,"settle_s":5}], "rest_between_s":1}. Unknown keys are
-// refused so that a typo is not silently ignored.
+// refused so that a typo is not silently ignored. A static segment is
+// {"kind":"static","axis":"x","duration_s":600}; "kind" defaults to "swing"
+// and is written only for static segments, so swing plans read and write as
+// before.
 Result<TestPlan> testPlanFromJson(std::string_view json);
 std::string testPlanToJson(const TestPlan& plan);
 

@@ -245,6 +245,7 @@ Status exportCsv(const std::string& dirText, const SessionInfo& info, const Reco
     m.durationS = tp.durationS;
     m.settleS = tp.settleS;
     m.startPhaseDeg = tp.startPhaseDeg;
+    m.kind = tp.kind;
   }
   for (const auto& p : rec.testPoints) {
     if (p.index < 0) return invalidArgument("test point index " + std::to_string(p.index) + " is negative");
@@ -252,6 +253,7 @@ Status exportCsv(const std::string& dirText, const SessionInfo& info, const Reco
     m.axis = p.axis;
     m.frequencyHz = p.nominalFrequencyHz;
     m.amplitudeDeg = p.nominalAmplitudeDeg;
+    if (p.kind == TestPointKind::kStatic) m.kind = TestPointKind::kStatic;
   }
 
   const fs::path dir(dirText);

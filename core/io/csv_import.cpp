@@ -373,6 +373,8 @@ Result<ImportedSession> importTexts(const std::string& what, const std::string& 
     plan.durationS = m.hasPlan ? m.durationS : (p.table.size() > 1 ? p.table.back().timeS - p.table.front().timeS : 0.0);
     plan.settleS = m.settleS;
     plan.startPhaseDeg = m.startPhaseDeg;
+    plan.kind = m.kind;
+    p.kind = m.kind;
     info.plan.points.push_back(plan);
 
     counted.tableFrames += p.table.size();

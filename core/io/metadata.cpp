@@ -100,6 +100,7 @@ std::string metadataToJson(const Metadata& meta) {
   Json points = Json::array();
   for (const auto& p : meta.testPoints) {
     Json e = {{"axis", axisName(p.axis)}, {"frequency_hz", p.frequencyHz}, {"amplitude_deg", p.amplitudeDeg}};
+    if (p.kind == TestPointKind::kStatic) e["kind"] = "static";
     if (p.hasPlan) {
       e["duration_s"] = p.durationS;
       e["settle_s"] = p.settleS;
@@ -189,8 +190,13 @@ Result<Metadata> metadataFromJson(const std::string& path, const std::string& te
     if (!points[i].is_object()) return corruptData(path + ": \"" + where + "\" must be an object");
     const Reader r(path, points[i], where);
     FOG_RETURN_IF_ERROR(
-        r.checkKeys({"axis", "frequency_hz", "amplitude_deg", "duration_s", "settle_s", "start_phase_deg"}));
+        r.checkKeys({"axis", "frequency_hz", "amplitude_deg", "duration_s", "settle_s", "start_phase_deg", "kind"}));
     MetaTestPoint p;
+    std::string kind = "swing";
+    FOG_RETURN_IF_ERROR(r.string("kind", kind));
+    if (kind != "swing" && kind != "static")
+      return corruptData(path + ": \"" + where + ".kind\" must be \"swing\" or \"static\"");
+    p.kind = kind == "static" ? TestPointKind::kStatic : TestPointKind::kSwing;
     std::string axis;
     FOG_RETURN_IF_ERROR(r.string("axis", axis));
     auto parsed = parseAxis(axis);

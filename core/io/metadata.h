@@ -22,6 +22,7 @@ struct MetaTestPoint {
   double amplitudeDeg = 0.0; // 0: unknown
   bool hasPlan = false;      // duration_s given (then settle_s, start_phase_deg too, default 0)
   double durationS = 0.0, settleS = 0.0, startPhaseDeg = 0.0;
+  TestPointKind kind = TestPointKind::kSwing;  // "kind": "static" is written only for static segments
 };
 
 struct Metadata {

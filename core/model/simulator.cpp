@@ -191,6 +191,7 @@ class Simulator::Impl {
       s.phase = t < p.recordStartS ? protocol::TestPhase::kSettling : protocol::TestPhase::kRecording;
       s.nominalFrequencyMicroHz = static_cast<std::uint32_t>(std::lround(p.point.frequencyHz * 1e6));
       s.nominalAmplitudeMicroDeg = static_cast<std::uint32_t>(std::lround(p.point.amplitudeDeg * 1e6));
+      s.flags = p.point.isStatic() ? protocol::kStatusFlagStatic : std::uint8_t{0};
     }
     if (s.phase == protocol::TestPhase::kIdle && !table_.schedule().empty() &&
         t >= table_.schedule().back().recordEndS)

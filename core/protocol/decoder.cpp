@@ -139,7 +139,13 @@ void Decoder::accept(Frame& frame, std::vector<DecodedFrame>& out) {
     case FrameType::kTable: ++health_.tableFrames; break;
     case FrameType::kStatus: ++health_.statusFrames; break;
   }
-  out.push_back(DecodedFrame{std::move(frame), ticks_, lost});
+  DecodedFrame d{std::move(frame), ticks_, lost};
+  d.duplicatesBefore = static_cast<std::uint32_t>(health_.duplicateFrames - atLastEmit_.duplicateFrames);
+  d.checksumFailuresBefore = static_cast<std::uint32_t>(health_.checksumFailures - atLastEmit_.checksumFailures);
+  d.outOfOrderBefore = static_cast<std::uint32_t>(health_.outOfOrderFrames - atLastEmit_.outOfOrderFrames);
+  d.bytesSkippedBefore = health_.bytesSkipped - atLastEmit_.bytesSkipped;
+  atLastEmit_ = health_;
+  out.push_back(std::move(d));
 }
 
 }  // namespace fog::protocol

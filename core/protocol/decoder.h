@@ -46,6 +46,12 @@ struct DecodedFrame {
   std::int64_t ticks = 0;
   // Frames of this type lost just before this one (sequence gap).
   std::uint32_t lostBefore = 0;
+  // Damage the decoder met since the previous emitted frame (of any type),
+  // so that a consumer can tell which part of the stream it hit.
+  std::uint32_t duplicatesBefore = 0;
+  std::uint32_t checksumFailuresBefore = 0;
+  std::uint32_t outOfOrderBefore = 0;
+  std::uint64_t bytesSkippedBefore = 0;
 };
 
 class Decoder {
@@ -67,6 +73,7 @@ class Decoder {
   void accept(Frame& frame, std::vector<DecodedFrame>& out);
 
   fog::StreamHealth health_;
+  fog::StreamHealth atLastEmit_;  // health_ when the previous frame was emitted
   std::vector<std::uint8_t> pending_;
   std::array<bool, 3> haveSequence_{};
   std::array<std::uint16_t, 3> lastSequence_{};

@@ -46,10 +46,13 @@ struct StatusPayload {
   TestPhase phase = TestPhase::kIdle;
   std::uint32_t nominalFrequencyMicroHz = 0;
   std::uint32_t nominalAmplitudeMicroDeg = 0;
-  std::uint8_t flags = 0;
+  std::uint8_t flags = 0;                  // bit 0: kStatusFlagStatic
 };
 
 inline constexpr std::uint16_t kNoTestPoint = 0xFFFF;
+// STATUS flags bit 0: the current test point is a static segment (table at
+// rest; nominal frequency and amplitude 0). Streams without it are swings.
+inline constexpr std::uint8_t kStatusFlagStatic = 0x01;
 
 struct Frame {
   FrameType type = FrameType::kStatus;

@@ -28,6 +28,7 @@ void RecordingBuilder::onStatus(const StatusPayload& s) {
     seg.axis = s.axis < kAxisCount ? static_cast<Axis>(s.axis) : Axis::kX;
     seg.nominalFrequencyHz = s.nominalFrequencyMicroHz * 1e-6;
     seg.nominalAmplitudeDeg = s.nominalAmplitudeMicroDeg * 1e-6;
+    seg.kind = (s.flags & kStatusFlagStatic) != 0 ? TestPointKind::kStatic : TestPointKind::kSwing;
     segments_.push_back(std::move(seg));
   }
 }
@@ -39,11 +40,22 @@ void RecordingBuilder::add(const DecodedFrame& f) {
     firstTicks_ = f.ticks;
   }
   const std::int64_t ticks = f.ticks - firstTicks_;
+  Segment* targets[2] = {collecting_ ? &segments_.back() : nullptr, sawRecording_ ? nullptr : &whole_};
+  for (auto* seg : targets) {
+    if (!seg) continue;
+    auto& h = seg->health;
+    h.duplicateFrames += f.duplicatesBefore;
+    h.checksumFailures += f.checksumFailuresBefore;
+    h.outOfOrderFrames += f.outOfOrderBefore;
+    h.bytesSkipped += f.bytesSkippedBefore;
+    h.lostFrames += f.lostBefore;
+    if (f.frame.type == FrameType::kTable) ++h.tableFrames;
+    if (f.frame.type == FrameType::kImu) ++h.imuFrames;
+  }
   if (const auto* s = std::get_if<StatusPayload>(&f.frame.payload)) {
     onStatus(*s);
     return;
   }
-  Segment* targets[2] = {collecting_ ? &segments_.back() : nullptr, sawRecording_ ? nullptr : &whole_};
   if (const auto* t = std::get_if<TablePayload>(&f.frame.payload)) {
     RawTable r;
     r.ticks = ticks;
@@ -96,6 +108,8 @@ Recording RecordingBuilder::finish(const StreamHealth& health) {
     tp.axis = seg.axis;
     tp.nominalFrequencyHz = seg.nominalFrequencyHz;
     tp.nominalAmplitudeDeg = seg.nominalAmplitudeDeg;
+    tp.kind = seg.kind;
+    tp.health = seg.health;
     tp.table.reserve(seg.table.size());
     for (const auto& t : seg.table) tp.table.push_back(TableSample{static_cast<double>(t.ticks) * secondsPerTick, t.angleDeg});
     tp.imu.reserve(seg.imu.size());

@@ -13,7 +13,8 @@
 //  - While the latest STATUS says phase == kRecording, table and IMU samples go
 //    to the current test point; a recording STATUS with a testPoint value other
 //    than the current one starts a new TestPointData (index = testPoint, axis,
-//    nominal frequency and amplitude from that STATUS). Samples in other phases
+//    nominal frequency and amplitude from that STATUS; kind kStatic when its
+//    flags carry kStatusFlagStatic). Samples in other phases
 //    are not collected.
 //  - Table: angleDeg = angleMicroDeg * 1e-6. IMU: incrementDeg = pulses *
 //    pulseEquivalentDeg of the latest STATUS (or of the last STATUS of the
@@ -26,6 +27,9 @@
 //    Recording.pulseEquivalentDeg stays 0 and incrementDeg holds raw pulse
 //    counts; the analysis must then be given the pulse equivalent.
 //  - Test points without any sample are dropped.
+//  - TestPointData::health counts the frames and the damage (lost,
+//    duplicated, out-of-order frames, checksum failures, skipped bytes) the
+//    decoder met while that test point was being collected.
 // Not thread-safe; one builder per stream.
 
 #include <array>
@@ -69,8 +73,10 @@ class RecordingBuilder {
     Axis axis = Axis::kX;
     double nominalFrequencyHz = 0.0;
     double nominalAmplitudeDeg = 0.0;
+    TestPointKind kind = TestPointKind::kSwing;
     std::vector<RawTable> table;
     std::vector<RawImu> imu;
+    StreamHealth health;  // frames and damage met while collecting
   };
 
   void onStatus(const StatusPayload& status);

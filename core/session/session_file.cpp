@@ -669,6 +669,10 @@ Result<Recording> SessionReader::recording() const {
     tp.axis = *axis;
     tp.nominalFrequencyHz = points.real(3);
     tp.nominalAmplitudeDeg = points.real(4);
+    // The test_point table has no kind column (schema 1 is unchanged): the
+    // session's stored plan says which points are static segments.
+    if (tp.index >= 0 && static_cast<std::size_t>(tp.index) < info_.plan.points.size())
+      tp.kind = info_.plan.points[static_cast<std::size_t>(tp.index)].kind;
     const auto tableCount = points.integer(5), imuCount = points.integer(6);
     if (tableCount < 0 || imuCount < 0) return damaged("negative sample count");
     tp.table.reserve(static_cast<std::size_t>(tableCount));

@@ -11,6 +11,7 @@
 
 #include "acquisition/simulator_source.h"
 #include "analysis/delay_analysis.h"
+#include "protocol/frame.h"
 #include "protocol/recording_builder.h"
 #include "session/session_file.h"
 #include "session_test_util.h"
@@ -189,6 +190,54 @@ TEST(Acquisition, WithoutASessionNothingIsWritten) {
   EXPECT_TRUE(r->complete);
   EXPECT_TRUE(r->sessionPath.empty());
   EXPECT_TRUE(r->report.isOk());
+}
+
+TEST(Acquisition, AStallBeyondTheLimitEndsTheRunIncompleteSayingHowLong) {
+  fog::test::ScratchDir dir;
+  const auto& bytes = fog::test::shortRun().bytes;
+  const std::vector<std::uint8_t> part(bytes.begin(), bytes.begin() + 20000);
+  ScriptedSource source(part, ScriptedSource::Then::kSilence);
+  auto o = sessionOptions(dir.file("s.fbs"));
+  o.stallLimit = milliseconds(300);
+  const auto started = std::chrono::steady_clock::now();
+  auto r = acquire(source, o, nullptr);
+  ASSERT_TRUE(r.isOk()) << r.status().message();
+  EXPECT_LT(std::chrono::steady_clock::now() - started, std::chrono::seconds(5));
+  EXPECT_FALSE(r->complete);
+  EXPECT_EQ(r->incompleteReason.rfind("no data for 0.3 s from scripted (after ", 0), 0u) << r->incompleteReason;
+  auto reader = session::SessionReader::open(dir.file("s.fbs"));
+  ASSERT_TRUE(reader.isOk());
+  EXPECT_EQ((*reader)->incompleteReason(), r->incompleteReason);
+  EXPECT_TRUE(*(*reader)->rawBytes() == part);
+}
+
+TEST(Acquisition, TheBoardsDoneStatusEndsALiveRunAsComplete) {
+  // A live board never ends its stream: after the plan it falls silent here.
+  ScriptedSource source(fog::test::shortRun().bytes, ScriptedSource::Then::kSilence);
+  AcquisitionOptions o;
+  o.endWhenBoardDone = true;
+  o.stallLimit = milliseconds(3000);  // only if "done" were missed
+  auto r = acquire(source, o, nullptr);
+  ASSERT_TRUE(r.isOk());
+  EXPECT_TRUE(r->complete) << r->incompleteReason;
+  EXPECT_TRUE(r->report.isOk());
+}
+
+TEST(Acquisition, ADoneStatusBeforeAnyRecordingDoesNotEndTheRun) {
+  // A board still showing the end of its previous plan when the run starts.
+  protocol::FrameWriter w;
+  std::vector<std::uint8_t> bytes;
+  protocol::StatusPayload done;
+  done.phase = protocol::TestPhase::kDone;
+  w.status(1000, done, bytes);
+  ScriptedSource source(bytes, ScriptedSource::Then::kSilence);
+  AcquisitionOptions o;
+  o.endWhenBoardDone = true;
+  o.stallLimit = milliseconds(200);
+  auto r = acquire(source, o, nullptr);
+  ASSERT_TRUE(r.isOk());
+  EXPECT_FALSE(r->complete);
+  EXPECT_EQ(r->incompleteReason.rfind("no data for", 0), 0u) << r->incompleteReason;
 }
 
 }  // namespace

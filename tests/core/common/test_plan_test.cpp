@@ -71,5 +71,50 @@ TEST(TestPlan, JsonErrorsSayWhatIsWrong) {
   EXPECT_NE(axis.status().message().find("axis"), std::string::npos);
 }
 
+TEST(TestPlan, StaticSegmentValidatesWithoutFrequencyOrAmplitude) {
+  const TestPoint p = TestPoint::staticSegment(Axis::kY, 600.0, 2.0);
+  std::string why;
+  EXPECT_TRUE(p.isValid(TurntableLimits{}, &why)) << why;
+  EXPECT_TRUE(p.isStatic());
+  EXPECT_EQ(p.periodS(), 0.0);
+  TestPoint bad = p;
+  bad.frequencyHz = 0.1;
+  EXPECT_FALSE(bad.isValid(TurntableLimits{}, &why));
+  EXPECT_NE(why.find("static segment has no frequency"), std::string::npos) << why;
+  bad = p;
+  bad.durationS = 0.0;
+  EXPECT_FALSE(bad.isValid(TurntableLimits{}, &why));
+  EXPECT_NE(why.find("duration > 0"), std::string::npos) << why;
+  EXPECT_EQ(TestPoint{}.kind, TestPointKind::kSwing);  // the default stays a swing
+}
+
+TEST(TestPlan, StaticSegmentJsonRoundTripAndSwingJsonUnchanged) {
+  TestPlan plan = TestPlan::paperSlow();
+  const std::string swingOnly = testPlanToJson(plan);
+  EXPECT_EQ(swingOnly.find("kind"), std::string::npos);  // old readers still read swing plans
+  plan.points.push_back(TestPoint::staticSegment(Axis::kX, 600.0, 1.0));
+  const std::string json = testPlanToJson(plan);
+  EXPECT_NE(json.find("\"static\""), std::string::npos);
+  auto back = testPlanFromJson(json);
+  ASSERT_TRUE(back.isOk()) << back.status().toString();
+  ASSERT_EQ(back->points.size(), 2u);
+  EXPECT_EQ(back->points[0].kind, TestPointKind::kSwing);
+  EXPECT_EQ(back->points[1].kind, TestPointKind::kStatic);
+  EXPECT_EQ(back->points[1].frequencyHz, 0.0);
+  EXPECT_EQ(back->points[1].amplitudeDeg, 0.0);
+  EXPECT_DOUBLE_EQ(back->points[1].durationS, 600.0);
+  std::string why;
+  EXPECT_TRUE(back->isValid(TurntableLimits{}, &why)) << why;
+}
+
+TEST(TestPlan, StaticSegmentJsonRefusesSwingKeysAndBadKinds) {
+  auto withFrequency = testPlanFromJson(R"({"points":[{"kind":"static","duration_s":60,"frequency_hz":1}]})");
+  ASSERT_TRUE(withFrequency.isOk());
+  std::string why;
+  EXPECT_FALSE(withFrequency->isValid(TurntableLimits{}, &why));
+  EXPECT_FALSE(testPlanFromJson(R"({"points":[{"kind":"still","duration_s":60}]})").isOk());
+  EXPECT_FALSE(testPlanFromJson(R"({"points":[{"kind":"static","periods":3}]})").isOk());
+}
+
 }  // namespace
 }  // namespace fog

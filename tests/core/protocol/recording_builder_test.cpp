@@ -235,3 +235,58 @@ TEST(DecodeRecording, TableAndImuInDifferentTestPointsIsInsufficientData) {
 
 }  // namespace
 }  // namespace fog::protocol
+
+namespace fog::protocol {
+namespace {
+
+// Damage is attributed to the test point being recorded when it was met:
+// the decoder hands each emitted frame the damage since the previous one.
+TEST(RecordingBuilder, EachTestPointCountsTheDamageMetWhileItWasRecorded) {
+  StreamBuilder s;
+  s.status(1000, statusFor(0, TestPhase::kRecording))
+      .table(2000, tableAt(1))
+      .imu(2400, imuWith(1))
+      .table(3000, tableAt(2));
+  // Test point 1: one duplicated table frame and a damaged frame.
+  const std::vector<std::uint8_t> lastTable(s.bytes.end() - static_cast<std::ptrdiff_t>(frameSize(FrameType::kTable)),
+                                            s.bytes.end());
+  s.bytes.insert(s.bytes.end(), lastTable.begin(), lastTable.end());
+  auto damaged = lastTable;
+  damaged[12] ^= 0x10;
+  s.bytes.insert(s.bytes.end(), damaged.begin(), damaged.end());
+  s.table(4000, tableAt(3)).status(5000, statusFor(1, TestPhase::kRecording));
+  // Test point 2: two lost IMU frames and 5 bytes of garbage.
+  s.skipImu().skipImu().imu(6400, imuWith(2));
+  s.bytes.insert(s.bytes.end(), {0x00, 0x11, 0x22, 0x33, 0x44});
+  s.table(7000, tableAt(4)).imu(7400, imuWith(3));
+
+  Decoder decoder;
+  RecordingBuilder builder;
+  std::vector<DecodedFrame> frames;
+  decoder.push(s.bytes, frames);
+  const Recording rec = builder.finish(decoder.health());
+  ASSERT_TRUE(rec.testPoints.empty()) << "finish() before add() gives nothing";
+  builder.add(frames);
+  const Recording r = builder.finish(decoder.health());
+  ASSERT_EQ(r.testPoints.size(), 2u);
+  const auto& a = r.testPoints[0].health;
+  const auto& b = r.testPoints[1].health;
+  EXPECT_EQ(a.tableFrames, 3u);
+  EXPECT_EQ(a.imuFrames, 1u);
+  EXPECT_EQ(a.duplicateFrames, 1u);
+  EXPECT_EQ(a.checksumFailures, 1u);
+  EXPECT_EQ(a.lostFrames, 0u);
+  EXPECT_EQ(b.tableFrames, 1u);
+  EXPECT_EQ(b.imuFrames, 2u);
+  EXPECT_EQ(b.lostFrames, 2u);
+  EXPECT_EQ(b.duplicateFrames, 0u);
+  EXPECT_EQ(b.bytesSkipped, 5u);
+  // Together they account for the whole stream's damage.
+  EXPECT_EQ(a.duplicateFrames + b.duplicateFrames, r.health.duplicateFrames);
+  EXPECT_EQ(a.checksumFailures + b.checksumFailures, r.health.checksumFailures);
+  EXPECT_EQ(a.lostFrames + b.lostFrames, r.health.lostFrames);
+  EXPECT_EQ(a.bytesSkipped + b.bytesSkipped, r.health.bytesSkipped);
+}
+
+}  // namespace
+}  // namespace fog::protocol

@@ -1,0 +1,104 @@
+#include "noise_command.h"
+
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+
+#include "cli_common.h"
+#include "noise/gyro_noise.h"
+#include "protocol/recording_builder.h"
+#include "session/session_file.h"
+
+namespace fog::app {
+
+int noiseCommand(CliArguments& args) {
+  const bool json = args.flag("json");
+  noise::GyroNoiseOptions options;
+  if (auto axis = args.text("axis")) {
+    auto parsed = parseAxis(*axis);
+    if (!parsed) return fail(parsed.status(), 2);
+    options.gyroAxis = *parsed;
+  }
+  auto perOctave = args.number("taus-per-octave", 2.0);
+  if (!perOctave) return fail(perOctave.status(), 2);
+  if (*perOctave < 1.0 || *perOctave > 16.0 || *perOctave != static_cast<int>(*perOctave))
+    return fail(invalidArgument("--taus-per-octave must be a whole number 1 .. 16"), 2);
+  options.allan.tausPerOctave = static_cast<int>(*perOctave);
+  // The swing test to predict: given, or the paper's two conditions.
+  std::vector<analysis::PlannedTest> planned;
+  if (args.has("freq-hz") || args.has("amp-deg") || args.has("duration-s")) {
+    analysis::PlannedTest t;
+    auto f = args.number("freq-hz", 0.1), a = args.number("amp-deg", 10.0), d = args.number("duration-s", 294.0);
+    for (const auto* r : {&f, &a, &d})
+      if (!*r) return fail(r->status(), 2);
+    if (!(*f > 0.0) || !(*a > 0.0) || !(*d > 0.0))
+      return fail(invalidArgument("--freq-hz, --amp-deg and --duration-s must be > 0"), 2);
+    t.frequencyHz = *f;
+    t.amplitudeDeg = *a;
+    t.durationS = *d;
+    planned.push_back(t);
+  } else {
+    for (const TestPlan& plan : {TestPlan::paperSlow(), TestPlan::paperFast()}) {
+      analysis::PlannedTest t;
+      t.frequencyHz = plan.points.front().frequencyHz;
+      t.amplitudeDeg = plan.points.front().amplitudeDeg;
+      t.durationS = plan.points.front().durationS;
+      planned.push_back(t);
+    }
+  }
+  if (args.positionals().size() != 1) {
+    (void)args.checkAllUsed();
+    return fail(invalidArgument("noise needs exactly one SESSION.fbs or raw stream FILE"), 2);
+  }
+  const std::string path = args.positionals()[0];
+  Recording recording;
+  BenchSettings bench;
+  if (session::isSqliteFile(path)) {
+    auto reader = session::SessionReader::open(path);
+    if (!reader) {
+      (void)args.checkAllUsed();
+      return fail(reader.status(), 2);
+    }
+    bench = (*reader)->info().bench;
+    auto rec = (*reader)->recording();
+    if (!rec) {
+      (void)args.checkAllUsed();
+      return fail(rec.status(), exitCodeFor(rec.status()));
+    }
+    recording = std::move(*rec);
+  } else {
+    bench.pulseEquivalentDeg = 0.0;
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+      (void)args.checkAllUsed();
+      return fail(ioError("cannot read '" + path + "'"), 2);
+    }
+    std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    auto rec = protocol::decodeRecording(bytes);
+    if (!rec) {
+      (void)args.checkAllUsed();
+      return fail(Status(rec.status().code(), path + ": " + rec.status().message()), 2);
+    }
+    recording = std::move(*rec);
+  }
+  auto latitude = args.number("latitude-deg", bench.latitudeDeg);
+  auto pulse = args.number("pulse-equivalent-deg", bench.pulseEquivalentDeg);
+  if (!latitude) return fail(latitude.status(), 2);
+  if (!pulse) return fail(pulse.status(), 2);
+  if (!(std::abs(*latitude) <= 90.0)) return fail(invalidArgument("--latitude-deg must be within [-90, 90]"), 2);
+  options.earth.latitudeDeg = *latitude;
+  options.pulseEquivalentDeg = *pulse;
+  if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
+
+  auto reports = noise::analyzeGyroNoise(recording, options);
+  if (!reports) return fail(reports.status(), exitCodeFor(reports.status()));
+  // The prediction uses the first segment (the one a plan normally has).
+  std::vector<noise::SwingPrediction> predictions;
+  for (const auto& t : planned) predictions.push_back(noise::predictSwing(reports->front(), t));
+  std::cout << (json ? noise::formatNoiseJson(*reports, predictions) + "\n"
+                     : noise::formatNoiseText(*reports, predictions));
+  return 0;
+}
+
+}  // namespace fog::app

@@ -1,0 +1,95 @@
+#include "sim_options.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include "cli_common.h"
+
+namespace fog::app {
+
+bool planGiven(const CliArguments& args) {
+  for (const char* name : {"plan", "preset", "axis", "freq-hz", "amp-deg", "duration-s", "settle-s"})
+    if (args.has(name)) return true;
+  return false;
+}
+
+Result<TestPlan> readPlan(CliArguments& args) {
+  auto file = args.text("plan");
+  auto preset = args.text("preset");
+  auto axis = args.text("axis");
+  auto freq = args.number("freq-hz", 0.0);
+  auto amp = args.number("amp-deg", 0.0);
+  auto duration = args.number("duration-s", 0.0);
+  auto settle = args.number("settle-s", -1.0);
+  for (const auto* r : {&freq, &amp, &duration, &settle})
+    if (!*r) return r->status();
+  const bool single = axis || args.text("freq-hz") || args.text("amp-deg") || args.text("duration-s");
+  if ((file ? 1 : 0) + (preset ? 1 : 0) + (single ? 1 : 0) > 1)
+    return invalidArgument("give one of --plan, --preset or --axis/--freq-hz/--amp-deg/--duration-s");
+  if (file) {
+    std::ifstream in(*file);
+    if (!in) return ioError("cannot read plan file '" + *file + "'");
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    auto plan = testPlanFromJson(text);
+    if (!plan) return invalidArgument(*file + ": " + plan.status().message());
+    return plan;
+  }
+  if (single) {
+    TestPoint p;
+    if (axis) {
+      auto a = parseAxis(*axis);
+      if (!a) return a.status();
+      p.axis = *a;
+    }
+    if (!args.text("freq-hz") || !args.text("amp-deg"))
+      return invalidArgument("a single test point needs --freq-hz and --amp-deg");
+    p.frequencyHz = *freq;
+    p.amplitudeDeg = *amp;
+    p.durationS = args.text("duration-s") ? *duration : 30.0 / std::max(p.frequencyHz, 1e-9);
+    p.settleS = *settle >= 0.0 ? *settle : std::min(5.0, 1.0 / std::max(p.frequencyHz, 1e-9));
+    TestPlan plan;
+    plan.points.push_back(p);
+    return plan;
+  }
+  return presetPlan(preset.value_or("paper"));
+}
+
+Result<model::SimConfig> readSimConfig(CliArguments& args) {
+  model::SimConfig c;
+  auto seed = args.number("seed", 1.0);
+  if (!seed) return seed.status();
+  if (*seed < 0 || *seed != std::floor(*seed)) return invalidArgument("--seed must be a whole number >= 0");
+  c.seed = static_cast<std::uint64_t>(*seed);
+  struct Field {
+    const char* name;
+    double* target;
+    double scale;
+  } fields[] = {{"arw-deg-sqrt-h", &c.fog.arwDegPerSqrtH, 1.0},
+                {"bias-instability-deg-h", &c.fog.biasInstabilityDegPerH, 1.0},
+                {"pulse-equivalent-deg", &c.fog.pulseEquivalentDeg, 1.0},
+                {"table-freq-error-ppm", &c.turntable.frequencyErrorPpm, 1.0},
+                {"counter-hz", &c.samplingBoard.counterHz, 1.0},
+                {"latitude-deg", &c.earth.latitudeDeg, 1.0}};
+  for (auto& f : fields) {
+    auto v = args.number(f.name, *f.target);
+    if (!v) return v.status();
+    *f.target = *v;
+  }
+  auto gyroDelay = args.number("gyro-delay-ms", c.fog.ownDelayS() * 1e3);
+  auto bits = args.number("counter-bits", c.samplingBoard.counterBits);
+  auto start = args.number("counter-start", c.samplingBoard.counterStart);
+  for (const auto* r : {&gyroDelay, &bits, &start})
+    if (!*r) return r->status();
+  c.fog.setOwnDelayS(*gyroDelay * 1e-3);
+  c.samplingBoard.counterBits = static_cast<int>(*bits);
+  if (*start < 0 || *start > 4294967295.0) return invalidArgument("--counter-start must be within 0 .. 2^32-1");
+  c.samplingBoard.counterStart = static_cast<std::uint32_t>(*start);
+  std::string why;
+  if (!c.isValid(&why)) return invalidArgument(why);
+  return c;
+}
+
+}  // namespace fog::app

@@ -1,0 +1,24 @@
+#pragma once
+// The test-plan and simulator options shared by `fogbench-cli run` and the
+// board emulator (fogbench-board-emu): one parser, so both programs accept
+// the same plan and chain options.
+
+#include "cli_arguments.h"
+#include "common/status.h"
+#include "common/test_plan.h"
+#include "model/sim_config.h"
+
+namespace fog::app {
+
+// --plan FILE.json | --preset paper|paper-slow|paper-fast |
+// --axis A --freq-hz F --amp-deg A [--duration-s T --settle-s S]; default
+// preset paper. Marks the options used.
+Result<TestPlan> readPlan(CliArguments& args);
+// True when any plan option was given (so `run --source serial` knows
+// whether the operator stated the board's plan). Does not mark them used.
+bool planGiven(const CliArguments& args);
+// --seed and the chain options (--gyro-delay-ms, --arw-deg-sqrt-h, ...,
+// --counter-bits, --counter-start). Marks the options used.
+Result<model::SimConfig> readSimConfig(CliArguments& args);
+
+}  // namespace fog::app

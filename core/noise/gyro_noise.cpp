@@ -1,0 +1,258 @@
+#include "noise/gyro_noise.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "common/units.h"
+
+namespace fog::noise {
+
+namespace {
+
+std::string fmt(const char* format, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, format, v);
+  return buf;
+}
+
+const char* upperAxis(Axis a) {
+  switch (a) {
+    case Axis::kX: return "X";
+    case Axis::kY: return "Y";
+    case Axis::kZ: return "Z";
+  }
+  return "?";
+}
+
+// Peak of the Markov Allan deviation relative to sigma and where it lies
+// (tau / Tc), found once numerically: about 0.6174 at 1.89 Tc.
+struct MarkovPeak {
+  double relativeDeviation = 0.0, tauOverTc = 0.0;
+};
+MarkovPeak markovPeak() {
+  MarkovPeak best;
+  for (double x = 0.5; x < 5.0; x *= 1.0005) {
+    const double d = std::sqrt(unitAllanVariance(NoiseTermKind::kMarkov, x, 1.0));
+    if (d > best.relativeDeviation) best = {d, x};
+  }
+  return best;
+}
+
+}  // namespace
+
+Result<GyroNoiseReport> analyzeStaticSegment(const TestPointData& data, double degPerIncrement,
+                                             const GyroNoiseOptions& options) {
+  GyroNoiseReport r;
+  r.testPointIndex = data.index;
+  r.gyroAxis = options.gyroAxis.value_or(data.axis);
+  const auto a = static_cast<std::size_t>(r.gyroAxis);
+  if (data.imu.size() < 8)
+    return insufficientData("static segment " + std::to_string(data.index + 1) + " holds " +
+                            std::to_string(data.imu.size()) + " IMU samples; an Allan deviation needs at least 8");
+  // Lost frames: their increments are missing. Each is filled with the mean
+  // increment, which keeps the time base and costs only a little noise.
+  std::vector<double> increments;
+  increments.reserve(data.imu.size() + 16);
+  double sum = 0.0;
+  for (const auto& s : data.imu) sum += s.incrementDeg[a] * degPerIncrement;
+  const double meanIncrement = sum / static_cast<double>(data.imu.size());
+  for (std::size_t k = 0; k < data.imu.size(); ++k) {
+    const auto& s = data.imu[k];
+    if (k > 0)
+      for (std::uint32_t l = 0; l < s.lostBefore; ++l) increments.push_back(meanIncrement);
+    if (k > 0) r.lostFrames += s.lostBefore;
+    increments.push_back(s.incrementDeg[a] * degPerIncrement);
+  }
+  r.samples = data.imu.size();
+  // The first sample's increment covers the frame before its stamp.
+  const double span = data.imu.back().timeS - data.imu.front().timeS;
+  r.intervalS = span / static_cast<double>(increments.size() - 1);
+  r.durationS = r.intervalS * static_cast<double>(increments.size());
+  if (!(r.intervalS > 0.0)) return corruptData("static segment " + std::to_string(data.index + 1) + ": IMU time stamps do not advance");
+  if (r.lostFrames)
+    r.warnings.push_back(std::to_string(r.lostFrames) + " lost IMU frames filled with the mean increment");
+
+  const double meanRateDegPerS = meanIncrement / r.intervalS;
+  r.biasDegPerH = meanRateDegPerS * kSecondsPerHour;
+  r.earthRateDegPerH = options.earth.projectionDegPerH(r.gyroAxis);
+  r.earthCorrectedBiasDegPerH = r.biasDegPerH - r.earthRateDegPerH;
+
+  const auto phase = cumulativeSum(increments, meanIncrement);
+  auto curve = overlappingAllanCurve(phase, r.intervalS, options.allan);
+  if (!curve) return curve.status();
+  r.curve = std::move(*curve);
+  auto model = identifyNoise(r.curve, options.identify);
+  if (!model) return model.status();
+  r.model = std::move(*model);
+  r.biasStdDegPerH = std::sqrt(std::max(0.0, r.model.allanVariance(r.durationS))) * kSecondsPerHour;
+  if (r.model.chiSquare > 3.0 * std::max(1, r.model.dof))
+    r.warnings.push_back("the noise model fits the Allan curve poorly (chi^2 " + fmt("%.0f", r.model.chiSquare) + " for " +
+                         std::to_string(r.model.dof) + " dof): a term outside IEEE 952, or non-white quantisation");
+  return r;
+}
+
+Result<std::vector<GyroNoiseReport>> analyzeGyroNoise(const Recording& recording, const GyroNoiseOptions& options) {
+  double scale = 1.0;
+  if (!(recording.pulseEquivalentDeg > 0.0)) {
+    if (!(options.pulseEquivalentDeg > 0.0))
+      return invalidArgument("the stream does not state the gyro pulse equivalent; give it (degrees per pulse)");
+    scale = options.pulseEquivalentDeg;
+  }
+  std::vector<GyroNoiseReport> out;
+  for (const auto& tp : recording.testPoints) {
+    if (tp.kind != TestPointKind::kStatic) continue;
+    auto r = analyzeStaticSegment(tp, scale, options);
+    if (!r) return r.status();
+    out.push_back(std::move(*r));
+  }
+  if (out.empty())
+    return insufficientData("the recording has no static segment (table at rest); record one, e.g. "
+                            "fogbench-cli run --preset noise, or add {\"kind\": \"static\"} to the plan");
+  return out;
+}
+
+TermInUnits termInGyroUnits(const NoiseTerm& t) {
+  double f = 1.0;
+  const char* unit = "";
+  switch (t.kind) {
+    case NoiseTermKind::kQuantisation: f = kArcsecPerDeg, unit = "arcsec"; break;
+    case NoiseTermKind::kAngleRandomWalk: f = 60.0, unit = "deg/sqrt(h)"; break;
+    case NoiseTermKind::kBiasInstability: f = kSecondsPerHour, unit = "deg/h"; break;
+    case NoiseTermKind::kRateRandomWalk: f = kSecondsPerHour * 60.0, unit = "deg/h/sqrt(h)"; break;
+    case NoiseTermKind::kRateRamp: f = kSecondsPerHour * kSecondsPerHour, unit = "deg/h^2"; break;
+    case NoiseTermKind::kMarkov: f = kSecondsPerHour, unit = "deg/h"; break;
+  }
+  return {t.value * f, t.stdError * f, unit};
+}
+
+SimulatorFeed simulatorFeed(const GyroNoiseReport& report, const model::SimConfig& base) {
+  SimulatorFeed feed;
+  feed.config = base;
+  model::FogParams& fog = feed.config.fog;
+  fog.biasDegPerH[static_cast<std::size_t>(report.gyroAxis)] = report.earthCorrectedBiasDegPerH;
+  const NoiseTerm* n = report.model.find(NoiseTermKind::kAngleRandomWalk);
+  fog.arwDegPerSqrtH = n ? n->value * 60.0 : 0.0;
+  if (const NoiseTerm* m = report.model.find(NoiseTermKind::kMarkov)) {
+    fog.biasInstabilityDegPerH = m->value * kSecondsPerHour;
+    fog.biasCorrelationS = m->correlationTimeS;
+  } else if (const NoiseTerm* b = report.model.find(NoiseTermKind::kBiasInstability)) {
+    const MarkovPeak peak = markovPeak();
+    const double plateau = b->value * std::sqrt(unitAllanVariance(NoiseTermKind::kBiasInstability, 1.0));
+    fog.biasInstabilityDegPerH = plateau / peak.relativeDeviation * kSecondsPerHour;
+    fog.biasCorrelationS = std::sqrt(b->tauLowS * b->tauHighS) / peak.tauOverTc;
+    feed.notes.push_back("flicker bias instability approximated by a Gauss-Markov rate of " +
+                         fmt("%.3g", fog.biasInstabilityDegPerH) + " deg/h, " + fmt("%.3g", fog.biasCorrelationS) +
+                         " s (same peak Allan deviation)");
+  } else {
+    fog.biasInstabilityDegPerH = 0.0;
+  }
+  if (const NoiseTerm* q = report.model.find(NoiseTermKind::kQuantisation))
+    feed.notes.push_back("quantisation " + fmt("%.3g", q->value * kArcsecPerDeg) +
+                         " arcsec: the simulator quantises by its pulse equivalent (" +
+                         fmt("%.3g", fog.pulseEquivalentDeg * kArcsecPerDeg) + " arcsec per pulse) only");
+  if (report.model.find(NoiseTermKind::kRateRandomWalk))
+    feed.notes.push_back("rate random walk is not simulated");
+  if (report.model.find(NoiseTermKind::kRateRamp)) feed.notes.push_back("rate ramp is not simulated");
+  return feed;
+}
+
+SwingPrediction predictSwing(const GyroNoiseReport& report, analysis::PlannedTest planned) {
+  const NoiseTerm* n = report.model.find(NoiseTermKind::kAngleRandomWalk);
+  planned.arwDegPerSqrtH = n ? n->value * 60.0 : 0.0;
+  if (const NoiseTerm* q = report.model.find(NoiseTermKind::kQuantisation)) planned.pulseEquivalentDeg = q->value * std::sqrt(12.0);
+  planned.imuIntervalS = report.intervalS;
+  return {planned, analysis::predictedLagStdS(planned)};
+}
+
+std::string formatNoiseText(const std::vector<GyroNoiseReport>& reports, const std::vector<SwingPrediction>& predictions) {
+  std::ostringstream o;
+  for (const auto& r : reports) {
+    o << "Static segment " << r.testPointIndex + 1 << ": " << upperAxis(r.gyroAxis) << " gyro, " << fmt("%.1f", r.durationS)
+      << " s at rest, " << r.samples << " samples every " << fmt("%.3f", r.intervalS * 1e3) << " ms\n";
+    o << "  bias " << fmt("%.4f", r.biasDegPerH) << " ± " << fmt("%.4f", r.biasStdDegPerH) << " deg/h; Earth rate "
+      << fmt("%.4f", r.earthRateDegPerH) << " deg/h; Earth-corrected bias " << fmt("%.4f", r.earthCorrectedBiasDegPerH)
+      << " deg/h\n";
+    o << "  overlapping Allan deviation (" << fmt("%.1f", r.curve.confidence * 100.0) << " % interval, EDF):\n";
+    o << "        tau s      adev deg/h      low deg/h     high deg/h        EDF  noise\n";
+    for (const auto& p : r.curve.points)
+      o << fmt("%13.4g", p.tauS) << fmt("%16.5g", p.deviation * kSecondsPerHour)
+        << fmt("%15.5g", p.interval.low * kSecondsPerHour) << fmt("%15.5g", p.interval.high * kSecondsPerHour)
+        << fmt("%11.4g", p.edf) << "  " << powerLawNoiseName(p.noise) << "\n";
+    o << "  noise terms (IEEE Std 952; significant only; chi^2 " << fmt("%.1f", r.model.chiSquare) << " for "
+      << r.model.dof << " dof):\n";
+    for (const auto& t : r.model.terms) {
+      const auto u = termInGyroUnits(t);
+      o << "    " << noiseTermName(t.kind) << ": " << fmt("%.4g", u.value) << " ± " << fmt("%.2g", u.stdError) << " "
+        << u.unit << "  (tau " << fmt("%.3g", t.tauLowS) << " .. " << fmt("%.3g", t.tauHighS) << " s";
+      if (t.kind == NoiseTermKind::kMarkov)
+        o << "; correlation time " << fmt("%.3g", t.correlationTimeS) << " s, " << fmt("%.3g", t.correlationTimeLowS)
+          << " .. " << fmt("%.3g", t.correlationTimeHighS);
+      o << ")\n";
+    }
+    for (const auto& w : r.warnings) o << "  warning: " << w << "\n";
+  }
+  for (const auto& p : predictions)
+    o << "Swing test with this gyro: " << fmt("%g", p.test.frequencyHz) << " Hz / " << fmt("%g", p.test.amplitudeDeg)
+      << " deg for " << fmt("%g", p.test.durationS) << " s gives a lag sigma of " << fmt("%.3g", p.lagStdS * 1e6)
+      << " us (Cramer-Rao bound)\n";
+  return o.str();
+}
+
+std::string formatNoiseJson(const std::vector<GyroNoiseReport>& reports, const std::vector<SwingPrediction>& predictions) {
+  using nlohmann::json;
+  json doc;
+  doc["segments"] = json::array();
+  for (const auto& r : reports) {
+    json s;
+    s["test_point"] = r.testPointIndex + 1;
+    s["axis"] = axisName(r.gyroAxis);
+    s["duration_s"] = r.durationS;
+    s["interval_s"] = r.intervalS;
+    s["samples"] = r.samples;
+    s["lost_frames"] = r.lostFrames;
+    s["bias_deg_h"] = r.biasDegPerH;
+    s["bias_std_deg_h"] = r.biasStdDegPerH;
+    s["earth_rate_deg_h"] = r.earthRateDegPerH;
+    s["earth_corrected_bias_deg_h"] = r.earthCorrectedBiasDegPerH;
+    s["confidence"] = r.curve.confidence;
+    s["allan"] = json::array();
+    for (const auto& p : r.curve.points)
+      s["allan"].push_back({{"tau_s", p.tauS},
+                            {"adev_deg_h", p.deviation * kSecondsPerHour},
+                            {"low_deg_h", p.interval.low * kSecondsPerHour},
+                            {"high_deg_h", p.interval.high * kSecondsPerHour},
+                            {"edf", p.edf},
+                            {"noise", powerLawNoiseName(p.noise)}});
+    s["terms"] = json::array();
+    for (const auto& t : r.model.terms) {
+      const auto u = termInGyroUnits(t);
+      json e = {{"term", noiseTermKey(t.kind)}, {"value", u.value},       {"std", u.stdError},
+                {"unit", u.unit},               {"tau_low_s", t.tauLowS}, {"tau_high_s", t.tauHighS},
+                {"significance", t.significance}};
+      if (t.kind == NoiseTermKind::kMarkov) {
+        e["correlation_time_s"] = t.correlationTimeS;
+        e["correlation_time_low_s"] = t.correlationTimeLowS;
+        e["correlation_time_high_s"] = t.correlationTimeHighS;
+      }
+      s["terms"].push_back(e);
+    }
+    s["chi2"] = r.model.chiSquare;
+    s["dof"] = r.model.dof;
+    s["warnings"] = r.warnings;
+    doc["segments"].push_back(s);
+  }
+  doc["swing_predictions"] = json::array();
+  for (const auto& p : predictions)
+    doc["swing_predictions"].push_back({{"frequency_hz", p.test.frequencyHz},
+                                        {"amplitude_deg", p.test.amplitudeDeg},
+                                        {"duration_s", p.test.durationS},
+                                        {"arw_deg_sqrt_h", p.test.arwDegPerSqrtH},
+                                        {"pulse_equivalent_deg", p.test.pulseEquivalentDeg},
+                                        {"lag_std_us", p.lagStdS * 1e6}});
+  return doc.dump(2);
+}
+
+}  // namespace fog::noise

@@ -1,0 +1,87 @@
+#pragma once
+// Gyro noise characterisation from the static segments of a recording
+// (docs/noise.md): mean bias and its Earth-rate-corrected value, the
+// overlapping Allan deviation with chi-squared confidence intervals, the
+// IEEE Std 952 noise terms, what they mean for a planned swing test (the
+// Cramer-Rao prediction of analysis/theory.h), and simulator parameters that
+// reproduce them.
+//
+// Units in this header: rates in deg/h, Allan deviations in deg/h, tau in s;
+// the NoiseModel inside the report keeps fog::noise's units (deg, deg/s).
+// Pure functions, thread-safe, no exceptions.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "analysis/theory.h"
+#include "common/recording.h"
+#include "common/status.h"
+#include "model/sim_config.h"
+#include "noise/noise_terms.h"
+
+namespace fog::noise {
+
+struct GyroNoiseOptions {
+  std::optional<Axis> gyroAxis;  // default: each static segment's own axis
+  AllanOptions allan;
+  IdentifyOptions identify;
+  model::EarthParams earth;      // site latitude and IMU axes, for the Earth-rate correction
+  // Degrees per pulse when the stream does not state it (0: unknown -> error).
+  double pulseEquivalentDeg = 0.0;
+};
+
+struct GyroNoiseReport {
+  int testPointIndex = 0;
+  Axis gyroAxis = Axis::kX;
+  double durationS = 0.0;
+  double intervalS = 0.0;  // mean IMU frame interval (tau0)
+  std::size_t samples = 0, lostFrames = 0;
+  double biasDegPerH = 0.0, biasStdDegPerH = 0.0;  // mean rate; std from the noise model at tau = duration
+  double earthRateDegPerH = 0.0;                   // Earth-rate projection on this gyro
+  double earthCorrectedBiasDegPerH = 0.0;
+  AllanCurve curve;    // deviations in deg/s
+  NoiseModel model;    // terms in deg, deg/s units (noise_terms.h)
+  std::vector<std::string> warnings;
+};
+
+// One static segment. Fails with kInsufficientData under 8 IMU samples.
+Result<GyroNoiseReport> analyzeStaticSegment(const TestPointData& data, double degPerIncrement,
+                                             const GyroNoiseOptions& options);
+// Every static segment of the recording. kInsufficientData ("the recording
+// has no static segment ...") when there is none.
+Result<std::vector<GyroNoiseReport>> analyzeGyroNoise(const Recording& recording, const GyroNoiseOptions& options);
+
+// A term converted to the gyro's customary units, for reports.
+struct TermInUnits {
+  double value = 0.0, stdError = 0.0;
+  const char* unit = "";  // "arcsec", "deg/sqrt(h)", "deg/h", "deg/h/sqrt(h)", "deg/h^2", "deg/h"
+};
+TermInUnits termInGyroUnits(const NoiseTerm& term);
+
+// Simulator parameters that make a simulated session sound like this one:
+// angle random walk N, the Markov term (or, for a flicker bias instability B,
+// the Gauss-Markov process whose Allan hump peaks at B's plateau 0.664 B in
+// the middle of B's tau range), the Earth-corrected bias on the analysed
+// axis. Terms the simulator has no process for (rate random walk, rate ramp,
+// white angle noise beyond the pulse quantisation) are listed in `notes`.
+struct SimulatorFeed {
+  model::SimConfig config;
+  std::vector<std::string> notes;
+};
+SimulatorFeed simulatorFeed(const GyroNoiseReport& report, const model::SimConfig& base);
+
+// The bench's Cramer-Rao prediction (analysis::predictedLagStdS) for a planned
+// swing test with this gyro: its angle random walk and, when identified, its
+// quantisation (as a pulse equivalent Q sqrt 12); the rest of `planned` as given.
+struct SwingPrediction {
+  analysis::PlannedTest test;
+  double lagStdS = 0.0;
+};
+SwingPrediction predictSwing(const GyroNoiseReport& report, analysis::PlannedTest planned);
+
+// The report as text and as JSON (stable keys, docs/noise.md).
+std::string formatNoiseText(const std::vector<GyroNoiseReport>& reports, const std::vector<SwingPrediction>& predictions);
+std::string formatNoiseJson(const std::vector<GyroNoiseReport>& reports, const std::vector<SwingPrediction>& predictions);
+
+}  // namespace fog::noise

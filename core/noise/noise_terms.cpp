@@ -1,0 +1,491 @@
+#include "noise/noise_terms.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace fog::noise {
+
+namespace {
+
+constexpr double kFlickerFactor = 2.0 * std::numbers::ln2 / std::numbers::pi;  // B^2 -> Allan variance
+
+// Noise type of a local log-log slope mu of the Allan variance (tau^mu).
+PowerLawNoise noiseOfSlope(double mu) {
+  if (mu <= -1.5) return PowerLawNoise::kWhitePhase;
+  if (mu <= -0.5) return PowerLawNoise::kWhiteFrequency;
+  if (mu <= 0.5) return PowerLawNoise::kFlickerFrequency;
+  return PowerLawNoise::kRandomWalkFrequency;
+}
+
+struct Fit {
+  std::vector<int> active;            // term kinds in the fit
+  Eigen::VectorXd coefficient;        // value^2 per active term
+  Eigen::MatrixXd covariance;         // of the coefficients
+  Eigen::VectorXd logStd;             // standard error of ln(coefficient)
+  double chiSquare = std::numeric_limits<double>::infinity();
+  int dof = 0;
+  double tcS = 0.0;
+  double logTcStd = 0.0;              // standard error of ln(Tc) when Tc is free
+  bool ok = false;
+};
+
+double modelAt(const Fit& f, double tau) {
+  double v = 0.0;
+  for (std::size_t j = 0; j < f.active.size(); ++j)
+    v += f.coefficient[static_cast<Eigen::Index>(j)] * unitAllanVariance(static_cast<NoiseTermKind>(f.active[j]), tau, f.tcS);
+  return v;
+}
+
+double modelSlope(const Fit& f, double tau) {
+  const double a = modelAt(f, tau / 1.05), b = modelAt(f, tau * 1.05);
+  return a > 0.0 && b > 0.0 ? std::log(b / a) / std::log(1.05 * 1.05) : 0.0;
+}
+
+// Start for the logarithmic fit: non-negative linear least squares of the
+// variances weighted by the measured ones (convex, so no local minima;
+// dropping the most negative coefficient until none is left is enough for
+// six terms). A term the linear fit drops starts at 1e-3 of the curve where
+// it comes closest, so that the logarithmic fit can still raise it.
+Eigen::VectorXd linearStart(const AllanCurve& curve, const std::vector<int>& terms, double tcS) {
+  const auto n = static_cast<Eigen::Index>(curve.points.size());
+  const auto k = static_cast<Eigen::Index>(terms.size());
+  Eigen::MatrixXd a(n, k);
+  Eigen::VectorXd avar(n), sw(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const auto& pt = curve.points[static_cast<std::size_t>(i)];
+    avar[i] = pt.deviation * pt.deviation;
+    sw[i] = std::sqrt(pt.edf / 2.0) / std::max(avar[i], 1e-300);
+    for (Eigen::Index j = 0; j < k; ++j)
+      a(i, j) = unitAllanVariance(static_cast<NoiseTermKind>(terms[static_cast<std::size_t>(j)]), pt.tauS, tcS);
+  }
+  Eigen::VectorXd c = Eigen::VectorXd::Zero(k);
+  std::vector<Eigen::Index> active(static_cast<std::size_t>(k));
+  for (Eigen::Index j = 0; j < k; ++j) active[static_cast<std::size_t>(j)] = j;
+  while (!active.empty()) {
+    const auto m = static_cast<Eigen::Index>(active.size());
+    Eigen::MatrixXd aw(n, m);
+    for (Eigen::Index j = 0; j < m; ++j) aw.col(j) = sw.cwiseProduct(a.col(active[static_cast<std::size_t>(j)]));
+    Eigen::VectorXd scale = aw.colwise().norm().transpose();
+    for (Eigen::Index j = 0; j < m; ++j)
+      if (!(scale[j] > 0.0)) scale[j] = 1.0;
+    aw = aw * scale.cwiseInverse().asDiagonal();
+    const Eigen::VectorXd z = aw.colPivHouseholderQr().solve(sw.cwiseProduct(avar)).cwiseQuotient(scale);
+    Eigen::Index worst = 0;
+    if (z.allFinite() && z.minCoeff(&worst) >= 0.0) {
+      for (Eigen::Index j = 0; j < m; ++j) c[active[static_cast<std::size_t>(j)]] = z[j];
+      break;
+    }
+    if (!z.allFinite()) worst = m - 1;
+    active.erase(active.begin() + worst);
+  }
+  Eigen::VectorXd p(k);
+  for (Eigen::Index j = 0; j < k; ++j) {
+    double room = std::numeric_limits<double>::infinity();
+    for (Eigen::Index i = 0; i < n; ++i) room = std::min(room, avar[i] / a(i, j));
+    p[j] = std::log(c[j] > 1e-3 * room ? c[j] : 1e-3 * room);
+  }
+  return p;
+}
+
+// Weighted least squares in the logarithm: r_i = sqrt(edf_i / 2) (ln avar_i +
+// bias_i - ln model_i), since var(ln avar) = 2 / edf for a chi-squared
+// estimate and E[ln avar] = ln sigma^2 - 1/edf - 1/(3 edf^2) to second order
+// (the bias is added back). Parameters are ln(coefficient) (so every term
+// stays >= 0) and, with a Markov term and freeTc, ln(Tc). Levenberg-Marquardt
+// from a start that puts each term at a tenth of the curve where it fits best.
+Fit solve(const AllanCurve& curve, const std::vector<int>& terms, double tcS, bool freeTc,
+          const Eigen::VectorXd* start = nullptr) {
+  const auto n = static_cast<Eigen::Index>(curve.points.size());
+  const auto k = static_cast<Eigen::Index>(terms.size());
+  const bool markov = std::find(terms.begin(), terms.end(), static_cast<int>(NoiseTermKind::kMarkov)) != terms.end();
+  const bool tcFree = markov && freeTc;
+  const Eigen::Index np = k + (tcFree ? 1 : 0);
+  Fit fit;
+  fit.active = terms;
+  fit.tcS = markov ? tcS : 0.0;
+  if (k == 0 || n <= np) return fit;
+
+  Eigen::VectorXd tau(n), logAvar(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const auto& p = curve.points[static_cast<std::size_t>(i)];
+    tau[i] = p.tauS;
+    logAvar[i] = 2.0 * std::log(std::max(p.deviation, 1e-300));
+  }
+  std::vector<PowerLawNoise> noise(static_cast<std::size_t>(n));
+  for (Eigen::Index i = 0; i < n; ++i) noise[static_cast<std::size_t>(i)] = curve.points[static_cast<std::size_t>(i)].noise;
+
+  Eigen::VectorXd p(np);
+  if (start && start->size() == k) {
+    p.head(k) = *start;
+  } else {
+    p.head(k) = linearStart(curve, terms, fit.tcS);
+  }
+  if (tcFree) p[k] = std::log(fit.tcS);
+
+  auto evaluate = [&](const Eigen::VectorXd& q, Eigen::VectorXd& r, Eigen::MatrixXd* jac, const Eigen::VectorXd& w,
+                      const Eigen::VectorXd& target) {
+    const double tc = tcFree ? std::exp(q[k]) : fit.tcS;
+    for (Eigen::Index i = 0; i < n; ++i) {
+      double model = 0.0;
+      double dTc = 0.0;
+      Eigen::VectorXd parts(k);
+      for (Eigen::Index j = 0; j < k; ++j) {
+        const auto kind = static_cast<NoiseTermKind>(terms[static_cast<std::size_t>(j)]);
+        parts[j] = std::exp(q[j]) * unitAllanVariance(kind, tau[i], tc);
+        model += parts[j];
+        if (tcFree && kind == NoiseTermKind::kMarkov) {
+          const double h = 1e-4;
+          dTc = std::exp(q[j]) * (unitAllanVariance(kind, tau[i], tc * std::exp(h)) -
+                                  unitAllanVariance(kind, tau[i], tc * std::exp(-h))) / (2.0 * h);
+        }
+      }
+      model = std::max(model, 1e-300);
+      r[i] = w[i] * (target[i] - std::log(model));
+      if (jac) {
+        for (Eigen::Index j = 0; j < k; ++j) (*jac)(i, j) = -w[i] * parts[j] / model;
+        if (tcFree) (*jac)(i, k) = -w[i] * dTc / model;
+      }
+    }
+  };
+
+  Eigen::VectorXd r(n);
+  Eigen::MatrixXd jac(n, np);
+  for (int outer = 0; outer < 3; ++outer) {
+    Eigen::VectorXd w(n), target(n);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const double edf = edfOverlappingAllan(curve.phasePoints, curve.points[static_cast<std::size_t>(i)].m,
+                                             noise[static_cast<std::size_t>(i)]);
+      w[i] = std::sqrt(edf / 2.0);
+      target[i] = logAvar[i] + 1.0 / edf + 1.0 / (3.0 * edf * edf);
+    }
+    double lambda = 1e-3;
+    evaluate(p, r, &jac, w, target);
+    double cost = r.squaredNorm();
+    for (int it = 0; it < 200; ++it) {
+      const Eigen::MatrixXd jtj = jac.transpose() * jac;
+      const Eigen::VectorXd g = jac.transpose() * r;
+      Eigen::MatrixXd a = jtj;
+      a.diagonal() += lambda * (jtj.diagonal().array() + 1e-12).matrix();
+      const Eigen::VectorXd step = -a.ldlt().solve(g);
+      // Keep ln(Tc) inside the taus observed: the hump must be seen.
+      Eigen::VectorXd q = p + step.cwiseMax(-5.0).cwiseMin(5.0);
+      if (tcFree) q[k] = std::clamp(q[k], std::log(tau[0]), std::log(tau[n - 1]));
+      Eigen::VectorXd rq(n);
+      evaluate(q, rq, nullptr, w, target);
+      const double newCost = rq.squaredNorm();
+      if (newCost < cost) {
+        const bool small = cost - newCost < 1e-10 * (1.0 + cost);
+        p = q;
+        cost = newCost;
+        evaluate(p, r, &jac, w, target);
+        lambda = std::max(lambda * 0.3, 1e-12);
+        if (small) break;
+      } else {
+        lambda *= 10.0;
+        if (lambda > 1e12) break;
+      }
+    }
+    fit.chiSquare = cost;
+    fit.tcS = tcFree ? std::exp(p[k]) : fit.tcS;
+    fit.coefficient = p.head(k).array().exp().matrix();
+    for (Eigen::Index i = 0; i < n; ++i) noise[static_cast<std::size_t>(i)] = noiseOfSlope(modelSlope(fit, tau[i]));
+  }
+  fit.dof = static_cast<int>(n - np);
+  const Eigen::MatrixXd jtj = jac.transpose() * jac;
+  const Eigen::MatrixXd covP = jtj.completeOrthogonalDecomposition().pseudoInverse();
+  fit.logStd = covP.diagonal().head(k).cwiseMax(0.0).cwiseSqrt();
+  fit.covariance = fit.coefficient.asDiagonal() * covP.topLeftCorner(k, k) * fit.coefficient.asDiagonal();
+  fit.logTcStd = tcFree ? std::sqrt(std::max(0.0, covP(k, k))) : 0.0;
+  fit.ok = fit.coefficient.allFinite() && std::isfinite(fit.chiSquare);
+  return fit;
+}
+
+std::vector<double> markovGrid(const AllanCurve& curve) {
+  std::vector<double> grid;
+  if (curve.points.size() < 3) return grid;
+  // Tc from 2 tau_min to tau_max / 2: only there does the hump show.
+  const double lo = 2.0 * curve.points.front().tauS, hi = 0.5 * curve.points.back().tauS;
+  for (double t = lo; t <= hi; t *= std::pow(10.0, 1.0 / 10.0)) grid.push_back(t);
+  return grid;
+}
+
+bool hasMarkov(const std::vector<int>& terms) {
+  return std::find(terms.begin(), terms.end(), static_cast<int>(NoiseTermKind::kMarkov)) != terms.end();
+}
+
+// With a Markov term: the best correlation time on the grid, then refined
+// with Tc free.
+Fit best(const AllanCurve& curve, const std::vector<int>& terms, const std::vector<double>& grid) {
+  if (!hasMarkov(terms)) return solve(curve, terms, 0.0, false);
+  Fit bestFit;
+  for (double tc : grid) {
+    Fit f = solve(curve, terms, tc, false);
+    if (f.ok && f.chiSquare < bestFit.chiSquare) bestFit = std::move(f);
+  }
+  if (!bestFit.ok) return bestFit;
+  const Eigen::VectorXd start = bestFit.coefficient.array().log().matrix();
+  Fit refined = solve(curve, terms, bestFit.tcS, true, &start);
+  return refined.ok && refined.chiSquare <= bestFit.chiSquare ? refined : bestFit;
+}
+
+double inflation(const Fit& f) { return std::max(1.0, f.dof > 0 ? f.chiSquare / f.dof : 1.0); }
+
+double significanceOf(const Fit& f, std::size_t j) {
+  const double s = f.logStd[static_cast<Eigen::Index>(j)] * std::sqrt(inflation(f));
+  return s > 0.0 ? 1.0 / s : 0.0;
+}
+
+// Delete-a-block jackknife of the term values (and Tc): refit each replicate
+// curve with the same terms, starting from the full fit.
+void jackknife(const AllanCurve& curve, const Fit& fit, NoiseModel& model) {
+  std::size_t blocks = curve.points.empty() ? 0 : curve.points.front().jackknifeVariance.size();
+  for (const auto& p : curve.points) blocks = std::min(blocks, p.jackknifeVariance.size());
+  if (blocks < 2) return;
+  // Taus without replicates (too few differences) are left out of every replicate.
+  AllanCurve replicate = curve;
+  std::erase_if(replicate.points, [](const AllanPoint& p) { return p.jackknifeVariance.empty(); });
+  if (replicate.points.size() <= fit.active.size() + 1) return;
+  const bool markov = hasMarkov(fit.active);
+  const Eigen::VectorXd start = fit.coefficient.array().log().matrix();
+  const std::size_t k = fit.active.size();
+  std::vector<std::vector<double>> values(k + 1);
+  for (std::size_t b = 0; b < blocks; ++b) {
+    std::size_t i = 0;
+    for (const auto& p : curve.points) {
+      if (p.jackknifeVariance.empty()) continue;
+      replicate.points[i++].deviation = std::sqrt(std::max(p.jackknifeVariance[b], 0.0));
+    }
+    const Fit f = solve(replicate, fit.active, fit.tcS, markov, &start);
+    if (!f.ok) continue;
+    for (std::size_t j = 0; j < k; ++j) values[j].push_back(std::sqrt(f.coefficient[static_cast<Eigen::Index>(j)]));
+    values[k].push_back(std::log(f.tcS > 0.0 ? f.tcS : 1.0));
+  }
+  if (values[0].size() < 2) return;
+  auto spread = [](const std::vector<double>& v) {
+    double mean = 0.0;
+    for (double x : v) mean += x;
+    mean /= static_cast<double>(v.size());
+    double ss = 0.0;
+    for (double x : v) ss += (x - mean) * (x - mean);
+    return std::sqrt(ss * static_cast<double>(v.size() - 1) / static_cast<double>(v.size()));
+  };
+  for (std::size_t j = 0; j < k; ++j) {
+    NoiseTerm& t = model.terms[j];
+    t.stdError = spread(values[j]);
+    // Significance of the variance coefficient value^2: value / (2 std).
+    t.significance = t.stdError > 0.0 ? t.value / (2.0 * t.stdError) : t.significance;
+    if (t.kind == NoiseTermKind::kMarkov) {
+      const double s = spread(values[k]);
+      t.correlationTimeLowS = t.correlationTimeS * std::exp(-s);
+      t.correlationTimeHighS = t.correlationTimeS * std::exp(s);
+    }
+  }
+}
+
+}  // namespace
+
+const char* noiseTermName(NoiseTermKind kind) {
+  switch (kind) {
+    case NoiseTermKind::kQuantisation: return "quantisation";
+    case NoiseTermKind::kAngleRandomWalk: return "angle random walk";
+    case NoiseTermKind::kBiasInstability: return "bias instability";
+    case NoiseTermKind::kRateRandomWalk: return "rate random walk";
+    case NoiseTermKind::kRateRamp: return "rate ramp";
+    case NoiseTermKind::kMarkov: return "Markov (correlated) rate";
+  }
+  return "?";
+}
+
+const char* noiseTermKey(NoiseTermKind kind) {
+  switch (kind) {
+    case NoiseTermKind::kQuantisation: return "quantisation";
+    case NoiseTermKind::kAngleRandomWalk: return "angle_random_walk";
+    case NoiseTermKind::kBiasInstability: return "bias_instability";
+    case NoiseTermKind::kRateRandomWalk: return "rate_random_walk";
+    case NoiseTermKind::kRateRamp: return "rate_ramp";
+    case NoiseTermKind::kMarkov: return "markov";
+  }
+  return "?";
+}
+
+double unitAllanVariance(NoiseTermKind kind, double tau, double tc) {
+  switch (kind) {
+    case NoiseTermKind::kQuantisation: return 3.0 / (tau * tau);
+    case NoiseTermKind::kAngleRandomWalk: return 1.0 / tau;
+    case NoiseTermKind::kBiasInstability: return kFlickerFactor;
+    case NoiseTermKind::kRateRandomWalk: return tau / 3.0;
+    case NoiseTermKind::kRateRamp: return 0.5 * tau * tau;
+    case NoiseTermKind::kMarkov: {
+      if (!(tc > 0.0)) return 0.0;
+      const double x = tau / tc;
+      // Below x = 1e-3 the bracket cancels to x^2/3 - x^3/4 (series).
+      const double bracket = x < 1e-3 ? x * x / 3.0 - x * x * x / 4.0
+                                      : 1.0 - (3.0 - 4.0 * std::exp(-x) + std::exp(-2.0 * x)) / (2.0 * x);
+      return 2.0 * bracket / x;
+    }
+  }
+  return 0.0;
+}
+
+double NoiseModel::allanVariance(double tauS) const {
+  double v = 0.0;
+  for (const auto& t : terms) v += t.value * t.value * unitAllanVariance(t.kind, tauS, t.correlationTimeS);
+  return v;
+}
+
+const NoiseTerm* NoiseModel::find(NoiseTermKind kind) const {
+  for (const auto& t : terms)
+    if (t.kind == kind) return &t;
+  return nullptr;
+}
+
+Result<AllanCurve> overlappingAllanCurve(std::span<const double> phase, double tau0S, const AllanOptions& options) {
+  if (phase.size() < 8) return insufficientData("an Allan deviation needs at least 8 samples, got " + std::to_string(phase.size()));
+  if (!(tau0S > 0.0)) return invalidArgument("the sample interval must be > 0 s");
+  if (!(options.confidence > 0.0 && options.confidence < 1.0))
+    return invalidArgument("the confidence level must be within (0, 1)");
+  AllanCurve curve;
+  curve.tau0S = tau0S;
+  curve.phasePoints = phase.size();
+  curve.confidence = options.confidence;
+  for (std::size_t m : averagingFactors(phase.size(), options.tausPerOctave, options.maxTauFraction)) {
+    AllanPoint p;
+    p.m = m;
+    p.tauS = static_cast<double>(m) * tau0S;
+    const int blocks = options.jackknifeBlocks;
+    const std::size_t count = phase.size() - 2 * m;
+    if (blocks < 2 || count < static_cast<std::size_t>(4 * blocks)) {
+      p.deviation = std::sqrt(allanVariance(phase, tau0S, m, true, &p.differences));
+    } else {
+      // One pass in blocks: partial sums of the squared second differences by
+      // block of their start give the variance and its jackknife replicates.
+      std::vector<double> sums(static_cast<std::size_t>(blocks), 0.0);
+      std::vector<std::size_t> counts(static_cast<std::size_t>(blocks), 0);
+      for (int b = 0; b < blocks; ++b) {
+        const std::size_t lo = count * static_cast<std::size_t>(b) / static_cast<std::size_t>(blocks);
+        const std::size_t hi = count * static_cast<std::size_t>(b + 1) / static_cast<std::size_t>(blocks);
+        const std::size_t n = hi - lo + 2 * m;
+        std::size_t used = 0;
+        const double v = allanVariance(phase.subspan(lo, n), tau0S, m, true, &used);
+        sums[static_cast<std::size_t>(b)] = v * static_cast<double>(used);
+        counts[static_cast<std::size_t>(b)] = used;
+      }
+      double total = 0.0;
+      for (double v : sums) total += v;
+      p.differences = count;
+      p.deviation = std::sqrt(total / static_cast<double>(count));
+      for (int b = 0; b < blocks; ++b) {
+        const auto bb = static_cast<std::size_t>(b);
+        p.jackknifeVariance.push_back((total - sums[bb]) / static_cast<double>(count - counts[bb]));
+      }
+    }
+    curve.points.push_back(p);
+  }
+  // First guess of each point's noise type: the local slope of the curve.
+  const std::size_t n = curve.points.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t a = i == 0 ? 0 : i - 1, b = i + 1 < n ? i + 1 : i;
+    double mu = -1.0;
+    if (b > a && curve.points[a].deviation > 0.0 && curve.points[b].deviation > 0.0)
+      mu = 2.0 * std::log(curve.points[b].deviation / curve.points[a].deviation) /
+           std::log(curve.points[b].tauS / curve.points[a].tauS);
+    auto& p = curve.points[i];
+    p.noise = noiseOfSlope(mu);
+    p.edf = edfOverlappingAllan(curve.phasePoints, p.m, p.noise);
+    p.interval = deviationInterval(p.deviation, p.edf, curve.confidence);
+  }
+  return curve;
+}
+
+Result<NoiseModel> identifyNoise(AllanCurve& curve, const IdentifyOptions& options) {
+  if (curve.points.size() < 3)
+    return insufficientData("noise terms need an Allan curve of at least 3 taus, got " +
+                            std::to_string(curve.points.size()) + "; record longer");
+  std::vector<int> terms;
+  for (int k = 0; k < kNoiseTermKinds; ++k) {
+    if (!options.allowed[k]) continue;
+    if (k == static_cast<int>(NoiseTermKind::kMarkov) && !options.allowMarkov) continue;
+    terms.push_back(k);
+  }
+  const auto grid = markovGrid(curve);
+  if (grid.empty()) std::erase(terms, static_cast<int>(NoiseTermKind::kMarkov));
+  // A term that stays under 1e-3 of the model everywhere has no information;
+  // then the least significant term goes, until every remaining one is
+  // significant.
+  Fit fit = best(curve, terms, grid);
+  for (;;) {
+    if (!fit.ok || fit.active.size() <= 1) break;
+    std::size_t weakest = 0;
+    double weakestZ = std::numeric_limits<double>::infinity();
+    for (std::size_t j = 0; j < fit.active.size(); ++j) {
+      double maxShare = 0.0;
+      for (const auto& p : curve.points) {
+        const double total = modelAt(fit, p.tauS);
+        if (total > 0.0)
+          maxShare = std::max(maxShare, fit.coefficient[static_cast<Eigen::Index>(j)] *
+                                            unitAllanVariance(static_cast<NoiseTermKind>(fit.active[j]), p.tauS, fit.tcS) /
+                                            total);
+      }
+      const double z = maxShare < 1e-3 ? 0.0 : significanceOf(fit, j);
+      if (z < weakestZ) {
+        weakestZ = z;
+        weakest = j;
+      }
+    }
+    if (weakestZ >= options.minSignificance) break;
+    terms = fit.active;
+    terms.erase(terms.begin() + static_cast<std::ptrdiff_t>(weakest));
+    fit = best(curve, terms, grid);
+  }
+  if (!fit.ok) return insufficientData("no noise term could be fitted to the Allan curve");
+
+  NoiseModel model;
+  model.chiSquare = fit.chiSquare;
+  model.dof = fit.dof;
+  const double inflate = std::sqrt(inflation(fit));
+  for (std::size_t j = 0; j < fit.active.size(); ++j) {
+    const auto jj = static_cast<Eigen::Index>(j);
+    const double c = fit.coefficient[jj];
+    NoiseTerm t;
+    t.kind = static_cast<NoiseTermKind>(fit.active[j]);
+    t.value = std::sqrt(c);
+    t.stdError = 0.5 * t.value * fit.logStd[jj] * inflate;
+    t.significance = significanceOf(fit, j);
+    if (t.kind == NoiseTermKind::kMarkov) {
+      t.correlationTimeS = fit.tcS;
+      t.correlationTimeLowS = fit.tcS * std::exp(-fit.logTcStd * inflate);
+      t.correlationTimeHighS = fit.tcS * std::exp(fit.logTcStd * inflate);
+    }
+    // Where the term carries the model: share >= 1/3, else its best tau.
+    double bestShare = -1.0;
+    bool any = false;
+    for (const auto& p : curve.points) {
+      const double total = modelAt(fit, p.tauS);
+      const double share = total > 0.0 ? c * unitAllanVariance(t.kind, p.tauS, fit.tcS) / total : 0.0;
+      if (share >= 1.0 / 3.0) {
+        if (!any) t.tauLowS = p.tauS;
+        t.tauHighS = p.tauS;
+        any = true;
+      }
+      if (!any && share > bestShare) {
+        bestShare = share;
+        t.tauLowS = t.tauHighS = p.tauS;
+      }
+    }
+    model.terms.push_back(t);
+  }
+  jackknife(curve, fit, model);
+  std::sort(model.terms.begin(), model.terms.end(),
+            [](const NoiseTerm& a, const NoiseTerm& b) { return a.kind < b.kind; });
+  for (auto& p : curve.points) {
+    p.noise = noiseOfSlope(modelSlope(fit, p.tauS));
+    p.edf = edfOverlappingAllan(curve.phasePoints, p.m, p.noise);
+    p.interval = deviationInterval(p.deviation, p.edf, curve.confidence);
+  }
+  return model;
+}
+
+}  // namespace fog::noise

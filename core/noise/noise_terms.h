@@ -1,0 +1,117 @@
+#pragma once
+// The Allan curve of a phase series and the IEEE Std 952 noise terms
+// identified from it.
+//
+// Terms and their Allan variances (rate units r = phase units / s, e.g. deg/s;
+// tau in s):
+//   quantisation Q (phase units)             3 Q^2 / tau^2
+//   angle random walk N (r sqrt(s))          N^2 / tau
+//   bias instability B (r), flicker rate     (2 ln 2 / pi) B^2     (ADEV plateau 0.664 B)
+//   rate random walk K (r / sqrt(s))         K^2 tau / 3
+//   rate ramp R (r / s)                      R^2 tau^2 / 2
+//   Markov (exponentially correlated) rate   (2 s^2 Tc / tau) [1 - Tc/(2 tau) (3 - 4 e^(-tau/Tc) + e^(-2 tau/Tc))]
+//     of standard deviation s and correlation time Tc (IEEE 952 Annex C);
+//     the simulator's bias instability is this process.
+//
+// Identification: a weighted least-squares fit of the sum of the terms'
+// Allan variances to the measured one. Each variance is weighted by its
+// inverse variance 2 model^2 / EDF (iterated, so the weights use the model,
+// not the noisy measurement), coefficients are kept >= 0 (active set), the
+// Markov correlation time is found on a logarithmic grid (variable
+// projection: the rest is linear), and only terms whose coefficient is at
+// least `minSignificance` standard errors from zero are reported.
+// Neighbouring taus of an overlapping Allan curve are strongly correlated,
+// so the fit's covariance understates the uncertainties (by 2-4x, see
+// docs/noise.md). The stated uncertainties are therefore delete-a-block
+// jackknife estimates: the record is cut into blocks, each left out in turn,
+// the fit repeated (same terms) and the spread of the replicates taken. The
+// fit's covariance (scaled by chi^2/dof when above 1) is used only to decide
+// which terms are significant, and when the curve has no replicates.
+//
+// Pure functions, thread-safe; no exceptions.
+
+#include <cstddef>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "common/status.h"
+#include "noise/allan.h"
+
+namespace fog::noise {
+
+struct AllanPoint {
+  double tauS = 0.0;
+  std::size_t m = 0;            // averaging factor, tau = m * tau0
+  double deviation = 0.0;       // overlapping Allan deviation, rate units
+  std::size_t differences = 0;  // second differences averaged
+  PowerLawNoise noise = PowerLawNoise::kWhiteFrequency;  // noise type the EDF assumes
+  double edf = 0.0;
+  Interval interval;            // at AllanCurve::confidence
+  // The Allan variance with the second differences starting in block b of
+  // the record left out (delete-a-block jackknife replicates).
+  std::vector<double> jackknifeVariance;
+};
+
+struct AllanCurve {
+  double tau0S = 0.0;
+  std::size_t phasePoints = 0;
+  double confidence = kOneSigmaConfidence;
+  std::vector<AllanPoint> points;
+};
+
+struct AllanOptions {
+  int tausPerOctave = 2;      // tau steps of 2^(1/tausPerOctave)
+  double maxTauFraction = 0.25;  // longest tau as a fraction of the record
+  double confidence = kOneSigmaConfidence;
+  int jackknifeBlocks = 16;   // 0: no jackknife (uncertainties from the fit's covariance)
+};
+
+// Overlapping Allan deviation at logarithmically spaced taus. EDFs and
+// intervals assume the noise type of the curve's local slope; identifyNoise()
+// refines them with the fitted model. Fails with kInsufficientData for fewer
+// than 8 phase values.
+Result<AllanCurve> overlappingAllanCurve(std::span<const double> phase, double tau0S, const AllanOptions& options = {});
+
+enum class NoiseTermKind { kQuantisation, kAngleRandomWalk, kBiasInstability, kRateRandomWalk, kRateRamp, kMarkov };
+inline constexpr int kNoiseTermKinds = 6;
+const char* noiseTermName(NoiseTermKind kind);  // "quantisation", "angle random walk", ...
+const char* noiseTermKey(NoiseTermKind kind);   // "quantisation", "angle_random_walk", ... (JSON)
+
+struct NoiseTerm {
+  NoiseTermKind kind = NoiseTermKind::kAngleRandomWalk;
+  // In the units of the table above (phase units: Q; rate units * s^p: N, B, K, R; rate: Markov sigma).
+  double value = 0.0, stdError = 0.0;
+  double significance = 0.0;       // fitted coefficient / its standard error
+  double tauLowS = 0.0, tauHighS = 0.0;  // taus where this term is >= 1/3 of the model variance
+  double correlationTimeS = 0.0;   // Markov only: Tc and its chi^2 + 1 range on the grid
+  double correlationTimeLowS = 0.0, correlationTimeHighS = 0.0;
+};
+
+struct NoiseModel {
+  std::vector<NoiseTerm> terms;  // significant terms only, in NoiseTermKind order
+  double chiSquare = 0.0;
+  int dof = 0;
+  // Model Allan variance (rate units^2) at tau.
+  double allanVariance(double tauS) const;
+  const NoiseTerm* find(NoiseTermKind kind) const;
+};
+
+struct IdentifyOptions {
+  double minSignificance = 2.0;  // report a term only when coefficient / std >= this
+  bool allowMarkov = true;
+  // Candidate terms; a term left out is never fitted (e.g. no rate ramp).
+  bool allowed[kNoiseTermKinds] = {true, true, true, true, true, true};
+};
+
+// Fits the terms to `curve` and rewrites the curve's EDFs and intervals with
+// the noise type the fitted model has at each tau. Fails with
+// kInsufficientData when the curve has fewer than 3 points.
+Result<NoiseModel> identifyNoise(AllanCurve& curve, const IdentifyOptions& options = {});
+
+// Allan variance of a single term with value 1 (and correlation time tcS for
+// Markov), so that model = sum value^2 * unitAllanVariance(...).
+double unitAllanVariance(NoiseTermKind kind, double tauS, double tcS = 0.0);
+
+}  // namespace fog::noise

@@ -1,0 +1,126 @@
+#include "serial/serial_source.h"
+
+#include <QCoreApplication>
+#include <QFileInfo>
+#include <QSerialPort>
+#include <QSerialPortInfo>
+
+namespace fog::serial {
+
+namespace {
+
+QSerialPort::Parity toQt(Parity p) {
+  switch (p) {
+    case Parity::kEven: return QSerialPort::EvenParity;
+    case Parity::kOdd: return QSerialPort::OddParity;
+    case Parity::kNone: break;
+  }
+  return QSerialPort::NoParity;
+}
+
+std::string text(const QString& s) { return s.toStdString(); }
+
+}  // namespace
+
+bool SerialSettings::isValid(std::string* error) const {
+  auto bad = [&](const std::string& why) {
+    if (error) *error = why;
+    return false;
+  };
+  if (port.empty()) return bad("no serial port given (--port DEVICE; fogbench-cli ports lists them)");
+  if (baudRate <= 0) return bad("the baud rate must be > 0, got " + std::to_string(baudRate));
+  if (dataBits < 5 || dataBits > 8) return bad("data bits must be 5..8, got " + std::to_string(dataBits));
+  if (stopBits != 1 && stopBits != 2) return bad("stop bits must be 1 or 2, got " + std::to_string(stopBits));
+  return true;
+}
+
+std::string SerialSettings::summary() const {
+  const char p = parity == Parity::kEven ? 'E' : parity == Parity::kOdd ? 'O' : 'N';
+  return std::to_string(baudRate) + " " + std::to_string(dataBits) + p + std::to_string(stopBits);
+}
+
+Result<Parity> parseParity(const std::string& t) {
+  if (t == "none") return Parity::kNone;
+  if (t == "even") return Parity::kEven;
+  if (t == "odd") return Parity::kOdd;
+  return invalidArgument("parity must be none, even or odd, got '" + t + "'");
+}
+
+void ensureQtCore() {
+  if (QCoreApplication::instance()) return;
+  static int argc = 1;
+  static char name[] = "fogbench";
+  static char* argv[] = {name, nullptr};
+  static QCoreApplication app(argc, argv);
+}
+
+std::vector<PortInfo> availablePorts() {
+  std::vector<PortInfo> out;
+  for (const QSerialPortInfo& p : QSerialPortInfo::availablePorts())
+    out.push_back(PortInfo{text(p.portName()), text(p.systemLocation()), text(p.description()),
+                           text(p.manufacturer()), text(p.serialNumber())});
+  return out;
+}
+
+Result<std::unique_ptr<SerialSource>> SerialSource::open(const SerialSettings& settings) {
+  std::string why;
+  if (!settings.isValid(&why)) return invalidArgument(why);
+  auto port = std::make_unique<QSerialPort>();
+  port->setPortName(QString::fromStdString(settings.port));
+  // Set before open(), which applies them at once: the line never runs at
+  // QSerialPort's defaults (9600) in between.
+  port->setBaudRate(settings.baudRate);
+  port->setDataBits(static_cast<QSerialPort::DataBits>(settings.dataBits));
+  port->setParity(toQt(settings.parity));
+  port->setStopBits(settings.stopBits == 2 ? QSerialPort::TwoStop : QSerialPort::OneStop);
+  port->setFlowControl(QSerialPort::NoFlowControl);
+  if (!port->open(QIODevice::ReadOnly)) {
+    const bool settingsRefused = port->error() == QSerialPort::UnsupportedOperationError ||
+                                 port->error() == QSerialPort::UnknownError;
+    return ioError("cannot open serial port " + settings.port +
+                   (settingsRefused ? " for " + settings.summary() : std::string()) + ": " +
+                   text(port->errorString()));
+  }
+  // The driver's buffer is not cleared: whatever arrives from here on is
+  // what the session stores (the decoder resynchronises on stale bytes).
+  return std::unique_ptr<SerialSource>(new SerialSource(std::move(port), settings));
+}
+
+SerialSource::SerialSource(std::unique_ptr<QSerialPort> port, SerialSettings settings)
+    : port_(std::move(port)), settings_(std::move(settings)) {}
+
+SerialSource::~SerialSource() = default;
+
+Status SerialSource::vanished(const std::string& why) {
+  failed_ = ioError("serial port " + settings_.port + " vanished: " + why);
+  port_->close();
+  return failed_;
+}
+
+Result<acquisition::ReadOutcome> SerialSource::read(std::vector<std::uint8_t>& out,
+                                                    std::chrono::milliseconds timeout) {
+  if (!failed_.isOk()) return failed_;
+  if (port_->bytesAvailable() == 0 && !port_->waitForReadyRead(static_cast<int>(timeout.count()))) {
+    const auto error = port_->error();
+    if (error == QSerialPort::TimeoutError || error == QSerialPort::NoError) {
+      port_->clearError();
+      // A quiet line, unless the device node itself has gone (some drivers
+      // report an unplugged adapter only as silence).
+#ifndef Q_OS_WIN
+      if (!QFileInfo::exists(QString::fromStdString(settings_.port)) &&
+          !QFileInfo::exists(QStringLiteral("/dev/") + QString::fromStdString(settings_.port)))
+        return vanished("the device no longer exists");
+#endif
+      return acquisition::ReadOutcome{0, false};
+    }
+    return vanished(text(port_->errorString()));
+  }
+  const QByteArray data = port_->readAll();
+  if (data.isEmpty() && port_->error() != QSerialPort::NoError) return vanished(text(port_->errorString()));
+  out.insert(out.end(), data.begin(), data.end());
+  return acquisition::ReadOutcome{static_cast<std::size_t>(data.size()), false};
+}
+
+std::string SerialSource::description() const { return "serial " + settings_.port + " at " + settings_.summary(); }
+
+}  // namespace fog::serial
