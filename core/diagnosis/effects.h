@@ -63,6 +63,11 @@ struct EffectSpec {
 // What some effects need to know about the nominal chain.
 struct EffectContext {
   model::EarthParams earth;  // nominal Earth-rate projection (kEarthRateProjection)
+  // kDroppedFrames loses exactly its expected share of frames, evenly spaced,
+  // instead of a random set: the diagnosis' replay uses this so that the
+  // lost-frame count per segment is a deterministic function of the loss rate
+  // (a recording's random pattern cannot be reproduced; only its rate can).
+  bool expectedDrops = false;
 };
 
 const std::vector<EffectSpec>& effectLibrary();

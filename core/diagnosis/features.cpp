@@ -143,11 +143,8 @@ void emitSegment(Emitter& e, const SegmentFit& f, const SegmentSums& s, const Po
   const double ta = f.table(0), tb = f.table(1);
   const double ga = f.gyro(0, ax), gb = f.gyro(1, ax);
   const double tAmp0 = std::hypot(ta, tb);
-  // Relative standard error (ppm) of harmonic h of the table / of the gyro axis a.
+  // Relative standard error (ppm) of harmonic h of the table.
   auto tRel = [&](int h) { return std::sqrt(0.5 * (f.tableVar(2 * (h - 1)) + f.tableVar(2 * (h - 1) + 1))) / tAmp0 * 1e6; };
-  auto gRel = [&](int h, int a, double amp) {
-    return std::sqrt(0.5 * (f.gyroVar(2 * (h - 1), a) + f.gyroVar(2 * (h - 1) + 1, a))) / amp * 1e6;
-  };
   // Table channel: harmonics 2..5 of the motion as the encoder reports it.
   for (int h = 2; h <= kHarmonics; ++h) {
     double i = 0, q = 0;
@@ -161,7 +158,11 @@ void emitSegment(Emitter& e, const SegmentFit& f, const SegmentSums& s, const Po
   // Gyro minus table: the fundamental's gain and delay, and how the gyro's
   // harmonics differ from the table's.
   const double tAmp = std::hypot(ta, tb), gAmp = std::hypot(ga, gb);
-  const double rel1 = std::hypot(tRel(1), gRel(1, ax, gAmp));  // ppm of the fundamental
+  // Formal errors: the table's only. The gyro's white-noise formal error
+  // overstates its spread several times over (its increments carry the
+  // pulse quantisation as a difference, which telescopes), and the gyro has
+  // a true seed-to-seed spread that the replays measure.
+  const double rel1 = tRel(1);  // ppm of the fundamental
   e.add(Channel::kGyroMinusTable, "gain", "ppm", 1, ax, (gAmp / tAmp - 1.0) * 1e6, rel1);
   e.add(Channel::kGyroMinusTable, "delay", "us", 1, ax,
         wrapPi(std::atan2(tb, ta) - std::atan2(gb, ga)) / ref.omegaRadPerS * 1e6, rel1 / ref.omegaRadPerS);
@@ -169,7 +170,7 @@ void emitSegment(Emitter& e, const SegmentFit& f, const SegmentSums& s, const Po
     double ti = 0, tq = 0, gi = 0, gq = 0;
     relative(f.table(2 * (h - 1)), f.table(2 * (h - 1) + 1), ta, tb, h, ti, tq);
     relative(f.gyro(2 * (h - 1), ax), f.gyro(2 * (h - 1) + 1, ax), ga, gb, h, gi, gq);
-    const double fs = std::hypot(tRel(h), gRel(h, ax, gAmp));
+    const double fs = tRel(h);
     e.add(Channel::kGyroMinusTable, kInPhase[h], "ppm", h, ax, gi - ti, fs);
     e.add(Channel::kGyroMinusTable, kQuadrature[h], "ppm", h, ax, gq - tq, fs);
   }
@@ -178,13 +179,12 @@ void emitSegment(Emitter& e, const SegmentFit& f, const SegmentSums& s, const Po
   e.add(Channel::kGyro, "residual_ms", "udeg^2", -1, ax, f.gyroMs * 1e12,
         f.gyroMs * 1e12 * std::sqrt(2.0 / static_cast<double>(s.gn)));
   for (int a = 0; a < kAxisCount; ++a) {
-    e.add(Channel::kGyro, "trend", "deg/h", 0, a, f.gyro(kGyroCols - 1, a) * kSecondsPerHour,
-          std::sqrt(f.gyroVar(kGyroCols - 1, a)) * kSecondsPerHour);
+    e.add(Channel::kGyro, "trend", "deg/h", 0, a, f.gyro(kGyroCols - 1, a) * kSecondsPerHour);
     if (a == ax) continue;
     double i = 0, q = 0;
     relative(f.gyro(0, a), f.gyro(1, a), ta, tb, 1, i, q);
-    e.add(Channel::kGyro, "cross_in_phase", "ppm", 1, a, i, gRel(1, a, tAmp0));
-    e.add(Channel::kGyro, "cross_quadrature", "ppm", 1, a, q, gRel(1, a, tAmp0));
+    e.add(Channel::kGyro, "cross_in_phase", "ppm", 1, a, i);
+    e.add(Channel::kGyro, "cross_quadrature", "ppm", 1, a, q);
   }
   // Timing of both streams inside the segment.
   e.add(Channel::kTiming, "table_interval", "ppm", -1, -1,

@@ -63,9 +63,10 @@ struct PointSpectrum {
 struct FeatureSet {
   std::vector<FeatureKey> keys;
   std::vector<double> values;
-  // White-noise standard error of each value from its own least-squares fit
-  // (0 where there is none): the spread that a deterministic replay stage,
-  // such as the encoder quantising exact motion, cannot show across seeds.
+  // White-noise standard error of the table's part of each value from its
+  // own least-squares fit (0 where there is none, and for the gyro's part:
+  // its white-noise error overstates the spread of differenced pulse
+  // quantisation several times over, and the replays show the gyro's spread).
   std::vector<double> formalStd;
   std::vector<PointSpectrum> spectra;  // one per test point
 };
