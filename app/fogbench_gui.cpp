@@ -3,12 +3,13 @@
 //
 //   fogbench [--preset NAME] [--seed N] [--speed X] [--replay SESSION.fbs]
 //            [--session-folder DIR] [--open SESSION.fbs] [--run]
-//            [--view configure|live|results|sessions]
+//            [--view configure|live|results|sessions|diagnosis|noise]
 //            [--screenshot FILE [--screenshot-after S]] [--language system|en|zh_CN]
 //
 // --screenshot FILE saves an image of the window and quits: for the
 // configure view at once, for the live view S seconds into the run (default
-// 3), for the results and sessions views when the run (or --open) ended.
+// 3), for the results and sessions views when the run (or --open) ended,
+// for the diagnosis and noise views when their analysis of that result ended.
 // Exit code 1 when the run gave no result or the image could not be written.
 
 #include <QApplication>
@@ -54,7 +55,7 @@ int main(int argc, char* argv[]) {
 
   QStringList presetNames;
   for (const auto& p : fog::ui::benchPresets()) presetNames << p.name;
-  const QStringList views = {"configure", "live", "results", "sessions"};
+  const QStringList views = {"configure", "live", "results", "sessions", "diagnosis", "noise"};
 
   QCommandLineParser parser;
   parser.setApplicationDescription("Fiber-optic gyro IMU delay test bench");
@@ -93,14 +94,31 @@ int main(int argc, char* argv[]) {
   if (!ok || after < 0) return fail("--screenshot-after needs seconds >= 0");
 
   const QString screenshot = parser.value(screenshotOption);
-  const bool run = parser.isSet(runOption) || (!screenshot.isEmpty() && (view == "live" || view == "results" ||
-                                                                         (view == "sessions" && !parser.isSet(openOption))));
+  const bool run = parser.isSet(runOption) ||
+                   (!screenshot.isEmpty() && !parser.isSet(openOption) &&
+                    (view == "live" || view == "results" || view == "sessions" || view == "diagnosis" ||
+                     view == "noise"));
   if (!screenshot.isEmpty()) {
     if (view == "configure" || (view.isEmpty() && !run && !parser.isSet(openOption))) {
       QTimer::singleShot(0, &window, [&window, screenshot] { saveAndQuit(window, screenshot, true); });
     } else if (view == "live") {
       QTimer::singleShot(static_cast<int>(after * 1000.0) + 200, &window,
                          [&window, screenshot] { saveAndQuit(window, screenshot, window.isRunning()); });
+    } else if (view == "noise") {
+      QObject::connect(&window, &fog::ui::MainWindow::noiseAnalysed, &window, [&window, screenshot](bool succeeded) {
+        window.showView(fog::ui::MainWindow::kNoise);
+        saveAndQuit(window, screenshot, succeeded);
+      });
+    } else if (view == "diagnosis") {
+      // The diagnosis of the run's (or the opened session's) result.
+      auto diagnose = [&window](bool succeeded) {
+        if (succeeded) window.diagnoseShown();
+        else QApplication::exit(1);
+      };
+      QObject::connect(&window, &fog::ui::MainWindow::runEnded, &window, diagnose);
+      QObject::connect(&window, &fog::ui::MainWindow::sessionOpened, &window, diagnose);
+      QObject::connect(&window, &fog::ui::MainWindow::diagnosisEnded, &window,
+                       [&window, screenshot](bool succeeded) { saveAndQuit(window, screenshot, succeeded); });
     } else {
       auto done = [&window, screenshot, view](bool succeeded) {
         if (view == "sessions") window.showView(fog::ui::MainWindow::kSessions);

@@ -15,7 +15,7 @@ AcquisitionRunner::~AcquisitionRunner() {
 }
 
 bool AcquisitionRunner::start(RunRequest request) {
-  if (running_ || !request.source) return false;
+  if (running_ || (!request.source && !request.openSource)) return false;
   running_ = true;
   stop_.store(false);
   dropped_.store(0);
@@ -24,9 +24,18 @@ bool AcquisitionRunner::start(RunRequest request) {
     buffer_.clear();
     bufferedFrames_ = 0;
   }
-  future_ = QtConcurrent::run([this, request = std::move(request)] {
-    auto result = acquisition::acquire(*request.source, request.options, &stop_,
-                                       [this](acquisition::AcquisitionBatch&& b) { push(std::move(b)); });
+  future_ = QtConcurrent::run([this, request = std::move(request)]() mutable {
+    Result<acquisition::AcquisitionResult> result = Status(StatusCode::kInternal, "no source");
+    if (!request.source) {
+      auto opened = request.openSource();
+      if (opened) request.source = std::shared_ptr<acquisition::ByteSource>(std::move(*opened));
+      else result = opened.status();
+    }
+    if (request.source)
+      result = acquisition::acquire(*request.source, request.options, &stop_,
+                                    [this](acquisition::AcquisitionBatch&& b) { push(std::move(b)); });
+    // A serial port is closed in the thread that read it.
+    request.source.reset();
     std::shared_ptr<RunOutcome> outcome;
     if (result) {
       outcome = std::make_shared<RunOutcome>();

@@ -23,6 +23,7 @@
 #include <QObject>
 #include <QString>
 #include <atomic>
+#include <functional>
 #include <cstdint>
 #include <memory>
 #include <mutex>
@@ -35,6 +36,9 @@ namespace fog::ui {
 
 struct RunRequest {
   std::shared_ptr<acquisition::ByteSource> source;
+  // Instead of `source`: opens the source in the worker thread, for sources
+  // that must be opened and read in one thread (a serial port).
+  std::function<Result<std::unique_ptr<acquisition::ByteSource>>()> openSource;
   acquisition::AcquisitionOptions options;
   std::vector<model::TestPointTruth> truth;  // when the simulator is the source
 };

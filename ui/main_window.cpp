@@ -38,8 +38,11 @@
 #include "io/imported_session.h"
 #include "session/session_file.h"
 #include "ui/bench_settings_dialog.h"
+#include "ui/serial/serial_source.h"
+#include "ui/diagnosis_view.h"
 #include "ui/language.h"
 #include "ui/live_view.h"
+#include "ui/noise_view.h"
 #include "ui/plan_editor.h"
 #include "ui/result_view.h"
 #include "ui/session_browser.h"
@@ -88,6 +91,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   sessionBrowser_ = new SessionBrowser();
   sessionBrowser_->setObjectName("sessionBrowser");
   tabs_->addTab(sessionBrowser_, tr("Sessions"));
+  diagnosisView_ = new DiagnosisView();
+  diagnosisView_->setObjectName("diagnosisView");
+  tabs_->addTab(diagnosisView_, tr("Diagnosis"));
+  noiseView_ = new NoiseView();
+  noiseView_->setObjectName("noiseView");
+  tabs_->addTab(noiseView_, tr("Noise"));
   setCentralWidget(tabs_);
   buildToolBar();
   setBenchSettings(loadBenchSettings());
@@ -110,6 +119,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   });
   connect(sessionBrowser_, &SessionBrowser::compareRequested, this, &MainWindow::compareSessions);
   connect(sessionBrowser_, &SessionBrowser::importRequested, this, &MainWindow::importCsv);
+  connect(resultView_, &ResultView::diagnoseRequested, this, &MainWindow::diagnoseShown);
 
   QSettings settings;
   setSessionFolder(settings.value("sessions/folder", defaultSessionFolder()).toString());
@@ -137,6 +147,7 @@ QWidget* MainWindow::buildConfigureView() {
   sourceCombo_->setObjectName("sourceCombo");
   sourceCombo_->addItem(tr("Built-in simulator"), "sim");
   sourceCombo_->addItem(tr("Replay of a session"), "replay");
+  sourceCombo_->addItem(tr("Serial sampling board"), "serial");
   speedCombo_ = new QComboBox();
   speedCombo_->setObjectName("speedCombo");
   speedCombo_->addItem(tr("Real time"), 1.0);
@@ -159,6 +170,30 @@ QWidget* MainWindow::buildConfigureView() {
   sourceForm->addRow(tr("Pace"), speedCombo_);
   sourceForm->addRow(tr("Seed"), seedSpin_);
   sourceForm->addRow(tr("Replay"), replayRow);
+  auto* serialRow = new QHBoxLayout();
+  portCombo_ = new QComboBox();
+  portCombo_->setObjectName("portCombo");
+  portCombo_->setEditable(true);  // a device the system does not list, e.g. a pseudo-terminal
+  portCombo_->setToolTip(tr("The sampling board's serial port"));
+  baudCombo_ = new QComboBox();
+  baudCombo_->setObjectName("baudCombo");
+  baudCombo_->setEditable(true);
+  for (int baud : {921600, 460800, 230400, 115200, 1000000, 2000000}) baudCombo_->addItem(QString::number(baud));
+  auto* rescan = new QPushButton(tr("Rescan"));
+  serialRow->addWidget(portCombo_, 1);
+  serialRow->addWidget(baudCombo_);
+  serialRow->addWidget(rescan);
+  sourceForm->addRow(tr("Serial port"), serialRow);
+  auto listPorts = [this] {
+    const QString current = portCombo_->currentText();
+    portCombo_->clear();
+    for (const auto& p : serial::availablePorts())
+      portCombo_->addItem(QString::fromStdString(p.systemLocation + (p.description.empty() ? "" : "  (" + p.description + ")")),
+                          QString::fromStdString(p.systemLocation));
+    if (!current.isEmpty()) portCombo_->setCurrentText(current);
+  };
+  connect(rescan, &QPushButton::clicked, this, listPorts);
+  listPorts();
   side->addWidget(sourceBox);
 
   auto* sessionBox = new QGroupBox(tr("Session"));
@@ -205,14 +240,10 @@ QWidget* MainWindow::buildConfigureView() {
   side->addStretch(1);
   layout->addLayout(side, 2);
 
-  auto sourceChanged = [this] {
-    const bool sim = sourceCombo_->currentData().toString() == "sim";
-    seedSpin_->setEnabled(sim);
-    replayEdit_->setEnabled(!sim);
-    updateRunButton();
-  };
+  auto sourceChanged = [this] { setRunning(runner_.isRunning()); };
   connect(sourceCombo_, qOverload<int>(&QComboBox::currentIndexChanged), this, sourceChanged);
   connect(replayEdit_, &QLineEdit::textChanged, this, &MainWindow::updateRunButton);
+  connect(portCombo_, &QComboBox::currentTextChanged, this, &MainWindow::updateRunButton);
   connect(browse, &QPushButton::clicked, this, [this] {
     const QString path = QFileDialog::getOpenFileName(this, tr("Session to replay"), sessionFolder(),
                                                       tr("fogbench sessions (*.fbs)"));
@@ -348,6 +379,8 @@ void MainWindow::updateRunButton() {
   else if (sourceCombo_->currentData().toString() == "sim" && !planEditor_->isValid()) why = planEditor_->problem();
   else if (sourceCombo_->currentData().toString() == "replay" && replayEdit_->text().isEmpty())
     why = tr("choose the session file to replay");
+  else if (sourceCombo_->currentData().toString() == "serial" && serialPort().isEmpty())
+    why = tr("choose the sampling board's serial port");
   runButton_->setEnabled(why.isEmpty());
   runButton_->setToolTip(why.isEmpty() ? tr("Start the run") : tr("Cannot run: %1").arg(why));
   if (!runner_.isRunning()) {
@@ -381,6 +414,28 @@ void MainWindow::startRun() {
     request.truth = (*source)->truth();
     request.options.info.source = (*source)->description();
     request.source = std::shared_ptr<acquisition::ByteSource>(std::move(*source));
+  } else if (sourceCombo_->currentData().toString() == "serial") {
+    serial::SerialSettings settings;
+    settings.port = serialPort().toStdString();
+    bool ok = false;
+    settings.baudRate = baudCombo_->currentText().toInt(&ok);
+    std::string why;
+    if (!ok || !settings.isValid(&why)) {
+      showFailure(ok ? QString::fromStdString(why) : tr("the baud rate must be a whole number"));
+      return;
+    }
+    // The board runs its own plan; the one in the editor is stored as the
+    // plan the operator intended, and drives the progress bars.
+    plan = planEditor_->plan();
+    request.options.info.source = "serial " + settings.port + " at " + settings.summary();
+    request.options.stallWarning = std::chrono::milliseconds(2000);
+    request.options.stallLimit = std::chrono::milliseconds(10000);
+    request.options.endWhenBoardDone = true;
+    request.openSource = [settings]() -> Result<std::unique_ptr<acquisition::ByteSource>> {
+      auto source = serial::SerialSource::open(settings);
+      if (!source) return source.status();
+      return std::unique_ptr<acquisition::ByteSource>(std::move(*source));
+    };
   } else {
     const QString path = replayEdit_->text();
     auto reader = session::SessionReader::open(path.toStdString());
@@ -421,14 +476,23 @@ void MainWindow::startRun() {
 
   resultView_->clear();
   shown_.reset();
-  liveView_->startRun(plan, speed);
+  const QString sourceText = QString::fromStdString(request.options.info.source);
+  // A serial board runs at its own (real-time) pace.
+  liveView_->startRun(plan, request.openSource ? 1.0 : speed);
   showHealth({}, 0);
   runClock_.start();
   if (!runner_.start(std::move(request))) return;
   setRunning(true);
   liveTimer_.start();
   showView(kLive);
-  tell(tr("Running: %1 …").arg(sim ? tr("simulator, seed %1").arg(seedSpin_->value()) : replayEdit_->text()));
+  tell(tr("Running: %1 …").arg(sourceText));
+}
+
+QString MainWindow::serialPort() const {
+  // A listed port carries its device as data; a typed one is the text itself.
+  const int i = portCombo_->currentIndex();
+  if (i >= 0 && portCombo_->itemText(i) == portCombo_->currentText()) return portCombo_->itemData(i).toString();
+  return portCombo_->currentText().trimmed();
 }
 
 void MainWindow::stopRun() {
@@ -442,11 +506,15 @@ void MainWindow::setRunning(bool running) {
   stopButton_->setEnabled(running);
   planEditor_->setReadOnly(running);
   for (QWidget* w : std::initializer_list<QWidget*>{sourceCombo_, speedCombo_, seedSpin_, replayEdit_, recordCheck_,
-                                                    folderEdit_})
+                                                    folderEdit_, portCombo_, baudCombo_})
     w->setEnabled(!running);
   if (!running) {
     seedSpin_->setEnabled(sourceCombo_->currentData().toString() == "sim");
     replayEdit_->setEnabled(sourceCombo_->currentData().toString() == "replay");
+    const bool serial = sourceCombo_->currentData().toString() == "serial";
+    portCombo_->setEnabled(serial);
+    baudCombo_->setEnabled(serial);
+    speedCombo_->setEnabled(!serial);
     folderEdit_->setEnabled(recordCheck_->isChecked());
   }
   updateRunButton();
@@ -484,6 +552,7 @@ void MainWindow::showOutcome(std::shared_ptr<const RunOutcome> outcome) {
   shown_ = outcome;
   showHealth(outcome->recording.health, runner_.droppedFrames());
   resultView_->showOutcome(outcome);
+  analyseNoise(outcome);
   const bool delay = outcome->report.isOk();
   QString message;
   if (!outcome->complete)
@@ -569,7 +638,9 @@ void MainWindow::openSession(const QString& path) {
   loadSession(path, false, [this](std::shared_ptr<const RunOutcome> outcome) {
     if (outcome) {
       shown_ = outcome;
+      showHealth(outcome->recording.health, 0);
       resultView_->showOutcome(outcome);
+      analyseNoise(outcome);
       showView(kResults);
     }
     emit sessionOpened(outcome != nullptr);
@@ -605,6 +676,79 @@ void MainWindow::importCsv(const QString& csvFolder) {
     auto imported = io::importCsvDirectory(csvFolder.toStdString());
     if (!imported) return imported.status();
     return io::saveImportedSession(*imported, csvFolder.toStdString(), path.toStdString());
+  }));
+}
+
+void MainWindow::diagnoseShown() {
+  const auto outcome = resultView_->sharedOutcome();
+  if (!outcome || !outcome->report) return;
+  const QString title = outcome->sessionPath.empty() ? tr("this run")
+                                                    : QFileInfo(QString::fromStdString(outcome->sessionPath)).fileName();
+  diagnosisView_->showMessage(tr("Diagnosing %1: replaying it in the simulator …").arg(title));
+  showView(kDiagnosis);
+  tell(tr("Diagnosing %1 …").arg(title));
+  struct Done {
+    std::shared_ptr<diagnosis::Diagnosis> result;
+    Status status;
+  };
+  auto* watcher = new QFutureWatcher<Done>(this);
+  connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, title] {
+    const Done done = watcher->result();
+    watcher->deleteLater();
+    if (!done.result) {
+      diagnosisView_->showMessage(tr("No diagnosis: %1").arg(QString::fromStdString(done.status.message())));
+      tell(tr("No diagnosis of %1: %2").arg(title, QString::fromStdString(done.status.message())));
+      emit diagnosisEnded(false);
+      return;
+    }
+    diagnosisView_->showDiagnosis(done.result, title);
+    tell(tr("Diagnosis of %1: %2 (%3 s)")
+             .arg(title, QString::fromStdString(done.result->verdict))
+             .arg(localNumber(done.result->elapsedS, 'f', 1)));
+    emit diagnosisEnded(true);
+  });
+  // Several replays of the session in the simulator: off the GUI thread.
+  watcher->setFuture(QtConcurrent::run([outcome]() -> Done {
+    auto d = diagnosis::diagnose(outcome->recording, &outcome->info, outcome->report->constants);
+    if (!d) return {nullptr, d.status()};
+    return {std::make_shared<diagnosis::Diagnosis>(std::move(*d)), Status::ok()};
+  }));
+}
+
+void MainWindow::analyseNoise(std::shared_ptr<const RunOutcome> outcome) {
+  const bool anyStatic = std::any_of(outcome->recording.testPoints.begin(), outcome->recording.testPoints.end(),
+                                     [](const TestPointData& p) { return p.kind == TestPointKind::kStatic; });
+  if (!anyStatic) {
+    noiseView_->showMessage(tr("This result has no static segment. To measure the gyro's noise (Allan deviation, "
+                               "noise terms, bias), add a test point of kind \"static\" to the plan: the table "
+                               "rests while the gyro is recorded."));
+    emit noiseAnalysed(false);
+    return;
+  }
+  noiseView_->showMessage(tr("Computing the Allan deviation …"));
+  struct Done {
+    std::vector<noise::GyroNoiseReport> reports;
+    Status status;
+  };
+  auto* watcher = new QFutureWatcher<Done>(this);
+  connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher] {
+    Done done = watcher->result();
+    watcher->deleteLater();
+    if (!done.status.isOk()) {
+      noiseView_->showMessage(tr("No noise analysis: %1").arg(QString::fromStdString(done.status.message())));
+      emit noiseAnalysed(false);
+      return;
+    }
+    noiseView_->showReports(std::move(done.reports));
+    emit noiseAnalysed(true);
+  });
+  watcher->setFuture(QtConcurrent::run([outcome]() -> Done {
+    noise::GyroNoiseOptions options;
+    options.earth.latitudeDeg = outcome->info.bench.latitudeDeg;
+    options.pulseEquivalentDeg = outcome->info.bench.pulseEquivalentDeg;
+    auto reports = noise::analyzeGyroNoise(outcome->recording, options);
+    if (!reports) return {{}, reports.status()};
+    return {std::move(*reports), Status::ok()};
   }));
 }
 

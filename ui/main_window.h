@@ -33,6 +33,8 @@ class QTabWidget;
 
 namespace fog::ui {
 
+class DiagnosisView;
+class NoiseView;
 class LiveView;
 class PlanEditor;
 class ResultView;
@@ -42,7 +44,7 @@ class MainWindow : public QMainWindow {
   Q_OBJECT
 
  public:
-  enum View { kConfigure = 0, kLive, kResults, kSessions };
+  enum View { kConfigure = 0, kLive, kResults, kSessions, kDiagnosis, kNoise };
 
   explicit MainWindow(QWidget* parent = nullptr);
   ~MainWindow() override;
@@ -51,6 +53,8 @@ class MainWindow : public QMainWindow {
   LiveView* liveView() const { return liveView_; }
   ResultView* resultView() const { return resultView_; }
   SessionBrowser* sessionBrowser() const { return sessionBrowser_; }
+  DiagnosisView* diagnosisView() const { return diagnosisView_; }
+  NoiseView* noiseView() const { return noiseView_; }
   void showView(View view);
   View currentView() const;
 
@@ -80,6 +84,9 @@ class MainWindow : public QMainWindow {
   // Imports a folder in the CSV layout (docs/formats.md) as a new session in
   // the browser's folder, in the background.
   void importCsv(const QString& csvFolder);
+  // The sim-to-real diagnosis of the shown result, in the background; shown
+  // in the Diagnosis view.
+  void diagnoseShown();
 
  signals:
   // Every started run ends with this, once its results (or error) are shown.
@@ -88,6 +95,10 @@ class MainWindow : public QMainWindow {
   void sessionOpened(bool succeeded);
   // Every importCsv ends with this: the new session, or empty on failure.
   void importEnded(const QString& sessionPath);
+  // Every diagnoseShown ends with this.
+  void diagnosisEnded(bool succeeded);
+  // After every shown result: whether its static segments gave a noise analysis.
+  void noiseAnalysed(bool succeeded);
 
  private:
   QWidget* buildConfigureView();
@@ -100,8 +111,11 @@ class MainWindow : public QMainWindow {
   void tell(const QString& message);
   void loadSession(const QString& path, bool reanalyse, std::function<void(std::shared_ptr<const RunOutcome>)> done);
   void compareSessions(const QString& first, const QString& second);
+  // The Allan deviation of the outcome's static segments, in the background.
+  void analyseNoise(std::shared_ptr<const RunOutcome> outcome);
   void updateRunButton();
   SessionInfo sessionInfo() const;
+  QString serialPort() const;
 
   AcquisitionRunner runner_;
   QTimer liveTimer_;
@@ -115,6 +129,8 @@ class MainWindow : public QMainWindow {
   LiveView* liveView_ = nullptr;
   ResultView* resultView_ = nullptr;
   SessionBrowser* sessionBrowser_ = nullptr;
+  DiagnosisView* diagnosisView_ = nullptr;
+  NoiseView* noiseView_ = nullptr;
 
   QPushButton* runButton_ = nullptr;
   QPushButton* stopButton_ = nullptr;
@@ -122,6 +138,8 @@ class MainWindow : public QMainWindow {
   QComboBox* speedCombo_ = nullptr;
   QSpinBox* seedSpin_ = nullptr;
   QLineEdit* replayEdit_ = nullptr;
+  QComboBox* portCombo_ = nullptr;
+  QComboBox* baudCombo_ = nullptr;
   QCheckBox* recordCheck_ = nullptr;
   QLineEdit* folderEdit_ = nullptr;
   QLineEdit* operatorEdit_ = nullptr;

@@ -59,7 +59,7 @@ PlanEditor::PlanEditor(QWidget* parent) : QWidget(parent) {
 
   table_ = new QTableWidget(0, kColumnCount);
   table_->setObjectName("planTable");
-  table_->setHorizontalHeaderLabels({tr("Axis"), tr("Frequency"), tr("Amplitude"), tr("Duration"), tr("Periods"),
+  table_->setHorizontalHeaderLabels({tr("Kind"), tr("Axis"), tr("Frequency"), tr("Amplitude"), tr("Duration"), tr("Periods"),
                                      tr("Settle"), tr("Check")});
   table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
   table_->horizontalHeader()->setSectionResizeMode(kCheck, QHeaderView::Stretch);
@@ -107,6 +107,13 @@ QWidget* PlanEditor::cellEditor(int row, Column column) const { return table_->c
 void PlanEditor::addRow(const TestPoint& p) {
   const int row = table_->rowCount();
   table_->insertRow(row);
+  auto* kind = new QComboBox();
+  kind->addItem(tr("swing"));
+  kind->addItem(tr("static"));
+  kind->setToolTip(tr("static: the table at rest, to measure the gyro's noise (Allan deviation)"));
+  kind->setCurrentIndex(p.isStatic() ? 1 : 0);
+  kind->setFrame(false);
+  table_->setCellWidget(row, kKind, kind);
   auto* axis = new QComboBox();
   axis->addItems({"X", "Y", "Z"});
   axis->setCurrentIndex(static_cast<int>(p.axis));
@@ -146,6 +153,17 @@ void PlanEditor::addRow(const TestPoint& p) {
     return -1;
   };
   connect(axis, qOverload<int>(&QComboBox::currentIndexChanged), this, &PlanEditor::validate);
+  connect(kind, qOverload<int>(&QComboBox::currentIndexChanged), this, [this, kind, rowOf] {
+    const int r = rowOf(kind);
+    // A static segment has no swing: its fields would only mislead.
+    for (Column c : {kFrequency, kAmplitude, kPeriods}) spin(r, c)->setEnabled(kind->currentIndex() == 0);
+    if (kind->currentIndex() == 0 && !(spin(r, kFrequency)->value() > 0.0)) {
+      spin(r, kFrequency)->setValue(1.0);
+      spin(r, kAmplitude)->setValue(3.0);
+    }
+    validate();
+  });
+  for (Column c : {kFrequency, kAmplitude, kPeriods}) spin(row, c)->setEnabled(!p.isStatic());
   for (auto [w, col] : {std::pair{f, kFrequency}, {d, kDuration}, {n, kPeriods}, {a, kAmplitude}, {s, kSettle}})
     connect(w, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this, w = w, col = col, rowOf] {
       syncPeriods(rowOf(w), col);
@@ -164,6 +182,11 @@ void PlanEditor::syncPeriods(int row, Column edited) {
 
 TestPoint PlanEditor::rowPoint(int row) const {
   TestPoint p;
+  if (qobject_cast<QComboBox*>(table_->cellWidget(row, kKind))->currentIndex() == 1) {
+    p = TestPoint::staticSegment(static_cast<Axis>(qobject_cast<QComboBox*>(table_->cellWidget(row, kAxis))->currentIndex()),
+                                 spin(row, kDuration)->value(), spin(row, kSettle)->value());
+    return p;
+  }
   p.axis = static_cast<Axis>(qobject_cast<QComboBox*>(table_->cellWidget(row, kAxis))->currentIndex());
   p.frequencyHz = spin(row, kFrequency)->value();
   p.amplitudeDeg = spin(row, kAmplitude)->value();
@@ -236,8 +259,9 @@ void PlanEditor::validate() {
     std::string why;
     const bool ok = p.isValid(limits_, &why);
     auto* check = table_->item(r, kCheck);
-    check->setText(ok ? tr("ok: %1 periods, %2 in all").arg(p.durationS * p.frequencyHz, 0, 'f', 1)
-                            .arg(durationText(p.settleS + p.durationS))
+    check->setText(ok ? (p.isStatic() ? tr("ok: table at rest, %1 in all").arg(durationText(p.settleS + p.durationS))
+                                      : tr("ok: %1 periods, %2 in all").arg(p.durationS * p.frequencyHz, 0, 'f', 1)
+                                            .arg(durationText(p.settleS + p.durationS)))
                       : QString::fromStdString(why));
     check->setForeground(ok ? QColor(0, 110, 0) : QColor(190, 0, 0));
     check->setToolTip(check->text());
@@ -248,7 +272,7 @@ void PlanEditor::validate() {
                        : w.startsWith("duration")                        ? kDuration
                        : w.startsWith("settle")                          ? kSettle
                                                                          : kCheck;
-    for (int c = kFrequency; c < kCheck; ++c) {
+    for (int c = kFrequency; c < kCheck; ++c) {  // the editable numbers
       auto* s = spin(r, static_cast<Column>(c));
       const bool flagged = !ok && (c == bad || (bad == kDuration && c == kPeriods));
       s->setStyleSheet(flagged ? "background: #ffd6d6;" : QString());

@@ -1,5 +1,6 @@
 #pragma once
-// The test plan editor: one row per test point (axis, swing frequency,
+// The test plan editor: one row per test point (a swing, or a static segment
+// with the table at rest for the gyro's noise; axis, swing frequency,
 // amplitude, duration in seconds or whole periods, settle time), rows added,
 // removed and reordered, the paper's conditions as presets. Every row is
 // checked against the turntable's limits as it is edited; a bad value is
@@ -24,7 +25,7 @@ class PlanEditor : public QWidget {
 
  public:
   // Columns of the table.
-  enum Column { kAxis = 0, kFrequency, kAmplitude, kDuration, kPeriods, kSettle, kCheck, kColumnCount };
+  enum Column { kKind = 0, kAxis, kFrequency, kAmplitude, kDuration, kPeriods, kSettle, kCheck, kColumnCount };
 
   explicit PlanEditor(QWidget* parent = nullptr);
 
@@ -40,7 +41,7 @@ class PlanEditor : public QWidget {
   void setReadOnly(bool readOnly);
 
   QTableWidget* table() const { return table_; }
-  // The editor of a cell (a QComboBox for kAxis, QDoubleSpinBox otherwise).
+  // The editor of a cell (a QComboBox for kKind and kAxis, QDoubleSpinBox otherwise).
   QWidget* cellEditor(int row, Column column) const;
 
  signals:

@@ -11,6 +11,7 @@
 #include <QMenu>
 #include <QMessageBox>
 #include <QPlainTextEdit>
+#include <QPushButton>
 #include <QSplitter>
 #include <QTableWidget>
 #include <QToolButton>
@@ -96,6 +97,12 @@ ResultView::ResultView(QWidget* parent) : QWidget(parent) {
   lagLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   row->addSpacing(12);
   row->addWidget(lagLabel_, 1);
+  diagnoseButton_ = new QPushButton(tr("Diagnose"));
+  diagnoseButton_->setObjectName("diagnoseButton");
+  diagnoseButton_->setToolTip(tr("Compare with the simulator replaying this session: where the gap lies and which "
+                                 "unmodelled effect explains it"));
+  row->addWidget(diagnoseButton_);
+  connect(diagnoseButton_, &QPushButton::clicked, this, &ResultView::diagnoseRequested);
   exportButton_ = new QToolButton();
   exportButton_->setObjectName("exportButton");
   exportButton_->setText(tr("Export"));
@@ -209,6 +216,7 @@ void ResultView::clear() {
   frequencyPlot_->replot();
   reportView_->clear();
   exportButton_->setEnabled(false);
+  diagnoseButton_->setEnabled(false);
 }
 
 QString ResultView::reportText() const { return reportView_->toPlainText(); }
@@ -219,6 +227,7 @@ void ResultView::showOutcome(std::shared_ptr<const RunOutcome> outcome) {
   if (!outcome_) return;
   reportView_->setPlainText(QString::fromStdString(outcome_->reportText));
   exportButton_->setEnabled(true);
+  diagnoseButton_->setEnabled(outcome_->report.isOk());
   if (!outcome_->report) {
     lagLabel_->setText(tr("<b>No delay:</b> %1").arg(QString::fromStdString(outcome_->report.status().message())));
     return;

@@ -15,6 +15,7 @@
 class QComboBox;
 class QLabel;
 class QPlainTextEdit;
+class QPushButton;
 class QTableWidget;
 class QToolButton;
 class QwtPlot;
@@ -46,6 +47,10 @@ class ResultView : public QWidget {
   // Writes the calibration report of what is shown (see ui/report).
   Status writeReportPdf(const QString& path, double imuDelayLimitMs) const;
 
+ signals:
+  // The operator asked for the sim-to-real diagnosis of what is shown.
+  void diagnoseRequested();
+
  private:
   void buildFrequencyPlot();
   void showFrequencyPlot();
@@ -55,6 +60,7 @@ class ResultView : public QWidget {
   QComboBox* testPointCombo_ = nullptr;
   QLabel* lagLabel_ = nullptr;
   QToolButton* exportButton_ = nullptr;
+  QPushButton* diagnoseButton_ = nullptr;
   SeriesPlot* anglePlot_ = nullptr;
   SeriesPlot* residualPlot_ = nullptr;
   QwtPlot* frequencyPlot_ = nullptr;

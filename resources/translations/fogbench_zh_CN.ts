@@ -117,6 +117,119 @@
     </message>
 </context>
 <context>
+    <name>fog::ui::DiagnosisView</name>
+    <message>
+        <location filename="../../ui/diagnosis_view.cpp" line="+91"/>
+        <source>Test point</source>
+        <translation>测试点</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Gyro residual: real and simulated</source>
+        <translation>陀螺残差：实测与仿真</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>time from the record&apos;s middle (s)</source>
+        <translation>相对记录中点的时间 (s)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>residual (arcsec)</source>
+        <translation>残差（角秒）</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Gap map: z against the simulator&apos;s spread</source>
+        <translation>差异图：相对仿真离散度的 z 值</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Residual spectrum</source>
+        <translation>残差频谱</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>harmonic of the swing frequency</source>
+        <translation>摆动频率的谐波次数</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>relative to the fundamental (ppm)</source>
+        <translation>相对基波 (ppm)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Held-out shrink per candidate effect</source>
+        <translation>各候选效应在留出数据上的差异缩减</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>held-out gap closed (%)</source>
+        <translation>留出数据差异缩减 (%)</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>Run or open a session, then press Diagnose in the Results view.</source>
+        <translation>请运行或打开一个会话，然后在“结果”视图中按“诊断”。</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1 %2 → %3   </source>
+        <translation>%1 %2 → %3   </translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&lt;b&gt;%1 — verdict: %2&lt;/b&gt;&lt;br&gt;%3&lt;br&gt;gap per channel (rms z, 1 = within the simulator&apos;s spread), before → after: %4</source>
+        <translation>&lt;b&gt;%1 —— 结论：%2&lt;/b&gt;&lt;br&gt;%3&lt;br&gt;各通道差异（z 的均方根，1 = 在仿真离散度之内），之前 → 之后：%4</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1: %2 axis, %3 Hz</source>
+        <translation>%1：%2 轴，%3 Hz</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>recorded</source>
+        <translation>实测</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>simulated (replay)</source>
+        <translation>仿真（回放）</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>table, recorded</source>
+        <translation>转台，实测</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>table, simulated</source>
+        <translation>转台，仿真</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>gyro, recorded</source>
+        <translation>陀螺，实测</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>gyro, simulated</source>
+        <translation>陀螺，仿真</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>P%1 S%2</source>
+        <translation>点%1 段%2</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>z</source>
+        <translation>z</translation>
+    </message>
+</context>
+<context>
     <name>fog::ui::LiveView</name>
     <message>
         <location filename="../../ui/live_view.cpp" line="+53"/>
@@ -233,7 +346,7 @@
 <context>
     <name>fog::ui::MainWindow</name>
     <message>
-        <location filename="../../ui/main_window.cpp" line="+77"/>
+        <location filename="../../ui/main_window.cpp" line="+80"/>
         <source>fogbench %1 — FOG IMU delay bench</source>
         <translation>fogbench %1 —— 光纤陀螺 IMU 延迟测试台</translation>
     </message>
@@ -258,7 +371,17 @@
         <translation>会话</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+3"/>
+        <source>Diagnosis</source>
+        <translation>诊断</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Noise</source>
+        <translation>噪声</translation>
+    </message>
+    <message>
+        <location line="+28"/>
         <source>Configure a plan and press Run.</source>
         <translation>请配置测试计划并按“运行”。</translation>
     </message>
@@ -269,12 +392,12 @@
     </message>
     <message>
         <location line="+8"/>
-        <location line="+24"/>
+        <location line="+25"/>
         <source>Source</source>
         <translation>数据源</translation>
     </message>
     <message>
-        <location line="-20"/>
+        <location line="-21"/>
         <source>Built-in simulator</source>
         <translation>内置仿真器</translation>
     </message>
@@ -282,6 +405,11 @@
         <location line="+1"/>
         <source>Replay of a session</source>
         <translation>回放会话</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Serial sampling board</source>
+        <translation>串口采样板</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -334,7 +462,22 @@
         <translation>回放</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+5"/>
+        <source>The sampling board&apos;s serial port</source>
+        <translation>采样板的串口</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Rescan</source>
+        <translation>重新扫描</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Serial port</source>
+        <translation>串口</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>Session</source>
         <translation>会话</translation>
     </message>
@@ -384,7 +527,7 @@
         <translation>编辑测试台常数…</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+18"/>
         <source>Session to replay</source>
         <translation>要回放的会话</translation>
     </message>
@@ -481,6 +624,11 @@
     </message>
     <message>
         <location line="+2"/>
+        <source>choose the sampling board&apos;s serial port</source>
+        <translation>请选择采样板的串口</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Start the run</source>
         <translation>开始运行</translation>
     </message>
@@ -495,27 +643,27 @@
         <translation>&lt;span style=&apos;color:#b00000&apos;&gt;无法运行：%1&lt;/span&gt;</translation>
     </message>
     <message>
-        <location line="+59"/>
+        <location line="+36"/>
+        <source>the baud rate must be a whole number</source>
+        <translation>波特率必须是整数</translation>
+    </message>
+    <message>
+        <location line="+45"/>
         <source>cannot create the session folder &apos;%1&apos;; choose another one</source>
         <translation>无法创建会话文件夹“%1”；请另选一个</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+19"/>
         <source>Running: %1 …</source>
         <translation>运行中：%1 …</translation>
     </message>
     <message>
-        <location line="+0"/>
-        <source>simulator, seed %1</source>
-        <translation>仿真器，种子 %1</translation>
-    </message>
-    <message>
-        <location line="+7"/>
+        <location line="+14"/>
         <source>Stopping: everything received so far is kept …</source>
         <translation>正在停止：已接收的数据全部保留 …</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+28"/>
         <source>No data from the source for %1 s — check the connection</source>
         <translation>数据源已 %1 s 无数据——请检查连接</translation>
     </message>
@@ -530,7 +678,7 @@
         <translation>  ·  显示跳过 %1 帧（全部已记录）</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>Run incomplete (%1); </source>
         <translation>运行未完成（%1）；</translation>
     </message>
@@ -590,7 +738,7 @@
         <translation>%1：只读查看</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+51"/>
         <source>Choose a session folder to import into first.</source>
         <translation>请先选择导入目标会话文件夹。</translation>
     </message>
@@ -610,9 +758,172 @@
         <translation>已将 %1 导入为 %2</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+13"/>
+        <source>this run</source>
+        <translation>本次运行</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Diagnosing %1: replaying it in the simulator …</source>
+        <translation>正在诊断 %1：在仿真器中回放 …</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Diagnosing %1 …</source>
+        <translation>正在诊断 %1 …</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>No diagnosis: %1</source>
+        <translation>无法诊断：%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>No diagnosis of %1: %2</source>
+        <translation>无法诊断 %1：%2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Diagnosis of %1: %2 (%3 s)</source>
+        <translation>%1 的诊断：%2（%3 s）</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>This result has no static segment. To measure the gyro&apos;s noise (Allan deviation, noise terms, bias), add a test point of kind &quot;static&quot; to the plan: the table rests while the gyro is recorded.</source>
+        <translation>此结果没有静态段。要测量陀螺噪声（Allan 方差、噪声项、零偏），请在计划中添加类型为“静态”的测试点：转台静止时记录陀螺数据。</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Computing the Allan deviation …</source>
+        <translation>正在计算 Allan 标准差 …</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>No noise analysis: %1</source>
+        <translation>无噪声分析：%1</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>Compare %1 and %2</source>
         <translation>比较 %1 与 %2</translation>
+    </message>
+</context>
+<context>
+    <name>fog::ui::NoiseView</name>
+    <message>
+        <location filename="../../ui/noise_view.cpp" line="+29"/>
+        <source>Static segment</source>
+        <translation>静态段</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Overlapping Allan deviation of the gyro</source>
+        <translation>陀螺的重叠 Allan 标准差</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>noise term</source>
+        <translation>噪声项</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>value</source>
+        <translation>数值</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>± 1σ</source>
+        <translation>± 1σ</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>unit</source>
+        <translation>单位</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>from τ (s)</source>
+        <translation>τ 范围 (s)</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>No noise analysis yet.</source>
+        <translation>尚无噪声分析。</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>%1: %2 gyro, %3 s</source>
+        <translation>%1：%2 陀螺，%3 s</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>&lt;b&gt;Test point %1, %2 gyro at rest for %3 s&lt;/b&gt; (%4 samples, %5 frames lost): bias %6 ± %7 °/h; Earth rate on this gyro %8 °/h; Earth-corrected bias &lt;b&gt;%9 °/h&lt;/b&gt;</source>
+        <translation>&lt;b&gt;测试点 %1，%2 陀螺静止 %3 s&lt;/b&gt;（%4 个样本，丢失 %5 帧）：零偏 %6 ± %7 °/h；该陀螺上的地球自转分量 %8 °/h；扣除地球自转后的零偏 &lt;b&gt;%9 °/h&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>&lt;br&gt;noise model: χ²/dof %1</source>
+        <translation>&lt;br&gt;噪声模型：χ²/dof %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>averaging time τ (s)</source>
+        <translation>平均时间 τ (s)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Allan deviation (°/h)</source>
+        <translation>Allan 标准差 (°/h)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>confidence interval (%1 %)</source>
+        <translation>置信区间（%1 %）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>measured</source>
+        <translation>实测</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>noise model (sum)</source>
+        <translation>噪声模型（合计）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>quantisation</source>
+        <translation>量化噪声</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>angle random walk</source>
+        <translation>角度随机游走</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>bias instability</source>
+        <translation>零偏不稳定性</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>rate random walk</source>
+        <translation>角速率随机游走</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>rate ramp</source>
+        <translation>角速率斜坡</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Gauss–Markov bias</source>
+        <translation>高斯-马尔可夫零偏</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1 – %2</source>
+        <translation>%1 – %2</translation>
     </message>
 </context>
 <context>
@@ -634,13 +945,13 @@
     </message>
     <message>
         <location line="+1"/>
-        <location line="+66"/>
+        <location line="+73"/>
         <location line="+2"/>
         <source> s</source>
         <translation> s</translation>
     </message>
     <message>
-        <location line="-59"/>
+        <location line="-66"/>
         <source>Axis</source>
         <translation>轴</translation>
     </message>
@@ -663,6 +974,11 @@
         <location line="+0"/>
         <source>Periods</source>
         <translation>周期数</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Kind</source>
+        <translation>类型</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -695,7 +1011,22 @@
         <translation>下移</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+34"/>
+        <source>swing</source>
+        <translation>摆动</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>static</source>
+        <translation>静态</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>static: the table at rest, to measure the gyro&apos;s noise (Allan deviation)</source>
+        <translation>静态：转台静止，用于测量陀螺噪声（Allan 方差）</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source> Hz</source>
         <translation> Hz</translation>
     </message>
@@ -730,7 +1061,12 @@
         <translation>开始记录前的摆动时间</translation>
     </message>
     <message>
-        <location line="+108"/>
+        <location line="+124"/>
+        <source>ok: table at rest, %1 in all</source>
+        <translation>正常：转台静止，共 %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>ok: %1 periods, %2 in all</source>
         <translation>正常：%1 个周期，共 %2</translation>
     </message>
@@ -769,8 +1105,8 @@
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../../ui/main_window.cpp" line="-562"/>
-        <location filename="../../ui/plan_editor.cpp" line="-232"/>
+        <location filename="../../ui/main_window.cpp" line="-703"/>
+        <location filename="../../ui/plan_editor.cpp" line="-256"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
@@ -795,13 +1131,13 @@
         <translation>PNG 图像 (*.png);;SVG 矢量图 (*.svg);;PDF 文档 (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../../ui/report/calibration_report.cpp" line="+62"/>
-        <location line="+230"/>
+        <location filename="../../ui/report/calibration_report.cpp" line="+64"/>
+        <location line="+231"/>
         <source>not recorded</source>
         <translation>未记录</translation>
     </message>
     <message>
-        <location line="-223"/>
+        <location line="-224"/>
         <source>%1 axis
 %2 Hz / %3°, %4 s</source>
         <translation>%1 轴
@@ -813,7 +1149,7 @@
         <translation>%1 轴，%2 Hz / %3°，%4 s</translation>
     </message>
     <message>
-        <location line="+103"/>
+        <location line="+104"/>
         <source>IMU %1 · S/N %2</source>
         <translation>IMU %1 · 序列号 %2</translation>
     </message>
@@ -1045,11 +1381,12 @@
     </message>
     <message>
         <location line="-264"/>
+        <location line="+347"/>
         <source>value</source>
         <translation>数值</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-346"/>
         <source>std. uncertainty</source>
         <translation>标准不确定度</translation>
     </message>
@@ -1631,11 +1968,12 @@
     </message>
     <message>
         <location line="+1"/>
+        <location line="+47"/>
         <source>samples</source>
         <translation>样本</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="-47"/>
         <source>%1 table, %2 IMU, %3 IMU frames lost</source>
         <translation>转台 %1，IMU %2，丢失 IMU 帧 %3</translation>
     </message>
@@ -1645,7 +1983,138 @@
         <translation>警告</translation>
     </message>
     <message>
-        <location line="+75"/>
+        <location line="+8"/>
+        <source>Test point %1: %2 gyro at rest for %3 s — noise</source>
+        <translation>测试点 %1：%2 陀螺静止 %3 s —— 噪声</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Overlapping Allan deviation of the gyro</source>
+        <translation>陀螺的重叠 Allan 标准差</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>averaging time τ (s)</source>
+        <translation>平均时间 τ (s)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Allan deviation (°/h)</source>
+        <translation>Allan 标准差 (°/h)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>confidence interval (%1 %)</source>
+        <translation>置信区间（%1 %）</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>measured</source>
+        <translation>实测</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>noise model (sum)</source>
+        <translation>噪声模型（合计）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>quantisation</source>
+        <translation>量化噪声</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>angle random walk</source>
+        <translation>角度随机游走</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>bias instability</source>
+        <translation>零偏不稳定性</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>rate random walk</source>
+        <translation>角速率随机游走</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>rate ramp</source>
+        <translation>角速率斜坡</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Gauss–Markov bias</source>
+        <translation>高斯-马尔可夫零偏</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>noise term</source>
+        <translation>噪声项</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>± 1σ</source>
+        <translation>± 1σ</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>unit</source>
+        <translation>单位</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>from τ (s)</source>
+        <translation>τ 范围 (s)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Noise terms (IEEE Std 952)</source>
+        <translation>噪声项（IEEE Std 952）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>bias</source>
+        <translation>零偏</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1 ± %2 °/h</source>
+        <translation>%1 ± %2 °/h</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Earth rate on this gyro</source>
+        <translation>该陀螺上的地球自转分量</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location line="+1"/>
+        <source>%1 °/h</source>
+        <translation>%1 °/h</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Earth-corrected bias</source>
+        <translation>扣除地球自转后的零偏</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 every %2 ms, %3 frames lost</source>
+        <translation>%1 个，每 %2 ms，丢失 %3 帧</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>model fit</source>
+        <translation>模型拟合</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>χ²/dof %1</source>
+        <translation>χ²/dof %1</translation>
+    </message>
+    <message>
+        <location line="+86"/>
         <source>%1: IMU delay %2 ms, + 2σ = %3 ms %4 %5 ms limit (%6 %7 ms)</source>
         <translation>%1：IMU 延迟 %2 ms，+ 2σ = %3 ms %4 %5 ms 限值（%6 %7 ms）</translation>
     </message>
@@ -1690,7 +2159,7 @@
         <translation>IMU 延迟标定报告：%1 %2</translation>
     </message>
     <message>
-        <location filename="../../ui/result_view.cpp" line="+50"/>
+        <location filename="../../ui/result_view.cpp" line="+51"/>
         <source>%1: %2 axis, %3 Hz / %4°</source>
         <translation>%1：%2 轴，%3 Hz / %4°</translation>
     </message>
@@ -1703,7 +2172,17 @@
         <translation>测试点</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+10"/>
+        <source>Diagnose</source>
+        <translation>诊断</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Compare with the simulator replaying this session: where the gap lies and which unmodelled effect explains it</source>
+        <translation>与回放本会话的仿真器比较：差异在哪里，由哪种未建模效应解释</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Export</source>
         <translation>导出</translation>
     </message>
@@ -1851,7 +2330,7 @@
         <translation>尚无结果。</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+24"/>
         <source>&lt;b&gt;No delay:&lt;/b&gt; %1</source>
         <translation>&lt;b&gt;无延迟结果：&lt;/b&gt;%1</translation>
     </message>

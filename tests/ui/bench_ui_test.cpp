@@ -4,10 +4,12 @@
 // session from the browser, re-analyse and export.
 
 #include <QAction>
+#include <QComboBox>
 #include <QCryptographicHash>
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QLabel>
+#include <QProcess>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -16,16 +18,23 @@
 #include <QTemporaryDir>
 #include <QtTest>
 #include <cmath>
+#include <qwt_plot.h>
+#include <qwt_plot_barchart.h>
 #include <vector>
 
 #include "common/version.h"
+#include "acquisition/acquisition.h"
+#include "acquisition/simulator_source.h"
+#include "diagnosis/effects.h"
 #include "io/csv_export.h"
 #include "session/session_file.h"
 #include "ui/curve_decimation.h"
+#include "ui/diagnosis_view.h"
 #include "ui/language.h"
 #include "ui/delta_picker.h"
 #include "ui/live_view.h"
 #include "ui/main_window.h"
+#include "ui/noise_view.h"
 #include "ui/plan_editor.h"
 #include "ui/plot_export.h"
 #include "ui/result_view.h"
@@ -295,6 +304,116 @@ class BenchUiTest : public QObject {
     QVERIFY(imported.back().front().toString().isEmpty());
     QVERIFY2(w->lastMessage().contains("Cannot import") && w->lastMessage().contains("metadata.json"),
              qPrintable(w->lastMessage()));
+  }
+
+  // A session recorded with a 300 ppm scale-factor error the bench is not
+  // told about: Diagnose names it, and the view draws the gap map, the curves,
+  // the spectrum and one shrink bar per candidate effect.
+  void diagnosisNamesAWithheldEffect() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath("withheld.fbs");
+    fog::TestPlan plan = fog::TestPlan::paperFast();
+    plan.points.front().durationS = 30.0;
+    std::vector<std::unique_ptr<fog::model::Effect>> effects;
+    effects.push_back(fog::diagnosis::makeEffect(fog::diagnosis::EffectId::kScaleFactorError, {300.0}));
+    auto source = fog::acquisition::SimulatorSource::create(fog::model::SimConfig{}, plan, 0.0, std::move(effects));
+    QVERIFY(source.isOk());
+    fog::acquisition::AcquisitionOptions options;
+    options.sessionPath = path.toStdString();
+    options.info.plan = plan;
+    QVERIFY(fog::acquisition::acquire(**source, options, nullptr).isOk());
+
+    auto w = window();
+    QSignalSpy opened(w.get(), &MainWindow::sessionOpened);
+    w->openSession(path);
+    QTRY_VERIFY_WITH_TIMEOUT(!opened.isEmpty(), 30000);
+    QSignalSpy diagnosed(w.get(), &MainWindow::diagnosisEnded);
+    click(*w, "diagnoseButton");
+    QTRY_VERIFY_WITH_TIMEOUT(!diagnosed.isEmpty(), 60000);
+    QCOMPARE(diagnosed.front().front().toBool(), true);
+    QCOMPARE(w->currentView(), MainWindow::kDiagnosis);
+    const auto* d = w->diagnosisView()->diagnosis();
+    QVERIFY(d);
+    QCOMPARE(QString::fromStdString(d->verdict), QString("scale_factor_error"));
+    QVERIFY(w->diagnosisView()->verdictText().contains("scale_factor_error"));
+    QVERIFY(w->diagnosisView()->gapMapRows() > 10);
+    QVERIFY(w->diagnosisView()->gapMapColumns() >= 1);
+    int bars = 0;
+    for (auto* item : w->diagnosisView()->shrinkPlot()->itemList(QwtPlotItem::Rtti_PlotBarChart))
+      bars += static_cast<int>(static_cast<QwtPlotBarChart*>(item)->dataSize());
+    QCOMPARE(bars, static_cast<int>(d->effects.size()));
+    QCOMPARE(w->diagnosisView()->curvePlot()->itemList(QwtPlotItem::Rtti_PlotCurve).size(), 2);
+  }
+
+  // A plan with a static segment (edited as such in the plan editor) gives
+  // the gyro's Allan deviation and noise terms in the Noise view.
+  void staticSegmentGivesTheNoiseView() {
+    auto w = window();
+    auto* editor = w->planEditor();
+    QVERIFY(editor->loadPreset("quick"));
+    auto* kind = qobject_cast<QComboBox*>(editor->cellEditor(0, PlanEditor::kKind));
+    QVERIFY(kind);
+    kind->setCurrentIndex(1);  // static
+    QVERIFY(editor->plan().points.front().isStatic());
+    QVERIFY(!editor->cellEditor(0, PlanEditor::kFrequency)->isEnabled());
+    QVERIFY2(editor->isValid(), qPrintable(editor->problem()));
+    setValue(editor, 0, PlanEditor::kDuration, 120.0);
+
+    QSignalSpy analysed(w.get(), &MainWindow::noiseAnalysed);
+    w->useSimulator(0.0, 5);
+    click(*w, "runButton");
+    QTRY_VERIFY_WITH_TIMEOUT(!analysed.isEmpty(), 60000);
+    QCOMPARE(analysed.front().front().toBool(), true);
+    auto* view = w->noiseView();
+    QCOMPARE(view->reports().size(), std::size_t(1));
+    QVERIFY(view->termTable()->rowCount() >= 1);
+    QVERIFY(view->allanPlot()->itemList(QwtPlotItem::Rtti_PlotCurve).size() >= 3);  // measured, a term, the sum
+    QVERIFY(view->summaryText().contains("Earth-corrected bias"));
+
+    // A swing-only result says how to get a noise analysis.
+    QVERIFY(editor->loadPreset("quick"));
+    click(*w, "runButton");
+    QTRY_VERIFY_WITH_TIMEOUT(analysed.size() == 2, 60000);
+    QCOMPARE(analysed.back().front().toBool(), false);
+    QVERIFY(view->summaryText().contains("no static segment"));
+  }
+
+  // A sampling board on a serial port: the board emulator on a real
+  // pseudo-terminal, recorded by the window like a live board.
+  void serialBoardIsRecordedFromThePort() {
+    QProcess board;
+    board.setProgram(FOG_BOARD_EMU);
+    board.setArguments({"--axis", "x", "--freq-hz", "1", "--amp-deg", "3", "--duration-s", "10", "--seed", "3",
+                        "--speed", "5"});
+    board.start();
+    QVERIFY(board.waitForStarted(10000));
+    // The emulator names its pseudo-terminal on its first line.
+    QString pty;
+    QElapsedTimer waited;
+    waited.start();
+    while (pty.isEmpty() && waited.elapsed() < 10000) {
+      board.waitForReadyRead(100);
+      while (board.canReadLine()) {
+        const QString line = QString::fromUtf8(board.readLine()).trimmed();
+        if (line.startsWith("pty: ")) pty = line.mid(5);
+      }
+    }
+    QVERIFY2(!pty.isEmpty(), board.readAllStandardError().constData());
+    auto w = window();
+    QSignalSpy ended(w.get(), &MainWindow::runEnded);
+    auto* source = w->findChild<QComboBox*>("sourceCombo");
+    source->setCurrentIndex(source->findData("serial"));
+    w->findChild<QComboBox*>("portCombo")->setCurrentText(pty);
+    QVERIFY2(button(*w, "runButton")->isEnabled(), qPrintable(button(*w, "runButton")->toolTip()));
+    click(*w, "runButton");
+    QTRY_VERIFY_WITH_TIMEOUT(!ended.isEmpty(), 60000);
+    board.waitForFinished(20000);
+    const auto* outcome = w->lastOutcome();
+    QVERIFY(outcome);
+    QVERIFY2(outcome->complete, outcome->incompleteReason.c_str());  // the board's "done" ends the run
+    QVERIFY(QString::fromStdString(outcome->info.source).startsWith("serial " + pty));
+    QVERIFY(outcome->report);
+    QVERIFY(std::abs(outcome->report->points.front().lagMs - 0.4658) < 0.01);
   }
 
   // Plots export as PNG, SVG and PDF; a bad name is explained.

@@ -13,6 +13,8 @@
 
 #include "analysis/theory.h"
 #include "common/version.h"
+#include "noise/gyro_noise.h"
+#include "ui/allan_curves.h"
 #include "ui/report/page_flow.h"
 #include "ui/report/report_plots.h"
 #include "ui/test_point_traces.h"
@@ -171,6 +173,7 @@ struct Content {
   QString hash;                                // empty: no raw stream
   std::vector<ui::TestPointTraces> traces;     // one per analysed test point
   QString producedUtc;
+  std::vector<noise::GyroNoiseReport> noise;   // one per static segment
 };
 
 void decorate(PageFlow& flow, const Content& c, int page, int pageCount) {
@@ -678,6 +681,50 @@ void resultsPage(PageFlow& flow, const Content& c, const TestPointResult& p, con
   }
 }
 
+// A static segment: the gyro's Allan deviation, its noise terms and bias.
+void noisePage(PageFlow& flow, const noise::GyroNoiseReport& r) {
+  flow.newPage();
+  flow.heading(QObject::tr("Test point %1: %2 gyro at rest for %3 s — noise")
+                   .arg(r.testPointIndex + 1)
+                   .arg(axisUpper(r.gyroAxis))
+                   .arg(fixed(r.durationS, 0)));
+  flow.plot(110.0, [&](double, double) {
+    auto plot = detail::makeFramePlot(QObject::tr("Overlapping Allan deviation of the gyro"));
+    ui::drawAllanCurves(plot.get(), r,
+                        {QObject::tr("averaging time τ (s)"), QObject::tr("Allan deviation (°/h)"),
+                         QObject::tr("confidence interval (%1 %)"), QObject::tr("measured"),
+                         QObject::tr("noise model (sum)"),
+                         {QObject::tr("quantisation"), QObject::tr("angle random walk"), QObject::tr("bias instability"),
+                          QObject::tr("rate random walk"), QObject::tr("rate ramp"), QObject::tr("Gauss–Markov bias")}});
+    detail::restyleAxisTitles(plot.get());
+    return plot;
+  });
+  Table terms;
+  terms.columns = {{QObject::tr("noise term"), 50, Qt::AlignLeft},
+                   {QObject::tr("value"), 28, Qt::AlignRight},
+                   {QObject::tr("± 1σ"), 24, Qt::AlignRight},
+                   {QObject::tr("unit"), 34, Qt::AlignLeft},
+                   {QObject::tr("from τ (s)"), 38, Qt::AlignLeft}};
+  for (const auto& t : r.model.terms) {
+    const auto u = noise::termInGyroUnits(t);
+    terms.rows.push_back({QString::fromUtf8(noise::noiseTermName(t.kind)), QString::number(u.value, 'g', 4),
+                          QString::number(u.stdError, 'g', 2), QString::fromUtf8(u.unit),
+                          QString("%1 – %2").arg(QString::number(t.tauLowS, 'g', 3), QString::number(t.tauHighS, 'g', 3))});
+  }
+  flow.heading(QObject::tr("Noise terms (IEEE Std 952)"));
+  flow.table(terms);
+  flow.keyValues({{QObject::tr("bias"), QObject::tr("%1 ± %2 °/h").arg(fixed(r.biasDegPerH, 4), fixed(r.biasStdDegPerH, 4))},
+                  {QObject::tr("Earth rate on this gyro"), QObject::tr("%1 °/h").arg(fixed(r.earthRateDegPerH, 4))},
+                  {QObject::tr("Earth-corrected bias"), QObject::tr("%1 °/h").arg(fixed(r.earthCorrectedBiasDegPerH, 4))},
+                  {QObject::tr("samples"), QObject::tr("%1 every %2 ms, %3 frames lost")
+                                               .arg(static_cast<qulonglong>(r.samples))
+                                               .arg(fixed(r.intervalS * 1e3, 3))
+                                               .arg(static_cast<qulonglong>(r.lostFrames))},
+                  {QObject::tr("model fit"), QObject::tr("χ²/dof %1").arg(fixed(r.model.dof > 0 ? r.model.chiSquare / r.model.dof : 0.0, 2))}},
+                 48.0);
+  for (const auto& w : r.warnings) flow.paragraph("• " + QString::fromStdString(w), PageFlow::font(8.5), kFailColour);
+}
+
 void layOut(PageFlow& flow, const Content& c) {
   flow.newPage();
   firstPage(flow, c);
@@ -688,6 +735,7 @@ void layOut(PageFlow& flow, const Content& c) {
     plotsPage(flow, points[i], c.traces[i]);
     resultsPage(flow, c, points[i], c.verdict.points[i]);
   }
+  for (const auto& r : c.noise) noisePage(flow, r);
   flow.finish();
 }
 
@@ -706,6 +754,16 @@ Result<Content> prepare(const ReportInput& in) {
       return Status(traces.status().code(),
                     "test point " + std::to_string(p.index + 1) + " cannot be plotted: " + traces.status().message());
     c.traces.push_back(std::move(*traces));
+  }
+  // The static segments' noise, when the plan had any.
+  if (std::any_of(in.recording.testPoints.begin(), in.recording.testPoints.end(),
+                  [](const TestPointData& d) { return d.kind == TestPointKind::kStatic; })) {
+    noise::GyroNoiseOptions options;
+    options.earth.latitudeDeg = in.info.bench.latitudeDeg;
+    options.pulseEquivalentDeg = in.delays.constants.pulseEquivalentDeg;
+    auto reports = noise::analyzeGyroNoise(in.recording, options);
+    if (!reports) return Status(reports.status().code(), "the static segments' noise: " + reports.status().message());
+    c.noise = std::move(*reports);
   }
   return c;
 }

@@ -38,25 +38,32 @@ QwtText styled(const QString& s, double pt, bool bold) {
 
 }  // namespace
 
-std::unique_ptr<QwtPlot> makePlot(const PlotSpec& spec) {
+std::unique_ptr<QwtPlot> makeFramePlot(const QString& title) {
   auto plot = std::make_unique<QwtPlot>();
   plot->setFont(PageFlow::font(7.5));
-  plot->setTitle(styled(spec.title, 8.5, true));
+  plot->setTitle(styled(title, 8.5, true));
   plot->setCanvasBackground(Qt::white);
   plot->setAutoReplot(false);
   for (int axis : {kXAxis, kYAxis}) plot->setAxisFont(axis, PageFlow::font(7.5));
+  auto* legend = new QwtLegend();
+  legend->setFont(PageFlow::font(7.5));
+  plot->insertLegend(legend, QwtPlot::BottomLegend);
+  auto* grid = new QwtPlotGrid();
+  grid->setMajorPen(QPen(QColor(215, 215, 215), 0, Qt::DotLine));
+  grid->attach(plot.get());
+  return plot;
+}
+
+void restyleAxisTitles(QwtPlot* plot) {
+  for (int axis : {kXAxis, kYAxis}) plot->setAxisTitle(axis, styled(plot->axisTitle(axis).text(), 8.0, false));
+}
+
+std::unique_ptr<QwtPlot> makePlot(const PlotSpec& spec) {
+  auto plot = makeFramePlot(spec.title);
   plot->setAxisTitle(kXAxis, styled(spec.xTitle, 8.0, false));
   plot->setAxisTitle(kYAxis, styled(spec.yTitle, 8.0, false));
   plot->setAxisScale(kXAxis, spec.x0, spec.x1);
   if (spec.yRange) plot->setAxisScale(kYAxis, spec.yRange->first, spec.yRange->second);
-
-  auto* legend = new QwtLegend();
-  legend->setFont(PageFlow::font(7.5));
-  plot->insertLegend(legend, QwtPlot::BottomLegend);
-
-  auto* grid = new QwtPlotGrid();
-  grid->setMajorPen(QPen(QColor(215, 215, 215), 0, Qt::DotLine));
-  grid->attach(plot.get());
 
   const int columns = std::max(100, static_cast<int>(std::lround(spec.widthMm * kColumnsPerMm)));
   for (const auto& c : spec.curves) {

@@ -39,4 +39,10 @@ struct PlotSpec {
 
 std::unique_ptr<QwtPlot> makePlot(const PlotSpec& spec);
 
+// An empty plot styled like makePlot's (fonts, title, legend below, grid),
+// for plots drawn by other code; restyleAxisTitles() applies the report's
+// fonts to titles that code set.
+std::unique_ptr<QwtPlot> makeFramePlot(const QString& title);
+void restyleAxisTitles(QwtPlot* plot);
+
 }  // namespace fog::report::detail

@@ -1,0 +1,307 @@
+#include "ui/diagnosis_view.h"
+
+#include <QComboBox>
+#include <QFontDatabase>
+#include <QGridLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPlainTextEdit>
+#include <QSplitter>
+#include <QVBoxLayout>
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <qwt_color_map.h>
+#include <qwt_column_symbol.h>
+#include <qwt_legend.h>
+#include <qwt_matrix_raster_data.h>
+#include <qwt_plot.h>
+#include <qwt_plot_barchart.h>
+#include <qwt_plot_curve.h>
+#include <qwt_plot_grid.h>
+#include <qwt_plot_multi_barchart.h>
+#include <qwt_plot_spectrogram.h>
+#include <qwt_scale_draw.h>
+#include <qwt_scale_widget.h>
+#include <qwt_text.h>
+
+#include "ui/language.h"
+
+namespace fog::ui {
+
+namespace {
+
+constexpr double kZRange = 5.0;  // the heat map saturates at |z| = 5
+const QColor kReal(31, 119, 180);
+const QColor kSim(255, 127, 14);
+
+// Integer positions named from a list (rows and columns of the heat map,
+// effects of the bar chart).
+class NamedScaleDraw : public QwtScaleDraw {
+ public:
+  explicit NamedScaleDraw(QStringList names) : names_(std::move(names)) {}
+  QwtText label(double v) const override {
+    const long i = std::lround(v);
+    if (std::abs(v - static_cast<double>(i)) > 1e-6 || i < 0 || i >= names_.size()) return QwtText();
+    return QwtText(names_[static_cast<int>(i)]);
+  }
+
+ private:
+  QStringList names_;
+};
+
+// Bars of the effects that were kept stand out.
+class ShrinkChart : public QwtPlotBarChart {
+ public:
+  explicit ShrinkChart(std::vector<bool> kept) : kept_(std::move(kept)) {}
+  QwtColumnSymbol* specialSymbol(int index, const QPointF&) const override {
+    auto* s = new QwtColumnSymbol(QwtColumnSymbol::Box);
+    const bool kept = index >= 0 && static_cast<std::size_t>(index) < kept_.size() && kept_[static_cast<std::size_t>(index)];
+    s->setPalette(QPalette(kept ? QColor(44, 160, 44) : QColor(170, 170, 170)));
+    s->setLineWidth(0);
+    return s;
+  }
+
+ private:
+  std::vector<bool> kept_;
+};
+
+QwtPlot* makePlot(const QString& title, const QString& x, const QString& y) {
+  auto* p = new QwtPlot();
+  p->setTitle(title);
+  p->setAxisTitle(QwtPlot::xBottom, x);
+  p->setAxisTitle(QwtPlot::yLeft, y);
+  p->setCanvasBackground(Qt::white);
+  p->setMinimumSize(300, 220);
+  return p;
+}
+
+QString axisLetter(int a) { return a < 0 ? QString() : QString(QChar('X' + a)); }
+
+}  // namespace
+
+DiagnosisView::DiagnosisView(QWidget* parent) : QWidget(parent) {
+  auto* layout = new QVBoxLayout(this);
+  auto* top = new QHBoxLayout();
+  verdict_ = new QLabel();
+  verdict_->setObjectName("diagnosisVerdict");
+  verdict_->setWordWrap(true);
+  verdict_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  top->addWidget(verdict_, 1);
+  top->addWidget(new QLabel(tr("Test point")));
+  pointCombo_ = new QComboBox();
+  pointCombo_->setObjectName("diagnosisPointCombo");
+  pointCombo_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+  top->addWidget(pointCombo_);
+  layout->addLayout(top);
+
+  curvePlot_ = makePlot(tr("Gyro residual: real and simulated"), tr("time from the record's middle (s)"),
+                        tr("residual (arcsec)"));
+  curvePlot_->setObjectName("diagnosisCurvePlot");
+  curvePlot_->insertLegend(new QwtLegend(), QwtPlot::BottomLegend);
+  gapMapPlot_ = makePlot(tr("Gap map: z against the simulator's spread"), QString(), QString());
+  gapMapPlot_->setObjectName("gapMapPlot");
+  spectrumPlot_ = makePlot(tr("Residual spectrum"), tr("harmonic of the swing frequency"),
+                           tr("relative to the fundamental (ppm)"));
+  spectrumPlot_->setObjectName("spectrumPlot");
+  spectrumPlot_->insertLegend(new QwtLegend(), QwtPlot::BottomLegend);
+  shrinkPlot_ = makePlot(tr("Held-out shrink per candidate effect"), QString(), tr("held-out gap closed (%)"));
+  shrinkPlot_->setObjectName("shrinkPlot");
+
+  auto* grid = new QGridLayout();
+  grid->addWidget(curvePlot_, 0, 0);
+  grid->addWidget(gapMapPlot_, 0, 1);
+  grid->addWidget(spectrumPlot_, 1, 0);
+  grid->addWidget(shrinkPlot_, 1, 1);
+  auto* plots = new QWidget();
+  plots->setLayout(grid);
+
+  text_ = new QPlainTextEdit();
+  text_->setObjectName("diagnosisText");
+  text_->setReadOnly(true);
+  text_->setLineWrapMode(QPlainTextEdit::NoWrap);
+  QFont mono = QFontDatabase::systemFont(QFontDatabase::FixedFont);
+  mono.setStyleHint(QFont::TypeWriter);
+  text_->setFont(mono);
+  auto* split = new QSplitter(Qt::Vertical);
+  split->addWidget(plots);
+  split->addWidget(text_);
+  split->setStretchFactor(0, 4);
+  split->setStretchFactor(1, 1);
+  layout->addWidget(split, 1);
+
+  gapMap_ = new QwtPlotSpectrogram();
+  gapMap_->setRenderThreadCount(1);
+  gapMap_->attach(gapMapPlot_);
+  connect(pointCombo_, qOverload<int>(&QComboBox::currentIndexChanged), this, &DiagnosisView::showPoint);
+  showMessage(tr("Run or open a session, then press Diagnose in the Results view."));
+}
+
+QString DiagnosisView::verdictText() const { return verdict_->text(); }
+
+void DiagnosisView::showMessage(const QString& message) {
+  verdict_->setText(message);
+}
+
+void DiagnosisView::showDiagnosis(std::shared_ptr<const diagnosis::Diagnosis> d, const QString& title) {
+  diagnosis_ = std::move(d);
+  if (!diagnosis_) return;
+  QString gaps;
+  for (std::size_t i = 0; i < diagnosis_->gapBefore.size() && i < diagnosis_->gapAfter.size(); ++i)
+    gaps += tr("%1 %2 → %3   ")
+                .arg(diagnosis::channelName(diagnosis_->gapBefore[i].channel))
+                .arg(localNumber(diagnosis_->gapBefore[i].rmsZ, 'f', 2))
+                .arg(localNumber(diagnosis_->gapAfter[i].rmsZ, 'f', 2));
+  verdict_->setText(tr("<b>%1 — verdict: %2</b><br>%3<br>gap per channel (rms z, 1 = within the simulator's "
+                       "spread), before → after: %4")
+                        .arg(title.toHtmlEscaped(), QString::fromStdString(diagnosis_->verdict).toHtmlEscaped(),
+                             QString::fromStdString(diagnosis_->verdictReason).toHtmlEscaped(), gaps));
+  text_->setPlainText(QString::fromStdString(diagnosis::formatDiagnosisText(*diagnosis_)));
+  {
+    const QSignalBlocker block(pointCombo_);
+    pointCombo_->clear();
+    for (const auto& p : diagnosis_->points)
+      pointCombo_->addItem(tr("%1: %2 axis, %3 Hz").arg(p.point + 1).arg(axisLetter(static_cast<int>(p.axis)))
+                               .arg(localNumber(p.frequencyHz, 'g', 4)));
+  }
+  showGapMap();
+  showShrink();
+  showPoint(0);
+}
+
+void DiagnosisView::showPoint(int position) {
+  curvePlot_->detachItems(QwtPlotItem::Rtti_PlotCurve);
+  spectrumPlot_->detachItems(QwtPlotItem::Rtti_PlotMultiBarChart);
+  if (!diagnosis_ || position < 0 || position >= static_cast<int>(diagnosis_->points.size())) {
+    curvePlot_->replot();
+    spectrumPlot_->replot();
+    return;
+  }
+  const auto& p = diagnosis_->points[static_cast<std::size_t>(position)];
+  auto addCurve = [&](const diagnosis::PointSpectrum& s, const QString& name, const QColor& colour) {
+    QVector<QPointF> points;
+    for (std::size_t i = 0; i < s.residualTimeS.size() && i < s.gyroResidualDeg.size(); ++i)
+      points.push_back({s.residualTimeS[i], s.gyroResidualDeg[i] * 3600.0});
+    auto* c = new QwtPlotCurve(name);
+    c->setPen(QPen(colour, 1.2));
+    c->setSamples(points);
+    c->attach(curvePlot_);
+  };
+  addCurve(p.real, tr("recorded"), kReal);
+  addCurve(p.simulated, tr("simulated (replay)"), kSim);
+  curvePlot_->setAxisAutoScale(QwtPlot::xBottom);
+  curvePlot_->setAxisAutoScale(QwtPlot::yLeft);
+  curvePlot_->replot();
+
+  // Harmonics 2..5 of both channels, recorded beside simulated.
+  auto* bars = new QwtPlotMultiBarChart();
+  bars->setStyle(QwtPlotMultiBarChart::Grouped);
+  const QList<QwtText> titles = {QwtText(tr("table, recorded")), QwtText(tr("table, simulated")),
+                                 QwtText(tr("gyro, recorded")), QwtText(tr("gyro, simulated"))};
+  bars->setBarTitles(titles);
+  const QColor colours[] = {QColor(31, 119, 180), QColor(158, 202, 225), QColor(255, 127, 14), QColor(253, 208, 162)};
+  for (int i = 0; i < 4; ++i) {
+    auto* symbol = new QwtColumnSymbol(QwtColumnSymbol::Box);
+    symbol->setPalette(QPalette(colours[i]));
+    symbol->setLineWidth(0);
+    bars->setSymbol(i, symbol);
+  }
+  QVector<QwtSetSample> samples;
+  auto at = [](const std::vector<double>& v, int h) { return h < static_cast<int>(v.size()) ? v[static_cast<std::size_t>(h)] : 0.0; };
+  for (int h = 2; h <= 5; ++h)
+    samples.push_back(QwtSetSample(h, QVector<double>{at(p.real.tableHarmonicPpm, h), at(p.simulated.tableHarmonicPpm, h),
+                                                      at(p.real.gyroHarmonicPpm, h), at(p.simulated.gyroHarmonicPpm, h)}));
+  bars->setSamples(samples);
+  bars->attach(spectrumPlot_);
+  spectrumPlot_->setAxisScale(QwtPlot::xBottom, 1.5, 5.5, 1.0);
+  spectrumPlot_->setAxisAutoScale(QwtPlot::yLeft);
+  spectrumPlot_->replot();
+}
+
+void DiagnosisView::showGapMap() {
+  rowNames_.clear();
+  columnNames_.clear();
+  std::map<std::pair<int, int>, int> columns;                 // (point, segment) -> column
+  std::map<std::tuple<int, std::string, int>, int> rows;      // (channel, quantity, axis) -> row
+  for (const auto& c : diagnosis_->gapMap) {
+    columns.emplace(std::pair{c.key.point, c.key.segment}, 0);
+    rows.emplace(std::tuple{static_cast<int>(c.key.channel), c.key.quantity, c.key.axis}, 0);
+  }
+  int i = 0;
+  for (auto& [key, index] : columns) {
+    index = i++;
+    columnNames_ << tr("P%1 S%2").arg(key.first + 1).arg(key.second + 1);
+  }
+  i = 0;
+  for (auto& [key, index] : rows) {
+    index = i++;
+    const auto& [channel, quantity, axis] = key;
+    rowNames_ << QString("%1 %2 %3")
+                     .arg(diagnosis::channelName(static_cast<diagnosis::Channel>(channel)),
+                          QString::fromStdString(quantity), axisLetter(axis))
+                     .trimmed();
+  }
+  const int nRows = static_cast<int>(rowNames_.size()), nCols = static_cast<int>(columnNames_.size());
+  QVector<double> values(nRows * nCols, 0.0);
+  for (const auto& c : diagnosis_->gapMap) {
+    const int r = rows[{static_cast<int>(c.key.channel), c.key.quantity, c.key.axis}];
+    const int col = columns[{c.key.point, c.key.segment}];
+    values[r * nCols + col] = std::clamp(c.z, -kZRange, kZRange);
+  }
+  auto* data = new QwtMatrixRasterData();
+  data->setValueMatrix(values, std::max(nCols, 1));
+  data->setInterval(Qt::XAxis, QwtInterval(-0.5, nCols - 0.5));
+  data->setInterval(Qt::YAxis, QwtInterval(-0.5, nRows - 0.5));
+  data->setInterval(Qt::ZAxis, QwtInterval(-kZRange, kZRange));
+  data->setResampleMode(QwtMatrixRasterData::NearestNeighbour);
+  gapMap_->setData(data);
+  auto diverging = [] {
+    auto* map = new QwtLinearColorMap(QColor(33, 102, 172), QColor(178, 24, 43));
+    map->addColorStop(0.5, Qt::white);
+    return map;
+  };
+  gapMap_->setColorMap(diverging());
+  auto* bar = gapMapPlot_->axisWidget(QwtPlot::yRight);
+  bar->setColorBarEnabled(true);
+  bar->setColorMap(QwtInterval(-kZRange, kZRange), diverging());
+  gapMapPlot_->enableAxis(QwtPlot::yRight);
+  gapMapPlot_->setAxisScale(QwtPlot::yRight, -kZRange, kZRange);
+  gapMapPlot_->setAxisTitle(QwtPlot::yRight, tr("z"));
+  gapMapPlot_->setAxisScaleDraw(QwtPlot::xBottom, new NamedScaleDraw(columnNames_));
+  gapMapPlot_->setAxisScaleDraw(QwtPlot::yLeft, new NamedScaleDraw(rowNames_));
+  gapMapPlot_->setAxisScale(QwtPlot::xBottom, -0.5, nCols - 0.5, 1.0);
+  gapMapPlot_->setAxisScale(QwtPlot::yLeft, -0.5, nRows - 0.5, 1.0);
+  gapMapPlot_->setAxisMaxMinor(QwtPlot::xBottom, 0);
+  gapMapPlot_->setAxisMaxMinor(QwtPlot::yLeft, 0);
+  QFont small = gapMapPlot_->axisWidget(QwtPlot::yLeft)->font();
+  small.setPointSizeF(std::max(5.0, small.pointSizeF() * (nRows > 24 ? 0.6 : 0.85)));
+  gapMapPlot_->axisWidget(QwtPlot::yLeft)->setFont(small);
+  gapMapPlot_->replot();
+}
+
+void DiagnosisView::showShrink() {
+  shrinkPlot_->detachItems(QwtPlotItem::Rtti_PlotBarChart);
+  QStringList names;
+  QVector<double> shrink;
+  std::vector<bool> kept;
+  for (const auto& e : diagnosis_->effects) {
+    names << QString::fromStdString(e.name);
+    shrink << 100.0 * std::clamp(e.heldOutShrink, -1.0, 1.0);
+    kept.push_back(e.kept);
+  }
+  auto* chart = new ShrinkChart(kept);
+  chart->setSamples(shrink);
+  chart->attach(shrinkPlot_);
+  auto* draw = new NamedScaleDraw(names);
+  // Upright names would overlap; slanted ones run off the plot's left edge.
+  draw->setLabelRotation(-90.0);
+  draw->setLabelAlignment(Qt::AlignLeft | Qt::AlignVCenter);
+  shrinkPlot_->setAxisScaleDraw(QwtPlot::xBottom, draw);
+  shrinkPlot_->setAxisScale(QwtPlot::xBottom, -0.6, names.size() - 0.4, 1.0);
+  shrinkPlot_->setAxisMaxMinor(QwtPlot::xBottom, 0);
+  const double lowest = shrink.isEmpty() ? 0.0 : *std::min_element(shrink.begin(), shrink.end());
+  shrinkPlot_->setAxisScale(QwtPlot::yLeft, std::min(0.0, lowest), 100.0);
+  shrinkPlot_->replot();
+}
+
+}  // namespace fog::ui
