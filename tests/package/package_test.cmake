@@ -66,7 +66,8 @@ foreach(program fogbench-cli fogbench)
   endforeach()
 endforeach()
 run_ok(contents dpkg-deb -c ${deb})
-foreach(f usr/bin/fogbench-cli usr/bin/fogbench usr/share/applications/fogbench.desktop
+foreach(f usr/bin/fogbench-cli usr/bin/fogbench usr/bin/fogbench-board-emu usr/share/man/man1/fogbench-board-emu.1
+          usr/share/applications/fogbench.desktop
           usr/share/metainfo/io.github.fogbench.fogbench.metainfo.xml
           usr/share/icons/hicolor/scalable/apps/fogbench.svg usr/share/icons/hicolor/48x48/apps/fogbench.png
           usr/share/icons/hicolor/256x256/apps/fogbench.png usr/share/man/man1/fogbench-cli.1
