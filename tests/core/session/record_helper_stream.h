@@ -13,8 +13,12 @@ inline TestPlan recordHelperPlan() {
   p.frequencyHz = 1.0;
   p.amplitudeDeg = 3.0;
   p.durationS = 20.0;  // far longer than the test lets it run
-  p.settleS = 0.5;
+  p.settleS = 0.3;
   TestPlan plan;
+  // Recording starts 0.5 s into the stream, well before the kill at ~1.5 s:
+  // the interrupted session must hold a test point with samples, not one
+  // that had only just begun.
+  plan.restBetweenS = 0.2;
   plan.points.push_back(p);
   return plan;
 }
