@@ -30,7 +30,11 @@ QString installTranslations(QCoreApplication& app, const QString& language) {
   QString code = language;
   if (code.isEmpty() || code == "system") code = QLocale::system().name().startsWith("zh") ? "zh_CN" : "en";
   if (!availableLanguages().contains(code)) code = "en";
-  QLocale::setDefault(QLocale(code == "en" ? QString("en_US") : code));
+  // Measurements read better without digit grouping (10000.0837 ms, not
+  // 10,000.0837): the locale decides the decimal sign, not groups.
+  QLocale locale(code == "en" ? QString("en_US") : code);
+  locale.setNumberOptions(QLocale::OmitGroupSeparator);
+  QLocale::setDefault(locale);
   if (code == "en") return code;
   initTranslationResources();
   // Ours, compiled into the program; Qt's own (standard dialogs) where the
