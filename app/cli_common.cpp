@@ -42,23 +42,4 @@ Result<analysis::BenchConstants> readConstants(CliArguments& args, const BenchSe
   return c;
 }
 
-Result<TestPlan> presetPlan(const std::string& name) {
-  if (name == "paper-slow") return TestPlan::paperSlow();
-  if (name == "paper-fast") return TestPlan::paperFast();
-  if (name == "paper") {
-    TestPlan plan = TestPlan::paperSlow();
-    plan.points.push_back(TestPlan::paperFast().points.front());
-    return plan;
-  }
-  if (name == "noise") {
-    // Gyro noise (docs/noise.md): 10 minutes at rest on X, then the paper's
-    // fast swing so that the same run also gives a delay.
-    TestPlan plan;
-    plan.points.push_back(TestPoint::staticSegment(Axis::kX, 600.0));
-    plan.points.push_back(TestPlan::paperFast().points.front());
-    return plan;
-  }
-  return invalidArgument("unknown preset '" + name + "' (paper, paper-slow, paper-fast, noise)");
-}
-
 }  // namespace fog::app

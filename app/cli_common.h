@@ -1,6 +1,7 @@
 #pragma once
 // Pieces every fogbench-cli command shares: the one-line error convention,
-// exit codes, the bench-constant options and the named test plans.
+// exit codes and the bench-constant options. (The named test plans are
+// fog::presetPlan, core/common/test_plan.h.)
 //
 // Exit codes: 0 ok, 1 the data gave no result (too little data, no
 // convergence), 2 bad command line or input (one line on stderr).
@@ -26,10 +27,5 @@ int exitCodeFor(const Status& s);
 Result<analysis::BenchConstants> readConstants(CliArguments& args, const BenchSettings& defaults = {});
 // Writes the constants back into the settings a session stores.
 void storeConstants(const analysis::BenchConstants& constants, BenchSettings& bench);
-
-// The named plans of `run --preset` and `report --preset`: paper (both paper
-// conditions on X), paper-slow (0.1 Hz / 10 deg), paper-fast (1 Hz / 3 deg),
-// noise (600 s static segment on X, then paper-fast).
-Result<TestPlan> presetPlan(const std::string& name);
 
 }  // namespace fog::app

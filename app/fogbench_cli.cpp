@@ -25,7 +25,7 @@ const char* kHelp = R"(fogbench-cli: measure how late a fiber-optic gyro IMU rep
 usage:
   fogbench-cli run [plan] [simulator options] [constants] [--save-raw FILE] [--json]
       Run a test plan on the built-in simulator and print the delay report.
-      plan: --plan FILE.json | --preset paper|paper-slow|paper-fast|noise (default paper:
+      plan: --plan FILE.json | --preset paper|paper-slow|paper-fast|quick|noise (default paper:
             0.1 Hz / 10 deg for 294 s and 1 Hz / 3 deg for 60 s on X)
             | --axis x --freq-hz 0.1 --amp-deg 10 --duration-s 294 [--settle-s 5]
       --source sim (default), --seed N, --speed X (X times real time; default 0:

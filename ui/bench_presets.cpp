@@ -4,29 +4,25 @@
 
 namespace fog::ui {
 
-namespace {
-
-TestPlan paperPlan() {
-  TestPlan plan = TestPlan::paperSlow();
-  plan.points.push_back(TestPlan::paperFast().points.front());
-  return plan;
-}
-
-TestPlan quickPlan() {
-  TestPlan plan = TestPlan::paperFast();
-  plan.points.front().durationS = 20.0;
-  return plan;
-}
-
-}  // namespace
-
 const std::vector<BenchPreset>& benchPresets() {
-  static const std::vector<BenchPreset> presets = {
-      {"paper", QT_TRANSLATE_NOOP("BenchPreset", "Paper: 0.1 Hz / 10° 294 s + 1 Hz / 3° 60 s"), paperPlan()},
-      {"paper-slow", QT_TRANSLATE_NOOP("BenchPreset", "Paper slow: 0.1 Hz / 10°, 294 s"), TestPlan::paperSlow()},
-      {"paper-fast", QT_TRANSLATE_NOOP("BenchPreset", "Paper fast: 1 Hz / 3°, 60 s"), TestPlan::paperFast()},
-      {"quick", QT_TRANSLATE_NOOP("BenchPreset", "Quick: 1 Hz / 3°, 20 s"), quickPlan()},
-  };
+  // The plans are core's (the command line offers the same names); the
+  // labels are the GUI's.
+  static const std::vector<BenchPreset> presets = [] {
+    const std::pair<const char*, const char*> labels[] = {
+        {"paper", QT_TRANSLATE_NOOP("BenchPreset", "Paper: 0.1 Hz / 10° 294 s + 1 Hz / 3° 60 s")},
+        {"paper-slow", QT_TRANSLATE_NOOP("BenchPreset", "Paper slow: 0.1 Hz / 10°, 294 s")},
+        {"paper-fast", QT_TRANSLATE_NOOP("BenchPreset", "Paper fast: 1 Hz / 3°, 60 s")},
+        {"quick", QT_TRANSLATE_NOOP("BenchPreset", "Quick: 1 Hz / 3°, 20 s")},
+        {"noise", QT_TRANSLATE_NOOP("BenchPreset", "Gyro noise: 10 min at rest on X, then 1 Hz / 3°, 60 s")}};
+    std::vector<BenchPreset> all;
+    for (const auto& name : presetPlanNames()) {
+      QString label = QString::fromStdString(name);
+      for (const auto& [key, text] : labels)
+        if (name == key) label = text;
+      all.push_back({QString::fromStdString(name), label, *presetPlan(name)});
+    }
+    return all;
+  }();
   return presets;
 }
 

@@ -17,11 +17,8 @@ struct BenchPreset {
   QString displayLabel() const;
 };
 
-// In display order; the first is the default.
-//   paper       the paper's two conditions: 0.1 Hz / 10 deg 294 s, then 1 Hz / 3 deg 60 s
-//   paper-slow  0.1 Hz / 10 deg, 294 s
-//   paper-fast  1 Hz / 3 deg, 60 s
-//   quick       1 Hz / 3 deg, 20 s: a result in seconds
+// fog::presetPlanNames() in their order (the first is the default), each
+// with its plan (fog::presetPlan) and a label for the selector.
 const std::vector<BenchPreset>& benchPresets();
 
 // The preset called `name`, or nothing.

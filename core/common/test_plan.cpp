@@ -125,6 +125,37 @@ TestPlan TestPlan::paperFast() {
   return plan;
 }
 
+const std::vector<std::string>& presetPlanNames() {
+  static const std::vector<std::string> names = {"paper", "paper-slow", "paper-fast", "quick", "noise"};
+  return names;
+}
+
+Result<TestPlan> presetPlan(std::string_view name) {
+  if (name == "paper-slow") return TestPlan::paperSlow();
+  if (name == "paper-fast") return TestPlan::paperFast();
+  if (name == "paper") {
+    TestPlan plan = TestPlan::paperSlow();
+    plan.points.push_back(TestPlan::paperFast().points.front());
+    return plan;
+  }
+  if (name == "quick") {
+    TestPlan plan = TestPlan::paperFast();
+    plan.points.front().durationS = 20.0;
+    return plan;
+  }
+  if (name == "noise") {
+    // Gyro noise (docs/noise.md): 10 minutes at rest on X, then the paper's
+    // fast swing so that the same run also gives a delay.
+    TestPlan plan;
+    plan.points.push_back(TestPoint::staticSegment(Axis::kX, 600.0));
+    plan.points.push_back(TestPlan::paperFast().points.front());
+    return plan;
+  }
+  std::string known;
+  for (const auto& n : presetPlanNames()) known += (known.empty() ? "" : ", ") + n;
+  return invalidArgument("unknown preset '" + std::string(name) + "' (" + known + ")");
+}
+
 Result<TestPlan> testPlanFromJson(std::string_view text) {
   using nlohmann::json;
   json doc = json::parse(text, nullptr, /*allow_exceptions=*/false);

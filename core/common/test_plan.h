@@ -72,6 +72,16 @@ struct TestPlan {
 // and is written only for static segments, so swing plans read and write as
 // before.
 Result<TestPlan> testPlanFromJson(std::string_view json);
+
+// The named plans the command line and the GUI offer, in display order:
+//   paper       the paper's two conditions on X: 0.1 Hz / 10 deg 294 s, then 1 Hz / 3 deg 60 s
+//   paper-slow  0.1 Hz / 10 deg, 294 s
+//   paper-fast  1 Hz / 3 deg, 60 s
+//   quick       1 Hz / 3 deg, 20 s: a result in seconds
+//   noise       10 minutes at rest on X (gyro noise), then the paper-fast swing
+const std::vector<std::string>& presetPlanNames();
+// kInvalidArgument naming the presets for an unknown name.
+Result<TestPlan> presetPlan(std::string_view name);
 std::string testPlanToJson(const TestPlan& plan);
 
 }  // namespace fog

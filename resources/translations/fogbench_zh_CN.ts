@@ -4,7 +4,7 @@
 <context>
     <name>fog::ui::BenchPreset</name>
     <message>
-        <location filename="../../ui/bench_presets.cpp" line="+25"/>
+        <location filename="../../ui/bench_presets.cpp" line="+12"/>
         <source>Paper: 0.1 Hz / 10° 294 s + 1 Hz / 3° 60 s</source>
         <translation>论文：0.1 Hz / 10° 294 s + 1 Hz / 3° 60 s</translation>
     </message>
@@ -22,6 +22,11 @@
         <location line="+1"/>
         <source>Quick: 1 Hz / 3°, 20 s</source>
         <translation>快速：1 Hz / 3°，20 s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Gyro noise: 10 min at rest on X, then 1 Hz / 3°, 60 s</source>
+        <translation>陀螺噪声：X 轴静止 10 分钟，然后 1 Hz / 3°，60 s</translation>
     </message>
 </context>
 <context>

@@ -118,3 +118,25 @@ TEST(TestPlan, StaticSegmentJsonRefusesSwingKeysAndBadKinds) {
 
 }  // namespace
 }  // namespace fog
+
+namespace fog {
+namespace {
+
+TEST(TestPlanPresets, EveryNamedPlanIsValidAndUnknownNamesAreExplained) {
+  TurntableLimits limits;
+  for (const auto& name : presetPlanNames()) {
+    auto plan = presetPlan(name);
+    ASSERT_TRUE(plan.isOk()) << name;
+    std::string why;
+    EXPECT_TRUE(plan->isValid(limits, &why)) << name << ": " << why;
+  }
+  EXPECT_EQ(presetPlan("paper")->points.size(), 2u);
+  EXPECT_TRUE(presetPlan("noise")->points.front().isStatic());
+  EXPECT_DOUBLE_EQ(presetPlan("quick")->points.front().durationS, 20.0);
+  auto bad = presetPlan("papr");
+  ASSERT_FALSE(bad.isOk());
+  EXPECT_NE(bad.status().message().find("paper, paper-slow, paper-fast, quick, noise"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace fog
