@@ -94,9 +94,10 @@ int benchDiagnosisCommand(CliArguments& args) {
   auto summary = diagnosis::runBlindCheck(options, [](const diagnosis::TrialResult& r) {
     std::string truth;
     for (const auto& t : r.truth) truth += (truth.empty() ? "" : " + ") + t;
-    std::fprintf(stderr, "trial %3d %-7s %-48s x%-5.1f -> %-26s shrink %4.0f %% (%.2f s)%s\n", r.trial + 1,
-                 diagnosis::trialKindName(r.kind), truth.empty() ? "-" : truth.c_str(), r.magnitude, r.verdict.c_str(),
-                 100.0 * r.heldOutShrink, r.elapsedS, r.error.empty() ? "" : (" " + r.error).c_str());
+    std::fprintf(stderr, "trial %3d %-7s %-48s x%-5.1f -> %-26s shrink %4.0f %%, left %5.1f sigma in %-10s (%.2f s)%s\n",
+                 r.trial + 1, diagnosis::trialKindName(r.kind), truth.empty() ? "-" : truth.c_str(), r.magnitude,
+                 r.verdict.c_str(), 100.0 * r.heldOutShrink, r.worstRemainderSigma, r.worstChannel.c_str(), r.elapsedS,
+                 r.error.empty() ? "" : (" " + r.error).c_str());
   });
   if (!summary) return fail(summary.status(), exitCodeFor(summary.status()));
   std::cout << diagnosis::formatBlindCheck(*summary);

@@ -248,13 +248,13 @@ void DiagnosisView::showGapMap() {
     const int col = columns[{c.key.point, c.key.segment}];
     values[r * nCols + col] = std::clamp(c.z, -kZRange, kZRange);
   }
-  auto* data = new QwtMatrixRasterData();
-  data->setValueMatrix(values, std::max(nCols, 1));
-  data->setInterval(Qt::XAxis, QwtInterval(-0.5, nCols - 0.5));
-  data->setInterval(Qt::YAxis, QwtInterval(-0.5, nRows - 0.5));
-  data->setInterval(Qt::ZAxis, QwtInterval(-kZRange, kZRange));
-  data->setResampleMode(QwtMatrixRasterData::NearestNeighbour);
-  gapMap_->setData(data);
+  auto* raster = new QwtMatrixRasterData();
+  raster->setValueMatrix(values, std::max(nCols, 1));
+  raster->setInterval(Qt::XAxis, QwtInterval(-0.5, nCols - 0.5));
+  raster->setInterval(Qt::YAxis, QwtInterval(-0.5, nRows - 0.5));
+  raster->setInterval(Qt::ZAxis, QwtInterval(-kZRange, kZRange));
+  raster->setResampleMode(QwtMatrixRasterData::NearestNeighbour);
+  gapMap_->setData(raster);
   auto diverging = [] {
     auto* map = new QwtLinearColorMap(QColor(33, 102, 172), QColor(178, 24, 43));
     map->addColorStop(0.5, Qt::white);

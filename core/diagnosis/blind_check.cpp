@@ -182,11 +182,9 @@ Result<BlindCheckSummary> runBlindCheck(const BlindCheckOptions& options,
         const double m = std::exp(rng.uniform() * std::log(10.0));
         std::vector<double> p(spec.parameters.size(), 0.0);
         const double phi = rng.uniform() * kTwoPi;
-        const bool positiveOnly = id == EffectId::kFirstOrderLag || id == EffectId::kTimestampJitter ||
-                                  id == EffectId::kDroppedFrames;
         for (std::size_t j = 0; j < p.size(); ++j) {
           const double thj = j < th.size() ? th[j] : spec.parameters[j].reference;
-          const double dir = p.size() == 1 ? (positiveOnly || rng.uniform() < 0.5 ? 1.0 : -1.0)
+          const double dir = p.size() == 1 ? (!spec.parameters[0].canBeNegative || rng.uniform() < 0.5 ? 1.0 : -1.0)
                                            : (j == 0 ? std::cos(phi) : std::sin(phi));
           p[j] = m * thj * dir;
         }
@@ -226,6 +224,11 @@ Result<BlindCheckSummary> runBlindCheck(const BlindCheckOptions& options,
         double before = 0, after = 0;
         for (const auto& h : diag->heldOut) before += h.before, after += h.after;
         r.heldOutShrink = before > 0 ? 1.0 - std::max(0.0, after) / before : 0.0;
+        for (const auto& h : diag->heldOut) {
+          const double sigma = h.cells > 0 ? h.after / std::sqrt(2.0 * h.cells) : 0.0;
+          if (r.worstChannel.empty() || sigma > r.worstRemainderSigma)
+            r.worstChannel = channelName(h.channel), r.worstRemainderSigma = sigma, r.worstChannelShrink = h.shrink;
+        }
       }
       std::lock_guard<std::mutex> lock(mutex);
       out.trials[static_cast<std::size_t>(t)] = r;

@@ -47,16 +47,16 @@ struct DiagnosisOptions {
   std::uint64_t seed = 9001; // seeds of the replays: seed, seed + 1, ...
   // Held-out improvement (delta chi-square on odd segments) an effect must reach.
   double heldOutDeltaChi2 = 16.0;
-  // The whole gap is "significant" when chi2 - n exceeds this many sigma of chi2(n).
+  // The whole gap is "significant" when chi2 - n exceeds this many sigma of
+  // chi2(n). The same test on the held-out remainder of a kept model, over
+  // all held-out cells and within each channel: a significant remainder
+  // makes the verdict "unexplained" (the kept effect is then a partial
+  // explanation).
   double gapSigma = 5.0;
   // An effect is not kept when it raises the held-out chi2 of any one
   // channel by more than this (it closes the gap in one place by opening it
   // in another).
   double channelWorsening = 25.0;
-  // A kept model that leaves a significant held-out gap (in all cells, or in
-  // one channel's) must close at least this share of it, or the verdict is
-  // "unexplained".
-  double explainedShrink = 0.9;
   int refineTop = 3;         // effects re-evaluated on the exact forward model
   bool allowPairs = true;
 };

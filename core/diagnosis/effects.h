@@ -45,6 +45,9 @@ struct EffectParameter {
   std::string name;  // "scale_factor_ppm"
   std::string unit;  // "ppm"
   double reference = 0.0;  // magnitude used for the linear signature
+  // False for a parameter that cannot be negative (a time constant, a
+  // variance, a loss rate): its signature is a one-sided difference.
+  bool canBeNegative = true;
 };
 
 struct EffectSpec {
