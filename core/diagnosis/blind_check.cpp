@@ -227,7 +227,7 @@ Result<BlindCheckSummary> runBlindCheck(const BlindCheckOptions& options,
         for (const auto& h : diag->heldOut) {
           const double sigma = h.cells > 0 ? h.after / std::sqrt(2.0 * h.cells) : 0.0;
           if (r.worstChannel.empty() || sigma > r.worstRemainderSigma)
-            r.worstChannel = channelName(h.channel), r.worstRemainderSigma = sigma, r.worstChannelShrink = h.shrink;
+            r.worstChannel = channelName(h.channel), r.worstRemainderSigma = sigma;
         }
       }
       std::lock_guard<std::mutex> lock(mutex);

@@ -44,9 +44,9 @@ struct TrialResult {
   std::vector<std::string> ranked;  // effect names, best first
   double heldOutShrink = 0.0;  // of the verdict's model
   // The channel whose held-out remainder is largest, in sigma of its chi2
-  // ((chi2 - n) / sqrt(2 n)), and that channel's shrink.
+  // ((chi2 - n) / sqrt(2 n)).
   std::string worstChannel;
-  double worstRemainderSigma = 0.0, worstChannelShrink = 0.0;
+  double worstRemainderSigma = 0.0;
   double elapsedS = 0.0;
   std::string error;           // non-empty when the diagnosis failed
 };

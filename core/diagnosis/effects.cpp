@@ -304,15 +304,18 @@ class EarthRateProjection final : public model::Effect {
   Angles rate_{};
 };
 
-// Reference magnitudes: the linear signature is (replay with the effect -
-// replay without) / reference on one seed. Any change of the sensed angle,
-// however small, re-draws the pulse quantisation of the gyro (a chaotic,
-// zero-mean change of ~10-20 chi2 units spread over the residual and
-// harmonic cells), so a reference must put the signature far above that, or
-// the fitted values are biased towards zero and the detection thresholds come
-// out too low (bias drift at 0.1 deg/h per min and g-sensitivity at 5 deg/h/g
-// were dominated by it). Every effect here responds linearly far beyond its
-// reference.
+// Reference magnitudes: the linear signature is (replay at +reference -
+// replay at -reference) / (2 reference) on one seed, or (replay with the
+// effect - replay without) / reference for a parameter that cannot be
+// negative. Any change of the sensed angle, however small, re-draws the
+// pulse quantisation of the gyro (a chaotic, zero-mean change of ~10-20 chi2
+// units spread over the residual and harmonic cells), so a reference must
+// put the signature far above that, or the fitted values are biased towards
+// zero and the detection thresholds come out too low (bias drift at 0.1
+// deg/h per min and g-sensitivity at 5 deg/h/g were dominated by it). Every
+// effect here responds linearly far beyond its reference, except in the
+// residual-variance cells, which grow with the square of an amplitude: the
+// central difference leaves that part to the exact evaluation.
 std::vector<EffectSpec> buildLibrary() {
   using E = EffectId;
   return {
