@@ -1,26 +1,30 @@
 #include "analysis/statistics.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace fog::analysis {
 
 namespace {
-// Regularised lower incomplete gamma P(s, x) by its series (x < s + 1).
-double gammaSeries(double s, double x) {
-  double term = 1.0 / s, sum = term;
-  for (int n = 1; n < 1000; ++n) {
-    term *= x / (s + n);
+// Regularised lower incomplete gamma P(a, x) by its series (x < a + 1). The
+// iteration limit allows the large, non-integer degrees of freedom of Allan
+// deviations at short averaging times (the series needs ~sqrt(a) terms).
+double gammaSeries(double a, double x) {
+  double term = 1.0 / a, sum = term;
+  for (int n = 1; n < 100000; ++n) {
+    term *= x / (a + n);
     sum += term;
-    if (std::abs(term) < std::abs(sum) * 1e-15) break;
+    if (std::abs(term) < std::abs(sum) * 1e-16) break;
   }
-  return sum * std::exp(-x + s * std::log(x) - std::lgamma(s));
+  return std::min(1.0, sum * std::exp(a * std::log(x) - x - std::lgamma(a)));
 }
-// Regularised upper incomplete gamma Q(s, x) by Lentz's continued fraction (x >= s + 1).
-double gammaContinuedFraction(double s, double x) {
-  const double tiny = 1e-300;
-  double b = x + 1.0 - s, c = 1.0 / tiny, d = 1.0 / b, h = d;
-  for (int i = 1; i < 1000; ++i) {
-    const double an = -i * (i - s);
+// Regularised upper incomplete gamma Q(a, x) by Lentz's continued fraction
+// (x >= a + 1).
+double gammaContinuedFraction(double a, double x) {
+  constexpr double tiny = 1e-300;
+  double b = x + 1.0 - a, c = 1.0 / tiny, d = 1.0 / b, h = d;
+  for (int i = 1; i < 100000; ++i) {
+    const double an = -i * (i - a);
     b += 2.0;
     d = an * d + b;
     if (std::abs(d) < tiny) d = tiny;
@@ -29,17 +33,25 @@ double gammaContinuedFraction(double s, double x) {
     d = 1.0 / d;
     const double delta = d * c;
     h *= delta;
-    if (std::abs(delta - 1.0) < 1e-15) break;
+    if (std::abs(delta - 1.0) < 1e-16) break;
   }
-  return std::exp(-x + s * std::log(x) - std::lgamma(s)) * h;
+  return std::min(1.0, std::exp(a * std::log(x) - x - std::lgamma(a)) * h);
 }
 }  // namespace
 
+double regularisedGammaP(double a, double x) {
+  if (x <= 0.0) return 0.0;
+  return x < a + 1.0 ? gammaSeries(a, x) : std::max(0.0, 1.0 - gammaContinuedFraction(a, x));
+}
+
+double regularisedGammaQ(double a, double x) {
+  if (x <= 0.0) return 1.0;
+  return x < a + 1.0 ? std::max(0.0, 1.0 - gammaSeries(a, x)) : gammaContinuedFraction(a, x);
+}
+
 double chiSquareSurvival(double x, int dof) {
   if (dof <= 0) return 1.0;
-  if (x <= 0.0) return 1.0;
-  const double s = 0.5 * dof, h = 0.5 * x;
-  return h < s + 1.0 ? 1.0 - gammaSeries(s, h) : gammaContinuedFraction(s, h);
+  return regularisedGammaQ(0.5 * dof, 0.5 * x);
 }
 
 MeanAndSpread meanAndSpread(const std::vector<double>& v) {

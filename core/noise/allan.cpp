@@ -1,5 +1,7 @@
 #include "noise/allan.h"
 
+#include "analysis/statistics.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -8,37 +10,6 @@ namespace fog::noise {
 
 namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-// Regularised lower incomplete gamma P(a, x): series below a + 1, Lentz's
-// continued fraction for Q = 1 - P above (Numerical Recipes' split).
-double regularisedGammaP(double a, double x) {
-  if (x <= 0.0) return 0.0;
-  const double logPrefix = a * std::log(x) - x - std::lgamma(a);
-  if (x < a + 1.0) {
-    double term = 1.0 / a, sum = term;
-    for (int n = 1; n < 100000; ++n) {
-      term *= x / (a + n);
-      sum += term;
-      if (std::abs(term) < std::abs(sum) * 1e-16) break;
-    }
-    return std::min(1.0, sum * std::exp(logPrefix));
-  }
-  constexpr double tiny = 1e-300;
-  double b = x + 1.0 - a, c = 1.0 / tiny, d = 1.0 / b, h = d;
-  for (int i = 1; i < 100000; ++i) {
-    const double an = -i * (i - a);
-    b += 2.0;
-    d = an * d + b;
-    if (std::abs(d) < tiny) d = tiny;
-    c = b + an / c;
-    if (std::abs(c) < tiny) c = tiny;
-    d = 1.0 / d;
-    const double delta = d * c;
-    h *= delta;
-    if (std::abs(delta - 1.0) < 1e-16) break;
-  }
-  return std::max(0.0, 1.0 - std::exp(logPrefix) * h);
-}
 
 double wilsonHilferty(double p, double dof) {
   const double z = normalQuantile(p);
@@ -159,7 +130,7 @@ double edfOverlappingAllan(std::size_t phasePoints, std::size_t mm, PowerLawNois
 
 double chiSquareCdf(double x, double dof) {
   if (!(dof > 0.0) || std::isnan(x)) return kNaN;
-  return regularisedGammaP(0.5 * dof, 0.5 * x);
+  return analysis::regularisedGammaP(0.5 * dof, 0.5 * x);
 }
 
 double normalQuantile(double p) {

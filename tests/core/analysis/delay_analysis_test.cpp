@@ -59,6 +59,21 @@ TEST(Statistics, ChiSquareSurvivalKnownValues) {
   EXPECT_DOUBLE_EQ(chiSquareSurvival(0.0, 3), 1.0);
 }
 
+// The incomplete gamma functions the Allan-deviation intervals (non-integer
+// EDF) and the chi-square tests share: P(1/2, x) = erf(sqrt x) on both sides
+// of the series / continued-fraction split, P + Q = 1, and a far tail that
+// keeps its relative precision (Q(1, x) = exp(-x)).
+TEST(Statistics, RegularisedIncompleteGamma) {
+  for (double x : {0.01, 0.7, 1.4, 3.0, 12.0})
+    EXPECT_NEAR(regularisedGammaP(0.5, x), std::erf(std::sqrt(x)), 1e-13) << x;
+  for (double a : {0.5, 2.75, 40.3, 5000.5})
+    for (double x : {0.5 * a, a + 0.9, a + 1.1, 2.0 * a})
+      EXPECT_NEAR(regularisedGammaP(a, x) + regularisedGammaQ(a, x), 1.0, 1e-12) << a << " " << x;
+  EXPECT_NEAR(regularisedGammaQ(1.0, 50.0) / std::exp(-50.0), 1.0, 1e-10);
+  EXPECT_DOUBLE_EQ(regularisedGammaP(3.0, 0.0), 0.0);
+  EXPECT_DOUBLE_EQ(regularisedGammaQ(3.0, -1.0), 1.0);
+}
+
 TEST(SwingFrequency, EstimatedFromZeroCrossings) {
   SyntheticSpec s;
   s.frequencyHz = 0.37;
