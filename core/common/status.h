@@ -46,6 +46,14 @@ inline Status insufficientData(std::string m) { return {StatusCode::kInsufficien
 inline Status corruptData(std::string m) { return {StatusCode::kCorruptData, std::move(m)}; }
 inline Status ioError(std::string m) { return {StatusCode::kIoError, std::move(m)}; }
 
+// Returns from the enclosing function (whose return type a Status converts
+// to) when expr gives an error Status.
+#define FOG_RETURN_IF_ERROR(expr)                   \
+  do {                                              \
+    ::fog::Status fogStatus_ = (expr);              \
+    if (!fogStatus_.isOk()) return fogStatus_;      \
+  } while (false)
+
 // A value or the Status that explains why there is none.
 template <typename T>
 class Result {

@@ -197,12 +197,6 @@ class CsvStream {
   std::size_t columns_ = 0, headerLine_ = 0;
 };
 
-#define FOG_RETURN_IF_ERROR(expr)        \
-  do {                                   \
-    Status status_ = (expr);             \
-    if (!status_.isOk()) return status_; \
-  } while (false)
-
 // Per test point, the last time seen and its line: times must increase
 // strictly within a test point (analysis and the increment model need it).
 struct TimeCheck {

@@ -71,12 +71,6 @@ class Reader {
   std::string where_;
 };
 
-#define FOG_RETURN_IF_ERROR(expr)      \
-  do {                                 \
-    Status status_ = (expr);           \
-    if (!status_.isOk()) return status_; \
-  } while (false)
-
 }  // namespace
 
 std::string metadataToJson(const Metadata& meta) {

@@ -659,6 +659,23 @@ Result<Recording> SessionReader::recording() const {
     return corruptData("session '" + path_ + "': decoded samples are damaged (" + what +
                        "); analyse the raw stream instead");
   };
+  // Every block of one test point, checked against its size and checksum;
+  // decode gets each record.
+  auto readBlocks = [&](Stmt& blocks, std::int64_t testPoint, std::size_t recordBytes, const std::string& what,
+                        const auto& decode) -> Status {
+    blocks.bind(1, testPoint);
+    int brc;
+    while ((brc = blocks.step()) == SQLITE_ROW) {
+      const auto n = static_cast<std::size_t>(blocks.integer(0));
+      auto data = blocks.blob(1);
+      if (data.size() != n * recordBytes || fnv1a(data) != blocks.integer(2))
+        return damaged(what + " block fails its size or checksum check");
+      for (std::size_t i = 0; i < n; ++i) decode(data.data() + i * recordBytes);
+    }
+    if (brc != SQLITE_DONE) return readError("reading the decoded samples");
+    sqlite3_reset(blocks.get());
+    return Status::ok();
+  };
   int rc;
   while ((rc = points.step()) == SQLITE_ROW) {
     TestPointData tp;
@@ -677,41 +694,20 @@ Result<Recording> SessionReader::recording() const {
     if (tableCount < 0 || imuCount < 0) return damaged("negative sample count");
     tp.table.reserve(static_cast<std::size_t>(tableCount));
     tp.imu.reserve(static_cast<std::size_t>(imuCount));
-    tableBlocks.bind(1, pos);
-    while ((rc = tableBlocks.step()) == SQLITE_ROW) {
-      const auto n = static_cast<std::size_t>(tableBlocks.integer(0));
-      auto data = tableBlocks.blob(1);
-      if (data.size() != n * kTableRecordBytes || fnv1a(data) != tableBlocks.integer(2))
-        return damaged("a table block fails its size or checksum check");
-      for (std::size_t i = 0; i < n; ++i) {
-        const std::uint8_t* at = data.data() + i * kTableRecordBytes;
-        TableSample t;
-        t.timeS = getDouble(at);
-        for (int a = 0; a < kAxisCount; ++a) t.angleDeg[static_cast<std::size_t>(a)] = getDouble(at + 8 * (a + 1));
-        tp.table.push_back(t);
-      }
-    }
-    if (rc != SQLITE_DONE) return readError("reading the decoded samples");
-    sqlite3_reset(tableBlocks.get());
-    imuBlocks.bind(1, pos);
-    while ((rc = imuBlocks.step()) == SQLITE_ROW) {
-      const auto n = static_cast<std::size_t>(imuBlocks.integer(0));
-      auto data = imuBlocks.blob(1);
-      if (data.size() != n * kImuRecordBytes || fnv1a(data) != imuBlocks.integer(2))
-        return damaged("an IMU block fails its size or checksum check");
-      for (std::size_t i = 0; i < n; ++i) {
-        const std::uint8_t* at = data.data() + i * kImuRecordBytes;
-        ImuSample m;
-        m.timeS = getDouble(at);
-        for (int a = 0; a < kAxisCount; ++a)
-          m.incrementDeg[static_cast<std::size_t>(a)] = getDouble(at + 8 * (a + 1));
-        m.temperatureC = getDouble(at + 32);
-        m.lostBefore = getU32(at + 40);
-        tp.imu.push_back(m);
-      }
-    }
-    if (rc != SQLITE_DONE) return readError("reading the decoded samples");
-    sqlite3_reset(imuBlocks.get());
+    FOG_RETURN_IF_ERROR(readBlocks(tableBlocks, pos, kTableRecordBytes, "a table", [&](const std::uint8_t* at) {
+      TableSample t;
+      t.timeS = getDouble(at);
+      for (int a = 0; a < kAxisCount; ++a) t.angleDeg[static_cast<std::size_t>(a)] = getDouble(at + 8 * (a + 1));
+      tp.table.push_back(t);
+    }));
+    FOG_RETURN_IF_ERROR(readBlocks(imuBlocks, pos, kImuRecordBytes, "an IMU", [&](const std::uint8_t* at) {
+      ImuSample m;
+      m.timeS = getDouble(at);
+      for (int a = 0; a < kAxisCount; ++a) m.incrementDeg[static_cast<std::size_t>(a)] = getDouble(at + 8 * (a + 1));
+      m.temperatureC = getDouble(at + 32);
+      m.lostBefore = getU32(at + 40);
+      tp.imu.push_back(m);
+    }));
     if (tp.table.size() != static_cast<std::size_t>(tableCount) || tp.imu.size() != static_cast<std::size_t>(imuCount))
       return damaged("sample count of test point " + std::to_string(pos));
     rec.testPoints.push_back(std::move(tp));
