@@ -237,13 +237,17 @@ Status needsTestPointColumn(const CsvStream& s, std::size_t count) {
   return Status::ok();
 }
 
-Status parseTable(CsvStream& s, std::vector<TestPointData>& points) {
+// The frame shared by both files: header with a time column and at least one
+// axis column (noAxisColumn says which), the test point column when there is
+// more than one, strictly increasing times per test point, at least one row.
+// row(tp, timeS) reads the rest of each row.
+template <typename ReadRow>
+Status parseRows(CsvStream& s, std::size_t pointCount, const std::string& noAxisColumn, const ReadRow& row) {
   FOG_RETURN_IF_ERROR(s.readHeader());
   if (!s.has(kTime)) return corruptData(s.path() + ": missing column \"time_s\" (seconds on the common clock)");
-  if (!s.has(kAxis0) && !s.has(kAxis0 + 1) && !s.has(kAxis0 + 2))
-    return corruptData(s.path() + ": no angle column; give at least the swing axis' one (x_deg, y_deg or z_deg)");
-  FOG_RETURN_IF_ERROR(needsTestPointColumn(s, points.size()));
-  TimeCheck check(points.size());
+  if (!s.has(kAxis0) && !s.has(kAxis0 + 1) && !s.has(kAxis0 + 2)) return corruptData(s.path() + ": " + noAxisColumn);
+  FOG_RETURN_IF_ERROR(needsTestPointColumn(s, pointCount));
+  TimeCheck check(pointCount);
   std::size_t rows = 0;
   while (true) {
     auto more = s.nextRow();
@@ -251,49 +255,48 @@ Status parseTable(CsvStream& s, std::vector<TestPointData>& points) {
     if (!*more) break;
     ++rows;
     std::size_t tp = 0;
-    FOG_RETURN_IF_ERROR(testPointOf(s, points.size(), tp));
-    TableSample sample;
-    FOG_RETURN_IF_ERROR(timeOf(s, tp, check, sample.timeS));
-    for (int a = 0; a < kAxisCount; ++a)
-      if (s.has(kAxis0 + a)) FOG_RETURN_IF_ERROR(s.number(kAxis0 + a, sample.angleDeg[static_cast<std::size_t>(a)]));
-    points[tp].table.push_back(sample);
+    FOG_RETURN_IF_ERROR(testPointOf(s, pointCount, tp));
+    double timeS = 0.0;
+    FOG_RETURN_IF_ERROR(timeOf(s, tp, check, timeS));
+    FOG_RETURN_IF_ERROR(row(tp, timeS));
   }
   if (rows == 0) return corruptData(s.path() + " has a header but no data rows");
   return Status::ok();
 }
 
+Status parseTable(CsvStream& s, std::vector<TestPointData>& points) {
+  return parseRows(s, points.size(), "no angle column; give at least the swing axis' one (x_deg, y_deg or z_deg)",
+                   [&](std::size_t tp, double timeS) {
+                     TableSample sample;
+                     sample.timeS = timeS;
+                     for (int a = 0; a < kAxisCount; ++a)
+                       if (s.has(kAxis0 + a))
+                         FOG_RETURN_IF_ERROR(s.number(kAxis0 + a, sample.angleDeg[static_cast<std::size_t>(a)]));
+                     points[tp].table.push_back(sample);
+                     return Status::ok();
+                   });
+}
+
 Status parseGyro(CsvStream& s, std::vector<TestPointData>& points) {
-  FOG_RETURN_IF_ERROR(s.readHeader());
-  if (!s.has(kTime)) return corruptData(s.path() + ": missing column \"time_s\" (seconds on the common clock)");
-  if (!s.has(kAxis0) && !s.has(kAxis0 + 1) && !s.has(kAxis0 + 2))
-    return corruptData(s.path() + ": no increment column; give at least the swing axis' one "
-                                  "(x_inc_deg, y_inc_deg or z_inc_deg)");
-  FOG_RETURN_IF_ERROR(needsTestPointColumn(s, points.size()));
-  TimeCheck check(points.size());
-  std::size_t rows = 0;
-  while (true) {
-    auto more = s.nextRow();
-    if (!more) return more.status();
-    if (!*more) break;
-    ++rows;
-    std::size_t tp = 0;
-    FOG_RETURN_IF_ERROR(testPointOf(s, points.size(), tp));
-    ImuSample sample;
-    FOG_RETURN_IF_ERROR(timeOf(s, tp, check, sample.timeS));
-    for (int a = 0; a < kAxisCount; ++a)
-      if (s.has(kAxis0 + a))
-        FOG_RETURN_IF_ERROR(s.number(kAxis0 + a, sample.incrementDeg[static_cast<std::size_t>(a)]));
-    if (s.has(kTemperature)) FOG_RETURN_IF_ERROR(s.number(kTemperature, sample.temperatureC));
-    if (s.has(kLostBefore)) {
-      std::uint64_t lost = 0;
-      FOG_RETURN_IF_ERROR(
-          s.integer(kLostBefore, lost, 0, 0xFFFFFFFFu, "a count of lost IMU frames (an integer >= 0)"));
-      sample.lostBefore = static_cast<std::uint32_t>(lost);
-    }
-    points[tp].imu.push_back(sample);
-  }
-  if (rows == 0) return corruptData(s.path() + " has a header but no data rows");
-  return Status::ok();
+  return parseRows(
+      s, points.size(),
+      "no increment column; give at least the swing axis' one (x_inc_deg, y_inc_deg or z_inc_deg)",
+      [&](std::size_t tp, double timeS) {
+        ImuSample sample;
+        sample.timeS = timeS;
+        for (int a = 0; a < kAxisCount; ++a)
+          if (s.has(kAxis0 + a))
+            FOG_RETURN_IF_ERROR(s.number(kAxis0 + a, sample.incrementDeg[static_cast<std::size_t>(a)]));
+        if (s.has(kTemperature)) FOG_RETURN_IF_ERROR(s.number(kTemperature, sample.temperatureC));
+        if (s.has(kLostBefore)) {
+          std::uint64_t lost = 0;
+          FOG_RETURN_IF_ERROR(
+              s.integer(kLostBefore, lost, 0, 0xFFFFFFFFu, "a count of lost IMU frames (an integer >= 0)"));
+          sample.lostBefore = static_cast<std::uint32_t>(lost);
+        }
+        points[tp].imu.push_back(sample);
+        return Status::ok();
+      });
 }
 
 std::string upper(Axis a) {
