@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "analysis/delay_analysis.h"
+#include "diagnosis/effects.h"
 #include "model/simulator.h"
 #include "protocol/recording_builder.h"
 
@@ -89,37 +90,15 @@ TEST(PaperReproduction, PureDelayIsConsistentAcrossFrequencies) {
   EXPECT_NEAR(report->consistency[0].weightedLagMs, 0.4658, 4.0 * report->consistency[0].weightedLagStdMs);
 }
 
-// An effect plugged in through the Effect interface: a first-order lag on
-// the gyro's sensed angle. Its delay falls with frequency, so two frequencies
-// must be reported as not a pure delay.
-class FirstOrderGyroLag final : public model::Effect {
- public:
-  explicit FirstOrderGyroLag(double timeConstantS) : tau_(timeConstantS) {}
-  std::string name() const override { return "first-order gyro lag"; }
-  void onGyroAngle(const model::GyroContext& c, std::array<double, kAxisCount>& sensed) override {
-    if (!started_) {
-      state_ = sensed;
-      started_ = true;
-    }
-    const double k = 1.0 - std::exp(-(c.timeS - lastS_) / tau_);
-    for (int a = 0; a < kAxisCount; ++a) state_[a] += k * (sensed[a] - state_[a]);
-    lastS_ = c.timeS;
-    sensed = state_;
-  }
-
- private:
-  double tau_;
-  double lastS_ = 0.0;
-  bool started_ = false;
-  std::array<double, kAxisCount> state_{};
-};
-
+// An effect plugged in through the Effect interface: the effect library's
+// first-order lag on the gyro's sensed angle (20 ms). Its delay falls with
+// frequency, so two frequencies must be reported as not a pure delay.
 TEST(PaperReproduction, FirstOrderLagIsNotAPureDelay) {
   TestPlan plan;
   plan.points.push_back({Axis::kX, 0.5, 5.0, 40.0, 2.0, 0.0});
   plan.points.push_back({Axis::kX, 2.0, 1.5, 20.0, 1.0, 0.0});
   std::vector<std::unique_ptr<model::Effect>> effects;
-  effects.push_back(std::make_unique<FirstOrderGyroLag>(0.02));
+  effects.push_back(diagnosis::makeEffect(diagnosis::EffectId::kFirstOrderLag, {20.0}));
   auto run = model::simulate(model::SimConfig{}, plan, std::move(effects));
   ASSERT_TRUE(run.isOk());
   auto rec = protocol::decodeRecording(run->bytes);
