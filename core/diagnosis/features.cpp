@@ -38,6 +38,24 @@ void gyroBasis(double w, double tau, double* out) {
   out[kGyroCols - 1] = tau;
 }
 
+// Calls f(k, dx) for every increment k with its row of the exact difference
+// model, dx = Phi(t_k) - Phi(t_k-1) (times relative to mid; after a lost
+// frame, and for the first, the start is one frame before t_k).
+template <typename F>
+void forEachIncrementRow(const std::vector<ImuSample>& imu, double w, double frame, double mid, const F& f) {
+  double phiEnd[kGyroCols], phiStart[kGyroCols], dx[kGyroCols];
+  for (std::size_t k = 0; k < imu.size(); ++k) {
+    const ImuSample& m = imu[k];
+    if (k > 0 && m.lostBefore == 0)
+      std::copy(phiEnd, phiEnd + kGyroCols, phiStart);
+    else
+      gyroBasis(w, m.timeS - frame - mid, phiStart);
+    gyroBasis(w, m.timeS - mid, phiEnd);
+    for (int c = 0; c < kGyroCols; ++c) dx[c] = phiEnd[c] - phiStart[c];
+    f(k, static_cast<const double*>(dx));
+  }
+}
+
 struct Interval {
   double sum = 0.0, sumSq = 0.0;
   std::size_t n = 0;
@@ -260,16 +278,8 @@ Result<FeatureSet> extractFeatures(const Recording& recording, const FeatureRefe
     }
 
     const double frame = medianInterval(tp.imu);
-    double phiEnd[kGyroCols], phiStart[kGyroCols], dx[kGyroCols];
-    for (std::size_t k = 0; k < tp.imu.size(); ++k) {
+    forEachIncrementRow(tp.imu, w, frame, mid, [&](std::size_t k, const double* dx) {
       const ImuSample& m = tp.imu[k];
-      const bool continues = k > 0 && m.lostBefore == 0;
-      if (continues)
-        std::copy(phiEnd, phiEnd + kGyroCols, phiStart);
-      else
-        gyroBasis(w, m.timeS - frame - mid, phiStart);
-      gyroBasis(w, m.timeS - mid, phiEnd);
-      for (int c = 0; c < kGyroCols; ++c) dx[c] = phiEnd[c] - phiStart[c];
       const Eigen::Map<const GyroVector> x(dx);
       SegmentSums& s = seg[static_cast<std::size_t>(segmentOf(m.timeS))];
       s.gXtX.selfadjointView<Eigen::Upper>().rankUpdate(x);
@@ -283,7 +293,7 @@ Result<FeatureSet> extractFeatures(const Recording& recording, const FeatureRefe
         const double dUs = (m.timeS - tp.imu[k - 1].timeS) * 1e6;
         if (dUs > 0.0 && dUs < 1.5 * reference.imuPeriodS * 1e6) s.imuIntervalUs.add(dUs);
       }
-    }
+    });
 
     SegmentSums whole;
     for (auto& s : seg) {
@@ -315,22 +325,16 @@ Result<FeatureSet> extractFeatures(const Recording& recording, const FeatureRefe
     const std::size_t stride = std::max<std::size_t>(1, tp.imu.size() / 400);
     double cumulative = 0.0;
     const GyroVector beta = wf->gyro.col(ax);
-    for (std::size_t k = 0; k < tp.imu.size(); ++k) {
+    forEachIncrementRow(tp.imu, w, frame, mid, [&](std::size_t k, const double* dx) {
       const ImuSample& m = tp.imu[k];
-      const bool continues = k > 0 && m.lostBefore == 0;
-      if (continues)
-        std::copy(phiEnd, phiEnd + kGyroCols, phiStart);
-      else
-        gyroBasis(w, m.timeS - frame - mid, phiStart);
-      gyroBasis(w, m.timeS - mid, phiEnd);
       double model = 0.0;
-      for (int c = 0; c < kGyroCols; ++c) model += (phiEnd[c] - phiStart[c]) * beta(c);
+      for (int c = 0; c < kGyroCols; ++c) model += dx[c] * beta(c);
       cumulative += m.incrementDeg[static_cast<std::size_t>(ax)] - model;
       if (k % stride == 0) {
         sp.residualTimeS.push_back(m.timeS - mid);
         sp.gyroResidualDeg.push_back(cumulative);
       }
-    }
+    });
     out.spectra.push_back(std::move(sp));
   }
   return out;
