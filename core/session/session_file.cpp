@@ -447,7 +447,25 @@ Status SessionWriter::storeRecording(const Recording& rec) {
   Stmt tableBlock(db_, "INSERT INTO table_block VALUES (?1, ?2, ?3, ?4, ?5)");
   Stmt imuBlock(db_, "INSERT INTO imu_block VALUES (?1, ?2, ?3, ?4, ?5)");
   if (!point.ok() || !tableBlock.ok() || !imuBlock.ok()) return fail("storing decoded samples");
+  // The samples of one test point in blocks of kSamplesPerBlock records,
+  // each with its checksum; encode(k, at) writes sample k's record.
   std::vector<std::uint8_t> buf;
+  auto writeBlocks = [&](Stmt& blocks, std::int64_t testPoint, std::size_t count, std::size_t recordBytes,
+                         const auto& encode) {
+    for (std::size_t first = 0, block = 0; first < count; first += kSamplesPerBlock, ++block) {
+      const std::size_t n = std::min(kSamplesPerBlock, count - first);
+      buf.resize(n * recordBytes);
+      for (std::size_t i = 0; i < n; ++i) encode(first + i, buf.data() + i * recordBytes);
+      blocks.bind(1, testPoint);
+      blocks.bind(2, static_cast<std::int64_t>(block));
+      blocks.bind(3, static_cast<std::int64_t>(n));
+      blocks.bindBlob(4, buf.data(), buf.size());
+      blocks.bind(5, fnv1a(buf));
+      if (blocks.step() != SQLITE_DONE) return false;
+      sqlite3_reset(blocks.get());
+    }
+    return true;
+  };
   for (std::size_t p = 0; p < rec.testPoints.size(); ++p) {
     const auto& tp = rec.testPoints[p];
     const auto pos = static_cast<std::int64_t>(p);
@@ -460,43 +478,20 @@ Status SessionWriter::storeRecording(const Recording& rec) {
     point.bind(7, static_cast<std::int64_t>(tp.imu.size()));
     if (point.step() != SQLITE_DONE) return fail("storing decoded samples");
     sqlite3_reset(point.get());
-    for (std::size_t first = 0, block = 0; first < tp.table.size(); first += kSamplesPerBlock, ++block) {
-      const std::size_t n = std::min(kSamplesPerBlock, tp.table.size() - first);
-      buf.resize(n * kTableRecordBytes);
-      for (std::size_t i = 0; i < n; ++i) {
-        const auto& t = tp.table[first + i];
-        std::uint8_t* at = buf.data() + i * kTableRecordBytes;
-        putDouble(at, t.timeS);
-        for (int a = 0; a < kAxisCount; ++a) putDouble(at + 8 * (a + 1), t.angleDeg[static_cast<std::size_t>(a)]);
-      }
-      tableBlock.bind(1, pos);
-      tableBlock.bind(2, static_cast<std::int64_t>(block));
-      tableBlock.bind(3, static_cast<std::int64_t>(n));
-      tableBlock.bindBlob(4, buf.data(), buf.size());
-      tableBlock.bind(5, fnv1a(buf));
-      if (tableBlock.step() != SQLITE_DONE) return fail("storing decoded samples");
-      sqlite3_reset(tableBlock.get());
-    }
-    for (std::size_t first = 0, block = 0; first < tp.imu.size(); first += kSamplesPerBlock, ++block) {
-      const std::size_t n = std::min(kSamplesPerBlock, tp.imu.size() - first);
-      buf.resize(n * kImuRecordBytes);
-      for (std::size_t i = 0; i < n; ++i) {
-        const auto& m = tp.imu[first + i];
-        std::uint8_t* at = buf.data() + i * kImuRecordBytes;
-        putDouble(at, m.timeS);
-        for (int a = 0; a < kAxisCount; ++a)
-          putDouble(at + 8 * (a + 1), m.incrementDeg[static_cast<std::size_t>(a)]);
-        putDouble(at + 32, m.temperatureC);
-        putU32(at + 40, m.lostBefore);
-      }
-      imuBlock.bind(1, pos);
-      imuBlock.bind(2, static_cast<std::int64_t>(block));
-      imuBlock.bind(3, static_cast<std::int64_t>(n));
-      imuBlock.bindBlob(4, buf.data(), buf.size());
-      imuBlock.bind(5, fnv1a(buf));
-      if (imuBlock.step() != SQLITE_DONE) return fail("storing decoded samples");
-      sqlite3_reset(imuBlock.get());
-    }
+    if (!writeBlocks(tableBlock, pos, tp.table.size(), kTableRecordBytes, [&](std::size_t k, std::uint8_t* at) {
+          const auto& t = tp.table[k];
+          putDouble(at, t.timeS);
+          for (int a = 0; a < kAxisCount; ++a) putDouble(at + 8 * (a + 1), t.angleDeg[static_cast<std::size_t>(a)]);
+        }))
+      return fail("storing decoded samples");
+    if (!writeBlocks(imuBlock, pos, tp.imu.size(), kImuRecordBytes, [&](std::size_t k, std::uint8_t* at) {
+          const auto& m = tp.imu[k];
+          putDouble(at, m.timeS);
+          for (int a = 0; a < kAxisCount; ++a) putDouble(at + 8 * (a + 1), m.incrementDeg[static_cast<std::size_t>(a)]);
+          putDouble(at + 32, m.temperatureC);
+          putU32(at + 40, m.lostBefore);
+        }))
+      return fail("storing decoded samples");
   }
   if (!exec(db_, "COMMIT")) return fail("storing decoded samples");
   return Status::ok();
