@@ -43,7 +43,7 @@ Figures measure(fog::ui::MainWindow& window, double seconds) {
   qint64 last = 0;
   QObject::connect(&probe, &QTimer::timeout, [&] {
     const qint64 now = clock.nsecsElapsed();
-    if (last > 0) f.latenessMs.push_back(std::max(0.0, (now - last) / 1e6 - 5.0));
+    if (last > 0) f.latenessMs.push_back(std::max(0.0, static_cast<double>(now - last) / 1e6 - 5.0));
     last = now;
   });
   // Count plot refreshes by watching the live table plot repaint requests.
@@ -61,8 +61,8 @@ Figures measure(fog::ui::MainWindow& window, double seconds) {
   clock.start();
   probe.start();
   counter.start();
-  while (window.isRunning() && clock.elapsed() < seconds * 1000.0) QApplication::processEvents(QEventLoop::WaitForMoreEvents, 50);
-  f.seconds = clock.elapsed() / 1e3;
+  while (window.isRunning() && static_cast<double>(clock.elapsed()) < seconds * 1000.0) QApplication::processEvents(QEventLoop::WaitForMoreEvents, 50);
+  f.seconds = static_cast<double>(clock.elapsed()) / 1e3;
   f.frames = window.liveView()->traces().framesSeen();
   probe.stop();
   counter.stop();
@@ -76,10 +76,10 @@ Figures measure(fog::ui::MainWindow& window, double seconds) {
 void print(const char* name, Figures f) {
   std::sort(f.latenessMs.begin(), f.latenessMs.end());
   auto pct = [&](double p) {
-    return f.latenessMs.empty() ? 0.0 : f.latenessMs[static_cast<std::size_t>(p * (f.latenessMs.size() - 1))];
+    return f.latenessMs.empty() ? 0.0 : f.latenessMs[static_cast<std::size_t>(p * static_cast<double>(f.latenessMs.size() - 1))];
   };
   std::printf("%-40s %6.1f s  %9.0f frames/s  %5.1f plot updates/s  event lateness: median %.2f ms, p99 %.2f ms, max %.2f ms\n",
-              name, f.seconds, f.frames / f.seconds, f.refreshes / f.seconds, pct(0.5), pct(0.99),
+              name, f.seconds, static_cast<double>(f.frames) / f.seconds, static_cast<double>(f.refreshes) / f.seconds, pct(0.5), pct(0.99),
               f.latenessMs.empty() ? 0.0 : f.latenessMs.back());
 }
 

@@ -744,7 +744,7 @@ Result<Content> prepare(const ReportInput& in) {
   if (!qobject_cast<QApplication*>(QCoreApplication::instance()))
     return Status(StatusCode::kInternal, "the report's plots need a QApplication");
   Content c{in, calibrationVerdict(in.delays, in.imuDelayLimitMs), rawDataSha256(in.rawBytes), {},
-            QDateTime::currentDateTimeUtc().toString(Qt::ISODate)};
+            QDateTime::currentDateTimeUtc().toString(Qt::ISODate), {}};
   const double scale = in.recording.pulseEquivalentDeg > 0.0 ? 1.0 : in.delays.constants.pulseEquivalentDeg;
   for (const auto& p : in.delays.points) {
     const auto& tps = in.recording.testPoints;
