@@ -126,6 +126,8 @@ int runCommand(CliArguments& args) {
   if (!speed) return fail(speed.status(), 2);
   auto constants = readConstants(args);
   if (!constants) return fail(constants.status(), 2);
+  auto limit = readDelayLimit(args);
+  if (!limit) return fail(limit.status(), 2);
   auto plan = readPlan(args);
   if (!plan) return fail(plan.status(), 2);
   auto config = readSimConfig(args);
@@ -148,6 +150,7 @@ int runCommand(CliArguments& args) {
   options.reportContext.source = "simulator, seed " + std::to_string(config->seed) +
                                  (effectText ? ", effect " + *effectText : std::string()) + ", fogbench " + FOG_VERSION;
   for (const auto& t : (*simulator)->truth()) options.reportContext.trueLagMs.push_back(t.lagS * 1e3);
+  options.reportContext.imuDelayLimitMs = *limit;
   if (*sessionOut) {
     options.sessionPath = (*sessionOut)->path;
     options.info = simulatedSessionInfo((*sessionOut)->info, *plan, *config, *constants);
@@ -179,6 +182,8 @@ int analyzeCommand(CliArguments& args) {
   noPulseEquivalent.pulseEquivalentDeg = 0.0;
   auto constants = readConstants(args, noPulseEquivalent);
   if (!constants) return fail(constants.status(), 2);
+  auto limit = readDelayLimit(args);
+  if (!limit) return fail(limit.status(), 2);
   if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
   if (args.positionals().size() != 1) return fail(invalidArgument("analyze needs exactly one FILE"), 2);
   const std::string path = args.positionals()[0];
@@ -189,6 +194,7 @@ int analyzeCommand(CliArguments& args) {
   if (!recording) return fail(Status(recording.status().code(), path + ": " + recording.status().message()), 2);
   analysis::ReportContext context;
   context.source = "raw stream " + path;
+  context.imuDelayLimitMs = *limit;
   return printReport(analysis::analyzeRecording(*recording, *constants), context, json);
 }
 

@@ -6,9 +6,11 @@
 // Exit codes: 0 ok, 1 the data gave no result (too little data, no
 // convergence), 2 bad command line or input (one line on stderr).
 
+#include <array>
 #include <string>
 
 #include "analysis/delay_analysis.h"
+#include "analysis/verdict.h"
 #include "cli_arguments.h"
 #include "common/session_info.h"
 #include "common/status.h"
@@ -23,8 +25,13 @@ int exitCodeFor(const Status& s);
 
 // The bench constants as the session (or the defaults) has them, each
 // overridable on the command line: --read-delay-ms, --read-delay-std-ms,
-// --board-delay-ms, --board-delay-std-ms, --pulse-equivalent-deg.
+// --board-delay-ms, --board-delay-std-ms, --pulse-equivalent-deg; and
+// --gyro-sign x=-1[,y=-1...] for a gyro axis mounted the other way round.
 Result<analysis::BenchConstants> readConstants(CliArguments& args, const BenchSettings& defaults = {});
+// --gyro-sign's text ("x=-1,z=-1") into per-axis signs (the rest +1).
+Result<std::array<int, kAxisCount>> parseGyroSigns(const std::string& text);
+// --limit-ms: the IMU delay limit of the verdict (default 0.8 ms).
+Result<double> readDelayLimit(CliArguments& args);
 // Writes the constants back into the settings a session stores.
 void storeConstants(const analysis::BenchConstants& constants, BenchSettings& bench);
 

@@ -83,12 +83,15 @@ int analyzeSessionCommand(CliArguments& args, const std::string& path) {
   }
   auto constants = readConstants(args, (*reader)->info().bench);
   if (!constants) return fail(constants.status(), 2);
+  auto limit = readDelayLimit(args);
+  if (!limit) return fail(limit.status(), 2);
   if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
   if (args.positionals().size() != 1) return fail(invalidArgument("analyze needs exactly one FILE"), 2);
   auto recording = (*reader)->recording();
   if (!recording) return fail(recording.status(), exitCodeFor(recording.status()));
   analysis::ReportContext context;
   context.source = sessionSource(**reader, "session");
+  context.imuDelayLimitMs = *limit;
   auto report = analysis::analyzeRecording(*recording, *constants);
   if (!report) return fail(report.status(), exitCodeFor(report.status()));
   std::cout << (json ? analysis::formatReportJson(*report, context) + "\n"
@@ -190,6 +193,8 @@ int replayCommand(CliArguments& args) {
   if (!reader) return fail(reader.status(), 2);
   auto constants = readConstants(args, (*reader)->info().bench);
   if (!constants) return fail(constants.status(), 2);
+  auto limit = readDelayLimit(args);
+  if (!limit) return fail(limit.status(), 2);
   if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
   auto bytes = (*reader)->rawBytes();
   if (!bytes) return fail(bytes.status(), 2);
@@ -205,6 +210,7 @@ int replayCommand(CliArguments& args) {
                 exitCodeFor(replayed->recordingStatus));
   analysis::ReportContext context;
   context.source = sessionSource(**reader, "replay of session");
+  context.imuDelayLimitMs = *limit;
   const auto& report = replayed->report;
   if (!report) return fail(report.status(), exitCodeFor(report.status()));
   std::cout << (json ? analysis::formatReportJson(*report, context) + "\n"
@@ -260,6 +266,8 @@ int exportCommand(CliArguments& args) {
   }
   auto constants = readConstants(args, (*reader)->info().bench);
   if (!constants) return fail(constants.status(), 2);
+  auto limit = readDelayLimit(args);
+  if (!limit) return fail(limit.status(), 2);
   if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
   if (!csvDir && !jsonPath) return fail(invalidArgument("export needs --csv DIR and/or --results-json FILE.json"), 2);
   std::error_code ec;
@@ -277,6 +285,7 @@ int exportCommand(CliArguments& args) {
               << "); samples are exported without fits\n";
   analysis::ReportContext context;
   context.source = sessionSource(**reader, "session");
+  context.imuDelayLimitMs = *limit;
 
   if (csvDir) {
     SessionInfo info = (*reader)->info();

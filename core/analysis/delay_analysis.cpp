@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <future>
+#include <numeric>
 #include <sstream>
 
 #include "analysis/data_coverage.h"
@@ -36,7 +37,7 @@ std::string fmt(double v, int precision = 4) {
 
 // Phase angle psi of a*sin + b*cos from the Gram matrix of
 // [sin-like, cos-like, third regressor, y] over one window.
-bool windowPhase(const NormalSums<4>& gram, std::size_t rows, double& psi) {
+bool windowPhase(const NormalSums<4>& gram, std::size_t rows, double& psi, double& amplitude) {
   if (rows < 8) return false;
   Eigen::Matrix3d xtx;
   Eigen::Vector3d xty;
@@ -46,10 +47,13 @@ bool windowPhase(const NormalSums<4>& gram, std::size_t rows, double& psi) {
   }
   const Eigen::Vector3d p = xtx.ldlt().solve(xty);
   psi = std::atan2(p[1], p[0]);
+  amplitude = std::hypot(p[0], p[1]);
   return true;
 }
 
-std::vector<PeriodDelay> periodTrack(const Channels& ch, double w, double referenceS) {
+// gyroTurnsAgainst: the gyro is in antiphase with the table (a reversed axis);
+// its phase is then taken half a turn round, as in the joint fit.
+std::vector<PeriodDelay> periodTrack(const Channels& ch, double w, double referenceS, bool gyroTurnsAgainst) {
   std::vector<PeriodDelay> out;
   const double period = kTwoPi / w;
   const auto& tt = ch.table.timeS;
@@ -80,11 +84,169 @@ std::vector<PeriodDelay> periodTrack(const Channels& ch, double w, double refere
       const double v[4] = {s1 - s0, c1 - c0, g.endS[k] - g.startS[k], g.incrementDeg[k]};
       gyro.add(v, 0.0);
     }
-    double psiT = 0.0, psiG = 0.0;
-    if (windowPhase(table, i - i0, psiT) && windowPhase(gyro, k - k0, psiG))
-      out.push_back({referenceS + 0.5 * (a + b), wrapToHalfPeriod((psiT - psiG) / w, period) * 1e3});
+    double psiT = 0.0, psiG = 0.0, ampT = 0.0, ampG = 0.0;
+    if (windowPhase(table, i - i0, psiT, ampT) && windowPhase(gyro, k - k0, psiG, ampG)) {
+      if (gyroTurnsAgainst) psiG += kPi;
+      out.push_back({referenceS + 0.5 * (a + b), wrapToHalfPeriod((psiT - psiG) / w, period) * 1e3, ampT});
+    }
   }
   return out;
+}
+
+// Thresholds of the validity checks (docs/method.md, "Validity checks").
+// None rests on the noise level fitted from the same residuals: misfits are
+// compared with the amplitude, timing with significance from the data's own
+// scatter.
+constexpr double kClockSignificance = 5.0;   // periods, lag trend (sigma)
+constexpr double kTableMisfitLimit = 0.01;   // smooth table residual / amplitude
+constexpr double kGyroMisfitLimit = 0.05;    // smooth cumulative gyro residual / amplitude
+constexpr double kHarmonicLimit = 0.02;      // harmonics 2..5 / amplitude
+constexpr double kAmplitudeChangeLimit = 0.05;  // over the record, and > 5 sigma
+constexpr double kCausalSignificance = 3.0;  // a negative IMU delay beyond 3 sigma
+
+std::string axisLetter(Axis a) {
+  std::string s = axisName(a);
+  s[0] = static_cast<char>(s[0] - 'a' + 'A');
+  return s;
+}
+
+std::string percent(double fraction) { return fmt(100.0 * fraction, fraction < 0.001 ? 3 : 2) + " %"; }
+
+void addValidityChecks(TestPointResult& r, const Channels& ch, const std::vector<double>& gyroAngleResidual,
+                       const std::vector<double>& times, const std::vector<double>& amplitudes,
+                       const std::vector<double>& lags, double amplitude) {
+  const std::string axis = axisLetter(r.axis);
+  const double w = r.joint.omegaRadPerS;
+  const double periodS = kTwoPi / w;
+
+  // The gyro turns with the table.
+  {
+    ValidityCheck c{"axis_sign", r.magnitudeRatio > 0.0, ""};
+    const std::string ratio = fmt(r.magnitudeRatio, 4);
+    if (c.passed) {
+      c.detail = "the gyro turns with the table (gyro/table ratio " + ratio +
+                 (r.gyroSign < 0 ? ", after the stated sign -1" : "") + ")";
+    } else {
+      c.detail = "the gyro's " + axis + " axis turns against the table (gyro/table ratio " + ratio +
+                 (r.gyroSign < 0 ? " after the stated sign -1" : "") +
+                 "): the axis is mounted the other way round or its sign convention differs from the table's; "
+                 "the delay is refused (read as a normal axis it would be a half-period lag). " +
+                 (r.gyroSign < 0 ? std::string("Check the stated sign: without it the gyro turns with the table")
+                                 : std::string("If the IMU is mounted so, state it (metadata bench.gyro_sign {\"") +
+                                       axisName(r.axis) + "\": -1}, or --gyro-sign " + axisName(r.axis) +
+                                       "=-1) and analyse again");
+    }
+    r.checks.push_back(c);
+  }
+
+  // Table and gyro stamped on one clock at one rate: their periods agree and
+  // the per-period lag has no trend. The period uncertainties are raised by
+  // the same factor as the lag's when the noise model fell short.
+  {
+    const double honesty = r.fitLagStdMs > 0.0 ? std::max(1.0, r.lagStdMs / r.fitLagStdMs) : 1.0;
+    const double tp = r.tableFit.periodMs, gp = r.gyroFit.periodMs;
+    r.rateErrorPpm = (gp / tp - 1.0) * 1e6;
+    r.rateErrorStdPpm = honesty * std::hypot(r.tableFit.periodStdMs, r.gyroFit.periodStdMs) / tp * 1e6;
+    const double zPeriod = r.rateErrorStdPpm > 0.0 ? r.rateErrorPpm / r.rateErrorStdPpm : 0.0;
+    double zTrend = 0.0;
+    if (lags.size() >= 5)
+      if (auto line = fitLine(times, lags); line && line->slopeStd > 0.0) {
+        r.lagDriftPpm = line->slope * 1e3;  // ms per s
+        r.lagDriftStdPpm = line->slopeStd * 1e3;
+        zTrend = line->slope / line->slopeStd;
+      }
+    ValidityCheck c{"clock_rate", std::abs(zPeriod) < kClockSignificance && std::abs(zTrend) < kClockSignificance,
+                    ""};
+    const std::string figures = "periods differ by " + fmt(r.rateErrorPpm, 2) + " ± " + fmt(r.rateErrorStdPpm, 2) +
+                                " ppm (" + fmt(zPeriod, 1) + " σ), per-period lag drifts " + fmt(r.lagDriftPpm, 2) +
+                                " ± " + fmt(r.lagDriftStdPpm, 2) + " ppm (" + fmt(zTrend, 1) + " σ)";
+    if (c.passed) {
+      c.detail = "table and gyro stamps keep one rate: " + figures;
+    } else {
+      const double ppm = std::abs(zTrend) > std::abs(zPeriod) ? r.lagDriftPpm : r.rateErrorPpm;
+      c.detail = "the gyro's time stamps run " + fmt(std::abs(ppm), 1) + " ppm " + (ppm > 0 ? "fast" : "slow") +
+                 " against the table's (" + figures +
+                 "): the two streams are not stamped on one clock at one rate, so their phase difference is not a "
+                 "delay. Stamp both with the sampling board's common counter (or correct the clock rate) and "
+                 "record again";
+    }
+    r.checks.push_back(c);
+  }
+
+  // A steady sinusoid: what the fits leave is noise, not shape.
+  {
+    const double windowS = std::max(periodS / 20.0, 3.0 * periodS / std::max(1.0, static_cast<double>(r.tableSamples) / r.periods));
+    const auto tableResidual = tableResiduals(ch.table, r.tableFit);
+    r.tableMisfitFraction = smoothResidualRms(ch.table.timeS, tableResidual, windowS) / amplitude;
+    r.harmonicFraction = harmonicAmplitude(ch.table.timeS, tableResidual, w) / amplitude;
+    const bool gyroChecked = ch.gyro.lostFrames == 0;  // lost increments make steps in the cumulative angle
+    if (gyroChecked)
+      r.gyroMisfitFraction =
+          smoothResidualRms(ch.gyro.endS, gyroAngleResidual, windowS) / (amplitude * std::abs(r.magnitudeRatio));
+    double amplitudeZ = 0.0;
+    std::optional<LineFit> amplitudeLine;
+    if (amplitudes.size() >= 3) amplitudeLine = fitLine(times, amplitudes);
+    if (amplitudeLine) {
+      r.amplitudeChangeFraction = amplitudeLine->slope * r.durationS / amplitude;
+      amplitudeZ = amplitudeLine->slopeStd > 0.0 ? amplitudeLine->slope / amplitudeLine->slopeStd : 0.0;
+    }
+    std::vector<std::string> problems;
+    if (r.tableMisfitFraction > kTableMisfitLimit)
+      problems.push_back("the table's residual has a smooth part of " + percent(r.tableMisfitFraction) +
+                         " of the amplitude (limit " + percent(kTableMisfitLimit) + ")");
+    if (r.harmonicFraction > kHarmonicLimit)
+      problems.push_back("harmonics 2-5 reach " + percent(r.harmonicFraction) + " of the amplitude (limit " +
+                         percent(kHarmonicLimit) + ")");
+    if (std::abs(r.amplitudeChangeFraction) > kAmplitudeChangeLimit && std::abs(amplitudeZ) > 5.0)
+      problems.push_back("the amplitude " + std::string(r.amplitudeChangeFraction < 0 ? "decays" : "grows") + " by " +
+                         percent(std::abs(r.amplitudeChangeFraction)) + " over the record (limit " +
+                         percent(kAmplitudeChangeLimit) + ")");
+    if (gyroChecked && r.gyroMisfitFraction > kGyroMisfitLimit)
+      problems.push_back("the gyro angle's residual has a smooth part of " + percent(r.gyroMisfitFraction) +
+                         " of its amplitude (limit " + percent(kGyroMisfitLimit) + ")");
+    ValidityCheck c{"steady_sine", problems.empty(), ""};
+    if (c.passed) {
+      c.detail = "a steady sinusoid: smooth table residual " + percent(r.tableMisfitFraction) + ", harmonics " +
+                 percent(r.harmonicFraction) + ", amplitude change " + percent(r.amplitudeChangeFraction) +
+                 (gyroChecked ? ", smooth gyro residual " + percent(r.gyroMisfitFraction) : std::string()) +
+                 " of the amplitude";
+    } else {
+      std::string joined;
+      for (const auto& p : problems) joined += (joined.empty() ? "" : "; ") + p;
+      c.detail = "not a steady sinusoid: " + joined +
+                 ". The sine fits are biased by such a swing (the noise figures then describe the misfit, not "
+                 "noise); the delay is refused. Check the table's servo and amplitude, and record a steady swing";
+      // A smoothly decaying swing (free pendulum, table coasting down): the
+      // lag of a damped-sine fit is offered beside the refusal.
+      if (amplitudeLine && r.amplitudeChangeFraction < 0.0 && r.magnitudeRatio > 0.0) {
+        const double meanAmplitude = std::accumulate(amplitudes.begin(), amplitudes.end(), 0.0) /
+                                     static_cast<double>(amplitudes.size());
+        const double lambda = -amplitudeLine->slope / meanAmplitude;
+        auto damped = fitDampedSineLag(ch, w, lambda);
+        const double maxAmplitude = *std::max_element(amplitudes.begin(), amplitudes.end());
+        if (damped && damped->tableResidualRmsDeg < kTableMisfitLimit * maxAmplitude) {
+          r.damped = damped;
+          c.detail += ". A damped sinusoid fits the table (decay time " + fmt(damped->decayTimeS, 1) +
+                      " s, residual " + percent(damped->tableResidualRmsDeg / maxAmplitude) +
+                      " of the amplitude): its lag is " + fmt(damped->lagMs, 4) + " ± " + fmt(damped->lagStdMs, 4) +
+                      " ms, if the decay is the table's true motion";
+        }
+      }
+    }
+    r.checks.push_back(c);
+  }
+
+  // A causal delay: the gyro cannot report rotation before it happens.
+  {
+    const bool acausal = r.imuDelayMs + kCausalSignificance * r.imuDelayStdMs < 0.0;
+    ValidityCheck c{"causal", !acausal, ""};
+    c.detail = acausal ? "the IMU delay is negative (" + fmt(r.imuDelayMs, 4) + " ± " + fmt(r.imuDelayStdMs, 4) +
+                             " ms): the gyro would report rotation before it happened. A stamping, sign or clock "
+                             "problem: check the table read delay constant, that both streams share one clock, "
+                             "and the gyro axis' sign"
+                       : "the IMU delay is causal (" + fmt(r.imuDelayMs, 4) + " ms)";
+    r.checks.push_back(c);
+  }
 }
 
 }  // namespace
@@ -104,29 +266,6 @@ double lagFromPhasesMs(double tablePhaseMs, double gyroPhaseMs, double periodMs)
   return wrapToHalfPeriod(gyroPhaseMs - tablePhaseMs, periodMs);
 }
 
-Result<double> estimateSwingFrequencyHz(const TableChannel& table) {
-  const auto& y = table.angleDeg;
-  if (y.size() < 8) return insufficientData("too few table samples to find the swing frequency");
-  const auto [lo, hi] = std::minmax_element(y.begin(), y.end());
-  const double mid = 0.5 * (*lo + *hi), hysteresis = 0.25 * (*hi - *lo);
-  if (!(hysteresis > 0.0)) return insufficientData("the table did not move on the swing axis");
-  // Upward zero crossings of (y - mid), armed only after y went below -hysteresis.
-  std::vector<double> crossings;
-  bool armed = false;
-  for (std::size_t i = 1; i < y.size(); ++i) {
-    if (y[i] - mid < -hysteresis) armed = true;
-    if (armed && y[i - 1] - mid < 0.0 && y[i] - mid >= 0.0) {
-      const double f = (mid - y[i - 1]) / (y[i] - y[i - 1]);
-      crossings.push_back(table.timeS[i - 1] + f * (table.timeS[i] - table.timeS[i - 1]));
-      armed = false;
-    }
-  }
-  if (crossings.size() < 3)
-    return insufficientData("the table angle shows fewer than two whole swing periods");
-  const double period = (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1);
-  return 1.0 / period;
-}
-
 double lagCramerRaoBoundS(double w, double recordS, double tableAmplitudeDeg, double tableIntervalS,
                           double tableNoiseDeg, double gyroAmplitudeDeg, double gyroIntervalS,
                           double gyroQuantisationVarDeg2, double gyroArwVarDeg2PerS) {
@@ -143,19 +282,21 @@ double lagCramerRaoBoundS(double w, double recordS, double tableAmplitudeDeg, do
 
 Result<TestPointResult> analyzeTestPoint(const TestPointData& data, double incrementScale,
                                          const BenchConstants& constants) {
-  auto channels = makeChannels(data, incrementScale);
+  const int sign = constants.gyroSign[static_cast<std::size_t>(data.axis)] < 0 ? -1 : 1;
+  auto channels = makeChannels(data, incrementScale * sign);
   if (!channels) return channels.status();
   Channels& ch = *channels;
   TestPointResult r;
   r.index = data.index;
   r.axis = data.axis;
+  r.gyroSign = sign;
   r.durationS = ch.endS - ch.startS;
   r.tableSamples = ch.table.timeS.size();
   r.imuSamples = data.imu.size();
   r.lostImuFrames = ch.gyro.lostFrames;
 
   // What is missing, and whether the rest can still support a delay: checked
-  // before the frequency is estimated from zero crossings a gap would hide.
+  // before the frequency is estimated from data a gap would distort.
   const DataCoverage coverage = measureCoverage(data);
   r.lostTableFrames = coverage.lostTableFrames;
   r.coveredS = coverage.coveredS();
@@ -214,26 +355,37 @@ Result<TestPointResult> analyzeTestPoint(const TestPointData& data, double incre
   if (!gyro4) return gyro4.status();
   r.tableFit = *table4;
   r.gyroFit = *gyro4;
-  // The cumulative gyro angle's offset, for plots that overlay the fit.
+  // The cumulative gyro angle's offset (for plots that overlay the fit) and
+  // its residuals (for the adequacy checks).
+  std::vector<double> gyroAngleResidual;
   {
     const auto angle = cumulativeGyroAngle(ch.gyro);
     std::vector<double> sn(angle.size()), cs(angle.size());
     sinCosSeries(ch.gyro.endS.data(), angle.size(), r.gyroFit.omegaRadPerS, 0.0, sn.data(), cs.data());
+    gyroAngleResidual.resize(angle.size());
     double sum = 0.0;
-    for (std::size_t k = 0; k < angle.size(); ++k)
-      sum += angle[k] - (r.gyroFit.a * sn[k] + r.gyroFit.b * cs[k] + r.gyroFit.trendDegPerS * ch.gyro.endS[k]);
+    for (std::size_t k = 0; k < angle.size(); ++k) {
+      gyroAngleResidual[k] =
+          angle[k] - (r.gyroFit.a * sn[k] + r.gyroFit.b * cs[k] + r.gyroFit.trendDegPerS * ch.gyro.endS[k]);
+      sum += gyroAngleResidual[k];
+    }
     r.gyroFit.offsetDeg = sum / static_cast<double>(angle.size());
+    for (auto& v : gyroAngleResidual) v -= r.gyroFit.offsetDeg;
   }
+  // A gyro in antiphase with the table turns against it (a reversed axis).
+  const bool gyroTurnsAgainst =
+      std::cos(std::atan2(r.tableFit.b, r.tableFit.a) - std::atan2(r.gyroFit.b, r.gyroFit.a)) < 0.0;
 
   // 4. Joint fit: one frequency, the delay as a parameter. The per-period
   // track needs only a frequency close to the swing's; it runs beside.
-  auto track = std::async(std::launch::async, [&] { return periodTrack(ch, table4->omegaRadPerS, ch.referenceS); });
+  auto track = std::async(std::launch::async,
+                          [&] { return periodTrack(ch, table4->omegaRadPerS, ch.referenceS, gyroTurnsAgainst); });
   auto joint = fitJoint(ch, r.tableFit, r.gyroFit);
   r.periodTrack = track.get();
   if (!joint) return joint.status();
   r.joint = *joint;
   r.lagMs = joint->lagS * 1e3;
-  r.lagStdMs = joint->lagStdS * 1e3;
+  r.fitLagStdMs = joint->lagStdS * 1e3;
 
   // Noise and the bound.
   r.noise.tableNoiseDeg = ch.table.noiseDeg;
@@ -241,11 +393,61 @@ Result<TestPointResult> analyzeTestPoint(const TestPointData& data, double incre
   r.noise.gyroArwDegPerSqrtH = std::sqrt(ch.gyro.arwVarianceDeg2PerS) * 60.0;
   const double tableInterval = r.durationS / static_cast<double>(std::max<std::size_t>(r.tableSamples - 1, 1));
   const double amplitude = std::hypot(joint->a, joint->b);
-  r.crlbMs = 1e3 * lagCramerRaoBoundS(joint->omegaRadPerS, r.durationS, amplitude, tableInterval,
-                                      ch.table.noiseDeg, amplitude * std::abs(joint->gain),
-                                      ch.gyro.framePeriodS, ch.gyro.quantisationVarianceDeg2,
-                                      ch.gyro.arwVarianceDeg2PerS);
-  r.stdOverCrlb = r.crlbMs > 0.0 ? r.lagStdMs / r.crlbMs : 0.0;
+  const double w = joint->omegaRadPerS;
+  r.crlbMs = 1e3 * lagCramerRaoBoundS(w, r.durationS, amplitude, tableInterval, ch.table.noiseDeg,
+                                      amplitude * std::abs(joint->gain), ch.gyro.framePeriodS,
+                                      ch.gyro.quantisationVarianceDeg2, ch.gyro.arwVarianceDeg2PerS);
+  r.stdOverCrlb = r.crlbMs > 0.0 ? r.fitLagStdMs / r.crlbMs : 0.0;
+
+  // Per-period delays.
+  std::vector<double> lags, times, amplitudes;
+  for (const auto& p : r.periodTrack) {
+    lags.push_back(p.lagMs);
+    times.push_back(p.timeS);
+    amplitudes.push_back(p.tableAmplitudeDeg);
+  }
+  const auto spread = meanAndSpread(lags);
+  r.periodMeanLagMs = spread.mean;
+  r.periodScatterMs = spread.stdDev;
+
+  // 5. An honest uncertainty. (a) White-noise terms assume errors that
+  // average down sample by sample; with stamps commensurate with the swing,
+  // quantisation errors repeat every period and do not: the table and
+  // pulse-output parts of the variance grow by the residuals' correlation
+  // one, two, ... periods apart. (b) The per-period lags are independent
+  // estimates whose scatter does not rest on the noise model: when it is
+  // significantly larger than the fit's uncertainty implies, it is taken.
+  {
+    const double periodS = kTwoPi / w;
+    const double tableTerm =
+        2.0 * ch.table.noiseDeg * ch.table.noiseDeg * tableInterval / (amplitude * amplitude * r.durationS * w * w);
+    const double gyroAmp = amplitude * std::abs(joint->gain);
+    const double quantTerm = 2.0 * ch.gyro.quantisationVarianceDeg2 * ch.gyro.framePeriodS /
+                             (gyroAmp * gyroAmp * r.durationS * w * w);
+    const double inflT = periodicResidualInflation(tableResiduals(ch.table, r.tableFit), periodS / tableInterval,
+                                                   r.periods);
+    const double inflG =
+        periodicResidualInflation(gyroAngleResidual, periodS / ch.gyro.framePeriodS, r.periods);
+    const double addedMs2 = 1e6 * (tableTerm * inflT + quantTerm * inflG);
+    r.periodicInflation = addedMs2 / (r.fitLagStdMs * r.fitLagStdMs);
+    double stdMs = std::sqrt(r.fitLagStdMs * r.fitLagStdMs + addedMs2);
+    if (r.periodicInflation > 0.1) r.lagStdSource = "fit, with errors that repeat every period";
+    if (lags.size() >= 5) {
+      const auto n = static_cast<double>(lags.size());
+      r.trackLagStdMs = spread.stdDev / std::sqrt(n);
+      // (n - 1) s^2 / (n sigma^2) is chi^2 with n - 1 dof when sigma is right.
+      const double x = (n - 1.0) * r.trackLagStdMs * r.trackLagStdMs / (stdMs * stdMs);
+      if (chiSquareSurvival(x, static_cast<int>(lags.size()) - 1) < 1e-3 && r.trackLagStdMs > stdMs) {
+        stdMs = r.trackLagStdMs;
+        r.lagStdSource = "per-period scatter";
+        r.warnings.push_back("the per-period lags scatter " + fmt(spread.stdDev, 4) +
+                             " ms, more than the fit's noise model implies; the uncertainty is taken from their "
+                             "scatter (" + fmt(r.trackLagStdMs, 4) + " ms instead of " + fmt(r.fitLagStdMs, 4) +
+                             " ms)");
+      }
+    }
+    r.lagStdMs = stdMs;
+  }
 
   const DelayBreakdown breakdown = delayBreakdown(r.lagMs, r.lagStdMs, constants);
   r.imuDelayMs = breakdown.imuDelayMs;
@@ -253,14 +455,9 @@ Result<TestPointResult> analyzeTestPoint(const TestPointData& data, double incre
   r.gyroDelayMs = breakdown.gyroDelayMs;
   r.gyroDelayStdMs = breakdown.gyroDelayStdMs;
   r.magnitudeRatio = joint->gain;
-  r.phaseDeg = -joint->omegaRadPerS * joint->lagS * kDegPerRad;
+  r.phaseDeg = -w * joint->lagS * kDegPerRad;
 
-  // Per-period delays.
-  std::vector<double> lags;
-  for (const auto& p : r.periodTrack) lags.push_back(p.lagMs);
-  const auto spread = meanAndSpread(lags);
-  r.periodMeanLagMs = spread.mean;
-  r.periodScatterMs = spread.stdDev;
+  addValidityChecks(r, ch, gyroAngleResidual, times, amplitudes, lags, amplitude);
 
   // What the user should know about this result.
   if (r.lostImuFrames > 0)
@@ -275,6 +472,9 @@ Result<TestPointResult> analyzeTestPoint(const TestPointData& data, double incre
   if (data.nominalAmplitudeDeg > 0.0 && std::abs(amplitude / data.nominalAmplitudeDeg - 1.0) > 0.05)
     r.warnings.push_back("the table swung " + fmt(amplitude, 3) + " deg, not the planned " +
                          fmt(data.nominalAmplitudeDeg, 3) + " deg");
+  if (r.gyroDelayMs < 0.0 && r.imuDelayMs >= 0.0 && r.gyroDelayMs + 3.0 * r.gyroDelayStdMs < 0.0)
+    r.warnings.push_back("the gyro's own delay is negative: the processing board delay (" +
+                         fmt(constants.boardDelayMs, 4) + " ms) is larger than the IMU delay; check that constant");
   return r;
 }
 

@@ -1,19 +1,24 @@
 #pragma once
-// Delay analysis of a recording (DESIGN section 2): per test point, the
+// Delay analysis of a recording (docs/method.md): per test point, the
 // 3-parameter fits at the nominal frequency, the 4-parameter fits with the
 // frequency free, the joint fit whose delay is a parameter, the Cramer-Rao
 // bound for the measured noise, the per-period delay track and the delay
-// breakdown; across test points, delay against frequency and whether it is
-// consistent with a pure delay.
+// breakdown, and the validity checks that decide whether the delay can be
+// vouched for (validity.h, verdict.h); across test points, delay against
+// frequency and whether it is consistent with a pure delay.
 //
 // Breakdown (the paper's): IMU delay = lag + table read delay;
 // gyro's own delay = IMU delay - board delay.
 
+#include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "analysis/damped_sine.h"
 #include "analysis/joint_fit.h"
 #include "analysis/sine_fit.h"
+#include "analysis/validity.h"
 #include "common/recording.h"
 #include "common/session_info.h"
 #include "common/status.h"
@@ -28,6 +33,11 @@ struct BenchConstants {
   double boardDelayStdMs = 0.0;
   // Degrees per gyro pulse; used only when the stream does not state it.
   double pulseEquivalentDeg = 0.0;
+  // Sense of each gyro axis against the table's, as the user states it: -1
+  // for a gyro axis mounted the other way round (its increments are negated
+  // before the fits). A gyro that turns against the table while its stated
+  // sign is +1 makes the test point invalid, never a half-period lag.
+  std::array<int, kAxisCount> gyroSign{1, 1, 1};
 };
 
 // The constants a session's bench settings give the analysis.
@@ -43,6 +53,7 @@ struct NoiseEstimate {
 struct PeriodDelay {
   double timeS = 0.0;  // middle of the period, session time
   double lagMs = 0.0;
+  double tableAmplitudeDeg = 0.0;  // the table's amplitude over this period
 };
 
 struct TestPointResult {
@@ -65,7 +76,14 @@ struct TestPointResult {
   JointFit joint;                     // shared frequency, delay as a parameter
   NoiseEstimate noise;
 
-  double lagMs = 0.0, lagStdMs = 0.0;  // positive: gyro output lags the table
+  // positive: gyro output lags the table. lagStdMs is the reported
+  // uncertainty: the joint fit's, raised where the independent measures below
+  // show it is too small (lagStdSource says which).
+  double lagMs = 0.0, lagStdMs = 0.0;
+  double fitLagStdMs = 0.0;        // the joint fit's standard error
+  double periodicInflation = 0.0;  // variance added by errors that repeat every period (validity.h)
+  double trackLagStdMs = 0.0;      // per-period scatter / sqrt(periods)
+  std::string lagStdSource = "fit";  // "fit", "fit, commensurate sampling", "per-period scatter"
   double crlbMs = 0.0;                 // Cramer-Rao bound on the lag for the measured noise
   double stdOverCrlb = 0.0;
   double imuDelayMs = 0.0, imuDelayStdMs = 0.0;
@@ -76,6 +94,17 @@ struct TestPointResult {
 
   std::vector<PeriodDelay> periodTrack;
   double periodMeanLagMs = 0.0, periodScatterMs = 0.0;
+
+  // Model adequacy and timing, measured without the fitted noise level.
+  int gyroSign = 1;                     // the sign applied to the increments (stated by the user)
+  double rateErrorPpm = 0.0, rateErrorStdPpm = 0.0;  // gyro period / table period - 1
+  double lagDriftPpm = 0.0, lagDriftStdPpm = 0.0;    // trend of the per-period lag (s/s)
+  double tableMisfitFraction = 0.0;     // smooth table residual / amplitude
+  double gyroMisfitFraction = 0.0;      // smooth cumulative gyro residual / amplitude
+  double harmonicFraction = 0.0;        // harmonics 2..5 of the table / amplitude
+  double amplitudeChangeFraction = 0.0; // change of the table amplitude over the record / amplitude
+  std::optional<DampedSineLag> damped;  // offered when the amplitude decays smoothly
+  std::vector<ValidityCheck> checks;    // any failed: the verdict is "invalid"
 
   std::vector<std::string> warnings;
 };
@@ -131,10 +160,6 @@ Result<TestPointResult> analyzeTestPoint(const TestPointData& data, double incre
 Result<DelayReport> analyzeRecording(const Recording& recording, const BenchConstants& constants);
 
 std::vector<FrequencyConsistency> frequencyConsistency(const std::vector<TestPointResult>& points);
-
-// Swing frequency from the table's zero crossings (for streams that do not
-// state the nominal one). Fails when fewer than two periods are seen.
-Result<double> estimateSwingFrequencyHz(const TableChannel& table);
 
 // Asymptotic Cramer-Rao bound on the lag (s) for sinusoids of the given
 // amplitudes over recordS seconds in the measured noise.

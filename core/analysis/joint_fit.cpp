@@ -110,8 +110,16 @@ Result<JointFit> fitJoint(const Channels& ch, const SineFit& tableFit, const Sin
   x0[kA] = tableFit.a;
   x0[kB] = tableFit.b;
   x0[kC] = tableFit.offsetDeg;
-  x0[kG] = gyroFit.amplitudeDeg / tableFit.amplitudeDeg;
-  x0[kLag] = wrapToHalfPeriod((psiT - psiG) / w, period);
+  // A gyro that turns against the table (reversed axis) is in antiphase: its
+  // gain starts negative, so the lag stays the small delay, never a half period.
+  double dpsi = std::remainder(psiT - psiG, kTwoPi);
+  double gain = gyroFit.amplitudeDeg / tableFit.amplitudeDeg;
+  if (std::abs(dpsi) > 0.5 * kPi) {
+    gain = -gain;
+    dpsi = std::remainder(dpsi + kPi, kTwoPi);
+  }
+  x0[kG] = gain;
+  x0[kLag] = wrapToHalfPeriod(dpsi / w, period);
   x0[kD] = gyroFit.trendDegPerS;
 
   auto sol = solveLeastSquares(JointProblem(ch.table, ch.gyro), x0);

@@ -22,6 +22,11 @@ std::string axisUpper(Axis a) {
   return s;
 }
 
+std::string upper(std::string s) {
+  for (auto& ch : s) ch = static_cast<char>(ch >= 'a' && ch <= 'z' ? ch - 'a' + 'A' : ch);
+  return s;
+}
+
 // An uncertainty with two significant digits, however small.
 std::string sd(double v) { return f("%.2g", v); }
 
@@ -60,8 +65,11 @@ std::string formatReportText(const DelayReport& report, const ReportContext& con
   std::ostringstream o;
   const auto& c = report.constants;
   const auto& h = report.health;
+  const ReportVerdict verdict = judgeReport(report, context.imuDelayLimitMs);
   o << "fogbench delay report\n";
   if (!context.source.empty()) o << "source: " << context.source << "\n";
+  o << "verdict: " << upper(verdictName(verdict.verdict)) << "\n";
+  for (const auto& why : verdict.reasons) o << "  " << why << "\n";
   o << "stream: " << h.tableFrames << " table, " << h.imuFrames << " IMU, " << h.statusFrames
     << " status frames; " << h.checksumFailures << " checksum failures, " << h.lostFrames << " lost, "
     << h.duplicateFrames << " duplicated, " << h.bytesSkipped << " bytes skipped\n";
@@ -69,7 +77,9 @@ std::string formatReportText(const DelayReport& report, const ReportContext& con
     << f("%.4f", c.tableReadDelayStdMs) << " ms, board delay " << f("%.4f", c.boardDelayMs) << " ± "
     << f("%.4f", c.boardDelayStdMs) << " ms\n";
 
-  for (const auto& p : report.points) {
+  for (std::size_t pi = 0; pi < report.points.size(); ++pi) {
+    const auto& p = report.points[pi];
+    const PointVerdict& pv = verdict.points[pi];
     o << "\nTest point " << p.index + 1 << ": " << axisUpper(p.axis) << " axis, " << f("%g", p.nominalFrequencyHz)
       << " Hz / " << f("%.3f", p.tableFit.amplitudeDeg) << " deg, " << f("%.1f", p.durationS) << " s ("
       << f("%.1f", p.periods) << " periods)\n";
@@ -86,6 +96,9 @@ std::string formatReportText(const DelayReport& report, const ReportContext& con
     const int d = decimalsFor(p.lagStdMs);
     o << "    measured lag (gyro behind table) " << fixed(p.lagMs, d, 9) << " ± " << fixed(p.lagStdMs, d)
       << " ms   (CRLB " << sd(p.crlbMs) << " ms, std/CRLB " << f("%.2f", p.stdOverCrlb) << ")\n";
+    if (p.lagStdSource != "fit")
+      o << "    uncertainty from " << p.lagStdSource << " (fit alone " << fixed(p.fitLagStdMs, d)
+        << " ms, per-period scatter " << fixed(p.trackLagStdMs, d) << " ms)\n";
     o << "  + table read delay                 " << fixed(c.tableReadDelayMs, d, 9) << " ms\n";
     o << "  = IMU delay                        " << fixed(p.imuDelayMs, d, 9) << " ± " << fixed(p.imuDelayStdMs, d)
       << " ms\n";
@@ -111,6 +124,12 @@ std::string formatReportText(const DelayReport& report, const ReportContext& con
         << f("%.2f", p.durationS) << " s (" << f("%.2f", p.durationS > 0 ? 100.0 * p.coveredS / p.durationS : 0.0)
         << " %), longest gap " << f("%.1f", p.largestGapS * 1e3) << " ms\n";
     for (const auto& w : p.warnings) o << "  warning: " << w << "\n";
+    o << "  checks:\n";
+    for (const auto& check : p.checks)
+      o << "    " << (check.passed ? "ok      " : "FAILED  ") << check.id << ": " << check.detail << "\n";
+    o << "  verdict: " << upper(verdictName(pv.verdict)) << (pv.verdict == Verdict::kInvalid ? " (delay refused)" : "")
+      << "\n";
+    for (const auto& why : pv.reasons) o << "    " << why << "\n";
   }
   for (const auto& s : report.staticSegments)
     o << "\nTest point " << s.index + 1 << ": static segment, " << axisUpper(s.axis) << " axis, "
@@ -131,8 +150,12 @@ std::string formatReportText(const DelayReport& report, const ReportContext& con
 
 std::string formatReportJson(const DelayReport& report, const ReportContext& context) {
   using nlohmann::json;
+  const ReportVerdict verdict = judgeReport(report, context.imuDelayLimitMs);
   json doc;
   doc["report_format"] = 1;  // bump on any incompatible change (docs/report.md)
+  doc["verdict"] = verdictName(verdict.verdict);
+  doc["verdict_reasons"] = verdict.reasons;
+  doc["imu_delay_limit_ms"] = verdict.limitMs;
   doc["software"] = "fogbench";
   doc["source"] = context.source;
   const auto& c = report.constants;
@@ -147,8 +170,11 @@ std::string formatReportJson(const DelayReport& report, const ReportContext& con
                    {"duplicate_frames", h.duplicateFrames}, {"out_of_order_frames", h.outOfOrderFrames},
                    {"counter_wraps", h.counterWraps}};
   doc["test_points"] = json::array();
-  for (const auto& p : report.points) {
+  for (std::size_t pi = 0; pi < report.points.size(); ++pi) {
+    const auto& p = report.points[pi];
     json tp = {{"index", p.index},
+               {"verdict", verdictName(verdict.points[pi].verdict)},
+               {"verdict_reasons", verdict.points[pi].reasons},
                {"axis", axisName(p.axis)},
                {"frequency_hz", p.nominalFrequencyHz},
                {"amplitude_deg", p.tableFit.amplitudeDeg},
@@ -168,6 +194,21 @@ std::string formatReportJson(const DelayReport& report, const ReportContext& con
                  {"chi2_per_dof", p.joint.chiSquarePerDof}}},
                {"lag_ms", p.lagMs},
                {"lag_std_ms", p.lagStdMs},
+               {"lag_std_source", p.lagStdSource},
+               {"fit_lag_std_ms", p.fitLagStdMs},
+               {"track_lag_std_ms", p.trackLagStdMs},
+               {"periodic_inflation", p.periodicInflation},
+               {"gyro_sign", p.gyroSign},
+               {"timing",
+                {{"rate_error_ppm", p.rateErrorPpm},
+                 {"rate_error_std_ppm", p.rateErrorStdPpm},
+                 {"lag_drift_ppm", p.lagDriftPpm},
+                 {"lag_drift_std_ppm", p.lagDriftStdPpm}}},
+               {"adequacy",
+                {{"table_misfit_fraction", p.tableMisfitFraction},
+                 {"gyro_misfit_fraction", p.gyroMisfitFraction},
+                 {"harmonic_fraction", p.harmonicFraction},
+                 {"amplitude_change_fraction", p.amplitudeChangeFraction}}},
                {"crlb_ms", p.crlbMs},
                {"lag_std_over_crlb", p.stdOverCrlb},
                {"imu_delay_ms", p.imuDelayMs},
@@ -195,6 +236,17 @@ std::string formatReportJson(const DelayReport& report, const ReportContext& con
     tp["period_track"] = track;
     tp["period_mean_lag_ms"] = p.periodMeanLagMs;
     tp["period_scatter_ms"] = p.periodScatterMs;
+    json checks = json::array();
+    for (const auto& check : p.checks)
+      checks.push_back({{"id", check.id}, {"passed", check.passed}, {"detail", check.detail}});
+    tp["checks"] = checks;
+    if (p.damped)
+      tp["damped_fit"] = {{"lag_ms", p.damped->lagMs},
+                          {"lag_std_ms", p.damped->lagStdMs},
+                          {"frequency_hz", p.damped->frequencyHz},
+                          {"decay_time_s", p.damped->decayTimeS},
+                          {"table_residual_rms_deg", p.damped->tableResidualRmsDeg},
+                          {"magnitude_ratio", p.damped->gain}};
     if (static_cast<std::size_t>(p.index) < context.trueLagMs.size())
       tp["true_lag_ms"] = context.trueLagMs[static_cast<std::size_t>(p.index)];
     doc["test_points"].push_back(tp);

@@ -1136,13 +1136,13 @@
         <translation>PNG 图像 (*.png);;SVG 矢量图 (*.svg);;PDF 文档 (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../../ui/report/calibration_report.cpp" line="+64"/>
-        <location line="+231"/>
+        <location filename="../../ui/report/calibration_report.cpp" line="+65"/>
+        <location line="+233"/>
         <source>not recorded</source>
         <translation>未记录</translation>
     </message>
     <message>
-        <location line="-224"/>
+        <location line="-226"/>
         <source>%1 axis
 %2 Hz / %3°, %4 s</source>
         <translation>%1 轴
@@ -1199,17 +1199,17 @@
         <translation>测试点 %1（%2）：%3</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>FAIL: no delay from %1</source>
-        <translation>不合格：%1 未得到延迟</translation>
+        <location line="+3"/>
+        <source>INVALID: no delay from %1</source>
+        <translation>无效：%1 未给出延迟</translation>
     </message>
     <message>
         <location line="+2"/>
-        <source>Rule: a test point passes when its IMU delay plus %1 standard uncertainties (1σ, including the bench constants) is below the limit of %2 ms; the session passes when every test point of the plan gave a delay and passes.</source>
-        <translation>判定规则：测试点的 IMU 延迟加 %1 倍标准不确定度（1σ，含测试台常数）低于 %2 ms 限值时合格；计划中每个测试点都得到延迟且合格时，本次会话合格。</translation>
+        <source>Rule: a test point is invalid when a validity check fails (reversed gyro axis, clock-rate mismatch, a swing that is not a steady sinusoid, a negative IMU delay); otherwise it passes when its IMU delay plus %1 standard uncertainties (1σ, including the bench constants) is below the limit of %2 ms; the session passes when every test point of the plan gave a delay and passes.</source>
+        <translation>规则：有效性检查未通过（陀螺轴反向、时钟速率不一致、摆动不是稳定正弦、IMU 延迟为负）的测试点判为无效；否则，当其 IMU 延迟加 %1 倍标准不确定度（1σ，含台架常数）低于 %2 ms 限值时判为合格；计划中每个测试点都给出延迟且都合格时，本次测试合格。</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+37"/>
         <source>Tested by</source>
         <translation>测试人</translation>
     </message>
@@ -2119,47 +2119,37 @@
         <translation>χ²/dof %1</translation>
     </message>
     <message>
-        <location line="+86"/>
-        <source>%1: IMU delay %2 ms, + 2σ = %3 ms %4 %5 ms limit (%6 %7 ms)</source>
-        <translation>%1：IMU 延迟 %2 ms，+ 2σ = %3 ms %4 %5 ms 限值（%6 %7 ms）</translation>
+        <location line="+102"/>
+        <source>PASS: every test point passed its validity checks and its IMU delay + 2σ is below the %1 ms limit.</source>
+        <translation>合格：每个测试点都通过有效性检查，且其 IMU 延迟 + 2σ 低于 %1 ms 限值。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 of %2 test points failed a validity check</source>
+        <translation>%2 个测试点中有 %1 个未通过有效性检查</translation>
     </message>
     <message>
         <location line="+2"/>
-        <source>margin</source>
-        <translation>余量</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>over by</source>
-        <translation>超出</translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <source>PASS: every test point&apos;s IMU delay + 2σ is below the %1 ms limit.</source>
-        <translation>合格：每个测试点的 IMU 延迟 + 2σ 均低于 %1 ms 限值。</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>FAIL: no test point gave a delay.</source>
-        <translation>不合格：没有测试点得到延迟。</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>%1 of %2 test points exceed the limit</source>
-        <translation>%2 个测试点中有 %1 个超出限值</translation>
+        <source>no test point gave a delay</source>
+        <translation>没有测试点给出延迟</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>INVALID: the result cannot be vouched for: %1.</source>
+        <translation>无效：结果无法保证：%1。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>FAIL against the %1 ms limit: %2 of %3 test points exceed the limit.</source>
+        <translation>对 %1 ms 限值不合格：%3 个测试点中有 %2 个超限。</translation>
+    </message>
+    <message>
+        <location line="-4"/>
         <source>%1 test point(s) gave no delay</source>
         <translation>%1 个测试点未得到延迟</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>FAIL against the %1 ms limit: %2.</source>
-        <translation>未通过 %1 ms 限值：%2。</translation>
-    </message>
-    <message>
-        <location line="+20"/>
+        <location line="+27"/>
         <source>IMU delay calibration report: %1 %2</source>
         <translation>IMU 延迟标定报告：%1 %2</translation>
     </message>

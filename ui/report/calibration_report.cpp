@@ -12,6 +12,7 @@
 #include <qwt_plot.h>
 
 #include "analysis/theory.h"
+#include "analysis/verdict.h"
 #include "common/version.h"
 #include "noise/gyro_noise.h"
 #include "ui/allan_curves.h"
@@ -37,7 +38,7 @@ const QColor kPassColour(20, 110, 40);
 const QColor kFailColour(180, 20, 20);
 const QColor kMuted(90, 90, 90);
 
-constexpr double kCoverage = 2.0;  // the acceptance rule's k
+constexpr double kCoverage = analysis::kVerdictCoverageFactor;  // the acceptance rule's k
 
 // ---- numbers -------------------------------------------------------------
 
@@ -219,11 +220,13 @@ void verdictBox(PageFlow& flow, const Content& c) {
                                   [&](const TestPointResult& t) { return t.index == p.index; });
     lines << QObject::tr("Test point %1 (%2): %3").arg(p.index + 1).arg(condition(r), p.line);
   }
-  for (const auto& f : c.in.delays.failedPoints) lines << QObject::tr("FAIL: no delay from %1").arg(QString::fromStdString(f));
+  for (const auto& f : c.in.delays.failedPoints)
+    lines << QObject::tr("INVALID: no delay from %1").arg(QString::fromStdString(f));
   const QString rule =
-      QObject::tr("Rule: a test point passes when its IMU delay plus %1 standard uncertainties (1σ, including the "
-                  "bench constants) is below the limit of %2 ms; the session passes when every test point of the "
-                  "plan gave a delay and passes.")
+      QObject::tr("Rule: a test point is invalid when a validity check fails (reversed gyro axis, clock-rate "
+                  "mismatch, a swing that is not a steady sinusoid, a negative IMU delay); otherwise it passes when "
+                  "its IMU delay plus %1 standard uncertainties (1σ, including the bench constants) is below the "
+                  "limit of %2 ms; the session passes when every test point of the plan gave a delay and passes.")
           .arg(kCoverage)
           .arg(limitText(c.in.imuDelayLimitMs));
 
@@ -236,7 +239,7 @@ void verdictBox(PageFlow& flow, const Content& c) {
   flow.ensureSpace(h);
   const double top = flow.y();
   flow.rect(QRectF(left, top, width, h), colour, c.verdict.pass ? QColor(235, 246, 236) : QColor(252, 235, 235), 0.6);
-  flow.text(QRectF(left, top, wordWidth, h), Qt::AlignCenter, c.verdict.pass ? "PASS" : "FAIL", word, colour);
+  flow.text(QRectF(left, top, wordWidth, h), Qt::AlignCenter, c.verdict.word, word, colour);
   double y = top + pad;
   const double x = left + wordWidth + pad;
   auto put = [&](const QString& s, const QFont& f, const QColor& col, double after) {
@@ -317,7 +320,7 @@ void firstPage(PageFlow& flow, const Content& c) {
                       fixed(p.crlbMs, dec),
                       valueWithStd(p.imuDelayMs, p.imuDelayStdMs, dec),
                       valueWithStd(p.gyroDelayMs, p.gyroDelayStdMs, dec),
-                      c.verdict.points[i].pass ? "PASS" : "FAIL"});
+                      c.verdict.points[i].word});
   }
   flow.table(t);
   for (const auto& f : d.failedPoints)
@@ -628,7 +631,7 @@ void resultsPage(PageFlow& flow, const Content& c, const TestPointResult& p, con
       {QObject::tr("+ table read delay"), fixed(k.tableReadDelayMs, dec), fixed(k.tableReadDelayStdMs, dec),
        QObject::tr("bench constant")},
       {QObject::tr("= IMU delay"), fixed(p.imuDelayMs, dec), fixed(p.imuDelayStdMs, dec),
-       QObject::tr("limit %1 ms: %2").arg(limitText(c.in.imuDelayLimitMs), v.pass ? "PASS" : "FAIL")},
+       QObject::tr("limit %1 ms: %2").arg(limitText(c.in.imuDelayLimitMs), v.word)},
       {QObject::tr("− processing-board delay"), fixed(k.boardDelayMs, dec), fixed(k.boardDelayStdMs, dec),
        QObject::tr("bench constant")},
       {QObject::tr("= gyro's own delay"), fixed(p.gyroDelayMs, dec), fixed(p.gyroDelayStdMs, dec), ""},
@@ -797,34 +800,45 @@ QString rawDataSha256(const std::vector<std::uint8_t>& bytes) {
   return QString::fromLatin1(hash.result().toHex());
 }
 
+namespace {
+QString verdictWord(analysis::Verdict v) { return QString::fromLatin1(analysis::verdictName(v)).toUpper(); }
+}  // namespace
+
 Verdict calibrationVerdict(const DelayReport& delays, double limitMs) {
+  const analysis::ReportVerdict judged = analysis::judgeReport(delays, limitMs);
   Verdict v;
-  int failed = 0;
-  for (const auto& p : delays.points) {
-    const int dec = decimalsFor(p.imuDelayStdMs);
-    const double upper = p.imuDelayMs + kCoverage * p.imuDelayStdMs;
+  v.pass = judged.verdict == analysis::Verdict::kPass;
+  v.word = verdictWord(judged.verdict);
+  int failed = 0, invalid = 0;
+  for (const auto& p : judged.points) {
     PointVerdict pv;
     pv.index = p.index;
-    pv.pass = upper < limitMs;
-    pv.line = QObject::tr("%1: IMU delay %2 ms, + 2σ = %3 ms %4 %5 ms limit (%6 %7 ms)")
-                  .arg(pv.pass ? "PASS" : "FAIL", valueWithStd(p.imuDelayMs, p.imuDelayStdMs, dec), fixed(upper, dec),
-                       pv.pass ? "<" : "≥", limitText(limitMs), pv.pass ? QObject::tr("margin") : QObject::tr("over by"),
-                       fixed(std::abs(limitMs - upper), dec));
-    failed += pv.pass ? 0 : 1;
+    pv.pass = p.verdict == analysis::Verdict::kPass;
+    pv.word = verdictWord(p.verdict);
+    QStringList why;
+    for (const auto& r : p.reasons) why << QString::fromStdString(r);
+    pv.line = pv.word + ": " + why.join("; ");
+    failed += p.verdict == analysis::Verdict::kFail;
+    invalid += p.verdict == analysis::Verdict::kInvalid;
     v.points.push_back(pv);
   }
   const auto missing = static_cast<int>(delays.failedPoints.size());
-  v.pass = !delays.points.empty() && failed == 0 && missing == 0;
+  const auto total = static_cast<int>(delays.points.size());
   if (v.pass) {
-    v.headline = QObject::tr("PASS: every test point's IMU delay + 2σ is below the %1 ms limit.").arg(limitText(limitMs));
-  } else if (delays.points.empty()) {
-    v.headline = QObject::tr("FAIL: no test point gave a delay.");  // cannot happen after analyzeRecording()
-  } else {
+    v.headline = QObject::tr("PASS: every test point passed its validity checks and its IMU delay + 2σ is below the "
+                             "%1 ms limit.")
+                     .arg(limitText(limitMs));
+  } else if (judged.verdict == analysis::Verdict::kInvalid) {
     QStringList why;
-    if (failed > 0)
-      why << QObject::tr("%1 of %2 test points exceed the limit").arg(failed).arg(delays.points.size());
+    if (invalid > 0) why << QObject::tr("%1 of %2 test points failed a validity check").arg(invalid).arg(total);
     if (missing > 0) why << QObject::tr("%1 test point(s) gave no delay").arg(missing);
-    v.headline = QObject::tr("FAIL against the %1 ms limit: %2.").arg(limitText(limitMs), why.join("; "));
+    if (total == 0) why << QObject::tr("no test point gave a delay");
+    v.headline = QObject::tr("INVALID: the result cannot be vouched for: %1.").arg(why.join("; "));
+  } else {
+    v.headline = QObject::tr("FAIL against the %1 ms limit: %2 of %3 test points exceed the limit.")
+                     .arg(limitText(limitMs))
+                     .arg(failed)
+                     .arg(total);
   }
   return v;
 }

@@ -12,10 +12,10 @@
 // the IMU's identity and a footer with the session, the raw data hash and
 // "page n of N".
 //
-// Acceptance rule (one-sided, coverage factor k = 2): a test point PASSES
-// when IMU delay + 2 sigma < limit, so a delay that is only probably below the
-// limit fails. The session passes when every test point of the plan gave a
-// delay and every one passes.
+// Acceptance rule (analysis/verdict.h): a test point is INVALID when a
+// validity check failed; otherwise it PASSES when IMU delay + 2 sigma < limit
+// (one-sided, k = 2) and FAILS if not. The session passes when every test
+// point of the plan gave a delay and every one passes.
 //
 // Needs a QApplication (the plots are Qwt widgets); any platform works,
 // including offscreen. Not thread-safe: call from the GUI thread.
@@ -46,16 +46,20 @@ struct ReportInput {
 // SHA-256 of the bytes, 64 lower-case hex digits; empty for no bytes.
 QString rawDataSha256(const std::vector<std::uint8_t>& bytes);
 
-// The verdict of one test point against the limit, e.g.
-// "PASS: IMU delay 0.5158 ± 0.0015 ms; + 2σ = 0.5188 ms < 0.8 ms limit (margin 0.2812 ms)".
+// The verdict of the report (the core's rule, analysis/verdict.h) in the
+// report's words. A point's line, e.g.
+// "PASS: IMU delay 0.5158 ± 0.0015 ms; + 2σ = 0.5188 ms < 0.8 ms limit (margin 0.2812 ms)",
+// or "INVALID: " with the failed validity checks.
 struct PointVerdict {
   int index = 0;  // test point index (0-based)
   bool pass = false;
+  QString word;  // "PASS", "FAIL" or "INVALID"
   QString line;
 };
 struct Verdict {
   bool pass = false;
-  QString headline;  // "PASS" or "FAIL: ..." with the reason in a few words
+  QString word;      // "PASS", "FAIL" or "INVALID"
+  QString headline;  // the word and the reason in a few words
   std::vector<PointVerdict> points;  // one per analysed test point, report order
 };
 Verdict calibrationVerdict(const analysis::DelayReport& delays, double imuDelayLimitMs);

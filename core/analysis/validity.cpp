@@ -1,0 +1,214 @@
+#include "analysis/validity.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <unsupported/Eigen/FFT>
+
+#include "common/units.h"
+
+namespace fog::analysis {
+
+namespace {
+
+// Variance a least-squares fit of a*sin(w*t) + b*cos(w*t) + c explains in a
+// uniformly binned series (the least-squares periodogram: unlike |DFT|^2 it
+// has no bias from the negative-frequency image on short records).
+double power(const std::vector<double>& y, double binS, double w) {
+  Eigen::Matrix3d ata = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d aty = Eigen::Vector3d::Zero();
+  const std::complex<double> step = std::polar(1.0, w * binS);
+  std::complex<double> rot = 1.0;
+  for (std::size_t i = 0; i < y.size(); ++i) {
+    const Eigen::Vector3d row(rot.imag(), rot.real(), 1.0);
+    ata.noalias() += row * row.transpose();
+    aty.noalias() += row * y[i];
+    rot *= step;
+    if ((i & 1023) == 1023) rot = std::polar(1.0, w * binS * static_cast<double>(i + 1));  // no drift
+  }
+  const Eigen::Vector3d p = ata.ldlt().solve(aty);
+  return p.dot(aty);
+}
+
+}  // namespace
+
+Result<double> estimateSwingFrequencyHz(const TableChannel& table) {
+  const auto& t = table.timeS;
+  const auto& y = table.angleDeg;
+  if (y.size() < 16) return insufficientData("too few table samples to find the swing frequency");
+  const double spanS = t.back() - t.front();
+  if (!(spanS > 0.0)) return insufficientData("the table samples do not span any time");
+  // Box averages over equal bins: a uniform series (stamps may jitter or
+  // have gaps) and an anti-alias filter in one step.
+  const std::size_t bins = std::min<std::size_t>(y.size(), 1u << 16);
+  const double binS = spanS / static_cast<double>(bins);
+  std::vector<double> sum(bins, 0.0);
+  std::vector<std::size_t> count(bins, 0);
+  for (std::size_t i = 0; i < y.size(); ++i) {
+    const auto b = std::min(bins - 1, static_cast<std::size_t>((t[i] - t.front()) / binS));
+    sum[b] += y[i];
+    ++count[b];
+  }
+  std::vector<double> series(bins);
+  double last = y.front();
+  for (std::size_t b = 0; b < bins; ++b) {
+    if (count[b]) last = sum[b] / static_cast<double>(count[b]);
+    series[b] = last;  // an empty bin (a gap) holds the previous value
+  }
+  // Remove a straight line (offset and drift would dominate the low bins).
+  {
+    Eigen::Matrix2d ata = Eigen::Matrix2d::Zero();
+    Eigen::Vector2d aty = Eigen::Vector2d::Zero();
+    for (std::size_t b = 0; b < bins; ++b) {
+      const double x = static_cast<double>(b) / static_cast<double>(bins) - 0.5;
+      ata(0, 0) += 1.0;
+      ata(0, 1) += x;
+      ata(1, 1) += x * x;
+      aty[0] += series[b];
+      aty[1] += x * series[b];
+    }
+    ata(1, 0) = ata(0, 1);
+    const Eigen::Vector2d p = ata.ldlt().solve(aty);
+    for (std::size_t b = 0; b < bins; ++b)
+      series[b] -= p[0] + p[1] * (static_cast<double>(b) / static_cast<double>(bins) - 0.5);
+  }
+  const auto [lo, hi] = std::minmax_element(series.begin(), series.end());
+  if (!(*hi - *lo > 0.0)) return insufficientData("the table did not move on the swing axis");
+
+  // Periodogram, zero-padded four times; the peak above 1.5 cycles per record.
+  std::size_t n = 1;
+  while (n < 4 * bins) n <<= 1;
+  std::vector<double> padded(n, 0.0);
+  std::copy(series.begin(), series.end(), padded.begin());
+  Eigen::FFT<double> fft;
+  std::vector<std::complex<double>> spectrum;
+  fft.fwd(spectrum, padded);
+  const double df = 1.0 / (static_cast<double>(n) * binS);
+  const auto first = static_cast<std::size_t>(std::ceil(1.5 / spanS / df));
+  std::size_t peak = 0;
+  double best = -1.0;
+  for (std::size_t k = std::max<std::size_t>(first, 1); k < n / 2; ++k)
+    if (std::norm(spectrum[k]) > best) {
+      best = std::norm(spectrum[k]);
+      peak = k;
+    }
+  if (peak == 0) return insufficientData("the table angle holds no swing");
+  // Golden-section search of the exact periodogram within one padded bin.
+  double a = (static_cast<double>(peak) - 1.0) * df * kTwoPi, b = (static_cast<double>(peak) + 1.0) * df * kTwoPi;
+  const double g = 0.5 * (std::sqrt(5.0) - 1.0);
+  double c = b - g * (b - a), d = a + g * (b - a);
+  double pc = power(series, binS, c), pd = power(series, binS, d);
+  for (int it = 0; it < 40; ++it) {
+    if (pc > pd) {
+      b = d;
+      d = c;
+      pd = pc;
+      c = b - g * (b - a);
+      pc = power(series, binS, c);
+    } else {
+      a = c;
+      c = d;
+      pc = pd;
+      d = a + g * (b - a);
+      pd = power(series, binS, d);
+    }
+  }
+  const double f = 0.5 * (a + b) / kTwoPi;
+  if (f * spanS < 2.0)
+    return insufficientData("the table angle shows fewer than two whole swing periods (" +
+                            std::to_string(f * spanS).substr(0, 4) + " at " + std::to_string(f).substr(0, 6) +
+                            " Hz)");
+  return f;
+}
+
+double smoothResidualRms(const std::vector<double>& timeS, const std::vector<double>& r, double windowS) {
+  if (r.empty() || !(windowS > 0.0)) return 0.0;
+  double sumSq = 0.0, weight = 0.0;
+  std::size_t i = 0;
+  while (i < r.size()) {
+    const double end = timeS[i] + windowS;
+    double s = 0.0;
+    std::size_t n = 0;
+    for (; i < r.size() && timeS[i] < end; ++i, ++n) s += r[i];
+    const double mean = s / static_cast<double>(n);
+    sumSq += static_cast<double>(n) * mean * mean;
+    weight += static_cast<double>(n);
+  }
+  return std::sqrt(sumSq / weight);
+}
+
+double harmonicAmplitude(const std::vector<double>& timeS, const std::vector<double>& r, double w) {
+  constexpr int kFirst = 2, kLast = 5, kCols = 2 * (kLast - kFirst + 1) + 1;
+  Eigen::Matrix<double, kCols, kCols> ata = Eigen::Matrix<double, kCols, kCols>::Zero();
+  Eigen::Matrix<double, kCols, 1> aty = Eigen::Matrix<double, kCols, 1>::Zero();
+  Eigen::Matrix<double, kCols, 1> row;
+  for (std::size_t i = 0; i < r.size(); ++i) {
+    for (int k = kFirst; k <= kLast; ++k) {
+      row[2 * (k - kFirst)] = std::sin(k * w * timeS[i]);
+      row[2 * (k - kFirst) + 1] = std::cos(k * w * timeS[i]);
+    }
+    row[kCols - 1] = 1.0;
+    ata.noalias() += row * row.transpose();
+    aty.noalias() += row * r[i];
+  }
+  const Eigen::Matrix<double, kCols, 1> p = ata.ldlt().solve(aty);
+  double sumSq = 0.0;
+  for (int j = 0; j + 1 < kCols; ++j) sumSq += p[j] * p[j];
+  return std::sqrt(sumSq);
+}
+
+double periodicResidualInflation(const std::vector<double>& r, double samplesPerPeriod, double periods) {
+  const std::size_t n = r.size();
+  if (n < 16 || !(samplesPerPeriod >= 2.0) || periods < 2.0) return 0.0;
+  double mean = 0.0;
+  for (double v : r) mean += v;
+  mean /= static_cast<double>(n);
+  double var = 0.0;
+  for (double v : r) var += (v - mean) * (v - mean);
+  var /= static_cast<double>(n);
+  if (!(var > 0.0)) return 0.0;
+  const int lags = std::min(20, static_cast<int>(periods) - 1);
+  double inflation = 0.0;
+  for (int k = 1; k <= lags; ++k) {
+    const auto shift = static_cast<std::size_t>(std::llround(k * samplesPerPeriod));
+    if (shift >= n) break;
+    double c = 0.0;
+    for (std::size_t i = 0; i + shift < n; ++i) c += (r[i] - mean) * (r[i + shift] - mean);
+    const double rho = c / (static_cast<double>(n - shift) * var);
+    if (rho > 0.0) inflation += 2.0 * (1.0 - k / periods) * rho;
+  }
+  return inflation;
+}
+
+std::optional<LineFit> fitLine(const std::vector<double>& x, const std::vector<double>& y) {
+  const std::size_t n = std::min(x.size(), y.size());
+  if (n < 3) return std::nullopt;
+  double mx = 0.0, my = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    mx += x[i];
+    my += y[i];
+  }
+  mx /= static_cast<double>(n);
+  my /= static_cast<double>(n);
+  double sxx = 0.0, sxy = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    sxx += (x[i] - mx) * (x[i] - mx);
+    sxy += (x[i] - mx) * (y[i] - my);
+  }
+  if (!(sxx > 0.0)) return std::nullopt;
+  LineFit f;
+  f.points = n;
+  f.slope = sxy / sxx;
+  f.intercept = my - f.slope * mx;
+  double rss = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double e = y[i] - (f.intercept + f.slope * x[i]);
+    rss += e * e;
+  }
+  f.residualStd = std::sqrt(rss / static_cast<double>(n - 2));
+  f.slopeStd = f.residualStd / std::sqrt(sxx);
+  return f;
+}
+
+}  // namespace fog::analysis

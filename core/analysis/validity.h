@@ -1,0 +1,66 @@
+#pragma once
+// Validity of a test point's delay: checks of the data against the model the
+// delay rests on (a steady sinusoid seen by table and gyro on one clock, the
+// gyro turning the same way as the table, a causal delay), and measures of
+// the uncertainty that do not rest on the noise level fitted from the same
+// residuals. A failed check makes the test point's verdict "invalid"
+// (verdict.h): the bench refuses a number it cannot vouch for. Method and
+// thresholds: docs/method.md, "Validity checks".
+//
+// Everything here is a pure function of the channels and the fits; no check
+// changes the fits themselves.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "analysis/channels.h"
+#include "analysis/sine_fit.h"
+#include "common/status.h"
+
+namespace fog::analysis {
+
+// One check of a test point. Ids are stable (the JSON report's "checks"):
+// "axis_sign", "clock_rate", "steady_sine", "causal".
+struct ValidityCheck {
+  std::string id;
+  bool passed = true;
+  std::string detail;  // what was measured; when failed, what it means and what to do
+};
+
+// Swing frequency of the table angle, for streams that do not state it and
+// as a check of the plan: the peak of the periodogram of the (detrended)
+// angle, refined by a parabola through the peak's neighbours. Unlike zero
+// crossings armed at a fraction of the global peak-to-peak, it is not fooled
+// by an amplitude that varies (decays, repeated excitations). Fails when the
+// table did not move or the record holds fewer than two periods.
+Result<double> estimateSwingFrequencyHz(const TableChannel& table);
+
+// Angle residuals averaged over windows of windowS seconds: the smooth part
+// of a misfit, from which white noise and quantisation average out. Returns
+// the RMS of the window means (weighted by their sample counts).
+double smoothResidualRms(const std::vector<double>& timeS, const std::vector<double>& residual, double windowS);
+
+// Amplitude of the harmonics 2..5 of the fundamental in a residual (each
+// fitted by linear least squares at k*omega), root-sum-square, in the
+// residual's unit.
+double harmonicAmplitude(const std::vector<double>& timeS, const std::vector<double>& residual, double omegaRadPerS);
+
+// Correlation of the residuals one, two, ... swing periods apart (at the
+// nearest sample), summed as 2*sum_k (1 - k/n) rho_k over k = 1 .. K with
+// rho_k > 0. When stamps are commensurate with the swing (1 Hz at 1 kHz),
+// quantisation errors repeat every period and do not average down; the
+// variance of a phase estimate then grows by (1 + this sum). About 0 for
+// incommensurate stamps.
+double periodicResidualInflation(const std::vector<double>& residual, double samplesPerPeriod, double periods);
+
+// Straight-line fit y = a + b*x with the standard error of b from the
+// scatter about the line (needs 3 or more points).
+struct LineFit {
+  double intercept = 0.0, slope = 0.0, slopeStd = 0.0;
+  double residualStd = 0.0;
+  std::size_t points = 0;
+};
+std::optional<LineFit> fitLine(const std::vector<double>& x, const std::vector<double>& y);
+
+}  // namespace fog::analysis

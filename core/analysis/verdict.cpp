@@ -1,0 +1,85 @@
+#include "analysis/verdict.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace fog::analysis {
+
+namespace {
+
+std::string fixed(double v, int decimals) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  return buf;
+}
+
+// Decimals that show an uncertainty to two significant digits, never fewer than four.
+int decimalsFor(double stdMs) {
+  if (!(stdMs > 0.0)) return 4;
+  return std::clamp(1 - static_cast<int>(std::floor(std::log10(stdMs))), 4, 7);
+}
+
+// The limit as the user wrote it: 0.8, not 0.8000.
+std::string limitText(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+}  // namespace
+
+const char* verdictName(Verdict v) {
+  switch (v) {
+    case Verdict::kPass: return "pass";
+    case Verdict::kFail: return "fail";
+    case Verdict::kInvalid: return "invalid";
+  }
+  return "invalid";
+}
+
+PointVerdict judgePoint(const TestPointResult& p, double limitMs) {
+  PointVerdict v;
+  v.index = p.index;
+  v.upperMs = p.imuDelayMs + kVerdictCoverageFactor * p.imuDelayStdMs;
+  for (const auto& c : p.checks)
+    if (!c.passed) v.reasons.push_back(c.detail);
+  if (!std::isfinite(p.imuDelayMs) || !std::isfinite(p.imuDelayStdMs))
+    v.reasons.push_back("the delay or its uncertainty is not a finite number");
+  if (!v.reasons.empty()) {
+    v.verdict = Verdict::kInvalid;
+    return v;
+  }
+  const int d = decimalsFor(p.imuDelayStdMs);
+  const bool pass = v.upperMs < limitMs;
+  v.verdict = pass ? Verdict::kPass : Verdict::kFail;
+  v.reasons.push_back("IMU delay " + fixed(p.imuDelayMs, d) + " ± " + fixed(p.imuDelayStdMs, d) + " ms; + 2σ = " +
+                      fixed(v.upperMs, d) + " ms " + (pass ? "<" : "≥") + " " + limitText(limitMs) + " ms limit (" +
+                      (pass ? "margin " : "over by ") + fixed(std::abs(limitMs - v.upperMs), d) + " ms)");
+  return v;
+}
+
+ReportVerdict judgeReport(const DelayReport& report, double limitMs) {
+  ReportVerdict r;
+  r.limitMs = limitMs;
+  int invalid = 0, failed = 0;
+  for (const auto& p : report.points) {
+    PointVerdict v = judgePoint(p, limitMs);
+    if (v.verdict != Verdict::kPass)
+      for (const auto& why : v.reasons) r.reasons.push_back("test point " + std::to_string(p.index + 1) + ": " + why);
+    invalid += v.verdict == Verdict::kInvalid;
+    failed += v.verdict == Verdict::kFail;
+    r.points.push_back(std::move(v));
+  }
+  for (const auto& why : report.failedPoints) r.reasons.push_back(why + " (no delay)");
+  if (report.points.empty()) r.reasons.push_back("no test point gave a delay");
+  if (invalid > 0 || !report.failedPoints.empty() || report.points.empty()) r.verdict = Verdict::kInvalid;
+  else if (failed > 0) r.verdict = Verdict::kFail;
+  else r.verdict = Verdict::kPass;
+  if (r.verdict == Verdict::kPass)
+    r.reasons.push_back("every test point passed its validity checks and its IMU delay + 2σ is below the " +
+                        limitText(limitMs) + " ms limit");
+  return r;
+}
+
+}  // namespace fog::analysis

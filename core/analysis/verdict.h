@@ -1,0 +1,47 @@
+#pragma once
+// The calibration verdict of a delay report: the one rule that the text and
+// JSON reports, the GUI and the PDF all show.
+//
+// Per test point:
+//   invalid: a validity check failed (validity.h): the delay is refused;
+//   fail:    IMU delay + 2 sigma >= the limit (one-sided, coverage k = 2, so a
+//            delay that is only probably below the limit fails);
+//   pass:    every check passed and IMU delay + 2 sigma < the limit.
+// The report: invalid when any test point is invalid or gave no delay, fail
+// when any test point fails, pass only when every test point passes.
+
+#include <string>
+#include <vector>
+
+#include "analysis/delay_analysis.h"
+
+namespace fog::analysis {
+
+enum class Verdict { kPass, kFail, kInvalid };
+
+// "pass", "fail", "invalid" (the JSON report's values).
+const char* verdictName(Verdict v);
+
+inline constexpr double kVerdictCoverageFactor = 2.0;
+inline constexpr double kDefaultImuDelayLimitMs = 0.8;
+
+struct PointVerdict {
+  int index = 0;  // test point index (0-based)
+  Verdict verdict = Verdict::kInvalid;
+  double upperMs = 0.0;  // IMU delay + 2 sigma
+  // Why, in a sentence each: the failed checks' details, or the comparison
+  // with the limit ("IMU delay 0.5158 ± 0.0015 ms; + 2σ = 0.5188 ms < 0.8 ms limit (margin 0.2812 ms)").
+  std::vector<std::string> reasons;
+};
+
+struct ReportVerdict {
+  Verdict verdict = Verdict::kInvalid;
+  double limitMs = kDefaultImuDelayLimitMs;
+  std::vector<std::string> reasons;  // "test point 2: ..." for every point that is not a pass
+  std::vector<PointVerdict> points;  // one per analysed test point, report order
+};
+
+PointVerdict judgePoint(const TestPointResult& point, double imuDelayLimitMs);
+ReportVerdict judgeReport(const DelayReport& report, double imuDelayLimitMs);
+
+}  // namespace fog::analysis
