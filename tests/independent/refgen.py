@@ -1,0 +1,961 @@
+#!/usr/bin/python3
+"""refgen: an independent reference data generator for fogbench.
+
+Writes an import directory (docs/formats.md: metadata.json, table.csv,
+gyro.csv) of a turntable swing test of a fiber-optic-gyro IMU, plus a
+truth.json with every generator parameter and the true delays.
+
+It is written from first principles and shares NO code with fogbench's C++
+simulator (core/model); see tests/independent/README.md for the model.
+
+Only the Python standard library and numpy are used.
+
+Frames and conventions
+----------------------
+* Local frame: North-East-Down (NED).  Earth rate in it:
+  Omega * (cos(lat), 0, -sin(lat)), Omega = 15.041067 deg/h.
+* Table: three axes with angles (a_x, a_y, a_z) in degrees.  The rotation
+  from the body (IMU) frame to the local frame is
+      C(t) = R_z(heading) * R_axis1(a_1) * R_axis2(a_2) * R_axis3(a_3)
+  with the axes in `axis_order` (outer to inner, default "zyx":
+  C = R_z(heading) R_z(a_z) R_y(a_y) R_x(a_x)).  R_k(a) is the proper
+  right-handed rotation by +a about unit axis k.  With all angles and the
+  heading at 0 the body axes are x North, y East, z Down.
+* Body angular rate: omega_b = sum over table axes of the axis' rate
+  expressed in the body frame, plus C(t)^T omega_ie^n (the Earth rate
+  rotated into the body frame at every fine step).
+* The gyro on body axis i measures
+      sign_i * omega_b,i(t - tau_imu) + bias_i(t) + white rate noise,
+  integrated numerically (trapezoid) on a fine grid that runs on the IMU's
+  own crystal.  tau_imu (imu_delay_ms) covers everything from the rotation
+  to the frame's arrival at the sampling board.
+* Pulses: P(t) = floor(Theta(t) / pe); a frame reports P(t_k) - P(t_{k-1}).
+* Times written to the CSV files are seconds on the sampling board's clock
+  (= true time for the table stream; the gyro stream's stamps may run at
+  1 + clock_rate_ppm_gyro * 1e-6 against it, an error case).
+* Lag (what fogbench measures) = imu_delay_ms - table_read_delay_ms: the
+  time by which the gyro output lags the stamped table reading.
+"""
+
+from __future__ import annotations
+
+import argparse
+import copy
+import json
+import math
+import os
+import sys
+import time
+
+import numpy as np
+
+GENERATOR_VERSION = 1
+EARTH_RATE_DEG_H = 15.041067
+AXES = "xyz"
+ARCSEC = 1.0 / 3600.0  # degrees per arc second
+
+
+# --------------------------------------------------------------------------
+# Parameters
+# --------------------------------------------------------------------------
+
+def default_segment():
+    """One test point (one swing of one axis)."""
+    return {
+        "axis": "x",
+        "freq_hz": 1.0,
+        "amp_deg": 3.0,
+        "duration_s": 30.0,
+        # Swing phase at the start of the analysed window; None: 0 for
+        # commensurate timing, random for incommensurate.
+        "start_phase_deg": None,
+        "centre_deg": 0.0,
+    }
+
+
+def default_params():
+    """Every generator parameter with its default.  Units in the names."""
+    return {
+        "seed": 1,
+        "case": None,
+        # Test points.  One segment = one eternal sinusoid, the window
+        # [lead_s, lead_s + duration_s] is recorded.  Several segments (or
+        # continuous=True) = one timeline: rest, ramp up, steady swing
+        # (the test point), ramp down, rest, ...
+        "segments": [default_segment()],
+        "lead_s": 1.0,          # time before the first test point (timeline starts at 0)
+        "tail_s": 0.0,          # time after the last test point (single segment)
+        "rest_s": 5.0,          # rest between test points (several segments)
+        "ramp_s": 2.0,          # smooth amplitude ramp in and out (several segments)
+        "continuous": False,    # one record of the whole timeline, no test_point markers
+        # Swing imperfections (apply to every segment)
+        "table_freq_error_ppm": 0.0,
+        "decay_tau_s": math.inf,
+        "amp_drift_per_s": 0.0,       # A(t) *= 1 + amp_drift_per_s * (t - t_on)
+        "h2": 0.0,                    # 2nd harmonic, fraction of A
+        "h2_phase_deg": 0.0,
+        "rekick_period_s": 0.0,       # >0: re-excited every this many s (repeated decays)
+        "rekick_duration_s": 1.5,     # smooth re-excitation ramp at the end of each cycle
+        # Other table axes
+        "fixed_angles_deg": [0.0, 0.0, 0.0],   # x, y, z angles of the axes that do not swing
+        "axis_order": "zyx",                   # outer to inner
+        # Site
+        "latitude_deg": 40.0,
+        "heading_deg": 0.0,
+        # Delays (ms)
+        "imu_delay_ms": 0.5,
+        "table_read_delay_ms": 0.05,
+        "board_delay_ms": 0.28,
+        # Gyro
+        "fine_hz": 10000.0,
+        "gyro_sign": [1, 1, 1],
+        "bias_deg_h": [1.0, 1.0, 1.0],
+        "bias_step_deg_h": [0.0, 0.0, 0.0],
+        "bias_step_time_s": math.inf,
+        "arw_deg_sqrt_h": 0.005,
+        "pulse_arcsec": 0.18,
+        "imu_period_ms": 2.0,
+        "imu_clock_ppm": 0.0,          # >0: the IMU crystal runs fast (shorter frames)
+        "gyro_stamp_jitter_us": 0.0,   # white, rms
+        "clock_rate_ppm_gyro": 0.0,    # gyro stamps on a clock this much faster than the table's
+        "rate_output": None,           # None (increments) | "frame_average" | "sample_at_stamp"
+        "rate_lsb_deg_s": 0.0,         # sample_at_stamp: output resolution (0 = none)
+        "sample_hold_ms": 0.0,         # >0: the board samples the latest gyro row at this period
+        # Table
+        "table_period_ms": 1.0,
+        "encoder_arcsec": 0.36,
+        "encoder_noise_arcsec": 0.0,   # white, rms, before quantisation
+        # Time stamps
+        "timing": "incommensurate",    # "commensurate" | "incommensurate"
+        "nonround_ppm": 30.0,          # incommensurate: periods off round by up to this
+        "stamp_quantum_us": 0.0,       # board counter resolution (0 = exact)
+        # Output
+        "axes_out": "all",             # "all" | "swing"
+        "meta_minimal": False,         # metadata test points with only the axis
+        "float_format": "repr",       # "repr" (shortest round-trip text) or a printf format
+    }
+
+
+# --------------------------------------------------------------------------
+# Named cases
+# --------------------------------------------------------------------------
+
+def _seg(axis="x", f=1.0, a=3.0, d=60.0, phase=None):
+    return {"axis": axis, "freq_hz": f, "amp_deg": a, "duration_s": d,
+            "start_phase_deg": phase, "centre_deg": 0.0}
+
+
+CASES = {
+    "nominal": {
+        "description": "1 Hz / 3 deg, 60 s, IMU delay 0.5 ms; no defect",
+        "expected_verdict": "pass",
+        "params": {"segments": [_seg(f=1.0, a=3.0, d=60.0)]},
+    },
+    "reversed_axis": {
+        "description": "the gyro's swing axis is mounted reversed: its increments are negated (magnitude ratio -1)",
+        "expected_verdict": "invalid",
+        "params": {"segments": [_seg(f=0.5, a=3.0, d=60.0)], "gyro_sign": [-1, 1, 1]},
+    },
+    "clock_rate": {
+        "description": "gyro stamps from a clock 50 ppm fast against the table's: not one clock",
+        "expected_verdict": "invalid",
+        "params": {"segments": [_seg(f=0.1, a=10.0, d=300.0)], "clock_rate_ppm_gyro": 50.0},
+    },
+    "quantisation_dominated": {
+        "description": "2 arcsec pulses, ARW 0.002 deg/sqrt(h): pulse quantisation dominates the gyro noise at 0.1 Hz / 10 deg",
+        "expected_verdict": "pass",
+        "params": {"segments": [_seg(f=0.1, a=10.0, d=120.0)], "pulse_arcsec": 2.0, "arw_deg_sqrt_h": 0.002},
+    },
+    "commensurate": {
+        "description": "1 Hz at exactly 1 kHz table / 500 Hz gyro, stamps aligned with the swing, 3.6 arcsec encoder",
+        "expected_verdict": "pass",
+        "params": {"segments": [_seg(f=1.0, a=3.0, d=60.0, phase=0.0)], "timing": "commensurate",
+                   "encoder_arcsec": 3.6},
+    },
+    "gyro_jitter": {
+        "description": "20 us rms white jitter on the gyro stamps",
+        "expected_verdict": None,
+        "params": {"segments": [_seg(f=1.0, a=3.0, d=60.0)], "gyro_stamp_jitter_us": 20.0},
+    },
+    "pendulum": {
+        "description": "free pendulum: 0.67 Hz, amplitude decaying from 10 deg with tau 30 s, 60 s",
+        "expected_verdict": None,
+        "params": {"segments": [_seg(f=0.67, a=10.0, d=60.0)], "decay_tau_s": 30.0},
+    },
+    "amplitude_drift": {
+        "description": "amplitude drifting down by 30 % over the 60-s record (1 Hz / 3 deg)",
+        "expected_verdict": None,
+        "params": {"segments": [_seg(f=1.0, a=3.0, d=60.0)], "amp_drift_per_s": -0.30 / 60.0},
+    },
+    "repeated_decays": {
+        "description": "repeated decays: 0.67 Hz / 10 deg re-excited every 15 s, decaying with tau 5 s, 60 s",
+        "expected_verdict": None,
+        "params": {"segments": [_seg(f=0.67, a=10.0, d=60.0)], "decay_tau_s": 5.0,
+                   "rekick_period_s": 15.0, "rekick_duration_s": 1.5},
+    },
+    "acausal": {
+        "description": "IMU delay -25 ms (a stamping error: the gyro appears to lead the table)",
+        "expected_verdict": "invalid",
+        "params": {"segments": [_seg(f=0.1, a=10.0, d=120.0)], "imu_delay_ms": -25.0},
+    },
+    "rates_frame_average": {
+        "description": "gyro.csv holds x_rate_deg_s = increment / IMU frame period (2 ms), stamped at the frame's end; "
+                       "the board samples the latest rate every 1 ms (sample-and-hold: every row twice)",
+        "expected_verdict": "pass",
+        "params": {"segments": [_seg(f=1.0, a=3.0, d=60.0)], "rate_output": "frame_average",
+                   "sample_hold_ms": 1.0},
+    },
+    "rates_sample_at_stamp": {
+        "description": "gyro.csv holds x_rate_deg_s = the instantaneous measured rate at the frame's end (stamp)",
+        "expected_verdict": "pass",
+        "params": {"segments": [_seg(f=1.0, a=3.0, d=60.0)], "rate_output": "sample_at_stamp"},
+    },
+    "continuous": {
+        "description": "three test points on X (1 Hz/3 deg 30 s, 0.5 Hz/5 deg 30 s, 0.2 Hz/10 deg 50 s) in one record, "
+                       "5-s rests, 2-s ramps, no test_point column; metadata lists one test point {axis: x}",
+        "expected_verdict": "pass",
+        "params": {"segments": [_seg(f=1.0, a=3.0, d=30.0), _seg(f=0.5, a=5.0, d=30.0),
+                                _seg(f=0.2, a=10.0, d=50.0)],
+                   "continuous": True, "rest_s": 5.0, "ramp_s": 2.0},
+    },
+}
+
+
+def case_params(name):
+    if name not in CASES:
+        raise ValueError("unknown case %r; known: %s" % (name, ", ".join(CASES)))
+    p = default_params()
+    p.update(copy.deepcopy(CASES[name]["params"]))
+    p["case"] = name
+    return p
+
+
+# --------------------------------------------------------------------------
+# Rotations
+# --------------------------------------------------------------------------
+
+def rot(axis, angle_deg):
+    """Proper rotations by +angle about a body axis: array (..., 3, 3)."""
+    a = np.deg2rad(np.asarray(angle_deg, dtype=float))
+    c, s = np.cos(a), np.sin(a)
+    o, z = np.ones_like(a), np.zeros_like(a)
+    if axis == "x":
+        m = [[o, z, z], [z, c, -s], [z, s, c]]
+    elif axis == "y":
+        m = [[c, z, s], [z, o, z], [-s, z, c]]
+    elif axis == "z":
+        m = [[c, -s, z], [s, c, z], [z, z, o]]
+    else:
+        raise ValueError(axis)
+    return np.moveaxis(np.array(m), (0, 1), (-2, -1))
+
+
+def earth_rate_ned_deg_s(lat_deg):
+    om = EARTH_RATE_DEG_H / 3600.0
+    lat = math.radians(lat_deg)
+    return np.array([om * math.cos(lat), 0.0, -om * math.sin(lat)])
+
+
+def body_rates(angles, rates, p):
+    """Body angular rate (deg/s), (n, 3), for table angles and angle rates
+    (n, 3 each, columns x, y, z) in the table's axis order, including the
+    Earth rate rotated into the body frame at every sample."""
+    order = p["axis_order"]
+    n = angles.shape[0]
+    mats = [rot(ax, angles[:, AXES.index(ax)]) for ax in order]   # outer .. inner
+    # Table part: omega_b = sum_k (R_{k+1} ... R_last)^T e_k * rate_k.
+    omega = np.zeros((n, 3))
+    inner = np.broadcast_to(np.eye(3), (n, 3, 3))   # product of the rotations inside axis k
+    for k in range(len(order) - 1, -1, -1):
+        ax = AXES.index(order[k])
+        # inner^T e_ax = row ax of inner... (inner^T)[:, :, ax] = inner[:, ax, :]
+        omega += inner[:, ax, :] * rates[:, ax:ax + 1]
+        inner = np.matmul(mats[k], inner)
+    # Now inner = R_1 R_2 R_3 = C_table; C = R_z(heading) C_table.
+    c_nb = np.matmul(rot("z", p["heading_deg"]), inner)
+    w_n = earth_rate_ned_deg_s(p["latitude_deg"])
+    omega += np.einsum("nji,j->ni", c_nb, w_n)     # C^T w_n
+    return omega
+
+
+# --------------------------------------------------------------------------
+# The swing
+# --------------------------------------------------------------------------
+
+class Swing:
+    """One test point's angle contribution on its axis, with its analytic
+    time derivative."""
+
+    def __init__(self, seg, p, t_on, gated):
+        self.axis = seg["axis"]
+        self.f_nom = float(seg["freq_hz"])
+        self.f = self.f_nom * (1.0 + p["table_freq_error_ppm"] * 1e-6)
+        self.amp = float(seg["amp_deg"])
+        self.phi0 = math.radians(seg["start_phase_deg"])
+        self.t_on = t_on
+        self.dur = float(seg["duration_s"])
+        self.gated = gated
+        self.ramp = float(p["ramp_s"])
+        self.tau = float(p["decay_tau_s"])
+        self.drift = float(p["amp_drift_per_s"])
+        self.h2 = float(p["h2"])
+        self.h2_phase = math.radians(p["h2_phase_deg"])
+        self.kick_period = float(p["rekick_period_s"])
+        self.kick = float(p["rekick_duration_s"])
+        if self.kick_period > 0:
+            if not math.isfinite(self.tau):
+                raise ValueError("rekick_period_s needs a finite decay_tau_s")
+            if not 0 < self.kick < self.kick_period:
+                raise ValueError("rekick_duration_s must be in (0, rekick_period_s)")
+        if gated and self.ramp <= 0:
+            raise ValueError("several test points need ramp_s > 0")
+
+    def active_range(self):
+        if not self.gated:
+            return (-math.inf, math.inf)
+        return (self.t_on - self.ramp, self.t_on + self.dur + self.ramp)
+
+    def _decay(self, u):
+        if not math.isfinite(self.tau):
+            return np.ones_like(u), np.zeros_like(u)
+        if self.kick_period <= 0:
+            d = np.exp(-u / self.tau)
+            return d, -d / self.tau
+        P, k, tau = self.kick_period, self.kick, self.tau
+        w = np.mod(u, P)
+        d = np.exp(-w / tau)
+        dd = -d / tau
+        # Re-excitation: cubic Hermite from the decayed level to 1, matching
+        # value and slope at both ends (the envelope is C1).
+        kicking = w >= P - k
+        if np.any(kicking):
+            x = (w[kicking] - (P - k)) / k
+            y0 = math.exp(-(P - k) / tau)
+            m0 = -y0 / tau * k
+            y1, m1 = 1.0, -1.0 / tau * k
+            h00 = 2 * x**3 - 3 * x**2 + 1
+            h10 = x**3 - 2 * x**2 + x
+            h01 = -2 * x**3 + 3 * x**2
+            h11 = x**3 - x**2
+            d[kicking] = h00 * y0 + h10 * m0 + h01 * y1 + h11 * m1
+            dd[kicking] = ((6 * x**2 - 6 * x) * y0 + (3 * x**2 - 4 * x + 1) * m0
+                           + (-6 * x**2 + 6 * x) * y1 + (3 * x**2 - 2 * x) * m1) / k
+        return d, dd
+
+    def _gate(self, t):
+        if not self.gated:
+            return np.ones_like(t), np.zeros_like(t)
+        g = np.zeros_like(t)
+        dg = np.zeros_like(t)
+        r = self.ramp
+        a, b = self.t_on, self.t_on + self.dur
+        up = (t > a - r) & (t < a)
+        x = (t[up] - (a - r)) / r
+        g[up] = 0.5 * (1 - np.cos(math.pi * x))
+        dg[up] = 0.5 * math.pi * np.sin(math.pi * x) / r
+        steady = (t >= a) & (t <= b)
+        g[steady] = 1.0
+        down = (t > b) & (t < b + r)
+        x = (t[down] - b) / r
+        g[down] = 0.5 * (1 + np.cos(math.pi * x))
+        dg[down] = -0.5 * math.pi * np.sin(math.pi * x) / r
+        return g, dg
+
+    def envelope(self, t):
+        u = t - self.t_on
+        d, dd = self._decay(u)
+        m = 1.0 + self.drift * u
+        dm = self.drift
+        g, dg = self._gate(t)
+        e = self.amp * d * m * g
+        de = self.amp * (dd * m * g + d * dm * g + d * m * dg)
+        return e, de
+
+    def eval(self, t):
+        """Angle (deg) and rate (deg/s) at true times t."""
+        t = np.asarray(t, dtype=float)
+        e, de = self.envelope(t)
+        w = 2 * math.pi * self.f
+        psi = w * (t - self.t_on) + self.phi0
+        ang = e * np.sin(psi)
+        rate = de * np.sin(psi) + e * w * np.cos(psi)
+        if self.h2:
+            psi2 = 2 * psi + self.h2_phase
+            ang = ang + self.h2 * e * np.sin(psi2)
+            rate = rate + self.h2 * (de * np.sin(psi2) + e * 2 * w * np.cos(psi2))
+        return ang, rate
+
+
+def table_state(t, swings, p):
+    """Table angles and angle rates (n, 3) at true times t."""
+    t = np.asarray(t, dtype=float)
+    ang = np.tile(np.asarray(p["fixed_angles_deg"], dtype=float), (t.size, 1))
+    rate = np.zeros((t.size, 3))
+    for sw in swings:
+        lo, hi = sw.active_range()
+        sel = (t > lo) & (t < hi)
+        if not np.any(sel):
+            continue
+        i = AXES.index(sw.axis)
+        if sel.all():
+            a, r = sw.eval(t)
+            ang[:, i] += a
+            rate[:, i] += r
+        else:
+            a, r = sw.eval(t[sel])
+            ang[sel, i] += a
+            rate[sel, i] += r
+    return ang, rate
+
+
+# --------------------------------------------------------------------------
+# Generation
+# --------------------------------------------------------------------------
+
+def _vec3(v, name):
+    if np.isscalar(v):
+        return np.array([float(v)] * 3)
+    v = np.asarray(v, dtype=float)
+    if v.shape != (3,):
+        raise ValueError("%s needs 1 or 3 values" % name)
+    return v
+
+
+def resolve(params):
+    """Fill the random and derived parameters; returns a new dict."""
+    p = default_params()
+    p.update(copy.deepcopy(params))
+    rng = np.random.default_rng([int(p["seed"]), 0x5EED])
+    if p["timing"] not in ("commensurate", "incommensurate"):
+        raise ValueError("timing must be commensurate or incommensurate")
+    segs = []
+    for s in p["segments"]:
+        seg = default_segment()
+        seg.update(s)
+        if seg["axis"] not in AXES:
+            raise ValueError("axis must be x, y or z")
+        if seg["start_phase_deg"] is None:
+            seg["start_phase_deg"] = 0.0 if p["timing"] == "commensurate" else float(rng.uniform(0, 360))
+        segs.append(seg)
+    p["segments"] = segs
+    if p["continuous"] and len({s["axis"] for s in segs}) != 1:
+        raise ValueError("continuous mode swings one axis (the metadata lists one test point)")
+    p["gyro_sign"] = [int(x) for x in _vec3(p["gyro_sign"], "gyro_sign")]
+    p["bias_deg_h"] = [float(x) for x in _vec3(p["bias_deg_h"], "bias_deg_h")]
+    p["bias_step_deg_h"] = [float(x) for x in _vec3(p["bias_step_deg_h"], "bias_step_deg_h")]
+    p["fixed_angles_deg"] = [float(x) for x in _vec3(p["fixed_angles_deg"], "fixed_angles_deg")]
+    if sorted(p["axis_order"]) != ["x", "y", "z"]:
+        raise ValueError("axis_order must be a permutation of xyz")
+    if p["rate_output"] not in (None, "frame_average", "sample_at_stamp"):
+        raise ValueError("rate_output must be frame_average or sample_at_stamp")
+    # Stamp grids: offsets of the first stamp against the first test point's
+    # start, and the true periods.
+    if p["timing"] == "commensurate":
+        p["_table_offset_s"] = 0.0
+        p["_gyro_offset_s"] = 0.0
+        p["_table_period_s"] = p["table_period_ms"] * 1e-3
+        p["_imu_clock_ppm_total"] = p["imu_clock_ppm"]
+    else:
+        nr = p["nonround_ppm"] * 1e-6
+        p["_table_offset_s"] = float(rng.uniform(0, 1)) * p["table_period_ms"] * 1e-3
+        p["_gyro_offset_s"] = float(rng.uniform(0, 1)) * p["imu_period_ms"] * 1e-3
+        p["_table_period_s"] = p["table_period_ms"] * 1e-3 * (1 + float(rng.uniform(-nr, nr)))
+        p["_imu_clock_ppm_total"] = p["imu_clock_ppm"] + float(rng.uniform(-1, 1)) * p["nonround_ppm"]
+    p["_pulse_phase"] = float(rng.uniform(0, 1))
+    return p
+
+
+def timeline(p):
+    """Swings, analysed windows [t_on, t_on + duration] and the timeline end."""
+    segs = p["segments"]
+    gated = len(segs) > 1 or p["continuous"]
+    swings, windows = [], []
+    t = p["lead_s"]
+    if not gated:
+        s = segs[0]
+        swings.append(Swing(s, p, t, False))
+        windows.append((t, t + s["duration_s"]))
+        return swings, windows, t + s["duration_s"] + p["tail_s"], gated
+    for i, s in enumerate(segs):
+        t_on = t + p["ramp_s"]
+        swings.append(Swing(s, p, t_on, True))
+        windows.append((t_on, t_on + s["duration_s"]))
+        t = t_on + s["duration_s"] + p["ramp_s"] + (p["rest_s"] if i + 1 < len(segs) else 0.0)
+    return swings, windows, t + p["lead_s"], gated
+
+
+def _grid(start, period, n):
+    """start + n * period; when the rate 1/period and start/period are whole
+    numbers (commensurate stamps) as (start*rate + n) / rate, so that 1 kHz
+    stamps read 1.001, not 1.0009999999999999."""
+    rate = 1.0 / period
+    k = start * rate
+    if abs(rate - round(rate)) < 1e-9 * rate and abs(k - round(k)) < 1e-6:
+        return (round(k) + n) / float(round(rate))
+    return start + n * period
+
+
+def generate(params, chunk_frames=5000):
+    """Runs the model; returns a dict of arrays (true and written values)."""
+    p = resolve(params)
+    rng = np.random.default_rng([int(p["seed"]), 1])
+    swings, windows, t_end, gated = timeline(p)
+    t0 = windows[0][0]   # stamp grids are anchored at the first test point's start
+
+    # ---------------- table stream ----------------
+    Pt = p["_table_period_s"]
+    j0 = math.ceil((0.0 - t0 - p["_table_offset_s"]) / Pt)
+    j1 = math.floor((t_end - t0 - p["_table_offset_s"]) / Pt)
+    tab_t = _grid(t0 + p["_table_offset_s"], Pt, np.arange(j0, j1 + 1))
+    latch = tab_t - p["table_read_delay_ms"] * 1e-3
+    tab_true, _ = table_state(latch, swings, p)
+    q = p["encoder_arcsec"] * ARCSEC
+    tab_meas = tab_true.copy()
+    if p["encoder_noise_arcsec"] > 0:
+        tab_meas += rng.normal(0, p["encoder_noise_arcsec"] * ARCSEC, tab_meas.shape)
+    if q > 0:
+        tab_meas = np.round(tab_meas / q) * q
+
+    # ---------------- gyro: fine grid on the IMU crystal ----------------
+    Pg = p["imu_period_ms"] * 1e-3 / (1 + p["_imu_clock_ppm_total"] * 1e-6)
+    M_f = p["imu_period_ms"] * 1e-3 * p["fine_hz"]
+    M = int(round(M_f))
+    if M < 1 or abs(M - M_f) > 1e-9 * max(1.0, M_f):
+        raise ValueError("imu_period_ms * fine_hz must be an integer (fine steps per frame)")
+    dt = Pg / M
+    k0 = math.ceil((0.0 - t0 - p["_gyro_offset_s"]) / Pg)
+    k1 = math.floor((t_end - t0 - p["_gyro_offset_s"]) / Pg)
+    # one extra frame before the first so that its increment is defined too
+    frame_k = np.arange(k0 - 1, k1 + 1)
+    frame_t = _grid(t0 + p["_gyro_offset_s"], Pg, frame_k)   # true end times
+    nfr = frame_t.size
+    tau = p["imu_delay_ms"] * 1e-3
+    sign = np.array(p["gyro_sign"], dtype=float)
+    bias = np.array(p["bias_deg_h"]) / 3600.0
+    bstep = np.array(p["bias_step_deg_h"]) / 3600.0
+    arw_step = p["arw_deg_sqrt_h"] / 60.0 * math.sqrt(dt)   # deg per fine step
+    pe = p["pulse_arcsec"] * ARCSEC
+
+    theta = np.empty((nfr, 3))        # integrated measured angle at frame ends (deg)
+    rate_at_end = np.empty((nfr, 3))  # measured rate at frame ends incl. noise (deg/s)
+    theta[0] = p["_pulse_phase"] * pe
+    t_first = frame_t[0]
+
+    def measured_rate(tf):
+        ang, r = table_state(tf - tau, swings, p)
+        w = body_rates(ang, r, p)
+        out = w * sign + bias
+        if np.any(bstep):
+            out = out + np.where((tf >= p["bias_step_time_s"])[:, None], bstep, 0.0)
+        return out
+
+    prev_rate = measured_rate(np.array([t_first]))[0]
+    rate_at_end[0] = prev_rate
+    prev_theta = theta[0].copy()
+    f = 1
+    while f < nfr:
+        nf = min(chunk_frames, nfr - f)
+        # fine points after the previous frame end up to frame f + nf - 1
+        jj = np.arange(1, nf * M + 1)
+        tf = t_first + ((f - 1) * M + jj) * dt
+        r = measured_rate(tf)
+        inc = 0.5 * dt * (np.vstack([prev_rate[None, :], r[:-1]]) + r)
+        noise = rng.normal(0.0, arw_step, inc.shape) if arw_step > 0 else np.zeros_like(inc)
+        cum = prev_theta + np.cumsum(inc + noise, axis=0)
+        ends = np.arange(M - 1, nf * M, M)
+        theta[f:f + nf] = cum[ends]
+        rate_at_end[f:f + nf] = r[ends] + noise[ends] / dt
+        prev_rate = r[-1]
+        prev_theta = cum[-1]
+        f += nf
+
+    pulses = np.floor(theta / pe).astype(np.int64)
+    inc_pulses = np.diff(pulses, axis=0)           # frames 1 .. nfr-1
+    frame_t = frame_t[1:]
+    theta_out = theta[1:]
+    rate_at_end = rate_at_end[1:]
+
+    # stamps on the board clock
+    stamp = frame_t * (1 + p["clock_rate_ppm_gyro"] * 1e-6)
+    if p["gyro_stamp_jitter_us"] > 0:
+        stamp = stamp + rng.normal(0.0, p["gyro_stamp_jitter_us"] * 1e-6, stamp.shape)
+    if p["stamp_quantum_us"] > 0:
+        sq = p["stamp_quantum_us"] * 1e-6
+        stamp = np.round(stamp / sq) * sq
+        tab_t = np.round(tab_t / sq) * sq
+    if np.any(np.diff(stamp) <= 0):
+        raise ValueError("gyro stamps do not increase (jitter too large for the frame period)")
+
+    # gyro values
+    if p["rate_output"] is None:
+        gvals = inc_pulses * pe
+    elif p["rate_output"] == "frame_average":
+        gvals = inc_pulses * pe / (p["imu_period_ms"] * 1e-3)
+    else:
+        gvals = rate_at_end.copy()
+        if p["rate_lsb_deg_s"] > 0:
+            gvals = np.round(gvals / p["rate_lsb_deg_s"]) * p["rate_lsb_deg_s"]
+    gyro_t = stamp
+    if p["sample_hold_ms"] > 0:
+        Ph = p["sample_hold_ms"] * 1e-3
+        hold_t = t0 + p["_table_offset_s"] + np.arange(
+            math.ceil((stamp[0] - t0 - p["_table_offset_s"]) / Ph),
+            math.floor((stamp[-1] - t0 - p["_table_offset_s"]) / Ph) + 1) * Ph
+        idx = np.searchsorted(stamp, hold_t, side="right") - 1
+        keep = idx >= 0
+        hold_t, idx = hold_t[keep], idx[keep]
+        gyro_t = hold_t
+        gvals = gvals[idx]
+        held_from = idx
+    else:
+        held_from = np.arange(stamp.size)
+
+    return {
+        "params": p,
+        "swings": swings,
+        "windows": windows,
+        "gated": gated,
+        "t_end": t_end,
+        "table_t": tab_t,
+        "table_true": tab_true,
+        "table_deg": tab_meas,
+        "frame_t_true": frame_t,
+        "frame_stamp": stamp,
+        "frame_theta": theta_out,
+        "frame_pulses": inc_pulses,
+        "frame_rate": rate_at_end,
+        "gyro_t": gyro_t,
+        "gyro_val": gvals,
+        "gyro_from_frame": held_from,
+        "pulse_deg": pe,
+        "fine_dt_s": dt,
+        "frame_period_true_s": Pg,
+    }
+
+
+# --------------------------------------------------------------------------
+# Truth
+# --------------------------------------------------------------------------
+
+def truth(res):
+    p = res["params"]
+    lag = p["imu_delay_ms"] - p["table_read_delay_ms"]
+    pts = []
+    for i, (sw, (a, b)) in enumerate(zip(res["swings"], res["windows"])):
+        ax = AXES.index(sw.axis)
+        # Earth rate on the swing axis at the centre angle (constant when the
+        # swing axis is the table's inner axis or the other axes are at 0).
+        ang = np.array([p["fixed_angles_deg"]])
+        w = body_rates(ang, np.zeros((1, 3)), p)[0]
+        earth = w[ax] * 3600.0
+        trend = p["gyro_sign"][ax] * earth + p["bias_deg_h"][ax]
+        mid = 0.5 * (a + b)
+        e0, _ = sw.envelope(np.array([a]))
+        e1, _ = sw.envelope(np.array([b]))
+        apparent = lag + p["clock_rate_ppm_gyro"] * 1e-6 * mid * 1e3
+        pts.append({
+            "test_point": i + 1,
+            "axis": sw.axis,
+            "frequency_hz_nominal": sw.f_nom,
+            "frequency_hz_true": sw.f,
+            "amplitude_deg": sw.amp,
+            "amplitude_deg_at_start": float(e0[0]),
+            "amplitude_deg_at_end": float(e1[0]),
+            "start_phase_deg": math.degrees(sw.phi0),
+            "window_s": [a, b],
+            "duration_s": b - a,
+            "periods": (b - a) * sw.f,
+            "earth_rate_on_swing_axis_deg_h": earth,
+            "expected_trend_deg_h": trend,
+            "expected_magnitude_ratio": p["gyro_sign"][ax],
+            "apparent_lag_ms_at_middle": apparent,
+        })
+    case = p.get("case")
+    return {
+        "generator": "tests/independent/refgen.py",
+        "generator_version": GENERATOR_VERSION,
+        "shares_code_with_core_model": False,
+        "case": case,
+        "case_description": CASES[case]["description"] if case in CASES else None,
+        "expected_verdict": CASES[case]["expected_verdict"] if case in CASES else None,
+        "imu_delay_ms": p["imu_delay_ms"],
+        "table_read_delay_ms": p["table_read_delay_ms"],
+        "board_delay_ms": p["board_delay_ms"],
+        "true_lag_ms": lag,
+        "gyro_delay_ms": p["imu_delay_ms"] - p["board_delay_ms"],
+        "lag_definition": "imu_delay_ms - table_read_delay_ms: the time by which the gyro output lags the stamped "
+                          "table reading",
+        "clock_note": ("gyro stamps run %g ppm against the table's: the lag is not defined; apparent lag grows "
+                       "with time" % p["clock_rate_ppm_gyro"]) if p["clock_rate_ppm_gyro"] else None,
+        "pulse_equivalent_deg": res["pulse_deg"],
+        "fine_step_s": res["fine_dt_s"],
+        "imu_frame_period_true_s": res["frame_period_true_s"],
+        "table_period_true_s": p["_table_period_s"],
+        "table_first_stamp_offset_s": p["_table_offset_s"],
+        "gyro_first_frame_offset_s": p["_gyro_offset_s"],
+        "imu_clock_ppm_total": p["_imu_clock_ppm_total"],
+        "timeline_end_s": res["t_end"],
+        "test_points": pts,
+        "rows": {"table": int(res["_rows_table"]) if "_rows_table" in res else None,
+                 "gyro": int(res["_rows_gyro"]) if "_rows_gyro" in res else None},
+        "params": {k: v for k, v in p.items() if not k.startswith("_")},
+    }
+
+
+# --------------------------------------------------------------------------
+# Writing
+# --------------------------------------------------------------------------
+
+def _jsonable(x):
+    if isinstance(x, float) and not math.isfinite(x):
+        return "inf" if x > 0 else ("-inf" if x < 0 else "nan")
+    if isinstance(x, dict):
+        return {k: _jsonable(v) for k, v in x.items()}
+    if isinstance(x, (list, tuple)):
+        return [_jsonable(v) for v in x]
+    if isinstance(x, np.generic):
+        return x.item()
+    return x
+
+
+def metadata(res):
+    p = res["params"]
+    bench = {
+        "table_read_delay_ms": p["table_read_delay_ms"],
+        "board_delay_ms": p["board_delay_ms"],
+        "pulse_equivalent_deg": res["pulse_deg"],
+        "latitude_deg": p["latitude_deg"],
+    }
+    if p["rate_output"] is not None:
+        bench["gyro_rate_convention"] = p["rate_output"]
+        bench["gyro_frame_period_ms"] = p["imu_period_ms"]
+    if p["continuous"]:
+        tps = [{"axis": p["segments"][0]["axis"]}]
+    elif p["meta_minimal"]:
+        tps = [{"axis": s["axis"]} for s in p["segments"]]
+    else:
+        tps = [{"axis": s["axis"], "frequency_hz": s["freq_hz"], "amplitude_deg": s["amp_deg"],
+                "duration_s": s["duration_s"]} for s in p["segments"]]
+    meta = {
+        "format": "fogbench-csv",
+        "format_version": 1,
+        "source": "refgen.py independent reference generator%s, seed %d" % (
+            (", case " + p["case"]) if p.get("case") else "", p["seed"]),
+        "notes": "synthetic data; the truth is in truth.json",
+        "bench": bench,
+        "test_points": tps,
+    }
+    if len(p["segments"]) > 1 and not p["continuous"]:
+        meta["rest_between_s"] = p["rest_s"] + 2 * p["ramp_s"]
+    return meta
+
+
+def _write_csv(path, comment, header, cols, fmts):
+    """Writes columns (1-D arrays).  Format "repr" = the shortest text that
+    reads back to the same double (as fogbench's exports); "%d" = integer;
+    any other printf format as given."""
+    def text(c, f):
+        if f == "repr":
+            return list(map(repr, np.asarray(c, dtype=float).tolist()))
+        if f == "%d":
+            return list(map(str, np.asarray(c, dtype=np.int64).tolist()))
+        return [f % v for v in np.asarray(c, dtype=float).tolist()]
+    with open(path, "w", newline="\n") as fh:
+        fh.write("# " + comment + "\n")
+        fh.write(",".join(header) + "\n")
+        if cols[0].size:
+            fh.write("\n".join(map(",".join, zip(*[text(c, f) for c, f in zip(cols, fmts)]))))
+            fh.write("\n")
+
+
+def write_dir(res, out, overwrite=False):
+    p = res["params"]
+    if os.path.exists(out):
+        if not os.path.isdir(out):
+            raise ValueError("%s exists and is not a directory" % out)
+        if os.listdir(out) and not overwrite:
+            raise ValueError("%s is not empty; give --overwrite to write into it" % out)
+    else:
+        os.makedirs(out)
+    axes_out = AXES if p["axes_out"] == "all" else sorted({s["axis"] for s in p["segments"]})
+    ff = p["float_format"]
+    many = len(p["segments"]) > 1 and not p["continuous"]
+
+    # rows inside the windows (or the whole timeline when continuous)
+    def select(t):
+        if p["continuous"]:
+            return [np.nonzero((t >= 0.0) & (t <= res["t_end"]))[0]]
+        return [np.nonzero((t >= a) & (t <= b))[0] for (a, b) in res["windows"]]
+
+    # table
+    sel = select(res["table_t"])
+    cols, header, fmts = [], [], []
+    if many:
+        cols.append(np.concatenate([np.full(s.size, i + 1) for i, s in enumerate(sel)]))
+        header.append("test_point")
+        fmts.append("%d")
+    idx = np.concatenate(sel)
+    cols.append(res["table_t"][idx]); header.append("time_s"); fmts.append(ff)
+    for ax in axes_out:
+        cols.append(res["table_deg"][idx, AXES.index(ax)]); header.append(ax + "_deg"); fmts.append(ff)
+    _write_csv(os.path.join(out, "table.csv"),
+               "refgen table stream: angles (deg) stamped when read; docs/formats.md",
+               header, cols, fmts)
+    res["_rows_table"] = idx.size
+
+    # gyro
+    sel = select(res["gyro_t"])
+    cols, header, fmts = [], [], []
+    if many:
+        cols.append(np.concatenate([np.full(s.size, i + 1) for i, s in enumerate(sel)]))
+        header.append("test_point")
+        fmts.append("%d")
+    idx = np.concatenate(sel)
+    cols.append(res["gyro_t"][idx]); header.append("time_s"); fmts.append(ff)
+    suffix = "_inc_deg" if p["rate_output"] is None else "_rate_deg_s"
+    for ax in axes_out:
+        cols.append(res["gyro_val"][idx, AXES.index(ax)]); header.append(ax + suffix); fmts.append(ff)
+    what = ("angle increments (deg) over the frame ending at time_s" if p["rate_output"] is None else
+            "rates (deg/s), convention %s" % p["rate_output"])
+    _write_csv(os.path.join(out, "gyro.csv"), "refgen gyro stream: " + what + "; docs/formats.md",
+               header, cols, fmts)
+    res["_rows_gyro"] = idx.size
+
+    with open(os.path.join(out, "metadata.json"), "w") as fh:
+        json.dump(_jsonable(metadata(res)), fh, indent=2)
+        fh.write("\n")
+    with open(os.path.join(out, "truth.json"), "w") as fh:
+        json.dump(_jsonable(truth(res)), fh, indent=2)
+        fh.write("\n")
+    return truth(res)
+
+
+# --------------------------------------------------------------------------
+# CLI
+# --------------------------------------------------------------------------
+
+def _floats(text):
+    v = [float(x) for x in text.split(",")]
+    return v[0] if len(v) == 1 else v
+
+
+def build_parser():
+    ap = argparse.ArgumentParser(
+        prog="refgen.py",
+        description="Independent reference data generator for fogbench (writes an import directory "
+                    "per docs/formats.md plus truth.json). Shares no code with core/model.")
+    ap.add_argument("--out", required=False, help="output directory (created; must be empty unless --overwrite)")
+    ap.add_argument("--overwrite", action="store_true")
+    ap.add_argument("--case", help="named preset: " + ", ".join(CASES))
+    ap.add_argument("--list-cases", action="store_true", help="list the named cases and exit")
+    ap.add_argument("--seed", type=int)
+    g = ap.add_argument_group("swing (one test point; use --segments-json for several)")
+    g.add_argument("--axis", choices=list(AXES))
+    g.add_argument("--freq-hz", type=float)
+    g.add_argument("--amp-deg", type=float)
+    g.add_argument("--duration-s", type=float)
+    g.add_argument("--start-phase-deg", type=float)
+    g.add_argument("--centre-deg", type=float)
+    g.add_argument("--segments-json", help='JSON list of test points, e.g. \'[{"axis":"x","freq_hz":1,'
+                   '"amp_deg":3,"duration_s":30}, ...]\'')
+    g.add_argument("--continuous", action="store_true", default=None,
+                   help="one record, no test_point column, metadata with one test point {axis}")
+    g.add_argument("--lead-s", type=float)
+    g.add_argument("--tail-s", type=float)
+    g.add_argument("--rest-s", type=float)
+    g.add_argument("--ramp-s", type=float)
+    g.add_argument("--table-freq-error-ppm", type=float)
+    g.add_argument("--decay-tau-s", type=float)
+    g.add_argument("--amp-drift-per-s", type=float)
+    g.add_argument("--h2", type=float, help="2nd harmonic as a fraction of the amplitude")
+    g.add_argument("--h2-phase-deg", type=float)
+    g.add_argument("--rekick-period-s", type=float)
+    g.add_argument("--rekick-duration-s", type=float)
+    g.add_argument("--fixed-angles-deg", type=_floats, help="x,y,z angles of the axes that do not swing")
+    g.add_argument("--axis-order", help="table axes outer to inner (default zyx)")
+    g = ap.add_argument_group("site")
+    g.add_argument("--latitude-deg", type=float)
+    g.add_argument("--heading-deg", type=float)
+    g = ap.add_argument_group("delays (ms)")
+    g.add_argument("--imu-delay-ms", type=float)
+    g.add_argument("--table-read-delay-ms", type=float)
+    g.add_argument("--board-delay-ms", type=float)
+    g = ap.add_argument_group("gyro")
+    g.add_argument("--fine-hz", type=float)
+    g.add_argument("--gyro-sign", type=_floats, help="1 or 3 values of +1/-1 (x,y,z)")
+    g.add_argument("--bias-deg-h", type=_floats, help="1 or 3 values")
+    g.add_argument("--bias-step-deg-h", type=_floats, help="1 or 3 values")
+    g.add_argument("--bias-step-time-s", type=float)
+    g.add_argument("--arw", "--arw-deg-sqrt-h", dest="arw_deg_sqrt_h", type=float)
+    g.add_argument("--pulse-arcsec", type=float)
+    g.add_argument("--imu-period-ms", type=float)
+    g.add_argument("--imu-clock-ppm", type=float)
+    g.add_argument("--gyro-stamp-jitter-us", type=float)
+    g.add_argument("--clock-rate-ppm-gyro", type=float)
+    g.add_argument("--rate-output", choices=["frame_average", "sample_at_stamp"])
+    g.add_argument("--rate-lsb-deg-s", type=float)
+    g.add_argument("--sample-hold-ms", type=float)
+    g = ap.add_argument_group("table")
+    g.add_argument("--table-period-ms", type=float)
+    g.add_argument("--encoder-arcsec", type=float)
+    g.add_argument("--encoder-noise-arcsec", type=float)
+    g = ap.add_argument_group("stamps and output")
+    g.add_argument("--timing", choices=["commensurate", "incommensurate"])
+    g.add_argument("--nonround-ppm", type=float)
+    g.add_argument("--stamp-quantum-us", type=float)
+    g.add_argument("--axes-out", choices=["all", "swing"])
+    g.add_argument("--meta-minimal", action="store_true", default=None)
+    g.add_argument("--float-format")
+    return ap
+
+
+_SEG_KEYS = {"axis": "axis", "freq_hz": "freq_hz", "amp_deg": "amp_deg", "duration_s": "duration_s",
+             "start_phase_deg": "start_phase_deg", "centre_deg": "centre_deg"}
+
+
+def params_from_args(a):
+    p = case_params(a.case) if a.case else default_params()
+    if a.segments_json:
+        p["segments"] = json.loads(a.segments_json)
+    for k in _SEG_KEYS:
+        v = getattr(a, k)
+        if v is not None:
+            for s in p["segments"]:
+                s[k] = v
+    skip = set(_SEG_KEYS) | {"out", "overwrite", "case", "list_cases", "segments_json"}
+    for k, v in vars(a).items():
+        if k in skip or v is None:
+            continue
+        if k not in p:
+            raise SystemExit("internal: option %s has no parameter" % k)
+        p[k] = v
+    return p
+
+
+def main(argv=None):
+    a = build_parser().parse_args(argv)
+    if a.list_cases:
+        for name, c in CASES.items():
+            print("%-24s %s (expected verdict: %s)" % (name, c["description"], c["expected_verdict"]))
+        return 0
+    if not a.out:
+        print("refgen.py: --out DIR is required", file=sys.stderr)
+        return 2
+    try:
+        p = params_from_args(a)
+        t = time.perf_counter()
+        res = generate(p)
+        t_gen = time.perf_counter() - t
+        tr = write_dir(res, a.out, a.overwrite)
+        t_all = time.perf_counter() - t
+    except ValueError as e:
+        print("refgen.py: %s" % e, file=sys.stderr)
+        return 2
+    print("wrote %s: %d table rows, %d gyro rows; true lag %.6g ms (IMU delay %.6g ms); "
+          "%.2f s (model %.2f s)" % (a.out, tr["rows"]["table"], tr["rows"]["gyro"], tr["true_lag_ms"],
+                                     tr["imu_delay_ms"], t_all, t_gen))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

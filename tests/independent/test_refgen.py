@@ -1,0 +1,464 @@
+"""Tests of the independent reference generator itself (no C++ involved).
+
+Run from the repository root:
+    /usr/bin/python3 -m unittest tests/independent/test_refgen.py -v
+or  /usr/bin/python3 -m unittest discover -s tests/independent -v
+"""
+
+import csv
+import json
+import math
+import os
+import sys
+import tempfile
+import unittest
+
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import refgen  # noqa: E402
+
+OMEGA_DEG_S = 15.041067 / 3600.0
+
+
+def load_json(path):
+    with open(path) as fh:
+        return json.load(fh)
+
+
+def quiet(**kw):
+    """Parameters without noise, bias or quantisation of the recorded values
+    that the test reads (it reads the generator's internal true arrays)."""
+    p = refgen.default_params()
+    p.update({"arw_deg_sqrt_h": 0.0, "bias_deg_h": 0.0, "encoder_arcsec": 0.0,
+              "segments": [{"axis": "x", "freq_hz": 1.0, "amp_deg": 3.0, "duration_s": 12.0}]})
+    p.update(kw)
+    return p
+
+
+def fit3(t, y, f, trend=False):
+    """Least squares y = a sin wt + b cos wt + c (+ d t) at a known frequency.
+    Returns (amplitude, phase rad, coefficients); y = R sin(wt + phase)."""
+    w = 2 * math.pi * f
+    cols = [np.sin(w * t), np.cos(w * t), np.ones_like(t)]
+    if trend:
+        cols.append(t)
+    X = np.column_stack(cols)
+    c, *_ = np.linalg.lstsq(X, y, rcond=None)
+    return math.hypot(c[0], c[1]), math.atan2(c[1], c[0]), c
+
+
+def fit4_freq(t, y, f0, trend=False, iters=8):
+    """Frequency-free sine fit (Gauss-Newton); returns the frequency."""
+    w = 2 * math.pi * f0
+    for _ in range(iters):
+        _, _, c = fit3(t, y, w / (2 * math.pi), trend)
+        a, b = c[0], c[1]
+        cols = [np.sin(w * t), np.cos(w * t), np.ones_like(t)] + ([t] if trend else [])
+        cols.append(t * (a * np.cos(w * t) - b * np.sin(w * t)))
+        X = np.column_stack(cols)
+        model = a * np.sin(w * t) + b * np.cos(w * t) + c[2] + (c[3] * t if trend else 0)
+        d, *_ = np.linalg.lstsq(X, y - model, rcond=None)
+        w += d[-1]
+        if abs(d[-1]) < 1e-15:
+            break
+    return w / (2 * math.pi)
+
+
+def lag_from_fits(res, f, use_true=True):
+    """Phase difference of the table and the cumulative gyro angle, as a
+    time (s): positive when the gyro lags.  Times relative to the window's
+    middle."""
+    a, b = res["windows"][0]
+    mid = 0.5 * (a + b)
+    tt = res["table_t"]
+    st = (tt >= a) & (tt <= b)
+    ty = res["table_true"][:, 0] if use_true else res["table_deg"][:, 0]
+    gt = res["frame_stamp"]
+    sg = (gt >= a) & (gt <= b)
+    gy = res["frame_theta"][:, 0] if use_true else np.cumsum(res["frame_pulses"][:, 0]) * res["pulse_deg"]
+    _, ph_t, _ = fit3(tt[st] - mid, ty[st], f)
+    _, ph_g, _ = fit3(gt[sg] - mid, gy[sg], f, trend=True)
+    d = (ph_t - ph_g + math.pi) % (2 * math.pi) - math.pi
+    return d / (2 * math.pi * f)
+
+
+class Phase(unittest.TestCase):
+    def check_lag(self, p, tol_s=1e-6, use_true=True):
+        res = refgen.generate(p)
+        f = res["swings"][0].f
+        lag = lag_from_fits(res, f, use_true)
+        true = (res["params"]["imu_delay_ms"] - res["params"]["table_read_delay_ms"]) * 1e-3
+        self.assertAlmostEqual(lag, true, delta=tol_s, msg="lag %.9f s, true %.9f s" % (lag, true))
+        return res
+
+    def test_zero_noise_lag_is_imu_minus_read_delay(self):
+        self.check_lag(quiet())
+
+    def test_zero_noise_commensurate(self):
+        self.check_lag(quiet(timing="commensurate"))
+
+    def test_zero_noise_slow_swing_with_bias_and_earth(self):
+        self.check_lag(quiet(bias_deg_h=3.0, segments=[{"axis": "x", "freq_hz": 0.1, "amp_deg": 10.0,
+                                                          "duration_s": 40.0}]))
+
+    def test_negative_lag(self):
+        self.check_lag(quiet(imu_delay_ms=0.1, table_read_delay_ms=0.4))
+
+    def test_acausal(self):
+        self.check_lag(quiet(imu_delay_ms=-25.0, segments=[{"axis": "x", "freq_hz": 0.1, "amp_deg": 10.0,
+                                                               "duration_s": 40.0}]))
+
+    def test_other_axes_and_heading(self):
+        for axis in "yz":
+            p = quiet(heading_deg=33.0, segments=[{"axis": axis, "freq_hz": 0.7, "amp_deg": 5.0,
+                                                  "duration_s": 15.0}])
+            res = refgen.generate(p)
+            a, b = res["windows"][0]
+            i = "xyz".index(axis)
+            mid = 0.5 * (a + b)
+            f = res["swings"][0].f
+            tt, gt = res["table_t"], res["frame_stamp"]
+            st, sg = (tt >= a) & (tt <= b), (gt >= a) & (gt <= b)
+            _, ph_t, _ = fit3(tt[st] - mid, res["table_true"][st, i], f)
+            _, ph_g, _ = fit3(gt[sg] - mid, res["frame_theta"][sg, i], f, trend=True)
+            lag = ((ph_t - ph_g + math.pi) % (2 * math.pi) - math.pi) / (2 * math.pi * f)
+            self.assertAlmostEqual(lag, 0.45e-3, delta=1e-6)
+
+    def test_written_data_lag_within_noise(self):
+        # Quantised and noisy, as written: 1 Hz / 3 deg, 60 s.  The lag's
+        # noise is ~0.2 us, so 1 us is a wide margin.
+        p = refgen.case_params("nominal")
+        self.check_lag(p, tol_s=1e-6, use_true=False)
+
+    def test_numeric_integration_matches_the_analytic_angle(self):
+        # The swing axis is the inner axis: the gyro angle is the table angle
+        # tau earlier plus the Earth rate's constant component on that axis.
+        p = quiet(fine_hz=10000.0)
+        res = refgen.generate(p)
+        sw = res["swings"][0]
+        tau = p["imu_delay_ms"] * 1e-3
+        tf = res["frame_t_true"]
+        ang, _ = sw.eval(tf - tau)
+        earth = OMEGA_DEG_S * math.cos(math.radians(40.0))
+        expect = ang - ang[0] + earth * (tf - tf[0])
+        got = res["frame_theta"][:, 0] - res["frame_theta"][0, 0]
+        # The trapezoid rule has no phase error on a sinusoid; its gain is
+        # 1 - (w dt)^2 / 12 (3e-8 at 1 Hz, 10 kHz): ~1e-7 deg on 3 deg.
+        w_dt = 2 * math.pi * 1.0 * res["fine_dt_s"]
+        self.assertLess(np.max(np.abs(got - expect)), 2 * 3.0 * w_dt**2 / 12 * 1.1)
+
+
+class EarthRate(unittest.TestCase):
+    def static_rates(self, **kw):
+        p = quiet(segments=[{"axis": "z", "freq_hz": 1.0, "amp_deg": 0.0, "duration_s": 20.0}], **kw)
+        res = refgen.generate(p)
+        t = res["frame_t_true"]
+        th = res["frame_theta"]
+        return np.array([np.polyfit(t, th[:, i], 1)[0] for i in range(3)])
+
+    def test_level_north(self):
+        r = self.static_rates(latitude_deg=40.0)
+        lat = math.radians(40.0)
+        np.testing.assert_allclose(r, [OMEGA_DEG_S * math.cos(lat), 0.0, -OMEGA_DEG_S * math.sin(lat)],
+                                   atol=1e-12)
+
+    def test_heading_rotates_the_local_frame(self):
+        psi, lat = math.radians(30.0), math.radians(52.0)
+        r = self.static_rates(latitude_deg=52.0, heading_deg=30.0)
+        om = OMEGA_DEG_S
+        np.testing.assert_allclose(r, [om * math.cos(lat) * math.cos(psi), -om * math.cos(lat) * math.sin(psi),
+                                       -om * math.sin(lat)], atol=1e-12)
+
+    def test_tilted_inner_axis(self):
+        # x (inner) at +90 deg: body y points Down, body z points West.
+        r = self.static_rates(fixed_angles_deg=[90.0, 0.0, 0.0])
+        lat = math.radians(40.0)
+        np.testing.assert_allclose(r, [OMEGA_DEG_S * math.cos(lat), -OMEGA_DEG_S * math.sin(lat), 0.0],
+                                   atol=1e-12)
+
+    def test_swing_axis_component_in_truth_and_in_the_data(self):
+        p = quiet(bias_deg_h=[2.0, 0.0, 0.0])
+        res = refgen.generate(p)
+        tr = refgen.truth(res)
+        lat = math.radians(40.0)
+        self.assertAlmostEqual(tr["test_points"][0]["earth_rate_on_swing_axis_deg_h"],
+                               15.041067 * math.cos(lat), places=9)
+        self.assertAlmostEqual(tr["test_points"][0]["expected_trend_deg_h"], 15.041067 * math.cos(lat) + 2.0,
+                               places=9)
+        # Trend of the cumulative swing-axis angle
+        a, b = res["windows"][0]
+        mid = 0.5 * (a + b)
+        _, _, c = fit3(res["frame_stamp"] - mid, res["frame_theta"][:, 0], 1.0, trend=True)
+        self.assertAlmostEqual(c[3] * 3600.0, 15.041067 * math.cos(lat) + 2.0, delta=1e-6)
+
+    def test_cross_axis_sees_the_rotated_earth_rate(self):
+        # Swinging x: body y sees -sin(angle) * Omega sin(lat) (NED, down component).
+        p = quiet(segments=[{"axis": "x", "freq_hz": 0.2, "amp_deg": 20.0, "duration_s": 10.0}])
+        res = refgen.generate(p)
+        sw = res["swings"][0]
+        tau = p["imu_delay_ms"] * 1e-3
+        tf = res["frame_t_true"]
+        fine = np.linspace(tf[0], tf[-1], 200001)
+        ang, _ = sw.eval(fine - tau)
+        ry = -np.sin(np.radians(ang)) * OMEGA_DEG_S * math.sin(math.radians(40.0))
+        integ = np.concatenate([[0.0], np.cumsum(0.5 * (ry[1:] + ry[:-1]) * np.diff(fine))])
+        got = res["frame_theta"][:, 1] - res["frame_theta"][0, 1]
+        self.assertLess(abs(got[-1] - integ[-1]), 1e-9)
+        self.assertGreater(np.ptp(got), 1e-5)
+
+
+class Pulses(unittest.TestCase):
+    def test_integer_pulses_carry_the_remainder(self):
+        p = refgen.case_params("nominal")
+        p["segments"][0]["duration_s"] = 10.0
+        res = refgen.generate(p)
+        pe = res["pulse_deg"]
+        self.assertEqual(res["frame_pulses"].dtype.kind, "i")
+        cum = np.cumsum(res["frame_pulses"], axis=0) * pe
+        # frame_theta[0] is the end of the first written frame; the pulse
+        # count before it is floor(theta_before / pe).
+        true = res["frame_theta"] - (res["frame_theta"][0] - res["frame_pulses"][0] * pe)
+        err = cum - true
+        self.assertLess(np.max(np.abs(err)), pe * (1 + 1e-9))
+        # the error is a sawtooth in [-(pe), pe]: no drift
+        self.assertLess(abs(np.mean(err[-1000:, 0]) - np.mean(err[:1000, 0])), pe)
+
+    def test_written_increments_are_whole_pulses(self):
+        with tempfile.TemporaryDirectory() as d:
+            p = refgen.case_params("nominal")
+            p["segments"][0]["duration_s"] = 5.0
+            res = refgen.generate(p)
+            refgen.write_dir(res, os.path.join(d, "o"))
+            pe = 0.18 / 3600.0
+            with open(os.path.join(d, "o", "gyro.csv")) as fh:
+                rows = [r for r in csv.reader(fh) if r and not r[0].startswith("#")]
+            self.assertEqual(rows[0], ["time_s", "x_inc_deg", "y_inc_deg", "z_inc_deg"])
+            v = np.array([[float(x) for x in r[1:]] for r in rows[1:]])
+            n = v / pe
+            self.assertLess(np.max(np.abs(n - np.round(n))), 1e-6)
+
+
+class Defects(unittest.TestCase):
+    def test_reversed_sign_negates(self):
+        a = refgen.generate(quiet(gyro_sign=[1, 1, 1]))
+        b = refgen.generate(quiet(gyro_sign=[-1, 1, 1]))
+        ta = a["frame_theta"][:, 0] - a["frame_theta"][0, 0]
+        tb = b["frame_theta"][:, 0] - b["frame_theta"][0, 0]
+        np.testing.assert_allclose(tb, -ta, atol=1e-12)
+        np.testing.assert_allclose(b["frame_theta"][:, 1:], a["frame_theta"][:, 1:], atol=1e-15)
+
+    def test_reversed_case_gives_ratio_minus_one(self):
+        p = refgen.case_params("reversed_axis")
+        p["segments"][0]["duration_s"] = 10.0
+        res = refgen.generate(p)
+        a, b = res["windows"][0]
+        mid = 0.5 * (a + b)
+        st = (res["table_t"] >= a) & (res["table_t"] <= b)
+        sg = (res["frame_stamp"] >= a) & (res["frame_stamp"] <= b)
+        _, _, ct = fit3(res["table_t"][st] - mid, res["table_deg"][st, 0], 0.5)
+        _, _, cg = fit3(res["frame_stamp"][sg] - mid, res["frame_theta"][sg, 0], 0.5, trend=True)
+        ratio = (cg[0] * ct[0] + cg[1] * ct[1]) / (ct[0] ** 2 + ct[1] ** 2)
+        self.assertAlmostEqual(ratio, -1.0, delta=1e-4)
+
+    def test_clock_rate_50ppm_changes_the_fitted_period(self):
+        p = quiet(clock_rate_ppm_gyro=50.0, segments=[{"axis": "x", "freq_hz": 1.0, "amp_deg": 3.0,
+                                                       "duration_s": 20.0}])
+        res = refgen.generate(p)
+        a, b = res["windows"][0]
+        mid = 0.5 * (a + b)
+        st = (res["table_t"] >= a) & (res["table_t"] <= b)
+        sg = (res["frame_stamp"] >= a) & (res["frame_stamp"] <= b)
+        ft = fit4_freq(res["table_t"][st] - mid, res["table_true"][st, 0], 1.0)
+        fg = fit4_freq(res["frame_stamp"][sg] - mid, res["frame_theta"][sg, 0], 1.0, trend=True)
+        self.assertAlmostEqual(ft, 1.0, delta=1e-9)
+        # gyro period longer by 50 ppm
+        self.assertAlmostEqual((1 / fg) / (1 / ft) - 1, 50e-6, delta=0.1e-6)
+
+    def test_table_frequency_error(self):
+        p = quiet(table_freq_error_ppm=200.0)
+        res = refgen.generate(p)
+        a, b = res["windows"][0]
+        st = (res["table_t"] >= a) & (res["table_t"] <= b)
+        ft = fit4_freq(res["table_t"][st] - 0.5 * (a + b), res["table_true"][st, 0], 1.0)
+        self.assertAlmostEqual(ft, 1.0002, delta=1e-9)
+        self.assertAlmostEqual(lag_from_fits(res, ft), 0.45e-3, delta=1e-6)
+
+    def test_jitter_rms(self):
+        res = refgen.generate(quiet(gyro_stamp_jitter_us=20.0))
+        d = res["frame_stamp"] - res["frame_t_true"]
+        self.assertAlmostEqual(np.std(d) * 1e6, 20.0, delta=1.0)
+        self.assertTrue(np.all(np.diff(res["frame_stamp"]) > 0))
+
+    def test_bias_step(self):
+        p = quiet(bias_step_deg_h=[36.0, 0, 0], bias_step_time_s=7.0,
+                  segments=[{"axis": "x", "freq_hz": 1.0, "amp_deg": 0.0, "duration_s": 12.0}])
+        res = refgen.generate(p)
+        t, th = res["frame_t_true"], res["frame_theta"][:, 0]
+        r1 = np.polyfit(t[(t > 2) & (t < 6.9)], th[(t > 2) & (t < 6.9)], 1)[0]
+        r2 = np.polyfit(t[(t > 7.1) & (t < 12)], th[(t > 7.1) & (t < 12)], 1)[0]
+        self.assertAlmostEqual((r2 - r1) * 3600.0, 36.0, delta=1e-6)
+
+    def test_arw_level(self):
+        # increments' scatter from ARW: std = ARW/60 * sqrt(frame period)
+        p = quiet(arw_deg_sqrt_h=0.5, segments=[{"axis": "x", "freq_hz": 1.0, "amp_deg": 0.0,
+                                                 "duration_s": 30.0}])
+        res = refgen.generate(p)
+        d = np.diff(res["frame_theta"][:, 0])
+        self.assertAlmostEqual(np.std(d) / (0.5 / 60 * math.sqrt(2e-3)), 1.0, delta=0.03)
+
+    def test_decay_and_drift_envelopes(self):
+        res = refgen.generate(refgen.case_params("pendulum"))
+        tr = refgen.truth(res)["test_points"][0]
+        self.assertAlmostEqual(tr["amplitude_deg_at_end"], 10.0 * math.exp(-60.0 / 30.0), places=9)
+        a, b = res["windows"][0]
+        last = (res["table_t"] > b - 1.5) & (res["table_t"] <= b)
+        self.assertAlmostEqual(np.max(np.abs(res["table_true"][last, 0])), 10 * math.exp(-59.3 / 30), delta=0.05)
+        res = refgen.generate(refgen.case_params("amplitude_drift"))
+        tr = refgen.truth(res)["test_points"][0]
+        self.assertAlmostEqual(tr["amplitude_deg_at_end"] / tr["amplitude_deg_at_start"], 0.7, places=9)
+
+    def test_repeated_decays_are_smooth(self):
+        res = refgen.generate(refgen.case_params("repeated_decays"))
+        sw = res["swings"][0]
+        t = np.linspace(1.0, 61.0, 600001)
+        e, de = sw.envelope(t)
+        self.assertLess(np.max(np.abs(np.diff(e))), 1e-3)       # continuous
+        self.assertLess(np.max(np.abs(np.diff(de))), 1e-2)      # C1
+        # numeric derivative agrees with the analytic one
+        num = np.gradient(e, t)
+        self.assertLess(np.max(np.abs(num - de)[1:-1]), 1e-3)
+        # re-excited: the amplitude is back near 10 deg every 15 s
+        self.assertGreater(e[np.searchsorted(t, 1.0 + 15.0 + 0.01)], 9.5)
+
+    def test_rates(self):
+        p = quiet(rate_output="frame_average")
+        res = refgen.generate(p)
+        np.testing.assert_allclose(res["gyro_val"] * 2e-3, res["frame_pulses"] * res["pulse_deg"], atol=1e-15)
+        p = quiet(rate_output="sample_at_stamp")
+        res = refgen.generate(p)
+        sw = res["swings"][0]
+        _, r = sw.eval(res["frame_t_true"] - p["imu_delay_ms"] * 1e-3)
+        earth = OMEGA_DEG_S * math.cos(math.radians(40.0))
+        np.testing.assert_allclose(res["gyro_val"][:, 0], r + earth, atol=1e-12)
+
+    def test_sample_and_hold_duplicates_rows(self):
+        p = quiet(rate_output="frame_average", sample_hold_ms=1.0)
+        res = refgen.generate(p)
+        self.assertTrue(np.all(np.diff(res["gyro_t"]) > 0))
+        src = res["gyro_from_frame"]
+        counts = np.bincount(src - src[0])
+        self.assertTrue(set(np.unique(counts[1:-1])) <= {1, 2, 3})
+        self.assertAlmostEqual(np.mean(counts[1:-1]), 2.0, delta=0.01)
+        # every row's stamp is at or after the frame it holds
+        self.assertTrue(np.all(res["gyro_t"] >= res["frame_stamp"][src]))
+
+
+class Output(unittest.TestCase):
+    def read_csv(self, path):
+        with open(path) as fh:
+            rows = [r for r in csv.reader(fh) if r and not r[0].startswith("#")]
+        return rows[0], rows[1:]
+
+    def test_import_directory(self):
+        with tempfile.TemporaryDirectory() as d:
+            out = os.path.join(d, "o")
+            p = refgen.case_params("nominal")
+            p["segments"][0]["duration_s"] = 4.0
+            tr = refgen.write_dir(refgen.generate(p), out)
+            self.assertEqual(sorted(os.listdir(out)), ["gyro.csv", "metadata.json", "table.csv", "truth.json"])
+            meta = load_json(os.path.join(out, "metadata.json"))
+            self.assertEqual(set(meta["bench"]), {"table_read_delay_ms", "board_delay_ms", "pulse_equivalent_deg",
+                                                  "latitude_deg"})
+            self.assertEqual(meta["test_points"], [{"axis": "x", "frequency_hz": 1.0, "amplitude_deg": 3.0,
+                                                    "duration_s": 4.0}])
+            h, rows = self.read_csv(os.path.join(out, "table.csv"))
+            self.assertEqual(h, ["time_s", "x_deg", "y_deg", "z_deg"])
+            t = np.array([float(r[0]) for r in rows])
+            self.assertTrue(np.all(np.diff(t) > 0))
+            q = 0.36 / 3600
+            x = np.array([float(r[1]) for r in rows]) / q
+            self.assertLess(np.max(np.abs(x - np.round(x))), 1e-6)
+            self.assertAlmostEqual(tr["true_lag_ms"], 0.45, places=12)
+            self.assertAlmostEqual(tr["gyro_delay_ms"], 0.22, places=12)
+            self.assertEqual(tr["rows"]["table"], len(rows))
+            # refuses a non-empty directory
+            with self.assertRaises(ValueError):
+                refgen.write_dir(refgen.generate(p), out)
+            refgen.write_dir(refgen.generate(p), out, overwrite=True)
+
+    def test_rates_metadata_keys(self):
+        with tempfile.TemporaryDirectory() as d:
+            for conv in ("frame_average", "sample_at_stamp"):
+                out = os.path.join(d, conv)
+                p = refgen.case_params("rates_" + conv)
+                p["segments"][0]["duration_s"] = 3.0
+                refgen.write_dir(refgen.generate(p), out)
+                meta = load_json(os.path.join(out, "metadata.json"))
+                self.assertEqual(meta["bench"]["gyro_rate_convention"], conv)
+                self.assertEqual(meta["bench"]["gyro_frame_period_ms"], 2.0)
+                h, rows = self.read_csv(os.path.join(out, "gyro.csv"))
+                self.assertEqual(h, ["time_s", "x_rate_deg_s", "y_rate_deg_s", "z_rate_deg_s"])
+
+    def test_continuous_has_no_markers(self):
+        with tempfile.TemporaryDirectory() as d:
+            out = os.path.join(d, "c")
+            p = refgen.case_params("continuous")
+            for s in p["segments"]:
+                s["duration_s"] = 6.0
+            res = refgen.generate(p)
+            tr = refgen.write_dir(res, out)
+            meta = load_json(os.path.join(out, "metadata.json"))
+            self.assertEqual(meta["test_points"], [{"axis": "x"}])
+            h, rows = self.read_csv(os.path.join(out, "table.csv"))
+            self.assertNotIn("test_point", h)
+            self.assertEqual(len(tr["test_points"]), 3)
+            t = np.array([float(r[0]) for r in rows])
+            x = np.array([float(r[1]) for r in rows])
+            # at rest between the test points, swinging inside them
+            (a1, b1), (a2, b2) = tr["test_points"][0]["window_s"], tr["test_points"][1]["window_s"]
+            rest = (t > b1 + 2.5) & (t < a2 - 2.5)
+            self.assertTrue(np.all(x[rest] == 0.0))
+            self.assertAlmostEqual(np.max(np.abs(x[(t > a1) & (t < b1)])), 3.0, delta=0.01)
+            self.assertAlmostEqual(b1 + 2 + 5 + 2, a2, places=9)
+
+    def test_several_test_points_are_marked(self):
+        with tempfile.TemporaryDirectory() as d:
+            out = os.path.join(d, "m")
+            p = refgen.default_params()
+            p["segments"] = [{"axis": "x", "freq_hz": 1.0, "amp_deg": 3.0, "duration_s": 3.0},
+                             {"axis": "y", "freq_hz": 0.5, "amp_deg": 5.0, "duration_s": 4.0}]
+            refgen.write_dir(refgen.generate(p), out)
+            h, rows = self.read_csv(os.path.join(out, "gyro.csv"))
+            self.assertEqual(h[0], "test_point")
+            self.assertEqual({r[0] for r in rows}, {"1", "2"})
+
+    def test_cli(self):
+        with tempfile.TemporaryDirectory() as d:
+            out = os.path.join(d, "cli")
+            rc = refgen.main(["--out", out, "--freq-hz", "2", "--amp-deg", "1", "--duration-s", "3",
+                              "--imu-delay-ms", "0.7", "--bias-deg-h", "1,2,3", "--gyro-sign", "1,-1,1",
+                              "--seed", "5", "--axes-out", "swing"])
+            self.assertEqual(rc, 0)
+            tr = load_json(os.path.join(out, "truth.json"))
+            self.assertEqual(tr["params"]["bias_deg_h"], [1.0, 2.0, 3.0])
+            self.assertEqual(tr["params"]["gyro_sign"], [1, -1, 1])
+            self.assertAlmostEqual(tr["true_lag_ms"], 0.65, places=12)
+            h, _ = self.read_csv(os.path.join(out, "table.csv"))
+            self.assertEqual(h, ["time_s", "x_deg"])
+            self.assertEqual(refgen.main(["--out", out, "--case", "nominal"]), 2)   # not empty
+
+    def test_every_case_generates(self):
+        for name in refgen.CASES:
+            p = refgen.case_params(name)
+            for s in p["segments"]:
+                s["duration_s"] = min(s["duration_s"], 4.0)
+            if p["rekick_period_s"]:
+                p["rekick_period_s"] = 2.0
+                p["rekick_duration_s"] = 0.5
+            res = refgen.generate(p)
+            self.assertGreater(res["table_t"].size, 1000, name)
+
+
+if __name__ == "__main__":
+    unittest.main()
