@@ -86,9 +86,10 @@ void splitFields(std::string_view line, std::vector<std::string_view>& out) {
 
 // Columns a stream may have. Index in this list = column id.
 constexpr std::array<const char*, 5> kTableColumns = {"test_point", "time_s", "x_deg", "y_deg", "z_deg"};
-constexpr std::array<const char*, 7> kGyroColumns = {"test_point", "time_s",        "x_inc_deg",  "y_inc_deg",
-                                                     "z_inc_deg",  "temperature_c", "lost_before"};
-enum Column { kTestPoint = 0, kTime = 1, kAxis0 = 2, kTemperature = 5, kLostBefore = 6 };
+constexpr std::array<const char*, 10> kGyroColumns = {
+    "test_point",  "time_s",       "x_inc_deg",    "y_inc_deg",    "z_inc_deg",
+    "temperature_c", "lost_before", "x_rate_deg_s", "y_rate_deg_s", "z_rate_deg_s"};
+enum Column { kTestPoint = 0, kTime = 1, kAxis0 = 2, kTemperature = 5, kLostBefore = 6, kRate0 = 7 };
 
 std::string list(const char* const* names, std::size_t n) {
   std::string s;
@@ -118,10 +119,19 @@ class CsvStream {
       int id = -1;
       for (std::size_t k = 0; k < count_; ++k)
         if (name == names_[k]) id = static_cast<int>(k);
-      if (id < 0)
+      if (id < 0) {
+        // A column that looks like a rate points to the rules for rates.
+        const bool rateLike = name.find("rate") != std::string::npos || name.find("dps") != std::string::npos ||
+                              name.find("deg_s") != std::string::npos || name.find("deg/s") != std::string::npos;
         return corruptData(path_ + " line " + std::to_string(headerLine_) + ", column " + std::to_string(i + 1) +
                            ": unknown column \"" + name + "\"; this file takes the columns " + list(names_, count_) +
-                           " (any order); rename or delete the column");
+                           " (any order); rename or delete the column" +
+                           (rateLike ? ". Gyro rates are read as x_rate_deg_s, y_rate_deg_s, z_rate_deg_s in the gyro "
+                                       "file, with bench.gyro_rate_convention (\"frame_average\" or "
+                                       "\"sample_at_stamp\") and bench.gyro_frame_period_ms in the metadata "
+                                       "(docs/formats.md, \"Rates\")"
+                                     : ""));
+      }
       if (where_[static_cast<std::size_t>(id)] >= 0)
         return corruptData(path_ + " line " + std::to_string(headerLine_) + ": column \"" + name +
                            "\" appears twice; keep one");
@@ -131,7 +141,7 @@ class CsvStream {
     return Status::ok();
   }
 
-  bool has(int id) const { return where_[static_cast<std::size_t>(id)] >= 0; }
+  bool has(int id) const { return static_cast<std::size_t>(id) < count_ && where_[static_cast<std::size_t>(id)] >= 0; }
   const std::string& path() const { return path_; }
   std::size_t lineNo() const { return lines_.lineNo(); }
 
@@ -241,11 +251,16 @@ Status needsTestPointColumn(const CsvStream& s, std::size_t count) {
 // axis column (noAxisColumn says which), the test point column when there is
 // more than one, strictly increasing times per test point, at least one row.
 // row(tp, timeS) reads the rest of each row.
+bool hasAny(const CsvStream& s, int first) { return s.has(first) || s.has(first + 1) || s.has(first + 2); }
+
 template <typename ReadRow>
 Status parseRows(CsvStream& s, std::size_t pointCount, const std::string& noAxisColumn, const ReadRow& row) {
   FOG_RETURN_IF_ERROR(s.readHeader());
   if (!s.has(kTime)) return corruptData(s.path() + ": missing column \"time_s\" (seconds on the common clock)");
-  if (!s.has(kAxis0) && !s.has(kAxis0 + 1) && !s.has(kAxis0 + 2)) return corruptData(s.path() + ": " + noAxisColumn);
+  const bool rates = s.has(kRate0) || s.has(kRate0 + 1) || s.has(kRate0 + 2);
+  if (hasAny(s, kAxis0) && rates)
+    return corruptData(s.path() + ": both increment (*_inc_deg) and rate (*_rate_deg_s) columns; give one kind");
+  if (!hasAny(s, kAxis0) && !rates) return corruptData(s.path() + ": " + noAxisColumn);
   FOG_RETURN_IF_ERROR(needsTestPointColumn(s, pointCount));
   TimeCheck check(pointCount);
   std::size_t rows = 0;
@@ -277,16 +292,22 @@ Status parseTable(CsvStream& s, std::vector<TestPointData>& points) {
                    });
 }
 
+// Rows of a rate file hold the rates (deg/s) in incrementDeg until
+// convertRates() turns them into increments.
 Status parseGyro(CsvStream& s, std::vector<TestPointData>& points) {
   return parseRows(
       s, points.size(),
-      "no increment column; give at least the swing axis' one (x_inc_deg, y_inc_deg or z_inc_deg)",
+      "no increment column; give at least the swing axis' one (x_inc_deg, y_inc_deg or z_inc_deg), or rates "
+      "(x_rate_deg_s ...) with their convention in the metadata",
       [&](std::size_t tp, double timeS) {
         ImuSample sample;
         sample.timeS = timeS;
-        for (int a = 0; a < kAxisCount; ++a)
+        for (int a = 0; a < kAxisCount; ++a) {
           if (s.has(kAxis0 + a))
             FOG_RETURN_IF_ERROR(s.number(kAxis0 + a, sample.incrementDeg[static_cast<std::size_t>(a)]));
+          if (s.has(kRate0 + a))
+            FOG_RETURN_IF_ERROR(s.number(kRate0 + a, sample.incrementDeg[static_cast<std::size_t>(a)]));
+        }
         if (s.has(kTemperature)) FOG_RETURN_IF_ERROR(s.number(kTemperature, sample.temperatureC));
         if (s.has(kLostBefore)) {
           std::uint64_t lost = 0;
@@ -297,6 +318,75 @@ Status parseGyro(CsvStream& s, std::vector<TestPointData>& points) {
         points[tp].imu.push_back(sample);
         return Status::ok();
       });
+}
+
+// Turns rates (deg/s, held in incrementDeg) into increments, exactly as
+// their convention says (docs/formats.md, "Rates"). Sample-and-hold rows (a
+// board that read the IMU faster than it sends repeats each value) are
+// dropped first: the first row of each run is where the new value arrived.
+Status convertRates(std::vector<TestPointData>& points, const detail::Metadata& meta, const std::string& gyroPath,
+                    const std::string& metaPath, std::vector<std::string>& notes) {
+  if (meta.rateConvention == detail::RateConvention::kNone)
+    return corruptData(gyroPath + " holds rates (*_rate_deg_s), but " + metaPath +
+                       " does not say how they were sampled: set bench.gyro_rate_convention to \"frame_average\" "
+                       "(each rate is its frame's angle increment over the IMU's frame period; also give "
+                       "bench.gyro_frame_period_ms) or \"sample_at_stamp\" (each rate is the rate at its row's time "
+                       "stamp). The choice moves the delay by about half a frame, so it is never guessed "
+                       "(docs/formats.md, \"Rates\")");
+  const bool frameAverage = meta.rateConvention == detail::RateConvention::kFrameAverage;
+  if (frameAverage && !(meta.gyroFramePeriodMs > 0.0))
+    return corruptData(metaPath + ": bench.gyro_rate_convention \"frame_average\" needs bench.gyro_frame_period_ms, "
+                                  "the IMU's own frame period (increment = rate x frame period; the differences of "
+                                  "the bench's stamps carry their jitter)");
+  std::size_t dropped = 0;
+  for (auto& p : points) {
+    auto& imu = p.imu;
+    if (imu.size() < 3) continue;
+    std::size_t repeats = 0;
+    for (std::size_t k = 1; k < imu.size(); ++k) repeats += imu[k].incrementDeg == imu[k - 1].incrementDeg;
+    if (p.kind == TestPointKind::kSwing && repeats * 5 >= imu.size()) {
+      std::vector<ImuSample> kept{imu.front()};
+      for (std::size_t k = 1; k < imu.size(); ++k)
+        if (imu[k].incrementDeg != imu[k - 1].incrementDeg) kept.push_back(imu[k]);
+      dropped += imu.size() - kept.size();
+      imu = std::move(kept);
+    }
+    if (frameAverage) {
+      const double frameS = meta.gyroFramePeriodMs * 1e-3;
+      for (auto& s : imu)
+        for (auto& v : s.incrementDeg) v *= frameS;
+    } else {
+      // Trapezoid between stamps: symmetric about the interval's middle, so
+      // it adds no delay; across lost frames it covers the whole gap.
+      std::vector<std::array<double, kAxisCount>> rate(imu.size());
+      for (std::size_t k = 0; k < imu.size(); ++k) rate[k] = imu[k].incrementDeg;
+      for (std::size_t k = 0; k < imu.size(); ++k)
+        for (std::size_t a = 0; a < kAxisCount; ++a)
+          imu[k].incrementDeg[a] = k == 0 ? 0.0 : 0.5 * (rate[k][a] + rate[k - 1][a]) * (imu[k].timeS - imu[k - 1].timeS);
+      for (auto& s : imu) s.lostBefore = 0;
+    }
+  }
+  notes.push_back(std::string("gyro rates converted to increments: ") +
+                  (frameAverage ? "frame averages x " + std::to_string(meta.gyroFramePeriodMs).substr(0, 6) +
+                                      " ms frame period"
+                                : "rates at the stamps, integrated between stamps (trapezoid)"));
+  if (dropped > 0)
+    notes.push_back("dropped " + std::to_string(dropped) +
+                    " repeated gyro rows (sample-and-hold: the bench read the IMU faster than it sends; the first "
+                    "row of each repeated value is kept)");
+  return Status::ok();
+}
+
+// "import A (recorded by: import B (recorded by: bench))" never nests: an
+// import of an export of an import keeps the original recorder's words.
+std::string originalSource(std::string source) {
+  while (source.rfind("import ", 0) == 0) {
+    const auto at = source.find(" (recorded by: ");
+    if (at == std::string::npos) return {};
+    source = source.substr(at + 15);
+    if (!source.empty() && source.back() == ')') source.pop_back();
+  }
+  return source;
 }
 
 std::string upper(Axis a) {
@@ -326,7 +416,6 @@ Result<ImportedSession> importTexts(const std::string& what, const std::string& 
   FOG_RETURN_IF_ERROR(parseGyro(gyro, points));
 
   ImportedSession out;
-  out.notes.push_back("imported " + what);
   // The swing axis must be there; the others are read as 0 (another bench may
   // record only the axis it swings).
   for (const auto& p : points) {
@@ -336,24 +425,26 @@ Result<ImportedSession> importTexts(const std::string& what, const std::string& 
       return corruptData(tablePath + ": no \"" + kTableColumns[static_cast<std::size_t>(kAxis0 + a)] +
                          "\" column, but test point " + std::to_string(p.index + 1) + " swings the " + upper(p.axis) +
                          " axis (" + metaPath + "); add the column or correct the axis");
-    if (!gyro.has(kAxis0 + a))
+    if (!gyro.has(kAxis0 + a) && !gyro.has(kRate0 + a))
       return corruptData(gyroPath + ": no \"" + kGyroColumns[static_cast<std::size_t>(kAxis0 + a)] +
                          "\" column, but test point " + std::to_string(p.index + 1) + " swings the " + upper(p.axis) +
                          " axis (" + metaPath + "); add the column or correct the axis");
   }
+  // (Axis and temperature columns the docs allow to leave out read as 0
+  // without a note: only what the user must know is said.)
+  if (hasAny(gyro, kRate0)) FOG_RETURN_IF_ERROR(convertRates(points, *meta, gyroPath, metaPath, out.notes));
   for (int a = 0; a < kAxisCount; ++a) {
-    if (!table.has(kAxis0 + a))
-      out.notes.push_back(tablePath + " has no " + kTableColumns[static_cast<std::size_t>(kAxis0 + a)] +
-                          " column: " + upper(static_cast<Axis>(a)) + " angles read as 0");
-    if (!gyro.has(kAxis0 + a))
-      out.notes.push_back(gyroPath + " has no " + kGyroColumns[static_cast<std::size_t>(kAxis0 + a)] +
-                          " column: " + upper(static_cast<Axis>(a)) + " increments read as 0");
+    if (meta->gyroSign[static_cast<std::size_t>(a)] > 0) continue;
+    for (auto& p : points)
+      for (auto& s : p.imu) s.incrementDeg[static_cast<std::size_t>(a)] = -s.incrementDeg[static_cast<std::size_t>(a)];
+    out.notes.push_back("gyro " + upper(static_cast<Axis>(a)) +
+                        " axis mounted the other way round (bench.gyro_sign -1): its increments are negated");
   }
-  if (!gyro.has(kTemperature)) out.notes.push_back(gyroPath + " has no temperature_c column: temperatures read as 0");
 
   SessionInfo& info = out.info;
   info = meta->info;
-  info.source = "import " + what + (meta->info.source.empty() ? "" : " (recorded by: " + meta->info.source + ")");
+  const std::string original = originalSource(meta->info.source);
+  info.source = "import " + what + (original.empty() ? "" : " (recorded by: " + original + ")");
   Recording& rec = out.recording;
   rec.counterHz = info.bench.counterHz;
   rec.counterBits = info.bench.counterBits;

@@ -158,7 +158,8 @@ Result<Metadata> metadataFromJson(const std::string& path, const std::string& te
   BenchSettings& b = s.bench;
   FOG_RETURN_IF_ERROR(bench.checkKeys({"table_read_delay_ms", "table_read_delay_std_ms", "board_delay_ms",
                                        "board_delay_std_ms", "latitude_deg", "pulse_equivalent_deg", "counter_hz",
-                                       "counter_bits"}));
+                                       "counter_bits", "gyro_rate_convention", "gyro_frame_period_ms",
+                                       "gyro_sign"}));
   FOG_RETURN_IF_ERROR(bench.number("table_read_delay_ms", b.tableReadDelayMs, true));
   FOG_RETURN_IF_ERROR(bench.number("table_read_delay_std_ms", b.tableReadDelayStdMs, false, 0.0));
   FOG_RETURN_IF_ERROR(bench.number("board_delay_ms", b.boardDelayMs, true));
@@ -174,6 +175,31 @@ Result<Metadata> metadataFromJson(const std::string& path, const std::string& te
   FOG_RETURN_IF_ERROR(bench.integer("counter_bits", bits));
   if (bits < 1 || bits > 64) return corruptData(path + ": \"bench.counter_bits\" must be 1 .. 64");
   b.counterBits = static_cast<int>(bits);
+  std::string convention;
+  FOG_RETURN_IF_ERROR(bench.string("gyro_rate_convention", convention));
+  if (convention == "frame_average") meta.rateConvention = RateConvention::kFrameAverage;
+  else if (convention == "sample_at_stamp") meta.rateConvention = RateConvention::kSampleAtStamp;
+  else if (!convention.empty())
+    return corruptData(path + ": \"bench.gyro_rate_convention\" must be \"frame_average\" (each rate is its frame's "
+                              "increment over the IMU's frame period) or \"sample_at_stamp\" (each rate is the "
+                              "rate at its row's time stamp), not \"" + convention + "\"");
+  FOG_RETURN_IF_ERROR(bench.number("gyro_frame_period_ms", meta.gyroFramePeriodMs, false, 0.0));
+  if (bench.has("gyro_frame_period_ms") && !(meta.gyroFramePeriodMs > 0.0))
+    return corruptData(path + ": \"bench.gyro_frame_period_ms\" must be > 0 (the IMU's own frame period)");
+  if (bench.has("gyro_sign")) {
+    const Json& signs = j.at("bench").at("gyro_sign");
+    if (!signs.is_object())
+      return corruptData(path + ": \"bench.gyro_sign\" must be an object such as {\"x\": -1} (the sense of each "
+                                "gyro axis against the table's)");
+    for (const auto& item : signs.items()) {
+      auto axis = parseAxis(item.key());
+      const Json& v = item.value();
+      if (!axis || !v.is_number_integer() || (v.get<std::int64_t>() != 1 && v.get<std::int64_t>() != -1))
+        return corruptData(path + ": \"bench.gyro_sign\" takes the axes \"x\", \"y\", \"z\" with 1 or -1, not \"" +
+                           item.key() + "\": " + v.dump());
+      meta.gyroSign[static_cast<std::size_t>(*axis)] = static_cast<int>(v.get<std::int64_t>());
+    }
+  }
 
   if (!j.contains("test_points") || !j.at("test_points").is_array() || j.at("test_points").empty())
     return corruptData(path + ": missing \"test_points\": a non-empty array with one {\"axis\": \"x\", ...} per "

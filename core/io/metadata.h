@@ -3,6 +3,7 @@
 // the exporter and the importer so that they cannot drift apart. Internal to
 // fog::io.
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -25,9 +26,21 @@ struct MetaTestPoint {
   TestPointKind kind = TestPointKind::kSwing;  // "kind": "static" is written only for static segments
 };
 
+// How a gyro stream of rates (x_rate_deg_s ...) was sampled
+// (docs/formats.md, "Rates"); the importer converts them to increments.
+enum class RateConvention {
+  kNone,           // the gyro file holds increments
+  kFrameAverage,   // rate = the frame's increment / the IMU's frame period
+  kSampleAtStamp,  // rate = the instantaneous rate at the row's time stamp
+};
+
 struct Metadata {
   SessionInfo info;  // plan left empty; built by the importer from testPoints
   std::vector<MetaTestPoint> testPoints;
+  // Import-time facts about the gyro stream, applied where the data enter.
+  RateConvention rateConvention = RateConvention::kNone;
+  double gyroFramePeriodMs = 0.0;  // the IMU's own frame period; 0 = not stated
+  std::array<int, kAxisCount> gyroSign{1, 1, 1};  // -1: axis mounted the other way round
   bool hasStream = false;
   StreamHealth stream;
 };
