@@ -139,40 +139,6 @@ void addValidityChecks(TestPointResult& r, const Channels& ch, const std::vector
     r.checks.push_back(c);
   }
 
-  // Table and gyro stamped on one clock at one rate: their periods agree and
-  // the per-period lag has no trend. The period uncertainties are raised by
-  // the same factor as the lag's when the noise model fell short.
-  {
-    const double honesty = r.fitLagStdMs > 0.0 ? std::max(1.0, r.lagStdMs / r.fitLagStdMs) : 1.0;
-    const double tp = r.tableFit.periodMs, gp = r.gyroFit.periodMs;
-    r.rateErrorPpm = (gp / tp - 1.0) * 1e6;
-    r.rateErrorStdPpm = honesty * std::hypot(r.tableFit.periodStdMs, r.gyroFit.periodStdMs) / tp * 1e6;
-    const double zPeriod = r.rateErrorStdPpm > 0.0 ? r.rateErrorPpm / r.rateErrorStdPpm : 0.0;
-    double zTrend = 0.0;
-    if (lags.size() >= 5)
-      if (auto line = fitLine(times, lags); line && line->slopeStd > 0.0) {
-        r.lagDriftPpm = line->slope * 1e3;  // ms per s
-        r.lagDriftStdPpm = line->slopeStd * 1e3;
-        zTrend = line->slope / line->slopeStd;
-      }
-    ValidityCheck c{"clock_rate", std::abs(zPeriod) < kClockSignificance && std::abs(zTrend) < kClockSignificance,
-                    ""};
-    const std::string figures = "periods differ by " + fmt(r.rateErrorPpm, 2) + " ± " + fmt(r.rateErrorStdPpm, 2) +
-                                " ppm (" + fmt(zPeriod, 1) + " σ), per-period lag drifts " + fmt(r.lagDriftPpm, 2) +
-                                " ± " + fmt(r.lagDriftStdPpm, 2) + " ppm (" + fmt(zTrend, 1) + " σ)";
-    if (c.passed) {
-      c.detail = "table and gyro stamps keep one rate: " + figures;
-    } else {
-      const double ppm = std::abs(zTrend) > std::abs(zPeriod) ? r.lagDriftPpm : r.rateErrorPpm;
-      c.detail = "the gyro's time stamps run " + fmt(std::abs(ppm), 1) + " ppm " + (ppm > 0 ? "fast" : "slow") +
-                 " against the table's (" + figures +
-                 "): the two streams are not stamped on one clock at one rate, so their phase difference is not a "
-                 "delay. Stamp both with the sampling board's common counter (or correct the clock rate) and "
-                 "record again";
-    }
-    r.checks.push_back(c);
-  }
-
   // A steady sinusoid: what the fits leave is noise, not shape.
   {
     const double windowS = std::max(periodS / 20.0, 3.0 * periodS / std::max(1.0, static_cast<double>(r.tableSamples) / r.periods));
@@ -218,7 +184,7 @@ void addValidityChecks(TestPointResult& r, const Channels& ch, const std::vector
                  "noise); the delay is refused. Check the table's servo and amplitude, and record a steady swing";
       // A smoothly decaying swing (free pendulum, table coasting down): the
       // lag of a damped-sine fit is offered beside the refusal.
-      if (amplitudeLine && r.amplitudeChangeFraction < 0.0 && r.magnitudeRatio > 0.0) {
+      if (amplitudeLine && r.amplitudeChangeFraction < -kAmplitudeChangeLimit && r.magnitudeRatio > 0.0) {
         const double meanAmplitude = std::accumulate(amplitudes.begin(), amplitudes.end(), 0.0) /
                                      static_cast<double>(amplitudes.size());
         const double lambda = -amplitudeLine->slope / meanAmplitude;
@@ -232,6 +198,48 @@ void addValidityChecks(TestPointResult& r, const Channels& ch, const std::vector
                       " ms, if the decay is the table's true motion";
         }
       }
+    }
+    r.checks.push_back(c);
+  }
+
+  // Table and gyro stamped on one clock at one rate: their periods agree and
+  // the per-period lag has no trend. The period uncertainties are raised by
+  // the same factor as the lag's when the noise model fell short.
+  {
+    const double honesty = r.fitLagStdMs > 0.0 ? std::max(1.0, r.lagStdMs / r.fitLagStdMs) : 1.0;
+    const double tp = r.tableFit.periodMs, gp = r.gyroFit.periodMs;
+    r.rateErrorPpm = (gp / tp - 1.0) * 1e6;
+    r.rateErrorStdPpm = honesty * std::hypot(r.tableFit.periodStdMs, r.gyroFit.periodStdMs) / tp * 1e6;
+    const double zPeriod = r.rateErrorStdPpm > 0.0 ? r.rateErrorPpm / r.rateErrorStdPpm : 0.0;
+    double zTrend = 0.0;
+    if (lags.size() >= 5)
+      if (auto line = fitLine(times, lags); line && line->slopeStd > 0.0) {
+        r.lagDriftPpm = line->slope * 1e3;  // ms per s
+        r.lagDriftStdPpm = line->slopeStd * 1e3;
+        zTrend = line->slope / line->slopeStd;
+      }
+    ValidityCheck c{"clock_rate", std::abs(zPeriod) < kClockSignificance && std::abs(zTrend) < kClockSignificance,
+                    ""};
+    // A swing that is not a steady sinusoid bends the per-period lags and the
+    // fitted periods: their timing figures then say nothing about the clocks.
+    const bool steady = r.checks.back().id == "steady_sine" && r.checks.back().passed;
+    const std::string figures = "periods differ by " + fmt(r.rateErrorPpm, 2) + " ± " + fmt(r.rateErrorStdPpm, 2) +
+                                " ppm (" + fmt(zPeriod, 1) + " σ), per-period lag drifts " + fmt(r.lagDriftPpm, 2) +
+                                " ± " + fmt(r.lagDriftStdPpm, 2) + " ppm (" + fmt(zTrend, 1) + " σ)";
+    if (!steady) {
+      c.passed = true;
+      c.judged = false;
+      c.detail = "not judged: the swing is not a steady sinusoid (steady_sine), which moves the fitted periods and "
+                 "the per-period lags; " + figures;
+    } else if (c.passed) {
+      c.detail = "table and gyro stamps keep one rate: " + figures;
+    } else {
+      const double ppm = std::abs(zTrend) > std::abs(zPeriod) ? r.lagDriftPpm : r.rateErrorPpm;
+      c.detail = "the gyro's time stamps run " + fmt(std::abs(ppm), 1) + " ppm " + (ppm > 0 ? "fast" : "slow") +
+                 " against the table's (" + figures +
+                 "): the two streams are not stamped on one clock at one rate, so their phase difference is not a "
+                 "delay. Stamp both with the sampling board's common counter (or correct the clock rate) and "
+                 "record again";
     }
     r.checks.push_back(c);
   }

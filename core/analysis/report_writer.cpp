@@ -126,7 +126,7 @@ std::string formatReportText(const DelayReport& report, const ReportContext& con
     for (const auto& w : p.warnings) o << "  warning: " << w << "\n";
     o << "  checks:\n";
     for (const auto& check : p.checks)
-      o << "    " << (check.passed ? "ok      " : "FAILED  ") << check.id << ": " << check.detail << "\n";
+      o << "    " << (!check.judged ? "n/a     " : check.passed ? "ok      " : "FAILED  ") << check.id << ": " << check.detail << "\n";
     o << "  verdict: " << upper(verdictName(pv.verdict)) << (pv.verdict == Verdict::kInvalid ? " (delay refused)" : "")
       << "\n";
     for (const auto& why : pv.reasons) o << "    " << why << "\n";
@@ -238,7 +238,8 @@ std::string formatReportJson(const DelayReport& report, const ReportContext& con
     tp["period_scatter_ms"] = p.periodScatterMs;
     json checks = json::array();
     for (const auto& check : p.checks)
-      checks.push_back({{"id", check.id}, {"passed", check.passed}, {"detail", check.detail}});
+      checks.push_back(
+          {{"id", check.id}, {"passed", check.passed}, {"judged", check.judged}, {"detail", check.detail}});
     tp["checks"] = checks;
     if (p.damped)
       tp["damped_fit"] = {{"lag_ms", p.damped->lagMs},

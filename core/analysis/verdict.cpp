@@ -43,7 +43,7 @@ PointVerdict judgePoint(const TestPointResult& p, double limitMs) {
   v.index = p.index;
   v.upperMs = p.imuDelayMs + kVerdictCoverageFactor * p.imuDelayStdMs;
   for (const auto& c : p.checks)
-    if (!c.passed) v.reasons.push_back(c.detail);
+    if (c.judged && !c.passed) v.reasons.push_back(c.detail);
   if (!std::isfinite(p.imuDelayMs) || !std::isfinite(p.imuDelayStdMs))
     v.reasons.push_back("the delay or its uncertainty is not a finite number");
   if (!v.reasons.empty()) {

@@ -339,18 +339,48 @@ Status convertRates(std::vector<TestPointData>& points, const detail::Metadata& 
                                   "the IMU's own frame period (increment = rate x frame period; the differences of "
                                   "the bench's stamps carry their jitter)");
   std::size_t dropped = 0;
+  double holdShiftS = 0.0;
   for (auto& p : points) {
     auto& imu = p.imu;
     if (imu.size() < 3) continue;
+    std::vector<double> readIntervals;
+    for (std::size_t k = 1; k < imu.size(); ++k) readIntervals.push_back(imu[k].timeS - imu[k - 1].timeS);
+    // A held value repeats sooner than the IMU sends a frame; two real frames
+    // may carry the same (quantised) rate, but about a frame period apart. The
+    // frame period is the stated one, or the typical time between changes.
+    std::vector<double> changes;
+    double lastChange = imu.front().timeS;
     std::size_t repeats = 0;
-    for (std::size_t k = 1; k < imu.size(); ++k) repeats += imu[k].incrementDeg == imu[k - 1].incrementDeg;
-    if (p.kind == TestPointKind::kSwing && repeats * 5 >= imu.size()) {
-      std::vector<ImuSample> kept{imu.front()};
-      for (std::size_t k = 1; k < imu.size(); ++k)
-        if (imu[k].incrementDeg != imu[k - 1].incrementDeg) kept.push_back(imu[k]);
-      dropped += imu.size() - kept.size();
-      imu = std::move(kept);
+    for (std::size_t k = 1; k < imu.size(); ++k) {
+      if (imu[k].incrementDeg == imu[k - 1].incrementDeg) {
+        ++repeats;
+        continue;
+      }
+      changes.push_back(imu[k].timeS - lastChange);
+      lastChange = imu[k].timeS;
     }
+    if (repeats * 5 < imu.size() || changes.empty()) continue;  // no sample-and-hold
+    double frameS = meta.gyroFramePeriodMs * 1e-3;
+    if (!(frameS > 0.0)) {
+      std::nth_element(changes.begin(), changes.begin() + static_cast<std::ptrdiff_t>(changes.size() / 2), changes.end());
+      frameS = changes[changes.size() / 2];
+    }
+    std::vector<ImuSample> kept{imu.front()};
+    for (std::size_t k = 1; k < imu.size(); ++k)
+      if (imu[k].incrementDeg != kept.back().incrementDeg || imu[k].timeS - kept.back().timeS > 0.9 * frameS)
+        kept.push_back(imu[k]);
+    dropped += imu.size() - kept.size();
+    // The first read after a frame arrived comes on average half a read
+    // interval later: the kept rows move back by that mean wait.
+    std::nth_element(readIntervals.begin(), readIntervals.begin() + static_cast<std::ptrdiff_t>(readIntervals.size() / 2),
+                     readIntervals.end());
+    holdShiftS = 0.5 * readIntervals[readIntervals.size() / 2];
+    for (auto& s : kept) s.timeS -= holdShiftS;
+    imu = std::move(kept);
+  }
+  for (auto& p : points) {
+    auto& imu = p.imu;
+    if (imu.empty()) continue;
     if (frameAverage) {
       const double frameS = meta.gyroFramePeriodMs * 1e-3;
       for (auto& s : imu)
@@ -370,10 +400,15 @@ Status convertRates(std::vector<TestPointData>& points, const detail::Metadata& 
                   (frameAverage ? "frame averages x " + std::to_string(meta.gyroFramePeriodMs).substr(0, 6) +
                                       " ms frame period"
                                 : "rates at the stamps, integrated between stamps (trapezoid)"));
-  if (dropped > 0)
+  if (dropped > 0) {
+    char wait[160];
+    std::snprintf(wait, sizeof wait, "%.4g ms (+/- %.2g ms if reads and frames are locked)", holdShiftS * 1e3,
+                  holdShiftS * 2e3 / std::sqrt(12.0));
     notes.push_back("dropped " + std::to_string(dropped) +
-                    " repeated gyro rows (sample-and-hold: the bench read the IMU faster than it sends; the first "
-                    "row of each repeated value is kept)");
+                    " repeated gyro rows (sample-and-hold: the bench read the IMU faster than it sends); the first "
+                    "row of each value is kept and moved back by the mean wait between a frame's arrival and the "
+                    "bench's next read, " + std::string(wait));
+  }
   return Status::ok();
 }
 
