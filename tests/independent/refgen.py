@@ -256,26 +256,33 @@ def earth_rate_ned_deg_s(lat_deg):
     return np.array([om * math.cos(lat), 0.0, -om * math.sin(lat)])
 
 
+def _rot_t(r, u):
+    """R^T u for rotation matrices r (n, 3, 3) or (3, 3) and vectors u (n, 3)
+    or (3,): sum_j R[j, i] u[j]."""
+    return (r * u[..., :, None]).sum(axis=-2)
+
+
 def body_rates(angles, rates, p):
     """Body angular rate (deg/s), (n, 3), for table angles and angle rates
-    (n, 3 each, columns x, y, z) in the table's axis order, including the
-    Earth rate rotated into the body frame at every sample."""
-    order = p["axis_order"]
+    (n, 3 each, columns x, y, z), including the Earth rate rotated into the
+    body frame at every sample.
+
+    With C = R_h R_1 R_2 R_3 (heading, then the table axes outer to inner):
+        omega_b = C^T omega_n + sum_k (R_{k+1} .. R_3)^T e_k rate_k,
+    evaluated as u = R_h^T omega_n; u = R_k^T u + e_k rate_k for k = 1, 2, 3
+    with the proper 3x3 rotation matrices of rot()."""
     n = angles.shape[0]
-    mats = [rot(ax, angles[:, AXES.index(ax)]) for ax in order]   # outer .. inner
-    # Table part: omega_b = sum_k (R_{k+1} ... R_last)^T e_k * rate_k.
-    omega = np.zeros((n, 3))
-    inner = np.broadcast_to(np.eye(3), (n, 3, 3))   # product of the rotations inside axis k
-    for k in range(len(order) - 1, -1, -1):
-        ax = AXES.index(order[k])
-        # inner^T e_ax = row ax of inner... (inner^T)[:, :, ax] = inner[:, ax, :]
-        omega += inner[:, ax, :] * rates[:, ax:ax + 1]
-        inner = np.matmul(mats[k], inner)
-    # Now inner = R_1 R_2 R_3 = C_table; C = R_z(heading) C_table.
-    c_nb = np.matmul(rot("z", p["heading_deg"]), inner)
     w_n = earth_rate_ned_deg_s(p["latitude_deg"])
-    omega += np.einsum("nji,j->ni", c_nb, w_n)     # C^T w_n
-    return omega
+    u = np.tile(_rot_t(rot("z", p["heading_deg"]), w_n), (n, 1))
+    for ax in p["axis_order"]:                       # outer .. inner
+        i = AXES.index(ax)
+        a = angles[:, i]
+        if n and np.all(a == a[0]):
+            u = u @ rot(ax, a[0])                    # an axis at rest: one matrix; (R^T u)^T = u^T R
+        else:
+            u = _rot_t(rot(ax, a), u)
+        u[:, i] += rates[:, i]
+    return u
 
 
 # --------------------------------------------------------------------------
