@@ -46,17 +46,21 @@ usage:
       incomplete, keeping everything received (docs/serial.md).
   fogbench-cli ports
       List the serial ports (Qt build).
-  fogbench-cli analyze FILE [constants] [--json] [--no-store]
+  fogbench-cli analyze FILE [constants] [--limit-ms 0.8] [--json] [--no-store]
       The same report from a saved raw sampling-board byte stream, or from a
       session file (its own bench constants unless given; the result is stored
-      in the session as a new row unless --no-store).
+      in the session as a new row unless --no-store). The verdict is pass, fail
+      (IMU delay + 2 sigma >= limit) or invalid (a validity check failed:
+      reversed axis, clock rate, not a steady sinusoid, negative delay).
   fogbench-cli sessions DIR [--json]
       List the sessions in a folder: date, operator, IMU, axes, state, latest lag.
   fogbench-cli replay SESSION.fbs [--speed X | --afap] [constants] [--json]
       Feed a session's raw stream through the decoder at X times real time
       (default 1) or as fast as possible, and report.
-  fogbench-cli import DIR | META.json TABLE.csv GYRO.csv --out SESSION.fbs [--operator NAME ...]
-      Make a session of data from another bench (the CSV layout of docs/formats.md).
+  fogbench-cli import DIR | META.json TABLE.csv GYRO.csv --out SESSION.fbs [--segment auto|S-E,...]
+                     [--operator NAME ...]
+      Make a session of data from another bench (the CSV layout of docs/formats.md);
+      --segment cuts a continuous recording into its steady-swing windows.
   fogbench-cli export SESSION.fbs [--csv DIR] [--results-json FILE.json] [--overwrite] [constants]
       Decoded samples, fits and residuals as CSV (readable back by import);
       the stored results and the current analysis as JSON.
@@ -67,8 +71,8 @@ usage:
       Monte Carlo study of both paper conditions (docs/accuracy.md).
   fogbench-cli report (SESSION.fbs | FILE.bin | --preset NAME [--seed N]) [--pdf OUT.pdf] [--png-dir DIR [--dpi 100]]
                       [--limit-ms 0.8] [--imu-model M --imu-serial S --operator NAME] [constants]
-      The calibration report (docs/report.md): PASS when IMU delay + 2 sigma < limit;
-      a session brings its own identity and constants.
+      The calibration report (docs/report.md): PASS when every validity check passes
+      and IMU delay + 2 sigma < limit; a session brings its own identity and constants.
   fogbench-cli diagnose SESSION.fbs|FILE.bin [--json] [--seeds K] [--threads T] [constants]
       Sim-to-real gap diagnosis (docs/diagnosis.md): where real and simulated data
       differ, which effect explains it, held-out shrink, alias groups, verdict.
@@ -83,6 +87,7 @@ usage:
 
 constants: --read-delay-ms (0.05) --read-delay-std-ms (0) --board-delay-ms (0.28)
            --board-delay-std-ms (0) --pulse-equivalent-deg (when the stream lacks it)
+           --gyro-sign x=-1[,y=-1,z=-1] (a gyro axis mounted the other way round)
 exit codes: 0 ok, 1 the data gave no result, 2 bad command line or input.
 )";
 

@@ -221,6 +221,7 @@ int replayCommand(CliArguments& args) {
 int importCommand(CliArguments& args) {
   auto out = readSessionOutput(args);
   if (!out) return fail(out.status(), 2);
+  const auto segment = args.text("segment");
   if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
   if (!*out) return fail(invalidArgument("import needs --out SESSION.fbs: the session file to create"), 2);
   const auto& inputs = args.positionals();
@@ -228,6 +229,32 @@ int importCommand(CliArguments& args) {
     return fail(invalidArgument("import takes one DIR (metadata.json, table.csv, gyro.csv) or those three FILES"), 2);
   auto imported = inputs.size() == 1 ? io::importCsvDirectory(inputs[0]) : io::importCsvFiles(inputs);
   if (!imported) return fail(imported.status(), 2);
+  if (segment) {
+    // A continuous recording without test-point markers: one test point per
+    // steady-swing window, found (auto) or given by the user.
+    auto& points = imported->recording.testPoints;
+    Result<std::vector<analysis::SwingWindow>> windows =
+        *segment == "auto"
+            ? (points.size() == 1 ? analysis::findSwingWindows(points.front().table, points.front().axis)
+                                  : Result<std::vector<analysis::SwingWindow>>(invalidArgument(
+                                        "--segment auto cuts one continuous recording; this import holds " +
+                                        std::to_string(points.size()) + " test points already")))
+            : analysis::parseSwingWindows(*segment);
+    if (!windows) return fail(windows.status(), 2);
+    if (auto s = io::splitIntoSwingWindows(*imported, *windows); !s.isOk()) return fail(s, 2);
+    std::cout << "Swing windows (" << (*segment == "auto" ? "found" : "given") << "; override with --segment "
+              << "START-END,...):\n";
+    for (std::size_t i = 0; i < windows->size(); ++i) {
+      const auto& w = (*windows)[i];
+      char line[200];
+      if (w.frequencyHz > 0.0)
+        std::snprintf(line, sizeof line, "  test point %zu: %.3f - %.3f s, %.5g Hz / %.4g deg (%.1f periods)\n",
+                      i + 1, w.startS, w.endS, w.frequencyHz, w.amplitudeDeg, (w.endS - w.startS) * w.frequencyHz);
+      else
+        std::snprintf(line, sizeof line, "  test point %zu: %.3f - %.3f s\n", i + 1, w.startS, w.endS);
+      std::cout << line;
+    }
+  }
 
   const std::string from = inputs.size() == 1 ? inputs[0] : inputs[0] + ", " + inputs[1] + ", " + inputs[2];
   // Metadata given on the command line wins over the files'.

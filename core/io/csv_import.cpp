@@ -587,4 +587,31 @@ Result<ImportedSession> importCsvFiles(const std::vector<std::string>& paths) {
                      paths[*table], texts[*table], paths[*gyro], texts[*gyro]);
 }
 
+Status splitIntoSwingWindows(ImportedSession& imported, const std::vector<analysis::SwingWindow>& windows) {
+  auto& points = imported.recording.testPoints;
+  if (points.size() != 1 || points.front().kind != TestPointKind::kSwing)
+    return invalidArgument("--segment cuts one continuous swing recording (metadata with one test point); this one "
+                           "holds " + std::to_string(points.size()) + " test points already");
+  if (windows.empty()) return invalidArgument("no swing windows to cut the recording into");
+  const Axis axis = points.front().axis;
+  auto cut = analysis::splitIntoWindows(points.front(), windows);
+  for (const auto& tp : cut)
+    if (tp.table.size() < 16 || tp.imu.size() < 16)
+      return invalidArgument("the window of test point " + std::to_string(tp.index + 1) +
+                             " holds too few samples; check the window times against the recording's time_s");
+  TestPlan plan;
+  plan.restBetweenS = imported.info.plan.restBetweenS;
+  for (const auto& w : windows) {
+    TestPoint p;
+    p.axis = axis;
+    p.frequencyHz = w.frequencyHz;
+    p.amplitudeDeg = w.amplitudeDeg;
+    p.durationS = w.endS - w.startS;
+    plan.points.push_back(p);
+  }
+  imported.info.plan = plan;
+  points = std::move(cut);
+  return Status::ok();
+}
+
 }  // namespace fog::io

@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "analysis/delay_analysis.h"
+#include "analysis/swing_windows.h"
 #include "common/recording.h"
 #include "common/session_info.h"
 #include "common/status.h"
@@ -52,5 +53,10 @@ Result<ImportedSession> importCsvDirectory(const std::string& dir);
 // y_inc_deg or z_inc_deg), the table stream the one with an angle column
 // (x_deg, y_deg or z_deg).
 Result<ImportedSession> importCsvFiles(const std::vector<std::string>& paths);
+
+// A continuous recording (one swing test point, no test-point markers) cut
+// into one test point per window (analysis/swing_windows.h); the plan
+// follows. Fails when the import holds more than one test point.
+Status splitIntoSwingWindows(ImportedSession& imported, const std::vector<analysis::SwingWindow>& windows);
 
 }  // namespace fog::io

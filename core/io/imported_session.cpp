@@ -7,7 +7,9 @@ namespace fog::io {
 
 Status saveImportedSession(const ImportedSession& imported, const std::string& from, const std::string& path) {
   SessionInfo info = imported.info;
-  info.source = "import of " + from + (info.source.empty() ? "" : " (" + info.source + ")");
+  // The importer's source already says where the files were and who recorded
+  // them ("import run7 (recorded by: ...)"); it is not wrapped again.
+  if (info.source.empty()) info.source = "import " + from;
   if (info.softwareVersion.empty()) info.softwareVersion = std::string("unknown; imported by fogbench ") + FOG_VERSION;
   if (info.createdUtc.empty()) info.createdUtc = session::utcNow();
   auto writer = session::SessionWriter::create(path, info);

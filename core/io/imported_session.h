@@ -10,9 +10,9 @@
 
 namespace fog::io {
 
-// `from` says where the files were ("run7/", "a.json, t.csv, g.csv"). The
-// session's source becomes "import of <from> (<the files' own source>)";
-// an empty software version or creation time is filled in. Refuses to
+// `from` says where the files were ("run7/", "a.json, t.csv, g.csv"); it is
+// the source only when the import left none. An empty software version or
+// creation time is filled in. Refuses to
 // overwrite an existing file (as SessionWriter::create).
 Status saveImportedSession(const ImportedSession& imported, const std::string& from, const std::string& path);
 

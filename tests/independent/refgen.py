@@ -132,6 +132,7 @@ def default_params():
         # Output
         "axes_out": "all",             # "all" | "swing"
         "meta_minimal": False,         # metadata test points with only the axis
+        "declare_gyro_sign": False,    # write bench.gyro_sign {"x": -1, ...} for the reversed axes
         "float_format": "repr",       # "repr" (shortest round-trip text) or a printf format
     }
 
@@ -155,6 +156,12 @@ CASES = {
         "description": "the gyro's swing axis is mounted reversed: its increments are negated (magnitude ratio -1)",
         "expected_verdict": "invalid",
         "params": {"segments": [_seg(f=0.5, a=3.0, d=60.0)], "gyro_sign": [-1, 1, 1]},
+    },
+    "reversed_axis_declared": {
+        "description": "reversed_axis, but the metadata states it (bench.gyro_sign {\"x\": -1}): "
+                       "the importer negates the axis and the delay is valid",
+        "expected_verdict": "pass",
+        "params": {"segments": [_seg(f=0.5, a=3.0, d=60.0)], "gyro_sign": [-1, 1, 1], "declare_gyro_sign": True},
     },
     "clock_rate": {
         "description": "gyro stamps from a clock 50 ppm fast against the table's: not one clock",
@@ -736,6 +743,8 @@ def metadata(res):
     if p["rate_output"] is not None:
         bench["gyro_rate_convention"] = p["rate_output"]
         bench["gyro_frame_period_ms"] = p["imu_period_ms"]
+    if p["declare_gyro_sign"] and any(sg < 0 for sg in p["gyro_sign"]):
+        bench["gyro_sign"] = {ax: -1 for ax, sg in zip(AXES, p["gyro_sign"]) if sg < 0}
     if p["continuous"]:
         tps = [{"axis": p["segments"][0]["axis"]}]
     elif p["meta_minimal"]:
@@ -911,7 +920,10 @@ def build_parser():
     g.add_argument("--nonround-ppm", type=float)
     g.add_argument("--stamp-quantum-us", type=float)
     g.add_argument("--axes-out", choices=["all", "swing"])
-    g.add_argument("--meta-minimal", action="store_true", default=None)
+    g.add_argument("--meta-minimal", action="store_true", default=None,
+                   help="metadata test points with only the axis (frequency and amplitude unknown)")
+    g.add_argument("--declare-gyro-sign", action="store_true", default=None,
+                   help='write bench.gyro_sign {"x": -1} for the axes given -1 in --gyro-sign')
     g.add_argument("--float-format")
     return ap
 

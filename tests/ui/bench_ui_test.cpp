@@ -295,7 +295,7 @@ class BenchUiTest : public QObject {
     QTRY_VERIFY_WITH_TIMEOUT(!opened.isEmpty(), 30000);
     QVERIFY(w->lastOutcome() && w->lastOutcome()->report);
     QVERIFY(std::abs(w->lastOutcome()->report->points.front().lagMs - 0.4658) < 0.01);
-    QVERIFY(QString::fromStdString(w->lastOutcome()->info.source).startsWith("import of"));
+    QVERIFY(QString::fromStdString(w->lastOutcome()->info.source).startsWith("import "));
 
     // A folder that is not in the layout is refused with the reason.
     QTemporaryDir empty;
