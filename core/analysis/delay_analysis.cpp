@@ -349,11 +349,15 @@ Result<TestPointResult> analyzeTestPoint(const TestPointData& data, double incre
 
   // 2. The gyro's noise, from the residuals of a fit at the table's measured
   // frequency (at the nominal one, 8 ppm of error would dominate the slow
-  // part of the residuals). ARW is judged over blocks of a twentieth of a
-  // period (0.05 .. 1 s): long enough to rise above pulse quantisation, short
-  // enough for many blocks.
+  // part of the residuals). ARW is judged over blocks of a quarter period
+  // (at least 0.05 s, at most an eighth of the record): the lag is decided by
+  // the noise near the swing frequency, where a random walk that blocks of a
+  // twentieth of a period cannot see under pulse quantisation (0.0014 deg/sqrt(h)
+  // under 1.2" pulses at 0.09 Hz) dominates and left the uncertainty 7 times
+  // too small.
   const SineFit gyroStart = fitGyroLinear(ch.gyro, table4->omegaRadPerS, ch.referenceS, false);
-  estimateGyroNoise(ch.gyro, gyroIncrementResiduals(ch.gyro, gyroStart), std::clamp(0.05 / f0, 0.05, 1.0));
+  estimateGyroNoise(ch.gyro, gyroIncrementResiduals(ch.gyro, gyroStart),
+                    std::clamp(0.25 / f0, 0.05, std::max(0.05, r.durationS / 8.0)));
 
   // 3. The gyro: 3-parameter fit at the nominal frequency (beside, on the
   // second core), then 4-parameter.
