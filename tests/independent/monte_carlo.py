@@ -98,7 +98,7 @@ def draw_conditions(rng, i, seed):
 def run_trial(args):
     i, params, summary, cli, workdir, keep, limit_ms = args
     rec = {"trial": i, "conditions": summary}
-    d = os.path.join(workdir, "trial_%04d" % i)
+    d = os.path.join(workdir, "trial_%s" % i)
     os.makedirs(d, exist_ok=True)
     imp = os.path.join(d, "data")
     fbs = os.path.join(d, "s.fbs")
@@ -175,7 +175,7 @@ def judge(rec, default_limit):
 
 def describe(rec):
     c = rec["conditions"]
-    return ("trial %d: %s %.4g Hz / %.3g deg, %.1f s (%.2f periods), %s, phase %.1f deg, IMU %.4f ms, read %.4f ms, "
+    return ("trial %s: %s %.4g Hz / %.3g deg, %.1f s (%.2f periods), %s, phase %.1f deg, IMU %.4f ms, read %.4f ms, "
             "ARW %.4g, pulse %.3g\", encoder %.3g\", bias %s deg/h, freq err %.1f ppm" % (
                 rec["trial"], c["axis"], c["frequency_hz"], c["amplitude_deg"], c["duration_s"], c["periods"],
                 c["timing"], c["start_phase_deg"], c["imu_delay_ms"], c["table_read_delay_ms"],
@@ -192,6 +192,11 @@ def main(argv=None):
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--json", dest="json_out", help="write every trial to this JSON file")
+    ap.add_argument("--only", help="run only these trials of the seed's draw (comma-separated indices; for "
+                    "reproducing a bad trial)")
+    ap.add_argument("--repeat", type=int, default=1,
+                    help="run every (selected) trial's conditions with this many noise seeds and print, per "
+                    "condition, the true scatter of the lag against the reported lag_std_ms")
     ap.add_argument("--keep", help="keep the generated directories and sessions under this directory")
     ap.add_argument("--limit-ms", type=float, default=None,
                     help="IMU delay limit passed to analyze (default: the CLI's own, 0.8 ms)")
@@ -212,6 +217,18 @@ def main(argv=None):
     workdir = a.keep or tempfile.mkdtemp(prefix="fogbench_mc_")
     os.makedirs(workdir, exist_ok=True)
     jobs = [(i, p, s, os.path.abspath(a.cli), workdir, bool(a.keep), a.limit_ms) for i, (p, s) in enumerate(draws)]
+    if a.only:
+        wanted = {int(x) for x in a.only.split(",")}
+        jobs = [j for j in jobs if j[0] in wanted]
+    if a.repeat > 1:
+        rep = []
+        for j in jobs:
+            for k in range(a.repeat):
+                p = dict(j[1])
+                p["seed"] = j[1]["seed"] + 7919 * k
+                rep.append((j[0] + k / (10.0 ** len(str(a.repeat))), p) + j[2:])
+        jobs = rep
+    a.trials = len(jobs)
     t0 = time.perf_counter()
     recs = []
     try:
@@ -251,6 +268,7 @@ def main(argv=None):
         print("  fraction |z| <= 3: %.4f" % within)
         print("  std(z): %.4f   mean(z): %.4f   (z = (lag - true lag) / lag_std)" % (np.std(z, ddof=1) if z.size > 1
                                                                                   else float("nan"), np.mean(z)))
+        print("  robust std(z) (median |z| / 0.6745): %.4f" % (np.median(np.abs(z)) / 0.6745))
         print("  error: mean %.4g us, rms %.4g us, max |error| %.4g us" % (
             np.mean(err_us), math.sqrt(np.mean(err_us ** 2)), np.max(np.abs(err_us))))
         for tm in ("commensurate", "incommensurate"):
@@ -283,6 +301,19 @@ def main(argv=None):
         for r in sorted(good, key=lambda r: -abs(r["z"]))[:5]:
             print("    z %+.2f, error %+.4g us, std %.4g us: %s" % (r["z"], r["error_ms"] * 1e3,
                                                                    r["lag_std_ms"] * 1e3, describe(r)))
+    if a.repeat > 1:
+        print("  per condition over %d noise seeds (true scatter vs reported std):" % a.repeat)
+        by = {}
+        for r in good:
+            by.setdefault(int(r["trial"]), []).append(r)
+        for t, rs in sorted(by.items()):
+            e = np.array([r["error_ms"] for r in rs]) * 1e3
+            s_ = np.array([r["lag_std_ms"] for r in rs]) * 1e3
+            zz = np.array([r["z"] for r in rs])
+            inv = sum(1 for r in rs if (r.get("point_verdict") or r.get("verdict")) == "invalid")
+            print("    trial %d: n %d, error mean %+.4g us, std %.4g us; reported std mean %.4g us (min %.4g); "
+                  "rms z %.3f; invalid %d" % (t, len(rs), e.mean(), e.std(ddof=1) if len(rs) > 1 else float("nan"),
+                                              s_.mean(), s_.min(), math.sqrt(np.mean(zz ** 2)), inv))
     if a.json_out:
         with open(a.json_out, "w") as fh:
             json.dump(refgen._jsonable({"trials": a.trials, "seed": a.seed, "cli": a.cli, "wall_s": wall,
