@@ -206,26 +206,38 @@ void addValidityChecks(TestPointResult& r, const Channels& ch, const std::vector
   // the per-period lag has no trend. The period uncertainties are raised by
   // the same factor as the lag's when the noise model fell short.
   {
-    const double honesty = r.fitLagStdMs > 0.0 ? std::max(1.0, r.lagStdMs / r.fitLagStdMs) : 1.0;
+    // The fits' period uncertainties rest on the same noise model as the
+    // lag's: raised by the factor the per-period scatter shows, if larger.
+    const double honesty =
+        r.fitLagStdMs > 0.0 ? std::max({1.0, r.lagStdMs / r.fitLagStdMs, r.trackLagStdMs / r.fitLagStdMs}) : 1.0;
     const double tp = r.tableFit.periodMs, gp = r.gyroFit.periodMs;
     r.rateErrorPpm = (gp / tp - 1.0) * 1e6;
     r.rateErrorStdPpm = honesty * std::hypot(r.tableFit.periodStdMs, r.gyroFit.periodStdMs) / tp * 1e6;
     const double zPeriod = r.rateErrorStdPpm > 0.0 ? r.rateErrorPpm / r.rateErrorStdPpm : 0.0;
+    // With five or more periods the trend of the per-period lags decides: its
+    // uncertainty comes from their own scatter, while the periods' rests on
+    // the noise model (time-stamp errors that follow a slow pattern, such as
+    // a bench reading held frames, made it 5 times too small). With fewer,
+    // the periods decide.
     double zTrend = 0.0;
+    bool trendJudged = false;
     if (lags.size() >= 5)
       if (auto line = fitLine(times, lags); line && line->slopeStd > 0.0) {
         r.lagDriftPpm = line->slope * 1e3;  // ms per s
         r.lagDriftStdPpm = line->slopeStd * 1e3;
         zTrend = line->slope / line->slopeStd;
+        trendJudged = true;
       }
-    ValidityCheck c{"clock_rate", std::abs(zPeriod) < kClockSignificance && std::abs(zTrend) < kClockSignificance,
-                    ""};
+    const double zDecisive = trendJudged ? zTrend : zPeriod;
+    ValidityCheck c{"clock_rate", std::abs(zDecisive) < kClockSignificance, ""};
     // A swing that is not a steady sinusoid bends the per-period lags and the
     // fitted periods: their timing figures then say nothing about the clocks.
     const bool steady = r.checks.back().id == "steady_sine" && r.checks.back().passed;
-    const std::string figures = "periods differ by " + fmt(r.rateErrorPpm, 2) + " ± " + fmt(r.rateErrorStdPpm, 2) +
-                                " ppm (" + fmt(zPeriod, 1) + " σ), per-period lag drifts " + fmt(r.lagDriftPpm, 2) +
-                                " ± " + fmt(r.lagDriftStdPpm, 2) + " ppm (" + fmt(zTrend, 1) + " σ)";
+    const std::string trend = "per-period lag drifts " + fmt(r.lagDriftPpm, 2) + " ± " + fmt(r.lagDriftStdPpm, 2) +
+                              " ppm (" + fmt(zTrend, 1) + " σ)";
+    const std::string periods = "periods differ by " + fmt(r.rateErrorPpm, 2) + " ± " + fmt(r.rateErrorStdPpm, 2) +
+                                " ppm (" + fmt(zPeriod, 1) + " σ)";
+    const std::string figures = trendJudged ? trend + "; " + periods + " (information)" : periods;
     if (!steady) {
       c.passed = true;
       c.judged = false;
@@ -234,7 +246,7 @@ void addValidityChecks(TestPointResult& r, const Channels& ch, const std::vector
     } else if (c.passed) {
       c.detail = "table and gyro stamps keep one rate: " + figures;
     } else {
-      const double ppm = std::abs(zTrend) > std::abs(zPeriod) ? r.lagDriftPpm : r.rateErrorPpm;
+      const double ppm = trendJudged ? r.lagDriftPpm : r.rateErrorPpm;
       c.detail = "the gyro's time stamps run " + fmt(std::abs(ppm), 1) + " ppm " + (ppm > 0 ? "fast" : "slow") +
                  " against the table's (" + figures +
                  "): the two streams are not stamped on one clock at one rate, so their phase difference is not a "
@@ -427,8 +439,11 @@ Result<TestPointResult> analyzeTestPoint(const TestPointData& data, double incre
   // quantisation errors repeat every period and do not: the table and
   // pulse-output parts of the variance grow by the residuals' correlation
   // one, two, ... periods apart. (b) The per-period lags are independent
-  // estimates whose scatter does not rest on the noise model: when it is
-  // significantly larger than the fit's uncertainty implies, it is taken.
+  // estimates whose scatter does not rest on the noise model (errors that
+  // repeat every period do not scatter, so (a) is added to it): when it is
+  // significantly larger than the fit's uncertainty it is taken; with 20 or
+  // more periods also when significantly smaller (time-stamp jitter, whose
+  // errors follow the rate, makes the white-noise model pessimistic).
   {
     const double periodS = kTwoPi / w;
     const double tableTerm =
@@ -442,22 +457,27 @@ Result<TestPointResult> analyzeTestPoint(const TestPointData& data, double incre
         periodicResidualInflation(gyroAngleResidual, periodS / ch.gyro.framePeriodS, r.periods);
     const double addedMs2 = 1e6 * (tableTerm * inflT + quantTerm * inflG);
     r.periodicInflation = addedMs2 / (r.fitLagStdMs * r.fitLagStdMs);
-    double stdMs = std::sqrt(r.fitLagStdMs * r.fitLagStdMs + addedMs2);
+    double baseMs = r.fitLagStdMs;
     if (r.periodicInflation > 0.1) r.lagStdSource = "fit, with errors that repeat every period";
     if (lags.size() >= 5) {
       const auto n = static_cast<double>(lags.size());
+      const int dof = static_cast<int>(lags.size()) - 1;
       r.trackLagStdMs = spread.stdDev / std::sqrt(n);
       // (n - 1) s^2 / (n sigma^2) is chi^2 with n - 1 dof when sigma is right.
-      const double x = (n - 1.0) * r.trackLagStdMs * r.trackLagStdMs / (stdMs * stdMs);
-      if (chiSquareSurvival(x, static_cast<int>(lags.size()) - 1) < 1e-3 && r.trackLagStdMs > stdMs) {
-        stdMs = r.trackLagStdMs;
-        r.lagStdSource = "per-period scatter";
-        r.warnings.push_back("the per-period lags scatter " + fmt(spread.stdDev, 4) +
-                             " ms, more than the fit's noise model implies; the uncertainty is taken from their "
-                             "scatter (" + fmt(r.trackLagStdMs, 4) + " ms instead of " + fmt(r.fitLagStdMs, 4) +
-                             " ms)");
+      const double x = (n - 1.0) * r.trackLagStdMs * r.trackLagStdMs / (r.fitLagStdMs * r.fitLagStdMs);
+      const bool larger = r.trackLagStdMs > r.fitLagStdMs && chiSquareSurvival(x, dof) < 1e-3;
+      const bool smaller = lags.size() >= 20 && r.trackLagStdMs < r.fitLagStdMs && 1.0 - chiSquareSurvival(x, dof) < 1e-3;
+      if (larger || smaller) {
+        baseMs = r.trackLagStdMs;
+        r.lagStdSource = r.periodicInflation > 0.1 ? "per-period scatter, with errors that repeat every period"
+                                                   : "per-period scatter";
+        r.warnings.push_back("the per-period lags scatter " + fmt(spread.stdDev, 4) + " ms, " +
+                             (larger ? "more" : "less") +
+                             " than the fit's noise model implies; the uncertainty rests on their scatter (" +
+                             fmt(r.trackLagStdMs, 5) + " ms instead of " + fmt(r.fitLagStdMs, 5) + " ms)");
       }
     }
+    const double stdMs = std::sqrt(baseMs * baseMs + addedMs2);
     r.lagStdMs = stdMs;
   }
 

@@ -21,7 +21,7 @@ double percentile(std::vector<double> v, double q) {
 }
 
 constexpr double kRestS = 1.0;               // a rest lasts at least this long
-constexpr double kAmplitudeTolerance = 0.03; // steady: within 3 % of the median amplitude
+constexpr double kAmplitudeTolerance = 0.01; // steady: within 1 % of the median amplitude
 
 // The steady part of one stretch of motion, or nothing.
 std::optional<SwingWindow> steadyPart(const std::vector<TableSample>& table, std::size_t from, std::size_t to,
@@ -61,6 +61,12 @@ std::optional<SwingWindow> steadyPart(const std::vector<TableSample>& table, std
       bestFrom = k;
     }
     k = e;
+  }
+  // The run's first and last periods may touch a ramp (their amplitude
+  // within tolerance, the next one's not): they are left out.
+  if (bestLength >= 4) {
+    ++bestFrom;
+    bestLength -= 2;
   }
   if (bestLength < 2) return std::nullopt;
   SwingWindow w;

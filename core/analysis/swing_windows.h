@@ -7,9 +7,9 @@
 // second or more (the band: 20 times the angle's step noise, at least 1e-4 of
 // its whole range); the stretches between rests are candidate swings. In each,
 // the swing frequency comes from the periodogram (validity.h) and the window
-// is the longest run of whole periods whose amplitude is within 3 % of the
-// stretch's median amplitude (ramps up and down are left out). Windows with
-// fewer than two whole periods are dropped.
+// is the longest run of whole periods whose amplitude is within 1 % of the
+// stretch's median amplitude, less its first and last period (ramps up and
+// down are left out). Windows with fewer than two whole periods are dropped.
 
 #include <string>
 #include <vector>
