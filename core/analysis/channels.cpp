@@ -72,8 +72,20 @@ void estimateGyroNoise(GyroChannel& gyro, const std::vector<double>& r, double b
   }
   v /= static_cast<double>(std::max<std::size_t>(blocks, 1));
   const double floorVar = 1e-6 * (v + 2.0 * s2) + 1e-30;
-  const double q = std::max(v - 2.0 * s2, floorVar) / (static_cast<double>(m) * gyro.framePeriodS);
+  const double usedBlockS = static_cast<double>(m) * gyro.framePeriodS;
+  const double q = std::max(v - 2.0 * s2, floorVar) / usedBlockS;
   gyro.setNoise(q, s2);
+  // Sampling error of v - 2*s2. The random-walk part of overlapping m-sums
+  // varies like 2 (q m dt)^2 (4/3) m/n (few independent blocks); their
+  // quantisation part, two values per sum, like 2 (2 s2)^2 * 2/n; the lag-1
+  // estimate of s2 like v1^2/n, v1 the per-increment variance. The walk's
+  // part is taken at least at the size of the quantisation part, which is
+  // where a short record cannot tell how large it is.
+  const auto nd = static_cast<double>(std::max<std::size_t>(n, 1));
+  const double walk = std::max(q * usedBlockS, 2.0 * s2 * std::sqrt(2.0 / nd));
+  const double v1 = 2.0 * s2 + q * gyro.framePeriodS;
+  const double varV = 2.0 * walk * walk * (4.0 / 3.0) * static_cast<double>(m) / nd + 16.0 * s2 * s2 / nd;
+  gyro.arwVarianceStdDeg2PerS = std::sqrt(varV + 4.0 * v1 * v1 / nd) / usedBlockS;
 }
 
 namespace {

@@ -41,6 +41,9 @@ struct GyroChannel {
 
   // Noise model of the increments (see above) and its Cholesky factor.
   double arwVarianceDeg2PerS = 0.0;  // q
+  // Standard error of q as estimated (estimateGyroNoise): large when pulse
+  // quantisation dominates the block sums of a short record.
+  double arwVarianceStdDeg2PerS = 0.0;
   double quantisationVarianceDeg2 = 0.0;  // s2
   std::vector<double> cholDiag, cholSub;
 
