@@ -12,6 +12,7 @@ packages=(
   libqwt-qt5-dev libsqlite3-dev qttools5-dev qttools5-dev-tools
   clang libclang-rt-14-dev
   xvfb xauth fonts-wqy-microhei
+  python3 python3-numpy
 )
 
 missing=()

@@ -1,7 +1,7 @@
 #pragma once
 // Thinning of dense curves for display: a 300k-point curve replots in
 // ~100 ms, its min/max per pixel column in ~2 ms and looks the same
-// (DESIGN section 6).
+// (docs/benchmarks.md).
 
 #include <QPointF>
 #include <QVector>

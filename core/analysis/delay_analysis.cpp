@@ -97,7 +97,7 @@ std::vector<PeriodDelay> periodTrack(const Channels& ch, double w, double refere
 // None rests on the noise level fitted from the same residuals: misfits are
 // compared with the amplitude, timing with significance from the data's own
 // scatter.
-constexpr double kClockSignificance = 5.0;   // periods, lag trend (sigma)
+constexpr double kClockPValue = 5.7e-7;      // periods, lag trend: two-sided, as 5 sigma of a normal
 constexpr double kTableMisfitLimit = 0.01;   // smooth table residual / amplitude
 constexpr double kGyroMisfitLimit = 0.05;    // smooth cumulative gyro residual / amplitude
 constexpr double kHarmonicLimit = 0.02;      // harmonics 2..5 / amplitude
@@ -228,8 +228,15 @@ void addValidityChecks(TestPointResult& r, const Channels& ch, const std::vector
         zTrend = line->slope / line->slopeStd;
         trendJudged = true;
       }
-    const double zDecisive = trendJudged ? zTrend : zPeriod;
-    ValidityCheck c{"clock_rate", std::abs(zDecisive) < kClockSignificance, ""};
+    // Significant: beyond 5 sigma (the trend's t statistic has n - 2 degrees
+    // of freedom: with 6 periods |t| > 5 happens by chance once in 150
+    // records). And it matters: over half the record the drift moves the lag
+    // by more than the lag's uncertainty.
+    const double ppm = trendJudged ? r.lagDriftPpm : r.rateErrorPpm;
+    const double pValue = trendJudged ? studentTwoSidedP(zTrend, static_cast<int>(lags.size()) - 2)
+                                      : std::erfc(std::abs(zPeriod) / std::sqrt(2.0));
+    const double lagMoveMs = std::abs(ppm) * 1e-6 * 0.5 * r.durationS * 1e3;
+    ValidityCheck c{"clock_rate", !(pValue < kClockPValue && lagMoveMs > r.lagStdMs), ""};
     // A swing that is not a steady sinusoid bends the per-period lags and the
     // fitted periods: their timing figures then say nothing about the clocks.
     const bool steady = r.checks.back().id == "steady_sine" && r.checks.back().passed;
@@ -246,7 +253,6 @@ void addValidityChecks(TestPointResult& r, const Channels& ch, const std::vector
     } else if (c.passed) {
       c.detail = "table and gyro stamps keep one rate: " + figures;
     } else {
-      const double ppm = trendJudged ? r.lagDriftPpm : r.rateErrorPpm;
       c.detail = "the gyro's time stamps run " + fmt(std::abs(ppm), 1) + " ppm " + (ppm > 0 ? "fast" : "slow") +
                  " against the table's (" + figures +
                  "): the two streams are not stamped on one clock at one rate, so their phase difference is not a "

@@ -54,6 +54,49 @@ double chiSquareSurvival(double x, int dof) {
   return regularisedGammaQ(0.5 * dof, 0.5 * x);
 }
 
+namespace {
+// Continued fraction of I_x(a, b) (modified Lentz), valid for x < (a+1)/(a+b+2).
+double betaFraction(double x, double a, double b) {
+  constexpr double kTiny = 1e-300;
+  double c = 1.0, d = 1.0 - (a + b) * x / (a + 1.0);
+  if (std::abs(d) < kTiny) d = kTiny;
+  d = 1.0 / d;
+  double h = d;
+  for (int m = 1; m <= 300; ++m) {
+    const double m2 = 2.0 * m;
+    double aa = m * (b - m) * x / ((a + m2 - 1.0) * (a + m2));
+    d = 1.0 + aa * d;
+    d = std::abs(d) < kTiny ? 1.0 / kTiny : 1.0 / d;
+    c = 1.0 + aa / c;
+    if (std::abs(c) < kTiny) c = kTiny;
+    h *= d * c;
+    aa = -(a + m) * (a + b + m) * x / ((a + m2) * (a + m2 + 1.0));
+    d = 1.0 + aa * d;
+    d = std::abs(d) < kTiny ? 1.0 / kTiny : 1.0 / d;
+    c = 1.0 + aa / c;
+    if (std::abs(c) < kTiny) c = kTiny;
+    const double delta = d * c;
+    h *= delta;
+    if (std::abs(delta - 1.0) < 1e-15) break;
+  }
+  return h;
+}
+}  // namespace
+
+double regularisedBeta(double x, double a, double b) {
+  if (x <= 0.0) return 0.0;
+  if (x >= 1.0) return 1.0;
+  const double lnFront = std::lgamma(a + b) - std::lgamma(a) - std::lgamma(b) + a * std::log(x) + b * std::log1p(-x);
+  if (x < (a + 1.0) / (a + b + 2.0)) return std::exp(lnFront) * betaFraction(x, a, b) / a;
+  return 1.0 - std::exp(lnFront) * betaFraction(1.0 - x, b, a) / b;
+}
+
+double studentTwoSidedP(double t, int dof) {
+  if (dof <= 0 || !std::isfinite(t)) return std::isfinite(t) ? 1.0 : 0.0;
+  const double v = dof;
+  return regularisedBeta(v / (v + t * t), 0.5 * v, 0.5);
+}
+
 MeanAndSpread meanAndSpread(const std::vector<double>& v) {
   MeanAndSpread m;
   m.count = v.size();

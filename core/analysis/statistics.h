@@ -8,6 +8,13 @@ namespace fog::analysis {
 // Probability that a chi-square variable with dof degrees of freedom exceeds x.
 double chiSquareSurvival(double x, int dof);
 
+// Probability that |T| >= |t| for Student's t with dof degrees of freedom
+// (two-sided), from the regularised incomplete beta function.
+double studentTwoSidedP(double t, int dof);
+// Regularised incomplete beta I_x(a, b), a, b > 0, x in [0, 1] (Lentz's
+// continued fraction on the side where it converges fast).
+double regularisedBeta(double x, double a, double b);
+
 // Regularised incomplete gamma functions P(a, x) and Q(a, x) = 1 - P(a, x),
 // a > 0 (not only half-integers): each from its series below a + 1 and
 // Lentz's continued fraction above, so that the small one of the two keeps

@@ -1,5 +1,5 @@
 #pragma once
-// Blind check of the diagnosis (DESIGN section 5.6, docs/diagnosis.md):
+// Blind check of the diagnosis (docs/diagnosis.md):
 // sessions are simulated with an effect the diagnosis is not told about —
 // one from the library at 1x..10x its detection threshold, none, two at once,
 // or one outside the library — diagnosed blind, and scored.

@@ -1,5 +1,5 @@
 #pragma once
-// Sim-to-real gap diagnosis (DESIGN section 5, docs/diagnosis.md).
+// Sim-to-real gap diagnosis (docs/diagnosis.md).
 //
 //   auto d = diagnosis::diagnose(recording, &info, constants, {});
 //   d->verdict  // "scale_factor_error", "none" or "unexplained"

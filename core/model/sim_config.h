@@ -1,6 +1,6 @@
 #pragma once
 // Parameters of every stage of the simulated measurement chain, with the
-// paper's values as defaults (DESIGN section 3). Units are in the names.
+// paper's values as defaults (docs/simulator.md). Units are in the names.
 //
 // Chain: turntable motion -> encoder read (table frames, 1 ms) and
 //        FOG sensing -> pulse output -> IMU processing board (IMU frames, 2 ms)

@@ -200,10 +200,10 @@ def main(argv=None):
     ap.add_argument("--keep", help="keep the generated directories and sessions under this directory")
     ap.add_argument("--limit-ms", type=float, default=None,
                     help="IMU delay limit passed to analyze (default: the CLI's own, 0.8 ms)")
-    ap.add_argument("--min-within-3", type=float, default=0.97,
-                    help="acceptance: fraction of |z| <= 3 at least this (default 0.97)")
-    ap.add_argument("--std-z-range", type=float, nargs=2, default=[0.8, 1.25],
-                    help="acceptance: std(z) within this range (default 0.8 1.25)")
+    ap.add_argument("--min-within-3", type=float, default=0.99,
+                    help="acceptance: fraction of |z| <= 3 at least this (default 0.99)")
+    ap.add_argument("--std-z-range", type=float, nargs=2, default=[0.85, 1.15],
+                    help="acceptance: std(z) within this range (default 0.85 1.15)")
     a = ap.parse_args(argv)
     if not (os.path.isfile(a.cli) and os.access(a.cli, os.X_OK)):
         print("monte_carlo.py: %s is not an executable fogbench-cli; give --cli PATH" % a.cli, file=sys.stderr)

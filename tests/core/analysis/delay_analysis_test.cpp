@@ -74,7 +74,16 @@ TEST(Statistics, RegularisedIncompleteGamma) {
   EXPECT_DOUBLE_EQ(regularisedGammaQ(3.0, -1.0), 1.0);
 }
 
-TEST(SwingFrequency, EstimatedFromZeroCrossings) {
+TEST(Statistics, StudentTTailsMatchTables) {
+  EXPECT_NEAR(studentTwoSidedP(12.706, 1), 0.05, 1e-4);
+  EXPECT_NEAR(studentTwoSidedP(2.776, 4), 0.05, 1e-4);
+  EXPECT_NEAR(studentTwoSidedP(2.042, 30), 0.05, 1e-4);
+  EXPECT_NEAR(studentTwoSidedP(5.0, 100000), std::erfc(5.0 / std::sqrt(2.0)), 1e-8);  // the normal's 5 sigma
+  EXPECT_NEAR(studentTwoSidedP(0.0, 7), 1.0, 1e-12);
+  EXPECT_NEAR(regularisedBeta(0.3, 2.0, 3.0), 0.3483, 1e-4);
+}
+
+TEST(SwingFrequency, EstimatedFromThePeriodogram) {
   SyntheticSpec s;
   s.frequencyHz = 0.37;
   s.durationS = 30.0;

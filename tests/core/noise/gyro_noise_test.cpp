@@ -113,7 +113,7 @@ TEST(GyroNoise, SwingPredictionIsTheCramerRaoBoundForTheIdentifiedArw) {
   const NoiseTerm* n = reports[0].model.find(NoiseTermKind::kAngleRandomWalk);
   ASSERT_NE(n, nullptr);
   EXPECT_DOUBLE_EQ(p.test.arwDegPerSqrtH, n->value * 60.0);
-  // ARW-dominated at 0.1 Hz / 10 deg: sqrt(2/T) N / (A w^2) (DESIGN section 2);
+  // ARW-dominated at 0.1 Hz / 10 deg: sqrt(2/T) N / (A w^2) (docs/method.md);
   // the encoder adds a little, so within 25 %.
   const double w = 2.0 * kPi * 0.1;
   const double arwOnly = std::sqrt(2.0 / 294.0) * n->value / (10.0 * w * w);
