@@ -29,6 +29,7 @@
 #include <qwt_symbol.h>
 
 #include "analysis/theory.h"
+#include "analysis/verdict.h"
 #include "session/session_file.h"
 #include "ui/language.h"
 #include "ui/plot_export.h"
@@ -109,6 +110,13 @@ ResultView::ResultView(QWidget* parent) : QWidget(parent) {
   exportButton_->setPopupMode(QToolButton::InstantPopup);
   row->addWidget(exportButton_);
   layout->addLayout(row);
+  // The core's verdict on the shown test point (analysis/verdict.h), with
+  // its reasons in full: an invalid delay is never shown without them.
+  verdictLabel_ = new QLabel();
+  verdictLabel_->setObjectName("verdictLabel");
+  verdictLabel_->setWordWrap(true);
+  verdictLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  layout->addWidget(verdictLabel_);
   connect(testPointCombo_, qOverload<int>(&QComboBox::currentIndexChanged), this, &ResultView::showTestPoint);
 
   anglePlot_ = new SeriesPlot(tr("Normalised angles and fits"), tr("(angle − offset) / amplitude"));
@@ -206,6 +214,7 @@ void ResultView::clear() {
     testPointCombo_->clear();
   }
   lagLabel_->setText(tr("No result yet."));
+  verdictLabel_->clear();
   anglePlot_->clearCurves();
   anglePlot_->showAll();
   residualPlot_->clearCurves();
@@ -302,6 +311,15 @@ void ResultView::showTestPoint(int position) {
     if (t.index == p.index) lag += tr("  ·  simulator truth: lag %1 ms").arg(num(t.lagS * 1e3, 4));
   if (!outcome_->complete) lag += tr("  ·  <span style='color:#b00000'>incomplete run</span>");
   lagLabel_->setText(lag);
+  const analysis::PointVerdict verdict = analysis::judgePoint(p, analysis::kDefaultImuDelayLimitMs);
+  const QString word = QString::fromLatin1(analysis::verdictName(verdict.verdict)).toUpper();
+  const char* colour = verdict.verdict == analysis::Verdict::kPass   ? "#146e28"
+                       : verdict.verdict == analysis::Verdict::kFail ? "#b00000"
+                                                                     : "#a05000";
+  QStringList reasons;
+  for (const auto& why : verdict.reasons) reasons << QString::fromStdString(why).toHtmlEscaped();
+  verdictLabel_->setText(tr("<span style='color:%1'><b>%2</b></span> (limit %3 ms): %4")
+                             .arg(colour, word, num(analysis::kDefaultImuDelayLimitMs, 1), reasons.join("<br>")));
   fillTables(i);
 
   // Aliasing pointers: the plots share the outcome, nothing is copied.

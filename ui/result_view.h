@@ -59,6 +59,7 @@ class ResultView : public QWidget {
   std::shared_ptr<const RunOutcome> outcome_;
   QComboBox* testPointCombo_ = nullptr;
   QLabel* lagLabel_ = nullptr;
+  QLabel* verdictLabel_ = nullptr;
   QToolButton* exportButton_ = nullptr;
   QPushButton* diagnoseButton_ = nullptr;
   SeriesPlot* anglePlot_ = nullptr;

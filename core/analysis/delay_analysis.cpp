@@ -373,9 +373,14 @@ Result<TestPointResult> analyzeTestPoint(const TestPointData& data, double incre
   // twentieth of a period cannot see under pulse quantisation (0.0014 deg/sqrt(h)
   // under 1.2" pulses at 0.09 Hz) dominates and left the uncertainty 7 times
   // too small.
+  // The angle random walk proper (white rate noise) is what blocks of a
+  // twentieth of a period (0.05 .. 1 s) see: it is reported, and the
+  // diagnosis replays with it.
   const SineFit gyroStart = fitGyroLinear(ch.gyro, table4->omegaRadPerS, ch.referenceS, false);
-  estimateGyroNoise(ch.gyro, gyroIncrementResiduals(ch.gyro, gyroStart),
-                    std::clamp(0.25 / f0, 0.05, std::max(0.05, r.durationS / 8.0)));
+  const auto startResiduals = gyroIncrementResiduals(ch.gyro, gyroStart);
+  estimateGyroNoise(ch.gyro, startResiduals, std::clamp(0.05 / f0, 0.05, 1.0));
+  r.noise.gyroArwDegPerSqrtH = std::sqrt(ch.gyro.arwVarianceDeg2PerS) * 60.0;
+  estimateGyroNoise(ch.gyro, startResiduals, std::clamp(0.25 / f0, 0.05, std::max(0.05, r.durationS / 8.0)));
 
   // 3. The gyro: 3-parameter fit at the nominal frequency (beside, on the
   // second core), then 4-parameter.
@@ -420,7 +425,7 @@ Result<TestPointResult> analyzeTestPoint(const TestPointData& data, double incre
   // Noise and the bound.
   r.noise.tableNoiseDeg = ch.table.noiseDeg;
   r.noise.gyroQuantisationDeg = std::sqrt(ch.gyro.quantisationVarianceDeg2);
-  r.noise.gyroArwDegPerSqrtH = std::sqrt(ch.gyro.arwVarianceDeg2PerS) * 60.0;
+  r.noise.gyroSwingBandArwDegPerSqrtH = std::sqrt(ch.gyro.arwVarianceDeg2PerS) * 60.0;
   const double tableInterval = r.durationS / static_cast<double>(std::max<std::size_t>(r.tableSamples - 1, 1));
   const double amplitude = std::hypot(joint->a, joint->b);
   const double w = joint->omegaRadPerS;

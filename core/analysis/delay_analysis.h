@@ -47,7 +47,11 @@ BenchConstants benchConstantsOf(const BenchSettings& bench);
 struct NoiseEstimate {
   double tableNoiseDeg = 0.0;         // encoder white noise (1 sigma)
   double gyroQuantisationDeg = 0.0;   // white angle noise of the pulse output (1 sigma)
-  double gyroArwDegPerSqrtH = 0.0;    // angle random walk
+  double gyroArwDegPerSqrtH = 0.0;    // angle random walk (blocks of a twentieth of a period)
+  // The gyro's noise near the swing frequency as a random walk (blocks of a
+  // quarter period): what the fits are weighted with and the bound uses; it
+  // includes slower noise (bias instability) that the ARW leaves out.
+  double gyroSwingBandArwDegPerSqrtH = 0.0;
 };
 
 struct PeriodDelay {

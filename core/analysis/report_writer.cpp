@@ -114,7 +114,8 @@ std::string formatReportText(const DelayReport& report, const ReportContext& con
       << " ms, scatter " << f("%.4f", p.periodScatterMs) << " ms\n";
     o << "  noise: encoder " << f("%.2e", p.noise.tableNoiseDeg) << " deg, pulse output "
       << f("%.2e", p.noise.gyroQuantisationDeg) << " deg, angle random walk "
-      << f("%.4f", p.noise.gyroArwDegPerSqrtH) << " deg/sqrt(h)\n";
+      << f("%.4f", p.noise.gyroArwDegPerSqrtH) << " deg/sqrt(h) (near the swing frequency "
+      << f("%.4f", p.noise.gyroSwingBandArwDegPerSqrtH) << ")\n";
     if (p.lostImuFrames) o << "  lost IMU frames: " << p.lostImuFrames << "\n";
     if (p.lostImuFrames || p.lostTableFrames || p.damage.duplicateFrames || p.damage.checksumFailures ||
         p.damage.bytesSkipped)
@@ -218,7 +219,8 @@ std::string formatReportJson(const DelayReport& report, const ReportContext& con
                {"noise",
                 {{"table_noise_deg", p.noise.tableNoiseDeg},
                  {"gyro_quantisation_deg", p.noise.gyroQuantisationDeg},
-                 {"gyro_arw_deg_per_sqrt_h", p.noise.gyroArwDegPerSqrtH}}},
+                 {"gyro_arw_deg_per_sqrt_h", p.noise.gyroArwDegPerSqrtH},
+                 {"gyro_swing_band_arw_deg_per_sqrt_h", p.noise.gyroSwingBandArwDegPerSqrtH}}},
                {"lost_imu_frames", p.lostImuFrames},
                {"affected",
                 {{"lost_table_frames", p.lostTableFrames},
@@ -232,7 +234,8 @@ std::string formatReportJson(const DelayReport& report, const ReportContext& con
                  {"largest_gap_s", p.largestGapS}}},
                {"warnings", p.warnings}};
     json track = json::array();
-    for (const auto& d : p.periodTrack) track.push_back({{"time_s", d.timeS}, {"lag_ms", d.lagMs}});
+    for (const auto& d : p.periodTrack)
+      track.push_back({{"time_s", d.timeS}, {"lag_ms", d.lagMs}, {"table_amplitude_deg", d.tableAmplitudeDeg}});
     tp["period_track"] = track;
     tp["period_mean_lag_ms"] = p.periodMeanLagMs;
     tp["period_scatter_ms"] = p.periodScatterMs;

@@ -2154,7 +2154,7 @@
         <translation>IMU 延迟标定报告：%1 %2</translation>
     </message>
     <message>
-        <location filename="../../ui/result_view.cpp" line="+51"/>
+        <location filename="../../ui/result_view.cpp" line="+52"/>
         <source>%1: %2 axis, %3 Hz / %4°</source>
         <translation>%1：%2 轴，%3 Hz / %4°</translation>
     </message>
@@ -2182,7 +2182,7 @@
         <translation>导出</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+13"/>
         <source>Normalised angles and fits</source>
         <translation>归一化角度及拟合</translation>
     </message>
@@ -2325,7 +2325,7 @@
         <translation>尚无结果。</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+25"/>
         <source>&lt;b&gt;No delay:&lt;/b&gt; %1</source>
         <translation>&lt;b&gt;无延迟结果：&lt;/b&gt;%1</translation>
     </message>
@@ -2428,6 +2428,11 @@
         <location line="+1"/>
         <source>  ·  &lt;span style=&apos;color:#b00000&apos;&gt;incomplete run&lt;/span&gt;</source>
         <translation>  ·  &lt;span style=&apos;color:#b00000&apos;&gt;运行未完成&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>&lt;span style=&apos;color:%1&apos;&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/span&gt; (limit %3 ms): %4</source>
+        <translation>&lt;span style=&apos;color:%1&apos;&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/span&gt;（限值 %3 ms）：%4</translation>
     </message>
     <message>
         <location line="+7"/>

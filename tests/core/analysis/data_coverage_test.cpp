@@ -73,6 +73,8 @@ TEST(DataCoverage, CountsLostFramesAndTheLongestGap) {
 TEST(DelayAnalysis, SaysHowATestPointWasAffectedAndStillMeasures) {
   SyntheticSpec s;
   auto d = makeSynthetic(s);
+  const auto undamaged = analyzeTestPoint(d, 1.0, BenchConstants{});
+  ASSERT_TRUE(undamaged.isOk());
   for (std::size_t i = 0; i < 50; ++i) dropTable(d, 1000 + 300 * i, 1);
   dropTable(d, 9000, 10);
   dropImu(d, 2000, 5);
@@ -84,7 +86,12 @@ TEST(DelayAnalysis, SaysHowATestPointWasAffectedAndStillMeasures) {
   EXPECT_EQ(r->lostImuFrames, 5u);
   EXPECT_NEAR(r->coveredS, r->durationS - 0.06, 1e-6);
   EXPECT_NEAR(r->largestGapS, 10e-3, 1e-6);
-  EXPECT_NEAR(r->lagMs, s.lagS * 1e3, 3.0 * r->lagStdMs + 1e-6);  // lost data cost precision, not accuracy
+  // Lost data cost precision, not accuracy: the same lag as the undamaged
+  // record within the damaged one's uncertainty. (Both sit 0.26 us from the
+  // truth: noiseless samples commensurate with the swing quantise the same
+  // way every period, an error no noise averages.)
+  EXPECT_NEAR(r->lagMs, undamaged->lagMs, 3.0 * r->lagStdMs);
+  EXPECT_NEAR(r->lagMs, s.lagS * 1e3, 3.0 * r->lagStdMs + 0.3e-3);
 
   DelayReport report;
   report.points.push_back(*r);
