@@ -379,7 +379,8 @@ Result<TestPointResult> analyzeTestPoint(const TestPointData& data, double incre
   const SineFit gyroStart = fitGyroLinear(ch.gyro, table4->omegaRadPerS, ch.referenceS, false);
   const auto startResiduals = gyroIncrementResiduals(ch.gyro, gyroStart);
   estimateGyroNoise(ch.gyro, startResiduals, std::clamp(0.05 / f0, 0.05, 1.0));
-  r.noise.gyroArwDegPerSqrtH = std::sqrt(ch.gyro.arwVarianceDeg2PerS) * 60.0;
+  const double whiteRateVariance = ch.gyro.arwVarianceDeg2PerS;
+  r.noise.gyroArwDegPerSqrtH = std::sqrt(whiteRateVariance) * 60.0;
   estimateGyroNoise(ch.gyro, startResiduals, std::clamp(0.25 / f0, 0.05, std::max(0.05, r.durationS / 8.0)));
 
   // 3. The gyro: 3-parameter fit at the nominal frequency (beside, on the
@@ -429,9 +430,11 @@ Result<TestPointResult> analyzeTestPoint(const TestPointData& data, double incre
   const double tableInterval = r.durationS / static_cast<double>(std::max<std::size_t>(r.tableSamples - 1, 1));
   const double amplitude = std::hypot(joint->a, joint->b);
   const double w = joint->omegaRadPerS;
+  // The bound for the white noise terms (encoder, pulse output, angle random
+  // walk): std/CRLB above 1 is what slower noise (bias instability) costs.
   r.crlbMs = 1e3 * lagCramerRaoBoundS(w, r.durationS, amplitude, tableInterval, ch.table.noiseDeg,
                                       amplitude * std::abs(joint->gain), ch.gyro.framePeriodS,
-                                      ch.gyro.quantisationVarianceDeg2, ch.gyro.arwVarianceDeg2PerS);
+                                      ch.gyro.quantisationVarianceDeg2, whiteRateVariance);
   r.stdOverCrlb = r.crlbMs > 0.0 ? r.fitLagStdMs / r.crlbMs : 0.0;
 
   // Per-period delays.
