@@ -1374,24 +1374,24 @@
         <translation>签署</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>Bench constants</source>
         <translation>测试台常数</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+265"/>
+        <location line="+283"/>
         <source>quantity</source>
         <translation>量</translation>
     </message>
     <message>
-        <location line="-264"/>
-        <location line="+347"/>
+        <location line="-282"/>
+        <location line="+365"/>
         <source>value</source>
         <translation>数值</translation>
     </message>
     <message>
-        <location line="-346"/>
+        <location line="-364"/>
         <source>std. uncertainty</source>
         <translation>标准不确定度</translation>
     </message>
@@ -1454,6 +1454,11 @@
         <location line="+1"/>
         <source>%1 MHz, %2 bit</source>
         <translation>%1 MHz，%2 位</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>imported: times in seconds on the other bench&apos;s common clock</source>
+        <translation>导入数据：时间为另一台架公共时钟上的秒数</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -1532,7 +1537,8 @@
         <translation>记录时长 (s)</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-34"/>
+        <location line="+37"/>
         <source>not stated</source>
         <translation>未给出</translation>
     </message>
@@ -1587,18 +1593,28 @@
         <translation>跳过字节</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+6"/>
+        <source>Delay budget</source>
+        <translation>延迟预算</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Not shown: the paper&apos;s theoretical budget describes its own gyro and processing board, and this recording was made on another bench (imported).</source>
+        <translation>未显示：论文的理论预算描述的是其自身的陀螺和处理板，而本记录来自另一台架（导入）。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>Delay budget: the paper&apos;s theory beside the measurement</source>
         <translation>延迟预算：论文理论值与测量值对照</translation>
     </message>
     <message>
         <location line="+7"/>
-        <location line="+49"/>
+        <location line="+50"/>
         <source>#%1: %2</source>
         <translation>#%1：%2</translation>
     </message>
     <message>
-        <location line="-45"/>
+        <location line="-46"/>
         <source>stage</source>
         <translation>环节</translation>
     </message>
@@ -1609,12 +1625,12 @@
     </message>
     <message>
         <location line="+1"/>
-        <location line="+184"/>
+        <location line="+192"/>
         <source>basis</source>
         <translation>依据</translation>
     </message>
     <message>
-        <location line="-183"/>
+        <location line="-191"/>
         <source>measured (ms)</source>
         <translation>测量值 (ms)</translation>
     </message>
@@ -1659,7 +1675,7 @@
         <translation>按论文参数的理论值：光纤 %1 m（本征周期 %2 µs），回路延迟 ≤ %3 个本征周期，脉冲输出每 %4 ms 更新，处理板时钟 %5 MHz，%6 字节帧、%7 Mbaud。</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>test point</source>
         <translation>测试点</translation>
     </message>
@@ -1694,48 +1710,38 @@
         <translation>角度：中间三个周期（采样板时间轴上 %1 s 至 %2 s），已去除偏置；陀螺角度为其增量之和，并去除了拟合的趋势项（零偏 + 地球自转）。拟合：下表中的四参数拟合。残差：整段记录（%3 s），数据减拟合；转台残差为编码器量化，陀螺残差为角度随机游走和脉冲量化。</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+18"/>
         <source>Table angle (offset removed) and fit</source>
         <translation>转台角度（已去除偏置）及拟合</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+15"/>
-        <location line="+15"/>
+        <location line="+16"/>
+        <location line="+16"/>
         <location line="+12"/>
         <location line="+83"/>
         <source>time (s)</source>
         <translation>时间 (s)</translation>
     </message>
     <message>
-        <location line="-124"/>
-        <location line="+15"/>
+        <location line="-126"/>
+        <location line="+16"/>
         <source>angle (°)</source>
         <translation>角度 (°)</translation>
     </message>
     <message>
-        <location line="-10"/>
-        <source>table angle (encoder, 1 ms)</source>
-        <translation>转台角度（编码器，1 ms）</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <location line="+15"/>
+        <location line="-9"/>
+        <location line="+16"/>
         <source>fit: A = %1°, T = %2 ms</source>
         <translation>拟合：A = %1°，T = %2 ms</translation>
     </message>
     <message>
-        <location line="-8"/>
+        <location line="-9"/>
         <source>Gyro angle (offset and trend removed) and fit</source>
         <translation>陀螺角度（已去除偏置和趋势）及拟合</translation>
     </message>
     <message>
-        <location line="+7"/>
-        <source>gyro angle (summed increments, 2 ms)</source>
-        <translation>陀螺角度（增量累加，2 ms）</translation>
-    </message>
-    <message>
-        <location line="+8"/>
+        <location line="+16"/>
         <source>Table residuals</source>
         <translation>转台残差</translation>
     </message>
@@ -2149,7 +2155,17 @@
         <translation>%1 个测试点未得到延迟</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="-305"/>
+        <source>table angle (encoder, %1 ms)</source>
+        <translation>转台角度（编码器，%1 ms）</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>gyro angle (summed increments, %1 ms)</source>
+        <translation>陀螺角度（增量累加，%1 ms）</translation>
+    </message>
+    <message>
+        <location line="+316"/>
         <source>IMU delay calibration report: %1 %2</source>
         <translation>IMU 延迟标定报告：%1 %2</translation>
     </message>

@@ -353,6 +353,7 @@ void constantsAndPlanPage(PageFlow& flow, const Content& c) {
   const auto& d = c.in.delays;
   const auto& k = d.constants;
   const auto& rec = c.in.recording;
+  const bool imported = c.in.rawBytes.empty();  // another bench's data: no stream, no counter of ours
 
   flow.heading(QObject::tr("Bench constants"));
   Table consts;
@@ -371,8 +372,10 @@ void constantsAndPlanPage(PageFlow& flow, const Content& c) {
        QObject::tr("%1″/pulse").arg(QString::number(pulse * 3600.0, 'g', 4)), "",
        rec.pulseEquivalentDeg > 0.0 ? QObject::tr("stated by the stream") : QObject::tr("bench setting")},
       {QObject::tr("sampling-board counter"),
-       QObject::tr("%1 MHz, %2 bit").arg(rec.counterHz / 1e6).arg(rec.counterBits), "",
-       QObject::tr("common time base of both channels")},
+       imported ? QObject::tr("not stated") : QObject::tr("%1 MHz, %2 bit").arg(rec.counterHz / 1e6).arg(rec.counterBits),
+       "",
+       imported ? QObject::tr("imported: times in seconds on the other bench's common clock")
+                : QObject::tr("common time base of both channels")},
       {QObject::tr("latitude"), QObject::tr("%1°").arg(info.bench.latitudeDeg), "",
        QObject::tr("Earth rate, absorbed by the fitted gyro trend")},
   };
@@ -427,54 +430,63 @@ void constantsAndPlanPage(PageFlow& flow, const Content& c) {
                  {QObject::tr("counter wraps"), n(h.counterWraps), QObject::tr("bytes skipped"), n(h.bytesSkipped)}};
   flow.table(health);
 
-  flow.heading(QObject::tr("Delay budget: the paper's theory beside the measurement"));
-  const analysis::TheoryInputs theoryIn;
-  const auto budget = analysis::delayBudget(theoryIn);
-  auto range = [](double lo, double hi) { return lo == hi ? fixed(lo, 4) : fixed(lo, 4) + " – " + fixed(hi, 4); };
-  auto measured = [&](auto value, auto sd) {
-    QStringList s;
-    for (const auto& p : d.points)
-      s << QObject::tr("#%1: %2").arg(p.index + 1).arg(valueWithStd(value(p), sd(p), decimalsFor(sd(p))));
-    return s.join("\n");
-  };
-  Table theory;
-  theory.columns = {{QObject::tr("stage"), 50, Qt::AlignLeft},
-                    {QObject::tr("theory (ms)"), 30, Qt::AlignRight},
-                    {QObject::tr("basis"), 48, Qt::AlignLeft},
-                    {QObject::tr("measured (ms)"), 46, Qt::AlignRight}};
-  double gyroMin = 0.0, gyroMax = 0.0;
-  for (const auto& l : budget.lines) {
-    theory.rows.push_back({QString::fromStdString(l.stage), range(l.minMs, l.maxMs), QString::fromStdString(l.basis), ""});
-    theory.boldRows.push_back(false);
-    if (l.stage.rfind("board:", 0) != 0) {
-      gyroMin += l.minMs;
-      gyroMax += l.maxMs;
+  if (imported) {
+    // The paper's budget describes its FOG and board; an imported recording's
+    // IMU and bench are other ones, so the budget is not set beside it.
+    flow.heading(QObject::tr("Delay budget"));
+    flow.paragraph(QObject::tr("Not shown: the paper's theoretical budget describes its own gyro and processing "
+                               "board, and this recording was made on another bench (imported)."),
+                   PageFlow::font(8.5), kMuted);
+  } else {
+    flow.heading(QObject::tr("Delay budget: the paper's theory beside the measurement"));
+    const analysis::TheoryInputs theoryIn;
+    const auto budget = analysis::delayBudget(theoryIn);
+    auto range = [](double lo, double hi) { return lo == hi ? fixed(lo, 4) : fixed(lo, 4) + " – " + fixed(hi, 4); };
+    auto measured = [&](auto value, auto sd) {
+      QStringList s;
+      for (const auto& p : d.points)
+        s << QObject::tr("#%1: %2").arg(p.index + 1).arg(valueWithStd(value(p), sd(p), decimalsFor(sd(p))));
+      return s.join("\n");
+    };
+    Table theory;
+    theory.columns = {{QObject::tr("stage"), 50, Qt::AlignLeft},
+                      {QObject::tr("theory (ms)"), 30, Qt::AlignRight},
+                      {QObject::tr("basis"), 48, Qt::AlignLeft},
+                      {QObject::tr("measured (ms)"), 46, Qt::AlignRight}};
+    double gyroMin = 0.0, gyroMax = 0.0;
+    for (const auto& l : budget.lines) {
+      theory.rows.push_back({QString::fromStdString(l.stage), range(l.minMs, l.maxMs), QString::fromStdString(l.basis), ""});
+      theory.boldRows.push_back(false);
+      if (l.stage.rfind("board:", 0) != 0) {
+        gyroMin += l.minMs;
+        gyroMax += l.maxMs;
+      }
     }
+    theory.rows.push_back({QObject::tr("gyro's own delay"), range(gyroMin, gyroMax),
+                           QObject::tr("sensing, loop and pulse update"),
+                           measured([](const TestPointResult& p) { return p.gyroDelayMs; },
+                                    [](const TestPointResult& p) { return p.gyroDelayStdMs; })});
+    theory.rows.push_back({QObject::tr("processing board"), range(budget.totalMinMs - gyroMin, budget.boardMaxMs),
+                           QObject::tr("sampling, compensation, serial"),
+                           QObject::tr("%1 (bench constant)").arg(fixed(k.boardDelayMs, 4))});
+    theory.rows.push_back({QObject::tr("IMU delay (total)"), range(budget.totalMinMs, budget.totalMaxMs),
+                           QObject::tr("the paper: < 0.8 ms"),
+                           measured([](const TestPointResult& p) { return p.imuDelayMs; },
+                                    [](const TestPointResult& p) { return p.imuDelayStdMs; })});
+    theory.boldRows.insert(theory.boldRows.end(), {true, true, true});
+    flow.table(theory);
+    flow.paragraph(QObject::tr("Theory with the paper's figures: %1 m of fibre (eigen period %2 µs), loop delay ≤ %3 "
+                               "eigen periods, pulse output updated every %4 ms, %5 MHz board clock, %6-byte frames at "
+                               "%7 Mbaud.")
+                       .arg(theoryIn.fibreLengthM)
+                       .arg(fixed(budget.eigenPeriodUs, 2))
+                       .arg(theoryIn.loopDelayEigenPeriods)
+                       .arg(theoryIn.pulseUpdatePeriodS * 1e3)
+                       .arg(theoryIn.boardClockHz / 1e6)
+                       .arg(theoryIn.frameBytes)
+                       .arg(theoryIn.baud / 1e6),
+                   PageFlow::font(7.5), kMuted);
   }
-  theory.rows.push_back({QObject::tr("gyro's own delay"), range(gyroMin, gyroMax),
-                         QObject::tr("sensing, loop and pulse update"),
-                         measured([](const TestPointResult& p) { return p.gyroDelayMs; },
-                                  [](const TestPointResult& p) { return p.gyroDelayStdMs; })});
-  theory.rows.push_back({QObject::tr("processing board"), range(budget.totalMinMs - gyroMin, budget.boardMaxMs),
-                         QObject::tr("sampling, compensation, serial"),
-                         QObject::tr("%1 (bench constant)").arg(fixed(k.boardDelayMs, 4))});
-  theory.rows.push_back({QObject::tr("IMU delay (total)"), range(budget.totalMinMs, budget.totalMaxMs),
-                         QObject::tr("the paper: < 0.8 ms"),
-                         measured([](const TestPointResult& p) { return p.imuDelayMs; },
-                                  [](const TestPointResult& p) { return p.imuDelayStdMs; })});
-  theory.boldRows.insert(theory.boldRows.end(), {true, true, true});
-  flow.table(theory);
-  flow.paragraph(QObject::tr("Theory with the paper's figures: %1 m of fibre (eigen period %2 µs), loop delay ≤ %3 "
-                             "eigen periods, pulse output updated every %4 ms, %5 MHz board clock, %6-byte frames at "
-                             "%7 Mbaud.")
-                     .arg(theoryIn.fibreLengthM)
-                     .arg(fixed(budget.eigenPeriodUs, 2))
-                     .arg(theoryIn.loopDelayEigenPeriods)
-                     .arg(theoryIn.pulseUpdatePeriodS * 1e3)
-                     .arg(theoryIn.boardClockHz / 1e6)
-                     .arg(theoryIn.frameBytes)
-                     .arg(theoryIn.baud / 1e6),
-                 PageFlow::font(7.5), kMuted);
 
   Table resolution;
   resolution.columns = {{QObject::tr("test point"), 64, Qt::AlignLeft},
@@ -518,6 +530,11 @@ void plotsPage(PageFlow& flow, const TestPointResult& p, const ui::TestPointTrac
   const double plotH = (flow.remainingMm() - 4 * PageFlow::kPlotGapMm) / 4.0;
   const double tableAmp = std::hypot(tr.tableFit.a, tr.tableFit.b);
   const double gyroAmp = std::hypot(tr.gyroFit.a, tr.gyroFit.b);
+  // The recording's own sample intervals (another bench's may be 11 and 20 ms).
+  auto stepMs = [&](std::size_t samples) {
+    return QString::number(samples > 1 ? 1e3 * p.durationS / static_cast<double>(samples - 1) : 0.0, 'g', 3);
+  };
+  const QString tableStepMs = stepMs(p.tableSamples), gyroStepMs = stepMs(p.imuSamples);
 
   flow.plot(plotH, [&](double wMm, double) {
     detail::PlotSpec s;
@@ -528,7 +545,8 @@ void plotsPage(PageFlow& flow, const TestPointResult& p, const ui::TestPointTrac
     s.x1 = w1;
     s.yRange = {-1.15 * tableAmp, 1.15 * tableAmp};
     s.widthMm = wMm;
-    s.curves = {{QObject::tr("table angle (encoder, 1 ms)"), QPen(kTableData, 3.0), &tr.tableNormalised, tableAmp, {}},
+    s.curves = {{QObject::tr("table angle (encoder, %1 ms)").arg(tableStepMs), QPen(kTableData, 3.0),
+                 &tr.tableNormalised, tableAmp, {}},
                 {QObject::tr("fit: A = %1°, T = %2 ms").arg(fixed(p.tableFit.amplitudeDeg, 4), fixed(p.tableFit.periodMs, 4)),
                  QPen(kTableFit, 1.0, Qt::DashLine), nullptr, 1.0,
                  [&tr, tableAmp](double t) { return tr.tableFitNormalised(t) * tableAmp; }}};
@@ -543,7 +561,8 @@ void plotsPage(PageFlow& flow, const TestPointResult& p, const ui::TestPointTrac
     s.x1 = w1;
     s.yRange = {-1.15 * gyroAmp, 1.15 * gyroAmp};
     s.widthMm = wMm;
-    s.curves = {{QObject::tr("gyro angle (summed increments, 2 ms)"), QPen(kGyroData, 3.0), &tr.gyroNormalised, gyroAmp, {}},
+    s.curves = {{QObject::tr("gyro angle (summed increments, %1 ms)").arg(gyroStepMs), QPen(kGyroData, 3.0),
+                 &tr.gyroNormalised, gyroAmp, {}},
                 {QObject::tr("fit: A = %1°, T = %2 ms").arg(fixed(p.gyroFit.amplitudeDeg, 4), fixed(p.gyroFit.periodMs, 4)),
                  QPen(kGyroFit, 1.0, Qt::DashLine), nullptr, 1.0,
                  [&tr, gyroAmp](double t) { return tr.gyroFitNormalised(t) * gyroAmp; }}};
