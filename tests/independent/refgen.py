@@ -803,15 +803,20 @@ def write_dir(res, out, overwrite=False):
             return [np.nonzero((t >= 0.0) & (t <= res["t_end"]))[0]]
         return [np.nonzero((t >= a) & (t <= b))[0] for (a, b) in res["windows"]]
 
+    def stream_columns(times):
+        """test_point (several test points) and time_s columns of one stream, and the rows kept."""
+        sel = select(times)
+        cols, header, fmts = [], [], []
+        if many:
+            cols.append(np.concatenate([np.full(s.size, i + 1) for i, s in enumerate(sel)]))
+            header.append("test_point")
+            fmts.append("%d")
+        idx = np.concatenate(sel)
+        cols.append(times[idx]); header.append("time_s"); fmts.append(ff)
+        return cols, header, fmts, idx
+
     # table
-    sel = select(res["table_t"])
-    cols, header, fmts = [], [], []
-    if many:
-        cols.append(np.concatenate([np.full(s.size, i + 1) for i, s in enumerate(sel)]))
-        header.append("test_point")
-        fmts.append("%d")
-    idx = np.concatenate(sel)
-    cols.append(res["table_t"][idx]); header.append("time_s"); fmts.append(ff)
+    cols, header, fmts, idx = stream_columns(res["table_t"])
     for ax in axes_out:
         cols.append(res["table_deg"][idx, AXES.index(ax)]); header.append(ax + "_deg"); fmts.append(ff)
     _write_csv(os.path.join(out, "table.csv"),
@@ -820,14 +825,7 @@ def write_dir(res, out, overwrite=False):
     res["_rows_table"] = idx.size
 
     # gyro
-    sel = select(res["gyro_t"])
-    cols, header, fmts = [], [], []
-    if many:
-        cols.append(np.concatenate([np.full(s.size, i + 1) for i, s in enumerate(sel)]))
-        header.append("test_point")
-        fmts.append("%d")
-    idx = np.concatenate(sel)
-    cols.append(res["gyro_t"][idx]); header.append("time_s"); fmts.append(ff)
+    cols, header, fmts, idx = stream_columns(res["gyro_t"])
     suffix = "_inc_deg" if p["rate_output"] is None else "_rate_deg_s"
     for ax in axes_out:
         cols.append(res["gyro_val"][idx, AXES.index(ax)]); header.append(ax + suffix); fmts.append(ff)
