@@ -1,24 +1,21 @@
 #include "cli_commands.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <iterator>
-#include <mutex>
 #include <nlohmann/json.hpp>
 #include <sstream>
-#include <thread>
 
 #include "acquisition/acquisition.h"
 #include "acquisition/simulator_source.h"
 #include "analysis/delay_analysis.h"
 #include "analysis/report_writer.h"
-#include "analysis/statistics.h"
 #include "analysis/theory.h"
 #include "common/version.h"
+#include "diagnosis/accuracy_study.h"
 #include "diagnosis/effects.h"
 #include "model/simulator.h"
 #include "protocol/recording_builder.h"
@@ -251,60 +248,19 @@ int accuracyCommand(CliArguments& args) {
   FOG_TRY_NUMBER(threads, args, "threads", 2.0);
   if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
   if (seeds < 3 || threads < 1) return fail(invalidArgument("--seeds must be >= 3 and --threads >= 1"), 2);
-
-  struct Condition {
-    const char* name;
-    TestPlan plan;
-    double gyroDelayMs;
-  };
-  const Condition conditions[] = {{"0.1 Hz / 10 deg, 294 s", TestPlan::paperSlow(), 0.2358},
-                                  {"1 Hz / 3 deg, 60 s", TestPlan::paperFast(), 0.2967}};
   std::printf("| condition | seeds | true lag (ms) | bias (us) | scatter (us) | mean reported std (us) | "
               "CRLB (us) | std/scatter | scatter/CRLB | |bias| < 0.2 us + 0.1 scatter |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
   int failures = 0;
-  for (const auto& cond : conditions) {
-    const int n = static_cast<int>(seeds);
-    std::vector<double> lag(n), sd(n), bound(n);
-    std::atomic<int> next{0};
-    std::mutex errorMutex;
-    std::string error;
-    double trueLagMs = 0.0;
-    auto worker = [&] {
-      for (int i = next++; i < n; i = next++) {
-        model::SimConfig config;
-        config.seed = static_cast<std::uint64_t>(i + 1);
-        config.fog.setOwnDelayS(cond.gyroDelayMs * 1e-3);
-        auto run = model::simulate(config, cond.plan);
-        auto rec = run ? protocol::decodeRecording(run->bytes) : Result<Recording>(run.status());
-        auto rep = rec ? analysis::analyzeRecording(*rec, analysis::BenchConstants{})
-                       : Result<analysis::DelayReport>(rec.status());
-        if (!rep) {
-          std::lock_guard<std::mutex> lock(errorMutex);
-          error = rep.status().message();
-          continue;
-        }
-        lag[i] = rep->points[0].lagMs;
-        sd[i] = rep->points[0].lagStdMs;
-        bound[i] = rep->points[0].crlbMs;
-        trueLagMs = config.trueLagS() * 1e3;
-      }
-    };
-    std::vector<std::thread> pool;
-    for (int t = 0; t < static_cast<int>(threads); ++t) pool.emplace_back(worker);
-    for (auto& t : pool) t.join();
-    if (!error.empty()) return fail(Status(StatusCode::kInternal, "a trial failed: " + error), 1);
-    const auto l = analysis::meanAndSpread(lag);
-    const auto s = analysis::meanAndSpread(sd);
-    const auto b = analysis::meanAndSpread(bound);
-    const double biasUs = (l.mean - trueLagMs) * 1e3, scatterUs = l.stdDev * 1e3;
-    const bool biasOk = std::abs(biasUs) < 0.2 + 0.1 * scatterUs;
-    const bool stdOk = std::abs(s.mean / l.stdDev - 1.0) <= 0.15;
-    const bool boundOk = l.stdDev <= 1.2 * b.mean;
-    failures += !biasOk + !stdOk + !boundOk;
-    std::printf("| %s | %d | %.4f | %+.3f ± %.3f | %.3f | %.3f | %.3f | %.3f %s | %.3f %s | %s |\n", cond.name, n,
-                trueLagMs, biasUs, l.stdOfMean * 1e3, scatterUs, s.mean * 1e3, b.mean * 1e3, s.mean / l.stdDev,
-                stdOk ? "ok" : "FAIL", l.stdDev / b.mean, boundOk ? "ok" : "FAIL", biasOk ? "ok" : "FAIL");
+  for (const auto& condition : diagnosis::paperAccuracyConditions()) {
+    auto r = diagnosis::runAccuracyStudy(condition, static_cast<int>(seeds), static_cast<int>(threads));
+    if (!r) return fail(r.status(), 1);
+    failures += !r->ok();
+    auto mark = [](bool ok) { return ok ? "ok" : "FAIL"; };
+    std::printf("| %s | %d | %.4f | %+.3f ± %.3f | %.3f | %.3f | %.3f | %.3f %s | %.3f %s | %s |\n", r->name.c_str(),
+                r->seeds, r->trueLagMs, r->biasUs, r->biasStdUs, r->scatterUs, r->meanReportedStdUs, r->meanCrlbUs,
+                r->meanReportedStdUs / r->scatterUs, mark(r->stdOk), r->scatterUs / r->meanCrlbUs, mark(r->boundOk),
+                mark(r->biasOk));
     std::fflush(stdout);
   }
   return failures == 0 ? 0 : 1;

@@ -43,7 +43,7 @@ void GyroChannel::whitenRows(double* x, std::size_t columns) const {
   }
 }
 
-void estimateGyroNoise(GyroChannel& gyro, const std::vector<double>& r, double blockS, BlockStatistic statistic) {
+void estimateGyroNoise(GyroChannel& gyro, const std::vector<double>& r, double blockS) {
   const std::size_t n = r.size();
   // Pulse quantisation from the lag-1 autocovariance (g1 = -s2): at the frame
   // level quantisation dominates, so this is where it is seen best.
@@ -60,29 +60,21 @@ void estimateGyroNoise(GyroChannel& gyro, const std::vector<double>& r, double b
   // is q*M*dt + 2*s2 (quantisation enters only at the two ends). Block sums
   // see the noise at low frequencies, near the swing, where the lag is
   // decided; per-frame variances would be swamped by quantisation.
-  //
-  // The second difference of neighbouring block sums (an Allan variance of
-  // the rate) has variance 2*q*M*dt + 6*s2: a slow wander of the bias (bias
-  // instability), nearly linear over two blocks, cancels in it, where it
-  // would count as random walk in the first difference.
-  const bool second = statistic == BlockStatistic::kSecondDifference;
-  const std::size_t m = std::clamp<std::size_t>(static_cast<std::size_t>(std::llround(blockS / gyro.framePeriodS)),
-                                                1, std::max<std::size_t>(n / (second ? 12 : 8), 1));
+  const std::size_t m = std::clamp<std::size_t>(
+      static_cast<std::size_t>(std::llround(blockS / gyro.framePeriodS)), 1, std::max<std::size_t>(n / 8, 1));
   std::vector<double> prefix(n + 1, 0.0);
   for (std::size_t k = 0; k < n; ++k) prefix[k + 1] = prefix[k] + r[k];
   double v = 0.0;
   std::size_t blocks = 0;
-  for (std::size_t k = 0; k + (second ? 2 : 1) * m <= n; ++k) {
+  for (std::size_t k = 0; k + m <= n; ++k) {
     const double sum = prefix[k + m] - prefix[k];
-    const double d = second ? (prefix[k + 2 * m] - prefix[k + m]) - sum : sum;
-    v += d * d;
+    v += sum * sum;
     ++blocks;
   }
   v /= static_cast<double>(std::max<std::size_t>(blocks, 1));
-  const double walkFactor = second ? 2.0 : 1.0, quantFactor = second ? 6.0 : 2.0;
-  const double floorVar = 1e-6 * (v + quantFactor * s2) + 1e-30;
-  const double usedBlockS = walkFactor * static_cast<double>(m) * gyro.framePeriodS;
-  const double q = std::max(v - quantFactor * s2, floorVar) / usedBlockS;
+  const double floorVar = 1e-6 * (v + 2.0 * s2) + 1e-30;
+  const double usedBlockS = static_cast<double>(m) * gyro.framePeriodS;
+  const double q = std::max(v - 2.0 * s2, floorVar) / usedBlockS;
   gyro.setNoise(q, s2);
   // Sampling error of v - 2*s2. The random-walk part of overlapping m-sums
   // varies like 2 (q m dt)^2 (4/3) m/n (few independent blocks); their
@@ -91,60 +83,10 @@ void estimateGyroNoise(GyroChannel& gyro, const std::vector<double>& r, double b
   // part is taken at least at the size of the quantisation part, which is
   // where a short record cannot tell how large it is.
   const auto nd = static_cast<double>(std::max<std::size_t>(n, 1));
-  const double walk = std::max(q * usedBlockS, quantFactor * s2 * std::sqrt(2.0 / nd));
+  const double walk = std::max(q * usedBlockS, 2.0 * s2 * std::sqrt(2.0 / nd));
   const double v1 = 2.0 * s2 + q * gyro.framePeriodS;
-  const double varV = 2.0 * walk * walk * (4.0 / 3.0) * static_cast<double>(m) / nd +
-                      4.0 * quantFactor * quantFactor * s2 * s2 / nd;
-  gyro.arwVarianceStdDeg2PerS = std::sqrt(varV + quantFactor * quantFactor * v1 * v1 / nd) / usedBlockS;
-}
-
-std::optional<SwingBandWalk> swingBandRandomWalk(const GyroChannel& gyro, const std::vector<double>& r, double f0,
-                                                 int bins) {
-  const std::size_t n = r.size();
-  if (n < 64 || bins < 2 || !(gyro.framePeriodS > 0.0)) return std::nullopt;
-  const double t0 = gyro.endS.front(), spanS = gyro.endS.back() - t0;
-  if (!(spanS > 0.0)) return std::nullopt;
-  // Cumulative residual angle at the frame ends, Hann-windowed.
-  std::vector<double> x(n), w(n);
-  double sum = 0.0, w2 = 0.0, xm = 0.0;
-  for (std::size_t k = 0; k < n; ++k) {
-    sum += r[k];
-    x[k] = sum;
-    xm += sum;
-  }
-  xm /= static_cast<double>(n);  // the mean removed: less leakage through the window
-  for (std::size_t k = 0; k < n; ++k) {
-    w[k] = 0.5 - 0.5 * std::cos(kTwoPi * (gyro.endS[k] - t0) / spanS);
-    w2 += w[k] * w[k];
-  }
-  const double dt = gyro.framePeriodS, s2 = gyro.quantisationVarianceDeg2;
-  double qSum = 0.0;
-  int used = 0;
-  for (int side = -1; side <= 1; side += 2)
-    for (int j = 2; j <= bins + 1; ++j) {
-      const double f = f0 + side * j / spanS;
-      if (f < 3.0 / spanS) continue;
-      const double om = kTwoPi * f;
-      double re = 0.0, im = 0.0;
-      SinCosStream phase(om, t0);
-      for (std::size_t k = 0; k < n; ++k) {
-        double sn, cs;
-        phase.next(gyro.endS[k], sn, cs);
-        re += w[k] * (x[k] - xm) * cs;
-        im -= w[k] * (x[k] - xm) * sn;
-      }
-      const double psd = 2.0 * dt * (re * re + im * im) / w2;  // one-sided, deg^2/Hz
-      qSum += std::max(psd - 2.0 * s2 * dt, 0.0) * om * om / 2.0;
-      ++used;
-    }
-  if (used < 2) return std::nullopt;
-  SwingBandWalk out;
-  out.bins = used;
-  out.qDeg2PerS = qSum / used;
-  // Each ordinate is chi^2 with 2 dof (relative variance 1); Hann bins two
-  // apart are nearly independent, neighbours correlate: about used/1.5 of them.
-  out.qStdDeg2PerS = out.qDeg2PerS * std::sqrt(1.5 / used);
-  return out;
+  const double varV = 2.0 * walk * walk * (4.0 / 3.0) * static_cast<double>(m) / nd + 16.0 * s2 * s2 / nd;
+  gyro.arwVarianceStdDeg2PerS = std::sqrt(varV + 4.0 * v1 * v1 / nd) / usedBlockS;
 }
 
 namespace {

@@ -15,7 +15,6 @@
 // and frequency are nearly uncorrelated in the fits.
 
 #include <cstddef>
-#include <optional>
 #include <vector>
 
 #include "analysis/sin_cos_series.h"
@@ -100,26 +99,8 @@ Result<Channels> makeChannels(const TestPointData& data, double incrementScale);
 // Estimates q and s2 from residuals of increments and applies them to the
 // channel: s2 from the lag-1 autocovariance, q from the variance of sums of
 // increments over blockS seconds.
-// kFirstDifference: sums of M increments (variance q*M*dt + 2*s2);
-// kSecondDifference: differences of neighbouring sums (2*q*M*dt + 6*s2),
-// blind to a bias that wanders slowly over two blocks.
-enum class BlockStatistic { kFirstDifference, kSecondDifference };
-void estimateGyroNoise(GyroChannel& gyro, const std::vector<double>& residualDeg, double blockS,
-                       BlockStatistic statistic = BlockStatistic::kFirstDifference);
+void estimateGyroNoise(GyroChannel& gyro, const std::vector<double>& residualDeg, double blockS);
 
-// The random walk that the gyro's noise shows near the swing frequency f0,
-// where the lag is decided: the Hann-windowed periodogram of the cumulative
-// residual angle at f0 +- 2/T .. f0 +- (bins+1)/T (T the record), each
-// ordinate S(f) read as 2*s2*dt + 2*q/(2 pi f)^2 and the q averaged. Slower
-// noise (bias instability) counts as much as it does at f0, unlike block
-// statistics that see it at other time scales. Returns {q, standard error of
-// q}; empty when fewer than 2 bins fit below the record's resolution.
-struct SwingBandWalk {
-  double qDeg2PerS = 0.0, qStdDeg2PerS = 0.0;
-  int bins = 0;
-};
-std::optional<SwingBandWalk> swingBandRandomWalk(const GyroChannel& gyro, const std::vector<double>& residualDeg,
-                                                 double f0Hz, int bins);
 
 // Cumulative gyro angle at each interval end (starting from 0 before the
 // first interval); lost frames' increments are missing.

@@ -382,17 +382,6 @@ Result<TestPointResult> analyzeTestPoint(const TestPointData& data, double incre
   const double whiteRateVariance = ch.gyro.arwVarianceDeg2PerS;
   r.noise.gyroArwDegPerSqrtH = std::sqrt(whiteRateVariance) * 60.0;
   estimateGyroNoise(ch.gyro, startResiduals, std::clamp(0.25 / f0, 0.05, std::max(0.05, r.durationS / 8.0)));
-  // With 8 periods or more, the random walk is read from the residual's
-  // spectrum beside the swing frequency itself (channels.h): blocks see a
-  // slowly wandering bias at other time scales than the swing's (the
-  // simulator's bias instability: 13 % too much at 0.1 Hz, or 14 % too
-  // little with second differences).
-  if (r.periods >= 8.0)
-    if (auto band = swingBandRandomWalk(ch.gyro, startResiduals, f0, std::min(8, static_cast<int>(r.periods / 4.0)))) {
-      const double s2 = ch.gyro.quantisationVarianceDeg2;
-      ch.gyro.setNoise(std::max(band->qDeg2PerS, 1e-30), s2);
-      ch.gyro.arwVarianceStdDeg2PerS = band->qStdDeg2PerS;
-    }
 
   // 3. The gyro: 3-parameter fit at the nominal frequency (beside, on the
   // second core), then 4-parameter.

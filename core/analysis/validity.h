@@ -25,11 +25,11 @@ namespace fog::analysis {
 struct ValidityCheck {
   std::string id;
   bool passed = true;
+  std::string detail;  // what was measured; when failed, what it means and what to do
   // false: the check could not be judged (its measure is meaningless, e.g.
   // timing on a swing that is not a steady sinusoid); it then neither passes
   // nor fails, and the detail says why.
   bool judged = true;
-  std::string detail;  // what was measured; when failed, what it means and what to do
 };
 
 // Swing frequency of the table angle, for streams that do not state it and

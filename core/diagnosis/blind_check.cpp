@@ -1,13 +1,12 @@
 #include "diagnosis/blind_check.h"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <mutex>
-#include <thread>
 
+#include "common/parallel.h"
 #include "common/units.h"
 #include "model/random.h"
 #include "model/simulator.h"
@@ -165,10 +164,10 @@ Result<BlindCheckSummary> runBlindCheck(const BlindCheckOptions& options,
 
   const int n = std::max(1, options.trials);
   out.trials.resize(static_cast<std::size_t>(n));
-  std::atomic<int> next{0};
   std::mutex mutex;
-  auto worker = [&] {
-    for (int t = next++; t < n; t = next++) {
+  parallelFor(static_cast<std::size_t>(n), options.threads, [&](std::size_t slotIndex) {
+    {
+      const int t = static_cast<int>(slotIndex);
       model::Random rng(model::Random::derive(options.seed, static_cast<std::uint64_t>(t)));
       TrialResult r;
       r.trial = t;
@@ -234,11 +233,7 @@ Result<BlindCheckSummary> runBlindCheck(const BlindCheckOptions& options,
       out.trials[static_cast<std::size_t>(t)] = r;
       if (progress) progress(r);
     }
-  };
-  std::vector<std::thread> pool;
-  for (int k = 1; k < std::max(1, options.threads); ++k) pool.emplace_back(worker);
-  worker();
-  for (auto& th : pool) th.join();
+  });
 
   int top1 = 0, top3 = 0, top1x3 = 0, top3x3 = 0, none = 0, falseAlarms = 0, outside = 0, unexplained = 0, pairs = 0,
       pairHits = 0;

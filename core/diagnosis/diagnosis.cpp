@@ -17,6 +17,7 @@
 #include "common/units.h"
 #include "model/random.h"
 #include "model/simulator.h"
+#include "common/parallel.h"
 #include "protocol/recording_builder.h"
 
 namespace fog::diagnosis {
@@ -24,19 +25,6 @@ namespace fog::diagnosis {
 namespace {
 
 using EffectList = std::vector<std::pair<EffectId, std::vector<double>>>;
-
-// Runs jobs on up to `threads` threads; each job writes its own slot.
-void parallelFor(std::size_t n, int threads, const std::function<void(std::size_t)>& job) {
-  std::atomic<std::size_t> next{0};
-  auto worker = [&] {
-    for (std::size_t i = next++; i < n; i = next++) job(i);
-  };
-  const int t = std::max(1, std::min<int>(threads, static_cast<int>(n)));
-  std::vector<std::thread> pool;
-  for (int k = 1; k < t; ++k) pool.emplace_back(worker);
-  worker();
-  for (auto& th : pool) th.join();
-}
 
 struct Replay {
   Calibration cal;
