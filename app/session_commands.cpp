@@ -94,11 +94,18 @@ int analyzeSessionCommand(CliArguments& args, const std::string& path) {
   std::cout << (json ? analysis::formatReportJson(*report, context) + "\n"
                      : analysis::formatReportText(*report, context));
   if (noStore) return 0;
+  if ((*reader)->beingRecorded()) {
+    // Never compete with the recorder for the write lock; the analysis of a
+    // part of the recording is printed, not stored.
+    std::cerr << "fogbench-cli: note: the result was not stored: session " << path
+              << " is being recorded right now; analyse it again when the recording has finished\n";
+    return 0;
+  }
   reader->reset();  // close before writing
   if (auto s = session::addResult(path, acquisition::analysisSettingsJson(*constants, "fogbench-cli analyze"),
                                   analysis::formatReportJson(*report, context));
       !s.isOk())
-    return fail(Status(s.code(), "the report above was not stored: " + s.message()), 2);
+    return fail(s, 2);
   if (!json) std::cout << "Result stored in session " << path << ".\n";
   return 0;
 }

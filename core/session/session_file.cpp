@@ -1,8 +1,12 @@
 #include "session/session_file.h"
 
+#include <fcntl.h>
 #include <sqlite3.h>
+#include <sys/file.h>
+#include <unistd.h>
 
 #include <array>
+#include <cerrno>
 #include <bit>
 #include <cstdio>
 #include <cstring>
@@ -110,6 +114,17 @@ constexpr std::size_t kImuRecordBytes = 5 * 8 + 4;    // time_s, dx, dy, dz (deg
 // A raw chunk is committed early once this large, so memory stays bounded
 // when bytes arrive faster than real time (replay, benchmarks).
 constexpr std::size_t kMaxPendingRaw = 1 << 20;
+// Every connection waits for a lock rather than failing at once. Readers never
+// block a WAL writer; the only other writer is addResult(), whose transaction
+// is one small INSERT (milliseconds), so the recorder waits at most that long.
+// The recorder's own timeout is generous: losing a recording to a lock is
+// never acceptable.
+constexpr int kRecorderBusyTimeoutMs = 30000;
+constexpr int kReaderBusyTimeoutMs = 5000;
+constexpr int kAddResultBusyTimeoutMs = 5000;
+// finish() tries this long to make the file self-contained again; a reader
+// that keeps the file open only leaves the -wal beside it a while longer.
+constexpr int kFinishBusyTimeoutMs = 1000;
 
 // --- little helpers -------------------------------------------------------
 
@@ -294,12 +309,23 @@ bool looksLikeSession(const std::string& path) {
 
 bool isSqliteFile(const std::string& path) { return readHeader(path).isOk(); }
 
+bool isBeingRecorded(const std::string& path) {
+  // Called before the caller opens its own SQLite connection to the file:
+  // closing this descriptor drops every fcntl() lock the process holds on it.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return false;
+  const bool live = ::flock(fd, LOCK_SH | LOCK_NB) != 0 && errno == EWOULDBLOCK;
+  ::close(fd);
+  return live;
+}
+
 // --- SessionWriter ---------------------------------------------------------
 
 Result<std::unique_ptr<SessionWriter>> SessionWriter::create(const std::string& path, const SessionInfo& infoIn) {
   std::error_code ec;
-  if (fs::exists(path, ec))
-    return ioError("'" + path + "' already exists; a session file is never overwritten: choose another name");
+  const std::string exists =
+      "'" + path + "' already exists; a session file is never overwritten: choose another name";
+  if (fs::exists(path, ec)) return ioError(exists);
   for (const char* suffix : {"-wal", "-journal", "-shm"}) {
     if (fs::exists(path + suffix, ec))
       return ioError("a leftover '" + path + suffix + "' from an earlier file of the same name exists; move it "
@@ -309,21 +335,52 @@ Result<std::unique_ptr<SessionWriter>> SessionWriter::create(const std::string& 
   if (info.createdUtc.empty()) info.createdUtc = utcNow();
   if (info.softwareVersion.empty()) info.softwareVersion = FOG_VERSION;
 
+  // The file is created exclusively (O_EXCL): of two programs creating the
+  // same name, exactly one wins, and the other never touches the winner's
+  // file. The winner keeps this descriptor open with an exclusive flock()
+  // until it has finished: isBeingRecorded() tells a live recording from an
+  // interrupted one by it. (flock() locks are independent of SQLite's fcntl()
+  // locks, and the descriptor is closed only after SQLite's connection.)
+  const int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+  if (fd < 0) {
+    if (errno == EEXIST) return ioError(exists);
+    return ioError("cannot create session '" + path + "': " + std::strerror(errno) +
+                   "; check the folder exists and is writable");
+  }
+  ::flock(fd, LOCK_EX);  // ours alone: at most a reader's momentary probe delays it
   std::unique_ptr<SessionWriter> w(new SessionWriter());
   w->path_ = path;
+  w->lockFd_ = fd;
+  // Side files that exist now are not ours (another program opened the new
+  // file in the instant since it was made): never remove them.
+  bool sideFilesOurs = true;
+  for (const char* suffix : {"-wal", "-journal", "-shm"})
+    if (fs::exists(path + suffix, ec)) sideFilesOurs = false;
   const int rc = sqlite3_open_v2(path.c_str(), &w->db_, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE, nullptr);
   auto abandon = [&](const std::string& what) -> Status {
     std::string msg = "cannot create session '" + path + "': " + what + " (" + sqliteMessage(w->db_) + ")";
     sqlite3_close(w->db_);
     w->db_ = nullptr;
-    fs::remove(path, ec);  // our own half-made file; holds no data yet
-    fs::remove(path + "-journal", ec);
-    fs::remove(path + "-wal", ec);
-    fs::remove(path + "-shm", ec);
+    // Only what this call created: the file it made exclusively (it holds no
+    // data yet) and the side files its own connection made.
+    fs::remove(path, ec);
+    if (sideFilesOurs)
+      for (const char* suffix : {"-journal", "-wal", "-shm"}) fs::remove(path + suffix, ec);
+    ::close(w->lockFd_);
+    w->lockFd_ = -1;
     return ioError(msg + "; check the folder exists and is writable");
   };
+  if (!sideFilesOurs) {
+    sqlite3_close(w->db_);
+    w->db_ = nullptr;
+    fs::remove(path, ec);
+    ::close(w->lockFd_);
+    w->lockFd_ = -1;
+    return ioError("another program opened '" + path + "' while it was being created; choose another name");
+  }
   if (rc != SQLITE_OK) return abandon("open failed");
   sqlite3_extended_result_codes(w->db_, 1);
+  sqlite3_busy_timeout(w->db_, kRecorderBusyTimeoutMs);
   // Everything that identifies the file goes in one rollback-journal
   // transaction, written to the main file before WAL mode is switched on:
   // a file is either a complete empty session or not a session at all.
@@ -374,11 +431,16 @@ SessionWriter::~SessionWriter() {
     if (broken_.isOk()) (void)commitPending();
     sqlite3_close(db_);
   }
+  if (lockFd_ >= 0) ::close(lockFd_);  // after SQLite's connection: releases the recording lock
 }
 
 Status SessionWriter::fail(const std::string& what) {
+  const int code = db_ ? (sqlite3_extended_errcode(db_) & 0xff) : SQLITE_NOMEM;
+  const char* advice = code == SQLITE_FULL                          ? "; the disk is full: free some space"
+                       : code == SQLITE_BUSY || code == SQLITE_LOCKED ? "; another program holds the file locked"
+                                                                      : "; check free disk space and the device";
   broken_ = ioError("writing session '" + path_ + "' failed while " + what + ": " + sqliteMessage(db_) +
-                    "; the data committed so far is kept; check free disk space");
+                    "; the data committed so far is kept" + advice);
   exec(db_, "ROLLBACK");
   return broken_;
 }
@@ -512,11 +574,15 @@ Status SessionWriter::finish(bool complete, const std::string& reason) {
   finished_ = true;
   // Back to a single self-contained file: checkpoint the WAL into the main
   // file and drop it. Everything is committed already, so a failure here
-  // loses nothing (the -wal file simply stays beside the session).
+  // loses nothing (the -wal file simply stays beside the session, e.g. while
+  // a reader has it open, and the next connection to close checkpoints it).
+  sqlite3_busy_timeout(db_, kFinishBusyTimeoutMs);
   exec(db_, "PRAGMA wal_checkpoint(TRUNCATE)");
   exec(db_, "PRAGMA journal_mode = DELETE");
   if (sqlite3_close(db_) != SQLITE_OK) return fail("closing the file");
   db_ = nullptr;
+  ::close(lockFd_);
+  lockFd_ = -1;
   return Status::ok();
 }
 
@@ -529,8 +595,11 @@ Result<std::unique_ptr<SessionReader>> SessionReader::open(const std::string& pa
 
   std::unique_ptr<SessionReader> r(new SessionReader());
   r->path_ = path;
+  r->live_ = isBeingRecorded(path);
   if (sqlite3_open_v2(path.c_str(), &r->db_, SQLITE_OPEN_READONLY, nullptr) != SQLITE_OK)
     return ioError("cannot open session '" + path + "': " + sqliteMessage(r->db_) + "; check its permissions");
+  // A recorder may be checkpointing or another program running WAL recovery.
+  sqlite3_busy_timeout(r->db_, kReaderBusyTimeoutMs);
   auto version = checkIdentity(r->db_, path);
   if (!version) return version.status();
   r->schemaVersion_ = *version;
@@ -582,6 +651,7 @@ Status SessionReader::readError(const std::string& what) const {
 std::string SessionReader::incompleteReason() const {
   if (state_ == "complete") return {};
   if (state_ == "incomplete") return reason_;
+  if (live_) return "being recorded now: the session is not finished yet";
   return "recording was interrupted: the recording program stopped without finishing the session "
          "(crash, kill or power cut); everything committed until then is kept";
 }
@@ -727,18 +797,32 @@ Status addResult(const std::string& path, const std::string& settingsJson, const
   auto header = checkHeader(path);
   if (!header) return header.status();
   if (header->userVersion > kSchemaVersion) return invalidArgument(newerSchemaMessage(path, header->userVersion));
+  // A result of a recording in progress is of a part of it, and taking the
+  // write lock would compete with the recorder: never while it records.
+  if (isBeingRecorded(path))
+    return ioError("the result was not stored: session '" + path +
+                   "' is being recorded right now; analyse it again when the recording has finished");
   sqlite3* db = nullptr;
   struct Closer {
     sqlite3*& db;
     ~Closer() { sqlite3_close(db); }
   } closer{db};
   if (sqlite3_open_v2(path.c_str(), &db, SQLITE_OPEN_READWRITE, nullptr) != SQLITE_OK)
-    return ioError("cannot open session '" + path + "' to store a result: " + sqliteMessage(db) +
-                   "; check the file is writable");
-  sqlite3_busy_timeout(db, 5000);  // a recorder or another analysis may hold the lock briefly
+    return ioError("the result was not stored: cannot open session '" + path + "' for writing: " +
+                   sqliteMessage(db) + "; check the file is writable");
+  // A recorder or another analysis may hold the write lock briefly; a
+  // recorder storing its decoded samples may hold it longer: then the result
+  // is not stored (and the recorder is not disturbed).
+  sqlite3_busy_timeout(db, kAddResultBusyTimeoutMs);
   auto failed = [&](const char* what) {
-    Status s = ioError("cannot store the result in session '" + path + "' (" + what + "): " + sqliteMessage(db) +
-                       "; the session is unchanged");
+    const int code = sqlite3_errcode(db);
+    Status s = code == SQLITE_BUSY || code == SQLITE_LOCKED
+                   ? ioError("the result was not stored in session '" + path +
+                             "': the file stayed locked by its recorder or another program for " +
+                             std::to_string(kAddResultBusyTimeoutMs / 1000) +
+                             " s; the session is unchanged; analyse it again when the recording has finished")
+                   : ioError("the result was not stored in session '" + path + "' (" + what + "): " +
+                             sqliteMessage(db) + "; the session is unchanged; check the file is writable");
     exec(db, "ROLLBACK");
     return s;
   };

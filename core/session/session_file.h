@@ -106,6 +106,7 @@ class SessionWriter {
   std::uint64_t committed_ = 0;
   std::uint64_t commits_ = 0;
   std::int64_t nextChunk_ = 0;
+  int lockFd_ = -1;  // the file's descriptor holding the recording lock (flock) until finished
   bool finished_ = false;
   Status broken_;  // first write error; the writer refuses further writes after one
 };
@@ -121,6 +122,9 @@ class SessionReader {
   const SessionInfo& info() const { return info_; }
   int schemaVersion() const { return schemaVersion_; }
   bool complete() const { return state_ == "complete"; }
+  // A recorder (this or another program) was recording into the file when it
+  // was opened: the session is live, not interrupted.
+  bool beingRecorded() const { return live_ && state_ == "recording"; }
   // Empty when complete; the writer's reason, or "recording was interrupted"
   // when the recording program stopped without finishing (crash, kill, power).
   std::string incompleteReason() const;
@@ -148,10 +152,13 @@ class SessionReader {
   int schemaVersion_ = 0;
   std::string state_;
   std::string reason_;
+  bool live_ = false;  // a recorder had the file locked when it was opened
 };
 
 // Appends an analysis result (opens the file read-write briefly). Never
-// touches the raw stream or the decoded samples.
+// touches the raw stream or the decoded samples. Refuses (an error saying "not
+// stored") while the session is being recorded, and when the file stays
+// locked by another writer for more than a few seconds.
 Status addResult(const std::string& path, const std::string& settingsJson, const std::string& reportJson);
 
 // Cheap test for listing folders: an SQLite header whose application_id is
@@ -161,6 +168,10 @@ bool looksLikeSession(const std::string& path);
 // Any SQLite database (the header magic): what a caller that accepts both raw
 // streams and sessions hands to SessionReader for a clear verdict.
 bool isSqliteFile(const std::string& path);
+// A SessionWriter (in any process) is recording into the file right now: it
+// holds an exclusive flock() on it from create() until finish(). False for a
+// finished or an interrupted (crashed, killed) session.
+bool isBeingRecorded(const std::string& path);
 
 // Current UTC time as ISO 8601 with seconds, "2026-11-22T02:45:00Z".
 std::string utcNow();
