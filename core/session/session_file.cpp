@@ -211,6 +211,10 @@ struct HeaderInfo {
   std::uint32_t applicationId = 0;
   int userVersion = 0;
   std::string truncated;  // non-empty: why the file is shorter than its header says
+  // The file is shorter than its header says, but a -wal lies beside it: a
+  // crash or a full disk during a checkpoint leaves exactly this, with every
+  // missing page still in the -wal. SQLite decides (checkWalCoversTruncation).
+  bool truncatedWithWal = false;
 };
 
 // Errors only for a file that is missing, unreadable, empty or not SQLite.
@@ -239,9 +243,13 @@ Result<HeaderInfo> readHeader(const std::string& path) {
   std::uint64_t pageSize = (std::uint64_t{h[16]} << 8) | h[17];
   if (pageSize == 1) pageSize = 65536;
   const std::uint64_t pages = bigEndian32(h.data() + 28);
-  if (pages != 0 && bigEndian32(h.data() + 24) == bigEndian32(h.data() + 92) && size < pages * pageSize)
+  if (pages != 0 && bigEndian32(h.data() + 24) == bigEndian32(h.data() + 92) && size < pages * pageSize) {
     info.truncated = "'" + path + "' is truncated: it holds " + std::to_string(size) + " of its " +
                      std::to_string(pages * pageSize) + " bytes; copy it again from the original or restore a backup";
+    // A WAL holds at least its 32-byte header and one frame.
+    const auto walSize = fs::file_size(path + "-wal", ec);
+    info.truncatedWithWal = !ec && walSize > 32 + 24;
+  }
   return info;
 }
 
@@ -255,8 +263,19 @@ Result<HeaderInfo> checkHeader(const std::string& path) {
     return corruptData("'" + path + "' is an SQLite database but not a fogbench session (application_id " + id +
                        ")");
   }
-  if (!info->truncated.empty()) return corruptData(info->truncated);
+  if (!info->truncated.empty() && !info->truncatedWithWal) return corruptData(info->truncated);
   return info;
+}
+
+// For a file that is shorter than its header says but has a -wal: the
+// connection sees the pages of the -wal over the main file; if the whole
+// database checks out through it, nothing is missing (the -wal is
+// checkpointed into the main file by the next connection that writes).
+Status checkWalCoversTruncation(sqlite3* db, const HeaderInfo& header) {
+  if (!header.truncatedWithWal) return Status::ok();
+  Stmt s(db, "PRAGMA quick_check(1)");
+  if (s.ok() && s.step() == SQLITE_ROW && s.text(0) == "ok") return Status::ok();
+  return corruptData(header.truncated + " (its -wal does not hold the missing pages)");
 }
 
 std::string newerSchemaMessage(const std::string& path, std::int64_t version) {
@@ -326,11 +345,6 @@ Result<std::unique_ptr<SessionWriter>> SessionWriter::create(const std::string& 
   const std::string exists =
       "'" + path + "' already exists; a session file is never overwritten: choose another name";
   if (fs::exists(path, ec)) return ioError(exists);
-  for (const char* suffix : {"-wal", "-journal", "-shm"}) {
-    if (fs::exists(path + suffix, ec))
-      return ioError("a leftover '" + path + suffix + "' from an earlier file of the same name exists; move it "
-                     "away or delete it, or choose another name");
-  }
   SessionInfo info = infoIn;
   if (info.createdUtc.empty()) info.createdUtc = utcNow();
   if (info.softwareVersion.empty()) info.softwareVersion = FOG_VERSION;
@@ -351,11 +365,16 @@ Result<std::unique_ptr<SessionWriter>> SessionWriter::create(const std::string& 
   std::unique_ptr<SessionWriter> w(new SessionWriter());
   w->path_ = path;
   w->lockFd_ = fd;
-  // Side files that exist now are not ours (another program opened the new
-  // file in the instant since it was made): never remove them.
-  bool sideFilesOurs = true;
-  for (const char* suffix : {"-wal", "-journal", "-shm"})
-    if (fs::exists(path + suffix, ec)) sideFilesOurs = false;
+  // A stale -wal or -journal beside the new name would be replayed into the
+  // new file by SQLite. Such side files are not ours: never remove them.
+  for (const char* suffix : {"-wal", "-journal", "-shm"}) {
+    if (fs::exists(path + suffix, ec)) {
+      fs::remove(path, ec);  // the empty file this call made
+      ::close(fd);
+      return ioError("a leftover '" + path + suffix + "' from an earlier file of the same name exists; move it "
+                     "away or delete it, or choose another name");
+    }
+  }
   const int rc = sqlite3_open_v2(path.c_str(), &w->db_, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE, nullptr);
   auto abandon = [&](const std::string& what) -> Status {
     std::string msg = "cannot create session '" + path + "': " + what + " (" + sqliteMessage(w->db_) + ")";
@@ -364,20 +383,11 @@ Result<std::unique_ptr<SessionWriter>> SessionWriter::create(const std::string& 
     // Only what this call created: the file it made exclusively (it holds no
     // data yet) and the side files its own connection made.
     fs::remove(path, ec);
-    if (sideFilesOurs)
-      for (const char* suffix : {"-journal", "-wal", "-shm"}) fs::remove(path + suffix, ec);
+    for (const char* suffix : {"-journal", "-wal", "-shm"}) fs::remove(path + suffix, ec);
     ::close(w->lockFd_);
     w->lockFd_ = -1;
     return ioError(msg + "; check the folder exists and is writable");
   };
-  if (!sideFilesOurs) {
-    sqlite3_close(w->db_);
-    w->db_ = nullptr;
-    fs::remove(path, ec);
-    ::close(w->lockFd_);
-    w->lockFd_ = -1;
-    return ioError("another program opened '" + path + "' while it was being created; choose another name");
-  }
   if (rc != SQLITE_OK) return abandon("open failed");
   sqlite3_extended_result_codes(w->db_, 1);
   sqlite3_busy_timeout(w->db_, kRecorderBusyTimeoutMs);
@@ -600,6 +610,7 @@ Result<std::unique_ptr<SessionReader>> SessionReader::open(const std::string& pa
     return ioError("cannot open session '" + path + "': " + sqliteMessage(r->db_) + "; check its permissions");
   // A recorder may be checkpointing or another program running WAL recovery.
   sqlite3_busy_timeout(r->db_, kReaderBusyTimeoutMs);
+  FOG_RETURN_IF_ERROR(checkWalCoversTruncation(r->db_, *header));
   auto version = checkIdentity(r->db_, path);
   if (!version) return version.status();
   r->schemaVersion_ = *version;
@@ -814,6 +825,8 @@ Status addResult(const std::string& path, const std::string& settingsJson, const
   // recorder storing its decoded samples may hold it longer: then the result
   // is not stored (and the recorder is not disturbed).
   sqlite3_busy_timeout(db, kAddResultBusyTimeoutMs);
+  if (auto s = checkWalCoversTruncation(db, *header); !s.isOk())
+    return Status(s.code(), "the result was not stored: " + s.message());
   auto failed = [&](const char* what) {
     const int code = sqlite3_errcode(db);
     Status s = code == SQLITE_BUSY || code == SQLITE_LOCKED
