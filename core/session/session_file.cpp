@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cerrno>
+#include <cmath>
 #include <bit>
 #include <cstdio>
 #include <cstring>
@@ -109,6 +110,8 @@ CREATE TABLE result (
 // Sample blocks: small enough to stay far below SQLite's 1 GB value limit
 // whatever the test point's length, large enough that a block costs little.
 constexpr std::size_t kSamplesPerBlock = 65536;
+// Test point indices are 16-bit on the wire; 0xFFFF means "none".
+constexpr std::int64_t kMaxTestPointIndex = 0xFFFF;
 constexpr std::size_t kTableRecordBytes = 4 * 8;      // time_s, x, y, z (deg), float64 LE
 constexpr std::size_t kImuRecordBytes = 5 * 8 + 4;    // time_s, dx, dy, dz (deg), temperature_c, lost_before u32
 // A raw chunk is committed early once this large, so memory stays bounded
@@ -716,9 +719,16 @@ Result<Recording> SessionReader::recording() const {
                 " checksum_failures, bytes_skipped, lost_frames, duplicate_frames, out_of_order_frames, counter_wraps"
                 " FROM decoded WHERE id = 1");
     if (!s.ok() || s.step() != SQLITE_ROW) return readError("reading the decoded samples");
-    rec.counterHz = s.real(0);
-    rec.counterBits = static_cast<int>(s.integer(1));
-    rec.pulseEquivalentDeg = s.real(2);
+    // Stored counts and constants are checked before they size or scale
+    // anything: a crafted file (valid checksums) must not crash a reader.
+    const double hz = s.real(0), pulse = s.real(2);
+    const std::int64_t bits = s.integer(1);
+    if (!std::isfinite(hz) || hz < 0 || bits < 0 || bits > 64 || !std::isfinite(pulse))
+      return corruptData("session '" + path_ + "': decoded samples are damaged (counter " + std::to_string(hz) +
+                         " Hz, " + std::to_string(bits) + " bits); analyse the raw stream instead");
+    rec.counterHz = hz;
+    rec.counterBits = static_cast<int>(bits);
+    rec.pulseEquivalentDeg = pulse;
     std::uint64_t* counters[] = {&rec.health.tableFrames,      &rec.health.imuFrames,
                                  &rec.health.statusFrames,     &rec.health.checksumFailures,
                                  &rec.health.bytesSkipped,     &rec.health.lostFrames,
@@ -737,46 +747,69 @@ Result<Recording> SessionReader::recording() const {
   };
   // Every block of one test point, checked against its size and checksum;
   // decode gets each record.
-  auto readBlocks = [&](Stmt& blocks, std::int64_t testPoint, std::size_t recordBytes, const std::string& what,
-                        const auto& decode) -> Status {
+  auto readBlocks = [&](Stmt& blocks, std::int64_t testPoint, std::int64_t expected, std::size_t recordBytes,
+                        const std::string& what, const auto& decode) -> Status {
     blocks.bind(1, testPoint);
     int brc;
+    std::int64_t total = 0;
     while ((brc = blocks.step()) == SQLITE_ROW) {
-      const auto n = static_cast<std::size_t>(blocks.integer(0));
+      // At most kSamplesPerBlock: n * recordBytes cannot wrap, and the blob
+      // must hold exactly that many records.
+      const std::int64_t stored = blocks.integer(0);
+      if (stored < 0 || static_cast<std::uint64_t>(stored) > kSamplesPerBlock)
+        return damaged(what + " block claims " + std::to_string(stored) + " samples (at most " +
+                       std::to_string(kSamplesPerBlock) + " per block)");
+      const auto n = static_cast<std::size_t>(stored);
       auto data = blocks.blob(1);
       if (data.size() != n * recordBytes || fnv1a(data) != blocks.integer(2))
         return damaged(what + " block fails its size or checksum check");
+      total += stored;
+      if (total > expected) break;  // more than the test point says: refused below, before decoding it all
       for (std::size_t i = 0; i < n; ++i) decode(data.data() + i * recordBytes);
     }
-    if (brc != SQLITE_DONE) return readError("reading the decoded samples");
     sqlite3_reset(blocks.get());
+    if (brc != SQLITE_DONE && brc != SQLITE_ROW) return readError("reading the decoded samples");
+    if (total != expected)
+      return damaged("sample count of test point " + std::to_string(testPoint) + ": it says " +
+                     std::to_string(expected) + " " + what.substr(what.find(' ') + 1) + " samples, its blocks hold " +
+                     (total > expected ? "more" : std::to_string(total)));
     return Status::ok();
   };
   int rc;
   while ((rc = points.step()) == SQLITE_ROW) {
     TestPointData tp;
     const std::int64_t pos = points.integer(0);
-    tp.index = static_cast<int>(points.integer(1));
+    // The board numbers test points with 16 bits (protocol::StatusPayload).
+    const std::int64_t index = points.integer(1);
+    if (index < 0 || index >= kMaxTestPointIndex)
+      return damaged("test point index " + std::to_string(index) + " outside 0.." +
+                     std::to_string(kMaxTestPointIndex - 1));
+    tp.index = static_cast<int>(index);
     auto axis = parseAxis(points.text(2));
     if (!axis) return damaged("axis '" + points.text(2) + "'");
     tp.axis = *axis;
     tp.nominalFrequencyHz = points.real(3);
     tp.nominalAmplitudeDeg = points.real(4);
+    if (!std::isfinite(tp.nominalFrequencyHz) || !std::isfinite(tp.nominalAmplitudeDeg))
+      return damaged("nominal frequency or amplitude of test point " + std::to_string(pos) + " is not a number");
     // The test_point table has no kind column (schema 1 is unchanged): the
     // session's stored plan says which points are static segments.
     if (tp.index >= 0 && static_cast<std::size_t>(tp.index) < info_.plan.points.size())
       tp.kind = info_.plan.points[static_cast<std::size_t>(tp.index)].kind;
     const auto tableCount = points.integer(5), imuCount = points.integer(6);
     if (tableCount < 0 || imuCount < 0) return damaged("negative sample count");
-    tp.table.reserve(static_cast<std::size_t>(tableCount));
-    tp.imu.reserve(static_cast<std::size_t>(imuCount));
-    FOG_RETURN_IF_ERROR(readBlocks(tableBlocks, pos, kTableRecordBytes, "a table", [&](const std::uint8_t* at) {
+    // Reserved only up to what the blocks can hold: a crafted count must not
+    // allocate gigabytes before the blocks disagree with it.
+    constexpr std::int64_t kReserveLimit = 1 << 22;
+    tp.table.reserve(static_cast<std::size_t>(std::min(tableCount, kReserveLimit)));
+    tp.imu.reserve(static_cast<std::size_t>(std::min(imuCount, kReserveLimit)));
+    FOG_RETURN_IF_ERROR(readBlocks(tableBlocks, pos, tableCount, kTableRecordBytes, "a table", [&](const std::uint8_t* at) {
       TableSample t;
       t.timeS = getDouble(at);
       for (int a = 0; a < kAxisCount; ++a) t.angleDeg[static_cast<std::size_t>(a)] = getDouble(at + 8 * (a + 1));
       tp.table.push_back(t);
     }));
-    FOG_RETURN_IF_ERROR(readBlocks(imuBlocks, pos, kImuRecordBytes, "an IMU", [&](const std::uint8_t* at) {
+    FOG_RETURN_IF_ERROR(readBlocks(imuBlocks, pos, imuCount, kImuRecordBytes, "an IMU", [&](const std::uint8_t* at) {
       ImuSample m;
       m.timeS = getDouble(at);
       for (int a = 0; a < kAxisCount; ++a) m.incrementDeg[static_cast<std::size_t>(a)] = getDouble(at + 8 * (a + 1));
@@ -784,8 +817,6 @@ Result<Recording> SessionReader::recording() const {
       m.lostBefore = getU32(at + 40);
       tp.imu.push_back(m);
     }));
-    if (tp.table.size() != static_cast<std::size_t>(tableCount) || tp.imu.size() != static_cast<std::size_t>(imuCount))
-      return damaged("sample count of test point " + std::to_string(pos));
     rec.testPoints.push_back(std::move(tp));
   }
   if (rc != SQLITE_DONE) return readError("reading the decoded samples");

@@ -22,6 +22,7 @@
 #include <thread>
 
 #include "protocol/decoder.h"
+#include "protocol/recording_builder.h"
 #include "record_helper_stream.h"
 #include "session/session_file.h"
 #include "session_test_util.h"
@@ -306,6 +307,79 @@ TEST(SessionFaults, TwoRecordersRacingForOneFileNeverHarmTheWinner) {
     EXPECT_TRUE(*raw == bytes);
   }
   EXPECT_LT(bothRefused, kRounds);
+}
+
+// --- 4. crafted sessions: hostile counts with valid checksums ----------------
+
+// A complete session with stored samples; `sql` then edits it as an attacker
+// would (SQLite and the blob checksums stay valid).
+std::string craftedSession(const ScratchDir& dir, const std::string& name, const std::string& sql) {
+  const std::string path = dir.file(name);
+  {
+    auto w = SessionWriter::create(path, SessionInfo{});
+    EXPECT_TRUE(w.isOk());
+    const auto& bytes = fog::test::shortRun().bytes;
+    EXPECT_TRUE((*w)->appendRaw(bytes.data(), bytes.size()).isOk());
+    auto rec = protocol::decodeRecording(bytes);
+    EXPECT_TRUE(rec.isOk());
+    EXPECT_TRUE((*w)->storeRecording(*rec).isOk());
+    EXPECT_TRUE((*w)->finish(true, "").isOk());
+  }
+  sqlite3* db = nullptr;
+  EXPECT_EQ(sqlite3_open_v2(path.c_str(), &db, SQLITE_OPEN_READWRITE, nullptr), SQLITE_OK);
+  char* err = nullptr;
+  EXPECT_EQ(sqlite3_exec(db, sql.c_str(), nullptr, nullptr, &err), SQLITE_OK) << (err ? err : "");
+  sqlite3_free(err);
+  sqlite3_close(db);
+  return path;
+}
+
+void expectRecordingRefused(const std::string& path, const std::string& needle) {
+  auto r = SessionReader::open(path);
+  ASSERT_TRUE(r.isOk()) << r.status().message();
+  auto rec = (*r)->recording();  // must return, not crash or throw
+  ASSERT_FALSE(rec.isOk()) << path << " was read as a recording";
+  EXPECT_NE(rec.status().message().find(needle), std::string::npos) << rec.status().message();
+  EXPECT_NE(rec.status().message().find("raw stream"), std::string::npos)
+      << "the message says what to do: " << rec.status().message();
+}
+
+TEST(SessionFaults, ABlockSampleCountThatWrapsTheSizeCheckIsRefused) {
+  ScratchDir dir;
+  // n * 32 == 2^64 + 65536 * 32: the product wraps to the blob's real size.
+  const std::string n = std::to_string((std::uint64_t{1} << 59) + 65536);
+  expectRecordingRefused(
+      craftedSession(dir, "wrap.fbs", "UPDATE table_block SET samples = " + n + " WHERE block = 0"),
+      "block");
+}
+
+TEST(SessionFaults, AHugeOrNegativeBlockCountIsRefused) {
+  ScratchDir dir;
+  expectRecordingRefused(craftedSession(dir, "neg.fbs", "UPDATE imu_block SET samples = -1"), "block");
+  expectRecordingRefused(craftedSession(dir, "big.fbs", "UPDATE imu_block SET samples = 9e15"), "block");
+}
+
+TEST(SessionFaults, AnAbsurdTestPointSampleCountIsRefusedWithoutAllocating) {
+  ScratchDir dir;
+  expectRecordingRefused(craftedSession(dir, "table.fbs", "UPDATE test_point SET table_samples = 2000000000"),
+                         "sample count");
+  expectRecordingRefused(craftedSession(dir, "imu.fbs", "UPDATE test_point SET imu_samples = 9000000000000000000"),
+                         "sample count");
+}
+
+TEST(SessionFaults, AnAbsurdPointIndexIsRefused) {
+  ScratchDir dir;
+  expectRecordingRefused(craftedSession(dir, "index.fbs", "UPDATE test_point SET point_index = 1000000000000"),
+                         "index");
+  expectRecordingRefused(craftedSession(dir, "neg.fbs", "UPDATE test_point SET point_index = -5"), "index");
+}
+
+TEST(SessionFaults, ImpossibleRecordingConstantsAreRefused) {
+  ScratchDir dir;
+  expectRecordingRefused(craftedSession(dir, "bits.fbs", "UPDATE decoded SET counter_bits = 4000"), "counter");
+  expectRecordingRefused(craftedSession(dir, "hz.fbs", "UPDATE decoded SET counter_hz = -1"), "counter");
+  expectRecordingRefused(craftedSession(dir, "axis.fbs", "UPDATE test_point SET nominal_frequency_hz = 1e400"),
+                         "nominal");
 }
 
 }  // namespace
