@@ -18,6 +18,7 @@
 #include "analysis/report_writer.h"
 #include "analysis/statistics.h"
 #include "analysis/theory.h"
+#include "common/text.h"
 #include "common/version.h"
 #include "diagnosis/effects.h"
 #include "model/simulator.h"
@@ -188,7 +189,7 @@ int analyzeCommand(CliArguments& args) {
   auto recording = protocol::decodeRecording(bytes);
   if (!recording) return fail(Status(recording.status().code(), path + ": " + recording.status().message()), 2);
   analysis::ReportContext context;
-  context.source = "raw stream " + path;
+  context.source = "raw stream " + toValidUtf8(path);  // a file name need not be UTF-8
   return printReport(analysis::analyzeRecording(*recording, *constants), context, json);
 }
 
@@ -223,7 +224,7 @@ int theoryCommand(CliArguments& args) {
     doc["total_max_ms"] = budget.totalMaxMs;
     doc["paper_resolution_us"] = resolution * 1e6;
     doc["predicted_lag_std_us"] = bound * 1e6;
-    std::cout << doc.dump(2) << "\n";
+    std::cout << doc.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
     return 0;
   }
   std::printf("Delay budget (the paper's theory), fibre %.0f m: eigen period %.2f us\n", fibre, budget.eigenPeriodUs);

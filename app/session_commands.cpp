@@ -11,6 +11,7 @@
 #include "cli_common.h"
 #include "acquisition/acquisition.h"
 #include "acquisition/replay_source.h"
+#include "common/text.h"
 #include "common/version.h"
 #include "io/csv_export.h"
 #include "io/csv_import.h"
@@ -26,7 +27,7 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 std::string sessionSource(const session::SessionReader& r, const std::string& what) {
-  std::string s = what + " " + r.path();
+  std::string s = what + " " + toValidUtf8(r.path());  // a file name need not be UTF-8
   if (!r.info().source.empty()) s += " (" + r.info().source + ")";
   if (!r.complete()) s += " [incomplete: " + r.incompleteReason() + "]";
   return s;
@@ -52,10 +53,11 @@ Result<std::optional<SessionOutput>> readSessionOutput(CliArguments& args) {
     return invalidArgument("'" + *out + "' already exists; a session file is never overwritten: choose another name");
   SessionOutput s;
   s.path = *out;
-  s.info.operatorName = op.value_or("");
-  s.info.imuModel = model.value_or("");
-  s.info.imuSerial = serial.value_or("");
-  s.info.notes = notes.value_or("");
+  // A terminal in another encoding (Latin-1) passes bytes that are not UTF-8.
+  s.info.operatorName = toValidUtf8(op.value_or(""));
+  s.info.imuModel = toValidUtf8(model.value_or(""));
+  s.info.imuSerial = toValidUtf8(serial.value_or(""));
+  s.info.notes = toValidUtf8(notes.value_or(""));
   return std::optional<SessionOutput>(std::move(s));
 }
 
@@ -139,7 +141,8 @@ int sessionsCommand(CliArguments& args) {
     list.push_back(e);
   }
   if (asJson) {
-    std::cout << json({{"folder", dir}, {"sessions", list}, {"skipped_files", listing->skippedFiles}}).dump(2)
+    std::cout << json({{"folder", toValidUtf8(dir)}, {"sessions", list}, {"skipped_files", listing->skippedFiles}})
+                     .dump(2, ' ', false, json::error_handler_t::replace)
               << "\n";
     return 0;
   }
@@ -297,15 +300,27 @@ int exportCommand(CliArguments& args) {
     auto stored = (*reader)->results();
     if (!stored) return fail(stored.status(), 2);
     json results = json::array();
+    int damaged = 0;
+    // A stored text that is not JSON (damaged, or written by something else)
+    // is exported as a string beside an error, never as invalid JSON.
+    auto storedJson = [&](const std::string& text, const char* what, std::int64_t id) {
+      json doc = json::parse(text, nullptr, false);
+      if (!doc.is_discarded()) return doc;
+      ++damaged;
+      std::cerr << "fogbench-cli: stored result " << id << " of " << toValidUtf8(path) << ": its " << what
+                << " is not valid JSON (the file is damaged); exported as text with an \"error\"\n";
+      return json{{"error", std::string("the stored ") + what + " is not valid JSON; the session is damaged"},
+                  {"text", text}};
+    };
     for (const auto& r : *stored)
       results.push_back({{"id", r.id},
                          {"created_utc", r.createdUtc},
-                         {"settings", json::parse(r.settingsJson, nullptr, false)},
-                         {"report", json::parse(r.reportJson, nullptr, false)}});
+                         {"settings", storedJson(r.settingsJson, "settings", r.id)},
+                         {"report", storedJson(r.reportJson, "report", r.id)}});
     json doc = {{"format", "fogbench-results"},
                 {"format_version", 1},
                 {"session",
-                 {{"file", path},
+                 {{"file", toValidUtf8(path)},
                   {"operator", info.operatorName},
                   {"imu_model", info.imuModel},
                   {"imu_serial", info.imuSerial},
@@ -321,12 +336,19 @@ int exportCommand(CliArguments& args) {
                  report ? json{{"settings", json::parse(acquisition::analysisSettingsJson(*constants, "fogbench-cli export"))},
                                {"report", json::parse(analysis::formatReportJson(*report, context))}}
                         : json{{"error", report.status().message()}}}};
+    // Serialised before the file is opened: nothing can leave it empty.
+    const std::string text = doc.dump(2, ' ', false, json::error_handler_t::replace) + "\n";
     std::ofstream file(*jsonPath, std::ios::binary | std::ios::trunc);
-    file << doc.dump(2) << "\n";
+    file << text;
     file.close();
     if (!file) return fail(ioError("cannot write '" + *jsonPath + "'"), 2);
     std::cout << "JSON results of " << path << ": " << *jsonPath << " (" << stored->size() << " stored result"
               << (stored->size() == 1 ? "" : "s") << " and the current analysis)\n";
+    if (damaged > 0)
+      return fail(corruptData(std::to_string(damaged) + " stored text(s) of session '" + toValidUtf8(path) +
+                              "' are damaged; they are in " + *jsonPath +
+                              " as text with an \"error\"; restore the session from a backup"),
+                  2);
   }
   return 0;
 }

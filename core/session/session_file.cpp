@@ -17,6 +17,7 @@
 #include <span>
 #include <utility>
 
+#include "common/text.h"
 #include "common/version.h"
 #include "protocol/recording_builder.h"
 
@@ -349,6 +350,10 @@ Result<std::unique_ptr<SessionWriter>> SessionWriter::create(const std::string& 
       "'" + path + "' already exists; a session file is never overwritten: choose another name";
   if (fs::exists(path, ec)) return ioError(exists);
   SessionInfo info = infoIn;
+  // Stored text is UTF-8 (JSON output, other tools): convert what is not.
+  for (std::string* text : {&info.operatorName, &info.imuModel, &info.imuSerial, &info.source,
+                            &info.softwareVersion, &info.createdUtc, &info.notes})
+    *text = toValidUtf8(*text);
   if (info.createdUtc.empty()) info.createdUtc = utcNow();
   if (info.softwareVersion.empty()) info.softwareVersion = FOG_VERSION;
 
@@ -580,7 +585,7 @@ Status SessionWriter::finish(bool complete, const std::string& reason) {
     Stmt s(db_, "UPDATE session SET state = ?1, incomplete_reason = ?2, finished_utc = ?3 WHERE id = 1");
     if (!s.ok()) return fail("marking the session finished");
     s.bind(1, std::string(complete ? "complete" : "incomplete"));
-    s.bind(2, complete ? std::string() : (reason.empty() ? std::string("stopped before the end") : reason));
+    s.bind(2, complete ? std::string() : (reason.empty() ? std::string("stopped before the end") : toValidUtf8(reason)));
     s.bind(3, utcNow());
     if (s.step() != SQLITE_DONE) return fail("marking the session finished");
   }
@@ -630,13 +635,14 @@ Result<std::unique_ptr<SessionReader>> SessionReader::open(const std::string& pa
     return r->readError("reading its metadata");
   }
   auto& info = r->info_;
-  info.operatorName = s.text(0);
-  info.imuModel = s.text(1);
-  info.imuSerial = s.text(2);
-  info.source = s.text(3);
-  info.softwareVersion = s.text(4);
-  info.createdUtc = s.text(5);
-  info.notes = s.text(6);
+  // A file written by another tool may hold text that is not UTF-8.
+  info.operatorName = toValidUtf8(s.text(0));
+  info.imuModel = toValidUtf8(s.text(1));
+  info.imuSerial = toValidUtf8(s.text(2));
+  info.source = toValidUtf8(s.text(3));
+  info.softwareVersion = toValidUtf8(s.text(4));
+  info.createdUtc = toValidUtf8(s.text(5));
+  info.notes = toValidUtf8(s.text(6));
   info.bench.tableReadDelayMs = s.real(7);
   info.bench.tableReadDelayStdMs = s.real(8);
   info.bench.boardDelayMs = s.real(9);
@@ -651,7 +657,7 @@ Result<std::unique_ptr<SessionReader>> SessionReader::open(const std::string& pa
                        ")");
   info.plan = std::move(*plan);
   r->state_ = s.text(16);
-  r->reason_ = s.text(17);
+  r->reason_ = toValidUtf8(s.text(17));
   return r;
 }
 
@@ -828,7 +834,8 @@ Result<std::vector<StoredResult>> SessionReader::results() const {
   Stmt s(db_, "SELECT id, created_utc, settings_json, report_json FROM result ORDER BY id");
   if (!s.ok()) return readError("reading the results");
   int rc;
-  while ((rc = s.step()) == SQLITE_ROW) out.push_back({s.integer(0), s.text(1), s.text(2), s.text(3)});
+  while ((rc = s.step()) == SQLITE_ROW)
+    out.push_back({s.integer(0), toValidUtf8(s.text(1)), toValidUtf8(s.text(2)), toValidUtf8(s.text(3))});
   if (rc != SQLITE_DONE) return readError("reading the results");
   return out;
 }
@@ -883,8 +890,8 @@ Status addResult(const std::string& path, const std::string& settingsJson, const
   Stmt s(db, "INSERT INTO result (created_utc, settings_json, report_json) VALUES (?1, ?2, ?3)");
   if (!s.ok()) return failed("inserting");
   s.bind(1, utcNow());
-  s.bind(2, settingsJson);
-  s.bind(3, reportJson);
+  s.bind(2, toValidUtf8(settingsJson));
+  s.bind(3, toValidUtf8(reportJson));
   if (s.step() != SQLITE_DONE) return failed("inserting");
   if (!exec(db, "COMMIT")) return failed("committing");
   return Status::ok();

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "common/text.h"
 #include "session/session_file.h"
 
 namespace fog::session {
@@ -48,10 +49,10 @@ Result<SessionListing> listSessions(const std::string& dirText) {
     }
     SessionSummary s;
     s.path = p;
-    s.fileName = name;
+    s.fileName = toValidUtf8(name);  // for display: a file name need not be UTF-8
     auto r = SessionReader::open(p);
     if (!r) {
-      s.error = r.status().message();
+      s.error = toValidUtf8(r.status().message());
       listing.sessions.push_back(std::move(s));
       continue;
     }

@@ -382,5 +382,38 @@ TEST(SessionFaults, ImpossibleRecordingConstantsAreRefused) {
                          "nominal");
 }
 
+// --- 5. text that is not UTF-8 ------------------------------------------------
+
+TEST(SessionFaults, Latin1TextInASessionIsReadAsUtf8) {
+  ScratchDir dir;
+  // As another tool might have written it: Latin-1 bytes in TEXT columns.
+  const auto path = craftedSession(dir, "latin1.fbs",
+                                   "UPDATE session SET operator = CAST(X'4DFC6C6C6572' AS TEXT),"
+                                   " notes = CAST(X'636166E9' AS TEXT);"
+                                   "INSERT INTO result (created_utc, settings_json, report_json) VALUES"
+                                   " ('2026-01-01T00:00:00Z', '{}', CAST(X'7B2261223A2266FC227D' AS TEXT));");
+  auto r = SessionReader::open(path);
+  ASSERT_TRUE(r.isOk()) << r.status().message();
+  EXPECT_EQ((*r)->info().operatorName, "Müller");
+  EXPECT_EQ((*r)->info().notes, "café");
+  auto results = (*r)->results();
+  ASSERT_TRUE(results.isOk());
+  ASSERT_EQ(results->size(), 1u);
+  EXPECT_EQ(results->front().reportJson, "{\"a\":\"fü\"}");
+  // And what a recorder is given is stored as UTF-8.
+  SessionInfo info;
+  info.operatorName = "M\xFCller";
+  const auto made = dir.file("made.fbs");
+  {
+    auto w = SessionWriter::create(made, info);
+    ASSERT_TRUE(w.isOk());
+    ASSERT_TRUE((*w)->finish(false, "port \xE9teint").isOk());
+  }
+  auto m = SessionReader::open(made);
+  ASSERT_TRUE(m.isOk());
+  EXPECT_EQ((*m)->info().operatorName, "Müller");
+  EXPECT_EQ((*m)->incompleteReason(), "port éteint");
+}
+
 }  // namespace
 }  // namespace fog::session
