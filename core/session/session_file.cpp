@@ -221,6 +221,25 @@ struct HeaderInfo {
   bool truncatedWithWal = false;
 };
 
+// A session whose SQLite header (first 100 bytes) is damaged still holds its
+// schema as text in page 1 (sqlite_master). Such a file must never be taken
+// for a raw sampling-board stream: a stream never holds this text.
+constexpr std::size_t kSchemaSearchBytes = 64 * 1024;
+bool hasSessionSchemaText(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string head(kSchemaSearchBytes, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  return head.find("CREATE TABLE raw_chunk") != std::string::npos &&
+         head.find("CREATE TABLE session") != std::string::npos;
+}
+
+std::string damagedHeaderMessage(const std::string& path) {
+  return "'" + path + "' is a fogbench session whose SQLite header (its first 100 bytes) is damaged; it is not "
+         "analysed as a raw stream. Restore it from a backup, or repair a copy: printf 'SQLite format 3\\0' | "
+         "dd of=COPY.fbs conv=notrunc (when only the header's first bytes were hit, the copy opens again)";
+}
+
 // Errors only for a file that is missing, unreadable, empty or not SQLite.
 Result<HeaderInfo> readHeader(const std::string& path) {
   std::error_code ec;
@@ -237,8 +256,11 @@ Result<HeaderInfo> readHeader(const std::string& path) {
   in.read(reinterpret_cast<char*>(h.data()), h.size());
   if (!in && in.gcount() == 0) return ioError("cannot read '" + path + "'; check its permissions");
   static constexpr char kMagic[] = "SQLite format 3";  // 16 bytes with the NUL
-  if (size < h.size() || std::memcmp(h.data(), kMagic, sizeof kMagic) != 0)
+  if (size < h.size() || std::memcmp(h.data(), kMagic, sizeof kMagic) != 0) {
+    if (hasSessionSchemaText(path))
+      return corruptData(damagedHeaderMessage(path));
     return corruptData("'" + path + "' is not a fogbench session (not an SQLite database)");
+  }
   HeaderInfo info;
   info.applicationId = bigEndian32(h.data() + 68);
   info.userVersion = static_cast<int>(bigEndian32(h.data() + 60));
@@ -327,10 +349,14 @@ std::string utcNow() {
 
 bool looksLikeSession(const std::string& path) {
   auto h = readHeader(path);
-  return h.isOk() && h->applicationId == static_cast<std::uint32_t>(kApplicationId);
+  if (h.isOk()) return h->applicationId == static_cast<std::uint32_t>(kApplicationId);
+  return h.status().message() == damagedHeaderMessage(path);
 }
 
-bool isSqliteFile(const std::string& path) { return readHeader(path).isOk(); }
+bool isSqliteFile(const std::string& path) {
+  auto h = readHeader(path);
+  return h.isOk() || h.status().message() == damagedHeaderMessage(path);
+}
 
 bool isBeingRecorded(const std::string& path) {
   // Called before the caller opens its own SQLite connection to the file:

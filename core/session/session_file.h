@@ -162,11 +162,13 @@ class SessionReader {
 Status addResult(const std::string& path, const std::string& settingsJson, const std::string& reportJson);
 
 // Cheap test for listing folders: an SQLite header whose application_id is
-// fogbench's. Says nothing about the schema version or the file's health
+// fogbench's, or a session whose SQLite header is damaged (its schema text is
+// still there). Says nothing about the schema version or the file's health
 // (a truncated or newer session still "looks like" one; open() says why not).
 bool looksLikeSession(const std::string& path);
-// Any SQLite database (the header magic): what a caller that accepts both raw
-// streams and sessions hands to SessionReader for a clear verdict.
+// Any SQLite database (the header magic), or a session whose header is
+// damaged: what a caller that accepts both raw streams and sessions hands to
+// SessionReader for a clear verdict, never to the raw-stream decoder.
 bool isSqliteFile(const std::string& path);
 // A SessionWriter (in any process) is recording into the file right now: it
 // holds an exclusive flock() on it from create() until finish(). False for a

@@ -415,5 +415,25 @@ TEST(SessionFaults, Latin1TextInASessionIsReadAsUtf8) {
   EXPECT_EQ((*m)->incompleteReason(), "port éteint");
 }
 
+// --- 6. a session whose SQLite header is damaged ------------------------------
+
+TEST(SessionFaults, ASessionWithADamagedHeaderIsNeverTakenForARawStream) {
+  ScratchDir dir;
+  const auto path = craftedSession(dir, "hit.fbs", "SELECT 1");
+  auto bytes = fog::test::readFile(path);
+  std::fill(bytes.begin(), bytes.begin() + 16, std::uint8_t{0});
+  fog::test::writeFile(path, bytes);
+  EXPECT_TRUE(isSqliteFile(path)) << "a caller would decode it as a raw stream";
+  EXPECT_TRUE(looksLikeSession(path)) << "a folder listing would skip it";
+  auto r = SessionReader::open(path);
+  ASSERT_FALSE(r.isOk());
+  EXPECT_NE(r.status().message().find("header"), std::string::npos) << r.status().message();
+  EXPECT_NE(r.status().message().find("not analysed as a raw stream"), std::string::npos);
+  // A raw stream is still a raw stream.
+  const auto raw = dir.file("run.bin");
+  fog::test::writeFile(raw, fog::test::shortRun().bytes);
+  EXPECT_FALSE(isSqliteFile(raw));
+}
+
 }  // namespace
 }  // namespace fog::session
