@@ -630,6 +630,32 @@ Status SessionWriter::finish(bool complete, const std::string& reason) {
   return Status::ok();
 }
 
+Status SessionWriter::finishAfterFailure(const std::string& reason) {
+  if (finished_ || !db_) return broken_;
+  finished_ = true;
+  pending_.clear();
+  Status marked = Status::ok();
+  {
+    Stmt s(db_, "UPDATE session SET state = 'incomplete', incomplete_reason = ?1, finished_utc = ?2 WHERE id = 1");
+    if (s.ok()) {
+      s.bind(1, toValidUtf8(reason));
+      s.bind(2, utcNow());
+    }
+    if (!s.ok() || s.step() != SQLITE_DONE)
+      marked = ioError("session '" + path_ + "' could not be marked incomplete: " + sqliteMessage(db_));
+  }
+  sqlite3_busy_timeout(db_, kFinishBusyTimeoutMs);
+  if (marked.isOk()) {
+    exec(db_, "PRAGMA wal_checkpoint(TRUNCATE)");
+    exec(db_, "PRAGMA journal_mode = DELETE");
+  }
+  sqlite3_close(db_);
+  db_ = nullptr;
+  ::close(lockFd_);
+  lockFd_ = -1;
+  return marked;
+}
+
 // --- SessionReader ---------------------------------------------------------
 
 Result<std::unique_ptr<SessionReader>> SessionReader::open(const std::string& path) {
@@ -699,7 +725,7 @@ std::string SessionReader::incompleteReason() const {
   if (state_ == "incomplete") return reason_;
   if (live_) return "being recorded now: the session is not finished yet";
   return "recording was interrupted: the recording program stopped without finishing the session "
-         "(crash, kill or power cut); everything committed until then is kept";
+         "(crash, kill, power cut or a full disk); everything committed until then is kept";
 }
 
 bool SessionReader::isReadOnly() const { return sqlite3_db_readonly(db_, "main") == 1; }

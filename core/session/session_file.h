@@ -85,6 +85,11 @@ class SessionWriter {
   // vanished at 12.3 s"), and makes the file self-contained. The writer
   // accepts nothing after finish().
   Status finish(bool complete, const std::string& reason);
+  // After a write failed (a full disk): tries once to mark the session
+  // incomplete with `reason` and closes it. What was committed stays; what was
+  // still buffered is dropped. If even that write fails, the session reads as
+  // interrupted.
+  Status finishAfterFailure(const std::string& reason);
 
   // Raw bytes appended so far / safely committed to the file so far.
   std::uint64_t appendedBytes() const { return appended_; }

@@ -21,6 +21,9 @@
 #include <string>
 #include <thread>
 
+#include "acquisition/acquisition.h"
+#include "acquisition/replay_source.h"
+#include "full_disk_vfs.h"
 #include "protocol/decoder.h"
 #include "protocol/recording_builder.h"
 #include "record_helper_stream.h"
@@ -433,6 +436,47 @@ TEST(SessionFaults, ASessionWithADamagedHeaderIsNeverTakenForARawStream) {
   const auto raw = dir.file("run.bin");
   fog::test::writeFile(raw, fog::test::shortRun().bytes);
   EXPECT_FALSE(isSqliteFile(raw));
+}
+
+// --- 7. a full disk during a recording ----------------------------------------
+
+TEST(SessionFaults, AFullDiskDuringARecordingKeepsWhatWasWrittenAndAnalyses) {
+  ScratchDir dir;
+  const std::string path = dir.file("full.fbs");
+  const auto& stream = fog::test::shortRun().bytes;
+  fog::test::FullDiskVfs::install();
+  // At 10x real time: commits every 200 ms, as a live recording makes them.
+  acquisition::ReplaySource source(stream, 10.0, "replay of the short run");
+  acquisition::AcquisitionOptions options;
+  options.sessionPath = path;
+  options.info.operatorName = "full disk";
+  options.info.plan = fog::test::shortPlan();
+  // Room for the new session and about 60 % of the stream.
+  fog::test::FullDiskVfs::arm(static_cast<long long>(stream.size()) * 6 / 10 + 60000);
+  auto run = acquisition::acquire(source, options, nullptr);
+  fog::test::FullDiskVfs::disarm();
+  ASSERT_TRUE(run.isOk()) << "a full disk ended the run with an error: " << run.status().message();
+  EXPECT_GT(fog::test::FullDiskVfs::refusedWrites(), 0) << "the disk never filled up";
+  EXPECT_FALSE(run->complete);
+  EXPECT_NE(run->incompleteReason.find("could not be written"), std::string::npos) << run->incompleteReason;
+  EXPECT_NE(run->incompleteReason.find("disk is full"), std::string::npos) << run->incompleteReason;
+  EXPECT_EQ(run->sessionPath, path);
+  EXPECT_GT(run->sessionBytes, 0u);
+  EXPECT_LT(run->sessionBytes, run->bytesReceived);
+  // Everything received was analysed, like after a vanished port.
+  ASSERT_TRUE(run->report.isOk()) << run->report.status().message();
+
+  auto r = SessionReader::open(path);
+  ASSERT_TRUE(r.isOk()) << r.status().message();
+  EXPECT_FALSE((*r)->complete());
+  EXPECT_FALSE((*r)->incompleteReason().empty());
+  auto raw = (*r)->rawBytes();
+  ASSERT_TRUE(raw.isOk()) << raw.status().message();
+  EXPECT_EQ(raw->size(), run->sessionBytes) << "committed bytes were lost";
+  EXPECT_TRUE(std::equal(raw->begin(), raw->end(), stream.begin()));
+  std::printf("[ full disk ] run stopped after %llu of %zu bytes; the session keeps %zu bytes; reason: %s\n",
+              static_cast<unsigned long long>(run->bytesReceived), stream.size(), raw->size(),
+              (*r)->incompleteReason().c_str());
 }
 
 }  // namespace
