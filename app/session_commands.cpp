@@ -303,20 +303,27 @@ int exportCommand(CliArguments& args) {
     int damaged = 0;
     // A stored text that is not JSON (damaged, or written by something else)
     // is exported as a string beside an error, never as invalid JSON.
-    auto storedJson = [&](const std::string& text, const char* what, std::int64_t id) {
+    bool notJson = false;
+    auto storedJson = [&](const std::string& text, const char* what) {
       json doc = json::parse(text, nullptr, false);
       if (!doc.is_discarded()) return doc;
-      ++damaged;
-      std::cerr << "fogbench-cli: stored result " << id << " of " << toValidUtf8(path) << ": its " << what
-                << " is not valid JSON (the file is damaged); exported as text with an \"error\"\n";
+      notJson = true;
       return json{{"error", std::string("the stored ") + what + " is not valid JSON; the session is damaged"},
                   {"text", text}};
     };
-    for (const auto& r : *stored)
-      results.push_back({{"id", r.id},
-                         {"created_utc", r.createdUtc},
-                         {"settings", storedJson(r.settingsJson, "settings", r.id)},
-                         {"report", storedJson(r.reportJson, "report", r.id)}});
+    for (const auto& r : *stored) {
+      notJson = false;
+      json entry = {{"id", r.id},
+                    {"created_utc", r.createdUtc},
+                    {"settings", storedJson(r.settingsJson, "settings")},
+                    {"report", storedJson(r.reportJson, "report")}};
+      if (!r.intact || notJson) {
+        ++damaged;
+        entry["error"] = r.intact ? "this stored result is not valid JSON: the session is damaged"
+                                  : "this stored result fails its checksum: the session is damaged; do not trust it";
+      }
+      results.push_back(std::move(entry));
+    }
     json doc = {{"format", "fogbench-results"},
                 {"format_version", 1},
                 {"session",
@@ -345,9 +352,9 @@ int exportCommand(CliArguments& args) {
     std::cout << "JSON results of " << path << ": " << *jsonPath << " (" << stored->size() << " stored result"
               << (stored->size() == 1 ? "" : "s") << " and the current analysis)\n";
     if (damaged > 0)
-      return fail(corruptData(std::to_string(damaged) + " stored text(s) of session '" + toValidUtf8(path) +
-                              "' are damaged; they are in " + *jsonPath +
-                              " as text with an \"error\"; restore the session from a backup"),
+      return fail(corruptData(std::to_string(damaged) + " of the stored results of session '" + toValidUtf8(path) +
+                              "' are damaged (checksum or JSON); " + *jsonPath +
+                              " holds them with an \"error\"; restore the session from a backup"),
                   2);
   }
   return 0;

@@ -108,6 +108,15 @@ CREATE TABLE result (
 );
 )sql";
 
+// Schema 2: checksums of the metadata row and of each stored result (SQLite
+// checks its pages, not the values in them: one flipped bit in a bench
+// constant would otherwise change every later analysis silently). NULL = not
+// checked (a file migrated from schema 1 keeps its metadata unchecked).
+constexpr const char* kSchemaV2Step = R"sql(
+ALTER TABLE session ADD COLUMN metadata_fnv1a INTEGER;
+ALTER TABLE result ADD COLUMN fnv1a INTEGER;
+)sql";
+
 // Sample blocks: small enough to stay far below SQLite's 1 GB value limit
 // whatever the test point's length, large enough that a block costs little.
 constexpr std::size_t kSamplesPerBlock = 65536;
@@ -204,6 +213,63 @@ std::int64_t fnv1a(std::span<const std::uint8_t> data) {
   return std::bit_cast<std::int64_t>(h);
 }
 std::int64_t fnv1a(const std::vector<std::uint8_t>& data) { return fnv1a(std::span<const std::uint8_t>(data)); }
+
+// FNV-1a 64 continued over more bytes.
+void fnv1aAdd(std::uint64_t& h, const void* data, std::size_t size) {
+  const auto* p = static_cast<const std::uint8_t*>(data);
+  for (std::size_t i = 0; i < size; ++i) h = (h ^ p[i]) * 0x100000001b3ULL;
+}
+
+// Every metadata column in a fixed order, as SQLite stores it (type and
+// bytes): what metadata_fnv1a covers.
+constexpr const char* kMetadataColumns =
+    "operator, imu_model, imu_serial, source, software_version, created_utc, notes, table_read_delay_ms,"
+    " table_read_delay_std_ms, board_delay_ms, board_delay_std_ms, latitude_deg, pulse_equivalent_deg, counter_hz,"
+    " counter_bits, test_plan_json, state, incomplete_reason, finished_utc";
+
+Result<std::int64_t> metadataChecksum(sqlite3* db) {
+  Stmt s(db, (std::string("SELECT ") + kMetadataColumns + " FROM session WHERE id = 1").c_str());
+  if (!s.ok() || s.step() != SQLITE_ROW) return ioError(sqliteMessage(db));
+  std::uint64_t h = 0xcbf29ce484222325ULL;
+  const int n = sqlite3_column_count(s.get());
+  for (int i = 0; i < n; ++i) {
+    const auto type = static_cast<std::uint8_t>(sqlite3_column_type(s.get(), i));
+    fnv1aAdd(h, &type, 1);
+    std::uint8_t v[8];
+    if (type == SQLITE_INTEGER) {
+      putDouble(v, std::bit_cast<double>(s.integer(i)));
+      fnv1aAdd(h, v, 8);
+    } else if (type == SQLITE_FLOAT) {
+      putDouble(v, s.real(i));
+      fnv1aAdd(h, v, 8);
+    } else if (type != SQLITE_NULL) {
+      const std::string t = s.text(i);
+      putDouble(v, std::bit_cast<double>(static_cast<std::uint64_t>(t.size())));
+      fnv1aAdd(h, v, 8);
+      fnv1aAdd(h, t.data(), t.size());
+    }
+  }
+  return std::bit_cast<std::int64_t>(h);
+}
+
+// Stores the metadata row's checksum (inside the caller's transaction).
+bool updateMetadataChecksum(sqlite3* db) {
+  auto sum = metadataChecksum(db);
+  if (!sum) return false;
+  Stmt s(db, "UPDATE session SET metadata_fnv1a = ?1 WHERE id = 1");
+  if (!s.ok()) return false;
+  s.bind(1, *sum);
+  return s.step() == SQLITE_DONE;
+}
+
+std::int64_t resultChecksum(const std::string& createdUtc, const std::string& settings, const std::string& report) {
+  std::uint64_t h = 0xcbf29ce484222325ULL;
+  for (const std::string* t : {&createdUtc, &settings, &report}) {
+    fnv1aAdd(h, t->data(), t->size());
+    fnv1aAdd(h, "", 1);  // separator: the NUL byte
+  }
+  return std::bit_cast<std::int64_t>(h);
+}
 
 std::uint32_t bigEndian32(const std::uint8_t* at) {
   return (std::uint32_t{at[0]} << 24) | (std::uint32_t{at[1]} << 16) | (std::uint32_t{at[2]} << 8) | at[3];
@@ -332,7 +398,13 @@ Result<int> checkIdentity(sqlite3* db, const std::string& path) {
 // SessionReader learns to read every older layout without migrating it.
 Status migrate(sqlite3* db, int from) {
   if (from == kSchemaVersion) return Status::ok();
-  (void)db;
+  if (from == 1) {
+    // 1 -> 2: checksum columns. The metadata of a migrated file stays
+    // unchecked (NULL): a checksum now would bless whatever it holds.
+    if (!exec(db, kSchemaV2Step) || !exec(db, "PRAGMA user_version = 2"))
+      return ioError("migrating from schema 1 to 2 failed: " + sqliteMessage(db));
+    return Status::ok();
+  }
   return Status(StatusCode::kInternal, "no migration from schema " + std::to_string(from));
 }
 
@@ -430,7 +502,9 @@ Result<std::unique_ptr<SessionWriter>> SessionWriter::create(const std::string& 
   // a file is either a complete empty session or not a session at all.
   const std::string ids = "PRAGMA application_id = " + std::to_string(kApplicationId) +
                           "; PRAGMA user_version = " + std::to_string(kSchemaVersion) + ";";
-  if (!exec(w->db_, "BEGIN") || !exec(w->db_, ids.c_str()) || !exec(w->db_, kSchemaV1)) return abandon("schema");
+  if (!exec(w->db_, "BEGIN") || !exec(w->db_, ids.c_str()) || !exec(w->db_, kSchemaV1) ||
+      !exec(w->db_, kSchemaV2Step))
+    return abandon("schema");
   {
     Stmt s(w->db_,
            "INSERT INTO session (id, operator, imu_model, imu_serial, source, software_version, created_utc, notes,"
@@ -456,6 +530,7 @@ Result<std::unique_ptr<SessionWriter>> SessionWriter::create(const std::string& 
     s.bind(16, testPlanToJson(info.plan));
     if (s.step() != SQLITE_DONE) return abandon("metadata");
   }
+  if (!updateMetadataChecksum(w->db_)) return abandon("metadata checksum");
   if (!exec(w->db_, "COMMIT")) return abandon("commit");
   // WAL: a commit appends to the -wal file and a crash never leaves a torn
   // database; synchronous=FULL syncs every commit, so even a power cut keeps
@@ -607,6 +682,7 @@ Status SessionWriter::finish(bool complete, const std::string& reason) {
   if (!broken_.isOk()) return broken_;
   if (finished_) return Status::ok();
   if (auto s = commitPending(); !s.isOk()) return s;
+  if (!exec(db_, "BEGIN IMMEDIATE")) return fail("marking the session finished");
   {
     Stmt s(db_, "UPDATE session SET state = ?1, incomplete_reason = ?2, finished_utc = ?3 WHERE id = 1");
     if (!s.ok()) return fail("marking the session finished");
@@ -615,6 +691,7 @@ Status SessionWriter::finish(bool complete, const std::string& reason) {
     s.bind(3, utcNow());
     if (s.step() != SQLITE_DONE) return fail("marking the session finished");
   }
+  if (!updateMetadataChecksum(db_) || !exec(db_, "COMMIT")) return fail("marking the session finished");
   finished_ = true;
   // Back to a single self-contained file: checkpoint the WAL into the main
   // file and drop it. Everything is committed already, so a failure here
@@ -635,14 +712,20 @@ Status SessionWriter::finishAfterFailure(const std::string& reason) {
   finished_ = true;
   pending_.clear();
   Status marked = Status::ok();
+  exec(db_, "ROLLBACK");  // whatever the failed write left open
+  bool ok = exec(db_, "BEGIN IMMEDIATE");
   {
     Stmt s(db_, "UPDATE session SET state = 'incomplete', incomplete_reason = ?1, finished_utc = ?2 WHERE id = 1");
     if (s.ok()) {
       s.bind(1, toValidUtf8(reason));
       s.bind(2, utcNow());
     }
-    if (!s.ok() || s.step() != SQLITE_DONE)
-      marked = ioError("session '" + path_ + "' could not be marked incomplete: " + sqliteMessage(db_));
+    ok = ok && s.ok() && s.step() == SQLITE_DONE;
+  }
+  ok = ok && updateMetadataChecksum(db_) && exec(db_, "COMMIT");
+  if (!ok) {
+    marked = ioError("session '" + path_ + "' could not be marked incomplete: " + sqliteMessage(db_));
+    exec(db_, "ROLLBACK");
   }
   sqlite3_busy_timeout(db_, kFinishBusyTimeoutMs);
   if (marked.isOk()) {
@@ -675,6 +758,17 @@ Result<std::unique_ptr<SessionReader>> SessionReader::open(const std::string& pa
   if (!version) return version.status();
   r->schemaVersion_ = *version;
 
+  if (r->schemaVersion_ >= 2) {
+    Stmt c(r->db_, "SELECT metadata_fnv1a FROM session WHERE id = 1");
+    if (!c.ok() || c.step() != SQLITE_ROW) return r->readError("reading its metadata");
+    if (sqlite3_column_type(c.get(), 0) != SQLITE_NULL) {
+      auto sum = metadataChecksum(r->db_);
+      if (!sum) return r->readError("reading its metadata");
+      if (*sum != c.integer(0))
+        return corruptData("session '" + path + "': its metadata (who, bench constants, plan, state) fails its "
+                           "checksum; the file is damaged, restore it from a backup");
+    }
+  }
   Stmt s(r->db_,
          "SELECT operator, imu_model, imu_serial, source, software_version, created_utc, notes,"
          " table_read_delay_ms, table_read_delay_std_ms, board_delay_ms, board_delay_std_ms, latitude_deg,"
@@ -883,11 +977,17 @@ Result<Recording> SessionReader::recording() const {
 
 Result<std::vector<StoredResult>> SessionReader::results() const {
   std::vector<StoredResult> out;
-  Stmt s(db_, "SELECT id, created_utc, settings_json, report_json FROM result ORDER BY id");
+  Stmt s(db_, schemaVersion_ >= 2 ? "SELECT id, created_utc, settings_json, report_json, fnv1a FROM result ORDER BY id"
+                                   : "SELECT id, created_utc, settings_json, report_json, NULL FROM result ORDER BY id");
   if (!s.ok()) return readError("reading the results");
   int rc;
-  while ((rc = s.step()) == SQLITE_ROW)
-    out.push_back({s.integer(0), toValidUtf8(s.text(1)), toValidUtf8(s.text(2)), toValidUtf8(s.text(3))});
+  while ((rc = s.step()) == SQLITE_ROW) {
+    StoredResult r{s.integer(0), s.text(1), s.text(2), s.text(3)};
+    if (sqlite3_column_type(s.get(), 4) != SQLITE_NULL)
+      r.intact = resultChecksum(r.createdUtc, r.settingsJson, r.reportJson) == s.integer(4);
+    for (std::string* t : {&r.createdUtc, &r.settingsJson, &r.reportJson}) *t = toValidUtf8(*t);
+    out.push_back(std::move(r));
+  }
   if (rc != SQLITE_DONE) return readError("reading the results");
   return out;
 }
@@ -939,11 +1039,13 @@ Status addResult(const std::string& path, const std::string& settingsJson, const
     exec(db, "ROLLBACK");
     return s;
   }
-  Stmt s(db, "INSERT INTO result (created_utc, settings_json, report_json) VALUES (?1, ?2, ?3)");
+  Stmt s(db, "INSERT INTO result (created_utc, settings_json, report_json, fnv1a) VALUES (?1, ?2, ?3, ?4)");
   if (!s.ok()) return failed("inserting");
-  s.bind(1, utcNow());
-  s.bind(2, toValidUtf8(settingsJson));
-  s.bind(3, toValidUtf8(reportJson));
+  const std::string created = utcNow(), settings = toValidUtf8(settingsJson), report = toValidUtf8(reportJson);
+  s.bind(1, created);
+  s.bind(2, settings);
+  s.bind(3, report);
+  s.bind(4, resultChecksum(created, settings, report));
   if (s.step() != SQLITE_DONE) return failed("inserting");
   if (!exec(db, "COMMIT")) return failed("committing");
   return Status::ok();

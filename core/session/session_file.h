@@ -42,7 +42,7 @@ struct sqlite3;
 
 namespace fog::session {
 
-inline constexpr int kSchemaVersion = 1;
+inline constexpr int kSchemaVersion = 2;
 // 'F' 'O' 'G' 'B' at offset 68 of the SQLite header.
 inline constexpr std::int32_t kApplicationId = 0x464F4742;
 inline constexpr const char* kFileExtension = ".fbs";
@@ -57,6 +57,9 @@ struct StoredResult {
   std::string createdUtc;      // ISO 8601, when the result was stored
   std::string settingsJson;    // the settings that produced it (bench constants, software version, ...)
   std::string reportJson;      // the report (analysis::formatReportJson)
+  // False: the row fails its checksum (schema 2); the texts above are then
+  // not to be trusted. Results of schema 1 files have no checksum.
+  bool intact = true;
 };
 
 // Recording side. Not thread-safe; one writer per file, one file per session.

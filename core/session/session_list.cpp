@@ -61,8 +61,13 @@ Result<SessionListing> listSessions(const std::string& dirText) {
     s.incompleteReason = (*r)->incompleteReason();
     auto results = (*r)->results();
     if (results) s.results = results->size();
-    if (results && !results->empty()) {
-      const auto doc = nlohmann::json::parse(results->back().reportJson, nullptr, false);
+    // The latest result that passes its checksum.
+    const StoredResult* latest = nullptr;
+    if (results)
+      for (const auto& res : *results)
+        if (res.intact) latest = &res;
+    if (latest) {
+      const auto doc = nlohmann::json::parse(latest->reportJson, nullptr, false);
       if (doc.is_object() && doc.contains("test_points") && doc["test_points"].is_array()) {
         for (const auto& tp : doc["test_points"]) {
           if (tp.contains("lag_ms") && tp["lag_ms"].is_number()) s.lagMs.push_back(tp["lag_ms"]);

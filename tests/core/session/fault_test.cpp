@@ -389,10 +389,11 @@ TEST(SessionFaults, ImpossibleRecordingConstantsAreRefused) {
 
 TEST(SessionFaults, Latin1TextInASessionIsReadAsUtf8) {
   ScratchDir dir;
-  // As another tool might have written it: Latin-1 bytes in TEXT columns.
+  // As another tool might have written it: Latin-1 bytes in TEXT columns
+  // (and no checksums: NULL).
   const auto path = craftedSession(dir, "latin1.fbs",
                                    "UPDATE session SET operator = CAST(X'4DFC6C6C6572' AS TEXT),"
-                                   " notes = CAST(X'636166E9' AS TEXT);"
+                                   " notes = CAST(X'636166E9' AS TEXT), metadata_fnv1a = NULL;"
                                    "INSERT INTO result (created_utc, settings_json, report_json) VALUES"
                                    " ('2026-01-01T00:00:00Z', '{}', CAST(X'7B2261223A2266FC227D' AS TEXT));");
   auto r = SessionReader::open(path);
@@ -477,6 +478,68 @@ TEST(SessionFaults, AFullDiskDuringARecordingKeepsWhatWasWrittenAndAnalyses) {
   std::printf("[ full disk ] run stopped after %llu of %zu bytes; the session keeps %zu bytes; reason: %s\n",
               static_cast<unsigned long long>(run->bytesReceived), stream.size(), raw->size(),
               (*r)->incompleteReason().c_str());
+}
+
+// --- 8. metadata and stored results carry checksums ---------------------------
+
+TEST(SessionFaults, AFlippedBitInTheMetadataFailsItsChecksum) {
+  ScratchDir dir;
+  // One bit of the table read delay (0.05 ms -> its neighbour in binary64),
+  // as a damaged disk sector would leave it: SQLite notices nothing.
+  const auto path = craftedSession(dir, "bit.fbs",
+                                   "UPDATE session SET table_read_delay_ms ="
+                                   " (SELECT table_read_delay_ms FROM session) * 1.0000000000000002");
+  auto r = SessionReader::open(path);
+  ASSERT_FALSE(r.isOk()) << "damaged bench constants were read as good";
+  EXPECT_NE(r.status().message().find("fails its checksum"), std::string::npos) << r.status().message();
+  EXPECT_NE(r.status().message().find("restore it from a backup"), std::string::npos);
+  const auto plan = craftedSession(dir, "state.fbs", "UPDATE session SET state = 'recording'");
+  EXPECT_FALSE(SessionReader::open(plan).isOk());
+}
+
+TEST(SessionFaults, ADamagedStoredResultIsMarkedNotTrusted) {
+  ScratchDir dir;
+  const auto path = craftedSession(dir, "result.fbs", "SELECT 1");
+  ASSERT_TRUE(addResult(path, R"({"board_delay_ms":0.28})", R"({"lag_ms":0.466})").isOk());
+  ASSERT_TRUE(addResult(path, R"({"board_delay_ms":0.28})", R"({"lag_ms":0.467})").isOk());
+  sqlite3* db = nullptr;
+  ASSERT_EQ(sqlite3_open_v2(path.c_str(), &db, SQLITE_OPEN_READWRITE, nullptr), SQLITE_OK);
+  ASSERT_EQ(sqlite3_exec(db, "UPDATE result SET report_json = '{\"lag_ms\":0.566}' WHERE id = 1", nullptr, nullptr,
+                         nullptr),
+            SQLITE_OK);
+  sqlite3_close(db);
+  auto r = SessionReader::open(path);
+  ASSERT_TRUE(r.isOk()) << r.status().message();
+  auto results = (*r)->results();
+  ASSERT_TRUE(results.isOk());
+  ASSERT_EQ(results->size(), 2u);
+  EXPECT_FALSE((*results)[0].intact);
+  EXPECT_TRUE((*results)[1].intact);
+}
+
+TEST(SessionFaults, ASchemaOneSessionIsReadAndMigratedWhenAResultIsAdded) {
+  ScratchDir dir;
+  // Schema 1 as the first fogbench wrote it: no checksum columns.
+  const auto path = craftedSession(dir, "v1.fbs",
+                                   "ALTER TABLE session DROP COLUMN metadata_fnv1a;"
+                                   " ALTER TABLE result DROP COLUMN fnv1a; PRAGMA user_version = 1;");
+  {
+    auto r = SessionReader::open(path);
+    ASSERT_TRUE(r.isOk()) << r.status().message();
+    EXPECT_EQ((*r)->schemaVersion(), 1);
+    EXPECT_TRUE((*r)->recording().isOk());
+    auto results = (*r)->results();
+    ASSERT_TRUE(results.isOk());
+  }
+  ASSERT_TRUE(addResult(path, "{}", R"({"lag_ms":0.466})").isOk());
+  auto r = SessionReader::open(path);
+  ASSERT_TRUE(r.isOk()) << r.status().message();
+  EXPECT_EQ((*r)->schemaVersion(), 2);
+  auto results = (*r)->results();
+  ASSERT_TRUE(results.isOk());
+  ASSERT_EQ(results->size(), 1u);
+  EXPECT_TRUE(results->front().intact);
+  EXPECT_TRUE((*r)->recording().isOk());
 }
 
 }  // namespace
