@@ -123,6 +123,7 @@ int runCommand(CliArguments& args) {
 #endif
   }
   auto savePath = args.text("save-raw");
+  const bool overwrite = args.flag("overwrite");
   auto speed = args.number("speed", 0.0);
   if (!speed) return fail(speed.status(), 2);
   auto constants = readConstants(args);
@@ -138,6 +139,8 @@ int runCommand(CliArguments& args) {
   if (!args.positionals().empty()) return fail(invalidArgument("unexpected argument '" + args.positionals()[0] + "'"), 2);
   if (source != "sim") return fail(invalidArgument("source '" + source + "' is not available; use --source sim or serial"), 2);
   if (*speed < 0) return fail(invalidArgument("--speed must be >= 0 (1 = real time, 0 = as fast as possible)"), 2);
+  if (savePath)
+    if (auto s = checkOutputFile(*savePath, overwrite, "--save-raw"); !s.isOk()) return fail(s, 2);
   auto effects = effectText ? readEffects(*effectText, *config) : Result<std::vector<std::unique_ptr<model::Effect>>>(
                                                                       std::vector<std::unique_ptr<model::Effect>>{});
   if (!effects) return fail(effects.status(), 2);

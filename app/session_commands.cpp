@@ -273,8 +273,8 @@ int exportCommand(CliArguments& args) {
   if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
   if (!csvDir && !jsonPath) return fail(invalidArgument("export needs --csv DIR and/or --results-json FILE.json"), 2);
   std::error_code ec;
-  if (jsonPath && !overwrite && fs::exists(*jsonPath, ec))
-    return fail(invalidArgument("'" + *jsonPath + "' already exists; add --overwrite to replace it"), 2);
+  if (jsonPath)
+    if (auto s = checkOutputFile(*jsonPath, overwrite, "--results-json"); !s.isOk()) return fail(s, 2);
 
   auto recording = (*reader)->recording();
   if (!recording) return fail(recording.status(), 2);
