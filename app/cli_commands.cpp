@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -108,6 +109,12 @@ class RawFileTee : public acquisition::ByteSource {
   std::ofstream file_;
 };
 
+// Ctrl-C or SIGTERM during a simulated run: the run ends as incomplete
+// ("stopped by the operator"), the session keeps everything and is marked
+// incomplete, and what was received is analysed, as for a serial run.
+std::atomic<bool> gStop{false};
+extern "C" void onStopSignal(int) { gStop = true; }
+
 }  // namespace
 
 int runCommand(CliArguments& args) {
@@ -164,7 +171,12 @@ int runCommand(CliArguments& args) {
     if (!tee->isOpen()) return fail(ioError("cannot write raw stream to '" + *savePath + "'"), 2);
     from = tee.get();
   }
-  auto run = acquisition::acquire(*from, options, nullptr);
+  gStop = false;
+  std::signal(SIGINT, onStopSignal);
+  std::signal(SIGTERM, onStopSignal);
+  auto run = acquisition::acquire(*from, options, &gStop);
+  std::signal(SIGINT, SIG_DFL);
+  std::signal(SIGTERM, SIG_DFL);
   if (!run) return fail(run.status(), 2);
   if (tee && !tee->close()) return fail(ioError("cannot write raw stream to '" + *savePath + "'"), 2);
   if (!run->complete) {
