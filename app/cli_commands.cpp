@@ -269,7 +269,10 @@ int accuracyCommand(CliArguments& args) {
   FOG_TRY_NUMBER(seeds, args, "seeds", 200.0);
   FOG_TRY_NUMBER(threads, args, "threads", 2.0);
   if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
-  if (seeds < 3 || threads < 1) return fail(invalidArgument("--seeds must be >= 3 and --threads >= 1"), 2);
+  // Bounded before any cast to int or allocation (--seeds 1e9 used to abort).
+  if (!(seeds >= 3 && seeds <= 100000) || seeds != std::floor(seeds) || !(threads >= 1 && threads <= 256) ||
+      threads != std::floor(threads))
+    return fail(invalidArgument("--seeds must be a whole number in 3 .. 100000 and --threads in 1 .. 256"), 2);
 
   struct Condition {
     const char* name;

@@ -120,6 +120,10 @@ ALTER TABLE result ADD COLUMN fnv1a INTEGER;
 // Sample blocks: small enough to stay far below SQLite's 1 GB value limit
 // whatever the test point's length, large enough that a block costs little.
 constexpr std::size_t kSamplesPerBlock = 65536;
+// Text fields: what a recorder accepts and what a reader loads (a longer
+// value written by something else is cut, and says so).
+constexpr std::size_t kMaxNotesBytes = 1 << 20;
+constexpr std::size_t kMaxFieldBytes = 4096;
 // Test point indices are 16-bit on the wire; 0xFFFF means "none".
 constexpr std::int64_t kMaxTestPointIndex = 0xFFFF;
 constexpr std::size_t kTableRecordBytes = 4 * 8;      // time_s, x, y, z (deg), float64 LE
@@ -454,6 +458,17 @@ Result<std::unique_ptr<SessionWriter>> SessionWriter::create(const std::string& 
     *text = toValidUtf8(*text);
   if (info.createdUtc.empty()) info.createdUtc = utcNow();
   if (info.softwareVersion.empty()) info.softwareVersion = FOG_VERSION;
+  // Bounded text: every reader holds it in memory and prints it.
+  if (info.notes.size() > kMaxNotesBytes)
+    return invalidArgument("the notes are " + std::to_string(info.notes.size()) + " bytes; at most " +
+                           std::to_string(kMaxNotesBytes) + " (attach long documents beside the session)");
+  for (const auto& [name, text] : {std::pair<const char*, const std::string*>{"operator", &info.operatorName},
+                                   {"IMU model", &info.imuModel}, {"IMU serial", &info.imuSerial},
+                                   {"source", &info.source}, {"software version", &info.softwareVersion},
+                                   {"creation time", &info.createdUtc}})
+    if (text->size() > kMaxFieldBytes)
+      return invalidArgument(std::string("the ") + name + " is " + std::to_string(text->size()) +
+                             " bytes; at most " + std::to_string(kMaxFieldBytes));
 
   // The file is created exclusively (O_EXCL): of two programs creating the
   // same name, exactly one wins, and the other never touches the winner's
@@ -769,11 +784,20 @@ Result<std::unique_ptr<SessionReader>> SessionReader::open(const std::string& pa
                            "checksum; the file is damaged, restore it from a backup");
     }
   }
-  Stmt s(r->db_,
-         "SELECT operator, imu_model, imu_serial, source, software_version, created_utc, notes,"
-         " table_read_delay_ms, table_read_delay_std_ms, board_delay_ms, board_delay_std_ms, latitude_deg,"
-         " pulse_equivalent_deg, counter_hz, counter_bits, test_plan_json, state, incomplete_reason"
-         " FROM session WHERE id = 1");
+  // Text is read at most kMax...Bytes long (a crafted file may hold 200 MB
+  // of notes); length() tells whether it was cut.
+  const std::string field = std::to_string(kMaxFieldBytes), notes = std::to_string(kMaxNotesBytes);
+  auto cut = [](const char* column, const std::string& n) {
+    return std::string("CAST(substr(CAST(") + column + " AS BLOB), 1, " + n + ") AS TEXT)";
+  };
+  const std::string sql =
+      "SELECT " + cut("operator", field) + ", " + cut("imu_model", field) + ", " + cut("imu_serial", field) + ", " +
+      cut("source", field) + ", " + cut("software_version", field) + ", " + cut("created_utc", field) + ", " +
+      cut("notes", notes) +
+      ", table_read_delay_ms, table_read_delay_std_ms, board_delay_ms, board_delay_std_ms, latitude_deg,"
+      " pulse_equivalent_deg, counter_hz, counter_bits, test_plan_json, state, " +
+      cut("incomplete_reason", field) + ", length(CAST(notes AS BLOB)) FROM session WHERE id = 1";
+  Stmt s(r->db_, sql.c_str());
   if (!s.ok()) return r->readError("reading its metadata");
   const int rc = s.step();
   if (rc != SQLITE_ROW) {
@@ -789,6 +813,8 @@ Result<std::unique_ptr<SessionReader>> SessionReader::open(const std::string& pa
   info.softwareVersion = toValidUtf8(s.text(4));
   info.createdUtc = toValidUtf8(s.text(5));
   info.notes = toValidUtf8(s.text(6));
+  if (const auto stored = s.integer(18); stored > static_cast<std::int64_t>(kMaxNotesBytes))
+    info.notes += " [... notes cut: the file holds " + std::to_string(stored) + " bytes]";
   info.bench.tableReadDelayMs = s.real(7);
   info.bench.tableReadDelayStdMs = s.real(8);
   info.bench.boardDelayMs = s.real(9);

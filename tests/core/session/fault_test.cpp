@@ -542,5 +542,25 @@ TEST(SessionFaults, ASchemaOneSessionIsReadAndMigratedWhenAResultIsAdded) {
   EXPECT_TRUE((*r)->recording().isOk());
 }
 
+// --- 11. limits -----------------------------------------------------------------
+
+TEST(SessionFaults, NotesAreBoundedWhenWrittenAndWhenRead) {
+  ScratchDir dir;
+  SessionInfo info;
+  info.notes.assign(2u << 20, 'n');
+  auto w = SessionWriter::create(dir.file("long.fbs"), info);
+  ASSERT_FALSE(w.isOk());
+  EXPECT_NE(w.status().message().find("at most"), std::string::npos) << w.status().message();
+  EXPECT_FALSE(fs::exists(dir.file("long.fbs")));
+  // Written by something else: 20 MB of notes are read cut to 1 MiB.
+  const auto path = craftedSession(dir, "crafted.fbs",
+                                   "UPDATE session SET notes = CAST(zeroblob(20000000) AS TEXT),"
+                                   " metadata_fnv1a = NULL");
+  auto r = SessionReader::open(path);
+  ASSERT_TRUE(r.isOk()) << r.status().message();
+  EXPECT_LT((*r)->info().notes.size(), (1u << 20) + 100);
+  EXPECT_NE((*r)->info().notes.find("notes cut: the file holds 20000000 bytes"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace fog::session
