@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -14,6 +15,7 @@
 #include "analysis/delay_analysis.h"
 #include "analysis/report_writer.h"
 #include "analysis/theory.h"
+#include "common/text.h"
 #include "common/version.h"
 #include "diagnosis/accuracy_study.h"
 #include "diagnosis/effects.h"
@@ -104,6 +106,12 @@ class RawFileTee : public acquisition::ByteSource {
   std::ofstream file_;
 };
 
+// Ctrl-C or SIGTERM during a simulated run: the run ends as incomplete
+// ("stopped by the operator"), the session keeps everything and is marked
+// incomplete, and what was received is analysed, as for a serial run.
+std::atomic<bool> gStop{false};
+extern "C" void onStopSignal(int) { gStop = true; }
+
 }  // namespace
 
 int runCommand(CliArguments& args) {
@@ -119,6 +127,7 @@ int runCommand(CliArguments& args) {
 #endif
   }
   auto savePath = args.text("save-raw");
+  const bool overwrite = args.flag("overwrite");
   auto speed = args.number("speed", 0.0);
   if (!speed) return fail(speed.status(), 2);
   auto constants = readConstants(args);
@@ -136,6 +145,8 @@ int runCommand(CliArguments& args) {
   if (!args.positionals().empty()) return fail(invalidArgument("unexpected argument '" + args.positionals()[0] + "'"), 2);
   if (source != "sim") return fail(invalidArgument("source '" + source + "' is not available; use --source sim or serial"), 2);
   if (*speed < 0) return fail(invalidArgument("--speed must be >= 0 (1 = real time, 0 = as fast as possible)"), 2);
+  if (savePath)
+    if (auto s = checkOutputFile(*savePath, overwrite, "--save-raw"); !s.isOk()) return fail(s, 2);
   auto effects = effectText ? readEffects(*effectText, *config) : Result<std::vector<std::unique_ptr<model::Effect>>>(
                                                                       std::vector<std::unique_ptr<model::Effect>>{});
   if (!effects) return fail(effects.status(), 2);
@@ -160,9 +171,23 @@ int runCommand(CliArguments& args) {
     if (!tee->isOpen()) return fail(ioError("cannot write raw stream to '" + *savePath + "'"), 2);
     from = tee.get();
   }
-  auto run = acquisition::acquire(*from, options, nullptr);
+  gStop = false;
+  std::signal(SIGINT, onStopSignal);
+  std::signal(SIGTERM, onStopSignal);
+  auto run = acquisition::acquire(*from, options, &gStop);
+  std::signal(SIGINT, SIG_DFL);
+  std::signal(SIGTERM, SIG_DFL);
   if (!run) return fail(run.status(), 2);
   if (tee && !tee->close()) return fail(ioError("cannot write raw stream to '" + *savePath + "'"), 2);
+  if (!run->complete) {
+    std::cerr << "fogbench-cli: run incomplete: " << run->incompleteReason << "; " << run->bytesReceived
+              << " bytes received"
+              << (run->sessionPath.empty()                        ? std::string()
+                  : run->sessionBytes == run->bytesReceived ? ", all kept in " + run->sessionPath
+                                                            : ", the first " + std::to_string(run->sessionBytes) +
+                                                                  " kept in " + run->sessionPath)
+              << "\n";
+  }
   if (!run->recordingStatus.isOk()) return fail(run->recordingStatus, 1);
   return printReport(run->report, options.reportContext, json);
 }
@@ -190,7 +215,7 @@ int analyzeCommand(CliArguments& args) {
   auto recording = protocol::decodeRecording(bytes);
   if (!recording) return fail(Status(recording.status().code(), path + ": " + recording.status().message()), 2);
   analysis::ReportContext context;
-  context.source = "raw stream " + path;
+  context.source = "raw stream " + toValidUtf8(path);  // a file name need not be UTF-8
   context.imuDelayLimitMs = *limit;
   return printReport(analysis::analyzeRecording(*recording, *constants), context, json);
 }
@@ -226,7 +251,7 @@ int theoryCommand(CliArguments& args) {
     doc["total_max_ms"] = budget.totalMaxMs;
     doc["paper_resolution_us"] = resolution * 1e6;
     doc["predicted_lag_std_us"] = bound * 1e6;
-    std::cout << doc.dump(2) << "\n";
+    std::cout << doc.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
     return 0;
   }
   std::printf("Delay budget (the paper's theory), fibre %.0f m: eigen period %.2f us\n", fibre, budget.eigenPeriodUs);
@@ -247,7 +272,10 @@ int accuracyCommand(CliArguments& args) {
   FOG_TRY_NUMBER(seeds, args, "seeds", 200.0);
   FOG_TRY_NUMBER(threads, args, "threads", 2.0);
   if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
-  if (seeds < 3 || threads < 1) return fail(invalidArgument("--seeds must be >= 3 and --threads >= 1"), 2);
+  // Bounded before any cast to int or allocation (--seeds 1e9 used to abort).
+  if (!(seeds >= 3 && seeds <= 100000) || seeds != std::floor(seeds) || !(threads >= 1 && threads <= 256) ||
+      threads != std::floor(threads))
+    return fail(invalidArgument("--seeds must be a whole number in 3 .. 100000 and --threads in 1 .. 256"), 2);
   std::printf("| condition | seeds | true lag (ms) | bias (us) | scatter (us) | mean reported std (us) | "
               "CRLB (us) | std/scatter | scatter/CRLB | |bias| < 0.2 us + 0.1 scatter |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|\n");

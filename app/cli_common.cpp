@@ -1,13 +1,29 @@
 #include "cli_common.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <iostream>
+
+#include "session/session_file.h"
 
 namespace fog::app {
 
 int fail(const Status& s, int code) {
   std::cerr << "fogbench-cli: " << s.message() << "\n";
   return code;
+}
+
+Status checkOutputFile(const std::string& path, bool overwrite, const std::string& option) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const auto st = fs::status(path, ec);
+  if (ec || !fs::exists(st)) return Status::ok();
+  if (fs::is_directory(st)) return invalidArgument(option + " '" + path + "' is a folder; give a file name");
+  if (session::isSqliteFile(path))
+    return invalidArgument(option + " '" + path + "' is a session (or another database); a session is never "
+                           "overwritten, not even with --overwrite: choose another name");
+  if (!overwrite) return invalidArgument(option + " '" + path + "' already exists; add --overwrite to replace it");
+  return Status::ok();
 }
 
 int exitCodeFor(const Status& s) {

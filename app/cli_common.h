@@ -23,6 +23,12 @@ int fail(const Status& s, int code);
 // 1 for kInsufficientData / kNotConverged, 2 for everything else.
 int exitCodeFor(const Status& s);
 
+// An output file a command is about to write (--pdf, --save-raw,
+// --results-json): a session is never overwritten, not even with
+// --overwrite; any other existing file only with --overwrite; a folder never.
+// `option` names the option in the message.
+Status checkOutputFile(const std::string& path, bool overwrite, const std::string& option);
+
 // The bench constants as the session (or the defaults) has them, each
 // overridable on the command line: --read-delay-ms, --read-delay-std-ms,
 // --board-delay-ms, --board-delay-std-ms, --pulse-equivalent-deg; and

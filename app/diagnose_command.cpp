@@ -16,11 +16,13 @@ namespace fog::app {
 
 namespace {
 
-Result<int> wholeNumber(CliArguments& args, const std::string& name, double fallback, double min) {
+Result<int> wholeNumber(CliArguments& args, const std::string& name, double fallback, double min, double max) {
   auto v = args.number(name, fallback);
   if (!v) return v.status();
-  if (*v < min || *v != std::floor(*v))
-    return invalidArgument("--" + name + " must be a whole number >= " + std::to_string(static_cast<int>(min)));
+  // Checked before the cast: --seeds 1e12 is outside int.
+  if (!(*v >= min && *v <= max) || *v != std::floor(*v))
+    return invalidArgument("--" + name + " must be a whole number in " + std::to_string(static_cast<int>(min)) +
+                           " .. " + std::to_string(static_cast<int>(max)));
   return static_cast<int>(*v);
 }
 
@@ -28,8 +30,8 @@ Result<int> wholeNumber(CliArguments& args, const std::string& name, double fall
 
 int diagnoseCommand(CliArguments& args) {
   const bool json = args.flag("json");
-  auto seeds = wholeNumber(args, "seeds", 4, 2);
-  auto threads = wholeNumber(args, "threads", 2, 1);
+  auto seeds = wholeNumber(args, "seeds", 4, 2, 10000);
+  auto threads = wholeNumber(args, "threads", 2, 1, 256);
   if (!seeds) return fail(seeds.status(), 2);
   if (!threads) return fail(threads.status(), 2);
   if (args.positionals().size() != 1) {
@@ -80,9 +82,9 @@ int diagnoseCommand(CliArguments& args) {
 }
 
 int benchDiagnosisCommand(CliArguments& args) {
-  auto trials = wholeNumber(args, "trials", 40, 1);
-  auto seed = wholeNumber(args, "seed", 1, 0);
-  auto threads = wholeNumber(args, "threads", 2, 1);
+  auto trials = wholeNumber(args, "trials", 40, 1, 100000);
+  auto seed = wholeNumber(args, "seed", 1, 0, 2147483647.0);
+  auto threads = wholeNumber(args, "threads", 2, 1, 256);
   for (const auto* r : {&trials, &seed, &threads})
     if (!*r) return fail(r->status(), 2);
   if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);

@@ -23,7 +23,7 @@ namespace {
 const char* kHelp = R"(fogbench-cli: measure how late a fiber-optic gyro IMU reports rotation.
 
 usage:
-  fogbench-cli run [plan] [simulator options] [constants] [--save-raw FILE] [--json]
+  fogbench-cli run [plan] [simulator options] [constants] [--save-raw FILE [--overwrite]] [--json]
       Run a test plan on the built-in simulator and print the delay report.
       plan: --plan FILE.json | --preset paper|paper-slow|paper-fast|quick|noise (default paper:
             0.1 Hz / 10 deg for 294 s and 1 Hz / 3 deg for 60 s on X)
@@ -70,7 +70,7 @@ usage:
   fogbench-cli accuracy [--seeds N] [--threads K]
       Monte Carlo study of both paper conditions (docs/accuracy.md).
   fogbench-cli report (SESSION.fbs | FILE.bin | --preset NAME [--seed N]) [--pdf OUT.pdf] [--png-dir DIR [--dpi 100]]
-                      [--limit-ms 0.8] [--imu-model M --imu-serial S --operator NAME] [constants]
+                      [--overwrite] [--limit-ms 0.8] [--imu-model M --imu-serial S --operator NAME] [constants]
       The calibration report (docs/report.md): PASS when every validity check passes
       and IMU delay + 2 sigma < limit; a session brings its own identity and constants.
   fogbench-cli diagnose SESSION.fbs|FILE.bin [--json] [--seeds K] [--threads T] [constants]

@@ -5,6 +5,7 @@
 #include <QDir>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <iterator>
@@ -99,6 +100,18 @@ void quietQtMessages(QtMsgType type, const QMessageLogContext&, const QString& m
   if (type == QtCriticalMsg || type == QtFatalMsg) std::cerr << "fogbench-cli: Qt: " << message.toStdString() << "\n";
 }
 
+// --png-dir writes report-page-N.png: existing ones are replaced only with
+// --overwrite (and never a session that happens to carry such a name).
+Status checkPageFiles(const std::string& dir, bool overwrite) {
+  std::error_code ec;
+  for (std::filesystem::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name.rfind("report-page-", 0) == 0 && name.size() > 4 && name.compare(name.size() - 4, 4, ".png") == 0)
+      if (auto s = checkOutputFile(it->path().string(), overwrite, "--png-dir"); !s.isOk()) return s;
+  }
+  return Status::ok();
+}
+
 }  // namespace
 
 int reportCommand(CliArguments& args) {
@@ -111,6 +124,7 @@ int reportCommand(CliArguments& args) {
   const auto imuModel = args.text("imu-model");
   const auto imuSerial = args.text("imu-serial");
   const auto operatorName = args.text("operator");
+  const bool overwrite = args.flag("overwrite");
   for (const auto* r : {&seed, &limit, &dpi})
     if (!*r) return fail(r->status(), 2);
   const auto& files = args.positionals();
@@ -120,6 +134,8 @@ int reportCommand(CliArguments& args) {
   else if (*dpi < 30 || *dpi > 600 || *dpi != std::floor(*dpi))
     bad = invalidArgument("--dpi must be a whole number in 30 .. 600");
   else if (args.text("seed") && !preset) bad = invalidArgument("--seed applies to --preset only");
+  else if (pdf) bad = checkOutputFile(*pdf, overwrite, "--pdf");
+  if (bad.isOk() && pngDir) bad = checkPageFiles(*pngDir, overwrite);
   if (!bad.isOk()) {
     (void)args.checkAllUsed();
     return fail(bad, 2);

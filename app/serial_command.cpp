@@ -134,7 +134,11 @@ int runSerialCommand(CliArguments& args) {
   if (!run->complete) {
     std::cerr << "fogbench-cli: run incomplete: " << run->incompleteReason << "; " << run->bytesReceived
               << " bytes received"
-              << (run->sessionPath.empty() ? std::string() : ", all kept in " + run->sessionPath) << "\n";
+              << (run->sessionPath.empty()                        ? std::string()
+                  : run->sessionBytes == run->bytesReceived ? ", all kept in " + run->sessionPath
+                                                            : ", the first " + std::to_string(run->sessionBytes) +
+                                                                  " kept in " + run->sessionPath)
+              << "\n";
   }
   if (!run->recordingStatus.isOk()) return fail(run->recordingStatus, 1);
   if (!run->report) return fail(run->report.status(), exitCodeFor(run->report.status()));

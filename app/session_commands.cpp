@@ -11,6 +11,7 @@
 #include "cli_common.h"
 #include "acquisition/acquisition.h"
 #include "acquisition/replay_source.h"
+#include "common/text.h"
 #include "common/version.h"
 #include "io/csv_export.h"
 #include "io/csv_import.h"
@@ -26,7 +27,7 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 std::string sessionSource(const session::SessionReader& r, const std::string& what) {
-  std::string s = what + " " + r.path();
+  std::string s = what + " " + toValidUtf8(r.path());  // a file name need not be UTF-8
   if (!r.info().source.empty()) s += " (" + r.info().source + ")";
   if (!r.complete()) s += " [incomplete: " + r.incompleteReason() + "]";
   return s;
@@ -52,10 +53,11 @@ Result<std::optional<SessionOutput>> readSessionOutput(CliArguments& args) {
     return invalidArgument("'" + *out + "' already exists; a session file is never overwritten: choose another name");
   SessionOutput s;
   s.path = *out;
-  s.info.operatorName = op.value_or("");
-  s.info.imuModel = model.value_or("");
-  s.info.imuSerial = serial.value_or("");
-  s.info.notes = notes.value_or("");
+  // A terminal in another encoding (Latin-1) passes bytes that are not UTF-8.
+  s.info.operatorName = toValidUtf8(op.value_or(""));
+  s.info.imuModel = toValidUtf8(model.value_or(""));
+  s.info.imuSerial = toValidUtf8(serial.value_or(""));
+  s.info.notes = toValidUtf8(notes.value_or(""));
   return std::optional<SessionOutput>(std::move(s));
 }
 
@@ -97,11 +99,18 @@ int analyzeSessionCommand(CliArguments& args, const std::string& path) {
   std::cout << (json ? analysis::formatReportJson(*report, context) + "\n"
                      : analysis::formatReportText(*report, context));
   if (noStore) return 0;
+  if ((*reader)->beingRecorded()) {
+    // Never compete with the recorder for the write lock; the analysis of a
+    // part of the recording is printed, not stored.
+    std::cerr << "fogbench-cli: note: the result was not stored: session " << path
+              << " is being recorded right now; analyse it again when the recording has finished\n";
+    return 0;
+  }
   reader->reset();  // close before writing
   if (auto s = session::addResult(path, acquisition::analysisSettingsJson(*constants, "fogbench-cli analyze"),
                                   analysis::formatReportJson(*report, context));
       !s.isOk())
-    return fail(Status(s.code(), "the report above was not stored: " + s.message()), 2);
+    return fail(s, 2);
   if (!json) std::cout << "Result stored in session " << path << ".\n";
   return 0;
 }
@@ -135,7 +144,8 @@ int sessionsCommand(CliArguments& args) {
     list.push_back(e);
   }
   if (asJson) {
-    std::cout << json({{"folder", dir}, {"sessions", list}, {"skipped_files", listing->skippedFiles}}).dump(2)
+    std::cout << json({{"folder", toValidUtf8(dir)}, {"sessions", list}, {"skipped_files", listing->skippedFiles}})
+                     .dump(2, ' ', false, json::error_handler_t::replace)
               << "\n";
     return 0;
   }
@@ -298,8 +308,8 @@ int exportCommand(CliArguments& args) {
   if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
   if (!csvDir && !jsonPath) return fail(invalidArgument("export needs --csv DIR and/or --results-json FILE.json"), 2);
   std::error_code ec;
-  if (jsonPath && !overwrite && fs::exists(*jsonPath, ec))
-    return fail(invalidArgument("'" + *jsonPath + "' already exists; add --overwrite to replace it"), 2);
+  if (jsonPath)
+    if (auto s = checkOutputFile(*jsonPath, overwrite, "--results-json"); !s.isOk()) return fail(s, 2);
 
   auto recording = (*reader)->recording();
   if (!recording) return fail(recording.status(), 2);
@@ -326,15 +336,34 @@ int exportCommand(CliArguments& args) {
     auto stored = (*reader)->results();
     if (!stored) return fail(stored.status(), 2);
     json results = json::array();
-    for (const auto& r : *stored)
-      results.push_back({{"id", r.id},
-                         {"created_utc", r.createdUtc},
-                         {"settings", json::parse(r.settingsJson, nullptr, false)},
-                         {"report", json::parse(r.reportJson, nullptr, false)}});
+    int damaged = 0;
+    // A stored text that is not JSON (damaged, or written by something else)
+    // is exported as a string beside an error, never as invalid JSON.
+    bool notJson = false;
+    auto storedJson = [&](const std::string& text, const char* what) {
+      json doc = json::parse(text, nullptr, false);
+      if (!doc.is_discarded()) return doc;
+      notJson = true;
+      return json{{"error", std::string("the stored ") + what + " is not valid JSON; the session is damaged"},
+                  {"text", text}};
+    };
+    for (const auto& r : *stored) {
+      notJson = false;
+      json entry = {{"id", r.id},
+                    {"created_utc", r.createdUtc},
+                    {"settings", storedJson(r.settingsJson, "settings")},
+                    {"report", storedJson(r.reportJson, "report")}};
+      if (!r.intact || notJson) {
+        ++damaged;
+        entry["error"] = r.intact ? "this stored result is not valid JSON: the session is damaged"
+                                  : "this stored result fails its checksum: the session is damaged; do not trust it";
+      }
+      results.push_back(std::move(entry));
+    }
     json doc = {{"format", "fogbench-results"},
                 {"format_version", 1},
                 {"session",
-                 {{"file", path},
+                 {{"file", toValidUtf8(path)},
                   {"operator", info.operatorName},
                   {"imu_model", info.imuModel},
                   {"imu_serial", info.imuSerial},
@@ -350,12 +379,19 @@ int exportCommand(CliArguments& args) {
                  report ? json{{"settings", json::parse(acquisition::analysisSettingsJson(*constants, "fogbench-cli export"))},
                                {"report", json::parse(analysis::formatReportJson(*report, context))}}
                         : json{{"error", report.status().message()}}}};
+    // Serialised before the file is opened: nothing can leave it empty.
+    const std::string text = doc.dump(2, ' ', false, json::error_handler_t::replace) + "\n";
     std::ofstream file(*jsonPath, std::ios::binary | std::ios::trunc);
-    file << doc.dump(2) << "\n";
+    file << text;
     file.close();
     if (!file) return fail(ioError("cannot write '" + *jsonPath + "'"), 2);
     std::cout << "JSON results of " << path << ": " << *jsonPath << " (" << stored->size() << " stored result"
               << (stored->size() == 1 ? "" : "s") << " and the current analysis)\n";
+    if (damaged > 0)
+      return fail(corruptData(std::to_string(damaged) + " of the stored results of session '" + toValidUtf8(path) +
+                              "' are damaged (checksum or JSON); " + *jsonPath +
+                              " holds them with an \"error\"; restore the session from a backup"),
+                  2);
   }
   return 0;
 }

@@ -71,6 +71,7 @@ Result<AcquisitionResult> acquire(ByteSource& source, const AcquisitionOptions& 
   auto lastByte = started;
   bool ended = false;
   bool boardRecorded = false;  // a STATUS with phase recording has been seen
+  Status sessionFailure;       // writing the session failed (a full disk): the run ends
 
   auto deliver = [&](Clock::time_point now) {
     lastBatch = now;
@@ -104,7 +105,7 @@ Result<AcquisitionResult> acquire(ByteSource& source, const AcquisitionOptions& 
       result.bytesReceived += bytes.size();
       if (writer) {
         // Stored before anything else happens to them.
-        if (auto s = writer->appendRaw(bytes.data(), bytes.size()); !s.isOk()) return s;
+        if (auto s = writer->appendRaw(bytes.data(), bytes.size()); !s.isOk()) sessionFailure = s;
       }
       decoded.clear();
       decoder.push(bytes, decoded);
@@ -119,7 +120,14 @@ Result<AcquisitionResult> acquire(ByteSource& source, const AcquisitionOptions& 
         }
     } else if (writer) {
       // A quiet line still commits what is buffered on time.
-      if (auto s = writer->appendRaw(nullptr, 0); !s.isOk()) return s;
+      if (auto s = writer->appendRaw(nullptr, 0); !s.isOk()) sessionFailure = s;
+    }
+    if (!sessionFailure.isOk()) {
+      // Like a vanished port: the run ends, what the session holds stays, and
+      // everything received (decoded above) is analysed.
+      result.incompleteReason = "the session file could not be written after " +
+                                fixed1(seconds(now - started)) + " s (" + sessionFailure.message() + ")";
+      break;
     }
     if (now - lastBatch >= options.batchInterval) deliver(now);
     if (!ended && options.stallLimit.count() > 0 && now - lastByte >= options.stallLimit) {
@@ -138,10 +146,25 @@ Result<AcquisitionResult> acquire(ByteSource& source, const AcquisitionOptions& 
   else result.report = result.recordingStatus;
 
   if (writer) {
-    if (anyFrames)
-      if (auto s = writer->storeRecording(result.recording); !s.isOk()) return s;
-    if (auto s = writer->finish(result.complete, result.incompleteReason); !s.isOk()) return s;
     result.sessionPath = options.sessionPath;
+    Status written = sessionFailure;
+    if (written.isOk() && anyFrames) written = writer->storeRecording(result.recording);
+    if (written.isOk()) written = writer->finish(result.complete, result.incompleteReason);
+    if (!written.isOk()) {
+      // A full disk at the end: the same as during the run.
+      if (sessionFailure.isOk())
+        result.incompleteReason = "the session file could not be written at the end of the run (" +
+                                  written.message() + ")";
+      result.complete = false;
+      // Best effort: mark the session incomplete with the reason (a full
+      // disk may refuse even that; it then reads as interrupted). Nothing
+      // else is written: decoded samples can be rebuilt from the raw stream.
+      (void)writer->finishAfterFailure(result.incompleteReason);
+      result.sessionBytes = writer->committedBytes();
+      writer.reset();
+      return result;
+    }
+    result.sessionBytes = writer->committedBytes();
     writer.reset();
     if (result.report) {
       if (auto s = session::addResult(options.sessionPath, analysisSettingsJson(options.constants, "acquisition"),

@@ -75,6 +75,10 @@ struct AcquisitionResult {
   std::string incompleteReason;  // why not
   std::uint64_t bytesReceived = 0;
   std::string sessionPath;       // empty when nothing was recorded
+  // Raw bytes safely in the session: bytesReceived, unless writing the
+  // session failed (a full disk): then the run ends there as incomplete, like
+  // a vanished port, and everything received is still analysed.
+  std::uint64_t sessionBytes = 0;
   Recording recording;           // decoded; empty test points when nothing decodable arrived
   Status recordingStatus;        // ok, or why the stream gave no usable test point
   Result<analysis::DelayReport> report = Status(StatusCode::kInsufficientData, "not analysed");

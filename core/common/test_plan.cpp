@@ -99,11 +99,18 @@ bool TestPlan::isValid(const TurntableLimits& limits, std::string* error) const 
   if (points.empty()) return fail(error, "the test plan has no test points");
   if (!std::isfinite(restBetweenS) || restBetweenS < 0.0)
     return fail(error, "rest time between points must be >= 0 s");
+  if (points.size() > kMaxPlanPoints)
+    return fail(error, "the test plan has " + std::to_string(points.size()) + " test points; at most " +
+                           std::to_string(kMaxPlanPoints));
   for (std::size_t i = 0; i < points.size(); ++i) {
     std::string why;
     if (!points[i].isValid(limits, &why))
       return fail(error, "test point " + std::to_string(i + 1) + ": " + why);
   }
+  if (totalDurationS() > kMaxPlanDurationS)
+    return fail(error, "the test plan lasts " + num(totalDurationS() / 3600.0) + " h in all; at most " +
+                           num(kMaxPlanDurationS / 3600.0) + " h (every sample is held in memory): split it into "
+                           "several sessions");
   return true;
 }
 
@@ -171,6 +178,9 @@ Result<TestPlan> testPlanFromJson(std::string_view text) {
     }
     return invalidArgument("unknown or non-numeric key \"" + it.key() + "\" in the test plan");
   }
+  if (doc["points"].size() > kMaxPlanPoints)
+    return invalidArgument("the test plan has " + std::to_string(doc["points"].size()) + " points; at most " +
+                           std::to_string(kMaxPlanPoints));
   int index = 0;
   for (const auto& p : doc["points"]) {
     ++index;

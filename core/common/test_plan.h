@@ -3,6 +3,7 @@
 // simulator (which executes it), the analysis (which labels its results) and
 // the command line / GUI (which edit it).
 
+#include <cstddef>
 #include <array>
 #include <string>
 #include <string_view>
@@ -51,6 +52,11 @@ struct TestPoint {
   // Empty when valid; otherwise what is wrong and what to do.
   bool isValid(const TurntableLimits& limits, std::string* error) const;
 };
+
+// Bounds of a plan (issue 15): every sample of a run is held in memory, so a
+// plan is at most this long in total and has at most this many points.
+inline constexpr std::size_t kMaxPlanPoints = 1000;
+inline constexpr double kMaxPlanDurationS = 24.0 * 3600.0;
 
 struct TestPlan {
   std::vector<TestPoint> points;

@@ -1,8 +1,13 @@
 #include "session/session_file.h"
 
+#include <fcntl.h>
 #include <sqlite3.h>
+#include <sys/file.h>
+#include <unistd.h>
 
 #include <array>
+#include <cerrno>
+#include <cmath>
 #include <bit>
 #include <cstdio>
 #include <cstring>
@@ -12,6 +17,7 @@
 #include <span>
 #include <utility>
 
+#include "common/text.h"
 #include "common/version.h"
 #include "protocol/recording_builder.h"
 
@@ -102,14 +108,40 @@ CREATE TABLE result (
 );
 )sql";
 
+// Schema 2: checksums of the metadata row and of each stored result (SQLite
+// checks its pages, not the values in them: one flipped bit in a bench
+// constant would otherwise change every later analysis silently). NULL = not
+// checked (a file migrated from schema 1 keeps its metadata unchecked).
+constexpr const char* kSchemaV2Step = R"sql(
+ALTER TABLE session ADD COLUMN metadata_fnv1a INTEGER;
+ALTER TABLE result ADD COLUMN fnv1a INTEGER;
+)sql";
+
 // Sample blocks: small enough to stay far below SQLite's 1 GB value limit
 // whatever the test point's length, large enough that a block costs little.
 constexpr std::size_t kSamplesPerBlock = 65536;
+// Text fields: what a recorder accepts and what a reader loads (a longer
+// value written by something else is cut, and says so).
+constexpr std::size_t kMaxNotesBytes = 1 << 20;
+constexpr std::size_t kMaxFieldBytes = 4096;
+// Test point indices are 16-bit on the wire; 0xFFFF means "none".
+constexpr std::int64_t kMaxTestPointIndex = 0xFFFF;
 constexpr std::size_t kTableRecordBytes = 4 * 8;      // time_s, x, y, z (deg), float64 LE
 constexpr std::size_t kImuRecordBytes = 5 * 8 + 4;    // time_s, dx, dy, dz (deg), temperature_c, lost_before u32
 // A raw chunk is committed early once this large, so memory stays bounded
 // when bytes arrive faster than real time (replay, benchmarks).
 constexpr std::size_t kMaxPendingRaw = 1 << 20;
+// Every connection waits for a lock rather than failing at once. Readers never
+// block a WAL writer; the only other writer is addResult(), whose transaction
+// is one small INSERT (milliseconds), so the recorder waits at most that long.
+// The recorder's own timeout is generous: losing a recording to a lock is
+// never acceptable.
+constexpr int kRecorderBusyTimeoutMs = 30000;
+constexpr int kReaderBusyTimeoutMs = 5000;
+constexpr int kAddResultBusyTimeoutMs = 5000;
+// finish() tries this long to make the file self-contained again; a reader
+// that keeps the file open only leaves the -wal beside it a while longer.
+constexpr int kFinishBusyTimeoutMs = 1000;
 
 // --- little helpers -------------------------------------------------------
 
@@ -186,6 +218,63 @@ std::int64_t fnv1a(std::span<const std::uint8_t> data) {
 }
 std::int64_t fnv1a(const std::vector<std::uint8_t>& data) { return fnv1a(std::span<const std::uint8_t>(data)); }
 
+// FNV-1a 64 continued over more bytes.
+void fnv1aAdd(std::uint64_t& h, const void* data, std::size_t size) {
+  const auto* p = static_cast<const std::uint8_t*>(data);
+  for (std::size_t i = 0; i < size; ++i) h = (h ^ p[i]) * 0x100000001b3ULL;
+}
+
+// Every metadata column in a fixed order, as SQLite stores it (type and
+// bytes): what metadata_fnv1a covers.
+constexpr const char* kMetadataColumns =
+    "operator, imu_model, imu_serial, source, software_version, created_utc, notes, table_read_delay_ms,"
+    " table_read_delay_std_ms, board_delay_ms, board_delay_std_ms, latitude_deg, pulse_equivalent_deg, counter_hz,"
+    " counter_bits, test_plan_json, state, incomplete_reason, finished_utc";
+
+Result<std::int64_t> metadataChecksum(sqlite3* db) {
+  Stmt s(db, (std::string("SELECT ") + kMetadataColumns + " FROM session WHERE id = 1").c_str());
+  if (!s.ok() || s.step() != SQLITE_ROW) return ioError(sqliteMessage(db));
+  std::uint64_t h = 0xcbf29ce484222325ULL;
+  const int n = sqlite3_column_count(s.get());
+  for (int i = 0; i < n; ++i) {
+    const auto type = static_cast<std::uint8_t>(sqlite3_column_type(s.get(), i));
+    fnv1aAdd(h, &type, 1);
+    std::uint8_t v[8];
+    if (type == SQLITE_INTEGER) {
+      putDouble(v, std::bit_cast<double>(s.integer(i)));
+      fnv1aAdd(h, v, 8);
+    } else if (type == SQLITE_FLOAT) {
+      putDouble(v, s.real(i));
+      fnv1aAdd(h, v, 8);
+    } else if (type != SQLITE_NULL) {
+      const std::string t = s.text(i);
+      putDouble(v, std::bit_cast<double>(static_cast<std::uint64_t>(t.size())));
+      fnv1aAdd(h, v, 8);
+      fnv1aAdd(h, t.data(), t.size());
+    }
+  }
+  return std::bit_cast<std::int64_t>(h);
+}
+
+// Stores the metadata row's checksum (inside the caller's transaction).
+bool updateMetadataChecksum(sqlite3* db) {
+  auto sum = metadataChecksum(db);
+  if (!sum) return false;
+  Stmt s(db, "UPDATE session SET metadata_fnv1a = ?1 WHERE id = 1");
+  if (!s.ok()) return false;
+  s.bind(1, *sum);
+  return s.step() == SQLITE_DONE;
+}
+
+std::int64_t resultChecksum(const std::string& createdUtc, const std::string& settings, const std::string& report) {
+  std::uint64_t h = 0xcbf29ce484222325ULL;
+  for (const std::string* t : {&createdUtc, &settings, &report}) {
+    fnv1aAdd(h, t->data(), t->size());
+    fnv1aAdd(h, "", 1);  // separator: the NUL byte
+  }
+  return std::bit_cast<std::int64_t>(h);
+}
+
 std::uint32_t bigEndian32(const std::uint8_t* at) {
   return (std::uint32_t{at[0]} << 24) | (std::uint32_t{at[1]} << 16) | (std::uint32_t{at[2]} << 8) | at[3];
 }
@@ -196,7 +285,30 @@ struct HeaderInfo {
   std::uint32_t applicationId = 0;
   int userVersion = 0;
   std::string truncated;  // non-empty: why the file is shorter than its header says
+  // The file is shorter than its header says, but a -wal lies beside it: a
+  // crash or a full disk during a checkpoint leaves exactly this, with every
+  // missing page still in the -wal. SQLite decides (checkWalCoversTruncation).
+  bool truncatedWithWal = false;
 };
+
+// A session whose SQLite header (first 100 bytes) is damaged still holds its
+// schema as text in page 1 (sqlite_master). Such a file must never be taken
+// for a raw sampling-board stream: a stream never holds this text.
+constexpr std::size_t kSchemaSearchBytes = 64 * 1024;
+bool hasSessionSchemaText(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string head(kSchemaSearchBytes, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  return head.find("CREATE TABLE raw_chunk") != std::string::npos &&
+         head.find("CREATE TABLE session") != std::string::npos;
+}
+
+std::string damagedHeaderMessage(const std::string& path) {
+  return "'" + path + "' is a fogbench session whose SQLite header (its first 100 bytes) is damaged; it is not "
+         "analysed as a raw stream. Restore it from a backup, or repair a copy: printf 'SQLite format 3\\0' | "
+         "dd of=COPY.fbs conv=notrunc (when only the header's first bytes were hit, the copy opens again)";
+}
 
 // Errors only for a file that is missing, unreadable, empty or not SQLite.
 Result<HeaderInfo> readHeader(const std::string& path) {
@@ -214,8 +326,11 @@ Result<HeaderInfo> readHeader(const std::string& path) {
   in.read(reinterpret_cast<char*>(h.data()), h.size());
   if (!in && in.gcount() == 0) return ioError("cannot read '" + path + "'; check its permissions");
   static constexpr char kMagic[] = "SQLite format 3";  // 16 bytes with the NUL
-  if (size < h.size() || std::memcmp(h.data(), kMagic, sizeof kMagic) != 0)
+  if (size < h.size() || std::memcmp(h.data(), kMagic, sizeof kMagic) != 0) {
+    if (hasSessionSchemaText(path))
+      return corruptData(damagedHeaderMessage(path));
     return corruptData("'" + path + "' is not a fogbench session (not an SQLite database)");
+  }
   HeaderInfo info;
   info.applicationId = bigEndian32(h.data() + 68);
   info.userVersion = static_cast<int>(bigEndian32(h.data() + 60));
@@ -224,9 +339,13 @@ Result<HeaderInfo> readHeader(const std::string& path) {
   std::uint64_t pageSize = (std::uint64_t{h[16]} << 8) | h[17];
   if (pageSize == 1) pageSize = 65536;
   const std::uint64_t pages = bigEndian32(h.data() + 28);
-  if (pages != 0 && bigEndian32(h.data() + 24) == bigEndian32(h.data() + 92) && size < pages * pageSize)
+  if (pages != 0 && bigEndian32(h.data() + 24) == bigEndian32(h.data() + 92) && size < pages * pageSize) {
     info.truncated = "'" + path + "' is truncated: it holds " + std::to_string(size) + " of its " +
                      std::to_string(pages * pageSize) + " bytes; copy it again from the original or restore a backup";
+    // A WAL holds at least its 32-byte header and one frame.
+    const auto walSize = fs::file_size(path + "-wal", ec);
+    info.truncatedWithWal = !ec && walSize > 32 + 24;
+  }
   return info;
 }
 
@@ -240,8 +359,19 @@ Result<HeaderInfo> checkHeader(const std::string& path) {
     return corruptData("'" + path + "' is an SQLite database but not a fogbench session (application_id " + id +
                        ")");
   }
-  if (!info->truncated.empty()) return corruptData(info->truncated);
+  if (!info->truncated.empty() && !info->truncatedWithWal) return corruptData(info->truncated);
   return info;
+}
+
+// For a file that is shorter than its header says but has a -wal: the
+// connection sees the pages of the -wal over the main file; if the whole
+// database checks out through it, nothing is missing (the -wal is
+// checkpointed into the main file by the next connection that writes).
+Status checkWalCoversTruncation(sqlite3* db, const HeaderInfo& header) {
+  if (!header.truncatedWithWal) return Status::ok();
+  Stmt s(db, "PRAGMA quick_check(1)");
+  if (s.ok() && s.step() == SQLITE_ROW && s.text(0) == "ok") return Status::ok();
+  return corruptData(header.truncated + " (its -wal does not hold the missing pages)");
 }
 
 std::string newerSchemaMessage(const std::string& path, std::int64_t version) {
@@ -272,7 +402,13 @@ Result<int> checkIdentity(sqlite3* db, const std::string& path) {
 // SessionReader learns to read every older layout without migrating it.
 Status migrate(sqlite3* db, int from) {
   if (from == kSchemaVersion) return Status::ok();
-  (void)db;
+  if (from == 1) {
+    // 1 -> 2: checksum columns. The metadata of a migrated file stays
+    // unchecked (NULL): a checksum now would bless whatever it holds.
+    if (!exec(db, kSchemaV2Step) || !exec(db, "PRAGMA user_version = 2"))
+      return ioError("migrating from schema 1 to 2 failed: " + sqliteMessage(db));
+    return Status::ok();
+  }
   return Status(StatusCode::kInternal, "no migration from schema " + std::to_string(from));
 }
 
@@ -289,47 +425,101 @@ std::string utcNow() {
 
 bool looksLikeSession(const std::string& path) {
   auto h = readHeader(path);
-  return h.isOk() && h->applicationId == static_cast<std::uint32_t>(kApplicationId);
+  if (h.isOk()) return h->applicationId == static_cast<std::uint32_t>(kApplicationId);
+  return h.status().message() == damagedHeaderMessage(path);
 }
 
-bool isSqliteFile(const std::string& path) { return readHeader(path).isOk(); }
+bool isSqliteFile(const std::string& path) {
+  auto h = readHeader(path);
+  return h.isOk() || h.status().message() == damagedHeaderMessage(path);
+}
+
+bool isBeingRecorded(const std::string& path) {
+  // Called before the caller opens its own SQLite connection to the file:
+  // closing this descriptor drops every fcntl() lock the process holds on it.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return false;
+  const bool live = ::flock(fd, LOCK_SH | LOCK_NB) != 0 && errno == EWOULDBLOCK;
+  ::close(fd);
+  return live;
+}
 
 // --- SessionWriter ---------------------------------------------------------
 
 Result<std::unique_ptr<SessionWriter>> SessionWriter::create(const std::string& path, const SessionInfo& infoIn) {
   std::error_code ec;
-  if (fs::exists(path, ec))
-    return ioError("'" + path + "' already exists; a session file is never overwritten: choose another name");
-  for (const char* suffix : {"-wal", "-journal", "-shm"}) {
-    if (fs::exists(path + suffix, ec))
-      return ioError("a leftover '" + path + suffix + "' from an earlier file of the same name exists; move it "
-                     "away or delete it, or choose another name");
-  }
+  const std::string exists =
+      "'" + path + "' already exists; a session file is never overwritten: choose another name";
+  if (fs::exists(path, ec)) return ioError(exists);
   SessionInfo info = infoIn;
+  // Stored text is UTF-8 (JSON output, other tools): convert what is not.
+  for (std::string* text : {&info.operatorName, &info.imuModel, &info.imuSerial, &info.source,
+                            &info.softwareVersion, &info.createdUtc, &info.notes})
+    *text = toValidUtf8(*text);
   if (info.createdUtc.empty()) info.createdUtc = utcNow();
   if (info.softwareVersion.empty()) info.softwareVersion = FOG_VERSION;
+  // Bounded text: every reader holds it in memory and prints it.
+  if (info.notes.size() > kMaxNotesBytes)
+    return invalidArgument("the notes are " + std::to_string(info.notes.size()) + " bytes; at most " +
+                           std::to_string(kMaxNotesBytes) + " (attach long documents beside the session)");
+  for (const auto& [name, text] : {std::pair<const char*, const std::string*>{"operator", &info.operatorName},
+                                   {"IMU model", &info.imuModel}, {"IMU serial", &info.imuSerial},
+                                   {"source", &info.source}, {"software version", &info.softwareVersion},
+                                   {"creation time", &info.createdUtc}})
+    if (text->size() > kMaxFieldBytes)
+      return invalidArgument(std::string("the ") + name + " is " + std::to_string(text->size()) +
+                             " bytes; at most " + std::to_string(kMaxFieldBytes));
 
+  // The file is created exclusively (O_EXCL): of two programs creating the
+  // same name, exactly one wins, and the other never touches the winner's
+  // file. The winner keeps this descriptor open with an exclusive flock()
+  // until it has finished: isBeingRecorded() tells a live recording from an
+  // interrupted one by it. (flock() locks are independent of SQLite's fcntl()
+  // locks, and the descriptor is closed only after SQLite's connection.)
+  const int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+  if (fd < 0) {
+    if (errno == EEXIST) return ioError(exists);
+    return ioError("cannot create session '" + path + "': " + std::strerror(errno) +
+                   "; check the folder exists and is writable");
+  }
+  ::flock(fd, LOCK_EX);  // ours alone: at most a reader's momentary probe delays it
   std::unique_ptr<SessionWriter> w(new SessionWriter());
   w->path_ = path;
+  w->lockFd_ = fd;
+  // A stale -wal or -journal beside the new name would be replayed into the
+  // new file by SQLite. Such side files are not ours: never remove them.
+  for (const char* suffix : {"-wal", "-journal", "-shm"}) {
+    if (fs::exists(path + suffix, ec)) {
+      fs::remove(path, ec);  // the empty file this call made
+      ::close(fd);
+      return ioError("a leftover '" + path + suffix + "' from an earlier file of the same name exists; move it "
+                     "away or delete it, or choose another name");
+    }
+  }
   const int rc = sqlite3_open_v2(path.c_str(), &w->db_, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE, nullptr);
   auto abandon = [&](const std::string& what) -> Status {
     std::string msg = "cannot create session '" + path + "': " + what + " (" + sqliteMessage(w->db_) + ")";
     sqlite3_close(w->db_);
     w->db_ = nullptr;
-    fs::remove(path, ec);  // our own half-made file; holds no data yet
-    fs::remove(path + "-journal", ec);
-    fs::remove(path + "-wal", ec);
-    fs::remove(path + "-shm", ec);
+    // Only what this call created: the file it made exclusively (it holds no
+    // data yet) and the side files its own connection made.
+    fs::remove(path, ec);
+    for (const char* suffix : {"-journal", "-wal", "-shm"}) fs::remove(path + suffix, ec);
+    ::close(w->lockFd_);
+    w->lockFd_ = -1;
     return ioError(msg + "; check the folder exists and is writable");
   };
   if (rc != SQLITE_OK) return abandon("open failed");
   sqlite3_extended_result_codes(w->db_, 1);
+  sqlite3_busy_timeout(w->db_, kRecorderBusyTimeoutMs);
   // Everything that identifies the file goes in one rollback-journal
   // transaction, written to the main file before WAL mode is switched on:
   // a file is either a complete empty session or not a session at all.
   const std::string ids = "PRAGMA application_id = " + std::to_string(kApplicationId) +
                           "; PRAGMA user_version = " + std::to_string(kSchemaVersion) + ";";
-  if (!exec(w->db_, "BEGIN") || !exec(w->db_, ids.c_str()) || !exec(w->db_, kSchemaV1)) return abandon("schema");
+  if (!exec(w->db_, "BEGIN") || !exec(w->db_, ids.c_str()) || !exec(w->db_, kSchemaV1) ||
+      !exec(w->db_, kSchemaV2Step))
+    return abandon("schema");
   {
     Stmt s(w->db_,
            "INSERT INTO session (id, operator, imu_model, imu_serial, source, software_version, created_utc, notes,"
@@ -355,6 +545,7 @@ Result<std::unique_ptr<SessionWriter>> SessionWriter::create(const std::string& 
     s.bind(16, testPlanToJson(info.plan));
     if (s.step() != SQLITE_DONE) return abandon("metadata");
   }
+  if (!updateMetadataChecksum(w->db_)) return abandon("metadata checksum");
   if (!exec(w->db_, "COMMIT")) return abandon("commit");
   // WAL: a commit appends to the -wal file and a crash never leaves a torn
   // database; synchronous=FULL syncs every commit, so even a power cut keeps
@@ -374,11 +565,16 @@ SessionWriter::~SessionWriter() {
     if (broken_.isOk()) (void)commitPending();
     sqlite3_close(db_);
   }
+  if (lockFd_ >= 0) ::close(lockFd_);  // after SQLite's connection: releases the recording lock
 }
 
 Status SessionWriter::fail(const std::string& what) {
+  const int code = db_ ? (sqlite3_extended_errcode(db_) & 0xff) : SQLITE_NOMEM;
+  const char* advice = code == SQLITE_FULL                          ? "; the disk is full: free some space"
+                       : code == SQLITE_BUSY || code == SQLITE_LOCKED ? "; another program holds the file locked"
+                                                                      : "; check free disk space and the device";
   broken_ = ioError("writing session '" + path_ + "' failed while " + what + ": " + sqliteMessage(db_) +
-                    "; the data committed so far is kept; check free disk space");
+                    "; the data committed so far is kept" + advice);
   exec(db_, "ROLLBACK");
   return broken_;
 }
@@ -501,23 +697,61 @@ Status SessionWriter::finish(bool complete, const std::string& reason) {
   if (!broken_.isOk()) return broken_;
   if (finished_) return Status::ok();
   if (auto s = commitPending(); !s.isOk()) return s;
+  if (!exec(db_, "BEGIN IMMEDIATE")) return fail("marking the session finished");
   {
     Stmt s(db_, "UPDATE session SET state = ?1, incomplete_reason = ?2, finished_utc = ?3 WHERE id = 1");
     if (!s.ok()) return fail("marking the session finished");
     s.bind(1, std::string(complete ? "complete" : "incomplete"));
-    s.bind(2, complete ? std::string() : (reason.empty() ? std::string("stopped before the end") : reason));
+    s.bind(2, complete ? std::string() : (reason.empty() ? std::string("stopped before the end") : toValidUtf8(reason)));
     s.bind(3, utcNow());
     if (s.step() != SQLITE_DONE) return fail("marking the session finished");
   }
+  if (!updateMetadataChecksum(db_) || !exec(db_, "COMMIT")) return fail("marking the session finished");
   finished_ = true;
   // Back to a single self-contained file: checkpoint the WAL into the main
   // file and drop it. Everything is committed already, so a failure here
-  // loses nothing (the -wal file simply stays beside the session).
+  // loses nothing (the -wal file simply stays beside the session, e.g. while
+  // a reader has it open, and the next connection to close checkpoints it).
+  sqlite3_busy_timeout(db_, kFinishBusyTimeoutMs);
   exec(db_, "PRAGMA wal_checkpoint(TRUNCATE)");
   exec(db_, "PRAGMA journal_mode = DELETE");
   if (sqlite3_close(db_) != SQLITE_OK) return fail("closing the file");
   db_ = nullptr;
+  ::close(lockFd_);
+  lockFd_ = -1;
   return Status::ok();
+}
+
+Status SessionWriter::finishAfterFailure(const std::string& reason) {
+  if (finished_ || !db_) return broken_;
+  finished_ = true;
+  pending_.clear();
+  Status marked = Status::ok();
+  exec(db_, "ROLLBACK");  // whatever the failed write left open
+  bool ok = exec(db_, "BEGIN IMMEDIATE");
+  {
+    Stmt s(db_, "UPDATE session SET state = 'incomplete', incomplete_reason = ?1, finished_utc = ?2 WHERE id = 1");
+    if (s.ok()) {
+      s.bind(1, toValidUtf8(reason));
+      s.bind(2, utcNow());
+    }
+    ok = ok && s.ok() && s.step() == SQLITE_DONE;
+  }
+  ok = ok && updateMetadataChecksum(db_) && exec(db_, "COMMIT");
+  if (!ok) {
+    marked = ioError("session '" + path_ + "' could not be marked incomplete: " + sqliteMessage(db_));
+    exec(db_, "ROLLBACK");
+  }
+  sqlite3_busy_timeout(db_, kFinishBusyTimeoutMs);
+  if (marked.isOk()) {
+    exec(db_, "PRAGMA wal_checkpoint(TRUNCATE)");
+    exec(db_, "PRAGMA journal_mode = DELETE");
+  }
+  sqlite3_close(db_);
+  db_ = nullptr;
+  ::close(lockFd_);
+  lockFd_ = -1;
+  return marked;
 }
 
 // --- SessionReader ---------------------------------------------------------
@@ -529,17 +763,41 @@ Result<std::unique_ptr<SessionReader>> SessionReader::open(const std::string& pa
 
   std::unique_ptr<SessionReader> r(new SessionReader());
   r->path_ = path;
+  r->live_ = isBeingRecorded(path);
   if (sqlite3_open_v2(path.c_str(), &r->db_, SQLITE_OPEN_READONLY, nullptr) != SQLITE_OK)
     return ioError("cannot open session '" + path + "': " + sqliteMessage(r->db_) + "; check its permissions");
+  // A recorder may be checkpointing or another program running WAL recovery.
+  sqlite3_busy_timeout(r->db_, kReaderBusyTimeoutMs);
+  FOG_RETURN_IF_ERROR(checkWalCoversTruncation(r->db_, *header));
   auto version = checkIdentity(r->db_, path);
   if (!version) return version.status();
   r->schemaVersion_ = *version;
 
-  Stmt s(r->db_,
-         "SELECT operator, imu_model, imu_serial, source, software_version, created_utc, notes,"
-         " table_read_delay_ms, table_read_delay_std_ms, board_delay_ms, board_delay_std_ms, latitude_deg,"
-         " pulse_equivalent_deg, counter_hz, counter_bits, test_plan_json, state, incomplete_reason"
-         " FROM session WHERE id = 1");
+  if (r->schemaVersion_ >= 2) {
+    Stmt c(r->db_, "SELECT metadata_fnv1a FROM session WHERE id = 1");
+    if (!c.ok() || c.step() != SQLITE_ROW) return r->readError("reading its metadata");
+    if (sqlite3_column_type(c.get(), 0) != SQLITE_NULL) {
+      auto sum = metadataChecksum(r->db_);
+      if (!sum) return r->readError("reading its metadata");
+      if (*sum != c.integer(0))
+        return corruptData("session '" + path + "': its metadata (who, bench constants, plan, state) fails its "
+                           "checksum; the file is damaged, restore it from a backup");
+    }
+  }
+  // Text is read at most kMax...Bytes long (a crafted file may hold 200 MB
+  // of notes); length() tells whether it was cut.
+  const std::string field = std::to_string(kMaxFieldBytes), notes = std::to_string(kMaxNotesBytes);
+  auto cut = [](const char* column, const std::string& n) {
+    return std::string("CAST(substr(CAST(") + column + " AS BLOB), 1, " + n + ") AS TEXT)";
+  };
+  const std::string sql =
+      "SELECT " + cut("operator", field) + ", " + cut("imu_model", field) + ", " + cut("imu_serial", field) + ", " +
+      cut("source", field) + ", " + cut("software_version", field) + ", " + cut("created_utc", field) + ", " +
+      cut("notes", notes) +
+      ", table_read_delay_ms, table_read_delay_std_ms, board_delay_ms, board_delay_std_ms, latitude_deg,"
+      " pulse_equivalent_deg, counter_hz, counter_bits, test_plan_json, state, " +
+      cut("incomplete_reason", field) + ", length(CAST(notes AS BLOB)) FROM session WHERE id = 1";
+  Stmt s(r->db_, sql.c_str());
   if (!s.ok()) return r->readError("reading its metadata");
   const int rc = s.step();
   if (rc != SQLITE_ROW) {
@@ -547,13 +805,16 @@ Result<std::unique_ptr<SessionReader>> SessionReader::open(const std::string& pa
     return r->readError("reading its metadata");
   }
   auto& info = r->info_;
-  info.operatorName = s.text(0);
-  info.imuModel = s.text(1);
-  info.imuSerial = s.text(2);
-  info.source = s.text(3);
-  info.softwareVersion = s.text(4);
-  info.createdUtc = s.text(5);
-  info.notes = s.text(6);
+  // A file written by another tool may hold text that is not UTF-8.
+  info.operatorName = toValidUtf8(s.text(0));
+  info.imuModel = toValidUtf8(s.text(1));
+  info.imuSerial = toValidUtf8(s.text(2));
+  info.source = toValidUtf8(s.text(3));
+  info.softwareVersion = toValidUtf8(s.text(4));
+  info.createdUtc = toValidUtf8(s.text(5));
+  info.notes = toValidUtf8(s.text(6));
+  if (const auto stored = s.integer(18); stored > static_cast<std::int64_t>(kMaxNotesBytes))
+    info.notes += " [... notes cut: the file holds " + std::to_string(stored) + " bytes]";
   info.bench.tableReadDelayMs = s.real(7);
   info.bench.tableReadDelayStdMs = s.real(8);
   info.bench.boardDelayMs = s.real(9);
@@ -568,7 +829,7 @@ Result<std::unique_ptr<SessionReader>> SessionReader::open(const std::string& pa
                        ")");
   info.plan = std::move(*plan);
   r->state_ = s.text(16);
-  r->reason_ = s.text(17);
+  r->reason_ = toValidUtf8(s.text(17));
   return r;
 }
 
@@ -582,8 +843,9 @@ Status SessionReader::readError(const std::string& what) const {
 std::string SessionReader::incompleteReason() const {
   if (state_ == "complete") return {};
   if (state_ == "incomplete") return reason_;
+  if (live_) return "being recorded now: the session is not finished yet";
   return "recording was interrupted: the recording program stopped without finishing the session "
-         "(crash, kill or power cut); everything committed until then is kept";
+         "(crash, kill, power cut or a full disk); everything committed until then is kept";
 }
 
 bool SessionReader::isReadOnly() const { return sqlite3_db_readonly(db_, "main") == 1; }
@@ -635,9 +897,16 @@ Result<Recording> SessionReader::recording() const {
                 " checksum_failures, bytes_skipped, lost_frames, duplicate_frames, out_of_order_frames, counter_wraps"
                 " FROM decoded WHERE id = 1");
     if (!s.ok() || s.step() != SQLITE_ROW) return readError("reading the decoded samples");
-    rec.counterHz = s.real(0);
-    rec.counterBits = static_cast<int>(s.integer(1));
-    rec.pulseEquivalentDeg = s.real(2);
+    // Stored counts and constants are checked before they size or scale
+    // anything: a crafted file (valid checksums) must not crash a reader.
+    const double hz = s.real(0), pulse = s.real(2);
+    const std::int64_t bits = s.integer(1);
+    if (!std::isfinite(hz) || hz < 0 || bits < 0 || bits > 64 || !std::isfinite(pulse))
+      return corruptData("session '" + path_ + "': decoded samples are damaged (counter " + std::to_string(hz) +
+                         " Hz, " + std::to_string(bits) + " bits); analyse the raw stream instead");
+    rec.counterHz = hz;
+    rec.counterBits = static_cast<int>(bits);
+    rec.pulseEquivalentDeg = pulse;
     std::uint64_t* counters[] = {&rec.health.tableFrames,      &rec.health.imuFrames,
                                  &rec.health.statusFrames,     &rec.health.checksumFailures,
                                  &rec.health.bytesSkipped,     &rec.health.lostFrames,
@@ -656,46 +925,69 @@ Result<Recording> SessionReader::recording() const {
   };
   // Every block of one test point, checked against its size and checksum;
   // decode gets each record.
-  auto readBlocks = [&](Stmt& blocks, std::int64_t testPoint, std::size_t recordBytes, const std::string& what,
-                        const auto& decode) -> Status {
+  auto readBlocks = [&](Stmt& blocks, std::int64_t testPoint, std::int64_t expected, std::size_t recordBytes,
+                        const std::string& what, const auto& decode) -> Status {
     blocks.bind(1, testPoint);
     int brc;
+    std::int64_t total = 0;
     while ((brc = blocks.step()) == SQLITE_ROW) {
-      const auto n = static_cast<std::size_t>(blocks.integer(0));
+      // At most kSamplesPerBlock: n * recordBytes cannot wrap, and the blob
+      // must hold exactly that many records.
+      const std::int64_t stored = blocks.integer(0);
+      if (stored < 0 || static_cast<std::uint64_t>(stored) > kSamplesPerBlock)
+        return damaged(what + " block claims " + std::to_string(stored) + " samples (at most " +
+                       std::to_string(kSamplesPerBlock) + " per block)");
+      const auto n = static_cast<std::size_t>(stored);
       auto data = blocks.blob(1);
       if (data.size() != n * recordBytes || fnv1a(data) != blocks.integer(2))
         return damaged(what + " block fails its size or checksum check");
+      total += stored;
+      if (total > expected) break;  // more than the test point says: refused below, before decoding it all
       for (std::size_t i = 0; i < n; ++i) decode(data.data() + i * recordBytes);
     }
-    if (brc != SQLITE_DONE) return readError("reading the decoded samples");
     sqlite3_reset(blocks.get());
+    if (brc != SQLITE_DONE && brc != SQLITE_ROW) return readError("reading the decoded samples");
+    if (total != expected)
+      return damaged("sample count of test point " + std::to_string(testPoint) + ": it says " +
+                     std::to_string(expected) + " " + what.substr(what.find(' ') + 1) + " samples, its blocks hold " +
+                     (total > expected ? "more" : std::to_string(total)));
     return Status::ok();
   };
   int rc;
   while ((rc = points.step()) == SQLITE_ROW) {
     TestPointData tp;
     const std::int64_t pos = points.integer(0);
-    tp.index = static_cast<int>(points.integer(1));
+    // The board numbers test points with 16 bits (protocol::StatusPayload).
+    const std::int64_t index = points.integer(1);
+    if (index < 0 || index >= kMaxTestPointIndex)
+      return damaged("test point index " + std::to_string(index) + " outside 0.." +
+                     std::to_string(kMaxTestPointIndex - 1));
+    tp.index = static_cast<int>(index);
     auto axis = parseAxis(points.text(2));
     if (!axis) return damaged("axis '" + points.text(2) + "'");
     tp.axis = *axis;
     tp.nominalFrequencyHz = points.real(3);
     tp.nominalAmplitudeDeg = points.real(4);
+    if (!std::isfinite(tp.nominalFrequencyHz) || !std::isfinite(tp.nominalAmplitudeDeg))
+      return damaged("nominal frequency or amplitude of test point " + std::to_string(pos) + " is not a number");
     // The test_point table has no kind column (schema 1 is unchanged): the
     // session's stored plan says which points are static segments.
     if (tp.index >= 0 && static_cast<std::size_t>(tp.index) < info_.plan.points.size())
       tp.kind = info_.plan.points[static_cast<std::size_t>(tp.index)].kind;
     const auto tableCount = points.integer(5), imuCount = points.integer(6);
     if (tableCount < 0 || imuCount < 0) return damaged("negative sample count");
-    tp.table.reserve(static_cast<std::size_t>(tableCount));
-    tp.imu.reserve(static_cast<std::size_t>(imuCount));
-    FOG_RETURN_IF_ERROR(readBlocks(tableBlocks, pos, kTableRecordBytes, "a table", [&](const std::uint8_t* at) {
+    // Reserved only up to what the blocks can hold: a crafted count must not
+    // allocate gigabytes before the blocks disagree with it.
+    constexpr std::int64_t kReserveLimit = 1 << 22;
+    tp.table.reserve(static_cast<std::size_t>(std::min(tableCount, kReserveLimit)));
+    tp.imu.reserve(static_cast<std::size_t>(std::min(imuCount, kReserveLimit)));
+    FOG_RETURN_IF_ERROR(readBlocks(tableBlocks, pos, tableCount, kTableRecordBytes, "a table", [&](const std::uint8_t* at) {
       TableSample t;
       t.timeS = getDouble(at);
       for (int a = 0; a < kAxisCount; ++a) t.angleDeg[static_cast<std::size_t>(a)] = getDouble(at + 8 * (a + 1));
       tp.table.push_back(t);
     }));
-    FOG_RETURN_IF_ERROR(readBlocks(imuBlocks, pos, kImuRecordBytes, "an IMU", [&](const std::uint8_t* at) {
+    FOG_RETURN_IF_ERROR(readBlocks(imuBlocks, pos, imuCount, kImuRecordBytes, "an IMU", [&](const std::uint8_t* at) {
       ImuSample m;
       m.timeS = getDouble(at);
       for (int a = 0; a < kAxisCount; ++a) m.incrementDeg[static_cast<std::size_t>(a)] = getDouble(at + 8 * (a + 1));
@@ -703,8 +995,6 @@ Result<Recording> SessionReader::recording() const {
       m.lostBefore = getU32(at + 40);
       tp.imu.push_back(m);
     }));
-    if (tp.table.size() != static_cast<std::size_t>(tableCount) || tp.imu.size() != static_cast<std::size_t>(imuCount))
-      return damaged("sample count of test point " + std::to_string(pos));
     rec.testPoints.push_back(std::move(tp));
   }
   if (rc != SQLITE_DONE) return readError("reading the decoded samples");
@@ -713,10 +1003,17 @@ Result<Recording> SessionReader::recording() const {
 
 Result<std::vector<StoredResult>> SessionReader::results() const {
   std::vector<StoredResult> out;
-  Stmt s(db_, "SELECT id, created_utc, settings_json, report_json FROM result ORDER BY id");
+  Stmt s(db_, schemaVersion_ >= 2 ? "SELECT id, created_utc, settings_json, report_json, fnv1a FROM result ORDER BY id"
+                                   : "SELECT id, created_utc, settings_json, report_json, NULL FROM result ORDER BY id");
   if (!s.ok()) return readError("reading the results");
   int rc;
-  while ((rc = s.step()) == SQLITE_ROW) out.push_back({s.integer(0), s.text(1), s.text(2), s.text(3)});
+  while ((rc = s.step()) == SQLITE_ROW) {
+    StoredResult r{s.integer(0), s.text(1), s.text(2), s.text(3)};
+    if (sqlite3_column_type(s.get(), 4) != SQLITE_NULL)
+      r.intact = resultChecksum(r.createdUtc, r.settingsJson, r.reportJson) == s.integer(4);
+    for (std::string* t : {&r.createdUtc, &r.settingsJson, &r.reportJson}) *t = toValidUtf8(*t);
+    out.push_back(std::move(r));
+  }
   if (rc != SQLITE_DONE) return readError("reading the results");
   return out;
 }
@@ -727,18 +1024,34 @@ Status addResult(const std::string& path, const std::string& settingsJson, const
   auto header = checkHeader(path);
   if (!header) return header.status();
   if (header->userVersion > kSchemaVersion) return invalidArgument(newerSchemaMessage(path, header->userVersion));
+  // A result of a recording in progress is of a part of it, and taking the
+  // write lock would compete with the recorder: never while it records.
+  if (isBeingRecorded(path))
+    return ioError("the result was not stored: session '" + path +
+                   "' is being recorded right now; analyse it again when the recording has finished");
   sqlite3* db = nullptr;
   struct Closer {
     sqlite3*& db;
     ~Closer() { sqlite3_close(db); }
   } closer{db};
   if (sqlite3_open_v2(path.c_str(), &db, SQLITE_OPEN_READWRITE, nullptr) != SQLITE_OK)
-    return ioError("cannot open session '" + path + "' to store a result: " + sqliteMessage(db) +
-                   "; check the file is writable");
-  sqlite3_busy_timeout(db, 5000);  // a recorder or another analysis may hold the lock briefly
+    return ioError("the result was not stored: cannot open session '" + path + "' for writing: " +
+                   sqliteMessage(db) + "; check the file is writable");
+  // A recorder or another analysis may hold the write lock briefly; a
+  // recorder storing its decoded samples may hold it longer: then the result
+  // is not stored (and the recorder is not disturbed).
+  sqlite3_busy_timeout(db, kAddResultBusyTimeoutMs);
+  if (auto s = checkWalCoversTruncation(db, *header); !s.isOk())
+    return Status(s.code(), "the result was not stored: " + s.message());
   auto failed = [&](const char* what) {
-    Status s = ioError("cannot store the result in session '" + path + "' (" + what + "): " + sqliteMessage(db) +
-                       "; the session is unchanged");
+    const int code = sqlite3_errcode(db);
+    Status s = code == SQLITE_BUSY || code == SQLITE_LOCKED
+                   ? ioError("the result was not stored in session '" + path +
+                             "': the file stayed locked by its recorder or another program for " +
+                             std::to_string(kAddResultBusyTimeoutMs / 1000) +
+                             " s; the session is unchanged; analyse it again when the recording has finished")
+                   : ioError("the result was not stored in session '" + path + "' (" + what + "): " +
+                             sqliteMessage(db) + "; the session is unchanged; check the file is writable");
     exec(db, "ROLLBACK");
     return s;
   };
@@ -752,11 +1065,13 @@ Status addResult(const std::string& path, const std::string& settingsJson, const
     exec(db, "ROLLBACK");
     return s;
   }
-  Stmt s(db, "INSERT INTO result (created_utc, settings_json, report_json) VALUES (?1, ?2, ?3)");
+  Stmt s(db, "INSERT INTO result (created_utc, settings_json, report_json, fnv1a) VALUES (?1, ?2, ?3, ?4)");
   if (!s.ok()) return failed("inserting");
-  s.bind(1, utcNow());
-  s.bind(2, settingsJson);
-  s.bind(3, reportJson);
+  const std::string created = utcNow(), settings = toValidUtf8(settingsJson), report = toValidUtf8(reportJson);
+  s.bind(1, created);
+  s.bind(2, settings);
+  s.bind(3, report);
+  s.bind(4, resultChecksum(created, settings, report));
   if (s.step() != SQLITE_DONE) return failed("inserting");
   if (!exec(db, "COMMIT")) return failed("committing");
   return Status::ok();

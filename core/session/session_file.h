@@ -42,7 +42,7 @@ struct sqlite3;
 
 namespace fog::session {
 
-inline constexpr int kSchemaVersion = 1;
+inline constexpr int kSchemaVersion = 2;
 // 'F' 'O' 'G' 'B' at offset 68 of the SQLite header.
 inline constexpr std::int32_t kApplicationId = 0x464F4742;
 inline constexpr const char* kFileExtension = ".fbs";
@@ -57,6 +57,9 @@ struct StoredResult {
   std::string createdUtc;      // ISO 8601, when the result was stored
   std::string settingsJson;    // the settings that produced it (bench constants, software version, ...)
   std::string reportJson;      // the report (analysis::formatReportJson)
+  // False: the row fails its checksum (schema 2); the texts above are then
+  // not to be trusted. Results of schema 1 files have no checksum.
+  bool intact = true;
 };
 
 // Recording side. Not thread-safe; one writer per file, one file per session.
@@ -85,6 +88,11 @@ class SessionWriter {
   // vanished at 12.3 s"), and makes the file self-contained. The writer
   // accepts nothing after finish().
   Status finish(bool complete, const std::string& reason);
+  // After a write failed (a full disk): tries once to mark the session
+  // incomplete with `reason` and closes it. What was committed stays; what was
+  // still buffered is dropped. If even that write fails, the session reads as
+  // interrupted.
+  Status finishAfterFailure(const std::string& reason);
 
   // Raw bytes appended so far / safely committed to the file so far.
   std::uint64_t appendedBytes() const { return appended_; }
@@ -106,6 +114,7 @@ class SessionWriter {
   std::uint64_t committed_ = 0;
   std::uint64_t commits_ = 0;
   std::int64_t nextChunk_ = 0;
+  int lockFd_ = -1;  // the file's descriptor holding the recording lock (flock) until finished
   bool finished_ = false;
   Status broken_;  // first write error; the writer refuses further writes after one
 };
@@ -121,6 +130,9 @@ class SessionReader {
   const SessionInfo& info() const { return info_; }
   int schemaVersion() const { return schemaVersion_; }
   bool complete() const { return state_ == "complete"; }
+  // A recorder (this or another program) was recording into the file when it
+  // was opened: the session is live, not interrupted.
+  bool beingRecorded() const { return live_ && state_ == "recording"; }
   // Empty when complete; the writer's reason, or "recording was interrupted"
   // when the recording program stopped without finishing (crash, kill, power).
   std::string incompleteReason() const;
@@ -148,19 +160,28 @@ class SessionReader {
   int schemaVersion_ = 0;
   std::string state_;
   std::string reason_;
+  bool live_ = false;  // a recorder had the file locked when it was opened
 };
 
 // Appends an analysis result (opens the file read-write briefly). Never
-// touches the raw stream or the decoded samples.
+// touches the raw stream or the decoded samples. Refuses (an error saying "not
+// stored") while the session is being recorded, and when the file stays
+// locked by another writer for more than a few seconds.
 Status addResult(const std::string& path, const std::string& settingsJson, const std::string& reportJson);
 
 // Cheap test for listing folders: an SQLite header whose application_id is
-// fogbench's. Says nothing about the schema version or the file's health
+// fogbench's, or a session whose SQLite header is damaged (its schema text is
+// still there). Says nothing about the schema version or the file's health
 // (a truncated or newer session still "looks like" one; open() says why not).
 bool looksLikeSession(const std::string& path);
-// Any SQLite database (the header magic): what a caller that accepts both raw
-// streams and sessions hands to SessionReader for a clear verdict.
+// Any SQLite database (the header magic), or a session whose header is
+// damaged: what a caller that accepts both raw streams and sessions hands to
+// SessionReader for a clear verdict, never to the raw-stream decoder.
 bool isSqliteFile(const std::string& path);
+// A SessionWriter (in any process) is recording into the file right now: it
+// holds an exclusive flock() on it from create() until finish(). False for a
+// finished or an interrupted (crashed, killed) session.
+bool isBeingRecorded(const std::string& path);
 
 // Current UTC time as ISO 8601 with seconds, "2026-11-22T02:45:00Z".
 std::string utcNow();

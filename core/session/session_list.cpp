@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "common/text.h"
 #include "session/session_file.h"
 
 namespace fog::session {
@@ -15,7 +16,9 @@ std::string axesOf(const TestPlan& plan) {
   for (int a = 0; a < kAxisCount; ++a) {
     const bool used = std::any_of(plan.points.begin(), plan.points.end(),
                                   [&](const TestPoint& p) { return static_cast<int>(p.axis) == a; });
-    if (used) out += (out.empty() ? "" : ",") + std::string(axisName(static_cast<Axis>(a)));
+    if (!used) continue;
+    if (!out.empty()) out += ',';
+    out += axisName(static_cast<Axis>(a));
   }
   return out.empty() ? "-" : out;
 }
@@ -23,7 +26,7 @@ std::string axesOf(const TestPlan& plan) {
 Result<SessionListing> listSessions(const std::string& dirText) {
   const fs::path dir = dirText;
   std::error_code ec;
-  if (!fs::is_directory(dir, ec)) return ioError("'" + dir.string() + "' is not a folder");
+  if (!fs::is_directory(dir, ec)) return ioError(dirText + " is not a folder");
   std::vector<fs::path> files;
   for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
     if (it->is_regular_file(ec)) files.push_back(it->path());
@@ -48,10 +51,10 @@ Result<SessionListing> listSessions(const std::string& dirText) {
     }
     SessionSummary s;
     s.path = p;
-    s.fileName = name;
+    s.fileName = toValidUtf8(name);  // for display: a file name need not be UTF-8
     auto r = SessionReader::open(p);
     if (!r) {
-      s.error = r.status().message();
+      s.error = toValidUtf8(r.status().message());
       listing.sessions.push_back(std::move(s));
       continue;
     }
@@ -60,8 +63,13 @@ Result<SessionListing> listSessions(const std::string& dirText) {
     s.incompleteReason = (*r)->incompleteReason();
     auto results = (*r)->results();
     if (results) s.results = results->size();
-    if (results && !results->empty()) {
-      const auto doc = nlohmann::json::parse(results->back().reportJson, nullptr, false);
+    // The latest result that passes its checksum.
+    const StoredResult* latest = nullptr;
+    if (results)
+      for (const auto& res : *results)
+        if (res.intact) latest = &res;
+    if (latest) {
+      const auto doc = nlohmann::json::parse(latest->reportJson, nullptr, false);
       if (doc.is_object() && doc.contains("test_points") && doc["test_points"].is_array()) {
         for (const auto& tp : doc["test_points"]) {
           if (tp.contains("lag_ms") && tp["lag_ms"].is_number()) s.lagMs.push_back(tp["lag_ms"]);

@@ -1,5 +1,6 @@
 # run --save-raw FILE, then analyze FILE: the delay lines must be identical.
 set(raw ${DIR}/saved_run.bin)
+file(REMOVE ${raw})  # --save-raw never replaces a file without --overwrite
 execute_process(COMMAND ${CLI} run --axis z --freq-hz 1 --amp-deg 3 --duration-s 12 --seed 5 --save-raw ${raw}
                 RESULT_VARIABLE c1 OUTPUT_VARIABLE run_out ERROR_VARIABLE e1)
 if(NOT c1 EQUAL 0)

@@ -140,3 +140,33 @@ TEST(TestPlanPresets, EveryNamedPlanIsValidAndUnknownNamesAreExplained) {
 
 }  // namespace
 }  // namespace fog
+
+namespace fog {
+namespace {
+
+// Issue 15: a plan is bounded in points and total time (every sample of a
+// run is held in memory); a stored plan of a million points is refused.
+TEST(TestPlanLimits, TooManyPointsOrTooLongInAllIsRefused) {
+  TestPlan tenDays;
+  for (int i = 0; i < 10; ++i) tenDays.points.push_back({Axis::kX, 0.1, 10.0, 86000.0, 5.0, 0.0});
+  std::string why;
+  EXPECT_FALSE(tenDays.isValid(TurntableLimits{}, &why));
+  EXPECT_NE(why.find("at most 24 h"), std::string::npos) << why;
+
+  TestPlan many;
+  for (std::size_t i = 0; i <= kMaxPlanPoints; ++i) many.points.push_back({Axis::kX, 1.0, 3.0, 2.0, 0.0, 0.0});
+  many.restBetweenS = 0.0;
+  EXPECT_FALSE(many.isValid(TurntableLimits{}, &why));
+  EXPECT_NE(why.find("at most 1000"), std::string::npos) << why;
+
+  std::string json = R"({"points":[)";
+  for (std::size_t i = 0; i <= kMaxPlanPoints; ++i)
+    json += std::string(i ? "," : "") + R"({"axis":"x","frequency_hz":1,"amplitude_deg":3,"duration_s":2})";
+  json += "]}";
+  auto parsed = testPlanFromJson(json);
+  ASSERT_FALSE(parsed.isOk());
+  EXPECT_NE(parsed.status().message().find("at most 1000"), std::string::npos) << parsed.status().message();
+}
+
+}  // namespace
+}  // namespace fog

@@ -1,12 +1,15 @@
-// fog_session_record_helper SESSION.fbs: records a simulated stream into a
-// new session paced in real time (the simulator advanced to the wall clock
-// every 10 ms, as a serial source would deliver it), printing one line per
-// append:  "appended <bytes> committed <bytes> commits <n>". Used by the
-// kill -9 test, which kills it mid-recording. The stream is
-// model::simulate(recordHelperConfig(), recordHelperPlan()).
+// fog_session_record_helper SESSION.fbs [SECONDS]: records a simulated stream
+// into a new session paced in real time (the simulator advanced to the wall
+// clock every 10 ms, as a serial source would deliver it), printing one line
+// per append:  "appended <bytes> committed <bytes> commits <n>". Used by the
+// kill -9 test, which kills it mid-recording, and by the concurrent-reader
+// test, which gives SECONDS: the helper then stops appending after SECONDS of
+// wall time, finishes the session and prints "finished <bytes>". The stream
+// is model::simulate(recordHelperConfig(), recordHelperPlan()).
 
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <thread>
 
 #include "model/simulator.h"
@@ -14,10 +17,11 @@
 #include "session/session_file.h"
 
 int main(int argc, char** argv) {
-  if (argc != 2) {
-    std::fprintf(stderr, "usage: fog_session_record_helper SESSION.fbs\n");
+  if (argc != 2 && argc != 3) {
+    std::fprintf(stderr, "usage: fog_session_record_helper SESSION.fbs [SECONDS]\n");
     return 2;
   }
+  const double stopAfterS = argc == 3 ? std::atof(argv[2]) : 1e9;
   auto sim = fog::model::Simulator::create(fog::test::recordHelperConfig(), fog::test::recordHelperPlan());
   if (!sim) {
     std::fprintf(stderr, "%s\n", sim.status().message().c_str());
@@ -37,6 +41,7 @@ int main(int argc, char** argv) {
   bool more = true;
   while (more) {
     const double elapsedS = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (elapsedS >= stopAfterS) break;
     buf.clear();
     more = (*sim)->advance(elapsedS, buf);
     if (auto s = (*writer)->appendRaw(buf.data(), buf.size()); !s.isOk()) {
@@ -54,5 +59,6 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "%s\n", s.message().c_str());
     return 1;
   }
+  std::printf("finished %llu\n", static_cast<unsigned long long>((*writer)->appendedBytes()));
   return 0;
 }

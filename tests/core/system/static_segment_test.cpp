@@ -136,7 +136,7 @@ TEST(StaticSegment, SessionFileKeepsTheKindInPlanAndStoredSamples) {
   ASSERT_EQ((*r)->info().plan.points.size(), 3u);
   EXPECT_EQ((*r)->info().plan.points[0].kind, TestPointKind::kStatic);
   EXPECT_EQ((*r)->info().plan.points[1].kind, TestPointKind::kSwing);
-  EXPECT_EQ((*r)->schemaVersion(), 1);  // nothing bumped
+  EXPECT_EQ((*r)->schemaVersion(), session::kSchemaVersion);  // static segments bumped nothing
   ASSERT_TRUE((*r)->hasStoredRecording());
   auto rec = (*r)->recording();
   ASSERT_TRUE(rec.isOk());

@@ -1,0 +1,22 @@
+#pragma once
+// Text that enters the bench from outside (command-line arguments, file
+// names, session files written by other tools, serial ports) is not always
+// UTF-8: an operator name typed on a Latin-1 terminal, a file name from an old
+// Windows share. JSON output requires UTF-8, so such text is converted where
+// it enters (docs/reliability.md, issue 15).
+
+#include <string>
+#include <string_view>
+
+namespace fog {
+
+// True when `text` is well-formed UTF-8 (no overlong forms, no surrogates,
+// nothing above U+10FFFF).
+bool isValidUtf8(std::string_view text);
+
+// `text` unchanged when it is valid UTF-8; otherwise every byte that is not
+// part of a well-formed UTF-8 sequence is read as Latin-1 (ISO 8859-1) and
+// re-encoded, so "M\xFCller" becomes "Müller". Never fails.
+std::string toValidUtf8(std::string_view text);
+
+}  // namespace fog

@@ -1,0 +1,32 @@
+// Text that enters the bench is made valid UTF-8 (common/text.h).
+
+#include "common/text.h"
+
+#include <gtest/gtest.h>
+
+namespace fog {
+namespace {
+
+TEST(Text, ValidUtf8IsKeptAsItIs) {
+  for (const char* s : {"", "plain", "Müller", "温度", "\xF0\x9F\x98\x80"}) {
+    EXPECT_TRUE(isValidUtf8(s)) << s;
+    EXPECT_EQ(toValidUtf8(s), s);
+  }
+}
+
+TEST(Text, Latin1BytesAreConverted) {
+  EXPECT_FALSE(isValidUtf8("M\xFCller"));
+  EXPECT_EQ(toValidUtf8("M\xFCller"), "Müller");
+  EXPECT_EQ(toValidUtf8("caf\xE9"), "café");
+}
+
+TEST(Text, MalformedSequencesBecomeValid) {
+  // Overlong "/", a surrogate, beyond U+10FFFF, a cut sequence, a lone continuation byte.
+  for (const char* s : {"\xC0\xAF", "\xED\xA0\x80", "\xF4\x90\x80\x80", "ab\xE2\x82", "\x80x"}) {
+    EXPECT_FALSE(isValidUtf8(s)) << s;
+    EXPECT_TRUE(isValidUtf8(toValidUtf8(s))) << s;
+  }
+}
+
+}  // namespace
+}  // namespace fog
