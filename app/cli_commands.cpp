@@ -44,7 +44,7 @@ namespace {
 int printReport(const Result<analysis::DelayReport>& report, const analysis::ReportContext& context, bool json) {
   if (!report) return fail(report.status(), exitCodeFor(report.status()));
   std::cout << (json ? analysis::formatReportJson(*report, context) + "\n"
-                     : analysis::formatReportText(*report, context));
+                     : forTerminal(analysis::formatReportText(*report, context)));
   return 0;
 }
 

@@ -4,12 +4,13 @@
 #include <filesystem>
 #include <iostream>
 
+#include "common/text.h"
 #include "session/session_file.h"
 
 namespace fog::app {
 
 int fail(const Status& s, int code) {
-  std::cerr << "fogbench-cli: " << s.message() << "\n";
+  std::cerr << "fogbench-cli: " << forTerminal(s.message()) << "\n";
   return code;
 }
 

@@ -9,6 +9,7 @@
 #include "acquisition/acquisition.h"
 #include "analysis/report_writer.h"
 #include "cli_common.h"
+#include "common/text.h"
 #include "common/version.h"
 #include "serial/serial_source.h"
 #include "session/session_file.h"
@@ -143,7 +144,7 @@ int runSerialCommand(CliArguments& args) {
   if (!run->recordingStatus.isOk()) return fail(run->recordingStatus, 1);
   if (!run->report) return fail(run->report.status(), exitCodeFor(run->report.status()));
   std::cout << (json ? analysis::formatReportJson(*run->report, options.reportContext) + "\n"
-                     : analysis::formatReportText(*run->report, options.reportContext));
+                     : forTerminal(analysis::formatReportText(*run->report, options.reportContext)));
   return 0;
 }
 

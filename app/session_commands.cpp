@@ -97,7 +97,7 @@ int analyzeSessionCommand(CliArguments& args, const std::string& path) {
   auto report = analysis::analyzeRecording(*recording, *constants);
   if (!report) return fail(report.status(), exitCodeFor(report.status()));
   std::cout << (json ? analysis::formatReportJson(*report, context) + "\n"
-                     : analysis::formatReportText(*report, context));
+                     : forTerminal(analysis::formatReportText(*report, context)));
   if (noStore) return 0;
   if ((*reader)->beingRecorded()) {
     // Never compete with the recorder for the write lock; the analysis of a
@@ -178,7 +178,7 @@ int sessionsCommand(CliArguments& args) {
     std::string line;
     for (std::size_t c = 0; c < row.size(); ++c)
       line += row[c] + (c + 1 < row.size() ? std::string(width[c] - row[c].size() + 2, ' ') : "");
-    std::cout << line << "\n";
+    std::cout << forTerminal(line) << "\n";
   }
   const int skipped = listing->skippedFiles;
   std::cout << list.size() << (list.size() == 1 ? " session" : " sessions") << " in " << dir << "; " << skipped
@@ -224,7 +224,7 @@ int replayCommand(CliArguments& args) {
   const auto& report = replayed->report;
   if (!report) return fail(report.status(), exitCodeFor(report.status()));
   std::cout << (json ? analysis::formatReportJson(*report, context) + "\n"
-                     : analysis::formatReportText(*report, context));
+                     : forTerminal(analysis::formatReportText(*report, context)));
   return 0;
 }
 
@@ -282,7 +282,7 @@ int importCommand(CliArguments& args) {
   }
   std::cout << "Imported " << imported->recording.testPoints.size() << " test point(s), " << tableSamples
             << " table and " << imuSamples << " gyro samples from " << from << " into " << (*out)->path << ".\n";
-  for (const auto& note : imported->notes) std::cout << "  note: " << note << "\n";
+  for (const auto& note : imported->notes) std::cout << "  note: " << forTerminal(note) << "\n";
   std::cout << "Analyse it with: fogbench-cli analyze " << (*out)->path << "\n";
   return 0;
 }

@@ -45,7 +45,10 @@ DataCoverage measureCoverage(const TestPointData& data) {
     for (std::size_t i = 1; i < data.table.size(); ++i) {
       const double interval = data.table[i].timeS - data.table[i - 1].timeS;
       if (interval <= 1.5 * dt) continue;
-      c.lostTableFrames += static_cast<std::size_t>(std::max(std::llround(interval / dt) - 1, 1LL));
+      // Bounded before the conversion: a time of 1e300 in an imported file
+      // must not overflow it (the gap's size then says what is wrong).
+      const double missing = std::clamp(std::round(interval / dt) - 1.0, 1.0, 1e15);
+      c.lostTableFrames += static_cast<std::size_t>(missing);
       tableMissingS += interval - dt;
       c.largestGapS = std::max(c.largestGapS, interval - dt);
     }

@@ -65,4 +65,21 @@ std::string toValidUtf8(std::string_view text) {
   return out;
 }
 
+std::string forTerminal(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (const char ch : toValidUtf8(text)) {
+    const auto c = static_cast<unsigned char>(ch);
+    if ((c < 0x20 && c != '\n' && c != '\t') || c == 0x7F) {
+      static const char* hex = "0123456789ABCDEF";
+      out += "\\x";
+      out += hex[c >> 4];
+      out += hex[c & 15];
+    } else {
+      out += ch;
+    }
+  }
+  return out;
+}
+
 }  // namespace fog

@@ -19,4 +19,10 @@ bool isValidUtf8(std::string_view text);
 // re-encoded, so "M\xFCller" becomes "Müller". Never fails.
 std::string toValidUtf8(std::string_view text);
 
+// For a terminal: control characters (ESC, BEL, CR, ... but newline and tab)
+// that text from a file could carry are shown as "\xNN" instead of acting on
+// the terminal (an escape sequence in an operator name or a CSV value must
+// not move the cursor or retitle the window). Valid UTF-8 otherwise kept.
+std::string forTerminal(std::string_view text);
+
 }  // namespace fog

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <set>
+#include <utility>
+#include <vector>
 
 namespace fog::io::detail {
 
@@ -116,11 +118,25 @@ std::string metadataToJson(const Metadata& meta) {
 
 Result<Metadata> metadataFromJson(const std::string& path, const std::string& text) {
   Json j;
+  // A key given twice in one object would silently keep the last value: it
+  // is refused, like an unknown key.
+  std::vector<std::set<std::string>> keysPerObject;
+  std::string duplicate;
+  const Json::parser_callback_t noDuplicates = [&](int, Json::parse_event_t event, Json& parsed) {
+    if (event == Json::parse_event_t::object_start) keysPerObject.emplace_back();
+    else if (event == Json::parse_event_t::object_end && !keysPerObject.empty()) keysPerObject.pop_back();
+    else if (event == Json::parse_event_t::key && !keysPerObject.empty() &&
+             !keysPerObject.back().insert(parsed.get<std::string>()).second && duplicate.empty())
+      duplicate = parsed.get<std::string>();
+    return true;
+  };
   try {
-    j = Json::parse(text);
+    j = Json::parse(text, noDuplicates);
   } catch (const nlohmann::json::parse_error& e) {
     return corruptData(path + ": not valid JSON (" + e.what() + "); metadata must be one JSON object (docs/formats.md)");
   }
+  if (!duplicate.empty())
+    return corruptData(path + ": the key \"" + duplicate + "\" appears twice in one object; keep one");
   if (!j.is_object()) return corruptData(path + ": must hold one JSON object {...} (docs/formats.md)");
 
   Metadata meta;
@@ -164,6 +180,15 @@ Result<Metadata> metadataFromJson(const std::string& path, const std::string& te
   FOG_RETURN_IF_ERROR(bench.number("table_read_delay_std_ms", b.tableReadDelayStdMs, false, 0.0));
   FOG_RETURN_IF_ERROR(bench.number("board_delay_ms", b.boardDelayMs, true));
   FOG_RETURN_IF_ERROR(bench.number("board_delay_std_ms", b.boardDelayStdMs, false, 0.0));
+  // A delay constant is a fraction of a frame or a few: beyond a second it is a
+  // typo or a unit error (1e308 went through into the breakdown).
+  for (const auto& [key, value] : {std::pair{"table_read_delay_ms", b.tableReadDelayMs},
+                                   {"table_read_delay_std_ms", b.tableReadDelayStdMs},
+                                   {"board_delay_ms", b.boardDelayMs},
+                                   {"board_delay_std_ms", b.boardDelayStdMs}})
+    if (std::abs(value) > 1000.0)
+      return corruptData(path + ": \"bench." + key + "\" = " + Json(value).dump() +
+                         " ms is beyond a second; bench delays are in milliseconds (docs/formats.md)");
   FOG_RETURN_IF_ERROR(bench.number("latitude_deg", b.latitudeDeg, false, -90.0));
   if (b.latitudeDeg > 90.0) return corruptData(path + ": \"bench.latitude_deg\" must be within [-90, 90]");
   FOG_RETURN_IF_ERROR(bench.number("pulse_equivalent_deg", b.pulseEquivalentDeg, true));

@@ -30,3 +30,16 @@ TEST(Text, MalformedSequencesBecomeValid) {
 
 }  // namespace
 }  // namespace fog
+
+namespace fog {
+namespace {
+
+TEST(Text, EscapeSequencesFromFilesNeverReachTheTerminal) {
+  // An operator name that would retitle the window and clear the screen.
+  EXPECT_EQ(forTerminal("A\x1b]0;owned\x07 B\x1b[2J"), "A\\x1B]0;owned\\x07 B\\x1B[2J");
+  EXPECT_EQ(forTerminal("line 1\n\tline 2 ± 0.1 ms"), "line 1\n\tline 2 ± 0.1 ms");  // newline, tab, UTF-8 kept
+  EXPECT_EQ(forTerminal("carriage\rreturn\x7f"), "carriage\\x0Dreturn\\x7F");
+}
+
+}  // namespace
+}  // namespace fog

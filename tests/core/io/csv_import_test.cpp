@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <random>
 
+#include "analysis/data_coverage.h"
 #include "analysis/delay_analysis.h"
 #include "common/units.h"
 #include "io/csv_export.h"
@@ -275,6 +276,30 @@ TEST(CsvImport, AStatedGyroSignNegatesThatAxisWhereTheDataEnter) {
     "pulse_equivalent_deg": 5e-5, "gyro_sign": {"x": -2}}, "test_points": [{"axis": "x"}]})"));
   ASSERT_FALSE(bad.isOk());
   EXPECT_NE(bad.status().message().find("gyro_sign"), std::string::npos);
+}
+
+TEST(CsvImportErrors, ADuplicateKeyOrADelayBeyondASecondIsRefused) {
+  auto twice = importCsvDirectory(goodDir(R"({"bench": {"table_read_delay_ms": 0.05, "board_delay_ms": 0.28,
+    "board_delay_ms": 0.3, "pulse_equivalent_deg": 5e-5}, "test_points": [{"axis": "x"}]})"));
+  ASSERT_FALSE(twice.isOk());
+  EXPECT_NE(twice.status().message().find("\"board_delay_ms\" appears twice"), std::string::npos)
+      << twice.status().message();
+  auto huge = importCsvDirectory(goodDir(R"({"bench": {"table_read_delay_ms": 0.05, "board_delay_ms": 1e308,
+    "pulse_equivalent_deg": 5e-5}, "test_points": [{"axis": "x"}]})"));
+  ASSERT_FALSE(huge.isOk());
+  EXPECT_NE(huge.status().message().find("beyond a second"), std::string::npos) << huge.status().message();
+}
+
+TEST(CsvImport, ATimeOf1e300IsAnalysedWithoutOverflow) {
+  // The last table row 1e300 s after the others: a gap, reported, never a
+  // signed overflow (UBSan) in the frame count.
+  std::string table = std::string(kTable) + "1,1e300,0.4,0,0\n";
+  auto s = importCsvDirectory(goodDir(kMetadata, table.c_str()));
+  ASSERT_TRUE(s.isOk()) << s.status().toString();
+  const auto c = analysis::measureCoverage(s->recording.testPoints.at(0));
+  EXPECT_GE(c.lostTableFrames, 1u);
+  auto report = analysis::analyzeRecording(s->recording, analysis::benchConstantsOf(s->info.bench));
+  EXPECT_FALSE(report.isOk());  // two table readings and two gyro frames give no delay, with a reason
 }
 
 TEST(CsvImport, TheSourceNeverNests) {

@@ -17,6 +17,7 @@ namespace {
 struct Measured {
   analysis::TestPointResult point;
   model::TestPointTruth truth;
+  StreamHealth health;  // the decoder's counters over the whole stream
 };
 
 Measured measure(const model::SimConfig& config, const TestPlan& plan) {
@@ -26,7 +27,7 @@ Measured measure(const model::SimConfig& config, const TestPlan& plan) {
   EXPECT_TRUE(rec.isOk()) << rec.status().toString();
   auto report = analysis::analyzeRecording(*rec, analysis::BenchConstants{});
   EXPECT_TRUE(report.isOk()) << report.status().toString();
-  return {report->points.at(0), run->truth.at(0)};
+  return {report->points.at(0), run->truth.at(0), rec->health};
 }
 
 // X axis, 0.1 Hz / 10 deg, 4.9 min, true lag 0.4658 ms (gyro 0.2358 ms).
@@ -74,6 +75,8 @@ TEST(PaperReproduction, CounterWrapMidRunGivesTheSameResult) {
   const auto plain = measure(config, plan);
   config.samplingBoard.counterStart = 0xFFFFFFFFu - 100000000u;  // wraps 10 s in
   const auto wrapped = measure(config, plan);
+  EXPECT_EQ(plain.health.counterWraps, 0u);
+  EXPECT_EQ(wrapped.health.counterWraps, 1u);  // the wrap this test is about did happen
   EXPECT_NEAR(wrapped.point.lagMs, plain.point.lagMs, 1e-9);
 }
 
