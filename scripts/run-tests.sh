@@ -18,19 +18,27 @@ cmake --preset headless
 cmake --build --preset headless
 ctest --preset headless --output-on-failure -j2
 
-echo "== fuzzing: sampling-board decoder and session reader (libFuzzer + ASan/UBSan, clang) =="
+echo "== fuzzing: sampling-board decoder, session reader, CSV import and plan JSON (libFuzzer + ASan/UBSan, clang) =="
 # Bounded: FUZZ_SECONDS each (default 60). Seeds: the committed decoder corpus
 # and small simulated streams and sessions written by fog_fuzz_seed_corpus.
 # A crash fails the run and leaves its input in the scratch folder printed
 # below (docs/reliability.md).
 fuzz_seconds="${FUZZ_SECONDS:-60}"
 cmake --preset fuzz
-cmake --build --preset fuzz --target fog_fuzz_decoder fog_fuzz_session fog_fuzz_seed_corpus
+cmake --build --preset fuzz --target fog_fuzz_decoder fog_fuzz_session fog_fuzz_import fog_fuzz_seed_corpus
 fuzz_dir="$(mktemp -d /tmp/fogbench-fuzz.XXXXXX)"
 echo "fuzz scratch: $fuzz_dir"
-mkdir -p "$fuzz_dir"/{seed-decoder,seed-session,decoder,session}
+mkdir -p "$fuzz_dir"/{seed-decoder,seed-session,seed-import,decoder,session,import}
+# Import seed: a plan, a metadata text, a table and a gyro file, NUL-separated.
+printf '%s\0%s\0%s\0%s' \
+  '{"rest_between_s": 1, "points": [{"axis": "x", "frequency_hz": 1, "amplitude_deg": 3, "duration_s": 10}]}' \
+  '{"bench": {"table_read_delay_ms": 0.05, "board_delay_ms": 0.28, "pulse_equivalent_deg": 5e-5, "gyro_sign": {"x": -1}}, "test_points": [{"axis": "x", "frequency_hz": 1}]}' \
+  "$(printf 'time_s,x_deg\n0.001,0.1\n0.002,0.2\n0.003,0.3\n')" \
+  "$(printf 'test_point,time_s,x_inc_deg,lost_before\n1,0.002,0.001,0\n1,0.004,0.002,1\n')" > "$fuzz_dir/seed-import/one"
 build/fuzz/fuzz/fog_fuzz_seed_corpus "$fuzz_dir/seed-decoder" "$fuzz_dir/seed-session"
 build/fuzz/fuzz/fog_fuzz_decoder -max_total_time="$fuzz_seconds" -print_final_stats=1 \
   -artifact_prefix="$fuzz_dir/decoder-" "$fuzz_dir/decoder" fuzz/corpus/decoder "$fuzz_dir/seed-decoder"
 build/fuzz/fuzz/fog_fuzz_session -max_total_time="$fuzz_seconds" -print_final_stats=1 \
   -artifact_prefix="$fuzz_dir/session-" "$fuzz_dir/session" "$fuzz_dir/seed-session"
+build/fuzz/fuzz/fog_fuzz_import -max_total_time="$fuzz_seconds" -print_final_stats=1 -max_len=65536 \
+  -artifact_prefix="$fuzz_dir/import-" "$fuzz_dir/import" "$fuzz_dir/seed-import"

@@ -536,6 +536,11 @@ Result<ImportedSession> importCsvDirectory(const std::string& dir) {
   return importTexts(dir, metaPath, *meta, tablePath, *table, gyroPath, *gyro);
 }
 
+Result<ImportedSession> importCsvTexts(const std::string& metadataText, const std::string& tableText,
+                                       const std::string& gyroText) {
+  return importTexts("(texts)", "metadata.json", metadataText, "table.csv", tableText, "gyro.csv", gyroText);
+}
+
 Result<ImportedSession> importCsvFiles(const std::vector<std::string>& paths) {
   if (paths.size() != 3)
     return invalidArgument("give three files (metadata JSON, table CSV, gyro CSV), not " +

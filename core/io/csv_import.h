@@ -54,6 +54,11 @@ Result<ImportedSession> importCsvDirectory(const std::string& dir);
 // (x_deg, y_deg or z_deg).
 Result<ImportedSession> importCsvFiles(const std::vector<std::string>& paths);
 
+// The same from the three files' texts (named metadata.json, table.csv and
+// gyro.csv in messages): for programs that hold the data, and the fuzzer.
+Result<ImportedSession> importCsvTexts(const std::string& metadataText, const std::string& tableText,
+                                       const std::string& gyroText);
+
 // A continuous recording (one swing test point, no test-point markers) cut
 // into one test point per window (analysis/swing_windows.h); the plan
 // follows. Fails when the import holds more than one test point.

@@ -132,7 +132,7 @@ Result<Metadata> metadataFromJson(const std::string& path, const std::string& te
   };
   try {
     j = Json::parse(text, noDuplicates);
-  } catch (const nlohmann::json::parse_error& e) {
+  } catch (const nlohmann::json::exception& e) {  // parse_error, and out_of_range for a number beyond a double
     return corruptData(path + ": not valid JSON (" + e.what() + "); metadata must be one JSON object (docs/formats.md)");
   }
   if (!duplicate.empty())

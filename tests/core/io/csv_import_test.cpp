@@ -284,6 +284,10 @@ TEST(CsvImportErrors, ADuplicateKeyOrADelayBeyondASecondIsRefused) {
   ASSERT_FALSE(twice.isOk());
   EXPECT_NE(twice.status().message().find("\"board_delay_ms\" appears twice"), std::string::npos)
       << twice.status().message();
+  // Found by fog_fuzz_import: a number beyond a double threw out of the parser.
+  auto beyond = importCsvDirectory(goodDir(R"({"bench": {"table_read_delay_ms": 5e4444}, "test_points": []})"));
+  ASSERT_FALSE(beyond.isOk());
+  EXPECT_NE(beyond.status().message().find("not valid JSON"), std::string::npos) << beyond.status().message();
   auto huge = importCsvDirectory(goodDir(R"({"bench": {"table_read_delay_ms": 0.05, "board_delay_ms": 1e308,
     "pulse_equivalent_deg": 5e-5}, "test_points": [{"axis": "x"}]})"));
   ASSERT_FALSE(huge.isOk());
