@@ -11,8 +11,8 @@ namespace {
 constexpr std::size_t kChunkBytes = 1024;
 }  // namespace
 
-ReplaySource::ReplaySource(std::vector<std::uint8_t> bytes, double speed, std::string name)
-    : bytes_(std::move(bytes)), clock_(speed), name_(std::move(name)) {}
+ReplaySource::ReplaySource(std::vector<std::uint8_t> bytes, double speed, std::string name, WallClock wall)
+    : bytes_(std::move(bytes)), clock_(speed, std::move(wall)), name_(std::move(name)) {}
 
 void ReplaySource::prepareChunk() {
   chunkEnd_ = std::min(bytes_.size(), position_ + kChunkBytes);

@@ -17,7 +17,8 @@ namespace fog::acquisition {
 class ReplaySource : public ByteSource {
  public:
   // `name` says where the bytes came from ("session run1.fbs").
-  ReplaySource(std::vector<std::uint8_t> bytes, double speed, std::string name);
+  // `wall` paces the release (the machine's clock unless a test gives one).
+  ReplaySource(std::vector<std::uint8_t> bytes, double speed, std::string name, WallClock wall = {});
 
   Result<ReadOutcome> read(std::vector<std::uint8_t>& out, std::chrono::milliseconds timeout) override;
   std::string description() const override;
