@@ -33,8 +33,9 @@ struct ValidityCheck {
 };
 
 // Swing frequency of the table angle, for streams that do not state it and
-// as a check of the plan: the peak of the periodogram of the (detrended)
-// angle, refined by a parabola through the peak's neighbours. Unlike zero
+// as a check of the plan: the peak of the periodogram of the (detrended,
+// binned) angle, refined by a golden-section search of the least-squares
+// periodogram (a sine-cosine-offset fit) within one bin. Unlike zero
 // crossings armed at a fraction of the global peak-to-peak, it is not fooled
 // by an amplitude that varies (decays, repeated excitations). Fails when the
 // table did not move or the record holds fewer than two periods.
