@@ -179,15 +179,7 @@ int runCommand(CliArguments& args) {
   std::signal(SIGTERM, SIG_DFL);
   if (!run) return fail(run.status(), 2);
   if (tee && !tee->close()) return fail(ioError("cannot write raw stream to '" + *savePath + "'"), 2);
-  if (!run->complete) {
-    std::cerr << "fogbench-cli: run incomplete: " << run->incompleteReason << "; " << run->bytesReceived
-              << " bytes received"
-              << (run->sessionPath.empty()                        ? std::string()
-                  : run->sessionBytes == run->bytesReceived ? ", all kept in " + run->sessionPath
-                                                            : ", the first " + std::to_string(run->sessionBytes) +
-                                                                  " kept in " + run->sessionPath)
-              << "\n";
-  }
+  if (!run->complete) printIncompleteRun(*run);
   if (!run->recordingStatus.isOk()) return fail(run->recordingStatus, 1);
   return printReport(run->report, options.reportContext, json);
 }

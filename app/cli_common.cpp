@@ -27,6 +27,16 @@ Status checkOutputFile(const std::string& path, bool overwrite, const std::strin
   return Status::ok();
 }
 
+void printIncompleteRun(const acquisition::AcquisitionResult& run) {
+  std::cerr << "fogbench-cli: run incomplete: " << run.incompleteReason << "; " << run.bytesReceived
+            << " bytes received"
+            << (run.sessionPath.empty()                      ? std::string()
+                : run.sessionBytes == run.bytesReceived ? ", all kept in " + run.sessionPath
+                                                        : ", the first " + std::to_string(run.sessionBytes) +
+                                                              " kept in " + run.sessionPath)
+            << "\n";
+}
+
 int exitCodeFor(const Status& s) {
   return s.code() == StatusCode::kInsufficientData || s.code() == StatusCode::kNotConverged ? 1 : 2;
 }

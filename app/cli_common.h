@@ -9,6 +9,7 @@
 #include <array>
 #include <string>
 
+#include "acquisition/acquisition.h"
 #include "analysis/delay_analysis.h"
 #include "analysis/verdict.h"
 #include "cli_arguments.h"
@@ -20,6 +21,9 @@ namespace fog::app {
 
 // Prints "fogbench-cli: <message>" on stderr and returns `code`.
 int fail(const Status& s, int code);
+// On stderr: why a run (simulator or serial) ended early, the bytes received
+// and how many of them the session kept.
+void printIncompleteRun(const acquisition::AcquisitionResult& run);
 // 1 for kInsufficientData / kNotConverged, 2 for everything else.
 int exitCodeFor(const Status& s);
 

@@ -132,15 +132,7 @@ int runSerialCommand(CliArguments& args) {
   std::signal(SIGINT, SIG_DFL);
   std::signal(SIGTERM, SIG_DFL);
   if (!run) return fail(run.status(), 2);
-  if (!run->complete) {
-    std::cerr << "fogbench-cli: run incomplete: " << run->incompleteReason << "; " << run->bytesReceived
-              << " bytes received"
-              << (run->sessionPath.empty()                        ? std::string()
-                  : run->sessionBytes == run->bytesReceived ? ", all kept in " + run->sessionPath
-                                                            : ", the first " + std::to_string(run->sessionBytes) +
-                                                                  " kept in " + run->sessionPath)
-              << "\n";
-  }
+  if (!run->complete) printIncompleteRun(*run);
   if (!run->recordingStatus.isOk()) return fail(run->recordingStatus, 1);
   if (!run->report) return fail(run->report.status(), exitCodeFor(run->report.status()));
   std::cout << (json ? analysis::formatReportJson(*run->report, options.reportContext) + "\n"

@@ -104,18 +104,12 @@ constexpr double kHarmonicLimit = 0.02;      // harmonics 2..5 / amplitude
 constexpr double kAmplitudeChangeLimit = 0.05;  // over the record, and > 5 sigma
 constexpr double kCausalSignificance = 3.0;  // a negative IMU delay beyond 3 sigma
 
-std::string axisLetter(Axis a) {
-  std::string s = axisName(a);
-  s[0] = static_cast<char>(s[0] - 'a' + 'A');
-  return s;
-}
-
 std::string percent(double fraction) { return fmt(100.0 * fraction, fraction < 0.001 ? 3 : 2) + " %"; }
 
 void addValidityChecks(TestPointResult& r, const Channels& ch, const std::vector<double>& gyroAngleResidual,
                        const std::vector<double>& times, const std::vector<double>& amplitudes,
                        const std::vector<double>& lags, double amplitude) {
-  const std::string axis = axisLetter(r.axis);
+  const std::string axis = axisLabel(r.axis);
   const double w = r.joint.omegaRadPerS;
   const double periodS = kTwoPi / w;
 

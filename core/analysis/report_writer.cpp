@@ -16,12 +16,6 @@ std::string f(const char* format, double v) {
   return buf;
 }
 
-std::string axisUpper(Axis a) {
-  std::string s = axisName(a);
-  s[0] = static_cast<char>(s[0] - 'a' + 'A');
-  return s;
-}
-
 std::string upper(std::string s) {
   for (auto& ch : s) ch = static_cast<char>(ch >= 'a' && ch <= 'z' ? ch - 'a' + 'A' : ch);
   return s;
@@ -29,13 +23,6 @@ std::string upper(std::string s) {
 
 // An uncertainty with two significant digits, however small.
 std::string sd(double v) { return f("%.2g", v); }
-
-// Decimals (in ms) that show an uncertainty to two significant digits, and
-// never fewer than the paper's four: 0.0015 -> 4, 0.00010 -> 5.
-int decimalsFor(double stdMs) {
-  if (!(stdMs > 0.0)) return 4;
-  return std::clamp(1 - static_cast<int>(std::floor(std::log10(stdMs))), 4, 7);
-}
 
 std::string fixed(double v, int decimals, int width = 0) {
   char buf[64];
@@ -80,7 +67,7 @@ std::string formatReportText(const DelayReport& report, const ReportContext& con
   for (std::size_t pi = 0; pi < report.points.size(); ++pi) {
     const auto& p = report.points[pi];
     const PointVerdict& pv = verdict.points[pi];
-    o << "\nTest point " << p.index + 1 << ": " << axisUpper(p.axis) << " axis, " << f("%g", p.nominalFrequencyHz)
+    o << "\nTest point " << p.index + 1 << ": " << axisLabel(p.axis) << " axis, " << f("%g", p.nominalFrequencyHz)
       << " Hz / " << f("%.3f", p.tableFit.amplitudeDeg) << " deg, " << f("%.1f", p.durationS) << " s ("
       << f("%.1f", p.periods) << " periods)\n";
     o << "  fits (angle = A sin(2 pi (t - t0) / T); t0 is the phase):\n";
@@ -133,11 +120,11 @@ std::string formatReportText(const DelayReport& report, const ReportContext& con
     for (const auto& why : pv.reasons) o << "    " << why << "\n";
   }
   for (const auto& s : report.staticSegments)
-    o << "\nTest point " << s.index + 1 << ": static segment, " << axisUpper(s.axis) << " axis, "
+    o << "\nTest point " << s.index + 1 << ": static segment, " << axisLabel(s.axis) << " axis, "
       << f("%.1f", s.durationS) << " s at rest: no delay to measure (gyro noise: fogbench-cli noise)\n";
   for (const auto& fp : report.failedPoints) o << "\nno delay from " << fp << "\n";
   for (const auto& cc : report.consistency) {
-    o << "\nDelay against frequency, " << axisUpper(cc.axis) << " axis (" << cc.points
+    o << "\nDelay against frequency, " << axisLabel(cc.axis) << " axis (" << cc.points
       << " frequencies): weighted lag " << fixed(cc.weightedLagMs, decimalsFor(cc.weightedLagStdMs)) << " ± "
       << fixed(cc.weightedLagStdMs, decimalsFor(cc.weightedLagStdMs))
       << " ms, chi2 " << f("%.2f", cc.chiSquare) << " on " << cc.dof << " dof, p = " << f("%.3f", cc.pValue)

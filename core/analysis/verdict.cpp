@@ -14,12 +14,6 @@ std::string fixed(double v, int decimals) {
   return buf;
 }
 
-// Decimals that show an uncertainty to two significant digits, never fewer than four.
-int decimalsFor(double stdMs) {
-  if (!(stdMs > 0.0)) return 4;
-  return std::clamp(1 - static_cast<int>(std::floor(std::log10(stdMs))), 4, 7);
-}
-
 // The limit as the user wrote it: 0.8, not 0.8000.
 std::string limitText(double v) {
   char buf[64];
@@ -28,6 +22,11 @@ std::string limitText(double v) {
 }
 
 }  // namespace
+
+int decimalsFor(double stdMs) {
+  if (!(stdMs > 0.0)) return 4;
+  return std::clamp(1 - static_cast<int>(std::floor(std::log10(stdMs))), 4, 7);
+}
 
 const char* verdictName(Verdict v) {
   switch (v) {

@@ -23,6 +23,11 @@ enum class Verdict { kPass, kFail, kInvalid };
 const char* verdictName(Verdict v);
 
 inline constexpr double kVerdictCoverageFactor = 2.0;
+
+// Decimals (in ms) that show an uncertainty to two significant digits, and
+// never fewer than the paper's four: 0.0015 -> 4, 0.00010 -> 5. The text
+// report and the verdict's sentences write delays with it.
+int decimalsFor(double stdMs);
 inline constexpr double kDefaultImuDelayLimitMs = 0.8;
 
 struct PointVerdict {

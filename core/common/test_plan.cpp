@@ -17,6 +17,15 @@ const char* axisName(Axis axis) {
   return "?";
 }
 
+const char* axisLabel(Axis axis) {
+  switch (axis) {
+    case Axis::kX: return "X";
+    case Axis::kY: return "Y";
+    case Axis::kZ: return "Z";
+  }
+  return "?";
+}
+
 Result<Axis> parseAxis(std::string_view text) {
   if (text == "x" || text == "X") return Axis::kX;
   if (text == "y" || text == "Y") return Axis::kY;

@@ -15,7 +15,8 @@ namespace fog {
 
 enum class Axis { kX = 0, kY = 1, kZ = 2 };
 inline constexpr int kAxisCount = 3;
-const char* axisName(Axis axis);  // "x", "y", "z"
+const char* axisName(Axis axis);   // "x", "y", "z"
+const char* axisLabel(Axis axis);  // "X", "Y", "Z": as reports print it
 Result<Axis> parseAxis(std::string_view text);
 
 // Mechanical limits of the turntable. Defaults describe a typical precision

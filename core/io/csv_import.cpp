@@ -424,12 +424,6 @@ std::string originalSource(std::string source) {
   return source;
 }
 
-std::string upper(Axis a) {
-  std::string s = axisName(a);
-  s[0] = static_cast<char>(s[0] - 'a' + 'A');
-  return s;
-}
-
 Result<ImportedSession> importTexts(const std::string& what, const std::string& metaPath,
                                     const std::string& metaText, const std::string& tablePath,
                                     const std::string& tableText, const std::string& gyroPath,
@@ -458,11 +452,11 @@ Result<ImportedSession> importTexts(const std::string& what, const std::string& 
     const int a = static_cast<int>(p.axis);
     if (!table.has(kAxis0 + a))
       return corruptData(tablePath + ": no \"" + kTableColumns[static_cast<std::size_t>(kAxis0 + a)] +
-                         "\" column, but test point " + std::to_string(p.index + 1) + " swings the " + upper(p.axis) +
+                         "\" column, but test point " + std::to_string(p.index + 1) + " swings the " + axisLabel(p.axis) +
                          " axis (" + metaPath + "); add the column or correct the axis");
     if (!gyro.has(kAxis0 + a) && !gyro.has(kRate0 + a))
       return corruptData(gyroPath + ": no \"" + kGyroColumns[static_cast<std::size_t>(kAxis0 + a)] +
-                         "\" column, but test point " + std::to_string(p.index + 1) + " swings the " + upper(p.axis) +
+                         "\" column, but test point " + std::to_string(p.index + 1) + " swings the " + axisLabel(p.axis) +
                          " axis (" + metaPath + "); add the column or correct the axis");
   }
   // (Axis and temperature columns the docs allow to leave out read as 0
@@ -472,7 +466,7 @@ Result<ImportedSession> importTexts(const std::string& what, const std::string& 
     if (meta->gyroSign[static_cast<std::size_t>(a)] > 0) continue;
     for (auto& p : points)
       for (auto& s : p.imu) s.incrementDeg[static_cast<std::size_t>(a)] = -s.incrementDeg[static_cast<std::size_t>(a)];
-    out.notes.push_back("gyro " + upper(static_cast<Axis>(a)) +
+    out.notes.push_back(std::string("gyro ") + axisLabel(static_cast<Axis>(a)) +
                         " axis mounted the other way round (bench.gyro_sign -1): its increments are negated");
   }
 
