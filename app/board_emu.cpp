@@ -170,9 +170,8 @@ Result<Options> readOptions(app::CliArguments& args) {
                       {"stall-s", &o.stallS},
                       {"disconnect-at-s", &o.disconnectAtS}};
   for (auto& n : numbers) {
-    auto v = args.number(n.name, *n.target);
-    if (!v) return v.status();
-    *n.target = *v;
+    FOG_ASSIGN_OR_RETURN(auto v, args.number(n.name, *n.target));
+    *n.target = v;
   }
   for (double rate : {o.faults.corruptRate, o.faults.dropRate, o.faults.duplicateRate})
     if (rate < 0.0 || rate > 1.0) return invalidArgument("fault rates must be within 0 .. 1");

@@ -56,9 +56,8 @@ Result<std::vector<std::unique_ptr<model::Effect>>> readEffects(const std::strin
   std::string item;
   while (std::getline(list, item, '+')) {
     const auto eq = item.find('=');
-    auto id = diagnosis::effectIdFromName(item.substr(0, eq));
-    if (!id) return id.status();
-    const auto& spec = diagnosis::effectSpec(*id);
+    FOG_ASSIGN_OR_RETURN(auto id, diagnosis::effectIdFromName(item.substr(0, eq)));
+    const auto& spec = diagnosis::effectSpec(id);
     std::vector<double> values;
     std::stringstream numbers(eq == std::string::npos ? "" : item.substr(eq + 1));
     std::string number;
@@ -77,7 +76,7 @@ Result<std::vector<std::unique_ptr<model::Effect>>> readEffects(const std::strin
     }
     diagnosis::EffectContext context;
     context.earth = config.earth;
-    effects.push_back(diagnosis::makeEffect(*id, values, context));
+    effects.push_back(diagnosis::makeEffect(id, values, context));
   }
   return effects;
 }

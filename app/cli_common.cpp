@@ -60,17 +60,15 @@ Result<analysis::BenchConstants> readConstants(CliArguments& args, const BenchSe
                 {"board-delay-std-ms", &c.boardDelayStdMs},
                 {"pulse-equivalent-deg", &c.pulseEquivalentDeg}};
   for (auto& f : fields) {
-    auto v = args.number(f.name, *f.target);
-    if (!v) return v.status();
-    *f.target = *v;
+    FOG_ASSIGN_OR_RETURN(auto v, args.number(f.name, *f.target));
+    *f.target = v;
   }
   if (c.tableReadDelayStdMs < 0 || c.boardDelayStdMs < 0)
     return invalidArgument("uncertainties of bench constants must be >= 0");
   if (c.pulseEquivalentDeg < 0) return invalidArgument("--pulse-equivalent-deg must be >= 0");
   if (auto signs = args.text("gyro-sign")) {
-    auto parsed = parseGyroSigns(*signs);
-    if (!parsed) return parsed.status();
-    c.gyroSign = *parsed;
+    FOG_ASSIGN_OR_RETURN(auto parsed, parseGyroSigns(*signs));
+    c.gyroSign = parsed;
   }
   return c;
 }
@@ -94,10 +92,9 @@ Result<std::array<int, kAxisCount>> parseGyroSigns(const std::string& text) {
 }
 
 Result<double> readDelayLimit(CliArguments& args) {
-  auto limit = args.number("limit-ms", analysis::kDefaultImuDelayLimitMs);
-  if (!limit) return limit.status();
-  if (!(*limit > 0.0) || *limit > 1e6) return invalidArgument("--limit-ms must be a number of milliseconds > 0");
-  return *limit;
+  FOG_ASSIGN_OR_RETURN(auto limit, args.number("limit-ms", analysis::kDefaultImuDelayLimitMs));
+  if (!(limit > 0.0) || limit > 1e6) return invalidArgument("--limit-ms must be a number of milliseconds > 0");
+  return limit;
 }
 
 }  // namespace fog::app

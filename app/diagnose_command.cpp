@@ -17,13 +17,12 @@ namespace fog::app {
 namespace {
 
 Result<int> wholeNumber(CliArguments& args, const std::string& name, double fallback, double min, double max) {
-  auto v = args.number(name, fallback);
-  if (!v) return v.status();
+  FOG_ASSIGN_OR_RETURN(auto v, args.number(name, fallback));
   // Checked before the cast: --seeds 1e12 is outside int.
-  if (!(*v >= min && *v <= max) || *v != std::floor(*v))
+  if (!(v >= min && v <= max) || v != std::floor(v))
     return invalidArgument("--" + name + " must be a whole number in " + std::to_string(static_cast<int>(min)) +
                            " .. " + std::to_string(static_cast<int>(max)));
-  return static_cast<int>(*v);
+  return static_cast<int>(v);
 }
 
 }  // namespace

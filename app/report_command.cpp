@@ -28,31 +28,28 @@ std::string nowUtc() {
 
 // A simulated session, exactly as `run` makes it.
 Result<report::ReportInput> simulatedSession(const std::string& preset, double seed) {
-  auto plan = presetPlan(preset);
-  if (!plan) return plan.status();
+  FOG_ASSIGN_OR_RETURN(auto plan, presetPlan(preset));
   if (seed < 0 || seed != std::floor(seed)) return invalidArgument("--seed must be a whole number >= 0");
   model::SimConfig config;
   config.seed = static_cast<std::uint64_t>(seed);
-  auto run = model::simulate(config, *plan);
-  if (!run) return run.status();
-  auto recording = protocol::decodeRecording(run->bytes);
-  if (!recording) return recording.status();
+  FOG_ASSIGN_OR_RETURN(auto run, model::simulate(config, plan));
+  FOG_ASSIGN_OR_RETURN(auto recording, protocol::decodeRecording(run.bytes));
   report::ReportInput in;
   in.info.source = "simulator, seed " + std::to_string(config.seed) + ", preset " + preset;
   in.info.imuModel = "simulated FOG IMU";
   in.info.softwareVersion = FOG_VERSION;
   in.info.createdUtc = nowUtc();
-  in.info.plan = *plan;
+  in.info.plan = plan;
   std::string truth;
-  for (const auto& t : run->truth) {
+  for (const auto& t : run.truth) {
     char line[96];
     std::snprintf(line, sizeof line, "%ssimulator truth, test point %d: lag %.5f ms", truth.empty() ? "" : "; ",
                   t.index + 1, t.lagS * 1e3);
     truth += line;
   }
   in.info.notes = truth;
-  in.recording = std::move(*recording);
-  in.rawBytes = std::move(run->bytes);
+  in.recording = std::move(recording);
+  in.rawBytes = std::move(run.bytes);
   return in;
 }
 
@@ -62,17 +59,14 @@ Result<report::ReportInput> simulatedSession(const std::string& preset, double s
 Result<report::ReportInput> fileSession(const std::string& path) {
   report::ReportInput in;
   if (session::isSqliteFile(path)) {
-    auto reader = session::SessionReader::open(path);
-    if (!reader) return reader.status();
-    auto recording = (*reader)->recording();
-    if (!recording) return recording.status();
-    auto bytes = (*reader)->rawBytes();
-    if (!bytes) return bytes.status();
-    in.info = (*reader)->info();
+    FOG_ASSIGN_OR_RETURN(auto reader, session::SessionReader::open(path));
+    FOG_ASSIGN_OR_RETURN(auto recording, reader->recording());
+    FOG_ASSIGN_OR_RETURN(auto bytes, reader->rawBytes());
+    in.info = reader->info();
     in.info.source = "session " + path + (in.info.source.empty() ? "" : " (" + in.info.source + ")");
-    if (!(*reader)->complete()) in.info.source += " [incomplete: " + (*reader)->incompleteReason() + "]";
-    in.recording = std::move(*recording);
-    in.rawBytes = std::move(*bytes);
+    if (!reader->complete()) in.info.source += " [incomplete: " + reader->incompleteReason() + "]";
+    in.recording = std::move(recording);
+    in.rawBytes = std::move(bytes);
     return in;
   }
   std::ifstream file(path, std::ios::binary);

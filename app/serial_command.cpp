@@ -37,9 +37,8 @@ Result<serial::SerialSettings> readSerialSettings(CliArguments& args) {
   s.dataBits = static_cast<int>(*dataBits);
   s.stopBits = static_cast<int>(*stopBits);
   if (auto p = args.text("parity")) {
-    auto parity = serial::parseParity(*p);
-    if (!parity) return parity.status();
-    s.parity = *parity;
+    FOG_ASSIGN_OR_RETURN(auto parity, serial::parseParity(*p));
+    s.parity = parity;
   }
   std::string why;
   if (!s.isValid(&why)) return invalidArgument(why);

@@ -40,9 +40,8 @@ Result<TestPlan> readPlan(CliArguments& args) {
   if (single) {
     TestPoint p;
     if (axis) {
-      auto a = parseAxis(*axis);
-      if (!a) return a.status();
-      p.axis = *a;
+      FOG_ASSIGN_OR_RETURN(auto a, parseAxis(*axis));
+      p.axis = a;
     }
     if (!args.text("freq-hz") || !args.text("amp-deg"))
       return invalidArgument("a single test point needs --freq-hz and --amp-deg");
@@ -59,10 +58,9 @@ Result<TestPlan> readPlan(CliArguments& args) {
 
 Result<model::SimConfig> readSimConfig(CliArguments& args) {
   model::SimConfig c;
-  auto seed = args.number("seed", 1.0);
-  if (!seed) return seed.status();
-  if (*seed < 0 || *seed != std::floor(*seed)) return invalidArgument("--seed must be a whole number >= 0");
-  c.seed = static_cast<std::uint64_t>(*seed);
+  FOG_ASSIGN_OR_RETURN(auto seed, args.number("seed", 1.0));
+  if (seed < 0 || seed != std::floor(seed)) return invalidArgument("--seed must be a whole number >= 0");
+  c.seed = static_cast<std::uint64_t>(seed);
   struct Field {
     const char* name;
     double* target;
@@ -74,9 +72,8 @@ Result<model::SimConfig> readSimConfig(CliArguments& args) {
                 {"counter-hz", &c.samplingBoard.counterHz, 1.0},
                 {"latitude-deg", &c.earth.latitudeDeg, 1.0}};
   for (auto& f : fields) {
-    auto v = args.number(f.name, *f.target);
-    if (!v) return v.status();
-    *f.target = *v;
+    FOG_ASSIGN_OR_RETURN(auto v, args.number(f.name, *f.target));
+    *f.target = v;
   }
   auto gyroDelay = args.number("gyro-delay-ms", c.fog.ownDelayS() * 1e3);
   auto bits = args.number("counter-bits", c.samplingBoard.counterBits);

@@ -401,11 +401,9 @@ Status ResultView::writeReportPdf(const QString& path, double imuDelayLimitMs) c
   in.imuDelayLimitMs = imuDelayLimitMs;
   // The report carries the hash of the raw stream the result came from.
   if (!outcome_->sessionPath.empty()) {
-    auto reader = session::SessionReader::open(outcome_->sessionPath);
-    if (!reader) return reader.status();
-    auto bytes = (*reader)->rawBytes();
-    if (!bytes) return bytes.status();
-    in.rawBytes = std::move(*bytes);
+    FOG_ASSIGN_OR_RETURN(auto reader, session::SessionReader::open(outcome_->sessionPath));
+    FOG_ASSIGN_OR_RETURN(auto bytes, reader->rawBytes());
+    in.rawBytes = std::move(bytes);
   }
   return report::writeCalibrationPdf(in, path);
 }

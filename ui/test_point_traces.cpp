@@ -34,9 +34,8 @@ double TestPointTraces::gyroFitNormalised(double tS) const {
 
 Result<TestPointTraces> makeTestPointTraces(const TestPointData& data, const analysis::TestPointResult& result,
                                             double incrementScale) {
-  auto channels = analysis::makeChannels(data, incrementScale);
-  if (!channels) return channels.status();
-  const analysis::Channels& ch = *channels;
+  FOG_ASSIGN_OR_RETURN(auto channels, analysis::makeChannels(data, incrementScale));
+  const analysis::Channels& ch = channels;
 
   TestPointTraces t;
   t.index = result.index;

@@ -55,9 +55,8 @@ Result<AcquisitionResult> acquire(ByteSource& source, const AcquisitionOptions& 
   if (!options.sessionPath.empty()) {
     SessionInfo info = options.info;
     if (info.source.empty()) info.source = source.description();
-    auto created = session::SessionWriter::create(options.sessionPath, info);
-    if (!created) return created.status();
-    writer = std::move(*created);
+    FOG_ASSIGN_OR_RETURN(auto created, session::SessionWriter::create(options.sessionPath, info));
+    writer = std::move(created);
   }
 
   protocol::Decoder decoder;

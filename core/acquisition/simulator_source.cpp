@@ -16,10 +16,9 @@ constexpr double kPacedStepS = 0.005;
 Result<std::unique_ptr<SimulatorSource>> SimulatorSource::create(
     const model::SimConfig& config, const TestPlan& plan, double speed,
     std::vector<std::unique_ptr<model::Effect>> effects) {
-  auto sim = model::Simulator::create(config, plan);
-  if (!sim) return sim.status();
-  for (auto& e : effects) (*sim)->addEffect(std::move(e));
-  return std::unique_ptr<SimulatorSource>(new SimulatorSource(std::move(*sim), speed));
+  FOG_ASSIGN_OR_RETURN(auto sim, model::Simulator::create(config, plan));
+  for (auto& e : effects) sim->addEffect(std::move(e));
+  return std::unique_ptr<SimulatorSource>(new SimulatorSource(std::move(sim), speed));
 }
 
 Result<ReadOutcome> SimulatorSource::read(std::vector<std::uint8_t>& out, std::chrono::milliseconds timeout) {

@@ -303,9 +303,8 @@ double lagCramerRaoBoundS(double w, double recordS, double tableAmplitudeDeg, do
 Result<TestPointResult> analyzeTestPoint(const TestPointData& data, double incrementScale,
                                          const BenchConstants& constants) {
   const int sign = constants.gyroSign[static_cast<std::size_t>(data.axis)] < 0 ? -1 : 1;
-  auto channels = makeChannels(data, incrementScale * sign);
-  if (!channels) return channels.status();
-  Channels& ch = *channels;
+  FOG_ASSIGN_OR_RETURN(auto channels, makeChannels(data, incrementScale * sign));
+  Channels& ch = channels;
   TestPointResult r;
   r.index = data.index;
   r.axis = data.axis;
@@ -326,13 +325,12 @@ Result<TestPointResult> analyzeTestPoint(const TestPointData& data, double incre
     if (auto why = coverageRefusal(coverage, f); !why.empty()) return insufficientData(why);
 
   // Nominal frequency: what the plan said, checked against the data.
-  auto measured = estimateSwingFrequencyHz(ch.table);
-  if (!measured) return measured.status();
-  double f0 = data.nominalFrequencyHz > 0.0 ? data.nominalFrequencyHz : *measured;
-  if (std::abs(*measured / f0 - 1.0) > 0.01) {
-    r.warnings.push_back("the table swung at " + fmt(*measured, 5) + " Hz, not the planned " + fmt(f0, 5) +
+  FOG_ASSIGN_OR_RETURN(auto measured, estimateSwingFrequencyHz(ch.table));
+  double f0 = data.nominalFrequencyHz > 0.0 ? data.nominalFrequencyHz : measured;
+  if (std::abs(measured / f0 - 1.0) > 0.01) {
+    r.warnings.push_back("the table swung at " + fmt(measured, 5) + " Hz, not the planned " + fmt(f0, 5) +
                          " Hz; fitting from the measured frequency");
-    f0 = *measured;
+    f0 = measured;
   }
   r.nominalFrequencyHz = f0;
   r.periods = r.durationS * f0;
@@ -346,13 +344,12 @@ Result<TestPointResult> analyzeTestPoint(const TestPointData& data, double incre
   // 1. The table: 3-parameter fit at the nominal frequency, then 4-parameter.
   r.tableNominal = fitTableLinear(ch.table, w0, ch.referenceS);
   ch.table.noiseDeg = std::max(r.tableNominal.residualRmsDeg, 1e-12);
-  auto table4 = fitTableNonlinear(ch.table, r.tableNominal);
-  if (!table4) return table4.status();
-  ch.table.noiseDeg = std::max(table4->residualRmsDeg, 1e-12);
+  FOG_ASSIGN_OR_RETURN(auto table4, fitTableNonlinear(ch.table, r.tableNominal));
+  ch.table.noiseDeg = std::max(table4.residualRmsDeg, 1e-12);
   // The table's noise is measured from these residuals, so against it the
   // fit's chi^2/dof is N/(N - 4) by construction (not the value against the
   // 3-parameter residual it was weighted with).
-  table4->chiSquarePerDof = static_cast<double>(table4->samples) / static_cast<double>(table4->samples - 4);
+  table4.chiSquarePerDof = static_cast<double>(table4.samples) / static_cast<double>(table4.samples - 4);
   // Against the same noise, the nominal-frequency fit shows what a frequency
   // error costs (like the gyro's nominal fit, which is whitened).
   const double nominalRatio = r.tableNominal.residualRmsDeg / ch.table.noiseDeg;
@@ -370,7 +367,7 @@ Result<TestPointResult> analyzeTestPoint(const TestPointData& data, double incre
   // The angle random walk proper (white rate noise) is what blocks of a
   // twentieth of a period (0.05 .. 1 s) see: it is reported, and the
   // diagnosis replays with it.
-  const SineFit gyroStart = fitGyroLinear(ch.gyro, table4->omegaRadPerS, ch.referenceS, false);
+  const SineFit gyroStart = fitGyroLinear(ch.gyro, table4.omegaRadPerS, ch.referenceS, false);
   const auto startResiduals = gyroIncrementResiduals(ch.gyro, gyroStart);
   estimateGyroNoise(ch.gyro, startResiduals, std::clamp(0.05 / f0, 0.05, 1.0));
   const double whiteRateVariance = ch.gyro.arwVarianceDeg2PerS;
@@ -383,7 +380,7 @@ Result<TestPointResult> analyzeTestPoint(const TestPointData& data, double incre
   auto gyro4 = fitGyroNonlinear(ch.gyro, gyroStart);
   r.gyroNominal = gyroNominal.get();
   if (!gyro4) return gyro4.status();
-  r.tableFit = *table4;
+  r.tableFit = table4;
   r.gyroFit = *gyro4;
   // The cumulative gyro angle's offset (for plots that overlay the fit) and
   // its residuals (for the adequacy checks).
@@ -409,7 +406,7 @@ Result<TestPointResult> analyzeTestPoint(const TestPointData& data, double incre
   // 4. Joint fit: one frequency, the delay as a parameter. The per-period
   // track needs only a frequency close to the swing's; it runs beside.
   auto track = std::async(std::launch::async,
-                          [&] { return periodTrack(ch, table4->omegaRadPerS, ch.referenceS, gyroTurnsAgainst); });
+                          [&] { return periodTrack(ch, table4.omegaRadPerS, ch.referenceS, gyroTurnsAgainst); });
   auto joint = fitJoint(ch, r.tableFit, r.gyroFit);
   r.periodTrack = track.get();
   if (!joint) return joint.status();

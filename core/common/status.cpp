@@ -1,5 +1,8 @@
 #include "common/status.h"
 
+#include <cstdio>
+#include <cstdlib>
+
 namespace fog {
 
 const char* statusCodeName(StatusCode code) {
@@ -19,6 +22,12 @@ const char* statusCodeName(StatusCode code) {
 std::string Status::toString() const {
   if (isOk()) return "ok";
   return std::string(statusCodeName(code_)) + ": " + message_;
+}
+
+void resultHasNoValue(const Status& status) {
+  std::fprintf(stderr, "fogbench: internal error: the value of a failed result was used (%s)\n",
+               status.toString().c_str());
+  std::abort();
 }
 
 }  // namespace fog

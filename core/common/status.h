@@ -23,7 +23,9 @@ enum class StatusCode {
 
 const char* statusCodeName(StatusCode code);
 
-class Status {
+
+// [[nodiscard]]: a Status returned and ignored is an error nobody sees.
+class [[nodiscard]] Status {
  public:
   Status() = default;
   Status(StatusCode code, std::string message) : code_(code), message_(std::move(message)) {}
@@ -40,6 +42,10 @@ class Status {
   std::string message_;
 };
 
+// Prints the status to stderr and aborts: the value of an error Result was
+// used (a bug in the caller, never an input error).
+[[noreturn]] void resultHasNoValue(const Status& status);
+
 inline Status invalidArgument(std::string m) { return {StatusCode::kInvalidArgument, std::move(m)}; }
 inline Status outOfRange(std::string m) { return {StatusCode::kOutOfRange, std::move(m)}; }
 inline Status insufficientData(std::string m) { return {StatusCode::kInsufficientData, std::move(m)}; }
@@ -54,9 +60,23 @@ inline Status ioError(std::string m) { return {StatusCode::kIoError, std::move(m
     if (!fogStatus_.isOk()) return fogStatus_;      \
   } while (false)
 
+#define FOG_STATUS_CONCAT_INNER_(a, b) a##b
+#define FOG_STATUS_CONCAT_(a, b) FOG_STATUS_CONCAT_INNER_(a, b)
+
+// Evaluates a Result; on an error, returns its Status from the enclosing
+// function, otherwise moves the value into lhs, which may declare it:
+//   FOG_ASSIGN_OR_RETURN(auto plan, loadPlan(path));
+//   FOG_ASSIGN_OR_RETURN(info.plan, loadPlan(path));
+#define FOG_ASSIGN_OR_RETURN(lhs, ...) \
+  FOG_ASSIGN_OR_RETURN_IMPL_(FOG_STATUS_CONCAT_(fogResult_, __LINE__), lhs, __VA_ARGS__)
+#define FOG_ASSIGN_OR_RETURN_IMPL_(result, lhs, ...) \
+  auto result = (__VA_ARGS__);                       \
+  if (!result.isOk()) return result.status();        \
+  lhs = std::move(result).value()
+
 // A value or the Status that explains why there is none.
 template <typename T>
-class Result {
+class [[nodiscard]] Result {
  public:
   Result(T value) : value_(std::move(value)) {}  // NOLINT: implicit by design
   Result(Status status) : status_(std::move(status)) {  // NOLINT: implicit by design
@@ -67,15 +87,27 @@ class Result {
   explicit operator bool() const { return isOk(); }
   const Status& status() const { return status_; }
 
-  T& value() & { return *value_; }
-  const T& value() const& { return *value_; }
-  T&& value() && { return std::move(*value_); }
-  T* operator->() { return &*value_; }
-  const T* operator->() const { return &*value_; }
-  T& operator*() & { return *value_; }
-  const T& operator*() const& { return *value_; }
+  // Reaching the value of an error Result is a bug in the caller: it stops
+  // the program with the Result's message, in every build type, rather than
+  // reading an empty optional (undefined behaviour).
+  T& value() & { return checked(); }
+  const T& value() const& { return checked(); }
+  T&& value() && { return std::move(checked()); }
+  T* operator->() { return &checked(); }
+  const T* operator->() const { return &checked(); }
+  T& operator*() & { return checked(); }
+  const T& operator*() const& { return checked(); }
 
  private:
+  T& checked() {
+    if (!value_) resultHasNoValue(status_);
+    return *value_;
+  }
+  const T& checked() const {
+    if (!value_) resultHasNoValue(status_);
+    return *value_;
+  }
+
   std::optional<T> value_;
   Status status_;
 };

@@ -178,10 +178,9 @@ std::string fitsCsv(const analysis::DelayReport& report) {
 Result<std::string> residualsCsv(const TestPointData& data, double scale, const analysis::TestPointResult& p) {
   // The channels exactly as the analysis built them, so the residuals are
   // those of the reported fits.
-  auto ch = analysis::makeChannels(data, scale);
-  if (!ch) return ch.status();
-  const auto table = analysis::tableResiduals(ch->table, p.tableFit);
-  const auto gyro = analysis::gyroIncrementResiduals(ch->gyro, p.gyroFit);
+  FOG_ASSIGN_OR_RETURN(auto ch, analysis::makeChannels(data, scale));
+  const auto table = analysis::tableResiduals(ch.table, p.tableFit);
+  const auto gyro = analysis::gyroIncrementResiduals(ch.gyro, p.gyroFit);
   Text t;
   t.reserve((table.size() + gyro.size()) * 50 + 256);
   t.raw("# fogbench residuals of test point ").integer(static_cast<std::uint64_t>(p.index + 1));
@@ -272,9 +271,8 @@ Status exportCsv(const std::string& dirText, const SessionInfo& info, const Reco
     if (!data)
       return invalidArgument("the report has test point " + std::to_string(p.index + 1) +
                              ", which the recording does not; export the report with its own recording");
-    auto text = residualsCsv(*data, analysisScale, p);
-    if (!text) return text.status();
-    if (Status s = writeFile(dir / ("residuals_" + std::to_string(p.index + 1) + ".csv"), *text); !s.isOk()) return s;
+    FOG_ASSIGN_OR_RETURN(auto text, residualsCsv(*data, analysisScale, p));
+    if (Status s = writeFile(dir / ("residuals_" + std::to_string(p.index + 1) + ".csv"), text); !s.isOk()) return s;
   }
   analysis::ReportContext context;
   context.source = info.source;

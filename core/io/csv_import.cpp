@@ -265,9 +265,8 @@ Status parseRows(CsvStream& s, std::size_t pointCount, const std::string& noAxis
   TimeCheck check(pointCount);
   std::size_t rows = 0;
   while (true) {
-    auto more = s.nextRow();
-    if (!more) return more.status();
-    if (!*more) break;
+    FOG_ASSIGN_OR_RETURN(auto more, s.nextRow());
+    if (!more) break;
     ++rows;
     std::size_t tp = 0;
     FOG_RETURN_IF_ERROR(testPointOf(s, pointCount, tp));
@@ -428,15 +427,14 @@ Result<ImportedSession> importTexts(const std::string& what, const std::string& 
                                     const std::string& metaText, const std::string& tablePath,
                                     const std::string& tableText, const std::string& gyroPath,
                                     const std::string& gyroText) {
-  auto meta = detail::metadataFromJson(metaPath, metaText);
-  if (!meta) return meta.status();
-  const std::size_t count = meta->testPoints.size();
+  FOG_ASSIGN_OR_RETURN(auto meta, detail::metadataFromJson(metaPath, metaText));
+  const std::size_t count = meta.testPoints.size();
   std::vector<TestPointData> points(count);
   for (std::size_t i = 0; i < count; ++i) {
     points[i].index = static_cast<int>(i);
-    points[i].axis = meta->testPoints[i].axis;
-    points[i].nominalFrequencyHz = meta->testPoints[i].frequencyHz;
-    points[i].nominalAmplitudeDeg = meta->testPoints[i].amplitudeDeg;
+    points[i].axis = meta.testPoints[i].axis;
+    points[i].nominalFrequencyHz = meta.testPoints[i].frequencyHz;
+    points[i].nominalAmplitudeDeg = meta.testPoints[i].amplitudeDeg;
   }
 
   CsvStream table(tablePath, tableText, kTableColumns.data(), kTableColumns.size());
@@ -461,9 +459,9 @@ Result<ImportedSession> importTexts(const std::string& what, const std::string& 
   }
   // (Axis and temperature columns the docs allow to leave out read as 0
   // without a note: only what the user must know is said.)
-  if (hasAny(gyro, kRate0)) FOG_RETURN_IF_ERROR(convertRates(points, *meta, gyroPath, metaPath, out.notes));
+  if (hasAny(gyro, kRate0)) FOG_RETURN_IF_ERROR(convertRates(points, meta, gyroPath, metaPath, out.notes));
   for (int a = 0; a < kAxisCount; ++a) {
-    if (meta->gyroSign[static_cast<std::size_t>(a)] > 0) continue;
+    if (meta.gyroSign[static_cast<std::size_t>(a)] > 0) continue;
     for (auto& p : points)
       for (auto& s : p.imu) s.incrementDeg[static_cast<std::size_t>(a)] = -s.incrementDeg[static_cast<std::size_t>(a)];
     out.notes.push_back(std::string("gyro ") + axisLabel(static_cast<Axis>(a)) +
@@ -471,8 +469,8 @@ Result<ImportedSession> importTexts(const std::string& what, const std::string& 
   }
 
   SessionInfo& info = out.info;
-  info = meta->info;
-  const std::string original = originalSource(meta->info.source);
+  info = meta.info;
+  const std::string original = originalSource(meta.info.source);
   info.source = "import " + what + (original.empty() ? "" : " (recorded by: " + original + ")");
   Recording& rec = out.recording;
   rec.counterHz = info.bench.counterHz;
@@ -482,7 +480,7 @@ Result<ImportedSession> importTexts(const std::string& what, const std::string& 
   StreamHealth counted;
   for (std::size_t i = 0; i < count; ++i) {
     auto& p = points[i];
-    const auto& m = meta->testPoints[i];
+    const auto& m = meta.testPoints[i];
     TestPoint plan;
     plan.axis = m.axis;
     plan.frequencyHz = m.frequencyHz;
@@ -506,7 +504,7 @@ Result<ImportedSession> importTexts(const std::string& what, const std::string& 
                           " rows; it cannot give a delay");
     rec.testPoints.push_back(std::move(p));
   }
-  rec.health = meta->hasStream ? meta->stream : counted;
+  rec.health = meta.hasStream ? meta.stream : counted;
   if (rec.testPoints.empty()) return corruptData(what + " holds no data for any test point");
   return out;
 }
@@ -521,13 +519,10 @@ Result<ImportedSession> importCsvDirectory(const std::string& dir) {
   const std::string metaPath = (d / "metadata.json").string();
   const std::string tablePath = (d / "table.csv").string();
   const std::string gyroPath = (d / "gyro.csv").string();
-  auto meta = readWholeFile(metaPath);
-  if (!meta) return meta.status();
-  auto table = readWholeFile(tablePath);
-  if (!table) return table.status();
-  auto gyro = readWholeFile(gyroPath);
-  if (!gyro) return gyro.status();
-  return importTexts(dir, metaPath, *meta, tablePath, *table, gyroPath, *gyro);
+  FOG_ASSIGN_OR_RETURN(auto meta, readWholeFile(metaPath));
+  FOG_ASSIGN_OR_RETURN(auto table, readWholeFile(tablePath));
+  FOG_ASSIGN_OR_RETURN(auto gyro, readWholeFile(gyroPath));
+  return importTexts(dir, metaPath, meta, tablePath, table, gyroPath, gyro);
 }
 
 Result<ImportedSession> importCsvTexts(const std::string& metadataText, const std::string& tableText,
@@ -542,9 +537,8 @@ Result<ImportedSession> importCsvFiles(const std::vector<std::string>& paths) {
   std::optional<std::size_t> meta, table, gyro;
   std::vector<std::string> texts;
   for (std::size_t i = 0; i < paths.size(); ++i) {
-    auto text = readWholeFile(paths[i]);
-    if (!text) return text.status();
-    texts.push_back(std::move(*text));
+    FOG_ASSIGN_OR_RETURN(auto text, readWholeFile(paths[i]));
+    texts.push_back(std::move(text));
     const std::string& t = texts.back();
     const auto first = t.find_first_not_of(" \t\r\n");
     std::optional<std::size_t>* slot = nullptr;

@@ -12,10 +12,9 @@ Status saveImportedSession(const ImportedSession& imported, const std::string& f
   if (info.source.empty()) info.source = "import " + from;
   if (info.softwareVersion.empty()) info.softwareVersion = std::string("unknown; imported by fogbench ") + FOG_VERSION;
   if (info.createdUtc.empty()) info.createdUtc = session::utcNow();
-  auto writer = session::SessionWriter::create(path, info);
-  if (!writer) return writer.status();
-  if (auto s = (*writer)->storeRecording(imported.recording); !s.isOk()) return s;
-  return (*writer)->finish(true, "");
+  FOG_ASSIGN_OR_RETURN(auto writer, session::SessionWriter::create(path, info));
+  if (auto s = writer->storeRecording(imported.recording); !s.isOk()) return s;
+  return writer->finish(true, "");
 }
 
 }  // namespace fog::io

@@ -81,12 +81,10 @@ Result<GyroNoiseReport> analyzeStaticSegment(const TestPointData& data, double d
   r.earthCorrectedBiasDegPerH = r.biasDegPerH - r.earthRateDegPerH;
 
   const auto phase = cumulativeSum(increments, meanIncrement);
-  auto curve = overlappingAllanCurve(phase, r.intervalS, options.allan);
-  if (!curve) return curve.status();
-  r.curve = std::move(*curve);
-  auto model = identifyNoise(r.curve, options.identify);
-  if (!model) return model.status();
-  r.model = std::move(*model);
+  FOG_ASSIGN_OR_RETURN(auto curve, overlappingAllanCurve(phase, r.intervalS, options.allan));
+  r.curve = std::move(curve);
+  FOG_ASSIGN_OR_RETURN(auto model, identifyNoise(r.curve, options.identify));
+  r.model = std::move(model);
   r.biasStdDegPerH = std::sqrt(std::max(0.0, r.model.allanVariance(r.durationS))) * kSecondsPerHour;
   if (r.model.chiSquare > 3.0 * std::max(1, r.model.dof))
     r.warnings.push_back("the noise model fits the Allan curve poorly (chi^2 " + fmt("%.0f", r.model.chiSquare) + " for " +
@@ -104,9 +102,8 @@ Result<std::vector<GyroNoiseReport>> analyzeGyroNoise(const Recording& recording
   std::vector<GyroNoiseReport> out;
   for (const auto& tp : recording.testPoints) {
     if (tp.kind != TestPointKind::kStatic) continue;
-    auto r = analyzeStaticSegment(tp, scale, options);
-    if (!r) return r.status();
-    out.push_back(std::move(*r));
+    FOG_ASSIGN_OR_RETURN(auto r, analyzeStaticSegment(tp, scale, options));
+    out.push_back(std::move(r));
   }
   if (out.empty())
     return insufficientData("the recording has no static segment (table at rest); record one, e.g. "

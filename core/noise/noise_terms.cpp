@@ -30,6 +30,10 @@ struct Fit {
   double tcS = 0.0;
   double logTcStd = 0.0;              // standard error of ln(Tc) when Tc is free
   bool ok = false;
+  // Levenberg-Marquardt stopped because no step lowers the cost by more
+  // than 1e-10 (relative) or none lowers it at all, not at the iteration
+  // limit.
+  bool converged = false;
 };
 
 double modelAt(const Fit& f, double tau) {
@@ -97,7 +101,7 @@ Eigen::VectorXd linearStart(const AllanCurve& curve, const std::vector<int>& ter
 // stays >= 0) and, with a Markov term and freeTc, ln(Tc). Levenberg-Marquardt
 // from a start that puts each term at a tenth of the curve where it fits best.
 Fit solve(const AllanCurve& curve, const std::vector<int>& terms, double tcS, bool freeTc,
-          const Eigen::VectorXd* start = nullptr) {
+          const Eigen::VectorXd* start = nullptr, int maxIterations = IdentifyOptions{}.maxIterations) {
   const auto n = static_cast<Eigen::Index>(curve.points.size());
   const auto k = static_cast<Eigen::Index>(terms.size());
   const bool markov = std::find(terms.begin(), terms.end(), static_cast<int>(NoiseTermKind::kMarkov)) != terms.end();
@@ -164,7 +168,8 @@ Fit solve(const AllanCurve& curve, const std::vector<int>& terms, double tcS, bo
     double lambda = 1e-3;
     evaluate(p, r, &jac, w, target);
     double cost = r.squaredNorm();
-    for (int it = 0; it < 200; ++it) {
+    fit.converged = false;
+    for (int it = 0; it < maxIterations; ++it) {
       const Eigen::MatrixXd jtj = jac.transpose() * jac;
       const Eigen::VectorXd g = jac.transpose() * r;
       Eigen::MatrixXd a = jtj;
@@ -182,10 +187,16 @@ Fit solve(const AllanCurve& curve, const std::vector<int>& terms, double tcS, bo
         cost = newCost;
         evaluate(p, r, &jac, w, target);
         lambda = std::max(lambda * 0.3, 1e-12);
-        if (small) break;
+        if (small) {
+          fit.converged = true;
+          break;
+        }
       } else {
         lambda *= 10.0;
-        if (lambda > 1e12) break;
+        if (lambda > 1e12) {
+          fit.converged = true;
+          break;
+        }
       }
     }
     fit.chiSquare = cost;
@@ -218,16 +229,17 @@ bool hasMarkov(const std::vector<int>& terms) {
 
 // With a Markov term: the best correlation time on the grid, then refined
 // with Tc free.
-Fit best(const AllanCurve& curve, const std::vector<int>& terms, const std::vector<double>& grid) {
-  if (!hasMarkov(terms)) return solve(curve, terms, 0.0, false);
+Fit best(const AllanCurve& curve, const std::vector<int>& terms, const std::vector<double>& grid,
+         int maxIterations) {
+  if (!hasMarkov(terms)) return solve(curve, terms, 0.0, false, nullptr, maxIterations);
   Fit bestFit;
   for (double tc : grid) {
-    Fit f = solve(curve, terms, tc, false);
+    Fit f = solve(curve, terms, tc, false, nullptr, maxIterations);
     if (f.ok && f.chiSquare < bestFit.chiSquare) bestFit = std::move(f);
   }
   if (!bestFit.ok) return bestFit;
   const Eigen::VectorXd start = bestFit.coefficient.array().log().matrix();
-  Fit refined = solve(curve, terms, bestFit.tcS, true, &start);
+  Fit refined = solve(curve, terms, bestFit.tcS, true, &start, maxIterations);
   return refined.ok && refined.chiSquare <= bestFit.chiSquare ? refined : bestFit;
 }
 
@@ -415,7 +427,7 @@ Result<NoiseModel> identifyNoise(AllanCurve& curve, const IdentifyOptions& optio
   // A term that stays under 1e-3 of the model everywhere has no information;
   // then the least significant term goes, until every remaining one is
   // significant.
-  Fit fit = best(curve, terms, grid);
+  Fit fit = best(curve, terms, grid, options.maxIterations);
   for (;;) {
     if (!fit.ok || fit.active.size() <= 1) break;
     std::size_t weakest = 0;
@@ -438,9 +450,13 @@ Result<NoiseModel> identifyNoise(AllanCurve& curve, const IdentifyOptions& optio
     if (weakestZ >= options.minSignificance) break;
     terms = fit.active;
     terms.erase(terms.begin() + static_cast<std::ptrdiff_t>(weakest));
-    fit = best(curve, terms, grid);
+    fit = best(curve, terms, grid, options.maxIterations);
   }
   if (!fit.ok) return insufficientData("no noise term could be fitted to the Allan curve");
+  if (!fit.converged)
+    return Status(StatusCode::kNotConverged,
+                  "the noise-term fit did not converge in " + std::to_string(options.maxIterations) +
+                      " iterations; the Allan curve's terms are poorly determined: record longer or allow fewer terms");
 
   NoiseModel model;
   model.chiSquare = fit.chiSquare;

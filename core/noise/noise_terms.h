@@ -103,11 +103,15 @@ struct IdentifyOptions {
   bool allowMarkov = true;
   // Candidate terms; a term left out is never fitted (e.g. no rate ramp).
   bool allowed[kNoiseTermKinds] = {true, true, true, true, true, true};
+  // Levenberg-Marquardt steps per pass; a fit still moving after them fails
+  // with kNotConverged rather than reporting terms from a half-done fit.
+  int maxIterations = 200;
 };
 
 // Fits the terms to `curve` and rewrites the curve's EDFs and intervals with
 // the noise type the fitted model has at each tau. Fails with
-// kInsufficientData when the curve has fewer than 3 points.
+// kInsufficientData when the curve has fewer than 3 points, kNotConverged
+// when the final fit is still moving after options.maxIterations steps.
 Result<NoiseModel> identifyNoise(AllanCurve& curve, const IdentifyOptions& options = {});
 
 // Allan variance of a single term with value 1 (and correlation time tcS for

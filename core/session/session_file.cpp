@@ -762,9 +762,8 @@ Status SessionWriter::finishAfterFailure(const std::string& reason) {
 // --- SessionReader ---------------------------------------------------------
 
 Result<std::unique_ptr<SessionReader>> SessionReader::open(const std::string& path) {
-  auto header = checkHeader(path);
-  if (!header) return header.status();
-  if (header->userVersion > kSchemaVersion) return invalidArgument(newerSchemaMessage(path, header->userVersion));
+  FOG_ASSIGN_OR_RETURN(auto header, checkHeader(path));
+  if (header.userVersion > kSchemaVersion) return invalidArgument(newerSchemaMessage(path, header.userVersion));
 
   std::unique_ptr<SessionReader> r(new SessionReader());
   r->path_ = path;
@@ -773,10 +772,9 @@ Result<std::unique_ptr<SessionReader>> SessionReader::open(const std::string& pa
     return ioError("cannot open session '" + path + "': " + sqliteMessage(r->db_) + "; check its permissions");
   // A recorder may be checkpointing or another program running WAL recovery.
   sqlite3_busy_timeout(r->db_, kReaderBusyTimeoutMs);
-  FOG_RETURN_IF_ERROR(checkWalCoversTruncation(r->db_, *header));
-  auto version = checkIdentity(r->db_, path);
-  if (!version) return version.status();
-  r->schemaVersion_ = *version;
+  FOG_RETURN_IF_ERROR(checkWalCoversTruncation(r->db_, header));
+  FOG_ASSIGN_OR_RETURN(auto version, checkIdentity(r->db_, path));
+  r->schemaVersion_ = version;
 
   if (r->schemaVersion_ >= 2) {
     Stmt c(r->db_, "SELECT metadata_fnv1a FROM session WHERE id = 1");
@@ -890,9 +888,8 @@ bool SessionReader::hasStoredRecording() const {
 
 Result<Recording> SessionReader::recording() const {
   if (!hasStoredRecording()) {
-    auto raw = rawBytes();
-    if (!raw) return raw.status();
-    auto rec = protocol::decodeRecording(*raw);
+    FOG_ASSIGN_OR_RETURN(auto raw, rawBytes());
+    auto rec = protocol::decodeRecording(raw);
     if (!rec) return Status(rec.status().code(), "session '" + path_ + "': " + rec.status().message());
     return rec;
   }
@@ -1026,9 +1023,8 @@ Result<std::vector<StoredResult>> SessionReader::results() const {
 // --- addResult -------------------------------------------------------------
 
 Status addResult(const std::string& path, const std::string& settingsJson, const std::string& reportJson) {
-  auto header = checkHeader(path);
-  if (!header) return header.status();
-  if (header->userVersion > kSchemaVersion) return invalidArgument(newerSchemaMessage(path, header->userVersion));
+  FOG_ASSIGN_OR_RETURN(auto header, checkHeader(path));
+  if (header.userVersion > kSchemaVersion) return invalidArgument(newerSchemaMessage(path, header.userVersion));
   // A result of a recording in progress is of a part of it, and taking the
   // write lock would compete with the recorder: never while it records.
   if (isBeingRecorded(path))
@@ -1046,7 +1042,7 @@ Status addResult(const std::string& path, const std::string& settingsJson, const
   // recorder storing its decoded samples may hold it longer: then the result
   // is not stored (and the recorder is not disturbed).
   sqlite3_busy_timeout(db, kAddResultBusyTimeoutMs);
-  if (auto s = checkWalCoversTruncation(db, *header); !s.isOk())
+  if (auto s = checkWalCoversTruncation(db, header); !s.isOk())
     return Status(s.code(), "the result was not stored: " + s.message());
   auto failed = [&](const char* what) {
     const int code = sqlite3_errcode(db);

@@ -874,13 +874,12 @@ Status checkReportInput(const ReportInput& in) {
 }
 
 Status writeCalibrationPdf(const ReportInput& in, const QString& pdfPath) {
-  auto content = prepare(in);
-  if (!content) return content.status();
+  FOG_ASSIGN_OR_RETURN(auto content, prepare(in));
   PdfTarget target(pdfPath);
   target.setTitle(QObject::tr("IMU delay calibration report: %1 %2")
                       .arg(QString::fromStdString(in.info.imuModel), QString::fromStdString(in.info.imuSerial)));
   if (!target.open()) return ioError("cannot write the PDF '" + pdfPath.toStdString() + "'");
-  render(target, *content, nullptr);
+  render(target, content, nullptr);
   target.close();
   if (!QFileInfo(pdfPath).isFile() || QFileInfo(pdfPath).size() == 0)
     return ioError("the PDF '" + pdfPath.toStdString() + "' was not written");
@@ -889,10 +888,9 @@ Status writeCalibrationPdf(const ReportInput& in, const QString& pdfPath) {
 
 Result<std::vector<QImage>> renderCalibrationPages(const ReportInput& in, int dpi, QStringList* drawnText) {
   if (dpi < 30 || dpi > 1200) return invalidArgument("page images need 30 to 1200 dpi");
-  auto content = prepare(in);
-  if (!content) return content.status();
+  FOG_ASSIGN_OR_RETURN(auto content, prepare(in));
   ImageTarget target(dpi);
-  render(target, *content, drawnText);
+  render(target, content, drawnText);
   return target.take();
 }
 

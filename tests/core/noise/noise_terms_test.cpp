@@ -154,5 +154,24 @@ TEST(NoiseTerms, UnitVariancesHaveTheIeee952Shapes) {
               0.998, 1e-5);
 }
 
+// A fit cut off before it settles is an error with its code, not a model:
+// one Levenberg-Marquardt step cannot reach the minimum from the linear start.
+TEST(NoiseTerms, AFitStoppedBeforeItConvergesIsReportedAsNotConverged) {
+  const auto g = knownGyro();
+  const auto increments = g.increments(kFrames / 10, 3);
+  double mean = 0.0;
+  for (double v : increments) mean += v;
+  mean /= static_cast<double>(increments.size());
+  auto curve = overlappingAllanCurve(cumulativeSum(increments, mean), g.intervalS);
+  ASSERT_TRUE(curve.isOk());
+  IdentifyOptions cutShort;
+  cutShort.maxIterations = 1;
+  const auto stopped = identifyNoise(*curve, cutShort);
+  ASSERT_FALSE(stopped.isOk());
+  EXPECT_EQ(stopped.status().code(), StatusCode::kNotConverged);
+  EXPECT_NE(stopped.status().message().find("record longer"), std::string::npos);
+  EXPECT_TRUE(identifyNoise(*curve).isOk());  // the same curve with the default budget
+}
+
 }  // namespace
 }  // namespace fog::noise
