@@ -40,8 +40,7 @@ Result<serial::SerialSettings> readSerialSettings(CliArguments& args) {
     FOG_ASSIGN_OR_RETURN(auto parity, serial::parseParity(*p));
     s.parity = parity;
   }
-  std::string why;
-  if (!s.isValid(&why)) return invalidArgument(why);
+  FOG_RETURN_IF_ERROR(s.validate());
   return s;
 }
 

@@ -84,8 +84,7 @@ Result<model::SimConfig> readSimConfig(CliArguments& args) {
   c.samplingBoard.counterBits = static_cast<int>(*bits);
   if (*start < 0 || *start > 4294967295.0) return invalidArgument("--counter-start must be within 0 .. 2^32-1");
   c.samplingBoard.counterStart = static_cast<std::uint32_t>(*start);
-  std::string why;
-  if (!c.isValid(&why)) return invalidArgument(why);
+  FOG_RETURN_IF_ERROR(c.validate());
   return c;
 }
 

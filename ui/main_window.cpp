@@ -419,9 +419,9 @@ void MainWindow::startRun() {
     settings.port = serialPort().toStdString();
     bool ok = false;
     settings.baudRate = baudCombo_->currentText().toInt(&ok);
-    std::string why;
-    if (!ok || !settings.isValid(&why)) {
-      showFailure(ok ? QString::fromStdString(why) : tr("the baud rate must be a whole number"));
+    const Status validity = settings.validate();
+    if (!ok || !validity.isOk()) {
+      showFailure(ok ? QString::fromStdString(validity.message()) : tr("the baud rate must be a whole number"));
       return;
     }
     // The board runs its own plan; the one in the editor is stored as the

@@ -256,17 +256,17 @@ void PlanEditor::validate() {
   double totalS = restSpin_->value();
   for (int r = 0; r < table_->rowCount(); ++r) {
     const TestPoint p = rowPoint(r);
-    std::string why;
-    const bool ok = p.isValid(limits_, &why);
+    const Status validity = p.validate(limits_);
+    const bool ok = validity.isOk();
     auto* check = table_->item(r, kCheck);
     check->setText(ok ? (p.isStatic() ? tr("ok: table at rest, %1 in all").arg(durationText(p.settleS + p.durationS))
                                       : tr("ok: %1 periods, %2 in all").arg(p.durationS * p.frequencyHz, 0, 'f', 1)
                                             .arg(durationText(p.settleS + p.durationS)))
-                      : QString::fromStdString(why));
+                      : QString::fromStdString(validity.message()));
     check->setForeground(ok ? QColor(0, 110, 0) : QColor(190, 0, 0));
     check->setToolTip(check->text());
     // Mark the field the message is about.
-    const QString w = QString::fromStdString(why);
+    const QString w = QString::fromStdString(validity.message());
     const Column bad = w.startsWith("frequency") || w.startsWith("peak") ? kFrequency
                        : w.startsWith("amplitude")                       ? kAmplitude
                        : w.startsWith("duration")                        ? kDuration

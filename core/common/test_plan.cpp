@@ -49,10 +49,6 @@ TestPoint TestPoint::staticSegment(Axis axis, double durationS, double settleS) 
 }
 
 namespace {
-bool fail(std::string* error, const std::string& message) {
-  if (error) *error = message;
-  return false;
-}
 std::string num(double v) {
   std::ostringstream s;
   s << v;
@@ -60,67 +56,66 @@ std::string num(double v) {
 }
 }  // namespace
 
-bool TestPoint::isValid(const TurntableLimits& limits, std::string* error) const {
+Status TestPoint::validate(const TurntableLimits& limits) const {
   if (isStatic()) {
     if (frequencyHz != 0.0 || amplitudeDeg != 0.0 || startPhaseDeg != 0.0)
-      return fail(error, "a static segment has no frequency, amplitude or start phase (got " + num(frequencyHz) +
+      return invalidArgument("a static segment has no frequency, amplitude or start phase (got " + num(frequencyHz) +
                              " Hz, " + num(amplitudeDeg) + " deg, " + num(startPhaseDeg) + " deg); leave them out");
     if (!std::isfinite(durationS) || durationS <= 0.0)
-      return fail(error, "a static segment needs a duration > 0 s, got " + num(durationS));
+      return invalidArgument("a static segment needs a duration > 0 s, got " + num(durationS));
     if (durationS > 24.0 * 3600.0)
-      return fail(error, "duration " + num(durationS) + " s is over 24 h; split the test into points");
+      return invalidArgument("duration " + num(durationS) + " s is over 24 h; split the test into points");
     if (!std::isfinite(settleS) || settleS < 0.0)
-      return fail(error, "settle time must be >= 0 s, got " + num(settleS));
-    return true;
+      return invalidArgument("settle time must be >= 0 s, got " + num(settleS));
+    return Status::ok();
   }
   if (!std::isfinite(frequencyHz) || frequencyHz <= 0.0)
-    return fail(error, "frequency must be > 0 Hz, got " + num(frequencyHz));
+    return invalidArgument("frequency must be > 0 Hz, got " + num(frequencyHz));
   if (frequencyHz > limits.maxFrequencyHz)
-    return fail(error, "frequency " + num(frequencyHz) + " Hz is beyond the table limit of " +
+    return invalidArgument("frequency " + num(frequencyHz) + " Hz is beyond the table limit of " +
                            num(limits.maxFrequencyHz) + " Hz");
   if (!std::isfinite(amplitudeDeg) || amplitudeDeg <= 0.0)
-    return fail(error, "amplitude must be > 0 deg, got " + num(amplitudeDeg));
+    return invalidArgument("amplitude must be > 0 deg, got " + num(amplitudeDeg));
   if (amplitudeDeg > limits.maxAmplitudeDeg)
-    return fail(error, "amplitude " + num(amplitudeDeg) + " deg is beyond the table limit of " +
+    return invalidArgument("amplitude " + num(amplitudeDeg) + " deg is beyond the table limit of " +
                            num(limits.maxAmplitudeDeg) + " deg");
   const double w = kTwoPi * frequencyHz;
   const double peakRate = w * amplitudeDeg;
   if (peakRate > limits.maxRateDegPerS)
-    return fail(error, "peak rate " + num(peakRate) + " deg/s exceeds the table limit of " +
+    return invalidArgument("peak rate " + num(peakRate) + " deg/s exceeds the table limit of " +
                            num(limits.maxRateDegPerS) + " deg/s; lower the frequency or amplitude");
   const double peakAccel = w * w * amplitudeDeg;
   if (peakAccel > limits.maxAccelDegPerS2)
-    return fail(error, "peak acceleration " + num(peakAccel) + " deg/s^2 exceeds the table limit of " +
+    return invalidArgument("peak acceleration " + num(peakAccel) + " deg/s^2 exceeds the table limit of " +
                            num(limits.maxAccelDegPerS2) +
                            " deg/s^2; lower the frequency or amplitude");
   if (!std::isfinite(durationS) || durationS < 2.0 * periodS())
-    return fail(error, "duration " + num(durationS) + " s is under two swing periods (" +
+    return invalidArgument("duration " + num(durationS) + " s is under two swing periods (" +
                            num(2.0 * periodS()) + " s); a delay needs at least two whole periods");
   if (durationS > 24.0 * 3600.0)
-    return fail(error, "duration " + num(durationS) + " s is over 24 h; split the test into points");
+    return invalidArgument("duration " + num(durationS) + " s is over 24 h; split the test into points");
   if (!std::isfinite(settleS) || settleS < 0.0)
-    return fail(error, "settle time must be >= 0 s, got " + num(settleS));
-  if (!std::isfinite(startPhaseDeg)) return fail(error, "start phase must be finite");
-  return true;
+    return invalidArgument("settle time must be >= 0 s, got " + num(settleS));
+  if (!std::isfinite(startPhaseDeg)) return invalidArgument("start phase must be finite");
+  return Status::ok();
 }
 
-bool TestPlan::isValid(const TurntableLimits& limits, std::string* error) const {
-  if (points.empty()) return fail(error, "the test plan has no test points");
+Status TestPlan::validate(const TurntableLimits& limits) const {
+  if (points.empty()) return invalidArgument("the test plan has no test points");
   if (!std::isfinite(restBetweenS) || restBetweenS < 0.0)
-    return fail(error, "rest time between points must be >= 0 s");
+    return invalidArgument("rest time between points must be >= 0 s");
   if (points.size() > kMaxPlanPoints)
-    return fail(error, "the test plan has " + std::to_string(points.size()) + " test points; at most " +
+    return invalidArgument("the test plan has " + std::to_string(points.size()) + " test points; at most " +
                            std::to_string(kMaxPlanPoints));
   for (std::size_t i = 0; i < points.size(); ++i) {
-    std::string why;
-    if (!points[i].isValid(limits, &why))
-      return fail(error, "test point " + std::to_string(i + 1) + ": " + why);
+    if (Status s = points[i].validate(limits); !s.isOk())
+      return invalidArgument("test point " + std::to_string(i + 1) + ": " + s.message());
   }
   if (totalDurationS() > kMaxPlanDurationS)
-    return fail(error, "the test plan lasts " + num(totalDurationS() / 3600.0) + " h in all; at most " +
+    return invalidArgument("the test plan lasts " + num(totalDurationS() / 3600.0) + " h in all; at most " +
                            num(kMaxPlanDurationS / 3600.0) + " h (every sample is held in memory): split it into "
                            "several sessions");
-  return true;
+  return Status::ok();
 }
 
 double TestPlan::totalDurationS() const {

@@ -50,8 +50,8 @@ struct TestPoint {
   double periodS() const { return isStatic() ? 0.0 : 1.0 / frequencyHz; }
   // A static segment: table at rest for durationS after settleS.
   static TestPoint staticSegment(Axis axis, double durationS, double settleS = 0.0);
-  // Empty when valid; otherwise what is wrong and what to do.
-  bool isValid(const TurntableLimits& limits, std::string* error) const;
+  // Ok, or an error saying what is wrong and what to do.
+  Status validate(const TurntableLimits& limits) const;
 };
 
 // Bounds of a plan (issue 15): every sample of a run is held in memory, so a
@@ -63,7 +63,8 @@ struct TestPlan {
   std::vector<TestPoint> points;
   double restBetweenS = 1.0;  // table at rest between test points
 
-  bool isValid(const TurntableLimits& limits, std::string* error) const;
+  // Ok, or the first problem ("test point 3: ...") and what to do.
+  Status validate(const TurntableLimits& limits) const;
   double totalDurationS() const;
 
   // The paper's two conditions on the X axis: 0.1 Hz / 10 deg for 4.9 min and

@@ -393,7 +393,8 @@ Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, cons
       c.fog.biasDegPerH[static_cast<std::size_t>(a)] = std::clamp(cal.biasDegPerH[static_cast<std::size_t>(a)], -3000.0, 3000.0);
     }
   }
-  if (std::string why; !c.isValid(&why)) return invalidArgument("the calibrated replay is not a valid chain: " + why);
+  if (Status s = c.validate(); !s.isOk())
+    return invalidArgument("the calibrated replay is not a valid chain: " + s.message());
 
   // ---- Replays: Monte Carlo spread and effect signatures -----------------
   // Signatures are central differences (+reference and -reference) where the

@@ -16,55 +16,51 @@ double EarthParams::projectionDegPerH(Axis axis) const {
 }
 
 namespace {
-bool fail(std::string* error, const std::string& m) {
-  if (error) *error = m;
-  return false;
-}
 bool positive(double v) { return std::isfinite(v) && v > 0.0; }
 bool nonNegative(double v) { return std::isfinite(v) && v >= 0.0; }
 }  // namespace
 
-bool SimConfig::isValid(std::string* error) const {
-  if (!positive(encoder.samplePeriodS)) return fail(error, "encoder sample period must be > 0 s");
+Status SimConfig::validate() const {
+  if (!positive(encoder.samplePeriodS)) return invalidArgument("encoder sample period must be > 0 s");
   if (!nonNegative(encoder.readDelayS) || encoder.readDelayS >= encoder.samplePeriodS)
-    return fail(error, "encoder read delay must be in [0, sample period)");
-  if (!nonNegative(encoder.quantumDeg)) return fail(error, "encoder quantum must be >= 0 deg");
+    return invalidArgument("encoder read delay must be in [0, sample period)");
+  if (!nonNegative(encoder.quantumDeg)) return invalidArgument("encoder quantum must be >= 0 deg");
   if (!positive(fog.fibreLengthM) || !positive(fog.groupIndex))
-    return fail(error, "fibre length and group index must be > 0");
-  if (!nonNegative(fog.loopDelayEigenPeriods)) return fail(error, "loop delay must be >= 0");
-  if (!positive(fog.pulseUpdatePeriodS)) return fail(error, "pulse update period must be > 0 s");
+    return invalidArgument("fibre length and group index must be > 0");
+  if (!nonNegative(fog.loopDelayEigenPeriods)) return invalidArgument("loop delay must be >= 0");
+  if (!positive(fog.pulseUpdatePeriodS)) return invalidArgument("pulse update period must be > 0 s");
   if (!nonNegative(fog.sampleAfterUpdateS) || fog.sampleAfterUpdateS >= fog.pulseUpdatePeriodS)
-    return fail(error, "time from pulse update to board sampling must be in [0, pulse update period); "
+    return invalidArgument("time from pulse update to board sampling must be in [0, pulse update period); "
                        "the requested gyro delay is not reachable with this loop delay");
-  if (!positive(fog.pulseEquivalentDeg)) return fail(error, "pulse equivalent must be > 0 deg");
+  if (!positive(fog.pulseEquivalentDeg)) return invalidArgument("pulse equivalent must be > 0 deg");
   for (double b : fog.biasDegPerH)
-    if (!std::isfinite(b) || std::abs(b) > 3600.0) return fail(error, "gyro bias must be finite and under 3600 deg/h");
-  if (!nonNegative(fog.arwDegPerSqrtH)) return fail(error, "angle random walk must be >= 0");
-  if (!nonNegative(fog.biasInstabilityDegPerH)) return fail(error, "bias instability must be >= 0");
-  if (!positive(fog.biasCorrelationS)) return fail(error, "bias correlation time must be > 0 s");
+    if (!std::isfinite(b) || std::abs(b) > 3600.0) return invalidArgument("gyro bias must be finite and under 3600 deg/h");
+  if (!nonNegative(fog.arwDegPerSqrtH)) return invalidArgument("angle random walk must be >= 0");
+  if (!nonNegative(fog.biasInstabilityDegPerH)) return invalidArgument("bias instability must be >= 0");
+  if (!positive(fog.biasCorrelationS)) return invalidArgument("bias correlation time must be > 0 s");
   if (!std::isfinite(earth.latitudeDeg) || std::abs(earth.latitudeDeg) > 90.0)
-    return fail(error, "latitude must be within [-90, 90] deg");
-  if (!positive(imuBoard.framePeriodS)) return fail(error, "IMU frame period must be > 0 s");
-  if (!nonNegative(imuBoard.firstSampleS)) return fail(error, "IMU first sample time must be >= 0 s");
+    return invalidArgument("latitude must be within [-90, 90] deg");
+  if (!positive(imuBoard.framePeriodS)) return invalidArgument("IMU frame period must be > 0 s");
+  if (!nonNegative(imuBoard.firstSampleS)) return invalidArgument("IMU first sample time must be >= 0 s");
   if (!nonNegative(imuBoard.processingS) || !positive(imuBoard.baud) || imuBoard.frameBytes <= 0 ||
       !positive(imuBoard.bitsPerByte))
-    return fail(error, "IMU board processing time, frame size and baud rate must be positive");
+    return invalidArgument("IMU board processing time, frame size and baud rate must be positive");
   if (imuBoard.boardDelayS() >= imuBoard.framePeriodS)
-    return fail(error, "IMU board delay must be shorter than the frame period");
+    return invalidArgument("IMU board delay must be shorter than the frame period");
   if (!std::isfinite(imuBoard.clockErrorPpm) || std::abs(imuBoard.clockErrorPpm) > 1000.0)
-    return fail(error, "IMU clock error must be within +-1000 ppm");
+    return invalidArgument("IMU clock error must be within +-1000 ppm");
   if (!std::isfinite(turntable.frequencyErrorPpm) || std::abs(turntable.frequencyErrorPpm) > 1000.0)
-    return fail(error, "turntable frequency error must be within +-1000 ppm");
+    return invalidArgument("turntable frequency error must be within +-1000 ppm");
   if (!(samplingBoard.counterHz >= 1e3 && samplingBoard.counterHz <= 4e9))
-    return fail(error, "counter frequency must be within 1 kHz .. 4 GHz");
+    return invalidArgument("counter frequency must be within 1 kHz .. 4 GHz");
   if (samplingBoard.counterBits < 16 || samplingBoard.counterBits > 32)
-    return fail(error, "counter width must be 16..32 bits");
+    return invalidArgument("counter width must be 16..32 bits");
   const double wrapS = std::ldexp(1.0, samplingBoard.counterBits) / samplingBoard.counterHz;
   if (wrapS < 0.01)
-    return fail(error, "the counter wraps every " + std::to_string(wrapS) +
+    return invalidArgument("the counter wraps every " + std::to_string(wrapS) +
                            " s, faster than frames arrive; use a wider counter or a lower frequency");
-  if (!positive(samplingBoard.statusPeriodS)) return fail(error, "status period must be > 0 s");
-  return true;
+  if (!positive(samplingBoard.statusPeriodS)) return invalidArgument("status period must be > 0 s");
+  return Status::ok();
 }
 
 }  // namespace fog::model

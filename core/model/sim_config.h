@@ -94,8 +94,8 @@ struct SimConfig {
   SamplingBoardParams samplingBoard;
   std::uint64_t seed = 1;
 
-  // False with a reason for an impossible configuration.
-  bool isValid(std::string* error) const;
+  // An error saying what is impossible in the configuration, or ok.
+  Status validate() const;
 
   // The delays this configuration builds in, for the tests and for the
   // report's theory column. Lag is what the bench measures: the gyro's

@@ -229,9 +229,8 @@ Simulator::Simulator(const SimConfig& config, const TestPlan& plan)
 Simulator::~Simulator() = default;
 
 Result<std::unique_ptr<Simulator>> Simulator::create(const SimConfig& config, const TestPlan& plan) {
-  std::string why;
-  if (!config.isValid(&why)) return invalidArgument("simulator configuration: " + why);
-  if (!plan.isValid(config.turntable.limits, &why)) return invalidArgument(why);
+  if (Status s = config.validate(); !s.isOk()) return invalidArgument("simulator configuration: " + s.message());
+  FOG_RETURN_IF_ERROR(plan.validate(config.turntable.limits));
   return std::make_unique<Simulator>(config, plan);
 }
 

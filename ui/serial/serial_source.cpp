@@ -22,16 +22,12 @@ std::string text(const QString& s) { return s.toStdString(); }
 
 }  // namespace
 
-bool SerialSettings::isValid(std::string* error) const {
-  auto bad = [&](const std::string& why) {
-    if (error) *error = why;
-    return false;
-  };
-  if (port.empty()) return bad("no serial port given (--port DEVICE; fogbench-cli ports lists them)");
-  if (baudRate <= 0) return bad("the baud rate must be > 0, got " + std::to_string(baudRate));
-  if (dataBits < 5 || dataBits > 8) return bad("data bits must be 5..8, got " + std::to_string(dataBits));
-  if (stopBits != 1 && stopBits != 2) return bad("stop bits must be 1 or 2, got " + std::to_string(stopBits));
-  return true;
+Status SerialSettings::validate() const {
+  if (port.empty()) return invalidArgument("no serial port given (--port DEVICE; fogbench-cli ports lists them)");
+  if (baudRate <= 0) return invalidArgument("the baud rate must be > 0, got " + std::to_string(baudRate));
+  if (dataBits < 5 || dataBits > 8) return invalidArgument("data bits must be 5..8, got " + std::to_string(dataBits));
+  if (stopBits != 1 && stopBits != 2) return invalidArgument("stop bits must be 1 or 2, got " + std::to_string(stopBits));
+  return Status::ok();
 }
 
 std::string SerialSettings::summary() const {
@@ -63,8 +59,7 @@ std::vector<PortInfo> availablePorts() {
 }
 
 Result<std::unique_ptr<SerialSource>> SerialSource::open(const SerialSettings& settings) {
-  std::string why;
-  if (!settings.isValid(&why)) return invalidArgument(why);
+  FOG_RETURN_IF_ERROR(settings.validate());
   auto port = std::make_unique<QSerialPort>();
   port->setPortName(QString::fromStdString(settings.port));
   // Set before open(), which applies them at once: the line never runs at

@@ -41,8 +41,8 @@ struct SerialSettings {
   int dataBits = 8;       // 5..8
   int stopBits = 1;       // 1 or 2
 
-  // False with a reason for a setting no serial port takes.
-  bool isValid(std::string* error) const;
+  // An error for a setting no serial port takes, or ok.
+  Status validate() const;
   // "921600 8N1".
   std::string summary() const;
 };

@@ -7,19 +7,23 @@ namespace {
 
 TEST(TestPlan, PaperConditionsAreValid) {
   std::string why;
-  EXPECT_TRUE(TestPlan::paperSlow().isValid(TurntableLimits{}, &why)) << why;
-  EXPECT_TRUE(TestPlan::paperFast().isValid(TurntableLimits{}, &why)) << why;
+  why = TestPlan::paperSlow().validate(TurntableLimits{}).message();
+  EXPECT_TRUE(why.empty()) << why;
+  why = TestPlan::paperFast().validate(TurntableLimits{}).message();
+  EXPECT_TRUE(why.empty()) << why;
 }
 
 TEST(TestPlan, RefusesNonPositiveFrequencyAndAmplitude) {
   TestPoint p;
   std::string why;
   p.frequencyHz = 0.0;
-  EXPECT_FALSE(p.isValid(TurntableLimits{}, &why));
+  why = p.validate(TurntableLimits{}).message();
+  EXPECT_FALSE(why.empty());
   EXPECT_NE(why.find("frequency must be > 0"), std::string::npos) << why;
   p = TestPoint{};
   p.amplitudeDeg = -1.0;
-  EXPECT_FALSE(p.isValid(TurntableLimits{}, &why));
+  why = p.validate(TurntableLimits{}).message();
+  EXPECT_FALSE(why.empty());
   EXPECT_NE(why.find("amplitude must be > 0"), std::string::npos) << why;
 }
 
@@ -28,10 +32,12 @@ TEST(TestPlan, RefusesDurationUnderTwoPeriods) {
   p.frequencyHz = 0.1;
   p.durationS = 19.9;
   std::string why;
-  EXPECT_FALSE(p.isValid(TurntableLimits{}, &why));
+  why = p.validate(TurntableLimits{}).message();
+  EXPECT_FALSE(why.empty());
   EXPECT_NE(why.find("under two swing periods"), std::string::npos) << why;
   p.durationS = 20.0;
-  EXPECT_TRUE(p.isValid(TurntableLimits{}, &why)) << why;
+  why = p.validate(TurntableLimits{}).message();
+  EXPECT_TRUE(why.empty()) << why;
 }
 
 TEST(TestPlan, RefusesMotionBeyondTableLimits) {
@@ -40,7 +46,8 @@ TEST(TestPlan, RefusesMotionBeyondTableLimits) {
   p.amplitudeDeg = 10.0;  // 628 deg/s peak
   p.durationS = 10.0;
   std::string why;
-  EXPECT_FALSE(p.isValid(TurntableLimits{}, &why));
+  why = p.validate(TurntableLimits{}).message();
+  EXPECT_FALSE(why.empty());
   EXPECT_NE(why.find("peak rate"), std::string::npos) << why;
 }
 
@@ -74,16 +81,19 @@ TEST(TestPlan, JsonErrorsSayWhatIsWrong) {
 TEST(TestPlan, StaticSegmentValidatesWithoutFrequencyOrAmplitude) {
   const TestPoint p = TestPoint::staticSegment(Axis::kY, 600.0, 2.0);
   std::string why;
-  EXPECT_TRUE(p.isValid(TurntableLimits{}, &why)) << why;
+  why = p.validate(TurntableLimits{}).message();
+  EXPECT_TRUE(why.empty()) << why;
   EXPECT_TRUE(p.isStatic());
   EXPECT_EQ(p.periodS(), 0.0);
   TestPoint bad = p;
   bad.frequencyHz = 0.1;
-  EXPECT_FALSE(bad.isValid(TurntableLimits{}, &why));
+  why = bad.validate(TurntableLimits{}).message();
+  EXPECT_FALSE(why.empty());
   EXPECT_NE(why.find("static segment has no frequency"), std::string::npos) << why;
   bad = p;
   bad.durationS = 0.0;
-  EXPECT_FALSE(bad.isValid(TurntableLimits{}, &why));
+  why = bad.validate(TurntableLimits{}).message();
+  EXPECT_FALSE(why.empty());
   EXPECT_NE(why.find("duration > 0"), std::string::npos) << why;
   EXPECT_EQ(TestPoint{}.kind, TestPointKind::kSwing);  // the default stays a swing
 }
@@ -104,14 +114,16 @@ TEST(TestPlan, StaticSegmentJsonRoundTripAndSwingJsonUnchanged) {
   EXPECT_EQ(back->points[1].amplitudeDeg, 0.0);
   EXPECT_DOUBLE_EQ(back->points[1].durationS, 600.0);
   std::string why;
-  EXPECT_TRUE(back->isValid(TurntableLimits{}, &why)) << why;
+  why = back->validate(TurntableLimits{}).message();
+  EXPECT_TRUE(why.empty()) << why;
 }
 
 TEST(TestPlan, StaticSegmentJsonRefusesSwingKeysAndBadKinds) {
   auto withFrequency = testPlanFromJson(R"({"points":[{"kind":"static","duration_s":60,"frequency_hz":1}]})");
   ASSERT_TRUE(withFrequency.isOk());
   std::string why;
-  EXPECT_FALSE(withFrequency->isValid(TurntableLimits{}, &why));
+  why = withFrequency->validate(TurntableLimits{}).message();
+  EXPECT_FALSE(why.empty());
   EXPECT_FALSE(testPlanFromJson(R"({"points":[{"kind":"still","duration_s":60}]})").isOk());
   EXPECT_FALSE(testPlanFromJson(R"({"points":[{"kind":"static","periods":3}]})").isOk());
 }
@@ -128,7 +140,8 @@ TEST(TestPlanPresets, EveryNamedPlanIsValidAndUnknownNamesAreExplained) {
     auto plan = presetPlan(name);
     ASSERT_TRUE(plan.isOk()) << name;
     std::string why;
-    EXPECT_TRUE(plan->isValid(limits, &why)) << name << ": " << why;
+    why = plan->validate(limits).message();
+    EXPECT_TRUE(why.empty()) << name << ": " << why;
   }
   EXPECT_EQ(presetPlan("paper")->points.size(), 2u);
   EXPECT_TRUE(presetPlan("noise")->points.front().isStatic());
@@ -150,13 +163,15 @@ TEST(TestPlanLimits, TooManyPointsOrTooLongInAllIsRefused) {
   TestPlan tenDays;
   for (int i = 0; i < 10; ++i) tenDays.points.push_back({Axis::kX, 0.1, 10.0, 86000.0, 5.0, 0.0});
   std::string why;
-  EXPECT_FALSE(tenDays.isValid(TurntableLimits{}, &why));
+  why = tenDays.validate(TurntableLimits{}).message();
+  EXPECT_FALSE(why.empty());
   EXPECT_NE(why.find("at most 24 h"), std::string::npos) << why;
 
   TestPlan many;
   for (std::size_t i = 0; i <= kMaxPlanPoints; ++i) many.points.push_back({Axis::kX, 1.0, 3.0, 2.0, 0.0, 0.0});
   many.restBetweenS = 0.0;
-  EXPECT_FALSE(many.isValid(TurntableLimits{}, &why));
+  why = many.validate(TurntableLimits{}).message();
+  EXPECT_FALSE(why.empty());
   EXPECT_NE(why.find("at most 1000"), std::string::npos) << why;
 
   std::string json = R"({"points":[)";
