@@ -17,6 +17,9 @@
 # Qwt 6.1 when Qwt for Qt 6 cannot be had; never leaves a half-built prefix.
 set -euo pipefail
 
+# All in one function, so that bash has read the whole script before it runs.
+main() {
+
 log() { echo "setup-qwt-qt6: $*"; }
 fallback() {
   log "$*"
@@ -137,3 +140,6 @@ printf 'qwt=%s\nqt=%s\nsource=%s (Debian unstable, apt-get source qwt)\n' \
 rm -rf "$prefix"
 mv "$staging" "$prefix"
 log "Qwt $qwt_version for Qt $qt_version built in $((SECONDS - start)) s into $prefix"
+}
+
+main "$@"
