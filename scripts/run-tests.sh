@@ -11,6 +11,9 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
+# Each stage's heading says how long the run has taken so far.
+stage() { echo "== $* [$((SECONDS / 60)) min $((SECONDS % 60)) s] =="; }
+
 ./scripts/setup.sh
 
 launcher=()
@@ -23,7 +26,7 @@ fi
 qt_of() { sed -n 's/^-- fogbench: GUI uses //p' "$1"; }
 mkdir -p build
 
-echo "== full build (release): Qt 6 + Qwt >= 6.2 by default =="
+stage "full build (release): Qt 6 + Qwt >= 6.2 by default"
 cmake --preset release "${launcher[@]}" | tee build/.configure-release.log
 echo "== release build's GUI: $(qt_of build/.configure-release.log) =="
 if ! qt_of build/.configure-release.log | grep -q '^Qt 6'; then
@@ -32,18 +35,18 @@ fi
 cmake --build --preset release
 ctest --preset release --output-on-failure -j2
 
-echo "== Qt 5 build: GUI and UI tests on Qt 5.15 + Qwt 6.1 (preset qt5) =="
+stage "Qt 5 build: GUI and UI tests on Qt 5.15 + Qwt 6.1 (preset qt5)"
 cmake --preset qt5 "${launcher[@]}" | tee build/.configure-qt5.log
 echo "== Qt 5 build's GUI: $(qt_of build/.configure-qt5.log) =="
 cmake --build --preset qt5
 ctest --preset qt5 --output-on-failure -j2
 
-echo "== headless build: core and CLI only, no Qt =="
+stage "headless build: core and CLI only, no Qt"
 cmake --preset headless "${launcher[@]}"
 cmake --build --preset headless
 ctest --preset headless --output-on-failure -j2
 
-echo "== fuzzing: sampling-board decoder, session reader, CSV import and plan JSON (libFuzzer + ASan/UBSan, clang) =="
+stage "fuzzing: sampling-board decoder, session reader, CSV import and plan JSON (libFuzzer + ASan/UBSan, clang)"
 # Bounded: FUZZ_SECONDS each (default 60). Seeds: the committed decoder corpus
 # and small simulated streams and sessions written by fog_fuzz_seed_corpus.
 # A crash fails the run and leaves its input in the scratch folder printed
@@ -67,3 +70,4 @@ build/fuzz/fuzz/fog_fuzz_session -max_total_time="$fuzz_seconds" -print_final_st
   -artifact_prefix="$fuzz_dir/session-" "$fuzz_dir/session" "$fuzz_dir/seed-session"
 build/fuzz/fuzz/fog_fuzz_import -max_total_time="$fuzz_seconds" -print_final_stats=1 -max_len=65536 \
   -artifact_prefix="$fuzz_dir/import-" "$fuzz_dir/import" "$fuzz_dir/seed-import"
+stage "done: release (Qt 6), Qt 5, headless and fuzzing all passed"
