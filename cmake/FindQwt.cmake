@@ -19,6 +19,29 @@ else()
   set(_qwt_suffixes qwt-qt6 qwt6 qwt)
 endif()
 
+# Where to look first: QWT_ROOT (CMake or environment), then for Qt 6 the
+# prefixes scripts/setup-qwt-qt6.sh builds into. Header and library come from
+# the same prefix when one has both; the system's paths are searched after.
+set(_qwt_roots ${QWT_ROOT} $ENV{QWT_ROOT})
+if(QT_VERSION_MAJOR EQUAL 6)
+  list(APPEND _qwt_roots $ENV{FOG_QWT_QT6_PREFIX} /opt/fogbench-qwt-qt6 $ENV{HOME}/.cache/fogbench/qwt-qt6)
+endif()
+if(DEFINED CACHE{_Qwt_QT_MAJOR} AND NOT _Qwt_QT_MAJOR EQUAL QT_VERSION_MAJOR)
+  unset(Qwt_INCLUDE_DIR CACHE)  # found for the other Qt major
+  unset(Qwt_LIBRARY CACHE)
+endif()
+set(_Qwt_QT_MAJOR ${QT_VERSION_MAJOR} CACHE INTERNAL "")
+if(NOT Qwt_LIBRARY)
+  foreach(_qwt_root ${_qwt_roots})
+    if(EXISTS ${_qwt_root}/include/qwt_global.h)
+      find_library(Qwt_LIBRARY NAMES ${_qwt_names} PATHS ${_qwt_root}/lib NO_DEFAULT_PATH)
+      if(Qwt_LIBRARY)
+        set(Qwt_INCLUDE_DIR ${_qwt_root}/include CACHE PATH "Qwt headers" FORCE)
+        break()
+      endif()
+    endif()
+  endforeach()
+endif()
 find_path(Qwt_INCLUDE_DIR NAMES qwt_global.h
           HINTS ${QWT_ROOT}/include ${QWT_ROOT}/lib/qwt.framework/Headers
           PATH_SUFFIXES ${_qwt_suffixes})
@@ -29,7 +52,16 @@ if(Qwt_INCLUDE_DIR AND EXISTS "${Qwt_INCLUDE_DIR}/qwt_global.h")
   string(REGEX REPLACE ".*\"([0-9.]+)\".*" "\\1" Qwt_VERSION "${_qwt_line}")
 endif()
 
-# Reject a library built against the other Qt major version.
+# Reject a library built against the other Qt major version: a shared one by
+# the Qt it loads, a static one from setup by the stamp file beside it.
+get_filename_component(_qwt_prefix "${Qwt_LIBRARY}" DIRECTORY)
+if(Qwt_LIBRARY MATCHES "\\.a$" AND EXISTS ${_qwt_prefix}/../fogbench-qwt.txt)
+  file(STRINGS ${_qwt_prefix}/../fogbench-qwt.txt _qwt_qt REGEX "^qt=")
+  if(NOT _qwt_qt MATCHES "^qt=${QT_VERSION_MAJOR}\\.")
+    message(STATUS "FindQwt: ${Qwt_LIBRARY} was built against ${_qwt_qt}; not usable with Qt ${QT_VERSION_MAJOR}")
+    set(Qwt_LIBRARY Qwt_LIBRARY-NOTFOUND)
+  endif()
+endif()
 if(Qwt_LIBRARY AND UNIX AND NOT APPLE)
   find_program(_qwt_objdump NAMES objdump)
   if(_qwt_objdump)

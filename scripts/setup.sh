@@ -1,15 +1,23 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages that fogbench needs to build, run and test.
+# Installs the Debian 12 packages that fogbench needs to build, run and test,
+# then makes sure Qwt for Qt 6 is there (scripts/setup-qwt-qt6.sh: Debian 12
+# packages Qwt only for Qt 5, so it is built once, static, into
+# /opt/fogbench-qwt-qt6). The GUI builds on Qt 6 by default; Qt 5.15 + Qwt 6.1
+# stay installed for the Qt 5 build (CI builds and tests both) and as the
+# fallback when Qt 6 or its Qwt cannot be had.
 # Idempotent: packages already present are left alone and nothing is fetched
 # when everything is installed. Must run as root (or with sudo available).
 set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
 
 packages=(
-  build-essential cmake ninja-build pkg-config git
+  build-essential cmake ninja-build pkg-config git ccache
   libeigen3-dev libceres-dev
   libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev
   qtbase5-dev libqt5svg5-dev libqt5opengl5-dev libqt5serialport5-dev
   libqwt-qt5-dev libsqlite3-dev qttools5-dev qttools5-dev-tools
+  qt6-base-dev qt6-base-dev-tools qt6-svg-dev qt6-serialport-dev qt6-tools-dev qt6-tools-dev-tools
+  qt6-l10n-tools qt6-qpa-plugins qmake6 libgl-dev bzip2
   clang libclang-rt-14-dev
   xvfb xauth fonts-wqy-microhei
   python3 python3-numpy
@@ -22,7 +30,7 @@ done
 
 if [[ ${#missing[@]} -eq 0 ]]; then
   echo "setup: all ${#packages[@]} required Debian packages are installed"
-  exit 0
+  exec "$here/setup-qwt-qt6.sh"
 fi
 
 echo "setup: installing ${#missing[@]} Debian package(s): ${missing[*]}"
@@ -37,5 +45,12 @@ else
 fi
 export DEBIAN_FRONTEND=noninteractive
 "${apt_get[@]}" update -qq
-"${apt_get[@]}" install -y -qq --no-install-recommends "${missing[@]}"
-echo "setup: done"
+if ! "${apt_get[@]}" install -y -qq --no-install-recommends "${missing[@]}"; then
+  # Without Qt 6 the GUI builds on Qt 5 (cmake/FogQt.cmake says so).
+  without_qt6=()
+  for p in "${missing[@]}"; do [[ $p == qt6-* || $p == qmake6 ]] || without_qt6+=("$p"); done
+  echo "setup: installing failed; retrying without the Qt 6 packages (the GUI then builds on Qt 5 + Qwt 6.1)" >&2
+  "${apt_get[@]}" install -y -qq --no-install-recommends "${without_qt6[@]}"
+fi
+echo "setup: packages done"
+exec "$here/setup-qwt-qt6.sh"

@@ -2,6 +2,7 @@
 
 #include "ui/language.h"
 
+#include <QPen>
 #include <cmath>
 #include <qwt_picker_machine.h>
 #include <qwt_plot.h>

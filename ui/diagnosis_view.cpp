@@ -297,7 +297,7 @@ void DiagnosisView::showShrink() {
   draw->setLabelRotation(-90.0);
   draw->setLabelAlignment(Qt::AlignLeft | Qt::AlignVCenter);
   shrinkPlot_->setAxisScaleDraw(QwtPlot::xBottom, draw);
-  shrinkPlot_->setAxisScale(QwtPlot::xBottom, -0.6, names.size() - 0.4, 1.0);
+  shrinkPlot_->setAxisScale(QwtPlot::xBottom, -0.6, static_cast<double>(names.size()) - 0.4, 1.0);
   shrinkPlot_->setAxisMaxMinor(QwtPlot::xBottom, 0);
   const double lowest = shrink.isEmpty() ? 0.0 : *std::min_element(shrink.begin(), shrink.end());
   shrinkPlot_->setAxisScale(QwtPlot::yLeft, std::min(0.0, lowest), 100.0);

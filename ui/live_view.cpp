@@ -4,6 +4,7 @@
 #include <QEvent>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QPen>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QVBoxLayout>

@@ -4,6 +4,7 @@
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QPen>
 #include <QSplitter>
 #include <QTableWidget>
 #include <QVBoxLayout>

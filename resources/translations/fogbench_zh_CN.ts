@@ -109,7 +109,7 @@
 <context>
     <name>fog::ui::DeltaPicker</name>
     <message>
-        <location filename="../../ui/delta_picker.cpp" line="+28"/>
+        <location filename="../../ui/delta_picker.cpp" line="+29"/>
         <source>t = %1 s, %2 %3</source>
         <translation>t = %1 s，%2 %3</translation>
     </message>
@@ -237,7 +237,7 @@
 <context>
     <name>fog::ui::LiveView</name>
     <message>
-        <location filename="../../ui/live_view.cpp" line="+53"/>
+        <location filename="../../ui/live_view.cpp" line="+54"/>
         <source>board time (s)</source>
         <translation>采样板时间 (s)</translation>
     </message>
@@ -816,7 +816,7 @@
 <context>
     <name>fog::ui::NoiseView</name>
     <message>
-        <location filename="../../ui/noise_view.cpp" line="+29"/>
+        <location filename="../../ui/noise_view.cpp" line="+30"/>
         <source>Static segment</source>
         <translation>静态段</translation>
     </message>
@@ -2170,7 +2170,7 @@
         <translation>IMU 延迟标定报告：%1 %2</translation>
     </message>
     <message>
-        <location filename="../../ui/result_view.cpp" line="+52"/>
+        <location filename="../../ui/result_view.cpp" line="+53"/>
         <source>%1: %2 axis, %3 Hz / %4°</source>
         <translation>%1：%2 轴，%3 Hz / %4°</translation>
     </message>

@@ -4,6 +4,9 @@
 #   fogbench-cli prints its version and runs a short simulated plan; the
 #   installed GUI prints its version.
 #   -DBUILD=build dir -DVERSION=x.y.z -DDIR=scratch folder
+#   -DEXPECTED_DEPENDS=comma-separated packages Depends must name
+#   -DOTHER_QT=prefix of the other Qt major's packages (libqt5 / libqt6),
+#    which Depends must not name
 file(REMOVE_RECURSE ${DIR})
 file(MAKE_DIRECTORY ${DIR})
 
@@ -31,11 +34,16 @@ endif()
 # Correct runtime dependencies: every Debian package that provides a shared
 # library the installed programs load is in Depends.
 run_ok(depends dpkg-deb -f ${deb} Depends)
-foreach(lib libqt5widgets5 libqwt-qt5-6 libsqlite3-0 libc6)
+string(REPLACE "," ";" expected "${EXPECTED_DEPENDS}")
+foreach(lib ${expected})
   if(NOT depends MATCHES "${lib}")
     message(FATAL_ERROR "Depends lacks ${lib}: ${depends}")
   endif()
 endforeach()
+if(OTHER_QT AND depends MATCHES "${OTHER_QT}")
+  message(FATAL_ERROR "Depends names the other Qt (${OTHER_QT}): ${depends}")
+endif()
+message(STATUS "Depends: ${depends}")
 foreach(program fogbench-cli fogbench)
   # The libraries the program itself names (NEEDED), found where ldd finds them.
   run_ok(ldd_out ldd ${BUILD}/app/${program})

@@ -203,7 +203,7 @@ void decorate(PageFlow& flow, const Content& c, int page, int pageCount) {
 QString rawDataText(const Content& c) {
   if (c.in.rawBytes.empty()) return QObject::tr("no raw stream (imported)");
   QString digits = QString::number(static_cast<qulonglong>(c.in.rawBytes.size()));
-  for (int i = digits.size() - 3; i > 0; i -= 3) digits.insert(i, QChar(0x2009));  // thin space between groups
+  for (auto i = digits.size() - 3; i > 0; i -= 3) digits.insert(i, QChar(0x2009));  // thin space between groups
   return QObject::tr("%1 bytes of sampling-board stream").arg(digits);
 }
 
