@@ -109,6 +109,14 @@ def default_params():
         # Gyro
         "fine_hz": 10000.0,
         "gyro_sign": [1, 1, 1],
+        # Sensor errors of the reference simulator (docs/simulator.md): gyro i
+        # senses misalignment_urad m_ij of the body rate about axis j, in the
+        # order m_xy, m_xz, m_yx, m_yz, m_zx, m_zy; a rate error of
+        # g_sens_deg_h_g times the specific force along its own axis; and its
+        # output is the rate through a first-order lag of lag_tau_ms.
+        "misalignment_urad": [0.0] * 6,
+        "g_sens_deg_h_g": 0.0,
+        "lag_tau_ms": 0.0,
         "bias_deg_h": [1.0, 1.0, 1.0],
         "bias_step_deg_h": [0.0, 0.0, 0.0],
         "bias_step_time_s": math.inf,
@@ -261,6 +269,38 @@ def earth_rate_ned_deg_s(lat_deg):
     om = EARTH_RATE_DEG_H / 3600.0
     lat = math.radians(lat_deg)
     return np.array([om * math.cos(lat), 0.0, -om * math.sin(lat)])
+
+
+def specific_force(angles, p):
+    """Specific force of gravity at rest in the body frame, in g, (n, 3):
+    C(t)^T (0, 0, -1) in NED, through the same axis chain as body_rates
+    (the heading turns about down, so it leaves gravity alone)."""
+    n = angles.shape[0]
+    u = np.tile(np.array([0.0, 0.0, -1.0]), (n, 1))
+    for ax in p["axis_order"]:
+        u = _rot_t(rot(ax, angles[:, AXES.index(ax)]), u)
+    return u
+
+
+def first_order_lag(x, dt, tau, y0, x0):
+    """y' = (x - y) / tau on samples x (n, 3) every dt after a sample x0 with
+    output y0, x linear between samples (exact for that): returns y (n, 3).
+    The recursion y_j = a y_{j-1} + u_j is summed in blocks short enough for
+    a^-L to stay finite."""
+    a = math.exp(-dt / tau)
+    c = tau / dt * (1.0 - a)
+    xp = np.vstack([x0[None, :], x[:-1]])
+    u = x - c * (x - xp) - a * xp          # y_j - a y_{j-1} for this input
+    y = np.empty_like(x)
+    L = max(1, int(40.0 / max(dt / tau, 1e-12)))
+    prev = y0.copy()
+    for b in range(0, x.shape[0], L):
+        ub = u[b:b + L]
+        k = np.arange(1, ub.shape[0] + 1)[:, None]
+        w = a ** (-k.astype(float))
+        y[b:b + L] = a ** k * (prev[None, :] + np.cumsum(ub * w, axis=0))
+        prev = y[b + ub.shape[0] - 1].copy()
+    return y
 
 
 def _rot_t(r, u):
@@ -555,9 +595,32 @@ def generate(params, chunk_frames=5000):
     theta[0] = p["_pulse_phase"] * pe
     t_first = frame_t[0]
 
-    def measured_rate(tf):
+    m = np.zeros((3, 3))
+    for (i, j), v in zip([(0, 1), (0, 2), (1, 0), (1, 2), (2, 0), (2, 1)], p["misalignment_urad"]):
+        m[i, j] = v * 1e-6
+    lag_s = p["lag_tau_ms"] * 1e-3
+
+    def sensed_rate(tf):
+        """What the gyros sense before the lag: body rate through the
+        misalignment, plus the g-sensitive rate error."""
         ang, r = table_state(tf - tau, swings, p)
         w = body_rates(ang, r, p)
+        w = w + w @ m.T
+        if p["g_sens_deg_h_g"] != 0.0:
+            w = w + p["g_sens_deg_h_g"] / 3600.0 * specific_force(ang, p)
+        return w
+
+    lag_state = {}
+
+    def measured_rate(tf):
+        w = sensed_rate(tf)
+        if lag_s > 0:
+            if not lag_state:   # at rest before the first instant: output = input
+                lag_state["x"] = w[0].copy()
+                lag_state["y"] = w[0].copy()
+            y = first_order_lag(w, dt, lag_s, lag_state["y"], lag_state["x"])
+            lag_state["x"], lag_state["y"] = w[-1].copy(), y[-1].copy()
+            w = y
         out = w * sign + bias
         if np.any(bstep):
             out = out + np.where((tf >= p["bias_step_time_s"])[:, None], bstep, 0.0)
