@@ -326,6 +326,113 @@ std::string fmt(const char* f, double v) {
   return b;
 }
 
+// The table's heading is not in a session, and the Earth rate it turns into
+// the body frame shows in every gyro's trend and cross-axis cells as the
+// geometry changes between points (a swing about X modulates what z senses
+// by Omega cos(lat) sin(h) sin(angle)). Its horizontal part in the table
+// frame, Omega cos(lat) (cos h, -sin h), enters the features linearly, as
+// does each gyro's bias: replays with zero bias at headings 0, 90 and 180
+// deg (common random numbers) give the columns, a second seed the cells'
+// spread, and weighted least squares on the trend and cross-axis cells
+// gives the heading and the three biases. When the plan leaves cos h or
+// sin h unseen (only X swings: sin h), the other is taken with cos h >= 0.
+Status calibrateEarthRateAndBias(Replay& replay, const std::vector<FeatureKey>& keys, const std::vector<double>& real,
+                                 const DiagnosisOptions& options, std::vector<std::string>& notes) {
+  Calibration& cal = replay.cal;
+  Replay base = replay;
+  base.cal.config.fog.biasDegPerH = {0.0, 0.0, 0.0};
+  const std::uint64_t seedA = options.seed + 1000, seedB = options.seed + 1001;
+  struct Run {
+    double headingDeg;
+    std::uint64_t seed;
+  };
+  const std::vector<Run> runs = {{0.0, seedA}, {0.0, seedB}, {90.0, seedA}, {180.0, seedA}};
+  std::vector<Result<FeatureSet>> out(runs.size(), Status(StatusCode::kInternal, "not run"));
+  parallelFor(runs.size(), options.threads, [&](std::size_t i) {
+    Replay r = base;
+    r.cal.config.earth.headingDeg = runs[i].headingDeg;
+    out[i] = r.run(runs[i].seed, {});
+  });
+  for (auto& o : out) {
+    if (!o) return Status(o.status().code(), "replay (Earth-rate calibration): " + o.status().message());
+    if (o->values.size() != real.size())
+      return Status(StatusCode::kInternal, "the replay's features do not line up with the session's");
+  }
+  const auto& f0 = out[0]->values;
+  const auto& f0b = out[1]->values;
+  const auto& f90 = out[2]->values;
+  const auto& f180 = out[3]->values;
+  std::map<std::string, std::pair<double, double>> spread;  // sum of squares, count
+  for (std::size_t i = 0; i < keys.size(); ++i) {
+    auto& g = spread[groupKey(keys[i])];
+    g.first += 0.5 * (f0[i] - f0b[i]) * (f0[i] - f0b[i]);
+    g.second += 1.0;
+  }
+  std::vector<std::size_t> rows;
+  for (std::size_t i = 0; i < keys.size(); ++i)
+    if (keys[i].channel == Channel::kGyro && (keys[i].quantity == "trend" || keys[i].quantity.rfind("cross_", 0) == 0))
+      rows.push_back(i);
+  if (rows.size() < 6) return Status::ok();
+  const auto m = static_cast<Eigen::Index>(rows.size());
+  Eigen::MatrixXd a = Eigen::MatrixXd::Zero(m, 5);
+  Eigen::VectorXd y(m);
+  for (Eigen::Index r = 0; r < m; ++r) {
+    const std::size_t i = rows[static_cast<std::size_t>(r)];
+    const auto& g = spread[groupKey(keys[i])];
+    const double b = 0.5 * (f0[i] + f180[i]);
+    const double sigma = std::sqrt(g.first / std::max(1.0, g.second) + 1e-6 + 1e-6 * b * b);
+    a(r, 0) = 0.5 * (f0[i] - f180[i]) / sigma;  // times cos h
+    a(r, 1) = (b - f90[i]) / sigma;             // times -sin h
+    if (keys[i].quantity == "trend") a(r, 2 + keys[i].axis) = 1.0 / sigma;  // bias, deg/h
+    y(r) = (real[i] - b) / sigma;
+  }
+  // The horizontal Earth rate's size is the stated latitude's; its
+  // direction is searched (1-deg grid, then a parabola through the best
+  // three): at each heading the biases are the linear least-squares part.
+  // A free size would trade the north component against the x gyro's bias,
+  // which the trend cells of X swings see alike.
+  std::vector<Eigen::Index> biasCols;
+  for (Eigen::Index j = 2; j < 5; ++j)
+    if (a.col(j).squaredNorm() > 0.0) biasCols.push_back(j);
+  Eigen::MatrixXd t(m, static_cast<Eigen::Index>(biasCols.size()));
+  for (std::size_t j = 0; j < biasCols.size(); ++j) t.col(static_cast<Eigen::Index>(j)) = a.col(biasCols[j]);
+  const auto qr = t.colPivHouseholderQr();
+  auto fitAt = [&](double hDeg, Eigen::VectorXd* bias) {
+    const double h = hDeg * kRadPerDeg;
+    const Eigen::VectorXd rest = y - std::cos(h) * a.col(0) + std::sin(h) * a.col(1);
+    const Eigen::VectorXd b = biasCols.empty() ? Eigen::VectorXd() : Eigen::VectorXd(qr.solve(rest));
+    if (bias) *bias = b;
+    return biasCols.empty() ? rest.squaredNorm() : (rest - t * b).squaredNorm();
+  };
+  if (a.col(0).squaredNorm() + a.col(1).squaredNorm() <= 0.0) return Status::ok();
+  std::vector<double> chi(360);
+  for (int k = 0; k < 360; ++k) chi[static_cast<std::size_t>(k)] = fitAt(k, nullptr);
+  const int best = static_cast<int>(std::min_element(chi.begin(), chi.end()) - chi.begin());
+  const double cm = chi[static_cast<std::size_t>((best + 359) % 360)], c0 = chi[static_cast<std::size_t>(best)],
+               cp = chi[static_cast<std::size_t>((best + 1) % 360)];
+  const double curvature = cm - 2.0 * c0 + cp;  // per deg^2
+  const double offset = curvature > 0.0 ? std::clamp(0.5 * (cm - cp) / curvature, -0.5, 0.5) : 0.0;
+  double heading = best + offset;
+  if (heading > 180.0) heading -= 360.0;
+  Eigen::VectorXd biases;
+  fitAt(heading, &biases);
+  cal.headingDeg = heading;
+  cal.headingStdDeg = curvature > 0.0 ? std::sqrt(2.0 / curvature) : 180.0;
+  cal.config.earth.headingDeg = heading;
+  notes.push_back("heading " + fmt("%.1f", heading) + " +- " + fmt("%.1f", cal.headingStdDeg) +
+                  " deg, from the Earth rate the gyros see as the table turns");
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(5);
+  for (std::size_t j = 0; j < biasCols.size(); ++j) x(biasCols[j]) = biases(static_cast<Eigen::Index>(j));
+  // The biases were fitted at the heading the columns describe; the trend
+  // cells of the calibrated replay then match on average.
+  for (int ax = 0; ax < kAxisCount; ++ax) {
+    cal.biasDegPerH[static_cast<std::size_t>(ax)] = x(2 + ax);
+    cal.config.fog.biasDegPerH[static_cast<std::size_t>(ax)] = std::clamp(x(2 + ax), -3000.0, 3000.0);
+  }
+  return cal.config.validate();
+}
+
+
 }  // namespace
 
 Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, const analysis::BenchConstants& constants,
@@ -398,6 +505,9 @@ Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, cons
     p.frequencyHz = nominalHz;
     p.amplitudeDeg = std::abs(r.tableFit.amplitudeDeg);
     p.durationS = tp.table.back().timeS - tp.table.front().timeS + 0.5 * c.encoder.samplePeriodS;
+    // The replay swings 2 s before it records (longer when the plan says so):
+    // a recorded test point is a steady swing, and an imported one states no
+    // settle time (0) although its table was swinging before the record.
     p.settleS = 2.0;
     // The table's geometry as recorded: the swing about its fitted centre,
     // the other axes where they were held (a swing about X sees the Earth
@@ -410,7 +520,8 @@ Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, cons
     p.positionDeg[static_cast<std::size_t>(tp.axis)] = r.tableFit.offsetDeg;
     if (info)
       for (const auto& q : info->plan.points)
-        if (&q - info->plan.points.data() == tp.index) p.settleS = q.settleS, p.startPhaseDeg = q.startPhaseDeg;
+        if (&q - info->plan.points.data() == tp.index)
+          p.settleS = std::max(p.settleS, q.settleS), p.startPhaseDeg = q.startPhaseDeg;
     cal.plan.points.push_back(p);
     PointReference pr;
     pr.omegaRadPerS = kTwoPi * fitHz;
@@ -433,27 +544,15 @@ Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, cons
   const std::vector<double>& real = realFeatures->values;
   {
     std::vector<double> tableMs;
-    std::array<double, kAxisCount> trendSum{}, trendN{};
-    for (std::size_t i = 0; i < keys.size(); ++i) {
+    for (std::size_t i = 0; i < keys.size(); ++i)
       if (keys[i].channel == Channel::kTable && keys[i].quantity == "residual_ms") tableMs.push_back(real[i]);
-      if (keys[i].quantity == "trend") {
-        trendSum[static_cast<std::size_t>(keys[i].axis)] += real[i];
-        trendN[static_cast<std::size_t>(keys[i].axis)] += 1.0;
-      }
-    }
     // White encoder noise sigma^2 = q^2 / 12 for a quantising encoder.
     cal.encoderNoiseDeg = std::sqrt(median(tableMs)) * 1e-6;
     c.encoder.quantumDeg = std::sqrt(12.0) * cal.encoderNoiseDeg;
-    // A constant bias is what the replay takes from the data; a wrong Earth-
-    // rate projection is therefore absorbed here (alias group below).
-    for (int a = 0; a < kAxisCount; ++a) {
-      const double trend = trendN[static_cast<std::size_t>(a)] > 0 ? trendSum[static_cast<std::size_t>(a)] / trendN[static_cast<std::size_t>(a)] : 0.0;
-      cal.biasDegPerH[static_cast<std::size_t>(a)] = trend - c.earth.projectionDegPerH(static_cast<Axis>(a));
-      c.fog.biasDegPerH[static_cast<std::size_t>(a)] = std::clamp(cal.biasDegPerH[static_cast<std::size_t>(a)], -3000.0, 3000.0);
-    }
   }
   if (Status s = c.validate(); !s.isOk())
     return invalidArgument("the calibrated replay is not a valid chain: " + s.message());
+  FOG_RETURN_IF_ERROR(calibrateEarthRateAndBias(replay, keys, real, options, d.notes));
 
   // ---- Replays: Monte Carlo spread and effect signatures -----------------
   // Signatures are central differences (+reference and -reference) where the
@@ -1009,6 +1108,10 @@ std::string formatDiagnosisJson(const Diagnosis& d) {
   const auto& c = d.calibration;
   j["calibration"] = {{"lag_ms", c.lagMs},
                       {"table_frequency_error_ppm", c.tableFrequencyErrorPpm},
+                      {"heading_deg", c.headingDeg},
+                      {"heading_std_deg", c.headingStdDeg},
+                      {"table_period_ms", c.config.encoder.samplePeriodS * 1e3},
+                      {"imu_period_ms", c.config.imuBoard.framePeriodS * 1e3},
                       {"encoder_noise_deg", c.encoderNoiseDeg},
                       {"arw_deg_sqrt_h", c.arwDegPerSqrtH},
                       {"bias_deg_h", c.biasDegPerH}};
@@ -1033,9 +1136,11 @@ std::string formatDiagnosisText(const Diagnosis& d) {
   const auto& c = d.calibration;
   std::snprintf(b, sizeof b,
                 "  replay calibrated to: lag %.4f ms, table frequency %+.2f ppm, encoder noise %.2g deg, ARW %.4f "
-                "deg/sqrt(h), bias %+.3f/%+.3f/%+.3f deg/h\n",
+                "deg/sqrt(h), bias %+.3f/%+.3f/%+.3f deg/h,\n  heading %.1f +- %.1f deg, "
+                "table every %.4f ms, IMU every %.4f ms\n",
                 c.lagMs, c.tableFrequencyErrorPpm, c.encoderNoiseDeg, c.arwDegPerSqrtH, c.biasDegPerH[0],
-                c.biasDegPerH[1], c.biasDegPerH[2]);
+                c.biasDegPerH[1], c.biasDegPerH[2], c.headingDeg, c.headingStdDeg, c.config.encoder.samplePeriodS * 1e3,
+                c.config.imuBoard.framePeriodS * 1e3);
   s += b;
   s += "\nTiming audit            real                         replay\n";
   auto line = [&](const char* name, const StreamTiming& r, const StreamTiming& m) {
