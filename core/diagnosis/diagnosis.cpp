@@ -370,7 +370,10 @@ Status calibrateEarthRateAndBias(Replay& replay, const std::vector<FeatureKey>& 
   }
   std::vector<std::size_t> rows;
   for (std::size_t i = 0; i < keys.size(); ++i)
-    if (keys[i].channel == Channel::kGyro && (keys[i].quantity == "trend" || keys[i].quantity.rfind("cross_", 0) == 0))
+    // The Earth rate a swing modulates is a rate in phase with the angle, an
+    // angle in quadrature with it (and a trend); the in-phase cross cells are
+    // where misalignment shows, so they are left to the effect fit.
+    if (keys[i].channel == Channel::kGyro && (keys[i].quantity == "trend" || keys[i].quantity == "cross_quadrature"))
       rows.push_back(i);
   if (rows.size() < 6) return Status::ok();
   const auto m = static_cast<Eigen::Index>(rows.size());
@@ -1075,7 +1078,11 @@ std::string formatDiagnosisJson(const Diagnosis& d) {
   for (const auto& e : d.effects) {
     json params = json::object();
     for (std::size_t p = 0; p < e.parameters.size(); ++p)
-      params[e.parameters[p].name] = {{"value", e.values[p]}, {"std", e.standardErrors[p]}, {"unit", e.parameters[p].unit}};
+      params[e.parameters[p].name] = {{"value", e.values[p]},
+                                      {"std", e.standardErrors[p]},
+                                      {"unit", e.parameters[p].unit},
+                                      {"detection_threshold",
+                                       p < e.detectionThresholds.size() ? e.detectionThresholds[p] : 0.0}};
     json per = json::object();
     for (const auto& s : e.perChannel) per[channelName(s.channel)] = s.shrink;
     effects.push_back({{"name", e.name},

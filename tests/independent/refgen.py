@@ -117,6 +117,23 @@ def default_params():
         "misalignment_urad": [0.0] * 6,
         "g_sens_deg_h_g": 0.0,
         "lag_tau_ms": 0.0,
+        # ... and a scale factor 1 + scale_factor_ppm, plus sf_asymmetry_ppm
+        # of |rate| and sf_nonlinearity_ppm_at_100 * rate * (rate / 100)^2
+        # (deg/s); a bias growing by bias_drift_deg_h_per_min from the first
+        # instant; IMU frames lost at random at drop_per_mille (the next row's
+        # lost_before counts them).
+        "scale_factor_ppm": 0.0,
+        "sf_asymmetry_ppm": 0.0,
+        "sf_nonlinearity_ppm_at_100": 0.0,
+        "bias_drift_deg_h_per_min": 0.0,
+        "drop_per_mille": 0.0,
+        # Table errors: the motion distorted as a function of the angle of
+        # every axis, theta + 10 (c2 x^2 - c3 x^3) with x = theta / 10 deg
+        # (table_poly_ppm = [c2, c3]; seen by encoder and gyros alike), and
+        # an encoder reading error s sin(2 pi theta / 10 deg) + c cos(...)
+        # (encoder_cyclic_arcsec = [s, c]).
+        "table_poly_ppm": [0.0, 0.0],
+        "encoder_cyclic_arcsec": [0.0, 0.0],
         "bias_deg_h": [1.0, 1.0, 1.0],
         "bias_step_deg_h": [0.0, 0.0, 0.0],
         "bias_step_time_s": math.inf,
@@ -459,6 +476,11 @@ def table_state(t, swings, p):
             a, r = sw.eval(t[sel])
             ang[sel, i] += a
             rate[sel, i] += r
+    c2, c3 = (v * 1e-6 for v in p["table_poly_ppm"])
+    if c2 or c3:
+        x = ang / 10.0
+        rate = rate * (1.0 + 2.0 * c2 * x - 3.0 * c3 * x * x)
+        ang = ang + 10.0 * (c2 * x * x - c3 * x ** 3)
     return ang, rate
 
 
@@ -565,6 +587,10 @@ def generate(params, chunk_frames=5000):
     tab_true, _ = table_state(latch, swings, p)
     q = p["encoder_arcsec"] * ARCSEC
     tab_meas = tab_true.copy()
+    es, ec = (v * ARCSEC for v in p["encoder_cyclic_arcsec"])
+    if es or ec:
+        ph = 2.0 * math.pi * tab_true / 10.0
+        tab_meas += es * np.sin(ph) + ec * np.cos(ph)
     if p["encoder_noise_arcsec"] > 0:
         tab_meas += rng.normal(0, p["encoder_noise_arcsec"] * ARCSEC, tab_meas.shape)
     if q > 0:
@@ -608,6 +634,10 @@ def generate(params, chunk_frames=5000):
         w = w + w @ m.T
         if p["g_sens_deg_h_g"] != 0.0:
             w = w + p["g_sens_deg_h_g"] / 3600.0 * specific_force(ang, p)
+        w = (w * (1.0 + p["scale_factor_ppm"] * 1e-6) + p["sf_asymmetry_ppm"] * 1e-6 * np.abs(w)
+             + p["sf_nonlinearity_ppm_at_100"] * 1e-6 * w * (w / 100.0) ** 2)
+        if p["bias_drift_deg_h_per_min"] != 0.0:
+            w = w + (p["bias_drift_deg_h_per_min"] / 3600.0 / 60.0 * (tf - t_first))[:, None]
         return w
 
     lag_state = {}
@@ -686,6 +716,15 @@ def generate(params, chunk_frames=5000):
         held_from = idx
     else:
         held_from = np.arange(stamp.size)
+    lost_before = np.zeros(gyro_t.size, dtype=np.int64)
+    if p["drop_per_mille"] > 0:
+        if p["sample_hold_ms"] > 0 or p["rate_output"] is not None:
+            raise ValueError("drop_per_mille works on increments without sample-and-hold")
+        drop = rng.uniform(size=gyro_t.size) < p["drop_per_mille"] * 1e-3
+        drop[0] = False
+        kept = np.nonzero(~drop)[0]
+        lost_before = np.diff(np.concatenate([[-1], kept])) - 1
+        gyro_t, gvals, held_from = gyro_t[kept], gvals[kept], held_from[kept]
 
     return {
         "params": p,
@@ -704,6 +743,7 @@ def generate(params, chunk_frames=5000):
         "gyro_t": gyro_t,
         "gyro_val": gvals,
         "gyro_from_frame": held_from,
+        "gyro_lost_before": lost_before,
         "pulse_deg": pe,
         "fine_dt_s": dt,
         "frame_period_true_s": Pg,
@@ -892,6 +932,8 @@ def write_dir(res, out, overwrite=False):
     suffix = "_inc_deg" if p["rate_output"] is None else "_rate_deg_s"
     for ax in axes_out:
         cols.append(res["gyro_val"][idx, AXES.index(ax)]); header.append(ax + suffix); fmts.append(ff)
+    if np.any(res["gyro_lost_before"]):
+        cols.append(res["gyro_lost_before"][idx]); header.append("lost_before"); fmts.append("%d")
     what = ("angle increments (deg) over the frame ending at time_s" if p["rate_output"] is None else
             "rates (deg/s), convention %s" % p["rate_output"])
     _write_csv(os.path.join(out, "gyro.csv"), "refgen gyro stream: " + what + "; docs/formats.md",
