@@ -1,6 +1,11 @@
 #include "ui/result_view.h"
 
 #include <QComboBox>
+#include <QDateTime>
+#include <QDir>
+#include <QFileInfo>
+#include <QRegularExpression>
+#include <QStandardPaths>
 #include <QFileDialog>
 #include <QFontDatabase>
 #include <QFontInfo>
@@ -92,11 +97,15 @@ ResultView::ResultView(QWidget* parent) : QWidget(parent) {
   row->addWidget(new QLabel(tr("Test point")));
   testPointCombo_ = new QComboBox();
   testPointCombo_->setObjectName("testPointCombo");
-  testPointCombo_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+  testPointCombo_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+  testPointCombo_->setMinimumContentsLength(14);
   row->addWidget(testPointCombo_);
   lagLabel_ = new QLabel();
   lagLabel_->setObjectName("lagLabel");
   lagLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  // Wraps on a narrow window (a laptop, the Compare window) instead of
+  // widening it.
+  lagLabel_->setWordWrap(true);
   row->addSpacing(12);
   row->addWidget(lagLabel_, 1);
   diagnoseButton_ = new QPushButton(tr("Diagnose"));
@@ -124,6 +133,10 @@ ResultView::ResultView(QWidget* parent) : QWidget(parent) {
   anglePlot_->setObjectName("anglePlot");
   residualPlot_ = new SeriesPlot(tr("Residuals (data − fit)"), tr("residual (arcsec)"));
   residualPlot_->setObjectName("residualPlot");
+  // Explicit minimum sizes below the plots' own hints: the view fits a
+  // laptop screen and the Compare window's two columns fit side by side.
+  for (QwtPlot* plot : {static_cast<QwtPlot*>(anglePlot_), static_cast<QwtPlot*>(residualPlot_)})
+    plot->setMinimumSize(200, 130);
   auto* left = new QSplitter(Qt::Vertical);
   left->addWidget(anglePlot_);
   left->addWidget(residualPlot_);
@@ -133,6 +146,7 @@ ResultView::ResultView(QWidget* parent) : QWidget(parent) {
   fitTable_->setObjectName("fitTable");
   delayTable_ = makeTable({tr("delay"), tr("value (ms)"), tr("1σ (ms)"), tr("theory (ms)"), tr("basis")});
   delayTable_->setObjectName("delayTable");
+  for (QTableWidget* t : {fitTable_, delayTable_}) t->setMinimumSize(150, 80);
   buildFrequencyPlot();
   auto* right = new QSplitter(Qt::Vertical);
   right->addWidget(fitTable_);
@@ -169,11 +183,11 @@ ResultView::ResultView(QWidget* parent) : QWidget(parent) {
   auto* menu = new QMenu(exportButton_);
   auto addPlotExport = [this, menu](const QString& label, QwtPlot* plot) {
     menu->addAction(label, this, [this, plot] {
-      const QString path =
-          QFileDialog::getSaveFileName(this, tr("Export plot"), plot->objectName() + ".png", plotExportFilter());
+      const QString path = QFileDialog::getSaveFileName(this, tr("Export plot"),
+                                                        defaultExportPath(plot->objectName(), "png"), plotExportFilter());
       if (path.isEmpty()) return;
-      if (auto s = exportPlot(plot, path); !s.isOk())
-        QMessageBox::warning(this, tr("Export plot"), QString::fromStdString(s.message()));
+      if (auto s = exportPlotTo(plot, path); !s.isOk())
+        emit exportFailed(tr("Export plot"), QString::fromStdString(s.message()));
     });
   };
   addPlotExport(tr("Angles plot…"), anglePlot_);
@@ -187,12 +201,15 @@ ResultView::ResultView(QWidget* parent) : QWidget(parent) {
                                                  tr("Pass when IMU delay + 2σ is below (ms):"), 0.8, 0.001, 100.0, 3,
                                                  &ok);
     if (!ok) return;
-    const QString path = QFileDialog::getSaveFileName(this, tr("Calibration report"), "calibration-report.pdf",
+    const QString path = QFileDialog::getSaveFileName(this, tr("Calibration report"),
+                                                      defaultExportPath("calibration-report", "pdf"),
                                                       tr("PDF document (*.pdf)"));
     if (path.isEmpty()) return;
-    if (auto s = writeReportPdf(path, limit); !s.isOk())
-      QMessageBox::warning(this, tr("Calibration report"), QString::fromStdString(s.message()));
+    if (auto s = exportReportTo(path, limit); !s.isOk())
+      emit exportFailed(tr("Calibration report"), QString::fromStdString(s.message()));
   });
+  menu->addSeparator();
+  menu->addAction(tr("Open the export folder"), this, &ResultView::openExportFolderRequested);
   exportButton_->setMenu(menu);
   clear();
 }
@@ -205,7 +222,7 @@ void ResultView::buildFrequencyPlot() {
   frequencyPlot_->setAxisTitle(QwtPlot::yLeft, tr("lag (ms), ±1σ"));
   frequencyPlot_->setCanvasBackground(Qt::white);
   frequencyPlot_->insertLegend(new QwtLegend(), QwtPlot::BottomLegend);
-  frequencyPlot_->setMinimumHeight(200);
+  frequencyPlot_->setMinimumSize(200, 130);
 }
 
 void ResultView::clear() {
@@ -391,6 +408,37 @@ void ResultView::showFrequencyPlot() {
   }
   frequencyPlot_->setAxisAutoScale(QwtPlot::yLeft, true);
   frequencyPlot_->replot();
+}
+
+Status ResultView::exportPlotTo(QwtPlot* plot, const QString& path) {
+  FOG_RETURN_IF_ERROR(exportPlot(plot, path));
+  emit exported(path);
+  return Status::ok();
+}
+
+Status ResultView::exportReportTo(const QString& path, double imuDelayLimitMs) {
+  FOG_RETURN_IF_ERROR(writeReportPdf(path, imuDelayLimitMs));
+  emit exported(path);
+  return Status::ok();
+}
+
+QString ResultView::defaultExportPath(const QString& what, const QString& suffix) const {
+  QString folder = exportFolder_;
+  QString name = what;
+  QDateTime when = QDateTime::currentDateTimeUtc();
+  if (outcome_) {
+    if (!outcome_->sessionPath.empty())
+      folder = QFileInfo(QString::fromStdString(outcome_->sessionPath)).absolutePath();
+    QString serial = QString::fromStdString(outcome_->info.imuSerial).trimmed();
+    // Only characters every file system takes.
+    serial.replace(QRegularExpression("[^A-Za-z0-9._-]+"), "_");
+    if (!serial.isEmpty()) name += "-" + serial;
+    const QDateTime recorded = QDateTime::fromString(QString::fromStdString(outcome_->info.createdUtc), Qt::ISODate);
+    if (recorded.isValid()) when = recorded.toUTC();
+  }
+  if (folder.isEmpty()) folder = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+  name += "-" + when.toString("yyyyMMdd-HHmmss") + "." + suffix;
+  return QDir(folder).filePath(name);
 }
 
 Status ResultView::writeReportPdf(const QString& path, double imuDelayLimitMs) const {
