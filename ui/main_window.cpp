@@ -1,6 +1,11 @@
 #include "ui/main_window.h"
 
 #include <QActionGroup>
+#include <QCloseEvent>
+#include <QDesktopServices>
+#include <QScreen>
+#include <QScrollArea>
+#include <QUrl>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDateTime>
@@ -16,6 +21,7 @@
 #include <QMessageBox>
 #include <QPointer>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QSettings>
 #include <QSpinBox>
 #include <QSplitter>
@@ -28,7 +34,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <fstream>
 #include <qwt_global.h>
+#include <sstream>
 
 #include "acquisition/replay_source.h"
 #include "acquisition/simulator_source.h"
@@ -42,6 +50,7 @@
 #include "ui/diagnosis_view.h"
 #include "ui/language.h"
 #include "ui/live_view.h"
+#include "ui/messages.h"
 #include "ui/noise_view.h"
 #include "ui/plan_editor.h"
 #include "ui/result_view.h"
@@ -70,6 +79,44 @@ model::SimConfig simConfigOf(const BenchSettings& b, int seed) {
   return c;
 }
 
+// Holds a view at the size of the scroll area's viewport, down to the view's
+// minimum size. (A view whose layout has height-for-width, from a wrapping
+// label, would otherwise be given its preferred height by the scroll area
+// and scroll even when it could fit.)
+class Fitted : public QWidget {
+ public:
+  explicit Fitted(QWidget* view) : view_(view) {
+    setObjectName(view->objectName() + "Frame");
+    view->setParent(this);
+    view->installEventFilter(this);
+  }
+  QSize minimumSizeHint() const override { return view_->minimumSizeHint().expandedTo(view_->minimumSize()); }
+  QSize sizeHint() const override { return view_->sizeHint(); }
+
+ protected:
+  void resizeEvent(QResizeEvent*) override { view_->setGeometry(rect()); }
+  bool eventFilter(QObject* watched, QEvent* event) override {
+    if (watched == view_ && event->type() == QEvent::LayoutRequest) updateGeometry();
+    return false;
+  }
+
+ private:
+  QWidget* view_;
+};
+
+// A view in a scroll area: on a small screen the view keeps its minimum size
+// and scrolls instead of pushing the window off the screen.
+QWidget* scrollable(QWidget* view) {
+  auto* area = new QScrollArea();
+  area->setObjectName(view->objectName() + "Scroll");
+  area->setWidget(new Fitted(view));
+  area->setWidgetResizable(true);
+  area->setFrameShape(QFrame::NoFrame);
+  return area;
+}
+
+constexpr int kMaxRecentSessions = 8;
+
 QString defaultSessionFolder() {
   return QDir(QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation)).filePath("fogbench-sessions");
 }
@@ -81,24 +128,26 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 
   tabs_ = new QTabWidget();
   tabs_->setObjectName("viewTabs");
-  tabs_->addTab(buildConfigureView(), tr("Configure"));
+  tabs_->setDocumentMode(true);
+  tabs_->addTab(scrollable(buildConfigureView()), tr("Configure"));
   liveView_ = new LiveView();
   liveView_->setObjectName("liveView");
-  tabs_->addTab(liveView_, tr("Live"));
+  tabs_->addTab(scrollable(liveView_), tr("Live"));
   resultView_ = new ResultView();
   resultView_->setObjectName("resultView");
-  tabs_->addTab(resultView_, tr("Results"));
+  tabs_->addTab(scrollable(resultView_), tr("Results"));
   sessionBrowser_ = new SessionBrowser();
   sessionBrowser_->setObjectName("sessionBrowser");
-  tabs_->addTab(sessionBrowser_, tr("Sessions"));
+  tabs_->addTab(scrollable(sessionBrowser_), tr("Sessions"));
   diagnosisView_ = new DiagnosisView();
   diagnosisView_->setObjectName("diagnosisView");
-  tabs_->addTab(diagnosisView_, tr("Diagnosis"));
+  tabs_->addTab(scrollable(diagnosisView_), tr("Diagnosis"));
   noiseView_ = new NoiseView();
   noiseView_->setObjectName("noiseView");
-  tabs_->addTab(noiseView_, tr("Noise"));
+  tabs_->addTab(scrollable(noiseView_), tr("Noise"));
   setCentralWidget(tabs_);
   buildToolBar();
+  buildMenus();
   setBenchSettings(loadBenchSettings());
 
   framesLabel_ = new QLabel();
@@ -120,9 +169,20 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   connect(sessionBrowser_, &SessionBrowser::compareRequested, this, &MainWindow::compareSessions);
   connect(sessionBrowser_, &SessionBrowser::importRequested, this, &MainWindow::importCsv);
   connect(resultView_, &ResultView::diagnoseRequested, this, &MainWindow::diagnoseShown);
+  connect(resultView_, &ResultView::exported, this, &MainWindow::exported);
+  connect(resultView_, &ResultView::exportFailed, this, [this](const QString& title, const QString& why) {
+    reportError(title, title, why);
+  });
+  connect(resultView_, &ResultView::openExportFolderRequested, this, &MainWindow::openExportFolder);
 
   QSettings settings;
   setSessionFolder(settings.value("sessions/folder", defaultSessionFolder()).toString());
+  restoreState();
+  // The operator's choices are remembered as they are made.
+  connect(planEditor_, &PlanEditor::planChanged, this, &MainWindow::rememberState);
+  connect(speedCombo_, qOverload<int>(&QComboBox::currentIndexChanged), this, &MainWindow::rememberState);
+  for (QLineEdit* e : {operatorEdit_, imuModelEdit_, imuSerialEdit_})
+    connect(e, &QLineEdit::textChanged, this, &MainWindow::rememberState);
   setRunning(false);
   tell(tr("Configure a plan and press Run."));
 }
@@ -131,20 +191,30 @@ MainWindow::~MainWindow() = default;
 
 QWidget* MainWindow::buildConfigureView() {
   auto* page = new QWidget();
+  page->setObjectName("configureView");
   auto* layout = new QHBoxLayout(page);
+  // The plan and the rest side by side; the operator moves the divider.
+  auto* split = new QSplitter(Qt::Horizontal);
+  split->setObjectName("configureSplitter");
+  split->setChildrenCollapsible(false);
+  layout->addWidget(split);
 
   auto* planBox = new QGroupBox(tr("Test plan"));
   auto* planLayout = new QVBoxLayout(planBox);
   planEditor_ = new PlanEditor();
   planEditor_->setObjectName("planEditor");
   planLayout->addWidget(planEditor_);
-  layout->addWidget(planBox, 3);
+  split->addWidget(planBox);
 
-  auto* side = new QVBoxLayout();
+  auto* sideWidget = new QWidget();
+  auto* side = new QVBoxLayout(sideWidget);
+  side->setContentsMargins(0, 0, 0, 0);
   auto* sourceBox = new QGroupBox(tr("Source"));
   auto* sourceForm = new QFormLayout(sourceBox);
   sourceCombo_ = new QComboBox();
   sourceCombo_->setObjectName("sourceCombo");
+  sourceCombo_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+  sourceCombo_->setMinimumContentsLength(12);
   sourceCombo_->addItem(tr("Built-in simulator"), "sim");
   sourceCombo_->addItem(tr("Replay of a session"), "replay");
   sourceCombo_->addItem(tr("Serial sampling board"), "serial");
@@ -164,6 +234,7 @@ QWidget* MainWindow::buildConfigureView() {
   replayEdit_->setObjectName("replayEdit");
   replayEdit_->setPlaceholderText(tr("session file (.fbs) to replay"));
   auto* browse = new QPushButton(tr("Browse…"));
+  browse->setObjectName("browseReplayButton");
   replayRow->addWidget(replayEdit_, 1);
   replayRow->addWidget(browse);
   sourceForm->addRow(tr("Source"), sourceCombo_);
@@ -175,15 +246,18 @@ QWidget* MainWindow::buildConfigureView() {
   portCombo_->setObjectName("portCombo");
   portCombo_->setEditable(true);  // a device the system does not list, e.g. a pseudo-terminal
   portCombo_->setToolTip(tr("The sampling board's serial port"));
+  portCombo_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+  portCombo_->setMinimumContentsLength(10);
   baudCombo_ = new QComboBox();
   baudCombo_->setObjectName("baudCombo");
   baudCombo_->setEditable(true);
   for (int baud : {921600, 460800, 230400, 115200, 1000000, 2000000}) baudCombo_->addItem(QString::number(baud));
   auto* rescan = new QPushButton(tr("Rescan"));
+  rescan->setObjectName("rescanButton");
   serialRow->addWidget(portCombo_, 1);
-  serialRow->addWidget(baudCombo_);
   serialRow->addWidget(rescan);
   sourceForm->addRow(tr("Serial port"), serialRow);
+  sourceForm->addRow(tr("Baud rate"), baudCombo_);
   auto listPorts = [this] {
     const QString current = portCombo_->currentText();
     portCombo_->clear();
@@ -205,6 +279,7 @@ QWidget* MainWindow::buildConfigureView() {
   folderEdit_ = new QLineEdit();
   folderEdit_->setObjectName("sessionFolderEdit");
   auto* chooseFolder = new QPushButton(tr("Choose…"));
+  chooseFolder->setObjectName("chooseFolderButton");
   folderRow->addWidget(folderEdit_, 1);
   folderRow->addWidget(chooseFolder);
   operatorEdit_ = new QLineEdit();
@@ -238,7 +313,9 @@ QWidget* MainWindow::buildConfigureView() {
   configureMessage_->setWordWrap(true);
   side->addWidget(configureMessage_);
   side->addStretch(1);
-  layout->addLayout(side, 2);
+  split->addWidget(sideWidget);
+  split->setStretchFactor(0, 3);
+  split->setStretchFactor(1, 2);
 
   auto sourceChanged = [this] { setRunning(runner_.isRunning()); };
   connect(sourceCombo_, qOverload<int>(&QComboBox::currentIndexChanged), this, sourceChanged);
@@ -274,9 +351,96 @@ QString MainWindow::aboutText() const {
 }
 
 void MainWindow::buildToolBar() {
-  auto* settings = menuBar()->addMenu(tr("&Settings"));
-  settings->addAction(tr("&Bench constants…"), this, [this] { findChild<QPushButton*>("editConstantsButton")->click(); });
-  auto* languages = settings->addMenu(tr("&Language"));
+  auto* bar = addToolBar(tr("Run"));
+  bar->setObjectName("runToolBar");
+  bar->setMovable(false);
+  runButton_ = new QPushButton(tr("Run"));
+  runButton_->setObjectName("runButton");
+  stopButton_ = new QPushButton(tr("Stop"));
+  stopButton_->setObjectName("stopButton");
+  stopButton_->setToolTip(tr("End the run now; everything received so far is kept and analysed"));
+  bar->addWidget(runButton_);
+  bar->addWidget(stopButton_);
+  connect(runButton_, &QPushButton::clicked, this, &MainWindow::startRun);
+  connect(stopButton_, &QPushButton::clicked, this, &MainWindow::stopRun);
+}
+
+void MainWindow::buildMenus() {
+  auto* file = menuBar()->addMenu(tr("&File"));
+  auto* open = file->addAction(tr("&Open session…"), this, [this] {
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open session"), sessionBrowser_->folder(),
+                                                      tr("fogbench sessions (*.fbs);;All files (*)"));
+    if (!path.isEmpty()) openSession(path);
+  });
+  open->setObjectName("openSessionAction");
+  open->setShortcut(QKeySequence::Open);
+  recentMenu_ = file->addMenu(tr("Open &recent"));
+  recentMenu_->setObjectName("recentMenu");
+  connect(recentMenu_, &QMenu::aboutToShow, this, &MainWindow::fillRecentMenu);
+  fillRecentMenu();
+  file->addSeparator();
+  auto* loadPlan = file->addAction(tr("&Load test plan…"), this, [this] {
+    const QString path = QFileDialog::getOpenFileName(this, tr("Load test plan"), sessionFolder(),
+                                                      tr("Test plans (*.json);;All files (*)"));
+    if (path.isEmpty()) return;
+    if (auto s = loadPlanFile(path); !s.isOk())
+      reportError(tr("Load test plan"), tr("Cannot load the test plan %1").arg(QFileInfo(path).fileName()),
+                  QString::fromStdString(s.message()));
+  });
+  loadPlan->setObjectName("loadPlanAction");
+  loadPlan->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_L));
+  auto* savePlan = file->addAction(tr("&Save test plan…"), this, [this] {
+    QString path = QFileDialog::getSaveFileName(this, tr("Save test plan"), QDir(sessionFolder()).filePath("plan.json"),
+                                                tr("Test plans (*.json)"));
+    if (path.isEmpty()) return;
+    if (QFileInfo(path).suffix().isEmpty()) path += ".json";
+    if (auto s = savePlanFile(path); !s.isOk())
+      reportError(tr("Save test plan"), tr("Cannot save the test plan as %1").arg(path),
+                  QString::fromStdString(s.message()));
+  });
+  savePlan->setObjectName("savePlanAction");
+  savePlan->setShortcut(QKeySequence::Save);
+  file->addSeparator();
+  auto* import = file->addAction(tr("&Import CSV data…"), this, [this] {
+    const QString dir = QFileDialog::getExistingDirectory(this, tr("Folder with metadata.json, table.csv, gyro.csv"));
+    if (!dir.isEmpty()) importCsv(dir);
+  });
+  import->setObjectName("importAction");
+  openExportFolderAction_ = file->addAction(tr("Open the &export folder"), this, &MainWindow::openExportFolder);
+  openExportFolderAction_->setObjectName("openExportFolderAction");
+  openExportFolderAction_->setToolTip(tr("Show the folder of the last export (plot or report)"));
+  file->addSeparator();
+  auto* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
+  quit->setObjectName("quitAction");
+  quit->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Q));
+  quit->setMenuRole(QAction::QuitRole);
+
+  auto* run = menuBar()->addMenu(tr("&Run"));
+  runAction_ = run->addAction(tr("&Run"), this, &MainWindow::startRun);
+  runAction_->setObjectName("runAction");
+  runAction_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
+  stopAction_ = run->addAction(tr("&Stop"), this, &MainWindow::stopRun);
+  stopAction_->setObjectName("stopAction");
+  stopAction_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Period));
+  stopAction_->setToolTip(tr("End the run now; everything received so far is kept and analysed"));
+  run->addSeparator();
+  auto* diagnose = run->addAction(tr("&Diagnose the shown result"), this, &MainWindow::diagnoseShown);
+  diagnose->setObjectName("diagnoseAction");
+
+  auto* view = menuBar()->addMenu(tr("&View"));
+  const QStringList names = {tr("&Configure"), tr("&Live"), tr("&Results"), tr("&Sessions"), tr("&Diagnosis"),
+                             tr("&Noise")};
+  for (int i = 0; i < names.size(); ++i) {
+    auto* action = view->addAction(names[i], this, [this, i] { showView(static_cast<View>(i)); });
+    action->setObjectName(QString("viewAction%1").arg(i));
+    action->setShortcut(QKeySequence(Qt::CTRL | static_cast<Qt::Key>(Qt::Key_1 + i)));
+  }
+
+  auto* tools = menuBar()->addMenu(tr("&Tools"));
+  auto* constants = tools->addAction(tr("&Bench constants…"), this,
+                                     [this] { findChild<QPushButton*>("editConstantsButton")->click(); });
+  constants->setObjectName("benchConstantsAction");
+  auto* languages = tools->addMenu(tr("&Language"));
   auto* group = new QActionGroup(languages);
   const QString current = languageSetting();
   QStringList codes = {"system"};
@@ -292,23 +456,143 @@ void MainWindow::buildToolBar() {
       tell(tr("The language changes when fogbench starts again."));
     });
   }
+
   auto* help = menuBar()->addMenu(tr("&Help"));
+  auto* guide = help->addAction(tr("&Shortcuts"), this, [this] {
+    showMessage(this, MessageKind::kInformation, tr("Shortcuts"), tr("Keyboard shortcuts"),
+                tr("Run: Ctrl+R\nStop: Ctrl+.\nOpen a session: Ctrl+O\nLoad a test plan: Ctrl+L\n"
+                   "Save the test plan: Ctrl+S\nViews: Ctrl+1 … Ctrl+6\nQuit: Ctrl+Q"));
+  });
+  guide->setObjectName("shortcutsAction");
   auto* about = help->addAction(tr("&About fogbench"));
   about->setObjectName("aboutAction");
+  about->setMenuRole(QAction::AboutRole);
   connect(about, &QAction::triggered, this, [this] { QMessageBox::about(this, tr("About fogbench"), aboutText()); });
+}
 
-  auto* bar = addToolBar(tr("Run"));
-  bar->setObjectName("runToolBar");
-  bar->setMovable(false);
-  runButton_ = new QPushButton(tr("Run"));
-  runButton_->setObjectName("runButton");
-  stopButton_ = new QPushButton(tr("Stop"));
-  stopButton_->setObjectName("stopButton");
-  stopButton_->setToolTip(tr("End the run now; everything received so far is kept and analysed"));
-  bar->addWidget(runButton_);
-  bar->addWidget(stopButton_);
-  connect(runButton_, &QPushButton::clicked, this, &MainWindow::startRun);
-  connect(stopButton_, &QPushButton::clicked, this, &MainWindow::stopRun);
+void MainWindow::fillRecentMenu() {
+  recentMenu_->clear();
+  const QStringList recent = recentSessions();
+  for (const QString& path : recent) {
+    auto* action = recentMenu_->addAction(QFileInfo(path).fileName(), this, [this, path] { openSession(path); });
+    action->setToolTip(path);
+    action->setStatusTip(path);
+  }
+  if (recent.isEmpty()) recentMenu_->addAction(tr("(none yet)"))->setEnabled(false);
+  recentMenu_->setEnabled(true);
+}
+
+QStringList MainWindow::recentSessions() const { return QSettings().value("sessions/recent").toStringList(); }
+
+void MainWindow::addRecentSession(const QString& path) {
+  if (path.isEmpty()) return;
+  QStringList recent = recentSessions();
+  const QString absolute = QFileInfo(path).absoluteFilePath();
+  recent.removeAll(absolute);
+  recent.prepend(absolute);
+  while (recent.size() > kMaxRecentSessions) recent.removeLast();
+  QSettings().setValue("sessions/recent", recent);
+}
+
+Status MainWindow::loadPlanFile(const QString& path) {
+  std::ifstream in(path.toStdString(), std::ios::binary);
+  if (!in) return ioError("cannot read '" + path.toStdString() + "'; check the name and that the file is readable");
+  std::ostringstream text;
+  text << in.rdbuf();
+  auto plan = testPlanFromJson(text.str());
+  if (!plan) return plan.status();
+  planEditor_->setPlan(*plan);
+  tell(tr("Test plan loaded from %1").arg(QDir::toNativeSeparators(path)));
+  return Status::ok();
+}
+
+Status MainWindow::savePlanFile(const QString& path) {
+  std::ofstream out(path.toStdString(), std::ios::binary | std::ios::trunc);
+  if (!out) return ioError("cannot write '" + path.toStdString() + "'; choose a folder you can write to");
+  out << testPlanToJson(planEditor_->plan()) << '\n';
+  out.close();
+  if (!out) return ioError("writing '" + path.toStdString() + "' failed; check the free space");
+  tell(tr("Test plan saved as %1").arg(QDir::toNativeSeparators(path)));
+  return Status::ok();
+}
+
+void MainWindow::rememberState() {
+  if (!remembering_ || restoring_) return;
+  QSettings s;
+  s.beginGroup("state");
+  s.setValue("plan", QString::fromStdString(testPlanToJson(planEditor_->plan())));
+  s.setValue("pace", speedCombo_->currentData().toDouble());
+  s.setValue("operator", operatorEdit_->text());
+  s.setValue("imuModel", imuModelEdit_->text());
+  s.setValue("imuSerial", imuSerialEdit_->text());
+}
+
+void MainWindow::restoreState() {
+  restoring_ = true;
+  QSettings s;
+  s.beginGroup("state");
+  if (s.contains("plan"))
+    if (auto plan = testPlanFromJson(s.value("plan").toString().toStdString()); plan) planEditor_->setPlan(*plan);
+  if (s.contains("pace")) {
+    const double pace = s.value("pace").toDouble();
+    const int i = speedCombo_->findData(pace);
+    if (i >= 0) speedCombo_->setCurrentIndex(i);
+    else if (pace >= 0.0) {
+      speedCombo_->addItem(tr("%1× real time").arg(pace), pace);
+      speedCombo_->setCurrentIndex(speedCombo_->count() - 1);
+    }
+  }
+  operatorEdit_->setText(s.value("operator").toString());
+  imuModelEdit_->setText(s.value("imuModel").toString());
+  imuSerialEdit_->setText(s.value("imuSerial").toString());
+  restoring_ = false;
+}
+
+void MainWindow::reportError(const QString& title, const QString& headline, const QString& details) {
+  tell(headline);
+  showMessage(this, MessageKind::kError, title, headline, details);
+}
+
+void MainWindow::exported(const QString& path) {
+  lastExport_ = path;
+  openExportFolderAction_->setEnabled(true);
+  tell(tr("Saved %1 — File ▸ Open the export folder shows it").arg(QDir::toNativeSeparators(path)));
+}
+
+void MainWindow::openExportFolder() {
+  const QString folder = lastExport_.isEmpty() ? sessionFolder() : QFileInfo(lastExport_).absolutePath();
+  if (folder.isEmpty()) return;
+  if (!QDesktopServices::openUrl(QUrl::fromLocalFile(folder)))
+    reportError(tr("Open the export folder"), tr("Cannot open the folder %1").arg(QDir::toNativeSeparators(folder)),
+                tr("No file manager answered; open the folder by hand: %1").arg(QDir::toNativeSeparators(folder)));
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+  if (!runner_.isRunning()) {
+    event->accept();
+    return;
+  }
+  event->ignore();
+  // Non-modal: the run goes on while the operator decides.
+  auto* box = findChild<QMessageBox*>("closeConfirmDialog", Qt::FindDirectChildrenOnly);
+  if (!box) {
+    box = new QMessageBox(QMessageBox::Question, tr("A run is under way"),
+                          tr("A run is under way. Stop it and close fogbench?"), QMessageBox::NoButton, this);
+    box->setObjectName("closeConfirmDialog");  // kept when closed, reused
+    box->setWindowModality(Qt::NonModal);
+    box->setInformativeText(tr("Stopping keeps everything received so far in the session file, marked incomplete."));
+    auto* stop = box->addButton(tr("Stop the run and close"), QMessageBox::AcceptRole);
+    stop->setObjectName("stopAndCloseButton");
+    auto* keep = box->addButton(tr("Keep running"), QMessageBox::RejectRole);
+    keep->setObjectName("keepRunningButton");
+    box->setDefaultButton(keep);
+    connect(stop, &QPushButton::clicked, this, [this] {
+      closeAfterRun_ = true;
+      stopRun();
+    });
+  }
+  box->show();
+  box->raise();
 }
 
 void MainWindow::showView(View view) { tabs_->setCurrentIndex(view); }
@@ -334,8 +618,10 @@ void MainWindow::useReplay(const QString& sessionPath, double speed) {
 void MainWindow::setSessionFolder(const QString& folder) {
   folderEdit_->setText(folder);
   recordCheck_->setChecked(!folder.isEmpty());
+  resultView_->setExportFolder(folder);
   if (!folder.isEmpty()) {
-    QSettings().setValue("sessions/folder", folder);
+    // A one-off folder (fogbench --session-folder) is not remembered.
+    if (remembering_) QSettings().setValue("sessions/folder", folder);
     if (sessionBrowser_->folder() != folder) sessionBrowser_->setFolder(folder);
   }
 }
@@ -382,11 +668,12 @@ void MainWindow::updateRunButton() {
   else if (sourceCombo_->currentData().toString() == "serial" && serialPort().isEmpty())
     why = tr("choose the sampling board's serial port");
   runButton_->setEnabled(why.isEmpty());
+  runAction_->setEnabled(why.isEmpty());
   runButton_->setToolTip(why.isEmpty() ? tr("Start the run") : tr("Cannot run: %1").arg(why));
   if (!runner_.isRunning()) {
     configureMessage_->setText(why.isEmpty() ? QString()
                                              : tr("<span style='color:#b00000'>Cannot run: %1</span>")
-                                                   .arg(why.toHtmlEscaped()));
+                                                   .arg(why.toHtmlEscaped().replace("\n", "<br>")));
   }
 }
 
@@ -469,8 +756,11 @@ void MainWindow::startRun() {
       showFailure(tr("cannot create the session folder '%1'; choose another one").arg(folder));
       return;
     }
+    // The serial as far as every file system takes it ("SN 7/a" -> "SN_7_a").
+    QString serial = imuSerialEdit_->text().trimmed();
+    serial.replace(QRegularExpression("[^A-Za-z0-9._-]+"), "_");
     const QString name = QDateTime::currentDateTimeUtc().toString("yyyyMMdd-HHmmss-zzz") +
-                         (imuSerialEdit_->text().isEmpty() ? QString() : "-" + imuSerialEdit_->text()) + ".fbs";
+                         (serial.isEmpty() ? QString() : "-" + serial) + ".fbs";
     request.options.sessionPath = QDir(folder).filePath(name).toStdString();
   }
 
@@ -482,6 +772,7 @@ void MainWindow::startRun() {
   showHealth({}, 0);
   runClock_.start();
   if (!runner_.start(std::move(request))) return;
+  stopRequested_ = false;
   setRunning(true);
   liveTimer_.start();
   showView(kLive);
@@ -497,13 +788,16 @@ QString MainWindow::serialPort() const {
 
 void MainWindow::stopRun() {
   if (!runner_.isRunning()) return;
+  stopRequested_ = true;
   runner_.stop();
   stopButton_->setEnabled(false);
+  stopAction_->setEnabled(false);
   tell(tr("Stopping: everything received so far is kept …"));
 }
 
 void MainWindow::setRunning(bool running) {
   stopButton_->setEnabled(running);
+  stopAction_->setEnabled(running);
   planEditor_->setReadOnly(running);
   for (QWidget* w : std::initializer_list<QWidget*>{sourceCombo_, speedCombo_, seedSpin_, replayEdit_, recordCheck_,
                                                     folderEdit_, portCombo_, baudCombo_})
@@ -533,15 +827,26 @@ void MainWindow::drainLive() {
 }
 
 void MainWindow::showHealth(const StreamHealth& h, std::uint64_t dropped) {
-  QString text = tr("frames: %1 table · %2 IMU · %3 status  ·  checksum failures: %4  ·  lost: %5  ·  duplicates: %6")
-                     .arg(h.tableFrames)
-                     .arg(h.imuFrames)
-                     .arg(h.statusFrames)
+  // Short, so that the status bar keeps room for messages; the breakdown is
+  // in the tooltip.
+  QString text = tr("frames: %1 · checksum failures: %2 · lost: %3 · duplicates: %4")
+                     .arg(h.tableFrames + h.imuFrames + h.statusFrames)
                      .arg(h.checksumFailures)
                      .arg(h.lostFrames)
                      .arg(h.duplicateFrames);
-  if (dropped > 0) text += tr("  ·  display skipped %1 frames (all recorded)").arg(dropped);
+  QString tip = tr("frames: %1 table · %2 IMU · %3 status  ·  checksum failures: %4  ·  lost: %5  ·  duplicates: %6")
+                    .arg(h.tableFrames)
+                    .arg(h.imuFrames)
+                    .arg(h.statusFrames)
+                    .arg(h.checksumFailures)
+                    .arg(h.lostFrames)
+                    .arg(h.duplicateFrames);
+  if (dropped > 0) {
+    text += tr(" · display skipped %1").arg(dropped);
+    tip += tr("  ·  display skipped %1 frames (all recorded)").arg(dropped);
+  }
   framesLabel_->setText(text + " ");
+  framesLabel_->setToolTip(tip);
 }
 
 void MainWindow::showOutcome(std::shared_ptr<const RunOutcome> outcome) {
@@ -567,23 +872,38 @@ void MainWindow::showOutcome(std::shared_ptr<const RunOutcome> outcome) {
     message += tr(". Saved as %1").arg(QFileInfo(QString::fromStdString(outcome->sessionPath)).fileName());
   tell(message);
   configureMessage_->setText(message.toHtmlEscaped());
+  // A run the operator did not stop that ended early, or gave no delay, is
+  // explained whole (the status bar line is cut and soon overwritten).
+  // (Not when the operator stopped it: they know.)
+  if (!stopRequested_ && !outcome->complete)
+    showMessage(this, MessageKind::kError, tr("Run incomplete"),
+                tr("The run ended early; everything received is kept and analysed."), message);
+  else if (!stopRequested_ && !delay)
+    showMessage(this, MessageKind::kError, tr("No delay"), tr("The run gave no delay."), message);
   sessionBrowser_->refresh();
-  if (!outcome->sessionPath.empty()) sessionBrowser_->selectPath(QString::fromStdString(outcome->sessionPath));
+  if (!outcome->sessionPath.empty()) {
+    sessionBrowser_->selectPath(QString::fromStdString(outcome->sessionPath));
+    addRecentSession(QString::fromStdString(outcome->sessionPath));
+  }
   showView(kResults);
   emit runEnded(delay);
+  if (closeAfterRun_) QTimer::singleShot(0, this, &QWidget::close);
 }
 
 void MainWindow::showFailure(const QString& message) {
   liveTimer_.stop();
   setRunning(false);
+  reportError(tr("Run failed"), tr("Run failed"), message);
   tell(tr("Run failed: %1").arg(message));
   configureMessage_->setText(tr("<span style='color:#b00000'>Run failed: %1</span>").arg(message.toHtmlEscaped()));
   emit runEnded(false);
+  if (closeAfterRun_) QTimer::singleShot(0, this, &QWidget::close);
 }
 
 void MainWindow::loadSession(const QString& path, bool reanalyse,
                              std::function<void(std::shared_ptr<const RunOutcome>)> done) {
-  tell(reanalyse ? tr("Re-analysing %1 …").arg(path) : tr("Opening %1 …").arg(path));
+  const QString name = QFileInfo(path).fileName();
+  tell(reanalyse ? tr("Re-analysing %1 …").arg(name) : tr("Opening %1 …").arg(name));
   const BenchSettings bench = bench_;
   // QFuture needs a default-constructible value: the outcome, or why not.
   struct Loaded {
@@ -591,16 +911,25 @@ void MainWindow::loadSession(const QString& path, bool reanalyse,
     Status status;
   };
   auto* watcher = new QFutureWatcher<Loaded>(this);
-  connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, path, reanalyse, done] {
+  connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, path, name, reanalyse, done] {
     const Loaded result = watcher->result();
     watcher->deleteLater();
     if (!result.outcome) {
-      tell(tr("Cannot open %1: %2").arg(path, QString::fromStdString(result.status.message())));
+      reportError(reanalyse ? tr("Re-analyse") : tr("Open session"),
+                  reanalyse ? tr("Cannot re-analyse %1").arg(name) : tr("Cannot open %1").arg(name),
+                  tr("%1\n\nFile: %2").arg(QString::fromStdString(result.status.message()), QDir::toNativeSeparators(path)));
       done(nullptr);
       return;
     }
-    tell(reanalyse ? tr("%1: re-analysed with the bench constants; the result was added to the session").arg(path)
-                   : tr("%1: read-only review").arg(path));
+    if (reanalyse) {
+      tell(tr("%1: re-analysed with the bench constants; the result was added to the session").arg(name));
+      showMessage(this, MessageKind::kInformation, tr("Re-analyse"), tr("%1 re-analysed").arg(name),
+                  tr("The session was analysed with the current bench constants and the result was added to it; "
+                     "its recorded data did not change.\n\nFile: %1").arg(QDir::toNativeSeparators(path)));
+    } else {
+      tell(tr("%1: read-only review").arg(name));
+      addRecentSession(path);
+    }
     done(result.outcome);
   });
   // Reading and fitting a long session takes a while: off the GUI thread.
@@ -651,7 +980,9 @@ void MainWindow::importCsv(const QString& csvFolder) {
   QString folder = sessionBrowser_->folder();
   if (folder.isEmpty()) folder = sessionFolder();
   if (folder.isEmpty() || !QDir().mkpath(folder)) {
-    tell(tr("Choose a session folder to import into first."));
+    reportError(tr("Import CSV data"), tr("Choose a session folder to import into first."),
+                tr("The imported data becomes a session file in the session folder; choose a folder you can write to "
+                   "in the Sessions view."));
     emit importEnded(QString());
     return;
   }
@@ -663,6 +994,8 @@ void MainWindow::importCsv(const QString& csvFolder) {
     const Status s = watcher->result();
     watcher->deleteLater();
     if (!s.isOk()) {
+      reportError(tr("Import CSV data"), tr("Cannot import %1").arg(QDir::toNativeSeparators(csvFolder)),
+                  QString::fromStdString(s.message()));
       tell(tr("Cannot import %1: %2").arg(csvFolder, QString::fromStdString(s.message())));
       emit importEnded(QString());
       return;
@@ -697,6 +1030,7 @@ void MainWindow::diagnoseShown() {
     watcher->deleteLater();
     if (!done.result) {
       diagnosisView_->showMessage(tr("No diagnosis: %1").arg(QString::fromStdString(done.status.message())));
+      reportError(tr("Diagnosis"), tr("No diagnosis of %1").arg(title), QString::fromStdString(done.status.message()));
       tell(tr("No diagnosis of %1: %2").arg(title, QString::fromStdString(done.status.message())));
       emit diagnosisEnded(false);
       return;
@@ -772,7 +1106,10 @@ void MainWindow::compareSessions(const QString& first, const QString& second) {
       if (guard && o) guard->showOutcome(o);
     });
   }
-  dialog->resize(1600, 900);
+  // As large as the screen allows, up to 1600 x 900.
+  QSize size(1600, 900);
+  if (const QScreen* screen = this->screen()) size = size.boundedTo(screen->availableGeometry().size() * 0.95);
+  dialog->resize(size);
   dialog->show();
 }
 

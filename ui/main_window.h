@@ -10,9 +10,14 @@
 //
 // The window owns an AcquisitionRunner and reacts to its signals; it drains
 // the runner's buffer on a ~30 Hz timer and never waits for a worker.
-// Failures are shown in the status bar and on the Configure view (no modal
-// dialog unless the operator asked for an action), so an unattended window
-// never blocks.
+// Failures are shown whole in a non-modal message box (ui/messages.h: the
+// text selectable, never a blocking dialog, so an unattended window never
+// blocks), briefly in the status bar and on the Configure view.
+//
+// Every view sits in a scroll area and the wide ones are split, so that the
+// window fits a 1366x768 laptop screen and stays workable at 1024x700.
+// The plan, pace, operator, IMU and session folder are remembered between
+// starts (QSettings); plans load and save in the CLI's JSON plan format.
 
 #include <QElapsedTimer>
 #include <QFutureWatcher>
@@ -23,7 +28,10 @@
 #include "common/session_info.h"
 #include "ui/acquisition_runner.h"
 
+class QAction;
 class QCheckBox;
+class QCloseEvent;
+class QMenu;
 class QComboBox;
 class QLabel;
 class QLineEdit;
@@ -64,6 +72,17 @@ class MainWindow : public QMainWindow {
   void useReplay(const QString& sessionPath, double speed);
   // Where sessions are recorded; empty: runs are not recorded.
   void setSessionFolder(const QString& folder);
+  // Whether the operator's choices (plan, pace, operator, IMU model and
+  // serial, session folder) are remembered for the next start. Off while the
+  // command line applies one-off choices (--session-folder, --preset).
+  void setRemembering(bool remembering) { remembering_ = remembering; }
+  // Test plans in the CLI's JSON format (fogbench-cli run --plan FILE).
+  Status loadPlanFile(const QString& path);
+  Status savePlanFile(const QString& path);
+  // Sessions recently recorded or opened, newest first (remembered).
+  QStringList recentSessions() const;
+  // The file the last export wrote (empty before one).
+  QString lastExport() const { return lastExport_; }
   QString sessionFolder() const;
   void setBenchSettings(const BenchSettings& settings);
   const BenchSettings& benchSettings() const { return bench_; }
@@ -87,6 +106,9 @@ class MainWindow : public QMainWindow {
   // The sim-to-real diagnosis of the shown result, in the background; shown
   // in the Diagnosis view.
   void diagnoseShown();
+  // Opens the folder of the last export (or the session folder) in the
+  // desktop's file manager.
+  void openExportFolder();
 
  signals:
   // Every started run ends with this, once its results (or error) are shown.
@@ -100,9 +122,22 @@ class MainWindow : public QMainWindow {
   // After every shown result: whether its static segments gave a noise analysis.
   void noiseAnalysed(bool succeeded);
 
+ protected:
+  // Closing during a run asks first (non-modal): stop the run and close, or
+  // keep running.
+  void closeEvent(QCloseEvent* event) override;
+
  private:
   QWidget* buildConfigureView();
   void buildToolBar();
+  void buildMenus();
+  // An error the operator must read whole: message box + status bar.
+  void reportError(const QString& title, const QString& headline, const QString& details);
+  void rememberState();
+  void restoreState();
+  void addRecentSession(const QString& path);
+  void fillRecentMenu();
+  void exported(const QString& path);
   void drainLive();
   void setRunning(bool running);
   void showOutcome(std::shared_ptr<const RunOutcome> outcome);
@@ -123,6 +158,11 @@ class MainWindow : public QMainWindow {
   BenchSettings bench_;
   std::shared_ptr<const RunOutcome> shown_;
   QString lastMessage_;
+  QString lastExport_;
+  bool remembering_ = true;
+  bool restoring_ = false;
+  bool stopRequested_ = false;
+  bool closeAfterRun_ = false;
 
   QTabWidget* tabs_ = nullptr;
   PlanEditor* planEditor_ = nullptr;
@@ -149,6 +189,10 @@ class MainWindow : public QMainWindow {
   QLabel* configureMessage_ = nullptr;
   QLabel* constantsLabel_ = nullptr;
   QLabel* framesLabel_ = nullptr;
+  QAction* runAction_ = nullptr;
+  QAction* stopAction_ = nullptr;
+  QAction* openExportFolderAction_ = nullptr;
+  QMenu* recentMenu_ = nullptr;
 };
 
 }  // namespace fog::ui
