@@ -98,7 +98,7 @@ ResultView::ResultView(QWidget* parent) : QWidget(parent) {
   testPointCombo_ = new QComboBox();
   testPointCombo_->setObjectName("testPointCombo");
   testPointCombo_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-  testPointCombo_->setMinimumContentsLength(14);
+  testPointCombo_->setMinimumContentsLength(8);
   row->addWidget(testPointCombo_);
   lagLabel_ = new QLabel();
   lagLabel_->setObjectName("lagLabel");
@@ -106,8 +106,8 @@ ResultView::ResultView(QWidget* parent) : QWidget(parent) {
   // Wraps on a narrow window (a laptop, the Compare window) instead of
   // widening it.
   lagLabel_->setWordWrap(true);
-  row->addSpacing(12);
-  row->addWidget(lagLabel_, 1);
+  lagLabel_->setMinimumWidth(120);  // (Qt 5 asks a wrapping label for much more)
+  row->addStretch(1);
   diagnoseButton_ = new QPushButton(tr("Diagnose"));
   diagnoseButton_->setObjectName("diagnoseButton");
   diagnoseButton_->setToolTip(tr("Compare with the simulator replaying this session: where the gap lies and which "
@@ -120,6 +120,9 @@ ResultView::ResultView(QWidget* parent) : QWidget(parent) {
   exportButton_->setPopupMode(QToolButton::InstantPopup);
   row->addWidget(exportButton_);
   layout->addLayout(row);
+  // The lag on a line of its own: the row above stays narrow enough for the
+  // Compare window's two columns.
+  layout->addWidget(lagLabel_);
   // The core's verdict on the shown test point (analysis/verdict.h), with
   // its reasons in full: an invalid delay is never shown without them.
   verdictLabel_ = new QLabel();
@@ -152,6 +155,9 @@ ResultView::ResultView(QWidget* parent) : QWidget(parent) {
   right->addWidget(fitTable_);
   right->addWidget(delayTable_);
   right->addWidget(frequencyPlot_);
+  // The tables keep what they need; the plot takes the rest.
+  right->setStretchFactor(0, 0);
+  right->setStretchFactor(1, 0);
   right->setStretchFactor(2, 1);
 
   reportView_ = new QPlainTextEdit();
@@ -222,7 +228,7 @@ void ResultView::buildFrequencyPlot() {
   frequencyPlot_->setAxisTitle(QwtPlot::yLeft, tr("lag (ms), ±1σ"));
   frequencyPlot_->setCanvasBackground(Qt::white);
   frequencyPlot_->insertLegend(new QwtLegend(), QwtPlot::BottomLegend);
-  frequencyPlot_->setMinimumSize(200, 130);
+  frequencyPlot_->setMinimumSize(200, 170);
 }
 
 void ResultView::clear() {
