@@ -238,8 +238,12 @@ QWidget* MainWindow::buildConfigureView() {
   replayRow->addWidget(replayEdit_, 1);
   replayRow->addWidget(browse);
   sourceForm->addRow(tr("Source"), sourceCombo_);
-  sourceForm->addRow(tr("Pace"), speedCombo_);
-  sourceForm->addRow(tr("Seed"), seedSpin_);
+  // Pace and seed share a row: the column fits a laptop screen's height.
+  auto* paceRow = new QHBoxLayout();
+  paceRow->addWidget(speedCombo_, 1);
+  paceRow->addWidget(new QLabel(tr("Seed")));
+  paceRow->addWidget(seedSpin_);
+  sourceForm->addRow(tr("Pace"), paceRow);
   sourceForm->addRow(tr("Replay"), replayRow);
   auto* serialRow = new QHBoxLayout();
   portCombo_ = new QComboBox();
@@ -298,14 +302,15 @@ QWidget* MainWindow::buildConfigureView() {
   side->addWidget(sessionBox);
 
   auto* constantsBox = new QGroupBox(tr("Bench constants"));
-  auto* constantsLayout = new QVBoxLayout(constantsBox);
+  auto* constantsLayout = new QHBoxLayout(constantsBox);  // side by side: saves height on a laptop
   constantsLabel_ = new QLabel();
   constantsLabel_->setObjectName("constantsLabel");
-  constantsLabel_->setWordWrap(true);
-  auto* edit = new QPushButton(tr("Edit bench constants…"));
+
+  auto* edit = new QPushButton(tr("Edit…"));
+  edit->setToolTip(tr("Edit the bench constants"));
   edit->setObjectName("editConstantsButton");
-  constantsLayout->addWidget(constantsLabel_);
-  constantsLayout->addWidget(edit);
+  constantsLayout->addWidget(constantsLabel_, 1);
+  constantsLayout->addWidget(edit, 0, Qt::AlignTop);
   side->addWidget(constantsBox);
 
   configureMessage_ = new QLabel();
@@ -388,7 +393,7 @@ void MainWindow::buildMenus() {
                   QString::fromStdString(s.message()));
   });
   loadPlan->setObjectName("loadPlanAction");
-  loadPlan->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_L));
+  loadPlan->setShortcut(QKeySequence(QStringLiteral("Ctrl+L")));
   auto* savePlan = file->addAction(tr("&Save test plan…"), this, [this] {
     QString path = QFileDialog::getSaveFileName(this, tr("Save test plan"), QDir(sessionFolder()).filePath("plan.json"),
                                                 tr("Test plans (*.json)"));
@@ -412,16 +417,16 @@ void MainWindow::buildMenus() {
   file->addSeparator();
   auto* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
   quit->setObjectName("quitAction");
-  quit->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Q));
+  quit->setShortcut(QKeySequence(QStringLiteral("Ctrl+Q")));
   quit->setMenuRole(QAction::QuitRole);
 
   auto* run = menuBar()->addMenu(tr("&Run"));
   runAction_ = run->addAction(tr("&Run"), this, &MainWindow::startRun);
   runAction_->setObjectName("runAction");
-  runAction_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
+  runAction_->setShortcut(QKeySequence(QStringLiteral("Ctrl+R")));
   stopAction_ = run->addAction(tr("&Stop"), this, &MainWindow::stopRun);
   stopAction_->setObjectName("stopAction");
-  stopAction_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Period));
+  stopAction_->setShortcut(QKeySequence(QStringLiteral("Ctrl+.")));
   stopAction_->setToolTip(tr("End the run now; everything received so far is kept and analysed"));
   run->addSeparator();
   auto* diagnose = run->addAction(tr("&Diagnose the shown result"), this, &MainWindow::diagnoseShown);
@@ -433,7 +438,7 @@ void MainWindow::buildMenus() {
   for (int i = 0; i < names.size(); ++i) {
     auto* action = view->addAction(names[i], this, [this, i] { showView(static_cast<View>(i)); });
     action->setObjectName(QString("viewAction%1").arg(i));
-    action->setShortcut(QKeySequence(Qt::CTRL | static_cast<Qt::Key>(Qt::Key_1 + i)));
+    action->setShortcut(QKeySequence(QString("Ctrl+%1").arg(i + 1)));
   }
 
   auto* tools = menuBar()->addMenu(tr("&Tools"));
@@ -630,7 +635,9 @@ QString MainWindow::sessionFolder() const { return recordCheck_->isChecked() ? f
 
 void MainWindow::setBenchSettings(const BenchSettings& s) {
   bench_ = s;
-  constantsLabel_->setText(tr("table read delay %1 ms · board delay %2 ms · latitude %3° · pulse equivalent %4° · "
+  // Line breaks of its own, no word wrap: a wrapping label would let the
+  // column be squeezed under its real height on a small screen.
+  constantsLabel_->setText(tr("table read delay %1 ms · board delay %2 ms\nlatitude %3° · pulse equivalent %4°\n"
                               "counter %5 MHz / %6 bit")
                                .arg(s.tableReadDelayMs)
                                .arg(s.boardDelayMs)

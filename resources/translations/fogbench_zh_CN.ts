@@ -377,12 +377,12 @@
     </message>
     <message>
         <location line="+3"/>
-        <location line="+889"/>
+        <location line="+896"/>
         <source>Diagnosis</source>
         <translation>诊断</translation>
     </message>
     <message>
-        <location line="-886"/>
+        <location line="-893"/>
         <source>Noise</source>
         <translation>噪声</translation>
     </message>
@@ -453,17 +453,17 @@
         <translation>浏览…</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+10"/>
         <source>Pace</source>
         <translation>速度</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-2"/>
         <source>Seed</source>
         <translation>种子</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source>Replay</source>
         <translation>回放</translation>
     </message>
@@ -533,12 +533,7 @@
         <translation>测试台常数</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>Edit bench constants…</source>
-        <translation>编辑测试台常数…</translation>
-    </message>
-    <message>
-        <location line="+20"/>
+        <location line="+26"/>
         <source>Session to replay</source>
         <translation>要回放的会话</translation>
     </message>
@@ -599,7 +594,17 @@
         <translation>运行</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-53"/>
+        <source>Edit…</source>
+        <translation>编辑…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Edit the bench constants</source>
+        <translation>编辑测试台常数</translation>
+    </message>
+    <message>
+        <location line="+54"/>
         <source>Stop</source>
         <translation>停止</translation>
     </message>
@@ -621,12 +626,12 @@
     </message>
     <message>
         <location line="+1"/>
-        <location line="+547"/>
+        <location line="+549"/>
         <source>Open session</source>
         <translation>打开会话</translation>
     </message>
     <message>
-        <location line="-546"/>
+        <location line="-548"/>
         <source>fogbench sessions (*.fbs);;All files (*)</source>
         <translation>fogbench 会话 (*.fbs);;所有文件 (*)</translation>
     </message>
@@ -857,9 +862,13 @@ Quit: Ctrl+Q</source>
         <translation>继续运行</translation>
     </message>
     <message>
-        <location line="+47"/>
-        <source>table read delay %1 ms · board delay %2 ms · latitude %3° · pulse equivalent %4° · counter %5 MHz / %6 bit</source>
-        <translation>转台读数延迟 %1 ms · 处理板延迟 %2 ms · 纬度 %3° · 脉冲当量 %4° · 计数器 %5 MHz / %6 位</translation>
+        <location line="+49"/>
+        <source>table read delay %1 ms · board delay %2 ms
+latitude %3° · pulse equivalent %4°
+counter %5 MHz / %6 bit</source>
+        <translation>转台读数延迟 %1 ms · 处理板延迟 %2 ms
+纬度 %3° · 脉冲当量 %4°
+计数器 %5 MHz / %6 位</translation>
     </message>
     <message>
         <location line="+31"/>
@@ -1449,7 +1458,7 @@ File: %1</source>
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../../ui/main_window.cpp" line="-1028"/>
+        <location filename="../../ui/main_window.cpp" line="-1035"/>
         <location filename="../../ui/plan_editor.cpp" line="-270"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
@@ -2537,7 +2546,7 @@ File: %1</source>
         <translation>导出</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+16"/>
         <source>Normalised angles and fits</source>
         <translation>归一化角度及拟合</translation>
     </message>
@@ -2612,7 +2621,7 @@ File: %1</source>
         <translation>依据</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+25"/>
         <source>The delay report appears here after a run.</source>
         <translation>运行结束后，延迟报告显示在这里。</translation>
     </message>
