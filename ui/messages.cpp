@@ -30,14 +30,14 @@ QMessageBox* showMessage(QWidget* parent, MessageKind kind, const QString& title
 }
 
 QString displayUnits(const QString& text) {
-  static const QRegularExpression accel(QStringLiteral("\\bdeg/s\\^2\\b|\\bdeg/s²"));
-  static const QRegularExpression rate(QStringLiteral("\\bdeg/s\\b"));
-  static const QRegularExpression perHour(QStringLiteral("\\bdeg/h\\b"));
+  static const QRegularExpression per(QStringLiteral("\\bdeg/"));
+  static const QRegularExpression squared(QStringLiteral("/s\\^2\\b"));
+  static const QRegularExpression root(QStringLiteral("sqrt\\(h\\)"));
   static const QRegularExpression angle(QStringLiteral("(\\d) ?deg\\b"));
   QString out = text;
-  out.replace(accel, QStringLiteral("°/s²"));
-  out.replace(rate, QStringLiteral("°/s"));
-  out.replace(perHour, QStringLiteral("°/h"));
+  out.replace(per, QStringLiteral("°/"));
+  out.replace(squared, QStringLiteral("/s²"));
+  out.replace(root, QStringLiteral("√h"));
   out.replace(angle, QStringLiteral("\\1°"));
   return out;
 }

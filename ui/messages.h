@@ -21,8 +21,9 @@ enum class MessageKind {
 QMessageBox* showMessage(QWidget* parent, MessageKind kind, const QString& title, const QString& headline,
                          const QString& details);
 
-// The core's messages speak ASCII units ("deg", "deg/s^2"); the GUI shows
-// the symbols it uses everywhere else ("°", "°/s²").
+// The core's messages and units speak ASCII ("50 deg", "deg/s^2",
+// "deg/sqrt(h)"); the GUI shows the symbols it uses everywhere else ("50°",
+// "°/s²", "°/√h").
 QString displayUnits(const QString& text);
 
 }  // namespace fog::ui

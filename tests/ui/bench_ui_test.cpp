@@ -481,6 +481,8 @@ class BenchUiTest : public QObject {
     QVERIFY(view->termTable()->rowCount() >= 1);
     QVERIFY(view->allanPlot()->itemList(QwtPlotItem::Rtti_PlotCurve).size() >= 3);  // measured, a term, the sum
     QVERIFY(view->summaryText().contains("Earth-corrected bias"));
+    for (int r = 0; r < view->termTable()->rowCount(); ++r)  // units as the GUI writes them
+      QVERIFY2(!view->termTable()->item(r, 3)->text().contains("deg"), qPrintable(view->termTable()->item(r, 3)->text()));
 
     // A swing-only result says how to get a noise analysis.
     QVERIFY(editor->loadPreset("quick"));
@@ -929,6 +931,19 @@ class BenchUiTest : public QObject {
     QVERIFY(w->findChild<QAction*>("aboutAction"));
     QVERIFY(w->aboutText().contains(QString("fogbench %1").arg(FOG_VERSION)));
     QVERIFY(w->windowTitle().contains(FOG_VERSION));
+  }
+
+  // The core's ASCII units read as the GUI writes them everywhere else.
+  void unitsReadAsTheGuiWritesThem() {
+    using fog::ui::displayUnits;
+    QCOMPARE(displayUnits("amplitude 50 deg is beyond the table limit of 45 deg"),
+             QString("amplitude 50° is beyond the table limit of 45°"));
+    QCOMPARE(displayUnits("peak acceleration 3947.8 deg/s^2 exceeds the table limit of 3000 deg/s^2; lower it"),
+             QString("peak acceleration 3947.8 °/s² exceeds the table limit of 3000 °/s²; lower it"));
+    QCOMPARE(displayUnits("peak rate 628 deg/s"), QString("peak rate 628 °/s"));
+    QCOMPARE(displayUnits("deg/sqrt(h)"), QString("°/√h"));
+    QCOMPARE(displayUnits("deg/h/sqrt(h)"), QString("°/h/√h"));
+    QCOMPARE(displayUnits("a degree of freedom, 3 degrees"), QString("a degree of freedom, 3 degrees"));
   }
 
   void durationsReadWell() {
