@@ -99,7 +99,10 @@ ResultView::ResultView(QWidget* parent) : QWidget(parent) {
   testPointCombo_->setObjectName("testPointCombo");
   testPointCombo_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
   testPointCombo_->setMinimumContentsLength(8);
-  row->addWidget(testPointCombo_);
+  // Grows to show the whole label when there is room, shrinks in Compare.
+  testPointCombo_->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
+  testPointCombo_->setMaximumWidth(320);
+  row->addWidget(testPointCombo_, 1);
   lagLabel_ = new QLabel();
   lagLabel_->setObjectName("lagLabel");
   lagLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
