@@ -117,6 +117,21 @@ QWidget* scrollable(QWidget* view) {
 
 constexpr int kMaxRecentSessions = 8;
 
+// Runs `work` on the thread pool and hands its result to `done` on the GUI
+// thread, as long as `owner` lives. The result type must be
+// default-constructible (QFuture's rule): an outcome or the reason why not.
+template <typename Work, typename Done>
+void inBackground(QObject* owner, Work work, Done done) {
+  using Result = std::invoke_result_t<Work>;
+  auto* watcher = new QFutureWatcher<Result>(owner);
+  QObject::connect(watcher, &QFutureWatcherBase::finished, owner, [watcher, done = std::move(done)]() mutable {
+    Result result = watcher->result();
+    watcher->deleteLater();
+    done(std::move(result));
+  });
+  watcher->setFuture(QtConcurrent::run(std::move(work)));
+}
+
 QString defaultSessionFolder() {
   return QDir(QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation)).filePath("fogbench-sessions");
 }
@@ -215,9 +230,9 @@ QWidget* MainWindow::buildConfigureView() {
   sourceCombo_->setObjectName("sourceCombo");
   sourceCombo_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
   sourceCombo_->setMinimumContentsLength(12);
-  sourceCombo_->addItem(tr("Built-in simulator"), "sim");
-  sourceCombo_->addItem(tr("Replay of a session"), "replay");
-  sourceCombo_->addItem(tr("Serial sampling board"), "serial");
+  sourceCombo_->addItem(tr("Built-in simulator"), static_cast<int>(SourceKind::kSimulator));
+  sourceCombo_->addItem(tr("Replay of a session"), static_cast<int>(SourceKind::kReplay));
+  sourceCombo_->addItem(tr("Serial sampling board"), static_cast<int>(SourceKind::kSerial));
   speedCombo_ = new QComboBox();
   speedCombo_->setObjectName("speedCombo");
   speedCombo_->addItem(tr("Real time"), 1.0);
@@ -604,7 +619,7 @@ void MainWindow::showView(View view) { tabs_->setCurrentIndex(view); }
 MainWindow::View MainWindow::currentView() const { return static_cast<View>(tabs_->currentIndex()); }
 
 void MainWindow::useSimulator(double speed, int seed) {
-  sourceCombo_->setCurrentIndex(sourceCombo_->findData("sim"));
+  setSourceKind(SourceKind::kSimulator);
   const int i = speedCombo_->findData(speed);
   if (i >= 0) speedCombo_->setCurrentIndex(i);
   else {
@@ -616,7 +631,7 @@ void MainWindow::useSimulator(double speed, int seed) {
 
 void MainWindow::useReplay(const QString& sessionPath, double speed) {
   useSimulator(speed, seedSpin_->value());
-  sourceCombo_->setCurrentIndex(sourceCombo_->findData("replay"));
+  setSourceKind(SourceKind::kReplay);
   replayEdit_->setText(sessionPath);
 }
 
@@ -669,10 +684,10 @@ SessionInfo MainWindow::sessionInfo() const {
 void MainWindow::updateRunButton() {
   QString why;
   if (runner_.isRunning()) why = tr("a run is under way");
-  else if (sourceCombo_->currentData().toString() == "sim" && !planEditor_->isValid()) why = planEditor_->problem();
-  else if (sourceCombo_->currentData().toString() == "replay" && replayEdit_->text().isEmpty())
+  else if (sourceKind() == SourceKind::kSimulator && !planEditor_->isValid()) why = planEditor_->problem();
+  else if (sourceKind() == SourceKind::kReplay && replayEdit_->text().isEmpty())
     why = tr("choose the session file to replay");
-  else if (sourceCombo_->currentData().toString() == "serial" && serialPort().isEmpty())
+  else if (sourceKind() == SourceKind::kSerial && serialPort().isEmpty())
     why = tr("choose the sampling board's serial port");
   runButton_->setEnabled(why.isEmpty());
   runAction_->setEnabled(why.isEmpty());
@@ -684,40 +699,29 @@ void MainWindow::updateRunButton() {
   }
 }
 
-void MainWindow::startRun() {
-  if (runner_.isRunning()) return;
-  updateRunButton();
-  if (!runButton_->isEnabled()) {
-    showFailure(runButton_->toolTip());
-    return;
-  }
+Result<RunRequest> MainWindow::buildRunRequest() const {
   const double speed = speedCombo_->currentData().toDouble();
-  const bool sim = sourceCombo_->currentData().toString() == "sim";
+  const SourceKind kind = sourceKind();
   RunRequest request;
   request.options.info = sessionInfo();
   request.options.constants = analysis::benchConstantsOf(bench_);
   TestPlan plan;
-  if (sim) {
+  if (kind == SourceKind::kSimulator) {
     plan = planEditor_->plan();
     const auto config = simConfigOf(bench_, seedSpin_->value());
     auto source = acquisition::SimulatorSource::create(config, plan, speed);
-    if (!source) {
-      showFailure(QString::fromStdString(source.status().message()));
-      return;
-    }
+    if (!source) return source.status();
     request.truth = (*source)->truth();
     request.options.info.source = (*source)->description();
     request.source = std::shared_ptr<acquisition::ByteSource>(std::move(*source));
-  } else if (sourceCombo_->currentData().toString() == "serial") {
+  } else if (kind == SourceKind::kSerial) {
     serial::SerialSettings settings;
     settings.port = serialPort().toStdString();
     bool ok = false;
     settings.baudRate = baudCombo_->currentText().toInt(&ok);
     const Status validity = settings.validate();
-    if (!ok || !validity.isOk()) {
-      showFailure(ok ? QString::fromStdString(validity.message()) : tr("the baud rate must be a whole number"));
-      return;
-    }
+    if (!ok) return invalidArgument(tr("the baud rate must be a whole number").toStdString());
+    if (!validity.isOk()) return validity;
     // The board runs its own plan; the one in the editor is stored as the
     // plan the operator intended, and drives the progress bars.
     plan = planEditor_->plan();
@@ -733,15 +737,9 @@ void MainWindow::startRun() {
   } else {
     const QString path = replayEdit_->text();
     auto reader = session::SessionReader::open(path.toStdString());
-    if (!reader) {
-      showFailure(QString::fromStdString(reader.status().message()));
-      return;
-    }
+    if (!reader) return reader.status();
     auto bytes = (*reader)->rawBytes();
-    if (!bytes) {
-      showFailure(QString::fromStdString(bytes.status().message()));
-      return;
-    }
+    if (!bytes) return bytes.status();
     plan = (*reader)->info().plan;
     // A replay records into a new session like a live run, and keeps the
     // original's identity and constants.
@@ -759,10 +757,8 @@ void MainWindow::startRun() {
   request.options.reportContext.source = request.options.info.source + ", fogbench " + FOG_VERSION;
   const QString folder = sessionFolder();
   if (!folder.isEmpty()) {
-    if (!QDir().mkpath(folder)) {
-      showFailure(tr("cannot create the session folder '%1'; choose another one").arg(folder));
-      return;
-    }
+    if (!QDir().mkpath(folder))
+      return ioError(tr("cannot create the session folder '%1'; choose another one").arg(folder).toStdString());
     // The serial as far as every file system takes it ("SN 7/a" -> "SN_7_a").
     QString serial = imuSerialEdit_->text().trimmed();
     serial.replace(QRegularExpression("[^A-Za-z0-9._-]+"), "_");
@@ -770,7 +766,24 @@ void MainWindow::startRun() {
                          (serial.isEmpty() ? QString() : "-" + serial) + ".fbs";
     request.options.sessionPath = QDir(folder).filePath(name).toStdString();
   }
+  return request;
+}
 
+void MainWindow::startRun() {
+  if (runner_.isRunning()) return;
+  updateRunButton();
+  if (!runButton_->isEnabled()) {
+    showFailure(runButton_->toolTip());
+    return;
+  }
+  auto built = buildRunRequest();
+  if (!built) {
+    showFailure(QString::fromStdString(built.status().message()));
+    return;
+  }
+  RunRequest request = std::move(*built);
+  const TestPlan plan = request.options.info.plan;
+  const double speed = speedCombo_->currentData().toDouble();
   resultView_->clear();
   shown_.reset();
   const QString sourceText = QString::fromStdString(request.options.info.source);
@@ -784,6 +797,14 @@ void MainWindow::startRun() {
   liveTimer_.start();
   showView(kLive);
   tell(tr("Running: %1 …").arg(sourceText));
+}
+
+MainWindow::SourceKind MainWindow::sourceKind() const {
+  return static_cast<SourceKind>(sourceCombo_->currentData().toInt());
+}
+
+void MainWindow::setSourceKind(SourceKind kind) {
+  sourceCombo_->setCurrentIndex(sourceCombo_->findData(static_cast<int>(kind)));
 }
 
 QString MainWindow::serialPort() const {
@@ -810,9 +831,9 @@ void MainWindow::setRunning(bool running) {
                                                     folderEdit_, portCombo_, baudCombo_})
     w->setEnabled(!running);
   if (!running) {
-    seedSpin_->setEnabled(sourceCombo_->currentData().toString() == "sim");
-    replayEdit_->setEnabled(sourceCombo_->currentData().toString() == "replay");
-    const bool serial = sourceCombo_->currentData().toString() == "serial";
+    seedSpin_->setEnabled(sourceKind() == SourceKind::kSimulator);
+    replayEdit_->setEnabled(sourceKind() == SourceKind::kReplay);
+    const bool serial = sourceKind() == SourceKind::kSerial;
     portCombo_->setEnabled(serial);
     baudCombo_->setEnabled(serial);
     speedCombo_->setEnabled(!serial);
@@ -917,57 +938,55 @@ void MainWindow::loadSession(const QString& path, bool reanalyse,
     std::shared_ptr<RunOutcome> outcome;
     Status status;
   };
-  auto* watcher = new QFutureWatcher<Loaded>(this);
-  connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, path, name, reanalyse, done] {
-    const Loaded result = watcher->result();
-    watcher->deleteLater();
-    if (!result.outcome) {
-      reportError(reanalyse ? tr("Re-analyse") : tr("Open session"),
-                  reanalyse ? tr("Cannot re-analyse %1").arg(name) : tr("Cannot open %1").arg(name),
-                  tr("%1\n\nFile: %2").arg(QString::fromStdString(result.status.message()), QDir::toNativeSeparators(path)));
-      done(nullptr);
-      return;
-    }
-    if (reanalyse) {
-      tell(tr("%1: re-analysed with the bench constants; the result was added to the session").arg(name));
-      showMessage(this, MessageKind::kInformation, tr("Re-analyse"), tr("%1 re-analysed").arg(name),
-                  tr("The session was analysed with the current bench constants and the result was added to it; "
-                     "its recorded data did not change.\n\nFile: %1").arg(QDir::toNativeSeparators(path)));
-    } else {
-      tell(tr("%1: read-only review").arg(name));
-      addRecentSession(path);
-    }
-    done(result.outcome);
-  });
   // Reading and fitting a long session takes a while: off the GUI thread.
-  watcher->setFuture(QtConcurrent::run([path, reanalyse, bench]() -> Loaded {
-    auto reader = session::SessionReader::open(path.toStdString());
-    if (!reader) return {nullptr, reader.status()};
-    auto recording = (*reader)->recording();
-    if (!recording) return {nullptr, recording.status()};
-    auto outcome = std::make_shared<RunOutcome>();
-    outcome->info = (*reader)->info();
-    outcome->sessionPath = path.toStdString();
-    outcome->complete = (*reader)->complete();
-    outcome->incompleteReason = (*reader)->incompleteReason();
-    outcome->recording = std::move(*recording);
-    // Review uses the session's own constants; a re-analysis the bench's.
-    if (reanalyse) outcome->info.bench = bench;
-    const auto constants = analysis::benchConstantsOf(outcome->info.bench);
-    outcome->report = analysis::analyzeRecording(outcome->recording, constants);
-    const std::string source = "session " + path.toStdString() + " (" + (*reader)->info().source + ")";
-    reader->reset();
-    if (reanalyse && outcome->report) {
-      analysis::ReportContext context;
-      context.source = source;
-      if (auto s = session::addResult(path.toStdString(), acquisition::analysisSettingsJson(constants, "fogbench GUI"),
-                                      analysis::formatReportJson(*outcome->report, context));
-          !s.isOk())
-        return {nullptr, s};
-    }
-    completeOutcome(*outcome, source);
-    return {outcome, Status::ok()};
-  }));
+  inBackground(
+      this, [path, reanalyse, bench]() -> Loaded {
+        auto reader = session::SessionReader::open(path.toStdString());
+        if (!reader) return {nullptr, reader.status()};
+        auto recording = (*reader)->recording();
+        if (!recording) return {nullptr, recording.status()};
+        auto outcome = std::make_shared<RunOutcome>();
+        outcome->info = (*reader)->info();
+        outcome->sessionPath = path.toStdString();
+        outcome->complete = (*reader)->complete();
+        outcome->incompleteReason = (*reader)->incompleteReason();
+        outcome->recording = std::move(*recording);
+        // Review uses the session's own constants; a re-analysis the bench's.
+        if (reanalyse) outcome->info.bench = bench;
+        const auto constants = analysis::benchConstantsOf(outcome->info.bench);
+        outcome->report = analysis::analyzeRecording(outcome->recording, constants);
+        const std::string source = "session " + path.toStdString() + " (" + (*reader)->info().source + ")";
+        reader->reset();
+        if (reanalyse && outcome->report) {
+          analysis::ReportContext context;
+          context.source = source;
+          if (auto s = session::addResult(path.toStdString(), acquisition::analysisSettingsJson(constants, "fogbench GUI"),
+                                          analysis::formatReportJson(*outcome->report, context));
+              !s.isOk())
+            return {nullptr, s};
+        }
+        completeOutcome(*outcome, source);
+        return {outcome, Status::ok()};
+      },
+      [this, path, name, reanalyse, done](Loaded result) {
+        if (!result.outcome) {
+          reportError(reanalyse ? tr("Re-analyse") : tr("Open session"),
+                      reanalyse ? tr("Cannot re-analyse %1").arg(name) : tr("Cannot open %1").arg(name),
+                      tr("%1\n\nFile: %2").arg(QString::fromStdString(result.status.message()), QDir::toNativeSeparators(path)));
+          done(nullptr);
+          return;
+        }
+        if (reanalyse) {
+          tell(tr("%1: re-analysed with the bench constants; the result was added to the session").arg(name));
+          showMessage(this, MessageKind::kInformation, tr("Re-analyse"), tr("%1 re-analysed").arg(name),
+                      tr("The session was analysed with the current bench constants and the result was added to it; "
+                         "its recorded data did not change.\n\nFile: %1").arg(QDir::toNativeSeparators(path)));
+        } else {
+          tell(tr("%1: read-only review").arg(name));
+          addRecentSession(path);
+        }
+        done(result.outcome);
+      });
 }
 
 void MainWindow::openSession(const QString& path) {
@@ -996,27 +1015,25 @@ void MainWindow::importCsv(const QString& csvFolder) {
   const QString path = QDir(folder).filePath(QDateTime::currentDateTimeUtc().toString("yyyyMMdd-HHmmss-zzz") +
                                              "-import-" + QFileInfo(csvFolder).fileName() + ".fbs");
   tell(tr("Importing %1 …").arg(csvFolder));
-  auto* watcher = new QFutureWatcher<Status>(this);
-  connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, path, csvFolder] {
-    const Status s = watcher->result();
-    watcher->deleteLater();
-    if (!s.isOk()) {
-      reportError(tr("Import CSV data"), tr("Cannot import %1").arg(QDir::toNativeSeparators(csvFolder)),
-                  QString::fromStdString(s.message()));
-      tell(tr("Cannot import %1: %2").arg(csvFolder, QString::fromStdString(s.message())));
-      emit importEnded(QString());
-      return;
-    }
-    sessionBrowser_->refresh();
-    sessionBrowser_->selectPath(path);
-    tell(tr("Imported %1 as %2").arg(csvFolder, QFileInfo(path).fileName()));
-    emit importEnded(path);
-  });
-  watcher->setFuture(QtConcurrent::run([csvFolder, path]() -> Status {
-    auto imported = io::importCsvDirectory(csvFolder.toStdString());
-    if (!imported) return imported.status();
-    return io::saveImportedSession(*imported, csvFolder.toStdString(), path.toStdString());
-  }));
+  inBackground(
+      this, [csvFolder, path]() -> Status {
+        auto imported = io::importCsvDirectory(csvFolder.toStdString());
+        if (!imported) return imported.status();
+        return io::saveImportedSession(*imported, csvFolder.toStdString(), path.toStdString());
+      },
+      [this, path, csvFolder](Status s) {
+        if (!s.isOk()) {
+          reportError(tr("Import CSV data"), tr("Cannot import %1").arg(QDir::toNativeSeparators(csvFolder)),
+                      QString::fromStdString(s.message()));
+          tell(tr("Cannot import %1: %2").arg(csvFolder, QString::fromStdString(s.message())));
+          emit importEnded(QString());
+          return;
+        }
+        sessionBrowser_->refresh();
+        sessionBrowser_->selectPath(path);
+        tell(tr("Imported %1 as %2").arg(csvFolder, QFileInfo(path).fileName()));
+        emit importEnded(path);
+      });
 }
 
 void MainWindow::diagnoseShown() {
@@ -1031,29 +1048,27 @@ void MainWindow::diagnoseShown() {
     std::shared_ptr<diagnosis::Diagnosis> result;
     Status status;
   };
-  auto* watcher = new QFutureWatcher<Done>(this);
-  connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, title] {
-    const Done done = watcher->result();
-    watcher->deleteLater();
-    if (!done.result) {
-      diagnosisView_->showMessage(tr("No diagnosis: %1").arg(QString::fromStdString(done.status.message())));
-      reportError(tr("Diagnosis"), tr("No diagnosis of %1").arg(title), QString::fromStdString(done.status.message()));
-      tell(tr("No diagnosis of %1: %2").arg(title, QString::fromStdString(done.status.message())));
-      emit diagnosisEnded(false);
-      return;
-    }
-    diagnosisView_->showDiagnosis(done.result, title);
-    tell(tr("Diagnosis of %1: %2 (%3 s)")
-             .arg(title, QString::fromStdString(done.result->verdict))
-             .arg(localNumber(done.result->elapsedS, 'f', 1)));
-    emit diagnosisEnded(true);
-  });
   // Several replays of the session in the simulator: off the GUI thread.
-  watcher->setFuture(QtConcurrent::run([outcome]() -> Done {
-    auto d = diagnosis::diagnose(outcome->recording, &outcome->info, outcome->report->constants);
-    if (!d) return {nullptr, d.status()};
-    return {std::make_shared<diagnosis::Diagnosis>(std::move(*d)), Status::ok()};
-  }));
+  inBackground(
+      this, [outcome]() -> Done {
+        auto d = diagnosis::diagnose(outcome->recording, &outcome->info, outcome->report->constants);
+        if (!d) return {nullptr, d.status()};
+        return {std::make_shared<diagnosis::Diagnosis>(std::move(*d)), Status::ok()};
+      },
+      [this, title](Done done) {
+        if (!done.result) {
+          diagnosisView_->showMessage(tr("No diagnosis: %1").arg(QString::fromStdString(done.status.message())));
+          reportError(tr("Diagnosis"), tr("No diagnosis of %1").arg(title), QString::fromStdString(done.status.message()));
+          tell(tr("No diagnosis of %1: %2").arg(title, QString::fromStdString(done.status.message())));
+          emit diagnosisEnded(false);
+          return;
+        }
+        diagnosisView_->showDiagnosis(done.result, title);
+        tell(tr("Diagnosis of %1: %2 (%3 s)")
+                 .arg(title, QString::fromStdString(done.result->verdict))
+                 .arg(localNumber(done.result->elapsedS, 'f', 1)));
+        emit diagnosisEnded(true);
+      });
 }
 
 void MainWindow::analyseNoise(std::shared_ptr<const RunOutcome> outcome) {
@@ -1071,26 +1086,24 @@ void MainWindow::analyseNoise(std::shared_ptr<const RunOutcome> outcome) {
     std::vector<noise::GyroNoiseReport> reports;
     Status status;
   };
-  auto* watcher = new QFutureWatcher<Done>(this);
-  connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher] {
-    Done done = watcher->result();
-    watcher->deleteLater();
-    if (!done.status.isOk()) {
-      noiseView_->showMessage(tr("No noise analysis: %1").arg(QString::fromStdString(done.status.message())));
-      emit noiseAnalysed(false);
-      return;
-    }
-    noiseView_->showReports(std::move(done.reports));
-    emit noiseAnalysed(true);
-  });
-  watcher->setFuture(QtConcurrent::run([outcome]() -> Done {
-    noise::GyroNoiseOptions options;
-    options.earth.latitudeDeg = outcome->info.bench.latitudeDeg;
-    options.pulseEquivalentDeg = outcome->info.bench.pulseEquivalentDeg;
-    auto reports = noise::analyzeGyroNoise(outcome->recording, options);
-    if (!reports) return {{}, reports.status()};
-    return {std::move(*reports), Status::ok()};
-  }));
+  inBackground(
+      this, [outcome]() -> Done {
+        noise::GyroNoiseOptions options;
+        options.earth.latitudeDeg = outcome->info.bench.latitudeDeg;
+        options.pulseEquivalentDeg = outcome->info.bench.pulseEquivalentDeg;
+        auto reports = noise::analyzeGyroNoise(outcome->recording, options);
+        if (!reports) return {{}, reports.status()};
+        return {std::move(*reports), Status::ok()};
+      },
+      [this](Done done) {
+        if (!done.status.isOk()) {
+          noiseView_->showMessage(tr("No noise analysis: %1").arg(QString::fromStdString(done.status.message())));
+          emit noiseAnalysed(false);
+          return;
+        }
+        noiseView_->showReports(std::move(done.reports));
+        emit noiseAnalysed(true);
+      });
 }
 
 void MainWindow::compareSessions(const QString& first, const QString& second) {

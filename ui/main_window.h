@@ -53,6 +53,8 @@ class MainWindow : public QMainWindow {
 
  public:
   enum View { kConfigure = 0, kLive, kResults, kSessions, kDiagnosis, kNoise };
+  // Where a run's bytes come from.
+  enum class SourceKind { kSimulator = 0, kReplay, kSerial };
 
   explicit MainWindow(QWidget* parent = nullptr);
   ~MainWindow() override;
@@ -70,6 +72,8 @@ class MainWindow : public QMainWindow {
   // or the replay of a session file.
   void useSimulator(double speed, int seed);
   void useReplay(const QString& sessionPath, double speed);
+  SourceKind sourceKind() const;
+  void setSourceKind(SourceKind kind);
   // Where sessions are recorded; empty: runs are not recorded.
   void setSessionFolder(const QString& folder);
   // Whether the operator's choices (plan, pace, operator, IMU model and
@@ -149,6 +153,9 @@ class MainWindow : public QMainWindow {
   // The Allan deviation of the outcome's static segments, in the background.
   void analyseNoise(std::shared_ptr<const RunOutcome> outcome);
   void updateRunButton();
+  // The run the Configure view describes (source, session identity, bench
+  // constants, plan, where it is recorded), or why it cannot run.
+  Result<RunRequest> buildRunRequest() const;
   SessionInfo sessionInfo() const;
   QString serialPort() const;
 

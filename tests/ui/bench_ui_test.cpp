@@ -515,8 +515,7 @@ class BenchUiTest : public QObject {
     QVERIFY2(!pty.isEmpty(), board.readAllStandardError().constData());
     auto w = window();
     QSignalSpy ended(w.get(), &MainWindow::runEnded);
-    auto* source = w->findChild<QComboBox*>("sourceCombo");
-    source->setCurrentIndex(source->findData("serial"));
+    w->setSourceKind(MainWindow::SourceKind::kSerial);
     w->findChild<QComboBox*>("portCombo")->setCurrentText(pty);
     QVERIFY2(button(*w, "runButton")->isEnabled(), qPrintable(button(*w, "runButton")->toolTip()));
     click(*w, "runButton");
@@ -613,6 +612,16 @@ class BenchUiTest : public QObject {
     QVERIFY2(box->informativeText().contains(reason), qPrintable(box->informativeText()));
     QVERIFY(box->informativeText().contains(QDir::toNativeSeparators(path)));
     QVERIFY(box->textInteractionFlags() & Qt::TextSelectableByMouse);
+
+    // Replaying it: the run is refused with the same reason.
+    QSignalSpy ended(w.get(), &MainWindow::runEnded);
+    w->useReplay(path, 0.0);
+    click(*w, "runButton");
+    QTRY_VERIFY_WITH_TIMEOUT(!ended.isEmpty(), 30000);
+    QCOMPARE(ended.front().front().toBool(), false);
+    QVERIFY(!w->isRunning());
+    QCOMPARE(box->text(), QString("Run failed"));
+    QVERIFY2(box->informativeText().contains(reason), qPrintable(box->informativeText()));
 
     // The next error replaces the text of the open box: the core's whole
     // reason for refusing a folder that is not in the CSV layout.
