@@ -144,7 +144,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   tabs_ = new QTabWidget();
   tabs_->setObjectName("viewTabs");
   tabs_->setDocumentMode(true);
-  tabs_->addTab(scrollable(buildConfigureView()), tr("Configure"));
+  configureView_ = new ConfigureView();
+  configureView_->setObjectName("configureView");
+  planEditor_ = configureView_->planEditor();
+  tabs_->addTab(scrollable(configureView_), tr("Configure"));
   liveView_ = new LiveView();
   liveView_->setObjectName("liveView");
   tabs_->addTab(scrollable(liveView_), tr("Live"));
@@ -195,171 +198,24 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   restoreState();
   // The operator's choices are remembered as they are made.
   connect(planEditor_, &PlanEditor::planChanged, this, &MainWindow::rememberState);
-  connect(speedCombo_, qOverload<int>(&QComboBox::currentIndexChanged), this, &MainWindow::rememberState);
-  for (QLineEdit* e : {operatorEdit_, imuModelEdit_, imuSerialEdit_})
-    connect(e, &QLineEdit::textChanged, this, &MainWindow::rememberState);
+  connect(configureView_, &ConfigureView::paceChanged, this, &MainWindow::rememberState);
+  connect(configureView_, &ConfigureView::identityChanged, this, &MainWindow::rememberState);
+  connect(configureView_, &ConfigureView::sourceChanged, this, [this] { setRunning(runner_.isRunning()); });
+  connect(configureView_, &ConfigureView::runnabilityChanged, this, &MainWindow::updateRunButton);
+  connect(configureView_, &ConfigureView::folderChosen, this, [this](const QString& folder) { setSessionFolder(folder); });
+  connect(configureView_, &ConfigureView::editBenchSettingsRequested, this, &MainWindow::editBenchSettings);
   setRunning(false);
   tell(tr("Configure a plan and press Run."));
 }
 
 MainWindow::~MainWindow() = default;
 
-QWidget* MainWindow::buildConfigureView() {
-  auto* page = new QWidget();
-  page->setObjectName("configureView");
-  auto* layout = new QHBoxLayout(page);
-  // The plan and the rest side by side; the operator moves the divider.
-  auto* split = new QSplitter(Qt::Horizontal);
-  split->setObjectName("configureSplitter");
-  split->setChildrenCollapsible(false);
-  layout->addWidget(split);
-
-  auto* planBox = new QGroupBox(tr("Test plan"));
-  auto* planLayout = new QVBoxLayout(planBox);
-  planEditor_ = new PlanEditor();
-  planEditor_->setObjectName("planEditor");
-  planLayout->addWidget(planEditor_);
-  split->addWidget(planBox);
-
-  auto* sideWidget = new QWidget();
-  auto* side = new QVBoxLayout(sideWidget);
-  side->setContentsMargins(0, 0, 0, 0);
-  auto* sourceBox = new QGroupBox(tr("Source"));
-  auto* sourceForm = new QFormLayout(sourceBox);
-  sourceCombo_ = new QComboBox();
-  sourceCombo_->setObjectName("sourceCombo");
-  sourceCombo_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-  sourceCombo_->setMinimumContentsLength(12);
-  sourceCombo_->addItem(tr("Built-in simulator"), static_cast<int>(SourceKind::kSimulator));
-  sourceCombo_->addItem(tr("Replay of a session"), static_cast<int>(SourceKind::kReplay));
-  sourceCombo_->addItem(tr("Serial sampling board"), static_cast<int>(SourceKind::kSerial));
-  speedCombo_ = new QComboBox();
-  speedCombo_->setObjectName("speedCombo");
-  speedCombo_->addItem(tr("Real time"), 1.0);
-  speedCombo_->addItem(tr("5× real time"), 5.0);
-  speedCombo_->addItem(tr("20× real time"), 20.0);
-  speedCombo_->addItem(tr("As fast as possible"), 0.0);
-  seedSpin_ = new QSpinBox();
-  seedSpin_->setObjectName("seedSpin");
-  seedSpin_->setRange(0, std::numeric_limits<int>::max());
-  seedSpin_->setValue(1);
-  seedSpin_->setToolTip(tr("Simulator seed: the same seed gives the same data"));
-  auto* replayRow = new QHBoxLayout();
-  replayEdit_ = new QLineEdit();
-  replayEdit_->setObjectName("replayEdit");
-  replayEdit_->setPlaceholderText(tr("session file (.fbs) to replay"));
-  auto* browse = new QPushButton(tr("Browse…"));
-  browse->setObjectName("browseReplayButton");
-  replayRow->addWidget(replayEdit_, 1);
-  replayRow->addWidget(browse);
-  sourceForm->addRow(tr("Source"), sourceCombo_);
-  // Pace and seed share a row: the column fits a laptop screen's height.
-  auto* paceRow = new QHBoxLayout();
-  paceRow->addWidget(speedCombo_, 1);
-  paceRow->addWidget(new QLabel(tr("Seed")));
-  paceRow->addWidget(seedSpin_);
-  sourceForm->addRow(tr("Pace"), paceRow);
-  sourceForm->addRow(tr("Replay"), replayRow);
-  auto* serialRow = new QHBoxLayout();
-  portCombo_ = new QComboBox();
-  portCombo_->setObjectName("portCombo");
-  portCombo_->setEditable(true);  // a device the system does not list, e.g. a pseudo-terminal
-  portCombo_->setToolTip(tr("The sampling board's serial port"));
-  portCombo_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-  portCombo_->setMinimumContentsLength(10);
-  baudCombo_ = new QComboBox();
-  baudCombo_->setObjectName("baudCombo");
-  baudCombo_->setEditable(true);
-  for (int baud : {921600, 460800, 230400, 115200, 1000000, 2000000}) baudCombo_->addItem(QString::number(baud));
-  auto* rescan = new QPushButton(tr("Rescan"));
-  rescan->setObjectName("rescanButton");
-  serialRow->addWidget(portCombo_, 1);
-  serialRow->addWidget(rescan);
-  sourceForm->addRow(tr("Serial port"), serialRow);
-  sourceForm->addRow(tr("Baud rate"), baudCombo_);
-  auto listPorts = [this] {
-    const QString current = portCombo_->currentText();
-    portCombo_->clear();
-    for (const auto& p : serial::availablePorts())
-      portCombo_->addItem(QString::fromStdString(p.systemLocation + (p.description.empty() ? "" : "  (" + p.description + ")")),
-                          QString::fromStdString(p.systemLocation));
-    if (!current.isEmpty()) portCombo_->setCurrentText(current);
-  };
-  connect(rescan, &QPushButton::clicked, this, listPorts);
-  listPorts();
-  side->addWidget(sourceBox);
-
-  auto* sessionBox = new QGroupBox(tr("Session"));
-  auto* sessionForm = new QFormLayout(sessionBox);
-  recordCheck_ = new QCheckBox(tr("Record a session file (crash-safe)"));
-  recordCheck_->setObjectName("recordCheck");
-  recordCheck_->setChecked(true);
-  auto* folderRow = new QHBoxLayout();
-  folderEdit_ = new QLineEdit();
-  folderEdit_->setObjectName("sessionFolderEdit");
-  auto* chooseFolder = new QPushButton(tr("Choose…"));
-  chooseFolder->setObjectName("chooseFolderButton");
-  folderRow->addWidget(folderEdit_, 1);
-  folderRow->addWidget(chooseFolder);
-  operatorEdit_ = new QLineEdit();
-  operatorEdit_->setObjectName("operatorEdit");
-  imuModelEdit_ = new QLineEdit();
-  imuModelEdit_->setObjectName("imuModelEdit");
-  imuSerialEdit_ = new QLineEdit();
-  imuSerialEdit_->setObjectName("imuSerialEdit");
-  notesEdit_ = new QLineEdit();
-  sessionForm->addRow(recordCheck_);
-  sessionForm->addRow(tr("Folder"), folderRow);
-  sessionForm->addRow(tr("Operator"), operatorEdit_);
-  sessionForm->addRow(tr("IMU model"), imuModelEdit_);
-  sessionForm->addRow(tr("IMU serial"), imuSerialEdit_);
-  sessionForm->addRow(tr("Notes"), notesEdit_);
-  side->addWidget(sessionBox);
-
-  auto* constantsBox = new QGroupBox(tr("Bench constants"));
-  auto* constantsLayout = new QHBoxLayout(constantsBox);  // side by side: saves height on a laptop
-  constantsLabel_ = new QLabel();
-  constantsLabel_->setObjectName("constantsLabel");
-
-  auto* edit = new QPushButton(tr("Edit…"));
-  edit->setToolTip(tr("Edit the bench constants"));
-  edit->setObjectName("editConstantsButton");
-  constantsLayout->addWidget(constantsLabel_, 1);
-  constantsLayout->addWidget(edit, 0, Qt::AlignTop);
-  side->addWidget(constantsBox);
-
-  configureMessage_ = new QLabel();
-  configureMessage_->setObjectName("configureMessage");
-  configureMessage_->setWordWrap(true);
-  side->addWidget(configureMessage_);
-  side->addStretch(1);
-  split->addWidget(sideWidget);
-  split->setStretchFactor(0, 3);
-  split->setStretchFactor(1, 2);
-
-  auto sourceChanged = [this] { setRunning(runner_.isRunning()); };
-  connect(sourceCombo_, qOverload<int>(&QComboBox::currentIndexChanged), this, sourceChanged);
-  connect(replayEdit_, &QLineEdit::textChanged, this, &MainWindow::updateRunButton);
-  connect(portCombo_, &QComboBox::currentTextChanged, this, &MainWindow::updateRunButton);
-  connect(browse, &QPushButton::clicked, this, [this] {
-    const QString path = QFileDialog::getOpenFileName(this, tr("Session to replay"), sessionFolder(),
-                                                      tr("fogbench sessions (*.fbs)"));
-    if (!path.isEmpty()) replayEdit_->setText(path);
-  });
-  connect(chooseFolder, &QPushButton::clicked, this, [this] {
-    const QString dir = QFileDialog::getExistingDirectory(this, tr("Session folder"), sessionFolder());
-    if (!dir.isEmpty()) setSessionFolder(dir);
-  });
-  connect(folderEdit_, &QLineEdit::editingFinished, this, [this] { setSessionFolder(folderEdit_->text()); });
-  connect(recordCheck_, &QCheckBox::toggled, folderEdit_, &QWidget::setEnabled);
-  connect(edit, &QPushButton::clicked, this, [this] {
-    BenchSettingsDialog dialog(bench_, this);
-    if (dialog.exec() == QDialog::Accepted) {
-      setBenchSettings(dialog.settings());
-      saveBenchSettings(bench_);
-    }
-  });
-  return page;
+void MainWindow::editBenchSettings() {
+  BenchSettingsDialog dialog(bench_, this);
+  if (dialog.exec() == QDialog::Accepted) {
+    setBenchSettings(dialog.settings());
+    saveBenchSettings(bench_);
+  }
 }
 
 QString MainWindow::aboutText() const {
@@ -457,8 +313,7 @@ void MainWindow::buildMenus() {
   }
 
   auto* tools = menuBar()->addMenu(tr("&Tools"));
-  auto* constants = tools->addAction(tr("&Bench constants…"), this,
-                                     [this] { findChild<QPushButton*>("editConstantsButton")->click(); });
+  auto* constants = tools->addAction(tr("&Bench constants…"), this, &MainWindow::editBenchSettings);
   constants->setObjectName("benchConstantsAction");
   auto* languages = tools->addMenu(tr("&Language"));
   auto* group = new QActionGroup(languages);
@@ -541,10 +396,10 @@ void MainWindow::rememberState() {
   QSettings s;
   s.beginGroup("state");
   s.setValue("plan", QString::fromStdString(testPlanToJson(planEditor_->plan())));
-  s.setValue("pace", speedCombo_->currentData().toDouble());
-  s.setValue("operator", operatorEdit_->text());
-  s.setValue("imuModel", imuModelEdit_->text());
-  s.setValue("imuSerial", imuSerialEdit_->text());
+  s.setValue("pace", configureView_->pace());
+  s.setValue("operator", configureView_->operatorName());
+  s.setValue("imuModel", configureView_->imuModel());
+  s.setValue("imuSerial", configureView_->imuSerial());
 }
 
 void MainWindow::restoreState() {
@@ -553,18 +408,9 @@ void MainWindow::restoreState() {
   s.beginGroup("state");
   if (s.contains("plan"))
     if (auto plan = testPlanFromJson(s.value("plan").toString().toStdString()); plan) planEditor_->setPlan(*plan);
-  if (s.contains("pace")) {
-    const double pace = s.value("pace").toDouble();
-    const int i = speedCombo_->findData(pace);
-    if (i >= 0) speedCombo_->setCurrentIndex(i);
-    else if (pace >= 0.0) {
-      speedCombo_->addItem(tr("%1× real time").arg(pace), pace);
-      speedCombo_->setCurrentIndex(speedCombo_->count() - 1);
-    }
-  }
-  operatorEdit_->setText(s.value("operator").toString());
-  imuModelEdit_->setText(s.value("imuModel").toString());
-  imuSerialEdit_->setText(s.value("imuSerial").toString());
+  if (s.contains("pace") && s.value("pace").toDouble() >= 0.0) configureView_->setPace(s.value("pace").toDouble());
+  configureView_->setIdentity(s.value("operator").toString(), s.value("imuModel").toString(),
+                              s.value("imuSerial").toString());
   restoring_ = false;
 }
 
@@ -620,24 +466,18 @@ MainWindow::View MainWindow::currentView() const { return static_cast<View>(tabs
 
 void MainWindow::useSimulator(double speed, int seed) {
   setSourceKind(SourceKind::kSimulator);
-  const int i = speedCombo_->findData(speed);
-  if (i >= 0) speedCombo_->setCurrentIndex(i);
-  else {
-    speedCombo_->addItem(tr("%1× real time").arg(speed), speed);
-    speedCombo_->setCurrentIndex(speedCombo_->count() - 1);
-  }
-  seedSpin_->setValue(seed);
+  configureView_->setPace(speed);
+  configureView_->setSeed(seed);
 }
 
 void MainWindow::useReplay(const QString& sessionPath, double speed) {
-  useSimulator(speed, seedSpin_->value());
+  useSimulator(speed, configureView_->seed());
   setSourceKind(SourceKind::kReplay);
-  replayEdit_->setText(sessionPath);
+  configureView_->setReplayPath(sessionPath);
 }
 
 void MainWindow::setSessionFolder(const QString& folder) {
-  folderEdit_->setText(folder);
-  recordCheck_->setChecked(!folder.isEmpty());
+  configureView_->setSessionFolder(folder);
   resultView_->setExportFolder(folder);
   if (!folder.isEmpty()) {
     // A one-off folder (fogbench --session-folder) is not remembered.
@@ -646,20 +486,11 @@ void MainWindow::setSessionFolder(const QString& folder) {
   }
 }
 
-QString MainWindow::sessionFolder() const { return recordCheck_->isChecked() ? folderEdit_->text() : QString(); }
+QString MainWindow::sessionFolder() const { return configureView_->sessionFolder(); }
 
 void MainWindow::setBenchSettings(const BenchSettings& s) {
   bench_ = s;
-  // Line breaks of its own, no word wrap: a wrapping label would let the
-  // column be squeezed under its real height on a small screen.
-  constantsLabel_->setText(tr("table read delay %1 ms · board delay %2 ms\nlatitude %3° · pulse equivalent %4°\n"
-                              "counter %5 MHz / %6 bit")
-                               .arg(s.tableReadDelayMs)
-                               .arg(s.boardDelayMs)
-                               .arg(s.latitudeDeg)
-                               .arg(s.pulseEquivalentDeg)
-                               .arg(s.counterHz / 1e6)
-                               .arg(s.counterBits));
+  configureView_->showBenchSettings(s);
 }
 
 const RunOutcome* MainWindow::lastOutcome() const { return shown_.get(); }
@@ -671,10 +502,10 @@ void MainWindow::tell(const QString& message) {
 
 SessionInfo MainWindow::sessionInfo() const {
   SessionInfo info;
-  info.operatorName = operatorEdit_->text().toStdString();
-  info.imuModel = imuModelEdit_->text().toStdString();
-  info.imuSerial = imuSerialEdit_->text().toStdString();
-  info.notes = notesEdit_->text().toStdString();
+  info.operatorName = configureView_->operatorName().toStdString();
+  info.imuModel = configureView_->imuModel().toStdString();
+  info.imuSerial = configureView_->imuSerial().toStdString();
+  info.notes = configureView_->notes().toStdString();
   info.softwareVersion = FOG_VERSION;
   info.createdUtc = session::utcNow();
   info.bench = bench_;
@@ -685,22 +516,22 @@ void MainWindow::updateRunButton() {
   QString why;
   if (runner_.isRunning()) why = tr("a run is under way");
   else if (sourceKind() == SourceKind::kSimulator && !planEditor_->isValid()) why = planEditor_->problem();
-  else if (sourceKind() == SourceKind::kReplay && replayEdit_->text().isEmpty())
+  else if (sourceKind() == SourceKind::kReplay && configureView_->replayPath().isEmpty())
     why = tr("choose the session file to replay");
-  else if (sourceKind() == SourceKind::kSerial && serialPort().isEmpty())
+  else if (sourceKind() == SourceKind::kSerial && configureView_->serialPort().isEmpty())
     why = tr("choose the sampling board's serial port");
   runButton_->setEnabled(why.isEmpty());
   runAction_->setEnabled(why.isEmpty());
   runButton_->setToolTip(why.isEmpty() ? tr("Start the run") : tr("Cannot run: %1").arg(why));
   if (!runner_.isRunning()) {
-    configureMessage_->setText(why.isEmpty() ? QString()
+    configureView_->setMessage(why.isEmpty() ? QString()
                                              : tr("<span style='color:#b00000'>Cannot run: %1</span>")
                                                    .arg(why.toHtmlEscaped().replace("\n", "<br>")));
   }
 }
 
 Result<RunRequest> MainWindow::buildRunRequest() const {
-  const double speed = speedCombo_->currentData().toDouble();
+  const double speed = configureView_->pace();
   const SourceKind kind = sourceKind();
   RunRequest request;
   request.options.info = sessionInfo();
@@ -708,7 +539,7 @@ Result<RunRequest> MainWindow::buildRunRequest() const {
   TestPlan plan;
   if (kind == SourceKind::kSimulator) {
     plan = planEditor_->plan();
-    const auto config = simConfigOf(bench_, seedSpin_->value());
+    const auto config = simConfigOf(bench_, configureView_->seed());
     auto source = acquisition::SimulatorSource::create(config, plan, speed);
     if (!source) return source.status();
     request.truth = (*source)->truth();
@@ -716,9 +547,8 @@ Result<RunRequest> MainWindow::buildRunRequest() const {
     request.source = std::shared_ptr<acquisition::ByteSource>(std::move(*source));
   } else if (kind == SourceKind::kSerial) {
     serial::SerialSettings settings;
-    settings.port = serialPort().toStdString();
-    bool ok = false;
-    settings.baudRate = baudCombo_->currentText().toInt(&ok);
+    settings.port = configureView_->serialPort().toStdString();
+    const bool ok = configureView_->baudRate(&settings.baudRate);
     const Status validity = settings.validate();
     if (!ok) return invalidArgument(tr("the baud rate must be a whole number").toStdString());
     if (!validity.isOk()) return validity;
@@ -735,7 +565,7 @@ Result<RunRequest> MainWindow::buildRunRequest() const {
       return std::unique_ptr<acquisition::ByteSource>(std::move(*source));
     };
   } else {
-    const QString path = replayEdit_->text();
+    const QString path = configureView_->replayPath();
     auto reader = session::SessionReader::open(path.toStdString());
     if (!reader) return reader.status();
     auto bytes = (*reader)->rawBytes();
@@ -760,7 +590,7 @@ Result<RunRequest> MainWindow::buildRunRequest() const {
     if (!QDir().mkpath(folder))
       return ioError(tr("cannot create the session folder '%1'; choose another one").arg(folder).toStdString());
     // The serial as far as every file system takes it ("SN 7/a" -> "SN_7_a").
-    QString serial = imuSerialEdit_->text().trimmed();
+    QString serial = configureView_->imuSerial().trimmed();
     serial.replace(QRegularExpression("[^A-Za-z0-9._-]+"), "_");
     const QString name = QDateTime::currentDateTimeUtc().toString("yyyyMMdd-HHmmss-zzz") +
                          (serial.isEmpty() ? QString() : "-" + serial) + ".fbs";
@@ -783,7 +613,7 @@ void MainWindow::startRun() {
   }
   RunRequest request = std::move(*built);
   const TestPlan plan = request.options.info.plan;
-  const double speed = speedCombo_->currentData().toDouble();
+  const double speed = configureView_->pace();
   resultView_->clear();
   shown_.reset();
   const QString sourceText = QString::fromStdString(request.options.info.source);
@@ -799,20 +629,8 @@ void MainWindow::startRun() {
   tell(tr("Running: %1 …").arg(sourceText));
 }
 
-MainWindow::SourceKind MainWindow::sourceKind() const {
-  return static_cast<SourceKind>(sourceCombo_->currentData().toInt());
-}
-
-void MainWindow::setSourceKind(SourceKind kind) {
-  sourceCombo_->setCurrentIndex(sourceCombo_->findData(static_cast<int>(kind)));
-}
-
-QString MainWindow::serialPort() const {
-  // A listed port carries its device as data; a typed one is the text itself.
-  const int i = portCombo_->currentIndex();
-  if (i >= 0 && portCombo_->itemText(i) == portCombo_->currentText()) return portCombo_->itemData(i).toString();
-  return portCombo_->currentText().trimmed();
-}
+MainWindow::SourceKind MainWindow::sourceKind() const { return configureView_->sourceKind(); }
+void MainWindow::setSourceKind(SourceKind kind) { configureView_->setSourceKind(kind); }
 
 void MainWindow::stopRun() {
   if (!runner_.isRunning()) return;
@@ -826,19 +644,7 @@ void MainWindow::stopRun() {
 void MainWindow::setRunning(bool running) {
   stopButton_->setEnabled(running);
   stopAction_->setEnabled(running);
-  planEditor_->setReadOnly(running);
-  for (QWidget* w : std::initializer_list<QWidget*>{sourceCombo_, speedCombo_, seedSpin_, replayEdit_, recordCheck_,
-                                                    folderEdit_, portCombo_, baudCombo_})
-    w->setEnabled(!running);
-  if (!running) {
-    seedSpin_->setEnabled(sourceKind() == SourceKind::kSimulator);
-    replayEdit_->setEnabled(sourceKind() == SourceKind::kReplay);
-    const bool serial = sourceKind() == SourceKind::kSerial;
-    portCombo_->setEnabled(serial);
-    baudCombo_->setEnabled(serial);
-    speedCombo_->setEnabled(!serial);
-    folderEdit_->setEnabled(recordCheck_->isChecked());
-  }
+  configureView_->setRunning(running);
   updateRunButton();
 }
 
@@ -899,7 +705,7 @@ void MainWindow::showOutcome(std::shared_ptr<const RunOutcome> outcome) {
   if (!outcome->sessionPath.empty())
     message += tr(". Saved as %1").arg(QFileInfo(QString::fromStdString(outcome->sessionPath)).fileName());
   tell(message);
-  configureMessage_->setText(message.toHtmlEscaped());
+  configureView_->setMessage(message.toHtmlEscaped());
   // A run the operator did not stop that ended early, or gave no delay, is
   // explained whole (the status bar line is cut and soon overwritten).
   // (Not when the operator stopped it: they know.)
@@ -923,7 +729,7 @@ void MainWindow::showFailure(const QString& message) {
   setRunning(false);
   reportError(tr("Run failed"), tr("Run failed"), message);
   tell(tr("Run failed: %1").arg(message));
-  configureMessage_->setText(tr("<span style='color:#b00000'>Run failed: %1</span>").arg(message.toHtmlEscaped()));
+  configureView_->setMessage(tr("<span style='color:#b00000'>Run failed: %1</span>").arg(message.toHtmlEscaped()));
   emit runEnded(false);
   if (closeAfterRun_) QTimer::singleShot(0, this, &QWidget::close);
 }

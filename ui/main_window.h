@@ -1,7 +1,9 @@
 #pragma once
 // The bench window a lab operator works in, in four views:
-//   Configure  the test plan, the source (simulator, replay of a session),
-//              the session's metadata and where it is recorded
+//   Configure  the test plan, the source (simulator, replay of a session,
+//              serial board), the session's metadata and where it is
+//              recorded (ui/configure_view.h; the window builds the run
+//              from it, buildRunRequest)
 //   Live       the scrolling table and gyro angles, progress, counters
 //   Results    curves, fits, delay breakdown, delay vs frequency, report
 //   Sessions   the session browser: review, re-analyse, compare
@@ -27,6 +29,7 @@
 
 #include "common/session_info.h"
 #include "ui/acquisition_runner.h"
+#include "ui/configure_view.h"
 
 class QAction;
 class QCheckBox;
@@ -53,12 +56,12 @@ class MainWindow : public QMainWindow {
 
  public:
   enum View { kConfigure = 0, kLive, kResults, kSessions, kDiagnosis, kNoise };
-  // Where a run's bytes come from.
-  enum class SourceKind { kSimulator = 0, kReplay, kSerial };
+  using SourceKind = ConfigureView::SourceKind;
 
   explicit MainWindow(QWidget* parent = nullptr);
   ~MainWindow() override;
 
+  ConfigureView* configureView() const { return configureView_; }
   PlanEditor* planEditor() const { return planEditor_; }
   LiveView* liveView() const { return liveView_; }
   ResultView* resultView() const { return resultView_; }
@@ -132,7 +135,6 @@ class MainWindow : public QMainWindow {
   void closeEvent(QCloseEvent* event) override;
 
  private:
-  QWidget* buildConfigureView();
   void buildToolBar();
   void buildMenus();
   // An error the operator must read whole: message box + status bar.
@@ -157,7 +159,7 @@ class MainWindow : public QMainWindow {
   // constants, plan, where it is recorded), or why it cannot run.
   Result<RunRequest> buildRunRequest() const;
   SessionInfo sessionInfo() const;
-  QString serialPort() const;
+  void editBenchSettings();
 
   AcquisitionRunner runner_;
   QTimer liveTimer_;
@@ -172,6 +174,7 @@ class MainWindow : public QMainWindow {
   bool closeAfterRun_ = false;
 
   QTabWidget* tabs_ = nullptr;
+  ConfigureView* configureView_ = nullptr;
   PlanEditor* planEditor_ = nullptr;
   LiveView* liveView_ = nullptr;
   ResultView* resultView_ = nullptr;
@@ -181,20 +184,6 @@ class MainWindow : public QMainWindow {
 
   QPushButton* runButton_ = nullptr;
   QPushButton* stopButton_ = nullptr;
-  QComboBox* sourceCombo_ = nullptr;
-  QComboBox* speedCombo_ = nullptr;
-  QSpinBox* seedSpin_ = nullptr;
-  QLineEdit* replayEdit_ = nullptr;
-  QComboBox* portCombo_ = nullptr;
-  QComboBox* baudCombo_ = nullptr;
-  QCheckBox* recordCheck_ = nullptr;
-  QLineEdit* folderEdit_ = nullptr;
-  QLineEdit* operatorEdit_ = nullptr;
-  QLineEdit* imuModelEdit_ = nullptr;
-  QLineEdit* imuSerialEdit_ = nullptr;
-  QLineEdit* notesEdit_ = nullptr;
-  QLabel* configureMessage_ = nullptr;
-  QLabel* constantsLabel_ = nullptr;
   QLabel* framesLabel_ = nullptr;
   QAction* runAction_ = nullptr;
   QAction* stopAction_ = nullptr;

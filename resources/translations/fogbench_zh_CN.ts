@@ -107,6 +107,189 @@
     </message>
 </context>
 <context>
+    <name>fog::ui::ConfigureView</name>
+    <message>
+        <location filename="../../ui/configure_view.cpp" line="+30"/>
+        <source>Test plan</source>
+        <translation>测试计划</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <location line="+28"/>
+        <source>Source</source>
+        <translation>数据源</translation>
+    </message>
+    <message>
+        <location line="-22"/>
+        <source>Built-in simulator</source>
+        <translation>内置仿真器</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Replay of a session</source>
+        <translation>回放会话</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Serial sampling board</source>
+        <translation>串口采样板</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Real time</source>
+        <translation>实时</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>5× real time</source>
+        <translation>5 倍实时</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>20× real time</source>
+        <translation>20 倍实时</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>As fast as possible</source>
+        <translation>尽可能快</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Simulator seed: the same seed gives the same data</source>
+        <translation>仿真器种子：相同种子产生相同数据</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>session file (.fbs) to replay</source>
+        <translation>要回放的会话文件（.fbs）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Browse…</source>
+        <translation>浏览…</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Seed</source>
+        <translation>种子</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Pace</source>
+        <translation>速度</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Replay</source>
+        <translation>回放</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The sampling board&apos;s serial port</source>
+        <translation>采样板的串口</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Rescan</source>
+        <translation>重新扫描</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Serial port</source>
+        <translation>串口</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Baud rate</source>
+        <translation>波特率</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Session</source>
+        <translation>会话</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Record a session file (crash-safe)</source>
+        <translation>记录会话文件（防崩溃）</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Choose…</source>
+        <translation>选择…</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Folder</source>
+        <translation>文件夹</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Operator</source>
+        <translation>操作员</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>IMU model</source>
+        <translation>IMU 型号</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>IMU serial</source>
+        <translation>IMU 序列号</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Notes</source>
+        <translation>备注</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Bench constants</source>
+        <translation>测试台常数</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Edit…</source>
+        <translation>编辑…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Edit the bench constants</source>
+        <translation>编辑测试台常数</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>Session to replay</source>
+        <translation>要回放的会话</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>fogbench sessions (*.fbs)</source>
+        <translation>fogbench 会话 (*.fbs)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Session folder</source>
+        <translation>会话文件夹</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>%1× real time</source>
+        <translation>%1 倍实时</translation>
+    </message>
+    <message>
+        <location line="+43"/>
+        <source>table read delay %1 ms · board delay %2 ms
+latitude %3° · pulse equivalent %4°
+counter %5 MHz / %6 bit</source>
+        <translation>转台读数延迟 %1 ms · 处理板延迟 %2 ms
+纬度 %3° · 脉冲当量 %4°
+计数器 %5 MHz / %6 位</translation>
+    </message>
+</context>
+<context>
     <name>fog::ui::DeltaPicker</name>
     <message>
         <location filename="../../ui/delta_picker.cpp" line="+29"/>
@@ -351,12 +534,12 @@
 <context>
     <name>fog::ui::MainWindow</name>
     <message>
-        <location filename="../../ui/main_window.cpp" line="+127"/>
+        <location filename="../../ui/main_window.cpp" line="+142"/>
         <source>fogbench %1 — FOG IMU delay bench</source>
         <translation>fogbench %1 —— 光纤陀螺 IMU 延迟测试台</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+8"/>
         <source>Configure</source>
         <translation>配置</translation>
     </message>
@@ -377,178 +560,22 @@
     </message>
     <message>
         <location line="+3"/>
-        <location line="+896"/>
+        <location line="+705"/>
         <source>Diagnosis</source>
         <translation>诊断</translation>
     </message>
     <message>
-        <location line="-893"/>
+        <location line="-702"/>
         <source>Noise</source>
         <translation>噪声</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+43"/>
         <source>Configure a plan and press Run.</source>
         <translation>请配置测试计划并按“运行”。</translation>
     </message>
     <message>
-        <location line="+15"/>
-        <source>Test plan</source>
-        <translation>测试计划</translation>
-    </message>
-    <message>
-        <location line="+10"/>
-        <location line="+28"/>
-        <source>Source</source>
-        <translation>数据源</translation>
-    </message>
-    <message>
-        <location line="-22"/>
-        <source>Built-in simulator</source>
-        <translation>内置仿真器</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Replay of a session</source>
-        <translation>回放会话</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Serial sampling board</source>
-        <translation>串口采样板</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>Real time</source>
-        <translation>实时</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>5× real time</source>
-        <translation>5 倍实时</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>20× real time</source>
-        <translation>20 倍实时</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>As fast as possible</source>
-        <translation>尽可能快</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>Simulator seed: the same seed gives the same data</source>
-        <translation>仿真器种子：相同种子产生相同数据</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>session file (.fbs) to replay</source>
-        <translation>要回放的会话文件（.fbs）</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Browse…</source>
-        <translation>浏览…</translation>
-    </message>
-    <message>
-        <location line="+10"/>
-        <source>Pace</source>
-        <translation>速度</translation>
-    </message>
-    <message>
-        <location line="-2"/>
-        <source>Seed</source>
-        <translation>种子</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>Replay</source>
-        <translation>回放</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>The sampling board&apos;s serial port</source>
-        <translation>采样板的串口</translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <source>Rescan</source>
-        <translation>重新扫描</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>Serial port</source>
-        <translation>串口</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Baud rate</source>
-        <translation>波特率</translation>
-    </message>
-    <message>
-        <location line="+13"/>
-        <source>Session</source>
-        <translation>会话</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Record a session file (crash-safe)</source>
-        <translation>记录会话文件（防崩溃）</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>Choose…</source>
-        <translation>选择…</translation>
-    </message>
-    <message>
-        <location line="+12"/>
-        <source>Folder</source>
-        <translation>文件夹</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Operator</source>
-        <translation>操作员</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>IMU model</source>
-        <translation>IMU 型号</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>IMU serial</source>
-        <translation>IMU 序列号</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Notes</source>
-        <translation>备注</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>Bench constants</source>
-        <translation>测试台常数</translation>
-    </message>
-    <message>
-        <location line="+26"/>
-        <source>Session to replay</source>
-        <translation>要回放的会话</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>fogbench sessions (*.fbs)</source>
-        <translation>fogbench 会话 (*.fbs)</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>Session folder</source>
-        <translation>会话文件夹</translation>
-    </message>
-    <message>
-        <location line="+16"/>
+        <location line="+14"/>
         <source>&lt;h3&gt;fogbench %1&lt;/h3&gt;&lt;p&gt;Fiber-optic gyro IMU delay test bench: swing the IMU on a turntable, stamp table angle and gyro increments with one counter, fit sinusoids to both and turn their phase difference into the IMU&apos;s delay, with its uncertainty.&lt;/p&gt;&lt;p&gt;Built with Qt %2 (running on %3) and Qwt %4.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;fogbench %1&lt;/h3&gt;&lt;p&gt;光纤陀螺 IMU 延迟测试台：转台带动 IMU 摆动，用同一计数器为转台角度和陀螺增量打时间戳，对两者拟合正弦，并将相位差换算为 IMU 延迟及其不确定度。&lt;/p&gt;&lt;p&gt;基于 Qt %2（运行于 %3）和 Qwt %4 构建。&lt;/p&gt;</translation>
     </message>
@@ -558,7 +585,7 @@
         <translation>测试台常数(&amp;B)…</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+2"/>
         <source>&amp;Language</source>
         <translation>语言(&amp;L)</translation>
     </message>
@@ -588,23 +615,13 @@
         <translation>关于 fogbench</translation>
     </message>
     <message>
-        <location line="-116"/>
+        <location line="-115"/>
         <location line="+3"/>
         <source>Run</source>
         <translation>运行</translation>
     </message>
     <message>
-        <location line="-53"/>
-        <source>Edit…</source>
-        <translation>编辑…</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Edit the bench constants</source>
-        <translation>编辑测试台常数</translation>
-    </message>
-    <message>
-        <location line="+54"/>
+        <location line="+2"/>
         <source>Stop</source>
         <translation>停止</translation>
     </message>
@@ -626,12 +643,12 @@
     </message>
     <message>
         <location line="+1"/>
-        <location line="+549"/>
+        <location line="+532"/>
         <source>Open session</source>
         <translation>打开会话</translation>
     </message>
     <message>
-        <location line="-548"/>
+        <location line="-531"/>
         <source>fogbench sessions (*.fbs);;All files (*)</source>
         <translation>fogbench 会话 (*.fbs);;所有文件 (*)</translation>
     </message>
@@ -764,7 +781,7 @@
         <translation>工具(&amp;T)</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+21"/>
         <source>&amp;Shortcuts</source>
         <translation>快捷键(&amp;S)</translation>
     </message>
@@ -811,13 +828,7 @@ Quit: Ctrl+Q</source>
         <translation>测试计划已保存为 %1</translation>
     </message>
     <message>
-        <location line="+26"/>
-        <location line="+65"/>
-        <source>%1× real time</source>
-        <translation>%1 倍实时</translation>
-    </message>
-    <message>
-        <location line="-47"/>
+        <location line="+35"/>
         <source>Saved %1 — File ▸ Open the export folder shows it</source>
         <translation>已保存 %1 —— “文件 ▸ 打开导出文件夹”可查看</translation>
     </message>
@@ -862,16 +873,7 @@ Quit: Ctrl+Q</source>
         <translation>继续运行</translation>
     </message>
     <message>
-        <location line="+49"/>
-        <source>table read delay %1 ms · board delay %2 ms
-latitude %3° · pulse equivalent %4°
-counter %5 MHz / %6 bit</source>
-        <translation>转台读数延迟 %1 ms · 处理板延迟 %2 ms
-纬度 %3° · 脉冲当量 %4°
-计数器 %5 MHz / %6 位</translation>
-    </message>
-    <message>
-        <location line="+31"/>
+        <location line="+65"/>
         <source>a run is under way</source>
         <translation>正在运行</translation>
     </message>
@@ -901,27 +903,27 @@ counter %5 MHz / %6 bit</source>
         <translation>&lt;span style=&apos;color:#b00000&apos;&gt;无法运行：%1&lt;/span&gt;</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+25"/>
         <source>the baud rate must be a whole number</source>
         <translation>波特率必须是整数</translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+38"/>
         <source>cannot create the session folder &apos;%1&apos;; choose another one</source>
         <translation>无法创建会话文件夹“%1”；请另选一个</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+38"/>
         <source>Running: %1 …</source>
         <translation>运行中：%1 …</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+12"/>
         <source>Stopping: everything received so far is kept …</source>
         <translation>正在停止：已接收的数据全部保留 …</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+17"/>
         <source>No data from the source for %1 s — check the connection</source>
         <translation>数据源已 %1 s 无数据——请检查连接</translation>
     </message>
@@ -1016,7 +1018,7 @@ counter %5 MHz / %6 bit</source>
         <translation>正在打开 %1 …</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+39"/>
         <location line="+8"/>
         <source>Re-analyse</source>
         <translation>重新分析</translation>
@@ -1065,18 +1067,18 @@ File: %1</source>
         <translation>%1：只读查看</translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+24"/>
         <source>Choose a session folder to import into first.</source>
         <translation>请先选择导入目标会话文件夹。</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location line="+14"/>
+        <location line="+17"/>
         <source>Import CSV data</source>
         <translation>导入 CSV 数据</translation>
     </message>
     <message>
-        <location line="-13"/>
+        <location line="-16"/>
         <source>The imported data becomes a session file in the session folder; choose a folder you can write to in the Sessions view.</source>
         <translation>导入的数据将成为会话文件夹中的会话文件；请在“会话”视图中选择一个可写入的文件夹。</translation>
     </message>
@@ -1086,7 +1088,7 @@ File: %1</source>
         <translation>正在导入 %1 …</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+9"/>
         <source>Cannot import %1</source>
         <translation>无法导入 %1</translation>
     </message>
@@ -1101,7 +1103,7 @@ File: %1</source>
         <translation>已将 %1 导入为 %2</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+8"/>
         <source>this run</source>
         <translation>本次运行</translation>
     </message>
@@ -1116,7 +1118,7 @@ File: %1</source>
         <translation>正在诊断 %1 …</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+14"/>
         <source>No diagnosis: %1</source>
         <translation>无法诊断：%1</translation>
     </message>
@@ -1136,7 +1138,7 @@ File: %1</source>
         <translation>%1 的诊断：%2（%3 s）</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+11"/>
         <source>This result has no static segment. To measure the gyro&apos;s noise (Allan deviation, noise terms, bias), add a test point of kind &quot;static&quot; to the plan: the table rests while the gyro is recorded.</source>
         <translation>此结果没有静态段。要测量陀螺噪声（Allan 方差、噪声项、零偏），请在计划中添加类型为“静态”的测试点：转台静止时记录陀螺数据。</translation>
     </message>
@@ -1146,12 +1148,12 @@ File: %1</source>
         <translation>正在计算 Allan 标准差 …</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+16"/>
         <source>No noise analysis: %1</source>
         <translation>无噪声分析：%1</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+13"/>
         <source>Compare %1 and %2</source>
         <translation>比较 %1 与 %2</translation>
     </message>
@@ -1159,7 +1161,7 @@ File: %1</source>
 <context>
     <name>fog::ui::NoiseView</name>
     <message>
-        <location filename="../../ui/noise_view.cpp" line="+30"/>
+        <location filename="../../ui/noise_view.cpp" line="+31"/>
         <source>Static segment</source>
         <translation>静态段</translation>
     </message>
@@ -1458,7 +1460,7 @@ File: %1</source>
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../../ui/main_window.cpp" line="-1035"/>
+        <location filename="../../ui/main_window.cpp" line="-854"/>
         <location filename="../../ui/plan_editor.cpp" line="-270"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
@@ -2531,7 +2533,7 @@ File: %1</source>
         <translation>测试点</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+17"/>
         <source>Diagnose</source>
         <translation>诊断</translation>
     </message>
