@@ -138,6 +138,28 @@ class BenchUiTest : public QObject {
     }
     return bad;
   }
+  // The board emulator (10 s of 1 Hz / 3° on X at 5x) on a new
+  // pseudo-terminal, with `extra` arguments (faults); returns the terminal
+  // the emulator names on its first line, empty when it did not start.
+  static QString startBoard(QProcess& board, const QStringList& extra) {
+    board.setProgram(FOG_BOARD_EMU);
+    board.setArguments(QStringList({"--axis", "x", "--freq-hz", "1", "--amp-deg", "3", "--duration-s", "10", "--seed",
+                                    "3", "--speed", "5"}) +
+                       extra);
+    board.start();
+    if (!board.waitForStarted(10000)) return {};
+    QString pty;
+    QElapsedTimer waited;
+    waited.start();
+    while (pty.isEmpty() && waited.elapsed() < 10000) {
+      board.waitForReadyRead(100);
+      while (board.canReadLine()) {
+        const QString line = QString::fromUtf8(board.readLine()).trimmed();
+        if (line.startsWith("pty: ")) pty = line.mid(5);
+      }
+    }
+    return pty;
+  }
   static QByteArray sha256(const QString& path) {
     QFile f(path);
     if (!f.open(QIODevice::ReadOnly)) return {};
@@ -496,22 +518,7 @@ class BenchUiTest : public QObject {
   // pseudo-terminal, recorded by the window like a live board.
   void serialBoardIsRecordedFromThePort() {
     QProcess board;
-    board.setProgram(FOG_BOARD_EMU);
-    board.setArguments({"--axis", "x", "--freq-hz", "1", "--amp-deg", "3", "--duration-s", "10", "--seed", "3",
-                        "--speed", "5"});
-    board.start();
-    QVERIFY(board.waitForStarted(10000));
-    // The emulator names its pseudo-terminal on its first line.
-    QString pty;
-    QElapsedTimer waited;
-    waited.start();
-    while (pty.isEmpty() && waited.elapsed() < 10000) {
-      board.waitForReadyRead(100);
-      while (board.canReadLine()) {
-        const QString line = QString::fromUtf8(board.readLine()).trimmed();
-        if (line.startsWith("pty: ")) pty = line.mid(5);
-      }
-    }
+    const QString pty = startBoard(board, {});
     QVERIFY2(!pty.isEmpty(), board.readAllStandardError().constData());
     auto w = window();
     QSignalSpy ended(w.get(), &MainWindow::runEnded);
@@ -904,6 +911,32 @@ class BenchUiTest : public QObject {
     QCOMPARE(w->lastExport(), png);
     QVERIFY(!w->resultView()->exportPlotTo(plot, "/nonexistent-dir/p.png").isOk());
     QCOMPARE(w->lastExport(), png);
+  }
+
+  // A board whose port vanishes mid-run: the run ends incomplete by itself,
+  // and the reason is shown whole in the error box (not only in the status
+  // bar, where the frame counters cut it).
+  void aRunThatEndsEarlyIsExplainedWhole() {
+    QProcess board;
+    const QString pty = startBoard(board, {"--disconnect-at-s", "3"});
+    QVERIFY2(!pty.isEmpty(), board.readAllStandardError().constData());
+    auto w = window();
+    QSignalSpy ended(w.get(), &MainWindow::runEnded);
+    w->setSourceKind(MainWindow::SourceKind::kSerial);
+    w->findChild<QComboBox*>("portCombo")->setCurrentText(pty);
+    click(*w, "runButton");
+    QTRY_VERIFY_WITH_TIMEOUT(!ended.isEmpty(), 60000);
+    board.waitForFinished(20000);
+    const auto* outcome = w->lastOutcome();
+    QVERIFY(outcome);
+    QVERIFY(!outcome->complete);
+    const QString reason = QString::fromStdString(outcome->incompleteReason);
+    QVERIFY(!reason.isEmpty());
+    auto* box = w->findChild<QMessageBox*>("errorDialog");
+    QVERIFY(box && box->isVisible());
+    QCOMPARE(box->windowTitle(), QString("Run incomplete"));
+    QVERIFY2(box->informativeText().contains(fog::ui::displayUnits(reason)), qPrintable(box->informativeText()));
+    QVERIFY(box->textInteractionFlags() & Qt::TextSelectableByMouse);
   }
 
   // Plots export as PNG, SVG and PDF; a bad name is explained.
