@@ -76,6 +76,7 @@ QTableWidget* makeTable(const QStringList& headers) {
 void setRow(QTableWidget* t, int row, const QStringList& cells, bool bold = false) {
   for (int c = 0; c < cells.size(); ++c) {
     auto* item = new QTableWidgetItem(cells[c]);
+    item->setToolTip(cells[c]);  // whole, when a narrow column cuts it
     // Numbers (and ranges of them) right-aligned, words left.
     bool number = false;
     cells[c].section(' ', 0, 0).toDouble(&number);

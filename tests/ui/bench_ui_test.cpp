@@ -371,6 +371,12 @@ class BenchUiTest : public QObject {
     QVERIFY(browser->selectPath(complete));
     click(*w, "reanalyseButton");
     QTRY_VERIFY_WITH_TIMEOUT(w->lastMessage().contains("re-analysed"), 30000);
+    // The confirmation is shown whole, not only in the status bar.
+    auto* confirmation = w->findChild<QMessageBox*>("infoDialog");
+    QVERIFY(confirmation && confirmation->isVisible());
+    QVERIFY(confirmation->text().contains(QFileInfo(complete).fileName()));
+    QVERIFY(confirmation->informativeText().contains(QDir::toNativeSeparators(complete)));
+    confirmation->close();
     auto reader = fog::session::SessionReader::open(complete.toStdString());
     QVERIFY(reader.isOk());
     QCOMPARE((*reader)->results()->size(), resultsBefore + 1);
