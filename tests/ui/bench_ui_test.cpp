@@ -9,6 +9,7 @@
 #include <QHeaderView>
 #include <QLayout>
 #include <QLineEdit>
+#include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QScrollArea>
@@ -771,7 +772,20 @@ class BenchUiTest : public QObject {
     // Stopped on request: not reported as an error.
     auto* error = w->findChild<QMessageBox*>("errorDialog");
     QVERIFY(!error || !error->isVisible());
-    QVERIFY(w->recentSessions().contains(QFileInfo(QString::fromStdString(w->lastOutcome()->sessionPath)).absoluteFilePath()));
+    const QString recorded = QFileInfo(QString::fromStdString(w->lastOutcome()->sessionPath)).absoluteFilePath();
+    QVERIFY(w->recentSessions().contains(recorded));
+    // File > Open recent lists it (newest first) and opens it.
+    auto* recent = w->findChild<QMenu*>("recentMenu");
+    QVERIFY(recent);
+    emit recent->aboutToShow();
+    QVERIFY(!recent->actions().isEmpty());
+    QAction* first = recent->actions().front();
+    QCOMPARE(first->text(), QFileInfo(recorded).fileName());
+    QSignalSpy opened(w.get(), &MainWindow::sessionOpened);
+    first->trigger();
+    QTRY_VERIFY_WITH_TIMEOUT(!opened.isEmpty(), 30000);
+    QCOMPARE(opened.front().front().toBool(), true);
+    QCOMPARE(QString::fromStdString(w->lastOutcome()->sessionPath), recorded);
   }
 
   // Plans save and load in the CLI's JSON plan format; a bad file is
