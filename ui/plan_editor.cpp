@@ -131,6 +131,13 @@ void PlanEditor::addRow(const TestPoint& p) {
   axis->addItems({"X", "Y", "Z"});
   axis->setCurrentIndex(static_cast<int>(p.axis));
   axis->setFrame(false);
+  // The table position and start phase have no column: a plan file's values
+  // ride with the row so that editing it does not drop them.
+  axis->setProperty("positionDeg", QVariantList{p.positionDeg[0], p.positionDeg[1], p.positionDeg[2]});
+  axis->setProperty("startPhaseDeg", p.startPhaseDeg);
+  if (p.positionDeg != std::array<double, kAxisCount>{})
+    axis->setToolTip(tr("table position from the plan file: X %1°, Y %2°, Z %3°")
+                         .arg(p.positionDeg[0]).arg(p.positionDeg[1]).arg(p.positionDeg[2]));
   table_->setCellWidget(row, kAxis, axis);
   // Wide ranges on purpose: the limits are the table's, checked and explained
   // by validate(), not silently clamped by the field.
@@ -195,11 +202,16 @@ void PlanEditor::syncPeriods(int row, Column edited) {
 
 TestPoint PlanEditor::rowPoint(int row) const {
   TestPoint p;
+  const auto* axisBox = qobject_cast<QComboBox*>(table_->cellWidget(row, kAxis));
+  const QVariantList position = axisBox->property("positionDeg").toList();
   if (qobject_cast<QComboBox*>(table_->cellWidget(row, kKind))->currentIndex() == 1) {
-    p = TestPoint::staticSegment(static_cast<Axis>(qobject_cast<QComboBox*>(table_->cellWidget(row, kAxis))->currentIndex()),
-                                 spin(row, kDuration)->value(), spin(row, kSettle)->value());
+    p = TestPoint::staticSegment(static_cast<Axis>(axisBox->currentIndex()), spin(row, kDuration)->value(),
+                                 spin(row, kSettle)->value());
+    for (int a = 0; a < kAxisCount && a < position.size(); ++a) p.positionDeg[a] = position[a].toDouble();
     return p;
   }
+  for (int a = 0; a < kAxisCount && a < position.size(); ++a) p.positionDeg[a] = position[a].toDouble();
+  p.startPhaseDeg = axisBox->property("startPhaseDeg").toDouble();
   p.axis = static_cast<Axis>(qobject_cast<QComboBox*>(table_->cellWidget(row, kAxis))->currentIndex());
   p.frequencyHz = spin(row, kFrequency)->value();
   p.amplitudeDeg = spin(row, kAmplitude)->value();

@@ -1295,13 +1295,13 @@ File: %1</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+82"/>
+        <location line="+89"/>
         <location line="+2"/>
         <source> s</source>
         <translation> s</translation>
     </message>
     <message>
-        <location line="-80"/>
+        <location line="-87"/>
         <source>Rest between test points: the table at rest</source>
         <translation>测试点之间的静止时间：转台静止</translation>
     </message>
@@ -1381,7 +1381,12 @@ File: %1</source>
         <translation>静态：转台静止，用于测量陀螺噪声（Allan 方差）</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+13"/>
+        <source>table position from the plan file: X %1°, Y %2°, Z %3°</source>
+        <translation>计划文件中的转台位置：X %1°，Y %2°，Z %3°</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source> Hz</source>
         <translation> Hz</translation>
     </message>
@@ -1416,7 +1421,7 @@ File: %1</source>
         <translation>开始记录前的摆动时间</translation>
     </message>
     <message>
-        <location line="+124"/>
+        <location line="+129"/>
         <source>ok: table at rest, %1 in all</source>
         <translation>正常：转台静止，共 %1</translation>
     </message>
@@ -1461,7 +1466,7 @@ File: %1</source>
     <message>
         <location line="+1"/>
         <location filename="../../ui/main_window.cpp" line="-854"/>
-        <location filename="../../ui/plan_editor.cpp" line="-270"/>
+        <location filename="../../ui/plan_editor.cpp" line="-282"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
@@ -2528,7 +2533,7 @@ File: %1</source>
 <context>
     <name>fog::ui::ResultView</name>
     <message>
-        <location line="+39"/>
+        <location line="+40"/>
         <source>Test point</source>
         <translation>测试点</translation>
     </message>

@@ -817,6 +817,21 @@ class BenchUiTest : public QObject {
     QCOMPARE(plan.points[1].amplitudeDeg, 4.5);
     QCOMPARE(plan.restBetweenS, parsed->restBetweenS);
 
+    // The table position has no column: a plan file's survives an edit.
+    const QString positioned = dir.filePath("positioned.json");
+    QFile pf(positioned);
+    QVERIFY(pf.open(QIODevice::WriteOnly));
+    pf.write(R"({"rest_between_s":2,"points":[{"axis":"y","frequency_hz":1,"amplitude_deg":3,"duration_s":20,)"
+             R"("start_phase_deg":30,"position_deg":[30,0,45]}]})");
+    pf.close();
+    QVERIFY(w->loadPlanFile(positioned).isOk());
+    setValue(editor, 0, PlanEditor::kAmplitude, 2.5);
+    const fog::TestPlan edited = editor->plan();
+    QCOMPARE(edited.points[0].amplitudeDeg, 2.5);
+    QCOMPARE(edited.points[0].positionDeg[0], 30.0);
+    QCOMPARE(edited.points[0].positionDeg[2], 45.0);
+    QCOMPARE(edited.points[0].startPhaseDeg, 30.0);
+
     const QString bad = dir.filePath("typo.json");
     QFile typo(bad);
     QVERIFY(typo.open(QIODevice::WriteOnly));
@@ -825,7 +840,8 @@ class BenchUiTest : public QObject {
     const auto refused = w->loadPlanFile(bad);
     QVERIFY(!refused.isOk());
     QVERIFY2(QString::fromStdString(refused.message()).contains("frequncy_hz"), refused.message().c_str());
-    QCOMPARE(editor->plan().points.size(), std::size_t(2));
+    QCOMPARE(editor->plan().points.size(), std::size_t(1));  // the positioned plan stays
+    QCOMPARE(editor->plan().points[0].amplitudeDeg, 2.5);
     QVERIFY(!w->loadPlanFile(dir.filePath("missing.json")).isOk());
   }
 
