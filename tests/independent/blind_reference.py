@@ -200,6 +200,8 @@ def main(argv=None):
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--json", help="write every trial and the scores here")
     ap.add_argument("--check", action="store_true", help="exit 1 when a target is missed")
+    ap.add_argument("--min-correct", type=int, default=0,
+                    help="exit 1 when fewer trials than this are answered right (a regression floor for short runs)")
     a = ap.parse_args(argv)
     with tempfile.TemporaryDirectory(prefix="fogbench-blind-") as work:
         # Detection thresholds from a clean session of the plan (nominal bench).
@@ -235,10 +237,18 @@ def main(argv=None):
         if wrong:
             print("  trial %d %s %s -> %s: %s" % (r["trial"], r["kind"], "+".join(r["truth"]) or "none", r["verdict"],
                                                  r["reason"]))
+    correct = sum(((r["verdict"] == r["truth"][0]) if r["kind"] == "single" else
+                   (r["verdict"] in r["truth"]) if r["kind"] == "pair" else
+                   (r["verdict"] == "none") if r["kind"] == "none" else (r["verdict"] == "unexplained"))
+                  for r in results)
     print("\nscores: " + json.dumps(s))
+    print("%d of %d trials answered right" % (correct, len(results)))
     if a.json:
         with open(a.json, "w") as fh:
             json.dump({"plan": a.plan, "seed": a.seed, "thresholds": th, "scores": s, "trials": results}, fh, indent=1)
+    if correct < a.min_correct:
+        print("fewer than %d trials answered right" % a.min_correct)
+        return 1
     if a.check:
         missed = [k for k, ok in [("top-1", s["top1_pct"] >= 90), ("top-3", s["top3_pct"] >= 98),
                                   ("false alarms", s["false_alarm_pct"] <= 5),
