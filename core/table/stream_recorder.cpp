@@ -210,7 +210,7 @@ Status StreamPointRecorder::begin(int index, const TestPoint& point) {
   point_ = point;
   beganS_ = nowS_;
   lastCheckS_ = -1.0;
-  lastMismatch_.clear();
+  lastMismatch_ = "checking the motion from board time " + num(beganS_, "%.3f") + " s";
   phase_ = Phase::kChecking;
   return Status::ok();
 }
