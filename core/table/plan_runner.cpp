@@ -236,7 +236,13 @@ RunnerResult PlanRunner::run(const TestPlan& plan, const std::atomic<bool>* stop
     return result;
   }
   for (std::size_t i = 0; i < plan.points.size(); ++i) {
-    if (auto s = runPoint(static_cast<int>(i), plan.points[i]); !s.isOk()) return fail(s);
+    if (auto s = runPoint(static_cast<int>(i), plan.points[i]); !s.isOk()) {
+      // Every reason names the point it stopped at.
+      const std::string label = pointLabel(static_cast<int>(i), plan.points[i]);
+      if (s.message().rfind(label, 0) != 0 && s.message() != "stopped by the operator")
+        s = Status(s.code(), label + ": " + s.message());
+      return fail(s);
+    }
     ++result.pointsDone;
     if (i + 1 < plan.points.size()) {
       const double restUntil = clock_.nowS() + plan.restBetweenS;
