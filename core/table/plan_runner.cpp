@@ -254,6 +254,7 @@ RunnerResult PlanRunner::run(const TestPlan& plan, const std::atomic<bool>* stop
   }
   result.tableAtRest = true;
   say("plan done: " + std::to_string(result.pointsDone) + " points");
+  if (auto s = controller_.release(); !s.isOk()) say("could not release the controller's heartbeat: " + s.message());
   return result;
 }
 

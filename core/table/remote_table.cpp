@@ -239,4 +239,6 @@ Status RemoteTable::emergencyStop() {
 
 Status RemoteTable::keepAlive() { return command("SYST:HEART", true); }
 
+Status RemoteTable::release() { return command("SYST:HEART:TIM 0"); }
+
 }  // namespace fog::table

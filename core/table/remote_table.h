@@ -58,6 +58,7 @@ class RemoteTable : public TableController {
   Status stopAll() override;
   Status emergencyStop() override;
   Status keepAlive() override;
+  Status release() override;  // SYST:HEART:TIM 0
 
   // One query / one command, for tests and tools.
   Result<std::string> query(const std::string& line, bool quiet = false);

@@ -90,6 +90,11 @@ class TableController {
   virtual Status stopAll() = 0;
   virtual Status emergencyStop() = 0;
   virtual Status keepAlive() = 0;
+  // The host is done and has seen the table at rest: the controller may stop
+  // watching for heartbeats (a remote controller's timeout is set to 0). Not
+  // called after a failure, so a host that lost track of the table leaves
+  // the watchdog armed.
+  virtual Status release() { return Status::ok(); }
 };
 
 // Checks every point of a plan against the limits (amplitude, frequency, peak

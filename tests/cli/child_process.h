@@ -82,6 +82,11 @@ class Child {
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   }
 
+  // Reads what arrives within `seconds`; false once both pipes are closed.
+  bool pumpFor(double seconds) {
+    return pump(Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds)));
+  }
+
   std::string out, err;
 
  private:

@@ -19,6 +19,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <regex>
 #include <string>
 #include <thread>
 #include <vector>
@@ -114,7 +115,7 @@ TEST_F(TableBench, AThreeAxisPlanRunsThroughTheWholeHardwarePathAndMeasuresTheTr
   EXPECT_NE(emu.child->out.find("swing: X 2 Hz 2 deg about 0 deg started"), std::string::npos) << emu.child->out;
   EXPECT_LT(emu.child->out.find("swing: X 2 Hz"), emu.child->out.find("swing: Y 2 Hz 1.5 deg"));
   EXPECT_LT(emu.child->out.find("swing: Y 2 Hz"), emu.child->out.find("swing: Z 1 Hz 3 deg"));
-  EXPECT_EQ(emu.child->out.find("heartbeat:"), std::string::npos) << "the host kept the heartbeat";
+  EXPECT_EQ(emu.child->out.find("heartbeat:"), std::string::npos) << "the host kept the heartbeat, then released it";
   // The report: three test points on X, Y, Z, each lag within max(5 sigma, 2 us) of the truth.
   const auto report = nlohmann::json::parse(cli.out);
   const auto& points = report.at("test_points");
@@ -147,6 +148,7 @@ TEST_F(TableBench, AThreeAxisPlanRunsThroughTheWholeHardwarePathAndMeasuresTheTr
   EXPECT_TRUE(logHas(log, "status", "Y swinging"));
   EXPECT_TRUE(logHas(log, "step", "swing verified"));
   EXPECT_TRUE(logHas(log, "step", "plan done: 3 points"));
+  EXPECT_TRUE(logHas(log, "command", "SYST:HEART:TIM 0"));  // released: the table is at rest
 }
 
 TEST_F(TableBench, ACommandTheControllerRefusesEndsTheRunWithItsErrorAndTheTableAtRest) {
@@ -256,38 +258,126 @@ TEST_F(TableBench, AnInterlockTrippedMidSwingStopsTheRun) {
   EXPECT_FALSE((*r)->complete());
 }
 
+// A tiny client of the controller's protocol (the test's own hands on the
+// emulated table).
+class ProtocolClient {
+ public:
+  explicit ProtocolClient(const std::string& address) {
+    if (address.rfind("tcp:127.0.0.1:", 0) != 0) return;
+    fd_ = ::socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in sa{};
+    sa.sin_family = AF_INET;
+    sa.sin_port = htons(static_cast<std::uint16_t>(std::stoi(address.substr(14))));
+    sa.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    if (::connect(fd_, reinterpret_cast<sockaddr*>(&sa), sizeof sa) != 0) {
+      ::close(fd_);
+      fd_ = -1;
+      return;
+    }
+    timeval tv{5, 0};
+    ::setsockopt(fd_, SOL_SOCKET, SO_RCVTIMEO, &tv, sizeof tv);
+  }
+  ~ProtocolClient() {
+    if (fd_ >= 0) ::close(fd_);
+  }
+  bool connected() const { return fd_ >= 0; }
+  // Sends a line; for a query, returns its reply ("<no reply>" after 5 s).
+  std::string ask(const std::string& line) {
+    const std::string out = line + "\n";
+    if (::send(fd_, out.data(), out.size(), MSG_NOSIGNAL) != static_cast<ssize_t>(out.size())) return "<send failed>";
+    if (line.find('?') == std::string::npos) return std::string();
+    for (;;) {
+      const auto nl = pending_.find('\n');
+      if (nl != std::string::npos) {
+        std::string reply = pending_.substr(0, nl);
+        pending_.erase(0, nl + 1);
+        return reply;
+      }
+      char buf[512];
+      const ssize_t n = ::recv(fd_, buf, sizeof buf, 0);
+      if (n <= 0) return std::string("<no reply>");
+      pending_.append(buf, static_cast<std::size_t>(n));
+    }
+  }
+
+ private:
+  int fd_ = -1;
+  std::string pending_;
+};
+
+// The manual driver over the whole path: the bench prints what to set, a
+// scripted operator sets it on the (emulated) controller by hand, and the
+// bench decides from the board's table angle alone when to record. The
+// emulator's board sends no test-point markers.
+TEST_F(TableBench, AManualTableFollowsThePrintedInstructionsAndIsCheckedFromTheStream) {
+  auto emu = startEmulator({"--link", "tcp"});
+  ASSERT_FALSE(emu.table.empty());
+  ProtocolClient hands(emu.table);
+  ASSERT_TRUE(hands.connected());
+  const auto session = file("manual.fbs");
+  const auto plan = writePlan(R"({"points":[
+    {"axis":"x","frequency_hz":2,"amplitude_deg":2,"duration_s":4,"settle_s":1},
+    {"axis":"z","frequency_hz":1,"amplitude_deg":3,"duration_s":4,"settle_s":1.5}],"rest_between_s":0.5})");
+  Child cli({FOG_CLI, "run", "--table", "manual", "--source", "serial", "--port", emu.board, "--plan", plan,
+             "--speed", "10", "--out", session, "--json"});
+  const std::regex bring("bring the ([XYZ]) axis to ([-0-9.e]+) deg"),
+      swing("set the ([XYZ]) axis to swing sinusoidally at ([0-9.e]+) Hz, amplitude ([0-9.e]+) deg about ([-0-9.e]+) deg"),
+      stopAxis("stop the ([XYZ]) axis"), stopAll("stop every axis");
+  std::size_t seen = 0;
+  std::vector<std::string> told;
+  auto act = [&] {
+    for (auto nl = cli.err.find('\n', seen); nl != std::string::npos; nl = cli.err.find('\n', seen)) {
+      const std::string line = cli.err.substr(seen, nl - seen);
+      seen = nl + 1;
+      const auto at = line.find("table operator: ");
+      if (at == std::string::npos) continue;
+      told.push_back(line.substr(at + 16));
+      std::smatch m;
+      if (std::regex_search(line, m, swing)) {
+        hands.ask("AXIS:" + m[1].str() + ":SWING " + m[2].str() + "," + m[3].str() + "," + m[4].str());
+        hands.ask("AXIS:" + m[1].str() + ":START");
+      } else if (std::regex_search(line, m, bring)) {
+        hands.ask("AXIS:" + m[1].str() + ":POS " + m[2].str());
+      } else if (std::regex_search(line, m, stopAxis)) {
+        hands.ask("AXIS:" + m[1].str() + ":STOP");
+      } else if (std::regex_search(line, m, stopAll)) {
+        hands.ask("STOP");
+      }
+      EXPECT_EQ(hands.ask("SYST:ERR?"), "0,\"No error\"") << "after: " << line;
+    }
+  };
+  const auto giveUp = fog::test::Clock::now() + std::chrono::seconds(120);
+  while (cli.pumpFor(0.02) && fog::test::Clock::now() < giveUp) act();
+  ASSERT_EQ(cli.finish(10), 0) << cli.err;
+  stopEmulator(emu);
+  ASSERT_GE(told.size(), 6u);
+  EXPECT_EQ(told[1], "On the table controller: set the X axis to swing sinusoidally at 2 Hz, amplitude 2 deg about 0 deg, "
+                     "and start it. The bench records once the table-angle stream shows that swing.");
+  EXPECT_NE(emu.child->out.find("swing: Z 1 Hz 3 deg"), std::string::npos);
+  const auto report = nlohmann::json::parse(cli.out);
+  const auto& points = report.at("test_points");
+  ASSERT_EQ(points.size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    const double lag = points[i].at("lag_ms"), sd = points[i].at("lag_std_ms");
+    EXPECT_NEAR(lag, emu.trueLagMs, std::max(5.0 * sd, 0.002)) << "point " << i + 1;
+  }
+  EXPECT_EQ(points[1].at("axis"), "z");
+  auto r = fog::session::SessionReader::open(session);
+  ASSERT_TRUE(r.isOk());
+  EXPECT_TRUE((*r)->complete()) << (*r)->incompleteReason();
+  EXPECT_NE((*r)->info().source.find("table manual"), std::string::npos);
+  const auto log = tableLog(session);
+  EXPECT_TRUE(logHas(log, "operator", "swing sinusoidally at 1 Hz, amplitude 3 deg"));
+  EXPECT_TRUE(logHas(log, "step", "swing verified"));
+}
+
 // The controller's watchdog, over its own protocol: a host that goes quiet
 // mid-swing gets its table stopped, and is told why.
 TEST_F(TableBench, TheHeartbeatStopsTheTableWhenTheHostGoesQuiet) {
   auto emu = startEmulator({"--link", "tcp", "--board", "none"});
-  ASSERT_EQ(emu.table.rfind("tcp:127.0.0.1:", 0), 0u) << emu.table;
-  const int port = std::stoi(emu.table.substr(14));
-  const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-  sockaddr_in sa{};
-  sa.sin_family = AF_INET;
-  sa.sin_port = htons(static_cast<std::uint16_t>(port));
-  sa.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  ASSERT_EQ(::connect(fd, reinterpret_cast<sockaddr*>(&sa), sizeof sa), 0);
-  timeval tv{5, 0};
-  ::setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &tv, sizeof tv);
-  std::string pending;
-  auto ask = [&](const std::string& line) {
-    const std::string out = line + "\n";
-    EXPECT_EQ(::send(fd, out.data(), out.size(), 0), static_cast<ssize_t>(out.size()));
-    if (line.find('?') == std::string::npos) return std::string();
-    for (;;) {
-      const auto nl = pending.find('\n');
-      if (nl != std::string::npos) {
-        std::string reply = pending.substr(0, nl);
-        pending.erase(0, nl + 1);
-        return reply;
-      }
-      char buf[512];
-      const ssize_t n = ::recv(fd, buf, sizeof buf, 0);
-      if (n <= 0) return std::string("<no reply>");
-      pending.append(buf, static_cast<std::size_t>(n));
-    }
-  };
+  ProtocolClient hands(emu.table);
+  ASSERT_TRUE(hands.connected()) << emu.table;
+  auto ask = [&](const std::string& line) { return hands.ask(line); };
   ask("SYST:HEART:TIM 0.5");
   ask("AXIS:X:SWING 1,3,0");
   ask("AXIS:X:START");
@@ -310,7 +400,6 @@ TEST_F(TableBench, TheHeartbeatStopsTheTableWhenTheHostGoesQuiet) {
   EXPECT_EQ(ask("SYST:ERR?"), "203,\"Heartbeat lost\"");
   ask("*CLS");
   EXPECT_EQ(ask("SYST:STAT?"), "0,0,0,NONE");
-  ::close(fd);
   stopEmulator(emu);
 }
 

@@ -83,6 +83,10 @@ class FakeController : public TableController {
     return Status::ok();
   }
 
+  Status release() override {
+    log.push_back("release");
+    return Status::ok();
+  }
   Status refuse(const std::string& what) {
     if (what == refuseWhat && refuseCount-- > 0) return invalidArgument("the table controller refused '" + what + "'");
     return Status::ok();

@@ -36,7 +36,8 @@ TEST(PlanRunner, RunsEachPointInOrderPositionSwingRecordStopRest) {
   EXPECT_EQ(r.pointsDone, 3);
   EXPECT_TRUE(r.tableAtRest);
   EXPECT_EQ(b.table.log, (std::vector<std::string>{"move x", "swing x", "start x", "stop x", "move y", "swing y",
-                                                   "start y", "stop y", "move z", "swing z", "start z", "stop z"}));
+                                                   "start y", "stop y", "move z", "swing z", "start z", "stop z",
+                                                   "release"}));
   EXPECT_EQ(b.recorder.began, (std::vector<int>{0, 1, 2}));
   EXPECT_EQ(b.recorder.ended, (std::vector<int>{0, 1, 2}));
   // Recording begins after positioning (0.5 s) and the settle time (2 s).
@@ -153,7 +154,7 @@ TEST(PlanRunner, AStaticPointHoldsTheAxisAtRest) {
   plan.points = {TestPoint::staticSegment(Axis::kY, 10.0)};
   auto r = b.runner.run(plan, nullptr);
   ASSERT_TRUE(r.status.isOk()) << r.status.message();
-  EXPECT_EQ(b.table.log, (std::vector<std::string>{"move y"}));
+  EXPECT_EQ(b.table.log, (std::vector<std::string>{"move y", "release"}));
 }
 
 }  // namespace
