@@ -9,7 +9,9 @@
 // truth instead of sleeping, and every wait has a generous limit (a
 // descheduled process on a loaded CI machine only makes a test slower).
 
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <termios.h>
 #include <poll.h>
 #include <signal.h>
 #include <sys/wait.h>
@@ -20,6 +22,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <nlohmann/json.hpp>
 #include <regex>
@@ -27,6 +30,8 @@
 #include <vector>
 
 #include "child_process.h"
+#include "protocol/decoder.h"
+#include "protocol/host_command.h"
 #include "session/session_file.h"
 
 namespace {
@@ -330,6 +335,94 @@ TEST_F(SerialBench, AMissingPortIsRefusedWithTheSystemsReason) {
   Child host({FOG_CLI, "run", "--source", "serial", "--port", (dir_ / "no-such-tty").string()});
   EXPECT_EQ(host.finish(), 2);
   EXPECT_TRUE(std::regex_search(host.err, std::regex("cannot open serial port .*no-such-tty: "))) << host.err;
+}
+
+// The host-to-board direction (docs/protocol.md, "Host to board"), over the
+// emulator's pty with plain POSIX I/O: the pulse equivalent and a test-point
+// marker are echoed in STATUS frames, and streaming stops and resumes with
+// contiguous sequence numbers.
+TEST_F(SerialBench, HostCommandsSetThePulseEquivalentMarkTestPointsAndStopAndStartTheStream) {
+  Child board({FOG_BOARD_EMU, "--axis", "x", "--freq-hz", "1", "--amp-deg", "3", "--duration-s", "30", "--seed", "3",
+               "--speed", "5", "--linger-s", "1"});
+  const std::string pty = board.waitForLine("pty: (\\S+)\n");
+  ASSERT_FALSE(pty.empty()) << board.err;
+  const int fd = ::open(pty.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK);
+  ASSERT_GE(fd, 0);
+  termios t{};
+  ASSERT_EQ(::tcgetattr(fd, &t), 0);
+  cfmakeraw(&t);
+  cfsetspeed(&t, B921600);
+  ASSERT_EQ(::tcsetattr(fd, TCSANOW, &t), 0);
+  fog::protocol::Decoder decoder;
+  std::vector<fog::protocol::DecodedFrame> frames;
+  // Reads until `done` says so (checked on every new frame) or 30 s pass.
+  auto readUntil = [&](const std::function<bool(const fog::protocol::DecodedFrame&)>& done) {
+    const auto giveUp = Clock::now() + std::chrono::seconds(30);
+    std::vector<fog::protocol::DecodedFrame> got;
+    while (Clock::now() < giveUp) {
+      pollfd p{fd, POLLIN, 0};
+      if (::poll(&p, 1, 200) <= 0) continue;
+      std::uint8_t buf[4096];
+      const ssize_t n = ::read(fd, buf, sizeof buf);
+      if (n <= 0) continue;
+      got.clear();
+      decoder.push(std::span<const std::uint8_t>(buf, static_cast<std::size_t>(n)), got);
+      for (const auto& f : got) {
+        frames.push_back(f);
+        if (done(f)) return true;
+      }
+    }
+    return false;
+  };
+  auto send = [&](const fog::protocol::HostCommand& c, std::uint16_t seq) {
+    std::vector<std::uint8_t> bytes;
+    fog::protocol::appendHostCommand(c, seq, bytes);
+    ASSERT_EQ(::write(fd, bytes.data(), bytes.size()), static_cast<ssize_t>(bytes.size()));
+  };
+  auto status = [](const fog::protocol::DecodedFrame& f) { return std::get_if<fog::protocol::StatusPayload>(&f.frame.payload); };
+  auto isData = [](const fog::protocol::DecodedFrame& f) { return f.frame.type != fog::protocol::FrameType::kStatus; };
+  // Before any command: the simulator's own pulse equivalent.
+  ASSERT_TRUE(readUntil([&](const auto& f) { return status(f) != nullptr; }));
+  EXPECT_EQ(status(frames.back())->pulseEquivalentDeg, 5e-5);
+  // Pulse equivalent and a marker: echoed from the next STATUS on.
+  fog::protocol::HostCommand mark;
+  mark.opcode = fog::protocol::HostOpcode::kMarkTestPoint;
+  mark.testPoint = 7;
+  mark.axis = 2;
+  mark.phase = fog::protocol::TestPhase::kRecording;
+  mark.nominalFrequencyMicroHz = 2000000;
+  mark.nominalAmplitudeMicroDeg = 1500000;
+  send(fog::protocol::HostCommand{fog::protocol::HostOpcode::kSetPulseEquivalent, 1e-4}, 0);
+  send(mark, 1);
+  ASSERT_TRUE(readUntil([&](const auto& f) { return status(f) && status(f)->testPoint == 7; })) << board.out;
+  const auto* s = status(frames.back());
+  EXPECT_EQ(s->pulseEquivalentDeg, 1e-4);
+  EXPECT_EQ(s->axis, 2);
+  EXPECT_EQ(s->phase, fog::protocol::TestPhase::kRecording);
+  EXPECT_EQ(s->nominalFrequencyMicroHz, 2000000u);
+  EXPECT_EQ(s->nominalAmplitudeMicroDeg, 1500000u);
+  // Stop: no table or IMU frame stamped after the stop, while STATUS frames go on.
+  send(fog::protocol::HostCommand{fog::protocol::HostOpcode::kStopStreaming}, 2);
+  const std::string stopAt = board.waitForLine("host command: stop streaming at stream time ([0-9.]+) s", 30);
+  ASSERT_FALSE(stopAt.empty()) << board.out;
+  const double stopTicks = std::stod(stopAt) * 1e7 + 1e4;  // 1 ms: the printed time is rounded
+  std::size_t dataAfterStop = 0, statusAfterStop = 0;
+  ASSERT_TRUE(readUntil([&](const auto& f) {
+    if (static_cast<double>(f.frame.counter) <= stopTicks) return false;
+    if (isData(f)) ++dataAfterStop;
+    else ++statusAfterStop;
+    return statusAfterStop >= 5;  // half a stream second
+  }));
+  EXPECT_EQ(dataAfterStop, 0u);
+  // Start: data again, nothing counted as lost.
+  send(fog::protocol::HostCommand{fog::protocol::HostOpcode::kStartStreaming}, 3);
+  const std::string startAt = board.waitForLine("host command: start streaming at stream time ([0-9.]+) s", 30);
+  ASSERT_FALSE(startAt.empty()) << board.out;
+  std::size_t dataAfterStart = 0;
+  ASSERT_TRUE(readUntil([&](const auto& f) { return isData(f) && ++dataAfterStart >= 300; }));
+  EXPECT_EQ(decoder.health().lostFrames, 0u);
+  EXPECT_EQ(decoder.health().checksumFailures, 0u);
+  ::close(fd);
 }
 
 }  // namespace
