@@ -6,8 +6,9 @@
 //
 // stdout, one line each, flushed (tests read them): "pty: /dev/pts/N",
 // "truth: ..." per test point, "host: ..." once the host has opened the
-// port, "stall: ...", "disconnect: ...", and a final "done: ..." with the
-// counts of what was sent and damaged.
+// port, "host command: ..." for each command the host sends (docs/protocol.md,
+// "Host to board"), "stall: ...", "disconnect: ...", and a final "done: ..."
+// with the counts of what was sent and damaged.
 
 #include <fcntl.h>
 #include <poll.h>
@@ -26,6 +27,7 @@
 #include <vector>
 
 #include "board_faults.h"
+#include "board_host.h"
 #include "cli_arguments.h"
 #include "model/simulator.h"
 #include "sim_options.h"
@@ -273,7 +275,12 @@ int main(int argc, char** argv) {
   }
 
   app::BoardFaults faults(o.faults);
-  std::vector<std::uint8_t> clean, damaged;
+  // The host-to-board direction (docs/protocol.md): commands read from the
+  // port, applied to the clean stream before the faults.
+  app::BoardHostControl hostControl;
+  protocol::HostCommandDecoder commandDecoder;
+  std::vector<protocol::HostCommand> commands;
+  std::vector<std::uint8_t> clean, configured, damaged;
   std::uint64_t sent = 0;
   const auto start = Clock::now();
   Clock::duration paused{};
@@ -287,10 +294,22 @@ int main(int argc, char** argv) {
     const bool disconnectDue = o.disconnectAtS >= 0.0 && until >= o.disconnectAtS;
     if (stallDue) until = o.stallAtS;
     if (disconnectDue) until = std::min(until, o.disconnectAtS);
+    // What the host sent (a board that only streams would ignore it).
+    for (;;) {
+      std::uint8_t in[512];
+      const ssize_t n = ::read(fd, in, sizeof in);
+      if (n <= 0) break;
+      commands.clear();
+      commandDecoder.push(std::span<const std::uint8_t>(in, static_cast<std::size_t>(n)), commands);
+      for (const auto& c : commands)
+        say("host command: " + hostControl.apply(c) + " at stream time " + fmt("%.3f", sim->get()->timeS()) + " s");
+    }
     clean.clear();
+    configured.clear();
     damaged.clear();
     more = sim->get()->advance(until, clean);
-    faults.apply(clean, sim->get()->timeS(), damaged);
+    hostControl.process(clean, configured);
+    faults.apply(configured, sim->get()->timeS(), damaged);
     if (!damaged.empty()) {
       // The line as the host has it set now (it may change it at any time).
       if (termios t{}; o.device.empty() && ::tcgetattr(fd, &t) == 0 && cfgetospeed(&t) != B50) host = hostLineOf(t);

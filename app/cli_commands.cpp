@@ -116,6 +116,16 @@ extern "C" void onStopSignal(int) { gStop = true; }
 int runCommand(CliArguments& args) {
   const bool json = args.flag("json");
   auto source = args.text("source").value_or("sim");
+  // --table manual|remote:ADDR: the bench drives the turntable (docs/table-control.md).
+  if (auto table = args.text("table"); table && *table != "sim") {
+#ifdef FOG_HAVE_SERIAL
+    return runTableCommand(args, *table);
+#else
+    return fail(invalidArgument("--table " + *table + " records a real sampling board, which needs the Qt build of "
+                                "fogbench-cli (QSerialPort; the release preset); this build has no Qt"),
+                2);
+#endif
+  }
   if (source == "serial") {
 #ifdef FOG_HAVE_SERIAL
     return runSerialCommand(args);

@@ -47,6 +47,14 @@ usage:
       the plan, if given, is stored as the one intended (the board runs its own).
       A port that vanishes or a line silent for --stall-timeout-s ends the run as
       incomplete, keeping everything received (docs/serial.md).
+  fogbench-cli run --table remote:tcp:HOST:PORT|remote:DEV|manual --source serial --port DEV
+                  [plan] [constants] [--table-heartbeat-s 2] [--table-reply-timeout-s 2]
+                  [--table-baud 115200] [--operator-timeout-s 600] [--speed X] [--out SESSION.fbs ...]
+      Drive the turntable through the plan while recording the board (Qt build):
+      remote: a controller speaking the protocol of docs/table-control.md; manual:
+      the operator is told what to set and the table angle decides when it is right.
+      Test points are cut from the table angle; Ctrl+C or any fault brings the table
+      to rest; the session keeps the table log. --table sim (default): the simulator.
   fogbench-cli ports
       List the serial ports (Qt build).
   fogbench-cli analyze FILE [constants] [--limit-ms 0.8] [--json] [--no-store]

@@ -23,6 +23,8 @@ namespace {
 std::atomic<bool> gStop{false};
 extern "C" void onInterrupt(int) { gStop = true; }
 
+}  // namespace
+
 Result<serial::SerialSettings> readSerialSettings(CliArguments& args) {
   serial::SerialSettings s;
   s.port = args.text("port").value_or("");
@@ -43,6 +45,8 @@ Result<serial::SerialSettings> readSerialSettings(CliArguments& args) {
   FOG_RETURN_IF_ERROR(s.validate());
   return s;
 }
+
+namespace {
 
 std::string fixed1(double v) {
   char b[32];

@@ -5,10 +5,16 @@
 // the Qt build (QSerialPort); a build without Qt says so.
 
 #include "cli_arguments.h"
+#include "common/status.h"
+#include "serial/serial_source.h"
 
 namespace fog::app {
 
 int runSerialCommand(CliArguments& args);  // run --source serial
 int portsCommand(CliArguments& args);      // ports
+// --port, --baud, --parity, --data-bits, --stop-bits.
+Result<serial::SerialSettings> readSerialSettings(CliArguments& args);
+// run --table remote:ADDR|manual --source serial --port DEV (docs/table-control.md).
+int runTableCommand(CliArguments& args, const std::string& table);
 
 }  // namespace fog::app

@@ -128,7 +128,18 @@ Result<AcquisitionResult> acquire(ByteSource& source, const AcquisitionOptions& 
                                 fixed1(seconds(now - started)) + " s (" + sessionFailure.message() + ")";
       break;
     }
+    if (writer && options.drainTableLog && sessionFailure.isOk()) {
+      if (auto lines = options.drainTableLog(); !lines.empty())
+        if (auto s = writer->appendTableLog(lines); !s.isOk()) sessionFailure = s;
+    }
     if (now - lastBatch >= options.batchInterval) deliver(now);
+    if (options.shouldEnd && !ended) {
+      if (auto end = options.shouldEnd()) {
+        result.incompleteReason = *end;
+        ended = true;
+        break;
+      }
+    }
     if (!ended && options.stallLimit.count() > 0 && now - lastByte >= options.stallLimit) {
       result.incompleteReason = "no data for " + fixed1(seconds(now - lastByte)) + " s from " +
                                 source.description() + " (after " + fixed1(seconds(now - started)) + " s)";
@@ -136,10 +147,13 @@ Result<AcquisitionResult> acquire(ByteSource& source, const AcquisitionOptions& 
     }
   }
   result.complete = ended && result.incompleteReason.empty();
+  if (writer && options.drainTableLog && sessionFailure.isOk())
+    if (auto lines = options.drainTableLog(); !lines.empty()) (void)writer->appendTableLog(lines);
   deliver(Clock::now());
 
   const bool anyFrames = builder.framesAdded() > 0;
   result.recording = builder.finish(decoder.health());
+  if (options.segment) result.recording = options.segment(result.recording);
   result.recordingStatus = usability(anyFrames, result.recording, result.bytesReceived);
   if (result.recordingStatus.isOk()) result.report = analysis::analyzeRecording(result.recording, options.constants);
   else result.report = result.recordingStatus;

@@ -33,6 +33,7 @@
 #include <chrono>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -43,6 +44,7 @@
 #include "common/session_info.h"
 #include "common/status.h"
 #include "protocol/decoder.h"
+#include "session/session_file.h"
 
 namespace fog::acquisition {
 
@@ -60,6 +62,16 @@ struct AcquisitionOptions {
   // A live board keeps sending after its plan: end the run as complete at
   // the first STATUS frame saying phase "done" after a recording phase.
   bool endWhenBoardDone = false;
+  // A table-driven run (docs/table-control.md) decides itself when the run
+  // is over: called every loop; nullopt = go on, "" = end as complete, any
+  // other text = end as incomplete with that reason.
+  std::function<std::optional<std::string>()> shouldEnd;
+  // Called every loop; lines returned go into the session's table log
+  // (after the raw bytes received so far).
+  std::function<std::vector<session::TableLogEntry>()> drainTableLog;
+  // Applied to the decoded recording before it is analysed and stored: the
+  // table-driven run cuts the stream into its test points here.
+  std::function<Recording(const Recording&)> segment;
 };
 
 struct AcquisitionBatch {

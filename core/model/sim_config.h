@@ -96,6 +96,10 @@ struct SamplingBoardParams {
   int counterBits = 32;
   std::uint32_t counterStart = 0;  // raw counter value at t = 0 (set near 2^bits to test wrap)
   double statusPeriodS = 0.1;
+  // false: a board that does not know the plan: its STATUS frames never name
+  // a test point or phase (always idle, test point 0xFFFF); the host segments
+  // the stream itself (the table emulator's board, docs/table-control.md).
+  bool markTestPoints = true;
 };
 
 struct SimConfig {

@@ -208,6 +208,7 @@ class Simulator::Impl {
     s.pulseEquivalentDeg = c_.fog.pulseEquivalentDeg;
     s.phase = protocol::TestPhase::kIdle;
     for (const auto& p : table_.schedule()) {
+      if (!c_.samplingBoard.markTestPoints) break;
       if (t < p.swingStartS || t >= p.recordEndS) continue;
       s.testPoint = static_cast<std::uint16_t>(p.index);
       s.axis = static_cast<std::uint8_t>(p.point.axis);
@@ -216,7 +217,7 @@ class Simulator::Impl {
       s.nominalAmplitudeMicroDeg = static_cast<std::uint32_t>(std::lround(p.point.amplitudeDeg * 1e6));
       s.flags = p.point.isStatic() ? protocol::kStatusFlagStatic : std::uint8_t{0};
     }
-    if (s.phase == protocol::TestPhase::kIdle && !table_.schedule().empty() &&
+    if (c_.samplingBoard.markTestPoints && s.phase == protocol::TestPhase::kIdle && !table_.schedule().empty() &&
         t >= table_.schedule().back().recordEndS)
       s.phase = protocol::TestPhase::kDone;
     writer_.status(toCounter(t, c_.samplingBoard), s, out);

@@ -117,6 +117,18 @@ ALTER TABLE session ADD COLUMN metadata_fnv1a INTEGER;
 ALTER TABLE result ADD COLUMN fnv1a INTEGER;
 )sql";
 
+// Schema 3: the table log of a table-driven run (commands to the table
+// controller, its replies, its status changes, the plan runner's steps).
+constexpr const char* kSchemaV3Step = R"sql(
+CREATE TABLE table_log (
+  seq INTEGER PRIMARY KEY,
+  elapsed_s REAL NOT NULL,
+  logged_utc TEXT NOT NULL,
+  kind TEXT NOT NULL,
+  text TEXT NOT NULL
+);
+)sql";
+
 // Sample blocks: small enough to stay far below SQLite's 1 GB value limit
 // whatever the test point's length, large enough that a block costs little.
 constexpr std::size_t kSamplesPerBlock = 65536;
@@ -407,14 +419,38 @@ Result<int> checkIdentity(sqlite3* db, const std::string& path) {
 // SessionReader learns to read every older layout without migrating it.
 Status migrate(sqlite3* db, int from) {
   if (from == kSchemaVersion) return Status::ok();
-  if (from == 1) {
+  if (from < 1 || from > kSchemaVersion)
+    return Status(StatusCode::kInternal, "no migration from schema " + std::to_string(from));
+  if (from < 2) {
     // 1 -> 2: checksum columns. The metadata of a migrated file stays
     // unchecked (NULL): a checksum now would bless whatever it holds.
     if (!exec(db, kSchemaV2Step) || !exec(db, "PRAGMA user_version = 2"))
       return ioError("migrating from schema 1 to 2 failed: " + sqliteMessage(db));
-    return Status::ok();
   }
-  return Status(StatusCode::kInternal, "no migration from schema " + std::to_string(from));
+  if (from < 3) {
+    // 2 -> 3: an empty table log.
+    if (!exec(db, kSchemaV3Step) || !exec(db, "PRAGMA user_version = 3"))
+      return ioError("migrating from schema 2 to 3 failed: " + sqliteMessage(db));
+  }
+  return Status::ok();
+}
+
+}  // namespace
+std::string utcNow();
+namespace {
+Status insertTableLog(sqlite3* db, const std::vector<TableLogEntry>& entries) {
+  Stmt s(db, "INSERT INTO table_log (elapsed_s, logged_utc, kind, text) VALUES (?1, ?2, ?3, ?4)");
+  if (!s.ok()) return ioError(sqliteMessage(db));
+  const std::string now = utcNow();
+  for (const auto& e : entries) {
+    sqlite3_reset(s.get());
+    s.bind(1, e.elapsedS);
+    s.bind(2, now);
+    s.bind(3, toValidUtf8(e.kind.substr(0, kMaxFieldBytes)));
+    s.bind(4, toValidUtf8(e.text.substr(0, kMaxFieldBytes)));
+    if (s.step() != SQLITE_DONE) return ioError(sqliteMessage(db));
+  }
+  return Status::ok();
 }
 
 }  // namespace
@@ -523,7 +559,7 @@ Result<std::unique_ptr<SessionWriter>> SessionWriter::create(const std::string& 
   const std::string ids = "PRAGMA application_id = " + std::to_string(kApplicationId) +
                           "; PRAGMA user_version = " + std::to_string(kSchemaVersion) + ";";
   if (!exec(w->db_, "BEGIN") || !exec(w->db_, ids.c_str()) || !exec(w->db_, kSchemaV1) ||
-      !exec(w->db_, kSchemaV2Step))
+      !exec(w->db_, kSchemaV2Step) || !exec(w->db_, kSchemaV3Step))
     return abandon("schema");
   {
     Stmt s(w->db_,
@@ -613,6 +649,17 @@ Status SessionWriter::appendRaw(const std::uint8_t* data, std::size_t size) {
   }
   if (!pending_.empty() && (now - oldestPending_ >= kCommitInterval || pending_.size() >= kMaxPendingRaw))
     return commitPending();
+  return Status::ok();
+}
+
+Status SessionWriter::appendTableLog(const std::vector<TableLogEntry>& entries) {
+  if (!broken_.isOk()) return broken_;
+  if (finished_) return invalidArgument("session '" + path_ + "' is finished; it accepts no more data");
+  if (entries.empty()) return Status::ok();
+  if (auto s = commitPending(); !s.isOk()) return s;
+  if (!exec(db_, "BEGIN IMMEDIATE")) return fail("storing the table log");
+  if (!insertTableLog(db_, entries).isOk()) return fail("storing the table log");
+  if (!exec(db_, "COMMIT")) return fail("storing the table log");
   return Status::ok();
 }
 
@@ -1020,6 +1067,19 @@ Result<std::vector<StoredResult>> SessionReader::results() const {
   return out;
 }
 
+Result<std::vector<TableLogEntry>> SessionReader::tableLog() const {
+  std::vector<TableLogEntry> out;
+  if (schemaVersion_ < 3) return out;
+  const std::string n = std::to_string(kMaxFieldBytes);
+  Stmt s(db_, ("SELECT elapsed_s, CAST(substr(CAST(kind AS BLOB), 1, " + n + ") AS TEXT), CAST(substr(CAST(text AS BLOB), 1, " +
+               n + ") AS TEXT) FROM table_log ORDER BY seq").c_str());
+  if (!s.ok()) return readError("reading the table log");
+  int rc;
+  while ((rc = s.step()) == SQLITE_ROW) out.push_back(TableLogEntry{s.real(0), toValidUtf8(s.text(1)), toValidUtf8(s.text(2))});
+  if (rc != SQLITE_DONE) return readError("reading the table log");
+  return out;
+}
+
 // --- addResult -------------------------------------------------------------
 
 Status addResult(const std::string& path, const std::string& settingsJson, const std::string& reportJson) {
@@ -1075,6 +1135,38 @@ Status addResult(const std::string& path, const std::string& settingsJson, const
   s.bind(4, resultChecksum(created, settings, report));
   if (s.step() != SQLITE_DONE) return failed("inserting");
   if (!exec(db, "COMMIT")) return failed("committing");
+  return Status::ok();
+}
+
+Status appendTableLog(const std::string& path, const std::vector<TableLogEntry>& entries) {
+  if (entries.empty()) return Status::ok();
+  FOG_ASSIGN_OR_RETURN(auto header, checkHeader(path));
+  if (header.userVersion > kSchemaVersion) return invalidArgument(newerSchemaMessage(path, header.userVersion));
+  if (isBeingRecorded(path))
+    return ioError("the table log was not stored: session '" + path + "' is being recorded right now");
+  sqlite3* db = nullptr;
+  struct Closer {
+    sqlite3*& db;
+    ~Closer() { sqlite3_close(db); }
+  } closer{db};
+  if (sqlite3_open_v2(path.c_str(), &db, SQLITE_OPEN_READWRITE, nullptr) != SQLITE_OK)
+    return ioError("the table log was not stored: cannot open session '" + path + "' for writing: " + sqliteMessage(db));
+  sqlite3_busy_timeout(db, kAddResultBusyTimeoutMs);
+  if (!exec(db, "BEGIN IMMEDIATE"))
+    return ioError("the table log was not stored in session '" + path + "': " + sqliteMessage(db));
+  auto version = checkIdentity(db, path);
+  if (!version) {
+    exec(db, "ROLLBACK");
+    return version.status();
+  }
+  if (auto s = migrate(db, *version); !s.isOk()) {
+    exec(db, "ROLLBACK");
+    return s;
+  }
+  if (auto s = insertTableLog(db, entries); !s.isOk() || !exec(db, "COMMIT")) {
+    exec(db, "ROLLBACK");
+    return ioError("the table log was not stored in session '" + path + "': " + sqliteMessage(db));
+  }
   return Status::ok();
 }
 

@@ -42,7 +42,7 @@ struct sqlite3;
 
 namespace fog::session {
 
-inline constexpr int kSchemaVersion = 2;
+inline constexpr int kSchemaVersion = 3;
 // 'F' 'O' 'G' 'B' at offset 68 of the SQLite header.
 inline constexpr std::int32_t kApplicationId = 0x464F4742;
 inline constexpr const char* kFileExtension = ".fbs";
@@ -60,6 +60,15 @@ struct StoredResult {
   // False: the row fails its checksum (schema 2); the texts above are then
   // not to be trusted. Results of schema 1 files have no checksum.
   bool intact = true;
+};
+
+// One line of a table-driven run's log (schema 3, docs/table-control.md):
+// a command sent to the table controller, its reply, a status change, a
+// step of the plan runner, an event.
+struct TableLogEntry {
+  double elapsedS = 0.0;  // wall seconds since the run started
+  std::string kind;       // "command", "reply", "status", "step", "event"
+  std::string text;
 };
 
 // Recording side. Not thread-safe; one writer per file, one file per session.
@@ -82,6 +91,9 @@ class SessionWriter {
   // counter frequency/width and pulse equivalent. Replaces any decoded data
   // stored before (the raw stream is untouched). Commits.
   Status storeRecording(const Recording& decoded);
+  // Appends lines to the table log (one transaction; commits buffered raw
+  // bytes first, so the log never runs ahead of the stream it describes).
+  Status appendTableLog(const std::vector<TableLogEntry>& entries);
   // Commits everything buffered.
   Status flush();
   // Flushes, marks the session complete or incomplete with a reason ("port
@@ -149,6 +161,9 @@ class SessionReader {
   Result<Recording> recording() const;
   // Every stored analysis result, oldest first.
   Result<std::vector<StoredResult>> results() const;
+  // The table log, in order; empty for a session without one (the simulator,
+  // a board alone, schema 1 and 2 files).
+  Result<std::vector<TableLogEntry>> tableLog() const;
 
  private:
   SessionReader() = default;
@@ -168,6 +183,12 @@ class SessionReader {
 // stored") while the session is being recorded, and when the file stays
 // locked by another writer for more than a few seconds.
 Status addResult(const std::string& path, const std::string& settingsJson, const std::string& reportJson);
+
+// Appends table-log lines to a finished session (what the plan runner said
+// after the recording ended: the table brought to rest). Same rules as
+// addResult: never while the session is being recorded; migrates an older
+// file first.
+Status appendTableLog(const std::string& path, const std::vector<TableLogEntry>& entries);
 
 // Cheap test for listing folders: an SQLite header whose application_id is
 // fogbench's, or a session whose SQLite header is damaged (its schema text is

@@ -9,7 +9,9 @@
 // truth instead of sleeping, and every wait has a generous limit (a
 // descheduled process on a loaded CI machine only makes a test slower).
 
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <termios.h>
 #include <poll.h>
 #include <signal.h>
 #include <sys/wait.h>
@@ -20,109 +22,23 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <string>
 #include <vector>
 
+#include "child_process.h"
+#include "protocol/decoder.h"
+#include "protocol/host_command.h"
 #include "session/session_file.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
-
-// A child process with its stdout and stderr on pipes.
-class Child {
- public:
-  explicit Child(const std::vector<std::string>& argv) {
-    int outPipe[2], errPipe[2];
-    if (::pipe(outPipe) != 0 || ::pipe(errPipe) != 0) return;
-    pid_ = ::fork();
-    if (pid_ == 0) {
-      ::dup2(outPipe[1], 1);
-      ::dup2(errPipe[1], 2);
-      ::close(outPipe[0]);
-      ::close(errPipe[0]);
-      ::close(outPipe[1]);
-      ::close(errPipe[1]);
-      std::vector<char*> args;
-      for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-      args.push_back(nullptr);
-      ::execv(args[0], args.data());
-      std::perror("execv");
-      ::_exit(127);
-    }
-    ::close(outPipe[1]);
-    ::close(errPipe[1]);
-    outFd_ = outPipe[0];
-    errFd_ = errPipe[0];
-  }
-  ~Child() {
-    if (pid_ > 0 && !exited_) {
-      ::kill(pid_, SIGKILL);
-      int status = 0;
-      ::waitpid(pid_, &status, 0);
-    }
-    if (outFd_ >= 0) ::close(outFd_);
-    if (errFd_ >= 0) ::close(errFd_);
-  }
-
-  // Reads until stdout holds a line matching `pattern` (or the process
-  // ends, or the limit passes); returns the first capture group or "".
-  std::string waitForLine(const std::string& pattern, double limitS = 60.0) {
-    const std::regex re(pattern);
-    const auto giveUp = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(limitS));
-    for (;;) {
-      std::smatch m;
-      if (std::regex_search(out, m, re)) return m.size() > 1 ? m[1].str() : m[0].str();
-      if (!pump(giveUp)) return "";
-    }
-  }
-
-  // Reads everything until the process exits; its exit code, or -1 when it
-  // had to be killed at the limit.
-  int finish(double limitS = 120.0) {
-    const auto giveUp = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(limitS));
-    while (pump(giveUp)) {
-    }
-    if (Clock::now() >= giveUp) ::kill(pid_, SIGKILL);
-    int status = 0;
-    ::waitpid(pid_, &status, 0);
-    exited_ = true;
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  }
-
-  std::string out, err;
-
- private:
-  // One round of reading; false once both pipes are closed or time is up.
-  bool pump(Clock::time_point giveUp) {
-    if (outFd_ < 0 && errFd_ < 0) return false;
-    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(giveUp - Clock::now()).count();
-    if (left <= 0) return false;
-    pollfd p[2] = {{outFd_, POLLIN, 0}, {errFd_, POLLIN, 0}};
-    if (::poll(p, 2, static_cast<int>(std::min<long long>(left, 1000))) < 0) return false;
-    for (int i = 0; i < 2; ++i) {
-      if (!(p[i].revents & (POLLIN | POLLHUP))) continue;
-      char buf[4096];
-      const ssize_t n = ::read(p[i].fd, buf, sizeof buf);
-      int& fd = i == 0 ? outFd_ : errFd_;
-      if (n <= 0) {
-        ::close(fd);
-        fd = -1;
-      } else {
-        (i == 0 ? out : err).append(buf, static_cast<std::size_t>(n));
-      }
-    }
-    return true;
-  }
-
-  pid_t pid_ = -1;
-  int outFd_ = -1, errFd_ = -1;
-  bool exited_ = false;
-};
+using fog::test::Child;
 
 std::vector<std::uint8_t> readFile(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -419,6 +335,94 @@ TEST_F(SerialBench, AMissingPortIsRefusedWithTheSystemsReason) {
   Child host({FOG_CLI, "run", "--source", "serial", "--port", (dir_ / "no-such-tty").string()});
   EXPECT_EQ(host.finish(), 2);
   EXPECT_TRUE(std::regex_search(host.err, std::regex("cannot open serial port .*no-such-tty: "))) << host.err;
+}
+
+// The host-to-board direction (docs/protocol.md, "Host to board"), over the
+// emulator's pty with plain POSIX I/O: the pulse equivalent and a test-point
+// marker are echoed in STATUS frames, and streaming stops and resumes with
+// contiguous sequence numbers.
+TEST_F(SerialBench, HostCommandsSetThePulseEquivalentMarkTestPointsAndStopAndStartTheStream) {
+  Child board({FOG_BOARD_EMU, "--axis", "x", "--freq-hz", "1", "--amp-deg", "3", "--duration-s", "30", "--seed", "3",
+               "--speed", "5", "--linger-s", "1"});
+  const std::string pty = board.waitForLine("pty: (\\S+)\n");
+  ASSERT_FALSE(pty.empty()) << board.err;
+  const int fd = ::open(pty.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK);
+  ASSERT_GE(fd, 0);
+  termios t{};
+  ASSERT_EQ(::tcgetattr(fd, &t), 0);
+  cfmakeraw(&t);
+  cfsetspeed(&t, B921600);
+  ASSERT_EQ(::tcsetattr(fd, TCSANOW, &t), 0);
+  fog::protocol::Decoder decoder;
+  std::vector<fog::protocol::DecodedFrame> frames;
+  // Reads until `done` says so (checked on every new frame) or 30 s pass.
+  auto readUntil = [&](const std::function<bool(const fog::protocol::DecodedFrame&)>& done) {
+    const auto giveUp = Clock::now() + std::chrono::seconds(30);
+    std::vector<fog::protocol::DecodedFrame> got;
+    while (Clock::now() < giveUp) {
+      pollfd p{fd, POLLIN, 0};
+      if (::poll(&p, 1, 200) <= 0) continue;
+      std::uint8_t buf[4096];
+      const ssize_t n = ::read(fd, buf, sizeof buf);
+      if (n <= 0) continue;
+      got.clear();
+      decoder.push(std::span<const std::uint8_t>(buf, static_cast<std::size_t>(n)), got);
+      for (const auto& f : got) {
+        frames.push_back(f);
+        if (done(f)) return true;
+      }
+    }
+    return false;
+  };
+  auto send = [&](const fog::protocol::HostCommand& c, std::uint16_t seq) {
+    std::vector<std::uint8_t> bytes;
+    fog::protocol::appendHostCommand(c, seq, bytes);
+    ASSERT_EQ(::write(fd, bytes.data(), bytes.size()), static_cast<ssize_t>(bytes.size()));
+  };
+  auto status = [](const fog::protocol::DecodedFrame& f) { return std::get_if<fog::protocol::StatusPayload>(&f.frame.payload); };
+  auto isData = [](const fog::protocol::DecodedFrame& f) { return f.frame.type != fog::protocol::FrameType::kStatus; };
+  // Before any command: the simulator's own pulse equivalent.
+  ASSERT_TRUE(readUntil([&](const auto& f) { return status(f) != nullptr; }));
+  EXPECT_EQ(status(frames.back())->pulseEquivalentDeg, 5e-5);
+  // Pulse equivalent and a marker: echoed from the next STATUS on.
+  fog::protocol::HostCommand mark;
+  mark.opcode = fog::protocol::HostOpcode::kMarkTestPoint;
+  mark.testPoint = 7;
+  mark.axis = 2;
+  mark.phase = fog::protocol::TestPhase::kRecording;
+  mark.nominalFrequencyMicroHz = 2000000;
+  mark.nominalAmplitudeMicroDeg = 1500000;
+  send(fog::protocol::HostCommand{fog::protocol::HostOpcode::kSetPulseEquivalent, 1e-4}, 0);
+  send(mark, 1);
+  ASSERT_TRUE(readUntil([&](const auto& f) { return status(f) && status(f)->testPoint == 7; })) << board.out;
+  const auto* s = status(frames.back());
+  EXPECT_EQ(s->pulseEquivalentDeg, 1e-4);
+  EXPECT_EQ(s->axis, 2);
+  EXPECT_EQ(s->phase, fog::protocol::TestPhase::kRecording);
+  EXPECT_EQ(s->nominalFrequencyMicroHz, 2000000u);
+  EXPECT_EQ(s->nominalAmplitudeMicroDeg, 1500000u);
+  // Stop: no table or IMU frame stamped after the stop, while STATUS frames go on.
+  send(fog::protocol::HostCommand{fog::protocol::HostOpcode::kStopStreaming}, 2);
+  const std::string stopAt = board.waitForLine("host command: stop streaming at stream time ([0-9.]+) s", 30);
+  ASSERT_FALSE(stopAt.empty()) << board.out;
+  const double stopTicks = std::stod(stopAt) * 1e7 + 1e4;  // 1 ms: the printed time is rounded
+  std::size_t dataAfterStop = 0, statusAfterStop = 0;
+  ASSERT_TRUE(readUntil([&](const auto& f) {
+    if (static_cast<double>(f.frame.counter) <= stopTicks) return false;
+    if (isData(f)) ++dataAfterStop;
+    else ++statusAfterStop;
+    return statusAfterStop >= 5;  // half a stream second
+  }));
+  EXPECT_EQ(dataAfterStop, 0u);
+  // Start: data again, nothing counted as lost.
+  send(fog::protocol::HostCommand{fog::protocol::HostOpcode::kStartStreaming}, 3);
+  const std::string startAt = board.waitForLine("host command: start streaming at stream time ([0-9.]+) s", 30);
+  ASSERT_FALSE(startAt.empty()) << board.out;
+  std::size_t dataAfterStart = 0;
+  ASSERT_TRUE(readUntil([&](const auto& f) { return isData(f) && ++dataAfterStart >= 300; }));
+  EXPECT_EQ(decoder.health().lostFrames, 0u);
+  EXPECT_EQ(decoder.health().checksumFailures, 0u);
+  ::close(fd);
 }
 
 }  // namespace

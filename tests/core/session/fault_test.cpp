@@ -521,9 +521,9 @@ TEST(SessionFaults, ADamagedStoredResultIsMarkedNotTrusted) {
 
 TEST(SessionFaults, ASchemaOneSessionIsReadAndMigratedWhenAResultIsAdded) {
   ScratchDir dir;
-  // Schema 1 as the first fogbench wrote it: no checksum columns.
+  // Schema 1 as the first fogbench wrote it: no checksum columns, no table log.
   const auto path = craftedSession(dir, "v1.fbs",
-                                   "ALTER TABLE session DROP COLUMN metadata_fnv1a;"
+                                   "DROP TABLE table_log; ALTER TABLE session DROP COLUMN metadata_fnv1a;"
                                    " ALTER TABLE result DROP COLUMN fnv1a; PRAGMA user_version = 1;");
   {
     auto r = SessionReader::open(path);
@@ -536,12 +536,40 @@ TEST(SessionFaults, ASchemaOneSessionIsReadAndMigratedWhenAResultIsAdded) {
   ASSERT_TRUE(addResult(path, "{}", R"({"lag_ms":0.466})").isOk());
   auto r = SessionReader::open(path);
   ASSERT_TRUE(r.isOk()) << r.status().message();
-  EXPECT_EQ((*r)->schemaVersion(), 2);
+  EXPECT_EQ((*r)->schemaVersion(), 3);  // 1 -> 2 -> 3
   auto results = (*r)->results();
   ASSERT_TRUE(results.isOk());
   ASSERT_EQ(results->size(), 1u);
   EXPECT_TRUE(results->front().intact);
   EXPECT_TRUE((*r)->recording().isOk());
+  EXPECT_TRUE((*r)->tableLog()->empty());
+}
+
+TEST(SessionFaults, ASchemaTwoSessionIsReadWithoutATableLogAndMigratedWhenOneIsAdded) {
+  ScratchDir dir;
+  // Schema 2 as fogbench wrote it before the table log.
+  const auto path = craftedSession(dir, "v2.fbs", "DROP TABLE table_log; PRAGMA user_version = 2;");
+  {
+    auto r = SessionReader::open(path);
+    ASSERT_TRUE(r.isOk()) << r.status().message();
+    EXPECT_EQ((*r)->schemaVersion(), 2);
+    EXPECT_TRUE((*r)->recording().isOk());
+    auto log = (*r)->tableLog();
+    ASSERT_TRUE(log.isOk()) << log.status().message();
+    EXPECT_TRUE(log->empty());
+  }
+  ASSERT_TRUE(appendTableLog(path, {{1.5, "command", "AXIS:X:STOP"}, {1.6, "status", "X rest"}}).isOk());
+  auto r = SessionReader::open(path);
+  ASSERT_TRUE(r.isOk()) << r.status().message();
+  EXPECT_EQ((*r)->schemaVersion(), 3);
+  auto log = (*r)->tableLog();
+  ASSERT_TRUE(log.isOk());
+  ASSERT_EQ(log->size(), 2u);
+  EXPECT_EQ((*log)[0].text, "AXIS:X:STOP");
+  EXPECT_EQ((*log)[1].kind, "status");
+  EXPECT_DOUBLE_EQ((*log)[1].elapsedS, 1.6);
+  EXPECT_TRUE((*r)->recording().isOk());
+  EXPECT_TRUE((*r)->results().isOk());
 }
 
 // --- 11. limits -----------------------------------------------------------------

@@ -114,6 +114,33 @@ TEST(SessionFile, EmptyMetadataGetsCreationTimeAndSoftwareVersion) {
   EXPECT_EQ((*r)->rawByteCount(), 0u);
 }
 
+TEST(SessionFile, TheTableLogIsKeptInOrderBesideTheRawStream) {
+  ScratchDir dir;
+  const auto path = dir.file("table.fbs");
+  {
+    auto w = SessionWriter::create(path, SessionInfo{});
+    ASSERT_TRUE(w.isOk()) << w.status().message();
+    const std::uint8_t bytes[] = {1, 2, 3};
+    ASSERT_TRUE((*w)->appendRaw(bytes, 3).isOk());
+    ASSERT_TRUE((*w)->appendTableLog({{0.1, "command", "AXIS:X:SWING 1,3,0"}, {0.2, "reply", "0,\"No error\""}}).isOk());
+    EXPECT_EQ((*w)->committedBytes(), 3u);  // the log never runs ahead of the stream
+    ASSERT_TRUE((*w)->appendTableLog({{0.3, "status", "X swinging"}}).isOk());
+    ASSERT_TRUE((*w)->finish(true, "").isOk());
+  }
+  ASSERT_TRUE(appendTableLog(path, {{9.0, "step", "table at rest"}}).isOk());
+  auto r = SessionReader::open(path);
+  ASSERT_TRUE(r.isOk()) << r.status().message();
+  auto log = (*r)->tableLog();
+  ASSERT_TRUE(log.isOk()) << log.status().message();
+  ASSERT_EQ(log->size(), 4u);
+  EXPECT_EQ((*log)[0].text, "AXIS:X:SWING 1,3,0");
+  EXPECT_EQ((*log)[1].text, "0,\"No error\"");
+  EXPECT_EQ((*log)[2].kind, "status");
+  EXPECT_EQ((*log)[3].text, "table at rest");
+  EXPECT_DOUBLE_EQ((*log)[3].elapsedS, 9.0);
+  EXPECT_EQ((*r)->rawByteCount(), 3u);
+}
+
 TEST(SessionFile, AnalysisOfTheReopenedSessionIsBitIdentical) {
   ScratchDir dir;
   const auto withSamples = writeSession(dir, "samples.fbs", true);
@@ -350,9 +377,9 @@ TEST(SessionFileErrors, ForeignSqliteDatabase) {
 TEST(SessionFileErrors, NewerSchemaSaysUpdateFogbench) {
   ScratchDir dir;
   const auto path = writeSession(dir, "future.fbs");
-  makeDb(path, "PRAGMA user_version = 3");
+  makeDb(path, "PRAGMA user_version = 4");
   EXPECT_TRUE(looksLikeSession(path));  // it is a session, just not one this build can read
-  expectRefused(path, "was written by a newer fogbench (schema 3; this one reads up to 2): update fogbench");
+  expectRefused(path, "was written by a newer fogbench (schema 4; this one reads up to 3): update fogbench");
 }
 
 TEST(SessionFileErrors, SessionIdWithoutSchema) {

@@ -1,0 +1,261 @@
+#include "table/plan_runner.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <thread>
+
+namespace fog::table {
+
+namespace {
+
+std::string num(double v) {
+  char b[48];
+  std::snprintf(b, sizeof b, "%.6g", v);
+  return b;
+}
+
+class SteadyClock : public RunnerClock {
+ public:
+  explicit SteadyClock(double speed) : speed_(speed > 0.0 && std::isfinite(speed) ? speed : 1.0) {}
+  double nowS() override {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count() * speed_;
+  }
+  void sleepS(double s) override {
+    if (s > 0.0) std::this_thread::sleep_for(std::chrono::duration<double>(s / speed_));
+  }
+
+ private:
+  double speed_;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
+std::string pointLabel(int index, const TestPoint& p) {
+  if (p.isStatic()) return "point " + std::to_string(index + 1) + " (" + axisLabel(p.axis) + " at rest)";
+  return "point " + std::to_string(index + 1) + " (" + axisLabel(p.axis) + " " + num(p.frequencyHz) + " Hz / " +
+         num(p.amplitudeDeg) + " deg)";
+}
+
+}  // namespace
+
+std::unique_ptr<RunnerClock> steadyClock(double speed) { return std::make_unique<SteadyClock>(speed); }
+
+PlanRunner::PlanRunner(TableController& controller, RunnerClock& clock, PointRecorder& recorder,
+                       RunnerOptions options, std::function<void(const std::string&)> log)
+    : controller_(controller), clock_(clock), recorder_(recorder), options_(options), log_(std::move(log)) {}
+
+void PlanRunner::say(const std::string& line) {
+  if (log_) log_(line);
+}
+
+Status PlanRunner::tick() {
+  if (stop_ && stop_->load()) return Status(StatusCode::kInvalidArgument, "stopped by the operator");
+  FOG_RETURN_IF_ERROR(recorder_.health());
+  const double now = clock_.nowS();
+  if (now - lastHeartbeatS_ >= options_.heartbeatIntervalS) {
+    lastHeartbeatS_ = now;
+    FOG_RETURN_IF_ERROR(controller_.keepAlive());
+  }
+  return Status::ok();
+}
+
+Result<TableState> PlanRunner::checkedState() {
+  FOG_ASSIGN_OR_RETURN(auto state, controller_.state());
+  if (const auto why = state.blockingReason(); !why.empty())
+    return Status(StatusCode::kIoError, "the table controller reports " + why);
+  return state;
+}
+
+Status PlanRunner::waitUntil(const std::function<bool(const TableState&)>& done, double timeoutS,
+                             const std::string& what) {
+  const double giveUp = clock_.nowS() + timeoutS;
+  for (;;) {
+    FOG_RETURN_IF_ERROR(tick());
+    FOG_ASSIGN_OR_RETURN(auto state, checkedState());
+    if (done(state)) return Status::ok();
+    if (clock_.nowS() >= giveUp)
+      return Status(StatusCode::kIoError, what + " did not happen within " + num(timeoutS) + " s");
+    clock_.sleepS(options_.pollIntervalS);
+  }
+}
+
+Status PlanRunner::runPoint(int index, const TestPoint& p) {
+  const std::string label = pointLabel(index, p);
+  const Axis axis = p.axis;
+  activeAxis_ = axis;
+  const double centre = 0.0;
+  auto atRestAt = [&](const TableState& s) {
+    if (!s.known) return true;
+    const auto& a = s.axis(axis);
+    return a.mode == AxisMode::kRest && std::abs(a.positionDeg - centre) <= options_.positionToleranceDeg &&
+           std::abs(a.rateDegPerS) <= options_.restRateDegPerS;
+  };
+  // Position and settle.
+  FOG_RETURN_IF_ERROR(tick());
+  FOG_RETURN_IF_ERROR(checkedState().status());
+  say(label + ": move " + axisLabel(axis) + " to " + num(centre) + " deg");
+  FOG_RETURN_IF_ERROR(controller_.moveTo(axis, centre));
+  FOG_RETURN_IF_ERROR(waitUntil(atRestAt, options_.moveTimeoutS, label + ": reaching " + num(centre) + " deg"));
+  // Swing.
+  if (!p.isStatic()) {
+    FOG_RETURN_IF_ERROR(controller_.configureSwing(axis, SwingSpec{p.frequencyHz, p.amplitudeDeg, centre}));
+    FOG_RETURN_IF_ERROR(controller_.startSwing(axis));
+    say(label + ": swing started");
+  }
+  const double settleUntil = clock_.nowS() + p.settleS;
+  auto swinging = [&](const TableState& s) {
+    return !s.known || p.isStatic() || s.axis(axis).mode == AxisMode::kSwinging;
+  };
+  while (clock_.nowS() < settleUntil) {
+    FOG_RETURN_IF_ERROR(tick());
+    FOG_ASSIGN_OR_RETURN(auto state, checkedState());
+    if (!swinging(state))
+      return Status(StatusCode::kIoError, label + ": the table stopped swinging while settling (axis " +
+                                              axisModeName(state.axis(axis).mode) + ")");
+    clock_.sleepS(std::min(options_.pollIntervalS, settleUntil - clock_.nowS()));
+  }
+  // Record.
+  say(label + ": recording " + num(p.durationS) + " s");
+  FOG_RETURN_IF_ERROR(recorder_.begin(index, p));
+  const double recordBy = clock_.nowS() + p.durationS + options_.recordMarginS;
+  std::string lastNote;
+  for (;;) {
+    auto progress = recorder_.poll();
+    if (!progress.note.empty() && progress.note != lastNote) {
+      lastNote = progress.note;
+      say(label + ": " + progress.note);
+    }
+    if (!progress.failure.isOk()) {
+      recorder_.end(index);
+      return Status(progress.failure.code(), label + ": " + progress.failure.message());
+    }
+    if (progress.done) break;
+    if (auto s = tick(); !s.isOk()) {
+      recorder_.end(index);
+      return s;
+    }
+    auto state = checkedState();
+    if (!state.isOk() || !swinging(*state)) {
+      recorder_.end(index);
+      if (!state.isOk()) return state.status();
+      return Status(StatusCode::kIoError, label + ": the table stopped swinging while recording (axis " +
+                                              axisModeName(state->axis(axis).mode) + ")");
+    }
+    if (clock_.nowS() >= recordBy) {
+      recorder_.end(index);
+      return Status(StatusCode::kIoError,
+                    label + ": not recorded within " + num(p.durationS + options_.recordMarginS) + " s" +
+                        (lastNote.empty() ? std::string(" (is the board streaming the table angle?)")
+                                          : "; last check: " + lastNote));
+    }
+    clock_.sleepS(options_.pollIntervalS);
+  }
+  recorder_.end(index);
+  say(label + ": recorded");
+  // Stop and rest.
+  if (!p.isStatic()) {
+    FOG_RETURN_IF_ERROR(controller_.stop(axis));
+    auto atRest = [&](const TableState& s) {
+      if (!s.known) return recorder_.streamShowsRest(axis);
+      const auto& a = s.axis(axis);
+      return a.mode == AxisMode::kRest && std::abs(a.rateDegPerS) <= options_.restRateDegPerS;
+    };
+    FOG_RETURN_IF_ERROR(waitUntil(atRest, options_.stopTimeoutS, label + ": coming to rest"));
+    say(label + ": at rest");
+  }
+  return Status::ok();
+}
+
+Status PlanRunner::bringToRest(bool& atRest) {
+  atRest = false;
+  Status stopped = controller_.stopAll();
+  if (!stopped.isOk()) {
+    say("stop failed (" + stopped.message() + "); emergency stop");
+    Status e = controller_.emergencyStop();
+    if (!e.isOk()) {
+      say("emergency stop failed too (" + e.message() + "): the table controller is unreachable; its heartbeat "
+          "timeout must stop the table");
+      return e;
+    }
+  }
+  // Wait (bounded) until every axis is at rest, ignoring the reason the run
+  // ended (an interlock still reports its state).
+  const double giveUp = clock_.nowS() + options_.stopTimeoutS;
+  for (;;) {
+    auto state = controller_.state();
+    if (!state.isOk()) return state.status();
+    bool rest = true;
+    if (state->known)
+      for (const auto& a : state->axes)
+        rest = rest && (a.mode == AxisMode::kRest || a.mode == AxisMode::kEmergencyStop) &&
+               std::abs(a.rateDegPerS) <= options_.restRateDegPerS;
+    if (rest) {
+      atRest = true;
+      return Status::ok();
+    }
+    if (clock_.nowS() >= giveUp) return Status(StatusCode::kIoError, "the table did not come to rest");
+    (void)controller_.keepAlive();
+    clock_.sleepS(options_.pollIntervalS);
+  }
+}
+
+RunnerResult PlanRunner::run(const TestPlan& plan, const std::atomic<bool>* stop) {
+  stop_ = stop;
+  RunnerResult result;
+  lastHeartbeatS_ = -1e300;
+  auto fail = [&](Status why) {
+    result.status = std::move(why);
+    say("run stopped: " + result.status.message() + "; bringing the table to rest");
+    bool atRest = false;
+    Status rested = bringToRest(atRest);
+    result.tableAtRest = atRest;
+    say(atRest ? "table at rest" : "the table was NOT seen at rest: " + rested.message());
+    return result;
+  };
+  // Nothing moves before the whole plan is known to fit the table.
+  auto id = controller_.identify();
+  if (!id) {
+    result.status = id.status();
+    return result;
+  }
+  say("controller: " + *id);
+  auto limits = controller_.limits();
+  if (!limits) {
+    result.status = limits.status();
+    return result;
+  }
+  if (auto s = checkPlanAgainstLimits(plan, *limits); !s.isOk()) {
+    result.status = s;
+    say("plan refused: " + s.message());
+    return result;
+  }
+  if (auto s = tick(); !s.isOk()) return fail(s);
+  if (auto st = checkedState(); !st.isOk()) {
+    result.status = st.status();
+    say("not starting: " + st.status().message());
+    return result;
+  }
+  for (std::size_t i = 0; i < plan.points.size(); ++i) {
+    if (auto s = runPoint(static_cast<int>(i), plan.points[i]); !s.isOk()) {
+      // Every reason names the point it stopped at.
+      const std::string label = pointLabel(static_cast<int>(i), plan.points[i]);
+      if (s.message().rfind(label, 0) != 0 && s.message() != "stopped by the operator")
+        s = Status(s.code(), label + ": " + s.message());
+      return fail(s);
+    }
+    ++result.pointsDone;
+    if (i + 1 < plan.points.size()) {
+      const double restUntil = clock_.nowS() + plan.restBetweenS;
+      while (clock_.nowS() < restUntil) {
+        if (auto s = tick(); !s.isOk()) return fail(s);
+        clock_.sleepS(std::min(options_.pollIntervalS, restUntil - clock_.nowS()));
+      }
+    }
+  }
+  result.tableAtRest = true;
+  say("plan done: " + std::to_string(result.pointsDone) + " points");
+  if (auto s = controller_.release(); !s.isOk()) say("could not release the controller's heartbeat: " + s.message());
+  return result;
+}
+
+}  // namespace fog::table

@@ -1,0 +1,126 @@
+#pragma once
+// Runs a test plan on a table controller, point by point:
+//
+//   check the whole plan against the controller's limits (nothing moves if
+//   any point is beyond them)
+//   for each point:
+//     move the axis to the swing centre and wait until it is there at rest
+//     configure the swing, start it, wait the point's settle time
+//     record: the PointRecorder watches the board's table-angle stream, checks
+//       the swing is the one planned and records the point's duration
+//     stop (bounded deceleration), wait until at rest, rest restBetweenS
+//
+// A static point (gyro noise) skips the swing: the axis is held at rest.
+//
+// Safety: whatever ends the run early — the stop flag (Ctrl+C), a refused
+// command, a lost link, a fault, an interlock, an emergency stop, the
+// recorder failing (the board's link lost), a timeout — the runner brings
+// the table to rest (stopAll(); if that fails, emergencyStop()) before it
+// returns the reason. It never starts motion while the controller reports
+// an interlock, an emergency stop or a fault.
+//
+// While it waits, the runner polls the controller's state every
+// pollIntervalS and sends keepAlive() at least every heartbeatIntervalS, so a
+// controller with a heartbeat timeout keeps the table moving only while the
+// host is alive.
+//
+// Time comes from a RunnerClock (plan seconds): the machine's steady clock,
+// optionally sped up for emulators, or a fake in tests, so tests need no
+// sleeps. Not thread-safe; runs in the calling thread until done.
+
+#include <atomic>
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "common/status.h"
+#include "common/test_plan.h"
+#include "table/table_controller.h"
+
+namespace fog::table {
+
+// Plan seconds: nowS() is monotonic; sleepS() waits that many plan seconds.
+class RunnerClock {
+ public:
+  virtual ~RunnerClock() = default;
+  virtual double nowS() = 0;
+  virtual void sleepS(double s) = 0;
+};
+// The steady clock, `speed` plan seconds per wall second (1 = real time;
+// emulators run faster).
+std::unique_ptr<RunnerClock> steadyClock(double speed = 1.0);
+
+// The stream side of a test point: what the board's data say. Implemented
+// by the command line over the acquisition (thread-safe there); by scripts
+// in tests.
+struct RecorderProgress {
+  bool done = false;  // the point's duration is recorded
+  Status failure;     // not ok: the point cannot be recorded (why)
+  std::string note;   // progress for the log ("steady swing verified at 12.3 s")
+};
+class PointRecorder {
+ public:
+  virtual ~PointRecorder() = default;
+  // The table is (to the controller's knowledge) swinging `point` (or at rest
+  // for a static point) and has settled: verify and record it.
+  virtual Status begin(int index, const TestPoint& point) = 0;
+  virtual RecorderProgress poll() = 0;
+  // The point is over (recorded, or abandoned): stop recording it.
+  virtual void end(int index) = 0;
+  // Not ok once the stream can no longer be recorded (the board's link is
+  // lost): the runner stops the table at its next step.
+  virtual Status health() { return Status::ok(); }
+  // For a table whose state the driver cannot read (manual): whether the
+  // stream shows `axis` at rest now. Others need not answer.
+  virtual bool streamShowsRest(Axis axis) {
+    (void)axis;
+    return true;
+  }
+};
+
+struct RunnerOptions {
+  double positionToleranceDeg = 0.01;  // "in position"
+  double restRateDegPerS = 0.01;       // "at rest"
+  double pollIntervalS = 0.05;
+  double heartbeatIntervalS = 0.5;
+  double moveTimeoutS = 60.0;           // to reach a position
+  double stopTimeoutS = 30.0;           // to come to rest after stop()
+  // A point's recording must be done within settle + duration + this.
+  double recordMarginS = 30.0;
+};
+
+struct RunnerResult {
+  int pointsDone = 0;        // recorded completely
+  Status status;             // ok: the whole plan ran; otherwise why it stopped
+  bool tableAtRest = false;  // the runner saw the table at rest at the end (or stopped it)
+};
+
+class PlanRunner {
+ public:
+  // `log` receives one line per step ("point 1: X swing 1 Hz / 3 deg started"),
+  // for the session's table log and the terminal. May be empty.
+  PlanRunner(TableController& controller, RunnerClock& clock, PointRecorder& recorder,
+             RunnerOptions options = {}, std::function<void(const std::string&)> log = {});
+  // Runs `plan`; `stop` (may be null) ends it early as "stopped by the operator".
+  RunnerResult run(const TestPlan& plan, const std::atomic<bool>* stop);
+
+ private:
+  Status runPoint(int index, const TestPoint& point);
+  // Polls state (and sends heartbeats) until `done(state)` or timeoutS.
+  Status waitUntil(const std::function<bool(const TableState&)>& done, double timeoutS, const std::string& what);
+  Status tick();  // heartbeat when due, stop flag
+  Result<TableState> checkedState();
+  Status bringToRest(bool& atRest);
+  void say(const std::string& line);
+
+  TableController& controller_;
+  RunnerClock& clock_;
+  PointRecorder& recorder_;
+  RunnerOptions options_;
+  std::function<void(const std::string&)> log_;
+  const std::atomic<bool>* stop_ = nullptr;
+  double lastHeartbeatS_ = -1e300;
+  Axis activeAxis_ = Axis::kX;
+};
+
+}  // namespace fog::table
