@@ -391,22 +391,32 @@ Status calibrateEarthRateAndBias(Replay& replay, const std::vector<FeatureKey>& 
   }
   // The horizontal Earth rate's size is the stated latitude's; its
   // direction is searched (1-deg grid, then a parabola through the best
-  // three): at each heading the biases are the linear least-squares part.
-  // A free size would trade the north component against the x gyro's bias,
-  // which the trend cells of X swings see alike.
+  // three) on the quadrature cross cells alone, where the biases do not
+  // reach; then the biases are the trend cells' least-squares part at that
+  // heading. (Fitting both on all cells let an effect's trend pattern, e.g.
+  // g-sensitivity's -k cos(angle) on the vertical gyro, pull the heading.)
   std::vector<Eigen::Index> biasCols;
   for (Eigen::Index j = 2; j < 5; ++j)
     if (a.col(j).squaredNorm() > 0.0) biasCols.push_back(j);
+  // Only cells the heading moves by more than their spread take part: where
+  // it does not (gyro y in a swing about X), its columns hold only the
+  // replays' re-drawn quantisation, which a large unmodelled signal there
+  // (g-sensitivity) would turn into a heading.
+  Eigen::VectorXd isTrend(m), inScan(m);
+  for (Eigen::Index r = 0; r < m; ++r) {
+    isTrend(r) = keys[rows[static_cast<std::size_t>(r)]].quantity == "trend" ? 1.0 : 0.0;
+    inScan(r) = isTrend(r) == 0.0 && std::hypot(a(r, 0), a(r, 1)) > 2.0 ? 1.0 : 0.0;
+  }
   Eigen::MatrixXd t(m, static_cast<Eigen::Index>(biasCols.size()));
   for (std::size_t j = 0; j < biasCols.size(); ++j) t.col(static_cast<Eigen::Index>(j)) = a.col(biasCols[j]);
   const auto qr = t.colPivHouseholderQr();
   auto fitAt = [&](double hDeg, Eigen::VectorXd* bias) {
     const double h = hDeg * kRadPerDeg;
     const Eigen::VectorXd rest = y - std::cos(h) * a.col(0) + std::sin(h) * a.col(1);
-    const Eigen::VectorXd b = biasCols.empty() ? Eigen::VectorXd() : Eigen::VectorXd(qr.solve(rest));
-    if (bias) *bias = b;
-    return biasCols.empty() ? rest.squaredNorm() : (rest - t * b).squaredNorm();
+    if (bias) *bias = biasCols.empty() ? Eigen::VectorXd() : Eigen::VectorXd(qr.solve(rest.cwiseProduct(isTrend)));
+    return rest.cwiseProduct(inScan).squaredNorm();
   };
+  if (inScan.sum() < 2.0) return Status::ok();
   if (a.col(0).squaredNorm() + a.col(1).squaredNorm() <= 0.0) return Status::ok();
   std::vector<double> chi(360);
   for (int k = 0; k < 360; ++k) chi[static_cast<std::size_t>(k)] = fitAt(k, nullptr);
