@@ -204,6 +204,30 @@ TEST_F(TableBench, ALinkLostMidSwingLeavesTheHeartbeatToStopTheTableAndKeepsTheD
   EXPECT_TRUE(logHas(tableLog(session), "event", "out of step"));
 }
 
+TEST_F(TableBench, TheBoardVanishingMidSwingEndsTheRunAndTheBenchStopsTheTable) {
+  auto emu = startEmulator({"--link", "tcp", "--board-vanish-after-start-s", "3"});
+  ASSERT_FALSE(emu.table.empty());
+  const auto session = file("board-lost.fbs");
+  Child cli(cliRun(emu, writePlan(kThreeAxisPlan), session));
+  const int code = cli.finish(120);
+  // The bench still reaches the table: it stops it itself (no heartbeat needed).
+  ASSERT_FALSE(emu.child->waitForLine("(board: vanished)", 30).empty()) << emu.child->out;
+  stopEmulator(emu);
+  EXPECT_TRUE(code == 0 || code == 1) << cli.err;
+  EXPECT_NE(cli.err.find("run incomplete: serial port"), std::string::npos) << cli.err;
+  EXPECT_NE(cli.err.find("the board's stream ended"), std::string::npos) << cli.err;
+  EXPECT_NE(cli.err.find("table step: table at rest"), std::string::npos) << cli.err;
+  EXPECT_EQ(emu.child->out.find("heartbeat:"), std::string::npos) << emu.child->out;
+  EXPECT_EQ(emu.child->out.find("swing: Y"), std::string::npos);
+  auto r = fog::session::SessionReader::open(session);
+  ASSERT_TRUE(r.isOk());
+  EXPECT_FALSE((*r)->complete());
+  EXPECT_GT((*r)->rawByteCount(), 50000u);
+  const auto log = tableLog(session);
+  EXPECT_TRUE(logHas(log, "command", "STOP"));
+  EXPECT_TRUE(logHas(log, "step", "table at rest"));
+}
+
 TEST_F(TableBench, APlanBeyondTheTablesLimitsIsRefusedBeforeAnyMotion) {
   auto emu = startEmulator({"--link", "tcp", "--max-amplitude-deg", "20"});
   ASSERT_FALSE(emu.table.empty());
