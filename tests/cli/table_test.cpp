@@ -184,13 +184,15 @@ TEST_F(TableBench, ALinkLostMidSwingLeavesTheHeartbeatToStopTheTableAndKeepsTheD
   auto emu = startEmulator({"--link", "tcp", "--drop-link-after-start-s", "3"});
   ASSERT_FALSE(emu.table.empty());
   const auto session = file("lost.fbs");
-  Child cli(cliRun(emu, writePlan(kThreeAxisPlan), session, {"--table-heartbeat-s", "0.5"}));
+  Child cli(cliRun(emu, writePlan(kThreeAxisPlan), session, {"--table-heartbeat-s", "1"}));
   const int code = cli.finish(120);
   // The host cannot stop the table any more: the controller's watchdog does.
-  EXPECT_FALSE(emu.child->waitForLine("(heartbeat: host quiet for more than 0.5 s; table brought to rest)", 30).empty())
+  EXPECT_FALSE(emu.child->waitForLine("(heartbeat: host quiet for more than 1 s; table brought to rest)", 30).empty())
       << emu.child->out;
   stopEmulator(emu);
   EXPECT_NE(emu.child->out.find("link: dropped"), std::string::npos);
+  // The watchdog acted after the link was dropped, not before.
+  EXPECT_LT(emu.child->out.find("link: dropped"), emu.child->out.find("heartbeat: host quiet"));
   EXPECT_TRUE(code == 0 || code == 1) << code << cli.err;
   EXPECT_NE(cli.err.find("run incomplete: table: point 1 (X 2 Hz / 2 deg): table link tcp:127.0.0.1:"), std::string::npos)
       << cli.err;
