@@ -33,6 +33,9 @@ usage:
       --gyro-delay-ms D (gyro's own delay, default 0.2358),
       --arw-deg-sqrt-h, --bias-instability-deg-h, --pulse-equivalent-deg,
       --table-freq-error-ppm, --counter-hz, --counter-bits, --counter-start,
+      --latitude-deg, --heading-deg (table x axis from north toward east),
+      --imu-clock-ppm, --imu-period-ms, --table-period-ms, --encoder-quantum-deg,
+      --bias-x-deg-h, --bias-y-deg-h, --bias-z-deg-h,
       --effect NAME=V[,V][+NAME=V...] (unmodelled effects from docs/diagnosis.md,
       e.g. scale_factor_error=200)
       --out SESSION.fbs [--operator NAME --imu-model M --imu-serial S --notes TEXT]:

@@ -11,12 +11,22 @@
 // 3), for the results and sessions views when the run (or --open) ended,
 // for the diagnosis and noise views when their analysis of that result ended.
 // Exit code 1 when the run gave no result or the image could not be written.
+//
+// --help and --version print and exit 0 without a display: they are answered
+// by a QCoreApplication before any GUI is created.
+//
+// Choices made on the command line (--session-folder, --preset, --speed,
+// --seed, --replay) are for this start only: they do not replace what the
+// window remembers for the next one.
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QCoreApplication>
 #include <QPixmap>
+#include <QScreen>
 #include <QTimer>
 #include <cstdio>
+#include <cstring>
 
 #include "common/version.h"
 #include "ui/bench_presets.h"
@@ -40,44 +50,73 @@ void saveAndQuit(fog::ui::MainWindow& window, const QString& path, bool succeede
   });
 }
 
+struct Options {
+  QStringList presetNames;
+  QStringList views = {"configure", "live", "results", "sessions", "diagnosis", "noise"};
+  QCommandLineOption runOption{"run", "Start the run at once."};
+  QCommandLineOption presetOption{"preset", "", "NAME"};
+  QCommandLineOption seedOption{"seed", "Simulator seed (default 1).", "N"};
+  QCommandLineOption speedOption{"speed", "Pace: X times real time, 0 as fast as possible (default 1).", "X"};
+  QCommandLineOption replayOption{"replay", "Replay this session instead of simulating.", "SESSION"};
+  QCommandLineOption folderOption{"session-folder",
+                                  "Record sessions into DIR (and browse it), for this start only.", "DIR"};
+  QCommandLineOption openOption{"open", "Open this session for review.", "SESSION"};
+  QCommandLineOption viewOption{"view", "", "NAME"};
+  QCommandLineOption screenshotOption{"screenshot", "Save an image of the window to FILE and quit.", "FILE"};
+  QCommandLineOption afterOption{"screenshot-after", "Live view: seconds into the run (default 3).", "S"};
+  QCommandLineOption languageOption{"language", "GUI language for this run: system, en or zh_CN.", "CODE"};
+
+  explicit Options(QCommandLineParser& parser) {
+    for (const auto& p : fog::ui::benchPresets()) presetNames << p.name;
+    presetOption.setDescription(
+        QString("Test plan preset: %1 (default: the remembered plan).").arg(presetNames.join(", ")));
+    viewOption.setDescription("Show this view: " + views.join(", ") + ".");
+    parser.setApplicationDescription("Fiber-optic gyro IMU delay test bench");
+    parser.addHelpOption();
+    parser.addVersionOption();
+    parser.addOptions({runOption, presetOption, seedOption, speedOption, replayOption, folderOption, openOption,
+                       viewOption, screenshotOption, afterOption, languageOption});
+  }
+};
+
+void nameApplication() {
+  QCoreApplication::setOrganizationName("fogbench");
+  QCoreApplication::setApplicationName("fogbench");
+  QCoreApplication::setApplicationVersion(FOG_VERSION);
+}
+
 }  // namespace
 
 int main(int argc, char* argv[]) {
+  // --help and --version need no display: answer them before the GUI exists.
+  for (int i = 1; i < argc; ++i)
+    for (const char* flag : {"-h", "--help", "-?", "--help-all", "-v", "--version"})
+      if (std::strcmp(argv[i], flag) == 0) {
+        QCoreApplication core(argc, argv);
+        nameApplication();
+        QCommandLineParser parser;
+        Options options(parser);
+        parser.process(core);  // prints and exits 0
+        return 0;
+      }
+
   QApplication app(argc, argv);
-  QApplication::setOrganizationName("fogbench");
-  QApplication::setApplicationName("fogbench");
-  QApplication::setApplicationVersion(FOG_VERSION);
+  nameApplication();
   // --language overrides the remembered choice for this run (tests, screenshots).
   QString language = fog::ui::languageSetting();
   for (int i = 1; i + 1 < argc; ++i)
     if (QString(argv[i]) == "--language") language = argv[i + 1];
   fog::ui::installTranslations(app, language);
 
-  QStringList presetNames;
-  for (const auto& p : fog::ui::benchPresets()) presetNames << p.name;
-  const QStringList views = {"configure", "live", "results", "sessions", "diagnosis", "noise"};
-
   QCommandLineParser parser;
-  parser.setApplicationDescription("Fiber-optic gyro IMU delay test bench");
-  parser.addHelpOption();
-  parser.addVersionOption();
-  const QCommandLineOption runOption("run", "Start the run at once.");
-  const QCommandLineOption presetOption(
-      "preset", QString("Test plan preset: %1 (default %2).").arg(presetNames.join(", "), presetNames.front()), "NAME");
-  const QCommandLineOption seedOption("seed", "Simulator seed (default 1).", "N");
-  const QCommandLineOption speedOption("speed", "Pace: X times real time, 0 as fast as possible (default 1).", "X");
-  const QCommandLineOption replayOption("replay", "Replay this session instead of simulating.", "SESSION");
-  const QCommandLineOption folderOption("session-folder", "Record sessions into DIR (and browse it).", "DIR");
-  const QCommandLineOption openOption("open", "Open this session for review.", "SESSION");
-  const QCommandLineOption viewOption("view", "Show this view: " + views.join(", ") + ".", "NAME");
-  const QCommandLineOption screenshotOption("screenshot", "Save an image of the window to FILE and quit.", "FILE");
-  const QCommandLineOption afterOption("screenshot-after", "Live view: seconds into the run (default 3).", "S");
-  const QCommandLineOption languageOption("language", "GUI language for this run: system, en or zh_CN.", "CODE");
-  parser.addOptions({runOption, presetOption, seedOption, speedOption, replayOption, folderOption, openOption,
-                     viewOption, screenshotOption, afterOption, languageOption});
+  const Options o(parser);
   parser.process(app);
+  const auto& [presetNames, views, runOption, presetOption, seedOption, speedOption, replayOption, folderOption,
+               openOption, viewOption, screenshotOption, afterOption, languageOption] = o;
 
   fog::ui::MainWindow window;
+  // What the command line chooses is for this start only.
+  window.setRemembering(false);
   if (parser.isSet(presetOption) && !window.planEditor()->loadPreset(parser.value(presetOption)))
     return fail(QString("unknown preset '%1' (%2)").arg(parser.value(presetOption), presetNames.join(", ")));
   bool ok = true;
@@ -85,7 +124,7 @@ int main(int argc, char* argv[]) {
   if (!ok || seed < 0) return fail("--seed needs a whole number >= 0");
   const double speed = parser.isSet(speedOption) ? parser.value(speedOption).toDouble(&ok) : 1.0;
   if (!ok || speed < 0) return fail("--speed needs a number >= 0 (1 = real time, 0 = as fast as possible)");
-  window.useSimulator(speed, seed);
+  if (parser.isSet(speedOption) || parser.isSet(seedOption)) window.useSimulator(speed, seed);
   if (parser.isSet(replayOption)) window.useReplay(parser.value(replayOption), speed);
   if (parser.isSet(folderOption)) window.setSessionFolder(parser.value(folderOption));
   const QString view = parser.value(viewOption);
@@ -129,7 +168,14 @@ int main(int argc, char* argv[]) {
     }
   }
 
-  window.resize(1500, 950);
+  window.setRemembering(true);
+
+  // As large as the screen allows, up to 1500 x 950 (a laptop's 1366 x 768
+  // gets a window that fits it).
+  QSize size(1500, 950);
+  if (const QScreen* screen = QApplication::primaryScreen())
+    size = size.boundedTo(screen->availableGeometry().size());
+  window.resize(size);
   window.show();
   if (view == "sessions") window.showView(fog::ui::MainWindow::kSessions);
   if (parser.isSet(openOption)) {

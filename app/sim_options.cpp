@@ -70,10 +70,18 @@ Result<model::SimConfig> readSimConfig(CliArguments& args) {
                 {"pulse-equivalent-deg", &c.fog.pulseEquivalentDeg, 1.0},
                 {"table-freq-error-ppm", &c.turntable.frequencyErrorPpm, 1.0},
                 {"counter-hz", &c.samplingBoard.counterHz, 1.0},
-                {"latitude-deg", &c.earth.latitudeDeg, 1.0}};
+                {"latitude-deg", &c.earth.latitudeDeg, 1.0},
+                {"heading-deg", &c.earth.headingDeg, 1.0},
+                {"imu-clock-ppm", &c.imuBoard.clockErrorPpm, 1.0},
+                {"imu-period-ms", &c.imuBoard.framePeriodS, 1e-3},
+                {"table-period-ms", &c.encoder.samplePeriodS, 1e-3},
+                {"encoder-quantum-deg", &c.encoder.quantumDeg, 1.0},
+                {"bias-x-deg-h", &c.fog.biasDegPerH[0], 1.0},
+                {"bias-y-deg-h", &c.fog.biasDegPerH[1], 1.0},
+                {"bias-z-deg-h", &c.fog.biasDegPerH[2], 1.0}};
   for (auto& f : fields) {
-    FOG_ASSIGN_OR_RETURN(auto v, args.number(f.name, *f.target));
-    *f.target = v;
+    FOG_ASSIGN_OR_RETURN(auto v, args.number(f.name, *f.target / f.scale));
+    *f.target = v * f.scale;
   }
   auto gyroDelay = args.number("gyro-delay-ms", c.fog.ownDelayS() * 1e3);
   auto bits = args.number("counter-bits", c.samplingBoard.counterBits);

@@ -17,6 +17,11 @@ cmake --preset release >/dev/null
 cmake --build --preset release
 
 if [[ $headless -eq 0 && ( -n ${DISPLAY:-} || -n ${WAYLAND_DISPLAY:-} ) && -x build/release/app/fogbench ]]; then
-  exec build/release/app/fogbench --run "${args[@]}"
+  # The paper's plan at real time unless asked otherwise: the window would
+  # otherwise run the plan and pace it remembers from the last session.
+  gui=(--run)
+  [[ " ${args[*]-} " == *" --preset"* ]] || gui+=(--preset paper)
+  [[ " ${args[*]-} " == *" --speed"* ]] || gui+=(--speed 1)
+  exec build/release/app/fogbench "${gui[@]}" "${args[@]}"
 fi
 exec build/release/app/fogbench-cli run "${args[@]}"

@@ -86,7 +86,7 @@ QwtPlot* LiveView::makePlot(const QString& title, const QString& yTitle, QwtPlot
     syncingScales_ = false;
     dirty_ = true;
   });
-  plot->setAxisAutoScale(QwtPlot::yLeft, true);
+  plot->setAxisScale(QwtPlot::yLeft, -1.0, 1.0);  // refresh() sets both plots' common range
   return plot;
 }
 
@@ -95,6 +95,7 @@ LiveView::LiveView(QWidget* parent) : QWidget(parent) {
   auto* state = new QHBoxLayout();
   stateLabel_ = new QLabel(tr("No run yet: configure a plan and press Run."));
   stateLabel_->setObjectName("liveStateLabel");
+  stateLabel_->setWordWrap(true);  // wraps on a narrow window instead of widening it
   state->addWidget(stateLabel_, 1);
   state->addWidget(new QLabel(tr("Window")));
   windowSpin_ = new QDoubleSpinBox();
@@ -111,9 +112,11 @@ LiveView::LiveView(QWidget* parent) : QWidget(parent) {
 
   tablePlot_ = makePlot(tr("Turntable angle"), tr("angle (°)"), &tableCurve_, kTableColour, "°");
   tablePlot_->setObjectName("liveTablePlot");
+  tablePlot_->setMinimumSize(200, 150);  // below the plot's own hint: fits a laptop screen
   gyroPlot_ = makePlot(tr("Gyro angle (integrated, bias + Earth rate removed)"), tr("angle (°)"), &gyroCurve_,
                        kGyroColour, "°");
   gyroPlot_->setObjectName("liveGyroPlot");
+  gyroPlot_->setMinimumSize(200, 150);
   layout->addWidget(tablePlot_, 1);
   layout->addWidget(gyroPlot_, 1);
 
@@ -256,6 +259,7 @@ void LiveView::refresh() {
   }
   const int columns = std::max(tablePlot_->canvas()->width(), 100);
   std::vector<double> x, y;
+  double peak = 0.0;  // the largest |angle| either plot shows
   auto draw = [&](QwtPlotCurve* curve, const auto& points) {
     x.clear();
     y.clear();
@@ -263,12 +267,18 @@ void LiveView::refresh() {
       x.push_back(p.timeS);
       y.push_back(p.angleDeg);
     }
-    curve->setSamples(decimateMinMax(x, y, x0, x1, columns));
+    const auto shown = decimateMinMax(x, y, x0, x1, columns);
+    for (const auto& p : shown) peak = std::max(peak, std::abs(p.y()));
+    curve->setSamples(shown);
   };
   draw(tableCurve_, traces_.table());
   draw(gyroCurve_, traces_.gyroDetrended());
+  // One symmetric value range for both plots, so that the gyro's swing reads
+  // against the table's at a glance.
+  const double range = peak > 0.0 ? 1.1 * peak : 1.0;
   for (auto* plot : {tablePlot_, gyroPlot_}) {
     if (following_) plot->setAxisScale(QwtPlot::xBottom, x0, std::max(x1, x0 + 1e-3));
+    plot->setAxisScale(QwtPlot::yLeft, -range, range);
     plot->replot();
   }
 }

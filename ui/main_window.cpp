@@ -1,6 +1,11 @@
 #include "ui/main_window.h"
 
 #include <QActionGroup>
+#include <QCloseEvent>
+#include <QDesktopServices>
+#include <QScreen>
+#include <QScrollArea>
+#include <QUrl>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDateTime>
@@ -16,6 +21,7 @@
 #include <QMessageBox>
 #include <QPointer>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QSettings>
 #include <QSpinBox>
 #include <QSplitter>
@@ -28,7 +34,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <fstream>
 #include <qwt_global.h>
+#include <sstream>
 
 #include "acquisition/replay_source.h"
 #include "acquisition/simulator_source.h"
@@ -42,6 +50,7 @@
 #include "ui/diagnosis_view.h"
 #include "ui/language.h"
 #include "ui/live_view.h"
+#include "ui/messages.h"
 #include "ui/noise_view.h"
 #include "ui/plan_editor.h"
 #include "ui/result_view.h"
@@ -70,6 +79,59 @@ model::SimConfig simConfigOf(const BenchSettings& b, int seed) {
   return c;
 }
 
+// Holds a view at the size of the scroll area's viewport, down to the view's
+// minimum size. (A view whose layout has height-for-width, from a wrapping
+// label, would otherwise be given its preferred height by the scroll area
+// and scroll even when it could fit.)
+class Fitted : public QWidget {
+ public:
+  explicit Fitted(QWidget* view) : view_(view) {
+    setObjectName(view->objectName() + "Frame");
+    view->setParent(this);
+    view->installEventFilter(this);
+  }
+  QSize minimumSizeHint() const override { return view_->minimumSizeHint().expandedTo(view_->minimumSize()); }
+  QSize sizeHint() const override { return view_->sizeHint(); }
+
+ protected:
+  void resizeEvent(QResizeEvent*) override { view_->setGeometry(rect()); }
+  bool eventFilter(QObject* watched, QEvent* event) override {
+    if (watched == view_ && event->type() == QEvent::LayoutRequest) updateGeometry();
+    return false;
+  }
+
+ private:
+  QWidget* view_;
+};
+
+// A view in a scroll area: on a small screen the view keeps its minimum size
+// and scrolls instead of pushing the window off the screen.
+QWidget* scrollable(QWidget* view) {
+  auto* area = new QScrollArea();
+  area->setObjectName(view->objectName() + "Scroll");
+  area->setWidget(new Fitted(view));
+  area->setWidgetResizable(true);
+  area->setFrameShape(QFrame::NoFrame);
+  return area;
+}
+
+constexpr int kMaxRecentSessions = 8;
+
+// Runs `work` on the thread pool and hands its result to `done` on the GUI
+// thread, as long as `owner` lives. The result type must be
+// default-constructible (QFuture's rule): an outcome or the reason why not.
+template <typename Work, typename Done>
+void inBackground(QObject* owner, Work work, Done done) {
+  using Result = std::invoke_result_t<Work>;
+  auto* watcher = new QFutureWatcher<Result>(owner);
+  QObject::connect(watcher, &QFutureWatcherBase::finished, owner, [watcher, done = std::move(done)]() mutable {
+    Result result = watcher->result();
+    watcher->deleteLater();
+    done(std::move(result));
+  });
+  watcher->setFuture(QtConcurrent::run(std::move(work)));
+}
+
 QString defaultSessionFolder() {
   return QDir(QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation)).filePath("fogbench-sessions");
 }
@@ -81,24 +143,29 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 
   tabs_ = new QTabWidget();
   tabs_->setObjectName("viewTabs");
-  tabs_->addTab(buildConfigureView(), tr("Configure"));
+  tabs_->setDocumentMode(true);
+  configureView_ = new ConfigureView();
+  configureView_->setObjectName("configureView");
+  planEditor_ = configureView_->planEditor();
+  tabs_->addTab(scrollable(configureView_), tr("Configure"));
   liveView_ = new LiveView();
   liveView_->setObjectName("liveView");
-  tabs_->addTab(liveView_, tr("Live"));
+  tabs_->addTab(scrollable(liveView_), tr("Live"));
   resultView_ = new ResultView();
   resultView_->setObjectName("resultView");
-  tabs_->addTab(resultView_, tr("Results"));
+  tabs_->addTab(scrollable(resultView_), tr("Results"));
   sessionBrowser_ = new SessionBrowser();
   sessionBrowser_->setObjectName("sessionBrowser");
-  tabs_->addTab(sessionBrowser_, tr("Sessions"));
+  tabs_->addTab(scrollable(sessionBrowser_), tr("Sessions"));
   diagnosisView_ = new DiagnosisView();
   diagnosisView_->setObjectName("diagnosisView");
-  tabs_->addTab(diagnosisView_, tr("Diagnosis"));
+  tabs_->addTab(scrollable(diagnosisView_), tr("Diagnosis"));
   noiseView_ = new NoiseView();
   noiseView_->setObjectName("noiseView");
-  tabs_->addTab(noiseView_, tr("Noise"));
+  tabs_->addTab(scrollable(noiseView_), tr("Noise"));
   setCentralWidget(tabs_);
   buildToolBar();
+  buildMenus();
   setBenchSettings(loadBenchSettings());
 
   framesLabel_ = new QLabel();
@@ -120,149 +187,35 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   connect(sessionBrowser_, &SessionBrowser::compareRequested, this, &MainWindow::compareSessions);
   connect(sessionBrowser_, &SessionBrowser::importRequested, this, &MainWindow::importCsv);
   connect(resultView_, &ResultView::diagnoseRequested, this, &MainWindow::diagnoseShown);
+  connect(resultView_, &ResultView::exported, this, &MainWindow::exported);
+  connect(resultView_, &ResultView::exportFailed, this, [this](const QString& title, const QString& why) {
+    reportError(title, title, why);
+  });
+  connect(resultView_, &ResultView::openExportFolderRequested, this, &MainWindow::openExportFolder);
 
   QSettings settings;
   setSessionFolder(settings.value("sessions/folder", defaultSessionFolder()).toString());
+  restoreState();
+  // The operator's choices are remembered as they are made.
+  connect(planEditor_, &PlanEditor::planChanged, this, &MainWindow::rememberState);
+  connect(configureView_, &ConfigureView::paceChanged, this, &MainWindow::rememberState);
+  connect(configureView_, &ConfigureView::identityChanged, this, &MainWindow::rememberState);
+  connect(configureView_, &ConfigureView::sourceChanged, this, [this] { setRunning(runner_.isRunning()); });
+  connect(configureView_, &ConfigureView::runnabilityChanged, this, &MainWindow::updateRunButton);
+  connect(configureView_, &ConfigureView::folderChosen, this, [this](const QString& folder) { setSessionFolder(folder); });
+  connect(configureView_, &ConfigureView::editBenchSettingsRequested, this, &MainWindow::editBenchSettings);
   setRunning(false);
   tell(tr("Configure a plan and press Run."));
 }
 
 MainWindow::~MainWindow() = default;
 
-QWidget* MainWindow::buildConfigureView() {
-  auto* page = new QWidget();
-  auto* layout = new QHBoxLayout(page);
-
-  auto* planBox = new QGroupBox(tr("Test plan"));
-  auto* planLayout = new QVBoxLayout(planBox);
-  planEditor_ = new PlanEditor();
-  planEditor_->setObjectName("planEditor");
-  planLayout->addWidget(planEditor_);
-  layout->addWidget(planBox, 3);
-
-  auto* side = new QVBoxLayout();
-  auto* sourceBox = new QGroupBox(tr("Source"));
-  auto* sourceForm = new QFormLayout(sourceBox);
-  sourceCombo_ = new QComboBox();
-  sourceCombo_->setObjectName("sourceCombo");
-  sourceCombo_->addItem(tr("Built-in simulator"), "sim");
-  sourceCombo_->addItem(tr("Replay of a session"), "replay");
-  sourceCombo_->addItem(tr("Serial sampling board"), "serial");
-  speedCombo_ = new QComboBox();
-  speedCombo_->setObjectName("speedCombo");
-  speedCombo_->addItem(tr("Real time"), 1.0);
-  speedCombo_->addItem(tr("5× real time"), 5.0);
-  speedCombo_->addItem(tr("20× real time"), 20.0);
-  speedCombo_->addItem(tr("As fast as possible"), 0.0);
-  seedSpin_ = new QSpinBox();
-  seedSpin_->setObjectName("seedSpin");
-  seedSpin_->setRange(0, std::numeric_limits<int>::max());
-  seedSpin_->setValue(1);
-  seedSpin_->setToolTip(tr("Simulator seed: the same seed gives the same data"));
-  auto* replayRow = new QHBoxLayout();
-  replayEdit_ = new QLineEdit();
-  replayEdit_->setObjectName("replayEdit");
-  replayEdit_->setPlaceholderText(tr("session file (.fbs) to replay"));
-  auto* browse = new QPushButton(tr("Browse…"));
-  replayRow->addWidget(replayEdit_, 1);
-  replayRow->addWidget(browse);
-  sourceForm->addRow(tr("Source"), sourceCombo_);
-  sourceForm->addRow(tr("Pace"), speedCombo_);
-  sourceForm->addRow(tr("Seed"), seedSpin_);
-  sourceForm->addRow(tr("Replay"), replayRow);
-  auto* serialRow = new QHBoxLayout();
-  portCombo_ = new QComboBox();
-  portCombo_->setObjectName("portCombo");
-  portCombo_->setEditable(true);  // a device the system does not list, e.g. a pseudo-terminal
-  portCombo_->setToolTip(tr("The sampling board's serial port"));
-  baudCombo_ = new QComboBox();
-  baudCombo_->setObjectName("baudCombo");
-  baudCombo_->setEditable(true);
-  for (int baud : {921600, 460800, 230400, 115200, 1000000, 2000000}) baudCombo_->addItem(QString::number(baud));
-  auto* rescan = new QPushButton(tr("Rescan"));
-  serialRow->addWidget(portCombo_, 1);
-  serialRow->addWidget(baudCombo_);
-  serialRow->addWidget(rescan);
-  sourceForm->addRow(tr("Serial port"), serialRow);
-  auto listPorts = [this] {
-    const QString current = portCombo_->currentText();
-    portCombo_->clear();
-    for (const auto& p : serial::availablePorts())
-      portCombo_->addItem(QString::fromStdString(p.systemLocation + (p.description.empty() ? "" : "  (" + p.description + ")")),
-                          QString::fromStdString(p.systemLocation));
-    if (!current.isEmpty()) portCombo_->setCurrentText(current);
-  };
-  connect(rescan, &QPushButton::clicked, this, listPorts);
-  listPorts();
-  side->addWidget(sourceBox);
-
-  auto* sessionBox = new QGroupBox(tr("Session"));
-  auto* sessionForm = new QFormLayout(sessionBox);
-  recordCheck_ = new QCheckBox(tr("Record a session file (crash-safe)"));
-  recordCheck_->setObjectName("recordCheck");
-  recordCheck_->setChecked(true);
-  auto* folderRow = new QHBoxLayout();
-  folderEdit_ = new QLineEdit();
-  folderEdit_->setObjectName("sessionFolderEdit");
-  auto* chooseFolder = new QPushButton(tr("Choose…"));
-  folderRow->addWidget(folderEdit_, 1);
-  folderRow->addWidget(chooseFolder);
-  operatorEdit_ = new QLineEdit();
-  operatorEdit_->setObjectName("operatorEdit");
-  imuModelEdit_ = new QLineEdit();
-  imuModelEdit_->setObjectName("imuModelEdit");
-  imuSerialEdit_ = new QLineEdit();
-  imuSerialEdit_->setObjectName("imuSerialEdit");
-  notesEdit_ = new QLineEdit();
-  sessionForm->addRow(recordCheck_);
-  sessionForm->addRow(tr("Folder"), folderRow);
-  sessionForm->addRow(tr("Operator"), operatorEdit_);
-  sessionForm->addRow(tr("IMU model"), imuModelEdit_);
-  sessionForm->addRow(tr("IMU serial"), imuSerialEdit_);
-  sessionForm->addRow(tr("Notes"), notesEdit_);
-  side->addWidget(sessionBox);
-
-  auto* constantsBox = new QGroupBox(tr("Bench constants"));
-  auto* constantsLayout = new QVBoxLayout(constantsBox);
-  constantsLabel_ = new QLabel();
-  constantsLabel_->setObjectName("constantsLabel");
-  constantsLabel_->setWordWrap(true);
-  auto* edit = new QPushButton(tr("Edit bench constants…"));
-  edit->setObjectName("editConstantsButton");
-  constantsLayout->addWidget(constantsLabel_);
-  constantsLayout->addWidget(edit);
-  side->addWidget(constantsBox);
-
-  configureMessage_ = new QLabel();
-  configureMessage_->setObjectName("configureMessage");
-  configureMessage_->setWordWrap(true);
-  side->addWidget(configureMessage_);
-  side->addStretch(1);
-  layout->addLayout(side, 2);
-
-  auto sourceChanged = [this] { setRunning(runner_.isRunning()); };
-  connect(sourceCombo_, qOverload<int>(&QComboBox::currentIndexChanged), this, sourceChanged);
-  connect(replayEdit_, &QLineEdit::textChanged, this, &MainWindow::updateRunButton);
-  connect(portCombo_, &QComboBox::currentTextChanged, this, &MainWindow::updateRunButton);
-  connect(browse, &QPushButton::clicked, this, [this] {
-    const QString path = QFileDialog::getOpenFileName(this, tr("Session to replay"), sessionFolder(),
-                                                      tr("fogbench sessions (*.fbs)"));
-    if (!path.isEmpty()) replayEdit_->setText(path);
-  });
-  connect(chooseFolder, &QPushButton::clicked, this, [this] {
-    const QString dir = QFileDialog::getExistingDirectory(this, tr("Session folder"), sessionFolder());
-    if (!dir.isEmpty()) setSessionFolder(dir);
-  });
-  connect(folderEdit_, &QLineEdit::editingFinished, this, [this] { setSessionFolder(folderEdit_->text()); });
-  connect(recordCheck_, &QCheckBox::toggled, folderEdit_, &QWidget::setEnabled);
-  connect(edit, &QPushButton::clicked, this, [this] {
-    BenchSettingsDialog dialog(bench_, this);
-    if (dialog.exec() == QDialog::Accepted) {
-      setBenchSettings(dialog.settings());
-      saveBenchSettings(bench_);
-    }
-  });
-  return page;
+void MainWindow::editBenchSettings() {
+  BenchSettingsDialog dialog(bench_, this);
+  if (dialog.exec() == QDialog::Accepted) {
+    setBenchSettings(dialog.settings());
+    saveBenchSettings(bench_);
+  }
 }
 
 QString MainWindow::aboutText() const {
@@ -274,9 +227,95 @@ QString MainWindow::aboutText() const {
 }
 
 void MainWindow::buildToolBar() {
-  auto* settings = menuBar()->addMenu(tr("&Settings"));
-  settings->addAction(tr("&Bench constants…"), this, [this] { findChild<QPushButton*>("editConstantsButton")->click(); });
-  auto* languages = settings->addMenu(tr("&Language"));
+  auto* bar = addToolBar(tr("Run"));
+  bar->setObjectName("runToolBar");
+  bar->setMovable(false);
+  runButton_ = new QPushButton(tr("Run"));
+  runButton_->setObjectName("runButton");
+  stopButton_ = new QPushButton(tr("Stop"));
+  stopButton_->setObjectName("stopButton");
+  stopButton_->setToolTip(tr("End the run now; everything received so far is kept and analysed"));
+  bar->addWidget(runButton_);
+  bar->addWidget(stopButton_);
+  connect(runButton_, &QPushButton::clicked, this, &MainWindow::startRun);
+  connect(stopButton_, &QPushButton::clicked, this, &MainWindow::stopRun);
+}
+
+void MainWindow::buildMenus() {
+  auto* file = menuBar()->addMenu(tr("&File"));
+  auto* open = file->addAction(tr("&Open session…"), this, [this] {
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open session"), sessionBrowser_->folder(),
+                                                      tr("fogbench sessions (*.fbs);;All files (*)"));
+    if (!path.isEmpty()) openSession(path);
+  });
+  open->setObjectName("openSessionAction");
+  open->setShortcut(QKeySequence::Open);
+  recentMenu_ = file->addMenu(tr("Open &recent"));
+  recentMenu_->setObjectName("recentMenu");
+  connect(recentMenu_, &QMenu::aboutToShow, this, &MainWindow::fillRecentMenu);
+  fillRecentMenu();
+  file->addSeparator();
+  auto* loadPlan = file->addAction(tr("&Load test plan…"), this, [this] {
+    const QString path = QFileDialog::getOpenFileName(this, tr("Load test plan"), sessionFolder(),
+                                                      tr("Test plans (*.json);;All files (*)"));
+    if (path.isEmpty()) return;
+    if (auto s = loadPlanFile(path); !s.isOk())
+      reportError(tr("Load test plan"), tr("Cannot load the test plan %1").arg(QFileInfo(path).fileName()),
+                  QString::fromStdString(s.message()));
+  });
+  loadPlan->setObjectName("loadPlanAction");
+  loadPlan->setShortcut(QKeySequence(QStringLiteral("Ctrl+L")));
+  auto* savePlan = file->addAction(tr("&Save test plan…"), this, [this] {
+    QString path = QFileDialog::getSaveFileName(this, tr("Save test plan"), QDir(sessionFolder()).filePath("plan.json"),
+                                                tr("Test plans (*.json)"));
+    if (path.isEmpty()) return;
+    if (QFileInfo(path).suffix().isEmpty()) path += ".json";
+    if (auto s = savePlanFile(path); !s.isOk())
+      reportError(tr("Save test plan"), tr("Cannot save the test plan as %1").arg(path),
+                  QString::fromStdString(s.message()));
+  });
+  savePlan->setObjectName("savePlanAction");
+  savePlan->setShortcut(QKeySequence::Save);
+  file->addSeparator();
+  auto* import = file->addAction(tr("&Import CSV data…"), this, [this] {
+    const QString dir = QFileDialog::getExistingDirectory(this, tr("Folder with metadata.json, table.csv, gyro.csv"));
+    if (!dir.isEmpty()) importCsv(dir);
+  });
+  import->setObjectName("importAction");
+  openExportFolderAction_ = file->addAction(tr("Open the &export folder"), this, &MainWindow::openExportFolder);
+  openExportFolderAction_->setObjectName("openExportFolderAction");
+  openExportFolderAction_->setToolTip(tr("Show the folder of the last export (plot or report)"));
+  file->addSeparator();
+  auto* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
+  quit->setObjectName("quitAction");
+  quit->setShortcut(QKeySequence(QStringLiteral("Ctrl+Q")));
+  quit->setMenuRole(QAction::QuitRole);
+
+  auto* run = menuBar()->addMenu(tr("&Run"));
+  runAction_ = run->addAction(tr("&Run"), this, &MainWindow::startRun);
+  runAction_->setObjectName("runAction");
+  runAction_->setShortcut(QKeySequence(QStringLiteral("Ctrl+R")));
+  stopAction_ = run->addAction(tr("&Stop"), this, &MainWindow::stopRun);
+  stopAction_->setObjectName("stopAction");
+  stopAction_->setShortcut(QKeySequence(QStringLiteral("Ctrl+.")));
+  stopAction_->setToolTip(tr("End the run now; everything received so far is kept and analysed"));
+  run->addSeparator();
+  auto* diagnose = run->addAction(tr("&Diagnose the shown result"), this, &MainWindow::diagnoseShown);
+  diagnose->setObjectName("diagnoseAction");
+
+  auto* view = menuBar()->addMenu(tr("&View"));
+  const QStringList names = {tr("&Configure"), tr("&Live"), tr("&Results"), tr("&Sessions"), tr("&Diagnosis"),
+                             tr("&Noise")};
+  for (int i = 0; i < names.size(); ++i) {
+    auto* action = view->addAction(names[i], this, [this, i] { showView(static_cast<View>(i)); });
+    action->setObjectName(QString("viewAction%1").arg(i));
+    action->setShortcut(QKeySequence(QString("Ctrl+%1").arg(i + 1)));
+  }
+
+  auto* tools = menuBar()->addMenu(tr("&Tools"));
+  auto* constants = tools->addAction(tr("&Bench constants…"), this, &MainWindow::editBenchSettings);
+  constants->setObjectName("benchConstantsAction");
+  auto* languages = tools->addMenu(tr("&Language"));
   auto* group = new QActionGroup(languages);
   const QString current = languageSetting();
   QStringList codes = {"system"};
@@ -292,66 +331,166 @@ void MainWindow::buildToolBar() {
       tell(tr("The language changes when fogbench starts again."));
     });
   }
+
   auto* help = menuBar()->addMenu(tr("&Help"));
+  auto* guide = help->addAction(tr("&Shortcuts"), this, [this] {
+    showMessage(this, MessageKind::kInformation, tr("Shortcuts"), tr("Keyboard shortcuts"),
+                tr("Run: Ctrl+R\nStop: Ctrl+.\nOpen a session: Ctrl+O\nLoad a test plan: Ctrl+L\n"
+                   "Save the test plan: Ctrl+S\nViews: Ctrl+1 … Ctrl+6\nQuit: Ctrl+Q"));
+  });
+  guide->setObjectName("shortcutsAction");
   auto* about = help->addAction(tr("&About fogbench"));
   about->setObjectName("aboutAction");
+  about->setMenuRole(QAction::AboutRole);
   connect(about, &QAction::triggered, this, [this] { QMessageBox::about(this, tr("About fogbench"), aboutText()); });
+}
 
-  auto* bar = addToolBar(tr("Run"));
-  bar->setObjectName("runToolBar");
-  bar->setMovable(false);
-  runButton_ = new QPushButton(tr("Run"));
-  runButton_->setObjectName("runButton");
-  stopButton_ = new QPushButton(tr("Stop"));
-  stopButton_->setObjectName("stopButton");
-  stopButton_->setToolTip(tr("End the run now; everything received so far is kept and analysed"));
-  bar->addWidget(runButton_);
-  bar->addWidget(stopButton_);
-  connect(runButton_, &QPushButton::clicked, this, &MainWindow::startRun);
-  connect(stopButton_, &QPushButton::clicked, this, &MainWindow::stopRun);
+void MainWindow::fillRecentMenu() {
+  recentMenu_->clear();
+  const QStringList recent = recentSessions();
+  for (const QString& path : recent) {
+    auto* action = recentMenu_->addAction(QFileInfo(path).fileName(), this, [this, path] { openSession(path); });
+    action->setToolTip(path);
+    action->setStatusTip(path);
+  }
+  if (recent.isEmpty()) recentMenu_->addAction(tr("(none yet)"))->setEnabled(false);
+  recentMenu_->setEnabled(true);
+}
+
+QStringList MainWindow::recentSessions() const { return QSettings().value("sessions/recent").toStringList(); }
+
+void MainWindow::addRecentSession(const QString& path) {
+  if (path.isEmpty()) return;
+  QStringList recent = recentSessions();
+  const QString absolute = QFileInfo(path).absoluteFilePath();
+  recent.removeAll(absolute);
+  recent.prepend(absolute);
+  while (recent.size() > kMaxRecentSessions) recent.removeLast();
+  QSettings().setValue("sessions/recent", recent);
+}
+
+Status MainWindow::loadPlanFile(const QString& path) {
+  std::ifstream in(path.toStdString(), std::ios::binary);
+  if (!in) return ioError("cannot read '" + path.toStdString() + "'; check the name and that the file is readable");
+  std::ostringstream text;
+  text << in.rdbuf();
+  auto plan = testPlanFromJson(text.str());
+  if (!plan) return plan.status();
+  planEditor_->setPlan(*plan);
+  tell(tr("Test plan loaded from %1").arg(QDir::toNativeSeparators(path)));
+  return Status::ok();
+}
+
+Status MainWindow::savePlanFile(const QString& path) {
+  std::ofstream out(path.toStdString(), std::ios::binary | std::ios::trunc);
+  if (!out) return ioError("cannot write '" + path.toStdString() + "'; choose a folder you can write to");
+  out << testPlanToJson(planEditor_->plan()) << '\n';
+  out.close();
+  if (!out) return ioError("writing '" + path.toStdString() + "' failed; check the free space");
+  tell(tr("Test plan saved as %1").arg(QDir::toNativeSeparators(path)));
+  return Status::ok();
+}
+
+void MainWindow::rememberState() {
+  if (!remembering_ || restoring_) return;
+  QSettings s;
+  s.beginGroup("state");
+  s.setValue("plan", QString::fromStdString(testPlanToJson(planEditor_->plan())));
+  s.setValue("pace", configureView_->pace());
+  s.setValue("operator", configureView_->operatorName());
+  s.setValue("imuModel", configureView_->imuModel());
+  s.setValue("imuSerial", configureView_->imuSerial());
+}
+
+void MainWindow::restoreState() {
+  restoring_ = true;
+  QSettings s;
+  s.beginGroup("state");
+  if (s.contains("plan"))
+    if (auto plan = testPlanFromJson(s.value("plan").toString().toStdString()); plan) planEditor_->setPlan(*plan);
+  if (s.contains("pace") && s.value("pace").toDouble() >= 0.0) configureView_->setPace(s.value("pace").toDouble());
+  configureView_->setIdentity(s.value("operator").toString(), s.value("imuModel").toString(),
+                              s.value("imuSerial").toString());
+  restoring_ = false;
+}
+
+void MainWindow::reportError(const QString& title, const QString& headline, const QString& details) {
+  tell(headline);
+  showMessage(this, MessageKind::kError, title, headline, details);
+}
+
+void MainWindow::exported(const QString& path) {
+  lastExport_ = path;
+  openExportFolderAction_->setEnabled(true);
+  tell(tr("Saved %1 — File ▸ Open the export folder shows it").arg(QDir::toNativeSeparators(path)));
+}
+
+void MainWindow::openExportFolder() {
+  const QString folder = lastExport_.isEmpty() ? sessionFolder() : QFileInfo(lastExport_).absolutePath();
+  if (folder.isEmpty()) return;
+  if (!QDesktopServices::openUrl(QUrl::fromLocalFile(folder)))
+    reportError(tr("Open the export folder"), tr("Cannot open the folder %1").arg(QDir::toNativeSeparators(folder)),
+                tr("No file manager answered; open the folder by hand: %1").arg(QDir::toNativeSeparators(folder)));
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+  if (!runner_.isRunning()) {
+    event->accept();
+    return;
+  }
+  event->ignore();
+  // Non-modal: the run goes on while the operator decides.
+  auto* box = findChild<QMessageBox*>("closeConfirmDialog", Qt::FindDirectChildrenOnly);
+  if (!box) {
+    box = new QMessageBox(QMessageBox::Question, tr("A run is under way"),
+                          tr("A run is under way. Stop it and close fogbench?"), QMessageBox::NoButton, this);
+    box->setObjectName("closeConfirmDialog");  // kept when closed, reused
+    box->setWindowModality(Qt::NonModal);
+    box->setInformativeText(tr("Stopping keeps everything received so far in the session file, marked incomplete."));
+    auto* stop = box->addButton(tr("Stop the run and close"), QMessageBox::AcceptRole);
+    stop->setObjectName("stopAndCloseButton");
+    auto* keep = box->addButton(tr("Keep running"), QMessageBox::RejectRole);
+    keep->setObjectName("keepRunningButton");
+    box->setDefaultButton(keep);
+    connect(stop, &QPushButton::clicked, this, [this] {
+      closeAfterRun_ = true;
+      stopRun();
+    });
+  }
+  box->show();
+  box->raise();
 }
 
 void MainWindow::showView(View view) { tabs_->setCurrentIndex(view); }
 MainWindow::View MainWindow::currentView() const { return static_cast<View>(tabs_->currentIndex()); }
 
 void MainWindow::useSimulator(double speed, int seed) {
-  sourceCombo_->setCurrentIndex(sourceCombo_->findData("sim"));
-  const int i = speedCombo_->findData(speed);
-  if (i >= 0) speedCombo_->setCurrentIndex(i);
-  else {
-    speedCombo_->addItem(tr("%1× real time").arg(speed), speed);
-    speedCombo_->setCurrentIndex(speedCombo_->count() - 1);
-  }
-  seedSpin_->setValue(seed);
+  setSourceKind(SourceKind::kSimulator);
+  configureView_->setPace(speed);
+  configureView_->setSeed(seed);
 }
 
 void MainWindow::useReplay(const QString& sessionPath, double speed) {
-  useSimulator(speed, seedSpin_->value());
-  sourceCombo_->setCurrentIndex(sourceCombo_->findData("replay"));
-  replayEdit_->setText(sessionPath);
+  useSimulator(speed, configureView_->seed());
+  setSourceKind(SourceKind::kReplay);
+  configureView_->setReplayPath(sessionPath);
 }
 
 void MainWindow::setSessionFolder(const QString& folder) {
-  folderEdit_->setText(folder);
-  recordCheck_->setChecked(!folder.isEmpty());
+  configureView_->setSessionFolder(folder);
+  resultView_->setExportFolder(folder);
   if (!folder.isEmpty()) {
-    QSettings().setValue("sessions/folder", folder);
+    // A one-off folder (fogbench --session-folder) is not remembered.
+    if (remembering_) QSettings().setValue("sessions/folder", folder);
     if (sessionBrowser_->folder() != folder) sessionBrowser_->setFolder(folder);
   }
 }
 
-QString MainWindow::sessionFolder() const { return recordCheck_->isChecked() ? folderEdit_->text() : QString(); }
+QString MainWindow::sessionFolder() const { return configureView_->sessionFolder(); }
 
 void MainWindow::setBenchSettings(const BenchSettings& s) {
   bench_ = s;
-  constantsLabel_->setText(tr("table read delay %1 ms · board delay %2 ms · latitude %3° · pulse equivalent %4° · "
-                              "counter %5 MHz / %6 bit")
-                               .arg(s.tableReadDelayMs)
-                               .arg(s.boardDelayMs)
-                               .arg(s.latitudeDeg)
-                               .arg(s.pulseEquivalentDeg)
-                               .arg(s.counterHz / 1e6)
-                               .arg(s.counterBits));
+  configureView_->showBenchSettings(s);
 }
 
 const RunOutcome* MainWindow::lastOutcome() const { return shown_.get(); }
@@ -363,10 +502,10 @@ void MainWindow::tell(const QString& message) {
 
 SessionInfo MainWindow::sessionInfo() const {
   SessionInfo info;
-  info.operatorName = operatorEdit_->text().toStdString();
-  info.imuModel = imuModelEdit_->text().toStdString();
-  info.imuSerial = imuSerialEdit_->text().toStdString();
-  info.notes = notesEdit_->text().toStdString();
+  info.operatorName = configureView_->operatorName().toStdString();
+  info.imuModel = configureView_->imuModel().toStdString();
+  info.imuSerial = configureView_->imuSerial().toStdString();
+  info.notes = configureView_->notes().toStdString();
   info.softwareVersion = FOG_VERSION;
   info.createdUtc = session::utcNow();
   info.bench = bench_;
@@ -376,54 +515,43 @@ SessionInfo MainWindow::sessionInfo() const {
 void MainWindow::updateRunButton() {
   QString why;
   if (runner_.isRunning()) why = tr("a run is under way");
-  else if (sourceCombo_->currentData().toString() == "sim" && !planEditor_->isValid()) why = planEditor_->problem();
-  else if (sourceCombo_->currentData().toString() == "replay" && replayEdit_->text().isEmpty())
+  else if (sourceKind() == SourceKind::kSimulator && !planEditor_->isValid()) why = planEditor_->problem();
+  else if (sourceKind() == SourceKind::kReplay && configureView_->replayPath().isEmpty())
     why = tr("choose the session file to replay");
-  else if (sourceCombo_->currentData().toString() == "serial" && serialPort().isEmpty())
+  else if (sourceKind() == SourceKind::kSerial && configureView_->serialPort().isEmpty())
     why = tr("choose the sampling board's serial port");
   runButton_->setEnabled(why.isEmpty());
+  runAction_->setEnabled(why.isEmpty());
   runButton_->setToolTip(why.isEmpty() ? tr("Start the run") : tr("Cannot run: %1").arg(why));
   if (!runner_.isRunning()) {
-    configureMessage_->setText(why.isEmpty() ? QString()
+    configureView_->setMessage(why.isEmpty() ? QString()
                                              : tr("<span style='color:#b00000'>Cannot run: %1</span>")
-                                                   .arg(why.toHtmlEscaped()));
+                                                   .arg(why.toHtmlEscaped().replace("\n", "<br>")));
   }
 }
 
-void MainWindow::startRun() {
-  if (runner_.isRunning()) return;
-  updateRunButton();
-  if (!runButton_->isEnabled()) {
-    showFailure(runButton_->toolTip());
-    return;
-  }
-  const double speed = speedCombo_->currentData().toDouble();
-  const bool sim = sourceCombo_->currentData().toString() == "sim";
+Result<RunRequest> MainWindow::buildRunRequest() const {
+  const double speed = configureView_->pace();
+  const SourceKind kind = sourceKind();
   RunRequest request;
   request.options.info = sessionInfo();
   request.options.constants = analysis::benchConstantsOf(bench_);
   TestPlan plan;
-  if (sim) {
+  if (kind == SourceKind::kSimulator) {
     plan = planEditor_->plan();
-    const auto config = simConfigOf(bench_, seedSpin_->value());
+    const auto config = simConfigOf(bench_, configureView_->seed());
     auto source = acquisition::SimulatorSource::create(config, plan, speed);
-    if (!source) {
-      showFailure(QString::fromStdString(source.status().message()));
-      return;
-    }
+    if (!source) return source.status();
     request.truth = (*source)->truth();
     request.options.info.source = (*source)->description();
     request.source = std::shared_ptr<acquisition::ByteSource>(std::move(*source));
-  } else if (sourceCombo_->currentData().toString() == "serial") {
+  } else if (kind == SourceKind::kSerial) {
     serial::SerialSettings settings;
-    settings.port = serialPort().toStdString();
-    bool ok = false;
-    settings.baudRate = baudCombo_->currentText().toInt(&ok);
+    settings.port = configureView_->serialPort().toStdString();
+    const bool ok = configureView_->baudRate(&settings.baudRate);
     const Status validity = settings.validate();
-    if (!ok || !validity.isOk()) {
-      showFailure(ok ? QString::fromStdString(validity.message()) : tr("the baud rate must be a whole number"));
-      return;
-    }
+    if (!ok) return invalidArgument(tr("the baud rate must be a whole number").toStdString());
+    if (!validity.isOk()) return validity;
     // The board runs its own plan; the one in the editor is stored as the
     // plan the operator intended, and drives the progress bars.
     plan = planEditor_->plan();
@@ -437,17 +565,11 @@ void MainWindow::startRun() {
       return std::unique_ptr<acquisition::ByteSource>(std::move(*source));
     };
   } else {
-    const QString path = replayEdit_->text();
+    const QString path = configureView_->replayPath();
     auto reader = session::SessionReader::open(path.toStdString());
-    if (!reader) {
-      showFailure(QString::fromStdString(reader.status().message()));
-      return;
-    }
+    if (!reader) return reader.status();
     auto bytes = (*reader)->rawBytes();
-    if (!bytes) {
-      showFailure(QString::fromStdString(bytes.status().message()));
-      return;
-    }
+    if (!bytes) return bytes.status();
     plan = (*reader)->info().plan;
     // A replay records into a new session like a live run, and keeps the
     // original's identity and constants.
@@ -465,15 +587,33 @@ void MainWindow::startRun() {
   request.options.reportContext.source = request.options.info.source + ", fogbench " + FOG_VERSION;
   const QString folder = sessionFolder();
   if (!folder.isEmpty()) {
-    if (!QDir().mkpath(folder)) {
-      showFailure(tr("cannot create the session folder '%1'; choose another one").arg(folder));
-      return;
-    }
+    if (!QDir().mkpath(folder))
+      return ioError(tr("cannot create the session folder '%1'; choose another one").arg(folder).toStdString());
+    // The serial as far as every file system takes it ("SN 7/a" -> "SN_7_a").
+    QString serial = configureView_->imuSerial().trimmed();
+    serial.replace(QRegularExpression("[^A-Za-z0-9._-]+"), "_");
     const QString name = QDateTime::currentDateTimeUtc().toString("yyyyMMdd-HHmmss-zzz") +
-                         (imuSerialEdit_->text().isEmpty() ? QString() : "-" + imuSerialEdit_->text()) + ".fbs";
+                         (serial.isEmpty() ? QString() : "-" + serial) + ".fbs";
     request.options.sessionPath = QDir(folder).filePath(name).toStdString();
   }
+  return request;
+}
 
+void MainWindow::startRun() {
+  if (runner_.isRunning()) return;
+  updateRunButton();
+  if (!runButton_->isEnabled()) {
+    showFailure(runButton_->toolTip());
+    return;
+  }
+  auto built = buildRunRequest();
+  if (!built) {
+    showFailure(QString::fromStdString(built.status().message()));
+    return;
+  }
+  RunRequest request = std::move(*built);
+  const TestPlan plan = request.options.info.plan;
+  const double speed = configureView_->pace();
   resultView_->clear();
   shown_.reset();
   const QString sourceText = QString::fromStdString(request.options.info.source);
@@ -482,41 +622,29 @@ void MainWindow::startRun() {
   showHealth({}, 0);
   runClock_.start();
   if (!runner_.start(std::move(request))) return;
+  stopRequested_ = false;
   setRunning(true);
   liveTimer_.start();
   showView(kLive);
   tell(tr("Running: %1 …").arg(sourceText));
 }
 
-QString MainWindow::serialPort() const {
-  // A listed port carries its device as data; a typed one is the text itself.
-  const int i = portCombo_->currentIndex();
-  if (i >= 0 && portCombo_->itemText(i) == portCombo_->currentText()) return portCombo_->itemData(i).toString();
-  return portCombo_->currentText().trimmed();
-}
+MainWindow::SourceKind MainWindow::sourceKind() const { return configureView_->sourceKind(); }
+void MainWindow::setSourceKind(SourceKind kind) { configureView_->setSourceKind(kind); }
 
 void MainWindow::stopRun() {
   if (!runner_.isRunning()) return;
+  stopRequested_ = true;
   runner_.stop();
   stopButton_->setEnabled(false);
+  stopAction_->setEnabled(false);
   tell(tr("Stopping: everything received so far is kept …"));
 }
 
 void MainWindow::setRunning(bool running) {
   stopButton_->setEnabled(running);
-  planEditor_->setReadOnly(running);
-  for (QWidget* w : std::initializer_list<QWidget*>{sourceCombo_, speedCombo_, seedSpin_, replayEdit_, recordCheck_,
-                                                    folderEdit_, portCombo_, baudCombo_})
-    w->setEnabled(!running);
-  if (!running) {
-    seedSpin_->setEnabled(sourceCombo_->currentData().toString() == "sim");
-    replayEdit_->setEnabled(sourceCombo_->currentData().toString() == "replay");
-    const bool serial = sourceCombo_->currentData().toString() == "serial";
-    portCombo_->setEnabled(serial);
-    baudCombo_->setEnabled(serial);
-    speedCombo_->setEnabled(!serial);
-    folderEdit_->setEnabled(recordCheck_->isChecked());
-  }
+  stopAction_->setEnabled(running);
+  configureView_->setRunning(running);
   updateRunButton();
 }
 
@@ -533,15 +661,26 @@ void MainWindow::drainLive() {
 }
 
 void MainWindow::showHealth(const StreamHealth& h, std::uint64_t dropped) {
-  QString text = tr("frames: %1 table · %2 IMU · %3 status  ·  checksum failures: %4  ·  lost: %5  ·  duplicates: %6")
-                     .arg(h.tableFrames)
-                     .arg(h.imuFrames)
-                     .arg(h.statusFrames)
+  // Short, so that the status bar keeps room for messages; the breakdown is
+  // in the tooltip.
+  QString text = tr("frames: %1 · checksum failures: %2 · lost: %3 · duplicates: %4")
+                     .arg(h.tableFrames + h.imuFrames + h.statusFrames)
                      .arg(h.checksumFailures)
                      .arg(h.lostFrames)
                      .arg(h.duplicateFrames);
-  if (dropped > 0) text += tr("  ·  display skipped %1 frames (all recorded)").arg(dropped);
+  QString tip = tr("frames: %1 table · %2 IMU · %3 status  ·  checksum failures: %4  ·  lost: %5  ·  duplicates: %6")
+                    .arg(h.tableFrames)
+                    .arg(h.imuFrames)
+                    .arg(h.statusFrames)
+                    .arg(h.checksumFailures)
+                    .arg(h.lostFrames)
+                    .arg(h.duplicateFrames);
+  if (dropped > 0) {
+    text += tr(" · display skipped %1").arg(dropped);
+    tip += tr("  ·  display skipped %1 frames (all recorded)").arg(dropped);
+  }
   framesLabel_->setText(text + " ");
+  framesLabel_->setToolTip(tip);
 }
 
 void MainWindow::showOutcome(std::shared_ptr<const RunOutcome> outcome) {
@@ -566,72 +705,94 @@ void MainWindow::showOutcome(std::shared_ptr<const RunOutcome> outcome) {
   if (!outcome->sessionPath.empty())
     message += tr(". Saved as %1").arg(QFileInfo(QString::fromStdString(outcome->sessionPath)).fileName());
   tell(message);
-  configureMessage_->setText(message.toHtmlEscaped());
+  configureView_->setMessage(message.toHtmlEscaped());
+  // A run the operator did not stop that ended early, or gave no delay, is
+  // explained whole (the status bar line is cut and soon overwritten).
+  // (Not when the operator stopped it: they know.)
+  if (!stopRequested_ && !outcome->complete)
+    showMessage(this, MessageKind::kError, tr("Run incomplete"),
+                tr("The run ended early; everything received is kept and analysed."), message);
+  else if (!stopRequested_ && !delay)
+    showMessage(this, MessageKind::kError, tr("No delay"), tr("The run gave no delay."), message);
   sessionBrowser_->refresh();
-  if (!outcome->sessionPath.empty()) sessionBrowser_->selectPath(QString::fromStdString(outcome->sessionPath));
+  if (!outcome->sessionPath.empty()) {
+    sessionBrowser_->selectPath(QString::fromStdString(outcome->sessionPath));
+    addRecentSession(QString::fromStdString(outcome->sessionPath));
+  }
   showView(kResults);
   emit runEnded(delay);
+  if (closeAfterRun_) QTimer::singleShot(0, this, &QWidget::close);
 }
 
 void MainWindow::showFailure(const QString& message) {
   liveTimer_.stop();
   setRunning(false);
+  reportError(tr("Run failed"), tr("Run failed"), message);
   tell(tr("Run failed: %1").arg(message));
-  configureMessage_->setText(tr("<span style='color:#b00000'>Run failed: %1</span>").arg(message.toHtmlEscaped()));
+  configureView_->setMessage(tr("<span style='color:#b00000'>Run failed: %1</span>").arg(message.toHtmlEscaped()));
   emit runEnded(false);
+  if (closeAfterRun_) QTimer::singleShot(0, this, &QWidget::close);
 }
 
 void MainWindow::loadSession(const QString& path, bool reanalyse,
                              std::function<void(std::shared_ptr<const RunOutcome>)> done) {
-  tell(reanalyse ? tr("Re-analysing %1 …").arg(path) : tr("Opening %1 …").arg(path));
+  const QString name = QFileInfo(path).fileName();
+  tell(reanalyse ? tr("Re-analysing %1 …").arg(name) : tr("Opening %1 …").arg(name));
   const BenchSettings bench = bench_;
   // QFuture needs a default-constructible value: the outcome, or why not.
   struct Loaded {
     std::shared_ptr<RunOutcome> outcome;
     Status status;
   };
-  auto* watcher = new QFutureWatcher<Loaded>(this);
-  connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, path, reanalyse, done] {
-    const Loaded result = watcher->result();
-    watcher->deleteLater();
-    if (!result.outcome) {
-      tell(tr("Cannot open %1: %2").arg(path, QString::fromStdString(result.status.message())));
-      done(nullptr);
-      return;
-    }
-    tell(reanalyse ? tr("%1: re-analysed with the bench constants; the result was added to the session").arg(path)
-                   : tr("%1: read-only review").arg(path));
-    done(result.outcome);
-  });
   // Reading and fitting a long session takes a while: off the GUI thread.
-  watcher->setFuture(QtConcurrent::run([path, reanalyse, bench]() -> Loaded {
-    auto reader = session::SessionReader::open(path.toStdString());
-    if (!reader) return {nullptr, reader.status()};
-    auto recording = (*reader)->recording();
-    if (!recording) return {nullptr, recording.status()};
-    auto outcome = std::make_shared<RunOutcome>();
-    outcome->info = (*reader)->info();
-    outcome->sessionPath = path.toStdString();
-    outcome->complete = (*reader)->complete();
-    outcome->incompleteReason = (*reader)->incompleteReason();
-    outcome->recording = std::move(*recording);
-    // Review uses the session's own constants; a re-analysis the bench's.
-    if (reanalyse) outcome->info.bench = bench;
-    const auto constants = analysis::benchConstantsOf(outcome->info.bench);
-    outcome->report = analysis::analyzeRecording(outcome->recording, constants);
-    const std::string source = "session " + path.toStdString() + " (" + (*reader)->info().source + ")";
-    reader->reset();
-    if (reanalyse && outcome->report) {
-      analysis::ReportContext context;
-      context.source = source;
-      if (auto s = session::addResult(path.toStdString(), acquisition::analysisSettingsJson(constants, "fogbench GUI"),
-                                      analysis::formatReportJson(*outcome->report, context));
-          !s.isOk())
-        return {nullptr, s};
-    }
-    completeOutcome(*outcome, source);
-    return {outcome, Status::ok()};
-  }));
+  inBackground(
+      this, [path, reanalyse, bench]() -> Loaded {
+        auto reader = session::SessionReader::open(path.toStdString());
+        if (!reader) return {nullptr, reader.status()};
+        auto recording = (*reader)->recording();
+        if (!recording) return {nullptr, recording.status()};
+        auto outcome = std::make_shared<RunOutcome>();
+        outcome->info = (*reader)->info();
+        outcome->sessionPath = path.toStdString();
+        outcome->complete = (*reader)->complete();
+        outcome->incompleteReason = (*reader)->incompleteReason();
+        outcome->recording = std::move(*recording);
+        // Review uses the session's own constants; a re-analysis the bench's.
+        if (reanalyse) outcome->info.bench = bench;
+        const auto constants = analysis::benchConstantsOf(outcome->info.bench);
+        outcome->report = analysis::analyzeRecording(outcome->recording, constants);
+        const std::string source = "session " + path.toStdString() + " (" + (*reader)->info().source + ")";
+        reader->reset();
+        if (reanalyse && outcome->report) {
+          analysis::ReportContext context;
+          context.source = source;
+          if (auto s = session::addResult(path.toStdString(), acquisition::analysisSettingsJson(constants, "fogbench GUI"),
+                                          analysis::formatReportJson(*outcome->report, context));
+              !s.isOk())
+            return {nullptr, s};
+        }
+        completeOutcome(*outcome, source);
+        return {outcome, Status::ok()};
+      },
+      [this, path, name, reanalyse, done](Loaded result) {
+        if (!result.outcome) {
+          reportError(reanalyse ? tr("Re-analyse") : tr("Open session"),
+                      reanalyse ? tr("Cannot re-analyse %1").arg(name) : tr("Cannot open %1").arg(name),
+                      tr("%1\n\nFile: %2").arg(QString::fromStdString(result.status.message()), QDir::toNativeSeparators(path)));
+          done(nullptr);
+          return;
+        }
+        if (reanalyse) {
+          tell(tr("%1: re-analysed with the bench constants; the result was added to the session").arg(name));
+          showMessage(this, MessageKind::kInformation, tr("Re-analyse"), tr("%1 re-analysed").arg(name),
+                      tr("The session was analysed with the current bench constants and the result was added to it; "
+                         "its recorded data did not change.\n\nFile: %1").arg(QDir::toNativeSeparators(path)));
+        } else {
+          tell(tr("%1: read-only review").arg(name));
+          addRecentSession(path);
+        }
+        done(result.outcome);
+      });
 }
 
 void MainWindow::openSession(const QString& path) {
@@ -651,32 +812,34 @@ void MainWindow::importCsv(const QString& csvFolder) {
   QString folder = sessionBrowser_->folder();
   if (folder.isEmpty()) folder = sessionFolder();
   if (folder.isEmpty() || !QDir().mkpath(folder)) {
-    tell(tr("Choose a session folder to import into first."));
+    reportError(tr("Import CSV data"), tr("Choose a session folder to import into first."),
+                tr("The imported data becomes a session file in the session folder; choose a folder you can write to "
+                   "in the Sessions view."));
     emit importEnded(QString());
     return;
   }
   const QString path = QDir(folder).filePath(QDateTime::currentDateTimeUtc().toString("yyyyMMdd-HHmmss-zzz") +
                                              "-import-" + QFileInfo(csvFolder).fileName() + ".fbs");
   tell(tr("Importing %1 …").arg(csvFolder));
-  auto* watcher = new QFutureWatcher<Status>(this);
-  connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, path, csvFolder] {
-    const Status s = watcher->result();
-    watcher->deleteLater();
-    if (!s.isOk()) {
-      tell(tr("Cannot import %1: %2").arg(csvFolder, QString::fromStdString(s.message())));
-      emit importEnded(QString());
-      return;
-    }
-    sessionBrowser_->refresh();
-    sessionBrowser_->selectPath(path);
-    tell(tr("Imported %1 as %2").arg(csvFolder, QFileInfo(path).fileName()));
-    emit importEnded(path);
-  });
-  watcher->setFuture(QtConcurrent::run([csvFolder, path]() -> Status {
-    auto imported = io::importCsvDirectory(csvFolder.toStdString());
-    if (!imported) return imported.status();
-    return io::saveImportedSession(*imported, csvFolder.toStdString(), path.toStdString());
-  }));
+  inBackground(
+      this, [csvFolder, path]() -> Status {
+        auto imported = io::importCsvDirectory(csvFolder.toStdString());
+        if (!imported) return imported.status();
+        return io::saveImportedSession(*imported, csvFolder.toStdString(), path.toStdString());
+      },
+      [this, path, csvFolder](Status s) {
+        if (!s.isOk()) {
+          reportError(tr("Import CSV data"), tr("Cannot import %1").arg(QDir::toNativeSeparators(csvFolder)),
+                      QString::fromStdString(s.message()));
+          tell(tr("Cannot import %1: %2").arg(csvFolder, QString::fromStdString(s.message())));
+          emit importEnded(QString());
+          return;
+        }
+        sessionBrowser_->refresh();
+        sessionBrowser_->selectPath(path);
+        tell(tr("Imported %1 as %2").arg(csvFolder, QFileInfo(path).fileName()));
+        emit importEnded(path);
+      });
 }
 
 void MainWindow::diagnoseShown() {
@@ -691,28 +854,27 @@ void MainWindow::diagnoseShown() {
     std::shared_ptr<diagnosis::Diagnosis> result;
     Status status;
   };
-  auto* watcher = new QFutureWatcher<Done>(this);
-  connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, title] {
-    const Done done = watcher->result();
-    watcher->deleteLater();
-    if (!done.result) {
-      diagnosisView_->showMessage(tr("No diagnosis: %1").arg(QString::fromStdString(done.status.message())));
-      tell(tr("No diagnosis of %1: %2").arg(title, QString::fromStdString(done.status.message())));
-      emit diagnosisEnded(false);
-      return;
-    }
-    diagnosisView_->showDiagnosis(done.result, title);
-    tell(tr("Diagnosis of %1: %2 (%3 s)")
-             .arg(title, QString::fromStdString(done.result->verdict))
-             .arg(localNumber(done.result->elapsedS, 'f', 1)));
-    emit diagnosisEnded(true);
-  });
   // Several replays of the session in the simulator: off the GUI thread.
-  watcher->setFuture(QtConcurrent::run([outcome]() -> Done {
-    auto d = diagnosis::diagnose(outcome->recording, &outcome->info, outcome->report->constants);
-    if (!d) return {nullptr, d.status()};
-    return {std::make_shared<diagnosis::Diagnosis>(std::move(*d)), Status::ok()};
-  }));
+  inBackground(
+      this, [outcome]() -> Done {
+        auto d = diagnosis::diagnose(outcome->recording, &outcome->info, outcome->report->constants);
+        if (!d) return {nullptr, d.status()};
+        return {std::make_shared<diagnosis::Diagnosis>(std::move(*d)), Status::ok()};
+      },
+      [this, title](Done done) {
+        if (!done.result) {
+          diagnosisView_->showMessage(tr("No diagnosis: %1").arg(QString::fromStdString(done.status.message())));
+          reportError(tr("Diagnosis"), tr("No diagnosis of %1").arg(title), QString::fromStdString(done.status.message()));
+          tell(tr("No diagnosis of %1: %2").arg(title, QString::fromStdString(done.status.message())));
+          emit diagnosisEnded(false);
+          return;
+        }
+        diagnosisView_->showDiagnosis(done.result, title);
+        tell(tr("Diagnosis of %1: %2 (%3 s)")
+                 .arg(title, QString::fromStdString(done.result->verdict))
+                 .arg(localNumber(done.result->elapsedS, 'f', 1)));
+        emit diagnosisEnded(true);
+      });
 }
 
 void MainWindow::analyseNoise(std::shared_ptr<const RunOutcome> outcome) {
@@ -730,26 +892,24 @@ void MainWindow::analyseNoise(std::shared_ptr<const RunOutcome> outcome) {
     std::vector<noise::GyroNoiseReport> reports;
     Status status;
   };
-  auto* watcher = new QFutureWatcher<Done>(this);
-  connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher] {
-    Done done = watcher->result();
-    watcher->deleteLater();
-    if (!done.status.isOk()) {
-      noiseView_->showMessage(tr("No noise analysis: %1").arg(QString::fromStdString(done.status.message())));
-      emit noiseAnalysed(false);
-      return;
-    }
-    noiseView_->showReports(std::move(done.reports));
-    emit noiseAnalysed(true);
-  });
-  watcher->setFuture(QtConcurrent::run([outcome]() -> Done {
-    noise::GyroNoiseOptions options;
-    options.earth.latitudeDeg = outcome->info.bench.latitudeDeg;
-    options.pulseEquivalentDeg = outcome->info.bench.pulseEquivalentDeg;
-    auto reports = noise::analyzeGyroNoise(outcome->recording, options);
-    if (!reports) return {{}, reports.status()};
-    return {std::move(*reports), Status::ok()};
-  }));
+  inBackground(
+      this, [outcome]() -> Done {
+        noise::GyroNoiseOptions options;
+        options.earth.latitudeDeg = outcome->info.bench.latitudeDeg;
+        options.pulseEquivalentDeg = outcome->info.bench.pulseEquivalentDeg;
+        auto reports = noise::analyzeGyroNoise(outcome->recording, options);
+        if (!reports) return {{}, reports.status()};
+        return {std::move(*reports), Status::ok()};
+      },
+      [this](Done done) {
+        if (!done.status.isOk()) {
+          noiseView_->showMessage(tr("No noise analysis: %1").arg(QString::fromStdString(done.status.message())));
+          emit noiseAnalysed(false);
+          return;
+        }
+        noiseView_->showReports(std::move(done.reports));
+        emit noiseAnalysed(true);
+      });
 }
 
 void MainWindow::compareSessions(const QString& first, const QString& second) {
@@ -772,7 +932,10 @@ void MainWindow::compareSessions(const QString& first, const QString& second) {
       if (guard && o) guard->showOutcome(o);
     });
   }
-  dialog->resize(1600, 900);
+  // As large as the screen allows, up to 1600 x 900.
+  QSize size(1600, 900);
+  if (const QScreen* screen = this->screen()) size = size.boundedTo(screen->availableGeometry().size() * 0.95);
+  dialog->resize(size);
   dialog->show();
 }
 

@@ -1,7 +1,9 @@
 #pragma once
 // The bench window a lab operator works in, in four views:
-//   Configure  the test plan, the source (simulator, replay of a session),
-//              the session's metadata and where it is recorded
+//   Configure  the test plan, the source (simulator, replay of a session,
+//              serial board), the session's metadata and where it is
+//              recorded (ui/configure_view.h; the window builds the run
+//              from it, buildRunRequest)
 //   Live       the scrolling table and gyro angles, progress, counters
 //   Results    curves, fits, delay breakdown, delay vs frequency, report
 //   Sessions   the session browser: review, re-analyse, compare
@@ -10,9 +12,14 @@
 //
 // The window owns an AcquisitionRunner and reacts to its signals; it drains
 // the runner's buffer on a ~30 Hz timer and never waits for a worker.
-// Failures are shown in the status bar and on the Configure view (no modal
-// dialog unless the operator asked for an action), so an unattended window
-// never blocks.
+// Failures are shown whole in a non-modal message box (ui/messages.h: the
+// text selectable, never a blocking dialog, so an unattended window never
+// blocks), briefly in the status bar and on the Configure view.
+//
+// Every view sits in a scroll area and the wide ones are split, so that the
+// window fits a 1366x768 laptop screen and stays workable at 1024x700.
+// The plan, pace, operator, IMU and session folder are remembered between
+// starts (QSettings); plans load and save in the CLI's JSON plan format.
 
 #include <QElapsedTimer>
 #include <QFutureWatcher>
@@ -22,8 +29,12 @@
 
 #include "common/session_info.h"
 #include "ui/acquisition_runner.h"
+#include "ui/configure_view.h"
 
+class QAction;
 class QCheckBox;
+class QCloseEvent;
+class QMenu;
 class QComboBox;
 class QLabel;
 class QLineEdit;
@@ -45,10 +56,12 @@ class MainWindow : public QMainWindow {
 
  public:
   enum View { kConfigure = 0, kLive, kResults, kSessions, kDiagnosis, kNoise };
+  using SourceKind = ConfigureView::SourceKind;
 
   explicit MainWindow(QWidget* parent = nullptr);
   ~MainWindow() override;
 
+  ConfigureView* configureView() const { return configureView_; }
   PlanEditor* planEditor() const { return planEditor_; }
   LiveView* liveView() const { return liveView_; }
   ResultView* resultView() const { return resultView_; }
@@ -62,8 +75,21 @@ class MainWindow : public QMainWindow {
   // or the replay of a session file.
   void useSimulator(double speed, int seed);
   void useReplay(const QString& sessionPath, double speed);
+  SourceKind sourceKind() const;
+  void setSourceKind(SourceKind kind);
   // Where sessions are recorded; empty: runs are not recorded.
   void setSessionFolder(const QString& folder);
+  // Whether the operator's choices (plan, pace, operator, IMU model and
+  // serial, session folder) are remembered for the next start. Off while the
+  // command line applies one-off choices (--session-folder, --preset).
+  void setRemembering(bool remembering) { remembering_ = remembering; }
+  // Test plans in the CLI's JSON format (fogbench-cli run --plan FILE).
+  Status loadPlanFile(const QString& path);
+  Status savePlanFile(const QString& path);
+  // Sessions recently recorded or opened, newest first (remembered).
+  QStringList recentSessions() const;
+  // The file the last export wrote (empty before one).
+  QString lastExport() const { return lastExport_; }
   QString sessionFolder() const;
   void setBenchSettings(const BenchSettings& settings);
   const BenchSettings& benchSettings() const { return bench_; }
@@ -87,6 +113,9 @@ class MainWindow : public QMainWindow {
   // The sim-to-real diagnosis of the shown result, in the background; shown
   // in the Diagnosis view.
   void diagnoseShown();
+  // Opens the folder of the last export (or the session folder) in the
+  // desktop's file manager.
+  void openExportFolder();
 
  signals:
   // Every started run ends with this, once its results (or error) are shown.
@@ -100,9 +129,21 @@ class MainWindow : public QMainWindow {
   // After every shown result: whether its static segments gave a noise analysis.
   void noiseAnalysed(bool succeeded);
 
+ protected:
+  // Closing during a run asks first (non-modal): stop the run and close, or
+  // keep running.
+  void closeEvent(QCloseEvent* event) override;
+
  private:
-  QWidget* buildConfigureView();
   void buildToolBar();
+  void buildMenus();
+  // An error the operator must read whole: message box + status bar.
+  void reportError(const QString& title, const QString& headline, const QString& details);
+  void rememberState();
+  void restoreState();
+  void addRecentSession(const QString& path);
+  void fillRecentMenu();
+  void exported(const QString& path);
   void drainLive();
   void setRunning(bool running);
   void showOutcome(std::shared_ptr<const RunOutcome> outcome);
@@ -114,8 +155,11 @@ class MainWindow : public QMainWindow {
   // The Allan deviation of the outcome's static segments, in the background.
   void analyseNoise(std::shared_ptr<const RunOutcome> outcome);
   void updateRunButton();
+  // The run the Configure view describes (source, session identity, bench
+  // constants, plan, where it is recorded), or why it cannot run.
+  Result<RunRequest> buildRunRequest() const;
   SessionInfo sessionInfo() const;
-  QString serialPort() const;
+  void editBenchSettings();
 
   AcquisitionRunner runner_;
   QTimer liveTimer_;
@@ -123,8 +167,14 @@ class MainWindow : public QMainWindow {
   BenchSettings bench_;
   std::shared_ptr<const RunOutcome> shown_;
   QString lastMessage_;
+  QString lastExport_;
+  bool remembering_ = true;
+  bool restoring_ = false;
+  bool stopRequested_ = false;
+  bool closeAfterRun_ = false;
 
   QTabWidget* tabs_ = nullptr;
+  ConfigureView* configureView_ = nullptr;
   PlanEditor* planEditor_ = nullptr;
   LiveView* liveView_ = nullptr;
   ResultView* resultView_ = nullptr;
@@ -134,21 +184,11 @@ class MainWindow : public QMainWindow {
 
   QPushButton* runButton_ = nullptr;
   QPushButton* stopButton_ = nullptr;
-  QComboBox* sourceCombo_ = nullptr;
-  QComboBox* speedCombo_ = nullptr;
-  QSpinBox* seedSpin_ = nullptr;
-  QLineEdit* replayEdit_ = nullptr;
-  QComboBox* portCombo_ = nullptr;
-  QComboBox* baudCombo_ = nullptr;
-  QCheckBox* recordCheck_ = nullptr;
-  QLineEdit* folderEdit_ = nullptr;
-  QLineEdit* operatorEdit_ = nullptr;
-  QLineEdit* imuModelEdit_ = nullptr;
-  QLineEdit* imuSerialEdit_ = nullptr;
-  QLineEdit* notesEdit_ = nullptr;
-  QLabel* configureMessage_ = nullptr;
-  QLabel* constantsLabel_ = nullptr;
   QLabel* framesLabel_ = nullptr;
+  QAction* runAction_ = nullptr;
+  QAction* stopAction_ = nullptr;
+  QAction* openExportFolderAction_ = nullptr;
+  QMenu* recentMenu_ = nullptr;
 };
 
 }  // namespace fog::ui

@@ -15,6 +15,7 @@
 
 #include "ui/allan_curves.h"
 #include "ui/language.h"
+#include "ui/messages.h"
 
 namespace fog::ui {
 
@@ -132,7 +133,7 @@ void NoiseView::showSegment(int position) {
     const int row = table_->rowCount();
     table_->insertRow(row);
     const QStringList cells = {QString::fromUtf8(noise::noiseTermName(term.kind)), localNumber(u.value, 'g', 4),
-                               localNumber(u.stdError, 'g', 2), QString::fromUtf8(u.unit),
+                               localNumber(u.stdError, 'g', 2), displayUnits(QString::fromUtf8(u.unit)),
                                tr("%1 – %2").arg(localNumber(term.tauLowS, 'g', 3), localNumber(term.tauHighS, 'g', 3))};
     for (int col = 0; col < cells.size(); ++col) table_->setItem(row, col, new QTableWidgetItem(cells[col]));
   }

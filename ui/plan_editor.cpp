@@ -12,6 +12,7 @@
 #include <cmath>
 
 #include "ui/bench_presets.h"
+#include "ui/messages.h"
 
 namespace fog::ui {
 
@@ -43,17 +44,21 @@ PlanEditor::PlanEditor(QWidget* parent) : QWidget(parent) {
   top->addWidget(new QLabel(tr("Preset")));
   presetCombo_ = new QComboBox();
   presetCombo_->setObjectName("planPresetCombo");
+  // Narrow on a laptop; the list shows the whole labels.
+  presetCombo_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+  presetCombo_->setMinimumContentsLength(14);
   for (const auto& p : benchPresets()) presetCombo_->addItem(p.displayLabel(), p.name);
-  top->addWidget(presetCombo_);
+  top->addWidget(presetCombo_, 1);
   auto* load = new QPushButton(tr("Load preset"));
   load->setObjectName("loadPresetButton");
   top->addWidget(load);
-  top->addStretch(1);
-  top->addWidget(new QLabel(tr("Rest between points")));
+  top->addSpacing(12);
+  top->addWidget(new QLabel(tr("Rest")));
   restSpin_ = makeSpin(0.0, 3600.0, 1, tr(" s"));
   restSpin_->setObjectName("restSpin");
   restSpin_->setFrame(true);
   restSpin_->setButtonSymbols(QAbstractSpinBox::UpDownArrows);
+  restSpin_->setToolTip(tr("Rest between test points: the table at rest"));
   top->addWidget(restSpin_);
   layout->addLayout(top);
 
@@ -65,7 +70,14 @@ PlanEditor::PlanEditor(QWidget* parent) : QWidget(parent) {
   table_->horizontalHeader()->setSectionResizeMode(kCheck, QHeaderView::Stretch);
   table_->setSelectionBehavior(QAbstractItemView::SelectRows);
   table_->setSelectionMode(QAbstractItemView::SingleSelection);
-  table_->verticalHeader()->setSectionResizeMode(QHeaderView::Fixed);
+  // A long check wraps in its row instead of being cut.
+  table_->setWordWrap(true);
+  table_->verticalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+  // The rows follow the width of the check column (queued: the header is
+  // still laying out when it reports the new width).
+  connect(table_->horizontalHeader(), &QHeaderView::sectionResized, this, [this](int column) {
+    if (column == kCheck) QMetaObject::invokeMethod(table_, &QTableView::resizeRowsToContents, Qt::QueuedConnection);
+  });
   layout->addWidget(table_, 1);
 
   auto* buttons = new QHBoxLayout();
@@ -80,8 +92,9 @@ PlanEditor::PlanEditor(QWidget* parent) : QWidget(parent) {
   summary_ = new QLabel();
   summary_->setObjectName("planSummary");
   summary_->setWordWrap(true);
-  buttons->addWidget(summary_, 2);
+  summary_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   layout->addLayout(buttons);
+  layout->addWidget(summary_);
 
   connect(load, &QPushButton::clicked, this, [this] { loadPreset(presetCombo_->currentData().toString()); });
   connect(addButton_, &QPushButton::clicked, this, [this] {
@@ -118,6 +131,13 @@ void PlanEditor::addRow(const TestPoint& p) {
   axis->addItems({"X", "Y", "Z"});
   axis->setCurrentIndex(static_cast<int>(p.axis));
   axis->setFrame(false);
+  // The table position and start phase have no column: a plan file's values
+  // ride with the row so that editing it does not drop them.
+  axis->setProperty("positionDeg", QVariantList{p.positionDeg[0], p.positionDeg[1], p.positionDeg[2]});
+  axis->setProperty("startPhaseDeg", p.startPhaseDeg);
+  if (p.positionDeg != std::array<double, kAxisCount>{})
+    axis->setToolTip(tr("table position from the plan file: X %1°, Y %2°, Z %3°")
+                         .arg(p.positionDeg[0]).arg(p.positionDeg[1]).arg(p.positionDeg[2]));
   table_->setCellWidget(row, kAxis, axis);
   // Wide ranges on purpose: the limits are the table's, checked and explained
   // by validate(), not silently clamped by the field.
@@ -182,11 +202,16 @@ void PlanEditor::syncPeriods(int row, Column edited) {
 
 TestPoint PlanEditor::rowPoint(int row) const {
   TestPoint p;
+  const auto* axisBox = qobject_cast<QComboBox*>(table_->cellWidget(row, kAxis));
+  const QVariantList position = axisBox->property("positionDeg").toList();
   if (qobject_cast<QComboBox*>(table_->cellWidget(row, kKind))->currentIndex() == 1) {
-    p = TestPoint::staticSegment(static_cast<Axis>(qobject_cast<QComboBox*>(table_->cellWidget(row, kAxis))->currentIndex()),
-                                 spin(row, kDuration)->value(), spin(row, kSettle)->value());
+    p = TestPoint::staticSegment(static_cast<Axis>(axisBox->currentIndex()), spin(row, kDuration)->value(),
+                                 spin(row, kSettle)->value());
+    for (int a = 0; a < kAxisCount && a < position.size(); ++a) p.positionDeg[a] = position[a].toDouble();
     return p;
   }
+  for (int a = 0; a < kAxisCount && a < position.size(); ++a) p.positionDeg[a] = position[a].toDouble();
+  p.startPhaseDeg = axisBox->property("startPhaseDeg").toDouble();
   p.axis = static_cast<Axis>(qobject_cast<QComboBox*>(table_->cellWidget(row, kAxis))->currentIndex());
   p.frequencyHz = spin(row, kFrequency)->value();
   p.amplitudeDeg = spin(row, kAmplitude)->value();
@@ -252,7 +277,7 @@ void PlanEditor::moveSelectedRow(int by) {
 }
 
 void PlanEditor::validate() {
-  QString first;
+  QStringList problems;
   double totalS = restSpin_->value();
   for (int r = 0; r < table_->rowCount(); ++r) {
     const TestPoint p = rowPoint(r);
@@ -262,11 +287,11 @@ void PlanEditor::validate() {
     check->setText(ok ? (p.isStatic() ? tr("ok: table at rest, %1 in all").arg(durationText(p.settleS + p.durationS))
                                       : tr("ok: %1 periods, %2 in all").arg(p.durationS * p.frequencyHz, 0, 'f', 1)
                                             .arg(durationText(p.settleS + p.durationS)))
-                      : QString::fromStdString(validity.message()));
+                      : displayUnits(QString::fromStdString(validity.message())));
     check->setForeground(ok ? QColor(0, 110, 0) : QColor(190, 0, 0));
     check->setToolTip(check->text());
     // Mark the field the message is about.
-    const QString w = QString::fromStdString(validity.message());
+    const QString w = displayUnits(QString::fromStdString(validity.message()));
     const Column bad = w.startsWith("frequency") || w.startsWith("peak") ? kFrequency
                        : w.startsWith("amplitude")                       ? kAmplitude
                        : w.startsWith("duration")                        ? kDuration
@@ -278,15 +303,18 @@ void PlanEditor::validate() {
       s->setStyleSheet(flagged ? "background: #ffd6d6;" : QString());
       s->setToolTip(flagged ? w : QString());
     }
-    if (!ok && first.isEmpty()) first = tr("test point %1: %2").arg(r + 1).arg(w);
+    if (!ok) problems << tr("test point %1: %2").arg(r + 1).arg(w);
     totalS += p.settleS + p.durationS + restSpin_->value();
   }
-  if (table_->rowCount() == 0) first = tr("the test plan has no test points: add one or load a preset");
-  const bool changed = first != problem_;
-  problem_ = first;
+  if (table_->rowCount() == 0) problems << tr("the test plan has no test points: add one or load a preset");
+  // Every problem, one a line, not only the first.
+  const QString all = problems.join("\n");
+  const bool changed = all != problem_;
+  problem_ = all;
   summary_->setText(problem_.isEmpty()
                         ? tr("%1 test point(s), %2 in all").arg(table_->rowCount()).arg(durationText(totalS))
-                        : tr("<span style='color:#b00000'>Cannot run: %1</span>").arg(problem_.toHtmlEscaped()));
+                        : tr("<span style='color:#b00000'>Cannot run: %1</span>")
+                              .arg(problem_.toHtmlEscaped().replace("\n", "<br>")));
   removeButton_->setEnabled(table_->rowCount() > 0);
   emit planChanged();
   if (changed) emit validityChanged(problem_.isEmpty(), problem_);

@@ -33,7 +33,7 @@ class PlanEditor : public QWidget {
   // The plan as edited (also when invalid).
   TestPlan plan() const;
   bool isValid() const { return problem_.isEmpty(); }
-  // Empty when valid; otherwise the first problem, "test point 2: ...".
+  // Empty when valid; otherwise every problem, one a line ("test point 2: ...").
   QString problem() const { return problem_; }
   // Loads the preset called `name` (see benchPresets()); false if unknown.
   bool loadPreset(const QString& name);

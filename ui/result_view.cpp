@@ -1,6 +1,11 @@
 #include "ui/result_view.h"
 
 #include <QComboBox>
+#include <QDateTime>
+#include <QDir>
+#include <QFileInfo>
+#include <QRegularExpression>
+#include <QStandardPaths>
 #include <QFileDialog>
 #include <QFontDatabase>
 #include <QFontInfo>
@@ -71,6 +76,7 @@ QTableWidget* makeTable(const QStringList& headers) {
 void setRow(QTableWidget* t, int row, const QStringList& cells, bool bold = false) {
   for (int c = 0; c < cells.size(); ++c) {
     auto* item = new QTableWidgetItem(cells[c]);
+    item->setToolTip(cells[c]);  // whole, when a narrow column cuts it
     // Numbers (and ranges of them) right-aligned, words left.
     bool number = false;
     cells[c].section(' ', 0, 0).toDouble(&number);
@@ -92,13 +98,20 @@ ResultView::ResultView(QWidget* parent) : QWidget(parent) {
   row->addWidget(new QLabel(tr("Test point")));
   testPointCombo_ = new QComboBox();
   testPointCombo_->setObjectName("testPointCombo");
-  testPointCombo_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
-  row->addWidget(testPointCombo_);
+  testPointCombo_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+  testPointCombo_->setMinimumContentsLength(8);
+  // Grows to show the whole label when there is room, shrinks in Compare.
+  testPointCombo_->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
+  testPointCombo_->setMaximumWidth(320);
+  row->addWidget(testPointCombo_, 1);
   lagLabel_ = new QLabel();
   lagLabel_->setObjectName("lagLabel");
   lagLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
-  row->addSpacing(12);
-  row->addWidget(lagLabel_, 1);
+  // Wraps on a narrow window (a laptop, the Compare window) instead of
+  // widening it.
+  lagLabel_->setWordWrap(true);
+  lagLabel_->setMinimumWidth(120);  // (Qt 5 asks a wrapping label for much more)
+  row->addStretch(1);
   diagnoseButton_ = new QPushButton(tr("Diagnose"));
   diagnoseButton_->setObjectName("diagnoseButton");
   diagnoseButton_->setToolTip(tr("Compare with the simulator replaying this session: where the gap lies and which "
@@ -111,6 +124,9 @@ ResultView::ResultView(QWidget* parent) : QWidget(parent) {
   exportButton_->setPopupMode(QToolButton::InstantPopup);
   row->addWidget(exportButton_);
   layout->addLayout(row);
+  // The lag on a line of its own: the row above stays narrow enough for the
+  // Compare window's two columns.
+  layout->addWidget(lagLabel_);
   // The core's verdict on the shown test point (analysis/verdict.h), with
   // its reasons in full: an invalid delay is never shown without them.
   verdictLabel_ = new QLabel();
@@ -124,6 +140,10 @@ ResultView::ResultView(QWidget* parent) : QWidget(parent) {
   anglePlot_->setObjectName("anglePlot");
   residualPlot_ = new SeriesPlot(tr("Residuals (data − fit)"), tr("residual (arcsec)"));
   residualPlot_->setObjectName("residualPlot");
+  // Explicit minimum sizes below the plots' own hints: the view fits a
+  // laptop screen and the Compare window's two columns fit side by side.
+  for (QwtPlot* plot : {static_cast<QwtPlot*>(anglePlot_), static_cast<QwtPlot*>(residualPlot_)})
+    plot->setMinimumSize(200, 130);
   auto* left = new QSplitter(Qt::Vertical);
   left->addWidget(anglePlot_);
   left->addWidget(residualPlot_);
@@ -133,11 +153,15 @@ ResultView::ResultView(QWidget* parent) : QWidget(parent) {
   fitTable_->setObjectName("fitTable");
   delayTable_ = makeTable({tr("delay"), tr("value (ms)"), tr("1σ (ms)"), tr("theory (ms)"), tr("basis")});
   delayTable_->setObjectName("delayTable");
+  for (QTableWidget* t : {fitTable_, delayTable_}) t->setMinimumSize(150, 80);
   buildFrequencyPlot();
   auto* right = new QSplitter(Qt::Vertical);
   right->addWidget(fitTable_);
   right->addWidget(delayTable_);
   right->addWidget(frequencyPlot_);
+  // The tables keep what they need; the plot takes the rest.
+  right->setStretchFactor(0, 0);
+  right->setStretchFactor(1, 0);
   right->setStretchFactor(2, 1);
 
   reportView_ = new QPlainTextEdit();
@@ -169,11 +193,11 @@ ResultView::ResultView(QWidget* parent) : QWidget(parent) {
   auto* menu = new QMenu(exportButton_);
   auto addPlotExport = [this, menu](const QString& label, QwtPlot* plot) {
     menu->addAction(label, this, [this, plot] {
-      const QString path =
-          QFileDialog::getSaveFileName(this, tr("Export plot"), plot->objectName() + ".png", plotExportFilter());
+      const QString path = QFileDialog::getSaveFileName(this, tr("Export plot"),
+                                                        defaultExportPath(plot->objectName(), "png"), plotExportFilter());
       if (path.isEmpty()) return;
-      if (auto s = exportPlot(plot, path); !s.isOk())
-        QMessageBox::warning(this, tr("Export plot"), QString::fromStdString(s.message()));
+      if (auto s = exportPlotTo(plot, path); !s.isOk())
+        emit exportFailed(tr("Export plot"), QString::fromStdString(s.message()));
     });
   };
   addPlotExport(tr("Angles plot…"), anglePlot_);
@@ -187,12 +211,15 @@ ResultView::ResultView(QWidget* parent) : QWidget(parent) {
                                                  tr("Pass when IMU delay + 2σ is below (ms):"), 0.8, 0.001, 100.0, 3,
                                                  &ok);
     if (!ok) return;
-    const QString path = QFileDialog::getSaveFileName(this, tr("Calibration report"), "calibration-report.pdf",
+    const QString path = QFileDialog::getSaveFileName(this, tr("Calibration report"),
+                                                      defaultExportPath("calibration-report", "pdf"),
                                                       tr("PDF document (*.pdf)"));
     if (path.isEmpty()) return;
-    if (auto s = writeReportPdf(path, limit); !s.isOk())
-      QMessageBox::warning(this, tr("Calibration report"), QString::fromStdString(s.message()));
+    if (auto s = exportReportTo(path, limit); !s.isOk())
+      emit exportFailed(tr("Calibration report"), QString::fromStdString(s.message()));
   });
+  menu->addSeparator();
+  menu->addAction(tr("Open the export folder"), this, &ResultView::openExportFolderRequested);
   exportButton_->setMenu(menu);
   clear();
 }
@@ -205,7 +232,7 @@ void ResultView::buildFrequencyPlot() {
   frequencyPlot_->setAxisTitle(QwtPlot::yLeft, tr("lag (ms), ±1σ"));
   frequencyPlot_->setCanvasBackground(Qt::white);
   frequencyPlot_->insertLegend(new QwtLegend(), QwtPlot::BottomLegend);
-  frequencyPlot_->setMinimumHeight(200);
+  frequencyPlot_->setMinimumSize(200, 170);
 }
 
 void ResultView::clear() {
@@ -391,6 +418,37 @@ void ResultView::showFrequencyPlot() {
   }
   frequencyPlot_->setAxisAutoScale(QwtPlot::yLeft, true);
   frequencyPlot_->replot();
+}
+
+Status ResultView::exportPlotTo(QwtPlot* plot, const QString& path) {
+  FOG_RETURN_IF_ERROR(exportPlot(plot, path));
+  emit exported(path);
+  return Status::ok();
+}
+
+Status ResultView::exportReportTo(const QString& path, double imuDelayLimitMs) {
+  FOG_RETURN_IF_ERROR(writeReportPdf(path, imuDelayLimitMs));
+  emit exported(path);
+  return Status::ok();
+}
+
+QString ResultView::defaultExportPath(const QString& what, const QString& suffix) const {
+  QString folder = exportFolder_;
+  QString name = what;
+  QDateTime when = QDateTime::currentDateTimeUtc();
+  if (outcome_) {
+    if (!outcome_->sessionPath.empty())
+      folder = QFileInfo(QString::fromStdString(outcome_->sessionPath)).absolutePath();
+    QString serial = QString::fromStdString(outcome_->info.imuSerial).trimmed();
+    // Only characters every file system takes.
+    serial.replace(QRegularExpression("[^A-Za-z0-9._-]+"), "_");
+    if (!serial.isEmpty()) name += "-" + serial;
+    const QDateTime recorded = QDateTime::fromString(QString::fromStdString(outcome_->info.createdUtc), Qt::ISODate);
+    if (recorded.isValid()) when = recorded.toUTC();
+  }
+  if (folder.isEmpty()) folder = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+  name += "-" + when.toString("yyyyMMdd-HHmmss") + "." + suffix;
+  return QDir(folder).filePath(name);
 }
 
 Status ResultView::writeReportPdf(const QString& path, double imuDelayLimitMs) const {

@@ -46,10 +46,28 @@ class ResultView : public QWidget {
 
   // Writes the calibration report of what is shown (see ui/report).
   Status writeReportPdf(const QString& path, double imuDelayLimitMs) const;
+  // The export menu's work without its file dialogs: writes and, when it
+  // worked, emits exported().
+  Status exportPlotTo(QwtPlot* plot, const QString& path);
+  Status exportReportTo(const QString& path, double imuDelayLimitMs);
+
+  // Where an export goes unless the operator picks another place: the
+  // folder of the shown session (else the fallback folder), named with what
+  // it is, the IMU serial and the recording date, e.g.
+  // calibration-report-SN-77-20240102-103000.pdf.
+  QString defaultExportPath(const QString& what, const QString& suffix) const;
+  // The folder for results that were not recorded into a session.
+  void setExportFolder(const QString& folder) { exportFolder_ = folder; }
 
  signals:
   // The operator asked for the sim-to-real diagnosis of what is shown.
   void diagnoseRequested();
+  // An export wrote `path`.
+  void exported(const QString& path);
+  // An export failed; `why` says what to do.
+  void exportFailed(const QString& title, const QString& why);
+  // The export menu's "Open the export folder".
+  void openExportFolderRequested();
 
  private:
   void buildFrequencyPlot();
@@ -57,6 +75,7 @@ class ResultView : public QWidget {
   void fillTables(std::size_t i);
 
   std::shared_ptr<const RunOutcome> outcome_;
+  QString exportFolder_;
   QComboBox* testPointCombo_ = nullptr;
   QLabel* lagLabel_ = nullptr;
   QLabel* verdictLabel_ = nullptr;

@@ -12,6 +12,7 @@
 
 #include "session/session_list.h"
 #include "ui/language.h"
+#include "ui/messages.h"
 
 namespace fog::ui {
 
@@ -45,8 +46,15 @@ SessionBrowser::SessionBrowser(QWidget* parent) : QWidget(parent) {
   table_->setObjectName("sessionTable");
   table_->setHorizontalHeaderLabels({tr("File"), tr("Recorded (UTC)"), tr("Operator"), tr("IMU"), tr("Axes"),
                                      tr("State"), tr("Lag (ms)"), tr("IMU delay (ms)")});
+  // The state (a damaged file's reason can be long) takes the room that is
+  // left and is elided; its whole text is in the tooltip. The delays stay
+  // in view.
   table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-  table_->horizontalHeader()->setStretchLastSection(true);
+  table_->horizontalHeader()->setSectionResizeMode(kState, QHeaderView::Stretch);
+  table_->horizontalHeader()->setStretchLastSection(false);
+  table_->horizontalHeader()->setMinimumSectionSize(60);
+  table_->setWordWrap(false);
+  table_->setTextElideMode(Qt::ElideRight);
   table_->verticalHeader()->setVisible(false);
   table_->setSelectionBehavior(QAbstractItemView::SelectRows);
   table_->setSelectionMode(QAbstractItemView::ExtendedSelection);
@@ -67,10 +75,11 @@ SessionBrowser::SessionBrowser(QWidget* parent) : QWidget(parent) {
   importButton_->setToolTip(tr("Data from another bench (metadata.json, table.csv, gyro.csv) becomes a session here"));
   summary_ = new QLabel();
   summary_->setObjectName("sessionSummary");
+  summary_->setWordWrap(true);
   for (auto* b : {openButton_, reanalyseButton_, compareButton_, importButton_}) buttons->addWidget(b);
   buttons->addStretch(1);
-  buttons->addWidget(summary_);
   layout->addLayout(buttons);
+  layout->addWidget(summary_);
 
   connect(choose, &QPushButton::clicked, this, [this] {
     const QString dir = QFileDialog::getExistingDirectory(this, tr("Session folder"), folder());
@@ -126,6 +135,7 @@ void SessionBrowser::refresh() {
     updateButtons();
     return;
   }
+  int unreadable = 0;
   for (const auto& s : listing->sessions) {
     const int row = table_->rowCount();
     table_->insertRow(row);
@@ -137,7 +147,8 @@ void SessionBrowser::refresh() {
     set(kFile, QString::fromStdString(s.fileName));
     table_->item(row, kFile)->setData(Qt::UserRole, QString::fromStdString(s.path));
     if (!s.error.empty()) {
-      set(kState, tr("unreadable: %1").arg(QString::fromStdString(s.error)));
+      ++unreadable;
+      set(kState, tr("unreadable: %1").arg(displayUnits(QString::fromStdString(s.error))));
       table_->item(row, kState)->setForeground(QColor(190, 0, 0));
       continue;
     }
@@ -152,8 +163,10 @@ void SessionBrowser::refresh() {
     set(kLag, joinMs(s.lagMs));
     set(kImuDelay, joinMs(s.imuDelayMs));
   }
-  summary_->setText(tr("%n session(s)", nullptr, static_cast<int>(listing->sessions.size())) + "; " +
-                    tr("%n other file(s) skipped", nullptr, listing->skippedFiles));
+  const int sessions = static_cast<int>(listing->sessions.size()) - unreadable;
+  QString summary = tr("%n session(s)", nullptr, sessions);
+  if (unreadable > 0) summary += "; " + tr("%n unreadable (the reason is in the State column)", nullptr, unreadable);
+  summary_->setText(summary + "; " + tr("%n other file(s) skipped", nullptr, listing->skippedFiles));
   updateButtons();
 }
 

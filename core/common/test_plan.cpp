@@ -1,5 +1,6 @@
 #include "common/test_plan.h"
 
+#include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -57,6 +58,10 @@ std::string num(double v) {
 }  // namespace
 
 Status TestPoint::validate(const TurntableLimits& limits) const {
+  for (int a = 0; a < kAxisCount; ++a)
+    if (!std::isfinite(positionDeg[a]) || std::abs(positionDeg[a]) > kMaxPositionDeg)
+      return invalidArgument(std::string("table position of axis ") + axisLabel(static_cast<Axis>(a)) + " must be within +-" +
+                             num(kMaxPositionDeg) + " deg, got " + num(positionDeg[a]));
   if (isStatic()) {
     if (frequencyHz != 0.0 || amplitudeDeg != 0.0 || startPhaseDeg != 0.0)
       return invalidArgument("a static segment has no frequency, amplitude or start phase (got " + num(frequencyHz) +
@@ -111,11 +116,55 @@ Status TestPlan::validate(const TurntableLimits& limits) const {
     if (Status s = points[i].validate(limits); !s.isOk())
       return invalidArgument("test point " + std::to_string(i + 1) + ": " + s.message());
   }
+  // Moves between points: each axis that changes moves in its share of the
+  // rest with a raised-cosine profile, peak rate pi/2 * d / T and peak
+  // acceleration pi^2/2 * d / T^2.
+  for (std::size_t i = 0; i <= points.size(); ++i) {
+    const auto from = i == 0 ? std::array<double, kAxisCount>{} : endAnglesDeg(i - 1);
+    const auto to = startAnglesDeg(i);
+    int moving = 0;
+    double largest = 0.0;
+    for (int a = 0; a < kAxisCount; ++a)
+      if (to[a] != from[a]) ++moving, largest = std::max(largest, std::abs(to[a] - from[a]));
+    if (moving == 0) continue;
+    const std::string where = i == points.size() ? std::string("the return to zero after the last point")
+                                                 : "the move to test point " + std::to_string(i + 1);
+    if (restBetweenS <= 0.0)
+      return invalidArgument(where + " turns the table by " + num(largest) +
+                             " deg with no rest time to move in; give rest_between_s > 0");
+    const double t = restBetweenS / moving;
+    const double rate = kPi / 2.0 * largest / t, accel = kPi * kPi / 2.0 * largest / (t * t);
+    if (rate > limits.maxRateDegPerS || accel > limits.maxAccelDegPerS2) {
+      const double need = moving * std::max(kPi / 2.0 * largest / limits.maxRateDegPerS,
+                                            std::sqrt(kPi * kPi / 2.0 * largest / limits.maxAccelDegPerS2));
+      return invalidArgument(where + " (" + num(largest) + " deg in " + num(t) + " s) exceeds the table's rate or " +
+                             "acceleration limit; give rest_between_s >= " + num(std::ceil(need * 10.0) / 10.0) + " s");
+    }
+  }
   if (totalDurationS() > kMaxPlanDurationS)
     return invalidArgument("the test plan lasts " + num(totalDurationS() / 3600.0) + " h in all; at most " +
                            num(kMaxPlanDurationS / 3600.0) + " h (every sample is held in memory): split it into "
                            "several sessions");
   return Status::ok();
+}
+
+std::array<double, kAxisCount> TestPlan::startAnglesDeg(std::size_t index) const {
+  if (index >= points.size()) return {};
+  const TestPoint& p = points[index];
+  auto angles = p.positionDeg;
+  if (!p.isStatic()) angles[static_cast<int>(p.axis)] += p.amplitudeDeg * std::sin(p.startPhaseDeg * kRadPerDeg);
+  return angles;
+}
+
+std::array<double, kAxisCount> TestPlan::endAnglesDeg(std::size_t index) const {
+  const TestPoint& p = points[index];
+  auto angles = p.positionDeg;
+  if (!p.isStatic()) {
+    const double t = p.settleS + p.durationS;
+    angles[static_cast<int>(p.axis)] +=
+        p.amplitudeDeg * std::sin(kTwoPi * p.frequencyHz * t + p.startPhaseDeg * kRadPerDeg);
+  }
+  return angles;
 }
 
 double TestPlan::totalDurationS() const {
@@ -209,6 +258,15 @@ Result<TestPlan> testPlanFromJson(std::string_view text) {
         point.axis = *axis;
         continue;
       }
+      if (key == "position_deg") {
+        if (!it->is_array() || it->size() != kAxisCount)
+          return invalidArgument(where + "\"position_deg\" must be [x, y, z] in degrees");
+        for (int a = 0; a < kAxisCount; ++a) {
+          if (!(*it)[a].is_number()) return invalidArgument(where + "\"position_deg\" must hold three numbers");
+          point.positionDeg[a] = (*it)[a].get<double>();
+        }
+        continue;
+      }
       if (!it->is_number()) return invalidArgument(where + "\"" + key + "\" must be a number");
       const double v = it->get<double>();
       if (key == "frequency_hz") {
@@ -242,19 +300,14 @@ std::string testPlanToJson(const TestPlan& plan) {
   doc["rest_between_s"] = plan.restBetweenS;
   doc["points"] = nlohmann::json::array();
   for (const auto& p : plan.points) {
-    if (p.isStatic()) {
-      doc["points"].push_back({{"kind", "static"},
-                               {"axis", axisName(p.axis)},
-                               {"duration_s", p.durationS},
-                               {"settle_s", p.settleS}});
-      continue;
-    }
-    doc["points"].push_back({{"axis", axisName(p.axis)},
-                             {"frequency_hz", p.frequencyHz},
-                             {"amplitude_deg", p.amplitudeDeg},
-                             {"duration_s", p.durationS},
-                             {"settle_s", p.settleS},
-                             {"start_phase_deg", p.startPhaseDeg}});
+    nlohmann::json point;
+    if (p.isStatic())
+      point = {{"kind", "static"}, {"axis", axisName(p.axis)}, {"duration_s", p.durationS}, {"settle_s", p.settleS}};
+    else
+      point = {{"axis", axisName(p.axis)},       {"frequency_hz", p.frequencyHz}, {"amplitude_deg", p.amplitudeDeg},
+               {"duration_s", p.durationS},      {"settle_s", p.settleS},         {"start_phase_deg", p.startPhaseDeg}};
+    if (p.positionDeg != std::array<double, kAxisCount>{}) point["position_deg"] = p.positionDeg;
+    doc["points"].push_back(std::move(point));
   }
   return doc.dump(2);
 }

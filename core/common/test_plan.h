@@ -33,9 +33,13 @@ struct TurntableLimits {
 enum class TestPointKind { kSwing = 0, kStatic = 1 };
 const char* testPointKindName(TestPointKind kind);  // "swing", "static"
 
-// One sinusoidal swing: angle = amplitude * sin(2*pi*f*(t - t_start) + startPhase);
-// or, with kind == kStatic, the table at rest for settleS + durationS
-// (frequency and amplitude 0; `axis` names the gyro of interest).
+// One sinusoidal swing of one axis about its position:
+//   angle = position[axis] + amplitude * sin(2*pi*f*(t - t_start) + startPhase),
+// the other axes holding their positions; or, with kind == kStatic, the table
+// at rest at its position for settleS + durationS (frequency and amplitude 0;
+// `axis` names the gyro of interest). Between points the table moves to the
+// next point's position during the rest (TestPlan::restBetweenS), one axis
+// after the other; after the last point it returns to zero.
 struct TestPoint {
   Axis axis = Axis::kX;
   double frequencyHz = 0.1;
@@ -43,7 +47,10 @@ struct TestPoint {
   double durationS = 294.0;  // recorded time after settling
   double settleS = 5.0;      // swing time before recording starts
   double startPhaseDeg = 0.0;
-  TestPointKind kind = TestPointKind::kSwing;  // last, so positional initialisers stay valid
+  TestPointKind kind = TestPointKind::kSwing;  // after the scalars, so positional initialisers stay valid
+  // Table angle of each axis for this point, deg (indexed by Axis): the swing
+  // axis swings about its entry, the others hold theirs. Default: all zero.
+  std::array<double, kAxisCount> positionDeg{};
 
   bool isStatic() const { return kind == TestPointKind::kStatic; }
   // 0 for a static segment.
@@ -54,6 +61,9 @@ struct TestPoint {
   Status validate(const TurntableLimits& limits) const;
 };
 
+// Largest table position, deg: the table's axes turn a full circle at most.
+inline constexpr double kMaxPositionDeg = 360.0;
+
 // Bounds of a plan (issue 15): every sample of a run is held in memory, so a
 // plan is at most this long in total and has at most this many points.
 inline constexpr std::size_t kMaxPlanPoints = 1000;
@@ -63,8 +73,15 @@ struct TestPlan {
   std::vector<TestPoint> points;
   double restBetweenS = 1.0;  // table at rest between test points
 
-  // Ok, or the first problem ("test point 3: ...") and what to do.
+  // Ok, or the first problem ("test point 3: ...") and what to do. Also
+  // checks the moves between points against the limits (each axis moves in
+  // restBetweenS / (number of axes that move), with a raised-cosine profile).
   Status validate(const TurntableLimits& limits) const;
+  // Where the table starts point `index`: its position, with the swing axis
+  // at position + amplitude * sin(startPhase) (index == points.size(): zero).
+  std::array<double, kAxisCount> startAnglesDeg(std::size_t index) const;
+  // Where the table is when point `index` ends (its swing axis mid-swing).
+  std::array<double, kAxisCount> endAnglesDeg(std::size_t index) const;
   double totalDurationS() const;
 
   // The paper's two conditions on the X axis: 0.1 Hz / 10 deg for 4.9 min and
@@ -74,7 +91,8 @@ struct TestPlan {
 };
 
 // JSON plan file: {"points":[{"axis":"x","frequency_hz":0.1,"amplitude_deg":10,
-// "duration_s":294,"settle_s":5}], "rest_between_s":1}. Unknown keys are
+// "duration_s":294,"settle_s":5,"position_deg":[0,0,30]}], "rest_between_s":1}
+// ("position_deg" optional, written only when not zero). Unknown keys are
 // refused so that a typo is not silently ignored. A static segment is
 // {"kind":"static","axis":"x","duration_s":600}; "kind" defaults to "swing"
 // and is written only for static segments, so swing plans read and write as

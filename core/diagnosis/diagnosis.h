@@ -68,7 +68,11 @@ struct Calibration {
   double tableFrequencyErrorPpm = 0.0;
   double encoderNoiseDeg = 0.0;
   double arwDegPerSqrtH = 0.0;
-  std::array<double, kAxisCount> biasDegPerH{};
+  std::array<double, kAxisCount> biasDegPerH{};  // at the calibrated heading
+  // The table's heading as the Earth rate in the gyros shows it (sessions do
+  // not state it), with its standard error.
+  double headingDeg = 0.0;
+  double headingStdDeg = 0.0;
 };
 
 // One cell of the gap map: a feature of the real session against the replay.

@@ -19,7 +19,7 @@ using Angles = std::array<double, kAxisCount>;
 class RateErrorEffect : public model::Effect {
  public:
   void onGyroAngle(const model::GyroContext& c, Angles& sensed) override {
-    const Angles rate = rateErrorDegPerS(c.timeS, c.tableAngleDeg);
+    const Angles rate = rateErrorDegPerS(c);
     if (started_) {
       const double dt = c.timeS - lastS_;
       for (int a = 0; a < kAxisCount; ++a) accumulated_[a] += 0.5 * (rate[a] + lastRate_[a]) * dt;
@@ -31,7 +31,7 @@ class RateErrorEffect : public model::Effect {
   }
 
  protected:
-  virtual Angles rateErrorDegPerS(double timeS, const Angles& tableDeg) = 0;
+  virtual Angles rateErrorDegPerS(const model::GyroContext& c) = 0;
 
  private:
   bool started_ = false;
@@ -47,7 +47,8 @@ class BiasDrift final : public RateErrorEffect {
   std::string name() const override { return "bias_drift"; }
 
  protected:
-  Angles rateErrorDegPerS(double t, const Angles&) override {
+  Angles rateErrorDegPerS(const model::GyroContext& c) override {
+    const double t = c.timeS;
     if (!haveStart_) t0_ = t, haveStart_ = true;
     const double r = degPerHourToDegPerS(d_ * (t - t0_) / 60.0);
     return {r, r, r};
@@ -58,26 +59,27 @@ class BiasDrift final : public RateErrorEffect {
   bool haveStart_ = false;
 };
 
-// Gyro rate error k * g * sin(tilt) of the horizontal axes X and Y: a gyro
-// whose bias depends on the specific force across it sees the gravity
-// component that its own axis' rotation tilts into the cross direction.
-// Rotation about the vertical (Z) does not change gravity: no effect there.
+// g-sensitive bias: each gyro's rate error is k times the specific force
+// along its own axis (deg/h per g). Swinging a horizontal axis tilts gravity
+// into the other horizontal gyro (k g sin(angle), in phase with the angle)
+// and out of the vertical one (k g cos(angle): a second harmonic).
 class GSensitivity final : public RateErrorEffect {
  public:
   explicit GSensitivity(double degPerHPerG) : k_(degPerHPerG) {}
   std::string name() const override { return "g_sensitivity"; }
 
  protected:
-  Angles rateErrorDegPerS(double, const Angles& table) override {
-    return {degPerHourToDegPerS(k_ * std::sin(table[0] * kRadPerDeg)),
-            degPerHourToDegPerS(k_ * std::sin(table[1] * kRadPerDeg)), 0.0};
+  Angles rateErrorDegPerS(const model::GyroContext& c) override {
+    Angles r{};
+    for (int a = 0; a < kAxisCount; ++a) r[a] = degPerHourToDegPerS(k_ * c.specificForceG[a]);
+    return r;
   }
 
  private:
   double k_;
 };
 
-// Errors that depend on the increments of the true table angle between two
+// Errors that depend on the increments of the body's rotation between two
 // gyro samples: asymmetry (|dtheta|) and cubic nonlinearity (dtheta * rate^2).
 class IncrementEffect : public model::Effect {
  public:
@@ -85,11 +87,11 @@ class IncrementEffect : public model::Effect {
     if (started_) {
       const double dt = c.timeS - lastS_;
       for (int a = 0; a < kAxisCount; ++a)
-        if (dt > 0.0) accumulated_[a] += error(c.tableAngleDeg[a] - last_[a], dt);
+        if (dt > 0.0) accumulated_[a] += error(c.bodyAngleDeg[a] - last_[a], dt);
     }
     started_ = true;
     lastS_ = c.timeS;
-    last_ = c.tableAngleDeg;
+    last_ = c.bodyAngleDeg;
     for (int a = 0; a < kAxisCount; ++a) sensed[a] += accumulated_[a];
   }
 
@@ -137,52 +139,82 @@ class ScaleFactorError final : public model::Effect {
   explicit ScaleFactorError(double ppm) : k_(ppm * 1e-6) {}
   std::string name() const override { return "scale_factor_error"; }
   void onGyroAngle(const model::GyroContext& c, Angles& sensed) override {
-    for (int a = 0; a < kAxisCount; ++a) sensed[a] += k_ * c.tableAngleDeg[a];
+    for (int a = 0; a < kAxisCount; ++a) sensed[a] += k_ * c.bodyAngleDeg[a];
   }
 
  private:
   double k_;
 };
 
-// Every gyro senses m times the rotation of each other axis (small-angle
-// misalignment, the same for every pair).
+// Misalignment and non-orthogonality of the gyro triad: gyro i senses
+// m_ij times the rotation about body axis j (i != j; six small angles, rad).
+// The rates are constant linear maps, so the sensed angles are too.
 class Misalignment final : public model::Effect {
  public:
-  explicit Misalignment(double microRad) : m_(microRad * 1e-6) {}
+  explicit Misalignment(const std::array<double, 6>& microRad) {
+    // m_xy, m_xz, m_yx, m_yz, m_zx, m_zy
+    int k = 0;
+    for (int i = 0; i < kAxisCount; ++i)
+      for (int j = 0; j < kAxisCount; ++j)
+        if (i != j) m_[i][j] = microRad[static_cast<std::size_t>(k++)] * 1e-6;
+  }
   std::string name() const override { return "misalignment"; }
   void onGyroAngle(const model::GyroContext& c, Angles& sensed) override {
-    const Angles& t = c.tableAngleDeg;
-    const double sum = t[0] + t[1] + t[2];
-    for (int b = 0; b < kAxisCount; ++b) sensed[b] += m_ * (sum - t[b]);
+    for (int i = 0; i < kAxisCount; ++i)
+      for (int j = 0; j < kAxisCount; ++j) sensed[i] += m_[i][j] * c.bodyAngleDeg[j];
   }
 
  private:
-  double m_;
+  std::array<std::array<double, kAxisCount>, kAxisCount> m_{};
 };
 
-// y += (1 - exp(-dt/tau)) * (x - y) at every gyro sample: the gyro output is
-// a first-order low-pass of the sensed angle.
+// The gyro output is a first-order low-pass of time constant tau of the
+// sensed rate, a continuous-time filter: y' = (x - y) / tau on the sensed
+// angle (filtering the angle and the rate are the same LTI operation). The
+// simulator gives the angle every 2 ms; between samples it is taken as the
+// quadratic through the last three, and the filter is solved exactly for
+// it: y(t1) = p(t1) + exp(-h/tau) (y(t0) - p(t0)) with the particular
+// solution p = x - tau x' + tau^2 x''. The delay at low frequency is tau.
 class FirstOrderLag final : public model::Effect {
  public:
   explicit FirstOrderLag(double tauMs) : tau_(tauMs * 1e-3) {}
   std::string name() const override { return "first_order_lag"; }
   void onGyroAngle(const model::GyroContext& c, Angles& sensed) override {
     if (tau_ <= 0.0) return;
-    if (!started_) {
-      state_ = sensed;
-      started_ = true;
+    const double t = c.timeS;
+    if (samples_ == 0 || !(t > t1_)) {
+      if (samples_ == 0) y_ = sensed;  // at rest before the first sample
+      samples_ = 1, t1_ = t, x1_ = sensed;
+      sensed = y_;
+      return;
     }
-    const double k = 1.0 - std::exp(-(c.timeS - lastS_) / tau_);
-    for (int a = 0; a < kAxisCount; ++a) state_[a] += k * (sensed[a] - state_[a]);
-    lastS_ = c.timeS;
-    sensed = state_;
+    const double h = t - t1_;
+    const double a = std::exp(-h / tau_);
+    for (int i = 0; i < kAxisCount; ++i) {
+      // x(s) = x1 + b s + q s^2 on s in [0, h], through the samples at
+      // t0 (when there is one), t1 and t.
+      double q = 0.0;
+      if (samples_ >= 2) {
+        const double g = t1_ - t0_;
+        const double d1 = (sensed[i] - x1_[i]) / h, d0 = (x1_[i] - x0_[i]) / g;
+        q = (d1 - d0) / (h + g);
+      }
+      const double b = (sensed[i] - x1_[i]) / h - q * h;
+      const double pStart = x1_[i] - tau_ * b + 2.0 * q * tau_ * tau_;
+      const double pEnd = sensed[i] - tau_ * (b + 2.0 * q * h) + 2.0 * q * tau_ * tau_;
+      y_[i] = pEnd + a * (y_[i] - pStart);
+    }
+    t0_ = t1_, x0_ = x1_;
+    t1_ = t, x1_ = sensed;
+    samples_ = std::min(samples_ + 1, 2);
+    sensed = y_;
   }
 
  private:
   double tau_;
-  double lastS_ = 0.0;
-  bool started_ = false;
-  Angles state_{};
+  int samples_ = 0;
+  double t0_ = 0.0, t1_ = 0.0;
+  Angles x0_{}, x1_{}, y_{};
 };
 
 // The table's motion itself is distorted, as a pure function of the angle
@@ -278,30 +310,32 @@ class DroppedFrames final : public model::Effect {
 };
 
 // The Earth rate the IMU really senses, for a latitude and heading off the
-// nominal ones by dLat and dHeading (rotation about up): the difference to
-// the nominal projection is a constant rate per axis.
-class EarthRateProjection final : public model::Effect {
+// nominal ones by dLat and dHeading (the table turned further about down):
+// the difference to the nominal Earth rate, rotated into the body frame at
+// every sample.
+class EarthRateProjection final : public RateErrorEffect {
  public:
   EarthRateProjection(double dLatDeg, double dHeadingDeg, const model::EarthParams& nominal) {
     model::EarthParams actual = nominal;
     actual.latitudeDeg = std::clamp(nominal.latitudeDeg + dLatDeg, -90.0, 90.0);
+    const auto n = nominal.rateLocalDegPerH(), w = actual.rateLocalDegPerH();
+    // In the local frame as the nominal attitude has it: R_z(dh)^T w - n.
     const double h = dHeadingDeg * kRadPerDeg;
-    for (auto& v : actual.axisEnu) {
-      const double e = v[0], n = v[1];
-      v[0] = std::cos(h) * e + std::sin(h) * n;
-      v[1] = -std::sin(h) * e + std::cos(h) * n;
-    }
-    for (int a = 0; a < kAxisCount; ++a)
-      rate_[a] = degPerHourToDegPerS(actual.projectionDegPerH(static_cast<Axis>(a)) -
-                                     nominal.projectionDegPerH(static_cast<Axis>(a)));
+    diff_ = {std::cos(h) * w[0] + std::sin(h) * w[1] - n[0], -std::sin(h) * w[0] + std::cos(h) * w[1] - n[1],
+             w[2] - n[2]};
   }
   std::string name() const override { return "earth_rate_projection"; }
-  void onGyroAngle(const model::GyroContext& c, Angles& sensed) override {
-    for (int a = 0; a < kAxisCount; ++a) sensed[a] += rate_[a] * c.timeS;
+
+ protected:
+  Angles rateErrorDegPerS(const model::GyroContext& c) override {
+    Angles r{};
+    for (int i = 0; i < kAxisCount; ++i)
+      for (int k = 0; k < kAxisCount; ++k) r[i] += c.bodyToLocal[k][i] * degPerHourToDegPerS(diff_[k]);
+    return r;
   }
 
  private:
-  Angles rate_{};
+  Angles diff_{};
 };
 
 // Reference magnitudes: the linear signature is (replay at +reference -
@@ -325,9 +359,10 @@ std::vector<EffectSpec> buildLibrary() {
        {{"asymmetry", "ppm", 1000.0}}},
       {E::kScaleFactorNonlinearity, "scale_factor_nonlinearity", "cubic scale-factor nonlinearity (error at 100 deg/s)",
        {{"nonlinearity", "ppm at 100 deg/s", 20000.0}}},
-      {E::kMisalignment, "misalignment", "cross-axis coupling of every axis into the others",
-       {{"coupling", "urad", 200.0}}},
-      {E::kGSensitivity, "g_sensitivity", "g-sensitive bias: rate error k*g*sin(tilt) on X and Y",
+      {E::kMisalignment, "misalignment", "gyro triad misalignment / non-orthogonality (gyro i senses m_ij of axis j)",
+       {{"m_xy", "urad", 200.0}, {"m_xz", "urad", 200.0}, {"m_yx", "urad", 200.0},
+        {"m_yz", "urad", 200.0}, {"m_zx", "urad", 200.0}, {"m_zy", "urad", 200.0}}},
+      {E::kGSensitivity, "g_sensitivity", "g-sensitive bias: each gyro's rate error k times the specific force along it",
        {{"g_sensitivity", "deg/h/g", 50.0}}},
       {E::kFirstOrderLag, "first_order_lag", "first-order low-pass of the gyro output", {{"time_constant", "ms", 2.0, false}},
        false},
@@ -366,7 +401,7 @@ std::unique_ptr<model::Effect> makeEffect(EffectId id, const std::vector<double>
     case EffectId::kScaleFactorError: return std::make_unique<ScaleFactorError>(p[0]);
     case EffectId::kScaleFactorAsymmetry: return std::make_unique<ScaleFactorAsymmetry>(p[0]);
     case EffectId::kScaleFactorNonlinearity: return std::make_unique<ScaleFactorNonlinearity>(p[0]);
-    case EffectId::kMisalignment: return std::make_unique<Misalignment>(p[0]);
+    case EffectId::kMisalignment: return std::make_unique<Misalignment>(std::array<double, 6>{p[0], p[1], p[2], p[3], p[4], p[5]});
     case EffectId::kGSensitivity: return std::make_unique<GSensitivity>(p[0]);
     case EffectId::kFirstOrderLag: return std::make_unique<FirstOrderLag>(p[0]);
     case EffectId::kTableHarmonicDistortion: return std::make_unique<TableHarmonicDistortion>(p[0], p[1]);

@@ -21,6 +21,15 @@ class Random;
 struct GyroContext {
   double timeS = 0.0;                              // instant the FOG sensed
   std::array<double, kAxisCount> tableAngleDeg{};  // true table angles then
+  // The body's rotation sensed by each gyro since the start of the run: the
+  // integral of the body rate from the table's motion alone (no Earth rate,
+  // bias or noise), deg. Equal to the table angle of the same axis (minus
+  // its start) when the IMU is mounted square and only that axis moves.
+  std::array<double, kAxisCount> bodyAngleDeg{};
+  // Specific force of gravity in the body frame at rest, in g (|f| = 1).
+  std::array<double, kAxisCount> specificForceG{};
+  // Attitude: body to local north-east-down, row-major (model/attitude.h).
+  std::array<std::array<double, kAxisCount>, kAxisCount> bodyToLocal{};
 };
 
 class Effect {

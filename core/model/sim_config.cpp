@@ -9,10 +9,20 @@ namespace fog::model {
 double FogParams::eigenPeriodS() const { return fibreLengthM * groupIndex / kSpeedOfLightMPerS; }
 double FogParams::loopDelayS() const { return loopDelayEigenPeriods * eigenPeriodS(); }
 
-double EarthParams::projectionDegPerH(Axis axis) const {
-  const auto& v = axisEnu[static_cast<int>(axis)];
+std::array<double, 3> EarthParams::rateLocalDegPerH() const {
   const double lat = latitudeDeg * kRadPerDeg;
-  return kEarthRateDegPerH * (std::cos(lat) * v[1] + std::sin(lat) * v[2]);
+  return {kEarthRateDegPerH * std::cos(lat), 0.0, -kEarthRateDegPerH * std::sin(lat)};
+}
+
+double EarthParams::projectionDegPerH(Axis axis) const {
+  const auto n = rateLocalDegPerH();
+  const double h = headingDeg * kRadPerDeg;
+  switch (axis) {
+    case Axis::kX: return n[0] * std::cos(h);
+    case Axis::kY: return -n[0] * std::sin(h);
+    case Axis::kZ: return n[2];
+  }
+  return 0.0;
 }
 
 namespace {
@@ -40,6 +50,16 @@ Status SimConfig::validate() const {
   if (!positive(fog.biasCorrelationS)) return invalidArgument("bias correlation time must be > 0 s");
   if (!std::isfinite(earth.latitudeDeg) || std::abs(earth.latitudeDeg) > 90.0)
     return invalidArgument("latitude must be within [-90, 90] deg");
+  if (!std::isfinite(earth.headingDeg) || std::abs(earth.headingDeg) > 360.0)
+    return invalidArgument("heading must be within [-360, 360] deg");
+  {
+    const auto& o = turntable.axisOrder;
+    if (o[0] == o[1] || o[1] == o[2] || o[0] == o[2])
+      return invalidArgument("the table's axis order must name x, y and z once each (outer to inner)");
+  }
+  for (double m : turntable.mountingDeg)
+    if (!std::isfinite(m) || std::abs(m) > 360.0)
+      return invalidArgument("IMU mounting angles must be within [-360, 360] deg");
   if (!positive(imuBoard.framePeriodS)) return invalidArgument("IMU frame period must be > 0 s");
   if (!nonNegative(imuBoard.firstSampleS)) return invalidArgument("IMU first sample time must be >= 0 s");
   if (!nonNegative(imuBoard.processingS) || !positive(imuBoard.baud) || imuBoard.frameBytes <= 0 ||

@@ -19,6 +19,12 @@ struct TurntableParams {
   // fitted table period, 10000.0837 ms for a nominal 10 s, is -8.37 ppm.
   double frequencyErrorPpm = -8.37;
   TurntableLimits limits;
+  // The table's axes from the outer frame to the inner one (model/attitude.h):
+  // a precision three-axis table has the azimuth (z) outside, then y, then x.
+  std::array<Axis, kAxisCount> axisOrder{Axis::kZ, Axis::kY, Axis::kX};
+  // The IMU on the inner frame: roll (x), pitch (y), yaw (z), deg, applied
+  // as R_z(yaw) R_y(pitch) R_x(roll). Zero: gyro x senses table axis x.
+  std::array<double, kAxisCount> mountingDeg{};
 };
 
 struct EncoderParams {
@@ -54,17 +60,24 @@ struct FogParams {
   void setOwnDelayS(double delayS) { sampleAfterUpdateS = delayS - loopDelayS(); }
 };
 
-// Orientation of the IMU axes in the local east-north-up frame (unit vectors)
-// and the site latitude, for the Earth-rate projection on each gyro.
+// The site and the table's heading (model/attitude.h): the table's axes at
+// zero are the local north-east-down frame turned by headingDeg about down
+// (heading 0: x north, y east, z down; 90: x east, y south).
 struct EarthParams {
   double latitudeDeg = 40.0;
-  std::array<std::array<double, 3>, kAxisCount> axisEnu{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
-  // Earth rate sensed by an axis, deg/h: Omega * (cos(lat) * north + sin(lat) * up).
+  double headingDeg = 0.0;  // azimuth of the table's x axis at zero, from north toward east
+  // Earth rate in the local north-east-down frame, deg/h:
+  // Omega * (cos(lat), 0, -sin(lat)).
+  std::array<double, 3> rateLocalDegPerH() const;
+  // Earth rate sensed by a gyro with the table at zero and the IMU mounted
+  // square on it, deg/h (Omega cos(lat) cos(heading) on x,
+  // -Omega cos(lat) sin(heading) on y, -Omega sin(lat) on z). The simulator
+  // rotates the Earth rate into the body frame at every sample instead.
   double projectionDegPerH(Axis axis) const;
 };
 
 struct ImuBoardParams {
-  double framePeriodS = 2e-3;
+  double framePeriodS = 2e-3;  // nominal; the IMU's crystal makes it framePeriodS * (1 + clockErrorPpm)
   double firstSampleS = 0.3e-3;  // IMU clock phase against the sampling board
   double clockErrorPpm = 0.0;
   // Processing (pulse sampling, temperature compensation) and the serial

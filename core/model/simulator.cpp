@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "common/units.h"
+#include "model/attitude.h"
 #include "model/random.h"
 #include "protocol/frame.h"
 
@@ -14,9 +15,8 @@ namespace {
 
 constexpr double kNever = std::numeric_limits<double>::infinity();
 
-// The FOG of one axis: sensed cumulative angle from motion, bias, Earth rate,
-// angle random walk and a Gauss-Markov bias wander; pulse output with the
-// quantisation remainder carried from frame to frame.
+// The noise of one axis' FOG: bias, angle random walk and a Gauss-Markov
+// bias wander, as an angle; the pulse count of its output.
 struct GyroChannel {
   double constantRateDegPerS = 0.0;
   double arwDegPerSqrtS = 0.0;
@@ -63,11 +63,11 @@ class Simulator::Impl {
  public:
   Impl(const SimConfig& config, const Turntable& table,
        std::vector<std::unique_ptr<Effect>>& effects)
-      : c_(config), table_(table), effects_(effects), noiseRng_(Random::derive(config.seed, 0)) {
+      : c_(config), table_(table), effects_(effects), attitude_(config.earth, config.turntable),
+        noiseRng_(Random::derive(config.seed, 0)) {
     for (int a = 0; a < kAxisCount; ++a) {
       GyroChannel& g = gyro_[a];
-      g.constantRateDegPerS =
-          degPerHourToDegPerS(c_.fog.biasDegPerH[a] + c_.earth.projectionDegPerH(static_cast<Axis>(a)));
+      g.constantRateDegPerS = degPerHourToDegPerS(c_.fog.biasDegPerH[a]);
       g.arwDegPerSqrtS = degPerSqrtHourToDegPerSqrtS(c_.fog.arwDegPerSqrtH);
       g.wanderSigmaDegPerS = degPerHourToDegPerS(c_.fog.biasInstabilityDegPerH);
       g.wanderCorrelationS = c_.fog.biasCorrelationS;
@@ -133,11 +133,34 @@ class Simulator::Impl {
     return imuSampleTime(k) - c_.fog.sampleAfterUpdateS - c_.fog.loopDelayS();
   }
 
+  // What the gyros sensed up to u (u increasing between calls): the body's
+  // rotation from the table's motion, exact for one axis moving at a time
+  // (Attitude::rotationBetweenDeg), plus the Earth rate rotated into the
+  // body frame at every instant (Simpson's rule over each frame interval:
+  // the attitude changes smoothly within 2 ms), plus bias and noise.
   std::array<double, kAxisCount> sensedAngles(double u) {
     GyroContext context{u, motion(u)};
+    const Eigen::Matrix3d bodyToTable = attitude_.bodyToTable(context.tableAngleDeg);
+    const Eigen::Vector3d earth = attitude_.earthRateBodyDegPerH(bodyToTable);
+    if (sensedBefore_ && u > lastSenseS_) {
+      bodyAngleDeg_ += attitude_.rotationBetweenDeg(lastBodyToTable_, bodyToTable);
+      const Eigen::Vector3d mid =
+          attitude_.earthRateBodyDegPerH(attitude_.bodyToTable(motion(0.5 * (lastSenseS_ + u))));
+      earthAngleDeg_ += degPerHourToDegPerS((u - lastSenseS_) / 6.0) * (lastEarthDegPerH_ + 4.0 * mid + earth);
+    }
+    sensedBefore_ = true;
+    lastSenseS_ = u;
+    lastBodyToTable_ = bodyToTable;
+    lastEarthDegPerH_ = earth;
+    const Eigen::Vector3d force = attitude_.specificForceBodyG(bodyToTable);
+    const Eigen::Matrix3d bodyToLocal = attitude_.bodyToLocal(bodyToTable);
     std::array<double, kAxisCount> sensed{};
-    for (int a = 0; a < kAxisCount; ++a)
-      sensed[a] = context.tableAngleDeg[a] + gyro_[a].noiseAngleDeg(u, noiseRng_);
+    for (int a = 0; a < kAxisCount; ++a) {
+      context.bodyAngleDeg[a] = bodyAngleDeg_[a];
+      context.specificForceG[a] = force[a];
+      for (int k = 0; k < kAxisCount; ++k) context.bodyToLocal[a][k] = bodyToLocal(a, k);
+      sensed[a] = bodyAngleDeg_[a] + earthAngleDeg_[a] + gyro_[a].noiseAngleDeg(u, noiseRng_);
+    }
     for (const auto& e : effects_) e->onGyroAngle(context, sensed);
     return sensed;
   }
@@ -203,7 +226,13 @@ class Simulator::Impl {
   const SimConfig& c_;
   const Turntable& table_;
   std::vector<std::unique_ptr<Effect>>& effects_;
+  Attitude attitude_;
   Random noiseRng_;
+  bool sensedBefore_ = false;
+  double lastSenseS_ = 0.0;
+  Eigen::Matrix3d lastBodyToTable_ = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d lastEarthDegPerH_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d bodyAngleDeg_ = Eigen::Vector3d::Zero(), earthAngleDeg_ = Eigen::Vector3d::Zero();
   std::vector<Random> effectRngs_;
   std::array<GyroChannel, kAxisCount> gyro_{};
   protocol::FrameWriter writer_;
@@ -256,6 +285,7 @@ void Simulator::runToEnd(std::vector<std::uint8_t>& out) { advance(endS() + 1.0,
 
 std::vector<TestPointTruth> Simulator::truth() const {
   std::vector<TestPointTruth> out;
+  const Attitude attitude(config_.earth, config_.turntable);
   for (const auto& s : turntable_.schedule()) {
     TestPointTruth t;
     t.index = s.index;
@@ -266,8 +296,10 @@ std::vector<TestPointTruth> Simulator::truth() const {
     t.imuDelayS = config_.trueImuDelayS();
     t.gyroDelayS = config_.trueGyroDelayS();
     const int a = static_cast<int>(s.point.axis);
-    t.gyroTrendDegPerS =
-        degPerHourToDegPerS(config_.fog.biasDegPerH[a] + config_.earth.projectionDegPerH(s.point.axis));
+    // A swing turns the IMU about the swing axis, which keeps the Earth rate
+    // along that axis constant: the trend is the one at the point's position.
+    const Eigen::Vector3d earth = attitude.earthRateBodyDegPerH(attitude.bodyToTable(s.point.positionDeg));
+    t.gyroTrendDegPerS = degPerHourToDegPerS(config_.fog.biasDegPerH[a] + earth[a]);
     out.push_back(t);
   }
   return out;

@@ -45,7 +45,9 @@ Result<SessionListing> listSessions(const std::string& dirText) {
           fs::exists(p.substr(0, p.size() - sfx.size()), ec))
         sideFile = true;
     if (sideFile) continue;
-    if (!looksLikeSession(p)) {
+    // A damaged .fbs (truncated, overwritten) is listed as unreadable with
+    // the reason, not counted among the other files.
+    if (!looksLikeSession(p) && f.extension() != ".fbs") {
       ++listing.skippedFiles;
       continue;
     }

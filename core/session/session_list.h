@@ -14,7 +14,7 @@ namespace fog::session {
 struct SessionSummary {
   std::string path;
   std::string fileName;
-  std::string error;  // non-empty: the file looks like a session but cannot be read; says why
+  std::string error;  // non-empty: the file looks like a session (or is named *.fbs) but cannot be read; says why
   SessionInfo info;
   bool complete = false;
   std::string incompleteReason;
@@ -25,7 +25,7 @@ struct SessionSummary {
 
 struct SessionListing {
   std::vector<SessionSummary> sessions;  // by file name
-  int skippedFiles = 0;                   // files that are not sessions (SQLite side files not counted)
+  int skippedFiles = 0;                   // other files that are not sessions (SQLite side files not counted)
 };
 
 // Errors: `dir` is not a folder or cannot be listed (kIoError).

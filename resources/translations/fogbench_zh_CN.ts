@@ -107,6 +107,189 @@
     </message>
 </context>
 <context>
+    <name>fog::ui::ConfigureView</name>
+    <message>
+        <location filename="../../ui/configure_view.cpp" line="+30"/>
+        <source>Test plan</source>
+        <translation>测试计划</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <location line="+28"/>
+        <source>Source</source>
+        <translation>数据源</translation>
+    </message>
+    <message>
+        <location line="-22"/>
+        <source>Built-in simulator</source>
+        <translation>内置仿真器</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Replay of a session</source>
+        <translation>回放会话</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Serial sampling board</source>
+        <translation>串口采样板</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Real time</source>
+        <translation>实时</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>5× real time</source>
+        <translation>5 倍实时</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>20× real time</source>
+        <translation>20 倍实时</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>As fast as possible</source>
+        <translation>尽可能快</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Simulator seed: the same seed gives the same data</source>
+        <translation>仿真器种子：相同种子产生相同数据</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>session file (.fbs) to replay</source>
+        <translation>要回放的会话文件（.fbs）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Browse…</source>
+        <translation>浏览…</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Seed</source>
+        <translation>种子</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Pace</source>
+        <translation>速度</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Replay</source>
+        <translation>回放</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The sampling board&apos;s serial port</source>
+        <translation>采样板的串口</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Rescan</source>
+        <translation>重新扫描</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Serial port</source>
+        <translation>串口</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Baud rate</source>
+        <translation>波特率</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Session</source>
+        <translation>会话</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Record a session file (crash-safe)</source>
+        <translation>记录会话文件（防崩溃）</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Choose…</source>
+        <translation>选择…</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Folder</source>
+        <translation>文件夹</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Operator</source>
+        <translation>操作员</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>IMU model</source>
+        <translation>IMU 型号</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>IMU serial</source>
+        <translation>IMU 序列号</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Notes</source>
+        <translation>备注</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Bench constants</source>
+        <translation>测试台常数</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Edit…</source>
+        <translation>编辑…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Edit the bench constants</source>
+        <translation>编辑测试台常数</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>Session to replay</source>
+        <translation>要回放的会话</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>fogbench sessions (*.fbs)</source>
+        <translation>fogbench 会话 (*.fbs)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Session folder</source>
+        <translation>会话文件夹</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>%1× real time</source>
+        <translation>%1 倍实时</translation>
+    </message>
+    <message>
+        <location line="+43"/>
+        <source>table read delay %1 ms · board delay %2 ms
+latitude %3° · pulse equivalent %4°
+counter %5 MHz / %6 bit</source>
+        <translation>转台读数延迟 %1 ms · 处理板延迟 %2 ms
+纬度 %3° · 脉冲当量 %4°
+计数器 %5 MHz / %6 位</translation>
+    </message>
+</context>
+<context>
     <name>fog::ui::DeltaPicker</name>
     <message>
         <location filename="../../ui/delta_picker.cpp" line="+29"/>
@@ -247,7 +430,7 @@
         <translation>尚未运行：请配置测试计划并按“运行”。</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>Window</source>
         <translation>窗口</translation>
     </message>
@@ -273,7 +456,7 @@
     </message>
     <message>
         <location line="+0"/>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>angle (°)</source>
         <translation>角度 (°)</translation>
     </message>
@@ -283,7 +466,7 @@
         <translation>陀螺角度（积分，已去除零偏 + 地球自转）</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>Test point</source>
         <translation>测试点</translation>
     </message>
@@ -351,12 +534,12 @@
 <context>
     <name>fog::ui::MainWindow</name>
     <message>
-        <location filename="../../ui/main_window.cpp" line="+80"/>
+        <location filename="../../ui/main_window.cpp" line="+142"/>
         <source>fogbench %1 — FOG IMU delay bench</source>
         <translation>fogbench %1 —— 光纤陀螺 IMU 延迟测试台</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+8"/>
         <source>Configure</source>
         <translation>配置</translation>
     </message>
@@ -377,192 +560,32 @@
     </message>
     <message>
         <location line="+3"/>
+        <location line="+705"/>
         <source>Diagnosis</source>
         <translation>诊断</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-702"/>
         <source>Noise</source>
         <translation>噪声</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+43"/>
         <source>Configure a plan and press Run.</source>
         <translation>请配置测试计划并按“运行”。</translation>
     </message>
     <message>
-        <location line="+9"/>
-        <source>Test plan</source>
-        <translation>测试计划</translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <location line="+25"/>
-        <source>Source</source>
-        <translation>数据源</translation>
-    </message>
-    <message>
-        <location line="-21"/>
-        <source>Built-in simulator</source>
-        <translation>内置仿真器</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Replay of a session</source>
-        <translation>回放会话</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Serial sampling board</source>
-        <translation>串口采样板</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>Real time</source>
-        <translation>实时</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>5× real time</source>
-        <translation>5 倍实时</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>20× real time</source>
-        <translation>20 倍实时</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>As fast as possible</source>
-        <translation>尽可能快</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>Simulator seed: the same seed gives the same data</source>
-        <translation>仿真器种子：相同种子产生相同数据</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>session file (.fbs) to replay</source>
-        <translation>要回放的会话文件（.fbs）</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Browse…</source>
-        <translation>浏览…</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>Pace</source>
-        <translation>速度</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Seed</source>
-        <translation>种子</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Replay</source>
-        <translation>回放</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>The sampling board&apos;s serial port</source>
-        <translation>采样板的串口</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>Rescan</source>
-        <translation>重新扫描</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>Serial port</source>
-        <translation>串口</translation>
-    </message>
-    <message>
-        <location line="+13"/>
-        <source>Session</source>
-        <translation>会话</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Record a session file (crash-safe)</source>
-        <translation>记录会话文件（防崩溃）</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>Choose…</source>
-        <translation>选择…</translation>
-    </message>
-    <message>
-        <location line="+11"/>
-        <source>Folder</source>
-        <translation>文件夹</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Operator</source>
-        <translation>操作员</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>IMU model</source>
-        <translation>IMU 型号</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>IMU serial</source>
-        <translation>IMU 序列号</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Notes</source>
-        <translation>备注</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>Bench constants</source>
-        <translation>测试台常数</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>Edit bench constants…</source>
-        <translation>编辑测试台常数…</translation>
-    </message>
-    <message>
-        <location line="+18"/>
-        <source>Session to replay</source>
-        <translation>要回放的会话</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>fogbench sessions (*.fbs)</source>
-        <translation>fogbench 会话 (*.fbs)</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>Session folder</source>
-        <translation>会话文件夹</translation>
-    </message>
-    <message>
-        <location line="+16"/>
+        <location line="+14"/>
         <source>&lt;h3&gt;fogbench %1&lt;/h3&gt;&lt;p&gt;Fiber-optic gyro IMU delay test bench: swing the IMU on a turntable, stamp table angle and gyro increments with one counter, fit sinusoids to both and turn their phase difference into the IMU&apos;s delay, with its uncertainty.&lt;/p&gt;&lt;p&gt;Built with Qt %2 (running on %3) and Qwt %4.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;fogbench %1&lt;/h3&gt;&lt;p&gt;光纤陀螺 IMU 延迟测试台：转台带动 IMU 摆动，用同一计数器为转台角度和陀螺增量打时间戳，对两者拟合正弦，并将相位差换算为 IMU 延迟及其不确定度。&lt;/p&gt;&lt;p&gt;基于 Qt %2（运行于 %3）和 Qwt %4 构建。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location line="+8"/>
-        <source>&amp;Settings</source>
-        <translation>设置(&amp;S)</translation>
-    </message>
-    <message>
-        <location line="+1"/>
+        <location line="+94"/>
         <source>&amp;Bench constants…</source>
         <translation>测试台常数(&amp;B)…</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>&amp;Language</source>
         <translation>语言(&amp;L)</translation>
     </message>
@@ -577,22 +600,22 @@
         <translation>重新启动 fogbench 后语言才会更改。</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>&amp;Help</source>
         <translation>帮助(&amp;H)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+7"/>
         <source>&amp;About fogbench</source>
         <translation>关于 fogbench(&amp;A)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>About fogbench</source>
         <translation>关于 fogbench</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-115"/>
         <location line="+3"/>
         <source>Run</source>
         <translation>运行</translation>
@@ -604,21 +627,253 @@
     </message>
     <message>
         <location line="+2"/>
+        <location line="+64"/>
         <source>End the run now; everything received so far is kept and analysed</source>
         <translation>立即结束运行；已接收的全部数据都会保留并分析</translation>
     </message>
     <message>
-        <location line="+15"/>
-        <source>%1× real time</source>
-        <translation>%1 倍实时</translation>
+        <location line="-56"/>
+        <source>&amp;File</source>
+        <translation>文件(&amp;F)</translation>
     </message>
     <message>
-        <location line="+25"/>
-        <source>table read delay %1 ms · board delay %2 ms · latitude %3° · pulse equivalent %4° · counter %5 MHz / %6 bit</source>
-        <translation>转台读数延迟 %1 ms · 处理板延迟 %2 ms · 纬度 %3° · 脉冲当量 %4° · 计数器 %5 MHz / %6 位</translation>
+        <location line="+1"/>
+        <source>&amp;Open session…</source>
+        <translation>打开会话(&amp;O)…</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+1"/>
+        <location line="+532"/>
+        <source>Open session</source>
+        <translation>打开会话</translation>
+    </message>
+    <message>
+        <location line="-531"/>
+        <source>fogbench sessions (*.fbs);;All files (*)</source>
+        <translation>fogbench 会话 (*.fbs);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Open &amp;recent</source>
+        <translation>最近打开(&amp;R)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&amp;Load test plan…</source>
+        <translation>载入测试计划(&amp;L)…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+4"/>
+        <source>Load test plan</source>
+        <translation>载入测试计划</translation>
+    </message>
+    <message>
+        <location line="-3"/>
+        <source>Test plans (*.json);;All files (*)</source>
+        <translation>测试计划 (*.json);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Cannot load the test plan %1</source>
+        <translation>无法载入测试计划 %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&amp;Save test plan…</source>
+        <translation>保存测试计划(&amp;S)…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+5"/>
+        <source>Save test plan</source>
+        <translation>保存测试计划</translation>
+    </message>
+    <message>
+        <location line="-4"/>
+        <source>Test plans (*.json)</source>
+        <translation>测试计划 (*.json)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Cannot save the test plan as %1</source>
+        <translation>无法将测试计划保存为 %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>&amp;Import CSV data…</source>
+        <translation>导入 CSV 数据(&amp;I)…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Folder with metadata.json, table.csv, gyro.csv</source>
+        <translation>包含 metadata.json、table.csv、gyro.csv 的文件夹</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Open the &amp;export folder</source>
+        <translation>打开导出文件夹(&amp;E)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Show the folder of the last export (plot or report)</source>
+        <translation>显示最近一次导出（曲线或报告）所在的文件夹</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Quit</source>
+        <translation>退出(&amp;Q)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <location line="+1"/>
+        <source>&amp;Run</source>
+        <translation>运行(&amp;R)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Stop</source>
+        <translation>停止(&amp;S)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&amp;Diagnose the shown result</source>
+        <translation>诊断当前结果(&amp;D)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;View</source>
+        <translation>视图(&amp;V)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Configure</source>
+        <translation>配置(&amp;C)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>&amp;Live</source>
+        <translation>实时(&amp;L)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>&amp;Results</source>
+        <translation>结果(&amp;R)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>&amp;Sessions</source>
+        <translation>会话(&amp;S)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>&amp;Diagnosis</source>
+        <translation>诊断(&amp;D)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Noise</source>
+        <translation>噪声(&amp;N)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>&amp;Tools</source>
+        <translation>工具(&amp;T)</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>&amp;Shortcuts</source>
+        <translation>快捷键(&amp;S)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Shortcuts</source>
+        <translation>快捷键</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Keyboard shortcuts</source>
+        <translation>键盘快捷键</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Run: Ctrl+R
+Stop: Ctrl+.
+Open a session: Ctrl+O
+Load a test plan: Ctrl+L
+Save the test plan: Ctrl+S
+Views: Ctrl+1 … Ctrl+6
+Quit: Ctrl+Q</source>
+        <translation>运行：Ctrl+R
+停止：Ctrl+.
+打开会话：Ctrl+O
+载入测试计划：Ctrl+L
+保存测试计划：Ctrl+S
+视图：Ctrl+1 … Ctrl+6
+退出：Ctrl+Q</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>(none yet)</source>
+        <translation>（暂无）</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>Test plan loaded from %1</source>
+        <translation>已从 %1 载入测试计划</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Test plan saved as %1</source>
+        <translation>测试计划已保存为 %1</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>Saved %1 — File ▸ Open the export folder shows it</source>
+        <translation>已保存 %1 —— “文件 ▸ 打开导出文件夹”可查看</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Open the export folder</source>
+        <translation>打开导出文件夹</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Cannot open the folder %1</source>
+        <translation>无法打开文件夹 %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>No file manager answered; open the folder by hand: %1</source>
+        <translation>没有文件管理器响应；请手动打开该文件夹：%1</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>A run is under way</source>
+        <translation>运行正在进行</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A run is under way. Stop it and close fogbench?</source>
+        <translation>运行正在进行。停止运行并关闭 fogbench？</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Stopping keeps everything received so far in the session file, marked incomplete.</source>
+        <translation>停止后，已接收的全部数据保留在会话文件中，并标记为未完成。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Stop the run and close</source>
+        <translation>停止运行并关闭</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Keep running</source>
+        <translation>继续运行</translation>
+    </message>
+    <message>
+        <location line="+65"/>
         <source>a run is under way</source>
         <translation>正在运行</translation>
     </message>
@@ -633,7 +888,7 @@
         <translation>请选择采样板的串口</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Start the run</source>
         <translation>开始运行</translation>
     </message>
@@ -648,42 +903,52 @@
         <translation>&lt;span style=&apos;color:#b00000&apos;&gt;无法运行：%1&lt;/span&gt;</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+25"/>
         <source>the baud rate must be a whole number</source>
         <translation>波特率必须是整数</translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+38"/>
         <source>cannot create the session folder &apos;%1&apos;; choose another one</source>
         <translation>无法创建会话文件夹“%1”；请另选一个</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+38"/>
         <source>Running: %1 …</source>
         <translation>运行中：%1 …</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+12"/>
         <source>Stopping: everything received so far is kept …</source>
         <translation>正在停止：已接收的数据全部保留 …</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+17"/>
         <source>No data from the source for %1 s — check the connection</source>
         <translation>数据源已 %1 s 无数据——请检查连接</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
+        <source>frames: %1 · checksum failures: %2 · lost: %3 · duplicates: %4</source>
+        <translation>帧：%1 · 校验失败：%2 · 丢失：%3 · 重复：%4</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>frames: %1 table · %2 IMU · %3 status  ·  checksum failures: %4  ·  lost: %5  ·  duplicates: %6</source>
         <translation>帧：转台 %1 · IMU %2 · 状态 %3  ·  校验失败：%4  ·  丢失：%5  ·  重复：%6</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
+        <source> · display skipped %1</source>
+        <translation> · 显示跳过 %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>  ·  display skipped %1 frames (all recorded)</source>
         <translation>  ·  显示跳过 %1 帧（全部已记录）</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+18"/>
         <source>Run incomplete (%1); </source>
         <translation>运行未完成（%1）；</translation>
     </message>
@@ -708,7 +973,32 @@
         <translation>。已保存为 %1</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+7"/>
+        <source>Run incomplete</source>
+        <translation>运行未完成</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The run ended early; everything received is kept and analysed.</source>
+        <translation>运行提前结束；已接收的全部数据均已保留并分析。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>No delay</source>
+        <translation>无延迟结果</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>The run gave no delay.</source>
+        <translation>本次运行未得到延迟结果。</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Run failed</source>
+        <translation>运行失败</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Run failed: %1</source>
         <translation>运行失败：%1</translation>
     </message>
@@ -718,7 +1008,7 @@
         <translation>&lt;span style=&apos;color:#b00000&apos;&gt;运行失败：%1&lt;/span&gt;</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
         <source>Re-analysing %1 …</source>
         <translation>正在重新分析 %1 …</translation>
     </message>
@@ -728,32 +1018,82 @@
         <translation>正在打开 %1 …</translation>
     </message>
     <message>
-        <location line="+12"/>
-        <source>Cannot open %1: %2</source>
-        <translation>无法打开 %1：%2</translation>
+        <location line="+39"/>
+        <location line="+8"/>
+        <source>Re-analyse</source>
+        <translation>重新分析</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="-7"/>
+        <source>Cannot re-analyse %1</source>
+        <translation>无法重新分析 %1</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Cannot open %1</source>
+        <translation>无法打开 %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1
+
+File: %2</source>
+        <translation>%1
+
+文件：%2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>%1: re-analysed with the bench constants; the result was added to the session</source>
         <translation>%1：已按测试台常数重新分析，结果已添加到会话</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>%1 re-analysed</source>
+        <translation>%1 已重新分析</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The session was analysed with the current bench constants and the result was added to it; its recorded data did not change.
+
+File: %1</source>
+        <translation>已按当前测试台常数分析该会话，并将结果添加到会话中；其记录数据未改变。
+
+文件：%1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>%1: read-only review</source>
         <translation>%1：只读查看</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+24"/>
         <source>Choose a session folder to import into first.</source>
         <translation>请先选择导入目标会话文件夹。</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+0"/>
+        <location line="+17"/>
+        <source>Import CSV data</source>
+        <translation>导入 CSV 数据</translation>
+    </message>
+    <message>
+        <location line="-16"/>
+        <source>The imported data becomes a session file in the session folder; choose a folder you can write to in the Sessions view.</source>
+        <translation>导入的数据将成为会话文件夹中的会话文件；请在“会话”视图中选择一个可写入的文件夹。</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>Importing %1 …</source>
         <translation>正在导入 %1 …</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+9"/>
+        <source>Cannot import %1</source>
+        <translation>无法导入 %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Cannot import %1: %2</source>
         <translation>无法导入 %1：%2</translation>
     </message>
@@ -763,7 +1103,7 @@
         <translation>已将 %1 导入为 %2</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+8"/>
         <source>this run</source>
         <translation>本次运行</translation>
     </message>
@@ -778,9 +1118,14 @@
         <translation>正在诊断 %1 …</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+14"/>
         <source>No diagnosis: %1</source>
         <translation>无法诊断：%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>No diagnosis of %1</source>
+        <translation>无法诊断 %1</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -793,7 +1138,7 @@
         <translation>%1 的诊断：%2（%3 s）</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+11"/>
         <source>This result has no static segment. To measure the gyro&apos;s noise (Allan deviation, noise terms, bias), add a test point of kind &quot;static&quot; to the plan: the table rests while the gyro is recorded.</source>
         <translation>此结果没有静态段。要测量陀螺噪声（Allan 方差、噪声项、零偏），请在计划中添加类型为“静态”的测试点：转台静止时记录陀螺数据。</translation>
     </message>
@@ -803,12 +1148,12 @@
         <translation>正在计算 Allan 标准差 …</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+16"/>
         <source>No noise analysis: %1</source>
         <translation>无噪声分析：%1</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+13"/>
         <source>Compare %1 and %2</source>
         <translation>比较 %1 与 %2</translation>
     </message>
@@ -816,7 +1161,7 @@
 <context>
     <name>fog::ui::NoiseView</name>
     <message>
-        <location filename="../../ui/noise_view.cpp" line="+30"/>
+        <location filename="../../ui/noise_view.cpp" line="+31"/>
         <source>Static segment</source>
         <translation>静态段</translation>
     </message>
@@ -934,29 +1279,34 @@
 <context>
     <name>fog::ui::PlanEditor</name>
     <message>
-        <location filename="../../ui/plan_editor.cpp" line="+43"/>
+        <location filename="../../ui/plan_editor.cpp" line="+44"/>
         <source>Preset</source>
         <translation>预设</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+8"/>
         <source>Load preset</source>
         <translation>载入预设</translation>
     </message>
     <message>
         <location line="+4"/>
-        <source>Rest between points</source>
-        <translation>测试点间静止时间</translation>
+        <source>Rest</source>
+        <translation>静止</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+73"/>
+        <location line="+89"/>
         <location line="+2"/>
         <source> s</source>
         <translation> s</translation>
     </message>
     <message>
-        <location line="-66"/>
+        <location line="-87"/>
+        <source>Rest between test points: the table at rest</source>
+        <translation>测试点之间的静止时间：转台静止</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Axis</source>
         <translation>轴</translation>
     </message>
@@ -996,7 +1346,7 @@
         <translation>检查</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+16"/>
         <source>Add test point</source>
         <translation>添加测试点</translation>
     </message>
@@ -1016,7 +1366,7 @@
         <translation>下移</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+35"/>
         <source>swing</source>
         <translation>摆动</translation>
     </message>
@@ -1031,7 +1381,12 @@
         <translation>静态：转台静止，用于测量陀螺噪声（Allan 方差）</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+13"/>
+        <source>table position from the plan file: X %1°, Y %2°, Z %3°</source>
+        <translation>计划文件中的转台位置：X %1°，Y %2°，Z %3°</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source> Hz</source>
         <translation> Hz</translation>
     </message>
@@ -1066,7 +1421,7 @@
         <translation>开始记录前的摆动时间</translation>
     </message>
     <message>
-        <location line="+124"/>
+        <location line="+129"/>
         <source>ok: table at rest, %1 in all</source>
         <translation>正常：转台静止，共 %1</translation>
     </message>
@@ -1086,7 +1441,7 @@
         <translation>测试计划中没有测试点：请添加或载入预设</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+6"/>
         <source>%1 test point(s), %2 in all</source>
         <translation>%1 个测试点，共 %2</translation>
     </message>
@@ -1110,13 +1465,13 @@
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../../ui/main_window.cpp" line="-703"/>
-        <location filename="../../ui/plan_editor.cpp" line="-256"/>
+        <location filename="../../ui/main_window.cpp" line="-854"/>
+        <location filename="../../ui/plan_editor.cpp" line="-282"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../../ui/live_view.cpp" line="-190"/>
+        <location filename="../../ui/live_view.cpp" line="-193"/>
         <source>%1:%2</source>
         <translation>%1:%2</translation>
     </message>
@@ -2165,12 +2520,12 @@
         <translation>陀螺角度（增量累加，%1 ms）</translation>
     </message>
     <message>
-        <location line="+316"/>
+        <location line="+315"/>
         <source>IMU delay calibration report: %1 %2</source>
         <translation>IMU 延迟标定报告：%1 %2</translation>
     </message>
     <message>
-        <location filename="../../ui/result_view.cpp" line="+53"/>
+        <location filename="../../ui/result_view.cpp" line="+58"/>
         <source>%1: %2 axis, %3 Hz / %4°</source>
         <translation>%1：%2 轴，%3 Hz / %4°</translation>
     </message>
@@ -2178,12 +2533,12 @@
 <context>
     <name>fog::ui::ResultView</name>
     <message>
-        <location line="+39"/>
+        <location line="+40"/>
         <source>Test point</source>
         <translation>测试点</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+17"/>
         <source>Diagnose</source>
         <translation>诊断</translation>
     </message>
@@ -2198,7 +2553,7 @@
         <translation>导出</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+16"/>
         <source>Normalised angles and fits</source>
         <translation>归一化角度及拟合</translation>
     </message>
@@ -2218,7 +2573,7 @@
         <translation>残差（角秒）</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+10"/>
         <source>fit</source>
         <translation>拟合</translation>
     </message>
@@ -2273,13 +2628,13 @@
         <translation>依据</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+25"/>
         <source>The delay report appears here after a run.</source>
         <translation>运行结束后，延迟报告显示在这里。</translation>
     </message>
     <message>
-        <location line="+18"/>
-        <location line="+3"/>
+        <location line="+17"/>
+        <location line="+4"/>
         <source>Export plot</source>
         <translation>导出曲线</translation>
     </message>
@@ -2306,22 +2661,27 @@
     <message>
         <location line="+3"/>
         <location line="+4"/>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>Calibration report</source>
         <translation>标定报告</translation>
     </message>
     <message>
-        <location line="-7"/>
+        <location line="-8"/>
         <source>Pass when IMU delay + 2σ is below (ms):</source>
         <translation>IMU 延迟 + 2σ 低于此值时合格（ms）：</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>PDF document (*.pdf)</source>
         <translation>PDF 文档 (*.pdf)</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+6"/>
+        <source>Open the export folder</source>
+        <translation>打开导出文件夹</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>Lag against swing frequency</source>
         <translation>滞后随摆动频率的变化</translation>
     </message>
@@ -2508,7 +2868,7 @@
 <context>
     <name>fog::ui::SessionBrowser</name>
     <message>
-        <location filename="../../ui/session_browser.cpp" line="+33"/>
+        <location filename="../../ui/session_browser.cpp" line="+34"/>
         <source>Folder</source>
         <translation>文件夹</translation>
     </message>
@@ -2563,7 +2923,7 @@
         <translation>IMU 延迟 (ms)</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+18"/>
         <source>Open (read-only)</source>
         <translation>打开（只读）</translation>
     </message>
@@ -2593,7 +2953,7 @@
         <translation>将其他测试台的数据（metadata.json、table.csv、gyro.csv）导入为此处的会话</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>Session folder</source>
         <translation>会话文件夹</translation>
     </message>
@@ -2608,7 +2968,7 @@
         <translation>请选择存放会话文件（.fbs）的文件夹。</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+23"/>
         <source>unreadable: %1</source>
         <translation>无法读取：%1</translation>
     </message>
@@ -2623,10 +2983,17 @@
         <translation>未完成：%1</translation>
     </message>
     <message numerus="yes">
-        <location line="+5"/>
+        <location line="+6"/>
         <source>%n session(s)</source>
         <translation>
             <numerusform>%n 个会话</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>%n unreadable (the reason is in the State column)</source>
+        <translation>
+            <numerusform>%n 个无法读取（原因见“状态”列）</numerusform>
         </translation>
     </message>
     <message numerus="yes">

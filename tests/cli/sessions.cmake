@@ -63,9 +63,12 @@ endif()
 file(WRITE ${dir}/notes.txt "not a session\n")
 run_ok(list_out sessions ${dir})
 string(REGEX MATCH "measured lag \\(gyro behind table\\) +([0-9.]+)" m "${run_out}")
-string(SUBSTRING "${CMAKE_MATCH_1}" 0 6 lag4)  # 0.4655
-if(NOT list_out MATCHES "run1\\.fbs +[0-9T:-]+Z +Ann Lee +FOG-9 SN-77 +z +complete +${lag4}")
-  message(FATAL_ERROR "sessions does not list run1.fbs with its metadata and lag ${lag4}:\n${list_out}")
+# The listing shows the stored result's lag to 4 decimals; the run printed
+# its own to 4 decimals too, and the two analyses may round the last digit
+# apart (0.46555 read back from stored samples), so 3 decimals must agree.
+string(SUBSTRING "${CMAKE_MATCH_1}" 0 5 lag3)  # 0.465
+if(NOT list_out MATCHES "run1\\.fbs +[0-9T:-]+Z +Ann Lee +FOG-9 SN-77 +z +complete +${lag3}[0-9]")
+  message(FATAL_ERROR "sessions does not list run1.fbs with its metadata and lag ${lag3}x:\n${list_out}")
 endif()
 if(NOT list_out MATCHES "1 session in .*; 1 other file skipped")
   message(FATAL_ERROR "sessions does not count the skipped file:\n${list_out}")

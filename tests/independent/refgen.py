@@ -109,6 +109,31 @@ def default_params():
         # Gyro
         "fine_hz": 10000.0,
         "gyro_sign": [1, 1, 1],
+        # Sensor errors of the reference simulator (docs/simulator.md): gyro i
+        # senses misalignment_urad m_ij of the body rate about axis j, in the
+        # order m_xy, m_xz, m_yx, m_yz, m_zx, m_zy; a rate error of
+        # g_sens_deg_h_g times the specific force along its own axis; and its
+        # output is the rate through a first-order lag of lag_tau_ms.
+        "misalignment_urad": [0.0] * 6,
+        "g_sens_deg_h_g": 0.0,
+        "lag_tau_ms": 0.0,
+        # ... and a scale factor 1 + scale_factor_ppm, plus sf_asymmetry_ppm
+        # of |rate| and sf_nonlinearity_ppm_at_100 * rate * (rate / 100)^2
+        # (deg/s); a bias growing by bias_drift_deg_h_per_min from the first
+        # instant; IMU frames lost at random at drop_per_mille (the next row's
+        # lost_before counts them).
+        "scale_factor_ppm": 0.0,
+        "sf_asymmetry_ppm": 0.0,
+        "sf_nonlinearity_ppm_at_100": 0.0,
+        "bias_drift_deg_h_per_min": 0.0,
+        "drop_per_mille": 0.0,
+        # Table errors: the motion distorted as a function of the angle of
+        # every axis, theta + 10 (c2 x^2 - c3 x^3) with x = theta / 10 deg
+        # (table_poly_ppm = [c2, c3]; seen by encoder and gyros alike), and
+        # an encoder reading error s sin(2 pi theta / 10 deg) + c cos(...)
+        # (encoder_cyclic_arcsec = [s, c]).
+        "table_poly_ppm": [0.0, 0.0],
+        "encoder_cyclic_arcsec": [0.0, 0.0],
         "bias_deg_h": [1.0, 1.0, 1.0],
         "bias_step_deg_h": [0.0, 0.0, 0.0],
         "bias_step_time_s": math.inf,
@@ -261,6 +286,38 @@ def earth_rate_ned_deg_s(lat_deg):
     om = EARTH_RATE_DEG_H / 3600.0
     lat = math.radians(lat_deg)
     return np.array([om * math.cos(lat), 0.0, -om * math.sin(lat)])
+
+
+def specific_force(angles, p):
+    """Specific force of gravity at rest in the body frame, in g, (n, 3):
+    C(t)^T (0, 0, -1) in NED, through the same axis chain as body_rates
+    (the heading turns about down, so it leaves gravity alone)."""
+    n = angles.shape[0]
+    u = np.tile(np.array([0.0, 0.0, -1.0]), (n, 1))
+    for ax in p["axis_order"]:
+        u = _rot_t(rot(ax, angles[:, AXES.index(ax)]), u)
+    return u
+
+
+def first_order_lag(x, dt, tau, y0, x0):
+    """y' = (x - y) / tau on samples x (n, 3) every dt after a sample x0 with
+    output y0, x linear between samples (exact for that): returns y (n, 3).
+    The recursion y_j = a y_{j-1} + u_j is summed in blocks short enough for
+    a^-L to stay finite."""
+    a = math.exp(-dt / tau)
+    c = tau / dt * (1.0 - a)
+    xp = np.vstack([x0[None, :], x[:-1]])
+    u = x - c * (x - xp) - a * xp          # y_j - a y_{j-1} for this input
+    y = np.empty_like(x)
+    L = max(1, int(40.0 / max(dt / tau, 1e-12)))
+    prev = y0.copy()
+    for b in range(0, x.shape[0], L):
+        ub = u[b:b + L]
+        k = np.arange(1, ub.shape[0] + 1)[:, None]
+        w = a ** (-k.astype(float))
+        y[b:b + L] = a ** k * (prev[None, :] + np.cumsum(ub * w, axis=0))
+        prev = y[b + ub.shape[0] - 1].copy()
+    return y
 
 
 def _rot_t(r, u):
@@ -419,6 +476,11 @@ def table_state(t, swings, p):
             a, r = sw.eval(t[sel])
             ang[sel, i] += a
             rate[sel, i] += r
+    c2, c3 = (v * 1e-6 for v in p["table_poly_ppm"])
+    if c2 or c3:
+        x = ang / 10.0
+        rate = rate * (1.0 + 2.0 * c2 * x - 3.0 * c3 * x * x)
+        ang = ang + 10.0 * (c2 * x * x - c3 * x ** 3)
     return ang, rate
 
 
@@ -525,6 +587,10 @@ def generate(params, chunk_frames=5000):
     tab_true, _ = table_state(latch, swings, p)
     q = p["encoder_arcsec"] * ARCSEC
     tab_meas = tab_true.copy()
+    es, ec = (v * ARCSEC for v in p["encoder_cyclic_arcsec"])
+    if es or ec:
+        ph = 2.0 * math.pi * tab_true / 10.0
+        tab_meas += es * np.sin(ph) + ec * np.cos(ph)
     if p["encoder_noise_arcsec"] > 0:
         tab_meas += rng.normal(0, p["encoder_noise_arcsec"] * ARCSEC, tab_meas.shape)
     if q > 0:
@@ -555,9 +621,36 @@ def generate(params, chunk_frames=5000):
     theta[0] = p["_pulse_phase"] * pe
     t_first = frame_t[0]
 
-    def measured_rate(tf):
+    m = np.zeros((3, 3))
+    for (i, j), v in zip([(0, 1), (0, 2), (1, 0), (1, 2), (2, 0), (2, 1)], p["misalignment_urad"]):
+        m[i, j] = v * 1e-6
+    lag_s = p["lag_tau_ms"] * 1e-3
+
+    def sensed_rate(tf):
+        """What the gyros sense before the lag: body rate through the
+        misalignment, plus the g-sensitive rate error."""
         ang, r = table_state(tf - tau, swings, p)
         w = body_rates(ang, r, p)
+        w = w + w @ m.T
+        if p["g_sens_deg_h_g"] != 0.0:
+            w = w + p["g_sens_deg_h_g"] / 3600.0 * specific_force(ang, p)
+        w = (w * (1.0 + p["scale_factor_ppm"] * 1e-6) + p["sf_asymmetry_ppm"] * 1e-6 * np.abs(w)
+             + p["sf_nonlinearity_ppm_at_100"] * 1e-6 * w * (w / 100.0) ** 2)
+        if p["bias_drift_deg_h_per_min"] != 0.0:
+            w = w + (p["bias_drift_deg_h_per_min"] / 3600.0 / 60.0 * (tf - t_first))[:, None]
+        return w
+
+    lag_state = {}
+
+    def measured_rate(tf):
+        w = sensed_rate(tf)
+        if lag_s > 0:
+            if not lag_state:   # at rest before the first instant: output = input
+                lag_state["x"] = w[0].copy()
+                lag_state["y"] = w[0].copy()
+            y = first_order_lag(w, dt, lag_s, lag_state["y"], lag_state["x"])
+            lag_state["x"], lag_state["y"] = w[-1].copy(), y[-1].copy()
+            w = y
         out = w * sign + bias
         if np.any(bstep):
             out = out + np.where((tf >= p["bias_step_time_s"])[:, None], bstep, 0.0)
@@ -623,6 +716,15 @@ def generate(params, chunk_frames=5000):
         held_from = idx
     else:
         held_from = np.arange(stamp.size)
+    lost_before = np.zeros(gyro_t.size, dtype=np.int64)
+    if p["drop_per_mille"] > 0:
+        if p["sample_hold_ms"] > 0 or p["rate_output"] is not None:
+            raise ValueError("drop_per_mille works on increments without sample-and-hold")
+        drop = rng.uniform(size=gyro_t.size) < p["drop_per_mille"] * 1e-3
+        drop[0] = False
+        kept = np.nonzero(~drop)[0]
+        lost_before = np.diff(np.concatenate([[-1], kept])) - 1
+        gyro_t, gvals, held_from = gyro_t[kept], gvals[kept], held_from[kept]
 
     return {
         "params": p,
@@ -641,6 +743,7 @@ def generate(params, chunk_frames=5000):
         "gyro_t": gyro_t,
         "gyro_val": gvals,
         "gyro_from_frame": held_from,
+        "gyro_lost_before": lost_before,
         "pulse_deg": pe,
         "fine_dt_s": dt,
         "frame_period_true_s": Pg,
@@ -829,6 +932,8 @@ def write_dir(res, out, overwrite=False):
     suffix = "_inc_deg" if p["rate_output"] is None else "_rate_deg_s"
     for ax in axes_out:
         cols.append(res["gyro_val"][idx, AXES.index(ax)]); header.append(ax + suffix); fmts.append(ff)
+    if np.any(res["gyro_lost_before"]):
+        cols.append(res["gyro_lost_before"][idx]); header.append("lost_before"); fmts.append("%d")
     what = ("angle increments (deg) over the frame ending at time_s" if p["rate_output"] is None else
             "rates (deg/s), convention %s" % p["rate_output"])
     _write_csv(os.path.join(out, "gyro.csv"), "refgen gyro stream: " + what + "; docs/formats.md",

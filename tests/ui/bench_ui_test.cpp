@@ -5,6 +5,19 @@
 
 #include <QAction>
 #include <QComboBox>
+#include <QDir>
+#include <QHeaderView>
+#include <QLayout>
+#include <QLineEdit>
+#include <QMenu>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QScrollArea>
+#include <QScrollBar>
+#include <QSettings>
+#include <QStatusBar>
+#include <QTabBar>
+#include <QToolButton>
 #include <QCryptographicHash>
 #include <QDoubleSpinBox>
 #include <QFile>
@@ -20,6 +33,7 @@
 #include <cmath>
 #include <qwt_plot.h>
 #include <qwt_plot_barchart.h>
+#include <qwt_scale_div.h>
 #include <vector>
 
 #include "common/version.h"
@@ -32,8 +46,10 @@
 #include "ui/diagnosis_view.h"
 #include "ui/language.h"
 #include "ui/delta_picker.h"
+#include "io/csv_import.h"
 #include "ui/live_view.h"
 #include "ui/main_window.h"
+#include "ui/messages.h"
 #include "ui/noise_view.h"
 #include "ui/plan_editor.h"
 #include "ui/plot_export.h"
@@ -65,12 +81,93 @@ class BenchUiTest : public QObject {
     QVERIFY(spin);
     spin->setValue(value);
   }
+  static void settle() {
+    for (int i = 0; i < 3; ++i) {
+      QCoreApplication::sendPostedEvents();
+      QCoreApplication::processEvents();
+    }
+  }
+  static QString describe(const QWidget* w) {
+    return QString("%1 '%2'").arg(w->metaObject()->className(), w->objectName());
+  }
+  // The deepest widgets whose minimum size exceeds `limit` (why a window
+  // cannot shrink), for the failure message.
+  static QStringList tooLarge(const QWidget* w, QSize limit) {
+    QStringList out;
+    for (const QWidget* c : w->findChildren<QWidget*>(QString(), Qt::FindDirectChildrenOnly)) {
+      if (c->isHidden() || c->isWindow()) continue;
+      out << tooLarge(c, limit);
+    }
+    const QSize m = w->minimumSizeHint().expandedTo(w->minimumSize());
+    if (out.isEmpty() && (m.width() > limit.width() || m.height() > limit.height()))
+      out << QString("%1 %2x%3").arg(describe(w)).arg(m.width()).arg(m.height());
+    return out;
+  }
+  static QSize minimumOf(const QWidget* w) {
+    QSize m = w->minimumSizeHint().expandedTo(w->minimumSize());
+    if (w->layout()) m = m.expandedTo(w->layout()->minimumSize());
+    return m;
+  }
+  // The push and tool buttons of the shown view that cannot be brought into
+  // view whole: each is scrolled to (ensureWidgetVisible in its scroll area)
+  // and must then lie inside the window and the scroll area's viewport at
+  // its full minimum size.
+  static QStringList unreachableButtons(QWidget* window) {
+    QStringList bad;
+    for (QAbstractButton* b : window->findChildren<QAbstractButton*>()) {
+      if (!b->isVisible() || !(qobject_cast<QPushButton*>(b) || qobject_cast<QToolButton*>(b))) continue;
+      if (qobject_cast<QTabBar*>(b->parentWidget())) continue;  // the tab bar's own scroll arrows
+      if (b->window() != window) continue;
+      QScrollArea* area = nullptr;
+      for (QWidget* p = b->parentWidget(); p && !area; p = p->parentWidget()) area = qobject_cast<QScrollArea*>(p);
+      if (area) area->ensureWidgetVisible(b, 0, 0);
+      settle();
+      const QRect r(b->mapTo(window, QPoint(0, 0)), b->size());
+      // Whole: inside the window and the viewport, as wide as it asks, tall
+      // enough for its text (a style may fit it a few pixels under its
+      // height hint in a form row).
+      bool ok = window->rect().contains(r) && b->width() >= b->minimumSizeHint().width() &&
+                b->height() >= b->fontMetrics().height() + 4;
+      const QRect viewport =
+          area ? QRect(area->viewport()->mapTo(window, QPoint(0, 0)), area->viewport()->size()) : window->rect();
+      ok = ok && viewport.contains(r);
+      if (!ok)
+        bad << QString("%1 (%2) at %3,%4 %5x%6, needs %7x%8, viewport %9,%10 %11x%12")
+                   .arg(describe(b), b->text()).arg(r.x()).arg(r.y()).arg(r.width()).arg(r.height())
+                   .arg(b->minimumSizeHint().width()).arg(b->minimumSizeHint().height())
+                   .arg(viewport.x()).arg(viewport.y()).arg(viewport.width()).arg(viewport.height());
+    }
+    return bad;
+  }
+  // The board emulator (10 s of 1 Hz / 3° on X at 5x) on a new
+  // pseudo-terminal, with `extra` arguments (faults); returns the terminal
+  // the emulator names on its first line, empty when it did not start.
+  static QString startBoard(QProcess& board, const QStringList& extra) {
+    board.setProgram(FOG_BOARD_EMU);
+    board.setArguments(QStringList({"--axis", "x", "--freq-hz", "1", "--amp-deg", "3", "--duration-s", "10", "--seed",
+                                    "3", "--speed", "5"}) +
+                       extra);
+    board.start();
+    if (!board.waitForStarted(10000)) return {};
+    QString pty;
+    QElapsedTimer waited;
+    waited.start();
+    while (pty.isEmpty() && waited.elapsed() < 10000) {
+      board.waitForReadyRead(100);
+      while (board.canReadLine()) {
+        const QString line = QString::fromUtf8(board.readLine()).trimmed();
+        if (line.startsWith("pty: ")) pty = line.mid(5);
+      }
+    }
+    return pty;
+  }
   static QByteArray sha256(const QString& path) {
     QFile f(path);
     if (!f.open(QIODevice::ReadOnly)) return {};
     return QCryptographicHash::hash(f.readAll(), QCryptographicHash::Sha256);
   }
   std::unique_ptr<MainWindow> window() {
+    QSettings().remove("state");  // each test starts from the defaults
     auto w = std::make_unique<MainWindow>();
     w->setSessionFolder(sessions_.path());
     w->resize(1400, 900);
@@ -103,6 +200,30 @@ class BenchUiTest : public QObject {
     QVERIFY(!button(*w, "runButton")->isEnabled());
     QVERIFY(button(*w, "runButton")->toolTip().contains("test point 1: frequency 30 Hz"));
     QVERIFY(w->findChild<QLabel*>("configureMessage")->text().contains("Cannot run"));
+
+    // Every problem is told, not only the first, in the GUI's units.
+    click(*w, "addPointButton");
+    setValue(editor, 1, PlanEditor::kFrequency, 1.0);
+    setValue(editor, 1, PlanEditor::kAmplitude, 50.0);
+    QVERIFY2(editor->problem().contains("test point 1: frequency 30 Hz") &&
+                 editor->problem().contains("test point 2: amplitude 50° is beyond the table limit of 45°"),
+             qPrintable(editor->problem()));
+    QVERIFY(!editor->problem().contains(" deg"));
+    QVERIFY(button(*w, "runButton")->toolTip().contains("test point 2: amplitude 50°"));
+    // The check column shows its whole text: the row is tall enough for it wrapped.
+    w->resize(1024, 700);
+    settle();
+    {
+      auto* table = editor->table();
+      auto* item = table->item(1, PlanEditor::kCheck);
+      const QRect cell = table->visualItemRect(item);
+      const QRect needed = table->fontMetrics().boundingRect(QRect(0, 0, cell.width() - 6, 10000),
+                                                             Qt::TextWordWrap, item->text());
+      QVERIFY2(needed.height() <= cell.height(),
+               qPrintable(QString("'%1' needs %2 px, has %3 (%4 px wide)").arg(item->text()).arg(needed.height()).arg(cell.height()).arg(cell.width())));
+    }
+    editor->table()->selectRow(1);
+    click(*w, "removePointButton");
 
     setValue(editor, 0, PlanEditor::kFrequency, 2.0);
     setValue(editor, 0, PlanEditor::kAmplitude, 3.0);
@@ -141,6 +262,13 @@ class BenchUiTest : public QObject {
     QTRY_VERIFY_WITH_TIMEOUT(w->liveView()->traces().framesSeen() > 5000, 20000);
     QTRY_VERIFY_WITH_TIMEOUT(w->liveView()->shownTablePoints() > 100, 5000);
     QVERIFY(w->isRunning());
+    // The gyro's value axis is the table's, symmetric about zero.
+    const auto tableRange = w->liveView()->tablePlot()->axisScaleDiv(QwtPlot::yLeft);
+    const auto gyroRange = w->liveView()->gyroPlot()->axisScaleDiv(QwtPlot::yLeft);
+    QVERIFY(tableRange.upperBound() >= 3.0);  // the 3° swing fits
+    QCOMPARE(tableRange.lowerBound(), -tableRange.upperBound());
+    QCOMPARE(gyroRange.lowerBound(), tableRange.lowerBound());
+    QCOMPARE(gyroRange.upperBound(), tableRange.upperBound());
     QVERIFY(w->liveView()->planProgress() > 0.0);
 
     QTRY_VERIFY_WITH_TIMEOUT(!ended.isEmpty(), 60000);
@@ -244,6 +372,12 @@ class BenchUiTest : public QObject {
     QVERIFY(browser->selectPath(complete));
     click(*w, "reanalyseButton");
     QTRY_VERIFY_WITH_TIMEOUT(w->lastMessage().contains("re-analysed"), 30000);
+    // The confirmation is shown whole, not only in the status bar.
+    auto* confirmation = w->findChild<QMessageBox*>("infoDialog");
+    QVERIFY(confirmation && confirmation->isVisible());
+    QVERIFY(confirmation->text().contains(QFileInfo(complete).fileName()));
+    QVERIFY(confirmation->informativeText().contains(QDir::toNativeSeparators(complete)));
+    confirmation->close();
     auto reader = fog::session::SessionReader::open(complete.toStdString());
     QVERIFY(reader.isOk());
     QCOMPARE((*reader)->results()->size(), resultsBefore + 1);
@@ -267,6 +401,13 @@ class BenchUiTest : public QObject {
                                  compare->findChildren<fog::ui::ResultView*>()[0]->outcome() &&
                                  compare->findChildren<fog::ui::ResultView*>()[1]->outcome(),
                              30000);
+    // The Compare window fits a laptop too.
+    settle();
+    const QSize m = minimumOf(compare);
+    QVERIFY2(m.width() <= 1024 && m.height() <= 700,
+             qPrintable(QString("compare minimum %1x%2; too large: %3")
+                            .arg(m.width()).arg(m.height()).arg(tooLarge(compare, QSize(1024, 700)).join("; "))));
+    compare->close();
   }
 
   // Data from another bench (here: a CSV export of the quick run) is imported
@@ -369,6 +510,8 @@ class BenchUiTest : public QObject {
     QVERIFY(view->termTable()->rowCount() >= 1);
     QVERIFY(view->allanPlot()->itemList(QwtPlotItem::Rtti_PlotCurve).size() >= 3);  // measured, a term, the sum
     QVERIFY(view->summaryText().contains("Earth-corrected bias"));
+    for (int r = 0; r < view->termTable()->rowCount(); ++r)  // units as the GUI writes them
+      QVERIFY2(!view->termTable()->item(r, 3)->text().contains("deg"), qPrintable(view->termTable()->item(r, 3)->text()));
 
     // A swing-only result says how to get a noise analysis.
     QVERIFY(editor->loadPreset("quick"));
@@ -382,27 +525,11 @@ class BenchUiTest : public QObject {
   // pseudo-terminal, recorded by the window like a live board.
   void serialBoardIsRecordedFromThePort() {
     QProcess board;
-    board.setProgram(FOG_BOARD_EMU);
-    board.setArguments({"--axis", "x", "--freq-hz", "1", "--amp-deg", "3", "--duration-s", "10", "--seed", "3",
-                        "--speed", "5"});
-    board.start();
-    QVERIFY(board.waitForStarted(10000));
-    // The emulator names its pseudo-terminal on its first line.
-    QString pty;
-    QElapsedTimer waited;
-    waited.start();
-    while (pty.isEmpty() && waited.elapsed() < 10000) {
-      board.waitForReadyRead(100);
-      while (board.canReadLine()) {
-        const QString line = QString::fromUtf8(board.readLine()).trimmed();
-        if (line.startsWith("pty: ")) pty = line.mid(5);
-      }
-    }
+    const QString pty = startBoard(board, {});
     QVERIFY2(!pty.isEmpty(), board.readAllStandardError().constData());
     auto w = window();
     QSignalSpy ended(w.get(), &MainWindow::runEnded);
-    auto* source = w->findChild<QComboBox*>("sourceCombo");
-    source->setCurrentIndex(source->findData("serial"));
+    w->setSourceKind(MainWindow::SourceKind::kSerial);
     w->findChild<QComboBox*>("portCombo")->setCurrentText(pty);
     QVERIFY2(button(*w, "runButton")->isEnabled(), qPrintable(button(*w, "runButton")->toolTip()));
     click(*w, "runButton");
@@ -414,6 +541,438 @@ class BenchUiTest : public QObject {
     QVERIFY(QString::fromStdString(outcome->info.source).startsWith("serial " + pty));
     QVERIFY(outcome->report);
     QVERIFY(std::abs(outcome->report->points.front().lagMs - 0.4658) < 0.01);
+  }
+
+  // Issue 18: the window fits a laptop. Its minimum size is at most
+  // 1024 x 700; at 1024 x 700 every button of every view can be scrolled
+  // into view whole, the status bar is on screen; at 1366 x 768 no view
+  // needs a scroll bar at all. Run with a result shown (the quick run's
+  // session) so that the views hold what they hold in use.
+  void windowFitsALaptopScreen() {
+    auto w = window();
+    QString session;
+    for (int r = 0; r < w->sessionBrowser()->table()->rowCount(); ++r)
+      if (w->sessionBrowser()->table()->item(r, 5)->text() == "complete")
+        session = w->sessionBrowser()->table()->item(r, 0)->data(Qt::UserRole).toString();
+    QVERIFY(!session.isEmpty());
+    QSignalSpy opened(w.get(), &MainWindow::sessionOpened);
+    w->openSession(session);
+    QTRY_VERIFY_WITH_TIMEOUT(!opened.isEmpty(), 30000);
+    settle();
+    for (int view = MainWindow::kConfigure; view <= MainWindow::kNoise; ++view) {
+      w->showView(static_cast<MainWindow::View>(view));
+      settle();
+      const QSize m = minimumOf(w.get());
+      QVERIFY2(m.width() <= 1024 && m.height() <= 700,
+               qPrintable(QString("view %1: minimum %2x%3; too large: %4")
+                              .arg(view).arg(m.width()).arg(m.height())
+                              .arg(tooLarge(w.get(), QSize(1024, 700)).join("; "))));
+    }
+
+    w->resize(1024, 700);
+    settle();
+    QCOMPARE(w->size(), QSize(1024, 700));
+    for (int view = MainWindow::kConfigure; view <= MainWindow::kNoise; ++view) {
+      w->showView(static_cast<MainWindow::View>(view));
+      settle();
+      const QStringList bad = unreachableButtons(w.get());
+      QVERIFY2(bad.isEmpty(), qPrintable(QString("view %1 at 1024x700: %2").arg(view).arg(bad.join("; "))));
+      const QRect status(w->statusBar()->mapTo(w.get(), QPoint(0, 0)), w->statusBar()->size());
+      QVERIFY(w->statusBar()->isVisible() && w->rect().contains(status));
+    }
+
+    w->resize(1366, 768);
+    settle();
+    for (int view = MainWindow::kConfigure; view <= MainWindow::kNoise; ++view) {
+      w->showView(static_cast<MainWindow::View>(view));
+      settle();
+      auto* tabs = w->findChild<QTabWidget*>("viewTabs");
+      auto* area = qobject_cast<QScrollArea*>(tabs->currentWidget());
+      QVERIFY(area);
+      const QSize need = minimumOf(area->widget());
+      QVERIFY2(area->horizontalScrollBar()->maximum() == 0 && area->verticalScrollBar()->maximum() == 0,
+               qPrintable(QString("view %1 at 1366x768 scrolls: needs %2x%3 in %4x%5; too large: %6")
+                              .arg(view).arg(need.width()).arg(need.height())
+                              .arg(area->viewport()->width()).arg(area->viewport()->height())
+                              .arg(tooLarge(area->widget(), area->viewport()->size()).join("; "))));
+    }
+  }
+
+  // Errors are shown whole in a message box that does not block (so the
+  // test, like an unattended bench, goes on) and whose text can be copied:
+  // a file that is not a session, a folder that is not a CSV export.
+  void errorsAreShownWholeAndCopyable() {
+    auto w = window();
+    QTemporaryDir dir;
+    const QString path = dir.filePath("broken.fbs");
+    {
+      QFile f(path);
+      QVERIFY(f.open(QIODevice::WriteOnly));
+      f.write(QByteArray("this is not a session file, it was cut off by a full disk ").repeated(20));
+    }
+    const auto expected = fog::session::SessionReader::open(path.toStdString());
+    QVERIFY(!expected.isOk());
+    const QString reason = fog::ui::displayUnits(QString::fromStdString(expected.status().message()));
+    QVERIFY(reason.size() > 20);
+    QSignalSpy opened(w.get(), &MainWindow::sessionOpened);
+    w->openSession(path);
+    QTRY_VERIFY_WITH_TIMEOUT(!opened.isEmpty(), 30000);
+    QCOMPARE(opened.front().front().toBool(), false);
+    auto* box = w->findChild<QMessageBox*>("errorDialog");
+    QVERIFY(box);
+    QVERIFY(box->isVisible());
+    QVERIFY(!box->isModal());
+    QVERIFY2(box->text().contains("broken.fbs"), qPrintable(box->text()));
+    QVERIFY2(box->informativeText().contains(reason), qPrintable(box->informativeText()));
+    QVERIFY(box->informativeText().contains(QDir::toNativeSeparators(path)));
+    QVERIFY(box->textInteractionFlags() & Qt::TextSelectableByMouse);
+
+    // Replaying it: the run is refused with the same reason.
+    QSignalSpy ended(w.get(), &MainWindow::runEnded);
+    w->useReplay(path, 0.0);
+    click(*w, "runButton");
+    QTRY_VERIFY_WITH_TIMEOUT(!ended.isEmpty(), 30000);
+    QCOMPARE(ended.front().front().toBool(), false);
+    QVERIFY(!w->isRunning());
+    QCOMPARE(box->text(), QString("Run failed"));
+    QVERIFY2(box->informativeText().contains(reason), qPrintable(box->informativeText()));
+
+    // The next error replaces the text of the open box: the core's whole
+    // reason for refusing a folder that is not in the CSV layout.
+    QTemporaryDir empty;
+    const auto csv = fog::io::importCsvDirectory(empty.path().toStdString());
+    QVERIFY(!csv.isOk());
+    QSignalSpy imported(w.get(), &MainWindow::importEnded);
+    w->importCsv(empty.path());
+    QTRY_VERIFY_WITH_TIMEOUT(!imported.isEmpty(), 30000);
+    QCOMPARE(w->findChildren<QMessageBox*>("errorDialog").size(), 1);
+    QVERIFY2(box->informativeText() == fog::ui::displayUnits(QString::fromStdString(csv.status().message())),
+             qPrintable(box->informativeText()));
+    box->close();
+  }
+
+  // A damaged session file is listed as unreadable with its reason (not
+  // counted among other files); the long reason is elided in the State
+  // column, whole in the tooltip, and lag and IMU delay stay in view.
+  void sessionsBrowserListsDamagedFilesWithoutLosingTheDelays() {
+    QString good;
+    {
+      auto w = window();
+      for (int r = 0; r < w->sessionBrowser()->table()->rowCount(); ++r)
+        if (w->sessionBrowser()->table()->item(r, 5)->text() == "complete")
+          good = w->sessionBrowser()->table()->item(r, 0)->data(Qt::UserRole).toString();
+    }
+    QVERIFY(!good.isEmpty());
+    QTemporaryDir dir;
+    QVERIFY(QFile::copy(good, dir.filePath("a-good.fbs")));
+    {
+      QFile f(dir.filePath("b-broken.fbs"));
+      QVERIFY(f.open(QIODevice::WriteOnly));
+      f.write(QByteArray(4096, 'x'));
+    }
+    // A session whose SQLite header was overwritten: a long reason.
+    QVERIFY(QFile::copy(good, dir.filePath("c-header.fbs")));
+    {
+      QFile f(dir.filePath("c-header.fbs"));
+      QVERIFY(f.open(QIODevice::ReadWrite));
+      f.write(QByteArray(16, '\0'));
+    }
+    {
+      QFile f(dir.filePath("notes.txt"));
+      QVERIFY(f.open(QIODevice::WriteOnly));
+      f.write("not a session\n");
+    }
+    auto w = window();
+    w->resize(1024, 700);
+    w->showView(MainWindow::kSessions);
+    auto* browser = w->sessionBrowser();
+    browser->setFolder(dir.path());
+    settle();
+    auto* table = browser->table();
+    QCOMPARE(table->rowCount(), 3);
+    const QString summary = w->findChild<QLabel*>("sessionSummary")->text();
+    QVERIFY2(summary.contains("1 session") && summary.contains("2 unreadable") && summary.contains("1 other file"),
+             qPrintable(summary));
+    for (int row : {1, 2}) {
+      auto* state = table->item(row, 5);
+      QVERIFY2(state->text().startsWith("unreadable: "), qPrintable(state->text()));
+      QCOMPARE(state->toolTip(), state->text());
+    }
+    auto* longest = table->item(2, 5);
+    QVERIFY(longest->text().contains("header"));
+    // The reason does not fit: the column elides it instead of widening.
+    QVERIFY(table->fontMetrics().horizontalAdvance(longest->text()) > table->columnWidth(5));
+    auto* header = table->horizontalHeader();
+    for (int column : {6, 7})
+      QVERIFY2(header->sectionViewportPosition(column) + header->sectionSize(column) <= table->viewport()->width(),
+               qPrintable(QString("column %1 ends at %2 of %3").arg(column)
+                              .arg(header->sectionViewportPosition(column) + header->sectionSize(column))
+                              .arg(table->viewport()->width())));
+    QVERIFY(!table->item(0, 6)->text().isEmpty() && table->item(0, 6)->text() != "-");
+  }
+
+  // File / Run / View / Tools / Help with the usual shortcuts; Run and Stop
+  // work from the keyboard; closing during a run asks first (without
+  // blocking) and "Stop the run and close" keeps what was recorded.
+  void menusShortcutsAndClosingDuringARun() {
+    auto w = window();
+    QStringList menus;
+    for (QAction* a : w->menuBar()->actions()) menus << a->text().remove('&');
+    QCOMPARE(menus, QStringList({"File", "Run", "View", "Tools", "Help"}));
+    const std::vector<std::pair<const char*, QKeySequence>> shortcuts = {
+        {"runAction", QKeySequence(QStringLiteral("Ctrl+R"))},
+        {"stopAction", QKeySequence(QStringLiteral("Ctrl+."))},
+        {"openSessionAction", QKeySequence(QKeySequence::Open)},
+        {"loadPlanAction", QKeySequence(QStringLiteral("Ctrl+L"))},
+        {"savePlanAction", QKeySequence(QKeySequence::Save)},
+        {"quitAction", QKeySequence(QStringLiteral("Ctrl+Q"))},
+        {"viewAction2", QKeySequence(QStringLiteral("Ctrl+3"))}};
+    for (const auto& [name, keys] : shortcuts) {
+      auto* action = w->findChild<QAction*>(name);
+      QVERIFY2(action, name);
+      QCOMPARE(action->shortcut(), keys);
+    }
+    QCOMPARE(QKeySequence(QKeySequence::Save).toString(), QString("Ctrl+S"));
+    QCOMPARE(QKeySequence(QKeySequence::Open).toString(), QString("Ctrl+O"));
+
+    // A shortcut typed on the keyboard reaches its action.
+    w->activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(w.get()));
+    QTest::keyClick(w.get(), Qt::Key_3, Qt::ControlModifier);
+    QCOMPARE(w->currentView(), MainWindow::kResults);
+    QTest::keyClick(w.get(), Qt::Key_1, Qt::ControlModifier);
+    QCOMPARE(w->currentView(), MainWindow::kConfigure);
+    QVERIFY(w->planEditor()->loadPreset("paper-fast"));  // 60 s at real time
+    w->useSimulator(1.0, 4);
+    QSignalSpy ended(w.get(), &MainWindow::runEnded);
+    auto* run = w->findChild<QAction*>("runAction");
+    auto* stop = w->findChild<QAction*>("stopAction");
+    QVERIFY(run->isEnabled() && !stop->isEnabled());
+    run->trigger();
+    QVERIFY(w->isRunning());
+    QVERIFY(!run->isEnabled() && stop->isEnabled());
+
+    // Closing asks; "Keep running" keeps running.
+    QVERIFY(!w->close());
+    auto* ask = w->findChild<QMessageBox*>("closeConfirmDialog");
+    QVERIFY(ask && ask->isVisible() && !ask->isModal());
+    QTest::mouseClick(ask->findChild<QPushButton*>("keepRunningButton"), Qt::LeftButton);
+    settle();
+    QVERIFY(w->isRunning() && w->isVisible());
+    QTRY_VERIFY_WITH_TIMEOUT(w->liveView()->traces().framesSeen() > 1500, 20000);
+    w->findChild<QAction*>("quitAction")->trigger();
+    ask = w->findChild<QMessageBox*>("closeConfirmDialog");
+    QVERIFY(ask && ask->isVisible());
+    QTest::mouseClick(ask->findChild<QPushButton*>("stopAndCloseButton"), Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(!ended.isEmpty(), 30000);
+    QTRY_VERIFY_WITH_TIMEOUT(!w->isVisible(), 5000);
+    QVERIFY(!w->isRunning());
+    QVERIFY(w->lastOutcome() && !w->lastOutcome()->complete);
+    QVERIFY(QString::fromStdString(w->lastOutcome()->incompleteReason).contains("stopped by the operator"));
+    // Stopped on request: not reported as an error.
+    auto* error = w->findChild<QMessageBox*>("errorDialog");
+    QVERIFY(!error || !error->isVisible());
+    const QString recorded = QFileInfo(QString::fromStdString(w->lastOutcome()->sessionPath)).absoluteFilePath();
+    QVERIFY(w->recentSessions().contains(recorded));
+    // File > Open recent lists it (newest first) and opens it.
+    auto* recent = w->findChild<QMenu*>("recentMenu");
+    QVERIFY(recent);
+    emit recent->aboutToShow();
+    QVERIFY(!recent->actions().isEmpty());
+    QAction* first = recent->actions().front();
+    QCOMPARE(first->text(), QFileInfo(recorded).fileName());
+    QSignalSpy opened(w.get(), &MainWindow::sessionOpened);
+    first->trigger();
+    QTRY_VERIFY_WITH_TIMEOUT(!opened.isEmpty(), 30000);
+    QCOMPARE(opened.front().front().toBool(), true);
+    QCOMPARE(QString::fromStdString(w->lastOutcome()->sessionPath), recorded);
+  }
+
+  // Plans save and load in the CLI's JSON plan format; a bad file is
+  // refused with the core's reason and leaves the plan alone.
+  void planFilesRoundTrip() {
+    auto w = window();
+    auto* editor = w->planEditor();
+    QVERIFY(editor->loadPreset("paper"));
+    setValue(editor, 1, PlanEditor::kAmplitude, 4.5);
+    QTemporaryDir dir;
+    const QString path = dir.filePath("plan.json");
+    const auto saved = w->savePlanFile(path);
+    QVERIFY2(saved.isOk(), saved.message().c_str());
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const auto parsed = fog::testPlanFromJson(file.readAll().toStdString());
+    QVERIFY(parsed.isOk());
+    QCOMPARE(parsed->points.size(), std::size_t(2));
+    QCOMPARE(parsed->points[1].amplitudeDeg, 4.5);
+
+    QVERIFY(editor->loadPreset("quick"));
+    QCOMPARE(editor->plan().points.size(), std::size_t(1));
+    const auto loaded = w->loadPlanFile(path);
+    QVERIFY2(loaded.isOk(), loaded.message().c_str());
+    const fog::TestPlan plan = editor->plan();
+    QCOMPARE(plan.points.size(), std::size_t(2));
+    QCOMPARE(plan.points[0].frequencyHz, 0.1);
+    QCOMPARE(plan.points[0].durationS, 294.0);
+    QCOMPARE(plan.points[1].amplitudeDeg, 4.5);
+    QCOMPARE(plan.restBetweenS, parsed->restBetweenS);
+
+    // The table position has no column: a plan file's survives an edit.
+    const QString positioned = dir.filePath("positioned.json");
+    QFile pf(positioned);
+    QVERIFY(pf.open(QIODevice::WriteOnly));
+    pf.write(R"({"rest_between_s":2,"points":[{"axis":"y","frequency_hz":1,"amplitude_deg":3,"duration_s":20,)"
+             R"("start_phase_deg":30,"position_deg":[30,0,45]}]})");
+    pf.close();
+    QVERIFY(w->loadPlanFile(positioned).isOk());
+    setValue(editor, 0, PlanEditor::kAmplitude, 2.5);
+    const fog::TestPlan edited = editor->plan();
+    QCOMPARE(edited.points[0].amplitudeDeg, 2.5);
+    QCOMPARE(edited.points[0].positionDeg[0], 30.0);
+    QCOMPARE(edited.points[0].positionDeg[2], 45.0);
+    QCOMPARE(edited.points[0].startPhaseDeg, 30.0);
+
+    const QString bad = dir.filePath("typo.json");
+    QFile typo(bad);
+    QVERIFY(typo.open(QIODevice::WriteOnly));
+    typo.write(R"({"points":[{"axis":"x","frequncy_hz":1,"amplitude_deg":3,"duration_s":20}]})");
+    typo.close();
+    const auto refused = w->loadPlanFile(bad);
+    QVERIFY(!refused.isOk());
+    QVERIFY2(QString::fromStdString(refused.message()).contains("frequncy_hz"), refused.message().c_str());
+    QCOMPARE(editor->plan().points.size(), std::size_t(1));  // the positioned plan stays
+    QCOMPARE(editor->plan().points[0].amplitudeDeg, 2.5);
+    QVERIFY(!w->loadPlanFile(dir.filePath("missing.json")).isOk());
+  }
+
+  // The plan, pace, operator, IMU model and serial are remembered across
+  // starts; a one-off folder (as --session-folder sets it) is not.
+  void choicesAreRememberedAcrossStarts() {
+    QSettings().remove("state");
+    QTemporaryDir oneOff;
+    {
+      MainWindow first;
+      first.setSessionFolder(sessions_.path());
+      QVERIFY(first.planEditor()->loadPreset("paper-fast"));
+      setValue(first.planEditor(), 0, PlanEditor::kDuration, 42.0);
+      auto* pace = first.findChild<QComboBox*>("speedCombo");
+      pace->setCurrentIndex(pace->findData(20.0));
+      first.findChild<QLineEdit*>("operatorEdit")->setText("Ann Lee");
+      first.findChild<QLineEdit*>("imuModelEdit")->setText("FOG-9");
+      first.findChild<QLineEdit*>("imuSerialEdit")->setText("SN-77");
+      first.setRemembering(false);
+      first.setSessionFolder(oneOff.path());
+      first.setRemembering(true);
+    }
+    MainWindow second;
+    const fog::TestPlan plan = second.planEditor()->plan();
+    QCOMPARE(plan.points.size(), std::size_t(1));
+    QCOMPARE(plan.points[0].frequencyHz, 1.0);
+    QCOMPARE(plan.points[0].durationS, 42.0);
+    QCOMPARE(second.findChild<QComboBox*>("speedCombo")->currentData().toDouble(), 20.0);
+    QCOMPARE(second.findChild<QLineEdit*>("operatorEdit")->text(), QString("Ann Lee"));
+    QCOMPARE(second.findChild<QLineEdit*>("imuModelEdit")->text(), QString("FOG-9"));
+    QCOMPARE(second.findChild<QLineEdit*>("imuSerialEdit")->text(), QString("SN-77"));
+    QCOMPARE(second.sessionFolder(), sessions_.path());
+  }
+
+  // The real program: --help answers without a display, and a one-off
+  // --session-folder leaves the remembered folder alone.
+  void commandLineHelpAndOneOffFolder() {
+    QTemporaryDir home;
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    for (const char* v : {"QT_QPA_PLATFORM", "DISPLAY", "WAYLAND_DISPLAY"}) env.remove(v);
+    env.insert("XDG_CONFIG_HOME", home.filePath("config"));
+    QProcess help;
+    help.setProcessEnvironment(env);
+    help.start(FOG_GUI, {"--help"});
+    QVERIFY(help.waitForFinished(30000));
+    QCOMPARE(help.exitStatus(), QProcess::NormalExit);
+    QCOMPARE(help.exitCode(), 0);
+    QVERIFY(QString::fromUtf8(help.readAllStandardOutput()).contains("--session-folder"));
+
+    QVERIFY(QDir().mkpath(home.filePath("config/fogbench")));
+    const QString conf = home.filePath("config/fogbench/fogbench.conf");
+    QVERIFY(QDir().mkpath(home.filePath("saved")));
+    {
+      QSettings settings(conf, QSettings::IniFormat);
+      settings.setValue("sessions/folder", home.filePath("saved"));
+    }
+    env.insert("QT_QPA_PLATFORM", "offscreen");
+    QProcess gui;
+    gui.setProcessEnvironment(env);
+    gui.start(FOG_GUI, {"--session-folder", home.filePath("once"), "--view", "configure", "--screenshot",
+                        home.filePath("configure.png")});
+    QVERIFY(gui.waitForFinished(60000));
+    QVERIFY2(gui.exitCode() == 0, gui.readAllStandardError().constData());
+    QVERIFY(QFileInfo(home.filePath("configure.png")).size() > 1000);
+    QSettings settings(conf, QSettings::IniFormat);
+    QCOMPARE(settings.value("sessions/folder").toString(), home.filePath("saved"));
+  }
+
+  // Exports default to the session's folder, named with the IMU serial and
+  // the recording date; the status bar says where; the folder can be opened.
+  void exportsGoNextToTheSession() {
+    auto w = window();
+    w->findChild<QLineEdit*>("imuSerialEdit")->setText("SN 77/b");
+    QVERIFY(w->planEditor()->loadPreset("quick"));
+    w->useSimulator(0.0, 6);
+    QSignalSpy ended(w.get(), &MainWindow::runEnded);
+    click(*w, "runButton");
+    QTRY_VERIFY_WITH_TIMEOUT(!ended.isEmpty(), 60000);
+    const auto* outcome = w->lastOutcome();
+    QVERIFY(outcome && !outcome->sessionPath.empty());
+    const QString folder = QFileInfo(QString::fromStdString(outcome->sessionPath)).absolutePath();
+    const QString date =
+        QDateTime::fromString(QString::fromStdString(outcome->info.createdUtc), Qt::ISODate).toUTC().toString("yyyyMMdd");
+    QVERIFY(!date.isEmpty());
+
+    const QString pdf = w->resultView()->defaultExportPath("calibration-report", "pdf");
+    QCOMPARE(QFileInfo(pdf).absolutePath(), folder);
+    QVERIFY2(QFileInfo(pdf).fileName().startsWith("calibration-report-SN_77_b-" + date), qPrintable(pdf));
+    QVERIFY(pdf.endsWith(".pdf"));
+    QVERIFY(!w->findChild<QAction*>("openExportFolderAction")->isEnabled() || w->lastExport().isEmpty());
+    const auto written = w->resultView()->exportReportTo(pdf, 0.8);
+    QVERIFY2(written.isOk(), written.message().c_str());
+    QVERIFY(QFile::exists(pdf));
+    QCOMPARE(w->lastExport(), pdf);
+    QVERIFY2(w->lastMessage().contains(QDir::toNativeSeparators(pdf)), qPrintable(w->lastMessage()));
+    QVERIFY(w->findChild<QAction*>("openExportFolderAction")->isEnabled());
+
+    auto* plot = w->resultView()->anglePlot();
+    const QString png = w->resultView()->defaultExportPath(plot->objectName(), "png");
+    QVERIFY2(QFileInfo(png).fileName().startsWith("anglePlot-SN_77_b-" + date), qPrintable(png));
+    QVERIFY(w->resultView()->exportPlotTo(plot, png).isOk());
+    QVERIFY(QFileInfo(png).size() > 500);
+    QCOMPARE(w->lastExport(), png);
+    QVERIFY(!w->resultView()->exportPlotTo(plot, "/nonexistent-dir/p.png").isOk());
+    QCOMPARE(w->lastExport(), png);
+  }
+
+  // A board whose port vanishes mid-run: the run ends incomplete by itself,
+  // and the reason is shown whole in the error box (not only in the status
+  // bar, where the frame counters cut it).
+  void aRunThatEndsEarlyIsExplainedWhole() {
+    QProcess board;
+    const QString pty = startBoard(board, {"--disconnect-at-s", "3"});
+    QVERIFY2(!pty.isEmpty(), board.readAllStandardError().constData());
+    auto w = window();
+    QSignalSpy ended(w.get(), &MainWindow::runEnded);
+    w->setSourceKind(MainWindow::SourceKind::kSerial);
+    w->findChild<QComboBox*>("portCombo")->setCurrentText(pty);
+    click(*w, "runButton");
+    QTRY_VERIFY_WITH_TIMEOUT(!ended.isEmpty(), 60000);
+    board.waitForFinished(20000);
+    const auto* outcome = w->lastOutcome();
+    QVERIFY(outcome);
+    QVERIFY(!outcome->complete);
+    const QString reason = QString::fromStdString(outcome->incompleteReason);
+    QVERIFY(!reason.isEmpty());
+    auto* box = w->findChild<QMessageBox*>("errorDialog");
+    QVERIFY(box && box->isVisible());
+    QCOMPARE(box->windowTitle(), QString("Run incomplete"));
+    QVERIFY2(box->informativeText().contains(fog::ui::displayUnits(reason)), qPrintable(box->informativeText()));
+    QVERIFY(box->textInteractionFlags() & Qt::TextSelectableByMouse);
   }
 
   // Plots export as PNG, SVG and PDF; a bad name is explained.
@@ -450,6 +1009,19 @@ class BenchUiTest : public QObject {
     QVERIFY(w->findChild<QAction*>("aboutAction"));
     QVERIFY(w->aboutText().contains(QString("fogbench %1").arg(FOG_VERSION)));
     QVERIFY(w->windowTitle().contains(FOG_VERSION));
+  }
+
+  // The core's ASCII units read as the GUI writes them everywhere else.
+  void unitsReadAsTheGuiWritesThem() {
+    using fog::ui::displayUnits;
+    QCOMPARE(displayUnits("amplitude 50 deg is beyond the table limit of 45 deg"),
+             QString("amplitude 50° is beyond the table limit of 45°"));
+    QCOMPARE(displayUnits("peak acceleration 3947.8 deg/s^2 exceeds the table limit of 3000 deg/s^2; lower it"),
+             QString("peak acceleration 3947.8 °/s² exceeds the table limit of 3000 °/s²; lower it"));
+    QCOMPARE(displayUnits("peak rate 628 deg/s"), QString("peak rate 628 °/s"));
+    QCOMPARE(displayUnits("deg/sqrt(h)"), QString("°/√h"));
+    QCOMPARE(displayUnits("deg/h/sqrt(h)"), QString("°/h/√h"));
+    QCOMPARE(displayUnits("a degree of freedom, 3 degrees"), QString("a degree of freedom, 3 degrees"));
   }
 
   void durationsReadWell() {

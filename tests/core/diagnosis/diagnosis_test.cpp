@@ -46,7 +46,7 @@ const EffectFit& fitOf(const Diagnosis& d, const std::string& name) {
 
 TEST(Diagnosis, CleanSessionHasNoGapAndNoVerdict) {
   const Diagnosis d = diagnoseWith({}, 21);
-  EXPECT_EQ(d.verdict, "none") << d.verdictReason;
+  EXPECT_EQ(d.verdict, "none") << d.verdictReason << "\n" << formatDiagnosisText(d);
   EXPECT_FALSE(d.gapSignificant);
   // The z-scores are calibrated: rms near 1 on every measured channel (the
   // table's was 1.46 while its replays had no spread, the gyro's ~0.2-0.6
@@ -86,19 +86,23 @@ TEST(Diagnosis, ScaleFactorErrorIsNamedFittedAndClosesTheHeldOutGap) {
   for (const char* k : {"name", "parameters", "heldout_shrink", "score"}) EXPECT_TRUE(top.contains(k)) << k;
 }
 
-// Cross-axis coupling of 150 urad: the other gyros see the swing in phase.
+// Gyro y sensing 150 urad of a rotation about x, gyro z -100 urad of one
+// about y: the other gyros see each swing in phase. The terms of the Z axis,
+// which the plan never swings, have no signature and stay at 0.
 TEST(Diagnosis, MisalignmentIsNamedAndRecovered) {
-  const Diagnosis d = diagnoseWith(EffectId::kMisalignment, {150.0}, 23);
+  const Diagnosis d = diagnoseWith(EffectId::kMisalignment, {0.0, 0.0, 150.0, 0.0, 0.0, -100.0}, 23);
   EXPECT_EQ(d.verdict, "misalignment") << d.verdictReason;
-  EXPECT_NEAR(fitOf(d, "misalignment").values[0], 150.0, 10.0);
+  const EffectFit& f = fitOf(d, "misalignment");
+  EXPECT_NEAR(f.values[2], 150.0, 10.0);   // m_yx
+  EXPECT_NEAR(f.values[5], -100.0, 10.0);  // m_zy
+  EXPECT_NEAR(f.values[0], 0.0, 10.0);     // m_xy: Y swings too, so it is fitted
+  EXPECT_EQ(f.values[1], 0.0);             // m_xz: Z never moves
+  EXPECT_EQ(f.standardErrors[3], 0.0);     // m_yz
 }
 
-// g-sensitivity only shows through the delay's frequency dependence (1 Hz vs
-// 0.1 Hz): the plan's two frequencies must separate it from a pure delay.
-// It came out ~25 % low while its signature (at 5 deg/h/g) was swamped by
-// the re-drawn pulse quantisation and the gyro-table cells' spread was
-// overstated; now within 5 %.
-TEST(Diagnosis, GSensitivityIsSeparatedFromAPureDelayByTwoFrequencies) {
+// g-sensitivity along each gyro's own axis: a swing about X tilts gravity
+// into the Y gyro (in quadrature with the angle there) and out of Z.
+TEST(Diagnosis, GSensitivityIsNamedFromTheCrossAxes) {
   const Diagnosis d = diagnoseWith(EffectId::kGSensitivity, {40.0}, 24);
   EXPECT_EQ(d.verdict, "g_sensitivity") << d.verdictReason;
   EXPECT_NEAR(fitOf(d, "g_sensitivity").values[0], 40.0, 2.0);

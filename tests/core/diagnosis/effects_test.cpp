@@ -117,33 +117,50 @@ TEST(EffectSignature, ScaleFactorNonlinearityGivesAmplitudeDependentGainAndThird
   EXPECT_NEAR(h3, 1e5 / 12.0 * r * r, 0.05 * 1e5 / 12.0 * r * r);
 }
 
-// Coupling m into the other gyros: their in-phase response is m (ppm = urad).
+// Misalignment m_yx and m_zx (gyro y / z sensing rotation about x): a swing
+// about X shows in the other gyros in phase with it, m ppm (ppm = urad);
+// the terms of axes that do not move show nothing.
 TEST(EffectSignature, MisalignmentCouplesTheSwingIntoTheOtherAxes) {
-  const auto f = features(onePoint(Axis::kX, 1.0, 3.0, 20.0), EffectId::kMisalignment, {1000.0});
+  const auto f = features(onePoint(Axis::kX, 1.0, 3.0, 20.0), EffectId::kMisalignment,
+                          {700.0, 700.0, 1000.0, 700.0, -500.0, 700.0});
+  const double expected[] = {0.0, 1000.0, -500.0};
   for (int a : {1, 2}) {
-    EXPECT_NEAR(feature(f.with, "cross_in_phase", a) - feature(f.clean, "cross_in_phase", a), 1000.0, 5.0);
+    EXPECT_NEAR(feature(f.with, "cross_in_phase", a) - feature(f.clean, "cross_in_phase", a), expected[a], 5.0);
     EXPECT_NEAR(feature(f.with, "cross_quadrature", a) - feature(f.clean, "cross_quadrature", a), 0.0, 5.0);
   }
 }
 
-// Rate error k*sin(theta) on X delays the gyro by k (deg/s) * (pi/180) / w^2;
-// 100 deg/h/g at 0.1 Hz: 1.227 ms, within 3 %. Nothing on Z.
-TEST(EffectSignature, GSensitivityDelayFallsWithFrequencySquaredAndSparesZ) {
-  const double w = kTwoPi * 0.1;
-  const double expectedUs = 100.0 / kSecondsPerHour * kRadPerDeg / (w * w) * 1e6;
-  const auto x = features(onePoint(Axis::kX, 0.1, 10.0, 40.0), EffectId::kGSensitivity, {100.0});
-  EXPECT_NEAR(feature(x.with, "delay") - feature(x.clean, "delay"), expectedUs, 0.03 * expectedUs);
-  const auto z = features(onePoint(Axis::kZ, 0.1, 10.0, 40.0), EffectId::kGSensitivity, {100.0});
-  EXPECT_NEAR(feature(z.with, "delay") - feature(z.clean, "delay"), 0.0, 0.01);
+// Each gyro's rate error is k times the specific force along it. A swing
+// about X by theta turns gravity into Y (f_y = -g sin theta) and out of Z
+// (f_z = -g cos theta); X sees none. Y's rate error -k sin(theta) integrates
+// to an angle in quadrature with the swing, k (pi/180) / w relative to it
+// (100 deg/h/g at 0.1 Hz / 10 deg: 772 ppm, within 3 %); Z's trend moves by
+// -k (1 - A^2/4); X's delay does not move.
+TEST(EffectSignature, GSensitivityActsAlongEachGyrosOwnSpecificForce) {
+  const double w = kTwoPi * 0.1, k = 100.0, amp = 10.0 * kRadPerDeg;
+  const double expectedPpm = k / kSecondsPerHour * kRadPerDeg / w * 1e6;
+  const auto x = features(onePoint(Axis::kX, 0.1, 10.0, 40.0), EffectId::kGSensitivity, {k});
+  EXPECT_NEAR(feature(x.with, "delay") - feature(x.clean, "delay"), 0.0, 0.05);
+  EXPECT_NEAR(std::abs(feature(x.with, "cross_quadrature", 1) - feature(x.clean, "cross_quadrature", 1)), expectedPpm,
+              0.03 * expectedPpm);
+  EXPECT_NEAR(feature(x.with, "cross_in_phase", 1) - feature(x.clean, "cross_in_phase", 1), 0.0, 0.03 * expectedPpm);
+  EXPECT_NEAR(feature(x.with, "trend", 2) - feature(x.clean, "trend", 2), -k * (1.0 - amp * amp / 4.0), 1.0);
 }
 
-// Sampled first-order filter (2 ms frames): delay atan2(q sin wT, 1 - q cos wT)/w, within 5 us.
-TEST(EffectSignature, FirstOrderLagDelayMatchesTheFilter) {
-  const double tau = 0.02, dt = 2e-3, q = std::exp(-dt / tau), w = kTwoPi * 1.0;
-  const auto f = features(onePoint(Axis::kX, 1.0, 3.0, 20.0), EffectId::kFirstOrderLag, {tau * 1e3});
-  const double expectedUs = std::atan2(q * std::sin(w * dt), 1.0 - q * std::cos(w * dt)) / w * 1e6;
-  EXPECT_NEAR(feature(f.with, "delay") - feature(f.clean, "delay"), expectedUs, 5.0);
-  EXPECT_LT(feature(f.with, "gain") - feature(f.clean, "gain"), -5000.0);  // |H| < 1
+// A continuous first-order lag of time constant tau delays a sinusoid of
+// angular frequency w by atan(w tau) / w and scales it by 1 / sqrt(1 + (w tau)^2),
+// however tau compares with the 2 ms frames: 0.3 ms -> 300.0 us (within
+// 3 us) and 20 ms -> 19896 us (within 20 us), gain -7810 ppm.
+TEST(EffectSignature, FirstOrderLagIsTheContinuousFilter) {
+  const double w = kTwoPi * 1.0;
+  for (double tau : {0.3e-3, 20e-3}) {
+    const auto f = features(onePoint(Axis::kX, 1.0, 3.0, 20.0), EffectId::kFirstOrderLag, {tau * 1e3});
+    const double expectedUs = std::atan(w * tau) / w * 1e6;
+    EXPECT_NEAR(feature(f.with, "delay") - feature(f.clean, "delay"), expectedUs, std::max(3.0, 1e-3 * expectedUs))
+        << "tau " << tau;
+    const double expectedGainPpm = (1.0 / std::sqrt(1.0 + w * w * tau * tau) - 1.0) * 1e6;
+    EXPECT_NEAR(feature(f.with, "gain") - feature(f.clean, "gain"), expectedGainPpm, 100.0) << "tau " << tau;
+  }
 }
 
 // Bias ramp d deg/h per minute: segment trends grow by d * dt / 60 s.
@@ -191,15 +208,15 @@ TEST(EffectSignature, DroppedFramesAreCountedAsLost) {
   EXPECT_EQ(feature(f.clean, "imu_lost"), 0.0);
 }
 
-// 10 deg latitude error: Y (north) gyro trend changes by
-// 15.041 (cos 50 - cos 40) deg/h, Z (up) by 15.041 (sin 50 - sin 40).
+// 10 deg latitude error at heading 0: the X (north) gyro's trend changes by
+// 15.041 (cos 50 - cos 40) deg/h, the Z (down) gyro's by -15.041 (sin 50 - sin 40).
 TEST(EffectSignature, EarthRateProjectionChangesTheTrends) {
   const auto f = features(onePoint(Axis::kX, 1.0, 3.0, 20.0), EffectId::kEarthRateProjection, {10.0, 0.0});
   const double c = kEarthRateDegPerH;
-  EXPECT_NEAR(feature(f.with, "trend", 1) - feature(f.clean, "trend", 1),
+  EXPECT_NEAR(feature(f.with, "trend", 0) - feature(f.clean, "trend", 0),
               c * (std::cos(50 * kRadPerDeg) - std::cos(40 * kRadPerDeg)), 0.05);
   EXPECT_NEAR(feature(f.with, "trend", 2) - feature(f.clean, "trend", 2),
-              c * (std::sin(50 * kRadPerDeg) - std::sin(40 * kRadPerDeg)), 0.05);
+              -c * (std::sin(50 * kRadPerDeg) - std::sin(40 * kRadPerDeg)), 0.05);
 }
 
 TEST(TimingAudit, CountsGapsAndMeasuresIntervals) {

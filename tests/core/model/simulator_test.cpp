@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "common/units.h"
+#include "model/attitude.h"
 #include "model/turntable.h"
 #include "protocol/recording_builder.h"
 
@@ -88,30 +89,131 @@ TEST(SimConfig, DefaultsAreThePapers) {
   EXPECT_DOUBLE_EQ(c.imuBoard.framePeriodS, 2e-3);
 }
 
-TEST(EarthParams, ProjectionOnUpAndNorthAxes) {
+// North-east-down, the table's x axis at the heading from north: at 30 deg
+// latitude x (north) senses Omega cos 30, z (down) -Omega sin 30; turned to
+// heading 90, x points east and y south.
+TEST(EarthParams, ProjectionAtTheTablesZero) {
   EarthParams e;
   e.latitudeDeg = 30.0;
-  EXPECT_NEAR(e.projectionDegPerH(Axis::kZ), kEarthRateDegPerH * 0.5, 1e-9);
-  EXPECT_NEAR(e.projectionDegPerH(Axis::kY), kEarthRateDegPerH * std::sqrt(3.0) / 2.0, 1e-9);
-  EXPECT_NEAR(e.projectionDegPerH(Axis::kX), 0.0, 1e-12);
+  EXPECT_NEAR(e.projectionDegPerH(Axis::kX), kEarthRateDegPerH * std::sqrt(3.0) / 2.0, 1e-9);
+  EXPECT_NEAR(e.projectionDegPerH(Axis::kY), 0.0, 1e-12);
+  EXPECT_NEAR(e.projectionDegPerH(Axis::kZ), -kEarthRateDegPerH * 0.5, 1e-9);
+  e.headingDeg = 90.0;
+  EXPECT_NEAR(e.projectionDegPerH(Axis::kX), 0.0, 1e-9);
+  EXPECT_NEAR(e.projectionDegPerH(Axis::kY), -kEarthRateDegPerH * std::sqrt(3.0) / 2.0, 1e-9);
+  TurntableParams table;
+  const Attitude att(e, table);
+  const Eigen::Vector3d w = att.earthRateBodyDegPerH(att.bodyToTable({0.0, 0.0, 0.0}));
+  EXPECT_NEAR(w[1], e.projectionDegPerH(Axis::kY), 1e-9);
+  EXPECT_NEAR(w[2], e.projectionDegPerH(Axis::kZ), 1e-9);
 }
 
-TEST(Turntable, SwingIsAnalyticAndContinuousBetweenPoints) {
+// Outer z, middle y, inner x: the inner axis is always along gyro x; the
+// middle axis turns with the inner one; the outer with both.
+TEST(Attitude, TableAxesInTheBodyFrame) {
+  const Attitude att(EarthParams{}, TurntableParams{});
+  const TableAngles at{90.0, 0.0, 0.0};  // inner x at 90 deg
+  EXPECT_TRUE(att.tableAxisInBody(Axis::kX, at).isApprox(Eigen::Vector3d(1, 0, 0), 1e-12));
+  // R_x(90)^T e_y = (0, 0, -1)... the middle axis y seen from the body after
+  // the inner frame turned +90 deg about x is body -z.
+  EXPECT_TRUE(att.tableAxisInBody(Axis::kY, at).isApprox(Eigen::Vector3d(0, 0, -1), 1e-12));
+  // A turn of one axis is a rotation of exactly its angle about its body direction.
+  const TableAngles a0{10.0, 20.0, 30.0}, a1{10.0, 20.5, 30.0};
+  const Eigen::Vector3d r = att.rotationBetweenDeg(att.bodyToTable(a0), att.bodyToTable(a1));
+  EXPECT_TRUE(r.isApprox(0.5 * att.tableAxisInBody(Axis::kY, a0), 1e-12)) << r.transpose();
+  // Gravity: level, the specific force is up (-z in north-east-down).
+  EXPECT_TRUE(att.specificForceBodyG(att.bodyToTable({0, 0, 0})).isApprox(Eigen::Vector3d(0, 0, -1), 1e-12));
+}
+
+TEST(Turntable, SwingsAboutItsPositionAndMovesOneAxisAtATime) {
   TestPlan plan;
-  plan.restBetweenS = 0.5;
+  plan.restBetweenS = 2.0;
   plan.points.push_back({Axis::kX, 1.0, 3.0, 2.25, 0.0, 0.0});  // ends at a quarter period: +3 deg
-  plan.points.push_back({Axis::kX, 0.5, 2.0, 4.0, 0.0, 0.0});
+  TestPoint second{Axis::kY, 0.5, 2.0, 4.0, 0.0, 0.0};
+  second.positionDeg = {0.0, 5.0, 30.0};  // swing Y about 5 deg with Z at 30 deg
+  plan.points.push_back(second);
+  ASSERT_TRUE(plan.validate(TurntableLimits{}).isOk());
   TurntableParams params;
   params.frequencyErrorPpm = 0.0;
   Turntable table(plan, params);
   const auto& s = table.schedule();
   ASSERT_EQ(s.size(), 2u);
   EXPECT_NEAR(table.anglesDeg(s[0].swingStartS + 0.25)[0], 3.0, 1e-12);
-  // Holds its last angle while resting, then swings about it.
-  EXPECT_NEAR(table.anglesDeg(s[0].recordEndS + 0.25)[0], 3.0, 1e-9);
-  EXPECT_NEAR(table.anglesDeg(s[1].swingStartS)[0], 3.0, 1e-9);
-  EXPECT_NEAR(table.anglesDeg(s[1].swingStartS + 0.5)[0], 5.0, 1e-9);
-  EXPECT_DOUBLE_EQ(table.anglesDeg(s[1].swingStartS + 0.5)[1], 0.0);
+  // The rest after point 1 moves X back to 0, then Y to 5, then Z to 30,
+  // each in a third of it, one after the other.
+  const double r0 = s[0].recordEndS;
+  EXPECT_NEAR(table.anglesDeg(r0 + 1e-9)[0], 3.0, 1e-6);
+  const auto third = table.anglesDeg(r0 + 2.0 / 3.0);
+  EXPECT_NEAR(third[0], 0.0, 1e-9);
+  EXPECT_NEAR(third[1], 0.0, 1e-9);
+  const auto mid = table.anglesDeg(r0 + 1.0);  // half-way through the Y move
+  EXPECT_NEAR(mid[1], 2.5, 1e-9);
+  EXPECT_DOUBLE_EQ(mid[2], 0.0);
+  const auto start = table.anglesDeg(s[1].swingStartS);
+  EXPECT_NEAR(start[1], 5.0, 1e-9);
+  EXPECT_NEAR(start[2], 30.0, 1e-9);
+  EXPECT_NEAR(table.anglesDeg(s[1].swingStartS + 0.5)[1], 7.0, 1e-9);  // 5 + 2 sin(pi/2)
+  // After the last point the table returns to zero.
+  const auto end = table.anglesDeg(table.endS());
+  for (double v : end) EXPECT_NEAR(v, 0.0, 1e-9);
+}
+
+TEST(TestPlan, MovesBetweenPointsAreCheckedAgainstTheLimits) {
+  TestPlan plan;
+  plan.restBetweenS = 0.2;
+  TestPoint p{Axis::kX, 1.0, 3.0, 10.0, 1.0, 0.0};
+  p.positionDeg = {0.0, 0.0, 90.0};
+  plan.points.push_back(p);
+  const Status s = plan.validate(TurntableLimits{});
+  ASSERT_FALSE(s.isOk());
+  EXPECT_NE(s.message().find("rest_between_s >="), std::string::npos) << s.message();
+  plan.restBetweenS = 2.0;
+  EXPECT_TRUE(plan.validate(TurntableLimits{}).isOk());
+  plan.restBetweenS = 0.0;
+  EXPECT_NE(plan.validate(TurntableLimits{}).message().find("no rest time"), std::string::npos);
+  const auto json = testPlanToJson(TestPlan{{p}, 2.0});
+  auto back = testPlanFromJson(json);
+  ASSERT_TRUE(back.isOk()) << json;
+  EXPECT_EQ(back->points[0].positionDeg[2], 90.0);
+}
+
+// The Earth rate turns in the body frame as the table swings: swinging X by
+// theta at latitude L and heading h, gyro z senses
+//   -sin(theta) * (-Omega cos L sin h) + cos(theta) * (-Omega sin L),
+// a term in phase with the angle of Omega cos L sin h sin A (1.9 deg/h at
+// 40 deg, heading 30, 10 deg). Noise off, pulses of 1e-7 deg: the summed
+// increments of gyro z match that integral, taken here on a 0.1-ms grid,
+// to 2e-6 deg.
+TEST(Simulator, EarthRateIsRotatedIntoTheBodyFrame) {
+  SimConfig c;
+  c.fog.arwDegPerSqrtH = 0.0;
+  c.fog.biasInstabilityDegPerH = 0.0;
+  c.fog.biasDegPerH = {0.0, 0.0, 0.0};
+  c.earth.latitudeDeg = 40.0;
+  c.earth.headingDeg = 30.0;
+  c.fog.pulseEquivalentDeg = 1e-7;
+  TestPlan plan;
+  plan.points.push_back({Axis::kX, 0.1, 10.0, 40.0, 0.0, 0.0});
+  auto run = simulate(c, plan);
+  ASSERT_TRUE(run.isOk());
+  auto rec = protocol::decodeRecording(run->bytes);
+  ASSERT_TRUE(rec.isOk());
+  const auto& tp = rec->testPoints.at(0);
+  const double lag = c.fog.ownDelayS() + c.imuBoard.boardDelayS();
+  const double om = kEarthRateDegPerH / kSecondsPerHour, lat = 40.0 * kRadPerDeg, h = 30.0 * kRadPerDeg;
+  Turntable table(plan, c.turntable);
+  const double t0 = tp.imu.front().timeS - lag, t1 = tp.imu.back().timeS - lag;
+  double expected = 0.0;
+  const int steps = static_cast<int>((t1 - t0) / 1e-4);
+  for (int k = 0; k < steps; ++k) {
+    const double t = t0 + (k + 0.5) * (t1 - t0) / steps;
+    const double th = table.anglesDeg(t)[0] * kRadPerDeg;
+    expected += (std::sin(th) * om * std::cos(lat) * std::sin(h) - std::cos(th) * om * std::sin(lat)) * (t1 - t0) / steps;
+  }
+  double sum = 0.0;
+  for (std::size_t k = 1; k < tp.imu.size(); ++k) sum += tp.imu[k].incrementDeg[2];
+  EXPECT_NEAR(sum, expected, 2e-6);
+  EXPECT_GT(std::abs(expected), 0.05);
 }
 
 // With every noise off, the pulses summed over a long run equal the motion
@@ -122,7 +224,7 @@ TEST(Simulator, PulseQuantisationDoesNotAccumulate) {
   c.fog.biasInstabilityDegPerH = 0.0;
   c.fog.biasDegPerH = {0.0, 0.0, 0.0};
   c.earth.latitudeDeg = 0.0;
-  c.earth.axisEnu[0] = {1, 0, 0};
+  c.earth.headingDeg = 90.0;  // x east: no Earth rate on it
   c.fog.pulseEquivalentDeg = 3.3e-4;
   TestPlan plan;
   plan.points.push_back({Axis::kX, 0.7, 5.0, 30.0, 0.0, 0.0});

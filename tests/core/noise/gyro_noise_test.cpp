@@ -58,8 +58,8 @@ TEST(GyroNoise, SimulatedStaticSegmentGivesItsNoiseTermsAndBias) {
   EXPECT_EQ(r.gyroAxis, Axis::kZ);
   EXPECT_NEAR(r.durationS, 1200.0, 0.01);
   EXPECT_NEAR(r.intervalS, 2e-3, 1e-9);
-  // Earth rate on Z (up) at 40 deg: 15.041067 sin 40 deg.
-  EXPECT_NEAR(r.earthRateDegPerH, 15.041067 * std::sin(40.0 * kRadPerDeg), 1e-9);
+  // Earth rate on Z (down) at 40 deg: -15.041067 sin 40 deg.
+  EXPECT_NEAR(r.earthRateDegPerH, -15.041067 * std::sin(40.0 * kRadPerDeg), 1e-9);
   EXPECT_NEAR(r.earthCorrectedBiasDegPerH, config.fog.biasDegPerH[2], 3.0 * r.biasStdDegPerH);
   EXPECT_LT(r.biasStdDegPerH, 1.0);
 

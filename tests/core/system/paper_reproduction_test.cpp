@@ -114,13 +114,11 @@ TEST(PaperReproduction, FirstOrderLagIsNotAPureDelay) {
   ASSERT_TRUE(report.isOk()) << report.status().toString();
   ASSERT_EQ(report->consistency.size(), 1u);
   EXPECT_FALSE(report->consistency[0].consistentWithPureDelay);
-  // Delay of the sampled first-order filter y += k*(x - y) every 2 ms,
-  // arg H = -atan2(q sin(wT), 1 - q cos(wT)) with q = 1 - k, on top of the
-  // chain's delay.
-  const double dt = 2e-3, q = std::exp(-dt / 0.02);
+  // Delay of the continuous first-order filter, atan(w tau) / w, on top of
+  // the chain's delay.
   for (const auto& p : report->points) {
     const double w = 2.0 * 3.141592653589793 * p.nominalFrequencyHz;
-    const double filterDelayS = std::atan2(q * std::sin(w * dt), 1.0 - q * std::cos(w * dt)) / w;
+    const double filterDelayS = std::atan(w * 0.02) / w;
     EXPECT_NEAR(p.lagMs, 0.4658 + filterDelayS * 1e3, 0.005) << p.nominalFrequencyHz << " Hz";
   }
 }

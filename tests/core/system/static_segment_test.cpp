@@ -71,12 +71,12 @@ TEST(StaticSegment, SimulatorHoldsTheTableAndTheGyroSeesBiasAndEarthRate) {
   // The table after the swing holds still too (exactly, to the encoder's micro-degree).
   const auto& last = rec.testPoints[2].table;
   for (const auto& t : last) ASSERT_EQ(t.angleDeg, last.front().angleDeg);
-  // Mean Z rate = bias 0.15 deg/h + Earth 15.041067 sin 40 deg; ARW 0.004
+  // Mean Z rate = bias 0.15 deg/h + Earth -15.041067 sin 40 deg (z down); ARW 0.004
   // deg/sqrt(h) over 30 s leaves 0.044 deg/h (1 sigma): 5 sigma allowed.
   double sum = 0.0;
   for (const auto& s : st.imu) sum += s.incrementDeg[2];
   const double rateDegPerH = sum / (st.imu.back().timeS - st.imu.front().timeS + 2e-3) * 3600.0;
-  const double expected = 0.15 + kEarthRateDegPerH * std::sin(40.0 * kRadPerDeg);
+  const double expected = 0.15 - kEarthRateDegPerH * std::sin(40.0 * kRadPerDeg);
   EXPECT_NEAR(rateDegPerH, expected, 0.22);
 }
 

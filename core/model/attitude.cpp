@@ -1,0 +1,67 @@
+#include "model/attitude.h"
+
+#include <cmath>
+
+#include "common/units.h"
+#include "model/sim_config.h"
+
+namespace fog::model {
+
+Eigen::Matrix3d axisRotation(Axis axis, double angleDeg) {
+  const double a = angleDeg * kRadPerDeg;
+  const double c = std::cos(a), s = std::sin(a);
+  Eigen::Matrix3d r;
+  switch (axis) {
+    case Axis::kX: r << 1, 0, 0, 0, c, -s, 0, s, c; break;
+    case Axis::kY: r << c, 0, s, 0, 1, 0, -s, 0, c; break;
+    case Axis::kZ: r << c, -s, 0, s, c, 0, 0, 0, 1; break;
+  }
+  return r;
+}
+
+Attitude::Attitude(const EarthParams& earth, const TurntableParams& table)
+    : heading_(axisRotation(Axis::kZ, earth.headingDeg)),
+      mounting_(axisRotation(Axis::kZ, table.mountingDeg[2]) * axisRotation(Axis::kY, table.mountingDeg[1]) *
+                axisRotation(Axis::kX, table.mountingDeg[0])),
+      order_(table.axisOrder),
+      earthLocalDegPerH_(Eigen::Vector3d::Map(earth.rateLocalDegPerH().data())) {}
+
+Eigen::Matrix3d Attitude::bodyToTable(const TableAngles& tableDeg) const {
+  Eigen::Matrix3d c = Eigen::Matrix3d::Identity();
+  for (Axis a : order_) c = c * axisRotation(a, tableDeg[static_cast<std::size_t>(a)]);
+  return c * mounting_;
+}
+
+Eigen::Vector3d Attitude::earthRateBodyDegPerH(const Eigen::Matrix3d& bodyToTable) const {
+  return (heading_ * bodyToTable).transpose() * earthLocalDegPerH_;
+}
+
+Eigen::Vector3d Attitude::specificForceBodyG(const Eigen::Matrix3d& bodyToTable) const {
+  // The heading turns about down: gravity looks the same in the table frame.
+  return bodyToTable.transpose() * Eigen::Vector3d(0.0, 0.0, -1.0);
+}
+
+Eigen::Vector3d Attitude::tableAxisInBody(Axis axis, const TableAngles& tableDeg) const {
+  // Axis k turns everything inside it: its direction in the body frame is
+  // e_k seen through the rotations of the axes inside it and the mounting.
+  Eigen::Matrix3d inner = Eigen::Matrix3d::Identity();
+  bool inside = false;
+  for (Axis a : order_) {
+    if (inside) inner = inner * axisRotation(a, tableDeg[static_cast<std::size_t>(a)]);
+    if (a == axis) inside = true;
+  }
+  return (inner * mounting_).transpose() * Eigen::Vector3d::Unit(static_cast<int>(axis));
+}
+
+Eigen::Vector3d Attitude::rotationBetweenDeg(const Eigen::Matrix3d& from, const Eigen::Matrix3d& to) const {
+  const Eigen::Matrix3d d = from.transpose() * to;  // body(from) -> body(to)
+  // Rotation vector of d: sin(theta) * axis from the antisymmetric part,
+  // cos(theta) from the trace; atan2 keeps small angles exact.
+  const Eigen::Vector3d v(0.5 * (d(2, 1) - d(1, 2)), 0.5 * (d(0, 2) - d(2, 0)), 0.5 * (d(1, 0) - d(0, 1)));
+  const double s = v.norm();
+  if (s == 0.0) return Eigen::Vector3d::Zero();
+  const double theta = std::atan2(s, 0.5 * (d.trace() - 1.0));
+  return v * (theta / s * kDegPerRad);
+}
+
+}  // namespace fog::model

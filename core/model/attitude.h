@@ -1,0 +1,66 @@
+#pragma once
+// The IMU's attitude on the three-axis table, and what it senses there.
+//
+// Frames (docs/simulator.md, "Geometry"):
+//  - local level frame: north-east-down (NED). Earth rate in it is
+//    Omega * (cos(lat), 0, -sin(lat)); gravity points along +down, so the
+//    specific force at rest is (0, 0, -1) g.
+//  - table frame: the table's axes at zero angles, the local frame turned by
+//    the heading about down (heading 0: table x north, y east, z down).
+//  - body frame: the IMU's gyro axes. With the table axes in order outer,
+//    middle, inner (default z, y, x) and the IMU mounted on the inner frame:
+//        C_bn = R_z(heading) R_outer(a_o) R_middle(a_m) R_inner(a_i) M
+//    where R_k(a) is the right-handed rotation by +a about axis k and
+//    M = R_z(yaw) R_y(pitch) R_x(roll) the mounting. With zero angles and
+//    mounting, gyro x senses table axis x, and so on.
+//
+// Pure functions of their arguments; thread-safe.
+
+#include <array>
+
+#include <Eigen/Core>
+
+#include "common/test_plan.h"
+
+namespace fog::model {
+
+struct EarthParams;
+struct TurntableParams;
+
+using TableAngles = std::array<double, kAxisCount>;  // deg, indexed by Axis
+
+class Attitude {
+ public:
+  Attitude(const EarthParams& earth, const TurntableParams& table);
+
+  // Body to local-level rotation for the attitude bodyToTable() (adds the heading).
+  Eigen::Matrix3d bodyToLocal(const Eigen::Matrix3d& bodyToTable) const { return heading_ * bodyToTable; }
+  // Body to table-frame rotation (the motion alone, no heading).
+  Eigen::Matrix3d bodyToTable(const TableAngles& tableDeg) const;
+
+  // Earth rate in the body frame, deg/h, for the attitude bodyToTable().
+  Eigen::Vector3d earthRateBodyDegPerH(const Eigen::Matrix3d& bodyToTable) const;
+  // Specific force of gravity at rest in the body frame, in g (|f| = 1).
+  Eigen::Vector3d specificForceBodyG(const Eigen::Matrix3d& bodyToTable) const;
+  // Direction, in the body frame, of table axis `axis` (unit vector): a rate
+  // about that axis is sensed by the gyros in these proportions.
+  Eigen::Vector3d tableAxisInBody(Axis axis, const TableAngles& tableDeg) const;
+
+  // The body's rotation from attitude `from` to attitude `to` as a rotation
+  // vector in the body frame, deg. For a motion of one table axis at a time
+  // this is exactly the integral of the body rate between the two instants
+  // (the rotation axis is fixed in the body); rotations must stay below 180
+  // deg between calls.
+  Eigen::Vector3d rotationBetweenDeg(const Eigen::Matrix3d& fromBodyToTable,
+                                     const Eigen::Matrix3d& toBodyToTable) const;
+
+ private:
+  Eigen::Matrix3d heading_, mounting_;
+  std::array<Axis, kAxisCount> order_{};  // outer to inner
+  Eigen::Vector3d earthLocalDegPerH_;
+};
+
+// The proper rotation by +angleDeg about table axis `axis`.
+Eigen::Matrix3d axisRotation(Axis axis, double angleDeg);
+
+}  // namespace fog::model

@@ -1,0 +1,261 @@
+#include "ui/configure_view.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QFileDialog>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QSplitter>
+#include <QVBoxLayout>
+#include <limits>
+
+#include "ui/plan_editor.h"
+#include "ui/serial/serial_source.h"
+
+namespace fog::ui {
+
+ConfigureView::ConfigureView(QWidget* parent) : QWidget(parent) {
+  auto* layout = new QHBoxLayout(this);
+  // The plan and the rest side by side; the operator moves the divider.
+  auto* split = new QSplitter(Qt::Horizontal);
+  split->setObjectName("configureSplitter");
+  split->setChildrenCollapsible(false);
+  layout->addWidget(split);
+
+  auto* planBox = new QGroupBox(tr("Test plan"));
+  auto* planLayout = new QVBoxLayout(planBox);
+  planEditor_ = new PlanEditor();
+  planEditor_->setObjectName("planEditor");
+  planLayout->addWidget(planEditor_);
+  split->addWidget(planBox);
+
+  auto* sideWidget = new QWidget();
+  auto* side = new QVBoxLayout(sideWidget);
+  side->setContentsMargins(0, 0, 0, 0);
+  auto* sourceBox = new QGroupBox(tr("Source"));
+  auto* sourceForm = new QFormLayout(sourceBox);
+  sourceCombo_ = new QComboBox();
+  sourceCombo_->setObjectName("sourceCombo");
+  sourceCombo_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+  sourceCombo_->setMinimumContentsLength(12);
+  sourceCombo_->addItem(tr("Built-in simulator"), static_cast<int>(SourceKind::kSimulator));
+  sourceCombo_->addItem(tr("Replay of a session"), static_cast<int>(SourceKind::kReplay));
+  sourceCombo_->addItem(tr("Serial sampling board"), static_cast<int>(SourceKind::kSerial));
+  speedCombo_ = new QComboBox();
+  speedCombo_->setObjectName("speedCombo");
+  speedCombo_->addItem(tr("Real time"), 1.0);
+  speedCombo_->addItem(tr("5× real time"), 5.0);
+  speedCombo_->addItem(tr("20× real time"), 20.0);
+  speedCombo_->addItem(tr("As fast as possible"), 0.0);
+  seedSpin_ = new QSpinBox();
+  seedSpin_->setObjectName("seedSpin");
+  seedSpin_->setRange(0, std::numeric_limits<int>::max());
+  seedSpin_->setValue(1);
+  seedSpin_->setToolTip(tr("Simulator seed: the same seed gives the same data"));
+  auto* replayRow = new QHBoxLayout();
+  replayEdit_ = new QLineEdit();
+  replayEdit_->setObjectName("replayEdit");
+  replayEdit_->setPlaceholderText(tr("session file (.fbs) to replay"));
+  auto* browse = new QPushButton(tr("Browse…"));
+  browse->setObjectName("browseReplayButton");
+  replayRow->addWidget(replayEdit_, 1);
+  replayRow->addWidget(browse);
+  sourceForm->addRow(tr("Source"), sourceCombo_);
+  // Pace and seed share a row: the column fits a laptop screen's height.
+  auto* paceRow = new QHBoxLayout();
+  paceRow->addWidget(speedCombo_, 1);
+  paceRow->addWidget(new QLabel(tr("Seed")));
+  paceRow->addWidget(seedSpin_);
+  sourceForm->addRow(tr("Pace"), paceRow);
+  sourceForm->addRow(tr("Replay"), replayRow);
+  auto* serialRow = new QHBoxLayout();
+  portCombo_ = new QComboBox();
+  portCombo_->setObjectName("portCombo");
+  portCombo_->setEditable(true);  // a device the system does not list, e.g. a pseudo-terminal
+  portCombo_->setToolTip(tr("The sampling board's serial port"));
+  portCombo_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+  portCombo_->setMinimumContentsLength(10);
+  baudCombo_ = new QComboBox();
+  baudCombo_->setObjectName("baudCombo");
+  baudCombo_->setEditable(true);
+  for (int baud : {921600, 460800, 230400, 115200, 1000000, 2000000}) baudCombo_->addItem(QString::number(baud));
+  auto* rescan = new QPushButton(tr("Rescan"));
+  rescan->setObjectName("rescanButton");
+  serialRow->addWidget(portCombo_, 1);
+  serialRow->addWidget(rescan);
+  sourceForm->addRow(tr("Serial port"), serialRow);
+  sourceForm->addRow(tr("Baud rate"), baudCombo_);
+  auto listPorts = [this] {
+    const QString current = portCombo_->currentText();
+    portCombo_->clear();
+    for (const auto& p : serial::availablePorts())
+      portCombo_->addItem(QString::fromStdString(p.systemLocation + (p.description.empty() ? "" : "  (" + p.description + ")")),
+                          QString::fromStdString(p.systemLocation));
+    if (!current.isEmpty()) portCombo_->setCurrentText(current);
+  };
+  connect(rescan, &QPushButton::clicked, this, listPorts);
+  listPorts();
+  side->addWidget(sourceBox);
+
+  auto* sessionBox = new QGroupBox(tr("Session"));
+  auto* sessionForm = new QFormLayout(sessionBox);
+  recordCheck_ = new QCheckBox(tr("Record a session file (crash-safe)"));
+  recordCheck_->setObjectName("recordCheck");
+  recordCheck_->setChecked(true);
+  auto* folderRow = new QHBoxLayout();
+  folderEdit_ = new QLineEdit();
+  folderEdit_->setObjectName("sessionFolderEdit");
+  auto* chooseFolder = new QPushButton(tr("Choose…"));
+  chooseFolder->setObjectName("chooseFolderButton");
+  folderRow->addWidget(folderEdit_, 1);
+  folderRow->addWidget(chooseFolder);
+  operatorEdit_ = new QLineEdit();
+  operatorEdit_->setObjectName("operatorEdit");
+  imuModelEdit_ = new QLineEdit();
+  imuModelEdit_->setObjectName("imuModelEdit");
+  imuSerialEdit_ = new QLineEdit();
+  imuSerialEdit_->setObjectName("imuSerialEdit");
+  notesEdit_ = new QLineEdit();
+  sessionForm->addRow(recordCheck_);
+  sessionForm->addRow(tr("Folder"), folderRow);
+  sessionForm->addRow(tr("Operator"), operatorEdit_);
+  sessionForm->addRow(tr("IMU model"), imuModelEdit_);
+  sessionForm->addRow(tr("IMU serial"), imuSerialEdit_);
+  sessionForm->addRow(tr("Notes"), notesEdit_);
+  side->addWidget(sessionBox);
+
+  auto* constantsBox = new QGroupBox(tr("Bench constants"));
+  auto* constantsLayout = new QHBoxLayout(constantsBox);  // side by side: saves height on a laptop
+  constantsLabel_ = new QLabel();
+  constantsLabel_->setObjectName("constantsLabel");
+
+  auto* edit = new QPushButton(tr("Edit…"));
+  edit->setToolTip(tr("Edit the bench constants"));
+  edit->setObjectName("editConstantsButton");
+  constantsLayout->addWidget(constantsLabel_, 1);
+  constantsLayout->addWidget(edit, 0, Qt::AlignTop);
+  side->addWidget(constantsBox);
+
+  message_ = new QLabel();
+  message_->setObjectName("configureMessage");
+  message_->setWordWrap(true);
+  side->addWidget(message_);
+  side->addStretch(1);
+  split->addWidget(sideWidget);
+  split->setStretchFactor(0, 3);
+  split->setStretchFactor(1, 2);
+
+
+  connect(sourceCombo_, qOverload<int>(&QComboBox::currentIndexChanged), this, &ConfigureView::sourceChanged);
+  connect(speedCombo_, qOverload<int>(&QComboBox::currentIndexChanged), this, &ConfigureView::paceChanged);
+  connect(replayEdit_, &QLineEdit::textChanged, this, &ConfigureView::runnabilityChanged);
+  connect(portCombo_, &QComboBox::currentTextChanged, this, &ConfigureView::runnabilityChanged);
+  for (QLineEdit* e : {operatorEdit_, imuModelEdit_, imuSerialEdit_})
+    connect(e, &QLineEdit::textChanged, this, &ConfigureView::identityChanged);
+  connect(browse, &QPushButton::clicked, this, [this] {
+    const QString path = QFileDialog::getOpenFileName(this, tr("Session to replay"), sessionFolder(),
+                                                      tr("fogbench sessions (*.fbs)"));
+    if (!path.isEmpty()) replayEdit_->setText(path);
+  });
+  connect(chooseFolder, &QPushButton::clicked, this, [this] {
+    const QString dir = QFileDialog::getExistingDirectory(this, tr("Session folder"), sessionFolder());
+    if (!dir.isEmpty()) emit folderChosen(dir);
+  });
+  connect(folderEdit_, &QLineEdit::editingFinished, this, [this] { emit folderChosen(folderEdit_->text()); });
+  connect(recordCheck_, &QCheckBox::toggled, folderEdit_, &QWidget::setEnabled);
+  connect(edit, &QPushButton::clicked, this, &ConfigureView::editBenchSettingsRequested);
+}
+
+ConfigureView::SourceKind ConfigureView::sourceKind() const {
+  return static_cast<SourceKind>(sourceCombo_->currentData().toInt());
+}
+
+void ConfigureView::setSourceKind(SourceKind kind) {
+  sourceCombo_->setCurrentIndex(sourceCombo_->findData(static_cast<int>(kind)));
+}
+
+double ConfigureView::pace() const { return speedCombo_->currentData().toDouble(); }
+
+void ConfigureView::setPace(double pace) {
+  const int i = speedCombo_->findData(pace);
+  if (i >= 0) {
+    speedCombo_->setCurrentIndex(i);
+    return;
+  }
+  speedCombo_->addItem(tr("%1× real time").arg(pace), pace);
+  speedCombo_->setCurrentIndex(speedCombo_->count() - 1);
+}
+
+int ConfigureView::seed() const { return seedSpin_->value(); }
+void ConfigureView::setSeed(int seed) { seedSpin_->setValue(seed); }
+QString ConfigureView::replayPath() const { return replayEdit_->text(); }
+void ConfigureView::setReplayPath(const QString& path) { replayEdit_->setText(path); }
+
+QString ConfigureView::serialPort() const {
+  // A listed port carries its device as data; a typed one is the text itself.
+  const int i = portCombo_->currentIndex();
+  if (i >= 0 && portCombo_->itemText(i) == portCombo_->currentText()) return portCombo_->itemData(i).toString();
+  return portCombo_->currentText().trimmed();
+}
+
+bool ConfigureView::baudRate(int* baud) const {
+  bool ok = false;
+  *baud = baudCombo_->currentText().toInt(&ok);
+  return ok;
+}
+
+QString ConfigureView::sessionFolder() const { return recordCheck_->isChecked() ? folderEdit_->text() : QString(); }
+
+void ConfigureView::setSessionFolder(const QString& folder) {
+  folderEdit_->setText(folder);
+  recordCheck_->setChecked(!folder.isEmpty());
+}
+
+QString ConfigureView::operatorName() const { return operatorEdit_->text(); }
+QString ConfigureView::imuModel() const { return imuModelEdit_->text(); }
+QString ConfigureView::imuSerial() const { return imuSerialEdit_->text(); }
+QString ConfigureView::notes() const { return notesEdit_->text(); }
+
+void ConfigureView::setIdentity(const QString& operatorName, const QString& imuModel, const QString& imuSerial) {
+  operatorEdit_->setText(operatorName);
+  imuModelEdit_->setText(imuModel);
+  imuSerialEdit_->setText(imuSerial);
+}
+
+void ConfigureView::showBenchSettings(const BenchSettings& s) {
+  // Line breaks of its own, no word wrap: a wrapping label would let the
+  // column be squeezed under its real height on a small screen.
+  constantsLabel_->setText(tr("table read delay %1 ms · board delay %2 ms\nlatitude %3° · pulse equivalent %4°\n"
+                              "counter %5 MHz / %6 bit")
+                               .arg(s.tableReadDelayMs)
+                               .arg(s.boardDelayMs)
+                               .arg(s.latitudeDeg)
+                               .arg(s.pulseEquivalentDeg)
+                               .arg(s.counterHz / 1e6)
+                               .arg(s.counterBits));
+}
+
+void ConfigureView::setMessage(const QString& html) { message_->setText(html); }
+
+void ConfigureView::setRunning(bool running) {
+  planEditor_->setReadOnly(running);
+  for (QWidget* w : std::initializer_list<QWidget*>{sourceCombo_, speedCombo_, seedSpin_, replayEdit_, recordCheck_,
+                                                    folderEdit_, portCombo_, baudCombo_})
+    w->setEnabled(!running);
+  if (!running) {
+    seedSpin_->setEnabled(sourceKind() == SourceKind::kSimulator);
+    replayEdit_->setEnabled(sourceKind() == SourceKind::kReplay);
+    const bool serial = sourceKind() == SourceKind::kSerial;
+    portCombo_->setEnabled(serial);
+    baudCombo_->setEnabled(serial);
+    speedCombo_->setEnabled(!serial);
+    folderEdit_->setEnabled(recordCheck_->isChecked());
+  }
+}
+
+}  // namespace fog::ui

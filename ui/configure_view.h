@@ -1,0 +1,97 @@
+#pragma once
+// The Configure view: the test plan beside the source (simulator, replay of
+// a session, serial sampling board; pace and seed), the session's identity
+// and where it is recorded, the bench constants and why a run cannot start.
+// It holds the operator's choices and tells when they change; the window
+// that owns it turns them into a run (MainWindow::buildRunRequest) and
+// remembers them.
+
+#include <QString>
+#include <QWidget>
+
+#include "common/session_info.h"
+
+class QCheckBox;
+class QComboBox;
+class QLabel;
+class QLineEdit;
+class QSpinBox;
+
+namespace fog::ui {
+
+class PlanEditor;
+
+class ConfigureView : public QWidget {
+  Q_OBJECT
+
+ public:
+  // Where a run's bytes come from.
+  enum class SourceKind { kSimulator = 0, kReplay, kSerial };
+
+  explicit ConfigureView(QWidget* parent = nullptr);
+
+  PlanEditor* planEditor() const { return planEditor_; }
+
+  SourceKind sourceKind() const;
+  void setSourceKind(SourceKind kind);
+  // X times real time, 0: as fast as possible. A pace not in the list is added.
+  double pace() const;
+  void setPace(double pace);
+  int seed() const;
+  void setSeed(int seed);
+  QString replayPath() const;
+  void setReplayPath(const QString& path);
+  // A listed port's device, or the text typed (e.g. a pseudo-terminal).
+  QString serialPort() const;
+  // The baud rate typed or chosen; false when it is not a whole number.
+  bool baudRate(int* baud) const;
+
+  // The folder sessions are recorded into; empty when recording is off.
+  QString sessionFolder() const;
+  // Shows `folder` and turns recording on (off for an empty folder).
+  void setSessionFolder(const QString& folder);
+
+  // Operator, IMU model and serial, notes.
+  QString operatorName() const;
+  QString imuModel() const;
+  QString imuSerial() const;
+  QString notes() const;
+  void setIdentity(const QString& operatorName, const QString& imuModel, const QString& imuSerial);
+
+  void showBenchSettings(const BenchSettings& settings);
+  // Rich text under the source and session: why a run cannot start, or how
+  // the last one ended.
+  void setMessage(const QString& html);
+  // During a run the plan, source and folder are locked.
+  void setRunning(bool running);
+
+ signals:
+  void sourceChanged();
+  // The replay file or the serial port changed: whether a run can start.
+  void runnabilityChanged();
+  void paceChanged();
+  // Operator, IMU model or serial edited.
+  void identityChanged();
+  // The operator chose or typed a session folder.
+  void folderChosen(const QString& folder);
+  void editBenchSettingsRequested();
+
+ private:
+  PlanEditor* planEditor_ = nullptr;
+  QComboBox* sourceCombo_ = nullptr;
+  QComboBox* speedCombo_ = nullptr;
+  QSpinBox* seedSpin_ = nullptr;
+  QLineEdit* replayEdit_ = nullptr;
+  QComboBox* portCombo_ = nullptr;
+  QComboBox* baudCombo_ = nullptr;
+  QCheckBox* recordCheck_ = nullptr;
+  QLineEdit* folderEdit_ = nullptr;
+  QLineEdit* operatorEdit_ = nullptr;
+  QLineEdit* imuModelEdit_ = nullptr;
+  QLineEdit* imuSerialEdit_ = nullptr;
+  QLineEdit* notesEdit_ = nullptr;
+  QLabel* message_ = nullptr;
+  QLabel* constantsLabel_ = nullptr;
+};
+
+}  // namespace fog::ui
