@@ -66,6 +66,8 @@ faults:
                       and accept no new connection (the heartbeat then stops the table)
   --interlock-after-start-s T [--interlock-s D]  trip the interlock T table seconds after the first swing
                       starts (every axis stopped, motion refused), closed again after D seconds
+  --board-vanish-after-start-s T  close the board's pty T table seconds after the first swing starts
+                      (for the host the board's port vanishes; the table goes on until told otherwise)
 )";
 
 void say(const std::string& line) {
@@ -148,14 +150,15 @@ int main(int argc, char** argv) {
                 {"exit-after-s", 600.0},
                 {"drop-link-after-start-s", -1.0},
                 {"interlock-after-start-s", -1.0},
-                {"interlock-s", 1e9}};
+                {"interlock-s", 1e9},
+                {"board-vanish-after-start-s", -1.0}};
   for (auto& n : nums) {
     auto v = args.number(n.name, n.value);
     if (!v) return failWith(v.status().message());
     n.value = *v;
   }
   const double speed = nums[0].value, heartbeatS = nums[2].value, exitAfterS = nums[9].value;
-  const double dropAfterS = nums[10].value;
+  const double dropAfterS = nums[10].value, boardVanishAfterS = nums[13].value;
   const int tcpPort = static_cast<int>(nums[1].value);
   for (auto& l : lim) {
     l.maxAmplitudeDeg = nums[3].value;
@@ -309,6 +312,16 @@ int main(int argc, char** argv) {
                     tableS - server.firstSwingStartS());
       say(b);
     }
+    if (sim && boardVanishAfterS >= 0.0 && server.firstSwingStartS() >= 0.0 &&
+        tableS >= server.firstSwingStartS() + boardVanishAfterS) {
+      ::close(boardFd);
+      boardFd = -1;
+      sim.reset();
+      char b[160];
+      std::snprintf(b, sizeof b, "board: vanished at table time %.3f s (%.3f s after the first swing started)", tableS,
+                    tableS - server.firstSwingStartS());
+      say(b);
+    }
     // The board's stream, up to now.
     if (sim) {
       boardBytes.clear();
@@ -333,7 +346,7 @@ int main(int argc, char** argv) {
     }
     // Done: every host that came has gone.
     const bool tableGone = hostSeen && clientFd < 0 && !ptyHostOpen;
-    const bool boardGone = !sim || (boardHostSeen && !boardOpen);
+    const bool boardGone = !sim || (boardHostSeen && !boardOpen);  // vanished on request counts as gone
     if (tableGone && boardGone) {
       bool rest = true;
       for (int a = 0; a < kAxisCount; ++a) rest = rest && emulated.mode(static_cast<Axis>(a), tableS) != table::AxisMode::kSwinging;

@@ -83,19 +83,41 @@ Status PlanRunner::runPoint(int index, const TestPoint& p) {
   const std::string label = pointLabel(index, p);
   const Axis axis = p.axis;
   activeAxis_ = axis;
-  const double centre = 0.0;
-  auto atRestAt = [&](const TableState& s) {
+  // The plan's table position for this point: the swing axis swings about
+  // its entry, the others hold theirs.
+  const auto& target = p.positionDeg;
+  const double centre = target[static_cast<std::size_t>(axis)];
+  auto allInPlace = [&](const TableState& s) {
     if (!s.known) return true;
-    const auto& a = s.axis(axis);
-    return a.mode == AxisMode::kRest && std::abs(a.positionDeg - centre) <= options_.positionToleranceDeg &&
-           std::abs(a.rateDegPerS) <= options_.restRateDegPerS;
+    for (int a = 0; a < kAxisCount; ++a) {
+      const auto& ax = s.axes[static_cast<std::size_t>(a)];
+      if (ax.mode != AxisMode::kRest || std::abs(ax.positionDeg - target[static_cast<std::size_t>(a)]) >
+                                            options_.positionToleranceDeg ||
+          std::abs(ax.rateDegPerS) > options_.restRateDegPerS)
+        return false;
+    }
+    return true;
   };
-  // Position and settle.
+  // Position and settle: every axis whose position differs (all of them
+  // when the driver cannot read the table).
   FOG_RETURN_IF_ERROR(tick());
-  FOG_RETURN_IF_ERROR(checkedState().status());
-  say(label + ": move " + axisLabel(axis) + " to " + num(centre) + " deg");
-  FOG_RETURN_IF_ERROR(controller_.moveTo(axis, centre));
-  FOG_RETURN_IF_ERROR(waitUntil(atRestAt, options_.moveTimeoutS, label + ": reaching " + num(centre) + " deg"));
+  FOG_ASSIGN_OR_RETURN(auto before, checkedState());
+  std::string where;
+  for (int a = 0; a < kAxisCount; ++a) {
+    const auto ax = static_cast<Axis>(a);
+    const double want = target[static_cast<std::size_t>(a)];
+    const auto& now = before.axes[static_cast<std::size_t>(a)];
+    // A table the driver cannot read (manual) is where the plan last put it.
+    const bool there = before.known ? now.mode == AxisMode::kRest &&
+                                          std::abs(now.positionDeg - want) <= options_.positionToleranceDeg
+                                    : lastTargetDeg_[static_cast<std::size_t>(a)] == want;
+    if (there && ax != axis) continue;
+    FOG_RETURN_IF_ERROR(controller_.moveTo(ax, want));
+    lastTargetDeg_[static_cast<std::size_t>(a)] = want;
+    where += std::string(where.empty() ? "" : ", ") + axisLabel(ax) + " to " + num(want) + " deg";
+  }
+  say(label + ": move " + where);
+  FOG_RETURN_IF_ERROR(waitUntil(allInPlace, options_.moveTimeoutS, label + ": reaching the table position"));
   // Swing.
   if (!p.isStatic()) {
     FOG_RETURN_IF_ERROR(controller_.configureSwing(axis, SwingSpec{p.frequencyHz, p.amplitudeDeg, centre}));
@@ -201,6 +223,7 @@ Status PlanRunner::bringToRest(bool& atRest) {
 
 RunnerResult PlanRunner::run(const TestPlan& plan, const std::atomic<bool>* stop) {
   stop_ = stop;
+  lastTargetDeg_ = {};
   RunnerResult result;
   lastHeartbeatS_ = -1e300;
   auto fail = [&](Status why) {

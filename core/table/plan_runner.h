@@ -4,13 +4,17 @@
 //   check the whole plan against the controller's limits (nothing moves if
 //   any point is beyond them)
 //   for each point:
-//     move the axis to the swing centre and wait until it is there at rest
+//     move the table to the point's position (TestPoint::positionDeg: the
+//     swing axis to its swing centre, the others to where they hold) and
+//     wait until it is there at rest
 //     configure the swing, start it, wait the point's settle time
 //     record: the PointRecorder watches the board's table-angle stream, checks
 //       the swing is the one planned and records the point's duration
 //     stop (bounded deceleration), wait until at rest, rest restBetweenS
 //
 // A static point (gyro noise) skips the swing: the axis is held at rest.
+// The swing starts at its centre, so TestPoint::startPhaseDeg is not
+// commanded (the protocol's swing has no phase; the analysis needs none).
 //
 // Safety: whatever ends the run early — the stop flag (Ctrl+C), a refused
 // command, a lost link, a fault, an interlock, an emergency stop, the
@@ -28,6 +32,7 @@
 // optionally sped up for emulators, or a fake in tests, so tests need no
 // sleeps. Not thread-safe; runs in the calling thread until done.
 
+#include <array>
 #include <atomic>
 #include <functional>
 #include <memory>
@@ -121,6 +126,7 @@ class PlanRunner {
   const std::atomic<bool>* stop_ = nullptr;
   double lastHeartbeatS_ = -1e300;
   Axis activeAxis_ = Axis::kX;
+  std::array<double, kAxisCount> lastTargetDeg_{};  // where the runner last put each axis
 };
 
 }  // namespace fog::table

@@ -99,7 +99,10 @@ SwingFit fitSwing(std::span<const TableSample> samples, Axis axis, double freque
 
 std::string swingMismatch(const SwingFit& fit, const TestPoint& p, const SwingCheckOptions& o) {
   if (!fit.ok) return "too few table samples to check the motion";
+  const double centre = p.positionDeg[static_cast<std::size_t>(p.axis)];
   if (p.isStatic()) {
+    if (std::abs(fit.centreDeg - centre) > o.centreToleranceDeg)
+      return std::string(axisLabel(p.axis)) + " rests at " + num(fit.centreDeg) + " deg, planned " + num(centre) + " deg";
     if (2.0 * fit.amplitudeDeg > o.restBandDeg)
       return std::string(axisLabel(p.axis)) + " moves " + num(2.0 * fit.amplitudeDeg) + " deg peak to peak; it should be at rest (within " +
              num(o.restBandDeg) + " deg)";
@@ -112,8 +115,8 @@ std::string swingMismatch(const SwingFit& fit, const TestPoint& p, const SwingCh
   if (std::abs(fit.amplitudeDeg - p.amplitudeDeg) > o.amplitudeTolerance * p.amplitudeDeg)
     return ax + " amplitude " + num(fit.amplitudeDeg) + " deg, planned " + num(p.amplitudeDeg) + " deg (tolerance " +
            num(o.amplitudeTolerance * 100) + " %)";
-  if (std::abs(fit.centreDeg) > o.centreToleranceDeg + 0.01 * p.amplitudeDeg)
-    return ax + " swings about " + num(fit.centreDeg) + " deg, planned 0 deg";
+  if (std::abs(fit.centreDeg - centre) > o.centreToleranceDeg + 0.01 * p.amplitudeDeg)
+    return ax + " swings about " + num(fit.centreDeg) + " deg, planned " + num(centre) + " deg";
   if (fit.rmsResidualDeg > o.steadyTolerance * p.amplitudeDeg)
     return ax + " is not a steady sinusoid yet (residual " + num(100.0 * fit.rmsResidualDeg / p.amplitudeDeg) +
            " % of the amplitude)";

@@ -10,7 +10,8 @@
 // squares fit of centre + a sin(wt) + b cos(wt) at the planned frequency, and
 // the same fit on each half of that window:
 //   amplitude within amplitudeTolerance (relative) of the plan,
-//   centre within centreToleranceDeg (+ 1 % of the amplitude),
+//   centre within centreToleranceDeg (+ 1 % of the amplitude) of the point's
+//     position (TestPoint::positionDeg of the swing axis),
 //   frequency within frequencyTolerance (relative; from the phase drift
 //     between the two halves),
 //   steady: RMS residual below steadyTolerance of the amplitude.

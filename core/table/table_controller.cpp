@@ -45,6 +45,12 @@ Status checkPlanAgainstLimits(const TestPlan& plan, const TableLimits& limits) {
     const std::string head = "test point " + std::to_string(i + 1) + " (" + axisLabel(p.axis) + " " +
                              num(p.frequencyHz) + " Hz / " + num(p.amplitudeDeg) + " deg): ";
     const std::string tail = std::string(" on ") + axisLabel(p.axis) + "; the plan was refused before any motion";
+    for (int a = 0; a < kAxisCount; ++a)
+      if (!std::isfinite(p.positionDeg[static_cast<std::size_t>(a)]) ||
+          std::abs(p.positionDeg[static_cast<std::size_t>(a)]) > limits.maxPositionDeg)
+        return outOfRange(head + "table position " + num(p.positionDeg[static_cast<std::size_t>(a)]) + " deg of " +
+                          axisLabel(static_cast<Axis>(a)) + " is beyond the table's +-" + num(limits.maxPositionDeg) +
+                          " deg; the plan was refused before any motion");
     if (p.isStatic()) continue;
     if (!(p.frequencyHz > 0.0) || !(p.amplitudeDeg > 0.0) || !std::isfinite(p.frequencyHz) ||
         !std::isfinite(p.amplitudeDeg))
@@ -53,7 +59,7 @@ Status checkPlanAgainstLimits(const TestPlan& plan, const TableLimits& limits) {
     const double rate = w * p.amplitudeDeg, accel = w * w * p.amplitudeDeg;
     if (p.amplitudeDeg > l.maxAmplitudeDeg)
       return outOfRange(head + "amplitude is beyond the table's " + num(l.maxAmplitudeDeg) + " deg" + tail);
-    if (p.amplitudeDeg > limits.maxPositionDeg)
+    if (std::abs(p.positionDeg[static_cast<std::size_t>(p.axis)]) + p.amplitudeDeg > limits.maxPositionDeg)
       return outOfRange(head + "the swing leaves the table's +-" + num(limits.maxPositionDeg) + " deg" + tail);
     if (p.frequencyHz > l.maxFrequencyHz)
       return outOfRange(head + "frequency is beyond the table's " + num(l.maxFrequencyHz) + " Hz" + tail);

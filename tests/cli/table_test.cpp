@@ -48,11 +48,13 @@ class TableBench : public ::testing::Test {
   fs::path dir_;
 };
 
-// Three axes, a few seconds each: X 2 Hz / 2 deg, Y 2 Hz / 1.5 deg, Z 1 Hz / 3 deg.
+// Three axes, a few seconds each: X 2 Hz / 2 deg, Y 2 Hz / 1.5 deg, Z 1 Hz / 3 deg
+// about 20 deg with Y held at 5 deg (the plan's table position).
 const char* kThreeAxisPlan = R"({"points":[
   {"axis":"x","frequency_hz":2,"amplitude_deg":2,"duration_s":4,"settle_s":1.5},
   {"axis":"y","frequency_hz":2,"amplitude_deg":1.5,"duration_s":4,"settle_s":1.5},
-  {"axis":"z","frequency_hz":1,"amplitude_deg":3,"duration_s":5,"settle_s":2}],"rest_between_s":0.5})";
+  {"axis":"z","frequency_hz":1,"amplitude_deg":3,"duration_s":5,"settle_s":2,"position_deg":[0,5,20]}],
+  "rest_between_s":0.5})";
 
 struct Emulator {
   std::unique_ptr<Child> child;
@@ -114,7 +116,7 @@ TEST_F(TableBench, AThreeAxisPlanRunsThroughTheWholeHardwarePathAndMeasuresTheTr
   // What the table did: three swings, in the plan's order.
   EXPECT_NE(emu.child->out.find("swing: X 2 Hz 2 deg about 0 deg started"), std::string::npos) << emu.child->out;
   EXPECT_LT(emu.child->out.find("swing: X 2 Hz"), emu.child->out.find("swing: Y 2 Hz 1.5 deg"));
-  EXPECT_LT(emu.child->out.find("swing: Y 2 Hz"), emu.child->out.find("swing: Z 1 Hz 3 deg"));
+  EXPECT_LT(emu.child->out.find("swing: Y 2 Hz"), emu.child->out.find("swing: Z 1 Hz 3 deg about 20 deg"));
   EXPECT_EQ(emu.child->out.find("heartbeat:"), std::string::npos) << "the host kept the heartbeat, then released it";
   // The report: three test points on X, Y, Z, each lag within max(5 sigma, 2 us) of the truth.
   const auto report = nlohmann::json::parse(cli.out);
@@ -140,9 +142,20 @@ TEST_F(TableBench, AThreeAxisPlanRunsThroughTheWholeHardwarePathAndMeasuresTheTr
   ASSERT_EQ(rec->testPoints.size(), 3u);
   EXPECT_EQ(rec->testPoints[2].axis, fog::Axis::kZ);
   EXPECT_NEAR(rec->testPoints[2].table.back().timeS - rec->testPoints[2].table.front().timeS, 5.0, 0.01);
+  // Z swung about 20 deg with Y held at 5 deg, as the plan placed the table.
+  double zMin = 1e9, zMax = -1e9;
+  for (const auto& t : rec->testPoints[2].table) {
+    zMin = std::min(zMin, t.angleDeg[2]);
+    zMax = std::max(zMax, t.angleDeg[2]);
+    ASSERT_NEAR(t.angleDeg[1], 5.0, 1e-3);
+  }
+  EXPECT_NEAR(0.5 * (zMin + zMax), 20.0, 0.01);
+  EXPECT_NEAR(0.5 * (zMax - zMin), 3.0, 0.01);
   const auto log = tableLog(session);
   EXPECT_TRUE(logHas(log, "command", "AXIS:X:SWING 2,2,0"));
   EXPECT_TRUE(logHas(log, "command", "AXIS:Z:START"));
+  EXPECT_TRUE(logHas(log, "command", "AXIS:Y:POS 5"));
+  EXPECT_TRUE(logHas(log, "command", "AXIS:Z:SWING 1,3,20"));
   EXPECT_TRUE(logHas(log, "command", "AXIS:Y:STOP"));
   EXPECT_TRUE(logHas(log, "reply", "fogbench,table-emu"));
   EXPECT_TRUE(logHas(log, "status", "Y swinging"));
@@ -184,13 +197,15 @@ TEST_F(TableBench, ALinkLostMidSwingLeavesTheHeartbeatToStopTheTableAndKeepsTheD
   auto emu = startEmulator({"--link", "tcp", "--drop-link-after-start-s", "3"});
   ASSERT_FALSE(emu.table.empty());
   const auto session = file("lost.fbs");
-  Child cli(cliRun(emu, writePlan(kThreeAxisPlan), session, {"--table-heartbeat-s", "0.5"}));
+  Child cli(cliRun(emu, writePlan(kThreeAxisPlan), session, {"--table-heartbeat-s", "1"}));
   const int code = cli.finish(120);
   // The host cannot stop the table any more: the controller's watchdog does.
-  EXPECT_FALSE(emu.child->waitForLine("(heartbeat: host quiet for more than 0.5 s; table brought to rest)", 30).empty())
+  EXPECT_FALSE(emu.child->waitForLine("(heartbeat: host quiet for more than 1 s; table brought to rest)", 30).empty())
       << emu.child->out;
   stopEmulator(emu);
   EXPECT_NE(emu.child->out.find("link: dropped"), std::string::npos);
+  // The watchdog acted after the link was dropped, not before.
+  EXPECT_LT(emu.child->out.find("link: dropped"), emu.child->out.find("heartbeat: host quiet"));
   EXPECT_TRUE(code == 0 || code == 1) << code << cli.err;
   EXPECT_NE(cli.err.find("run incomplete: table: point 1 (X 2 Hz / 2 deg): table link tcp:127.0.0.1:"), std::string::npos)
       << cli.err;
@@ -202,6 +217,30 @@ TEST_F(TableBench, ALinkLostMidSwingLeavesTheHeartbeatToStopTheTableAndKeepsTheD
   EXPECT_FALSE((*r)->complete());
   EXPECT_GT((*r)->rawByteCount(), 50000u) << "the board's stream is kept";
   EXPECT_TRUE(logHas(tableLog(session), "event", "out of step"));
+}
+
+TEST_F(TableBench, TheBoardVanishingMidSwingEndsTheRunAndTheBenchStopsTheTable) {
+  auto emu = startEmulator({"--link", "tcp", "--board-vanish-after-start-s", "3"});
+  ASSERT_FALSE(emu.table.empty());
+  const auto session = file("board-lost.fbs");
+  Child cli(cliRun(emu, writePlan(kThreeAxisPlan), session));
+  const int code = cli.finish(120);
+  // The bench still reaches the table: it stops it itself (no heartbeat needed).
+  ASSERT_FALSE(emu.child->waitForLine("(board: vanished)", 30).empty()) << emu.child->out;
+  stopEmulator(emu);
+  EXPECT_TRUE(code == 0 || code == 1) << cli.err;
+  EXPECT_NE(cli.err.find("run incomplete: serial port"), std::string::npos) << cli.err;
+  EXPECT_NE(cli.err.find("the board's stream ended"), std::string::npos) << cli.err;
+  EXPECT_NE(cli.err.find("table step: table at rest"), std::string::npos) << cli.err;
+  EXPECT_EQ(emu.child->out.find("heartbeat:"), std::string::npos) << emu.child->out;
+  EXPECT_EQ(emu.child->out.find("swing: Y"), std::string::npos);
+  auto r = fog::session::SessionReader::open(session);
+  ASSERT_TRUE(r.isOk());
+  EXPECT_FALSE((*r)->complete());
+  EXPECT_GT((*r)->rawByteCount(), 50000u);
+  const auto log = tableLog(session);
+  EXPECT_TRUE(logHas(log, "command", "STOP"));
+  EXPECT_TRUE(logHas(log, "step", "table at rest"));
 }
 
 TEST_F(TableBench, APlanBeyondTheTablesLimitsIsRefusedBeforeAnyMotion) {

@@ -148,6 +148,36 @@ TEST(PlanRunner, ARecordingThatNeverCompletesTimesOut) {
   EXPECT_TRUE(r.tableAtRest);
 }
 
+TEST(PlanRunner, TheTableGoesToEachPointsPositionAndSwingsAboutIt) {
+  Bench b;
+  TestPlan plan;
+  TestPoint p{Axis::kY, 1.0, 2.0, 3.0, 1.0};
+  p.positionDeg = {10.0, -4.0, -5.0};
+  plan.points = {p};
+  auto r = b.runner.run(plan, nullptr);
+  ASSERT_TRUE(r.status.isOk()) << r.status.message();
+  EXPECT_EQ(b.table.log, (std::vector<std::string>{"move x", "move y", "move z", "swing y", "start y", "stop y", "release"}));
+  EXPECT_EQ(b.table.swing.centreDeg, -4.0);
+  EXPECT_EQ(b.table.cmd[0].target, 10.0);
+  EXPECT_EQ(b.table.cmd[2].target, -5.0);
+  bool said = false;
+  for (const auto& l : b.lines) said |= l.find("move X to 10 deg, Y to -4 deg, Z to -5 deg") != std::string::npos;
+  EXPECT_TRUE(said);
+}
+
+TEST(PlanRunner, APositionBeyondTheTablesRangeIsRefusedBeforeAnyMotion) {
+  Bench b;
+  b.table.tableLimits.maxPositionDeg = 90.0;
+  TestPlan plan = threeAxisPlan();
+  plan.points[2].positionDeg = {0.0, 0.0, 88.0};  // 88 + 5 deg of swing
+  auto r = b.runner.run(plan, nullptr);
+  EXPECT_EQ(r.status.code(), StatusCode::kOutOfRange);
+  EXPECT_NE(r.status.message().find("test point 3 (Z 0.5 Hz / 5 deg): the swing leaves the table's +-90 deg"),
+            std::string::npos)
+      << r.status.message();
+  EXPECT_TRUE(b.table.log.empty());
+}
+
 TEST(PlanRunner, AStaticPointHoldsTheAxisAtRest) {
   Bench b;
   TestPlan plan;

@@ -68,6 +68,12 @@ TEST(SwingCheck, MeasuresFrequencyAmplitudeAndCentre) {
       << swingMismatch(off, p, {});
   const auto small = fitSwing(sine(Axis::kY, 1.0, 2.3, 0.0, 0.0, 2.0), Axis::kY, 1.0);
   EXPECT_NE(swingMismatch(small, p, {}).find("amplitude 2.3 deg, planned 2.5 deg"), std::string::npos);
+  // About the point's table position.
+  TestPoint placed = p;
+  placed.positionDeg = {0.0, 20.0, 0.0};
+  const auto about20 = fitSwing(sine(Axis::kY, 1.0, 2.5, 20.0, 0.0, 2.0), Axis::kY, 1.0);
+  EXPECT_EQ(swingMismatch(about20, placed, {}), "");
+  EXPECT_EQ(swingMismatch(about20, p, {}), "Y swings about 20 deg, planned 0 deg");
   const auto wrongAxis = fitSwing(sine(Axis::kX, 1.0, 2.5, 0.0, 0.0, 2.0), Axis::kY, 1.0);
   EXPECT_NE(swingMismatch(wrongAxis, p, {}), "");
 }
