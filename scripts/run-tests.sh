@@ -4,8 +4,10 @@
 # (the `qt5` preset: only the GUI's targets, only the `ui` and `translations`
 # tests), so both Qt majors keep building and passing; a headless build
 # without Qt, which proves core/ and the CLI need no Qt, and runs its core
-# tests again; last, the libFuzzer targets run for a bounded time each
-# (FUZZ_SECONDS, default 60). ccache, when installed, is the compiler
+# tests again; a build with AddressSanitizer + UndefinedBehaviorSanitizer (the
+# `asan` preset) runs every test but the label `independent` again, and any
+# sanitizer report fails the run; last, the libFuzzer targets run for a
+# bounded time each (FUZZ_SECONDS, default 60). ccache, when installed, is the compiler
 # launcher, so the Qt 5 and headless legs reuse the release leg's Qt-free
 # objects.
 set -euo pipefail
@@ -46,6 +48,37 @@ cmake --preset headless "${launcher[@]}"
 cmake --build --preset headless
 ctest --preset headless --output-on-failure -j2
 
+stage "sanitizers: every test but the label independent under ASan + UBSan (preset asan)"
+# The preset's environment sets the sanitizer options and tests/lsan.supp
+# (Qt 5's offscreen leaks; nothing is suppressed on Qt 6). A report must fail
+# the run even from a process whose failure a test expects (a CLI error path
+# exits non-zero anyway) or whose output it does not show, so ASan and LSan
+# write their reports to files in a scratch folder, checked after the tests.
+# UBSan ignores log_path in GCC's combined runtime: it stops the process
+# (halt_on_error=1), and its "runtime error:" lines are looked for in the full
+# output of every test (Testing/Temporary/LastTest.log). docs/reliability.md.
+cmake --preset asan "${launcher[@]}" | tee build/.configure-asan.log
+echo "== asan build's GUI: $(qt_of build/.configure-asan.log) =="
+cmake --build --preset asan
+asan_dir="$(mktemp -d /tmp/fogbench-asan.XXXXXX)"
+echo "sanitizer reports go to: $asan_dir"
+asan_failed=0
+ASAN_OPTIONS="log_path=$asan_dir/report" ctest --preset asan --output-on-failure -j2 || asan_failed=1
+for report in "$asan_dir"/report.*; do
+  [ -e "$report" ] || continue
+  echo "!! sanitizer report $report:" >&2
+  cat "$report" >&2
+  asan_failed=1
+done
+if grep -n -E 'runtime error:|ERROR: (Address|Leak)Sanitizer' build/asan/Testing/Temporary/LastTest.log >&2; then
+  echo "!! sanitizer reports in the tests' output (build/asan/Testing/Temporary/LastTest.log)" >&2
+  asan_failed=1
+fi
+if [ "$asan_failed" != 0 ]; then
+  echo "!! the asan stage failed: see the failed tests and the sanitizer reports above" >&2
+  exit 1
+fi
+
 stage "fuzzing: sampling-board decoder, session reader, CSV import and plan JSON (libFuzzer + ASan/UBSan, clang)"
 # Bounded: FUZZ_SECONDS each (default 60). Seeds: the committed decoder corpus
 # and small simulated streams and sessions written by fog_fuzz_seed_corpus.
@@ -70,4 +103,4 @@ build/fuzz/fuzz/fog_fuzz_session -max_total_time="$fuzz_seconds" -print_final_st
   -artifact_prefix="$fuzz_dir/session-" "$fuzz_dir/session" "$fuzz_dir/seed-session"
 build/fuzz/fuzz/fog_fuzz_import -max_total_time="$fuzz_seconds" -print_final_stats=1 -max_len=65536 \
   -artifact_prefix="$fuzz_dir/import-" "$fuzz_dir/import" "$fuzz_dir/seed-import"
-stage "done: release (Qt 6), Qt 5, headless and fuzzing all passed"
+stage "done: release (Qt 6), Qt 5, headless, asan and fuzzing all passed"
