@@ -337,7 +337,10 @@ class BenchUiTest : public QObject {
     auto reader = fog::session::SessionReader::open(outcome->sessionPath);
     QVERIFY2(reader.isOk(), reader.status().message().c_str());
     QVERIFY(!(*reader)->complete());
-    QVERIFY((*reader)->rawByteCount() > 3000u * 26u);
+    // Every frame the live view saw is stored; the smallest frame (TABLE) is
+    // 25 bytes. The mean (26) is no bound: the mix of frames at the moment of
+    // the stop varies.
+    QVERIFY((*reader)->rawByteCount() >= 3000u * 25u);
     QVERIFY(button(*w, "runButton")->isEnabled());
   }
 
