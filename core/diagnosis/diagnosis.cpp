@@ -8,6 +8,8 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <limits>
+#include <optional>
 #include <map>
 #include <mutex>
 #include <nlohmann/json.hpp>
@@ -507,51 +509,70 @@ Status calibrateEarthRateAndBias(Replay& replay, const std::vector<FeatureKey>& 
 }
 
 
-}  // namespace
+// ---- The stages of diagnose(), in order -------------------------------------
+// Each takes what the ones before it established and hands on a typed result:
+// the session as analysed, the calibrated replay, the replays, the gap map,
+// the ranked candidates, the verdict's model.
 
-Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, const analysis::BenchConstants& constants,
-                           const DiagnosisOptions& options) {
-  const auto started = std::chrono::steady_clock::now();
-  Progress progress(options);
-  progress.stage("calibration", 0);
-  if (progress.cancelled()) return cancelledByCaller();
-  Diagnosis d;
-  Recording recording = input;
+// The session's test points that gave a delay, in recording order, with
+// their analysis.
+struct AnalysedSession {
+  Recording used;
+  std::vector<analysis::TestPointResult> results;  // one per used test point
+};
+
+Result<AnalysedSession> analyseSession(const Recording& input, const SessionInfo* info,
+                                       const analysis::BenchConstants& constants, std::vector<std::string>& notes) {
   // Raw pulse counts (a stream without its pulse equivalent) become degrees.
-  if (recording.pulseEquivalentDeg <= 0.0) {
+  std::optional<Recording> scaled;
+  if (input.pulseEquivalentDeg <= 0.0) {
     const double pe = constants.pulseEquivalentDeg > 0.0 ? constants.pulseEquivalentDeg
                                                         : (info ? info->bench.pulseEquivalentDeg : 0.0);
     if (pe <= 0.0) return invalidArgument("the stream does not state its pulse equivalent: give --pulse-equivalent-deg");
-    for (auto& tp : recording.testPoints)
+    scaled = input;
+    for (auto& tp : scaled->testPoints)
       for (auto& m : tp.imu)
         for (double& v : m.incrementDeg) v *= pe;
-    recording.pulseEquivalentDeg = pe;
+    scaled->pulseEquivalentDeg = pe;
   }
+  const Recording& recording = scaled ? *scaled : input;
   auto report = analysis::analyzeRecording(recording, constants);
   if (!report) return report.status();
 
-  // Keep the test points the analysis could measure, in recording order.
-  Recording used = recording;
-  used.testPoints.clear();
-  std::vector<const analysis::TestPointResult*> results;
+  AnalysedSession s;
+  s.used = recording;
+  s.used.testPoints.clear();
   for (const auto& tp : recording.testPoints)
     for (const auto& r : report->points)
       if (r.index == tp.index && r.axis == tp.axis) {
-        used.testPoints.push_back(tp);
-        results.push_back(&r);
+        s.used.testPoints.push_back(tp);
+        s.results.push_back(r);
         break;
       }
-  if (used.testPoints.empty()) return insufficientData("no test point gave a delay: nothing to diagnose");
-  for (const auto& f : report->failedPoints) d.notes.push_back("left out: " + f);
+  if (s.used.testPoints.empty()) return insufficientData("no test point gave a delay: nothing to diagnose");
+  for (const auto& f : report->failedPoints) notes.push_back("left out: " + f);
+  return s;
+}
 
-  // ---- Calibration -------------------------------------------------------
+// The replay calibrated to the session, and the session's own features
+// against the replay's reference.
+struct CalibratedReplay {
   Replay replay;
+  FeatureSet real;
+};
+
+Result<CalibratedReplay> calibrate(const AnalysedSession& session, const SessionInfo* info,
+                                   const DiagnosisOptions& options, Progress& progress,
+                                   std::vector<std::string>& notes) {
+  const Recording& used = session.used;
+  CalibratedReplay out;
+  Replay& replay = out.replay;
   replay.progress = &progress;
   Calibration& cal = replay.cal;
   model::SimConfig& c = cal.config;
-  c.samplingBoard.counterHz = recording.counterHz > 0 ? recording.counterHz : c.samplingBoard.counterHz;
-  c.samplingBoard.counterBits = recording.counterBits >= 16 ? recording.counterBits : c.samplingBoard.counterBits;
-  c.fog.pulseEquivalentDeg = recording.pulseEquivalentDeg;
+  c.samplingBoard.counterHz = used.counterHz > 0 ? used.counterHz : c.samplingBoard.counterHz;
+  c.samplingBoard.counterBits = used.counterBits >= 16 ? used.counterBits : c.samplingBoard.counterBits;
+  c.fog.pulseEquivalentDeg = used.pulseEquivalentDeg;
   if (info) c.earth.latitudeDeg = info->bench.latitudeDeg;
   replay.context.earth = c.earth;
   replay.context.expectedDrops = true;
@@ -570,7 +591,7 @@ Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, cons
   double wsum = 0.0, lagSum = 0.0;
   for (std::size_t i = 0; i < used.testPoints.size(); ++i) {
     const auto& tp = used.testPoints[i];
-    const auto& r = *results[i];
+    const auto& r = session.results[i];
     const double fitHz = r.tableFit.frequencyHz > 0 ? r.tableFit.frequencyHz : r.joint.frequencyHz;
     const double nominalHz = tp.nominalFrequencyHz > 0 ? tp.nominalFrequencyHz : fitHz;
     ppm.push_back((fitHz / nominalHz - 1.0) * 1e6);
@@ -614,12 +635,13 @@ Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, cons
   cal.arwDegPerSqrtH = median(arw);
   c.fog.arwDegPerSqrtH = cal.arwDegPerSqrtH;
   cal.lagMs = lagSum / wsum;
-  setLag(c, cal.lagMs * 1e-3, d.notes);
+  setLag(c, cal.lagMs * 1e-3, notes);
 
   auto realFeatures = extractFeatures(used, replay.ref);
   if (!realFeatures) return realFeatures.status();
-  const auto& keys = realFeatures->keys;
-  const std::vector<double>& real = realFeatures->values;
+  out.real = std::move(*realFeatures);
+  const auto& keys = out.real.keys;
+  const std::vector<double>& real = out.real.values;
   {
     std::vector<double> tableMs;
     for (std::size_t i = 0; i < keys.size(); ++i)
@@ -630,9 +652,16 @@ Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, cons
   }
   if (Status s = c.validate(); !s.isOk())
     return invalidArgument("the calibrated replay is not a valid chain: " + s.message());
-  FOG_RETURN_IF_ERROR(calibrateEarthRateAndBias(replay, keys, real, options, d.notes));
+  FOG_RETURN_IF_ERROR(calibrateEarthRateAndBias(replay, keys, real, options, notes));
+  return out;
+}
 
-  // ---- Replays: Monte Carlo spread and effect signatures -----------------
+
+
+// The replays diagnose() runs side by side: K Monte Carlo replays of the
+// nominal model (the first K jobs, seeds seed .. seed + K - 1), then one per
+// signature (an effect's parameter at +-reference, seed `seed`: common
+// random numbers with the first replay).
   // Signatures are central differences (+reference and -reference) where the
   // parameter can be negative: cells that respond to the square of an
   // amplitude (the residual variance takes up an encoder cyclic error's
@@ -640,14 +669,18 @@ Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, cons
   // through the reference that overstates them hundreds of times at the
   // small magnitudes actually fitted. The exact re-evaluation below keeps
   // the quadratic part. Other parameters take a one-sided difference.
-  struct Job {
-    std::uint64_t seed;
-    EffectList effects;
-    int effectIndex = -1, parameter = -1;
-    double sign = 1.0;
-  };
-  std::vector<Job> jobs;
-  const int K = std::max(2, options.monteCarloSeeds);
+struct SignatureJob {
+  std::uint64_t seed;
+  EffectList effects;
+  int effectIndex = -1, parameter = -1;  // in effectLibrary(); -1 for a Monte Carlo replay
+  double sign = 1.0;
+};
+
+int monteCarloReplays(const DiagnosisOptions& options) { return std::max(2, options.monteCarloSeeds); }
+
+std::vector<SignatureJob> signatureJobs(const DiagnosisOptions& options) {
+  std::vector<SignatureJob> jobs;
+  const int K = monteCarloReplays(options);
   for (int k = 0; k < K; ++k) jobs.push_back({options.seed + static_cast<std::uint64_t>(k), {}});
   const auto& library = effectLibrary();
   for (std::size_t e = 0; e < library.size(); ++e) {
@@ -661,36 +694,66 @@ Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, cons
       }
     }
   }
-  // What is left after these: the exact re-evaluations, a Ceres fit or two
-  // (a few rounds of a replay per parameter), a pair, the timing replay.
-  const int refineCount = std::max(0, options.refineTop);
-  progress.stage("replays", kCalibrationReplays + jobs.size() + 4 * static_cast<std::size_t>(refineCount) + 2);
-  std::vector<Result<FeatureSet>> outputs(jobs.size(), Status(StatusCode::kInternal, "not run"));
-  parallelFor(jobs.size(), options.threads, [&](std::size_t i) { outputs[i] = replay.run(jobs[i].seed, jobs[i].effects); });
-  if (progress.cancelled()) return cancelledByCaller();
-  for (std::size_t i = 0; i < outputs.size(); ++i) {
-    if (!outputs[i]) return Status(outputs[i].status().code(), "replay: " + outputs[i].status().message());
-    if (outputs[i]->values.size() != real.size())
-      return Status(StatusCode::kInternal, "the replay's features do not line up with the session's");
-  }
+  return jobs;
+}
 
-  // ---- Gap map -------------------------------------------------------------
-  const std::size_t n = real.size();
+// Replays beyond the calibration's and the signature jobs: the exact
+// re-evaluations, a Ceres fit or two (a few rounds of a replay per
+// parameter), a pair, the timing replay. An estimate, for the progress bar.
+std::size_t laterReplays(const DiagnosisOptions& options) {
+  return 4 * static_cast<std::size_t>(std::max(0, options.refineTop)) + 2;
+}
+
+Result<std::vector<FeatureSet>> runReplays(const Replay& replay, const std::vector<SignatureJob>& jobs,
+                                           std::size_t cells, int threads, const Progress& progress) {
+  std::vector<Result<FeatureSet>> outputs(jobs.size(), Status(StatusCode::kInternal, "not run"));
+  parallelFor(jobs.size(), threads, [&](std::size_t i) { outputs[i] = replay.run(jobs[i].seed, jobs[i].effects); });
+  if (progress.cancelled()) return cancelledByCaller();
+  std::vector<FeatureSet> features;
+  features.reserve(outputs.size());
+  for (auto& o : outputs) {
+    if (!o) return Status(o.status().code(), "replay: " + o.status().message());
+    if (o->values.size() != cells)
+      return Status(StatusCode::kInternal, "the replay's features do not line up with the session's");
+    features.push_back(std::move(*o));
+  }
+  return features;
+}
+
+// The gap map's statistics: each cell's replay mean and spread, its z, the
+// nuisance directions every fit includes, and z with them taken out.
+struct GapModel {
   Stats st;
+  std::vector<std::vector<double>> nuisance;  // columns, in z units
+  std::vector<double> z0;                     // st.z without the nuisance directions
+  std::vector<double> base;                   // the first replay's features (signatures are against it)
+  double chiTrain = 0.0, chiHeld = 0.0;       // chi2 of z0 on training / held-out cells
+};
+
+// Fills d's gap map and its headline numbers.
+GapModel buildGapMap(const FeatureSet& realFeatures, const std::vector<SignatureJob>& jobs,
+                     const std::vector<FeatureSet>& outputs, const DiagnosisOptions& options, Diagnosis& d) {
+  const auto& keys = realFeatures.keys;
+  const std::vector<double>& real = realFeatures.values;
+  const auto& library = effectLibrary();
+  const std::size_t n = real.size();
+  const int K = monteCarloReplays(options);
+  GapModel g;
+  Stats& st = g.st;
   st.mean.assign(n, 0.0);
   st.sigma.assign(n, 0.0);
   st.z.assign(n, 0.0);
   st.held.assign(n, false);
   for (int k = 0; k < K; ++k)
-    for (std::size_t i = 0; i < n; ++i) st.mean[i] += outputs[static_cast<std::size_t>(k)]->values[i] / K;
+    for (std::size_t i = 0; i < n; ++i) st.mean[i] += outputs[static_cast<std::size_t>(k)].values[i] / K;
   std::map<std::string, std::pair<double, double>> pooled;  // sum of squares, dof
   for (std::size_t i = 0; i < n; ++i) {
-    auto& g = pooled[groupKey(keys[i])];
+    auto& pool = pooled[groupKey(keys[i])];
     for (int k = 0; k < K; ++k) {
-      const double dv = outputs[static_cast<std::size_t>(k)]->values[i] - st.mean[i];
-      g.first += dv * dv;
+      const double dv = outputs[static_cast<std::size_t>(k)].values[i] - st.mean[i];
+      pool.first += dv * dv;
     }
-    g.second += K - 1;
+    pool.second += K - 1;
   }
   // Lost frames: the replay loses the expected share of frames evenly (the
   // random pattern of a recording cannot be replayed, only its rate), so a
@@ -708,7 +771,7 @@ Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, cons
       if (keys[i].unit == "frames") {
         total += std::max(0.0, real[i]);
         if (dropJob < jobs.size()) {
-          const double perUnit = (outputs[dropJob]->values[i] - outputs[0]->values[i]) /
+          const double perUnit = (outputs[dropJob].values[i] - outputs[0].values[i]) /
                                  library[static_cast<std::size_t>(jobs[dropJob].effectIndex)].parameters[0].reference;
           lostPerUnit[i] = std::max(0.0, perUnit);
           shares += lostPerUnit[i];
@@ -718,14 +781,14 @@ Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, cons
       if (keys[i].unit == "frames" && shares > 0.0) lostExpected[i] = total * lostPerUnit[i] / shares;
   }
   for (std::size_t i = 0; i < n; ++i) {
-    const auto& g = pooled[groupKey(keys[i])];
+    const auto& pool = pooled[groupKey(keys[i])];
     // Pooled over few replays: (1 + 1/K) for the uncertain mean, and
     // dof / (dof - 2) so that z^2 averages 1 (a z against an estimated spread
     // is t-distributed).
-    const double dof = g.second;
-    const double var = g.first / std::max(1.0, dof) * (1.0 + 1.0 / K) * (dof > 4.0 ? dof / (dof - 2.0) : 2.0);
+    const double dof = pool.second;
+    const double var = pool.first / std::max(1.0, dof) * (1.0 + 1.0 / K) * (dof > 4.0 ? dof / (dof - 2.0) : 2.0);
     const double fl = floorFor(keys[i], st.mean[i]);
-    const double formal = realFeatures->formalStd[i];
+    const double formal = realFeatures.formalStd[i];
     st.sigma[i] = std::sqrt(std::max(var, formal * formal) + fl * fl + lostExpected[i]);
     st.z[i] = (real[i] - st.mean[i]) / st.sigma[i];
     st.held[i] = keys[i].segment % 2 == 1;
@@ -736,7 +799,7 @@ Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, cons
   const double cells = static_cast<double>(n);
   d.gapSignificant = d.chiSquare - cells > options.gapSigma * std::sqrt(2.0 * cells);
   d.gapBefore = channelGaps(d.gapMap, false);
-  const std::vector<double>& base = outputs[0]->values;
+  g.base = outputs[0].values;
   // Nuisance directions the calibration already owns: one delay for the whole
   // session (the alias group) and one constant trend per gyro axis (bias).
   // Every fit includes them, so an effect is credited only with what they
@@ -744,7 +807,8 @@ Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, cons
   // The sample periods are calibrated from the recording too (an IMU whose
   // crystal is off by ppm): one mean interval per stream is the replay's,
   // and an effect is credited only with what varies beyond it.
-  std::vector<std::vector<double>> nuisance(3 + kAxisCount, std::vector<double>(n, 0.0));
+  auto& nuisance = g.nuisance;
+  nuisance.assign(3 + kAxisCount, std::vector<double>(n, 0.0));
   for (std::size_t i = 0; i < n; ++i) {
     if (keys[i].quantity == "delay") nuisance[0][i] = 1.0 / st.sigma[i];
     if (keys[i].quantity == "table_interval") nuisance[1][i] = 1.0 / st.sigma[i];
@@ -753,22 +817,45 @@ Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, cons
   }
   for (auto it = nuisance.begin(); it != nuisance.end();)
     it = std::all_of(it->begin(), it->end(), [](double v) { return v == 0.0; }) ? nuisance.erase(it) : it + 1;
-  const std::size_t nNuis = nuisance.size();
-  std::vector<double> z0 = st.z;
-  projectOut(nuisance, z0, st.held, true);
+  g.z0 = st.z;
+  projectOut(nuisance, g.z0, st.held, true);
+  g.chiTrain = chi2(g.z0, st.held, false);
+  g.chiHeld = chi2(g.z0, st.held, true);
+  return g;
+}
 
-  // ---- Effects: linear scores ----------------------------------------------
-  progress.stage("effects", 0);
-  struct Candidate {
-    std::size_t lib;
-    std::vector<std::vector<double>> cols;  // signature per parameter, in z units per parameter unit
-    EffectFit fit;
-    std::vector<double> zAfter;
-  };
+
+// An effect of the library with its signature and linear fit.
+struct Candidate {
+  std::size_t lib;                        // index in effectLibrary()
+  std::vector<std::vector<double>> cols;  // signature per parameter, in z units per parameter unit
+  EffectFit fit;
+  std::vector<double> zAfter;             // z with the effect's fit taken out
+};
+
+// Parameters whose signature is not zero everywhere (the others cost no
+// degree of freedom: a misalignment term of an axis the plan never swings).
+std::size_t parametersWithSignature(const Candidate& c) {
+  return static_cast<std::size_t>(std::count_if(c.cols.begin(), c.cols.end(), [](const auto& col) {
+    return std::any_of(col.begin(), col.end(), [](double v) { return v != 0.0; });
+  }));
+}
+
+// Every identifiable effect's signature (from the replays) fitted linearly
+// with the nuisance directions on the training cells; ranked by score.
+std::vector<Candidate> scoreEffects(const FeatureSet& realFeatures, const GapModel& g,
+                                    const std::vector<SignatureJob>& jobs, const std::vector<FeatureSet>& outputs,
+                                    const std::vector<GapCell>& gapMap) {
+  const auto& keys = realFeatures.keys;
+  const std::size_t n = keys.size();
+  const Stats& st = g.st;
+  const auto& nuisance = g.nuisance;
+  const std::size_t nNuis = nuisance.size();
+  const std::vector<double>& base = g.base;
+  const auto& library = effectLibrary();
   std::vector<Candidate> cands;
   std::size_t nTrain = 0, nHeld = 0;
   for (bool h : st.held) (h ? nHeld : nTrain)++;
-  const double chiTrain = chi2(z0, st.held, false), chiHeld = chi2(z0, st.held, true);
   for (std::size_t e = 0; e < library.size(); ++e) {
     if (!library[e].identifiable) continue;
     Candidate cand;
@@ -778,10 +865,10 @@ Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, cons
       const auto& param = library[e].parameters[static_cast<std::size_t>(jobs[j].parameter)];
       // The -reference job, when there is one, follows the +reference job.
       const bool central = param.canBeNegative;
-      const std::vector<double>& minus = central ? outputs[j + 1]->values : base;
+      const std::vector<double>& minus = central ? outputs[j + 1].values : base;
       const double span = central ? 2.0 * param.reference : param.reference;
       std::vector<double> col(n);
-      for (std::size_t i = 0; i < n; ++i) col[i] = (outputs[j]->values[i] - minus[i]) / span / st.sigma[i];
+      for (std::size_t i = 0; i < n; ++i) col[i] = (outputs[j].values[i] - minus[i]) / span / st.sigma[i];
       cand.cols.push_back(std::move(col));
     }
     EffectFit& f = cand.fit;
@@ -835,7 +922,6 @@ Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, cons
       f.note = "no signature in this session's features";
       f.values.assign(f.parameters.size(), 0.0);
       f.standardErrors.assign(f.parameters.size(), 0.0);
-      f.score = -1e9;
       cands.push_back(std::move(cand));
       continue;
     }
@@ -850,11 +936,9 @@ Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, cons
       zAll[i] = st.z[i] - pa;
     }
     // Parameters without a signature here cost no degree of freedom.
-    const double k = static_cast<double>(std::count_if(cand.cols.begin(), cand.cols.end(), [](const auto& col) {
-      return std::any_of(col.begin(), col.end(), [](double v) { return v != 0.0; });
-    }));
-    f.trainDeltaChi2 = chiTrain - chi2(zTrain, st.held, false);
-    f.heldOutDeltaChi2 = chiHeld - chi2(zTrain, st.held, true);
+    const double k = static_cast<double>(parametersWithSignature(cand));
+    f.trainDeltaChi2 = g.chiTrain - chi2(zTrain, st.held, false);
+    f.heldOutDeltaChi2 = g.chiHeld - chi2(zTrain, st.held, true);
     f.score = f.trainDeltaChi2 - k * std::log(static_cast<double>(nTrain));
     const double chiAfter = chi2(zAll, st.held, false) + chi2(zAll, st.held, true);
     const double scale = std::sqrt(std::max(1.0, chiAfter / std::max(1.0, static_cast<double>(n) - k)));
@@ -872,26 +956,59 @@ Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, cons
     }
     cand.zAfter = zTrain;
     HeldOutShrink total;
-    f.perChannel = shrinkPerChannel(d.gapMap, z0, zTrain, &total);
+    f.perChannel = shrinkPerChannel(gapMap, g.z0, zTrain, &total);
     f.heldOutShrink = total.shrink;
     cands.push_back(std::move(cand));
   }
-  std::sort(cands.begin(), cands.end(), [](const Candidate& a, const Candidate& b) { return a.fit.score > b.fit.score; });
+  // Best first; effects without a signature last.
+  std::stable_sort(cands.begin(), cands.end(), [](const Candidate& a, const Candidate& b) {
+    return a.fit.score.value_or(-std::numeric_limits<double>::infinity()) >
+           b.fit.score.value_or(-std::numeric_limits<double>::infinity());
+  });
+  return cands;
+}
 
-  // ---- Exact re-evaluation of the best few (Ceres for nonlinear ones) -------
-  progress.stage("refinement", 0);
-  if (progress.cancelled()) return cancelledByCaller();
+
+// What the replay with `effects` leaves of the gap: the session's features
+// against it in z units, the nuisance directions taken out. (Its seed is the
+// signatures', so only the effects differ from the base replay.)
+class ExactEvaluator {
+ public:
+  ExactEvaluator(const Replay& replay, const GapModel& g, const std::vector<double>& real, std::uint64_t seed)
+      : replay_(replay), g_(g), real_(real), seed_(seed) {}
+
+  bool operator()(const EffectList& effects, std::vector<double>& zOut) const {
+    auto f = replay_.run(seed_, effects);
+    const std::size_t n = real_.size();
+    if (!f || f->values.size() != n) return false;
+    zOut.resize(n);
+    for (std::size_t i = 0; i < n; ++i)
+      zOut[i] = (real_[i] - g_.st.mean[i] - (f->values[i] - g_.base[i])) / g_.st.sigma[i];
+    projectOut(g_.nuisance, zOut, g_.st.held, true);
+    return true;
+  }
+
+ private:
+  const Replay& replay_;
+  const GapModel& g_;
+  const std::vector<double>& real_;
+  std::uint64_t seed_;
+};
+
+// The best few candidates on the exact forward model: nonlinear ones fitted
+// with Ceres first (sequential: each Ceres evaluation is a replay), then all
+// of them evaluated exactly in parallel and kept or not.
+Status refineBest(std::vector<Candidate>& cands, const Replay& replay, const GapModel& g,
+                  const std::vector<double>& real, const std::vector<GapCell>& gapMap,
+                  const DiagnosisOptions& options, const Progress& progress) {
+  const std::size_t n = real.size();
+  const Stats& st = g.st;
+  const auto& library = effectLibrary();
+  const double lnN = std::log(static_cast<double>(n));
+  const ExactEvaluator exactZ(replay, g, real, options.seed);
   std::vector<std::size_t> trainRows;
   for (std::size_t i = 0; i < n; ++i)
     if (!st.held[i]) trainRows.push_back(i);
-  auto exactZ = [&](const EffectList& effects, std::vector<double>& zOut) -> bool {
-    auto f = replay.run(options.seed, effects);
-    if (!f || f->values.size() != n) return false;
-    zOut.resize(n);
-    for (std::size_t i = 0; i < n; ++i) zOut[i] = (real[i] - st.mean[i] - (f->values[i] - base[i])) / st.sigma[i];
-    projectOut(nuisance, zOut, st.held, true);
-    return true;
-  };
   const int refine = std::min<int>(options.refineTop, static_cast<int>(cands.size()));
   // Nonlinear fits first (sequential: each Ceres evaluation is a replay), then
   // the exact evaluations in parallel.
@@ -903,7 +1020,7 @@ Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, cons
     // at their linear values (a Ceres fit of a 5-min session costs ~15 s).
     if (spec.linear || cand.fit.trainDeltaChi2 < options.heldOutDeltaChi2) continue;
     const bool squared = spec.id == EffectId::kFirstOrderLag;
-    ForwardCost::Setup setup{&replay, spec.id, options.seed, &base, &st, &real, trainRows, &nuisance, squared,
+    ForwardCost::Setup setup{&replay, spec.id, options.seed, &g.base, &g.st, &real, trainRows, &g.nuisance, squared,
                              squared ? 0.3 : 0.03, {}, options.threads};
     std::vector<double> x = cand.fit.values;
     for (std::size_t j = 0; j < x.size(); ++j) {
@@ -926,6 +1043,13 @@ Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, cons
     so.linear_solver_type = ceres::DENSE_QR;
     ceres::Solver::Summary summary;
     ceres::Solve(so, &problem, &summary);
+    if (progress.cancelled()) return cancelledByCaller();
+    // A fit Ceres cannot vouch for (the replays failed, the cost went
+    // non-finite) keeps the linear values, and says so.
+    if (!summary.IsSolutionUsable()) {
+      cand.fit.note = "the Ceres fit on the forward model failed (" + summary.message + "); linear fit kept";
+      continue;
+    }
     cand.fit.values = cost->parametersOf(x);
     cand.fit.note = "fitted with Ceres on the forward model (" + std::to_string(summary.iterations.size()) + " iterations)";
   }
@@ -933,31 +1057,30 @@ Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, cons
   std::vector<char> okExact(static_cast<std::size_t>(refine), 0);
   parallelFor(static_cast<std::size_t>(refine), options.threads, [&](std::size_t r) {
     const Candidate& cand = cands[r];
-    okExact[r] = cand.fit.score > -1e8 && exactZ({{library[cand.lib].id, cand.fit.values}}, zExact[r]);
+    okExact[r] = cand.fit.score.has_value() && exactZ({{library[cand.lib].id, cand.fit.values}}, zExact[r]);
   });
-  const double lnN = std::log(static_cast<double>(n));
   for (int r = 0; r < refine; ++r) {
     Candidate& cand = cands[static_cast<std::size_t>(r)];
     if (!okExact[static_cast<std::size_t>(r)]) continue;
     const auto& z = zExact[static_cast<std::size_t>(r)];
     EffectFit& f = cand.fit;
     f.exact = true;
-    f.trainDeltaChi2 = chiTrain - chi2(z, st.held, false);
-    f.heldOutDeltaChi2 = chiHeld - chi2(z, st.held, true);
-    const double k = static_cast<double>(f.parameters.size());
+    f.trainDeltaChi2 = g.chiTrain - chi2(z, st.held, false);
+    f.heldOutDeltaChi2 = g.chiHeld - chi2(z, st.held, true);
+    const double k = static_cast<double>(parametersWithSignature(cand));
     HeldOutShrink total;
-    f.perChannel = shrinkPerChannel(d.gapMap, z0, z, &total);
+    f.perChannel = shrinkPerChannel(gapMap, g.z0, z, &total);
     f.heldOutShrink = total.shrink;
     const double allDelta = f.trainDeltaChi2 + f.heldOutDeltaChi2;
     // The exact replay re-draws the gyro's pulse quantisation (~10-20 chi2
     // units spread over the cells): it confirms an effect the linear fit
     // found worth its parameters (score > 0), never creates one.
-    f.kept = f.score > 0.0 && f.heldOutDeltaChi2 >= options.heldOutDeltaChi2 && allDelta > k * lnN;
+    f.kept = f.score.value_or(0.0) > 0.0 && f.heldOutDeltaChi2 >= options.heldOutDeltaChi2 && allDelta > k * lnN;
     // Residual check per channel: an effect that closes the gap in one
     // channel while opening one elsewhere (a lag that takes up a vibration
     // in the gyro residual but breaks the gyro-table harmonics) is not what
     // the data show.
-    const double worse = worstChannelWorsening(d.gapMap, z0, z);
+    const double worse = worstChannelWorsening(gapMap, g.z0, z);
     if (f.kept && worse > options.channelWorsening) {
       f.kept = false;
       f.note += std::string(f.note.empty() ? "" : "; ") + "not kept: makes the held-out " +
@@ -965,19 +1088,39 @@ Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, cons
     }
     cand.zAfter = z;
   }
+  return Status::ok();
+}
 
-  if (progress.cancelled()) return cancelledByCaller();
 
-  // ---- Two effects at once ---------------------------------------------------
-  progress.stage("pairs", 0);
+// The verdict's model: the kept effects (best first) and the z they leave.
+struct VerdictModel {
+  std::vector<std::size_t> members;  // indices in the candidates
+  std::vector<double> z;
+};
+
+// The best kept effect, and a second one when the two together close what
+// the first alone leaves, on the exact forward model.
+VerdictModel chooseModel(std::vector<Candidate>& cands, const Replay& replay, const GapModel& g,
+                         const std::vector<double>& real, const std::vector<GapCell>& gapMap,
+                         const DiagnosisOptions& options) {
+  const std::size_t n = real.size();
+  const Stats& st = g.st;
+  const auto& nuisance = g.nuisance;
+  const std::size_t nNuis = nuisance.size();
+  const auto& library = effectLibrary();
+  const double lnN = std::log(static_cast<double>(n));
+  const ExactEvaluator exactZ(replay, g, real, options.seed);
+  const int refine = std::min<int>(options.refineTop, static_cast<int>(cands.size()));
   std::vector<std::size_t> kept;
   for (int r = 0; r < refine; ++r)
     if (cands[static_cast<std::size_t>(r)].fit.kept) kept.push_back(static_cast<std::size_t>(r));
   std::sort(kept.begin(), kept.end(), [&](std::size_t a, std::size_t b) {
     return cands[a].fit.heldOutDeltaChi2 > cands[b].fit.heldOutDeltaChi2;
   });
-  std::vector<double> zModel = z0;
-  std::vector<std::size_t> model;
+  VerdictModel out;
+  std::vector<double>& zModel = out.z;
+  std::vector<std::size_t>& model = out.members;
+  zModel = g.z0;
   if (!kept.empty()) {
     model.push_back(kept[0]);
     zModel = cands[kept[0]].zAfter;
@@ -991,7 +1134,7 @@ Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, cons
     LinearFit bestFit;
     const std::size_t top = std::min<std::size_t>(cands.size(), 5);
     for (std::size_t j = 0; j < top; ++j) {
-      if (j == first || cands[j].fit.score < -1e8) continue;
+      if (j == first || !cands[j].fit.score) continue;
       std::vector<std::vector<double>> cols = nuisance;
       cols.insert(cols.end(), cands[first].cols.begin(), cands[first].cols.end());
       cols.insert(cols.end(), cands[j].cols.begin(), cands[j].cols.end());
@@ -1003,7 +1146,7 @@ Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, cons
         for (std::size_t c2 = 0; c2 < cols.size(); ++c2) pr += cols[c2][i] * lf.p(static_cast<Eigen::Index>(c2));
         zt[i] = st.z[i] - pr;
       }
-      const double t = chiTrain - chi2(zt, st.held, false);
+      const double t = g.chiTrain - chi2(zt, st.held, false);
       if (t > bestTrain) bestTrain = t, partner = j, bestFit = lf;
     }
     if (partner < cands.size()) {
@@ -1023,7 +1166,7 @@ Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, cons
         const double gainAll = gainHeld + chi2(zModel, st.held, false) - chi2(zPair, st.held, false);
         const double k2 = static_cast<double>(p2.size());
         if (gainHeld >= options.heldOutDeltaChi2 && gainAll > k2 * lnN &&
-            worstChannelWorsening(d.gapMap, zModel, zPair) <= options.channelWorsening) {
+            worstChannelWorsening(gapMap, zModel, zPair) <= options.channelWorsening) {
           model.push_back(partner);
           zModel = zPair;
           Candidate& pc = cands[partner];
@@ -1035,12 +1178,16 @@ Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, cons
       }
     }
   }
+  return out;
+}
 
-  if (progress.cancelled()) return cancelledByCaller();
-
-  // ---- Verdict ---------------------------------------------------------------
-  progress.stage("verdict", 0);
-  for (std::size_t i = 0; i < n; ++i) d.gapMap[i].zAfter = zModel[i];
+// The verdict from the model: its effects, what it leaves of the held-out
+// gap, and "none" / an effect / "unexplained" with the reason.
+void decideVerdict(const VerdictModel& chosen, const std::vector<Candidate>& cands, const std::vector<double>& z0,
+                   const DiagnosisOptions& options, Diagnosis& d) {
+  const std::vector<double>& zModel = chosen.z;
+  const std::vector<std::size_t>& model = chosen.members;
+  for (std::size_t i = 0; i < d.gapMap.size(); ++i) d.gapMap[i].zAfter = zModel[i];
   d.gapAfter = channelGaps(d.gapMap, true);
   HeldOutShrink total;
   d.heldOut = shrinkPerChannel(d.gapMap, z0, zModel, &total);
@@ -1083,9 +1230,11 @@ Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, cons
     d.verdictReason = "closes " + fmt("%.0f", 100.0 * total.shrink) + " % of the held-out gap";
   }
   for (auto& cand : cands) d.effects.push_back(cand.fit);
+}
 
-  // ---- Alias groups ----------------------------------------------------------
-  d.aliasGroups.push_back(
+std::vector<AliasGroup> aliasGroups(const Calibration& cal) {
+  std::vector<AliasGroup> groups;
+  groups.push_back(
       {"constant delay",
        {"pure gyro delay", "first-order lag with time constant <= 5 ms", "table read delay", "timestamp offset",
         "fixed serial / board latency"},
@@ -1093,27 +1242,38 @@ Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, cons
        "swing data shift all of them by one constant at every frequency: measure the read delay and the board "
        "latency on the board (loop-back / sync pulse), and separate a lag from a delay with a step or a swing "
        "above 1/(2 pi tau) (~30 Hz for 5 ms)"});
-  d.aliasGroups.push_back(
+  groups.push_back(
       {"constant rate", {"gyro bias", "earth_rate_projection (latitude / heading error)"},
        "bias " + fmt("%+.3f", cal.biasDegPerH[0]) + " / " + fmt("%+.3f", cal.biasDegPerH[1]) + " / " +
            fmt("%+.3f", cal.biasDegPerH[2]) + " deg/h (X/Y/Z, over the nominal Earth rate)",
        "a constant rate per axis looks the same either way: a multi-position static test (IMU turned to four "
        "headings) separates the Earth rate from the bias"});
+  return groups;
+}
 
-  // ---- Views for plots ------------------------------------------------------
+// Per test point, what a GUI draws: spectra and per-segment delays of the
+// session and of the replays.
+std::vector<PointView> pointViews(const AnalysedSession& session, const Replay& replay, const FeatureSet& realFeatures,
+                                  const std::vector<FeatureSet>& outputs, int K, const Stats& st) {
+  const Recording& used = session.used;
+  const Calibration& cal = replay.cal;
+  const auto& keys = realFeatures.keys;
+  const std::vector<double>& real = realFeatures.values;
+  const std::size_t n = keys.size();
+  std::vector<PointView> points;
   for (std::size_t p = 0; p < used.testPoints.size(); ++p) {
     PointView v;
     v.point = static_cast<int>(p);
     v.axis = used.testPoints[p].axis;
     v.frequencyHz = cal.plan.points[p].frequencyHz;
     v.amplitudeDeg = cal.plan.points[p].amplitudeDeg;
-    v.real = realFeatures->spectra[p];
-    v.simulated = outputs[0]->spectra[p];
+    v.real = realFeatures.spectra[p];
+    v.simulated = outputs[0].spectra[p];
     for (std::size_t h = 0; h < v.simulated.gyroHarmonicPpm.size(); ++h) {
       double m = 0, s = 0;
-      for (int k = 0; k < K; ++k) m += outputs[static_cast<std::size_t>(k)]->spectra[p].gyroHarmonicPpm[h] / K;
+      for (int k = 0; k < K; ++k) m += outputs[static_cast<std::size_t>(k)].spectra[p].gyroHarmonicPpm[h] / K;
       for (int k = 0; k < K; ++k) {
-        const double dv = outputs[static_cast<std::size_t>(k)]->spectra[p].gyroHarmonicPpm[h] - m;
+        const double dv = outputs[static_cast<std::size_t>(k)].spectra[p].gyroHarmonicPpm[h] - m;
         s += dv * dv / (K - 1);
       }
       v.simHarmonicStdPpm.push_back(std::sqrt(s));
@@ -1127,19 +1287,64 @@ Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, cons
       v.simDelayUs.push_back(st.mean[i]);
       v.simDelayStdUs.push_back(st.sigma[i]);
     }
-    d.points.push_back(std::move(v));
+    points.push_back(std::move(v));
   }
+  return points;
+}
+
+// The timing audits of the session and of the nominal replay.
+void auditTimings(const Recording& used, const Replay& replay, std::uint64_t seed, Diagnosis& d) {
   d.realTiming = auditTiming(used, replay.ref.tablePeriodS, replay.ref.imuPeriodS);
-  {
-    model::SimConfig c0 = c;
-    c0.seed = options.seed;
-    auto sim = model::simulate(c0, cal.plan);
-    if (sim)
-      if (auto rec = protocol::decodeRecording(sim->bytes))
-        d.simTiming = auditTiming(*rec, replay.ref.tablePeriodS, replay.ref.imuPeriodS);
-  }
+  model::SimConfig c0 = replay.cal.config;
+  c0.seed = seed;
+  auto sim = model::simulate(c0, replay.cal.plan);
+  if (sim)
+    if (auto rec = protocol::decodeRecording(sim->bytes))
+      d.simTiming = auditTiming(*rec, replay.ref.tablePeriodS, replay.ref.imuPeriodS);
+}
+
+}  // namespace
+
+Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, const analysis::BenchConstants& constants,
+                           const DiagnosisOptions& options) {
+  const auto started = std::chrono::steady_clock::now();
+  Progress progress(options);
+  const std::vector<SignatureJob> jobs = signatureJobs(options);
+  const std::size_t expectedReplays = kCalibrationReplays + jobs.size() + laterReplays(options);
+  progress.stage("calibration", expectedReplays);
   if (progress.cancelled()) return cancelledByCaller();
-  d.calibration = cal;
+  Diagnosis d;
+
+  auto session = analyseSession(input, info, constants, d.notes);
+  if (!session) return session.status();
+  auto calibrated = calibrate(*session, info, options, progress, d.notes);
+  if (!calibrated) return calibrated.status();
+  const Replay& replay = calibrated->replay;
+  const FeatureSet& real = calibrated->real;
+
+  progress.stage("replays", expectedReplays);
+  auto outputs = runReplays(replay, jobs, real.values.size(), options.threads, progress);
+  if (!outputs) return outputs.status();
+  const GapModel gap = buildGapMap(real, jobs, *outputs, options, d);
+
+  progress.stage("effects", expectedReplays);
+  std::vector<Candidate> candidates = scoreEffects(real, gap, jobs, *outputs, d.gapMap);
+
+  progress.stage("refinement", expectedReplays);
+  FOG_RETURN_IF_ERROR(refineBest(candidates, replay, gap, real.values, d.gapMap, options, progress));
+  if (progress.cancelled()) return cancelledByCaller();
+
+  progress.stage("pairs", expectedReplays);
+  const VerdictModel model = chooseModel(candidates, replay, gap, real.values, d.gapMap, options);
+  if (progress.cancelled()) return cancelledByCaller();
+
+  progress.stage("verdict", expectedReplays);
+  decideVerdict(model, candidates, gap.z0, options, d);
+  d.aliasGroups = aliasGroups(replay.cal);
+  d.points = pointViews(*session, replay, real, *outputs, monteCarloReplays(options), gap.st);
+  auditTimings(session->used, replay, options.seed, d);
+  if (progress.cancelled()) return cancelledByCaller();
+  d.calibration = replay.cal;
   progress.finished();
   d.elapsedS = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return d;
@@ -1181,7 +1386,7 @@ std::string formatDiagnosisJson(const Diagnosis& d) {
                        {"parameters", params},
                        {"heldout_shrink", e.heldOutShrink},
                        {"heldout_shrink_per_channel", per},
-                       {"score", e.score},
+                       {"score", e.score ? json(*e.score) : json(nullptr)},  // null: no signature
                        {"train_delta_chi2", e.trainDeltaChi2},
                        {"heldout_delta_chi2", e.heldOutDeltaChi2},
                        {"exact", e.exact},
@@ -1281,7 +1486,9 @@ std::string formatDiagnosisText(const Diagnosis& d) {
                     e.standardErrors[p], e.parameters[p].unit.c_str());
       params += b;
     }
-    std::snprintf(b, sizeof b, "  %-26s score %9.1f  held-out shrink %5.0f %%%s  %s\n", e.name.c_str(), e.score,
+    char score[32] = "        -";  // no signature in this session
+    if (e.score) std::snprintf(score, sizeof score, "%9.1f", *e.score);
+    std::snprintf(b, sizeof b, "  %-26s score %s  held-out shrink %5.0f %%%s  %s\n", e.name.c_str(), score,
                   100.0 * e.heldOutShrink, e.kept ? "  KEPT" : "", params.c_str());
     s += b;
   }

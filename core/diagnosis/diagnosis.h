@@ -29,6 +29,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -114,7 +115,9 @@ struct EffectFit {
   std::string name, description;
   std::vector<EffectParameter> parameters;
   std::vector<double> values, standardErrors;  // fitted on all blocks, in the parameters' units
-  double score = 0.0;            // training delta chi2 - k ln n (BIC-penalised); ranks the effects
+  // Training delta chi2 - k ln n (BIC-penalised); ranks the effects. None:
+  // the effect has no signature in this session's features (not scored).
+  std::optional<double> score;
   double trainDeltaChi2 = 0.0, heldOutDeltaChi2 = 0.0;
   double heldOutShrink = 0.0;    // all held-out cells together
   std::vector<HeldOutShrink> perChannel;
