@@ -21,6 +21,7 @@
 #include <QCryptographicHash>
 #include <QDoubleSpinBox>
 #include <QFile>
+#include <QGroupBox>
 #include <QLabel>
 #include <QProcess>
 #include <QPushButton>
@@ -286,6 +287,42 @@ class BenchUiTest : public QObject {
     motion->setLimits(tight, 180.0, "remote tcp:127.0.0.1:5025");
     QVERIFY(table->item(0, M::kAngle)->toolTip().contains("amplitude 10 deg is beyond the table's 5 deg on X"));
     QCOMPARE(motion->flaggedCells(), 3);
+  }
+
+  // Live shows the table's status while the simulator drives its table:
+  // the mode, the commanded swing and the one measured from the table-angle
+  // stream (within the bench's swing-check tolerances: 2 % amplitude, 0.5 %
+  // frequency), no faults; Stop ends the run and the status says at rest.
+  void liveShowsTheTableStatusAndStopBringsItToRest() {
+    auto w = window();
+    QSignalSpy ended(w.get(), &MainWindow::runEnded);
+    QVERIFY(w->planEditor()->loadPreset("paper-fast"));
+    const fog::TestPoint first = w->planEditor()->plan().points.at(0);
+    w->useSimulator(5.0, 3);
+    click(*w, "runButton");
+    auto* live = w->liveView();
+    QVERIFY(live->tableStatusBox()->isVisibleTo(w.get()));
+    QTRY_VERIFY_WITH_TIMEOUT(std::isfinite(live->measuredAmplitudeDeg()) &&
+                                 live->traces().phase() == fog::protocol::TestPhase::kRecording,
+                             30000);
+    const QString axis = QString(fog::axisName(first.axis)).toUpper();
+    QCOMPARE(live->tableMode(), QString("swinging %1").arg(axis));
+    const QString commanded = w->findChild<QLabel*>("tableCommandedLabel")->text();
+    QVERIFY2(commanded.startsWith(QString("%1 %2 Hz, %3°").arg(axis).arg(first.frequencyHz).arg(first.amplitudeDeg)),
+             qPrintable(commanded));
+    QVERIFY2(std::abs(live->measuredAmplitudeDeg() - first.amplitudeDeg) <= 0.02 * first.amplitudeDeg,
+             qPrintable(QString::number(live->measuredAmplitudeDeg())));
+    QVERIFY2(std::abs(live->measuredFrequencyHz() - first.frequencyHz) <= 0.005 * first.frequencyHz,
+             qPrintable(QString::number(live->measuredFrequencyHz())));
+    QVERIFY(w->findChild<QLabel*>("tableMeasuredLabel")->text().startsWith(axis + " "));
+    QCOMPARE(w->findChild<QLabel*>("tableFaultsLabel")->text(), QString("none reported"));
+    click(*w, "stopButton");
+    QTRY_VERIFY_WITH_TIMEOUT(!ended.isEmpty(), 30000);
+    QCOMPARE(live->tableMode(), QString("at rest (run over)"));
+    QVERIFY(std::isnan(live->measuredAmplitudeDeg()));
+    // A replay drives no table: the status is hidden.
+    live->setTableDriver(QString());
+    QVERIFY(!live->tableStatusBox()->isVisibleTo(w.get()));
   }
 
   // The quick plan on the simulator at 20x: frames appear live, then the
