@@ -354,6 +354,15 @@ int main(int argc, char** argv) {
     for (;;) {
       pollfd p{fd, POLLOUT, 0};
       ::poll(&p, 1, 0);
+      // Commands still count (a host stops the stream when its run is over),
+      // read after the poll so that what a host wrote before closing is seen.
+      std::uint8_t in[512];
+      for (ssize_t n; (n = ::read(fd, in, sizeof in)) > 0;) {
+        commands.clear();
+        commandDecoder.push(std::span<const std::uint8_t>(in, static_cast<std::size_t>(n)), commands);
+        for (const auto& cmd : commands)
+          say("host command: " + hostControl.apply(cmd) + " at stream time " + fmt("%.3f", sim->get()->timeS()) + " s");
+      }
       if ((p.revents & POLLHUP) || Clock::now() > giveUp) break;
       std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }

@@ -46,7 +46,9 @@ usage:
       Record a sampling board on a serial port (Qt build) until its plan is done;
       the plan, if given, is stored as the one intended (the board runs its own).
       A port that vanishes or a line silent for --stall-timeout-s ends the run as
-      incomplete, keeping everything received (docs/serial.md).
+      incomplete, keeping everything received (docs/serial.md). The board is sent
+      start/stop streaming and the pulse equivalent if given (docs/protocol.md,
+      "Host to board"); --no-board-commands sends nothing.
   fogbench-cli run --table remote:tcp:HOST:PORT|remote:DEV|manual --source serial --port DEV
                   [plan] [constants] [--table-heartbeat-s 2] [--table-reply-timeout-s 2]
                   [--table-baud 115200] [--operator-timeout-s 600] [--speed X] [--out SESSION.fbs ...]
@@ -122,7 +124,7 @@ int main(int argc, char** argv) {
       return 0;
     }
   }
-  auto parsed = fog::app::CliArguments::parse(args, {"json", "no-store", "afap", "overwrite"});
+  auto parsed = fog::app::CliArguments::parse(args, {"json", "no-store", "afap", "overwrite", "no-board-commands"});
   if (!parsed) {
     std::cerr << "fogbench-cli: " << parsed.status().message() << "\n";
     return 2;

@@ -8,6 +8,7 @@
 
 #include "acquisition/acquisition.h"
 #include "analysis/report_writer.h"
+#include "board_commands.h"
 #include "cli_common.h"
 #include "common/text.h"
 #include "common/version.h"
@@ -66,6 +67,7 @@ int runSerialCommand(CliArguments& args) {
   if (!limitS) return fail(limitS.status(), 2);
   if (!(*warnS > 0.0) || !(*limitS > 0.0))
     return fail(invalidArgument("--stall-warning-s and --stall-timeout-s must be > 0"), 2);
+  const bool pulseGiven = args.has("pulse-equivalent-deg");
   auto constants = readConstants(args);
   if (!constants) return fail(constants.status(), 2);
   // The board runs its own plan; the operator's plan (if any) is what the
@@ -79,6 +81,7 @@ int runSerialCommand(CliArguments& args) {
   }
   auto sessionOut = readSessionOutput(args);
   if (!sessionOut) return fail(sessionOut.status(), 2);
+  const bool boardCommands = args.flag("no-board-commands") == false;
   (void)args.text("source");
   if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
   if (!args.positionals().empty()) return fail(invalidArgument("unexpected argument '" + args.positionals()[0] + "'"), 2);
@@ -127,12 +130,22 @@ int runSerialCommand(CliArguments& args) {
                 << ") or the parity right?\n";
     }
   };
+  // The host-to-board direction (docs/protocol.md): the pulse equivalent the
+  // operator gave, and the stream started; it is stopped at the end. The
+  // board runs its own plan, so no test-point markers. Never waited for.
+  BoardCommander board(boardCommands ? source->get() : nullptr, [](const std::string& what) {
+    std::cerr << "fogbench-cli: board command: " << what << "\n";
+  });
+  if (pulseGiven) board.setPulseEquivalent(constants->pulseEquivalentDeg);
+  board.startStreaming();
   gStop = false;
   std::signal(SIGINT, onInterrupt);
   std::signal(SIGTERM, onInterrupt);
   auto run = acquisition::acquire(**source, options, &gStop, observer);
   std::signal(SIGINT, SIG_DFL);
   std::signal(SIGTERM, SIG_DFL);
+  board.stopStreaming();
+  (*source)->flushToDevice(std::chrono::milliseconds(200));
   if (!run) return fail(run.status(), 2);
   if (!run->complete) printIncompleteRun(*run);
   if (!run->recordingStatus.isOk()) return fail(run->recordingStatus, 1);

@@ -21,6 +21,7 @@
 
 #include "acquisition/acquisition.h"
 #include "analysis/report_writer.h"
+#include "board_commands.h"
 #include "cli_common.h"
 #include "common/text.h"
 #include "common/version.h"
@@ -48,7 +49,7 @@ class TableLog {
     const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     std::lock_guard lock(mutex_);
     pending_.push_back({t, kind, text});
-    if (kind == "step" || kind == "event" || kind == "status" || kind == "operator")
+    if (kind == "step" || kind == "event" || kind == "status" || kind == "operator" || kind == "board")
       std::cerr << "fogbench-cli: table " << kind << ": " << forTerminal(text) << "\n";
   }
   std::vector<session::TableLogEntry> drain() {
@@ -62,6 +63,46 @@ class TableLog {
   std::mutex mutex_;
   std::vector<session::TableLogEntry> pending_;
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
+// The stream recorder, with the board told where the plan stands (test-point
+// markers, docs/protocol.md "Host to board"): settling while the swing is
+// checked, recording once it is verified, idle when the point is over. The
+// bench still cuts the points from the table angle; the markers make the raw
+// stream describe itself for a board that echoes them.
+class MarkingRecorder : public table::PointRecorder {
+ public:
+  MarkingRecorder(table::StreamPointRecorder& inner, BoardCommander& board) : inner_(inner), board_(board) {}
+  Status begin(int index, const TestPoint& point) override {
+    index_ = index;
+    point_ = point;
+    windowsAtBegin_ = inner_.windows().size();
+    marked_ = false;
+    board_.markPoint(index, point, protocol::TestPhase::kSettling);
+    return inner_.begin(index, point);
+  }
+  table::RecorderProgress poll() override {
+    auto progress = inner_.poll();
+    if (!marked_ && inner_.windows().size() > windowsAtBegin_) {
+      marked_ = true;
+      board_.markPoint(index_, point_, protocol::TestPhase::kRecording);
+    }
+    return progress;
+  }
+  void end(int index) override {
+    inner_.end(index);
+    board_.markPoint(index, point_, protocol::TestPhase::kIdle);
+  }
+  Status health() override { return inner_.health(); }
+  bool streamShowsRest(Axis axis) override { return inner_.streamShowsRest(axis); }
+
+ private:
+  table::StreamPointRecorder& inner_;
+  BoardCommander& board_;
+  int index_ = -1;
+  TestPoint point_;
+  std::size_t windowsAtBegin_ = 0;
+  bool marked_ = false;
 };
 
 }  // namespace
@@ -91,12 +132,14 @@ int runTableCommand(CliArguments& args, const std::string& tableSpec) {
     return fail(invalidArgument("--speed must be in (0, 1000] (plan seconds per wall second; > 1 only for emulators)"), 2);
   if (!(*heartbeatS >= 0.2 && *heartbeatS <= 60.0)) return fail(invalidArgument("--table-heartbeat-s must be 0.2 .. 60"), 2);
   if (!(*replyS > 0.0 && *replyS <= 60.0)) return fail(invalidArgument("--table-reply-timeout-s must be in (0, 60]"), 2);
+  const bool pulseGiven = args.has("pulse-equivalent-deg");
   auto constants = readConstants(args);
   if (!constants) return fail(constants.status(), 2);
   auto plan = readPlan(args);
   if (!plan) return fail(plan.status(), 2);
   auto sessionOut = readSessionOutput(args);
   if (!sessionOut) return fail(sessionOut.status(), 2);
+  const bool boardCommands = !args.flag("no-board-commands");
   (void)args.text("table");
   if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
   if (!args.positionals().empty()) return fail(invalidArgument("unexpected argument '" + args.positionals()[0] + "'"), 2);
@@ -147,6 +190,10 @@ int runTableCommand(CliArguments& args, const std::string& tableSpec) {
   }
 
   table::StreamPointRecorder recorder;
+  // The host-to-board direction (docs/protocol.md): optional, never waited for.
+  BoardCommander board(boardCommands ? source->get() : nullptr,
+                       [&log](const std::string& what) { log.add("board", what); });
+  MarkingRecorder markingRecorder(recorder, board);
   std::atomic<bool> runnerDone{false};
   table::RunnerResult runnerResult;
   table::RunnerOptions runnerOptions;
@@ -166,13 +213,16 @@ int runTableCommand(CliArguments& args, const std::string& tableSpec) {
   std::cerr << "fogbench-cli: recording " << (*source)->description() << " while the table ("
             << controller->description() << ") runs the plan: " << plan->points.size()
             << " test points (Ctrl+C stops the table and keeps what arrived)\n";
+  if (pulseGiven) board.setPulseEquivalent(constants->pulseEquivalentDeg);
+  board.startStreaming();
   gStop = false;
   std::signal(SIGINT, onTableInterrupt);
   std::signal(SIGTERM, onTableInterrupt);
   std::thread runner([&] {
-    table::PlanRunner r(*controller, *clock, recorder, runnerOptions,
+    table::PlanRunner r(*controller, *clock, markingRecorder, runnerOptions,
                         [&log](const std::string& line) { log.add("step", line); });
     runnerResult = r.run(*plan, &gStop);
+    if (runnerResult.status.isOk()) board.markDone();
     runnerDone = true;
   });
   auto run = acquisition::acquire(**source, options, &gStop, observer);
@@ -183,6 +233,8 @@ int runTableCommand(CliArguments& args, const std::string& tableSpec) {
   runner.join();
   std::signal(SIGINT, SIG_DFL);
   std::signal(SIGTERM, SIG_DFL);
+  board.stopStreaming();
+  (*source)->flushToDevice(std::chrono::milliseconds(200));
   if (!run) return fail(run.status(), 2);
   if (!options.sessionPath.empty())
     if (auto s = session::appendTableLog(options.sessionPath, log.drain()); !s.isOk())

@@ -34,6 +34,7 @@
 #include <thread>
 #include <vector>
 
+#include "board_host.h"
 #include "cli_arguments.h"
 #include "model/effect.h"
 #include "model/simulator.h"
@@ -238,7 +239,10 @@ int main(int argc, char** argv) {
 
   const auto start = Clock::now();
   std::string inbox, outbox;
-  std::vector<std::uint8_t> boardBytes, boardPending;
+  std::vector<std::uint8_t> boardClean, boardBytes, boardPending;
+  app::BoardHostControl hostControl;
+  protocol::HostCommandDecoder commandDecoder;
+  std::vector<protocol::HostCommand> commands;
   bool dropped = false, hostSeen = false, ptyHostOpen = false, boardHostSeen = false, boardOpen = false;
   std::uint64_t boardSent = 0, linesHandled = 0;
   auto closeClient = [&](const std::string& why) {
@@ -322,11 +326,26 @@ int main(int argc, char** argv) {
                     tableS - server.firstSwingStartS());
       say(b);
     }
-    // The board's stream, up to now.
+    // The board's stream, up to now, as the host has configured it
+    // (docs/protocol.md, "Host to board": commands read from the board's pty).
     if (sim) {
-      boardBytes.clear();
-      sim->advance(tableS, boardBytes);
+      boardClean.clear();
+      sim->advance(tableS, boardClean);
       const bool open = slaveOpen(boardFd);
+      {  // also once the host has closed: what it wrote just before is still there
+        std::uint8_t in[512];
+        for (ssize_t n; (n = ::read(boardFd, in, sizeof in)) > 0;) {
+          commands.clear();
+          commandDecoder.push(std::span<const std::uint8_t>(in, static_cast<std::size_t>(n)), commands);
+          for (const auto& c : commands) {
+            char at[64];
+            std::snprintf(at, sizeof at, " at table time %.3f s", tableS);
+            say("host command: " + hostControl.apply(c) + at);
+          }
+        }
+      }
+      boardBytes.clear();
+      hostControl.process(boardClean, boardBytes);
       if (open && !boardOpen) say("host: board port opened");
       if (!open && boardOpen) say("host: board port closed");
       boardOpen = open;

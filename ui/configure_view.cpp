@@ -14,6 +14,7 @@
 #include <QVBoxLayout>
 #include <limits>
 
+#include "ui/commanded_motion.h"
 #include "ui/plan_editor.h"
 #include "ui/serial/serial_source.h"
 
@@ -31,7 +32,16 @@ ConfigureView::ConfigureView(QWidget* parent) : QWidget(parent) {
   auto* planLayout = new QVBoxLayout(planBox);
   planEditor_ = new PlanEditor();
   planEditor_->setObjectName("planEditor");
-  planLayout->addWidget(planEditor_);
+  planLayout->addWidget(planEditor_, 3);
+  // What the table is asked to do, against its limits (issue 17).
+  auto* motionBox = new QGroupBox(tr("Commanded table motion"));
+  motionBox->setObjectName("commandedMotionBox");
+  auto* motionLayout = new QVBoxLayout(motionBox);
+  commandedMotion_ = new CommandedMotionTable();
+  motionLayout->addWidget(commandedMotion_);
+  planLayout->addWidget(motionBox, 2);
+  commandedMotion_->setPlan(planEditor_->plan());
+  connect(planEditor_, &PlanEditor::planChanged, this, [this] { commandedMotion_->setPlan(planEditor_->plan()); });
   split->addWidget(planBox);
 
   auto* sideWidget = new QWidget();

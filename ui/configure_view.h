@@ -19,6 +19,7 @@ class QSpinBox;
 
 namespace fog::ui {
 
+class CommandedMotionTable;
 class PlanEditor;
 
 class ConfigureView : public QWidget {
@@ -31,6 +32,8 @@ class ConfigureView : public QWidget {
   explicit ConfigureView(QWidget* parent = nullptr);
 
   PlanEditor* planEditor() const { return planEditor_; }
+  // The commanded motion of every point against the table's limits.
+  CommandedMotionTable* commandedMotion() const { return commandedMotion_; }
 
   SourceKind sourceKind() const;
   void setSourceKind(SourceKind kind);
@@ -78,6 +81,7 @@ class ConfigureView : public QWidget {
 
  private:
   PlanEditor* planEditor_ = nullptr;
+  CommandedMotionTable* commandedMotion_ = nullptr;
   QComboBox* sourceCombo_ = nullptr;
   QComboBox* speedCombo_ = nullptr;
   QSpinBox* seedSpin_ = nullptr;

@@ -8,6 +8,12 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QVBoxLayout>
+#include <QGridLayout>
+#include <QGroupBox>
+#include <cmath>
+#include <vector>
+
+#include "table/stream_recorder.h"
 #include <algorithm>
 #include <cmath>
 #include <qwt_legend.h>
@@ -110,6 +116,35 @@ LiveView::LiveView(QWidget* parent) : QWidget(parent) {
   state->addWidget(followButton_);
   layout->addLayout(state);
 
+  // The table's status while the bench drives it (issue 17).
+  tableBox_ = new QGroupBox(tr("Turntable"));
+  tableBox_->setObjectName("liveTableStatus");
+  auto* tableGrid = new QGridLayout(tableBox_);
+  auto makeValue = [&](const char* name) {
+    auto* l = new QLabel();
+    l->setObjectName(name);
+    return l;
+  };
+  tableDriverLabel_ = makeValue("tableDriverLabel");
+  tableModeLabel_ = makeValue("tableModeLabel");
+  tableCommandedLabel_ = makeValue("tableCommandedLabel");
+  tableMeasuredLabel_ = makeValue("tableMeasuredLabel");
+  tableFaultsLabel_ = makeValue("tableFaultsLabel");
+  tableGrid->addWidget(new QLabel(tr("Driver")), 0, 0);
+  tableGrid->addWidget(tableDriverLabel_, 0, 1);
+  tableGrid->addWidget(new QLabel(tr("Mode")), 0, 2);
+  tableGrid->addWidget(tableModeLabel_, 0, 3);
+  tableGrid->addWidget(new QLabel(tr("Faults / interlocks")), 0, 4);
+  tableGrid->addWidget(tableFaultsLabel_, 0, 5);
+  tableGrid->addWidget(new QLabel(tr("Commanded")), 1, 0);
+  tableGrid->addWidget(tableCommandedLabel_, 1, 1, 1, 2);
+  tableGrid->addWidget(new QLabel(tr("Measured")), 1, 3);
+  tableGrid->addWidget(tableMeasuredLabel_, 1, 4, 1, 2);
+  tableGrid->setColumnStretch(1, 1);
+  tableGrid->setColumnStretch(5, 1);
+  tableBox_->setVisible(false);
+  layout->addWidget(tableBox_);
+
   tablePlot_ = makePlot(tr("Turntable angle"), tr("angle (°)"), &tableCurve_, kTableColour, "°");
   tablePlot_->setObjectName("liveTablePlot");
   tablePlot_->setMinimumSize(200, 150);  // below the plot's own hint: fits a laptop screen
@@ -175,6 +210,8 @@ void LiveView::startRun(const TestPlan& plan, double speed) {
   pointBar_->setValue(0);
   planBar_->setValue(0);
   stateLabel_->setText(tr("Waiting for the first frames …"));
+  running_ = true;
+  updateTableStatus();
   dirty_ = true;
   refresh();
 }
@@ -188,8 +225,76 @@ void LiveView::addFrames(std::span<const protocol::DecodedFrame> frames) {
 }
 
 void LiveView::endRun() {
+  running_ = false;
   updateProgress();
   remainingLabel_->setText(tr("run ended"));
+}
+
+void LiveView::setTableDriver(const QString& driver) {
+  tableDriver_ = driver;
+  tableBox_->setVisible(!driver.isEmpty());
+  updateTableStatus();
+}
+
+QString LiveView::tableMode() const { return tableModeLabel_->text(); }
+
+void LiveView::updateTableStatus() {
+  if (tableDriver_.isEmpty()) return;
+  tableDriverLabel_->setText(tableDriver_);
+  const int i = traces_.testPoint();
+  const bool known = i >= 0 && i < static_cast<int>(plan_.points.size());
+  const auto phase = traces_.phase();
+  const bool moving = running_ && known && !plan_.points[static_cast<std::size_t>(i)].isStatic() &&
+                      (phase == protocol::TestPhase::kSettling || phase == protocol::TestPhase::kRecording);
+  const QString axis = QString(axisName(traces_.axis())).toUpper();
+  if (!running_)
+    tableModeLabel_->setText(tr("at rest (run over)"));
+  else if (moving)
+    tableModeLabel_->setText(tr("swinging %1").arg(axis));
+  else if (phase == protocol::TestPhase::kDone)
+    tableModeLabel_->setText(tr("at rest (plan done)"));
+  else
+    tableModeLabel_->setText(i < 0 ? tr("waiting") : tr("at rest"));
+  if (known && running_) {
+    const TestPoint& p = plan_.points[static_cast<std::size_t>(i)];
+    const double centre = p.positionDeg[static_cast<std::size_t>(p.axis)];
+    tableCommandedLabel_->setText(
+        p.isStatic() ? tr("%1 at rest at %2°").arg(axis, localNumber(centre, 'g', 6))
+                     : tr("%1 %2 Hz, %3° about %4°")
+                           .arg(axis, localNumber(p.frequencyHz, 'g', 6), localNumber(p.amplitudeDeg, 'g', 6),
+                                localNumber(centre, 'g', 6)));
+  } else {
+    tableCommandedLabel_->setText(tr("—"));
+  }
+  // Measured from the table-angle stream: the last max(2 periods, 1 s).
+  measuredAmplitudeDeg_ = NAN;
+  measuredFrequencyHz_ = NAN;
+  if (moving) {
+    const TestPoint& p = plan_.points[static_cast<std::size_t>(i)];
+    const double spanS = std::max(2.0 / p.frequencyHz, 1.0);
+    const auto& points = traces_.table();
+    std::vector<TableSample> samples;
+    const auto ax = static_cast<std::size_t>(traces_.axis());
+    if (!points.empty() && points.back().timeS - points.front().timeS >= spanS)
+      for (const auto& pt : points)
+        if (pt.timeS >= points.back().timeS - spanS) {
+          TableSample t;
+          t.timeS = pt.timeS;
+          t.angleDeg[ax] = pt.angleDeg;
+          samples.push_back(t);
+        }
+    const auto fit = table::fitSwing(samples, traces_.axis(), p.frequencyHz);
+    if (fit.ok) {
+      measuredAmplitudeDeg_ = fit.amplitudeDeg;
+      measuredFrequencyHz_ = fit.frequencyHz;
+    }
+  }
+  tableMeasuredLabel_->setText(std::isnan(measuredAmplitudeDeg_)
+                                   ? tr("—")
+                                   : tr("%1 %2 Hz, %3°")
+                                         .arg(axis, localNumber(measuredFrequencyHz_, 'f', 4),
+                                              localNumber(measuredAmplitudeDeg_, 'f', 3)));
+  tableFaultsLabel_->setText(tr("none reported"));
 }
 
 std::size_t LiveView::shownTablePoints() const { return tableCurve_->dataSize(); }
@@ -220,6 +325,7 @@ QString LiveView::remainingText() const {
 }
 
 void LiveView::updateProgress() {
+  updateTableStatus();
   pointBar_->setValue(static_cast<int>(std::lround(1000.0 * pointProgress())));
   planBar_->setValue(static_cast<int>(std::lround(1000.0 * planProgress())));
   remainingLabel_->setText(remainingText());

@@ -16,6 +16,7 @@
 #include "acquisition/live_traces.h"
 #include "common/test_plan.h"
 
+class QGroupBox;
 class QLabel;
 class QProgressBar;
 class QPushButton;
@@ -37,6 +38,19 @@ class LiveView : public QWidget {
   // Redraws with everything added since the last call.
   void refresh();
   void endRun();
+  // The table driver in use for the run ("simulator", a controller's
+  // description); empty: the bench does not drive the table (a serial
+  // board's own plan, a replay) and the table status is hidden. Call before
+  // startRun().
+  void setTableDriver(const QString& driver);
+
+  // The table status (issue 17): the driver, the mode, the commanded swing of
+  // the current point and the one measured from the table-angle stream
+  // (fitted over the last max(2 periods, 1 s)), faults and interlocks.
+  QString tableMode() const;
+  double measuredAmplitudeDeg() const { return measuredAmplitudeDeg_; }  // NaN until measured
+  double measuredFrequencyHz() const { return measuredFrequencyHz_; }
+  QGroupBox* tableStatusBox() const { return tableBox_; }
 
   const acquisition::LiveTraces& traces() const { return traces_; }
   // Points currently drawn in the table / gyro curve (after thinning).
@@ -57,6 +71,7 @@ class LiveView : public QWidget {
                     const QString& unit);
   void setFollowing(bool following);
   void updateProgress();
+  void updateTableStatus();
 
   acquisition::LiveTraces traces_{120.0};
   TestPlan plan_;
@@ -76,6 +91,16 @@ class LiveView : public QWidget {
   QLabel* remainingLabel_ = nullptr;
   QDoubleSpinBox* windowSpin_ = nullptr;
   QPushButton* followButton_ = nullptr;
+
+  QString tableDriver_;
+  bool running_ = false;
+  double measuredAmplitudeDeg_ = 0.0, measuredFrequencyHz_ = 0.0;
+  QGroupBox* tableBox_ = nullptr;
+  QLabel* tableDriverLabel_ = nullptr;
+  QLabel* tableModeLabel_ = nullptr;
+  QLabel* tableCommandedLabel_ = nullptr;
+  QLabel* tableMeasuredLabel_ = nullptr;
+  QLabel* tableFaultsLabel_ = nullptr;
 };
 
 }  // namespace fog::ui

@@ -617,6 +617,9 @@ void MainWindow::startRun() {
   resultView_->clear();
   shown_.reset();
   const QString sourceText = QString::fromStdString(request.options.info.source);
+  // The table status: the simulator drives its simulated turntable through
+  // the plan; a serial board runs its own plan and a replay drives nothing.
+  liveView_->setTableDriver(sourceKind() == SourceKind::kSimulator ? tr("simulator (simulated turntable)") : QString());
   // A serial board runs at its own (real-time) pace.
   liveView_->startRun(plan, request.openSource ? 1.0 : speed);
   showHealth({}, 0);

@@ -60,7 +60,9 @@ Result<AcquisitionResult> acquire(ByteSource& source, const AcquisitionOptions& 
   }
 
   protocol::Decoder decoder;
-  protocol::RecordingBuilder builder;
+  // A run that cuts the stream itself gets the whole stream, whatever test
+  // points the board's STATUS frames mark.
+  protocol::RecordingBuilder builder(!options.segment);
   std::vector<std::uint8_t> bytes;
   std::vector<protocol::DecodedFrame> decoded;
   AcquisitionBatch batch;

@@ -70,7 +70,9 @@ struct AcquisitionOptions {
   // (after the raw bytes received so far).
   std::function<std::vector<session::TableLogEntry>()> drainTableLog;
   // Applied to the decoded recording before it is analysed and stored: the
-  // table-driven run cuts the stream into its test points here.
+  // table-driven run cuts the stream into its test points here. With it, the
+  // recording handed over is the whole stream as one test point (the STATUS
+  // frames' test-point markers are not followed).
   std::function<Recording(const Recording&)> segment;
 };
 

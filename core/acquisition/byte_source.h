@@ -15,6 +15,7 @@
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,19 @@ class ByteSource {
   virtual Result<ReadOutcome> read(std::vector<std::uint8_t>& out, std::chrono::milliseconds timeout) = 0;
   // For people and for the session's metadata: "simulator, seed 1, real time".
   virtual std::string description() const = 0;
+
+  // The host-to-board direction (docs/protocol.md, "Host to board"; optional).
+  // queueForDevice() may be called from any thread: the bytes are queued and
+  // written by the reading thread at its next read(); it returns false when
+  // this source cannot send (the simulator, a replay, a port opened read-only).
+  // flushToDevice() writes what is queued, waiting at most `timeout`; only from
+  // the reading thread (after the last read(), before the source is closed).
+  // Neither ever waits for an answer: a board that only streams keeps working.
+  virtual bool queueForDevice(std::span<const std::uint8_t> bytes) {
+    (void)bytes;
+    return false;
+  }
+  virtual void flushToDevice(std::chrono::milliseconds timeout) { (void)timeout; }
 };
 
 }  // namespace fog::acquisition

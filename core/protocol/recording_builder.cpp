@@ -16,6 +16,7 @@ void RecordingBuilder::onStatus(const StatusPayload& s) {
   if (s.counterHz > 0) counterHz_ = s.counterHz;
   if (s.counterBits >= 8 && s.counterBits <= 32) counterBits_ = s.counterBits;
   if (std::isfinite(s.pulseEquivalentDeg) && s.pulseEquivalentDeg > 0.0) pulseEquivalentDeg_ = s.pulseEquivalentDeg;
+  if (!followMarkers_) return;
   collecting_ = s.phase == TestPhase::kRecording;
   if (!collecting_) return;
   if (!sawRecording_) {

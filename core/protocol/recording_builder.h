@@ -46,6 +46,12 @@ namespace fog::protocol {
 
 class RecordingBuilder {
  public:
+  RecordingBuilder() = default;
+  // followMarkers false: the STATUS frames' test points and phases are not
+  // used; the whole stream becomes one test point as when it carries none
+  // (a caller that cuts the stream itself: the table-driven run).
+  explicit RecordingBuilder(bool followMarkers) : followMarkers_(followMarkers) {}
+
   void add(const DecodedFrame& frame);
   void add(std::span<const DecodedFrame> frames);
 
@@ -57,6 +63,7 @@ class RecordingBuilder {
   fog::Recording finish(const fog::StreamHealth& health = {});
 
  private:
+  bool followMarkers_ = true;
   struct RawTable {
     std::int64_t ticks = 0;
     std::array<double, kAxisCount> angleDeg{};

@@ -42,8 +42,9 @@ double EmulatedTable::Piece::ref(double t) const {
       return p1 - s * 0.5 * a * dd * dd;
     }
     case kSwing: {
-      const double g = ramp > 0.0 ? std::min(1.0, dt / ramp) : 1.0;
-      return p0 + amp * g * std::sin(w * dt);
+      const double x = ramp > 0.0 ? std::min(1.0, dt / ramp) : 1.0;
+      const double g = x * x * (3.0 - 2.0 * x);
+      return p0 + amp * g * std::sin(w * dt + phase);
     }
     case kStop: {
       const double T = duration();
@@ -69,9 +70,10 @@ double EmulatedTable::Piece::refRate(double t) const {
     }
     case kSwing: {
       const bool ramping = ramp > 0.0 && dt < ramp;
-      const double g = ramping ? dt / ramp : 1.0;
-      const double dg = ramping ? 1.0 / ramp : 0.0;
-      return amp * (dg * std::sin(w * dt) + g * w * std::cos(w * dt));
+      const double x = ramping ? dt / ramp : 1.0;
+      const double g = x * x * (3.0 - 2.0 * x);
+      const double dg = ramping ? 6.0 * x * (1.0 - x) / ramp : 0.0;
+      return amp * (dg * std::sin(w * dt + phase) + g * w * std::cos(w * dt + phase));
     }
     case kStop: {
       const double T = duration();
@@ -160,6 +162,7 @@ Status EmulatedTable::startSwing(Axis axis, const SwingSpec& s, double t) {
   p.amp = s.amplitudeDeg;
   p.w = kTwoPi * s.frequencyHz;
   p.ramp = std::max(1.0, std::ceil(params_.rampPeriods)) / s.frequencyHz;
+  p.phase = s.startPhaseDeg * kTwoPi / 360.0;
   push(axis, p);
   return Status::ok();
 }
@@ -320,9 +323,9 @@ std::optional<std::string> TableServer::execute(const scpi::Command& c, double t
                scpi::formatNumber(L.maxPositionDeg);
       if (matches(c, "AXIS:#:SWING")) {
         const auto& s = swings_[static_cast<std::size_t>(a)];
-        if (!s) return std::string("0,0,0");
+        if (!s) return std::string("0,0,0,0");
         return scpi::formatNumber(s->frequencyHz) + "," + scpi::formatNumber(s->amplitudeDeg) + "," +
-               scpi::formatNumber(s->centreDeg);
+               scpi::formatNumber(s->centreDeg) + "," + scpi::formatNumber(s->startPhaseDeg);
       }
     }
     pushError(scpi::kUndefinedHeader, c.text);
@@ -389,10 +392,13 @@ std::optional<std::string> TableServer::execute(const scpi::Command& c, double t
     }
     if (matches(c, "AXIS:#:SWING")) {
       std::vector<double> v;
-      if (!wantArgs(3) || !nums(v)) return std::nullopt;
+      // F,A,C or F,A,C,PHASE (the start phase, deg; 0 when left out).
+      if (!wantArgs(c.args.size() == 4 ? 4 : 3) || !nums(v)) return std::nullopt;
       const double f = v[0], amp = v[1], centre = v[2], w = kTwoPi * f;
+      const double phase = v.size() == 4 ? v[3] : 0.0;
       std::string why;
       if (!(f > 0.0) || !(amp > 0.0)) why = "frequency and amplitude must be > 0";
+      else if (!(phase > -360.0 && phase < 360.0)) why = "start phase must be within -360 .. 360 deg";
       else if (amp > l.maxAmplitudeDeg) why = "amplitude beyond " + scpi::formatNumber(l.maxAmplitudeDeg) + " deg";
       else if (f > l.maxFrequencyHz) why = "frequency beyond " + scpi::formatNumber(l.maxFrequencyHz) + " Hz";
       else if (w * amp > l.maxRateDegPerS) why = "peak rate beyond " + scpi::formatNumber(l.maxRateDegPerS) + " deg/s";
@@ -403,7 +409,7 @@ std::optional<std::string> TableServer::execute(const scpi::Command& c, double t
         pushError(scpi::kDataOutOfRange, why);
         return std::nullopt;
       }
-      swings_[static_cast<std::size_t>(a)] = SwingSpec{f, amp, centre};
+      swings_[static_cast<std::size_t>(a)] = SwingSpec{f, amp, centre, phase};
       return std::nullopt;
     }
     if (matches(c, "AXIS:#:POSition")) {
@@ -435,8 +441,9 @@ std::optional<std::string> TableServer::execute(const scpi::Command& c, double t
       if (firstSwingS_ < 0.0) firstSwingS_ = t;
       ++swingsStarted_;
       event("swing: " + std::string(axisLabel(a)) + " " + scpi::formatNumber(s->frequencyHz) + " Hz " +
-            scpi::formatNumber(s->amplitudeDeg) + " deg about " + scpi::formatNumber(s->centreDeg) +
-            " deg started at table time " + scpi::formatNumber(t) + " s");
+            scpi::formatNumber(s->amplitudeDeg) + " deg about " + scpi::formatNumber(s->centreDeg) + " deg" +
+            (s->startPhaseDeg != 0.0 ? " phase " + scpi::formatNumber(s->startPhaseDeg) + " deg" : std::string()) +
+            " started at table time " + scpi::formatNumber(t) + " s");
       return std::nullopt;
     }
   }

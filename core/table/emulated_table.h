@@ -5,8 +5,10 @@
 // Motion, per axis, in table seconds (the emulator's clock, which may run
 // faster than real time): a commanded reference built from analytic pieces —
 // hold, a trapezoidal move (positioning rate and acceleration), a swing whose
-// amplitude ramps up over whole periods (continuous rate, bounded
-// acceleration), a stop at the stop deceleration — and the actual angle,
+// amplitude ramps up over whole periods with a smooth envelope 3x^2 - 2x^3
+// (continuous rate whatever the start phase, bounded acceleration), then
+// runs centre + A sin(w (t - t0) + startPhase), a stop at the stop
+// deceleration — and the actual angle,
 // which follows the reference with a pure servo lag:
 //   actual(t) = reference(t - servoLagS).
 // angleDeg(axis, t) is a pure function of t for every t up to the last
@@ -67,7 +69,7 @@ class EmulatedTable {
     double p1 = 0.0;       // move: target
     double v = 0.0;        // move: cruise rate; stop: start rate
     double a = 0.0;        // move / stop: acceleration magnitude
-    double amp = 0.0, w = 0.0, ramp = 0.0;  // swing (centre = p0)
+    double amp = 0.0, w = 0.0, ramp = 0.0, phase = 0.0;  // swing (centre = p0; phase rad)
     double duration() const;  // move / stop: time to rest; swing/hold: infinite
     double ref(double t) const;
     double refRate(double t) const;

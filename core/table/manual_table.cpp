@@ -18,8 +18,12 @@ Status ManualTable::moveTo(Axis axis, double positionDeg) {
 Status ManualTable::startSwing(Axis axis) {
   tell_(std::string("On the table controller: set the ") + axisLabel(axis) + " axis to swing sinusoidally at " +
         scpi::formatNumber(pending_.frequencyHz) + " Hz, amplitude " + scpi::formatNumber(pending_.amplitudeDeg) +
-        " deg about " + scpi::formatNumber(pending_.centreDeg) +
-        " deg, and start it. The bench records once the table-angle stream shows that swing.");
+        " deg about " + scpi::formatNumber(pending_.centreDeg) + " deg" +
+        (pending_.startPhaseDeg != 0.0
+             ? ", starting at phase " + scpi::formatNumber(pending_.startPhaseDeg) +
+                   " deg (angle = centre + amplitude * sin(2 pi f t + phase))"
+             : std::string()) +
+        ", and start it. The bench records once the table-angle stream shows that swing.");
   return Status::ok();
 }
 

@@ -120,7 +120,8 @@ Status PlanRunner::runPoint(int index, const TestPoint& p) {
   FOG_RETURN_IF_ERROR(waitUntil(allInPlace, options_.moveTimeoutS, label + ": reaching the table position"));
   // Swing.
   if (!p.isStatic()) {
-    FOG_RETURN_IF_ERROR(controller_.configureSwing(axis, SwingSpec{p.frequencyHz, p.amplitudeDeg, centre}));
+    FOG_RETURN_IF_ERROR(controller_.configureSwing(
+        axis, SwingSpec{p.frequencyHz, p.amplitudeDeg, centre, std::remainder(p.startPhaseDeg, 360.0) + 0.0}));
     FOG_RETURN_IF_ERROR(controller_.startSwing(axis));
     say(label + ": swing started");
   }

@@ -13,8 +13,9 @@
 //     stop (bounded deceleration), wait until at rest, rest restBetweenS
 //
 // A static point (gyro noise) skips the swing: the axis is held at rest.
-// The swing starts at its centre, so TestPoint::startPhaseDeg is not
-// commanded (the protocol's swing has no phase; the analysis needs none).
+// The swing is configured with the point's TestPoint::startPhaseDeg: it
+// starts from rest at its centre and, once its amplitude has ramped up, runs
+// centre + amplitude * sin(2 pi f (t - start) + startPhaseDeg).
 //
 // Safety: whatever ends the run early — the stop flag (Ctrl+C), a refused
 // command, a lost link, a fault, an interlock, an emergency stop, the

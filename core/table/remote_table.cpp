@@ -211,8 +211,15 @@ Result<TableState> RemoteTable::state() {
 }
 
 Status RemoteTable::configureSwing(Axis axis, const SwingSpec& swing) {
-  return command("AXIS:" + axisWord(axis) + ":SWING " + scpi::formatNumber(swing.frequencyHz) + "," +
-                 scpi::formatNumber(swing.amplitudeDeg) + "," + scpi::formatNumber(swing.centreDeg));
+  // The start phase is sent only when the plan sets one, so a controller
+  // that knows only F,A,C runs every plan without phases.
+  std::string line = "AXIS:" + axisWord(axis) + ":SWING " + scpi::formatNumber(swing.frequencyHz) + "," +
+                     scpi::formatNumber(swing.amplitudeDeg) + "," + scpi::formatNumber(swing.centreDeg);
+  if (swing.startPhaseDeg != 0.0) {
+    line += ',';
+    line += scpi::formatNumber(swing.startPhaseDeg);
+  }
+  return command(line);
 }
 Status RemoteTable::moveTo(Axis axis, double positionDeg) {
   return command("AXIS:" + axisWord(axis) + ":POS " + scpi::formatNumber(positionDeg));

@@ -41,11 +41,13 @@ enum class AxisMode {
 };
 const char* axisModeName(AxisMode mode);  // "rest", "positioning", ...
 
-// angle = centreDeg + amplitudeDeg * sin(2*pi*frequencyHz*(t - t_start)).
+// angle = centreDeg + amplitudeDeg * sin(2*pi*frequencyHz*(t - t_start) + startPhaseDeg)
+// once the amplitude has ramped up (the axis starts from rest at its centre).
 struct SwingSpec {
   double frequencyHz = 1.0;
   double amplitudeDeg = 3.0;
   double centreDeg = 0.0;
+  double startPhaseDeg = 0.0;  // the plan's TestPoint::startPhaseDeg
 };
 
 struct AxisState {

@@ -107,14 +107,103 @@
     </message>
 </context>
 <context>
+    <name>fog::ui::CommandedMotionTable</name>
+    <message>
+        <location filename="../../ui/commanded_motion.cpp" line="+28"/>
+        <source>Point</source>
+        <translation>测试点</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Axis</source>
+        <translation>轴</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Frequency (Hz)</source>
+        <translation>频率 (Hz)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Angle (deg)</source>
+        <translation>角度 (°)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Peak rate (deg/s)</source>
+        <translation>峰值角速度 (°/s)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Peak accel. (deg/s²)</source>
+        <translation>峰值角加速度 (°/s²)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>the simulator&apos;s turntable</source>
+        <translation>仿真器的转台</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Limits of %1, per axis: amplitude %2 deg, frequency %3 Hz, peak rate %4 deg/s, peak acceleration %5 deg/s², angle within ±%6 deg. Red: beyond a limit.</source>
+        <translation>%1 的限值（每轴）：幅值 %2°，频率 %3 Hz，峰值角速度 %4°/s，峰值角加速度 %5°/s²，角度在 ±%6° 以内。红色：超出限值。</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>frequency beyond the table&apos;s %1 Hz on %2</source>
+        <translation>频率超出转台 %2 轴的 %1 Hz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>at rest</source>
+        <translation>静止</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>amplitude %1 deg is beyond the table&apos;s %2 deg on %3</source>
+        <translation>幅值 %1° 超出转台 %3 轴的 %2°</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the angle leaves the table&apos;s ±%1 deg</source>
+        <translation>角度超出转台的 ±%1°</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 … %2 (±%3)</source>
+        <translation>%1 … %2 (±%3)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <location line="+4"/>
+        <source>%1 / %2</source>
+        <translation>%1 / %2</translation>
+    </message>
+    <message>
+        <location line="-2"/>
+        <source>peak rate beyond the table&apos;s %1 deg/s on %2</source>
+        <translation>峰值角速度超出转台 %2 轴的 %1°/s</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>peak acceleration beyond the table&apos;s %1 deg/s² on %2</source>
+        <translation>峰值角加速度超出转台 %2 轴的 %1°/s²</translation>
+    </message>
+</context>
+<context>
     <name>fog::ui::ConfigureView</name>
     <message>
-        <location filename="../../ui/configure_view.cpp" line="+30"/>
+        <location filename="../../ui/configure_view.cpp" line="+31"/>
         <source>Test plan</source>
         <translation>测试计划</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+6"/>
+        <source>Commanded table motion</source>
+        <translation>转台指令运动</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <location line="+28"/>
         <source>Source</source>
         <translation>数据源</translation>
@@ -420,7 +509,7 @@ counter %5 MHz / %6 bit</source>
 <context>
     <name>fog::ui::LiveView</name>
     <message>
-        <location filename="../../ui/live_view.cpp" line="+54"/>
+        <location filename="../../ui/live_view.cpp" line="+60"/>
         <source>board time (s)</source>
         <translation>采样板时间 (s)</translation>
     </message>
@@ -450,7 +539,37 @@ counter %5 MHz / %6 bit</source>
         <translation>跟随实时</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
+        <source>Turntable</source>
+        <translation>转台</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Driver</source>
+        <translation>驱动</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Mode</source>
+        <translation>模式</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Faults / interlocks</source>
+        <translation>故障 / 联锁</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Commanded</source>
+        <translation>指令</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Measured</source>
+        <translation>实测</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>Turntable angle</source>
         <translation>转台角度</translation>
     </message>
@@ -481,9 +600,60 @@ counter %5 MHz / %6 bit</source>
         <translation>等待首批数据帧 …</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+18"/>
         <source>run ended</source>
         <translation>运行结束</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>at rest (run over)</source>
+        <translation>静止（运行结束）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>swinging %1</source>
+        <translation>%1 轴摆动中</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>at rest (plan done)</source>
+        <translation>静止（计划完成）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>waiting</source>
+        <translation>等待中</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>at rest</source>
+        <translation>静止</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 at rest at %2°</source>
+        <translation>%1 轴静止于 %2°</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 %2 Hz, %3° about %4°</source>
+        <translation>%1 轴 %2 Hz，%3°，中心 %4°</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+26"/>
+        <source>—</source>
+        <translation>—</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 %2 Hz, %3°</source>
+        <translation>%1 轴 %2 Hz，%3°</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>none reported</source>
+        <translation>无</translation>
     </message>
     <message>
         <location line="+20"/>
@@ -501,7 +671,7 @@ counter %5 MHz / %6 bit</source>
         <translation>剩余 %1 / 共 %2</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>table at rest</source>
         <translation>转台静止</translation>
     </message>
@@ -560,12 +730,12 @@ counter %5 MHz / %6 bit</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+705"/>
+        <location line="+708"/>
         <source>Diagnosis</source>
         <translation>诊断</translation>
     </message>
     <message>
-        <location line="-702"/>
+        <location line="-705"/>
         <source>Noise</source>
         <translation>噪声</translation>
     </message>
@@ -643,12 +813,12 @@ counter %5 MHz / %6 bit</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+532"/>
+        <location line="+535"/>
         <source>Open session</source>
         <translation>打开会话</translation>
     </message>
     <message>
-        <location line="-531"/>
+        <location line="-534"/>
         <source>fogbench sessions (*.fbs);;All files (*)</source>
         <translation>fogbench 会话 (*.fbs);;所有文件 (*)</translation>
     </message>
@@ -913,7 +1083,12 @@ Quit: Ctrl+Q</source>
         <translation>无法创建会话文件夹“%1”；请另选一个</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+31"/>
+        <source>simulator (simulated turntable)</source>
+        <translation>仿真器（仿真转台）</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>Running: %1 …</source>
         <translation>运行中：%1 …</translation>
     </message>
@@ -1465,13 +1640,13 @@ File: %1</source>
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../../ui/main_window.cpp" line="-854"/>
+        <location filename="../../ui/main_window.cpp" line="-857"/>
         <location filename="../../ui/plan_editor.cpp" line="-282"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../../ui/live_view.cpp" line="-193"/>
+        <location filename="../../ui/live_view.cpp" line="-293"/>
         <source>%1:%2</source>
         <translation>%1:%2</translation>
     </message>

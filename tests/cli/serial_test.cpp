@@ -158,6 +158,28 @@ TEST_F(SerialBench, EndToEndLagMatchesTheEmulatorsTruth) {
               r.trueLagMs, (p["lag_ms"].get<double>() - r.trueLagMs) * 1e3, p["lag_std_ms"].get<double>() * 1e3);
 }
 
+// fogbench-cli itself sends the host-to-board commands (docs/protocol.md):
+// the pulse equivalent the operator gave, start streaming before the run and
+// stop streaming after it; the board emulator applies and prints them.
+TEST_F(SerialBench, TheHostSendsThePulseEquivalentAndStartsAndStopsTheStream) {
+  const BenchRun r = run({"--linger-s", "5"}, {"--pulse-equivalent-deg", "5e-5"});
+  ASSERT_FALSE(r.pty.empty()) << r.emuErr;
+  ASSERT_EQ(r.cliExit, 0) << r.cliErr;
+  const auto pulse = r.emuOut.find("host command: pulse equivalent 5e-05 deg at stream time");
+  const auto start = r.emuOut.find("host command: start streaming at stream time");
+  const auto stop = r.emuOut.find("host command: stop streaming at stream time");
+  EXPECT_NE(pulse, std::string::npos) << r.emuOut;
+  EXPECT_NE(start, std::string::npos) << r.emuOut;
+  EXPECT_NE(stop, std::string::npos) << r.emuOut;
+  EXPECT_LT(pulse, start);
+  EXPECT_LT(start, stop);
+  EXPECT_NE(r.cliErr.find("board command: stop streaming"), std::string::npos) << r.cliErr;
+  // The board went on as before: the whole plan recorded, the lag right.
+  const auto report = storedReport(r.session);
+  ASSERT_EQ(report["test_points"].size(), 1u) << report.dump();
+  expectLagNearTruth(report["test_points"][0], r.trueLagMs);
+}
+
 TEST_F(SerialBench, ChecksumErrorsAndGarbageAreCountedAndSkipped) {
   const BenchRun r = run({"--corrupt-rate", "2e-5", "--garbage-at-s", "5", "--garbage-bytes", "3000",
                           "--fault-seed", "7"},
@@ -182,8 +204,10 @@ TEST_F(SerialBench, ChecksumErrorsAndGarbageAreCountedAndSkipped) {
 }
 
 TEST_F(SerialBench, GapsAndDuplicatesAreReportedPerTestPoint) {
-  const BenchRun r = run({"--drop-rate", "0.002", "--duplicate-rate", "0.002", "--fault-seed", "3"}, {});
+  const BenchRun r = run({"--drop-rate", "0.002", "--duplicate-rate", "0.002", "--fault-seed", "3"},
+                         {"--no-board-commands"});
   ASSERT_EQ(r.cliExit, 0) << r.cliErr;
+  EXPECT_EQ(r.emuOut.find("host command:"), std::string::npos) << "--no-board-commands: nothing sent\n" << r.emuOut;
   const std::uint64_t dropped = emuCount(r, "dropped frames"), duplicated = emuCount(r, "duplicated frames");
   ASSERT_GT(dropped, 0u);
   ASSERT_GT(duplicated, 0u);

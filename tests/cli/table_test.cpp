@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "child_process.h"
+#include "protocol/recording_builder.h"
 #include "session/session_file.h"
 
 namespace {
@@ -162,6 +163,40 @@ TEST_F(TableBench, AThreeAxisPlanRunsThroughTheWholeHardwarePathAndMeasuresTheTr
   EXPECT_TRUE(logHas(log, "step", "swing verified"));
   EXPECT_TRUE(logHas(log, "step", "plan done: 3 points"));
   EXPECT_TRUE(logHas(log, "command", "SYST:HEART:TIM 0"));  // released: the table is at rest
+  // The host-to-board direction (docs/protocol.md): the board was told to
+  // stream, where the plan stood at each point, and to stop; it echoed the
+  // markers, so the raw stream cut by its own STATUS frames gives the three
+  // points too.
+  const std::string& emuOut = emu.child->out;
+  const auto at = [&](const std::string& part) { return emuOut.find("host command: " + part); };
+  EXPECT_NE(at("start streaming"), std::string::npos) << emuOut;
+  EXPECT_NE(at("mark test point 0 axis 0 phase 2 2.000000 Hz 2.000000 deg"), std::string::npos) << emuOut;
+  EXPECT_NE(at("mark test point 2 axis 2 phase 2 1.000000 Hz 3.000000 deg"), std::string::npos) << emuOut;
+  EXPECT_LT(at("mark test point 0 axis 0 phase 1"), at("mark test point 0 axis 0 phase 2"));
+  EXPECT_LT(at("mark test point 0 axis 0 phase 2"), at("mark test point 0 axis 0 phase 0"));
+  EXPECT_LT(at("mark test point 2 axis 2 phase 0"), at("mark test point 65535 axis 0 phase 3"));
+  EXPECT_LT(at("mark test point 65535 axis 0 phase 3"), at("stop streaming"));
+  EXPECT_NE(at("stop streaming"), std::string::npos) << emuOut;
+  EXPECT_TRUE(logHas(log, "board", "mark test point 2 (Y 2 Hz / 1.5 deg) recording"));
+  EXPECT_TRUE(logHas(log, "board", "stop streaming"));
+  auto raw = (*r)->rawBytes();
+  ASSERT_TRUE(raw.isOk());
+  auto byMarkers = fog::protocol::decodeRecording(*raw);
+  ASSERT_TRUE(byMarkers.isOk()) << byMarkers.status().message();
+  ASSERT_EQ(byMarkers->testPoints.size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(byMarkers->testPoints[i].index, static_cast<int>(i));
+    EXPECT_EQ(byMarkers->testPoints[i].axis, rec->testPoints[i].axis);
+    // "Recording" is marked once the swing is verified, which is after the
+    // start of the checked stretch the bench's cut begins with (at most the
+    // check's 2 periods or 1 s, plus the link's latency), and lasts until
+    // the runner ends the point, after the cut's end.
+    const auto& marked = byMarkers->testPoints[i].table;
+    const auto& cut = rec->testPoints[i].table;
+    EXPECT_GE(marked.front().timeS, cut.front().timeS) << "point " << i + 1;
+    EXPECT_LE(marked.front().timeS, cut.front().timeS + 3.0) << "point " << i + 1;
+    EXPECT_GE(marked.back().timeS, cut.back().timeS) << "point " << i + 1;
+  }
 }
 
 TEST_F(TableBench, ACommandTheControllerRefusesEndsTheRunWithItsErrorAndTheTableAtRest) {

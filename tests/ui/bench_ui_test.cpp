@@ -21,6 +21,7 @@
 #include <QCryptographicHash>
 #include <QDoubleSpinBox>
 #include <QFile>
+#include <QGroupBox>
 #include <QLabel>
 #include <QProcess>
 #include <QPushButton>
@@ -42,6 +43,8 @@
 #include "diagnosis/effects.h"
 #include "io/csv_export.h"
 #include "session/session_file.h"
+#include "ui/commanded_motion.h"
+#include "ui/configure_view.h"
 #include "ui/curve_decimation.h"
 #include "ui/diagnosis_view.h"
 #include "ui/language.h"
@@ -246,6 +249,80 @@ class BenchUiTest : public QObject {
     editor->table()->selectRow(0);
     click(*w, "removePointButton");
     QVERIFY(editor->problem().contains("no test points"));
+  }
+
+  // Configure shows what the table is asked to do, per point, against its
+  // limits: 1 Hz / 10 deg peaks at 62.83 deg/s and 394.8 deg/s^2; a point
+  // beyond a limit is flagged in the cell that is over.
+  void configureShowsTheCommandedMotionAgainstTheLimits() {
+    auto w = window();
+    auto* editor = w->planEditor();
+    QVERIFY(editor->loadPreset("quick"));
+    setValue(editor, 0, PlanEditor::kFrequency, 1.0);
+    setValue(editor, 0, PlanEditor::kAmplitude, 10.0);
+    auto* motion = w->findChild<fog::ui::CommandedMotionTable*>();
+    QVERIFY(motion);
+    auto* table = motion->table();
+    QCOMPARE(table->rowCount(), static_cast<int>(editor->plan().points.size()));
+    using M = fog::ui::CommandedMotionTable;
+    const auto text = [&](int row, int column) { return table->item(row, column)->text(); };
+    QCOMPARE(text(0, M::kFrequency), QString("1"));
+    QCOMPARE(text(0, M::kAngle), QString("-10.00 … 10.00 (±10)"));
+    QCOMPARE(text(0, M::kRate), QString("62.83 / 400"));
+    QCOMPARE(text(0, M::kAccel), QString("394.8 / 3000"));
+    QCOMPARE(motion->flaggedCells(), 0);
+    QVERIFY(table->item(0, M::kRate)->toolTip().isEmpty());
+    QVERIFY(w->findChild<QLabel*>("commandedMotionLimits")->text().contains("the simulator's turntable"));
+    // 10 Hz / 10 deg: 628 deg/s and 39478 deg/s^2, both beyond the table.
+    setValue(editor, 0, PlanEditor::kFrequency, 10.0);
+    QCOMPARE(text(0, M::kRate), QString("628.32 / 400"));
+    QCOMPARE(text(0, M::kAccel), QString("39478.4 / 3000"));
+    QCOMPARE(motion->flaggedCells(), 2);
+    QVERIFY2(table->item(0, M::kRate)->toolTip().contains("peak rate beyond the table's 400 deg/s on X"),
+             qPrintable(table->item(0, M::kRate)->toolTip()));
+    QVERIFY(!table->item(0, M::kAngle)->toolTip().contains("beyond"));
+    // A controller's own limits replace the simulator's.
+    fog::TurntableLimits tight;
+    tight.maxAmplitudeDeg = 5.0;
+    motion->setLimits(tight, 180.0, "remote tcp:127.0.0.1:5025");
+    QVERIFY(table->item(0, M::kAngle)->toolTip().contains("amplitude 10 deg is beyond the table's 5 deg on X"));
+    QCOMPARE(motion->flaggedCells(), 3);
+  }
+
+  // Live shows the table's status while the simulator drives its table:
+  // the mode, the commanded swing and the one measured from the table-angle
+  // stream (within the bench's swing-check tolerances: 2 % amplitude, 0.5 %
+  // frequency), no faults; Stop ends the run and the status says at rest.
+  void liveShowsTheTableStatusAndStopBringsItToRest() {
+    auto w = window();
+    QSignalSpy ended(w.get(), &MainWindow::runEnded);
+    QVERIFY(w->planEditor()->loadPreset("paper-fast"));
+    const fog::TestPoint first = w->planEditor()->plan().points.at(0);
+    w->useSimulator(5.0, 3);
+    click(*w, "runButton");
+    auto* live = w->liveView();
+    QVERIFY(live->tableStatusBox()->isVisibleTo(w.get()));
+    QTRY_VERIFY_WITH_TIMEOUT(std::isfinite(live->measuredAmplitudeDeg()) &&
+                                 live->traces().phase() == fog::protocol::TestPhase::kRecording,
+                             30000);
+    const QString axis = QString(fog::axisName(first.axis)).toUpper();
+    QCOMPARE(live->tableMode(), QString("swinging %1").arg(axis));
+    const QString commanded = w->findChild<QLabel*>("tableCommandedLabel")->text();
+    QVERIFY2(commanded.startsWith(QString("%1 %2 Hz, %3°").arg(axis).arg(first.frequencyHz).arg(first.amplitudeDeg)),
+             qPrintable(commanded));
+    QVERIFY2(std::abs(live->measuredAmplitudeDeg() - first.amplitudeDeg) <= 0.02 * first.amplitudeDeg,
+             qPrintable(QString::number(live->measuredAmplitudeDeg())));
+    QVERIFY2(std::abs(live->measuredFrequencyHz() - first.frequencyHz) <= 0.005 * first.frequencyHz,
+             qPrintable(QString::number(live->measuredFrequencyHz())));
+    QVERIFY(w->findChild<QLabel*>("tableMeasuredLabel")->text().startsWith(axis + " "));
+    QCOMPARE(w->findChild<QLabel*>("tableFaultsLabel")->text(), QString("none reported"));
+    click(*w, "stopButton");
+    QTRY_VERIFY_WITH_TIMEOUT(!ended.isEmpty(), 30000);
+    QCOMPARE(live->tableMode(), QString("at rest (run over)"));
+    QVERIFY(std::isnan(live->measuredAmplitudeDeg()));
+    // A replay drives no table: the status is hidden.
+    live->setTableDriver(QString());
+    QVERIFY(!live->tableStatusBox()->isVisibleTo(w.get()));
   }
 
   // The quick plan on the simulator at 20x: frames appear live, then the

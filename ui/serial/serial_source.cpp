@@ -69,7 +69,14 @@ Result<std::unique_ptr<SerialSource>> SerialSource::open(const SerialSettings& s
   port->setParity(toQt(settings.parity));
   port->setStopBits(settings.stopBits == 2 ? QSerialPort::TwoStop : QSerialPort::OneStop);
   port->setFlowControl(QSerialPort::NoFlowControl);
-  if (!port->open(QIODevice::ReadOnly)) {
+  // Read-write for the optional host-to-board commands; a port the system
+  // lets us only read still records.
+  bool writable = port->open(QIODevice::ReadWrite);
+  if (!writable && port->error() == QSerialPort::PermissionError) {
+    port->clearError();
+    port->open(QIODevice::ReadOnly);
+  }
+  if (!port->isOpen()) {
     const bool settingsRefused = port->error() == QSerialPort::UnsupportedOperationError ||
                                  port->error() == QSerialPort::UnknownError;
     return ioError("cannot open serial port " + settings.port +
@@ -78,7 +85,9 @@ Result<std::unique_ptr<SerialSource>> SerialSource::open(const SerialSettings& s
   }
   // The driver's buffer is not cleared: whatever arrives from here on is
   // what the session stores (the decoder resynchronises on stale bytes).
-  return std::unique_ptr<SerialSource>(new SerialSource(std::move(port), settings));
+  auto source = std::unique_ptr<SerialSource>(new SerialSource(std::move(port), settings));
+  source->writable_ = writable;
+  return source;
 }
 
 SerialSource::SerialSource(std::unique_ptr<QSerialPort> port, SerialSettings settings)
@@ -92,9 +101,36 @@ Status SerialSource::vanished(const std::string& why) {
   return failed_;
 }
 
+bool SerialSource::queueForDevice(std::span<const std::uint8_t> bytes) {
+  if (!writable_) return false;
+  std::lock_guard lock(outboxMutex_);
+  // A board that never reads cannot make this grow without bound: commands
+  // are a few dozen bytes per test point, and QSerialPort takes them at once.
+  outbox_.insert(outbox_.end(), bytes.begin(), bytes.end());
+  return true;
+}
+
+void SerialSource::writeQueued(int timeoutMs) {
+  std::vector<std::uint8_t> bytes;
+  {
+    std::lock_guard lock(outboxMutex_);
+    bytes.swap(outbox_);
+  }
+  if (!bytes.empty() && port_->isOpen())
+    port_->write(reinterpret_cast<const char*>(bytes.data()), static_cast<qint64>(bytes.size()));
+  if (port_->isOpen() && port_->bytesToWrite() > 0 && !port_->waitForBytesWritten(timeoutMs) &&
+      port_->error() == QSerialPort::TimeoutError)
+    port_->clearError();  // the rest goes out with the next wait
+}
+
+void SerialSource::flushToDevice(std::chrono::milliseconds timeout) {
+  if (failed_.isOk() && writable_) writeQueued(static_cast<int>(timeout.count()));
+}
+
 Result<acquisition::ReadOutcome> SerialSource::read(std::vector<std::uint8_t>& out,
                                                     std::chrono::milliseconds timeout) {
   if (!failed_.isOk()) return failed_;
+  if (writable_) writeQueued(0);
   if (port_->bytesAvailable() == 0 && !port_->waitForReadyRead(static_cast<int>(timeout.count()))) {
     const auto error = port_->error();
     if (error == QSerialPort::TimeoutError || error == QSerialPort::NoError) {

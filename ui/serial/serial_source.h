@@ -19,9 +19,14 @@
 //  - A port that disappears (USB adapter unplugged, the board emulator's pty
 //    closed) or fails returns kIoError "serial port /dev/ttyUSB0 vanished:
 //    <reason>"; the source is then done and every later read() fails alike.
+//  - The host-to-board direction: the port is opened read-write (read-only
+//    when the system refuses writing; then queueForDevice() returns false).
+//    queueForDevice() is thread-safe; the queued bytes go out in read() (and
+//    flushToDevice()), in the acquisition thread. Nothing waits for a reply.
 //  - Errors are fog::Status values; nothing throws.
 
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -75,14 +80,20 @@ class SerialSource : public acquisition::ByteSource {
   Result<acquisition::ReadOutcome> read(std::vector<std::uint8_t>& out, std::chrono::milliseconds timeout) override;
   // "serial /dev/ttyUSB0 at 921600 8N1".
   std::string description() const override;
+  bool queueForDevice(std::span<const std::uint8_t> bytes) override;
+  void flushToDevice(std::chrono::milliseconds timeout) override;
 
  private:
+  void writeQueued(int timeoutMs);
   SerialSource(std::unique_ptr<QSerialPort> port, SerialSettings settings);
   Status vanished(const std::string& why);
 
   std::unique_ptr<QSerialPort> port_;
   SerialSettings settings_;
   Status failed_;  // set once the port has failed
+  bool writable_ = false;
+  std::mutex outboxMutex_;
+  std::vector<std::uint8_t> outbox_;  // queued for the device, not yet handed to the port
 };
 
 }  // namespace fog::serial

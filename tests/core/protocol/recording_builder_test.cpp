@@ -105,6 +105,37 @@ TEST(RecordingBuilder, StatusFramesSplitTheStreamIntoTestPoints) {
   EXPECT_EQ(rec->health.lostFrames, 2u);
 }
 
+// A caller that cuts the stream itself (the table-driven run) gets every
+// sample, whatever the board's markers say; counter rate and pulse
+// equivalent still come from the STATUS frames.
+TEST(RecordingBuilder, NotFollowingMarkersKeepsTheWholeStreamAsOneTestPoint) {
+  StreamBuilder s;
+  s.status(1000, statusFor(0, TestPhase::kSettling, 1))
+      .table(1500, tableAt(0, 1000000))
+      .status(2000, statusFor(0, TestPhase::kRecording, 1))
+      .table(2500, tableAt(0, -2000000))
+      .imu(2600, imuWith(4, 0, 0))
+      .status(3000, statusFor(0, TestPhase::kIdle, 1))
+      .table(3500, tableAt(0, 500000));
+  Decoder decoder;
+  std::vector<DecodedFrame> frames;
+  decoder.push(s.bytes, frames);
+  RecordingBuilder marked, whole(false);
+  marked.add(frames);
+  whole.add(frames);
+  const auto byMarkers = marked.finish(decoder.health());
+  const auto all = whole.finish(decoder.health());
+  ASSERT_EQ(byMarkers.testPoints.size(), 1u);
+  EXPECT_EQ(byMarkers.testPoints[0].table.size(), 1u);
+  ASSERT_EQ(all.testPoints.size(), 1u);
+  EXPECT_EQ(all.testPoints[0].table.size(), 3u);
+  EXPECT_EQ(all.testPoints[0].axis, Axis::kY);
+  EXPECT_DOUBLE_EQ(all.testPoints[0].nominalFrequencyHz, 0.0);
+  EXPECT_EQ(all.counterHz, 1e6);
+  ASSERT_EQ(all.testPoints[0].imu.size(), 1u);
+  EXPECT_DOUBLE_EQ(all.testPoints[0].imu[0].incrementDeg[0], 4 * 5e-5);
+}
+
 TEST(RecordingBuilder, RecordingPausedAndResumedOnTheSameTestPointStaysOneTestPoint) {
   StreamBuilder s;
   s.status(0, statusFor(4, TestPhase::kRecording))

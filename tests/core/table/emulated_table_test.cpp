@@ -22,6 +22,45 @@ TEST(EmulatedTable, SwingRampsUpThenFollowsTheSineWithTheServoLag) {
   EXPECT_EQ(t.angleDeg(Axis::kY, 5.0), 0.0);
 }
 
+// A start phase: from rest at the centre, the amplitude ramps up smoothly
+// (no jump in rate at either end of the ramp), then the swing runs at that
+// phase: centre + A sin(w (t - t0) + phase).
+TEST(EmulatedTable, TheSwingStartsAtThePlannedPhase) {
+  EmulatedTable t;
+  ASSERT_TRUE(t.startSwing(Axis::kZ, {0.5, 4.0, 0.0, 90.0}, 1.0).isOk());
+  EXPECT_NEAR(t.angleDeg(Axis::kZ, 1.002), 0.0, 1e-12);
+  EXPECT_NEAR(t.rateDegPerS(Axis::kZ, 1.002), 0.0, 1e-9);
+  // The ramp ends after one period (2 s): the rate is continuous across it.
+  const double end = 1.0 + 2.0 + 0.002;
+  EXPECT_NEAR(t.rateDegPerS(Axis::kZ, end - 1e-6), t.rateDegPerS(Axis::kZ, end + 1e-6), 1e-3);
+  double worstStep = 0.0;
+  for (double tt = 1.002; tt < end + 0.5; tt += 0.001)
+    worstStep = std::max(worstStep, std::abs(t.rateDegPerS(Axis::kZ, tt + 0.001) - t.rateDegPerS(Axis::kZ, tt)));
+  EXPECT_LT(worstStep, 0.1);  // deg/s per ms: bounded acceleration, no jump
+  // Whole periods after the start the swing is at its phase: 4 sin(90 deg).
+  for (double k : {2.0, 3.0, 10.0}) EXPECT_NEAR(t.angleDeg(Axis::kZ, 1.002 + 2.0 * k), 4.0, 1e-9);
+  for (double tt : {5.3, 8.77}) EXPECT_NEAR(t.angleDeg(Axis::kZ, tt), 4.0 * std::cos(M_PI * (tt - 1.002)), 1e-9);
+}
+
+TEST(TableServer, TheSwingCommandTakesAStartPhase) {
+  EmulatedTable t;
+  TableServer s(t);
+  std::vector<std::string> events;
+  s.setEventSink([&](const std::string& e) { events.push_back(e); });
+  (void)s.handleLine("AXIS:X:SWING 1,3,0,-90", 0.0, 0.0);
+  EXPECT_EQ(s.handleLine("AXIS:X:SWING?", 0.0, 0.0).value(), "1,3,0,-90");
+  EXPECT_EQ(s.handleLine("SYST:ERR?", 0.0, 0.0).value(), "0,\"No error\"");
+  (void)s.handleLine("AXIS:X:START", 0.0, 0.0);
+  ASSERT_FALSE(events.empty());
+  EXPECT_NE(events.back().find("swing: X 1 Hz 3 deg about 0 deg phase -90 deg started"), std::string::npos) << events.back();
+  EXPECT_NEAR(t.angleDeg(Axis::kX, 4.002), -3.0, 1e-9);
+  (void)s.handleLine("AXIS:Y:SWING 1,3,0,400", 0.0, 0.0);
+  EXPECT_EQ(s.handleLine("SYST:ERR?", 0.0, 0.0).value(),
+            "-222,\"Data out of range; start phase must be within -360 .. 360 deg\"");
+  (void)s.handleLine("AXIS:Y:SWING 1,3,0,0,5", 0.0, 0.0);
+  EXPECT_EQ(s.handleLine("SYST:ERR?", 0.0, 0.0).value().rfind("-108,", 0), 0u);
+}
+
 TEST(EmulatedTable, StopDeceleratesWithinTheBoundAndComesToRest) {
   EmulatedTable t;
   ASSERT_TRUE(t.startSwing(Axis::kZ, {1.0, 3.0, 0.0}, 0.0).isOk());

@@ -49,6 +49,19 @@ TEST(PlanRunner, RunsEachPointInOrderPositionSwingRecordStopRest) {
   EXPECT_FALSE(b.table.anyMoving());
 }
 
+// The plan's start phase is part of the swing commanded (brought within
+// -180 .. 180 deg: 450 deg is 90 deg).
+TEST(PlanRunner, CommandsThePointsStartPhase) {
+  Bench b;
+  TestPlan plan = threeAxisPlan();
+  plan.points.resize(1);
+  plan.points[0].startPhaseDeg = 450.0;
+  auto r = b.runner.run(plan, nullptr);
+  ASSERT_TRUE(r.status.isOk()) << r.status.message();
+  EXPECT_EQ(b.table.swing.startPhaseDeg, 90.0);
+  EXPECT_EQ(b.table.swing.frequencyHz, 1.0);
+}
+
 TEST(PlanRunner, SendsHeartbeatsWhileItWaits) {
   Bench b;
   auto r = b.runner.run(threeAxisPlan(), nullptr);

@@ -119,6 +119,31 @@ TEST(RemoteTable, DrivesASwingAndReadsItsState) {
   EXPECT_TRUE(sawStatus);
 }
 
+// The plan's start phase reaches the controller (a fourth SWING argument)
+// and the emulated table's swing runs at that phase.
+TEST(RemoteTable, TheStartPhaseIsCommandedAndTheSwingStartsThere) {
+  Remote r;
+  ASSERT_TRUE(r.remote->configureSwing(Axis::kX, {1.0, 2.0, 0.0, 90.0}).isOk());
+  EXPECT_EQ(r.remote->query("AXIS:X:SWING?").value(), "1,2,0,90");
+  ASSERT_TRUE(r.remote->startSwing(Axis::kX).isOk());
+  r.now = 5.002;  // whole periods after the start, plus the servo lag: sin(90 deg)
+  auto s = r.remote->state();
+  ASSERT_TRUE(s.isOk()) << s.status().message();
+  EXPECT_NEAR(s->axis(Axis::kX).positionDeg, 2.0, 1e-6);
+  r.now = 5.252;  // a quarter period later: sin(180 deg)
+  s = r.remote->state();
+  EXPECT_NEAR(s->axis(Axis::kX).positionDeg, 0.0, 1e-6);
+  // Without a phase the command keeps its three arguments.
+  ASSERT_TRUE(r.remote->configureSwing(Axis::kY, {2.0, 1.0, 0.0}).isOk());
+  bool withPhase = false, withoutPhase = false;
+  for (const auto& [kind, text] : r.log) {
+    withPhase |= kind == "command" && text == "AXIS:X:SWING 1,2,0,90";
+    withoutPhase |= kind == "command" && text == "AXIS:Y:SWING 2,1,0";
+  }
+  EXPECT_TRUE(withPhase);
+  EXPECT_TRUE(withoutPhase);
+}
+
 TEST(RemoteTable, ARefusedCommandComesBackWithTheControllersErrorAndTheQueueIsDrained) {
   ServerFaults f;
   f.refuseHeader = "AXIS:Y:START";

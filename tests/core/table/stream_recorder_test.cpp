@@ -132,6 +132,18 @@ TEST(SegmentByWindows, CutsTheWholeStreamIntoThePlansPoints) {
 // operator what to set; the operator first gets the amplitude wrong, the
 // stream check refuses to record until it is right; after "stop" the bench
 // waits until the stream shows the axis at rest.
+TEST(ManualDriver, TellsTheOperatorTheStartPhase) {
+  std::vector<std::string> told;
+  ManualTable table([&](const std::string& text) { told.push_back(text); });
+  ASSERT_TRUE(table.configureSwing(Axis::kZ, {0.5, 4.0, 10.0, 90.0}).isOk());
+  ASSERT_TRUE(table.startSwing(Axis::kZ).isOk());
+  ASSERT_EQ(told.size(), 1u);
+  EXPECT_EQ(told[0],
+            "On the table controller: set the Z axis to swing sinusoidally at 0.5 Hz, amplitude 4 deg about 10 deg, "
+            "starting at phase 90 deg (angle = centre + amplitude * sin(2 pi f t + phase)), and start it. The bench "
+            "records once the table-angle stream shows that swing.");
+}
+
 TEST(ManualDriver, AScriptedOperatorFollowsTheInstructionsAndTheStreamDecides) {
   StreamPointRecorder recorder;
   HandTable hand;
