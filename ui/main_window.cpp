@@ -179,11 +179,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   connect(&liveTimer_, &QTimer::timeout, this, &MainWindow::drainLive);
   connect(planEditor_, &PlanEditor::validityChanged, this, &MainWindow::updateRunButton);
   connect(sessionBrowser_, &SessionBrowser::openRequested, this, &MainWindow::openSession);
-  connect(sessionBrowser_, &SessionBrowser::reanalyseRequested, this, [this](const QString& path) {
-    loadSession(path, true, [this](std::shared_ptr<const RunOutcome> o) {
-      if (o) sessionBrowser_->refresh();
-    });
-  });
+  connect(sessionBrowser_, &SessionBrowser::reanalyseRequested, this, &MainWindow::reanalyseSession);
+  connect(resultView_, &ResultView::resultChosen, this, &MainWindow::chooseResult);
   connect(sessionBrowser_, &SessionBrowser::compareRequested, this, &MainWindow::compareSessions);
   connect(sessionBrowser_, &SessionBrowser::importRequested, this, &MainWindow::importCsv);
   connect(resultView_, &ResultView::diagnoseRequested, this, &MainWindow::diagnoseShown);
@@ -734,7 +731,7 @@ void MainWindow::showFailure(const QString& message) {
   if (closeAfterRun_) QTimer::singleShot(0, this, &QWidget::close);
 }
 
-void MainWindow::loadSession(const QString& path, bool reanalyse,
+void MainWindow::loadSession(const QString& path, bool reanalyse, std::int64_t resultId,
                              std::function<void(std::shared_ptr<const RunOutcome>)> done) {
   const QString name = QFileInfo(path).fileName();
   tell(reanalyse ? tr("Re-analysing %1 …").arg(name) : tr("Opening %1 …").arg(name));
@@ -746,20 +743,34 @@ void MainWindow::loadSession(const QString& path, bool reanalyse,
   };
   // Reading and fitting a long session takes a while: off the GUI thread.
   inBackground(
-      this, [path, reanalyse, bench]() -> Loaded {
+      this, [path, reanalyse, resultId, bench]() -> Loaded {
         auto reader = session::SessionReader::open(path.toStdString());
         if (!reader) return {nullptr, reader.status()};
         auto recording = (*reader)->recording();
         if (!recording) return {nullptr, recording.status()};
+        auto stored = (*reader)->results();
+        if (!stored) return {nullptr, stored.status()};
         auto outcome = std::make_shared<RunOutcome>();
         outcome->info = (*reader)->info();
         outcome->sessionPath = path.toStdString();
         outcome->complete = (*reader)->complete();
         outcome->incompleteReason = (*reader)->incompleteReason();
         outcome->recording = std::move(*recording);
-        // Review uses the session's own constants; a re-analysis the bench's.
-        if (reanalyse) outcome->info.bench = bench;
-        const auto constants = analysis::benchConstantsOf(outcome->info.bench);
+        const auto sessionConstants = analysis::benchConstantsOf(outcome->info.bench);
+        outcome->results = resultRecords(*stored, sessionConstants);
+        // A re-analysis uses the bench's constants; review the chosen stored
+        // result's (the newest unless one is asked for), or the session's own
+        // when none is stored.
+        analysis::BenchConstants constants = reanalyse ? analysis::benchConstantsOf(bench) : sessionConstants;
+        if (!reanalyse) {
+          const ResultRecord* chosen = newestUsable(outcome->results);
+          for (const auto& r : outcome->results)
+            if (r.id == resultId && r.usable) chosen = &r;
+          if (chosen) {
+            constants = chosen->constants;
+            outcome->shownResultId = chosen->id;
+          }
+        }
         outcome->report = analysis::analyzeRecording(outcome->recording, constants);
         const std::string source = "session " + path.toStdString() + " (" + (*reader)->info().source + ")";
         reader->reset();
@@ -770,11 +781,24 @@ void MainWindow::loadSession(const QString& path, bool reanalyse,
                                           analysis::formatReportJson(*outcome->report, context));
               !s.isOk())
             return {nullptr, s};
+          // The new result is the newest: it is the one shown.
+          auto again = session::SessionReader::open(path.toStdString());
+          if (!again) return {nullptr, again.status()};
+          auto all = (*again)->results();
+          if (!all) return {nullptr, all.status()};
+          outcome->results = resultRecords(*all, sessionConstants);
+          if (const auto* newest = newestUsable(outcome->results)) outcome->shownResultId = newest->id;
         }
+        // What the shown result was computed with, everywhere (report pages, Diagnose).
+        outcome->info.bench.tableReadDelayMs = constants.tableReadDelayMs;
+        outcome->info.bench.tableReadDelayStdMs = constants.tableReadDelayStdMs;
+        outcome->info.bench.boardDelayMs = constants.boardDelayMs;
+        outcome->info.bench.boardDelayStdMs = constants.boardDelayStdMs;
+        if (constants.pulseEquivalentDeg > 0.0) outcome->info.bench.pulseEquivalentDeg = constants.pulseEquivalentDeg;
         completeOutcome(*outcome, source);
         return {outcome, Status::ok()};
       },
-      [this, path, name, reanalyse, done](Loaded result) {
+      [this, path, name, reanalyse, resultId, done](Loaded result) {
         if (!result.outcome) {
           reportError(reanalyse ? tr("Re-analyse") : tr("Open session"),
                       reanalyse ? tr("Cannot re-analyse %1").arg(name) : tr("Cannot open %1").arg(name),
@@ -783,10 +807,16 @@ void MainWindow::loadSession(const QString& path, bool reanalyse,
           return;
         }
         if (reanalyse) {
-          tell(tr("%1: re-analysed with the bench constants; the result was added to the session").arg(name));
+          tell(tr("%1: re-analysed with the bench constants; the result was added to the session and is shown").arg(name));
           showMessage(this, MessageKind::kInformation, tr("Re-analyse"), tr("%1 re-analysed").arg(name),
                       tr("The session was analysed with the current bench constants and the result was added to it; "
-                         "its recorded data did not change.\n\nFile: %1").arg(QDir::toNativeSeparators(path)));
+                         "its recorded data did not change. The Results view shows the new result; its Result list "
+                         "holds the earlier ones.\n\nFile: %1").arg(QDir::toNativeSeparators(path)));
+        } else if (resultId != 0) {
+          tell(tr("%1: result %2 of %3 shown")
+                   .arg(name)
+                   .arg(result.outcome->shownResultNumber())
+                   .arg(result.outcome->results.size()));
         } else {
           tell(tr("%1: read-only review").arg(name));
           addRecentSession(path);
@@ -796,16 +826,41 @@ void MainWindow::loadSession(const QString& path, bool reanalyse,
 }
 
 void MainWindow::openSession(const QString& path) {
-  loadSession(path, false, [this](std::shared_ptr<const RunOutcome> outcome) {
-    if (outcome) {
-      shown_ = outcome;
-      showHealth(outcome->recording.health, 0);
-      resultView_->showOutcome(outcome);
-      analyseNoise(outcome);
-      showView(kResults);
-    }
+  loadSession(path, false, 0, [this](std::shared_ptr<const RunOutcome> outcome) {
+    if (outcome) showLoaded(outcome);
     emit sessionOpened(outcome != nullptr);
   });
+}
+
+void MainWindow::reanalyseSession(const QString& path) {
+  loadSession(path, true, 0, [this](std::shared_ptr<const RunOutcome> outcome) {
+    if (outcome) {
+      sessionBrowser_->refresh();
+      showLoaded(outcome);
+    }
+    emit reanalysed(outcome != nullptr);
+  });
+}
+
+void MainWindow::chooseResult(qint64 resultId) {
+  const auto outcome = resultView_->sharedOutcome();
+  if (!outcome || outcome->sessionPath.empty() || resultId == outcome->shownResultId) return;
+  resultView_->setChoosing(true);
+  loadSession(QString::fromStdString(outcome->sessionPath), false, resultId,
+              [this](std::shared_ptr<const RunOutcome> o) {
+                resultView_->setChoosing(false);
+                if (o) showLoaded(o);
+                else resultView_->showOutcome(resultView_->sharedOutcome());  // back to what is shown
+                emit resultShown(o != nullptr);
+              });
+}
+
+void MainWindow::showLoaded(std::shared_ptr<const RunOutcome> outcome) {
+  shown_ = outcome;
+  showHealth(outcome->recording.health, 0);
+  resultView_->showOutcome(outcome);
+  analyseNoise(outcome);
+  showView(kResults);
 }
 
 void MainWindow::importCsv(const QString& csvFolder) {
@@ -928,8 +983,20 @@ void MainWindow::compareSessions(const QString& first, const QString& second) {
     v->addWidget(view, 1);
     split->addWidget(column);
     QPointer<ResultView> guard(view);
-    loadSession(path, false, [guard](std::shared_ptr<const RunOutcome> o) {
+    auto show = [guard](std::shared_ptr<const RunOutcome> o) {
       if (guard && o) guard->showOutcome(o);
+    };
+    loadSession(path, false, 0, show);
+    // Another stored result of the session, in its column.
+    connect(view, &ResultView::resultChosen, this, [this, path, guard, show](qint64 id) {
+      if (!guard) return;
+      guard->setChoosing(true);
+      loadSession(path, false, id, [guard, show](std::shared_ptr<const RunOutcome> o) {
+        if (!guard) return;
+        guard->setChoosing(false);
+        if (o) show(o);
+        else guard->showOutcome(guard->sharedOutcome());
+      });
     });
   }
   // As large as the screen allows, up to 1600 x 900.

@@ -105,8 +105,14 @@ class MainWindow : public QMainWindow {
  public slots:
   void startRun();
   void stopRun();
-  // Opens a session read-only (in the background) and shows its result.
+  // Opens a session read-only (in the background) and shows its newest
+  // stored result (the session's own constants when none is stored).
   void openSession(const QString& path);
+  // Analyses a session again with the bench constants, adds the result to
+  // it and shows that result.
+  void reanalyseSession(const QString& path);
+  // Shows another stored result of the shown session (its id).
+  void chooseResult(qint64 resultId);
   // Imports a folder in the CSV layout (docs/formats.md) as a new session in
   // the browser's folder, in the background.
   void importCsv(const QString& csvFolder);
@@ -122,6 +128,10 @@ class MainWindow : public QMainWindow {
   void runEnded(bool succeeded);
   // Every openSession ends with this.
   void sessionOpened(bool succeeded);
+  // Every reanalyseSession ends with this.
+  void reanalysed(bool succeeded);
+  // Every chooseResult that loads another result ends with this.
+  void resultShown(bool succeeded);
   // Every importCsv ends with this: the new session, or empty on failure.
   void importEnded(const QString& sessionPath);
   // Every diagnoseShown ends with this.
@@ -150,7 +160,13 @@ class MainWindow : public QMainWindow {
   void showFailure(const QString& message);
   void showHealth(const StreamHealth& health, std::uint64_t dropped);
   void tell(const QString& message);
-  void loadSession(const QString& path, bool reanalyse, std::function<void(std::shared_ptr<const RunOutcome>)> done);
+  // Reads a session and analyses it in the background: with the bench's
+  // constants when `reanalyse` (the result is added to the session), else
+  // with the constants of its stored result `resultId` (0: the newest).
+  void loadSession(const QString& path, bool reanalyse, std::int64_t resultId,
+                   std::function<void(std::shared_ptr<const RunOutcome>)> done);
+  // Shows a loaded session's outcome in Results (and its noise analysis).
+  void showLoaded(std::shared_ptr<const RunOutcome> outcome);
   void compareSessions(const QString& first, const QString& second);
   // The Allan deviation of the outcome's static segments, in the background.
   void analyseNoise(std::shared_ptr<const RunOutcome> outcome);

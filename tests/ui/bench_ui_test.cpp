@@ -384,6 +384,58 @@ class BenchUiTest : public QObject {
     auto reader = fog::session::SessionReader::open(complete.toStdString());
     QVERIFY(reader.isOk());
     QCOMPARE((*reader)->results()->size(), resultsBefore + 1);
+    const qint64 newestId = (*reader)->results()->back().id;
+    reader->reset();
+
+    // The new result is shown, chosen, and is what the report draws.
+    auto* results = w->resultView();
+    QCOMPARE(w->currentView(), MainWindow::kResults);
+    QVERIFY(w->lastOutcome() && w->lastOutcome()->report);
+    QCOMPARE(w->lastOutcome()->shownResultId, newestId);
+    QCOMPARE(results->resultCombo()->count(), static_cast<int>(resultsBefore + 1));
+    QCOMPARE(results->resultCombo()->currentIndex(), static_cast<int>(resultsBefore));
+    QCOMPARE(results->resultCombo()->currentData().toLongLong(), newestId);
+    QVERIFY(results->resultCombo()->isEnabled());
+    const auto& reanalysedPoint = w->lastOutcome()->report->points.front();
+    QCOMPARE(results->delayTable()->item(3, 1)->text().toDouble(), 0.3);
+    QVERIFY(std::abs(reanalysedPoint.gyroDelayMs - (reanalysedPoint.imuDelayMs - 0.3)) < 1e-9);
+    const QString newest = QString("result %1 of %1").arg(resultsBefore + 1);
+    QVERIFY2(results->resultDescription().startsWith(newest) && results->resultDescription().contains("board 0.3000 ms"),
+             qPrintable(results->resultDescription()));
+    QVERIFY(results->reportText().contains(newest));
+    auto reportOf = [&] {
+      QStringList drawn;
+      auto input = results->reportInput(0.8);
+      if (!input.isOk() || !fog::report::renderCalibrationPages(*input, 30, &drawn).isOk()) return QString();
+      return drawn.join("\n");
+    };
+    QString drawn = reportOf();
+    QVERIFY2(drawn.contains(newest) && drawn.contains("board 0.3000 ms"), qPrintable(drawn.left(2000)));
+    // The constants table (page 2) is the chosen result's too.
+    QVERIFY(drawn.count("0.3000 ms") >= 2);
+
+    // The older result, chosen: its constants and numbers, in the view and the report.
+    QSignalSpy chosen(w.get(), &MainWindow::resultShown);
+    emit results->resultCombo()->activated(0);
+    QTRY_VERIFY_WITH_TIMEOUT(!chosen.isEmpty(), 30000);
+    QCOMPARE(chosen.front().front().toBool(), true);
+    QCOMPARE(results->resultCombo()->currentIndex(), 0);
+    QCOMPARE(w->lastOutcome()->shownResultNumber(), 1);
+    QCOMPARE(results->delayTable()->item(3, 1)->text().toDouble(), 0.28);
+    const auto& olderPoint = w->lastOutcome()->report->points.front();
+    QVERIFY(std::abs(olderPoint.gyroDelayMs - (olderPoint.imuDelayMs - 0.28)) < 1e-9);
+    QVERIFY(std::abs(olderPoint.gyroDelayMs - reanalysedPoint.gyroDelayMs - 0.02) < 1e-9);
+    drawn = reportOf();
+    QVERIFY2(drawn.contains(QString("result 1 of %1").arg(resultsBefore + 1)) && drawn.contains("board 0.2800 ms"),
+             qPrintable(drawn.left(2000)));
+    QVERIFY(!drawn.contains("board 0.3000 ms"));
+
+    // Opening the session again shows its newest result.
+    opened.clear();
+    w->openSession(complete);
+    QTRY_VERIFY_WITH_TIMEOUT(!opened.isEmpty(), 30000);
+    QCOMPARE(w->lastOutcome()->shownResultId, newestId);
+    QCOMPARE(results->delayTable()->item(3, 1)->text().toDouble(), 0.3);
 
     // Compare the two sessions of the folder.
     const QStringList all = [&] {
