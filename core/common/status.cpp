@@ -14,6 +14,7 @@ const char* statusCodeName(StatusCode code) {
     case StatusCode::kCorruptData: return "corrupt data";
     case StatusCode::kIoError: return "I/O error";
     case StatusCode::kNotConverged: return "not converged";
+    case StatusCode::kCancelled: return "cancelled";
     case StatusCode::kInternal: return "internal error";
   }
   return "unknown";

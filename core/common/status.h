@@ -18,6 +18,7 @@ enum class StatusCode {
   kCorruptData,       // input bytes or values are malformed
   kIoError,           // a file or device could not be read or written
   kNotConverged,      // an iterative fit did not converge
+  kCancelled,         // the caller asked the work to stop (not a failure)
   kInternal,          // a bug: should never be seen
 };
 
@@ -51,6 +52,7 @@ inline Status outOfRange(std::string m) { return {StatusCode::kOutOfRange, std::
 inline Status insufficientData(std::string m) { return {StatusCode::kInsufficientData, std::move(m)}; }
 inline Status corruptData(std::string m) { return {StatusCode::kCorruptData, std::move(m)}; }
 inline Status ioError(std::string m) { return {StatusCode::kIoError, std::move(m)}; }
+inline Status cancelled(std::string m) { return {StatusCode::kCancelled, std::move(m)}; }
 
 // Returns from the enclosing function (whose return type a Status converts
 // to) when expr gives an error Status.

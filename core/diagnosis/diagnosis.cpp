@@ -26,12 +26,71 @@ namespace {
 
 using EffectList = std::vector<std::pair<EffectId, std::vector<double>>>;
 
+// Replays run by calibrateEarthRateAndBias().
+constexpr std::size_t kCalibrationReplays = 4;
+
+Status cancelledByCaller() { return cancelled("diagnosis cancelled: nothing was concluded"); }
+
+// Progress of a diagnosis, counted in replays (each is most of the cost of
+// its step), and the caller's cancel request. Thread-safe: replays run on
+// several threads; the caller's callback is called one call at a time.
+class Progress {
+ public:
+  explicit Progress(const DiagnosisOptions& options) : callback_(options.progress) {}
+
+  // Enters a stage; `expectedReplays` is the whole diagnosis' replay count
+  // as now known (it grows as the stages learn what they will run).
+  void stage(const char* name, std::size_t expectedReplays) {
+    std::lock_guard lock(mutex_);
+    stage_ = name;
+    expected_ = std::max(expected_, expectedReplays);
+    reportLocked();
+  }
+  void replayDone() {
+    std::lock_guard lock(mutex_);
+    ++done_;
+    reportLocked();
+  }
+  void finished() {
+    std::lock_guard lock(mutex_);
+    fraction_ = 1.0;
+    if (callback_ && !cancelled_) callback_(1.0, stage_);
+  }
+  bool cancelled() const { return cancelled_.load(); }
+
+ private:
+  void reportLocked() {
+    if (!callback_ || cancelled_) return;
+    // The last few percent are left to finished(): the estimate of the
+    // replays still to come can be short.
+    if (expected_ > 0)
+      fraction_ = std::max(fraction_, std::min(0.99, static_cast<double>(done_) / static_cast<double>(expected_)));
+    if (!callback_(fraction_, stage_)) cancelled_ = true;
+  }
+
+  std::function<bool(double, const std::string&)> callback_;
+  std::mutex mutex_;
+  std::string stage_ = "calibration";
+  std::size_t done_ = 0, expected_ = 0;
+  double fraction_ = 0.0;
+  std::atomic<bool> cancelled_{false};
+};
+
 struct Replay {
   Calibration cal;
   FeatureReference ref;
   EffectContext context;
+  Progress* progress = nullptr;  // counts the replays; a cancel makes run() fail at once
 
   Result<FeatureSet> run(std::uint64_t seed, const EffectList& effects) const {
+    if (progress && progress->cancelled()) return cancelledByCaller();
+    auto features = runUncounted(seed, effects);
+    if (progress) progress->replayDone();
+    return features;
+  }
+
+ private:
+  Result<FeatureSet> runUncounted(std::uint64_t seed, const EffectList& effects) const {
     model::SimConfig config = cal.config;
     config.seed = seed;
     std::vector<std::unique_ptr<model::Effect>> list;
@@ -347,12 +406,14 @@ Status calibrateEarthRateAndBias(Replay& replay, const std::vector<FeatureKey>& 
     std::uint64_t seed;
   };
   const std::vector<Run> runs = {{0.0, seedA}, {0.0, seedB}, {90.0, seedA}, {180.0, seedA}};
+  static_assert(kCalibrationReplays == 4);
   std::vector<Result<FeatureSet>> out(runs.size(), Status(StatusCode::kInternal, "not run"));
   parallelFor(runs.size(), options.threads, [&](std::size_t i) {
     Replay r = base;
     r.cal.config.earth.headingDeg = runs[i].headingDeg;
     out[i] = r.run(runs[i].seed, {});
   });
+  if (replay.progress && replay.progress->cancelled()) return cancelledByCaller();
   for (auto& o : out) {
     if (!o) return Status(o.status().code(), "replay (Earth-rate calibration): " + o.status().message());
     if (o->values.size() != real.size())
@@ -451,6 +512,9 @@ Status calibrateEarthRateAndBias(Replay& replay, const std::vector<FeatureKey>& 
 Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, const analysis::BenchConstants& constants,
                            const DiagnosisOptions& options) {
   const auto started = std::chrono::steady_clock::now();
+  Progress progress(options);
+  progress.stage("calibration", 0);
+  if (progress.cancelled()) return cancelledByCaller();
   Diagnosis d;
   Recording recording = input;
   // Raw pulse counts (a stream without its pulse equivalent) become degrees.
@@ -482,6 +546,7 @@ Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, cons
 
   // ---- Calibration -------------------------------------------------------
   Replay replay;
+  replay.progress = &progress;
   Calibration& cal = replay.cal;
   model::SimConfig& c = cal.config;
   c.samplingBoard.counterHz = recording.counterHz > 0 ? recording.counterHz : c.samplingBoard.counterHz;
@@ -596,8 +661,13 @@ Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, cons
       }
     }
   }
+  // What is left after these: the exact re-evaluations, a Ceres fit or two
+  // (a few rounds of a replay per parameter), a pair, the timing replay.
+  const int refineCount = std::max(0, options.refineTop);
+  progress.stage("replays", kCalibrationReplays + jobs.size() + 4 * static_cast<std::size_t>(refineCount) + 2);
   std::vector<Result<FeatureSet>> outputs(jobs.size(), Status(StatusCode::kInternal, "not run"));
   parallelFor(jobs.size(), options.threads, [&](std::size_t i) { outputs[i] = replay.run(jobs[i].seed, jobs[i].effects); });
+  if (progress.cancelled()) return cancelledByCaller();
   for (std::size_t i = 0; i < outputs.size(); ++i) {
     if (!outputs[i]) return Status(outputs[i].status().code(), "replay: " + outputs[i].status().message());
     if (outputs[i]->values.size() != real.size())
@@ -688,6 +758,7 @@ Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, cons
   projectOut(nuisance, z0, st.held, true);
 
   // ---- Effects: linear scores ----------------------------------------------
+  progress.stage("effects", 0);
   struct Candidate {
     std::size_t lib;
     std::vector<std::vector<double>> cols;  // signature per parameter, in z units per parameter unit
@@ -808,6 +879,8 @@ Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, cons
   std::sort(cands.begin(), cands.end(), [](const Candidate& a, const Candidate& b) { return a.fit.score > b.fit.score; });
 
   // ---- Exact re-evaluation of the best few (Ceres for nonlinear ones) -------
+  progress.stage("refinement", 0);
+  if (progress.cancelled()) return cancelledByCaller();
   std::vector<std::size_t> trainRows;
   for (std::size_t i = 0; i < n; ++i)
     if (!st.held[i]) trainRows.push_back(i);
@@ -893,7 +966,10 @@ Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, cons
     cand.zAfter = z;
   }
 
+  if (progress.cancelled()) return cancelledByCaller();
+
   // ---- Two effects at once ---------------------------------------------------
+  progress.stage("pairs", 0);
   std::vector<std::size_t> kept;
   for (int r = 0; r < refine; ++r)
     if (cands[static_cast<std::size_t>(r)].fit.kept) kept.push_back(static_cast<std::size_t>(r));
@@ -960,7 +1036,10 @@ Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, cons
     }
   }
 
+  if (progress.cancelled()) return cancelledByCaller();
+
   // ---- Verdict ---------------------------------------------------------------
+  progress.stage("verdict", 0);
   for (std::size_t i = 0; i < n; ++i) d.gapMap[i].zAfter = zModel[i];
   d.gapAfter = channelGaps(d.gapMap, true);
   HeldOutShrink total;
@@ -1059,7 +1138,9 @@ Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, cons
       if (auto rec = protocol::decodeRecording(sim->bytes))
         d.simTiming = auditTiming(*rec, replay.ref.tablePeriodS, replay.ref.imuPeriodS);
   }
+  if (progress.cancelled()) return cancelledByCaller();
   d.calibration = cal;
+  progress.finished();
   d.elapsedS = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return d;
 }

@@ -28,6 +28,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -59,6 +60,14 @@ struct DiagnosisOptions {
   double channelWorsening = 25.0;
   int refineTop = 3;         // effects re-evaluated on the exact forward model
   bool allowPairs = true;
+  // Progress and cancellation, for a GUI. Called from diagnose()'s own
+  // threads, one call at a time (never concurrently), at least once per
+  // replay (~0.1-0.5 s apart): `fraction` of the work done, in [0, 1] and
+  // never decreasing, and the stage: "calibration", "replays", "effects",
+  // "refinement", "pairs", "verdict". Returning false cancels: diagnose()
+  // stops within about one replay's time and returns StatusCode::kCancelled.
+  // The callback must not block (post to the GUI thread).
+  std::function<bool(double fraction, const std::string& stage)> progress;
 };
 
 struct Calibration {

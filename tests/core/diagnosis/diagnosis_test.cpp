@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <nlohmann/json.hpp>
 
 #include "diagnosis/blind_check.h"
@@ -185,6 +187,59 @@ TEST(Diagnosis, SubQuantumEncoderCyclicErrorIsNamedAndRecovered) {
   EXPECT_NEAR(f.values[0], 0.0, 0.005);
   EXPECT_NEAR(f.values[1], 0.05, 0.005);
   EXPECT_GT(f.heldOutShrink, 0.9);
+}
+
+// The GUI's progress bar and Cancel: the fraction only grows and ends at 1,
+// every stage is reported in order; a cancel stops the diagnosis at once
+// with kCancelled and no verdict.
+TEST(Diagnosis, ReportsProgressAndStopsWhenCancelled) {
+  model::SimConfig c;
+  c.seed = 31;
+  const TestPlan plan = blindCheckPlan();
+  auto run = model::simulate(c, plan);
+  ASSERT_TRUE(run.isOk());
+  auto rec = protocol::decodeRecording(run->bytes);
+  ASSERT_TRUE(rec.isOk());
+  SessionInfo info;
+  info.plan = plan;
+
+  DiagnosisOptions options;
+  std::vector<double> fractions;
+  std::vector<std::string> stages;
+  int concurrent = 0, maxConcurrent = 0;
+  options.progress = [&](double f, const std::string& stage) {
+    maxConcurrent = std::max(maxConcurrent, ++concurrent);
+    fractions.push_back(f);
+    if (stages.empty() || stages.back() != stage) stages.push_back(stage);
+    --concurrent;
+    return true;
+  };
+  auto d = diagnose(*rec, &info, {}, options);
+  ASSERT_TRUE(d.isOk()) << d.status().toString();
+  ASSERT_GE(fractions.size(), 20u);  // at least once per replay
+  EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));
+  EXPECT_EQ(fractions.back(), 1.0);
+  EXPECT_GE(fractions.front(), 0.0);
+  EXPECT_EQ(maxConcurrent, 1);
+  const std::vector<std::string> expected = {"calibration", "replays", "effects", "refinement", "pairs", "verdict"};
+  EXPECT_EQ(stages, expected);
+  // Halfway through the replays stage the bar is neither at the start nor
+  // at the end: the fraction counts the work.
+  const auto mid = std::find_if(fractions.begin(), fractions.end(), [](double f) { return f > 0.3 && f < 0.7; });
+  EXPECT_NE(mid, fractions.end());
+
+  int callsAfterCancel = 0;
+  bool cancelledOnce = false;
+  options.progress = [&](double f, const std::string&) {
+    if (cancelledOnce) ++callsAfterCancel;
+    if (f > 0.2) cancelledOnce = true;
+    return !cancelledOnce;
+  };
+  auto stopped = diagnose(*rec, &info, {}, options);
+  ASSERT_FALSE(stopped.isOk());
+  EXPECT_EQ(stopped.status().code(), StatusCode::kCancelled);
+  EXPECT_NE(stopped.status().message().find("cancelled"), std::string::npos);
+  EXPECT_EQ(callsAfterCancel, 0);
 }
 
 }  // namespace
