@@ -121,7 +121,7 @@ constexpr int kMaxRecentSessions = 8;
 // thread, as long as `owner` lives. The result type must be
 // default-constructible (QFuture's rule): an outcome or the reason why not.
 template <typename Work, typename Done>
-void inBackground(QObject* owner, Work work, Done done) {
+QFuture<std::invoke_result_t<Work>> inBackground(QObject* owner, Work work, Done done) {
   using Result = std::invoke_result_t<Work>;
   auto* watcher = new QFutureWatcher<Result>(owner);
   QObject::connect(watcher, &QFutureWatcherBase::finished, owner, [watcher, done = std::move(done)]() mutable {
@@ -129,7 +129,9 @@ void inBackground(QObject* owner, Work work, Done done) {
     watcher->deleteLater();
     done(std::move(result));
   });
-  watcher->setFuture(QtConcurrent::run(std::move(work)));
+  auto future = QtConcurrent::run(std::move(work));
+  watcher->setFuture(future);
+  return future;
 }
 
 QString defaultSessionFolder() {
@@ -184,6 +186,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   connect(sessionBrowser_, &SessionBrowser::compareRequested, this, &MainWindow::compareSessions);
   connect(sessionBrowser_, &SessionBrowser::importRequested, this, &MainWindow::importCsv);
   connect(resultView_, &ResultView::diagnoseRequested, this, &MainWindow::diagnoseShown);
+  connect(diagnosisView_, &DiagnosisView::cancelRequested, this, &MainWindow::cancelDiagnosis);
   connect(resultView_, &ResultView::exported, this, &MainWindow::exported);
   connect(resultView_, &ResultView::exportFailed, this, [this](const QString& title, const QString& why) {
     reportError(title, title, why);
@@ -205,7 +208,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   tell(tr("Configure a plan and press Run."));
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow() {
+  // A running diagnosis posts its progress to this window: it ends first
+  // (a cancel stops it within about a second).
+  cancelDiagnosis();
+  diagnosisFuture_.waitForFinished();
+}
 
 void MainWindow::editBenchSettings() {
   BenchSettingsDialog dialog(bench_, this);
@@ -900,23 +908,45 @@ void MainWindow::importCsv(const QString& csvFolder) {
 void MainWindow::diagnoseShown() {
   const auto outcome = resultView_->sharedOutcome();
   if (!outcome || !outcome->report) return;
+  if (diagnosisCancel_) {  // one at a time: the running one is in view
+    showView(kDiagnosis);
+    return;
+  }
   const QString title = outcome->sessionPath.empty() ? tr("this run")
                                                     : QFileInfo(QString::fromStdString(outcome->sessionPath)).fileName();
-  diagnosisView_->showMessage(tr("Diagnosing %1: replaying it in the simulator …").arg(title));
+  diagnosisView_->startDiagnosis(title);
   showView(kDiagnosis);
   tell(tr("Diagnosing %1 …").arg(title));
+  auto cancel = std::make_shared<std::atomic<bool>>(false);
+  diagnosisCancel_ = cancel;
   struct Done {
     std::shared_ptr<diagnosis::Diagnosis> result;
     Status status;
   };
+  diagnosis::DiagnosisOptions options;
+  // Called on the diagnosis' threads, one call at a time: posted to the GUI
+  // thread, never waited for. (The window waits for a running diagnosis
+  // before it goes, so `this` outlives every call.)
+  options.progress = [this, cancel](double fraction, const std::string& stage) {
+    QMetaObject::invokeMethod(
+        this, [this, fraction, stage] { diagnosisView_->setProgress(fraction, stage); }, Qt::QueuedConnection);
+    return !cancel->load();
+  };
   // Several replays of the session in the simulator: off the GUI thread.
-  inBackground(
-      this, [outcome]() -> Done {
-        auto d = diagnosis::diagnose(outcome->recording, &outcome->info, outcome->report->constants);
+  diagnosisFuture_ = inBackground(
+      this, [outcome, options]() -> Done {
+        auto d = diagnosis::diagnose(outcome->recording, &outcome->info, outcome->report->constants, options);
         if (!d) return {nullptr, d.status()};
         return {std::make_shared<diagnosis::Diagnosis>(std::move(*d)), Status::ok()};
       },
       [this, title](Done done) {
+        diagnosisCancel_.reset();
+        if (done.status.code() == StatusCode::kCancelled) {
+          diagnosisView_->showCancelled(title);
+          tell(tr("Diagnosis of %1 cancelled").arg(title));
+          emit diagnosisEnded(false);
+          return;
+        }
         if (!done.result) {
           diagnosisView_->showMessage(tr("No diagnosis: %1").arg(QString::fromStdString(done.status.message())));
           reportError(tr("Diagnosis"), tr("No diagnosis of %1").arg(title), QString::fromStdString(done.status.message()));
@@ -930,6 +960,10 @@ void MainWindow::diagnoseShown() {
                  .arg(localNumber(done.result->elapsedS, 'f', 1)));
         emit diagnosisEnded(true);
       });
+}
+
+void MainWindow::cancelDiagnosis() {
+  if (diagnosisCancel_) diagnosisCancel_->store(true);
 }
 
 void MainWindow::analyseNoise(std::shared_ptr<const RunOutcome> outcome) {

@@ -22,9 +22,11 @@
 // starts (QSettings); plans load and save in the CLI's JSON plan format.
 
 #include <QElapsedTimer>
+#include <QFuture>
 #include <QFutureWatcher>
 #include <QMainWindow>
 #include <QTimer>
+#include <atomic>
 #include <memory>
 
 #include "common/session_info.h"
@@ -119,6 +121,9 @@ class MainWindow : public QMainWindow {
   // The sim-to-real diagnosis of the shown result, in the background; shown
   // in the Diagnosis view.
   void diagnoseShown();
+  // Cancels a running diagnosis (it ends within about a second, with no result).
+  void cancelDiagnosis();
+  bool isDiagnosing() const { return diagnosisCancel_ != nullptr; }
   // Opens the folder of the last export (or the session folder) in the
   // desktop's file manager.
   void openExportFolder();
@@ -178,6 +183,9 @@ class MainWindow : public QMainWindow {
   void editBenchSettings();
 
   AcquisitionRunner runner_;
+  // The running diagnosis: its cancel flag (null when none runs) and future.
+  std::shared_ptr<std::atomic<bool>> diagnosisCancel_;
+  QFuture<void> diagnosisFuture_;
   QTimer liveTimer_;
   QElapsedTimer runClock_;
   BenchSettings bench_;

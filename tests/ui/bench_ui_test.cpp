@@ -23,6 +23,7 @@
 #include <QFile>
 #include <QLabel>
 #include <QProcess>
+#include <QProgressBar>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -30,6 +31,7 @@
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QtTest>
+#include <algorithm>
 #include <cmath>
 #include <qwt_plot.h>
 #include <qwt_plot_barchart.h>
@@ -524,10 +526,31 @@ class BenchUiTest : public QObject {
     w->openSession(path);
     QTRY_VERIFY_WITH_TIMEOUT(!opened.isEmpty(), 30000);
     QSignalSpy diagnosed(w.get(), &MainWindow::diagnosisEnded);
+    auto* view = w->diagnosisView();
+    // Progress as the bar shows it, with the stage beside it.
+    std::vector<int> values;
+    QStringList stages;
+    connect(view->progressBar(), &QProgressBar::valueChanged, view, [&](int v) {
+      values.push_back(v);
+      stages << view->stageShown();
+    });
     click(*w, "diagnoseButton");
+    // Running: the bar, Cancel, and no plots (no empty default axes).
+    QCOMPARE(view->state(), fog::ui::DiagnosisView::State::kRunning);
+    QVERIFY(view->progressBar()->isVisible() && view->cancelButton()->isVisible());
+    QVERIFY(!view->plotsShown());
+    QVERIFY(!view->curvePlot()->isVisible());
     QTRY_VERIFY_WITH_TIMEOUT(!diagnosed.isEmpty(), 60000);
     QCOMPARE(diagnosed.front().front().toBool(), true);
     QCOMPARE(w->currentView(), MainWindow::kDiagnosis);
+    QVERIFY2(values.size() >= 3, qPrintable(QString("%1 progress steps").arg(values.size())));
+    QVERIFY(std::is_sorted(values.begin(), values.end()));
+    QCOMPARE(values.back(), 1000);
+    QVERIFY2(stages.contains(fog::ui::DiagnosisView::stageText("replays")), qPrintable(stages.join(" | ")));
+    // Done: the plots, no bar.
+    QCOMPARE(view->state(), fog::ui::DiagnosisView::State::kShown);
+    QVERIFY(view->plotsShown() && view->curvePlot()->isVisible());
+    QVERIFY(!view->progressBar()->isVisible());
     const auto* d = w->diagnosisView()->diagnosis();
     QVERIFY(d);
     QCOMPARE(QString::fromStdString(d->verdict), QString("scale_factor_error"));
@@ -539,6 +562,57 @@ class BenchUiTest : public QObject {
       bars += static_cast<int>(static_cast<QwtPlotBarChart*>(item)->dataSize());
     QCOMPARE(bars, static_cast<int>(d->effects.size()));
     QCOMPARE(w->diagnosisView()->curvePlot()->itemList(QwtPlotItem::Rtti_PlotCurve).size(), 2);
+  }
+
+  // Cancel ends a running diagnosis: no result, the view says so and shows
+  // no plots, and the bench is ready (a new diagnosis runs to the end).
+  void diagnosisCancels() {
+    // A minute at 1 Hz: a diagnosis of a few seconds, long enough to be
+    // cancelled well before its end.
+    QTemporaryDir dir;
+    const QString path = dir.filePath("minute.fbs");
+    const fog::TestPlan plan = fog::TestPlan::paperFast();
+    auto source = fog::acquisition::SimulatorSource::create(fog::model::SimConfig{}, plan, 0.0);
+    QVERIFY(source.isOk());
+    fog::acquisition::AcquisitionOptions options;
+    options.sessionPath = path.toStdString();
+    options.info.plan = plan;
+    QVERIFY(fog::acquisition::acquire(**source, options, nullptr).isOk());
+
+    auto w = window();
+    QSignalSpy opened(w.get(), &MainWindow::sessionOpened);
+    w->openSession(path);
+    QTRY_VERIFY_WITH_TIMEOUT(!opened.isEmpty(), 30000);
+    QSignalSpy diagnosed(w.get(), &MainWindow::diagnosisEnded);
+    auto* view = w->diagnosisView();
+    click(*w, "diagnoseButton");
+    QVERIFY(w->isDiagnosing());
+    QTRY_VERIFY_WITH_TIMEOUT(view->progressBar()->value() > 0, 30000);
+    QVERIFY(diagnosed.isEmpty());
+    QCOMPARE(view->state(), fog::ui::DiagnosisView::State::kRunning);
+    QVERIFY(!view->stageShown().isEmpty());
+    QVERIFY(!view->plotsShown());
+    QTest::mouseClick(view->cancelButton(), Qt::LeftButton);
+    QVERIFY(!view->cancelButton()->isEnabled());  // pressed once; the diagnosis stops soon
+    QTRY_VERIFY_WITH_TIMEOUT(!diagnosed.isEmpty(), 30000);
+    QCOMPARE(diagnosed.front().front().toBool(), false);
+    QCOMPARE(view->state(), fog::ui::DiagnosisView::State::kCancelled);
+    QVERIFY(view->diagnosis() == nullptr);
+    QVERIFY2(view->verdictText().contains("Diagnosis cancelled"), qPrintable(view->verdictText()));
+    QVERIFY(!view->plotsShown() && !view->progressBar()->isVisible());
+    QVERIFY(!w->isDiagnosing());
+    QVERIFY(w->lastMessage().contains("cancelled"));
+    // A cancel is not an error: no error box.
+    auto* box = w->findChild<QMessageBox*>("errorDialog");
+    QVERIFY(!box || !box->isVisible());
+    // Ready again: Run is available and a new diagnosis runs to its result.
+    QVERIFY(button(*w, "runButton")->isEnabled());
+    click(*w, "diagnoseButton");
+    QTRY_VERIFY_WITH_TIMEOUT(diagnosed.size() == 2, 60000);
+    QCOMPARE(diagnosed.back().front().toBool(), true);
+    QCOMPARE(view->state(), fog::ui::DiagnosisView::State::kShown);
+    QVERIFY(view->diagnosis() && view->plotsShown());
+    qInfo("the whole diagnosis took %.1f s", view->diagnosis()->elapsedS);
   }
 
   // A plan with a static segment (edited as such in the plan editor) gives
