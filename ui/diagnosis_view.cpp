@@ -91,7 +91,8 @@ DiagnosisView::DiagnosisView(QWidget* parent) : QWidget(parent) {
   verdict_->setWordWrap(true);
   verdict_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   top->addWidget(verdict_, 1);
-  top->addWidget(new QLabel(tr("Test point")));
+  pointLabel_ = new QLabel(tr("Test point"));
+  top->addWidget(pointLabel_);
   pointCombo_ = new QComboBox();
   pointCombo_->setObjectName("diagnosisPointCombo");
   pointCombo_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
@@ -204,7 +205,9 @@ void DiagnosisView::showPlaceholder(const QString& text) {
     const QSignalBlocker block(pointCombo_);
     pointCombo_->clear();
   }
-  pointCombo_->setEnabled(false);
+  // Test points only with a result.
+  pointLabel_->hide();
+  pointCombo_->hide();
 }
 
 void DiagnosisView::startDiagnosis(const QString& title) {
@@ -246,7 +249,8 @@ void DiagnosisView::showDiagnosis(std::shared_ptr<const diagnosis::Diagnosis> d,
   state_ = State::kShown;
   progressRow_->hide();
   stack_->setCurrentIndex(1);
-  pointCombo_->setEnabled(true);
+  pointLabel_->show();
+  pointCombo_->show();
   QString gaps;
   for (std::size_t i = 0; i < diagnosis_->gapBefore.size() && i < diagnosis_->gapAfter.size(); ++i)
     gaps += tr("%1 %2 → %3   ")

@@ -85,6 +85,7 @@ class DiagnosisView : public QWidget {
   QLabel* placeholder_ = nullptr;
   QStringList rowNames_, columnNames_;
   QLabel* verdict_ = nullptr;
+  QLabel* pointLabel_ = nullptr;
   QComboBox* pointCombo_ = nullptr;
   QwtPlot* curvePlot_ = nullptr;
   QwtPlot* gapMapPlot_ = nullptr;

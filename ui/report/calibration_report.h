@@ -43,7 +43,8 @@ struct ReportInput {
   double imuDelayLimitMs = 0.8;
   // Which of the session's stored results the report shows, in words
   // (when it was stored, by which version, with which constants); the
-  // report prints it on its first page. Empty: "not stated".
+  // report prints it on its first page. Empty: computed for the report
+  // (fogbench-cli report), with the constants it shows.
   QString resultShown;
 };
 
