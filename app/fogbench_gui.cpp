@@ -9,7 +9,9 @@
 // --screenshot FILE saves an image of the window and quits: for the
 // configure view at once, for the live view S seconds into the run (default
 // 3), for the results and sessions views when the run (or --open) ended,
-// for the diagnosis and noise views when their analysis of that result ended.
+// for the diagnosis and noise views when their analysis of that result ended
+// (the diagnosis view S seconds into the diagnosis when --screenshot-after
+// is given: its progress).
 // Exit code 1 when the run gave no result or the image could not be written.
 //
 // --help and --version print and exit 0 without a display: they are answered
@@ -156,8 +158,19 @@ int main(int argc, char* argv[]) {
       };
       QObject::connect(&window, &fog::ui::MainWindow::runEnded, &window, diagnose);
       QObject::connect(&window, &fog::ui::MainWindow::sessionOpened, &window, diagnose);
-      QObject::connect(&window, &fog::ui::MainWindow::diagnosisEnded, &window,
-                       [&window, screenshot](bool succeeded) { saveAndQuit(window, screenshot, succeeded); });
+      if (parser.isSet(afterOption)) {
+        // S seconds into the diagnosis: its progress.
+        auto during = [&window, screenshot, after](bool succeeded) {
+          if (!succeeded) return;
+          QTimer::singleShot(static_cast<int>(after * 1000.0), &window,
+                             [&window, screenshot] { saveAndQuit(window, screenshot, window.isDiagnosing()); });
+        };
+        QObject::connect(&window, &fog::ui::MainWindow::runEnded, &window, during);
+        QObject::connect(&window, &fog::ui::MainWindow::sessionOpened, &window, during);
+      } else {
+        QObject::connect(&window, &fog::ui::MainWindow::diagnosisEnded, &window,
+                         [&window, screenshot](bool succeeded) { saveAndQuit(window, screenshot, succeeded); });
+      }
     } else {
       auto done = [&window, screenshot, view](bool succeeded) {
         if (view == "sessions") window.showView(fog::ui::MainWindow::kSessions);

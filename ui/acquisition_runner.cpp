@@ -3,6 +3,8 @@
 #include <QMetaObject>
 #include <QtConcurrent/QtConcurrentRun>
 
+#include "session/session_file.h"
+
 namespace fog::ui {
 
 AcquisitionRunner::AcquisitionRunner(QObject* parent) : QObject(parent) {
@@ -46,6 +48,13 @@ bool AcquisitionRunner::start(RunRequest request) {
       outcome->recording = std::move(result->recording);
       outcome->report = std::move(result->report);
       outcome->truth = request.truth;
+      // The result the run stored is the session's first: shown as such.
+      if (!outcome->sessionPath.empty() && outcome->report)
+        if (auto reader = session::SessionReader::open(outcome->sessionPath); reader)
+          if (auto stored = (*reader)->results(); stored) {
+            outcome->results = resultRecords(*stored, request.options.constants);
+            if (const auto* newest = newestUsable(outcome->results)) outcome->shownResultId = newest->id;
+          }
       completeOutcome(*outcome, request.options.reportContext.source);
     }
     const QString error = result ? QString() : QString::fromStdString(result.status().message());

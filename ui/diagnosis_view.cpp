@@ -6,7 +6,10 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPlainTextEdit>
+#include <QProgressBar>
+#include <QPushButton>
 #include <QSplitter>
+#include <QStackedWidget>
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
@@ -88,12 +91,41 @@ DiagnosisView::DiagnosisView(QWidget* parent) : QWidget(parent) {
   verdict_->setWordWrap(true);
   verdict_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   top->addWidget(verdict_, 1);
-  top->addWidget(new QLabel(tr("Test point")));
+  pointLabel_ = new QLabel(tr("Test point"));
+  top->addWidget(pointLabel_);
   pointCombo_ = new QComboBox();
   pointCombo_->setObjectName("diagnosisPointCombo");
   pointCombo_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
   top->addWidget(pointCombo_);
   layout->addLayout(top);
+
+  // Progress of a running diagnosis, with Cancel.
+  progressRow_ = new QWidget();
+  progressRow_->setObjectName("diagnosisProgressRow");
+  auto* progressLayout = new QHBoxLayout(progressRow_);
+  progressLayout->setContentsMargins(0, 0, 0, 0);
+  progress_ = new QProgressBar();
+  progress_->setObjectName("diagnosisProgress");
+  progress_->setRange(0, 1000);
+  progress_->setTextVisible(true);
+  progress_->setFormat(QStringLiteral("%p%"));
+  progressLayout->addWidget(progress_, 2);
+  stage_ = new QLabel();
+  stage_->setObjectName("diagnosisStage");
+  stage_->setMinimumWidth(120);
+  progressLayout->addWidget(stage_, 1);
+  cancel_ = new QPushButton(tr("Cancel"));
+  cancel_->setObjectName("cancelDiagnosisButton");
+  cancel_->setToolTip(tr("Stop the diagnosis; nothing is kept of it"));
+  progressLayout->addWidget(cancel_);
+  connect(cancel_, &QPushButton::clicked, this, [this] {
+    if (state_ != State::kRunning) return;
+    cancel_->setEnabled(false);
+    stage_->setText(tr("cancelling …"));
+    emit cancelRequested();
+  });
+  layout->addWidget(progressRow_);
+  progressRow_->hide();
 
   curvePlot_ = makePlot(tr("Gyro residual: real and simulated"), tr("time from the record's middle (s)"),
                         tr("residual (arcsec)"));
@@ -128,7 +160,20 @@ DiagnosisView::DiagnosisView(QWidget* parent) : QWidget(parent) {
   split->addWidget(text_);
   split->setStretchFactor(0, 4);
   split->setStretchFactor(1, 1);
-  layout->addWidget(split, 1);
+  // The plots only with a result; before it, what is going on.
+  placeholder_ = new QLabel();
+  placeholder_->setObjectName("diagnosisPlaceholder");
+  placeholder_->setAlignment(Qt::AlignCenter);
+  placeholder_->setWordWrap(true);
+  placeholder_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  QFont large = placeholder_->font();
+  large.setPointSizeF(large.pointSizeF() * 1.25);
+  placeholder_->setFont(large);
+  placeholder_->setStyleSheet("color: #505050");
+  stack_ = new QStackedWidget();
+  stack_->addWidget(placeholder_);
+  stack_->addWidget(split);
+  layout->addWidget(stack_, 1);
 
   gapMap_ = new QwtPlotSpectrogram();
   gapMap_->setRenderThreadCount(1);
@@ -139,13 +184,73 @@ DiagnosisView::DiagnosisView(QWidget* parent) : QWidget(parent) {
 
 QString DiagnosisView::verdictText() const { return verdict_->text(); }
 
+QString DiagnosisView::stageShown() const { return stage_->text(); }
+bool DiagnosisView::plotsShown() const { return stack_->currentIndex() == 1; }
+
+QString DiagnosisView::stageText(const std::string& stage) {
+  if (stage == "calibration") return tr("calibrating the replay to the session");
+  if (stage == "replays") return tr("replaying the session in the simulator");
+  if (stage == "gap map") return tr("mapping the gap");
+  if (stage == "effects") return tr("fitting the candidate effects");
+  if (stage == "refinement") return tr("refining the best effects");
+  if (stage == "pairs") return tr("trying pairs of effects");
+  if (stage == "verdict") return tr("reaching the verdict");
+  return QString::fromStdString(stage);
+}
+
+void DiagnosisView::showPlaceholder(const QString& text) {
+  placeholder_->setText(text);
+  stack_->setCurrentIndex(0);
+  {
+    const QSignalBlocker block(pointCombo_);
+    pointCombo_->clear();
+  }
+  // Test points only with a result.
+  pointLabel_->hide();
+  pointCombo_->hide();
+}
+
+void DiagnosisView::startDiagnosis(const QString& title) {
+  state_ = State::kRunning;
+  diagnosis_.reset();
+  progress_->setValue(0);
+  stage_->setText(tr("starting …"));
+  cancel_->setEnabled(true);
+  progressRow_->show();
+  verdict_->setText(tr("<b>Diagnosing %1</b>: replaying it in the simulator and comparing.").arg(title.toHtmlEscaped()));
+  text_->clear();
+  showPlaceholder(tr("Diagnosing %1 …\nThe plots appear when the diagnosis is done.").arg(title));
+}
+
+void DiagnosisView::setProgress(double fraction, const std::string& stage) {
+  if (state_ != State::kRunning) return;
+  progress_->setValue(static_cast<int>(std::lround(1000.0 * std::clamp(fraction, 0.0, 1.0))));
+  if (cancel_->isEnabled()) stage_->setText(stageText(stage));
+}
+
+void DiagnosisView::showCancelled(const QString& title) {
+  state_ = State::kCancelled;
+  diagnosis_.reset();
+  progressRow_->hide();
+  verdict_->setText(tr("<b>Diagnosis cancelled</b>: %1 has no diagnosis.").arg(title.toHtmlEscaped()));
+  showPlaceholder(tr("Diagnosis cancelled.\nPress Diagnose in the Results view to start it again."));
+}
+
 void DiagnosisView::showMessage(const QString& message) {
+  if (state_ == State::kRunning) state_ = State::kFailed;
+  progressRow_->hide();
   verdict_->setText(message);
+  if (!diagnosis_) showPlaceholder(message);
 }
 
 void DiagnosisView::showDiagnosis(std::shared_ptr<const diagnosis::Diagnosis> d, const QString& title) {
   diagnosis_ = std::move(d);
   if (!diagnosis_) return;
+  state_ = State::kShown;
+  progressRow_->hide();
+  stack_->setCurrentIndex(1);
+  pointLabel_->show();
+  pointCombo_->show();
   QString gaps;
   for (std::size_t i = 0; i < diagnosis_->gapBefore.size() && i < diagnosis_->gapAfter.size(); ++i)
     gaps += tr("%1 %2 → %3   ")

@@ -121,7 +121,7 @@ constexpr int kMaxRecentSessions = 8;
 // thread, as long as `owner` lives. The result type must be
 // default-constructible (QFuture's rule): an outcome or the reason why not.
 template <typename Work, typename Done>
-void inBackground(QObject* owner, Work work, Done done) {
+QFuture<std::invoke_result_t<Work>> inBackground(QObject* owner, Work work, Done done) {
   using Result = std::invoke_result_t<Work>;
   auto* watcher = new QFutureWatcher<Result>(owner);
   QObject::connect(watcher, &QFutureWatcherBase::finished, owner, [watcher, done = std::move(done)]() mutable {
@@ -129,7 +129,9 @@ void inBackground(QObject* owner, Work work, Done done) {
     watcher->deleteLater();
     done(std::move(result));
   });
-  watcher->setFuture(QtConcurrent::run(std::move(work)));
+  auto future = QtConcurrent::run(std::move(work));
+  watcher->setFuture(future);
+  return future;
 }
 
 QString defaultSessionFolder() {
@@ -179,14 +181,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   connect(&liveTimer_, &QTimer::timeout, this, &MainWindow::drainLive);
   connect(planEditor_, &PlanEditor::validityChanged, this, &MainWindow::updateRunButton);
   connect(sessionBrowser_, &SessionBrowser::openRequested, this, &MainWindow::openSession);
-  connect(sessionBrowser_, &SessionBrowser::reanalyseRequested, this, [this](const QString& path) {
-    loadSession(path, true, [this](std::shared_ptr<const RunOutcome> o) {
-      if (o) sessionBrowser_->refresh();
-    });
-  });
+  connect(sessionBrowser_, &SessionBrowser::reanalyseRequested, this, &MainWindow::reanalyseSession);
+  connect(resultView_, &ResultView::resultChosen, this, &MainWindow::chooseResult);
   connect(sessionBrowser_, &SessionBrowser::compareRequested, this, &MainWindow::compareSessions);
   connect(sessionBrowser_, &SessionBrowser::importRequested, this, &MainWindow::importCsv);
   connect(resultView_, &ResultView::diagnoseRequested, this, &MainWindow::diagnoseShown);
+  connect(diagnosisView_, &DiagnosisView::cancelRequested, this, &MainWindow::cancelDiagnosis);
   connect(resultView_, &ResultView::exported, this, &MainWindow::exported);
   connect(resultView_, &ResultView::exportFailed, this, [this](const QString& title, const QString& why) {
     reportError(title, title, why);
@@ -208,7 +208,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   tell(tr("Configure a plan and press Run."));
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow() {
+  // A running diagnosis posts its progress to this window: it ends first
+  // (a cancel stops it within about a second).
+  cancelDiagnosis();
+  diagnosisFuture_.waitForFinished();
+}
 
 void MainWindow::editBenchSettings() {
   BenchSettingsDialog dialog(bench_, this);
@@ -737,7 +742,7 @@ void MainWindow::showFailure(const QString& message) {
   if (closeAfterRun_) QTimer::singleShot(0, this, &QWidget::close);
 }
 
-void MainWindow::loadSession(const QString& path, bool reanalyse,
+void MainWindow::loadSession(const QString& path, bool reanalyse, std::int64_t resultId,
                              std::function<void(std::shared_ptr<const RunOutcome>)> done) {
   const QString name = QFileInfo(path).fileName();
   tell(reanalyse ? tr("Re-analysing %1 …").arg(name) : tr("Opening %1 …").arg(name));
@@ -749,20 +754,34 @@ void MainWindow::loadSession(const QString& path, bool reanalyse,
   };
   // Reading and fitting a long session takes a while: off the GUI thread.
   inBackground(
-      this, [path, reanalyse, bench]() -> Loaded {
+      this, [path, reanalyse, resultId, bench]() -> Loaded {
         auto reader = session::SessionReader::open(path.toStdString());
         if (!reader) return {nullptr, reader.status()};
         auto recording = (*reader)->recording();
         if (!recording) return {nullptr, recording.status()};
+        auto stored = (*reader)->results();
+        if (!stored) return {nullptr, stored.status()};
         auto outcome = std::make_shared<RunOutcome>();
         outcome->info = (*reader)->info();
         outcome->sessionPath = path.toStdString();
         outcome->complete = (*reader)->complete();
         outcome->incompleteReason = (*reader)->incompleteReason();
         outcome->recording = std::move(*recording);
-        // Review uses the session's own constants; a re-analysis the bench's.
-        if (reanalyse) outcome->info.bench = bench;
-        const auto constants = analysis::benchConstantsOf(outcome->info.bench);
+        const auto sessionConstants = analysis::benchConstantsOf(outcome->info.bench);
+        outcome->results = resultRecords(*stored, sessionConstants);
+        // A re-analysis uses the bench's constants; review the chosen stored
+        // result's (the newest unless one is asked for), or the session's own
+        // when none is stored.
+        analysis::BenchConstants constants = reanalyse ? analysis::benchConstantsOf(bench) : sessionConstants;
+        if (!reanalyse) {
+          const ResultRecord* chosen = newestUsable(outcome->results);
+          for (const auto& r : outcome->results)
+            if (r.id == resultId && r.usable) chosen = &r;
+          if (chosen) {
+            constants = chosen->constants;
+            outcome->shownResultId = chosen->id;
+          }
+        }
         outcome->report = analysis::analyzeRecording(outcome->recording, constants);
         const std::string source = "session " + path.toStdString() + " (" + (*reader)->info().source + ")";
         reader->reset();
@@ -773,11 +792,24 @@ void MainWindow::loadSession(const QString& path, bool reanalyse,
                                           analysis::formatReportJson(*outcome->report, context));
               !s.isOk())
             return {nullptr, s};
+          // The new result is the newest: it is the one shown.
+          auto again = session::SessionReader::open(path.toStdString());
+          if (!again) return {nullptr, again.status()};
+          auto all = (*again)->results();
+          if (!all) return {nullptr, all.status()};
+          outcome->results = resultRecords(*all, sessionConstants);
+          if (const auto* newest = newestUsable(outcome->results)) outcome->shownResultId = newest->id;
         }
+        // What the shown result was computed with, everywhere (report pages, Diagnose).
+        outcome->info.bench.tableReadDelayMs = constants.tableReadDelayMs;
+        outcome->info.bench.tableReadDelayStdMs = constants.tableReadDelayStdMs;
+        outcome->info.bench.boardDelayMs = constants.boardDelayMs;
+        outcome->info.bench.boardDelayStdMs = constants.boardDelayStdMs;
+        if (constants.pulseEquivalentDeg > 0.0) outcome->info.bench.pulseEquivalentDeg = constants.pulseEquivalentDeg;
         completeOutcome(*outcome, source);
         return {outcome, Status::ok()};
       },
-      [this, path, name, reanalyse, done](Loaded result) {
+      [this, path, name, reanalyse, resultId, done](Loaded result) {
         if (!result.outcome) {
           reportError(reanalyse ? tr("Re-analyse") : tr("Open session"),
                       reanalyse ? tr("Cannot re-analyse %1").arg(name) : tr("Cannot open %1").arg(name),
@@ -786,10 +818,16 @@ void MainWindow::loadSession(const QString& path, bool reanalyse,
           return;
         }
         if (reanalyse) {
-          tell(tr("%1: re-analysed with the bench constants; the result was added to the session").arg(name));
+          tell(tr("%1: re-analysed with the bench constants; the result was added to the session and is shown").arg(name));
           showMessage(this, MessageKind::kInformation, tr("Re-analyse"), tr("%1 re-analysed").arg(name),
                       tr("The session was analysed with the current bench constants and the result was added to it; "
-                         "its recorded data did not change.\n\nFile: %1").arg(QDir::toNativeSeparators(path)));
+                         "its recorded data did not change. The Results view shows the new result; its Result list "
+                         "holds the earlier ones.\n\nFile: %1").arg(QDir::toNativeSeparators(path)));
+        } else if (resultId != 0) {
+          tell(tr("%1: result %2 of %3 shown")
+                   .arg(name)
+                   .arg(result.outcome->shownResultNumber())
+                   .arg(result.outcome->results.size()));
         } else {
           tell(tr("%1: read-only review").arg(name));
           addRecentSession(path);
@@ -799,16 +837,41 @@ void MainWindow::loadSession(const QString& path, bool reanalyse,
 }
 
 void MainWindow::openSession(const QString& path) {
-  loadSession(path, false, [this](std::shared_ptr<const RunOutcome> outcome) {
-    if (outcome) {
-      shown_ = outcome;
-      showHealth(outcome->recording.health, 0);
-      resultView_->showOutcome(outcome);
-      analyseNoise(outcome);
-      showView(kResults);
-    }
+  loadSession(path, false, 0, [this](std::shared_ptr<const RunOutcome> outcome) {
+    if (outcome) showLoaded(outcome);
     emit sessionOpened(outcome != nullptr);
   });
+}
+
+void MainWindow::reanalyseSession(const QString& path) {
+  loadSession(path, true, 0, [this](std::shared_ptr<const RunOutcome> outcome) {
+    if (outcome) {
+      sessionBrowser_->refresh();
+      showLoaded(outcome);
+    }
+    emit reanalysed(outcome != nullptr);
+  });
+}
+
+void MainWindow::chooseResult(qint64 resultId) {
+  const auto outcome = resultView_->sharedOutcome();
+  if (!outcome || outcome->sessionPath.empty() || resultId == outcome->shownResultId) return;
+  resultView_->setChoosing(true);
+  loadSession(QString::fromStdString(outcome->sessionPath), false, resultId,
+              [this](std::shared_ptr<const RunOutcome> o) {
+                resultView_->setChoosing(false);
+                if (o) showLoaded(o);
+                else resultView_->showOutcome(resultView_->sharedOutcome());  // back to what is shown
+                emit resultShown(o != nullptr);
+              });
+}
+
+void MainWindow::showLoaded(std::shared_ptr<const RunOutcome> outcome) {
+  shown_ = outcome;
+  showHealth(outcome->recording.health, 0);
+  resultView_->showOutcome(outcome);
+  analyseNoise(outcome);
+  showView(kResults);
 }
 
 void MainWindow::importCsv(const QString& csvFolder) {
@@ -848,23 +911,45 @@ void MainWindow::importCsv(const QString& csvFolder) {
 void MainWindow::diagnoseShown() {
   const auto outcome = resultView_->sharedOutcome();
   if (!outcome || !outcome->report) return;
+  if (diagnosisCancel_) {  // one at a time: the running one is in view
+    showView(kDiagnosis);
+    return;
+  }
   const QString title = outcome->sessionPath.empty() ? tr("this run")
                                                     : QFileInfo(QString::fromStdString(outcome->sessionPath)).fileName();
-  diagnosisView_->showMessage(tr("Diagnosing %1: replaying it in the simulator …").arg(title));
+  diagnosisView_->startDiagnosis(title);
   showView(kDiagnosis);
   tell(tr("Diagnosing %1 …").arg(title));
+  auto cancel = std::make_shared<std::atomic<bool>>(false);
+  diagnosisCancel_ = cancel;
   struct Done {
     std::shared_ptr<diagnosis::Diagnosis> result;
     Status status;
   };
+  diagnosis::DiagnosisOptions options;
+  // Called on the diagnosis' threads, one call at a time: posted to the GUI
+  // thread, never waited for. (The window waits for a running diagnosis
+  // before it goes, so `this` outlives every call.)
+  options.progress = [this, cancel](double fraction, const std::string& stage) {
+    QMetaObject::invokeMethod(
+        this, [this, fraction, stage] { diagnosisView_->setProgress(fraction, stage); }, Qt::QueuedConnection);
+    return !cancel->load();
+  };
   // Several replays of the session in the simulator: off the GUI thread.
-  inBackground(
-      this, [outcome]() -> Done {
-        auto d = diagnosis::diagnose(outcome->recording, &outcome->info, outcome->report->constants);
+  diagnosisFuture_ = inBackground(
+      this, [outcome, options]() -> Done {
+        auto d = diagnosis::diagnose(outcome->recording, &outcome->info, outcome->report->constants, options);
         if (!d) return {nullptr, d.status()};
         return {std::make_shared<diagnosis::Diagnosis>(std::move(*d)), Status::ok()};
       },
       [this, title](Done done) {
+        diagnosisCancel_.reset();
+        if (done.status.code() == StatusCode::kCancelled) {
+          diagnosisView_->showCancelled(title);
+          tell(tr("Diagnosis of %1 cancelled").arg(title));
+          emit diagnosisEnded(false);
+          return;
+        }
         if (!done.result) {
           diagnosisView_->showMessage(tr("No diagnosis: %1").arg(QString::fromStdString(done.status.message())));
           reportError(tr("Diagnosis"), tr("No diagnosis of %1").arg(title), QString::fromStdString(done.status.message()));
@@ -878,6 +963,10 @@ void MainWindow::diagnoseShown() {
                  .arg(localNumber(done.result->elapsedS, 'f', 1)));
         emit diagnosisEnded(true);
       });
+}
+
+void MainWindow::cancelDiagnosis() {
+  if (diagnosisCancel_) diagnosisCancel_->store(true);
 }
 
 void MainWindow::analyseNoise(std::shared_ptr<const RunOutcome> outcome) {
@@ -931,8 +1020,20 @@ void MainWindow::compareSessions(const QString& first, const QString& second) {
     v->addWidget(view, 1);
     split->addWidget(column);
     QPointer<ResultView> guard(view);
-    loadSession(path, false, [guard](std::shared_ptr<const RunOutcome> o) {
+    auto show = [guard](std::shared_ptr<const RunOutcome> o) {
       if (guard && o) guard->showOutcome(o);
+    };
+    loadSession(path, false, 0, show);
+    // Another stored result of the session, in its column.
+    connect(view, &ResultView::resultChosen, this, [this, path, guard, show](qint64 id) {
+      if (!guard) return;
+      guard->setChoosing(true);
+      loadSession(path, false, id, [guard, show](std::shared_ptr<const RunOutcome> o) {
+        if (!guard) return;
+        guard->setChoosing(false);
+        if (o) show(o);
+        else guard->showOutcome(guard->sharedOutcome());
+      });
     });
   }
   // As large as the screen allows, up to 1600 x 900.

@@ -22,9 +22,11 @@
 // starts (QSettings); plans load and save in the CLI's JSON plan format.
 
 #include <QElapsedTimer>
+#include <QFuture>
 #include <QFutureWatcher>
 #include <QMainWindow>
 #include <QTimer>
+#include <atomic>
 #include <memory>
 
 #include "common/session_info.h"
@@ -105,14 +107,23 @@ class MainWindow : public QMainWindow {
  public slots:
   void startRun();
   void stopRun();
-  // Opens a session read-only (in the background) and shows its result.
+  // Opens a session read-only (in the background) and shows its newest
+  // stored result (the session's own constants when none is stored).
   void openSession(const QString& path);
+  // Analyses a session again with the bench constants, adds the result to
+  // it and shows that result.
+  void reanalyseSession(const QString& path);
+  // Shows another stored result of the shown session (its id).
+  void chooseResult(qint64 resultId);
   // Imports a folder in the CSV layout (docs/formats.md) as a new session in
   // the browser's folder, in the background.
   void importCsv(const QString& csvFolder);
   // The sim-to-real diagnosis of the shown result, in the background; shown
   // in the Diagnosis view.
   void diagnoseShown();
+  // Cancels a running diagnosis (it ends within about a second, with no result).
+  void cancelDiagnosis();
+  bool isDiagnosing() const { return diagnosisCancel_ != nullptr; }
   // Opens the folder of the last export (or the session folder) in the
   // desktop's file manager.
   void openExportFolder();
@@ -122,6 +133,10 @@ class MainWindow : public QMainWindow {
   void runEnded(bool succeeded);
   // Every openSession ends with this.
   void sessionOpened(bool succeeded);
+  // Every reanalyseSession ends with this.
+  void reanalysed(bool succeeded);
+  // Every chooseResult that loads another result ends with this.
+  void resultShown(bool succeeded);
   // Every importCsv ends with this: the new session, or empty on failure.
   void importEnded(const QString& sessionPath);
   // Every diagnoseShown ends with this.
@@ -150,7 +165,13 @@ class MainWindow : public QMainWindow {
   void showFailure(const QString& message);
   void showHealth(const StreamHealth& health, std::uint64_t dropped);
   void tell(const QString& message);
-  void loadSession(const QString& path, bool reanalyse, std::function<void(std::shared_ptr<const RunOutcome>)> done);
+  // Reads a session and analyses it in the background: with the bench's
+  // constants when `reanalyse` (the result is added to the session), else
+  // with the constants of its stored result `resultId` (0: the newest).
+  void loadSession(const QString& path, bool reanalyse, std::int64_t resultId,
+                   std::function<void(std::shared_ptr<const RunOutcome>)> done);
+  // Shows a loaded session's outcome in Results (and its noise analysis).
+  void showLoaded(std::shared_ptr<const RunOutcome> outcome);
   void compareSessions(const QString& first, const QString& second);
   // The Allan deviation of the outcome's static segments, in the background.
   void analyseNoise(std::shared_ptr<const RunOutcome> outcome);
@@ -162,6 +183,9 @@ class MainWindow : public QMainWindow {
   void editBenchSettings();
 
   AcquisitionRunner runner_;
+  // The running diagnosis: its cancel flag (null when none runs) and future.
+  std::shared_ptr<std::atomic<bool>> diagnosisCancel_;
+  QFuture<void> diagnosisFuture_;
   QTimer liveTimer_;
   QElapsedTimer runClock_;
   BenchSettings bench_;

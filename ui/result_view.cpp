@@ -5,6 +5,7 @@
 #include <QDir>
 #include <QFileInfo>
 #include <QRegularExpression>
+#include <QStandardItemModel>
 #include <QStandardPaths>
 #include <QFileDialog>
 #include <QFontDatabase>
@@ -36,6 +37,7 @@
 
 #include "analysis/theory.h"
 #include "analysis/verdict.h"
+#include "common/version.h"
 #include "session/session_file.h"
 #include "ui/language.h"
 #include "ui/plot_export.h"
@@ -60,6 +62,21 @@ QString pointLabel(const analysis::TestPointResult& p) {
       .arg(QString(axisName(p.axis)).toUpper())
       .arg(p.nominalFrequencyHz)
       .arg(num(p.tableFit.amplitudeDeg, 2));
+}
+
+// A result's constants in a few words.
+QString constantsText(const analysis::BenchConstants& c) {
+  return QObject::tr("table read %1 ms, board %2 ms").arg(num(c.tableReadDelayMs, 4), num(c.boardDelayMs, 4));
+}
+
+QString versionText(const ResultRecord& r) {
+  return r.softwareVersion.empty() ? QObject::tr("version not stated")
+                                   : QObject::tr("fogbench %1").arg(QString::fromStdString(r.softwareVersion));
+}
+
+QString storedText(const ResultRecord& r) {
+  const QDateTime when = QDateTime::fromString(QString::fromStdString(r.createdUtc), Qt::ISODate);
+  return when.isValid() ? when.toUTC().toString("yyyy-MM-dd HH:mm:ss") + " UTC" : QString::fromStdString(r.createdUtc);
 }
 
 QTableWidget* makeTable(const QStringList& headers) {
@@ -124,6 +141,23 @@ ResultView::ResultView(QWidget* parent) : QWidget(parent) {
   exportButton_->setPopupMode(QToolButton::InstantPopup);
   row->addWidget(exportButton_);
   layout->addLayout(row);
+  // Which of the session's stored results is shown (and reported, exported).
+  auto* resultRow = new QHBoxLayout();
+  resultRow->addWidget(new QLabel(tr("Result")));
+  resultCombo_ = new QComboBox();
+  resultCombo_->setObjectName("resultCombo");
+  resultCombo_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+  resultCombo_->setMinimumContentsLength(12);
+  resultCombo_->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
+  resultCombo_->setToolTip(tr("The session keeps every analysis of it (the recording's, each re-analysis) with the "
+                              "constants and software version that made it; the chosen one is shown, reported and "
+                              "exported"));
+  resultRow->addWidget(resultCombo_, 1);
+  layout->addLayout(resultRow);
+  connect(resultCombo_, qOverload<int>(&QComboBox::activated), this, [this](int index) {
+    const QVariant id = resultCombo_->itemData(index);
+    if (outcome_ && id.isValid() && id.toLongLong() != outcome_->shownResultId) emit resultChosen(id.toLongLong());
+  });
   // The lag on a line of its own: the row above stays narrow enough for the
   // Compare window's two columns.
   layout->addWidget(lagLabel_);
@@ -243,6 +277,8 @@ void ResultView::clear() {
   }
   lagLabel_->setText(tr("No result yet."));
   verdictLabel_->clear();
+  resultCombo_->clear();
+  resultCombo_->setEnabled(false);
   anglePlot_->clearCurves();
   anglePlot_->showAll();
   residualPlot_->clearCurves();
@@ -262,7 +298,9 @@ void ResultView::showOutcome(std::shared_ptr<const RunOutcome> outcome) {
   clear();
   outcome_ = std::move(outcome);
   if (!outcome_) return;
-  reportView_->setPlainText(QString::fromStdString(outcome_->reportText));
+  fillResultCombo();
+  reportView_->setPlainText(tr("Result shown: %1").arg(resultDescription()) + "\n\n" +
+                            QString::fromStdString(outcome_->reportText));
   exportButton_->setEnabled(true);
   diagnoseButton_->setEnabled(outcome_->report.isOk());
   if (!outcome_->report) {
@@ -276,6 +314,61 @@ void ResultView::showOutcome(std::shared_ptr<const RunOutcome> outcome) {
   showFrequencyPlot();
   testPointCombo_->setCurrentIndex(0);
   showTestPoint(0);
+}
+
+QString ResultView::resultDescription() const {
+  if (!outcome_) return QString();
+  const ResultRecord* r = outcome_->shownResult();
+  if (!r) {
+    const QString constants = outcome_->report ? constantsText(outcome_->report->constants) : QString();
+    if (outcome_->sessionPath.empty())
+      return tr("this run's, not recorded in a session; computed by fogbench %1 with %2")
+          .arg(QStringLiteral(FOG_VERSION), constants);
+    return tr("none stored in the session; computed by fogbench %1 with the session's constants (%2)")
+        .arg(QStringLiteral(FOG_VERSION), constants);
+  }
+  return tr("result %1 of %2, stored %3 by %4 (%5), %6")
+      .arg(outcome_->shownResultNumber())
+      .arg(outcome_->results.size())
+      .arg(storedText(*r), versionText(*r),
+           r->analysedBy.empty() ? tr("analysis") : QString::fromStdString(r->analysedBy), constantsText(r->constants));
+}
+
+void ResultView::fillResultCombo() {
+  const QSignalBlocker block(resultCombo_);
+  resultCombo_->clear();
+  const int count = static_cast<int>(outcome_->results.size());
+  for (int i = 0; i < count; ++i) {
+    const auto& r = outcome_->results[static_cast<std::size_t>(i)];
+    QString text = tr("%1 of %2 · %3 · %4 · %5")
+                       .arg(i + 1)
+                       .arg(count)
+                       .arg(storedText(r), versionText(r), constantsText(r.constants));
+    if (!r.usable) text += tr(" · damaged, cannot be shown");
+    resultCombo_->addItem(text, QVariant::fromValue<qint64>(r.id));
+    resultCombo_->setItemData(i, text, Qt::ToolTipRole);
+    // A damaged result cannot be chosen.
+    if (!r.usable)
+      if (auto* model = qobject_cast<QStandardItemModel*>(resultCombo_->model()))
+        if (auto* item = model->item(i)) item->setEnabled(false);
+    if (r.id == outcome_->shownResultId) resultCombo_->setCurrentIndex(i);
+  }
+  if (!outcome_->shownResult()) {
+    resultCombo_->addItem(resultDescription());
+    resultCombo_->setCurrentIndex(resultCombo_->count() - 1);
+  }
+  resultCombo_->setToolTip(resultCombo_->currentText());
+  resultCombo_->setEnabled(count > 1 || (count == 1 && !outcome_->shownResult()));
+}
+
+void ResultView::setChoosing(bool choosing) {
+  if (choosing) {
+    const QSignalBlocker block(resultCombo_);
+    resultCombo_->setEnabled(false);
+    lagLabel_->setText(tr("Loading the chosen result …"));
+  } else if (outcome_) {
+    fillResultCombo();
+  }
 }
 
 void ResultView::fillTables(std::size_t i) {
@@ -338,6 +431,14 @@ void ResultView::showTestPoint(int position) {
   for (const auto& t : outcome_->truth)
     if (t.index == p.index) lag += tr("  ·  simulator truth: lag %1 ms").arg(num(t.lagS * 1e3, 4));
   if (!outcome_->complete) lag += tr("  ·  <span style='color:#b00000'>incomplete run</span>");
+  // A result stored by another version may hold other numbers than this
+  // version's analysis with its constants gives: said, never hidden.
+  if (const ResultRecord* r = outcome_->shownResult())
+    for (const auto& [index, stored] : r->storedImuDelayMs)
+      if (index == p.index && std::abs(stored - p.imuDelayMs) > 1e-6)
+        lag += tr("<br><span style='color:#a05000'>The stored result gives IMU delay %1 ms (%2); shown is this "
+                  "version's analysis with its constants.</span>")
+                   .arg(num(stored, 4), versionText(*r));
   lagLabel_->setText(lag);
   const analysis::PointVerdict verdict = analysis::judgePoint(p, analysis::kDefaultImuDelayLimitMs);
   const QString word = QString::fromLatin1(analysis::verdictName(verdict.verdict)).toUpper();
@@ -451,19 +552,25 @@ QString ResultView::defaultExportPath(const QString& what, const QString& suffix
   return QDir(folder).filePath(name);
 }
 
-Status ResultView::writeReportPdf(const QString& path, double imuDelayLimitMs) const {
+Result<report::ReportInput> ResultView::reportInput(double imuDelayLimitMs) const {
   if (!outcome_ || !outcome_->report) return insufficientData("there is no delay result to report");
   report::ReportInput in;
   in.info = outcome_->info;
   in.recording = outcome_->recording;
   in.delays = *outcome_->report;
   in.imuDelayLimitMs = imuDelayLimitMs;
+  in.resultShown = resultDescription();
   // The report carries the hash of the raw stream the result came from.
   if (!outcome_->sessionPath.empty()) {
     FOG_ASSIGN_OR_RETURN(auto reader, session::SessionReader::open(outcome_->sessionPath));
     FOG_ASSIGN_OR_RETURN(auto bytes, reader->rawBytes());
     in.rawBytes = std::move(bytes);
   }
+  return in;
+}
+
+Status ResultView::writeReportPdf(const QString& path, double imuDelayLimitMs) const {
+  FOG_ASSIGN_OR_RETURN(auto in, reportInput(imuDelayLimitMs));
   return report::writeCalibrationPdf(in, path);
 }
 

@@ -10,6 +10,7 @@
 #include <QWidget>
 #include <memory>
 
+#include "ui/report/calibration_report.h"
 #include "ui/run_outcome.h"
 
 class QComboBox;
@@ -32,6 +33,14 @@ class ResultView : public QWidget {
 
   void showOutcome(std::shared_ptr<const RunOutcome> outcome);
   void clear();
+  // The session's stored results, one per entry (newest last), the shown
+  // one current; choosing another emits resultChosen with its id.
+  QComboBox* resultCombo() const { return resultCombo_; }
+  // The shown result in words: which of the session's results, when it was
+  // stored, by which version, with which constants.
+  QString resultDescription() const;
+  // While another result is being loaded: the chooser says so and waits.
+  void setChoosing(bool choosing);
   const RunOutcome* outcome() const { return outcome_.get(); }
   // Shared ownership of what is shown (for exporting off the widget).
   std::shared_ptr<const RunOutcome> sharedOutcome() const { return outcome_; }
@@ -44,6 +53,8 @@ class ResultView : public QWidget {
   QTableWidget* delayTable() const { return delayTable_; }
   QString reportText() const;
 
+  // What the calibration report of the shown result is drawn from.
+  Result<report::ReportInput> reportInput(double imuDelayLimitMs) const;
   // Writes the calibration report of what is shown (see ui/report).
   Status writeReportPdf(const QString& path, double imuDelayLimitMs) const;
   // The export menu's work without its file dialogs: writes and, when it
@@ -62,6 +73,8 @@ class ResultView : public QWidget {
  signals:
   // The operator asked for the sim-to-real diagnosis of what is shown.
   void diagnoseRequested();
+  // The operator chose another stored result of the shown session.
+  void resultChosen(qint64 resultId);
   // An export wrote `path`.
   void exported(const QString& path);
   // An export failed; `why` says what to do.
@@ -73,10 +86,12 @@ class ResultView : public QWidget {
   void buildFrequencyPlot();
   void showFrequencyPlot();
   void fillTables(std::size_t i);
+  void fillResultCombo();
 
   std::shared_ptr<const RunOutcome> outcome_;
   QString exportFolder_;
   QComboBox* testPointCombo_ = nullptr;
+  QComboBox* resultCombo_ = nullptr;
   QLabel* lagLabel_ = nullptr;
   QLabel* verdictLabel_ = nullptr;
   QToolButton* exportButton_ = nullptr;

@@ -1,10 +1,79 @@
 #include "ui/run_outcome.h"
 
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <algorithm>
 
 #include "analysis/report_writer.h"
+#include "session/session_file.h"
 
 namespace fog::ui {
+
+namespace {
+
+QJsonObject objectOf(const std::string& json) {
+  QJsonParseError error{};
+  const QJsonDocument doc = QJsonDocument::fromJson(QByteArray::fromStdString(json), &error);
+  return error.error == QJsonParseError::NoError && doc.isObject() ? doc.object() : QJsonObject();
+}
+
+double numberOr(const QJsonObject& o, const char* key, double fallback) {
+  const QJsonValue v = o.value(QLatin1String(key));
+  return v.isDouble() ? v.toDouble() : fallback;
+}
+
+}  // namespace
+
+std::vector<ResultRecord> resultRecords(const std::vector<session::StoredResult>& stored,
+                                        const analysis::BenchConstants& fallback) {
+  std::vector<ResultRecord> out;
+  for (const auto& r : stored) {
+    ResultRecord rec;
+    rec.id = r.id;
+    rec.createdUtc = r.createdUtc;
+    const QJsonObject settings = objectOf(r.settingsJson);
+    const QJsonObject report = objectOf(r.reportJson);
+    const QJsonObject reported = report.value("constants").toObject();
+    rec.usable = r.intact && !settings.isEmpty();
+    rec.softwareVersion = settings.value("software_version").toString().toStdString();
+    rec.analysedBy = settings.value("analysed_by").toString().toStdString();
+    auto constant = [&](const char* key, double otherwise) {
+      return numberOr(settings, key, numberOr(reported, key, otherwise));
+    };
+    rec.constants = fallback;
+    rec.constants.tableReadDelayMs = constant("table_read_delay_ms", fallback.tableReadDelayMs);
+    rec.constants.tableReadDelayStdMs = constant("table_read_delay_std_ms", fallback.tableReadDelayStdMs);
+    rec.constants.boardDelayMs = constant("board_delay_ms", fallback.boardDelayMs);
+    rec.constants.boardDelayStdMs = constant("board_delay_std_ms", fallback.boardDelayStdMs);
+    rec.constants.pulseEquivalentDeg = constant("pulse_equivalent_deg", fallback.pulseEquivalentDeg);
+    for (const QJsonValue& v : report.value("test_points").toArray()) {
+      const QJsonObject tp = v.toObject();
+      if (tp.value("index").isDouble() && tp.value("imu_delay_ms").isDouble())
+        rec.storedImuDelayMs.emplace_back(tp.value("index").toInt(), tp.value("imu_delay_ms").toDouble());
+    }
+    out.push_back(std::move(rec));
+  }
+  return out;
+}
+
+const ResultRecord* newestUsable(const std::vector<ResultRecord>& records) {
+  for (auto r = records.rbegin(); r != records.rend(); ++r)
+    if (r->usable) return &*r;
+  return nullptr;
+}
+
+const ResultRecord* RunOutcome::shownResult() const {
+  for (const auto& r : results)
+    if (r.id == shownResultId && shownResultId != 0) return &r;
+  return nullptr;
+}
+
+int RunOutcome::shownResultNumber() const {
+  for (std::size_t i = 0; i < results.size(); ++i)
+    if (results[i].id == shownResultId && shownResultId != 0) return static_cast<int>(i) + 1;
+  return 0;
+}
 
 void completeOutcome(RunOutcome& outcome, const std::string& source) {
   outcome.traces.clear();

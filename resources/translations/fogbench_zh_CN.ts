@@ -396,12 +396,27 @@ counter %5 MHz / %6 bit</source>
 <context>
     <name>fog::ui::DiagnosisView</name>
     <message>
-        <location filename="../../ui/diagnosis_view.cpp" line="+91"/>
+        <location filename="../../ui/diagnosis_view.cpp" line="+94"/>
         <source>Test point</source>
         <translation>测试点</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+23"/>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Stop the diagnosis; nothing is kept of it</source>
+        <translation>停止诊断；不保留其任何结果</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>cancelling …</source>
+        <translation>正在取消 …</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Gyro residual: real and simulated</source>
         <translation>陀螺残差：实测与仿真</translation>
     </message>
@@ -446,12 +461,76 @@ counter %5 MHz / %6 bit</source>
         <translation>留出数据差异缩减 (%)</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+42"/>
         <source>Run or open a session, then press Diagnose in the Results view.</source>
         <translation>请运行或打开一个会话，然后在“结果”视图中按“诊断”。</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+9"/>
+        <source>calibrating the replay to the session</source>
+        <translation>按会话标定回放</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>replaying the session in the simulator</source>
+        <translation>在仿真器中回放会话</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>mapping the gap</source>
+        <translation>绘制差异图</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>fitting the candidate effects</source>
+        <translation>拟合候选效应</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>refining the best effects</source>
+        <translation>细化最佳效应</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>trying pairs of effects</source>
+        <translation>尝试效应组合</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>reaching the verdict</source>
+        <translation>得出结论</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>starting …</source>
+        <translation>正在开始 …</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&lt;b&gt;Diagnosing %1&lt;/b&gt;: replaying it in the simulator and comparing.</source>
+        <translation>&lt;b&gt;正在诊断 %1&lt;/b&gt;：在仿真器中回放并比较。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Diagnosing %1 …
+The plots appear when the diagnosis is done.</source>
+        <translation>正在诊断 %1 …
+诊断完成后显示图表。</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>&lt;b&gt;Diagnosis cancelled&lt;/b&gt;: %1 has no diagnosis.</source>
+        <translation>&lt;b&gt;诊断已取消&lt;/b&gt;：%1 没有诊断结果。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Diagnosis cancelled.
+Press Diagnose in the Results view to start it again.</source>
+        <translation>诊断已取消。
+在“结果”视图中按“诊断”可重新开始。</translation>
+    </message>
+    <message>
+        <location line="+20"/>
         <source>%1 %2 → %3   </source>
         <translation>%1 %2 → %3   </translation>
     </message>
@@ -704,7 +783,7 @@ counter %5 MHz / %6 bit</source>
 <context>
     <name>fog::ui::MainWindow</name>
     <message>
-        <location filename="../../ui/main_window.cpp" line="+142"/>
+        <location filename="../../ui/main_window.cpp" line="+144"/>
         <source>fogbench %1 — FOG IMU delay bench</source>
         <translation>fogbench %1 —— 光纤陀螺 IMU 延迟测试台</translation>
     </message>
@@ -730,22 +809,22 @@ counter %5 MHz / %6 bit</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+708"/>
+        <location line="+791"/>
         <source>Diagnosis</source>
         <translation>诊断</translation>
     </message>
     <message>
-        <location line="-705"/>
+        <location line="-788"/>
         <source>Noise</source>
         <translation>噪声</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+41"/>
         <source>Configure a plan and press Run.</source>
         <translation>请配置测试计划并按“运行”。</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+19"/>
         <source>&lt;h3&gt;fogbench %1&lt;/h3&gt;&lt;p&gt;Fiber-optic gyro IMU delay test bench: swing the IMU on a turntable, stamp table angle and gyro increments with one counter, fit sinusoids to both and turn their phase difference into the IMU&apos;s delay, with its uncertainty.&lt;/p&gt;&lt;p&gt;Built with Qt %2 (running on %3) and Qwt %4.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;fogbench %1&lt;/h3&gt;&lt;p&gt;光纤陀螺 IMU 延迟测试台：转台带动 IMU 摆动，用同一计数器为转台角度和陀螺增量打时间戳，对两者拟合正弦，并将相位差换算为 IMU 延迟及其不确定度。&lt;/p&gt;&lt;p&gt;基于 Qt %2（运行于 %3）和 Qwt %4 构建。&lt;/p&gt;</translation>
     </message>
@@ -813,12 +892,12 @@ counter %5 MHz / %6 bit</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+535"/>
+        <location line="+562"/>
         <source>Open session</source>
         <translation>打开会话</translation>
     </message>
     <message>
-        <location line="-534"/>
+        <location line="-561"/>
         <source>fogbench sessions (*.fbs);;All files (*)</source>
         <translation>fogbench 会话 (*.fbs);;所有文件 (*)</translation>
     </message>
@@ -1193,7 +1272,7 @@ Quit: Ctrl+Q</source>
         <translation>正在打开 %1 …</translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+66"/>
         <location line="+8"/>
         <source>Re-analyse</source>
         <translation>重新分析</translation>
@@ -1219,30 +1298,35 @@ File: %2</source>
     </message>
     <message>
         <location line="+5"/>
-        <source>%1: re-analysed with the bench constants; the result was added to the session</source>
-        <translation>%1：已按测试台常数重新分析，结果已添加到会话</translation>
+        <source>%1: re-analysed with the bench constants; the result was added to the session and is shown</source>
+        <translation>%1：已用台架常数重新分析；结果已添加到会话并显示</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>%1 re-analysed</source>
-        <translation>%1 已重新分析</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>The session was analysed with the current bench constants and the result was added to it; its recorded data did not change.
+        <location line="+2"/>
+        <source>The session was analysed with the current bench constants and the result was added to it; its recorded data did not change. The Results view shows the new result; its Result list holds the earlier ones.
 
 File: %1</source>
-        <translation>已按当前测试台常数分析该会话，并将结果添加到会话中；其记录数据未改变。
+        <translation>已用当前台架常数分析该会话，结果已添加到会话中；其记录的数据未改变。“结果”视图显示新结果；其“结果”列表保留之前的结果。
 
 文件：%1</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
+        <source>%1: result %2 of %3 shown</source>
+        <translation>%1：显示第 %2 个结果（共 %3 个）</translation>
+    </message>
+    <message>
+        <location line="-5"/>
+        <source>%1 re-analysed</source>
+        <translation>%1 已重新分析</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>%1: read-only review</source>
         <translation>%1：只读查看</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+49"/>
         <source>Choose a session folder to import into first.</source>
         <translation>请先选择导入目标会话文件夹。</translation>
     </message>
@@ -1278,22 +1362,22 @@ File: %1</source>
         <translation>已将 %1 导入为 %2</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+12"/>
         <source>this run</source>
         <translation>本次运行</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>Diagnosing %1: replaying it in the simulator …</source>
-        <translation>正在诊断 %1：在仿真器中回放 …</translation>
-    </message>
-    <message>
-        <location line="+2"/>
+        <location line="+4"/>
         <source>Diagnosing %1 …</source>
         <translation>正在诊断 %1 …</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+27"/>
+        <source>Diagnosis of %1 cancelled</source>
+        <translation>%1 的诊断已取消</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>No diagnosis: %1</source>
         <translation>无法诊断：%1</translation>
     </message>
@@ -1313,7 +1397,7 @@ File: %1</source>
         <translation>%1 的诊断：%2（%3 s）</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+15"/>
         <source>This result has no static segment. To measure the gyro&apos;s noise (Allan deviation, noise terms, bias), add a test point of kind &quot;static&quot; to the plan: the table rests while the gyro is recorded.</source>
         <translation>此结果没有静态段。要测量陀螺噪声（Allan 方差、噪声项、零偏），请在计划中添加类型为“静态”的测试点：转台静止时记录陀螺数据。</translation>
     </message>
@@ -1640,7 +1724,7 @@ File: %1</source>
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../../ui/main_window.cpp" line="-857"/>
+        <location filename="../../ui/main_window.cpp" line="-946"/>
         <location filename="../../ui/plan_editor.cpp" line="-282"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
@@ -1804,7 +1888,7 @@ File: %1</source>
         <translation>记录软件</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+7"/>
         <source>Report produced</source>
         <translation>报告生成</translation>
     </message>
@@ -2073,7 +2157,17 @@ File: %1</source>
         <translation>未给出</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="-116"/>
+        <source>Result reported</source>
+        <translation>报告的结果</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>computed when this report was produced, with the constants on page 2</source>
+        <translation>生成本报告时计算，使用第 2 页的常数</translation>
+    </message>
+    <message>
+        <location line="+118"/>
         <source>The plan was not recorded with the data; the test points as the stream states them:</source>
         <translation>数据未附带测试计划；以下为数据流给出的测试点：</translation>
     </message>
@@ -2700,15 +2794,30 @@ File: %1</source>
         <translation>IMU 延迟标定报告：%1 %2</translation>
     </message>
     <message>
-        <location filename="../../ui/result_view.cpp" line="+58"/>
+        <location filename="../../ui/result_view.cpp" line="+60"/>
         <source>%1: %2 axis, %3 Hz / %4°</source>
         <translation>%1：%2 轴，%3 Hz / %4°</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>table read %1 ms, board %2 ms</source>
+        <translation>转台读数 %1 ms，处理板 %2 ms</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>version not stated</source>
+        <translation>未注明版本</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>fogbench %1</source>
+        <translation>fogbench %1</translation>
     </message>
 </context>
 <context>
     <name>fog::ui::ResultView</name>
     <message>
-        <location line="+40"/>
+        <location line="+41"/>
         <source>Test point</source>
         <translation>测试点</translation>
     </message>
@@ -2728,7 +2837,17 @@ File: %1</source>
         <translation>导出</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+6"/>
+        <source>Result</source>
+        <translation>结果</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The session keeps every analysis of it (the recording&apos;s, each re-analysis) with the constants and software version that made it; the chosen one is shown, reported and exported</source>
+        <translation>会话保存对它的每次分析（记录时的、每次重新分析的）及其所用常数和软件版本；所选的一个用于显示、报告和导出</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>Normalised angles and fits</source>
         <translation>归一化角度及拟合</translation>
     </message>
@@ -2876,12 +2995,52 @@ File: %1</source>
         <translation>尚无结果。</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+24"/>
+        <source>Result shown: %1</source>
+        <translation>显示的结果：%1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>&lt;b&gt;No delay:&lt;/b&gt; %1</source>
         <translation>&lt;b&gt;无延迟结果：&lt;/b&gt;%1</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+18"/>
+        <source>this run&apos;s, not recorded in a session; computed by fogbench %1 with %2</source>
+        <translation>本次运行的结果，未记录到会话；由 fogbench %1 使用 %2 计算</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>none stored in the session; computed by fogbench %1 with the session&apos;s constants (%2)</source>
+        <translation>会话中未存储结果；由 fogbench %1 使用会话的常数（%2）计算</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>result %1 of %2, stored %3 by %4 (%5), %6</source>
+        <translation>第 %1 个结果（共 %2 个），%3 由 %4（%5）存储，%6</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>analysis</source>
+        <translation>分析</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1 of %2 · %3 · %4 · %5</source>
+        <translation>%1 / %2 · %3 · %4 · %5</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source> · damaged, cannot be shown</source>
+        <translation> · 已损坏，无法显示</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Loading the chosen result …</source>
+        <translation>正在载入所选结果 …</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>nominal</source>
         <translation>标称</translation>
     </message>
@@ -2981,7 +3140,12 @@ File: %1</source>
         <translation>  ·  &lt;span style=&apos;color:#b00000&apos;&gt;运行未完成&lt;/span&gt;</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+6"/>
+        <source>&lt;br&gt;&lt;span style=&apos;color:#a05000&apos;&gt;The stored result gives IMU delay %1 ms (%2); shown is this version&apos;s analysis with its constants.&lt;/span&gt;</source>
+        <translation>&lt;br&gt;&lt;span style=&apos;color:#a05000&apos;&gt;存储的结果给出 IMU 延迟 %1 ms（%2）；此处显示的是本版本用其常数所做的分析。&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>&lt;span style=&apos;color:%1&apos;&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/span&gt; (limit %3 ms): %4</source>
         <translation>&lt;span style=&apos;color:%1&apos;&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/span&gt;（限值 %3 ms）：%4</translation>
     </message>

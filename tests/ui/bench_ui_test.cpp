@@ -24,6 +24,7 @@
 #include <QGroupBox>
 #include <QLabel>
 #include <QProcess>
+#include <QProgressBar>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -31,6 +32,7 @@
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QtTest>
+#include <algorithm>
 #include <cmath>
 #include <qwt_plot.h>
 #include <qwt_plot_barchart.h>
@@ -461,6 +463,58 @@ class BenchUiTest : public QObject {
     auto reader = fog::session::SessionReader::open(complete.toStdString());
     QVERIFY(reader.isOk());
     QCOMPARE((*reader)->results()->size(), resultsBefore + 1);
+    const qint64 newestId = (*reader)->results()->back().id;
+    reader->reset();
+
+    // The new result is shown, chosen, and is what the report draws.
+    auto* results = w->resultView();
+    QCOMPARE(w->currentView(), MainWindow::kResults);
+    QVERIFY(w->lastOutcome() && w->lastOutcome()->report);
+    QCOMPARE(w->lastOutcome()->shownResultId, newestId);
+    QCOMPARE(results->resultCombo()->count(), static_cast<int>(resultsBefore + 1));
+    QCOMPARE(results->resultCombo()->currentIndex(), static_cast<int>(resultsBefore));
+    QCOMPARE(results->resultCombo()->currentData().toLongLong(), newestId);
+    QVERIFY(results->resultCombo()->isEnabled());
+    const auto& reanalysedPoint = w->lastOutcome()->report->points.front();
+    QCOMPARE(results->delayTable()->item(3, 1)->text().toDouble(), 0.3);
+    QVERIFY(std::abs(reanalysedPoint.gyroDelayMs - (reanalysedPoint.imuDelayMs - 0.3)) < 1e-9);
+    const QString newest = QString("result %1 of %1").arg(resultsBefore + 1);
+    QVERIFY2(results->resultDescription().startsWith(newest) && results->resultDescription().contains("board 0.3000 ms"),
+             qPrintable(results->resultDescription()));
+    QVERIFY(results->reportText().contains(newest));
+    auto reportOf = [&] {
+      QStringList drawn;
+      auto input = results->reportInput(0.8);
+      if (!input.isOk() || !fog::report::renderCalibrationPages(*input, 30, &drawn).isOk()) return QString();
+      return drawn.join("\n");
+    };
+    QString drawn = reportOf();
+    QVERIFY2(drawn.contains(newest) && drawn.contains("board 0.3000 ms"), qPrintable(drawn.left(2000)));
+    // The constants table (page 2) is the chosen result's too.
+    QVERIFY(drawn.count("0.3000 ms") >= 2);
+
+    // The older result, chosen: its constants and numbers, in the view and the report.
+    QSignalSpy chosen(w.get(), &MainWindow::resultShown);
+    emit results->resultCombo()->activated(0);
+    QTRY_VERIFY_WITH_TIMEOUT(!chosen.isEmpty(), 30000);
+    QCOMPARE(chosen.front().front().toBool(), true);
+    QCOMPARE(results->resultCombo()->currentIndex(), 0);
+    QCOMPARE(w->lastOutcome()->shownResultNumber(), 1);
+    QCOMPARE(results->delayTable()->item(3, 1)->text().toDouble(), 0.28);
+    const auto& olderPoint = w->lastOutcome()->report->points.front();
+    QVERIFY(std::abs(olderPoint.gyroDelayMs - (olderPoint.imuDelayMs - 0.28)) < 1e-9);
+    QVERIFY(std::abs(olderPoint.gyroDelayMs - reanalysedPoint.gyroDelayMs - 0.02) < 1e-9);
+    drawn = reportOf();
+    QVERIFY2(drawn.contains(QString("result 1 of %1").arg(resultsBefore + 1)) && drawn.contains("board 0.2800 ms"),
+             qPrintable(drawn.left(2000)));
+    QVERIFY(!drawn.contains("board 0.3000 ms"));
+
+    // Opening the session again shows its newest result.
+    opened.clear();
+    w->openSession(complete);
+    QTRY_VERIFY_WITH_TIMEOUT(!opened.isEmpty(), 30000);
+    QCOMPARE(w->lastOutcome()->shownResultId, newestId);
+    QCOMPARE(results->delayTable()->item(3, 1)->text().toDouble(), 0.3);
 
     // Compare the two sessions of the folder.
     const QStringList all = [&] {
@@ -549,10 +603,31 @@ class BenchUiTest : public QObject {
     w->openSession(path);
     QTRY_VERIFY_WITH_TIMEOUT(!opened.isEmpty(), 30000);
     QSignalSpy diagnosed(w.get(), &MainWindow::diagnosisEnded);
+    auto* view = w->diagnosisView();
+    // Progress as the bar shows it, with the stage beside it.
+    std::vector<int> values;
+    QStringList stages;
+    connect(view->progressBar(), &QProgressBar::valueChanged, view, [&](int v) {
+      values.push_back(v);
+      stages << view->stageShown();
+    });
     click(*w, "diagnoseButton");
+    // Running: the bar, Cancel, and no plots (no empty default axes).
+    QCOMPARE(view->state(), fog::ui::DiagnosisView::State::kRunning);
+    QVERIFY(view->progressBar()->isVisible() && view->cancelButton()->isVisible());
+    QVERIFY(!view->plotsShown());
+    QVERIFY(!view->curvePlot()->isVisible());
     QTRY_VERIFY_WITH_TIMEOUT(!diagnosed.isEmpty(), 60000);
     QCOMPARE(diagnosed.front().front().toBool(), true);
     QCOMPARE(w->currentView(), MainWindow::kDiagnosis);
+    QVERIFY2(values.size() >= 3, qPrintable(QString("%1 progress steps").arg(values.size())));
+    QVERIFY(std::is_sorted(values.begin(), values.end()));
+    QCOMPARE(values.back(), 1000);
+    QVERIFY2(stages.contains(fog::ui::DiagnosisView::stageText("replays")), qPrintable(stages.join(" | ")));
+    // Done: the plots, no bar.
+    QCOMPARE(view->state(), fog::ui::DiagnosisView::State::kShown);
+    QVERIFY(view->plotsShown() && view->curvePlot()->isVisible());
+    QVERIFY(!view->progressBar()->isVisible());
     const auto* d = w->diagnosisView()->diagnosis();
     QVERIFY(d);
     QCOMPARE(QString::fromStdString(d->verdict), QString("scale_factor_error"));
@@ -564,6 +639,57 @@ class BenchUiTest : public QObject {
       bars += static_cast<int>(static_cast<QwtPlotBarChart*>(item)->dataSize());
     QCOMPARE(bars, static_cast<int>(d->effects.size()));
     QCOMPARE(w->diagnosisView()->curvePlot()->itemList(QwtPlotItem::Rtti_PlotCurve).size(), 2);
+  }
+
+  // Cancel ends a running diagnosis: no result, the view says so and shows
+  // no plots, and the bench is ready (a new diagnosis runs to the end).
+  void diagnosisCancels() {
+    // A minute at 1 Hz: a diagnosis of a few seconds, long enough to be
+    // cancelled well before its end.
+    QTemporaryDir dir;
+    const QString path = dir.filePath("minute.fbs");
+    const fog::TestPlan plan = fog::TestPlan::paperFast();
+    auto source = fog::acquisition::SimulatorSource::create(fog::model::SimConfig{}, plan, 0.0);
+    QVERIFY(source.isOk());
+    fog::acquisition::AcquisitionOptions options;
+    options.sessionPath = path.toStdString();
+    options.info.plan = plan;
+    QVERIFY(fog::acquisition::acquire(**source, options, nullptr).isOk());
+
+    auto w = window();
+    QSignalSpy opened(w.get(), &MainWindow::sessionOpened);
+    w->openSession(path);
+    QTRY_VERIFY_WITH_TIMEOUT(!opened.isEmpty(), 30000);
+    QSignalSpy diagnosed(w.get(), &MainWindow::diagnosisEnded);
+    auto* view = w->diagnosisView();
+    click(*w, "diagnoseButton");
+    QVERIFY(w->isDiagnosing());
+    QTRY_VERIFY_WITH_TIMEOUT(view->progressBar()->value() > 0, 30000);
+    QVERIFY(diagnosed.isEmpty());
+    QCOMPARE(view->state(), fog::ui::DiagnosisView::State::kRunning);
+    QVERIFY(!view->stageShown().isEmpty());
+    QVERIFY(!view->plotsShown());
+    QTest::mouseClick(view->cancelButton(), Qt::LeftButton);
+    QVERIFY(!view->cancelButton()->isEnabled());  // pressed once; the diagnosis stops soon
+    QTRY_VERIFY_WITH_TIMEOUT(!diagnosed.isEmpty(), 30000);
+    QCOMPARE(diagnosed.front().front().toBool(), false);
+    QCOMPARE(view->state(), fog::ui::DiagnosisView::State::kCancelled);
+    QVERIFY(view->diagnosis() == nullptr);
+    QVERIFY2(view->verdictText().contains("Diagnosis cancelled"), qPrintable(view->verdictText()));
+    QVERIFY(!view->plotsShown() && !view->progressBar()->isVisible());
+    QVERIFY(!w->isDiagnosing());
+    QVERIFY(w->lastMessage().contains("cancelled"));
+    // A cancel is not an error: no error box.
+    auto* box = w->findChild<QMessageBox*>("errorDialog");
+    QVERIFY(!box || !box->isVisible());
+    // Ready again: Run is available and a new diagnosis runs to its result.
+    QVERIFY(button(*w, "runButton")->isEnabled());
+    click(*w, "diagnoseButton");
+    QTRY_VERIFY_WITH_TIMEOUT(diagnosed.size() == 2, 60000);
+    QCOMPARE(diagnosed.back().front().toBool(), true);
+    QCOMPARE(view->state(), fog::ui::DiagnosisView::State::kShown);
+    QVERIFY(view->diagnosis() && view->plotsShown());
+    qInfo("the whole diagnosis took %.1f s", view->diagnosis()->elapsedS);
   }
 
   // A plan with a static segment (edited as such in the plan editor) gives

@@ -73,6 +73,21 @@ class ReportTest : public QObject {
     QVERIFY(text.contains("Page 4 of 4"));
   }
 
+  // The report names the result it shows: what the caller says, or that it
+  // was computed for the report.
+  void namesTheResultItShows() {
+    QStringList text;
+    QVERIFY(fog::report::renderCalibrationPages(session_, 30, &text).isOk());
+    QVERIFY(text.contains("Result reported"));
+    QVERIFY(text.contains("computed when this report was produced, with the constants on page 2"));
+    auto named = session_;
+    named.resultShown = "result 2 of 3, stored 2026-11-24 10:00:00 UTC by fogbench 0.1.0 (fogbench GUI)";
+    text.clear();
+    QVERIFY(fog::report::renderCalibrationPages(named, 30, &text).isOk());
+    QVERIFY(text.contains(named.resultShown));
+    QVERIFY(!text.contains("computed when this report was produced, with the constants on page 2"));
+  }
+
   // What the reader must find: identity, the hash of the raw bytes, the lag
   // with the decimals of the text report, and the verdict.
   void pagesShowIdentityHashLagAndVerdict() {

@@ -297,6 +297,10 @@ void firstPage(PageFlow& flow, const Content& c) {
           {QObject::tr("Recorded with"),
            info.softwareVersion.empty() ? QObject::tr("not recorded")
                                         : "fogbench " + QString::fromStdString(info.softwareVersion)},
+          {QObject::tr("Result reported"),
+           c.in.resultShown.isEmpty()
+               ? QObject::tr("computed when this report was produced, with the constants on page 2")
+               : c.in.resultShown},
           {QObject::tr("Report produced"), QObject::tr("%1 by fogbench %2").arg(c.producedUtc, QStringLiteral(FOG_VERSION))},
           {QObject::tr("Raw data"), rawDataText(c)},
           {QObject::tr("Raw data SHA-256"), c.hash.isEmpty() ? QObject::tr("none: no raw stream (imported)") : c.hash},

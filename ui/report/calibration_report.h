@@ -41,6 +41,11 @@ struct ReportInput {
   // imported data: the report then says "no raw stream (imported)".
   std::vector<std::uint8_t> rawBytes;
   double imuDelayLimitMs = 0.8;
+  // Which of the session's stored results the report shows, in words
+  // (when it was stored, by which version, with which constants); the
+  // report prints it on its first page. Empty: computed for the report
+  // (fogbench-cli report), with the constants it shows.
+  QString resultShown;
 };
 
 // SHA-256 of the bytes, 64 lower-case hex digits; empty for no bytes.
