@@ -330,7 +330,7 @@ void DiagnosisView::showGapMap() {
   std::map<std::tuple<int, std::string, int>, int> rows;      // (channel, quantity, axis) -> row
   for (const auto& c : diagnosis_->gapMap) {
     columns.emplace(std::pair{c.key.point, c.key.segment}, 0);
-    rows.emplace(std::tuple{static_cast<int>(c.key.channel), c.key.quantity, c.key.axis}, 0);
+    rows.emplace(std::tuple{static_cast<int>(c.key.channel), quantityName(c.key), c.key.axis}, 0);
   }
   int i = 0;
   for (auto& [key, index] : columns) {
@@ -349,7 +349,7 @@ void DiagnosisView::showGapMap() {
   const int nRows = static_cast<int>(rowNames_.size()), nCols = static_cast<int>(columnNames_.size());
   QVector<double> values(nRows * nCols, 0.0);
   for (const auto& c : diagnosis_->gapMap) {
-    const int r = rows[{static_cast<int>(c.key.channel), c.key.quantity, c.key.axis}];
+    const int r = rows[{static_cast<int>(c.key.channel), quantityName(c.key), c.key.axis}];
     const int col = columns[{c.key.point, c.key.segment}];
     values[r * nCols + col] = std::clamp(c.z, -kZRange, kZRange);
   }

@@ -11,6 +11,7 @@
 #include <limits>
 #include <optional>
 #include <map>
+#include <tuple>
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <numeric>
@@ -164,15 +165,20 @@ void setLag(model::SimConfig& c, double lagS, std::vector<std::string>& notes) {
   if (std::abs(c.trueLagS() - lagS) > 1e-9) notes.push_back("the replay cannot reach the measured lag exactly");
 }
 
-std::string groupKey(const FeatureKey& k) {
-  return std::to_string(static_cast<int>(k.channel)) + "|" + k.quantity + "|" + std::to_string(k.harmonic) + "|" +
-         std::to_string(k.axis) + "|" + std::to_string(k.point);
-}
+// The cells whose Monte Carlo variance is pooled: one feature of one test
+// point over its segments.
+using GroupKey = std::tuple<Channel, Quantity, int, int, int>;  // channel, quantity, harmonic, axis, point
+GroupKey groupKey(const FeatureKey& k) { return {k.channel, k.quantity, k.harmonic, k.axis, k.point}; }
 
-double floorFor(const FeatureKey& k, double mean) {
-  if (k.unit == "frames") return 0.5;
-  if (k.unit == "us^2") return 1e-3 + 1e-3 * std::abs(mean);
-  if (k.unit == "udeg^2") return 1e-3 * std::abs(mean) + 1e-6;
+// The smallest difference a cell resolves, whatever the replays' spread.
+// An interval variance also allows the counter's own dither: a stream whose
+// period is not a whole number of counter ticks alternates between two
+// interval lengths, p(1-p) tick^2 <= tick^2 / 4 of variance that a recording
+// stamped at another resolution (an imported CSV) does not show.
+double floorFor(const FeatureKey& k, double mean, double counterTickUs) {
+  if (k.unit == Unit::kFrames) return 0.5;
+  if (k.unit == Unit::kMicrosecondsSquared) return 1e-3 + 1e-3 * std::abs(mean) + 0.25 * counterTickUs * counterTickUs;
+  if (k.unit == Unit::kMicroDegSquared) return 1e-3 * std::abs(mean) + 1e-6;
   if (k.channel == Channel::kTiming) return 0.05;  // interval ppm
   return 1e-6;
 }
@@ -259,7 +265,7 @@ std::vector<HeldOutShrink> shrinkPerChannel(const std::vector<GapCell>& cells, c
     HeldOutShrink s;
     s.channel = static_cast<Channel>(c);
     for (std::size_t i = 0; i < cells.size(); ++i) {
-      if (!cells[i].heldOut || static_cast<int>(cells[i].key.channel) != c) continue;
+      if (!cells[i].heldOut || !cells[i].informative || static_cast<int>(cells[i].key.channel) != c) continue;
       ++s.cells;
       s.before += before[i] * before[i];
       s.after += after[i] * after[i];
@@ -293,7 +299,7 @@ std::vector<ChannelGap> channelGaps(const std::vector<GapCell>& cells, bool afte
     ChannelGap g;
     g.channel = static_cast<Channel>(c);
     for (const auto& cell : cells) {
-      if (static_cast<int>(cell.key.channel) != c) continue;
+      if (static_cast<int>(cell.key.channel) != c || !cell.informative) continue;
       const double z = after ? cell.zAfter : cell.z;
       ++g.cells;
       g.chiSquare += z * z;
@@ -425,7 +431,7 @@ Status calibrateEarthRateAndBias(Replay& replay, const std::vector<FeatureKey>& 
   const auto& f0b = out[1]->values;
   const auto& f90 = out[2]->values;
   const auto& f180 = out[3]->values;
-  std::map<std::string, std::pair<double, double>> spread;  // sum of squares, count
+  std::map<GroupKey, std::pair<double, double>> spread;  // sum of squares, count
   for (std::size_t i = 0; i < keys.size(); ++i) {
     auto& g = spread[groupKey(keys[i])];
     g.first += 0.5 * (f0[i] - f0b[i]) * (f0[i] - f0b[i]);
@@ -436,7 +442,7 @@ Status calibrateEarthRateAndBias(Replay& replay, const std::vector<FeatureKey>& 
     // The Earth rate a swing modulates is a rate in phase with the angle, an
     // angle in quadrature with it (and a trend); the in-phase cross cells are
     // where misalignment shows, so they are left to the effect fit.
-    if (keys[i].channel == Channel::kGyro && (keys[i].quantity == "trend" || keys[i].quantity == "cross_quadrature"))
+    if (keys[i].channel == Channel::kGyro && (keys[i].quantity == Quantity::kTrend || keys[i].quantity == Quantity::kCrossQuadrature))
       rows.push_back(i);
   if (rows.size() < 6) return Status::ok();
   const auto m = static_cast<Eigen::Index>(rows.size());
@@ -449,7 +455,7 @@ Status calibrateEarthRateAndBias(Replay& replay, const std::vector<FeatureKey>& 
     const double sigma = std::sqrt(g.first / std::max(1.0, g.second) + 1e-6 + 1e-6 * b * b);
     a(r, 0) = 0.5 * (f0[i] - f180[i]) / sigma;  // times cos h
     a(r, 1) = (b - f90[i]) / sigma;             // times -sin h
-    if (keys[i].quantity == "trend") a(r, 2 + keys[i].axis) = 1.0 / sigma;  // bias, deg/h
+    if (keys[i].quantity == Quantity::kTrend) a(r, 2 + keys[i].axis) = 1.0 / sigma;  // bias, deg/h
     y(r) = (real[i] - b) / sigma;
   }
   // The horizontal Earth rate's size is the stated latitude's; its
@@ -467,7 +473,7 @@ Status calibrateEarthRateAndBias(Replay& replay, const std::vector<FeatureKey>& 
   // (g-sensitivity) would turn into a heading.
   Eigen::VectorXd isTrend(m), inScan(m);
   for (Eigen::Index r = 0; r < m; ++r) {
-    isTrend(r) = keys[rows[static_cast<std::size_t>(r)]].quantity == "trend" ? 1.0 : 0.0;
+    isTrend(r) = keys[rows[static_cast<std::size_t>(r)]].quantity == Quantity::kTrend ? 1.0 : 0.0;
     inScan(r) = isTrend(r) == 0.0 && std::hypot(a(r, 0), a(r, 1)) > 2.0 ? 1.0 : 0.0;
   }
   Eigen::MatrixXd t(m, static_cast<Eigen::Index>(biasCols.size()));
@@ -645,7 +651,7 @@ Result<CalibratedReplay> calibrate(const AnalysedSession& session, const Session
   {
     std::vector<double> tableMs;
     for (std::size_t i = 0; i < keys.size(); ++i)
-      if (keys[i].channel == Channel::kTable && keys[i].quantity == "residual_ms") tableMs.push_back(real[i]);
+      if (keys[i].channel == Channel::kTable && keys[i].quantity == Quantity::kResidualMeanSquare) tableMs.push_back(real[i]);
     // White encoder noise sigma^2 = q^2 / 12 for a quantising encoder.
     cal.encoderNoiseDeg = std::sqrt(median(tableMs)) * 1e-6;
     c.encoder.quantumDeg = std::sqrt(12.0) * cal.encoderNoiseDeg;
@@ -732,7 +738,8 @@ struct GapModel {
 
 // Fills d's gap map and its headline numbers.
 GapModel buildGapMap(const FeatureSet& realFeatures, const std::vector<SignatureJob>& jobs,
-                     const std::vector<FeatureSet>& outputs, const DiagnosisOptions& options, Diagnosis& d) {
+                     const std::vector<FeatureSet>& outputs, double counterTickUs, const DiagnosisOptions& options,
+                     Diagnosis& d) {
   const auto& keys = realFeatures.keys;
   const std::vector<double>& real = realFeatures.values;
   const auto& library = effectLibrary();
@@ -746,7 +753,7 @@ GapModel buildGapMap(const FeatureSet& realFeatures, const std::vector<Signature
   st.held.assign(n, false);
   for (int k = 0; k < K; ++k)
     for (std::size_t i = 0; i < n; ++i) st.mean[i] += outputs[static_cast<std::size_t>(k)].values[i] / K;
-  std::map<std::string, std::pair<double, double>> pooled;  // sum of squares, dof
+  std::map<GroupKey, std::pair<double, double>> pooled;  // sum of squares, dof
   for (std::size_t i = 0; i < n; ++i) {
     auto& pool = pooled[groupKey(keys[i])];
     for (int k = 0; k < K; ++k) {
@@ -768,7 +775,7 @@ GapModel buildGapMap(const FeatureSet& realFeatures, const std::vector<Signature
         dropJob = j;
     double total = 0.0, shares = 0.0;
     for (std::size_t i = 0; i < n; ++i)
-      if (keys[i].unit == "frames") {
+      if (keys[i].unit == Unit::kFrames) {
         total += std::max(0.0, real[i]);
         if (dropJob < jobs.size()) {
           const double perUnit = (outputs[dropJob].values[i] - outputs[0].values[i]) /
@@ -778,7 +785,7 @@ GapModel buildGapMap(const FeatureSet& realFeatures, const std::vector<Signature
         }
       }
     for (std::size_t i = 0; i < n; ++i)
-      if (keys[i].unit == "frames" && shares > 0.0) lostExpected[i] = total * lostPerUnit[i] / shares;
+      if (keys[i].unit == Unit::kFrames && shares > 0.0) lostExpected[i] = total * lostPerUnit[i] / shares;
   }
   for (std::size_t i = 0; i < n; ++i) {
     const auto& pool = pooled[groupKey(keys[i])];
@@ -787,16 +794,23 @@ GapModel buildGapMap(const FeatureSet& realFeatures, const std::vector<Signature
     // is t-distributed).
     const double dof = pool.second;
     const double var = pool.first / std::max(1.0, dof) * (1.0 + 1.0 / K) * (dof > 4.0 ? dof / (dof - 2.0) : 2.0);
-    const double fl = floorFor(keys[i], st.mean[i]);
+    const double fl = floorFor(keys[i], st.mean[i], counterTickUs);
     const double formal = realFeatures.formalStd[i];
     st.sigma[i] = std::sqrt(std::max(var, formal * formal) + fl * fl + lostExpected[i]);
     st.z[i] = (real[i] - st.mean[i]) / st.sigma[i];
     st.held[i] = keys[i].segment % 2 == 1;
-    d.gapMap.push_back({keys[i], real[i], st.mean[i], st.sigma[i], st.z[i], st.z[i], st.held[i]});
+    // A cell whose replays spread by less than a tenth of its floor (the
+    // timing cells of a simulator whose clocks have no jitter, the lost-frame
+    // cells of a session that lost nothing) is no statistical quantity: it
+    // counts as a degree of freedom only when the recording departs from the
+    // replays by more than its floor.
+    const bool informative = std::sqrt(pool.first / std::max(1.0, dof)) > 0.1 * fl ||
+                             std::abs(real[i] - st.mean[i]) > fl;
+    d.gapMap.push_back({keys[i], real[i], st.mean[i], st.sigma[i], st.z[i], st.z[i], st.held[i], informative});
+    if (informative) ++d.cells;
   }
-  d.cells = static_cast<int>(n);
   d.chiSquare = chi2(st.z, st.held, false) + chi2(st.z, st.held, true);
-  const double cells = static_cast<double>(n);
+  const double cells = static_cast<double>(d.cells);
   d.gapSignificant = d.chiSquare - cells > options.gapSigma * std::sqrt(2.0 * cells);
   d.gapBefore = channelGaps(d.gapMap, false);
   g.base = outputs[0].values;
@@ -810,10 +824,10 @@ GapModel buildGapMap(const FeatureSet& realFeatures, const std::vector<Signature
   auto& nuisance = g.nuisance;
   nuisance.assign(3 + kAxisCount, std::vector<double>(n, 0.0));
   for (std::size_t i = 0; i < n; ++i) {
-    if (keys[i].quantity == "delay") nuisance[0][i] = 1.0 / st.sigma[i];
-    if (keys[i].quantity == "table_interval") nuisance[1][i] = 1.0 / st.sigma[i];
-    if (keys[i].quantity == "imu_interval") nuisance[2][i] = 1.0 / st.sigma[i];
-    if (keys[i].quantity == "trend") nuisance[3 + static_cast<std::size_t>(keys[i].axis)][i] = 1.0 / st.sigma[i];
+    if (keys[i].quantity == Quantity::kDelay) nuisance[0][i] = 1.0 / st.sigma[i];
+    if (keys[i].quantity == Quantity::kTableInterval) nuisance[1][i] = 1.0 / st.sigma[i];
+    if (keys[i].quantity == Quantity::kImuInterval) nuisance[2][i] = 1.0 / st.sigma[i];
+    if (keys[i].quantity == Quantity::kTrend) nuisance[3 + static_cast<std::size_t>(keys[i].axis)][i] = 1.0 / st.sigma[i];
   }
   for (auto it = nuisance.begin(); it != nuisance.end();)
     it = std::all_of(it->begin(), it->end(), [](double v) { return v == 0.0; }) ? nuisance.erase(it) : it + 1;
@@ -890,12 +904,12 @@ std::vector<Candidate> scoreEffects(const FeatureSet& realFeatures, const GapMod
       // 25 is found with that spread added (bisection; norm grows with p).
       double framesNorm2 = 0.0;
       for (std::size_t i = 0; i < n; ++i)
-        if (keys[i].unit == "frames") framesNorm2 += r[i] * r[i];
+        if (keys[i].unit == Unit::kFrames) framesNorm2 += r[i] * r[i];
       if (library[e].linear && th > 0.0 && framesNorm2 > 0.0) {
         auto delta = [&](double p) {
           double s2 = (norm2 - framesNorm2) * p * p;
           for (std::size_t i = 0; i < n; ++i) {
-            if (keys[i].unit != "frames") continue;
+            if (keys[i].unit != Unit::kFrames) continue;
             const double a = col[i] * st.sigma[i] * p;  // frames
             s2 += a * a / (st.sigma[i] * st.sigma[i] + std::abs(a));
           }
@@ -1281,7 +1295,7 @@ std::vector<PointView> pointViews(const AnalysedSession& session, const Replay& 
     const double span = cal.plan.points[p].durationS;
     const int segs = replay.ref.points[p].segments;
     for (std::size_t i = 0; i < n; ++i) {
-      if (keys[i].point != static_cast<int>(p) || keys[i].quantity != "delay") continue;
+      if (keys[i].point != static_cast<int>(p) || keys[i].quantity != Quantity::kDelay) continue;
       v.segmentMidS.push_back(-0.5 * span + (keys[i].segment + 0.5) * span / segs);
       v.realDelayUs.push_back(real[i]);
       v.simDelayUs.push_back(st.mean[i]);
@@ -1325,7 +1339,8 @@ Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, cons
   progress.stage("replays", expectedReplays);
   auto outputs = runReplays(replay, jobs, real.values.size(), options.threads, progress);
   if (!outputs) return outputs.status();
-  const GapModel gap = buildGapMap(real, jobs, *outputs, options, d);
+  const double counterTickUs = 1e6 / replay.cal.config.samplingBoard.counterHz;
+  const GapModel gap = buildGapMap(real, jobs, *outputs, counterTickUs, options, d);
 
   progress.stage("effects", expectedReplays);
   std::vector<Candidate> candidates = scoreEffects(real, gap, jobs, *outputs, d.gapMap);
@@ -1420,10 +1435,11 @@ std::string formatDiagnosisJson(const Diagnosis& d) {
                       {"bias_deg_h", c.biasDegPerH}};
   json cells = json::array();
   for (const auto& g : d.gapMap)
-    cells.push_back({{"channel", channelName(g.key.channel)}, {"quantity", g.key.quantity}, {"unit", g.key.unit},
+    cells.push_back({{"channel", channelName(g.key.channel)}, {"quantity", quantityName(g.key)}, {"unit", unitName(g.key.unit)},
                      {"harmonic", g.key.harmonic}, {"axis", g.key.axis}, {"point", g.key.point},
                      {"segment", g.key.segment}, {"real", g.real}, {"sim_mean", g.simMean}, {"sim_std", g.simStd},
-                     {"z", g.z}, {"z_after", g.zAfter}, {"heldout", g.heldOut}});
+                     {"z", g.z}, {"z_after", g.zAfter}, {"heldout", g.heldOut},
+                     {"informative", g.informative}});
   j["gap_map"] = cells;
   j["notes"] = d.notes;
   j["elapsed_s"] = d.elapsedS;
@@ -1474,8 +1490,8 @@ std::string formatDiagnosisText(const Diagnosis& d) {
   for (std::size_t i = 0; i < std::min<std::size_t>(5, worst.size()); ++i) {
     const auto& g = *worst[i];
     std::snprintf(b, sizeof b, "    point %d segment %d %-10s %-18s axis %2d: real %.4g, replay %.4g +- %.3g %s (z %+.1f)\n",
-                  g.key.point + 1, g.key.segment + 1, channelName(g.key.channel), g.key.quantity.c_str(), g.key.axis,
-                  g.real, g.simMean, g.simStd, g.key.unit.c_str(), g.z);
+                  g.key.point + 1, g.key.segment + 1, channelName(g.key.channel), quantityName(g.key).c_str(), g.key.axis,
+                  g.real, g.simMean, g.simStd, unitName(g.key.unit), g.z);
     s += b;
   }
   s += "\nEffects, ranked (score = training delta chi2 - k ln n)\n";

@@ -92,9 +92,16 @@ struct GapCell {
   double z = 0.0;             // (real - simMean) / simStd
   double zAfter = 0.0;        // the same with the verdict's effects added (= z when none)
   bool heldOut = false;       // odd segment: not used to fit effects
+  // False when the replays do not spread in this cell (by less than a tenth
+  // of its floor) and the recording matches them within that floor (a timing
+  // cell of a clean session: no frame lost anywhere). Such a cell carries no
+  // information, so it is no degree of freedom: it is left out of every cell
+  // count the significance tests use.
+  bool informative = true;
 };
 
-// Headline gap of one channel: chi2 of its cells and sqrt(chi2 / n) (1 = no gap).
+// Headline gap of one channel: chi2 of its informative cells and
+// sqrt(chi2 / n) (1 = no gap).
 struct ChannelGap {
   Channel channel = Channel::kTable;
   int cells = 0;
@@ -151,9 +158,9 @@ struct Diagnosis {
   Calibration calibration;
   TimingAudit realTiming, simTiming;
   std::vector<GapCell> gapMap;
-  std::vector<ChannelGap> gapBefore, gapAfter;  // all cells, per channel
+  std::vector<ChannelGap> gapBefore, gapAfter;  // informative cells, per channel
   double chiSquare = 0.0;                        // all cells, before
-  int cells = 0;
+  int cells = 0;                                 // informative cells (the degrees of freedom)
   bool gapSignificant = false;
   std::vector<PointView> points;
   std::vector<EffectFit> effects;                // ranked, best first

@@ -145,15 +145,12 @@ void relative(double ah, double bh, double a1, double b1, int h, double& inPhase
 struct Emitter {
   FeatureSet& out;
   int point = 0, segment = 0;
-  void add(Channel c, const char* quantity, const char* unit, int harmonic, int axis, double value, double formal = 0.0) {
+  void add(Channel c, Quantity quantity, Unit unit, int harmonic, int axis, double value, double formal = 0.0) {
     out.keys.push_back({c, quantity, unit, harmonic, axis, point, segment});
     out.values.push_back(value);
     out.formalStd.push_back(formal);
   }
 };
-
-const char* kInPhase[] = {"", "", "h2_in_phase", "h3_in_phase", "h4_in_phase", "h5_in_phase"};
-const char* kQuadrature[] = {"", "", "h2_quadrature", "h3_quadrature", "h4_quadrature", "h5_quadrature"};
 
 void emitSegment(Emitter& e, const SegmentFit& f, const SegmentSums& s, const PointReference& ref,
                  const FeatureReference& fr) {
@@ -167,11 +164,11 @@ void emitSegment(Emitter& e, const SegmentFit& f, const SegmentSums& s, const Po
   for (int h = 2; h <= kHarmonics; ++h) {
     double i = 0, q = 0;
     relative(f.table(2 * (h - 1)), f.table(2 * (h - 1) + 1), ta, tb, h, i, q);
-    e.add(Channel::kTable, kInPhase[h], "ppm", h, -1, i, tRel(h));
-    e.add(Channel::kTable, kQuadrature[h], "ppm", h, -1, q, tRel(h));
+    e.add(Channel::kTable, Quantity::kInPhase, Unit::kPpm, h, -1, i, tRel(h));
+    e.add(Channel::kTable, Quantity::kQuadrature, Unit::kPpm, h, -1, q, tRel(h));
   }
   // Mean square of uniform quantisation noise: variance 0.8 sigma^4 / N.
-  e.add(Channel::kTable, "residual_ms", "udeg^2", -1, -1, f.tableMs * 1e12,
+  e.add(Channel::kTable, Quantity::kResidualMeanSquare, Unit::kMicroDegSquared, -1, -1, f.tableMs * 1e12,
         f.tableMs * 1e12 * std::sqrt(0.8 / static_cast<double>(f.tableN)));
   // Gyro minus table: the fundamental's gain and delay, and how the gyro's
   // harmonics differ from the table's.
@@ -181,36 +178,36 @@ void emitSegment(Emitter& e, const SegmentFit& f, const SegmentSums& s, const Po
   // pulse quantisation as a difference, which telescopes), and the gyro has
   // a true seed-to-seed spread that the replays measure.
   const double rel1 = tRel(1);  // ppm of the fundamental
-  e.add(Channel::kGyroMinusTable, "gain", "ppm", 1, ax, (gAmp / tAmp - 1.0) * 1e6, rel1);
-  e.add(Channel::kGyroMinusTable, "delay", "us", 1, ax,
+  e.add(Channel::kGyroMinusTable, Quantity::kGain, Unit::kPpm, 1, ax, (gAmp / tAmp - 1.0) * 1e6, rel1);
+  e.add(Channel::kGyroMinusTable, Quantity::kDelay, Unit::kMicroseconds, 1, ax,
         wrapPi(std::atan2(tb, ta) - std::atan2(gb, ga)) / ref.omegaRadPerS * 1e6, rel1 / ref.omegaRadPerS);
   for (int h = 2; h <= kHarmonics; ++h) {
     double ti = 0, tq = 0, gi = 0, gq = 0;
     relative(f.table(2 * (h - 1)), f.table(2 * (h - 1) + 1), ta, tb, h, ti, tq);
     relative(f.gyro(2 * (h - 1), ax), f.gyro(2 * (h - 1) + 1, ax), ga, gb, h, gi, gq);
     const double fs = tRel(h);
-    e.add(Channel::kGyroMinusTable, kInPhase[h], "ppm", h, ax, gi - ti, fs);
-    e.add(Channel::kGyroMinusTable, kQuadrature[h], "ppm", h, ax, gq - tq, fs);
+    e.add(Channel::kGyroMinusTable, Quantity::kInPhase, Unit::kPpm, h, ax, gi - ti, fs);
+    e.add(Channel::kGyroMinusTable, Quantity::kQuadrature, Unit::kPpm, h, ax, gq - tq, fs);
   }
   // Gyro channel: trend (harmonic 0) and residual of the swing axis; what the
   // other two gyros see of the swing, and their trends.
-  e.add(Channel::kGyro, "residual_ms", "udeg^2", -1, ax, f.gyroMs * 1e12,
+  e.add(Channel::kGyro, Quantity::kResidualMeanSquare, Unit::kMicroDegSquared, -1, ax, f.gyroMs * 1e12,
         f.gyroMs * 1e12 * std::sqrt(2.0 / static_cast<double>(s.gn)));
   for (int a = 0; a < kAxisCount; ++a) {
-    e.add(Channel::kGyro, "trend", "deg/h", 0, a, f.gyro(kGyroCols - 1, a) * kSecondsPerHour);
+    e.add(Channel::kGyro, Quantity::kTrend, Unit::kDegPerHour, 0, a, f.gyro(kGyroCols - 1, a) * kSecondsPerHour);
     if (a == ax) continue;
     double i = 0, q = 0;
     relative(f.gyro(0, a), f.gyro(1, a), ta, tb, 1, i, q);
-    e.add(Channel::kGyro, "cross_in_phase", "ppm", 1, a, i);
-    e.add(Channel::kGyro, "cross_quadrature", "ppm", 1, a, q);
+    e.add(Channel::kGyro, Quantity::kCrossInPhase, Unit::kPpm, 1, a, i);
+    e.add(Channel::kGyro, Quantity::kCrossQuadrature, Unit::kPpm, 1, a, q);
   }
   // Timing of both streams inside the segment.
-  e.add(Channel::kTiming, "table_interval", "ppm", -1, -1,
+  e.add(Channel::kTiming, Quantity::kTableInterval, Unit::kPpm, -1, -1,
         (s.tableIntervalUs.mean() * 1e-6 / fr.tablePeriodS - 1.0) * 1e6);
-  e.add(Channel::kTiming, "table_interval_var", "us^2", -1, -1, s.tableIntervalUs.variance());
-  e.add(Channel::kTiming, "imu_interval", "ppm", -1, -1, (s.imuIntervalUs.mean() * 1e-6 / fr.imuPeriodS - 1.0) * 1e6);
-  e.add(Channel::kTiming, "imu_interval_var", "us^2", -1, -1, s.imuIntervalUs.variance());
-  e.add(Channel::kTiming, "imu_lost", "frames", -1, -1, s.lost);
+  e.add(Channel::kTiming, Quantity::kTableIntervalVariance, Unit::kMicrosecondsSquared, -1, -1, s.tableIntervalUs.variance());
+  e.add(Channel::kTiming, Quantity::kImuInterval, Unit::kPpm, -1, -1, (s.imuIntervalUs.mean() * 1e-6 / fr.imuPeriodS - 1.0) * 1e6);
+  e.add(Channel::kTiming, Quantity::kImuIntervalVariance, Unit::kMicrosecondsSquared, -1, -1, s.imuIntervalUs.variance());
+  e.add(Channel::kTiming, Quantity::kImuLost, Unit::kFrames, -1, -1, s.lost);
 }
 
 double medianInterval(const std::vector<ImuSample>& imu) {
@@ -223,6 +220,37 @@ double medianInterval(const std::vector<ImuSample>& imu) {
 }
 
 }  // namespace
+
+std::string quantityName(const FeatureKey& key) {
+  switch (key.quantity) {
+    case Quantity::kInPhase: return "h" + std::to_string(key.harmonic) + "_in_phase";
+    case Quantity::kQuadrature: return "h" + std::to_string(key.harmonic) + "_quadrature";
+    case Quantity::kResidualMeanSquare: return "residual_ms";
+    case Quantity::kGain: return "gain";
+    case Quantity::kDelay: return "delay";
+    case Quantity::kTrend: return "trend";
+    case Quantity::kCrossInPhase: return "cross_in_phase";
+    case Quantity::kCrossQuadrature: return "cross_quadrature";
+    case Quantity::kTableInterval: return "table_interval";
+    case Quantity::kTableIntervalVariance: return "table_interval_var";
+    case Quantity::kImuInterval: return "imu_interval";
+    case Quantity::kImuIntervalVariance: return "imu_interval_var";
+    case Quantity::kImuLost: return "imu_lost";
+  }
+  return "?";
+}
+
+const char* unitName(Unit unit) {
+  switch (unit) {
+    case Unit::kPpm: return "ppm";
+    case Unit::kMicroseconds: return "us";
+    case Unit::kDegPerHour: return "deg/h";
+    case Unit::kMicroDegSquared: return "udeg^2";
+    case Unit::kMicrosecondsSquared: return "us^2";
+    case Unit::kFrames: return "frames";
+  }
+  return "?";
+}
 
 const char* channelName(Channel c) {
   switch (c) {

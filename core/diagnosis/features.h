@@ -27,15 +27,39 @@ enum class Channel { kTable = 0, kGyro = 1, kGyroMinusTable = 2, kTiming = 3 };
 inline constexpr int kChannelCount = 4;
 const char* channelName(Channel c);  // "table", "gyro", "gyro-table", "timing"
 
+// What a feature measures. Harmonic features carry their harmonic in
+// FeatureKey::harmonic.
+enum class Quantity {
+  kInPhase,             // harmonic h in phase with the channel's fundamental
+  kQuadrature,          // harmonic h in quadrature with it
+  kResidualMeanSquare,  // mean square of the segment's fit residual
+  kGain,                // gyro/table amplitude - 1
+  kDelay,               // gyro behind table at the fundamental
+  kTrend,               // gyro rate trend (bias)
+  kCrossInPhase,        // another gyro's response to the swing, in phase
+  kCrossQuadrature,     // the same, in quadrature
+  kTableInterval,       // mean table sample interval against nominal
+  kTableIntervalVariance,
+  kImuInterval,         // mean IMU frame interval against nominal
+  kImuIntervalVariance,
+  kImuLost,             // IMU frames lost
+};
+enum class Unit { kPpm, kMicroseconds, kDegPerHour, kMicroDegSquared, kMicrosecondsSquared, kFrames };
+
 struct FeatureKey {
   Channel channel = Channel::kTable;
-  std::string quantity;  // "h3_in_phase", "delay", "gain", "trend", "cross_in_phase", "residual_ms", ...
-  std::string unit;      // "ppm", "us", "deg/h", "udeg^2", "us^2", "frames"
+  Quantity quantity = Quantity::kInPhase;
+  Unit unit = Unit::kPpm;
   int harmonic = -1;     // 0..5 where the feature belongs to one harmonic, else -1
   int axis = -1;         // gyro axis (0..2) the feature is measured on, -1 for table/timing
   int point = 0;         // test point position in the recording
   int segment = 0;       // time segment within the test point
 };
+
+// The names the JSON output and the reports use: "h3_in_phase", "delay",
+// "residual_ms", "imu_lost", ...; "ppm", "us", "deg/h", "udeg^2", "us^2", "frames".
+std::string quantityName(const FeatureKey& key);
+const char* unitName(Unit unit);
 
 struct PointReference {
   double omegaRadPerS = 0.0;  // reference swing frequency (the real session's table fit)

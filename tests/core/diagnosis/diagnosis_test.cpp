@@ -55,7 +55,7 @@ TEST(Diagnosis, CleanSessionHasNoGapAndNoVerdict) {
   // against its overstated white-noise standard errors).
   for (const auto& g : d.gapBefore) {
     EXPECT_LT(g.rmsZ, 1.3) << channelName(g.channel);
-    if (g.channel != Channel::kTiming) {
+    if (g.channel != Channel::kTiming) {  // the simulator's clocks have no jitter: few timing cells count
       EXPECT_GT(g.rmsZ, 0.7) << channelName(g.channel);
     }
   }
@@ -65,6 +65,24 @@ TEST(Diagnosis, CleanSessionHasNoGapAndNoVerdict) {
   EXPECT_NEAR(d.calibration.arwDegPerSqrtH, 0.004, 0.0015);
   ASSERT_GE(d.aliasGroups.size(), 1u);
   EXPECT_EQ(d.aliasGroups[0].name, "constant delay");
+  // No frame is lost: the lost-frame cells are 0 in the recording and in
+  // every replay, carry no information and are no degrees of freedom.
+  int uninformative = 0, informative = 0;
+  for (const auto& c : d.gapMap) {
+    if (c.informative) {
+      ++informative;
+      continue;
+    }
+    ++uninformative;
+    EXPECT_LT(std::abs(c.z), 1.0);
+  }
+  EXPECT_GT(uninformative, 0);
+  EXPECT_EQ(d.cells, informative);
+  int perChannel = 0;
+  for (const auto& g : d.gapBefore) perChannel += g.cells;
+  EXPECT_EQ(perChannel, informative);
+  for (const auto& g : d.gapBefore)
+    if (g.channel != Channel::kTiming) EXPECT_GT(g.cells, 0) << channelName(g.channel);
 }
 
 // 200 ppm scale-factor error (~10x its threshold in this plan): named,

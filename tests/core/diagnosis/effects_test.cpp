@@ -46,7 +46,7 @@ double feature(const FeatureSet& f, const std::string& quantity, int axis = -2, 
   double s = 0;
   int n = 0;
   for (std::size_t i = 0; i < f.keys.size(); ++i)
-    if (f.keys[i].point == 0 && f.keys[i].quantity == quantity && (axis == -2 || f.keys[i].axis == axis) &&
+    if (f.keys[i].point == 0 && quantityName(f.keys[i]) == quantity && (axis == -2 || f.keys[i].axis == axis) &&
         (segment < 0 || f.keys[i].segment == segment))
       s += f.values[i], ++n;
   EXPECT_GT(n, 0) << quantity;
