@@ -79,6 +79,8 @@ class Progress {
   std::atomic<bool> cancelled_{false};
 };
 
+constexpr double kReplayChunkS = 2.0;  // simulated seconds decoded at a time
+
 struct Replay {
   Calibration cal;
   FeatureReference ref;
@@ -106,9 +108,19 @@ struct Replay {
     TestPlan plan = cal.plan;
     model::Random phase(model::Random::derive(seed, 0x7ab1e));
     for (auto& p : plan.points) p.startPhaseDeg += 0.1 * (phase.uniform() - 0.5);
-    auto sim = model::simulate(config, plan, std::move(list));
+    auto sim = model::Simulator::create(config, plan);
     if (!sim) return sim.status();
-    auto rec = protocol::decodeRecording(sim->bytes);
+    for (auto& e : list) (*sim)->addEffect(std::move(e));
+    // Decoded as it is made, a few seconds at a time: the bytes of a long
+    // session are never held whole (140 MB per replay for an hour).
+    protocol::StreamDecoder decoder;
+    std::vector<std::uint8_t> bytes;
+    for (double until = kReplayChunkS; (*sim)->advance(until, bytes); until += kReplayChunkS) {
+      decoder.push(bytes);
+      bytes.clear();
+    }
+    decoder.push(bytes);
+    auto rec = decoder.finish();
     if (!rec) return rec.status();
     return extractFeatures(*rec, ref);
   }

@@ -133,22 +133,23 @@ Recording RecordingBuilder::finish(const StreamHealth& health) {
   return rec;
 }
 
-Result<Recording> decodeRecording(std::span<const std::uint8_t> bytes) {
-  Decoder decoder;
-  RecordingBuilder builder;
-  std::vector<DecodedFrame> frames;
-  // Chunks keep the intermediate frame list small for long recordings.
+void StreamDecoder::push(std::span<const std::uint8_t> bytes) {
+  // Pieces keep the intermediate frame list small.
   constexpr std::size_t kChunk = 1 << 16;
   for (std::size_t at = 0; at < bytes.size(); at += kChunk) {
-    frames.clear();
-    decoder.push(bytes.subspan(at, std::min(kChunk, bytes.size() - at)), frames);
-    builder.add(frames);
+    frames_.clear();
+    decoder_.push(bytes.subspan(at, std::min(kChunk, bytes.size() - at)), frames_);
+    builder_.add(frames_);
   }
-  const StreamHealth health = decoder.health();
-  if (builder.framesAdded() == 0)
-    return corruptData("no valid sampling-board frames found in " + std::to_string(bytes.size()) +
+  bytes_ += bytes.size();
+}
+
+Result<Recording> StreamDecoder::finish() {
+  const StreamHealth health = decoder_.health();
+  if (builder_.framesAdded() == 0)
+    return corruptData("no valid sampling-board frames found in " + std::to_string(bytes_) +
                        " bytes; is this a fogbench raw stream, or is the baud rate wrong?");
-  Recording rec = builder.finish(health);
+  Recording rec = builder_.finish(health);
   const bool usable = std::any_of(rec.testPoints.begin(), rec.testPoints.end(),
                                   [](const TestPointData& tp) { return !tp.table.empty() && !tp.imu.empty(); });
   if (!usable)
@@ -157,6 +158,12 @@ Result<Recording> decodeRecording(std::span<const std::uint8_t> bytes) {
                             " status frames, but no test point has both table and IMU samples; "
                             "was a test point recorded while both the turntable and the IMU were connected?");
   return rec;
+}
+
+Result<Recording> decodeRecording(std::span<const std::uint8_t> bytes) {
+  StreamDecoder decoder;
+  decoder.push(bytes);
+  return decoder.finish();
 }
 
 }  // namespace fog::protocol

@@ -105,4 +105,19 @@ class RecordingBuilder {
 // when frames exist but no test point has both table and IMU samples.
 fog::Result<fog::Recording> decodeRecording(std::span<const std::uint8_t> bytes);
 
+// The same, for a stream that arrives in pieces: push() them in order, then
+// finish() gives what decodeRecording() gives for their concatenation,
+// without the bytes ever being held whole (a simulated hour is 140 MB).
+class StreamDecoder {
+ public:
+  void push(std::span<const std::uint8_t> bytes);
+  fog::Result<fog::Recording> finish();
+
+ private:
+  Decoder decoder_;
+  RecordingBuilder builder_;
+  std::vector<DecodedFrame> frames_;
+  std::size_t bytes_ = 0;
+};
+
 }  // namespace fog::protocol
