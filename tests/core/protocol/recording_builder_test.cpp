@@ -319,5 +319,56 @@ TEST(RecordingBuilder, EachTestPointCountsTheDamageMetWhileItWasRecorded) {
   EXPECT_EQ(a.bytesSkipped + b.bytesSkipped, r.health.bytesSkipped);
 }
 
+// A stream pushed in pieces that cut frames anywhere decodes exactly as the
+// whole stream does (the diagnosis' replays decode as they simulate).
+TEST(StreamDecoder, PiecesThatCutFramesGiveTheWholeStreamsRecording) {
+  StreamBuilder s;
+  s.status(1000, statusFor(0, TestPhase::kRecording, 1));
+  for (std::uint32_t k = 0; k < 200; ++k) {
+    s.table(2000 + 1000 * k, tableAt(0, static_cast<std::int32_t>(1000 * k)));
+    if (k % 2 == 0 && k != 100) s.imu(2400 + 1000 * k, imuWith(static_cast<std::int32_t>(k), 1, -1));
+    if (k == 100) s.skipImu();
+  }
+  s.status(300000, statusFor(1, TestPhase::kRecording, 2)).table(300500, tableAt(0, 0, 7)).imu(300700, imuWith(1, 2, 3));
+  auto whole = decodeRecording(s.bytes);
+  ASSERT_TRUE(whole.isOk()) << whole.status().toString();
+
+  StreamDecoder pieces;
+  std::size_t at = 0;
+  for (std::size_t len = 1; at < s.bytes.size(); len = len % 7 + 1) {
+    const std::size_t n = std::min(len, s.bytes.size() - at);
+    pieces.push(std::span(s.bytes).subspan(at, n));
+    at += n;
+  }
+  auto rec = pieces.finish();
+  ASSERT_TRUE(rec.isOk()) << rec.status().toString();
+  ASSERT_EQ(rec->testPoints.size(), whole->testPoints.size());
+  ASSERT_EQ(rec->testPoints.size(), 2u);
+  for (std::size_t p = 0; p < rec->testPoints.size(); ++p) {
+    const auto& a = rec->testPoints[p];
+    const auto& b = whole->testPoints[p];
+    ASSERT_EQ(a.table.size(), b.table.size());
+    ASSERT_EQ(a.imu.size(), b.imu.size());
+    for (std::size_t i = 0; i < a.table.size(); ++i) {
+      EXPECT_EQ(a.table[i].timeS, b.table[i].timeS);
+      EXPECT_EQ(a.table[i].angleDeg, b.table[i].angleDeg);
+    }
+    for (std::size_t i = 0; i < a.imu.size(); ++i) {
+      EXPECT_EQ(a.imu[i].timeS, b.imu[i].timeS);
+      EXPECT_EQ(a.imu[i].incrementDeg, b.imu[i].incrementDeg);
+      EXPECT_EQ(a.imu[i].lostBefore, b.imu[i].lostBefore);
+    }
+  }
+  EXPECT_EQ(rec->testPoints[0].table.size(), 200u);
+  EXPECT_EQ(rec->health.lostFrames, 1u);
+  EXPECT_EQ(rec->health.lostFrames, whole->health.lostFrames);
+
+  StreamDecoder nothing;
+  nothing.push(std::vector<std::uint8_t>(100, 0x55));
+  auto none = nothing.finish();
+  ASSERT_FALSE(none.isOk());
+  EXPECT_NE(none.status().message().find("in 100 bytes"), std::string::npos) << none.status().toString();
+}
+
 }  // namespace
 }  // namespace fog::protocol
