@@ -43,19 +43,45 @@ void GyroChannel::whitenRows(double* x, std::size_t columns) const {
   }
 }
 
-void estimateGyroNoise(GyroChannel& gyro, const std::vector<double>& r, double blockS) {
-  const std::size_t n = r.size();
-  // Pulse quantisation from the lag-1 autocovariance (g1 = -s2): at the frame
-  // level quantisation dominates, so this is where it is seen best.
+namespace {
+// Pulse quantisation from the lag-1 autocovariance (g1 = -s2): at the frame
+// level quantisation dominates, so this is where it is seen best.
+double quantisationVariance(const GyroChannel& gyro, const std::vector<double>& r) {
   double g1 = 0.0;
   std::size_t n1 = 0;
-  for (std::size_t k = 1; k < n; ++k)
+  for (std::size_t k = 1; k < r.size(); ++k)
     if (gyro.continuesPrevious[k]) {
       g1 += r[k] * r[k - 1];
       ++n1;
     }
   g1 = n1 ? g1 / static_cast<double>(n1) : 0.0;
-  const double s2 = std::max(-g1, 0.0);
+  return std::max(-g1, 0.0);
+}
+}  // namespace
+
+double estimateWhiteRateVariance(const GyroChannel& gyro, const std::vector<double>& r, double blockS) {
+  const std::size_t n = r.size();
+  const double s2 = quantisationVariance(gyro, r);
+  const std::size_t m = std::clamp<std::size_t>(
+      static_cast<std::size_t>(std::llround(blockS / gyro.framePeriodS)), 1, std::max<std::size_t>(n / 8, 1));
+  std::vector<double> prefix(n + 1, 0.0);
+  for (std::size_t k = 0; k < n; ++k) prefix[k + 1] = prefix[k] + r[k];
+  double v = 0.0;
+  std::size_t pairs = 0;
+  for (std::size_t k = 0; k + 2 * m <= n; ++k) {
+    const double d = (prefix[k + m] - prefix[k]) - (prefix[k + 2 * m] - prefix[k + m]);
+    v += d * d;
+    ++pairs;
+  }
+  if (pairs == 0) return 0.0;
+  v /= static_cast<double>(pairs);
+  const double usedBlockS = static_cast<double>(m) * gyro.framePeriodS;
+  return std::max(v - 6.0 * s2, 1e-6 * v) / (2.0 * usedBlockS);
+}
+
+void estimateGyroNoise(GyroChannel& gyro, const std::vector<double>& r, double blockS) {
+  const std::size_t n = r.size();
+  const double s2 = quantisationVariance(gyro, r);
   // Angle random walk from overlapping sums of M increments: their variance
   // is q*M*dt + 2*s2 (quantisation enters only at the two ends). Block sums
   // see the noise at low frequencies, near the swing, where the lag is

@@ -101,6 +101,13 @@ Result<Channels> makeChannels(const TestPointData& data, double incrementScale);
 // increments over blockS seconds.
 void estimateGyroNoise(GyroChannel& gyro, const std::vector<double>& residualDeg, double blockS);
 
+// The white rate noise alone (angle random walk, deg^2/s) from the same
+// residuals: the variance of the difference of two adjacent sums over blockS
+// (the overlapping Allan variance's second difference) is 2 q blockS + 6 s2,
+// and a slowly varying bias (a bias wander over an hour, a trend the fit
+// left) cancels in it, where the sums alone take it for a random walk.
+double estimateWhiteRateVariance(const GyroChannel& gyro, const std::vector<double>& residualDeg, double blockS);
+
 
 // Cumulative gyro angle at each interval end (starting from 0 before the
 // first interval); lost frames' increments are missing.

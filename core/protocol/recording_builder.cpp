@@ -58,20 +58,23 @@ void RecordingBuilder::add(const DecodedFrame& f) {
     return;
   }
   if (const auto* t = std::get_if<TablePayload>(&f.frame.payload)) {
-    RawTable r;
-    r.ticks = ticks;
+    TableSample r;
+    r.timeS = static_cast<double>(ticks);  // converted by finish()
     for (int a = 0; a < kAxisCount; ++a) r.angleDeg[a] = t->angleMicroDeg[a] * 1e-6;
     for (auto* seg : targets)
       if (seg) seg->table.push_back(r);
   } else if (const auto* m = std::get_if<ImuPayload>(&f.frame.payload)) {
-    RawImu r;
-    r.ticks = ticks;
-    r.pulses = m->pulses;
+    ImuSample r;
+    r.timeS = static_cast<double>(ticks);  // converted by finish()
+    for (int a = 0; a < kAxisCount; ++a) r.incrementDeg[a] = m->pulses[a];
     r.temperatureC = m->temperatureCentiC / 100.0;
     r.lostBefore = f.lostBefore;
-    r.pulseEquivalentDeg = pulseEquivalentDeg_;
-    for (auto* seg : targets)
-      if (seg) seg->imu.push_back(r);
+    for (auto* seg : targets) {
+      if (!seg) continue;
+      if (seg->pulseEquivalents.empty() || seg->pulseEquivalents.back().second != pulseEquivalentDeg_)
+        seg->pulseEquivalents.emplace_back(seg->imu.size(), pulseEquivalentDeg_);
+      seg->imu.push_back(r);
+    }
   }
 }
 
@@ -111,21 +114,18 @@ Recording RecordingBuilder::finish(const StreamHealth& health) {
     tp.nominalAmplitudeDeg = seg.nominalAmplitudeDeg;
     tp.kind = seg.kind;
     tp.health = seg.health;
-    tp.table.reserve(seg.table.size());
-    for (const auto& t : seg.table) tp.table.push_back(TableSample{static_cast<double>(t.ticks) * secondsPerTick, t.angleDeg});
-    tp.imu.reserve(seg.imu.size());
-    for (const auto& m : seg.imu) {
+    tp.table = std::move(seg.table);
+    for (auto& t : tp.table) t.timeS *= secondsPerTick;
+    tp.imu = std::move(seg.imu);
+    for (std::size_t c = 0; c < seg.pulseEquivalents.size(); ++c) {
+      const auto [from, known] = seg.pulseEquivalents[c];
+      const std::size_t to = c + 1 < seg.pulseEquivalents.size() ? seg.pulseEquivalents[c + 1].first : tp.imu.size();
       // Raw pulses when the stream never states the pulse equivalent.
-      const double scale = m.pulseEquivalentDeg > 0.0 ? m.pulseEquivalentDeg
-                           : pulseEquivalentDeg_ > 0.0 ? pulseEquivalentDeg_
-                                                       : 1.0;
-      ImuSample s;
-      s.timeS = static_cast<double>(m.ticks) * secondsPerTick;
-      for (int a = 0; a < kAxisCount; ++a) s.incrementDeg[a] = m.pulses[a] * scale;
-      s.temperatureC = m.temperatureC;
-      s.lostBefore = m.lostBefore;
-      tp.imu.push_back(s);
+      const double scale = known > 0.0 ? known : pulseEquivalentDeg_ > 0.0 ? pulseEquivalentDeg_ : 1.0;
+      for (std::size_t k = from; k < to; ++k)
+        for (double& v : tp.imu[k].incrementDeg) v *= scale;
     }
+    for (auto& m : tp.imu) m.timeS *= secondsPerTick;
     rec.testPoints.push_back(std::move(tp));
   }
 

@@ -64,25 +64,21 @@ class RecordingBuilder {
 
  private:
   bool followMarkers_ = true;
-  struct RawTable {
-    std::int64_t ticks = 0;
-    std::array<double, kAxisCount> angleDeg{};
-  };
-  struct RawImu {
-    std::int64_t ticks = 0;
-    std::array<std::int32_t, kAxisCount> pulses{};
-    double temperatureC = 0.0;
-    std::uint32_t lostBefore = 0;
-    double pulseEquivalentDeg = 0.0;  // in force when received; 0 = not yet known
-  };
   struct Segment {
     int testPoint = 0;
     Axis axis = Axis::kX;
     double nominalFrequencyHz = 0.0;
     double nominalAmplitudeDeg = 0.0;
     TestPointKind kind = TestPointKind::kSwing;
-    std::vector<RawTable> table;
-    std::vector<RawImu> imu;
+    // Samples are kept in their final types and converted in place by
+    // finish() (no second copy of an hour's samples): until then timeS
+    // holds counter ticks since the first frame (exact in a double up to
+    // 2^53) and incrementDeg the raw pulse counts.
+    std::vector<TableSample> table;
+    std::vector<ImuSample> imu;
+    // The pulse equivalent in force from imu[index] on, when it was known
+    // (0 before the stream states one); one entry per change.
+    std::vector<std::pair<std::size_t, double>> pulseEquivalents;
     StreamHealth health;  // frames and damage met while collecting
   };
 
