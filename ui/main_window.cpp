@@ -200,6 +200,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   // The operator's choices are remembered as they are made.
   connect(planEditor_, &PlanEditor::planChanged, this, &MainWindow::rememberState);
   connect(configureView_, &ConfigureView::paceChanged, this, &MainWindow::rememberState);
+  // A driven table needs a pace (not "as fast as possible").
+  connect(configureView_, &ConfigureView::paceChanged, this, &MainWindow::updateRunButton);
   connect(configureView_, &ConfigureView::identityChanged, this, &MainWindow::rememberState);
   connect(configureView_, &ConfigureView::sourceChanged, this, [this] { setRunning(runner_.isRunning()); });
   connect(configureView_, &ConfigureView::runnabilityChanged, this, &MainWindow::updateRunButton);
