@@ -2,6 +2,7 @@
 // the main window; everything else lives in ui/ and core/.
 //
 //   fogbench [--preset NAME] [--seed N] [--speed X] [--replay SESSION.fbs]
+//            [--plan PLAN.json] [--port DEV [--table remote:ADDRESS|manual]]
 //            [--session-folder DIR] [--open SESSION.fbs] [--run]
 //            [--view configure|live|results|sessions|diagnosis|noise]
 //            [--screenshot FILE [--screenshot-after S]] [--language system|en|zh_CN]
@@ -13,6 +14,12 @@
 // (the diagnosis view S seconds into the diagnosis when --screenshot-after
 // is given: its progress).
 // Exit code 1 when the run gave no result or the image could not be written.
+//
+// --port DEV records a serial sampling board; with --table the bench drives
+// the turntable through the plan (docs/table-control.md): remote:tcp:HOST:PORT
+// or remote:DEVICE for a controller speaking the remote protocol, manual for
+// one the operator sets. --speed then paces the table (> 1 only for
+// fogbench-table-emu at the same --speed).
 //
 // --help and --version print and exit 0 without a display: they are answered
 // by a QCoreApplication before any GUI is created.
@@ -67,6 +74,11 @@ struct Options {
   QCommandLineOption screenshotOption{"screenshot", "Save an image of the window to FILE and quit.", "FILE"};
   QCommandLineOption afterOption{"screenshot-after", "Live view: seconds into the run (default 3).", "S"};
   QCommandLineOption languageOption{"language", "GUI language for this run: system, en or zh_CN.", "CODE"};
+  QCommandLineOption planOption{"plan", "Load this test plan (JSON, as fogbench-cli run --plan).", "FILE"};
+  QCommandLineOption portOption{"port", "Record the sampling board on this serial port.", "DEV"};
+  QCommandLineOption tableOption{"table",
+                                 "With --port: drive the turntable, remote:tcp:HOST:PORT, remote:DEVICE or manual.",
+                                 "DRIVER"};
 
   explicit Options(QCommandLineParser& parser) {
     for (const auto& p : fog::ui::benchPresets()) presetNames << p.name;
@@ -77,7 +89,8 @@ struct Options {
     parser.addHelpOption();
     parser.addVersionOption();
     parser.addOptions({runOption, presetOption, seedOption, speedOption, replayOption, folderOption, openOption,
-                       viewOption, screenshotOption, afterOption, languageOption});
+                       viewOption, screenshotOption, afterOption, languageOption, planOption, portOption,
+                       tableOption});
   }
 };
 
@@ -114,7 +127,8 @@ int main(int argc, char* argv[]) {
   const Options o(parser);
   parser.process(app);
   const auto& [presetNames, views, runOption, presetOption, seedOption, speedOption, replayOption, folderOption,
-               openOption, viewOption, screenshotOption, afterOption, languageOption] = o;
+               openOption, viewOption, screenshotOption, afterOption, languageOption, planOption, portOption,
+               tableOption] = o;
 
   fog::ui::MainWindow window;
   // What the command line chooses is for this start only.
@@ -128,6 +142,25 @@ int main(int argc, char* argv[]) {
   if (!ok || speed < 0) return fail("--speed needs a number >= 0 (1 = real time, 0 = as fast as possible)");
   if (parser.isSet(speedOption) || parser.isSet(seedOption)) window.useSimulator(speed, seed);
   if (parser.isSet(replayOption)) window.useReplay(parser.value(replayOption), speed);
+  if (parser.isSet(planOption))
+    if (auto s = window.loadPlanFile(parser.value(planOption)); !s.isOk()) return fail(QString::fromStdString(s.message()));
+  if (parser.isSet(tableOption) && !parser.isSet(portOption))
+    return fail("--table records a real sampling board: give --port DEV (the board's port)");
+  if (parser.isSet(portOption)) {
+    using Driver = fog::ui::ConfigureView::TableDriver;
+    Driver driver = Driver::kNone;
+    QString address;
+    const QString table = parser.value(tableOption);
+    if (table == "manual") driver = Driver::kManual;
+    else if (table.startsWith("remote:") && table.size() > 7) {
+      driver = Driver::kRemote;
+      address = table.mid(7);
+    } else if (!table.isEmpty()) {
+      return fail("--table must be manual or remote:ADDRESS (tcp:HOST:PORT or a serial device)");
+    }
+    window.useSerialBoard(parser.value(portOption), driver, address);
+    if (parser.isSet(speedOption)) window.configureView()->setPace(speed);
+  }
   if (parser.isSet(folderOption)) window.setSessionFolder(parser.value(folderOption));
   const QString view = parser.value(viewOption);
   if (!view.isEmpty() && !views.contains(view)) return fail("--view must be one of " + views.join(", "));

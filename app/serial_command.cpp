@@ -8,7 +8,7 @@
 
 #include "acquisition/acquisition.h"
 #include "analysis/report_writer.h"
-#include "board_commands.h"
+#include "acquisition/board_commander.h"
 #include "cli_common.h"
 #include "common/text.h"
 #include "common/version.h"
@@ -133,7 +133,7 @@ int runSerialCommand(CliArguments& args) {
   // The host-to-board direction (docs/protocol.md): the pulse equivalent the
   // operator gave, and the stream started; it is stopped at the end. The
   // board runs its own plan, so no test-point markers. Never waited for.
-  BoardCommander board(boardCommands ? source->get() : nullptr, [](const std::string& what) {
+  acquisition::BoardCommander board(boardCommands ? source->get() : nullptr, [](const std::string& what) {
     std::cerr << "fogbench-cli: board command: " << what << "\n";
   });
   if (pulseGiven) board.setPulseEquivalent(constants->pulseEquivalentDeg);

@@ -21,7 +21,7 @@
 
 #include "acquisition/acquisition.h"
 #include "analysis/report_writer.h"
-#include "board_commands.h"
+#include "acquisition/board_commander.h"
 #include "cli_common.h"
 #include "common/text.h"
 #include "common/version.h"
@@ -72,7 +72,7 @@ class TableLog {
 // stream describe itself for a board that echoes them.
 class MarkingRecorder : public table::PointRecorder {
  public:
-  MarkingRecorder(table::StreamPointRecorder& inner, BoardCommander& board) : inner_(inner), board_(board) {}
+  MarkingRecorder(table::StreamPointRecorder& inner, acquisition::BoardCommander& board) : inner_(inner), board_(board) {}
   Status begin(int index, const TestPoint& point) override {
     index_ = index;
     point_ = point;
@@ -98,7 +98,7 @@ class MarkingRecorder : public table::PointRecorder {
 
  private:
   table::StreamPointRecorder& inner_;
-  BoardCommander& board_;
+  acquisition::BoardCommander& board_;
   int index_ = -1;
   TestPoint point_;
   std::size_t windowsAtBegin_ = 0;
@@ -191,7 +191,7 @@ int runTableCommand(CliArguments& args, const std::string& tableSpec) {
 
   table::StreamPointRecorder recorder;
   // The host-to-board direction (docs/protocol.md): optional, never waited for.
-  BoardCommander board(boardCommands ? source->get() : nullptr,
+  acquisition::BoardCommander board(boardCommands ? source->get() : nullptr,
                        [&log](const std::string& what) { log.add("board", what); });
   MarkingRecorder markingRecorder(recorder, board);
   std::atomic<bool> runnerDone{false};

@@ -4,6 +4,7 @@
 #include <QtConcurrent/QtConcurrentRun>
 
 #include "session/session_file.h"
+#include "ui/table_drive.h"
 
 namespace fog::ui {
 
@@ -28,14 +29,39 @@ bool AcquisitionRunner::start(RunRequest request) {
   }
   future_ = QtConcurrent::run([this, request = std::move(request)]() mutable {
     Result<acquisition::AcquisitionResult> result = Status(StatusCode::kInternal, "no source");
-    if (!request.source) {
+    const auto table = request.table;
+    // The table first: nothing is recorded for a table that cannot run the plan.
+    bool refused = false;
+    if (table)
+      if (auto s = table->connect(); !s.isOk()) {
+        result = s;
+        refused = true;
+      }
+    if (!refused && !request.source) {
       auto opened = request.openSource();
       if (opened) request.source = std::shared_ptr<acquisition::ByteSource>(std::move(*opened));
       else result = opened.status();
     }
-    if (request.source)
+    if (!refused && request.source) {
+      if (table) {
+        table->configure(request.options);
+        table->start(request.source.get(), &stop_);
+      }
       result = acquisition::acquire(*request.source, request.options, &stop_,
-                                    [this](acquisition::AcquisitionBatch&& b) { push(std::move(b)); });
+                                    [this, &table](acquisition::AcquisitionBatch&& b) {
+                                      if (table) table->observe(b);
+                                      push(std::move(b));
+                                    });
+      if (table) {
+        // The recording is over: a runner still going brings the table to
+        // rest now; the run finishes only once it has.
+        table->finish(result ? (result->incompleteReason.empty() ? std::string("the recording ended")
+                                                                 : result->incompleteReason)
+                             : result.status().message());
+        request.source->flushToDevice(std::chrono::milliseconds(200));
+        if (result && !result->sessionPath.empty()) (void)session::appendTableLog(result->sessionPath, table->drainLog());
+      }
+    }
     // A serial port is closed in the thread that read it.
     request.source.reset();
     std::shared_ptr<RunOutcome> outcome;

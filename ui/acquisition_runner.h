@@ -34,6 +34,8 @@
 
 namespace fog::ui {
 
+class TableDrive;
+
 struct RunRequest {
   std::shared_ptr<acquisition::ByteSource> source;
   // Instead of `source`: opens the source in the worker thread, for sources
@@ -41,6 +43,11 @@ struct RunRequest {
   std::function<Result<std::unique_ptr<acquisition::ByteSource>>()> openSource;
   acquisition::AcquisitionOptions options;
   std::vector<model::TestPointTruth> truth;  // when the simulator is the source
+  // A table-driven run (docs/table-control.md): the worker connects it and
+  // checks the plan before it opens the source (a refused plan records
+  // nothing), drives the table while it records, and brings the table to
+  // rest before the run finishes (Stop, the window closing, any fault).
+  std::shared_ptr<TableDrive> table;
 };
 
 class AcquisitionRunner : public QObject {

@@ -100,6 +100,24 @@ ConfigureView::ConfigureView(QWidget* parent) : QWidget(parent) {
   serialRow->addWidget(rescan);
   sourceForm->addRow(tr("Serial port"), serialRow);
   sourceForm->addRow(tr("Baud rate"), baudCombo_);
+  // Who swings the table while a serial board records (docs/table-control.md).
+  auto* tableRow = new QHBoxLayout();
+  tableCombo_ = new QComboBox();
+  tableCombo_->setObjectName("tableDriverCombo");
+  tableCombo_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+  tableCombo_->setMinimumContentsLength(10);
+  tableCombo_->addItem(tr("Not driven (the board's own plan)"), static_cast<int>(TableDriver::kNone));
+  tableCombo_->addItem(tr("Remote controller"), static_cast<int>(TableDriver::kRemote));
+  tableCombo_->addItem(tr("Manual (the operator sets it)"), static_cast<int>(TableDriver::kManual));
+  tableCombo_->setToolTip(tr("Remote: the bench commands the turntable controller through the plan; manual: the "
+                             "bench tells you what to set and records once the table angle shows it"));
+  tableAddressEdit_ = new QLineEdit();
+  tableAddressEdit_->setObjectName("tableAddressEdit");
+  tableAddressEdit_->setPlaceholderText(tr("tcp:HOST:PORT or device"));
+  tableAddressEdit_->setToolTip(tr("The turntable controller: tcp:HOST:PORT (numeric address) or its serial device"));
+  tableRow->addWidget(tableCombo_, 1);
+  tableRow->addWidget(tableAddressEdit_, 1);
+  sourceForm->addRow(tr("Turntable"), tableRow);
   auto listPorts = [this] {
     const QString current = portCombo_->currentText();
     portCombo_->clear();
@@ -165,6 +183,9 @@ ConfigureView::ConfigureView(QWidget* parent) : QWidget(parent) {
   connect(speedCombo_, qOverload<int>(&QComboBox::currentIndexChanged), this, &ConfigureView::paceChanged);
   connect(replayEdit_, &QLineEdit::textChanged, this, &ConfigureView::runnabilityChanged);
   connect(portCombo_, &QComboBox::currentTextChanged, this, &ConfigureView::runnabilityChanged);
+  connect(tableCombo_, qOverload<int>(&QComboBox::currentIndexChanged), this, &ConfigureView::sourceChanged);
+  connect(tableCombo_, qOverload<int>(&QComboBox::currentIndexChanged), this, &ConfigureView::runnabilityChanged);
+  connect(tableAddressEdit_, &QLineEdit::textChanged, this, &ConfigureView::runnabilityChanged);
   for (QLineEdit* e : {operatorEdit_, imuModelEdit_, imuSerialEdit_})
     connect(e, &QLineEdit::textChanged, this, &ConfigureView::identityChanged);
   connect(browse, &QPushButton::clicked, this, [this] {
@@ -213,11 +234,24 @@ QString ConfigureView::serialPort() const {
   return portCombo_->currentText().trimmed();
 }
 
+void ConfigureView::setSerialPort(const QString& port) { portCombo_->setCurrentText(port); }
+
 bool ConfigureView::baudRate(int* baud) const {
   bool ok = false;
   *baud = baudCombo_->currentText().toInt(&ok);
   return ok;
 }
+
+ConfigureView::TableDriver ConfigureView::tableDriver() const {
+  return static_cast<TableDriver>(tableCombo_->currentData().toInt());
+}
+
+void ConfigureView::setTableDriver(TableDriver driver, const QString& address) {
+  tableCombo_->setCurrentIndex(tableCombo_->findData(static_cast<int>(driver)));
+  if (!address.isNull()) tableAddressEdit_->setText(address);
+}
+
+QString ConfigureView::tableAddress() const { return tableAddressEdit_->text().trimmed(); }
 
 QString ConfigureView::sessionFolder() const { return recordCheck_->isChecked() ? folderEdit_->text() : QString(); }
 
@@ -255,7 +289,8 @@ void ConfigureView::setMessage(const QString& html) { message_->setText(html); }
 void ConfigureView::setRunning(bool running) {
   planEditor_->setReadOnly(running);
   for (QWidget* w : std::initializer_list<QWidget*>{sourceCombo_, speedCombo_, seedSpin_, replayEdit_, recordCheck_,
-                                                    folderEdit_, portCombo_, baudCombo_})
+                                                    folderEdit_, portCombo_, baudCombo_, tableCombo_,
+                                                    tableAddressEdit_})
     w->setEnabled(!running);
   if (!running) {
     seedSpin_->setEnabled(sourceKind() == SourceKind::kSimulator);
@@ -263,7 +298,11 @@ void ConfigureView::setRunning(bool running) {
     const bool serial = sourceKind() == SourceKind::kSerial;
     portCombo_->setEnabled(serial);
     baudCombo_->setEnabled(serial);
-    speedCombo_->setEnabled(!serial);
+    tableCombo_->setEnabled(serial);
+    tableAddressEdit_->setEnabled(serial && tableDriver() == TableDriver::kRemote);
+    // A board runs at its own pace; a driven table at the pace chosen (real
+    // time, or faster for an emulator).
+    speedCombo_->setEnabled(!serial || tableDriver() != TableDriver::kNone);
     folderEdit_->setEnabled(recordCheck_->isChecked());
   }
 }

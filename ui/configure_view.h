@@ -1,7 +1,8 @@
 #pragma once
 // The Configure view: the test plan beside the source (simulator, replay of
-// a session, serial sampling board; pace and seed), the session's identity
-// and where it is recorded, the bench constants and why a run cannot start.
+// a session, serial sampling board with the turntable driven or not; pace
+// and seed), the session's identity and where it is recorded, the bench
+// constants and why a run cannot start.
 // It holds the operator's choices and tells when they change; the window
 // that owns it turns them into a run (MainWindow::buildRunRequest) and
 // remembers them.
@@ -46,8 +47,17 @@ class ConfigureView : public QWidget {
   void setReplayPath(const QString& path);
   // A listed port's device, or the text typed (e.g. a pseudo-terminal).
   QString serialPort() const;
+  void setSerialPort(const QString& port);
   // The baud rate typed or chosen; false when it is not a whole number.
   bool baudRate(int* baud) const;
+  // Who swings the table while a serial board records: nobody the bench
+  // commands (the board runs its own plan), a remote controller at
+  // tableAddress() (tcp:HOST:PORT or a serial device), or the operator.
+  enum class TableDriver { kNone = 0, kRemote, kManual };
+  TableDriver tableDriver() const;
+  // A null `address` leaves the address as it is.
+  void setTableDriver(TableDriver driver, const QString& address = QString());
+  QString tableAddress() const;
 
   // The folder sessions are recorded into; empty when recording is off.
   QString sessionFolder() const;
@@ -88,6 +98,8 @@ class ConfigureView : public QWidget {
   QLineEdit* replayEdit_ = nullptr;
   QComboBox* portCombo_ = nullptr;
   QComboBox* baudCombo_ = nullptr;
+  QComboBox* tableCombo_ = nullptr;
+  QLineEdit* tableAddressEdit_ = nullptr;
   QCheckBox* recordCheck_ = nullptr;
   QLineEdit* folderEdit_ = nullptr;
   QLineEdit* operatorEdit_ = nullptr;

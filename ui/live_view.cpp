@@ -140,6 +140,14 @@ LiveView::LiveView(QWidget* parent) : QWidget(parent) {
   tableGrid->addWidget(tableCommandedLabel_, 1, 1, 1, 2);
   tableGrid->addWidget(new QLabel(tr("Measured")), 1, 3);
   tableGrid->addWidget(tableMeasuredLabel_, 1, 4, 1, 2);
+  // A driven table: the runner's last step, or what the operator must set.
+  tableStepLabel_ = makeValue("tableStepLabel");
+  tableStepLabel_->setWordWrap(true);
+  tableStepTitle_ = new QLabel(tr("Step"));
+  tableGrid->addWidget(tableStepTitle_, 2, 0);
+  tableGrid->addWidget(tableStepLabel_, 2, 1, 1, 5);
+  tableStepTitle_->setVisible(false);
+  tableStepLabel_->setVisible(false);
   tableGrid->setColumnStretch(1, 1);
   tableGrid->setColumnStretch(5, 1);
   tableBox_->setVisible(false);
@@ -238,6 +246,44 @@ void LiveView::setTableDriver(const QString& driver) {
 
 QString LiveView::tableMode() const { return tableModeLabel_->text(); }
 
+void LiveView::setTableSnapshot(const std::optional<TableSnapshot>& snapshot) {
+  snapshot_ = snapshot;
+  const bool driven = snapshot_.has_value();
+  tableStepTitle_->setVisible(driven);
+  tableStepLabel_->setVisible(driven);
+  if (!driven) {
+    tableFaultsLabel_->setStyleSheet(QString());
+    tableModeLabel_->setStyleSheet(QString());
+    return;
+  }
+  // Where the runner is places the plots (the board may send no markers).
+  const int i = snapshot_->point;
+  if (running_ && i >= 0 && i < static_cast<int>(plan_.points.size())) {
+    const TestPoint& p = plan_.points[static_cast<std::size_t>(i)];
+    if (i != traces_.testPoint() || p.axis != traces_.axis() || snapshot_->phase != traces_.phase()) {
+      traces_.follow(i, p.axis, p.isStatic() ? 0.0 : p.frequencyHz, snapshot_->phase);
+      dirty_ = true;
+    }
+  }
+  updateTableStatus();
+}
+
+namespace {
+
+QString axisModeText(table::AxisMode mode) {
+  switch (mode) {
+    case table::AxisMode::kRest: return LiveView::tr("at rest");
+    case table::AxisMode::kPositioning: return LiveView::tr("positioning");
+    case table::AxisMode::kSwinging: return LiveView::tr("swinging");
+    case table::AxisMode::kStopping: return LiveView::tr("stopping");
+    case table::AxisMode::kEmergencyStop: return LiveView::tr("emergency stop");
+    case table::AxisMode::kUnknown: break;
+  }
+  return LiveView::tr("unknown");
+}
+
+}  // namespace
+
 void LiveView::updateTableStatus() {
   if (tableDriver_.isEmpty()) return;
   tableDriverLabel_->setText(tableDriver_);
@@ -247,7 +293,9 @@ void LiveView::updateTableStatus() {
   const bool moving = running_ && known && !plan_.points[static_cast<std::size_t>(i)].isStatic() &&
                       (phase == protocol::TestPhase::kSettling || phase == protocol::TestPhase::kRecording);
   const QString axis = QString(axisName(traces_.axis())).toUpper();
-  if (!running_)
+  if (snapshot_) {
+    showDrivenMode();
+  } else if (!running_)
     tableModeLabel_->setText(tr("at rest (run over)"));
   else if (moving)
     tableModeLabel_->setText(tr("swinging %1").arg(axis));
@@ -294,7 +342,59 @@ void LiveView::updateTableStatus() {
                                    : tr("%1 %2 Hz, %3°")
                                          .arg(axis, localNumber(measuredFrequencyHz_, 'f', 4),
                                               localNumber(measuredAmplitudeDeg_, 'f', 3)));
-  tableFaultsLabel_->setText(tr("none reported"));
+  if (!snapshot_) tableFaultsLabel_->setText(tr("none reported"));
+}
+
+void LiveView::showDrivenMode() {
+  const TableSnapshot& s = *snapshot_;
+  const auto& st = s.state;
+  // Mode: what the controller reports, per moving axis; an operator-set
+  // table by what the stream shows.
+  QString mode;
+  if (s.finished) {
+    mode = s.atRest ? tr("at rest (run over)") : tr("NOT seen at rest: check the table");
+  } else if (!s.connected) {
+    mode = tr("connecting");
+  } else if (!st.known) {
+    switch (s.phase) {
+      case protocol::TestPhase::kSettling: mode = tr("set by the operator; checking the swing"); break;
+      case protocol::TestPhase::kRecording: mode = tr("set by the operator; swing verified"); break;
+      case protocol::TestPhase::kDone: mode = tr("at rest (plan done)"); break;
+      case protocol::TestPhase::kIdle: mode = tr("set by the operator"); break;
+    }
+  } else if (s.stateRead) {
+    QStringList moving;
+    for (int a = 0; a < kAxisCount; ++a) {
+      const auto& ax = st.axes[static_cast<std::size_t>(a)];
+      if (ax.mode != table::AxisMode::kRest)
+        moving << tr("%1 %2 (%3°, %4 °/s)")
+                      .arg(axisModeText(ax.mode), QString(axisName(static_cast<Axis>(a))).toUpper(),
+                           localNumber(ax.positionDeg, 'f', 2), localNumber(ax.rateDegPerS, 'f', 1));
+    }
+    mode = moving.isEmpty() ? tr("at rest") : moving.join(QStringLiteral("; "));
+  }
+  tableModeLabel_->setText(mode);
+  // Faults and interlocks, as the controller reports them.
+  QStringList faults;
+  if (st.interlockOpen) faults << tr("interlock open");
+  if (st.emergencyStopped) faults << tr("emergency stop engaged");
+  if (st.heartbeatLost) faults << tr("heartbeat lost (the controller stopped the table)");
+  for (const auto& f : st.faults) faults << QString::fromStdString(f);
+  if (!s.failure.empty()) faults << tr("run stopped: %1").arg(QString::fromStdString(s.failure));
+  tableFaultsLabel_->setText(faults.isEmpty() ? (st.known ? tr("none reported") : tr("not readable (manual)"))
+                                              : faults.join(QStringLiteral("; ")));
+  tableFaultsLabel_->setStyleSheet(faults.isEmpty() && (s.atRest || !s.finished) ? QString()
+                                                                                 : QStringLiteral("color:#b00000"));
+  tableModeLabel_->setStyleSheet(s.finished && !s.atRest ? QStringLiteral("color:#b00000; font-weight:bold")
+                                                         : QString());
+  // The operator's instruction matters most while a manual table runs.
+  if (!s.instruction.empty() && !st.known) {
+    tableStepTitle_->setText(tr("Operator"));
+    tableStepLabel_->setText(QStringLiteral("<b>%1</b>").arg(QString::fromStdString(s.instruction).toHtmlEscaped()));
+  } else {
+    tableStepTitle_->setText(tr("Step"));
+    tableStepLabel_->setText(QString::fromStdString(s.step).toHtmlEscaped());
+  }
 }
 
 std::size_t LiveView::shownTablePoints() const { return tableCurve_->dataSize(); }

@@ -11,10 +11,12 @@
 
 #include <QElapsedTimer>
 #include <QWidget>
+#include <optional>
 #include <span>
 
 #include "acquisition/live_traces.h"
 #include "common/test_plan.h"
+#include "ui/table_drive.h"
 
 class QGroupBox;
 class QLabel;
@@ -43,6 +45,12 @@ class LiveView : public QWidget {
   // board's own plan, a replay) and the table status is hidden. Call before
   // startRun().
   void setTableDriver(const QString& driver);
+  // A driven table's status (remote, manual; ui/table_drive.h), about 30
+  // times a second while it runs; nullopt for the simulator's table, whose
+  // status comes from the stream alone. The point and phase the runner is
+  // at also place the plots and progress (a board that sends no test-point
+  // markers).
+  void setTableSnapshot(const std::optional<TableSnapshot>& snapshot);
 
   // The table status (issue 17): the driver, the mode, the commanded swing of
   // the current point and the one measured from the table-angle stream
@@ -72,6 +80,7 @@ class LiveView : public QWidget {
   void setFollowing(bool following);
   void updateProgress();
   void updateTableStatus();
+  void showDrivenMode();  // mode, faults and step of a driven table (snapshot_)
 
   acquisition::LiveTraces traces_{120.0};
   TestPlan plan_;
@@ -101,6 +110,9 @@ class LiveView : public QWidget {
   QLabel* tableCommandedLabel_ = nullptr;
   QLabel* tableMeasuredLabel_ = nullptr;
   QLabel* tableFaultsLabel_ = nullptr;
+  QLabel* tableStepLabel_ = nullptr;
+  QLabel* tableStepTitle_ = nullptr;
+  std::optional<TableSnapshot> snapshot_;
 };
 
 }  // namespace fog::ui

@@ -55,6 +55,7 @@
 #include "ui/plan_editor.h"
 #include "ui/result_view.h"
 #include "ui/session_browser.h"
+#include "ui/table_drive.h"
 
 namespace fog::ui {
 
@@ -199,6 +200,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   // The operator's choices are remembered as they are made.
   connect(planEditor_, &PlanEditor::planChanged, this, &MainWindow::rememberState);
   connect(configureView_, &ConfigureView::paceChanged, this, &MainWindow::rememberState);
+  // A driven table needs a pace (not "as fast as possible").
+  connect(configureView_, &ConfigureView::paceChanged, this, &MainWindow::updateRunButton);
   connect(configureView_, &ConfigureView::identityChanged, this, &MainWindow::rememberState);
   connect(configureView_, &ConfigureView::sourceChanged, this, [this] { setRunning(runner_.isRunning()); });
   connect(configureView_, &ConfigureView::runnabilityChanged, this, &MainWindow::updateRunButton);
@@ -451,7 +454,6 @@ void MainWindow::closeEvent(QCloseEvent* event) {
                           tr("A run is under way. Stop it and close fogbench?"), QMessageBox::NoButton, this);
     box->setObjectName("closeConfirmDialog");  // kept when closed, reused
     box->setWindowModality(Qt::NonModal);
-    box->setInformativeText(tr("Stopping keeps everything received so far in the session file, marked incomplete."));
     auto* stop = box->addButton(tr("Stop the run and close"), QMessageBox::AcceptRole);
     stop->setObjectName("stopAndCloseButton");
     auto* keep = box->addButton(tr("Keep running"), QMessageBox::RejectRole);
@@ -462,6 +464,9 @@ void MainWindow::closeEvent(QCloseEvent* event) {
       stopRun();
     });
   }
+  box->setInformativeText(table_ ? tr("Stopping brings the table to rest and keeps everything received so far in "
+                                      "the session file, marked incomplete; fogbench closes once the table is at rest.")
+                                 : tr("Stopping keeps everything received so far in the session file, marked incomplete."));
   box->show();
   box->raise();
 }
@@ -479,6 +484,12 @@ void MainWindow::useReplay(const QString& sessionPath, double speed) {
   useSimulator(speed, configureView_->seed());
   setSourceKind(SourceKind::kReplay);
   configureView_->setReplayPath(sessionPath);
+}
+
+void MainWindow::useSerialBoard(const QString& port, ConfigureView::TableDriver table, const QString& tableAddress) {
+  setSourceKind(SourceKind::kSerial);
+  configureView_->setSerialPort(port);
+  configureView_->setTableDriver(table, tableAddress.isEmpty() ? QString() : tableAddress);
 }
 
 void MainWindow::setSessionFolder(const QString& folder) {
@@ -525,6 +536,12 @@ void MainWindow::updateRunButton() {
     why = tr("choose the session file to replay");
   else if (sourceKind() == SourceKind::kSerial && configureView_->serialPort().isEmpty())
     why = tr("choose the sampling board's serial port");
+  else if (drivesTable() && !planEditor_->isValid()) why = planEditor_->problem();
+  else if (drivesTable() && configureView_->tableDriver() == ConfigureView::TableDriver::kRemote &&
+           configureView_->tableAddress().isEmpty())
+    why = tr("give the turntable controller's address (tcp:HOST:PORT or its serial device)");
+  else if (drivesTable() && !(configureView_->pace() > 0.0))
+    why = tr("a driven table swings in real time: choose a pace (real time for a real table)");
   runButton_->setEnabled(why.isEmpty());
   runAction_->setEnabled(why.isEmpty());
   runButton_->setToolTip(why.isEmpty() ? tr("Start the run") : tr("Cannot run: %1").arg(why));
@@ -557,13 +574,23 @@ Result<RunRequest> MainWindow::buildRunRequest() const {
     const Status validity = settings.validate();
     if (!ok) return invalidArgument(tr("the baud rate must be a whole number").toStdString());
     if (!validity.isOk()) return validity;
-    // The board runs its own plan; the one in the editor is stored as the
-    // plan the operator intended, and drives the progress bars.
+    // Without a driven table the board runs its own plan; the one in the
+    // editor is stored as the plan the operator intended, and drives the
+    // progress bars. With one, the plan is what the table swings
+    // (docs/table-control.md): the run ends when the plan runner does.
     plan = planEditor_->plan();
     request.options.info.source = "serial " + settings.port + " at " + settings.summary();
     request.options.stallWarning = std::chrono::milliseconds(2000);
     request.options.stallLimit = std::chrono::milliseconds(10000);
-    request.options.endWhenBoardDone = true;
+    request.options.endWhenBoardDone = !drivesTable();
+    if (drivesTable()) {
+      TableDriveSettings table;
+      table.manual = configureView_->tableDriver() == ConfigureView::TableDriver::kManual;
+      table.address = configureView_->tableAddress().toStdString();
+      table.speed = speed;
+      request.table = std::make_shared<TableDrive>(table, plan);
+      request.options.info.source += "; table " + request.table->driverName();
+    }
     request.openSource = [settings]() -> Result<std::unique_ptr<acquisition::ByteSource>> {
       auto source = serial::SerialSource::open(settings);
       if (!source) return source.status();
@@ -624,12 +651,23 @@ void MainWindow::startRun() {
   const QString sourceText = QString::fromStdString(request.options.info.source);
   // The table status: the simulator drives its simulated turntable through
   // the plan; a serial board runs its own plan and a replay drives nothing.
-  liveView_->setTableDriver(sourceKind() == SourceKind::kSimulator ? tr("simulator (simulated turntable)") : QString());
-  // A serial board runs at its own (real-time) pace.
-  liveView_->startRun(plan, request.openSource ? 1.0 : speed);
+  // A driven table (remote, manual) shows what its controller reports.
+  table_ = request.table;
+  if (table_)
+    liveView_->setTableDriver(configureView_->tableDriver() == ConfigureView::TableDriver::kManual
+                                  ? tr("manual (the operator sets the controller)")
+                                  : tr("remote controller %1").arg(configureView_->tableAddress()));
+  else
+    liveView_->setTableDriver(sourceKind() == SourceKind::kSimulator ? tr("simulator (simulated turntable)") : QString());
+  liveView_->setTableSnapshot(table_ ? std::optional<TableSnapshot>(table_->snapshot()) : std::nullopt);
+  // A serial board runs at its own (real-time) pace; a driven table at the pace chosen.
+  liveView_->startRun(plan, request.openSource && !table_ ? 1.0 : speed);
   showHealth({}, 0);
   runClock_.start();
-  if (!runner_.start(std::move(request))) return;
+  if (!runner_.start(std::move(request))) {
+    table_.reset();
+    return;
+  }
   stopRequested_ = false;
   setRunning(true);
   liveTimer_.start();
@@ -646,7 +684,8 @@ void MainWindow::stopRun() {
   runner_.stop();
   stopButton_->setEnabled(false);
   stopAction_->setEnabled(false);
-  tell(tr("Stopping: everything received so far is kept …"));
+  tell(table_ ? tr("Stopping: bringing the table to rest; everything received so far is kept …")
+              : tr("Stopping: everything received so far is kept …"));
 }
 
 void MainWindow::setRunning(bool running) {
@@ -659,6 +698,7 @@ void MainWindow::setRunning(bool running) {
 void MainWindow::drainLive() {
   auto batches = runner_.takeBatches();
   for (const auto& b : batches) liveView_->addFrames(b.frames);
+  if (table_) liveView_->setTableSnapshot(table_->snapshot());
   if (!batches.empty()) {
     const auto& last = batches.back();
     showHealth(last.health, runner_.droppedFrames());
@@ -712,12 +752,22 @@ void MainWindow::showOutcome(std::shared_ptr<const RunOutcome> outcome) {
                    : tr("no delay: %1").arg(QString::fromStdString(outcome->report.status().message()));
   if (!outcome->sessionPath.empty())
     message += tr(". Saved as %1").arg(QFileInfo(QString::fromStdString(outcome->sessionPath)).fileName());
+  // A driven table the bench did not see at rest (the controller was
+  // unreachable: its heartbeat is what stops the table) must be looked at.
+  const bool tableNotAtRest = table_ && !table_->snapshot().atRest;
+  if (tableNotAtRest)
+    message += tr(". WARNING: the table was not seen at rest at the end; check it");
+  table_.reset();
   tell(message);
   configureView_->setMessage(message.toHtmlEscaped());
   // A run the operator did not stop that ended early, or gave no delay, is
   // explained whole (the status bar line is cut and soon overwritten).
   // (Not when the operator stopped it: they know.)
-  if (!stopRequested_ && !outcome->complete)
+  if (tableNotAtRest)
+    showMessage(this, MessageKind::kError, tr("Check the turntable"),
+                tr("The table was not seen at rest at the end of the run; check it before you go near it."),
+                message);
+  else if (!stopRequested_ && !outcome->complete)
     showMessage(this, MessageKind::kError, tr("Run incomplete"),
                 tr("The run ended early; everything received is kept and analysed."), message);
   else if (!stopRequested_ && !delay)
@@ -729,11 +779,17 @@ void MainWindow::showOutcome(std::shared_ptr<const RunOutcome> outcome) {
   }
   showView(kResults);
   emit runEnded(delay);
-  if (closeAfterRun_) QTimer::singleShot(0, this, &QWidget::close);
+  // (A table not seen at rest keeps the window open with its warning.)
+  if (closeAfterRun_ && !tableNotAtRest) QTimer::singleShot(0, this, &QWidget::close);
+  closeAfterRun_ = closeAfterRun_ && !tableNotAtRest;
 }
 
 void MainWindow::showFailure(const QString& message) {
   liveTimer_.stop();
+  // A run that failed before it recorded never moved the table (a refused
+  // plan, an unreachable controller or board).
+  table_.reset();
+  liveView_->endRun();
   setRunning(false);
   reportError(tr("Run failed"), tr("Run failed"), message);
   tell(tr("Run failed: %1").arg(message));

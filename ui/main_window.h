@@ -52,6 +52,7 @@ class LiveView;
 class PlanEditor;
 class ResultView;
 class SessionBrowser;
+class TableDrive;
 
 class MainWindow : public QMainWindow {
   Q_OBJECT
@@ -77,6 +78,11 @@ class MainWindow : public QMainWindow {
   // or the replay of a session file.
   void useSimulator(double speed, int seed);
   void useReplay(const QString& sessionPath, double speed);
+  // A sampling board on `port` (a device or a pseudo-terminal); the table
+  // not driven, driven through a remote controller at `tableAddress`, or set
+  // by the operator (docs/table-control.md).
+  void useSerialBoard(const QString& port, ConfigureView::TableDriver table = ConfigureView::TableDriver::kNone,
+                      const QString& tableAddress = QString());
   SourceKind sourceKind() const;
   void setSourceKind(SourceKind kind);
   // Where sessions are recorded; empty: runs are not recorded.
@@ -182,7 +188,16 @@ class MainWindow : public QMainWindow {
   SessionInfo sessionInfo() const;
   void editBenchSettings();
 
+  // Whether the run drives the turntable (a serial board with a remote or
+  // manual table driver chosen).
+  bool drivesTable() const {
+    return sourceKind() == SourceKind::kSerial &&
+           configureView_->tableDriver() != ConfigureView::TableDriver::kNone;
+  }
+
   AcquisitionRunner runner_;
+  // The running run's driven table (null when none): its status for Live.
+  std::shared_ptr<TableDrive> table_;
   // The running diagnosis: its cancel flag (null when none runs) and future.
   std::shared_ptr<std::atomic<bool>> diagnosisCancel_;
   QFuture<void> diagnosisFuture_;

@@ -25,6 +25,13 @@ void LiveTraces::startTestPoint(int index, Axis axis, double frequencyHz) {
   gyro_.clear();
 }
 
+void LiveTraces::follow(int index, Axis axis, double frequencyHz, protocol::TestPhase phase) {
+  if (index >= 0 && (index != testPoint_ || axis != axis_)) startTestPoint(index, axis, frequencyHz);
+  if (phase == protocol::TestPhase::kRecording && phase_ != protocol::TestPhase::kRecording)
+    recordingStartS_ = streamTimeS_;
+  phase_ = phase;
+}
+
 Eigen::Vector4d LiveTraces::basis(double t) const {
   const double x = t - pointStartS_;
   if (!(frequencyHz_ > 0.0)) return {1.0, x, 0.0, 0.0};

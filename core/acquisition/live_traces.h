@@ -34,6 +34,11 @@ class LiveTraces {
 
   void add(std::span<const protocol::DecodedFrame> frames);
   void clear();
+  // Where the run stands as the host knows it (a table-driven run, whose
+  // board need not send test-point markers): the same as a STATUS frame
+  // naming test point `index` (0-based) on `axis` at `frequencyHz` in
+  // `phase`. Markers the board does send agree with it.
+  void follow(int index, Axis axis, double frequencyHz, protocol::TestPhase phase);
 
   struct Point {
     double timeS;

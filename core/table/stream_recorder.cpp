@@ -88,6 +88,9 @@ SwingFit fitSwing(std::span<const TableSample> samples, Axis axis, double freque
   f.amplitudeDeg = std::hypot(whole.a, whole.b);
   f.centreDeg = whole.c;
   f.rmsResidualDeg = std::sqrt(whole.rss / static_cast<double>(whole.n));
+  // A swing still ramping up (or dying away) has halves of different amplitude.
+  const double a1 = std::hypot(first.a, first.b), a2 = std::hypot(second.a, second.b);
+  f.amplitudeDriftDeg = a2 - a1;
   // A frequency error turns into a phase drift between the two halves.
   double dphi = std::atan2(second.b, second.a) - std::atan2(first.b, first.a);
   while (dphi > kPi) dphi -= kTwoPi;
@@ -117,6 +120,9 @@ std::string swingMismatch(const SwingFit& fit, const TestPoint& p, const SwingCh
            num(o.amplitudeTolerance * 100) + " %)";
   if (std::abs(fit.centreDeg - centre) > o.centreToleranceDeg + 0.01 * p.amplitudeDeg)
     return ax + " swings about " + num(fit.centreDeg) + " deg, planned " + num(centre) + " deg";
+  if (std::abs(fit.amplitudeDriftDeg) > o.amplitudeDriftTolerance * p.amplitudeDeg)
+    return ax + " amplitude is still changing (" + num(fit.amplitudeDriftDeg) + " deg between the two halves of the " +
+           "checked stretch; tolerance " + num(o.amplitudeDriftTolerance * 100) + " %)";
   if (fit.rmsResidualDeg > o.steadyTolerance * p.amplitudeDeg)
     return ax + " is not a steady sinusoid yet (residual " + num(100.0 * fit.rmsResidualDeg / p.amplitudeDeg) +
            " % of the amplitude)";

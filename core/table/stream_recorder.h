@@ -14,7 +14,8 @@
 //     position (TestPoint::positionDeg of the swing axis),
 //   frequency within frequencyTolerance (relative; from the phase drift
 //     between the two halves),
-//   steady: RMS residual below steadyTolerance of the amplitude.
+//   steady: RMS residual below steadyTolerance of the amplitude, and the two
+//     halves' amplitudes within amplitudeDriftTolerance of it.
 // A static point checks that the axis stays within restBandDeg for 1 s.
 // Once the check passes, the point's window starts at the start of the
 // checked stretch and ends durationS later.
@@ -42,6 +43,10 @@ struct SwingCheckOptions {
   double centreToleranceDeg = 0.02;
   double frequencyTolerance = 0.005;   // 0.5 %
   double steadyTolerance = 0.02;       // RMS residual / amplitude
+  // Amplitude of the second half minus the first's / planned amplitude: a
+  // swing still ramping up (a manual table the operator just started) is
+  // not yet steady, and a test point cut from its ramp would bias the delay.
+  double amplitudeDriftTolerance = 0.005;
   double restBandDeg = 0.01;
 };
 
@@ -49,6 +54,7 @@ struct SwingCheckOptions {
 struct SwingFit {
   bool ok = false;           // enough samples
   double amplitudeDeg = 0.0, centreDeg = 0.0, frequencyHz = 0.0, rmsResidualDeg = 0.0;
+  double amplitudeDriftDeg = 0.0;  // second half's amplitude minus the first's
   double startS = 0.0, endS = 0.0;
 };
 SwingFit fitSwing(std::span<const TableSample> samples, Axis axis, double frequencyHz);

@@ -294,6 +294,41 @@
         <translation>波特率</translation>
     </message>
     <message>
+        <location line="+7"/>
+        <source>Not driven (the board&apos;s own plan)</source>
+        <translation>不驱动（采集板自己的计划）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Remote controller</source>
+        <translation>远程控制器</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Manual (the operator sets it)</source>
+        <translation>手动（由操作员设置）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Remote: the bench commands the turntable controller through the plan; manual: the bench tells you what to set and records once the table angle shows it</source>
+        <translation>远程：测试台按计划指令转台控制器；手动：测试台告诉您如何设置，并在转台角度显示出该运动后开始记录</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>tcp:HOST:PORT or device</source>
+        <translation>tcp:主机:端口 或设备</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The turntable controller: tcp:HOST:PORT (numeric address) or its serial device</source>
+        <translation>转台控制器：tcp:主机:端口（数字地址）或其串口设备</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Turntable</source>
+        <translation>转台</translation>
+    </message>
+    <message>
         <location line="+13"/>
         <source>Session</source>
         <translation>会话</translation>
@@ -349,7 +384,7 @@
         <translation>编辑测试台常数</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+26"/>
         <source>Session to replay</source>
         <translation>要回放的会话</translation>
     </message>
@@ -369,7 +404,7 @@
         <translation>%1 倍实时</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+56"/>
         <source>table read delay %1 ms · board delay %2 ms
 latitude %3° · pulse equivalent %4°
 counter %5 MHz / %6 bit</source>
@@ -648,7 +683,13 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>实测</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+5"/>
+        <location line="+249"/>
+        <source>Step</source>
+        <translation>步骤</translation>
+    </message>
+    <message>
+        <location line="-239"/>
         <source>Turntable angle</source>
         <translation>转台角度</translation>
     </message>
@@ -684,32 +725,61 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>运行结束</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+38"/>
+        <source>positioning</source>
+        <translation>定位中</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>swinging</source>
+        <translation>摆动中</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>stopping</source>
+        <translation>停止中</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>emergency stop</source>
+        <translation>急停</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>unknown</source>
+        <translation>未知</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <location line="+56"/>
         <source>at rest (run over)</source>
         <translation>静止（运行结束）</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-54"/>
         <source>swinging %1</source>
         <translation>%1 轴摆动中</translation>
     </message>
     <message>
         <location line="+2"/>
+        <location line="+59"/>
         <source>at rest (plan done)</source>
         <translation>静止（计划完成）</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-57"/>
         <source>waiting</source>
         <translation>等待中</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="-30"/>
+        <location line="+30"/>
+        <location line="+69"/>
         <source>at rest</source>
         <translation>静止</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="-64"/>
         <source>%1 at rest at %2°</source>
         <translation>%1 轴静止于 %2°</translation>
     </message>
@@ -731,11 +801,72 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+3"/>
+        <location line="+39"/>
         <source>none reported</source>
         <translation>无</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="-29"/>
+        <source>NOT seen at rest: check the table</source>
+        <translation>未确认静止：请检查转台</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>connecting</source>
+        <translation>连接中</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>set by the operator; checking the swing</source>
+        <translation>由操作员设置；正在检查摆动</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>set by the operator; swing verified</source>
+        <translation>由操作员设置；摆动已确认</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>set by the operator</source>
+        <translation>由操作员设置</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1 %2 (%3°, %4 °/s)</source>
+        <translation>%2 轴%1（%3°，%4 °/s）</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>interlock open</source>
+        <translation>联锁断开</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>emergency stop engaged</source>
+        <translation>急停已触发</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>heartbeat lost (the controller stopped the table)</source>
+        <translation>心跳丢失（控制器已停止转台）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>run stopped: %1</source>
+        <translation>运行已停止：%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not readable (manual)</source>
+        <translation>无法读取（手动）</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Operator</source>
+        <translation>操作员</translation>
+    </message>
+    <message>
+        <location line="+25"/>
         <source>plan unknown</source>
         <translation>计划未知</translation>
     </message>
@@ -783,7 +914,7 @@ Press Diagnose in the Results view to start it again.</source>
 <context>
     <name>fog::ui::MainWindow</name>
     <message>
-        <location filename="../../ui/main_window.cpp" line="+144"/>
+        <location filename="../../ui/main_window.cpp" line="+145"/>
         <source>fogbench %1 — FOG IMU delay bench</source>
         <translation>fogbench %1 —— 光纤陀螺 IMU 延迟测试台</translation>
     </message>
@@ -809,12 +940,12 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+791"/>
+        <location line="+844"/>
         <source>Diagnosis</source>
         <translation>诊断</translation>
     </message>
     <message>
-        <location line="-788"/>
+        <location line="-841"/>
         <source>Noise</source>
         <translation>噪声</translation>
     </message>
@@ -892,12 +1023,12 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+562"/>
+        <location line="+615"/>
         <source>Open session</source>
         <translation>打开会话</translation>
     </message>
     <message>
-        <location line="-561"/>
+        <location line="-614"/>
         <source>fogbench sessions (*.fbs);;All files (*)</source>
         <translation>fogbench 会话 (*.fbs);;所有文件 (*)</translation>
     </message>
@@ -1107,12 +1238,17 @@ Quit: Ctrl+Q</source>
         <translation>运行正在进行。停止运行并关闭 fogbench？</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+13"/>
+        <source>Stopping brings the table to rest and keeps everything received so far in the session file, marked incomplete; fogbench closes once the table is at rest.</source>
+        <translation>停止会使转台静止，并把目前收到的全部数据保存在会话文件中（标记为不完整）；转台静止后 fogbench 关闭。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Stopping keeps everything received so far in the session file, marked incomplete.</source>
         <translation>停止后，已接收的全部数据保留在会话文件中，并标记为未完成。</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-12"/>
         <source>Stop the run and close</source>
         <translation>停止运行并关闭</translation>
     </message>
@@ -1122,7 +1258,7 @@ Quit: Ctrl+Q</source>
         <translation>继续运行</translation>
     </message>
     <message>
-        <location line="+65"/>
+        <location line="+74"/>
         <source>a run is under way</source>
         <translation>正在运行</translation>
     </message>
@@ -1135,6 +1271,16 @@ Quit: Ctrl+Q</source>
         <location line="+2"/>
         <source>choose the sampling board&apos;s serial port</source>
         <translation>请选择采样板的串口</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>give the turntable controller&apos;s address (tcp:HOST:PORT or its serial device)</source>
+        <translation>请给出转台控制器的地址（tcp:主机:端口 或其串口设备）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>a driven table swings in real time: choose a pace (real time for a real table)</source>
+        <translation>受驱动的转台按实时摆动：请选择速度（真实转台选实时）</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -1157,27 +1303,42 @@ Quit: Ctrl+Q</source>
         <translation>波特率必须是整数</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+48"/>
         <source>cannot create the session folder &apos;%1&apos;; choose another one</source>
         <translation>无法创建会话文件夹“%1”；请另选一个</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+35"/>
+        <source>manual (the operator sets the controller)</source>
+        <translation>手动（由操作员设置控制器）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>remote controller %1</source>
+        <translation>远程控制器 %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>simulator (simulated turntable)</source>
         <translation>仿真器（仿真转台）</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+14"/>
         <source>Running: %1 …</source>
         <translation>运行中：%1 …</translation>
     </message>
     <message>
         <location line="+12"/>
+        <source>Stopping: bringing the table to rest; everything received so far is kept …</source>
+        <translation>正在停止：使转台静止；目前收到的全部数据均已保留 …</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Stopping: everything received so far is kept …</source>
         <translation>正在停止：已接收的数据全部保留 …</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+18"/>
         <source>No data from the source for %1 s — check the connection</source>
         <translation>数据源已 %1 s 无数据——请检查连接</translation>
     </message>
@@ -1227,7 +1388,22 @@ Quit: Ctrl+Q</source>
         <translation>。已保存为 %1</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+5"/>
+        <source>. WARNING: the table was not seen at rest at the end; check it</source>
+        <translation>。警告：结束时未确认转台静止，请检查</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Check the turntable</source>
+        <translation>检查转台</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The table was not seen at rest at the end of the run; check it before you go near it.</source>
+        <translation>运行结束时未确认转台静止；靠近之前请先检查。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Run incomplete</source>
         <translation>运行未完成</translation>
     </message>
@@ -1247,7 +1423,7 @@ Quit: Ctrl+Q</source>
         <translation>本次运行未得到延迟结果。</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+20"/>
         <source>Run failed</source>
         <translation>运行失败</translation>
     </message>
@@ -1724,13 +1900,13 @@ File: %1</source>
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../../ui/main_window.cpp" line="-946"/>
+        <location filename="../../ui/main_window.cpp" line="-999"/>
         <location filename="../../ui/plan_editor.cpp" line="-282"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../../ui/live_view.cpp" line="-293"/>
+        <location filename="../../ui/live_view.cpp" line="-393"/>
         <source>%1:%2</source>
         <translation>%1:%2</translation>
     </message>

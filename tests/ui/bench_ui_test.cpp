@@ -24,6 +24,7 @@
 #include <QGroupBox>
 #include <QLabel>
 #include <QProcess>
+#include <QTcpSocket>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSignalSpy>
@@ -165,6 +166,26 @@ class BenchUiTest : public QObject {
       }
     }
     return pty;
+  }
+  // fogbench-table-emu (localhost TCP, its board on a pseudo-terminal) at
+  // `speed`, with `extra` arguments; fills the table's address and the
+  // board's terminal from its first lines (empty when it did not start).
+  static void startTableEmu(QProcess& emu, const QStringList& extra, QString* table, QString* board) {
+    emu.setProgram(FOG_TABLE_EMU);
+    emu.setArguments(QStringList({"--seed", "3", "--exit-after-s", "120"}) + extra);
+    emu.setProcessChannelMode(QProcess::SeparateChannels);
+    emu.start();
+    if (!emu.waitForStarted(10000)) return;
+    QElapsedTimer waited;
+    waited.start();
+    while ((table->isEmpty() || board->isEmpty()) && waited.elapsed() < 10000) {
+      emu.waitForReadyRead(100);
+      while (emu.canReadLine()) {
+        const QString line = QString::fromUtf8(emu.readLine()).trimmed();
+        if (line.startsWith("table: ")) *table = line.mid(7);
+        if (line.startsWith("board: ")) *board = line.mid(7);
+      }
+    }
   }
   static QByteArray sha256(const QString& path) {
     QFile f(path);
@@ -725,6 +746,162 @@ class BenchUiTest : public QObject {
     QTRY_VERIFY_WITH_TIMEOUT(analysed.size() == 2, 60000);
     QCOMPARE(analysed.back().front().toBool(), false);
     QVERIFY(view->summaryText().contains("no static segment"));
+  }
+
+  // Issue 17 in the window: a serial board with the turntable driven
+  // through fogbench-table-emu's remote protocol over TCP. Live shows what
+  // the controller reports (mode, commanded against measured swing, faults)
+  // for the remote table, placed from the runner (the emulator's board sends
+  // no test-point markers of its own); Stop brings the table to rest (the
+  // controller is sent STOP and seen at rest) before the run ends, and the
+  // session keeps the data and the table log.
+  void aRemoteTableIsDrivenFromTheWindowAndStopBringsItToRest() {
+    QProcess emu;
+    QString table, board;
+    startTableEmu(emu, {"--speed", "5"}, &table, &board);
+    QVERIFY2(!table.isEmpty() && !board.isEmpty(), emu.readAllStandardError().constData());
+    QTemporaryDir folder;  // an incomplete session of its own
+    auto w = window();
+    w->setSessionFolder(folder.path());
+    QSignalSpy ended(w.get(), &MainWindow::runEnded);
+    fog::TestPlan plan;
+    plan.restBetweenS = 0.5;
+    fog::TestPoint point;
+    point.axis = fog::Axis::kY;
+    point.frequencyHz = 2.0;
+    point.amplitudeDeg = 1.5;
+    point.durationS = 60.0;
+    point.settleS = 1.0;
+    plan.points = {point};
+    w->planEditor()->setPlan(plan);
+    w->useSerialBoard(board, fog::ui::ConfigureView::TableDriver::kRemote, table);
+    w->configureView()->setPace(5.0);
+    QVERIFY2(button(*w, "runButton")->isEnabled(), qPrintable(button(*w, "runButton")->toolTip()));
+    click(*w, "runButton");
+    auto* live = w->liveView();
+    QVERIFY(live->tableStatusBox()->isVisibleTo(w.get()));
+    QVERIFY(w->findChild<QLabel*>("tableDriverLabel")->text().contains(table));
+    QTRY_VERIFY_WITH_TIMEOUT(std::isfinite(live->measuredAmplitudeDeg()) &&
+                                 live->traces().phase() == fog::protocol::TestPhase::kRecording,
+                             30000);
+    QVERIFY2(live->tableMode().startsWith("swinging Y"), qPrintable(live->tableMode()));
+    QCOMPARE(live->traces().axis(), fog::Axis::kY);
+    QVERIFY2(std::abs(live->measuredAmplitudeDeg() - 1.5) <= 0.02 * 1.5, qPrintable(QString::number(live->measuredAmplitudeDeg())));
+    QVERIFY2(std::abs(live->measuredFrequencyHz() - 2.0) <= 0.005 * 2.0, qPrintable(QString::number(live->measuredFrequencyHz())));
+    QVERIFY(w->findChild<QLabel*>("tableCommandedLabel")->text().startsWith("Y 2 Hz, 1.5°"));
+    QCOMPARE(w->findChild<QLabel*>("tableFaultsLabel")->text(), QString("none reported"));
+    QTRY_VERIFY_WITH_TIMEOUT(live->pointProgress() >= 0.1, 30000);  // a few periods recorded
+    click(*w, "stopButton");
+    QTRY_VERIFY_WITH_TIMEOUT(!ended.isEmpty(), 30000);
+    QCOMPARE(live->tableMode(), QString("at rest (run over)"));
+    const auto* outcome = w->lastOutcome();
+    QVERIFY(outcome);
+    QVERIFY(!outcome->complete);
+    QVERIFY2(outcome->incompleteReason.find("stopped by the operator") != std::string::npos, outcome->incompleteReason.c_str());
+    QVERIFY(QString::fromStdString(outcome->info.source).contains("table remote " + table));
+    auto reader = fog::session::SessionReader::open(outcome->sessionPath);
+    QVERIFY(reader);
+    auto log = (*reader)->tableLog();
+    QVERIFY(log);
+    bool stopSent = false, atRest = false;
+    for (const auto& e : *log) {
+      stopSent = stopSent || (e.kind == "command" && e.text == "STOP");
+      atRest = atRest || (e.kind == "step" && e.text == "table at rest");
+    }
+    QVERIFY(stopSent);
+    QVERIFY(atRest);
+    // What was recorded before Stop is kept and analysed: the delay within
+    // its uncertainty of the truth.
+    QVERIFY(outcome->report);
+    const auto& measured = outcome->report->points.front();
+    QVERIFY2(std::abs(measured.lagMs - 0.4658) <= std::max(5.0 * measured.lagStdMs, 0.002),
+             qPrintable(QString("lag %1 ± %2 ms").arg(measured.lagMs).arg(measured.lagStdMs)));
+    emu.waitForFinished(20000);
+  }
+
+  // A plan beyond the limits the controller reports is refused before
+  // anything moves: no swing, no session file, the reason shown.
+  void aPlanBeyondTheRemoteTablesLimitsIsRefusedBeforeAnyMotion() {
+    QProcess emu;
+    QString table, board;
+    startTableEmu(emu, {"--speed", "5", "--max-amplitude-deg", "2"}, &table, &board);
+    QVERIFY2(!table.isEmpty() && !board.isEmpty(), emu.readAllStandardError().constData());
+    QTemporaryDir folder;
+    auto w = window();
+    w->setSessionFolder(folder.path());
+    QSignalSpy ended(w.get(), &MainWindow::runEnded);
+    QVERIFY(w->planEditor()->loadPreset("quick"));  // 1 Hz / 3 deg on X
+    w->useSerialBoard(board, fog::ui::ConfigureView::TableDriver::kRemote, table);
+    w->configureView()->setPace(5.0);
+    click(*w, "runButton");
+    QTRY_VERIFY_WITH_TIMEOUT(!ended.isEmpty(), 30000);
+    QCOMPARE(ended.front().front().toBool(), false);
+    QVERIFY2(w->lastMessage().contains("amplitude is beyond the table's 2 deg on X; the plan was refused before any motion"),
+             qPrintable(w->lastMessage()));
+    QVERIFY(QDir(folder.path()).entryList({"*.fbs"}).isEmpty());
+    emu.terminate();
+    emu.waitForFinished(10000);
+    QVERIFY(!emu.readAllStandardOutput().contains("swing:"));
+  }
+
+  // The manual driver in the window, with a scripted operator: Live shows
+  // what to set on the controller; the operator sets it (here through the
+  // emulated controller's protocol, as on its front panel); the bench
+  // records once the table-angle stream shows the planned swing; Stop tells
+  // the operator to bring the table to rest.
+  void aManualTableIsSetByTheOperatorAsLiveSaysAndStopTellsThemToStopIt() {
+    QProcess emu;
+    QString table, board;
+    startTableEmu(emu, {"--speed", "5"}, &table, &board);
+    QVERIFY2(table.startsWith("tcp:") && !board.isEmpty(), emu.readAllStandardError().constData());
+    QTemporaryDir folder;
+    auto w = window();
+    w->setSessionFolder(folder.path());
+    QSignalSpy ended(w.get(), &MainWindow::runEnded);
+    fog::TestPlan plan;
+    fog::TestPoint point;
+    point.axis = fog::Axis::kX;
+    point.frequencyHz = 1.0;
+    point.amplitudeDeg = 3.0;
+    point.durationS = 60.0;
+    point.settleS = 1.0;
+    plan.points = {point};
+    w->planEditor()->setPlan(plan);
+    w->useSerialBoard(board, fog::ui::ConfigureView::TableDriver::kManual);
+    w->configureView()->setPace(5.0);
+    click(*w, "runButton");
+    auto* step = w->findChild<QLabel*>("tableStepLabel");
+    QTRY_VERIFY_WITH_TIMEOUT(step->text().contains("swing sinusoidally at 1 Hz, amplitude 3 deg about 0 deg"), 20000);
+    // Not recorded before the table swings.
+    QVERIFY(w->liveView()->traces().phase() != fog::protocol::TestPhase::kRecording);
+    const QStringList hostPort = table.mid(4).split(':');
+    QTcpSocket panel;
+    panel.connectToHost(hostPort.at(0), hostPort.at(1).toUShort());
+    QVERIFY(panel.waitForConnected(5000));
+    panel.write("AXIS:X:SWING 1,3,0\nAXIS:X:START\n");
+    QVERIFY(panel.waitForBytesWritten(5000));
+    auto* live = w->liveView();
+    QTRY_VERIFY_WITH_TIMEOUT(std::isfinite(live->measuredAmplitudeDeg()) &&
+                                 live->traces().phase() == fog::protocol::TestPhase::kRecording,
+                             30000);
+    QVERIFY2(std::abs(live->measuredAmplitudeDeg() - 3.0) <= 0.02 * 3.0, qPrintable(QString::number(live->measuredAmplitudeDeg())));
+    QVERIFY2(live->tableMode().contains("swing verified"), qPrintable(live->tableMode()));
+    // A few periods recorded, then Stop.
+    QTRY_VERIFY_WITH_TIMEOUT(live->pointProgress() >= 0.1, 30000);
+    click(*w, "stopButton");
+    QTRY_VERIFY_WITH_TIMEOUT(!ended.isEmpty(), 30000);
+    QVERIFY2(step->text().contains("stop every axis and let the table come to rest"), qPrintable(step->text()));
+    panel.write("STOP\n");
+    QVERIFY(panel.waitForBytesWritten(5000));
+    panel.disconnectFromHost();
+    const auto* outcome = w->lastOutcome();
+    QVERIFY(outcome && outcome->report);
+    // The delay of what was recorded, within its uncertainty of the truth.
+    const auto& measured = outcome->report->points.front();
+    QVERIFY2(std::abs(measured.lagMs - 0.4658) <= std::max(5.0 * measured.lagStdMs, 0.002),
+             qPrintable(QString("lag %1 ± %2 ms").arg(measured.lagMs).arg(measured.lagStdMs)));
+    emu.terminate();
+    emu.waitForFinished(10000);
   }
 
   // A sampling board on a serial port: the board emulator on a real

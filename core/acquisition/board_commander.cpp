@@ -1,9 +1,9 @@
-#include "board_commands.h"
+#include "acquisition/board_commander.h"
 
 #include <cmath>
 #include <cstdio>
 
-namespace fog::app {
+namespace fog::acquisition {
 
 namespace {
 
@@ -24,7 +24,7 @@ std::uint32_t micro(double v) {
 
 }  // namespace
 
-BoardCommander::BoardCommander(acquisition::ByteSource* source, std::function<void(const std::string&)> log)
+BoardCommander::BoardCommander(ByteSource* source, std::function<void(const std::string&)> log)
     : source_(source), log_(std::move(log)) {}
 
 void BoardCommander::send(const protocol::HostCommand& command, const std::string& what) {
@@ -82,4 +82,4 @@ int BoardCommander::sent() const {
   return sent_;
 }
 
-}  // namespace fog::app
+}  // namespace fog::acquisition

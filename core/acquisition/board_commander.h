@@ -1,8 +1,8 @@
 #pragma once
 // The host side of the host-to-board direction (docs/protocol.md, "Host to
-// board"): fogbench-cli tells a real sampling board the gyro's pulse
-// equivalent, starts and stops its stream and marks the test points of a
-// table-driven run. Optional by design: the commands go out through the
+// board"): the bench (fogbench-cli and the desktop bench) tells a real
+// sampling board the gyro's pulse equivalent, starts and stops its stream and
+// marks the test points of a table-driven run. Optional by design: the commands go out through the
 // source's queue (ByteSource::queueForDevice) and nothing ever waits for an
 // answer, so a board that only streams records exactly as before.
 //
@@ -17,13 +17,13 @@
 #include "common/test_plan.h"
 #include "protocol/host_command.h"
 
-namespace fog::app {
+namespace fog::acquisition {
 
 class BoardCommander {
  public:
   // `source` may be null (commands off); `log` receives one line per command
   // sent ("start streaming", "mark test point 1 (X 1 Hz / 3 deg) recording").
-  BoardCommander(acquisition::ByteSource* source, std::function<void(const std::string&)> log = {});
+  BoardCommander(ByteSource* source, std::function<void(const std::string&)> log = {});
 
   bool enabled() const { return source_ != nullptr; }
   void setPulseEquivalent(double degPerPulse);
@@ -38,11 +38,11 @@ class BoardCommander {
  private:
   void send(const protocol::HostCommand& command, const std::string& what);
 
-  acquisition::ByteSource* source_;
+  ByteSource* source_;
   std::function<void(const std::string&)> log_;
   mutable std::mutex mutex_;
   std::uint16_t sequence_ = 0;
   int sent_ = 0;
 };
 
-}  // namespace fog::app
+}  // namespace fog::acquisition
