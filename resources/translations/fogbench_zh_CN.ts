@@ -396,7 +396,7 @@ counter %5 MHz / %6 bit</source>
 <context>
     <name>fog::ui::DiagnosisView</name>
     <message>
-        <location filename="../../ui/diagnosis_view.cpp" line="+94"/>
+        <location filename="../../ui/diagnosis_view.cpp" line="+95"/>
         <source>Test point</source>
         <translation>测试点</translation>
     </message>
@@ -461,7 +461,12 @@ counter %5 MHz / %6 bit</source>
         <translation>留出数据差异缩减 (%)</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+5"/>
+        <source>″</source>
+        <translation>″</translation>
+    </message>
+    <message>
+        <location line="+61"/>
         <source>Run or open a session, then press Diagnose in the Results view.</source>
         <translation>请运行或打开一个会话，然后在“结果”视图中按“诊断”。</translation>
     </message>
@@ -555,7 +560,7 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>仿真（回放）</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+10"/>
         <source>table, recorded</source>
         <translation>转台，实测</translation>
     </message>
@@ -575,7 +580,7 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>陀螺，仿真</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+34"/>
         <source>P%1 S%2</source>
         <translation>点%1 段%2</translation>
     </message>
@@ -593,7 +598,7 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>采样板时间 (s)</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+63"/>
         <source>No run yet: configure a plan and press Run.</source>
         <translation>尚未运行：请配置测试计划并按“运行”。</translation>
     </message>
@@ -674,7 +679,7 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>计划</translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+42"/>
         <source>Waiting for the first frames …</source>
         <translation>等待首批数据帧 …</translation>
     </message>
@@ -1420,7 +1425,7 @@ File: %1</source>
 <context>
     <name>fog::ui::NoiseView</name>
     <message>
-        <location filename="../../ui/noise_view.cpp" line="+31"/>
+        <location filename="../../ui/noise_view.cpp" line="+32"/>
         <source>Static segment</source>
         <translation>静态段</translation>
     </message>
@@ -1430,7 +1435,7 @@ File: %1</source>
         <translation>陀螺的重叠 Allan 标准差</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+15"/>
         <source>noise term</source>
         <translation>噪声项</translation>
     </message>
@@ -1530,7 +1535,7 @@ File: %1</source>
         <translation>高斯-马尔可夫零偏</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>%1 – %2</source>
         <translation>%1 – %2</translation>
     </message>
@@ -1711,6 +1716,39 @@ File: %1</source>
     </message>
 </context>
 <context>
+    <name>fog::ui::PlotInteraction</name>
+    <message>
+        <location filename="../../ui/plot_interaction.cpp" line="+67"/>
+        <source>wheel: zoom · drag: pan · double-click: whole view</source>
+        <translation>滚轮：缩放 · 拖动：平移 · 双击：全图</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> · click: cursors A/B · right-click: remove them</source>
+        <translation> · 单击：光标 A/B · 右击：移除光标</translation>
+    </message>
+    <message>
+        <location line="+118"/>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>B − A: Δt = %1</source>
+        <translation>B − A：Δt = %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>B − A: Δx = %1</source>
+        <translation>B − A：Δx = %1</translation>
+    </message>
+</context>
+<context>
     <name>QObject</name>
     <message>
         <location filename="../../ui/delta_picker.cpp" line="-18"/>
@@ -1730,7 +1768,7 @@ File: %1</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../../ui/live_view.cpp" line="-293"/>
+        <location filename="../../ui/live_view.cpp" line="-309"/>
         <source>%1:%2</source>
         <translation>%1:%2</translation>
     </message>
@@ -2794,7 +2832,7 @@ File: %1</source>
         <translation>IMU 延迟标定报告：%1 %2</translation>
     </message>
     <message>
-        <location filename="../../ui/result_view.cpp" line="+60"/>
+        <location filename="../../ui/result_view.cpp" line="+62"/>
         <source>%1: %2 axis, %3 Hz / %4°</source>
         <translation>%1：%2 轴，%3 Hz / %4°</translation>
     </message>
@@ -2867,6 +2905,11 @@ File: %1</source>
         <translation>残差（角秒）</translation>
     </message>
     <message>
+        <location line="+0"/>
+        <source>″</source>
+        <translation>″</translation>
+    </message>
+    <message>
         <location line="+10"/>
         <source>fit</source>
         <translation>拟合</translation>
@@ -2922,7 +2965,47 @@ File: %1</source>
         <translation>依据</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+5"/>
+        <source>Zero crossing: the gyro behind the table</source>
+        <translation>过零点：陀螺滞后于转台</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>angle − offset (°)</source>
+        <translation>角度 − 偏置 (°)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>°</source>
+        <translation>°</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>time from the table fit&apos;s zero crossing (ms)</source>
+        <translation>距转台拟合过零点的时间 (ms)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Zero crossing</source>
+        <translation>过零点</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Lag vs frequency</source>
+        <translation>滞后与频率</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Table and gyro angle around a zero crossing with the fitted lag marked: click twice to set cursors A and B and read Δt</source>
+        <translation>过零点附近的转台角与陀螺角，标出拟合滞后：单击两次设置光标 A 和 B，读出 Δt</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The lag of every test point against its swing frequency</source>
+        <translation>各测试点的滞后随摆动频率的变化</translation>
+    </message>
+    <message>
+        <location line="+22"/>
         <source>The delay report appears here after a run.</source>
         <translation>运行结束后，延迟报告显示在这里。</translation>
     </message>
@@ -2941,6 +3024,11 @@ File: %1</source>
         <location line="+1"/>
         <source>Residuals plot…</source>
         <translation>残差曲线…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Zero crossing plot…</source>
+        <translation>过零点图…</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -2990,12 +3078,12 @@ File: %1</source>
         <translation>滞后 (ms)，±1σ</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+16"/>
         <source>No result yet.</source>
         <translation>尚无结果。</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+25"/>
         <source>Result shown: %1</source>
         <translation>显示的结果：%1</translation>
     </message>
@@ -3125,7 +3213,7 @@ File: %1</source>
         <translation>敏感、闭环与脉冲更新</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>&lt;b&gt;lag %1 ± %2 ms&lt;/b&gt;  ·  IMU delay %3 ms  ·  gyro&apos;s own delay %4 ms</source>
         <translation>&lt;b&gt;滞后 %1 ± %2 ms&lt;/b&gt;  ·  IMU 延迟 %3 ms  ·  陀螺自身延迟 %4 ms</translation>
     </message>
@@ -3152,31 +3240,45 @@ File: %1</source>
     <message>
         <location line="+7"/>
         <location line="+8"/>
+        <location line="+53"/>
         <source>table</source>
         <translation>转台</translation>
     </message>
     <message>
-        <location line="-7"/>
+        <location line="-60"/>
+        <location line="+61"/>
         <source>gyro (integrated, trend removed)</source>
         <translation>陀螺（积分，已去除趋势）</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-60"/>
+        <location line="+62"/>
         <source>table fit</source>
         <translation>转台拟合</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-60"/>
+        <location line="+63"/>
         <source>gyro fit</source>
         <translation>陀螺拟合</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-60"/>
         <source>gyro</source>
         <translation>陀螺</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+78"/>
+        <source>table crosses zero</source>
+        <translation>转台过零</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>+ fitted lag %1 ms</source>
+        <translation>+ 拟合滞后 %1 ms</translation>
+    </message>
+    <message>
+        <location line="+34"/>
         <source>%1 axis</source>
         <translation>%1 轴</translation>
     </message>
@@ -3199,7 +3301,7 @@ File: %1</source>
 <context>
     <name>fog::ui::SeriesPlot</name>
     <message>
-        <location filename="../../ui/series_plot.cpp" line="+46"/>
+        <location filename="../../ui/series_plot.cpp" line="+42"/>
         <source>time (s)</source>
         <translation>时间 (s)</translation>
     </message>
