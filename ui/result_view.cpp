@@ -508,13 +508,8 @@ void ResultView::showZeroCrossing(std::size_t i) {
     zeroCrossingPlot_->showAll();
     return;
   }
-  // The table fit, a·sin(ωτ) + b·cos(ωτ) = A·sin(ωτ + φ), rises through zero
-  // where ωτ + φ = 2πk: the crossing nearest the middle of the data.
-  constexpr double kTwoPi = 6.283185307179586;
-  const double phi = std::atan2(tf.b, tf.a);
-  const double mid = 0.5 * (tx.front() + tx.back());
-  const double k = std::round((tf.omegaRadPerS * (mid - tf.referenceS) + phi) / kTwoPi);
-  const double tc = tf.referenceS + (kTwoPi * k - phi) / tf.omegaRadPerS;
+  // The table fit's rising zero crossing nearest the middle of the data.
+  const double tc = risingZeroCrossingS(tf, 0.5 * (tx.front() + tx.back()));
   const double lagMs = p.lagMs;
   // Wide enough for a few gyro samples on either side and the lag many times.
   const double halfMs = std::max(5.0, 8.0 * std::abs(lagMs));

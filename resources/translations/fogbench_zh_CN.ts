@@ -191,6 +191,242 @@
     </message>
 </context>
 <context>
+    <name>fog::ui::CompareView</name>
+    <message>
+        <location filename="../../ui/compare_view.cpp" line="+122"/>
+        <source>session</source>
+        <translation>会话</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>file</source>
+        <translation>文件</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>recorded (UTC)</source>
+        <translation>记录时间 (UTC)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>IMU</source>
+        <translation>IMU</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>operator</source>
+        <translation>操作员</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>result compared</source>
+        <translation>所比较的结果</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>loading …</source>
+        <translation>正在加载 …</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>Compare</source>
+        <translation>比较</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>against</source>
+        <translation>相对于</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Test point</source>
+        <translation>测试点</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <location line="+126"/>
+        <source>test point</source>
+        <translation>测试点</translation>
+    </message>
+    <message>
+        <location line="-120"/>
+        <source>Zero crossing of A and B</source>
+        <translation>A 与 B 的过零点</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>(angle − offset) / amplitude</source>
+        <translation>(角度 − 偏置) / 幅值</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>time from each session&apos;s table-fit zero crossing (ms)</source>
+        <translation>距各会话转台拟合过零点的时间 (ms)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Lag against swing frequency</source>
+        <translation>滞后随摆动频率的变化</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>swing frequency (Hz)</source>
+        <translation>摆动频率 (Hz)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>lag (ms), ±1σ</source>
+        <translation>滞后 (ms)，±1σ</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>IMU delay against the recording date</source>
+        <translation>IMU 延迟随记录日期的变化</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>recorded</source>
+        <translation>记录时间</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>IMU delay (ms), ±1σ</source>
+        <translation>IMU 延迟 (ms)，±1σ</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Zero crossing</source>
+        <translation>过零点</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Lag vs frequency</source>
+        <translation>滞后与频率</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Trend</source>
+        <translation>趋势</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>Loading the sessions …</source>
+        <translation>正在加载会话 …</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>unreadable: %1</source>
+        <translation>无法读取：%1</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>no delay: %1</source>
+        <translation>无延迟：%1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>result %1 of %2; table read %3 ± %4 ms, board %5 ms</source>
+        <translation>结果 %1/%2；转台读数延迟 %3 ± %4 ms，板卡 %5 ms</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>Choose two different sessions.</source>
+        <translation>请选择两个不同的会话。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Session %1 or %2 has no delay result to compare.</source>
+        <translation>会话 %1 或 %2 没有可比较的延迟结果。</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <location line="+1"/>
+        <source>%1: IMU delay (ms)</source>
+        <translation>%1：IMU 延迟 (ms)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 − %2 (ms)</source>
+        <translation>%1 − %2 (ms)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>±σ (ms)</source>
+        <translation>±σ (ms)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>|%1 − %2|/σ</source>
+        <translation>|%1 − %2|/σ</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <location line="+1"/>
+        <source>%1 ± %2</source>
+        <translation>%1 ± %2</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>differs (more than 2σ)</source>
+        <translation>有差异（超过 2σ）</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>consistent (within 2σ)</source>
+        <translation>一致（2σ 以内）</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>only in %1</source>
+        <translation>仅在 %1 中</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 against %2: %3 test point(s) in both, %4 differ by more than 2σ.</source>
+        <translation>%1 相对于 %2：两者共有 %3 个测试点，其中 %4 个差异超过 2σ。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Both used the same table read delay: its uncertainty cancels in the difference, σ combines the two lags&apos; uncertainties.</source>
+        <translation>两者使用相同的转台读数延迟：其不确定度在差值中抵消，σ 由两个滞后的不确定度合成。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The table read delays differ: σ combines the two IMU delays&apos; uncertainties.</source>
+        <translation>转台读数延迟不同：σ 由两个 IMU 延迟的不确定度合成。</translation>
+    </message>
+    <message>
+        <location line="+43"/>
+        <source>%1: table</source>
+        <translation>%1：转台</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1: gyro</source>
+        <translation>%1：陀螺</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1: gyro fit</source>
+        <translation>%1：陀螺拟合</translation>
+    </message>
+    <message>
+        <location line="+74"/>
+        <source>IMU delay against the recording date (IMU not named)</source>
+        <translation>IMU 延迟随记录日期的变化（未填写 IMU）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>IMU delay of %1 against the recording date</source>
+        <translation>%1 的 IMU 延迟随记录日期的变化</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>IMU delay against the recording date (%1 IMUs: %2)</source>
+        <translation>IMU 延迟随记录日期的变化（%1 个 IMU：%2）</translation>
+    </message>
+</context>
+<context>
     <name>fog::ui::ConfigureView</name>
     <message>
         <location filename="../../ui/configure_view.cpp" line="+31"/>
@@ -788,7 +1024,7 @@ Press Diagnose in the Results view to start it again.</source>
 <context>
     <name>fog::ui::MainWindow</name>
     <message>
-        <location filename="../../ui/main_window.cpp" line="+144"/>
+        <location filename="../../ui/main_window.cpp" line="+145"/>
         <source>fogbench %1 — FOG IMU delay bench</source>
         <translation>fogbench %1 —— 光纤陀螺 IMU 延迟测试台</translation>
     </message>
@@ -1321,7 +1557,17 @@ File: %1</source>
         <translation>%1：显示第 %2 个结果（共 %3 个）</translation>
     </message>
     <message>
-        <location line="-5"/>
+        <location line="+186"/>
+        <source>Compare %1</source>
+        <translation>比较 %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>the session could not be read (see the message)</source>
+        <translation>无法读取该会话（见消息）</translation>
+    </message>
+    <message>
+        <location line="-198"/>
         <source>%1 re-analysed</source>
         <translation>%1 已重新分析</translation>
     </message>
@@ -1415,11 +1661,6 @@ File: %1</source>
         <location line="+16"/>
         <source>No noise analysis: %1</source>
         <translation>无噪声分析：%1</translation>
-    </message>
-    <message>
-        <location line="+13"/>
-        <source>Compare %1 and %2</source>
-        <translation>比较 %1 与 %2</translation>
     </message>
 </context>
 <context>
@@ -1762,7 +2003,7 @@ File: %1</source>
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../../ui/main_window.cpp" line="-946"/>
+        <location filename="../../ui/main_window.cpp" line="-933"/>
         <location filename="../../ui/plan_editor.cpp" line="-282"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
@@ -2851,11 +3092,16 @@ File: %1</source>
         <source>fogbench %1</source>
         <translation>fogbench %1</translation>
     </message>
+    <message>
+        <location filename="../../ui/session_compare.cpp" line="+21"/>
+        <source>%1 axis, %2 Hz / %3°</source>
+        <translation>%1 轴，%2 Hz / %3°</translation>
+    </message>
 </context>
 <context>
     <name>fog::ui::ResultView</name>
     <message>
-        <location line="+41"/>
+        <location filename="../../ui/result_view.cpp" line="+41"/>
         <source>Test point</source>
         <translation>测试点</translation>
     </message>
@@ -3240,35 +3486,35 @@ File: %1</source>
     <message>
         <location line="+7"/>
         <location line="+8"/>
-        <location line="+53"/>
+        <location line="+48"/>
         <source>table</source>
         <translation>转台</translation>
     </message>
     <message>
-        <location line="-60"/>
-        <location line="+61"/>
+        <location line="-55"/>
+        <location line="+56"/>
         <source>gyro (integrated, trend removed)</source>
         <translation>陀螺（积分，已去除趋势）</translation>
     </message>
     <message>
-        <location line="-60"/>
-        <location line="+62"/>
+        <location line="-55"/>
+        <location line="+57"/>
         <source>table fit</source>
         <translation>转台拟合</translation>
     </message>
     <message>
-        <location line="-60"/>
-        <location line="+63"/>
+        <location line="-55"/>
+        <location line="+58"/>
         <source>gyro fit</source>
         <translation>陀螺拟合</translation>
     </message>
     <message>
-        <location line="-60"/>
+        <location line="-55"/>
         <source>gyro</source>
         <translation>陀螺</translation>
     </message>
     <message>
-        <location line="+78"/>
+        <location line="+73"/>
         <source>table crosses zero</source>
         <translation>转台过零</translation>
     </message>
@@ -3380,8 +3626,13 @@ File: %1</source>
     </message>
     <message>
         <location line="+1"/>
-        <source>Compare the two selected</source>
-        <translation>比较所选的两个</translation>
+        <source>Compare the selected</source>
+        <translation>比较所选会话</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Two sessions: their delays per test point and the difference with its significance; more sessions of one IMU: the delay against the date as well</source>
+        <translation>两个会话：逐测试点的延迟及其差值和显著性；同一 IMU 的多个会话：另给出延迟随日期的变化</translation>
     </message>
     <message>
         <location line="+2"/>

@@ -47,6 +47,7 @@
 #include "io/csv_export.h"
 #include "session/session_file.h"
 #include "ui/commanded_motion.h"
+#include "ui/compare_view.h"
 #include "ui/configure_view.h"
 #include "ui/curve_decimation.h"
 #include "ui/diagnosis_view.h"
@@ -568,25 +569,31 @@ class BenchUiTest : public QObject {
     QCOMPARE(w->lastOutcome()->shownResultId, newestId);
     QCOMPARE(results->delayTable()->item(3, 1)->text().toDouble(), 0.3);
 
-    // Compare the two sessions of the folder.
-    const QStringList all = [&] {
-      QStringList paths;
-      for (int r = 0; r < browser->table()->rowCount(); ++r)
-        paths << browser->table()->item(r, 0)->data(Qt::UserRole).toString();
-      return paths;
-    }();
-    QVERIFY(all.size() >= 2);
+    // Compare: the complete session and a copy of it (the same data, so
+    // every difference is 0 and consistent).
+    const QString copy = QFileInfo(complete).absolutePath() + "/copy-of-" + QFileInfo(complete).fileName();
+    QFile::remove(copy);
+    QVERIFY(QFile::copy(complete, copy));
+    browser->refresh();
     browser->table()->clearSelection();
     browser->table()->setSelectionMode(QAbstractItemView::MultiSelection);
-    browser->selectPath(all[0]);
-    browser->selectPath(all[1]);
+    QVERIFY(browser->selectPath(complete));
+    QVERIFY(browser->selectPath(copy));
     click(*w, "compareButton");
     QWidget* compare = w->findChild<QWidget*>("compareWindow");
     QVERIFY(compare);
-    QTRY_VERIFY_WITH_TIMEOUT(compare->findChildren<fog::ui::ResultView*>().size() == 2 &&
-                                 compare->findChildren<fog::ui::ResultView*>()[0]->outcome() &&
-                                 compare->findChildren<fog::ui::ResultView*>()[1]->outcome(),
-                             30000);
+    auto* compareView = compare->findChild<fog::ui::CompareView*>();
+    QVERIFY(compareView);
+    QTRY_VERIFY_WITH_TIMEOUT(compareView->allLoaded(), 30000);
+    // Per test point both results and their difference; the overlays drawn.
+    QVERIFY(!compareView->comparisons().empty());
+    QVERIFY(compareView->differenceTable()->rowCount() >= 1);
+    QVERIFY(compareView->zeroCrossingPlot()->curveCount() >= 3);
+    for (const auto& c : compareView->comparisons()) {
+      QVERIFY(c.both());
+      QCOMPARE(c.differenceMs, 0.0);
+      QVERIFY(c.differenceStdMs > 0.0 && !c.significant());
+    }
     // The Compare window fits a laptop too.
     settle();
     const QSize m = minimumOf(compare);
@@ -594,6 +601,7 @@ class BenchUiTest : public QObject {
              qPrintable(QString("compare minimum %1x%2; too large: %3")
                             .arg(m.width()).arg(m.height()).arg(tooLarge(compare, QSize(1024, 700)).join("; "))));
     compare->close();
+    QFile::remove(copy);
   }
 
   // Data from another bench (here: a CSV export of the quick run) is imported
