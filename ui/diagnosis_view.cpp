@@ -29,6 +29,7 @@
 #include <qwt_text.h>
 
 #include "ui/language.h"
+#include "ui/plot_interaction.h"
 
 namespace fog::ui {
 
@@ -139,6 +140,30 @@ DiagnosisView::DiagnosisView(QWidget* parent) : QWidget(parent) {
   spectrumPlot_->insertLegend(new QwtLegend(), QwtPlot::BottomLegend);
   shrinkPlot_ = makePlot(tr("Held-out shrink per candidate effect"), QString(), tr("held-out gap closed (%)"));
   shrinkPlot_->setObjectName("shrinkPlot");
+  // One interaction on every plot; measuring cursors on the residual curves.
+  PlotInteraction::Options curveOptions;
+  curveOptions.cursors = true;
+  curveOptions.yUnit = tr("″");
+  curveInteraction_ = new PlotInteraction(curvePlot_, curveOptions);
+  curveInteraction_->setValuesAt([this](double t) {
+    PlotInteraction::Values values;
+    for (const QwtPlotItem* item : curvePlot_->itemList(QwtPlotItem::Rtti_PlotCurve)) {
+      const auto* curve = static_cast<const QwtPlotCurve*>(item);
+      const int n = static_cast<int>(curve->dataSize());
+      if (n < 2 || t < curve->sample(0).x() || t > curve->sample(n - 1).x()) continue;
+      int hi = 1;
+      while (hi + 1 < n && curve->sample(hi).x() < t) ++hi;
+      const QPointF a = curve->sample(hi - 1), b = curve->sample(hi);
+      const double v = b.x() > a.x() ? a.y() + (b.y() - a.y()) * (t - a.x()) / (b.x() - a.x()) : b.y();
+      values.push_back({curve->title().text(), v});
+    }
+    return values;
+  });
+  PlotInteraction::Options plain;
+  plain.timeAxis = false;
+  gapMapInteraction_ = new PlotInteraction(gapMapPlot_, plain);
+  spectrumInteraction_ = new PlotInteraction(spectrumPlot_, plain);
+  shrinkInteraction_ = new PlotInteraction(shrinkPlot_, plain);
 
   auto* grid = new QGridLayout();
   grid->addWidget(curvePlot_, 0, 0);
@@ -297,6 +322,8 @@ void DiagnosisView::showPoint(int position) {
   curvePlot_->setAxisAutoScale(QwtPlot::xBottom);
   curvePlot_->setAxisAutoScale(QwtPlot::yLeft);
   curvePlot_->replot();
+  curveInteraction_->dataChanged();
+  curveInteraction_->setHome();
 
   // Harmonics 2..5 of both channels, recorded beside simulated.
   auto* bars = new QwtPlotMultiBarChart();
@@ -321,6 +348,7 @@ void DiagnosisView::showPoint(int position) {
   spectrumPlot_->setAxisScale(QwtPlot::xBottom, 1.5, 5.5, 1.0);
   spectrumPlot_->setAxisAutoScale(QwtPlot::yLeft);
   spectrumPlot_->replot();
+  spectrumInteraction_->setHome();
 }
 
 void DiagnosisView::showGapMap() {
@@ -382,6 +410,7 @@ void DiagnosisView::showGapMap() {
   small.setPointSizeF(std::max(5.0, small.pointSizeF() * (nRows > 24 ? 0.6 : 0.85)));
   gapMapPlot_->axisWidget(QwtPlot::yLeft)->setFont(small);
   gapMapPlot_->replot();
+  gapMapInteraction_->setHome();
 }
 
 void DiagnosisView::showShrink() {
@@ -407,6 +436,7 @@ void DiagnosisView::showShrink() {
   const double lowest = shrink.isEmpty() ? 0.0 : *std::min_element(shrink.begin(), shrink.end());
   shrinkPlot_->setAxisScale(QwtPlot::yLeft, std::min(0.0, lowest), 100.0);
   shrinkPlot_->replot();
+  shrinkInteraction_->setHome();
 }
 
 }  // namespace fog::ui

@@ -26,6 +26,8 @@ class QwtPlotSpectrogram;
 
 namespace fog::ui {
 
+class PlotInteraction;
+
 class DiagnosisView : public QWidget {
   Q_OBJECT
 
@@ -59,6 +61,7 @@ class DiagnosisView : public QWidget {
   QwtPlot* gapMapPlot() const { return gapMapPlot_; }
   QwtPlot* spectrumPlot() const { return spectrumPlot_; }
   QwtPlot* shrinkPlot() const { return shrinkPlot_; }
+  PlotInteraction* curveInteraction() const { return curveInteraction_; }
   QString verdictText() const;
   // Rows and columns of the heat map shown now.
   int gapMapRows() const { return static_cast<int>(rowNames_.size()); }
@@ -92,6 +95,10 @@ class DiagnosisView : public QWidget {
   QwtPlot* spectrumPlot_ = nullptr;
   QwtPlot* shrinkPlot_ = nullptr;
   QwtPlotSpectrogram* gapMap_ = nullptr;
+  PlotInteraction* curveInteraction_ = nullptr;
+  PlotInteraction* gapMapInteraction_ = nullptr;
+  PlotInteraction* spectrumInteraction_ = nullptr;
+  PlotInteraction* shrinkInteraction_ = nullptr;
   QPlainTextEdit* text_ = nullptr;
 };
 

@@ -21,14 +21,14 @@
 #include <qwt_plot_canvas.h>
 #include <qwt_plot_curve.h>
 #include <qwt_plot_grid.h>
-#include <qwt_plot_magnifier.h>
-#include <qwt_plot_panner.h>
+#include <qwt_picker_machine.h>
+#include <qwt_plot_picker.h>
 #include <qwt_scale_div.h>
 #include <qwt_scale_widget.h>
 #include <vector>
 
 #include "ui/curve_decimation.h"
-#include "ui/delta_picker.h"
+#include "ui/plot_interaction.h"
 #include "ui/language.h"
 
 namespace fog::ui {
@@ -60,6 +60,7 @@ QwtPlot* LiveView::makePlot(const QString& title, const QString& yTitle, QwtPlot
   plot->setAxisTitle(QwtPlot::xBottom, tr("board time (s)"));
   plot->setAxisTitle(QwtPlot::yLeft, yTitle);
   plot->setCanvasBackground(Qt::white);
+  useCompactTitles(plot);
   auto* grid = new QwtPlotGrid();
   grid->setMajorPen(QPen(QColor(220, 220, 220), 0, Qt::DotLine));
   grid->attach(plot);
@@ -69,16 +70,36 @@ QwtPlot* LiveView::makePlot(const QString& title, const QString& yTitle, QwtPlot
   (*curve)->setPaintAttribute(QwtPlotCurve::ClipPolygons, true);
   (*curve)->attach(plot);
 
-  new DeltaPicker(plot->canvas(), unit);
-  auto* panner = new QwtPlotPanner(plot->canvas());
-  panner->setMouseButton(Qt::RightButton);
-  panner->setOrientations(Qt::Horizontal);
-  // The wheel zooms the time axis only: the value axis keeps autoscaling.
-  auto* magnifier = new QwtPlotMagnifier(plot->canvas());
-  magnifier->setMouseButton(Qt::NoButton);
-  magnifier->setAxisEnabled(QwtPlot::yLeft, false);
-  connect(panner, &QwtPlotPanner::panned, this, [this] { setFollowing(false); });
-  plot->canvas()->installEventFilter(this);  // a wheel zoom stops the scrolling too
+  // The bench's one interaction (ui/plot_interaction.h): wheel zooms the
+  // time axis, drag pans it (both stop the scrolling), click sets cursors A
+  // and B, double-click follows live again. The value axis keeps the common
+  // range.
+  PlotInteraction::Options options;
+  options.cursors = true;
+  options.yUnit = unit;
+  options.zoomY = false;
+  auto* interaction = new PlotInteraction(plot, options);
+  interaction->setHomeFunction([this] { setFollowing(true); });
+  const QwtPlotCurve* shown = *curve;
+  interaction->setValuesAt([shown](double t) {
+    PlotInteraction::Values values;
+    const int n = static_cast<int>(shown->dataSize());
+    if (n < 2 || t < shown->sample(0).x() || t > shown->sample(n - 1).x()) return values;
+    int lo = 0, hi = n - 1;  // the samples are in time order
+    while (hi - lo > 1) {
+      const int m = (lo + hi) / 2;
+      (shown->sample(m).x() < t ? lo : hi) = m;
+    }
+    const QPointF a = shown->sample(lo), b = shown->sample(hi);
+    values.push_back({shown->title().text(),
+                      b.x() > a.x() ? a.y() + (b.y() - a.y()) * (t - a.x()) / (b.x() - a.x()) : b.y()});
+    return values;
+  });
+  connect(interaction, &PlotInteraction::viewChangedByUser, this, [this] { setFollowing(false); });
+  auto* tracker = new QwtPlotPicker(QwtPlot::xBottom, QwtPlot::yLeft, QwtPicker::CrossRubberBand,
+                                    QwtPicker::AlwaysOn, plot->canvas());
+  tracker->setStateMachine(new QwtPickerTrackerMachine());
+  tracker->setRubberBandPen(QPen(QColor(150, 150, 150), 0, Qt::DotLine));
   // Both plots show the same stretch of time.
   connect(plot->axisWidget(QwtPlot::xBottom), &QwtScaleWidget::scaleDivChanged, this, [this, plot] {
     if (following_ || syncingScales_) return;
@@ -188,11 +209,6 @@ LiveView::LiveView(QWidget* parent) : QWidget(parent) {
     refresh();
   });
   setFollowing(true);
-}
-
-bool LiveView::eventFilter(QObject* watched, QEvent* event) {
-  if (event->type() == QEvent::Wheel) setFollowing(false);
-  return QWidget::eventFilter(watched, event);
 }
 
 void LiveView::setFollowing(bool following) {

@@ -5,9 +5,10 @@
 // the whole plan. It paints only what the GUI timer hands it (about 30 times
 // a second); it never talks to the worker.
 //
-// Mouse: wheel zooms the time axis, right-drag pans, left-drag measures the
-// time and value difference between two points. Zooming or panning stops the
-// scrolling; "Follow live" resumes it.
+// Mouse (as on every plot, ui/plot_interaction.h): wheel zooms the time
+// axis, drag pans it, clicks set cursors A and B (Δt and the values read
+// out), right-click removes them. Zooming or panning stops the scrolling;
+// "Follow live" or a double-click resumes it.
 
 #include <QElapsedTimer>
 #include <QWidget>
@@ -70,9 +71,6 @@ class LiveView : public QWidget {
   double pointProgress() const;
   double planProgress() const;
   QString remainingText() const;
-
- protected:
-  bool eventFilter(QObject* watched, QEvent* event) override;
 
  private:
   QwtPlot* makePlot(const QString& title, const QString& yTitle, QwtPlotCurve** curve, const QColor& colour,

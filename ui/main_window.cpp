@@ -46,6 +46,7 @@
 #include "io/imported_session.h"
 #include "session/session_file.h"
 #include "ui/bench_settings_dialog.h"
+#include "ui/compare_view.h"
 #include "ui/serial/serial_source.h"
 #include "ui/diagnosis_view.h"
 #include "ui/language.h"
@@ -1060,38 +1061,21 @@ void MainWindow::analyseNoise(std::shared_ptr<const RunOutcome> outcome) {
       });
 }
 
-void MainWindow::compareSessions(const QString& first, const QString& second) {
+void MainWindow::compareSessions(const QStringList& paths) {
   auto* dialog = new QWidget(this, Qt::Window);
   dialog->setAttribute(Qt::WA_DeleteOnClose);
   dialog->setObjectName("compareWindow");
-  dialog->setWindowTitle(tr("Compare %1 and %2").arg(QFileInfo(first).fileName(), QFileInfo(second).fileName()));
-  auto* split = new QSplitter(Qt::Horizontal, dialog);
+  QStringList names;
+  for (const QString& path : paths) names << QFileInfo(path).fileName();
+  dialog->setWindowTitle(tr("Compare %1").arg(names.join(", ")));
   auto* layout = new QVBoxLayout(dialog);
-  layout->addWidget(split);
-  for (const QString& path : {first, second}) {
-    auto* column = new QWidget();
-    auto* v = new QVBoxLayout(column);
-    v->addWidget(new QLabel(QString("<b>%1</b>").arg(QFileInfo(path).fileName().toHtmlEscaped())));
-    auto* view = new ResultView();
-    v->addWidget(view, 1);
-    split->addWidget(column);
-    QPointer<ResultView> guard(view);
-    auto show = [guard](std::shared_ptr<const RunOutcome> o) {
-      if (guard && o) guard->showOutcome(o);
-    };
-    loadSession(path, false, 0, show);
-    // Another stored result of the session, in its column.
-    connect(view, &ResultView::resultChosen, this, [this, path, guard, show](qint64 id) {
-      if (!guard) return;
-      guard->setChoosing(true);
-      loadSession(path, false, id, [guard, show](std::shared_ptr<const RunOutcome> o) {
-        if (!guard) return;
-        guard->setChoosing(false);
-        if (o) show(o);
-        else guard->showOutcome(guard->sharedOutcome());
-      });
+  auto* view = new CompareView(paths);
+  layout->addWidget(view);
+  QPointer<CompareView> guard(view);
+  for (int i = 0; i < paths.size(); ++i)
+    loadSession(paths[i], false, 0, [guard, i](std::shared_ptr<const RunOutcome> o) {
+      if (guard) guard->setOutcome(i, o, o ? QString() : tr("the session could not be read (see the message)"));
     });
-  }
   // As large as the screen allows, up to 1600 x 900.
   QSize size(1600, 900);
   if (const QScreen* screen = this->screen()) size = size.boundedTo(screen->availableGeometry().size() * 0.95);

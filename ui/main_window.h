@@ -178,7 +178,7 @@ class MainWindow : public QMainWindow {
                    std::function<void(std::shared_ptr<const RunOutcome>)> done);
   // Shows a loaded session's outcome in Results (and its noise analysis).
   void showLoaded(std::shared_ptr<const RunOutcome> outcome);
-  void compareSessions(const QString& first, const QString& second);
+  void compareSessions(const QStringList& paths);
   // The Allan deviation of the outcome's static segments, in the background.
   void analyseNoise(std::shared_ptr<const RunOutcome> outcome);
   void updateRunButton();

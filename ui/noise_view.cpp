@@ -16,6 +16,7 @@
 #include "ui/allan_curves.h"
 #include "ui/language.h"
 #include "ui/messages.h"
+#include "ui/plot_interaction.h"
 
 namespace fog::ui {
 
@@ -46,6 +47,9 @@ NoiseView::NoiseView(QWidget* parent) : QWidget(parent) {
   grid->enableYMin(true);
   grid->setMinorPen(QPen(QColor(235, 235, 235), 0, Qt::DotLine));
   grid->attach(plot_);
+  PlotInteraction::Options options;
+  options.timeAxis = false;
+  interaction_ = new PlotInteraction(plot_, options);
 
   table_ = new QTableWidget(0, 5);
   table_->setObjectName("noiseTermTable");
@@ -127,6 +131,7 @@ void NoiseView::showSegment(int position) {
   plot_->setAxisAutoScale(QwtPlot::xBottom);
   plot_->setAxisAutoScale(QwtPlot::yLeft);
   plot_->replot();
+  interaction_->setHome();
 
   for (const auto& term : r.model.terms) {
     const auto u = noise::termInGyroUnits(term);

@@ -19,6 +19,8 @@ class QwtPlot;
 
 namespace fog::ui {
 
+class PlotInteraction;
+
 class NoiseView : public QWidget {
   Q_OBJECT
 
@@ -39,6 +41,7 @@ class NoiseView : public QWidget {
   QLabel* summary_ = nullptr;
   QComboBox* segmentCombo_ = nullptr;
   QwtPlot* plot_ = nullptr;
+  PlotInteraction* interaction_ = nullptr;
   QTableWidget* table_ = nullptr;
 };
 

@@ -19,6 +19,7 @@
 #include <QPlainTextEdit>
 #include <QPushButton>
 #include <QSplitter>
+#include <QTabWidget>
 #include <QTableWidget>
 #include <QToolButton>
 #include <QVBoxLayout>
@@ -41,6 +42,7 @@
 #include "session/session_file.h"
 #include "ui/language.h"
 #include "ui/plot_export.h"
+#include "ui/plot_interaction.h"
 #include "ui/report/calibration_report.h"
 #include "ui/series_plot.h"
 
@@ -172,7 +174,7 @@ ResultView::ResultView(QWidget* parent) : QWidget(parent) {
 
   anglePlot_ = new SeriesPlot(tr("Normalised angles and fits"), tr("(angle − offset) / amplitude"));
   anglePlot_->setObjectName("anglePlot");
-  residualPlot_ = new SeriesPlot(tr("Residuals (data − fit)"), tr("residual (arcsec)"));
+  residualPlot_ = new SeriesPlot(tr("Residuals (data − fit)"), tr("residual (arcsec)"), tr("″"));
   residualPlot_->setObjectName("residualPlot");
   // Explicit minimum sizes below the plots' own hints: the view fits a
   // laptop screen and the Compare window's two columns fit side by side.
@@ -189,10 +191,22 @@ ResultView::ResultView(QWidget* parent) : QWidget(parent) {
   delayTable_->setObjectName("delayTable");
   for (QTableWidget* t : {fitTable_, delayTable_}) t->setMinimumSize(150, 80);
   buildFrequencyPlot();
+  // The lag itself, measurable: table and gyro around one zero crossing.
+  zeroCrossingPlot_ = new SeriesPlot(tr("Zero crossing: the gyro behind the table"), tr("angle − offset (°)"), tr("°"));
+  zeroCrossingPlot_->setObjectName("zeroCrossingPlot");
+  zeroCrossingPlot_->setTimeAxis(tr("time from the table fit's zero crossing (ms)"), 1e-3);
+  zeroCrossingPlot_->setMinimumSize(200, 170);
+  plotTabs_ = new QTabWidget();
+  plotTabs_->setObjectName("resultPlotTabs");
+  plotTabs_->addTab(zeroCrossingPlot_, tr("Zero crossing"));
+  plotTabs_->addTab(frequencyPlot_, tr("Lag vs frequency"));
+  plotTabs_->setTabToolTip(0, tr("Table and gyro angle around a zero crossing with the fitted lag marked: click twice "
+                                 "to set cursors A and B and read Δt"));
+  plotTabs_->setTabToolTip(1, tr("The lag of every test point against its swing frequency"));
   auto* right = new QSplitter(Qt::Vertical);
   right->addWidget(fitTable_);
   right->addWidget(delayTable_);
-  right->addWidget(frequencyPlot_);
+  right->addWidget(plotTabs_);
   // The tables keep what they need; the plot takes the rest.
   right->setStretchFactor(0, 0);
   right->setStretchFactor(1, 0);
@@ -236,6 +250,7 @@ ResultView::ResultView(QWidget* parent) : QWidget(parent) {
   };
   addPlotExport(tr("Angles plot…"), anglePlot_);
   addPlotExport(tr("Residuals plot…"), residualPlot_);
+  addPlotExport(tr("Zero crossing plot…"), zeroCrossingPlot_);
   addPlotExport(tr("Delay vs frequency plot…"), frequencyPlot_);
   menu->addSeparator();
   menu->addAction(tr("Calibration report (PDF)…"), this, [this] {
@@ -267,6 +282,10 @@ void ResultView::buildFrequencyPlot() {
   frequencyPlot_->setCanvasBackground(Qt::white);
   frequencyPlot_->insertLegend(new QwtLegend(), QwtPlot::BottomLegend);
   frequencyPlot_->setMinimumSize(200, 170);
+  useCompactTitles(frequencyPlot_);
+  PlotInteraction::Options options;
+  options.timeAxis = false;
+  frequencyInteraction_ = new PlotInteraction(frequencyPlot_, options);
 }
 
 void ResultView::clear() {
@@ -283,6 +302,7 @@ void ResultView::clear() {
   anglePlot_->showAll();
   residualPlot_->clearCurves();
   residualPlot_->showAll();
+  showZeroCrossing(static_cast<std::size_t>(-1));
   fitTable_->setRowCount(0);
   delayTable_->setRowCount(0);
   frequencyPlot_->detachItems();
@@ -422,6 +442,7 @@ void ResultView::showTestPoint(int position) {
       position >= static_cast<int>(outcome_->traces.size())) {
     anglePlot_->showAll();
     residualPlot_->showAll();
+    showZeroCrossing(static_cast<std::size_t>(-1));
     return;
   }
   const auto i = static_cast<std::size_t>(position);
@@ -464,6 +485,86 @@ void ResultView::showTestPoint(int position) {
   residualPlot_->addData(tr("gyro"), QPen(kGyroData), part(traces->gyroResidualArcsec));
   residualPlot_->addData(tr("table"), QPen(kTableData), part(traces->tableResidualArcsec));
   residualPlot_->showAll();
+  showZeroCrossing(i);
+}
+
+void ResultView::showZeroCrossing(std::size_t i) {
+  zeroCrossingPlot_->clearCurves();
+  for (QwtPlotMarker* m : zeroMarkers_) {
+    m->detach();
+    delete m;
+  }
+  zeroMarkers_.clear();
+  zeroCrossingS_ = zeroCrossingLagMs_ = std::numeric_limits<double>::quiet_NaN();
+  if (!outcome_ || !outcome_->report || i >= outcome_->traces.size() || i >= outcome_->report->points.size()) {
+    zeroCrossingPlot_->showAll();
+    return;
+  }
+  const auto& p = outcome_->report->points[i];
+  const std::shared_ptr<const TestPointTraces> traces(outcome_, &outcome_->traces[i]);
+  const analysis::SineFit& tf = traces->tableFit;
+  const auto& tx = traces->tableNormalised.x;
+  if (!(tf.omegaRadPerS > 0.0) || tx.size() < 2 || !std::isfinite(p.lagMs)) {
+    zeroCrossingPlot_->showAll();
+    return;
+  }
+  // The table fit's rising zero crossing nearest the middle of the data.
+  const double tc = risingZeroCrossingS(tf, 0.5 * (tx.front() + tx.back()));
+  const double lagMs = p.lagMs;
+  // Wide enough for a few gyro samples on either side and the lag many times.
+  const double halfMs = std::max(5.0, 8.0 * std::abs(lagMs));
+  const double tableAmp = std::hypot(tf.a, tf.b) > 0.0 ? std::hypot(tf.a, tf.b) : 1.0;
+  const analysis::SineFit& gf = traces->gyroFit;
+  const double gyroAmp = std::hypot(gf.a, gf.b) > 0.0 ? std::hypot(gf.a, gf.b) : 1.0;
+  // Around tc, in ms from it, in degrees (each normalised trace times its
+  // amplitude).
+  auto window = [&](const Trace& t, double amplitude) {
+    auto out = std::make_shared<Trace>();
+    const auto lo = std::lower_bound(t.x.begin(), t.x.end(), tc - halfMs * 1e-3);
+    const auto hi = std::upper_bound(t.x.begin(), t.x.end(), tc + halfMs * 1e-3);
+    for (auto it = lo; it != hi; ++it) {
+      const auto n = static_cast<std::size_t>(it - t.x.begin());
+      out->x.push_back((*it - tc) * 1e3);
+      out->y.push_back(t.y[n] * amplitude);
+    }
+    return std::shared_ptr<const Trace>(std::move(out));
+  };
+  zeroCrossingS_ = tc;
+  zeroCrossingLagMs_ = lagMs;
+  zeroCrossingPlot_->addData(tr("table"), QPen(kTableData), window(traces->tableNormalised, tableAmp), true);
+  zeroCrossingPlot_->addData(tr("gyro (integrated, trend removed)"), QPen(kGyroData),
+                             window(traces->gyroNormalised, gyroAmp), true);
+  zeroCrossingPlot_->addFunction(tr("table fit"), QPen(kTableFit, 1.5), [traces, tc, tableAmp](double ms) {
+    return traces->tableFitNormalised(tc + ms * 1e-3) * tableAmp;
+  });
+  zeroCrossingPlot_->addFunction(tr("gyro fit"), QPen(kGyroFit, 1.5, Qt::DashLine),
+                                 [traces, tc, gyroAmp](double ms) {
+                                   return traces->gyroFitNormalised(tc + ms * 1e-3) * gyroAmp;
+                                 });
+  auto marker = [this](double x, const QString& text, Qt::Alignment align, Qt::PenStyle style) {
+    auto* m = new QwtPlotMarker();
+    m->setLineStyle(QwtPlotMarker::VLine);
+    m->setLinePen(QPen(QColor(60, 60, 60), 1, style));
+    m->setXValue(x);
+    QwtText label(text);
+    label.setColor(QColor(60, 60, 60));
+    label.setBackgroundBrush(QColor(255, 255, 255, 200));
+    m->setLabel(label);
+    m->setLabelAlignment(align);
+    m->setItemAttribute(QwtPlotItem::AutoScale, false);
+    m->attach(zeroCrossingPlot_);
+    zeroMarkers_.push_back(m);
+  };
+  marker(0.0, tr("table crosses zero"), Qt::AlignLeft | Qt::AlignTop, Qt::DotLine);
+  marker(lagMs, tr("+ fitted lag %1 ms").arg(num(lagMs, 4)), Qt::AlignRight | Qt::AlignTop, Qt::SolidLine);
+  auto* zero = new QwtPlotMarker();
+  zero->setLineStyle(QwtPlotMarker::HLine);
+  zero->setLinePen(QPen(QColor(160, 160, 160), 1, Qt::DotLine));
+  zero->setYValue(0.0);
+  zero->setItemAttribute(QwtPlotItem::AutoScale, false);
+  zero->attach(zeroCrossingPlot_);
+  zeroMarkers_.push_back(zero);
+  zeroCrossingPlot_->showAll();
 }
 
 void ResultView::showFrequencyPlot() {
@@ -473,6 +574,7 @@ void ResultView::showFrequencyPlot() {
   grid->attach(frequencyPlot_);
   const auto& report = *outcome_->report;
   double fMin = 1e300, fMax = 0.0;
+  double yMin = 1e300, yMax = -1e300;
   for (int a = 0; a < kAxisCount; ++a) {
     QVector<QPointF> points;
     QVector<QwtIntervalSample> bars;
@@ -483,6 +585,8 @@ void ResultView::showFrequencyPlot() {
       bars.push_back(QwtIntervalSample(f, p.lagMs - p.lagStdMs, p.lagMs + p.lagStdMs));
       fMin = std::min(fMin, f);
       fMax = std::max(fMax, f);
+      yMin = std::min(yMin, p.lagMs - p.lagStdMs);
+      yMax = std::max(yMax, p.lagMs + p.lagStdMs);
     }
     if (points.isEmpty()) continue;
     const QColor colour = kAxisColour[a];
@@ -517,8 +621,20 @@ void ResultView::showFrequencyPlot() {
     const double span = std::max(fMax - fMin, 0.2 * fMax);
     frequencyPlot_->setAxisScale(QwtPlot::xBottom, std::max(0.0, fMin - 0.15 * span), fMax + 0.15 * span);
   }
-  frequencyPlot_->setAxisAutoScale(QwtPlot::yLeft, true);
+  for (const auto& c : report.consistency) {
+    yMin = std::min(yMin, c.weightedLagMs);
+    yMax = std::max(yMax, c.weightedLagMs);
+  }
+  if (yMax >= yMin && std::isfinite(yMax - yMin)) {
+    // Every point with its whole error bar, clear of the frame (and of the
+    // mean's label above it).
+    const double span = std::max(yMax - yMin, 1e-3);
+    frequencyPlot_->setAxisScale(QwtPlot::yLeft, yMin - 0.15 * span, yMax + 0.3 * span);
+  } else {
+    frequencyPlot_->setAxisAutoScale(QwtPlot::yLeft, true);
+  }
   frequencyPlot_->replot();
+  frequencyInteraction_->setHome();
 }
 
 Status ResultView::exportPlotTo(QwtPlot* plot, const QString& path) {

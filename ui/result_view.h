@@ -8,7 +8,9 @@
 // can be exported (PNG/SVG/PDF), and the calibration report written as PDF.
 
 #include <QWidget>
+#include <limits>
 #include <memory>
+#include <vector>
 
 #include "ui/report/calibration_report.h"
 #include "ui/run_outcome.h"
@@ -17,12 +19,15 @@ class QComboBox;
 class QLabel;
 class QPlainTextEdit;
 class QPushButton;
+class QTabWidget;
 class QTableWidget;
 class QToolButton;
 class QwtPlot;
+class QwtPlotMarker;
 
 namespace fog::ui {
 
+class PlotInteraction;
 class SeriesPlot;
 
 class ResultView : public QWidget {
@@ -49,6 +54,16 @@ class ResultView : public QWidget {
   SeriesPlot* anglePlot() const { return anglePlot_; }
   SeriesPlot* residualPlot() const { return residualPlot_; }
   QwtPlot* frequencyPlot() const { return frequencyPlot_; }
+  // Table and gyro angle (each minus its offset, in degrees) around a rising
+  // zero crossing of the table's fit near the middle of the test point, with
+  // both fits; x is milliseconds from the table fit's crossing; markers at 0
+  // and at the fitted lag. The gap between the curves can be measured with
+  // the cursors.
+  SeriesPlot* zeroCrossingPlot() const { return zeroCrossingPlot_; }
+  // The session time (s) of the table fit's zero crossing shown; the fitted
+  // lag (ms) marked; NaN when there is none.
+  double zeroCrossingTimeS() const { return zeroCrossingS_; }
+  double zeroCrossingLagMs() const { return zeroCrossingLagMs_; }
   QTableWidget* fitTable() const { return fitTable_; }
   QTableWidget* delayTable() const { return delayTable_; }
   QString reportText() const;
@@ -87,6 +102,7 @@ class ResultView : public QWidget {
   void showFrequencyPlot();
   void fillTables(std::size_t i);
   void fillResultCombo();
+  void showZeroCrossing(std::size_t i);
 
   std::shared_ptr<const RunOutcome> outcome_;
   QString exportFolder_;
@@ -99,6 +115,12 @@ class ResultView : public QWidget {
   SeriesPlot* anglePlot_ = nullptr;
   SeriesPlot* residualPlot_ = nullptr;
   QwtPlot* frequencyPlot_ = nullptr;
+  SeriesPlot* zeroCrossingPlot_ = nullptr;
+  std::vector<QwtPlotMarker*> zeroMarkers_;  // owned by zeroCrossingPlot_ while attached
+  double zeroCrossingS_ = std::numeric_limits<double>::quiet_NaN();
+  double zeroCrossingLagMs_ = std::numeric_limits<double>::quiet_NaN();
+  QTabWidget* plotTabs_ = nullptr;
+  PlotInteraction* frequencyInteraction_ = nullptr;
   QTableWidget* fitTable_ = nullptr;
   QTableWidget* delayTable_ = nullptr;
   QPlainTextEdit* reportView_ = nullptr;

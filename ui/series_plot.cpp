@@ -9,15 +9,14 @@
 #include <qwt_plot_canvas.h>
 #include <qwt_plot_curve.h>
 #include <qwt_plot_grid.h>
-#include <qwt_plot_magnifier.h>
-#include <qwt_plot_panner.h>
 #include <qwt_plot_picker.h>
-#include <qwt_plot_zoomer.h>
 #include <qwt_scale_div.h>
 #include <qwt_scale_widget.h>
+#include <qwt_symbol.h>
 #include <qwt_text.h>
 
 #include "ui/curve_decimation.h"
+#include "ui/plot_interaction.h"
 
 namespace fog::ui {
 
@@ -36,32 +35,32 @@ constexpr int kThinningDelayMs = 15;
 
 }  // namespace
 
-SeriesPlot::SeriesPlot(const QString& title, const QString& yTitle, QWidget* parent) : QwtPlot(parent) {
-  QwtText titleText(title);
-  QFont titleFont = font();
-  titleFont.setBold(true);
-  titleText.setFont(titleFont);
-  setTitle(titleText);
+SeriesPlot::SeriesPlot(const QString& title, const QString& yTitle, const QString& valueUnit, QWidget* parent)
+    : QwtPlot(parent) {
+  setTitle(title);
   setCanvasBackground(Qt::white);
   setAxisTitle(kTimeAxis, tr("time (s)"));
   setAxisTitle(kValueAxis, yTitle);
+  useCompactTitles(this);
   insertLegend(new QwtLegend(), QwtPlot::BottomLegend);
 
   auto* grid = new QwtPlotGrid();
   grid->setMajorPen(QPen(QColor(220, 220, 220), 0, Qt::DotLine));
   grid->attach(this);
 
-  zoomer_ = new QwtPlotZoomer(canvas());
-  zoomer_->setTrackerMode(QwtPicker::AlwaysOff);
-  zoomer_->setRubberBandPen(QPen(Qt::darkGray, 0, Qt::DashLine));
-  // Right button: one zoom step back; Ctrl + right button: the full view.
-  zoomer_->setMousePattern(QwtEventPattern::MouseSelect2, Qt::RightButton, Qt::ControlModifier);
-  zoomer_->setMousePattern(QwtEventPattern::MouseSelect3, Qt::RightButton);
-
-  panner_ = new QwtPlotPanner(canvas());
-  panner_->setMouseButton(Qt::MiddleButton);
-  magnifier_ = new QwtPlotMagnifier(canvas());
-  magnifier_->setMouseButton(Qt::NoButton);  // wheel only; the right button belongs to the zoomer
+  PlotInteraction::Options options;
+  options.cursors = true;
+  options.yUnit = valueUnit;
+  interaction_ = new PlotInteraction(this, options);
+  interaction_->setHomeFunction([this] { showAll(); });
+  interaction_->setValuesAt([this](double t) {
+    PlotInteraction::Values values;
+    for (int i = 0; i < curveCount(); ++i) {
+      const double v = valueAt(i, t);
+      if (std::isfinite(v)) values.push_back({curves_[static_cast<std::size_t>(i)].item->title().text(), v});
+    }
+    return values;
+  });
 
   picker_ = new QwtPlotPicker(kTimeAxis, kValueAxis, QwtPicker::CrossRubberBand, QwtPicker::AlwaysOn, canvas());
   picker_->setStateMachine(new QwtPickerTrackerMachine());
@@ -83,11 +82,21 @@ void SeriesPlot::clearCurves() {
     delete c.item;
   }
   curves_.clear();
+  interaction_->dataChanged();
 }
 
-void SeriesPlot::addData(const QString& title, const QPen& pen, std::shared_ptr<const Trace> trace) {
+void SeriesPlot::setTimeAxis(const QString& title, double secondsPerUnit) {
+  QwtText text = axisTitle(kTimeAxis);
+  text.setText(title);
+  setAxisTitle(kTimeAxis, text);
+  interaction_->setSecondsPerX(secondsPerUnit);
+}
+
+void SeriesPlot::addData(const QString& title, const QPen& pen, std::shared_ptr<const Trace> trace, bool samples) {
   auto* item = new QwtPlotCurve(title);
   item->setPen(pen);
+  if (samples)
+    item->setSymbol(new QwtSymbol(QwtSymbol::Ellipse, QBrush(pen.color()), QPen(pen.color()), QSize(5, 5)));
   item->setRenderHint(QwtPlotItem::RenderAntialiased, false);
   item->setPaintAttribute(QwtPlotCurve::ClipPolygons, true);
   item->attach(this);
@@ -123,9 +132,24 @@ void SeriesPlot::showAll() {
   const double margin = 0.05 * (y1 - y0);
   setAxisScale(kTimeAxis, x0, x1);
   setAxisScale(kValueAxis, y0 - margin, y1 + margin);
-  replot();  // settles the scales that thin() and the zoom base read
+  replot();  // settles the scales that thin() reads
   thin();
-  zoomer_->setZoomBase(false);
+}
+
+double SeriesPlot::valueAt(int i, double t) const {
+  if (i < 0 || i >= curveCount()) return std::numeric_limits<double>::quiet_NaN();
+  const auto& c = curves_[static_cast<std::size_t>(i)];
+  if (c.function) return c.function(t);
+  if (!c.data || c.data->x.empty() || c.data->x.size() != c.data->y.size())
+    return std::numeric_limits<double>::quiet_NaN();
+  const auto& x = c.data->x;
+  const auto& y = c.data->y;
+  if (t < x.front() || t > x.back()) return std::numeric_limits<double>::quiet_NaN();
+  const auto hi = static_cast<std::size_t>(std::lower_bound(x.begin(), x.end(), t) - x.begin());
+  if (hi == 0) return y.front();
+  const std::size_t lo = hi - 1;
+  const double span = x[hi] - x[lo];
+  return span > 0.0 ? y[lo] + (y[hi] - y[lo]) * (t - x[lo]) / span : y[hi];
 }
 
 std::size_t SeriesPlot::dataPoints(int i) const {

@@ -5,8 +5,10 @@
 // functions are evaluated over the visible range at two points per pixel, so
 // they stay smooth at any zoom. Antialiasing is off for data curves.
 //
-// Zoom: drag with the left button (right button: back one step); pan: middle
-// button; magnify: wheel. The picker reads out (time, value) at the cursor.
+// Interaction (ui/plot_interaction.h, as on every plot): wheel zoom, drag
+// pan, double-click for the whole data, click for measuring cursors A and B
+// (Δt and every curve's value at both, from the full data). The picker reads
+// out (time, value) at the mouse.
 
 #include <QPen>
 #include <QString>
@@ -19,22 +21,24 @@
 #include "ui/test_point_traces.h"
 
 class QwtPlotCurve;
-class QwtPlotMagnifier;
-class QwtPlotPanner;
 class QwtPlotPicker;
-class QwtPlotZoomer;
 
 namespace fog::ui {
+
+class PlotInteraction;
 
 class SeriesPlot : public QwtPlot {
   Q_OBJECT
 
  public:
-  SeriesPlot(const QString& title, const QString& yTitle, QWidget* parent = nullptr);
+  // valueUnit: appended to values in the cursor readout ("″"; "" for none).
+  SeriesPlot(const QString& title, const QString& yTitle, const QString& valueUnit = QString(),
+             QWidget* parent = nullptr);
   ~SeriesPlot() override;
 
   void clearCurves();
-  void addData(const QString& title, const QPen& pen, std::shared_ptr<const Trace> trace);
+  // samples: each data point also drawn as a dot (for a few points).
+  void addData(const QString& title, const QPen& pen, std::shared_ptr<const Trace> trace, bool samples = false);
   void addFunction(const QString& title, const QPen& pen, std::function<double(double)> function);
   // Scales to the data's full extent and makes it the zoom base; call after adding curves.
   void showAll();
@@ -43,6 +47,12 @@ class SeriesPlot : public QwtPlot {
   // Points of curve `i` in the full data (0 for a function) and as drawn now.
   std::size_t dataPoints(int i) const;
   std::size_t shownPoints(int i) const;
+  // Curve `i`'s value at time t: its data interpolated linearly (NaN outside
+  // it), or its function.
+  double valueAt(int i, double t) const;
+  PlotInteraction* interaction() const { return interaction_; }
+  // The time axis's title and unit (default "time (s)", 1 s).
+  void setTimeAxis(const QString& title, double secondsPerUnit);
 
  protected:
   void resizeEvent(QResizeEvent* event) override;
@@ -57,9 +67,7 @@ class SeriesPlot : public QwtPlot {
   void thin();
 
   std::vector<Curve> curves_;
-  QwtPlotZoomer* zoomer_ = nullptr;
-  QwtPlotPanner* panner_ = nullptr;
-  QwtPlotMagnifier* magnifier_ = nullptr;
+  PlotInteraction* interaction_ = nullptr;
   QwtPlotPicker* picker_ = nullptr;
   QTimer thinTimer_;
 };

@@ -68,8 +68,10 @@ SessionBrowser::SessionBrowser(QWidget* parent) : QWidget(parent) {
   reanalyseButton_ = new QPushButton(tr("Re-analyse with the bench constants"));
   reanalyseButton_->setObjectName("reanalyseButton");
   reanalyseButton_->setToolTip(tr("Adds a new result to the session; its raw data never changes"));
-  compareButton_ = new QPushButton(tr("Compare the two selected"));
+  compareButton_ = new QPushButton(tr("Compare the selected"));
   compareButton_->setObjectName("compareButton");
+  compareButton_->setToolTip(tr("Two sessions: their delays per test point and the difference with its significance; "
+                                "more sessions of one IMU: the delay against the date as well"));
   importButton_ = new QPushButton(tr("Import CSV data…"));
   importButton_->setObjectName("importButton");
   importButton_->setToolTip(tr("Data from another bench (metadata.json, table.csv, gyro.csv) becomes a session here"));
@@ -104,7 +106,7 @@ SessionBrowser::SessionBrowser(QWidget* parent) : QWidget(parent) {
   });
   connect(compareButton_, &QPushButton::clicked, this, [this] {
     const auto paths = selectedPaths();
-    if (paths.size() == 2) emit compareRequested(paths[0], paths[1]);
+    if (paths.size() >= 2) emit compareRequested(paths);
   });
   connect(importButton_, &QPushButton::clicked, this, [this] {
     const QString dir = QFileDialog::getExistingDirectory(this, tr("Folder with metadata.json, table.csv, gyro.csv"));
@@ -190,7 +192,7 @@ void SessionBrowser::updateButtons() {
   const int n = static_cast<int>(selectedPaths().size());
   openButton_->setEnabled(n >= 1);
   reanalyseButton_->setEnabled(n >= 1);
-  compareButton_->setEnabled(n == 2);
+  compareButton_->setEnabled(n >= 2);
 }
 
 }  // namespace fog::ui

@@ -33,7 +33,8 @@ class SessionBrowser : public QWidget {
  signals:
   void openRequested(const QString& path);
   void reanalyseRequested(const QString& path);
-  void compareRequested(const QString& first, const QString& second);
+  // Two or more sessions, in table order.
+  void compareRequested(const QStringList& paths);
   // A folder in the CSV layout of docs/formats.md to import as a session.
   void importRequested(const QString& csvFolder);
   void folderChanged(const QString& folder);

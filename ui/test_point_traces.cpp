@@ -24,6 +24,14 @@ double amplitudeOf(const analysis::SineFit& f) {
 
 }  // namespace
 
+double risingZeroCrossingS(const analysis::SineFit& f, double nearS) {
+  constexpr double kTwoPi = 6.283185307179586;
+  if (!(f.omegaRadPerS > 0.0)) return std::nan("");
+  const double phi = std::atan2(f.b, f.a);
+  const double k = std::round((f.omegaRadPerS * (nearS - f.referenceS) + phi) / kTwoPi);
+  return f.referenceS + (kTwoPi * k - phi) / f.omegaRadPerS;
+}
+
 double TestPointTraces::tableFitNormalised(double tS) const {
   return sinusoidDeg(tableFit, tS) / amplitudeOf(tableFit);
 }

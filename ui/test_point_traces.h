@@ -33,6 +33,11 @@ struct TestPointTraces {
   double gyroFitNormalised(double tS) const;
 };
 
+// The time (s) nearest `nearS` where the fit's periodic part,
+// a·sin(ωτ) + b·cos(ωτ) = A·sin(ωτ + φ), rises through zero (ωτ + φ = 2πk);
+// NaN when the fit has no frequency.
+double risingZeroCrossingS(const analysis::SineFit& fit, double nearS);
+
 // incrementScale as for analysis::makeChannels(): 1 when the recording's
 // increments are in degrees, the pulse equivalent when they are raw pulses.
 Result<TestPointTraces> makeTestPointTraces(const TestPointData& data, const analysis::TestPointResult& result,

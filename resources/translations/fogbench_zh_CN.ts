@@ -191,6 +191,242 @@
     </message>
 </context>
 <context>
+    <name>fog::ui::CompareView</name>
+    <message>
+        <location filename="../../ui/compare_view.cpp" line="+122"/>
+        <source>session</source>
+        <translation>会话</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>file</source>
+        <translation>文件</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>recorded (UTC)</source>
+        <translation>记录时间 (UTC)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>IMU</source>
+        <translation>IMU</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>operator</source>
+        <translation>操作员</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>result compared</source>
+        <translation>所比较的结果</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>loading …</source>
+        <translation>正在加载 …</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>Compare</source>
+        <translation>比较</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>against</source>
+        <translation>相对于</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Test point</source>
+        <translation>测试点</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <location line="+126"/>
+        <source>test point</source>
+        <translation>测试点</translation>
+    </message>
+    <message>
+        <location line="-120"/>
+        <source>Zero crossing of A and B</source>
+        <translation>A 与 B 的过零点</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>(angle − offset) / amplitude</source>
+        <translation>(角度 − 偏置) / 幅值</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>time from each session&apos;s table-fit zero crossing (ms)</source>
+        <translation>距各会话转台拟合过零点的时间 (ms)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Lag against swing frequency</source>
+        <translation>滞后随摆动频率的变化</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>swing frequency (Hz)</source>
+        <translation>摆动频率 (Hz)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>lag (ms), ±1σ</source>
+        <translation>滞后 (ms)，±1σ</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>IMU delay against the recording date</source>
+        <translation>IMU 延迟随记录日期的变化</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>recorded</source>
+        <translation>记录时间</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>IMU delay (ms), ±1σ</source>
+        <translation>IMU 延迟 (ms)，±1σ</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Zero crossing</source>
+        <translation>过零点</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Lag vs frequency</source>
+        <translation>滞后与频率</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Trend</source>
+        <translation>趋势</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>Loading the sessions …</source>
+        <translation>正在加载会话 …</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>unreadable: %1</source>
+        <translation>无法读取：%1</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>no delay: %1</source>
+        <translation>无延迟：%1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>result %1 of %2; table read %3 ± %4 ms, board %5 ms</source>
+        <translation>结果 %1/%2；转台读数延迟 %3 ± %4 ms，板卡 %5 ms</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>Choose two different sessions.</source>
+        <translation>请选择两个不同的会话。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Session %1 or %2 has no delay result to compare.</source>
+        <translation>会话 %1 或 %2 没有可比较的延迟结果。</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <location line="+1"/>
+        <source>%1: IMU delay (ms)</source>
+        <translation>%1：IMU 延迟 (ms)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 − %2 (ms)</source>
+        <translation>%1 − %2 (ms)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>±σ (ms)</source>
+        <translation>±σ (ms)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>|%1 − %2|/σ</source>
+        <translation>|%1 − %2|/σ</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <location line="+1"/>
+        <source>%1 ± %2</source>
+        <translation>%1 ± %2</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>differs (more than 2σ)</source>
+        <translation>有差异（超过 2σ）</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>consistent (within 2σ)</source>
+        <translation>一致（2σ 以内）</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>only in %1</source>
+        <translation>仅在 %1 中</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 against %2: %3 test point(s) in both, %4 differ by more than 2σ.</source>
+        <translation>%1 相对于 %2：两者共有 %3 个测试点，其中 %4 个差异超过 2σ。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Both used the same table read delay: its uncertainty cancels in the difference, σ combines the two lags&apos; uncertainties.</source>
+        <translation>两者使用相同的转台读数延迟：其不确定度在差值中抵消，σ 由两个滞后的不确定度合成。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The table read delays differ: σ combines the two IMU delays&apos; uncertainties.</source>
+        <translation>转台读数延迟不同：σ 由两个 IMU 延迟的不确定度合成。</translation>
+    </message>
+    <message>
+        <location line="+43"/>
+        <source>%1: table</source>
+        <translation>%1：转台</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1: gyro</source>
+        <translation>%1：陀螺</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1: gyro fit</source>
+        <translation>%1：陀螺拟合</translation>
+    </message>
+    <message>
+        <location line="+74"/>
+        <source>IMU delay against the recording date (IMU not named)</source>
+        <translation>IMU 延迟随记录日期的变化（未填写 IMU）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>IMU delay of %1 against the recording date</source>
+        <translation>%1 的 IMU 延迟随记录日期的变化</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>IMU delay against the recording date (%1 IMUs: %2)</source>
+        <translation>IMU 延迟随记录日期的变化（%1 个 IMU：%2）</translation>
+    </message>
+</context>
+<context>
     <name>fog::ui::ConfigureView</name>
     <message>
         <location filename="../../ui/configure_view.cpp" line="+31"/>
@@ -431,7 +667,7 @@ counter %5 MHz / %6 bit</source>
 <context>
     <name>fog::ui::DiagnosisView</name>
     <message>
-        <location filename="../../ui/diagnosis_view.cpp" line="+94"/>
+        <location filename="../../ui/diagnosis_view.cpp" line="+95"/>
         <source>Test point</source>
         <translation>测试点</translation>
     </message>
@@ -496,7 +732,12 @@ counter %5 MHz / %6 bit</source>
         <translation>留出数据差异缩减 (%)</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+5"/>
+        <source>″</source>
+        <translation>″</translation>
+    </message>
+    <message>
+        <location line="+61"/>
         <source>Run or open a session, then press Diagnose in the Results view.</source>
         <translation>请运行或打开一个会话，然后在“结果”视图中按“诊断”。</translation>
     </message>
@@ -590,7 +831,7 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>仿真（回放）</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+10"/>
         <source>table, recorded</source>
         <translation>转台，实测</translation>
     </message>
@@ -610,7 +851,7 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>陀螺，仿真</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+34"/>
         <source>P%1 S%2</source>
         <translation>点%1 段%2</translation>
     </message>
@@ -628,7 +869,7 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>采样板时间 (s)</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+63"/>
         <source>No run yet: configure a plan and press Run.</source>
         <translation>尚未运行：请配置测试计划并按“运行”。</translation>
     </message>
@@ -684,12 +925,12 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+249"/>
+        <location line="+244"/>
         <source>Step</source>
         <translation>步骤</translation>
     </message>
     <message>
-        <location line="-239"/>
+        <location line="-234"/>
         <source>Turntable angle</source>
         <translation>转台角度</translation>
     </message>
@@ -715,7 +956,7 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>计划</translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+42"/>
         <source>Waiting for the first frames …</source>
         <translation>等待首批数据帧 …</translation>
     </message>
@@ -914,7 +1155,7 @@ Press Diagnose in the Results view to start it again.</source>
 <context>
     <name>fog::ui::MainWindow</name>
     <message>
-        <location filename="../../ui/main_window.cpp" line="+145"/>
+        <location filename="../../ui/main_window.cpp" line="+146"/>
         <source>fogbench %1 — FOG IMU delay bench</source>
         <translation>fogbench %1 —— 光纤陀螺 IMU 延迟测试台</translation>
     </message>
@@ -940,17 +1181,17 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+844"/>
+        <location line="+846"/>
         <source>Diagnosis</source>
         <translation>诊断</translation>
     </message>
     <message>
-        <location line="-841"/>
+        <location line="-843"/>
         <source>Noise</source>
         <translation>噪声</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+43"/>
         <source>Configure a plan and press Run.</source>
         <translation>请配置测试计划并按“运行”。</translation>
     </message>
@@ -1492,7 +1733,17 @@ File: %1</source>
         <translation>%1：显示第 %2 个结果（共 %3 个）</translation>
     </message>
     <message>
-        <location line="-5"/>
+        <location line="+186"/>
+        <source>Compare %1</source>
+        <translation>比较 %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>the session could not be read (see the message)</source>
+        <translation>无法读取该会话（见消息）</translation>
+    </message>
+    <message>
+        <location line="-198"/>
         <source>%1 re-analysed</source>
         <translation>%1 已重新分析</translation>
     </message>
@@ -1587,16 +1838,11 @@ File: %1</source>
         <source>No noise analysis: %1</source>
         <translation>无噪声分析：%1</translation>
     </message>
-    <message>
-        <location line="+13"/>
-        <source>Compare %1 and %2</source>
-        <translation>比较 %1 与 %2</translation>
-    </message>
 </context>
 <context>
     <name>fog::ui::NoiseView</name>
     <message>
-        <location filename="../../ui/noise_view.cpp" line="+31"/>
+        <location filename="../../ui/noise_view.cpp" line="+32"/>
         <source>Static segment</source>
         <translation>静态段</translation>
     </message>
@@ -1606,7 +1852,7 @@ File: %1</source>
         <translation>陀螺的重叠 Allan 标准差</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+15"/>
         <source>noise term</source>
         <translation>噪声项</translation>
     </message>
@@ -1706,7 +1952,7 @@ File: %1</source>
         <translation>高斯-马尔可夫零偏</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>%1 – %2</source>
         <translation>%1 – %2</translation>
     </message>
@@ -1887,6 +2133,39 @@ File: %1</source>
     </message>
 </context>
 <context>
+    <name>fog::ui::PlotInteraction</name>
+    <message>
+        <location filename="../../ui/plot_interaction.cpp" line="+67"/>
+        <source>wheel: zoom · drag: pan · double-click: whole view</source>
+        <translation>滚轮：缩放 · 拖动：平移 · 双击：全图</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> · click: cursors A/B · right-click: remove them</source>
+        <translation> · 单击：光标 A/B · 右击：移除光标</translation>
+    </message>
+    <message>
+        <location line="+118"/>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>B − A: Δt = %1</source>
+        <translation>B − A：Δt = %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>B − A: Δx = %1</source>
+        <translation>B − A：Δx = %1</translation>
+    </message>
+</context>
+<context>
     <name>QObject</name>
     <message>
         <location filename="../../ui/delta_picker.cpp" line="-18"/>
@@ -1900,13 +2179,13 @@ File: %1</source>
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../../ui/main_window.cpp" line="-999"/>
+        <location filename="../../ui/main_window.cpp" line="-988"/>
         <location filename="../../ui/plan_editor.cpp" line="-282"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../../ui/live_view.cpp" line="-393"/>
+        <location filename="../../ui/live_view.cpp" line="-409"/>
         <source>%1:%2</source>
         <translation>%1:%2</translation>
     </message>
@@ -2970,7 +3249,7 @@ File: %1</source>
         <translation>IMU 延迟标定报告：%1 %2</translation>
     </message>
     <message>
-        <location filename="../../ui/result_view.cpp" line="+60"/>
+        <location filename="../../ui/result_view.cpp" line="+62"/>
         <source>%1: %2 axis, %3 Hz / %4°</source>
         <translation>%1：%2 轴，%3 Hz / %4°</translation>
     </message>
@@ -2989,11 +3268,16 @@ File: %1</source>
         <source>fogbench %1</source>
         <translation>fogbench %1</translation>
     </message>
+    <message>
+        <location filename="../../ui/session_compare.cpp" line="+21"/>
+        <source>%1 axis, %2 Hz / %3°</source>
+        <translation>%1 轴，%2 Hz / %3°</translation>
+    </message>
 </context>
 <context>
     <name>fog::ui::ResultView</name>
     <message>
-        <location line="+41"/>
+        <location filename="../../ui/result_view.cpp" line="+41"/>
         <source>Test point</source>
         <translation>测试点</translation>
     </message>
@@ -3041,6 +3325,11 @@ File: %1</source>
         <location line="+0"/>
         <source>residual (arcsec)</source>
         <translation>残差（角秒）</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>″</source>
+        <translation>″</translation>
     </message>
     <message>
         <location line="+10"/>
@@ -3098,7 +3387,47 @@ File: %1</source>
         <translation>依据</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+5"/>
+        <source>Zero crossing: the gyro behind the table</source>
+        <translation>过零点：陀螺滞后于转台</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>angle − offset (°)</source>
+        <translation>角度 − 偏置 (°)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>°</source>
+        <translation>°</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>time from the table fit&apos;s zero crossing (ms)</source>
+        <translation>距转台拟合过零点的时间 (ms)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Zero crossing</source>
+        <translation>过零点</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Lag vs frequency</source>
+        <translation>滞后与频率</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Table and gyro angle around a zero crossing with the fitted lag marked: click twice to set cursors A and B and read Δt</source>
+        <translation>过零点附近的转台角与陀螺角，标出拟合滞后：单击两次设置光标 A 和 B，读出 Δt</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The lag of every test point against its swing frequency</source>
+        <translation>各测试点的滞后随摆动频率的变化</translation>
+    </message>
+    <message>
+        <location line="+22"/>
         <source>The delay report appears here after a run.</source>
         <translation>运行结束后，延迟报告显示在这里。</translation>
     </message>
@@ -3117,6 +3446,11 @@ File: %1</source>
         <location line="+1"/>
         <source>Residuals plot…</source>
         <translation>残差曲线…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Zero crossing plot…</source>
+        <translation>过零点图…</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -3166,12 +3500,12 @@ File: %1</source>
         <translation>滞后 (ms)，±1σ</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+16"/>
         <source>No result yet.</source>
         <translation>尚无结果。</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+25"/>
         <source>Result shown: %1</source>
         <translation>显示的结果：%1</translation>
     </message>
@@ -3301,7 +3635,7 @@ File: %1</source>
         <translation>敏感、闭环与脉冲更新</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>&lt;b&gt;lag %1 ± %2 ms&lt;/b&gt;  ·  IMU delay %3 ms  ·  gyro&apos;s own delay %4 ms</source>
         <translation>&lt;b&gt;滞后 %1 ± %2 ms&lt;/b&gt;  ·  IMU 延迟 %3 ms  ·  陀螺自身延迟 %4 ms</translation>
     </message>
@@ -3328,31 +3662,45 @@ File: %1</source>
     <message>
         <location line="+7"/>
         <location line="+8"/>
+        <location line="+48"/>
         <source>table</source>
         <translation>转台</translation>
     </message>
     <message>
-        <location line="-7"/>
+        <location line="-55"/>
+        <location line="+56"/>
         <source>gyro (integrated, trend removed)</source>
         <translation>陀螺（积分，已去除趋势）</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-55"/>
+        <location line="+57"/>
         <source>table fit</source>
         <translation>转台拟合</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-55"/>
+        <location line="+58"/>
         <source>gyro fit</source>
         <translation>陀螺拟合</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-55"/>
         <source>gyro</source>
         <translation>陀螺</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+73"/>
+        <source>table crosses zero</source>
+        <translation>转台过零</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>+ fitted lag %1 ms</source>
+        <translation>+ 拟合滞后 %1 ms</translation>
+    </message>
+    <message>
+        <location line="+34"/>
         <source>%1 axis</source>
         <translation>%1 轴</translation>
     </message>
@@ -3375,7 +3723,7 @@ File: %1</source>
 <context>
     <name>fog::ui::SeriesPlot</name>
     <message>
-        <location filename="../../ui/series_plot.cpp" line="+46"/>
+        <location filename="../../ui/series_plot.cpp" line="+42"/>
         <source>time (s)</source>
         <translation>时间 (s)</translation>
     </message>
@@ -3454,8 +3802,13 @@ File: %1</source>
     </message>
     <message>
         <location line="+1"/>
-        <source>Compare the two selected</source>
-        <translation>比较所选的两个</translation>
+        <source>Compare the selected</source>
+        <translation>比较所选会话</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Two sessions: their delays per test point and the difference with its significance; more sessions of one IMU: the delay against the date as well</source>
+        <translation>两个会话：逐测试点的延迟及其差值和显著性；同一 IMU 的多个会话：另给出延迟随日期的变化</translation>
     </message>
     <message>
         <location line="+2"/>

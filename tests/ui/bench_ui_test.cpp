@@ -38,6 +38,7 @@
 #include <qwt_plot.h>
 #include <qwt_plot_barchart.h>
 #include <qwt_scale_div.h>
+#include <qwt_scale_map.h>
 #include <vector>
 
 #include "common/version.h"
@@ -47,6 +48,7 @@
 #include "io/csv_export.h"
 #include "session/session_file.h"
 #include "ui/commanded_motion.h"
+#include "ui/compare_view.h"
 #include "ui/configure_view.h"
 #include "ui/curve_decimation.h"
 #include "ui/diagnosis_view.h"
@@ -58,6 +60,7 @@
 #include "ui/messages.h"
 #include "ui/noise_view.h"
 #include "ui/plan_editor.h"
+#include "ui/plot_interaction.h"
 #include "ui/plot_export.h"
 #include "ui/result_view.h"
 #include "ui/series_plot.h"
@@ -399,6 +402,56 @@ class BenchUiTest : public QObject {
     QVERIFY(angles->shownPoints(0) < angles->dataPoints(0));  // thinned
     QVERIFY(!w->resultView()->frequencyPlot()->itemList().isEmpty());
 
+    // The zero-crossing overlay: the table fit crosses zero at 0 ms, the gyro
+    // fit where the fitted lag is marked, and so do the data; cursors set at
+    // the two data crossings by mouse read the lag as Δt.
+    auto* zc = w->resultView()->zeroCrossingPlot();
+    QCOMPARE(zc->curveCount(), 4);  // table, gyro, table fit, gyro fit
+    QCOMPARE(w->resultView()->zeroCrossingLagMs(), lag);
+    auto risingZero = [zc](int curve) {
+      const auto div = zc->axisScaleDiv(QwtPlot::xBottom);
+      double lo = div.lowerBound(), hi = div.upperBound();
+      const int steps = 400;
+      for (int k = 0; k < steps; ++k) {
+        const double a = lo + (hi - lo) * k / steps, b = lo + (hi - lo) * (k + 1) / steps;
+        if (zc->valueAt(curve, a) < 0.0 && zc->valueAt(curve, b) >= 0.0) {
+          lo = a;
+          hi = b;
+          for (int i = 0; i < 60; ++i) {
+            const double m = 0.5 * (lo + hi);
+            (zc->valueAt(curve, m) < 0.0 ? lo : hi) = m;
+          }
+          return 0.5 * (lo + hi);
+        }
+      }
+      return std::nan("");
+    };
+    const double tableFitZero = risingZero(2), gyroFitZero = risingZero(3);
+    const double tableZero = risingZero(0), gyroZero = risingZero(1);
+    const QString crossings = QString("table fit %1, gyro fit %2, table %3, gyro %4 ms; lag %5 ms")
+                                  .arg(tableFitZero).arg(gyroFitZero).arg(tableZero).arg(gyroZero).arg(lag);
+    QVERIFY2(std::abs(tableFitZero) < 1e-6, qPrintable(crossings));
+    QVERIFY2(std::abs(gyroFitZero - lag) < 0.01, qPrintable(crossings));
+    QVERIFY2(std::abs(gyroZero - tableZero - lag) < 0.05, qPrintable(crossings));
+    auto* zcIn = zc->interaction();
+    const QPoint row(0, zc->canvas()->height() / 2);
+    int placed = 0;
+    for (double x : {tableZero, gyroZero}) {
+      QTest::mouseClick(zc->canvas(), Qt::LeftButton, Qt::NoModifier,
+                        row + QPoint(qRound(zc->transform(QwtPlot::xBottom, x)), 0));
+      ++placed;
+      QTRY_COMPARE(zcIn->cursorCount(), placed);
+      QTest::qWait(QApplication::doubleClickInterval());  // two clicks, not a double-click
+    }
+    const double measuredMs = *zcIn->cursor(1) - *zcIn->cursor(0);
+    const auto map = zc->canvasMap(QwtPlot::xBottom);
+    const double pixelMs = std::abs(map.invTransform(1.0) - map.invTransform(0.0));
+    QVERIFY2(std::abs(measuredMs - (gyroZero - tableZero)) <= 2.0 * pixelMs,
+             qPrintable(QString("measured %1 ms, pixel %2 ms; %3").arg(measuredMs).arg(pixelMs).arg(crossings)));
+    QVERIFY2(zcIn->readout().contains(QString("Δt = %1").arg(fog::ui::formatDuration(measuredMs * 1e-3))),
+             qPrintable(zcIn->readout()));
+    qInfo("%s; measured by cursor %.4f ms", qPrintable(crossings), measuredMs);
+
     // Recorded: the session is in the folder and listed with its lag.
     QVERIFY(QFile::exists(QString::fromStdString(outcome->sessionPath)));
     w->showView(MainWindow::kSessions);
@@ -537,25 +590,31 @@ class BenchUiTest : public QObject {
     QCOMPARE(w->lastOutcome()->shownResultId, newestId);
     QCOMPARE(results->delayTable()->item(3, 1)->text().toDouble(), 0.3);
 
-    // Compare the two sessions of the folder.
-    const QStringList all = [&] {
-      QStringList paths;
-      for (int r = 0; r < browser->table()->rowCount(); ++r)
-        paths << browser->table()->item(r, 0)->data(Qt::UserRole).toString();
-      return paths;
-    }();
-    QVERIFY(all.size() >= 2);
+    // Compare: the complete session and a copy of it (the same data, so
+    // every difference is 0 and consistent).
+    const QString copy = QFileInfo(complete).absolutePath() + "/copy-of-" + QFileInfo(complete).fileName();
+    QFile::remove(copy);
+    QVERIFY(QFile::copy(complete, copy));
+    browser->refresh();
     browser->table()->clearSelection();
     browser->table()->setSelectionMode(QAbstractItemView::MultiSelection);
-    browser->selectPath(all[0]);
-    browser->selectPath(all[1]);
+    QVERIFY(browser->selectPath(complete));
+    QVERIFY(browser->selectPath(copy));
     click(*w, "compareButton");
     QWidget* compare = w->findChild<QWidget*>("compareWindow");
     QVERIFY(compare);
-    QTRY_VERIFY_WITH_TIMEOUT(compare->findChildren<fog::ui::ResultView*>().size() == 2 &&
-                                 compare->findChildren<fog::ui::ResultView*>()[0]->outcome() &&
-                                 compare->findChildren<fog::ui::ResultView*>()[1]->outcome(),
-                             30000);
+    auto* compareView = compare->findChild<fog::ui::CompareView*>();
+    QVERIFY(compareView);
+    QTRY_VERIFY_WITH_TIMEOUT(compareView->allLoaded(), 30000);
+    // Per test point both results and their difference; the overlays drawn.
+    QVERIFY(!compareView->comparisons().empty());
+    QVERIFY(compareView->differenceTable()->rowCount() >= 1);
+    QVERIFY(compareView->zeroCrossingPlot()->curveCount() >= 3);
+    for (const auto& c : compareView->comparisons()) {
+      QVERIFY(c.both());
+      QCOMPARE(c.differenceMs, 0.0);
+      QVERIFY(c.differenceStdMs > 0.0 && !c.significant());
+    }
     // The Compare window fits a laptop too.
     settle();
     const QSize m = minimumOf(compare);
@@ -563,6 +622,7 @@ class BenchUiTest : public QObject {
              qPrintable(QString("compare minimum %1x%2; too large: %3")
                             .arg(m.width()).arg(m.height()).arg(tooLarge(compare, QSize(1024, 700)).join("; "))));
     compare->close();
+    QFile::remove(copy);
   }
 
   // Data from another bench (here: a CSV export of the quick run) is imported

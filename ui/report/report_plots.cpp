@@ -6,6 +6,7 @@
 #include <qwt_legend.h>
 #include <qwt_plot.h>
 #include <qwt_plot_curve.h>
+#include <qwt_plot_intervalcurve.h>
 #include <qwt_plot_grid.h>
 #include <qwt_scale_widget.h>
 #include <qwt_symbol.h>
@@ -73,7 +74,43 @@ std::unique_ptr<QwtPlot> makePlot(const PlotSpec& spec) {
     item->setLegendIconSize(QSize(22, 8));
     item->setRenderHint(QwtPlotItem::RenderAntialiased, true);
     QVector<QPointF> points;
-    if (c.trace) {
+    // A dense trace (more samples than 2 per mm of print) is drawn as its
+    // envelope: per 0.5 mm column a light band from the minimum to the
+    // maximum and a line through the column means, so noise reads as a band
+    // around its course instead of a solid block of 300k strokes.
+    const int envelopeColumns = std::max(50, static_cast<int>(std::lround(spec.widthMm * 2.0)));
+    if (c.trace && !c.symbols && static_cast<int>(c.trace->x.size()) > 4 * envelopeColumns) {
+      QVector<QwtIntervalSample> band;
+      const auto& x = c.trace->x;
+      const auto& y = c.trace->y;
+      const double w = (spec.x1 - spec.x0) / envelopeColumns;
+      std::size_t k = 0;
+      for (int col = 0; col < envelopeColumns && w > 0.0; ++col) {
+        const double a = spec.x0 + col * w, b = a + w;
+        double lo = 1e300, hi = -1e300, sum = 0.0;
+        int n = 0;
+        while (k < x.size() && x[k] < a) ++k;
+        for (; k < x.size() && x[k] < b; ++k) {
+          lo = std::min(lo, y[k]);
+          hi = std::max(hi, y[k]);
+          sum += y[k];
+          ++n;
+        }
+        if (n == 0) continue;
+        const double mid = a + 0.5 * w;
+        band.push_back(QwtIntervalSample(mid, lo * c.yScale, hi * c.yScale));
+        points.push_back(QPointF(mid, sum / n * c.yScale));
+      }
+      auto* envelope = new QwtPlotIntervalCurve(c.title);
+      envelope->setItemAttribute(QwtPlotItem::Legend, false);  // the band is the curve's own
+      QColor fill = c.pen.color();
+      fill.setAlpha(70);
+      envelope->setBrush(fill);
+      envelope->setPen(QPen(Qt::NoPen));
+      envelope->setStyle(QwtPlotIntervalCurve::Tube);
+      envelope->setSamples(band);
+      envelope->attach(plot.get());
+    } else if (c.trace) {
       points = ui::decimateMinMax(c.trace->x, c.trace->y, spec.x0, spec.x1, columns);
       for (auto& p : points) p.setY(p.y() * c.yScale);
     } else if (c.function) {

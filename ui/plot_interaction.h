@@ -1,0 +1,112 @@
+#pragma once
+// One way to handle every plot of the bench (Results, Diagnosis, Noise):
+//   wheel          zoom about the cursor
+//   drag (left)    pan
+//   double-click   back to the whole view ("home")
+//   click          a measuring cursor: A, then B, then A again ...; the
+//                  readout gives x at each, Δx (Δt as a duration on time
+//                  axes) and every curve's value at A and B with its Δ
+//   right-click    removes the cursors
+// A hint in the canvas's corner says so; it is a widget over the canvas, so
+// plot exports (QwtPlotRenderer) leave it out. The cursors are plot markers
+// and do appear in exports; they stay attached to the plot (which owns them),
+// so a view must not detach all of its plot's items (detach by type).
+
+#include <QObject>
+#include <QPoint>
+#include <QString>
+#include <QStringList>
+#include <QTimer>
+#include <functional>
+#include <optional>
+#include <utility>
+#include <vector>
+
+class QLabel;
+class QwtPlot;
+class QwtPlotMagnifier;
+class QwtPlotMarker;
+class QwtPlotPanner;
+
+namespace fog::ui {
+
+// The bench's plots on screen: the title in the widget's font, bold; axis
+// titles in the widget's font, not bold (they wrap less on a small plot);
+// the title label sized for the font it draws (no clipped descenders).
+void useCompactTitles(QwtPlot* plot);
+
+class PlotInteraction : public QObject {
+  Q_OBJECT
+
+ public:
+  struct Options {
+    bool cursors = false;     // measuring cursors (x-axis positions)
+    bool timeAxis = true;     // x is a time: Δt reads as a duration
+    double secondsPerX = 1.0; // a time axis's unit in seconds (1e-3: x in ms)
+    QString xUnit;            // unit of x when it is not a time ("Hz")
+    QString yUnit;            // unit appended to the curves' values ("″", "")
+    bool zoomX = true, zoomY = true;  // which axes the wheel zooms and a drag pans
+  };
+  // A curve's name and its value at some x (the readout's lines).
+  using Values = std::vector<std::pair<QString, double>>;
+
+  PlotInteraction(QwtPlot* plot, Options options);
+
+  // What the plot shows now becomes its home view (call after the view has
+  // set its scales and replotted); or a function that brings the home view
+  // back (a plot that rescales to its data).
+  void setHome();
+  void setHomeFunction(std::function<void()> home);
+  // The curves' values at x for the cursor readout (default: none).
+  void setValuesAt(std::function<Values(double x)> valuesAt);
+  // A time axis's unit: 1 for seconds, 1e-3 for milliseconds.
+  void setSecondsPerX(double secondsPerX);
+
+  // Back to the home view (what a double-click does).
+  void resetView();
+  // Places the next cursor (A, then B, then A ...) at x; removes them.
+  void placeCursor(double x);
+  void clearCursors();
+  int cursorCount() const;
+  std::optional<double> cursor(int i) const;  // 0: A, 1: B
+  // The readout's text (empty without cursors): the cursors' positions and
+  // Δt, then a line per curve ("gyro: A 0.01 °, B 0.02 °, Δ 0.01 °"); what
+  // the canvas shows of it (the first lines, as many as leave room); the
+  // hint's text.
+  QString readout() const;
+  QString shownReadout() const;
+  QString hint() const;
+  // Call when the data changed: cursors go, values are read anew.
+  void dataChanged();
+
+ signals:
+  // The operator zoomed or panned (not emitted for resetView()).
+  void viewChangedByUser();
+
+ protected:
+  bool eventFilter(QObject* watched, QEvent* event) override;
+
+ private:
+  void updateReadout();
+  void placeOverlays();
+
+  QwtPlot* plot_;
+  Options options_;
+  QwtPlotPanner* panner_ = nullptr;
+  QwtPlotMagnifier* magnifier_ = nullptr;
+  QLabel* hint_ = nullptr;
+  QLabel* readout_ = nullptr;
+  QStringList readoutLines_;
+  QwtPlotMarker* markers_[2] = {nullptr, nullptr};
+  std::optional<double> cursors_[2];
+  int nextCursor_ = 0;
+  std::function<void()> homeFunction_;
+  std::vector<std::pair<int, std::pair<double, double>>> home_;  // axis, interval
+  std::function<Values(double)> valuesAt_;
+  // A click places a cursor once it is clear it is not a double-click.
+  QTimer clickTimer_;
+  QPoint pressPos_;
+  double pendingX_ = 0.0;
+};
+
+}  // namespace fog::ui
