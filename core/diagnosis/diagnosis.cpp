@@ -79,7 +79,24 @@ class Progress {
   std::atomic<bool> cancelled_{false};
 };
 
-constexpr double kReplayChunkS = 2.0;  // simulated seconds decoded at a time
+// Runs the simulated chain and decodes its stream as it is made, two
+// simulated seconds at a time: the bytes of a long session are never held
+// whole (140 MB for an hour).
+Result<Recording> simulateRecording(const model::SimConfig& config, const TestPlan& plan,
+                                    std::vector<std::unique_ptr<model::Effect>> effects = {}) {
+  constexpr double kChunkS = 2.0;
+  auto sim = model::Simulator::create(config, plan);
+  if (!sim) return sim.status();
+  for (auto& e : effects) (*sim)->addEffect(std::move(e));
+  protocol::StreamDecoder decoder;
+  std::vector<std::uint8_t> bytes;
+  for (double until = kChunkS; (*sim)->advance(until, bytes); until += kChunkS) {
+    decoder.push(bytes);
+    bytes.clear();
+  }
+  decoder.push(bytes);
+  return decoder.finish();
+}
 
 struct Replay {
   Calibration cal;
@@ -108,19 +125,7 @@ struct Replay {
     TestPlan plan = cal.plan;
     model::Random phase(model::Random::derive(seed, 0x7ab1e));
     for (auto& p : plan.points) p.startPhaseDeg += 0.1 * (phase.uniform() - 0.5);
-    auto sim = model::Simulator::create(config, plan);
-    if (!sim) return sim.status();
-    for (auto& e : list) (*sim)->addEffect(std::move(e));
-    // Decoded as it is made, a few seconds at a time: the bytes of a long
-    // session are never held whole (140 MB per replay for an hour).
-    protocol::StreamDecoder decoder;
-    std::vector<std::uint8_t> bytes;
-    for (double until = kReplayChunkS; (*sim)->advance(until, bytes); until += kReplayChunkS) {
-      decoder.push(bytes);
-      bytes.clear();
-    }
-    decoder.push(bytes);
-    auto rec = decoder.finish();
+    auto rec = simulateRecording(config, plan, std::move(list));
     if (!rec) return rec.status();
     return extractFeatures(*rec, ref);
   }
@@ -1323,17 +1328,43 @@ void auditTimings(const Recording& used, const Replay& replay, std::uint64_t see
   d.realTiming = auditTiming(used, replay.ref.tablePeriodS, replay.ref.imuPeriodS);
   model::SimConfig c0 = replay.cal.config;
   c0.seed = seed;
-  auto sim = model::simulate(c0, replay.cal.plan);
-  if (sim)
-    if (auto rec = protocol::decodeRecording(sim->bytes))
-      d.simTiming = auditTiming(*rec, replay.ref.tablePeriodS, replay.ref.imuPeriodS);
+  if (auto rec = simulateRecording(c0, replay.cal.plan))
+    d.simTiming = auditTiming(*rec, replay.ref.tablePeriodS, replay.ref.imuPeriodS);
+}
+
+// Memory: the session's samples, at most one copy of them, and one replay's
+// samples per thread at a time with the recording builder's growth: about
+// (1.5 + 1.5 threads) times the samples' size (907 MB measured for an hour
+// at 1 kHz / 500 Hz on 2 threads, whose samples take 200 MB). Fewer threads
+// when that is over the budget; a refusal when even one is.
+Result<int> threadsWithinMemory(const Recording& recording, int requested) {
+  double sampleBytes = 0.0;
+  for (const auto& tp : recording.testPoints)
+    sampleBytes += static_cast<double>(tp.table.size()) * sizeof(TableSample) +
+                   static_cast<double>(tp.imu.size()) * sizeof(ImuSample);
+  const auto peak = [&](int threads) { return sampleBytes * (1.5 + 1.5 * threads); };
+  int threads = std::max(1, requested);
+  while (threads > 1 && peak(threads) > kDiagnosisMemoryBudgetBytes) --threads;
+  if (peak(threads) > kDiagnosisMemoryBudgetBytes)
+    return outOfRange("the session holds " + std::to_string(static_cast<long long>(sampleBytes / 1e6)) +
+                      " MB of samples; its diagnosis would need about " +
+                      std::to_string(static_cast<long long>(peak(1) / 1e6)) + " MB, over the " +
+                      std::to_string(static_cast<long long>(kDiagnosisMemoryBudgetBytes / 1e6)) +
+                      " MB limit; diagnose a session of fewer or shorter test points (up to an hour at 1 kHz / 500 Hz "
+                      "fits)");
+  return threads;
 }
 
 }  // namespace
 
 Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, const analysis::BenchConstants& constants,
-                           const DiagnosisOptions& options) {
+                           const DiagnosisOptions& requested) {
   const auto started = std::chrono::steady_clock::now();
+  DiagnosisOptions options = requested;
+  if (auto threads = threadsWithinMemory(input, requested.threads); !threads)
+    return threads.status();
+  else
+    options.threads = *threads;
   Progress progress(options);
   const std::vector<SignatureJob> jobs = signatureJobs(options);
   const std::size_t expectedReplays = kCalibrationReplays + jobs.size() + laterReplays(options);

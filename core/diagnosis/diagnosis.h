@@ -45,7 +45,7 @@ namespace fog::diagnosis {
 
 struct DiagnosisOptions {
   int monteCarloSeeds = 4;   // replays used for the simulator's own spread
-  int threads = 2;           // worker threads for the replays
+  int threads = 2;           // worker threads for the replays (fewer when memory needs it)
   std::uint64_t seed = 9001; // seeds of the replays: seed, seed + 1, ...
   // Held-out improvement (delta chi-square on odd segments) an effect must reach.
   double heldOutDeltaChi2 = 16.0;
@@ -172,6 +172,11 @@ struct Diagnosis {
   std::vector<std::string> notes;
   double elapsedS = 0.0;
 };
+
+// Peak memory a diagnosis may use. A session whose diagnosis would need more
+// even on one thread (about 3x its samples' size) is refused with kOutOfRange
+// before anything runs; one that fits on fewer threads than asked gets fewer.
+inline constexpr double kDiagnosisMemoryBudgetBytes = 1e9;
 
 // info may be null (a raw stream): the plan is then rebuilt from the
 // recording alone. Fails when the analysis gives no delay for any test point.

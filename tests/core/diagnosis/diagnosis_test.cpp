@@ -260,5 +260,20 @@ TEST(Diagnosis, ReportsProgressAndStopsWhenCancelled) {
   EXPECT_EQ(callsAfterCancel, 0);
 }
 
+// A session whose diagnosis would need more than the memory budget even on
+// one thread is refused before anything runs, saying why and what fits.
+TEST(Diagnosis, ASessionTooLargeForTheMemoryBudgetIsRefused) {
+  Recording rec;
+  TestPointData tp;
+  const auto samples = static_cast<std::size_t>(kDiagnosisMemoryBudgetBytes / 3.0 / sizeof(TableSample)) + 1000;
+  tp.table.resize(samples);
+  tp.imu.resize(10);
+  rec.testPoints.push_back(std::move(tp));
+  auto d = diagnose(rec, nullptr, {}, {});
+  ASSERT_FALSE(d.isOk());
+  EXPECT_EQ(d.status().code(), StatusCode::kOutOfRange) << d.status().toString();
+  EXPECT_NE(d.status().message().find("MB limit"), std::string::npos) << d.status().toString();
+}
+
 }  // namespace
 }  // namespace fog::diagnosis
