@@ -19,7 +19,10 @@
 // not the noisy measurement), coefficients are kept >= 0 (active set), the
 // Markov correlation time is found on a logarithmic grid (variable
 // projection: the rest is linear), and only terms whose coefficient is at
-// least `minSignificance` standard errors from zero are reported.
+// least `minSignificance` standard errors from zero are reported (a Markov
+// term also when dropping it raises chi^2 beyond the same tail probability
+// for 2 degrees of freedom). With the curve's pulse known, the quantisation
+// term has the shape of the pulse count of a slowly moving angle.
 // Neighbouring taus of an overlapping Allan curve are strongly correlated,
 // so the fit's covariance understates the uncertainties (by 2-4x, see
 // docs/noise.md). The stated uncertainties are therefore delete-a-block
