@@ -44,7 +44,7 @@ MarkovPeak markovPeak() {
 }  // namespace
 
 Result<GyroNoiseReport> analyzeStaticSegment(const TestPointData& data, double degPerIncrement,
-                                             const GyroNoiseOptions& options) {
+                                             const GyroNoiseOptions& options, double degPerPulse) {
   GyroNoiseReport r;
   r.testPointIndex = data.index;
   r.gyroAxis = options.gyroAxis.value_or(data.axis);
@@ -83,6 +83,14 @@ Result<GyroNoiseReport> analyzeStaticSegment(const TestPointData& data, double d
   const auto phase = cumulativeSum(increments, meanIncrement);
   FOG_ASSIGN_OR_RETURN(auto curve, overlappingAllanCurve(phase, r.intervalS, options.allan));
   r.curve = std::move(curve);
+  // The increments are whole pulses: the quantisation term is that of the
+  // pulse count of an angle moving meanIncrement per frame (docs/noise.md).
+  bool wholePulses = options.pulseQuantisation && degPerPulse > 0.0;
+  for (std::size_t k = 0; wholePulses && k < data.imu.size(); ++k) {
+    const double c = data.imu[k].incrementDeg[a] * degPerIncrement / degPerPulse;
+    wholePulses = std::abs(c - std::round(c)) < 1e-6 * std::max(1.0, std::abs(c));
+  }
+  if (wholePulses) r.curve.pulse = {degPerPulse, meanIncrement};
   FOG_ASSIGN_OR_RETURN(auto model, identifyNoise(r.curve, options.identify));
   r.model = std::move(model);
   r.biasStdDegPerH = std::sqrt(std::max(0.0, r.model.allanVariance(r.durationS))) * kSecondsPerHour;
@@ -102,7 +110,8 @@ Result<std::vector<GyroNoiseReport>> analyzeGyroNoise(const Recording& recording
   std::vector<GyroNoiseReport> out;
   for (const auto& tp : recording.testPoints) {
     if (tp.kind != TestPointKind::kStatic) continue;
-    FOG_ASSIGN_OR_RETURN(auto r, analyzeStaticSegment(tp, scale, options));
+    const double pulse = recording.pulseEquivalentDeg > 0.0 ? recording.pulseEquivalentDeg : scale;
+    FOG_ASSIGN_OR_RETURN(auto r, analyzeStaticSegment(tp, scale, options, pulse));
     out.push_back(std::move(r));
   }
   if (out.empty())

@@ -29,6 +29,10 @@ struct GyroNoiseOptions {
   model::EarthParams earth;      // site latitude and IMU axes, for the Earth-rate correction
   // Degrees per pulse when the stream does not state it (0: unknown -> error).
   double pulseEquivalentDeg = 0.0;
+  // Model the quantisation as the pulse count of the angle (exact at rest,
+  // where the angle moves a pulse only every few frames) when every increment
+  // is a whole number of pulses; false: white quantisation (IEEE 952).
+  bool pulseQuantisation = true;
 };
 
 struct GyroNoiseReport {
@@ -46,8 +50,9 @@ struct GyroNoiseReport {
 };
 
 // One static segment. Fails with kInsufficientData under 8 IMU samples.
+// degPerPulse: the gyro's pulse equivalent (0: unknown; white quantisation).
 Result<GyroNoiseReport> analyzeStaticSegment(const TestPointData& data, double degPerIncrement,
-                                             const GyroNoiseOptions& options);
+                                             const GyroNoiseOptions& options, double degPerPulse = 0.0);
 // Every static segment of the recording. kInsufficientData ("the recording
 // has no static segment ...") when there is none.
 Result<std::vector<GyroNoiseReport>> analyzeGyroNoise(const Recording& recording, const GyroNoiseOptions& options);

@@ -19,7 +19,10 @@
 // not the noisy measurement), coefficients are kept >= 0 (active set), the
 // Markov correlation time is found on a logarithmic grid (variable
 // projection: the rest is linear), and only terms whose coefficient is at
-// least `minSignificance` standard errors from zero are reported.
+// least `minSignificance` standard errors from zero are reported (a Markov
+// term also when dropping it raises chi^2 beyond the same tail probability
+// for 2 degrees of freedom). With the curve's pulse known, the quantisation
+// term has the shape of the pulse count of a slowly moving angle.
 // Neighbouring taus of an overlapping Allan curve are strongly correlated,
 // so the fit's covariance understates the uncertainties (by 2-4x, see
 // docs/noise.md). The stated uncertainties are therefore delete-a-block
@@ -54,9 +57,22 @@ struct AllanPoint {
   std::vector<double> jackknifeVariance;
 };
 
+// The pulse quantisation of the phase, when known: the phase is
+// pulseDeg * floor(angle / pulseDeg) of an angle advancing by stepDeg per
+// tau0 on average (the mean increment, before it is removed). A gyro at rest
+// moves a pulse only every few frames, so its quantisation error is a slow
+// sawtooth, not white angle noise; with these the quantisation term takes the
+// Allan variance of that sawtooth, dithered by the gyro's own noise
+// (pulseQuantisationUnitVariance). pulseDeg = 0: white quantisation (IEEE 952).
+struct PulseQuantisation {
+  double pulseDeg = 0.0;
+  double stepDeg = 0.0;
+};
+
 struct AllanCurve {
   double tau0S = 0.0;
   std::size_t phasePoints = 0;
+  PulseQuantisation pulse;
   double confidence = kOneSigmaConfidence;
   std::vector<AllanPoint> points;
 };
@@ -93,6 +109,8 @@ struct NoiseModel {
   std::vector<NoiseTerm> terms;  // significant terms only, in NoiseTermKind order
   double chiSquare = 0.0;
   int dof = 0;
+  double tau0S = 0.0;
+  PulseQuantisation pulse;  // the curve's: shapes the quantisation term
   // Model Allan variance (rate units^2) at tau.
   double allanVariance(double tauS) const;
   const NoiseTerm* find(NoiseTermKind kind) const;
@@ -117,5 +135,22 @@ Result<NoiseModel> identifyNoise(AllanCurve& curve, const IdentifyOptions& optio
 // Allan variance of a single term with value 1 (and correlation time tcS for
 // Markov), so that model = sum value^2 * unitAllanVariance(...).
 double unitAllanVariance(NoiseTermKind kind, double tauS, double tcS = 0.0);
+
+// Allan variance per unit Q^2 (Q = pulse / sqrt 12) of the pulse quantisation
+// error of an angle that advances by `step` pulses per tau0 on average, with
+// Gaussian jitter: jitter1 and jitter2 are the variances (pulses^2) of the
+// angle's change over tau and 2 tau from its noise. The quantisation error is
+// the sawtooth e = frac(angle / pulse); with a random starting phase its
+// autocovariance at a mean shift d and jitter variance v is
+// R(d, v) = E[1/12 - f (1 - f) / 2], f = frac(d + N(0, v)), and
+//   AVAR = 12 (3 R(0) - 4 R(step m, jitter1) + R(2 step m, jitter2)) / tau^2,
+// uncorrelated with the noise itself (the random phase averages the cross
+// term out). Large jitter: R -> 0 and this is 3 / tau^2, white quantisation.
+double pulseQuantisationUnitVariance(double tauS, double tau0S, double step, double jitter1, double jitter2);
+
+// Variance of the angle's change over lagS (phase units^2) due to a term of
+// value 1: N^2 L (ARW), 2 s^2 Tc^2 (L/Tc - 1 + e^(-L/Tc)) (Markov), K^2 L^3/3
+// (rate random walk), ~ L^2 x its Allan variance (flicker); 0 for Q and ramp.
+double unitAngleVariance(NoiseTermKind kind, double lagS, double tcS = 0.0);
 
 }  // namespace fog::noise

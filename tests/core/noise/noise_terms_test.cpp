@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
 #include "synthetic_gyro.h"
@@ -31,13 +33,15 @@ struct Identified {
   NoiseModel model;
 };
 
-Identified identify(const std::vector<double>& increments, double intervalS) {
+// pulseDeg > 0: the increments are whole pulses and the fit is told so.
+Identified identify(const std::vector<double>& increments, double intervalS, double pulseDeg = 0.0) {
   double mean = 0.0;
   for (double v : increments) mean += v;
   mean /= static_cast<double>(increments.size());
   const auto phase = cumulativeSum(increments, mean);
   auto curve = overlappingAllanCurve(phase, intervalS);
   EXPECT_TRUE(curve.isOk());
+  if (pulseDeg > 0.0) curve->pulse = {pulseDeg, mean};
   auto model = identifyNoise(*curve);
   EXPECT_TRUE(model.isOk()) << model.status().message();
   return {*curve, *model};
@@ -83,53 +87,105 @@ TEST(NoiseTerms, WhiteRateAloneGivesOnlyAngleRandomWalk) {
   EXPECT_LT(r.model.terms[0].stdError / r.model.terms[0].value, 0.01);  // 400 s of 500 Hz data
 }
 
-// Over 30 seeds: the stated uncertainties against the scatter of the
-// estimates, and the coverage of the Allan-deviation intervals. The jackknife
-// uncertainties are within a factor 1.5 of the true scatter for Q, N and the
-// Markov sigma (measured ratios 0.94, 0.78, 0.75 -- docs/noise.md); a factor-2 band
-// is asserted. With 30 seeds the scatter itself is known to +-13 %.
-TEST(NoiseTerms, StatedUncertaintyAgreesWithMonteCarloScatter) {
-  const auto g = knownGyro();
+struct MonteCarlo {
+  double ratio[3] = {};  // mean stated uncertainty / scatter: Q, N, Markov sigma
+  double coverage = 0.0;
+  double worstChi2PerDof = 0.0;
+};
+
+// Over `seeds` seeds: the stated uncertainties against the scatter of the
+// estimates (each mean unbiased within 3 standard errors of the mean), the
+// coverage of the Allan-deviation intervals of the true curve, the worst
+// chi^2/dof.
+MonteCarlo monteCarlo(const testing::SyntheticGyro& g, int seeds, double pulseDeg) {
   const NoiseTermKind kinds[] = {NoiseTermKind::kQuantisation, NoiseTermKind::kAngleRandomWalk, NoiseTermKind::kMarkov};
-  const double truth[] = {g.whiteAngleDeg, g.arwDegPerSqrtS, g.markovSigmaDegPerS};
+  const double q = pulseDeg > 0.0 ? pulseDeg / std::sqrt(12.0) : g.whiteAngleDeg;
+  const double truth[] = {q, g.arwDegPerSqrtS, g.markovSigmaDegPerS};
   std::vector<double> values[3], stated[3];
   std::size_t covered = 0, intervals = 0;
-  constexpr int kSeeds = 30;
-  for (int seed = 100; seed < 100 + kSeeds; ++seed) {
-    const auto r = identify(g.increments(kFrames, static_cast<std::uint64_t>(seed)), g.intervalS);
+  MonteCarlo mc;
+  for (int seed = 100; seed < 100 + seeds; ++seed) {
+    const auto r = identify(g.increments(kFrames, static_cast<std::uint64_t>(seed)), g.intervalS, pulseDeg);
+    mc.worstChi2PerDof = std::max(mc.worstChi2PerDof, r.model.chiSquare / std::max(1, r.model.dof));
     for (int k = 0; k < 3; ++k) {
       const NoiseTerm* t = r.model.find(kinds[k]);
-      ASSERT_NE(t, nullptr) << "seed " << seed << " lost " << noiseTermName(kinds[k]);
+      EXPECT_NE(t, nullptr) << "seed " << seed << " lost " << noiseTermName(kinds[k]);
+      if (!t) return mc;
       values[k].push_back(t->value);
       stated[k].push_back(t->stdError);
     }
     for (const auto& p : r.curve.points) {
-      const double trueDev = std::sqrt(trueAllanVariance(g, p.tauS));
-      covered += p.interval.low <= trueDev && trueDev <= p.interval.high;
+      if (pulseDeg > 0.0) continue;  // the true curve of a pulse-quantised gyro depends on its noise: not tabulated
+      const double dev = std::sqrt(trueAllanVariance(g, p.tauS));
+      covered += p.interval.low <= dev && dev <= p.interval.high;
       ++intervals;
     }
   }
   for (int k = 0; k < 3; ++k) {
     double mean = 0.0, meanStated = 0.0;
-    for (int i = 0; i < kSeeds; ++i) {
-      mean += values[k][static_cast<std::size_t>(i)] / kSeeds;
-      meanStated += stated[k][static_cast<std::size_t>(i)] / kSeeds;
+    for (int i = 0; i < seeds; ++i) {
+      mean += values[k][static_cast<std::size_t>(i)] / seeds;
+      meanStated += stated[k][static_cast<std::size_t>(i)] / seeds;
     }
     double ss = 0.0;
     for (double v : values[k]) ss += (v - mean) * (v - mean);
-    const double scatter = std::sqrt(ss / (kSeeds - 1));
-    // Unbiased: the mean within 3 standard errors of the mean.
-    EXPECT_NEAR(mean, truth[k], 3.0 * scatter / std::sqrt(kSeeds)) << noiseTermName(kinds[k]);
-    RecordProperty(std::string(noiseTermKey(kinds[k])) + "_stated_over_scatter", std::to_string(meanStated / scatter));
-    EXPECT_GT(meanStated / scatter, 0.5) << noiseTermName(kinds[k]);
-    EXPECT_LT(meanStated / scatter, 2.0) << noiseTermName(kinds[k]);
+    const double scatter = std::sqrt(ss / (seeds - 1));
+    EXPECT_NEAR(mean, truth[k], 3.0 * scatter / std::sqrt(seeds)) << noiseTermName(kinds[k]);
+    mc.ratio[k] = meanStated / scatter;
+    std::printf("%s: mean %.6g (truth %.6g), scatter %.4g, stated %.4g, stated/scatter %.3f\n", noiseTermName(kinds[k]),
+                mean, truth[k], scatter, meanStated, mc.ratio[k]);
   }
-  // 1-sigma (68.3 %) intervals: pooled coverage over ~1000 intervals (binomial
-  // std 1.5 %); neighbouring taus are correlated, so a +-10 % band.
-  const double coverage = static_cast<double>(covered) / static_cast<double>(intervals);
-  RecordProperty("interval_coverage", std::to_string(coverage));
-  EXPECT_GT(coverage, 0.583);
-  EXPECT_LT(coverage, 0.783);
+  mc.coverage = intervals ? static_cast<double>(covered) / static_cast<double>(intervals) : 0.0;
+  return mc;
+}
+
+// 50 seeds of white angle noise (IEEE 952 Q). The jackknife uncertainties
+// against the true scatter: measured ratios in docs/noise.md; a factor-2 band
+// is asserted. With 50 seeds the scatter itself is known to +-10 %.
+TEST(NoiseTerms, StatedUncertaintyAgreesWithMonteCarloScatter) {
+  const auto mc = monteCarlo(knownGyro(), 50, 0.0);
+  const char* keys[] = {"quantisation", "angle_random_walk", "markov"};
+  for (int k = 0; k < 3; ++k) {
+    RecordProperty(std::string(keys[k]) + "_stated_over_scatter", std::to_string(mc.ratio[k]));
+    EXPECT_GT(mc.ratio[k], 0.5) << keys[k];
+    EXPECT_LT(mc.ratio[k], 2.0) << keys[k];
+  }
+  // 1-sigma (68.3 %) intervals: pooled coverage over ~1600 intervals (binomial
+  // std 1.2 %); neighbouring taus are correlated, so a +-10 % band.
+  RecordProperty("interval_coverage", std::to_string(mc.coverage));
+  EXPECT_GT(mc.coverage, 0.583);
+  EXPECT_LT(mc.coverage, 0.783);
+}
+
+// A gyro at rest whose output is pulse counts (0.18" pulse, 11.7 deg/h of
+// bias + Earth rate, as the X gyro of `run --preset noise`), so the angle
+// crosses a pulse only every ~8 frames and the quantisation error is a
+// dithered sawtooth, not white. Told the pulse, the fit recovers Q = pulse /
+// sqrt 12, N and the Markov sigma without bias over 50 seeds (checked in
+// monteCarlo). Here the 5 deg/h / 10 s wander swings the pulse rate by +-40 %,
+// so the short-tau Allan points vary with the wander far more than the
+// white-phase EDF (~1e5) says: chi^2/dof is 2-14 (the white model: hundreds);
+// the bench's own 0.5 deg/h wander fits with chi^2/dof < 1 (gyro_noise_test).
+// The jackknife is then conservative for Q and N (docs/noise.md); asserted:
+// never optimistic by more than a factor 2.
+TEST(NoiseTerms, PulseQuantisedGyroAtRestFitsAndRecoversItsTerms) {
+  auto g = knownGyro();
+  g.whiteAngleDeg = 0.0;
+  g.pulseDeg = 5e-5;
+  g.biasDegPerS = 11.7 / 3600.0;
+  const auto mc = monteCarlo(g, 50, g.pulseDeg);
+  RecordProperty("worst_chi2_per_dof", std::to_string(mc.worstChi2PerDof));
+  EXPECT_LT(mc.worstChi2PerDof, 20.0);
+  const char* keys[] = {"quantisation", "angle_random_walk", "markov"};
+  for (int k = 0; k < 3; ++k) {
+    RecordProperty(std::string(keys[k]) + "_stated_over_scatter", std::to_string(mc.ratio[k]));
+    EXPECT_GT(mc.ratio[k], 0.5) << keys[k];
+  }
+  EXPECT_LT(mc.ratio[2], 2.0);
+  // Told nothing of the pulse, the same data do not fit (white quantisation).
+  const auto white = identify(g.increments(kFrames, 100), g.intervalS);
+  std::printf("white quantisation model: chi^2 %.1f for %d dof\n", white.model.chiSquare, white.model.dof);
+  EXPECT_GT(white.model.chiSquare / white.model.dof, 5.0 * mc.worstChi2PerDof);
 }
 
 TEST(NoiseTerms, RefusesTooShortACurve) {
