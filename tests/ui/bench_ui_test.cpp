@@ -74,6 +74,13 @@ class BenchUiTest : public QObject {
 
  private:
   QTemporaryDir sessions_;
+  // This process's remembered choices (QSettings). Test mode alone is not
+  // private: it puts every test process's settings in one file,
+  // ~/.qttest/config/<organisation>/<program>.conf, whatever XDG_CONFIG_HOME
+  // says, so UI tests running at once (ctest -j2 runs fog_ui_tests beside
+  // fog_ui_table_tests; other checkouts run theirs) overwrote each other's
+  // remembered session folder between a test's two windows.
+  QTemporaryDir settings_;
 
   static QPushButton* button(QWidget& w, const char* name) {
     auto* b = w.findChild<QPushButton*>(name);
@@ -210,6 +217,12 @@ class BenchUiTest : public QObject {
     QStandardPaths::setTestModeEnabled(true);
     QCoreApplication::setOrganizationName("fogbench-tests");
     QVERIFY(sessions_.isValid());
+    QVERIFY(settings_.isValid());
+    for (auto format : {QSettings::NativeFormat, QSettings::IniFormat})
+      QSettings::setPath(format, QSettings::UserScope, settings_.path());
+    // No other process can write where this one remembers.
+    const QString file = QSettings().fileName();
+    QVERIFY2(file.startsWith(settings_.path() + "/"), qPrintable(file));
   }
 
   // A value beyond the table's limits is explained next to the field, and Run
@@ -1306,6 +1319,14 @@ class BenchUiTest : public QObject {
       first.setRemembering(false);
       first.setSessionFolder(oneOff.path());
       first.setRemembering(true);
+      // Enter on the one-off folder, or leaving its field, does not choose it.
+      first.show();
+      auto* folderEdit = first.configureView()->findChild<QLineEdit*>("sessionFolderEdit");
+      QVERIFY(folderEdit);
+      folderEdit->setFocus();
+      QTest::keyClick(folderEdit, Qt::Key_Return);
+      first.configureView()->findChild<QLineEdit*>("operatorEdit")->setFocus();
+      QCOMPARE(QSettings().value("sessions/folder").toString(), sessions_.path());
     }
     MainWindow second;
     const fog::TestPlan plan = second.planEditor()->plan();
@@ -1317,6 +1338,21 @@ class BenchUiTest : public QObject {
     QCOMPARE(second.findChild<QLineEdit*>("imuModelEdit")->text(), QString("FOG-9"));
     QCOMPARE(second.findChild<QLineEdit*>("imuSerialEdit")->text(), QString("SN-77"));
     QCOMPARE(second.sessionFolder(), sessions_.path());
+  }
+
+  // A folder the operator types (and confirms with Enter) is remembered.
+  void aTypedFolderIsRemembered() {
+    QTemporaryDir typed;
+    auto w = window();
+    auto* folderEdit = w->configureView()->findChild<QLineEdit*>("sessionFolderEdit");
+    QVERIFY(folderEdit);
+    folderEdit->setFocus();
+    folderEdit->selectAll();
+    QTest::keyClicks(folderEdit, typed.path());
+    QTest::keyClick(folderEdit, Qt::Key_Return);
+    QCOMPARE(QSettings().value("sessions/folder").toString(), typed.path());
+    QCOMPARE(w->sessionFolder(), typed.path());
+    w->setSessionFolder(sessions_.path());
   }
 
   // The real program: --help answers without a display, and a one-off
