@@ -39,6 +39,7 @@
 #include <qwt_plot_barchart.h>
 #include <qwt_scale_div.h>
 #include <qwt_scale_map.h>
+#include <qwt_scale_widget.h>
 #include <vector>
 
 #include "common/version.h"
@@ -225,6 +226,56 @@ class BenchUiTest : public QObject {
     QVERIFY2(file.startsWith(settings_.path() + "/"), qPrintable(file));
   }
 
+  // One test point with several problems lists every one of them, in the
+  // row (wrapped, the whole text in its tooltip), at each field it is about
+  // and in the plan's summary; the GUI's check agrees with the core's.
+  void planCheckListsEveryProblemOfAPoint() {
+    auto w = window();
+    auto* editor = w->planEditor();
+    QVERIFY(editor->loadPreset("paper-fast"));
+    setValue(editor, 0, PlanEditor::kFrequency, 30.0);  // beyond 20 Hz
+    setValue(editor, 0, PlanEditor::kAmplitude, 50.0);  // beyond 45°
+    auto* check = editor->table()->item(0, PlanEditor::kCheck);
+    for (const QString& expected : {QString("frequency 30 Hz is beyond the table limit of 20 Hz"),
+                                    QString("amplitude 50° is beyond the table limit of 45°"),
+                                    QString("peak rate 9424.78 °/s exceeds the table limit of 400 °/s")}) {
+      QVERIFY2(check->text().contains(expected), qPrintable(check->text()));
+      QVERIFY2(check->toolTip().contains(expected), qPrintable(check->toolTip()));
+      QVERIFY2(editor->problem().contains("test point 1: " + expected), qPrintable(editor->problem()));
+    }
+    QCOMPARE(editor->problem().count("test point 1:"), 4);  // frequency, amplitude, rate, acceleration
+    QVERIFY(editor->cellEditor(0, PlanEditor::kAmplitude)->toolTip().contains("amplitude 50°"));
+    QVERIFY(!editor->cellEditor(0, PlanEditor::kAmplitude)->toolTip().contains("frequency 30 Hz"));
+    QVERIFY(editor->cellEditor(0, PlanEditor::kFrequency)->toolTip().contains("frequency 30 Hz"));
+    QVERIFY(editor->cellEditor(0, PlanEditor::kDuration)->toolTip().isEmpty());
+    QVERIFY(!editor->problem().contains("deg"));
+
+    // The same verdict as TestPoint::validate over a grid of points.
+    const fog::TurntableLimits limits;
+    int bad = 0;
+    for (double f : {-1.0, 0.0, 0.5, 5.0, 25.0})
+      for (double a : {0.0, 2.0, 30.0, 60.0})
+        for (double d : {0.5, 10.0, 1e5})
+          for (double settle : {-1.0, 2.0})
+            for (bool still : {false, true}) {
+              fog::TestPoint p = still ? fog::TestPoint::staticSegment(fog::Axis::kY, d, settle) : fog::TestPoint{};
+              if (!still) {
+                p.frequencyHz = f;
+                p.amplitudeDeg = a;
+                p.durationS = d;
+                p.settleS = settle;
+              }
+              const auto problems = PlanEditor::pointProblems(p, limits);
+              const fog::Status core = p.validate(limits);
+              QVERIFY2(problems.empty() == core.isOk(),
+                       qPrintable(QString("f %1 a %2 d %3 settle %4 static %5: core '%6'")
+                                      .arg(f).arg(a).arg(d).arg(settle).arg(still)
+                                      .arg(QString::fromStdString(core.message()))));
+              bad += core.isOk() ? 0 : 1;
+            }
+    QVERIFY(bad > 20);
+  }
+
   // A value beyond the table's limits is explained next to the field, and Run
   // is refused until it is fixed; periods and duration follow each other.
   void planEditorExplainsABadValueBeforeARunCanStart() {
@@ -317,14 +368,14 @@ class BenchUiTest : public QObject {
     QCOMPARE(text(0, M::kRate), QString("628.32 / 400"));
     QCOMPARE(text(0, M::kAccel), QString("39478.4 / 3000"));
     QCOMPARE(motion->flaggedCells(), 2);
-    QVERIFY2(table->item(0, M::kRate)->toolTip().contains("peak rate beyond the table's 400 deg/s on X"),
+    QVERIFY2(table->item(0, M::kRate)->toolTip().contains("peak rate beyond the table's 400 °/s on X"),
              qPrintable(table->item(0, M::kRate)->toolTip()));
     QVERIFY(!table->item(0, M::kAngle)->toolTip().contains("beyond"));
     // A controller's own limits replace the simulator's.
     fog::TurntableLimits tight;
     tight.maxAmplitudeDeg = 5.0;
     motion->setLimits(tight, 180.0, "remote tcp:127.0.0.1:5025");
-    QVERIFY(table->item(0, M::kAngle)->toolTip().contains("amplitude 10 deg is beyond the table's 5 deg on X"));
+    QVERIFY(table->item(0, M::kAngle)->toolTip().contains("amplitude 10° is beyond the table's 5° on X"));
     QCOMPARE(motion->flaggedCells(), 3);
   }
 
@@ -728,6 +779,16 @@ class BenchUiTest : public QObject {
     QVERIFY(w->diagnosisView()->verdictText().contains("scale_factor_error"));
     QVERIFY(w->diagnosisView()->gapMapRows() > 10);
     QVERIFY(w->diagnosisView()->gapMapColumns() >= 1);
+    {
+      // Labels readable (at least 9 pt) and "P1 S1" explained on the axis.
+      auto* gap = w->diagnosisView()->findChild<QwtPlot*>("gapMapPlot");
+      QVERIFY(gap);
+      for (int axis : {QwtPlot::yLeft, QwtPlot::xBottom})
+        QVERIFY2(gap->axisWidget(axis)->font().pointSizeF() >= 9.0,
+                 qPrintable(QString::number(gap->axisWidget(axis)->font().pointSizeF())));
+      QVERIFY2(gap->axisTitle(QwtPlot::xBottom).text().contains("test point P, segment S"),
+               qPrintable(gap->axisTitle(QwtPlot::xBottom).text()));
+    }
     int bars = 0;
     for (auto* item : w->diagnosisView()->shrinkPlot()->itemList(QwtPlotItem::Rtti_PlotBarChart))
       bars += static_cast<int>(static_cast<QwtPlotBarChart*>(item)->dataSize());
