@@ -3725,7 +3725,32 @@ File: %1</source>
         <translation>&lt;br&gt;&lt;span style=&apos;color:#a05000&apos;&gt;存储的结果给出 IMU 延迟 %1 ms（%2）；此处显示的是本版本用其常数所做的分析。&lt;/span&gt;</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+5"/>
+        <source>PASS</source>
+        <translation>通过</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>FAIL</source>
+        <translation>不通过</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>INVALID</source>
+        <translation>无效</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>IMU delay %1 ± %2 ms; + 2σ = %3 ms &lt; %4 ms limit (margin %5 ms)</source>
+        <translation>IMU 延迟 %1 ± %2 ms；+ 2σ = %3 ms &lt; 限值 %4 ms（余量 %5 ms）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>IMU delay %1 ± %2 ms; + 2σ = %3 ms ≥ %4 ms limit (over by %5 ms)</source>
+        <translation>IMU 延迟 %1 ± %2 ms；+ 2σ = %3 ms ≥ 限值 %4 ms（超出 %5 ms）</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>&lt;span style=&apos;color:%1&apos;&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/span&gt; (limit %3 ms): %4</source>
         <translation>&lt;span style=&apos;color:%1&apos;&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/span&gt;（限值 %3 ms）：%4</translation>
     </message>

@@ -448,6 +448,13 @@ class BenchUiTest : public QObject {
     QVERIFY2(std::abs(lag - 0.4658) < 0.01, qPrintable(QString("lag %1 ms").arg(lag)));
     QVERIFY(w->resultView()->reportText().contains("simulator truth: lag 0.4658"));
     QVERIFY(w->findChild<QLabel*>("lagLabel")->text().contains("lag 0.46"));
+    {
+      // The verdict in the GUI's words: the IMU delay + 2σ against the limit.
+      const QString verdict = w->findChild<QLabel*>("verdictLabel")->text();
+      QVERIFY2(verdict.contains("<b>PASS</b>") && verdict.contains(" ms limit (margin ") &&
+                   verdict.contains("IMU delay 0.5"),
+               qPrintable(verdict));
+    }
     QVERIFY(w->findChild<QLabel*>("framesLabel")->text().contains("checksum failures: 0"));
     // The live view saw every frame the run decoded.
     const auto& h = outcome->recording.health;
