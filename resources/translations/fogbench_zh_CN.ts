@@ -1186,12 +1186,12 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+846"/>
+        <location line="+854"/>
         <source>Diagnosis</source>
         <translation>诊断</translation>
     </message>
     <message>
-        <location line="-843"/>
+        <location line="-851"/>
         <source>Noise</source>
         <translation>噪声</translation>
     </message>
@@ -1269,12 +1269,12 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+615"/>
+        <location line="+623"/>
         <source>Open session</source>
         <translation>打开会话</translation>
     </message>
     <message>
-        <location line="-614"/>
+        <location line="-622"/>
         <source>fogbench sessions (*.fbs);;All files (*)</source>
         <translation>fogbench 会话 (*.fbs);;所有文件 (*)</translation>
     </message>
@@ -1554,7 +1554,27 @@ Quit: Ctrl+Q</source>
         <translation>无法创建会话文件夹“%1”；请另选一个</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+31"/>
+        <source>simulator, seed %1, %2</source>
+        <translation>仿真器，种子 %1，%2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>as fast as possible</source>
+        <translation>尽可能快</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>real time</source>
+        <translation>实时</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1× real time</source>
+        <translation>%1 倍实时</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>manual (the operator sets the controller)</source>
         <translation>手动（由操作员设置控制器）</translation>
     </message>
@@ -2249,7 +2269,7 @@ File: %1</source>
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../../ui/main_window.cpp" line="-988"/>
+        <location filename="../../ui/main_window.cpp" line="-996"/>
         <location filename="../../ui/plan_editor.cpp" line="-326"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
