@@ -620,7 +620,8 @@ class BenchUiTest : public QObject {
     QCOMPARE(results->resultCombo()->currentIndex(), static_cast<int>(resultsBefore));
     QCOMPARE(results->resultCombo()->currentData().toLongLong(), newestId);
     QVERIFY(results->resultCombo()->isEnabled());
-    const auto& reanalysedPoint = w->lastOutcome()->report->points.front();
+    // A copy: choosing another result below replaces the outcome this point lived in.
+    const auto reanalysedPoint = w->lastOutcome()->report->points.front();
     QCOMPARE(results->delayTable()->item(3, 1)->text().toDouble(), 0.3);
     QVERIFY(std::abs(reanalysedPoint.gyroDelayMs - (reanalysedPoint.imuDelayMs - 0.3)) < 1e-9);
     const QString newest = QString("result %1 of %1").arg(resultsBefore + 1);
