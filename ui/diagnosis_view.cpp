@@ -407,7 +407,7 @@ void DiagnosisView::showGapMap() {
   gapMapPlot_->setAxisScaleDraw(QwtPlot::yLeft, new NamedScaleDraw(rowNames_));
   // Readable labels (at least 9 pt); with many rows every n-th is named
   // rather than all of them shrunk to a few pixels.
-  const double kLabelsShown = 16.0;
+  const double kLabelsShown = 8.0;
   const double rowStep = std::max(1.0, std::ceil(nRows / kLabelsShown));
   const double columnStep = std::max(1.0, std::ceil(nCols / kLabelsShown));
   gapMapPlot_->setAxisScale(QwtPlot::xBottom, -0.5, nCols - 0.5, columnStep);
