@@ -25,8 +25,8 @@ CommandedMotionTable::CommandedMotionTable(QWidget* parent) : QWidget(parent) {
   limitsLabel_->setWordWrap(true);
   table_ = new QTableWidget(0, kColumnCount);
   table_->setObjectName("commandedMotionTable");
-  table_->setHorizontalHeaderLabels({tr("Point"), tr("Axis"), tr("Frequency (Hz)"), tr("Angle (deg)"),
-                                     tr("Peak rate (deg/s)"), tr("Peak accel. (deg/s²)")});
+  table_->setHorizontalHeaderLabels({tr("Point"), tr("Axis"), tr("Frequency (Hz)"), tr("Angle (°)"),
+                                     tr("Peak rate (°/s)"), tr("Peak accel. (°/s²)")});
   table_->verticalHeader()->setVisible(false);
   table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
   table_->setSelectionMode(QAbstractItemView::NoSelection);
@@ -51,8 +51,8 @@ void CommandedMotionTable::setLimits(const TurntableLimits& limits, double maxPo
 }
 
 void CommandedMotionTable::rebuild() {
-  limitsLabel_->setText(tr("Limits of %1, per axis: amplitude %2 deg, frequency %3 Hz, peak rate %4 deg/s, "
-                           "peak acceleration %5 deg/s², angle within ±%6 deg. Red: beyond a limit.")
+  limitsLabel_->setText(tr("Limits of %1, per axis: amplitude %2°, frequency %3 Hz, peak rate %4 °/s, "
+                           "peak acceleration %5 °/s², angle within ±%6°. Red: beyond a limit.")
                             .arg(source_)
                             .arg(limits_.maxAmplitudeDeg)
                             .arg(limits_.maxFrequencyHz)
@@ -90,12 +90,12 @@ void CommandedMotionTable::rebuild() {
     // The angle the swing axis covers; the others hold their positions.
     QString angleProblem;
     if (amp > limits_.maxAmplitudeDeg)
-      angleProblem = tr("amplitude %1 deg is beyond the table's %2 deg on %3")
+      angleProblem = tr("amplitude %1° is beyond the table's %2° on %3")
                          .arg(amp)
                          .arg(limits_.maxAmplitudeDeg)
                          .arg(axis);
     else if (std::abs(centre) + amp > maxPositionDeg_)
-      angleProblem = tr("the angle leaves the table's ±%1 deg").arg(maxPositionDeg_);
+      angleProblem = tr("the angle leaves the table's ±%1°").arg(maxPositionDeg_);
     put(kAngle,
         tr("%1 … %2 (±%3)")
             .arg(centre - amp, 0, 'f', 2)
@@ -104,11 +104,11 @@ void CommandedMotionTable::rebuild() {
         angleProblem);
     put(kRate, tr("%1 / %2").arg(rate, 0, 'f', 2).arg(limits_.maxRateDegPerS),
         rate > limits_.maxRateDegPerS
-            ? tr("peak rate beyond the table's %1 deg/s on %2").arg(limits_.maxRateDegPerS).arg(axis)
+            ? tr("peak rate beyond the table's %1 °/s on %2").arg(limits_.maxRateDegPerS).arg(axis)
             : QString());
     put(kAccel, tr("%1 / %2").arg(accel, 0, 'f', 1).arg(limits_.maxAccelDegPerS2),
         accel > limits_.maxAccelDegPerS2
-            ? tr("peak acceleration beyond the table's %1 deg/s² on %2").arg(limits_.maxAccelDegPerS2).arg(axis)
+            ? tr("peak acceleration beyond the table's %1 °/s² on %2").arg(limits_.maxAccelDegPerS2).arg(axis)
             : QString());
   }
 }

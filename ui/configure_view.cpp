@@ -197,7 +197,14 @@ ConfigureView::ConfigureView(QWidget* parent) : QWidget(parent) {
     const QString dir = QFileDialog::getExistingDirectory(this, tr("Session folder"), sessionFolder());
     if (!dir.isEmpty()) emit folderChosen(dir);
   });
-  connect(folderEdit_, &QLineEdit::editingFinished, this, [this] { emit folderChosen(folderEdit_->text()); });
+  // Only a folder the operator typed is chosen: leaving the field (focus
+  // out, the window deactivated) or pressing Enter on a folder set by the
+  // program (a one-off --session-folder) chooses nothing.
+  connect(folderEdit_, &QLineEdit::editingFinished, this, [this] {
+    if (!folderEdit_->isModified()) return;
+    folderEdit_->setModified(false);
+    emit folderChosen(folderEdit_->text());
+  });
   connect(recordCheck_, &QCheckBox::toggled, folderEdit_, &QWidget::setEnabled);
   connect(edit, &QPushButton::clicked, this, &ConfigureView::editBenchSettingsRequested);
 }

@@ -35,6 +35,9 @@ namespace fog::ui {
 
 namespace {
 
+// Smallest font of the gap map's labels.
+constexpr double kMinLabelPt = 9.0;
+
 constexpr double kZRange = 5.0;  // the heat map saturates at |z| = 5
 const QColor kReal(31, 119, 180);
 const QColor kSim(255, 127, 14);
@@ -402,13 +405,25 @@ void DiagnosisView::showGapMap() {
   gapMapPlot_->setAxisTitle(QwtPlot::yRight, tr("z"));
   gapMapPlot_->setAxisScaleDraw(QwtPlot::xBottom, new NamedScaleDraw(columnNames_));
   gapMapPlot_->setAxisScaleDraw(QwtPlot::yLeft, new NamedScaleDraw(rowNames_));
-  gapMapPlot_->setAxisScale(QwtPlot::xBottom, -0.5, nCols - 0.5, 1.0);
-  gapMapPlot_->setAxisScale(QwtPlot::yLeft, -0.5, nRows - 0.5, 1.0);
+  // Readable labels (at least 9 pt); with many rows every n-th is named
+  // rather than all of them shrunk to a few pixels.
+  const double kLabelsShown = 8.0;
+  const double rowStep = std::max(1.0, std::ceil(nRows / kLabelsShown));
+  const double columnStep = std::max(1.0, std::ceil(nCols / kLabelsShown));
+  gapMapPlot_->setAxisScale(QwtPlot::xBottom, -0.5, nCols - 0.5, columnStep);
+  gapMapPlot_->setAxisScale(QwtPlot::yLeft, -0.5, nRows - 0.5, rowStep);
   gapMapPlot_->setAxisMaxMinor(QwtPlot::xBottom, 0);
   gapMapPlot_->setAxisMaxMinor(QwtPlot::yLeft, 0);
-  QFont small = gapMapPlot_->axisWidget(QwtPlot::yLeft)->font();
-  small.setPointSizeF(std::max(5.0, small.pointSizeF() * (nRows > 24 ? 0.6 : 0.85)));
-  gapMapPlot_->axisWidget(QwtPlot::yLeft)->setFont(small);
+  for (int axis : {QwtPlot::yLeft, QwtPlot::xBottom}) {
+    QFont font = gapMapPlot_->axisWidget(axis)->font();
+    if (font.pointSizeF() < kMinLabelPt) font.setPointSizeF(kMinLabelPt);
+    gapMapPlot_->axisWidget(axis)->setFont(font);
+  }
+  // "P1 S2" explained where it is read.
+  QwtText columnsTitle(tr("test point P, segment S (P2 S1: test point 2, segment 1)"));
+  QFont titleFont = gapMapPlot_->axisWidget(QwtPlot::xBottom)->font();
+  columnsTitle.setFont(titleFont);
+  gapMapPlot_->setAxisTitle(QwtPlot::xBottom, columnsTitle);
   gapMapPlot_->replot();
   gapMapInteraction_->setHome();
 }

@@ -649,7 +649,15 @@ void MainWindow::startRun() {
   const double speed = configureView_->pace();
   resultView_->clear();
   shown_.reset();
-  const QString sourceText = QString::fromStdString(request.options.info.source);
+  // The simulator described in the GUI's language; other sources by the core (port, file).
+  const QString sourceText =
+      sourceKind() == SourceKind::kSimulator
+          ? tr("simulator, seed %1, %2")
+                .arg(configureView_->seed())
+                .arg(speed <= 0.0   ? tr("as fast as possible")
+                     : speed == 1.0 ? tr("real time")
+                                    : tr("%1× real time").arg(speed))
+          : QString::fromStdString(request.options.info.source);
   // The table status: the simulator drives its simulated turntable through
   // the plan; a serial board runs its own plan and a replay drives nothing.
   // A driven table (remote, manual) shows what its controller reports.

@@ -34,7 +34,52 @@ QString durationText(double s) {
   return s >= 120 ? QObject::tr("%1 min").arg(s / 60.0, 0, 'f', 1) : QObject::tr("%1 s").arg(s, 0, 'f', 0);
 }
 
+QString num(double v) { return QString::number(v, 'g', 6); }
+
 }  // namespace
+
+std::vector<PlanEditor::PointProblem> PlanEditor::pointProblems(const TestPoint& p, const TurntableLimits& limits) {
+  std::vector<PointProblem> out;
+  auto add = [&out](Column c, const QString& text) { out.push_back({c, text}); };
+  for (int a = 0; a < kAxisCount; ++a)
+    if (!std::isfinite(p.positionDeg[a]) || std::abs(p.positionDeg[a]) > kMaxPositionDeg)
+      add(kAxis, tr("table position of axis %1 must be within ±%2°, got %3°")
+                     .arg(QString::fromLatin1(axisLabel(static_cast<Axis>(a))), num(kMaxPositionDeg), num(p.positionDeg[a])));
+  const bool durationOk = std::isfinite(p.durationS);
+  if (p.isStatic()) {
+    if (p.frequencyHz != 0.0 || p.amplitudeDeg != 0.0 || p.startPhaseDeg != 0.0)
+      add(kKind, tr("a static segment has no frequency, amplitude or start phase (got %1 Hz, %2°, %3°); leave them out")
+                     .arg(num(p.frequencyHz), num(p.amplitudeDeg), num(p.startPhaseDeg)));
+    if (!durationOk || p.durationS <= 0.0) add(kDuration, tr("a static segment needs a duration > 0 s, got %1").arg(num(p.durationS)));
+  } else {
+    const bool frequencyOk = std::isfinite(p.frequencyHz) && p.frequencyHz > 0.0;
+    const bool amplitudeOk = std::isfinite(p.amplitudeDeg) && p.amplitudeDeg > 0.0;
+    if (!frequencyOk) add(kFrequency, tr("frequency must be > 0 Hz, got %1").arg(num(p.frequencyHz)));
+    else if (p.frequencyHz > limits.maxFrequencyHz)
+      add(kFrequency, tr("frequency %1 Hz is beyond the table limit of %2 Hz").arg(num(p.frequencyHz), num(limits.maxFrequencyHz)));
+    if (!amplitudeOk) add(kAmplitude, tr("amplitude must be > 0°, got %1").arg(num(p.amplitudeDeg)));
+    else if (p.amplitudeDeg > limits.maxAmplitudeDeg)
+      add(kAmplitude,
+          tr("amplitude %1° is beyond the table limit of %2°").arg(num(p.amplitudeDeg), num(limits.maxAmplitudeDeg)));
+    if (frequencyOk && amplitudeOk) {
+      const double w = 2.0 * 3.14159265358979323846 * p.frequencyHz;
+      if (w * p.amplitudeDeg > limits.maxRateDegPerS)
+        add(kFrequency, tr("peak rate %1 °/s exceeds the table limit of %2 °/s; lower the frequency or amplitude")
+                            .arg(num(w * p.amplitudeDeg), num(limits.maxRateDegPerS)));
+      if (w * w * p.amplitudeDeg > limits.maxAccelDegPerS2)
+        add(kFrequency, tr("peak acceleration %1 °/s² exceeds the table limit of %2 °/s²; lower the frequency or amplitude")
+                            .arg(num(w * w * p.amplitudeDeg), num(limits.maxAccelDegPerS2)));
+    }
+    if (!durationOk || (frequencyOk && p.durationS < 2.0 * p.periodS()))
+      add(kDuration, tr("duration %1 s is under two swing periods (%2 s); a delay needs at least two whole periods")
+                         .arg(num(p.durationS), num(frequencyOk ? 2.0 * p.periodS() : 0.0)));
+    if (!std::isfinite(p.startPhaseDeg)) add(kCheck, tr("start phase must be finite"));
+  }
+  if (durationOk && p.durationS > 24.0 * 3600.0)
+    add(kDuration, tr("duration %1 s is over 24 h; split the test into points").arg(num(p.durationS)));
+  if (!std::isfinite(p.settleS) || p.settleS < 0.0) add(kSettle, tr("settle time must be >= 0 s, got %1").arg(num(p.settleS)));
+  return out;
+}
 
 PlanEditor::PlanEditor(QWidget* parent) : QWidget(parent) {
   auto* layout = new QVBoxLayout(this);
@@ -281,29 +326,28 @@ void PlanEditor::validate() {
   double totalS = restSpin_->value();
   for (int r = 0; r < table_->rowCount(); ++r) {
     const TestPoint p = rowPoint(r);
-    const Status validity = p.validate(limits_);
-    const bool ok = validity.isOk();
+    const std::vector<PointProblem> found = pointProblems(p, limits_);
+    const bool ok = found.empty();
+    QStringList texts;
+    for (const auto& f : found) texts << f.text;
     auto* check = table_->item(r, kCheck);
+    // Every problem of the row, one a line; the cell wraps, its tooltip holds the whole text.
     check->setText(ok ? (p.isStatic() ? tr("ok: table at rest, %1 in all").arg(durationText(p.settleS + p.durationS))
                                       : tr("ok: %1 periods, %2 in all").arg(p.durationS * p.frequencyHz, 0, 'f', 1)
                                             .arg(durationText(p.settleS + p.durationS)))
-                      : displayUnits(QString::fromStdString(validity.message())));
+                      : texts.join("\n"));
     check->setForeground(ok ? QColor(0, 110, 0) : QColor(190, 0, 0));
     check->setToolTip(check->text());
-    // Mark the field the message is about.
-    const QString w = displayUnits(QString::fromStdString(validity.message()));
-    const Column bad = w.startsWith("frequency") || w.startsWith("peak") ? kFrequency
-                       : w.startsWith("amplitude")                       ? kAmplitude
-                       : w.startsWith("duration")                        ? kDuration
-                       : w.startsWith("settle")                          ? kSettle
-                                                                         : kCheck;
+    // Mark each field a problem is about, its tooltip saying what.
     for (int c = kFrequency; c < kCheck; ++c) {  // the editable numbers
+      QStringList about;
+      for (const auto& f : found)
+        if (f.column == c || (f.column == kDuration && c == kPeriods)) about << f.text;
       auto* s = spin(r, static_cast<Column>(c));
-      const bool flagged = !ok && (c == bad || (bad == kDuration && c == kPeriods));
-      s->setStyleSheet(flagged ? "background: #ffd6d6;" : QString());
-      s->setToolTip(flagged ? w : QString());
+      s->setStyleSheet(about.isEmpty() ? QString() : QStringLiteral("background: #ffd6d6;"));
+      s->setToolTip(about.join("\n"));
     }
-    if (!ok) problems << tr("test point %1: %2").arg(r + 1).arg(w);
+    for (const QString& t : texts) problems << tr("test point %1: %2").arg(r + 1).arg(t);
     totalS += p.settleS + p.durationS + restSpin_->value();
   }
   if (table_->rowCount() == 0) problems << tr("the test plan has no test points: add one or load a preset");

@@ -9,6 +9,7 @@
 
 #include <QString>
 #include <QWidget>
+#include <vector>
 
 #include "common/test_plan.h"
 
@@ -28,6 +29,17 @@ class PlanEditor : public QWidget {
   enum Column { kKind = 0, kAxis, kFrequency, kAmplitude, kDuration, kPeriods, kSettle, kCheck, kColumnCount };
 
   explicit PlanEditor(QWidget* parent = nullptr);
+
+  // One thing wrong with a test point and the field it is about (kCheck:
+  // none in particular).
+  struct PointProblem {
+    Column column;
+    QString text;
+  };
+  // Every problem of one test point, not only the first: the conditions of
+  // TestPoint::validate, in the GUI's words (translated) and units. Empty
+  // exactly when TestPoint::validate is ok.
+  static std::vector<PointProblem> pointProblems(const TestPoint& p, const TurntableLimits& limits);
 
   void setPlan(const TestPlan& plan);
   // The plan as edited (also when invalid).

@@ -462,12 +462,26 @@ void ResultView::showTestPoint(int position) {
                    .arg(num(stored, 4), versionText(*r));
   lagLabel_->setText(lag);
   const analysis::PointVerdict verdict = analysis::judgePoint(p, analysis::kDefaultImuDelayLimitMs);
-  const QString word = QString::fromLatin1(analysis::verdictName(verdict.verdict)).toUpper();
+  const QString word = verdict.verdict == analysis::Verdict::kPass   ? tr("PASS")
+                       : verdict.verdict == analysis::Verdict::kFail ? tr("FAIL")
+                                                                     : tr("INVALID");
   const char* colour = verdict.verdict == analysis::Verdict::kPass   ? "#146e28"
                        : verdict.verdict == analysis::Verdict::kFail ? "#b00000"
                                                                      : "#a05000";
   QStringList reasons;
-  for (const auto& why : verdict.reasons) reasons << QString::fromStdString(why).toHtmlEscaped();
+  if (verdict.verdict == analysis::Verdict::kInvalid) {
+    for (const auto& why : verdict.reasons) reasons << QString::fromStdString(why).toHtmlEscaped();
+  } else {
+    // The comparison with the limit, in the GUI's language.
+    const double limit = analysis::kDefaultImuDelayLimitMs;
+    const int d = p.imuDelayStdMs > 0.0 ? std::clamp(1 - static_cast<int>(std::floor(std::log10(p.imuDelayStdMs))), 0, 6) : 4;
+    const bool pass = verdict.verdict == analysis::Verdict::kPass;
+    reasons << (pass ? tr("IMU delay %1 ± %2 ms; + 2σ = %3 ms < %4 ms limit (margin %5 ms)")
+                     : tr("IMU delay %1 ± %2 ms; + 2σ = %3 ms ≥ %4 ms limit (over by %5 ms)"))
+                   .arg(num(p.imuDelayMs, d), num(p.imuDelayStdMs, d), num(verdict.upperMs, d), num(limit, 1),
+                        num(std::abs(limit - verdict.upperMs), d))
+                   .toHtmlEscaped();
+  }
   verdictLabel_->setText(tr("<span style='color:%1'><b>%2</b></span> (limit %3 ms): %4")
                              .arg(colour, word, num(analysis::kDefaultImuDelayLimitMs, 1), reasons.join("<br>")));
   fillTables(i);

@@ -125,31 +125,51 @@
     </message>
     <message>
         <location line="+0"/>
-        <source>Angle (deg)</source>
+        <source>Angle (°)</source>
         <translation>角度 (°)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>Peak rate (deg/s)</source>
-        <translation>峰值角速度 (°/s)</translation>
+        <source>Peak rate (°/s)</source>
+        <translation>峰值角速率 (°/s)</translation>
     </message>
     <message>
         <location line="+0"/>
-        <source>Peak accel. (deg/s²)</source>
+        <source>Peak accel. (°/s²)</source>
         <translation>峰值角加速度 (°/s²)</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+25"/>
+        <source>Limits of %1, per axis: amplitude %2°, frequency %3 Hz, peak rate %4 °/s, peak acceleration %5 °/s², angle within ±%6°. Red: beyond a limit.</source>
+        <translation>%1 的限值（每轴）：幅值 %2°，频率 %3 Hz，峰值角速率 %4 °/s，峰值角加速度 %5 °/s²，角度在 ±%6° 以内。红色：超出限值。</translation>
+    </message>
+    <message>
+        <location line="+39"/>
+        <source>amplitude %1° is beyond the table&apos;s %2° on %3</source>
+        <translation>幅值 %1° 超出转台 %3 轴的 %2°</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the angle leaves the table&apos;s ±%1°</source>
+        <translation>角度超出转台的 ±%1°</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>peak rate beyond the table&apos;s %1 °/s on %2</source>
+        <translation>峰值角速率超出转台 %2 轴的 %1 °/s</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>peak acceleration beyond the table&apos;s %1 °/s² on %2</source>
+        <translation>峰值角加速度超出转台 %2 轴的 %1 °/s²</translation>
+    </message>
+    <message>
+        <location line="-74"/>
         <source>the simulator&apos;s turntable</source>
         <translation>仿真器的转台</translation>
     </message>
     <message>
-        <location line="+17"/>
-        <source>Limits of %1, per axis: amplitude %2 deg, frequency %3 Hz, peak rate %4 deg/s, peak acceleration %5 deg/s², angle within ±%6 deg. Red: beyond a limit.</source>
-        <translation>%1 的限值（每轴）：幅值 %2°，频率 %3 Hz，峰值角速度 %4°/s，峰值角加速度 %5°/s²，角度在 ±%6° 以内。红色：超出限值。</translation>
-    </message>
-    <message>
-        <location line="+34"/>
+        <location line="+51"/>
         <source>frequency beyond the table&apos;s %1 Hz on %2</source>
         <translation>频率超出转台 %2 轴的 %1 Hz</translation>
     </message>
@@ -159,17 +179,7 @@
         <translation>静止</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>amplitude %1 deg is beyond the table&apos;s %2 deg on %3</source>
-        <translation>幅值 %1° 超出转台 %3 轴的 %2°</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>the angle leaves the table&apos;s ±%1 deg</source>
-        <translation>角度超出转台的 ±%1°</translation>
-    </message>
-    <message>
-        <location line="+2"/>
+        <location line="+11"/>
         <source>%1 … %2 (±%3)</source>
         <translation>%1 … %2 (±%3)</translation>
     </message>
@@ -178,16 +188,6 @@
         <location line="+4"/>
         <source>%1 / %2</source>
         <translation>%1 / %2</translation>
-    </message>
-    <message>
-        <location line="-2"/>
-        <source>peak rate beyond the table&apos;s %1 deg/s on %2</source>
-        <translation>峰值角速度超出转台 %2 轴的 %1°/s</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>peak acceleration beyond the table&apos;s %1 deg/s² on %2</source>
-        <translation>峰值角加速度超出转台 %2 轴的 %1°/s²</translation>
     </message>
 </context>
 <context>
@@ -635,7 +635,7 @@
         <translation>会话文件夹</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+31"/>
         <source>%1× real time</source>
         <translation>%1 倍实时</translation>
     </message>
@@ -667,7 +667,7 @@ counter %5 MHz / %6 bit</source>
 <context>
     <name>fog::ui::DiagnosisView</name>
     <message>
-        <location filename="../../ui/diagnosis_view.cpp" line="+95"/>
+        <location filename="../../ui/diagnosis_view.cpp" line="+98"/>
         <source>Test point</source>
         <translation>测试点</translation>
     </message>
@@ -859,6 +859,11 @@ Press Diagnose in the Results view to start it again.</source>
         <location line="+36"/>
         <source>z</source>
         <translation>z</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>test point P, segment S (P2 S1: test point 2, segment 1)</source>
+        <translation>点N 段M：测试点 N 的第 M 段（点2 段1：测试点 2 的第 1 段）</translation>
     </message>
 </context>
 <context>
@@ -1181,12 +1186,12 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+846"/>
+        <location line="+854"/>
         <source>Diagnosis</source>
         <translation>诊断</translation>
     </message>
     <message>
-        <location line="-843"/>
+        <location line="-851"/>
         <source>Noise</source>
         <translation>噪声</translation>
     </message>
@@ -1264,12 +1269,12 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+615"/>
+        <location line="+623"/>
         <source>Open session</source>
         <translation>打开会话</translation>
     </message>
     <message>
-        <location line="-614"/>
+        <location line="-622"/>
         <source>fogbench sessions (*.fbs);;All files (*)</source>
         <translation>fogbench 会话 (*.fbs);;所有文件 (*)</translation>
     </message>
@@ -1549,7 +1554,27 @@ Quit: Ctrl+Q</source>
         <translation>无法创建会话文件夹“%1”；请另选一个</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+31"/>
+        <source>simulator, seed %1, %2</source>
+        <translation>仿真器，种子 %1，%2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>as fast as possible</source>
+        <translation>尽可能快</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>real time</source>
+        <translation>实时</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1× real time</source>
+        <translation>%1 倍实时</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>manual (the operator sets the controller)</source>
         <translation>手动（由操作员设置控制器）</translation>
     </message>
@@ -1960,7 +1985,72 @@ File: %1</source>
 <context>
     <name>fog::ui::PlanEditor</name>
     <message>
-        <location filename="../../ui/plan_editor.cpp" line="+44"/>
+        <location filename="../../ui/plan_editor.cpp" line="+46"/>
+        <source>table position of axis %1 must be within ±%2°, got %3°</source>
+        <translation>%1 轴的转台位置须在 ±%2° 以内，当前为 %3°</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>a static segment has no frequency, amplitude or start phase (got %1 Hz, %2°, %3°); leave them out</source>
+        <translation>静态段没有频率、幅值或起始相位（当前为 %1 Hz、%2°、%3°）；请去掉它们</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>a static segment needs a duration &gt; 0 s, got %1</source>
+        <translation>静态段的时长须 &gt; 0 s，当前为 %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>frequency must be &gt; 0 Hz, got %1</source>
+        <translation>频率须 &gt; 0 Hz，当前为 %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>frequency %1 Hz is beyond the table limit of %2 Hz</source>
+        <translation>频率 %1 Hz 超出转台限值 %2 Hz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>amplitude must be &gt; 0°, got %1</source>
+        <translation>幅值须 &gt; 0°，当前为 %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>amplitude %1° is beyond the table limit of %2°</source>
+        <translation>幅值 %1° 超出转台限值 %2°</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>peak rate %1 °/s exceeds the table limit of %2 °/s; lower the frequency or amplitude</source>
+        <translation>峰值角速率 %1 °/s 超出转台限值 %2 °/s；请降低频率或幅值</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>peak acceleration %1 °/s² exceeds the table limit of %2 °/s²; lower the frequency or amplitude</source>
+        <translation>峰值角加速度 %1 °/s² 超出转台限值 %2 °/s²；请降低频率或幅值</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>duration %1 s is under two swing periods (%2 s); a delay needs at least two whole periods</source>
+        <translation>时长 %1 s 不足两个摆动周期（%2 s）；测量延迟至少需要两个完整周期</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>start phase must be finite</source>
+        <translation>起始相位须为有限值</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>duration %1 s is over 24 h; split the test into points</source>
+        <translation>时长 %1 s 超过 24 h；请将测试拆分为多个测试点</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>settle time must be &gt;= 0 s, got %1</source>
+        <translation>稳定时间须 &gt;= 0 s，当前为 %1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>Preset</source>
         <translation>预设</translation>
     </message>
@@ -2102,7 +2192,7 @@ File: %1</source>
         <translation>开始记录前的摆动时间</translation>
     </message>
     <message>
-        <location line="+129"/>
+        <location line="+132"/>
         <source>ok: table at rest, %1 in all</source>
         <translation>正常：转台静止，共 %1</translation>
     </message>
@@ -2112,7 +2202,7 @@ File: %1</source>
         <translation>正常：%1 个周期，共 %2</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+14"/>
         <source>test point %1: %2</source>
         <translation>测试点 %1：%2</translation>
     </message>
@@ -2179,8 +2269,8 @@ File: %1</source>
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../../ui/main_window.cpp" line="-988"/>
-        <location filename="../../ui/plan_editor.cpp" line="-282"/>
+        <location filename="../../ui/main_window.cpp" line="-996"/>
+        <location filename="../../ui/plan_editor.cpp" line="-326"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
@@ -3655,7 +3745,32 @@ File: %1</source>
         <translation>&lt;br&gt;&lt;span style=&apos;color:#a05000&apos;&gt;存储的结果给出 IMU 延迟 %1 ms（%2）；此处显示的是本版本用其常数所做的分析。&lt;/span&gt;</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+5"/>
+        <source>PASS</source>
+        <translation>通过</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>FAIL</source>
+        <translation>不通过</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>INVALID</source>
+        <translation>无效</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>IMU delay %1 ± %2 ms; + 2σ = %3 ms &lt; %4 ms limit (margin %5 ms)</source>
+        <translation>IMU 延迟 %1 ± %2 ms；+ 2σ = %3 ms &lt; 限值 %4 ms（余量 %5 ms）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>IMU delay %1 ± %2 ms; + 2σ = %3 ms ≥ %4 ms limit (over by %5 ms)</source>
+        <translation>IMU 延迟 %1 ± %2 ms；+ 2σ = %3 ms ≥ 限值 %4 ms（超出 %5 ms）</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>&lt;span style=&apos;color:%1&apos;&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/span&gt; (limit %3 ms): %4</source>
         <translation>&lt;span style=&apos;color:%1&apos;&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/span&gt;（限值 %3 ms）：%4</translation>
     </message>

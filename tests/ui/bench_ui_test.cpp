@@ -39,6 +39,7 @@
 #include <qwt_plot_barchart.h>
 #include <qwt_scale_div.h>
 #include <qwt_scale_map.h>
+#include <qwt_scale_widget.h>
 #include <vector>
 
 #include "common/version.h"
@@ -74,6 +75,13 @@ class BenchUiTest : public QObject {
 
  private:
   QTemporaryDir sessions_;
+  // This process's remembered choices (QSettings). Test mode alone is not
+  // private: it puts every test process's settings in one file,
+  // ~/.qttest/config/<organisation>/<program>.conf, whatever XDG_CONFIG_HOME
+  // says, so UI tests running at once (ctest -j2 runs fog_ui_tests beside
+  // fog_ui_table_tests; other checkouts run theirs) overwrote each other's
+  // remembered session folder between a test's two windows.
+  QTemporaryDir settings_;
 
   static QPushButton* button(QWidget& w, const char* name) {
     auto* b = w.findChild<QPushButton*>(name);
@@ -210,6 +218,62 @@ class BenchUiTest : public QObject {
     QStandardPaths::setTestModeEnabled(true);
     QCoreApplication::setOrganizationName("fogbench-tests");
     QVERIFY(sessions_.isValid());
+    QVERIFY(settings_.isValid());
+    for (auto format : {QSettings::NativeFormat, QSettings::IniFormat})
+      QSettings::setPath(format, QSettings::UserScope, settings_.path());
+    // No other process can write where this one remembers.
+    const QString file = QSettings().fileName();
+    QVERIFY2(file.startsWith(settings_.path() + "/"), qPrintable(file));
+  }
+
+  // One test point with several problems lists every one of them, in the
+  // row (wrapped, the whole text in its tooltip), at each field it is about
+  // and in the plan's summary; the GUI's check agrees with the core's.
+  void planCheckListsEveryProblemOfAPoint() {
+    auto w = window();
+    auto* editor = w->planEditor();
+    QVERIFY(editor->loadPreset("paper-fast"));
+    setValue(editor, 0, PlanEditor::kFrequency, 30.0);  // beyond 20 Hz
+    setValue(editor, 0, PlanEditor::kAmplitude, 50.0);  // beyond 45°
+    auto* check = editor->table()->item(0, PlanEditor::kCheck);
+    for (const QString& expected : {QString("frequency 30 Hz is beyond the table limit of 20 Hz"),
+                                    QString("amplitude 50° is beyond the table limit of 45°"),
+                                    QString("peak rate 9424.78 °/s exceeds the table limit of 400 °/s")}) {
+      QVERIFY2(check->text().contains(expected), qPrintable(check->text()));
+      QVERIFY2(check->toolTip().contains(expected), qPrintable(check->toolTip()));
+      QVERIFY2(editor->problem().contains("test point 1: " + expected), qPrintable(editor->problem()));
+    }
+    QCOMPARE(editor->problem().count("test point 1:"), 4);  // frequency, amplitude, rate, acceleration
+    QVERIFY(editor->cellEditor(0, PlanEditor::kAmplitude)->toolTip().contains("amplitude 50°"));
+    QVERIFY(!editor->cellEditor(0, PlanEditor::kAmplitude)->toolTip().contains("frequency 30 Hz"));
+    QVERIFY(editor->cellEditor(0, PlanEditor::kFrequency)->toolTip().contains("frequency 30 Hz"));
+    QVERIFY(editor->cellEditor(0, PlanEditor::kDuration)->toolTip().isEmpty());
+    QVERIFY(!editor->problem().contains("deg"));
+
+    // The same verdict as TestPoint::validate over a grid of points.
+    const fog::TurntableLimits limits;
+    int bad = 0;
+    for (double f : {-1.0, 0.0, 0.5, 5.0, 25.0})
+      for (double a : {0.0, 2.0, 30.0, 60.0})
+        for (double d : {0.5, 10.0, 1e5})
+          for (double settle : {-1.0, 2.0})
+            for (bool still : {false, true}) {
+              fog::TestPoint p = still ? fog::TestPoint::staticSegment(fog::Axis::kY, d, settle) : fog::TestPoint{};
+              if (!still) {
+                p.frequencyHz = f;
+                p.amplitudeDeg = a;
+                p.durationS = d;
+                p.settleS = settle;
+              }
+              const auto problems = PlanEditor::pointProblems(p, limits);
+              const fog::Status core = p.validate(limits);
+              QVERIFY2(problems.empty() == core.isOk(),
+                       qPrintable(QString("f %1 a %2 d %3 settle %4 static %5: core '%6'")
+                                      .arg(f).arg(a).arg(d).arg(settle).arg(still)
+                                      .arg(QString::fromStdString(core.message()))));
+              bad += core.isOk() ? 0 : 1;
+            }
+    QVERIFY(bad > 20);
   }
 
   // A value beyond the table's limits is explained next to the field, and Run
@@ -304,14 +368,14 @@ class BenchUiTest : public QObject {
     QCOMPARE(text(0, M::kRate), QString("628.32 / 400"));
     QCOMPARE(text(0, M::kAccel), QString("39478.4 / 3000"));
     QCOMPARE(motion->flaggedCells(), 2);
-    QVERIFY2(table->item(0, M::kRate)->toolTip().contains("peak rate beyond the table's 400 deg/s on X"),
+    QVERIFY2(table->item(0, M::kRate)->toolTip().contains("peak rate beyond the table's 400 °/s on X"),
              qPrintable(table->item(0, M::kRate)->toolTip()));
     QVERIFY(!table->item(0, M::kAngle)->toolTip().contains("beyond"));
     // A controller's own limits replace the simulator's.
     fog::TurntableLimits tight;
     tight.maxAmplitudeDeg = 5.0;
     motion->setLimits(tight, 180.0, "remote tcp:127.0.0.1:5025");
-    QVERIFY(table->item(0, M::kAngle)->toolTip().contains("amplitude 10 deg is beyond the table's 5 deg on X"));
+    QVERIFY(table->item(0, M::kAngle)->toolTip().contains("amplitude 10° is beyond the table's 5° on X"));
     QCOMPARE(motion->flaggedCells(), 3);
   }
 
@@ -384,6 +448,13 @@ class BenchUiTest : public QObject {
     QVERIFY2(std::abs(lag - 0.4658) < 0.01, qPrintable(QString("lag %1 ms").arg(lag)));
     QVERIFY(w->resultView()->reportText().contains("simulator truth: lag 0.4658"));
     QVERIFY(w->findChild<QLabel*>("lagLabel")->text().contains("lag 0.46"));
+    {
+      // The verdict in the GUI's words: the IMU delay + 2σ against the limit.
+      const QString verdict = w->findChild<QLabel*>("verdictLabel")->text();
+      QVERIFY2(verdict.contains("<b>PASS</b>") && verdict.contains(" ms limit (margin ") &&
+                   verdict.contains("IMU delay 0.5"),
+               qPrintable(verdict));
+    }
     QVERIFY(w->findChild<QLabel*>("framesLabel")->text().contains("checksum failures: 0"));
     // The live view saw every frame the run decoded.
     const auto& h = outcome->recording.health;
@@ -549,7 +620,8 @@ class BenchUiTest : public QObject {
     QCOMPARE(results->resultCombo()->currentIndex(), static_cast<int>(resultsBefore));
     QCOMPARE(results->resultCombo()->currentData().toLongLong(), newestId);
     QVERIFY(results->resultCombo()->isEnabled());
-    const auto& reanalysedPoint = w->lastOutcome()->report->points.front();
+    // A copy: choosing another result below replaces the outcome this point lived in.
+    const auto reanalysedPoint = w->lastOutcome()->report->points.front();
     QCOMPARE(results->delayTable()->item(3, 1)->text().toDouble(), 0.3);
     QVERIFY(std::abs(reanalysedPoint.gyroDelayMs - (reanalysedPoint.imuDelayMs - 0.3)) < 1e-9);
     const QString newest = QString("result %1 of %1").arg(resultsBefore + 1);
@@ -715,6 +787,16 @@ class BenchUiTest : public QObject {
     QVERIFY(w->diagnosisView()->verdictText().contains("scale_factor_error"));
     QVERIFY(w->diagnosisView()->gapMapRows() > 10);
     QVERIFY(w->diagnosisView()->gapMapColumns() >= 1);
+    {
+      // Labels readable (at least 9 pt) and "P1 S1" explained on the axis.
+      auto* gap = w->diagnosisView()->findChild<QwtPlot*>("gapMapPlot");
+      QVERIFY(gap);
+      for (int axis : {QwtPlot::yLeft, QwtPlot::xBottom})
+        QVERIFY2(gap->axisWidget(axis)->font().pointSizeF() >= 9.0,
+                 qPrintable(QString::number(gap->axisWidget(axis)->font().pointSizeF())));
+      QVERIFY2(gap->axisTitle(QwtPlot::xBottom).text().contains("test point P, segment S"),
+               qPrintable(gap->axisTitle(QwtPlot::xBottom).text()));
+    }
     int bars = 0;
     for (auto* item : w->diagnosisView()->shrinkPlot()->itemList(QwtPlotItem::Rtti_PlotBarChart))
       bars += static_cast<int>(static_cast<QwtPlotBarChart*>(item)->dataSize());
@@ -1306,6 +1388,14 @@ class BenchUiTest : public QObject {
       first.setRemembering(false);
       first.setSessionFolder(oneOff.path());
       first.setRemembering(true);
+      // Enter on the one-off folder, or leaving its field, does not choose it.
+      first.show();
+      auto* folderEdit = first.configureView()->findChild<QLineEdit*>("sessionFolderEdit");
+      QVERIFY(folderEdit);
+      folderEdit->setFocus();
+      QTest::keyClick(folderEdit, Qt::Key_Return);
+      first.configureView()->findChild<QLineEdit*>("operatorEdit")->setFocus();
+      QCOMPARE(QSettings().value("sessions/folder").toString(), sessions_.path());
     }
     MainWindow second;
     const fog::TestPlan plan = second.planEditor()->plan();
@@ -1317,6 +1407,21 @@ class BenchUiTest : public QObject {
     QCOMPARE(second.findChild<QLineEdit*>("imuModelEdit")->text(), QString("FOG-9"));
     QCOMPARE(second.findChild<QLineEdit*>("imuSerialEdit")->text(), QString("SN-77"));
     QCOMPARE(second.sessionFolder(), sessions_.path());
+  }
+
+  // A folder the operator types (and confirms with Enter) is remembered.
+  void aTypedFolderIsRemembered() {
+    QTemporaryDir typed;
+    auto w = window();
+    auto* folderEdit = w->configureView()->findChild<QLineEdit*>("sessionFolderEdit");
+    QVERIFY(folderEdit);
+    folderEdit->setFocus();
+    folderEdit->selectAll();
+    QTest::keyClicks(folderEdit, typed.path());
+    QTest::keyClick(folderEdit, Qt::Key_Return);
+    QCOMPARE(QSettings().value("sessions/folder").toString(), typed.path());
+    QCOMPARE(w->sessionFolder(), typed.path());
+    w->setSessionFolder(sessions_.path());
   }
 
   // The real program: --help answers without a display, and a one-off
