@@ -48,8 +48,8 @@ void useCompactTitles(QwtPlot* plot) {
 }
 
 PlotInteraction::PlotInteraction(QwtPlot* plot, Options options)
-    : QObject(plot), plot_(plot), options_(std::move(options)) {
-  QWidget* canvas = plot_->canvas();
+    : QObject(plot), plot_(plot), canvas_(plot->canvas()), options_(std::move(options)) {
+  QWidget* canvas = canvas_;
   panner_ = new QwtPlotPanner(canvas);
   panner_->setMouseButton(Qt::LeftButton);
   Qt::Orientations pan;
@@ -226,7 +226,7 @@ void PlotInteraction::updateReadout() {
 }
 
 void PlotInteraction::placeOverlays() {
-  const QWidget* canvas = plot_->canvas();
+  const QWidget* canvas = canvas_;
   hint_->adjustSize();
   hint_->move(canvas->width() - hint_->width() - 2, canvas->height() - hint_->height() - 2);
   // Only where it leaves the plot room.
@@ -244,7 +244,7 @@ void PlotInteraction::placeOverlays() {
 }
 
 bool PlotInteraction::eventFilter(QObject* watched, QEvent* event) {
-  if (watched != plot_->canvas()) return false;
+  if (watched != canvas_) return false;
   switch (event->type()) {
     case QEvent::Resize:
       placeOverlays();

@@ -23,6 +23,7 @@
 #include <vector>
 
 class QLabel;
+class QWidget;
 class QwtPlot;
 class QwtPlotMagnifier;
 class QwtPlotMarker;
@@ -91,6 +92,10 @@ class PlotInteraction : public QObject {
   void placeOverlays();
 
   QwtPlot* plot_;
+  // The plot's canvas, kept: events reach the filter while the plot is being
+  // destroyed (its children go after ~QwtPlot), when plot_->canvas() is no
+  // longer a call on a QwtPlot.
+  QWidget* canvas_;
   Options options_;
   QwtPlotPanner* panner_ = nullptr;
   QwtPlotMagnifier* magnifier_ = nullptr;
