@@ -57,26 +57,43 @@ double quantisationVariance(const GyroChannel& gyro, const std::vector<double>& 
   g1 = n1 ? g1 / static_cast<double>(n1) : 0.0;
   return std::max(-g1, 0.0);
 }
+
+// Sums of m consecutive increments, m the block length in frames nearest
+// blockS (at least 1, at most an eighth of the record), through prefix sums:
+// sum(k) = prefix[k + m] - prefix[k].
+struct BlockSums {
+  std::size_t m = 1;
+  double blockS = 0.0;  // m frame periods: the block length actually used
+  std::vector<double> prefix;
+  double sum(std::size_t k) const { return prefix[k + m] - prefix[k]; }
+};
+
+BlockSums blockSums(const GyroChannel& gyro, const std::vector<double>& r, double blockS) {
+  const std::size_t n = r.size();
+  BlockSums b;
+  b.m = std::clamp<std::size_t>(static_cast<std::size_t>(std::llround(blockS / gyro.framePeriodS)), 1,
+                                std::max<std::size_t>(n / 8, 1));
+  b.blockS = static_cast<double>(b.m) * gyro.framePeriodS;
+  b.prefix.assign(n + 1, 0.0);
+  for (std::size_t k = 0; k < n; ++k) b.prefix[k + 1] = b.prefix[k] + r[k];
+  return b;
+}
 }  // namespace
 
 double estimateWhiteRateVariance(const GyroChannel& gyro, const std::vector<double>& r, double blockS) {
   const std::size_t n = r.size();
   const double s2 = quantisationVariance(gyro, r);
-  const std::size_t m = std::clamp<std::size_t>(
-      static_cast<std::size_t>(std::llround(blockS / gyro.framePeriodS)), 1, std::max<std::size_t>(n / 8, 1));
-  std::vector<double> prefix(n + 1, 0.0);
-  for (std::size_t k = 0; k < n; ++k) prefix[k + 1] = prefix[k] + r[k];
+  const BlockSums b = blockSums(gyro, r, blockS);
   double v = 0.0;
   std::size_t pairs = 0;
-  for (std::size_t k = 0; k + 2 * m <= n; ++k) {
-    const double d = (prefix[k + m] - prefix[k]) - (prefix[k + 2 * m] - prefix[k + m]);
+  for (std::size_t k = 0; k + 2 * b.m <= n; ++k) {
+    const double d = b.sum(k) - b.sum(k + b.m);
     v += d * d;
     ++pairs;
   }
   if (pairs == 0) return 0.0;
   v /= static_cast<double>(pairs);
-  const double usedBlockS = static_cast<double>(m) * gyro.framePeriodS;
-  return std::max(v - 6.0 * s2, 1e-6 * v) / (2.0 * usedBlockS);
+  return std::max(v - 6.0 * s2, 1e-6 * v) / (2.0 * b.blockS);
 }
 
 void estimateGyroNoise(GyroChannel& gyro, const std::vector<double>& r, double blockS) {
@@ -86,20 +103,18 @@ void estimateGyroNoise(GyroChannel& gyro, const std::vector<double>& r, double b
   // is q*M*dt + 2*s2 (quantisation enters only at the two ends). Block sums
   // see the noise at low frequencies, near the swing, where the lag is
   // decided; per-frame variances would be swamped by quantisation.
-  const std::size_t m = std::clamp<std::size_t>(
-      static_cast<std::size_t>(std::llround(blockS / gyro.framePeriodS)), 1, std::max<std::size_t>(n / 8, 1));
-  std::vector<double> prefix(n + 1, 0.0);
-  for (std::size_t k = 0; k < n; ++k) prefix[k + 1] = prefix[k] + r[k];
+  const BlockSums b = blockSums(gyro, r, blockS);
+  const std::size_t m = b.m;
+  const double usedBlockS = b.blockS;
   double v = 0.0;
   std::size_t blocks = 0;
   for (std::size_t k = 0; k + m <= n; ++k) {
-    const double sum = prefix[k + m] - prefix[k];
+    const double sum = b.sum(k);
     v += sum * sum;
     ++blocks;
   }
   v /= static_cast<double>(std::max<std::size_t>(blocks, 1));
   const double floorVar = 1e-6 * (v + 2.0 * s2) + 1e-30;
-  const double usedBlockS = static_cast<double>(m) * gyro.framePeriodS;
   const double q = std::max(v - 2.0 * s2, floorVar) / usedBlockS;
   gyro.setNoise(q, s2);
   // Sampling error of v - 2*s2. The random-walk part of overlapping m-sums

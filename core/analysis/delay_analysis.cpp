@@ -358,23 +358,23 @@ Result<TestPointResult> analyzeTestPoint(const TestPointData& data, double incre
 
   // 2. The gyro's noise, from the residuals of a fit at the table's measured
   // frequency (at the nominal one, 8 ppm of error would dominate the slow
-  // part of the residuals). ARW is judged over blocks of a quarter period
-  // (at least 0.05 s, at most an eighth of the record): the lag is decided by
-  // the noise near the swing frequency, where a random walk that blocks of a
-  // twentieth of a period cannot see under pulse quantisation (0.0014 deg/sqrt(h)
-  // under 1.2" pulses at 0.09 Hz) dominates and left the uncertainty 7 times
-  // too small.
-  // The angle random walk proper (white rate noise) is what blocks of a
-  // twentieth of a period (0.05 .. 1 s) see: it is reported, and the
-  // diagnosis replays with it.
+  // part of the residuals). Three views of it over blocks of frames:
+  //  - the reported ARW (white rate noise alone), from second differences of
+  //    block sums of a twentieth of a period (0.05 .. 1 s), where a slow bias
+  //    wander cancels (over an hour, block sums alone read 0.0070 deg/sqrt(h)
+  //    for 0.004, and a replay with that much noise hid nothing a lag could
+  //    not explain): reported, and what the diagnosis replays with;
+  //  - the block sums themselves at that length, the noise as the swing sees
+  //    it, which the Cramer-Rao bound keeps (its accuracy checks,
+  //    docs/accuracy.md, were measured against it);
+  //  - the block sums over a quarter period (at least 0.05 s, at most an
+  //    eighth of the record), which weight the fits: the lag is decided by
+  //    the noise near the swing frequency, where a random walk that shorter
+  //    blocks cannot see under pulse quantisation (0.0014 deg/sqrt(h) under
+  //    1.2" pulses at 0.09 Hz) dominates and left the uncertainty 7 times too
+  //    small.
   const SineFit gyroStart = fitGyroLinear(ch.gyro, table4.omegaRadPerS, ch.referenceS, false);
   const auto startResiduals = gyroIncrementResiduals(ch.gyro, gyroStart);
-  // The reported ARW is the white rate noise alone: second differences of
-  // the block sums, where a slow bias wander cancels (over an hour, block
-  // sums alone read 0.0070 deg/sqrt(h) for 0.004, and a replay with that
-  // much noise hid nothing a lag could not explain). The Cramer-Rao bound
-  // keeps the block sums' value, the noise as the swing sees it, which its
-  // accuracy checks (docs/accuracy.md) were measured against.
   const double blockS = std::clamp(0.05 / f0, 0.05, 1.0);
   r.noise.gyroArwDegPerSqrtH = std::sqrt(estimateWhiteRateVariance(ch.gyro, startResiduals, blockS)) * 60.0;
   estimateGyroNoise(ch.gyro, startResiduals, blockS);

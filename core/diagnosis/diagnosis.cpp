@@ -1360,17 +1360,20 @@ Result<int> threadsWithinMemory(const Recording& recording, int requested) {
 Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, const analysis::BenchConstants& constants,
                            const DiagnosisOptions& requested) {
   const auto started = std::chrono::steady_clock::now();
+  auto threads = threadsWithinMemory(input, requested.threads);
+  if (!threads) return threads.status();
   DiagnosisOptions options = requested;
-  if (auto threads = threadsWithinMemory(input, requested.threads); !threads)
-    return threads.status();
-  else
-    options.threads = *threads;
+  options.threads = *threads;
   Progress progress(options);
   const std::vector<SignatureJob> jobs = signatureJobs(options);
   const std::size_t expectedReplays = kCalibrationReplays + jobs.size() + laterReplays(options);
   progress.stage("calibration", expectedReplays);
   if (progress.cancelled()) return cancelledByCaller();
   Diagnosis d;
+  if (options.threads < requested.threads)
+    d.notes.push_back("ran on " + std::to_string(options.threads) + " of the " + std::to_string(requested.threads) +
+                      " threads asked for, to stay within the " +
+                      std::to_string(static_cast<long long>(kDiagnosisMemoryBudgetBytes / 1e6)) + " MB memory limit");
 
   auto session = analyseSession(input, info, constants, d.notes);
   if (!session) return session.status();
