@@ -27,7 +27,7 @@
 #include <qwt_scale_widget.h>
 #include <vector>
 
-#include "ui/curve_decimation.h"
+#include "ui/plot_data/curve_decimation.h"
 #include "ui/plot_interaction.h"
 #include "ui/language.h"
 

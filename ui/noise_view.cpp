@@ -13,7 +13,7 @@
 #include <qwt_plot.h>
 #include <qwt_plot_grid.h>
 
-#include "ui/allan_curves.h"
+#include "ui/plot_data/allan_curves.h"
 #include "ui/language.h"
 #include "ui/messages.h"
 #include "ui/plot_interaction.h"

@@ -11,7 +11,7 @@
 #include "common/recording.h"
 #include "common/session_info.h"
 #include "model/simulator.h"
-#include "ui/test_point_traces.h"
+#include "ui/plot_data/test_point_traces.h"
 
 namespace fog::session {
 struct StoredResult;

@@ -15,7 +15,7 @@
 #include <qwt_symbol.h>
 #include <qwt_text.h>
 
-#include "ui/curve_decimation.h"
+#include "ui/plot_data/curve_decimation.h"
 #include "ui/plot_interaction.h"
 
 namespace fog::ui {

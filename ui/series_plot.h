@@ -18,7 +18,7 @@
 #include <qwt_plot.h>
 #include <vector>
 
-#include "ui/test_point_traces.h"
+#include "ui/plot_data/test_point_traces.h"
 
 class QwtPlotCurve;
 class QwtPlotPicker;

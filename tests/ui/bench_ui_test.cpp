@@ -51,7 +51,7 @@
 #include "ui/commanded_motion.h"
 #include "ui/compare_view.h"
 #include "ui/configure_view.h"
-#include "ui/curve_decimation.h"
+#include "ui/plot_data/curve_decimation.h"
 #include "ui/diagnosis_view.h"
 #include "ui/language.h"
 #include "ui/delta_picker.h"

@@ -15,10 +15,10 @@
 #include "analysis/verdict.h"
 #include "common/version.h"
 #include "noise/gyro_noise.h"
-#include "ui/allan_curves.h"
+#include "ui/plot_data/allan_curves.h"
 #include "ui/report/page_flow.h"
 #include "ui/report/report_plots.h"
-#include "ui/test_point_traces.h"
+#include "ui/plot_data/test_point_traces.h"
 
 namespace fog::report {
 

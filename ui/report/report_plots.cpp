@@ -12,7 +12,7 @@
 #include <qwt_symbol.h>
 #include <qwt_text.h>
 
-#include "ui/curve_decimation.h"
+#include "ui/plot_data/curve_decimation.h"
 #include "ui/report/page_flow.h"
 
 namespace fog::report::detail {

@@ -12,7 +12,7 @@
 #include <utility>
 #include <vector>
 
-#include "ui/test_point_traces.h"
+#include "ui/plot_data/test_point_traces.h"
 
 class QwtPlot;
 

@@ -1,4 +1,4 @@
-#include "ui/allan_curves.h"
+#include "ui/plot_data/allan_curves.h"
 
 #include <QPen>
 #include <cmath>

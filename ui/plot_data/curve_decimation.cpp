@@ -1,4 +1,4 @@
-#include "ui/curve_decimation.h"
+#include "ui/plot_data/curve_decimation.h"
 
 #include <algorithm>
 #include <array>

@@ -1,4 +1,4 @@
-#include "ui/test_point_traces.h"
+#include "ui/plot_data/test_point_traces.h"
 
 #include <cmath>
 
