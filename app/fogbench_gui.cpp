@@ -7,13 +7,8 @@
 //            [--view configure|live|results|sessions|diagnosis|noise]
 //            [--screenshot FILE [--screenshot-after S]] [--language system|en|zh_CN]
 //
-// --screenshot FILE saves an image of the window and quits: for the
-// configure view at once, for the live view S seconds into the run (default
-// 3), for the results and sessions views when the run (or --open) ended,
-// for the diagnosis and noise views when their analysis of that result ended
-// (the diagnosis view S seconds into the diagnosis when --screenshot-after
-// is given: its progress).
-// Exit code 1 when the run gave no result or the image could not be written.
+// --screenshot FILE saves an image of the view and quits once it shows what
+// it is for (gui_screenshot.h says when for each view).
 //
 // --port DEV records a serial sampling board; with --table the bench drives
 // the turntable through the plan (docs/table-control.md): remote:tcp:HOST:PORT
@@ -31,13 +26,13 @@
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QCoreApplication>
-#include <QPixmap>
 #include <QScreen>
 #include <QTimer>
 #include <cstdio>
 #include <cstring>
 
 #include "common/version.h"
+#include "gui_screenshot.h"
 #include "ui/bench_presets.h"
 #include "ui/language.h"
 #include "ui/main_window.h"
@@ -48,15 +43,6 @@ namespace {
 int fail(const QString& message) {
   std::fprintf(stderr, "fogbench: %s\n", qPrintable(message));
   return 2;
-}
-
-void saveAndQuit(fog::ui::MainWindow& window, const QString& path, bool succeeded) {
-  // Let pending layout and paint events settle before grabbing.
-  QTimer::singleShot(300, &window, [&window, path, succeeded] {
-    const bool saved = window.grab().save(path);
-    if (!saved) std::fprintf(stderr, "fogbench: cannot write '%s'\n", qPrintable(path));
-    QApplication::exit(saved && succeeded ? 0 : 1);
-  });
 }
 
 struct Options {
@@ -167,52 +153,10 @@ int main(int argc, char* argv[]) {
   const double after = parser.isSet(afterOption) ? parser.value(afterOption).toDouble(&ok) : 3.0;
   if (!ok || after < 0) return fail("--screenshot-after needs seconds >= 0");
 
-  const QString screenshot = parser.value(screenshotOption);
-  const bool run = parser.isSet(runOption) ||
-                   (!screenshot.isEmpty() && !parser.isSet(openOption) &&
-                    (view == "live" || view == "results" || view == "sessions" || view == "diagnosis" ||
-                     view == "noise"));
-  if (!screenshot.isEmpty()) {
-    if (view == "configure" || (view.isEmpty() && !run && !parser.isSet(openOption))) {
-      QTimer::singleShot(0, &window, [&window, screenshot] { saveAndQuit(window, screenshot, true); });
-    } else if (view == "live") {
-      QTimer::singleShot(static_cast<int>(after * 1000.0) + 200, &window,
-                         [&window, screenshot] { saveAndQuit(window, screenshot, window.isRunning()); });
-    } else if (view == "noise") {
-      QObject::connect(&window, &fog::ui::MainWindow::noiseAnalysed, &window, [&window, screenshot](bool succeeded) {
-        window.showView(fog::ui::MainWindow::kNoise);
-        saveAndQuit(window, screenshot, succeeded);
-      });
-    } else if (view == "diagnosis") {
-      // The diagnosis of the run's (or the opened session's) result.
-      auto diagnose = [&window](bool succeeded) {
-        if (succeeded) window.diagnoseShown();
-        else QApplication::exit(1);
-      };
-      QObject::connect(&window, &fog::ui::MainWindow::runEnded, &window, diagnose);
-      QObject::connect(&window, &fog::ui::MainWindow::sessionOpened, &window, diagnose);
-      if (parser.isSet(afterOption)) {
-        // S seconds into the diagnosis: its progress.
-        auto during = [&window, screenshot, after](bool succeeded) {
-          if (!succeeded) return;
-          QTimer::singleShot(static_cast<int>(after * 1000.0), &window,
-                             [&window, screenshot] { saveAndQuit(window, screenshot, window.isDiagnosing()); });
-        };
-        QObject::connect(&window, &fog::ui::MainWindow::runEnded, &window, during);
-        QObject::connect(&window, &fog::ui::MainWindow::sessionOpened, &window, during);
-      } else {
-        QObject::connect(&window, &fog::ui::MainWindow::diagnosisEnded, &window,
-                         [&window, screenshot](bool succeeded) { saveAndQuit(window, screenshot, succeeded); });
-      }
-    } else {
-      auto done = [&window, screenshot, view](bool succeeded) {
-        if (view == "sessions") window.showView(fog::ui::MainWindow::kSessions);
-        saveAndQuit(window, screenshot, succeeded);
-      };
-      QObject::connect(&window, &fog::ui::MainWindow::runEnded, &window, done);
-      QObject::connect(&window, &fog::ui::MainWindow::sessionOpened, &window, done);
-    }
-  }
+  fog::app::ScreenshotRequest screenshot{parser.value(screenshotOption), view, after, parser.isSet(afterOption),
+                                        parser.isSet(openOption)};
+  const bool run = parser.isSet(runOption) || fog::app::screenshotNeedsRun(screenshot);
+  if (!screenshot.path.isEmpty()) fog::app::armScreenshot(window, screenshot, run);
 
   window.setRemembering(true);
 

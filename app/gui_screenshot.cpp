@@ -1,0 +1,75 @@
+#include "gui_screenshot.h"
+
+#include <QApplication>
+#include <QPixmap>
+#include <QTimer>
+#include <cstdio>
+
+#include "ui/main_window.h"
+
+namespace fog::app {
+namespace {
+
+void saveAndQuit(fog::ui::MainWindow& window, const QString& path, bool succeeded) {
+  // Let pending layout and paint events settle before grabbing.
+  QTimer::singleShot(300, &window, [&window, path, succeeded] {
+    const bool saved = window.grab().save(path);
+    if (!saved) std::fprintf(stderr, "fogbench: cannot write '%s'\n", qPrintable(path));
+    QApplication::exit(saved && succeeded ? 0 : 1);
+  });
+}
+
+}  // namespace
+
+bool screenshotNeedsRun(const ScreenshotRequest& request) {
+  const QString& view = request.view;
+  return !request.path.isEmpty() && !request.opensSession &&
+         (view == "live" || view == "results" || view == "sessions" || view == "diagnosis" || view == "noise");
+}
+
+void armScreenshot(fog::ui::MainWindow& window, const ScreenshotRequest& request, bool run) {
+  using fog::ui::MainWindow;
+  const QString screenshot = request.path;
+  const QString view = request.view;
+  if (view == "configure" || (view.isEmpty() && !run && !request.opensSession)) {
+    QTimer::singleShot(0, &window, [&window, screenshot] { saveAndQuit(window, screenshot, true); });
+  } else if (view == "live") {
+    QTimer::singleShot(static_cast<int>(request.afterS * 1000.0) + 200, &window,
+                       [&window, screenshot] { saveAndQuit(window, screenshot, window.isRunning()); });
+  } else if (view == "noise") {
+    QObject::connect(&window, &MainWindow::noiseAnalysed, &window, [&window, screenshot](bool succeeded) {
+      window.showView(MainWindow::kNoise);
+      saveAndQuit(window, screenshot, succeeded);
+    });
+  } else if (view == "diagnosis") {
+    // The diagnosis of the run's (or the opened session's) result.
+    auto diagnose = [&window](bool succeeded) {
+      if (succeeded) window.diagnoseShown();
+      else QApplication::exit(1);
+    };
+    QObject::connect(&window, &MainWindow::runEnded, &window, diagnose);
+    QObject::connect(&window, &MainWindow::sessionOpened, &window, diagnose);
+    if (request.afterGiven) {
+      // S seconds into the diagnosis: its progress.
+      auto during = [&window, screenshot, after = request.afterS](bool succeeded) {
+        if (!succeeded) return;
+        QTimer::singleShot(static_cast<int>(after * 1000.0), &window,
+                           [&window, screenshot] { saveAndQuit(window, screenshot, window.isDiagnosing()); });
+      };
+      QObject::connect(&window, &MainWindow::runEnded, &window, during);
+      QObject::connect(&window, &MainWindow::sessionOpened, &window, during);
+    } else {
+      QObject::connect(&window, &MainWindow::diagnosisEnded, &window,
+                       [&window, screenshot](bool succeeded) { saveAndQuit(window, screenshot, succeeded); });
+    }
+  } else {
+    auto done = [&window, screenshot, view](bool succeeded) {
+      if (view == "sessions") window.showView(MainWindow::kSessions);
+      saveAndQuit(window, screenshot, succeeded);
+    };
+    QObject::connect(&window, &MainWindow::runEnded, &window, done);
+    QObject::connect(&window, &MainWindow::sessionOpened, &window, done);
+  }
+}
+
+}  // namespace fog::app
