@@ -25,6 +25,7 @@
 #include <qwt_symbol.h>
 #include <qwt_text.h>
 
+#include "ui/core_text.h"
 #include "ui/language.h"
 #include "ui/plot_interaction.h"
 #include "ui/series_plot.h"
@@ -261,7 +262,7 @@ void CompareView::fillSessionRow(int position) {
   setCell(sessionTable_, position, 4, QString::fromStdString(o.info.operatorName));
   QString result;
   if (!o.report) {
-    result = tr("no delay: %1").arg(QString::fromStdString(o.report.status().message()));
+    result = tr("no delay: %1").arg(coreText(o.report.status().message()));
   } else {
     const auto& c = o.report->constants;
     result = tr("result %1 of %2; table read %3 ± %4 ms, board %5 ms")

@@ -28,6 +28,7 @@
 #include <qwt_scale_widget.h>
 #include <qwt_text.h>
 
+#include "ui/core_text.h"
 #include "ui/language.h"
 #include "ui/plot_interaction.h"
 
@@ -223,7 +224,7 @@ QString DiagnosisView::stageText(const std::string& stage) {
   if (stage == "refinement") return tr("refining the best effects");
   if (stage == "pairs") return tr("trying pairs of effects");
   if (stage == "verdict") return tr("reaching the verdict");
-  return QString::fromStdString(stage);
+  return coreText(stage);
 }
 
 void DiagnosisView::showPlaceholder(const QString& text) {
@@ -282,14 +283,14 @@ void DiagnosisView::showDiagnosis(std::shared_ptr<const diagnosis::Diagnosis> d,
   QString gaps;
   for (std::size_t i = 0; i < diagnosis_->gapBefore.size() && i < diagnosis_->gapAfter.size(); ++i)
     gaps += tr("%1 %2 → %3   ")
-                .arg(diagnosis::channelName(diagnosis_->gapBefore[i].channel))
+                .arg(coreText(diagnosis::channelName(diagnosis_->gapBefore[i].channel)))
                 .arg(localNumber(diagnosis_->gapBefore[i].rmsZ, 'f', 2))
                 .arg(localNumber(diagnosis_->gapAfter[i].rmsZ, 'f', 2));
   verdict_->setText(tr("<b>%1 — verdict: %2</b><br>%3<br>gap per channel (rms z, 1 = within the simulator's "
                        "spread), before → after: %4")
-                        .arg(title.toHtmlEscaped(), QString::fromStdString(diagnosis_->verdict).toHtmlEscaped(),
-                             QString::fromStdString(diagnosis_->verdictReason).toHtmlEscaped(), gaps));
-  text_->setPlainText(QString::fromStdString(diagnosis::formatDiagnosisText(*diagnosis_)));
+                        .arg(title.toHtmlEscaped(), coreText(diagnosis_->verdict).toHtmlEscaped(),
+                             coreText(diagnosis_->verdictReason).toHtmlEscaped(), gaps));
+  text_->setPlainText(coreText(diagnosis::formatDiagnosisText(*diagnosis_)));
   {
     const QSignalBlocker block(pointCombo_);
     pointCombo_->clear();
@@ -373,8 +374,8 @@ void DiagnosisView::showGapMap() {
     index = i++;
     const auto& [channel, quantity, axis] = key;
     rowNames_ << QString("%1 %2 %3")
-                     .arg(diagnosis::channelName(static_cast<diagnosis::Channel>(channel)),
-                          QString::fromStdString(quantity), axisLetter(axis))
+                     .arg(coreText(diagnosis::channelName(static_cast<diagnosis::Channel>(channel))), coreText(quantity),
+                          axisLetter(axis))
                      .trimmed();
   }
   const int nRows = static_cast<int>(rowNames_.size()), nCols = static_cast<int>(columnNames_.size());
@@ -434,7 +435,7 @@ void DiagnosisView::showShrink() {
   QVector<double> shrink;
   std::vector<bool> kept;
   for (const auto& e : diagnosis_->effects) {
-    names << QString::fromStdString(e.name);
+    names << coreText(e.name);
     shrink << 100.0 * std::clamp(e.heldOutShrink, -1.0, 1.0);
     kept.push_back(e.kept);
   }

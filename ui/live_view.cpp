@@ -27,6 +27,7 @@
 #include <qwt_scale_widget.h>
 #include <vector>
 
+#include "ui/core_text.h"
 #include "ui/plot_data/curve_decimation.h"
 #include "ui/plot_interaction.h"
 #include "ui/language.h"
@@ -395,8 +396,8 @@ void LiveView::showDrivenMode() {
   if (st.interlockOpen) faults << tr("interlock open");
   if (st.emergencyStopped) faults << tr("emergency stop engaged");
   if (st.heartbeatLost) faults << tr("heartbeat lost (the controller stopped the table)");
-  for (const auto& f : st.faults) faults << QString::fromStdString(f);
-  if (!s.failure.empty()) faults << tr("run stopped: %1").arg(QString::fromStdString(s.failure));
+  for (const auto& f : st.faults) faults << coreText(f);
+  if (!s.failure.empty()) faults << tr("run stopped: %1").arg(coreText(s.failure));
   tableFaultsLabel_->setText(faults.isEmpty() ? (st.known ? tr("none reported") : tr("not readable (manual)"))
                                               : faults.join(QStringLiteral("; ")));
   tableFaultsLabel_->setStyleSheet(faults.isEmpty() && (s.atRest || !s.finished) ? QString()
@@ -406,10 +407,10 @@ void LiveView::showDrivenMode() {
   // The operator's instruction matters most while a manual table runs.
   if (!s.instruction.empty() && !st.known) {
     tableStepTitle_->setText(tr("Operator"));
-    tableStepLabel_->setText(QStringLiteral("<b>%1</b>").arg(QString::fromStdString(s.instruction).toHtmlEscaped()));
+    tableStepLabel_->setText(QStringLiteral("<b>%1</b>").arg(coreText(s.instruction).toHtmlEscaped()));
   } else {
     tableStepTitle_->setText(tr("Step"));
-    tableStepLabel_->setText(QString::fromStdString(s.step).toHtmlEscaped());
+    tableStepLabel_->setText(coreText(s.step).toHtmlEscaped());
   }
 }
 

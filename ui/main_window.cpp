@@ -47,6 +47,7 @@
 #include "session/session_file.h"
 #include "ui/bench_settings_dialog.h"
 #include "ui/compare_view.h"
+#include "ui/core_text.h"
 #include "ui/serial/serial_source.h"
 #include "ui/diagnosis_view.h"
 #include "ui/language.h"
@@ -270,7 +271,7 @@ void MainWindow::buildMenus() {
     if (path.isEmpty()) return;
     if (auto s = loadPlanFile(path); !s.isOk())
       reportError(tr("Load test plan"), tr("Cannot load the test plan %1").arg(QFileInfo(path).fileName()),
-                  QString::fromStdString(s.message()));
+                  coreText(s.message()));
   });
   loadPlan->setObjectName("loadPlanAction");
   loadPlan->setShortcut(QKeySequence(QStringLiteral("Ctrl+L")));
@@ -281,7 +282,7 @@ void MainWindow::buildMenus() {
     if (QFileInfo(path).suffix().isEmpty()) path += ".json";
     if (auto s = savePlanFile(path); !s.isOk())
       reportError(tr("Save test plan"), tr("Cannot save the test plan as %1").arg(path),
-                  QString::fromStdString(s.message()));
+                  coreText(s.message()));
   });
   savePlan->setObjectName("savePlanAction");
   savePlan->setShortcut(QKeySequence::Save);
@@ -641,7 +642,7 @@ void MainWindow::startRun() {
   }
   auto built = buildRunRequest();
   if (!built) {
-    showFailure(QString::fromStdString(built.status().message()));
+    showFailure(coreText(built.status().message()));
     return;
   }
   RunRequest request = std::move(*built);
@@ -657,7 +658,7 @@ void MainWindow::startRun() {
                 .arg(speed <= 0.0   ? tr("as fast as possible")
                      : speed == 1.0 ? tr("real time")
                                     : tr("%1× real time").arg(speed))
-          : QString::fromStdString(request.options.info.source);
+          : coreText(request.options.info.source);
   // The table status: the simulator drives its simulated turntable through
   // the plan; a serial board runs its own plan and a replay drives nothing.
   // A driven table (remote, manual) shows what its controller reports.
@@ -752,13 +753,13 @@ void MainWindow::showOutcome(std::shared_ptr<const RunOutcome> outcome) {
   const bool delay = outcome->report.isOk();
   QString message;
   if (!outcome->complete)
-    message = tr("Run incomplete (%1); ").arg(QString::fromStdString(outcome->incompleteReason));
+    message = tr("Run incomplete (%1); ").arg(coreText(outcome->incompleteReason));
   else
     message = tr("Run done in %1; ").arg(durationText(static_cast<double>(runClock_.elapsed()) / 1e3));
   message += delay ? tr("%1 test point(s) analysed, %2 without a delay")
                          .arg(outcome->report->points.size())
                          .arg(outcome->report->failedPoints.size())
-                   : tr("no delay: %1").arg(QString::fromStdString(outcome->report.status().message()));
+                   : tr("no delay: %1").arg(coreText(outcome->report.status().message()));
   if (!outcome->sessionPath.empty())
     message += tr(". Saved as %1").arg(QFileInfo(QString::fromStdString(outcome->sessionPath)).fileName());
   // A driven table the bench did not see at rest (the controller was
@@ -878,7 +879,7 @@ void MainWindow::loadSession(const QString& path, bool reanalyse, std::int64_t r
         if (!result.outcome) {
           reportError(reanalyse ? tr("Re-analyse") : tr("Open session"),
                       reanalyse ? tr("Cannot re-analyse %1").arg(name) : tr("Cannot open %1").arg(name),
-                      tr("%1\n\nFile: %2").arg(QString::fromStdString(result.status.message()), QDir::toNativeSeparators(path)));
+                      tr("%1\n\nFile: %2").arg(coreText(result.status.message()), QDir::toNativeSeparators(path)));
           done(nullptr);
           return;
         }
@@ -961,8 +962,8 @@ void MainWindow::importCsv(const QString& csvFolder) {
       [this, path, csvFolder](Status s) {
         if (!s.isOk()) {
           reportError(tr("Import CSV data"), tr("Cannot import %1").arg(QDir::toNativeSeparators(csvFolder)),
-                      QString::fromStdString(s.message()));
-          tell(tr("Cannot import %1: %2").arg(csvFolder, QString::fromStdString(s.message())));
+                      coreText(s.message()));
+          tell(tr("Cannot import %1: %2").arg(csvFolder, coreText(s.message())));
           emit importEnded(QString());
           return;
         }
@@ -1016,15 +1017,15 @@ void MainWindow::diagnoseShown() {
           return;
         }
         if (!done.result) {
-          diagnosisView_->showMessage(tr("No diagnosis: %1").arg(QString::fromStdString(done.status.message())));
-          reportError(tr("Diagnosis"), tr("No diagnosis of %1").arg(title), QString::fromStdString(done.status.message()));
-          tell(tr("No diagnosis of %1: %2").arg(title, QString::fromStdString(done.status.message())));
+          diagnosisView_->showMessage(tr("No diagnosis: %1").arg(coreText(done.status.message())));
+          reportError(tr("Diagnosis"), tr("No diagnosis of %1").arg(title), coreText(done.status.message()));
+          tell(tr("No diagnosis of %1: %2").arg(title, coreText(done.status.message())));
           emit diagnosisEnded(false);
           return;
         }
         diagnosisView_->showDiagnosis(done.result, title);
         tell(tr("Diagnosis of %1: %2 (%3 s)")
-                 .arg(title, QString::fromStdString(done.result->verdict))
+                 .arg(title, coreText(done.result->verdict))
                  .arg(localNumber(done.result->elapsedS, 'f', 1)));
         emit diagnosisEnded(true);
       });
@@ -1060,7 +1061,7 @@ void MainWindow::analyseNoise(std::shared_ptr<const RunOutcome> outcome) {
       },
       [this](Done done) {
         if (!done.status.isOk()) {
-          noiseView_->showMessage(tr("No noise analysis: %1").arg(QString::fromStdString(done.status.message())));
+          noiseView_->showMessage(tr("No noise analysis: %1").arg(coreText(done.status.message())));
           emit noiseAnalysed(false);
           return;
         }

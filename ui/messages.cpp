@@ -1,6 +1,5 @@
 #include "ui/messages.h"
 
-#include <QRegularExpression>
 #include <QWidget>
 
 namespace fog::ui {
@@ -27,19 +26,6 @@ QMessageBox* showMessage(QWidget* parent, MessageKind kind, const QString& title
   box->show();
   box->raise();
   return box;
-}
-
-QString displayUnits(const QString& text) {
-  static const QRegularExpression per(QStringLiteral("\\bdeg/"));
-  static const QRegularExpression squared(QStringLiteral("/s\\^2\\b"));
-  static const QRegularExpression root(QStringLiteral("sqrt\\(h\\)"));
-  static const QRegularExpression angle(QStringLiteral("(\\d) ?deg\\b"));
-  QString out = text;
-  out.replace(per, QStringLiteral("°/"));
-  out.replace(squared, QStringLiteral("/s²"));
-  out.replace(root, QStringLiteral("√h"));
-  out.replace(angle, QStringLiteral("\\1°"));
-  return out;
 }
 
 }  // namespace fog::ui

@@ -9,6 +9,8 @@
 #include <QMessageBox>
 #include <QString>
 
+#include "ui/core_text.h"  // displayUnits
+
 namespace fog::ui {
 
 enum class MessageKind {
@@ -21,9 +23,5 @@ enum class MessageKind {
 QMessageBox* showMessage(QWidget* parent, MessageKind kind, const QString& title, const QString& headline,
                          const QString& details);
 
-// The core's messages and units speak ASCII ("50 deg", "deg/s^2",
-// "deg/sqrt(h)"); the GUI shows the symbols it uses everywhere else ("50°",
-// "°/s²", "°/√h").
-QString displayUnits(const QString& text);
 
 }  // namespace fog::ui

@@ -13,6 +13,7 @@
 #include <qwt_plot.h>
 #include <qwt_plot_grid.h>
 
+#include "ui/core_text.h"
 #include "ui/plot_data/allan_curves.h"
 #include "ui/language.h"
 #include "ui/messages.h"
@@ -119,7 +120,7 @@ void NoiseView::showSegment(int position) {
   // term at the edge of the tau range, lost frames).
   if (!r.warnings.empty() || r.model.dof > 0) {
     QString more = tr("<br>noise model: χ²/dof %1").arg(localNumber(r.model.dof > 0 ? r.model.chiSquare / r.model.dof : 0.0, 'f', 2));
-    for (const auto& w : r.warnings) more += "<br><span style='color:#a05000'>" + QString::fromStdString(w).toHtmlEscaped() + "</span>";
+    for (const auto& w : r.warnings) more += "<br><span style='color:#a05000'>" + coreText(w).toHtmlEscaped() + "</span>";
     summary_->setText(summary_->text() + more);
   }
 
@@ -137,7 +138,7 @@ void NoiseView::showSegment(int position) {
     const auto u = noise::termInGyroUnits(term);
     const int row = table_->rowCount();
     table_->insertRow(row);
-    const QStringList cells = {QString::fromUtf8(noise::noiseTermName(term.kind)), localNumber(u.value, 'g', 4),
+    const QStringList cells = {coreText(noise::noiseTermName(term.kind)), localNumber(u.value, 'g', 4),
                                localNumber(u.stdError, 'g', 2), displayUnits(QString::fromUtf8(u.unit)),
                                tr("%1 – %2").arg(localNumber(term.tauLowS, 'g', 3), localNumber(term.tauHighS, 'g', 3))};
     for (int col = 0; col < cells.size(); ++col) table_->setItem(row, col, new QTableWidgetItem(cells[col]));

@@ -40,6 +40,7 @@
 #include "analysis/verdict.h"
 #include "common/version.h"
 #include "session/session_file.h"
+#include "ui/core_text.h"
 #include "ui/language.h"
 #include "ui/plot_export.h"
 #include "ui/plot_interaction.h"
@@ -245,7 +246,7 @@ ResultView::ResultView(QWidget* parent) : QWidget(parent) {
                                                         defaultExportPath(plot->objectName(), "png"), plotExportFilter());
       if (path.isEmpty()) return;
       if (auto s = exportPlotTo(plot, path); !s.isOk())
-        emit exportFailed(tr("Export plot"), QString::fromStdString(s.message()));
+        emit exportFailed(tr("Export plot"), coreText(s.message()));
     });
   };
   addPlotExport(tr("Angles plot…"), anglePlot_);
@@ -265,7 +266,7 @@ ResultView::ResultView(QWidget* parent) : QWidget(parent) {
                                                       tr("PDF document (*.pdf)"));
     if (path.isEmpty()) return;
     if (auto s = exportReportTo(path, limit); !s.isOk())
-      emit exportFailed(tr("Calibration report"), QString::fromStdString(s.message()));
+      emit exportFailed(tr("Calibration report"), coreText(s.message()));
   });
   menu->addSeparator();
   menu->addAction(tr("Open the export folder"), this, &ResultView::openExportFolderRequested);
@@ -320,11 +321,11 @@ void ResultView::showOutcome(std::shared_ptr<const RunOutcome> outcome) {
   if (!outcome_) return;
   fillResultCombo();
   reportView_->setPlainText(tr("Result shown: %1").arg(resultDescription()) + "\n\n" +
-                            QString::fromStdString(outcome_->reportText));
+                            coreText(outcome_->reportText));
   exportButton_->setEnabled(true);
   diagnoseButton_->setEnabled(outcome_->report.isOk());
   if (!outcome_->report) {
-    lagLabel_->setText(tr("<b>No delay:</b> %1").arg(QString::fromStdString(outcome_->report.status().message())));
+    lagLabel_->setText(tr("<b>No delay:</b> %1").arg(coreText(outcome_->report.status().message())));
     return;
   }
   {
@@ -470,7 +471,7 @@ void ResultView::showTestPoint(int position) {
                                                                      : "#a05000";
   QStringList reasons;
   if (verdict.verdict == analysis::Verdict::kInvalid) {
-    for (const auto& why : verdict.reasons) reasons << QString::fromStdString(why).toHtmlEscaped();
+    for (const auto& why : verdict.reasons) reasons << coreText(why).toHtmlEscaped();
   } else {
     // The comparison with the limit, in the GUI's language.
     const double limit = analysis::kDefaultImuDelayLimitMs;

@@ -11,6 +11,7 @@
 #include <QVBoxLayout>
 
 #include "session/session_list.h"
+#include "ui/core_text.h"
 #include "ui/language.h"
 #include "ui/messages.h"
 
@@ -133,7 +134,7 @@ void SessionBrowser::refresh() {
   }
   auto listing = session::listSessions(dir.toStdString());
   if (!listing) {
-    summary_->setText(QString::fromStdString(listing.status().message()));
+    summary_->setText(coreText(listing.status().message()));
     updateButtons();
     return;
   }
@@ -150,7 +151,7 @@ void SessionBrowser::refresh() {
     table_->item(row, kFile)->setData(Qt::UserRole, QString::fromStdString(s.path));
     if (!s.error.empty()) {
       ++unreadable;
-      set(kState, tr("unreadable: %1").arg(displayUnits(QString::fromStdString(s.error))));
+      set(kState, tr("unreadable: %1").arg(coreText(s.error)));
       table_->item(row, kState)->setForeground(QColor(190, 0, 0));
       continue;
     }
@@ -160,7 +161,7 @@ void SessionBrowser::refresh() {
     set(kOperator, QString::fromStdString(s.info.operatorName));
     set(kImu, imu);
     set(kAxes, QString::fromStdString(session::axesOf(s.info.plan)).toUpper());
-    set(kState, s.complete ? tr("complete") : tr("incomplete: %1").arg(QString::fromStdString(s.incompleteReason)));
+    set(kState, s.complete ? tr("complete") : tr("incomplete: %1").arg(coreText(s.incompleteReason)));
     if (!s.complete) table_->item(row, kState)->setForeground(QColor(170, 90, 0));
     set(kLag, joinMs(s.lagMs));
     set(kImuDelay, joinMs(s.imuDelayMs));

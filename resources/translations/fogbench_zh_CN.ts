@@ -590,17 +590,17 @@
         <translation>操作员</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+6"/>
         <source>IMU model</source>
         <translation>IMU 型号</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-2"/>
         <source>IMU serial</source>
         <translation>IMU 序列号</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source>Notes</source>
         <translation>备注</translation>
     </message>
@@ -3985,6 +3985,759 @@ File: %1</source>
         <translation>
             <numerusform>跳过其他文件 %n 个</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>core_text</name>
+    <message>
+        <location filename="../../ui/core_text.cpp" line="+20"/>
+        <source>table</source>
+        <translation>转台</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>gyro</source>
+        <translation>陀螺</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>gyro-table</source>
+        <translation>陀螺−转台</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>timing</source>
+        <translation>时序</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>imu</source>
+        <translation>IMU</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>none</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>unexplained</source>
+        <translation>无法解释</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>bias_drift</source>
+        <translation>零偏漂移</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>scale_factor_error</source>
+        <translation>标度因数误差</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>scale_factor_asymmetry</source>
+        <translation>标度因数不对称</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>scale_factor_nonlinearity</source>
+        <translation>标度因数非线性</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>misalignment</source>
+        <translation>安装失准</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>g_sensitivity</source>
+        <translation>g 敏感性</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>first_order_lag</source>
+        <translation>一阶滞后</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>table_harmonic_distortion</source>
+        <translation>转台运动谐波失真</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>encoder_cyclic_error</source>
+        <translation>编码器周期误差</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>timestamp_jitter</source>
+        <translation>时间戳抖动</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>clock_drift</source>
+        <translation>时钟漂移</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>dropped_frames</source>
+        <translation>丢帧</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>earth_rate_projection</source>
+        <translation>地球自转角速度投影</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>h%1_in_phase</source>
+        <translation>%1 次谐波同相</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>h%1_quadrature</source>
+        <translation>%1 次谐波正交</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>residual_ms</source>
+        <translation>残差均方</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>gain</source>
+        <translation>增益</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>delay</source>
+        <translation>延迟</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>trend</source>
+        <translation>趋势</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cross_in_phase</source>
+        <translation>交叉轴同相</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cross_quadrature</source>
+        <translation>交叉轴正交</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>table_interval</source>
+        <translation>转台采样间隔</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>table_interval_var</source>
+        <translation>转台采样间隔方差</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>imu_interval</source>
+        <translation>IMU 帧间隔</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>imu_interval_var</source>
+        <translation>IMU 帧间隔方差</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>imu_lost</source>
+        <translation>IMU 丢帧</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>frames</source>
+        <translation>帧</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>drift</source>
+        <translation>漂移</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>scale_factor</source>
+        <translation>标度因数</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>asymmetry</source>
+        <translation>不对称度</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>nonlinearity</source>
+        <translation>非线性度</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>time_constant</source>
+        <translation>时间常数</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>sin_amplitude</source>
+        <translation>正弦幅值</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cos_amplitude</source>
+        <translation>余弦幅值</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>jitter_variance</source>
+        <translation>抖动方差</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>loss_rate</source>
+        <translation>丢帧率</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>latitude_error</source>
+        <translation>纬度误差</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>heading_error</source>
+        <translation>航向误差</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>deg/h per min</source>
+        <translation>°/h 每分钟</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>ppm at 100 deg/s</source>
+        <translation>ppm（100 °/s 处）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>per mille</source>
+        <translation>‰</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>arcsec</source>
+        <translation>角秒</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Sim-to-real diagnosis: %1 gap-map cells, chi2 %2 (%3)</source>
+        <translation>仿真与实测差异诊断：差异图 %1 格，chi2 %2（%3）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>significant gap</source>
+        <translation>差异显著</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no significant gap</source>
+        <translation>无显著差异</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>replay calibrated to: lag %1 ms, table frequency %2 ppm, encoder noise %3 deg, ARW %4 deg/sqrt(h), bias %5 deg/h,</source>
+        <translation>回放校准为：滞后 %1 ms，转台频率 %2 ppm，编码器噪声 %3 deg，ARW %4 deg/sqrt(h)，零偏 %5 deg/h，</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>heading %1 +- %2 deg, table every %3 ms, IMU every %4 ms</source>
+        <translation>航向 %1 ± %2 deg，转台每 %3 ms、IMU 每 %4 ms 一个样本</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Timing audit real replay</source>
+        <translation>时序审核　　　　　　实测　　　　　　　　　回放</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 interval %2 ppm, std %3 us, gaps %4, dup %5 | %6 ppm, std %7 us, gaps %8</source>
+        <translation>%1 间隔 %2 ppm，标准差 %3 µs，缺口 %4，重复 %5 | %6 ppm，标准差 %7 µs，缺口 %8</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>lost %1 / %2, duplicates %3 / %4, wraps %5 / %6, checksum failures %7 / %8</source>
+        <translation>丢失 %1 / %2，重复 %3 / %4，计数器回绕 %5 / %6，校验失败 %7 / %8</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Gap per channel (rms z; 1 = within the simulator&apos;s spread) before after held-out shrink</source>
+        <translation>各通道差异（z 的均方根；1 = 在仿真离散度之内）　之前　之后　留出数据缩减</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 %2 cells %3 %4 %5 %</source>
+        <translation>%1 %2 格　%3 %4 %5 %</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>largest cells:</source>
+        <translation>最大的格：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>point %1 segment %2 %3 %4 axis %5: real %6, replay %7 +- %8 %9 (z %10)</source>
+        <translation>点 %1 段 %2 %3 %4 轴 %5：实测 %6，回放 %7 ± %8 %9（z %10）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Effects, ranked (score = training delta chi2 - k ln n)</source>
+        <translation>候选效应排序（得分 = 训练数据的 Δchi2 − k ln n）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 score %2 held-out shrink %3 % KEPT %4</source>
+        <translation>%1 得分 %2　留出缩减 %3 %　保留　%4</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 score %2 held-out shrink %3 % %4</source>
+        <translation>%1 得分 %2　留出缩减 %3 %　%4</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 %2 +- %3 %4, %5</source>
+        <translation>%1 %2 ± %3 %4，%5</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 %2 +- %3 %4</source>
+        <translation>%1 %2 ± %3 %4</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Alias groups (swing data cannot separate these)</source>
+        <translation>混叠组（摆动数据无法区分组内各项）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>to separate: %1</source>
+        <translation>区分方法：%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>note: %1</source>
+        <translation>注：%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Verdict: %1 (+ %2) - %3</source>
+        <translation>结论：%1（+ %2）—— %3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Verdict: %1 - %2</source>
+        <translation>结论：%1 —— %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>(diagnosis took %1 s)</source>
+        <translation>（诊断用时 %1 s）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>constant delay: %1</source>
+        <translation>恒定延迟：%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>constant rate: %1</source>
+        <translation>恒定角速度：%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>pure gyro delay, first-order lag with time constant &lt;= 5 ms, table read delay, timestamp offset, fixed serial / board latency</source>
+        <translation>纯陀螺延迟、时间常数 ≤ 5 ms 的一阶滞后、转台读数延迟、时间戳偏移、固定的串口 / 采样板延迟</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>gyro bias, earth_rate_projection (latitude / heading error)</source>
+        <translation>陀螺零偏、地球自转角速度投影（纬度 / 航向误差）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>lag %1 ms (taken as the replay&apos;s nominal delay)</source>
+        <translation>滞后 %1 ms（作为回放的标称延迟）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>bias %1 / %2 / %3 deg/h (X/Y/Z, over the nominal Earth rate)</source>
+        <translation>零偏 %1 / %2 / %3 deg/h（X/Y/Z，扣除标称地球自转角速度后）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>swing data shift all of them by one constant at every frequency: measure the read delay and the board latency on the board (loop-back / sync pulse), and separate a lag from a delay with a step or a swing above 1/(2 pi tau) (~30 Hz for 5 ms)</source>
+        <translation>摆动数据在每个频率上都把它们移动同一个常数：在采样板上测量读数延迟和板延迟（回环 / 同步脉冲），用阶跃或高于 1/(2πτ) 的摆动（5 ms 时约 30 Hz）区分滞后与延迟</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a constant rate per axis looks the same either way: a multi-position static test (IMU turned to four headings) separates the Earth rate from the bias</source>
+        <translation>每轴的恒定角速度两种来源看起来相同：多位置静态试验（IMU 转到四个航向）可区分地球自转角速度与零偏</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the gap is significant and no effect in the library closes it on held-out blocks</source>
+        <translation>差异显著，效应库中没有任何效应能在留出数据上消除它</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>real and simulated data agree within the simulator&apos;s own spread</source>
+        <translation>实测与仿真在仿真自身的离散度之内一致</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 closes %2 % of the held-out gap but leaves a significant remainder in the %3; the rest is not in the library</source>
+        <translation>%1 消除了留出数据差异的 %2 %，但在%3中留下显著的剩余；其余部分不在效应库中</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>closes %1 % of the held-out gap</source>
+        <translation>消除了留出数据差异的 %1 %</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 channel (%2)</source>
+        <translation>%1 通道（%2）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>held-out cells (%1)</source>
+        <translation>留出格（%1）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>excess chi2 %1 over %2 cells, %3 sigma</source>
+        <translation>%2 格上超出 chi2 %1，%3 σ</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 lost IMU frames filled with the mean increment</source>
+        <translation>%1 个丢失的 IMU 帧以平均增量填补</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the noise model fits the Allan curve poorly (chi^2 %1 for %2 dof): a term outside IEEE 952, or non-white quantisation</source>
+        <translation>噪声模型与 Allan 曲线拟合不佳（%2 个自由度 chi^2 为 %1）：存在 IEEE 952 之外的噪声项，或量化噪声不是白噪声</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>quantisation</source>
+        <translation>量化噪声</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>angle random walk</source>
+        <translation>角度随机游走</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>bias instability</source>
+        <translation>零偏不稳定性</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>rate random walk</source>
+        <translation>角速度随机游走</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>rate ramp</source>
+        <translation>角速度斜坡</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>simulator, seed %1, %2</source>
+        <translation>仿真器，种子 %1，%2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>real time</source>
+        <translation>实时</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>as fast as possible</source>
+        <translation>尽可能快</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1x real time</source>
+        <translation>%1 倍实时</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>replay of %1 at as fast as possible</source>
+        <translation>回放 %1，尽可能快</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>replay of %1 at %2x</source>
+        <translation>回放 %1，%2 倍速</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>stopped by the operator after %1 s</source>
+        <translation>操作员在 %1 s 后停止</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 (after %2 s)</source>
+        <translation>%1（%2 s 后）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the session file could not be written after %1 s (%2)</source>
+        <translation>%1 s 后无法写入会话文件（%2）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no data for %1 s from %2 (after %3 s)</source>
+        <translation>%2 已 %1 s 没有数据（%3 s 后）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the session file could not be written at the end of the run (%1)</source>
+        <translation>运行结束时无法写入会话文件（%1）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>test point %1: %2</source>
+        <translation>测试点 %1：%2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 (no delay)</source>
+        <translation>%1（无延迟）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no test point gave a delay</source>
+        <translation>没有测试点给出延迟</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the delay or its uncertainty is not a finite number</source>
+        <translation>延迟或其不确定度不是有限数</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>every test point passed its validity checks and its IMU delay + 2σ is below the %1 ms limit</source>
+        <translation>每个测试点都通过了有效性检查，其 IMU 延迟 + 2σ 低于 %1 ms 限值</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>IMU delay %1 ± %2 ms; + 2σ = %3 ms &lt; %4 ms limit (margin %5 ms)</source>
+        <translation>IMU 延迟 %1 ± %2 ms；+ 2σ = %3 ms &lt; %4 ms 限值（余量 %5 ms）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>IMU delay %1 ± %2 ms; + 2σ = %3 ms ≥ %4 ms limit (over by %5 ms)</source>
+        <translation>IMU 延迟 %1 ± %2 ms；+ 2σ = %3 ms ≥ %4 ms 限值（超出 %5 ms）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the gyro turns with the table (gyro/table ratio %1)</source>
+        <translation>陀螺与转台同向转动（陀螺/转台比 %1）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the gyro turns with the table (gyro/table ratio %1, after the stated sign -1)</source>
+        <translation>陀螺与转台同向转动（陀螺/转台比 %1，已按声明的符号 −1）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the gyro&apos;s %1 axis turns against the table (gyro/table ratio %2): the axis is mounted the other way round or its sign convention differs from the table&apos;s; the delay is refused (read as a normal axis it would be a half-period lag). If the IMU is mounted so, state it (metadata bench.gyro_sign {&quot;%3&quot;: -1}, or --gyro-sign %4=-1) and analyse again</source>
+        <translation>陀螺的 %1 轴与转台反向转动（陀螺/转台比 %2）：该轴装反了，或其符号约定与转台不同；延迟被拒绝（按正常轴读取会是半个周期的滞后）。如果 IMU 就是这样安装的，请声明（元数据 bench.gyro_sign {&quot;%3&quot;: -1}，或 --gyro-sign %4=-1）后重新分析</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the gyro&apos;s %1 axis turns against the table (gyro/table ratio %2 after the stated sign -1): the axis is mounted the other way round or its sign convention differs from the table&apos;s; the delay is refused (read as a normal axis it would be a half-period lag). Check the stated sign: without it the gyro turns with the table</source>
+        <translation>陀螺的 %1 轴与转台反向转动（按声明的符号 −1 后陀螺/转台比 %2）：该轴装反了，或其符号约定与转台不同；延迟被拒绝（按正常轴读取会是半个周期的滞后）。请检查声明的符号：不加它陀螺与转台同向转动</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a steady sinusoid: smooth table residual %1, harmonics %2, amplitude change %3, smooth gyro residual %4 of the amplitude</source>
+        <translation>稳定的正弦摆动：转台残差平滑部分 %1，谐波 %2，幅值变化 %3，陀螺残差平滑部分 %4（相对幅值）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a steady sinusoid: smooth table residual %1, harmonics %2, amplitude change %3 of the amplitude</source>
+        <translation>稳定的正弦摆动：转台残差平滑部分 %1，谐波 %2，幅值变化 %3（相对幅值）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not a steady sinusoid: %1. The sine fits are biased by such a swing (the noise figures then describe the misfit, not noise); the delay is refused. Check the table&apos;s servo and amplitude, and record a steady swing</source>
+        <translation>不是稳定的正弦摆动：%1。这样的摆动会使正弦拟合有偏（噪声数值描述的是失配而非噪声）；延迟被拒绝。请检查转台伺服和幅值，并记录稳定的摆动</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not a steady sinusoid: %1. The sine fits are biased by such a swing (the noise figures then describe the misfit, not noise); the delay is refused. Check the table&apos;s servo and amplitude, and record a steady swing. A damped sinusoid fits the table (decay time %2 s, residual %3 of the amplitude): its lag is %4 ± %5 ms, if the decay is the table&apos;s true motion</source>
+        <translation>不是稳定的正弦摆动：%1。这样的摆动会使正弦拟合有偏（噪声数值描述的是失配而非噪声）；延迟被拒绝。请检查转台伺服和幅值，并记录稳定的摆动。阻尼正弦与转台相符（衰减时间 %2 s，残差为幅值的 %3）：如果衰减是转台的真实运动，其滞后为 %4 ± %5 ms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the table&apos;s residual has a smooth part of %1 of the amplitude (limit %2)</source>
+        <translation>转台残差的平滑部分为幅值的 %1（限值 %2）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>harmonics 2-5 reach %1 of the amplitude (limit %2)</source>
+        <translation>2–5 次谐波达到幅值的 %1（限值 %2）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the amplitude decays by %1 over the record (limit %2)</source>
+        <translation>幅值在记录期间衰减 %1（限值 %2）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the amplitude grows by %1 over the record (limit %2)</source>
+        <translation>幅值在记录期间增长 %1（限值 %2）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the gyro angle&apos;s residual has a smooth part of %1 of its amplitude (limit %2)</source>
+        <translation>陀螺角度残差的平滑部分为其幅值的 %1（限值 %2）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>per-period lag drifts %1 ± %2 ppm (%3 σ)</source>
+        <translation>逐周期滞后漂移 %1 ± %2 ppm（%3 σ）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>periods differ by %1 ± %2 ppm (%3 σ)</source>
+        <translation>周期相差 %1 ± %2 ppm（%3 σ）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 (information)</source>
+        <translation>%1（仅供参考）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not judged: the swing is not a steady sinusoid (steady_sine), which moves the fitted periods and the per-period lags; %1</source>
+        <translation>未判定：摆动不是稳定的正弦（steady_sine），这会移动拟合周期和逐周期滞后；%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>table and gyro stamps keep one rate: %1</source>
+        <translation>转台与陀螺时间戳速率一致：%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the gyro&apos;s time stamps run %1 ppm fast against the table&apos;s (%2): the two streams are not stamped on one clock at one rate, so their phase difference is not a delay. Stamp both with the sampling board&apos;s common counter (or correct the clock rate) and record again</source>
+        <translation>陀螺时间戳比转台的快 %1 ppm（%2）：两路数据不是用同一时钟、同一速率打的时间戳，它们的相位差不是延迟。请用采样板的公共计数器给两者打时间戳（或校正时钟速率）后重新记录</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the gyro&apos;s time stamps run %1 ppm slow against the table&apos;s (%2): the two streams are not stamped on one clock at one rate, so their phase difference is not a delay. Stamp both with the sampling board&apos;s common counter (or correct the clock rate) and record again</source>
+        <translation>陀螺时间戳比转台的慢 %1 ppm（%2）：两路数据不是用同一时钟、同一速率打的时间戳，它们的相位差不是延迟。请用采样板的公共计数器给两者打时间戳（或校正时钟速率）后重新记录</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the IMU delay is negative (%1 ± %2 ms): the gyro would report rotation before it happened. A stamping, sign or clock problem: check the table read delay constant, that both streams share one clock, and the gyro axis&apos; sign</source>
+        <translation>IMU 延迟为负（%1 ± %2 ms）：陀螺会在转动发生之前报告转动。这是时间戳、符号或时钟问题：请检查转台读数延迟常数、两路数据是否共用一个时钟，以及陀螺轴的符号</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the IMU delay is causal (%1 ms)</source>
+        <translation>IMU 延迟符合因果（%1 ms）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&apos;%1&apos; is empty (0 bytes), not a fogbench session; it was never written</source>
+        <translation>“%1”为空（0 字节），不是 fogbench 会话；它从未被写入</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&apos;%1&apos; is not a fogbench session (not an SQLite database)</source>
+        <translation>“%1”不是 fogbench 会话（不是 SQLite 数据库）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&apos;%1&apos; is not a fogbench session</source>
+        <translation>“%1”不是 fogbench 会话</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&apos;%1&apos; is a folder, not a fogbench session file</source>
+        <translation>“%1”是文件夹，不是 fogbench 会话文件</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cannot open session &apos;%1&apos;: no such file; check the path</source>
+        <translation>无法打开会话“%1”：文件不存在；请检查路径</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&apos;%1&apos; is truncated: it holds %2 of its %3 bytes; copy it again from the original or restore a backup</source>
+        <translation>“%1”被截断：只有 %3 字节中的 %2 字节；请从原件重新复制或从备份恢复</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&apos;%1&apos; is truncated: it holds %2 of its %3 bytes; copy it again from the original or restore a backup (its -wal does not hold the missing pages)</source>
+        <translation>“%1”被截断：只有 %3 字节中的 %2 字节；请从原件重新复制或从备份恢复（其 -wal 文件中没有缺失的页）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&apos;%1&apos; is an SQLite database but not a fogbench session (application_id %2)</source>
+        <translation>“%1”是 SQLite 数据库，但不是 fogbench 会话（application_id %2）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&apos;%1&apos; is a fogbench session whose SQLite header (its first 100 bytes) is damaged; it is not analysed as a raw stream. Restore it from a backup, or repair a copy: printf &apos;SQLite format 3\0&apos; | dd of=COPY.fbs conv=notrunc (when only the header&apos;s first bytes were hit, the copy opens again)</source>
+        <translation>“%1”是 fogbench 会话，但其 SQLite 文件头（前 100 字节）已损坏；不会把它当作原始数据流分析。请从备份恢复，或修复一份副本：printf &apos;SQLite format 3\0&apos; | dd of=COPY.fbs conv=notrunc（只有文件头的前几个字节受损时，副本即可重新打开）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Markov (correlated) rate</source>
+        <translation>马尔可夫（相关）角速度</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>deg</source>
+        <translation>°</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the replay cannot reach the measured lag exactly</source>
+        <translation>回放无法精确达到测得的滞后</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>heading %1 +- %2 deg, from the Earth rate the gyros see as the table turns</source>
+        <translation>航向 %1 ± %2 deg，由转台转动时陀螺感受到的地球自转角速度求得</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>left out: %1</source>
+        <translation>未计入：%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>ran on %1 of the %2 threads asked for, to stay within the %3 MB memory limit</source>
+        <translation>为不超过 %3 MB 的内存限制，只用了所要求的 %2 个线程中的 %1 个</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the Ceres fit on the forward model failed (%1); linear fit kept</source>
+        <translation>正向模型上的 Ceres 拟合失败（%1）；保留线性拟合</translation>
     </message>
 </context>
 </TS>

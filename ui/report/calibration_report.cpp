@@ -15,6 +15,7 @@
 #include "analysis/verdict.h"
 #include "common/version.h"
 #include "noise/gyro_noise.h"
+#include "ui/core_text.h"
 #include "ui/plot_data/allan_curves.h"
 #include "ui/report/page_flow.h"
 #include "ui/report/report_plots.h"
@@ -26,6 +27,7 @@ using analysis::DelayReport;
 using analysis::SineFit;
 using analysis::TestPointResult;
 using detail::PageFlow;
+using ui::coreText;
 using detail::Table;
 
 namespace {
@@ -221,7 +223,7 @@ void verdictBox(PageFlow& flow, const Content& c) {
     lines << QObject::tr("Test point %1 (%2): %3").arg(p.index + 1).arg(condition(r), p.line);
   }
   for (const auto& f : c.in.delays.failedPoints)
-    lines << QObject::tr("INVALID: no delay from %1").arg(QString::fromStdString(f));
+    lines << QObject::tr("INVALID: no delay from %1").arg(coreText(f));
   const QString rule =
       QObject::tr("Rule: a test point is invalid when a validity check fails (reversed gyro axis, clock-rate "
                   "mismatch, a swing that is not a steady sinusoid, a negative IMU delay); otherwise it passes when "
@@ -328,7 +330,7 @@ void firstPage(PageFlow& flow, const Content& c) {
   }
   flow.table(t);
   for (const auto& f : d.failedPoints)
-    flow.paragraph(QObject::tr("No delay from %1").arg(QString::fromStdString(f)), PageFlow::font(8.5), kFailColour);
+    flow.paragraph(QObject::tr("No delay from %1").arg(coreText(f)), PageFlow::font(8.5), kFailColour);
   for (const auto& cc : d.consistency) {
     const int dec = decimalsFor(cc.weightedLagStdMs);
     flow.paragraph(QObject::tr("Delay against frequency, %1 axis (%2 frequencies): weighted lag %3 ms, χ² %4 on %5 "
@@ -459,7 +461,7 @@ void constantsAndPlanPage(PageFlow& flow, const Content& c) {
                       {QObject::tr("measured (ms)"), 46, Qt::AlignRight}};
     double gyroMin = 0.0, gyroMax = 0.0;
     for (const auto& l : budget.lines) {
-      theory.rows.push_back({QString::fromStdString(l.stage), range(l.minMs, l.maxMs), QString::fromStdString(l.basis), ""});
+      theory.rows.push_back({coreText(l.stage), range(l.minMs, l.maxMs), coreText(l.basis), ""});
       theory.boldRows.push_back(false);
       if (l.stage.rfind("board:", 0) != 0) {
         gyroMin += l.minMs;
@@ -703,7 +705,7 @@ void resultsPage(PageFlow& flow, const Content& c, const TestPointResult& p, con
   flow.keyValues(rows, 48.0);
   if (!p.warnings.empty()) {
     flow.heading(QObject::tr("Warnings"));
-    for (const auto& w : p.warnings) flow.paragraph("• " + QString::fromStdString(w), PageFlow::font(8.5), kFailColour);
+    for (const auto& w : p.warnings) flow.paragraph("• " + coreText(w), PageFlow::font(8.5), kFailColour);
   }
 }
 
@@ -748,7 +750,7 @@ void noisePage(PageFlow& flow, const noise::GyroNoiseReport& r) {
                                                .arg(static_cast<qulonglong>(r.lostFrames))},
                   {QObject::tr("model fit"), QObject::tr("χ²/dof %1").arg(fixed(r.model.dof > 0 ? r.model.chiSquare / r.model.dof : 0.0, 2))}},
                  48.0);
-  for (const auto& w : r.warnings) flow.paragraph("• " + QString::fromStdString(w), PageFlow::font(8.5), kFailColour);
+  for (const auto& w : r.warnings) flow.paragraph("• " + coreText(w), PageFlow::font(8.5), kFailColour);
 }
 
 void layOut(PageFlow& flow, const Content& c) {
@@ -839,7 +841,7 @@ Verdict calibrationVerdict(const DelayReport& delays, double limitMs) {
     pv.pass = p.verdict == analysis::Verdict::kPass;
     pv.word = verdictWord(p.verdict);
     QStringList why;
-    for (const auto& r : p.reasons) why << QString::fromStdString(r);
+    for (const auto& r : p.reasons) why << coreText(r);
     pv.line = pv.word + ": " + why.join("; ");
     failed += p.verdict == analysis::Verdict::kFail;
     invalid += p.verdict == analysis::Verdict::kInvalid;

@@ -1,0 +1,195 @@
+// The core's messages of every kind, made by the core itself (a diagnosis,
+// an analysis and its verdict, sources and a stopped run, unreadable session
+// files, noise terms), shown through coreText() in Chinese: no English word
+// may be left but units, acronyms and identifiers.
+
+#include <QRegularExpression>
+#include <QTemporaryDir>
+#include <QtTest>
+#include <atomic>
+#include <fstream>
+
+#include "acquisition/acquisition.h"
+#include "acquisition/replay_source.h"
+#include "acquisition/simulator_source.h"
+#include "analysis/delay_analysis.h"
+#include "analysis/verdict.h"
+#include "diagnosis/blind_check.h"
+#include "diagnosis/diagnosis.h"
+#include "diagnosis/effects.h"
+#include "model/simulator.h"
+#include "noise/noise_terms.h"
+#include "protocol/recording_builder.h"
+#include "session/session_file.h"
+#include "ui/core_text.h"
+#include "ui/language.h"
+
+namespace {
+
+using namespace fog;
+
+// Words a Chinese operator reads as they are: units, acronyms, names.
+const QStringList kKept = {"IMU", "ARW", "chi", "ppm", "rms", "dof", "Hz", "ms", "fogbench", "SQLite", "Allan",
+                           "IEEE", "printf", "dd", "COPY", "fbs", "conv", "notrunc", "of", "format", "urad",
+                           "udeg", "us", "sigma"};
+
+// English left in a translated text: runs of three or more Latin letters that
+// are not kept words, identifiers (with _ . or -) or the given path.
+QStringList englishIn(QString text, const QString& path = {}) {
+  if (!path.isEmpty()) text.replace(path, "");
+  static const QRegularExpression identifier(R"([A-Za-z0-9]*[_.][A-Za-z0-9_.]*|--[a-z-]+)");
+  text.replace(identifier, " ");
+  static const QRegularExpression word(R"([A-Za-z]{3,})");
+  QStringList left;
+  for (auto it = word.globalMatch(text); it.hasNext();) {
+    const QString w = it.next().captured(0);
+    if (!kKept.contains(w)) left << w;
+  }
+  return left;
+}
+
+class CoreTextTest : public QObject {
+  Q_OBJECT
+
+  int checked_ = 0;
+  QStringList failures_;  // of the test function running; every one is reported
+
+  void expectChinese(const std::string& english, const QString& path = {}) {
+    const QString shown = ui::coreText(english);
+    const QStringList left = englishIn(shown, path);
+    ++checked_;
+    if (!left.isEmpty() && !failures_.contains(shown))
+      failures_ << QString("untranslated '%1' in:\n  %2\n  (from: %3)").arg(left.join("', '"), shown, QString::fromStdString(english));
+  }
+
+  void expectEveryLineChinese(const std::string& text) {
+    for (const QString& line : QString::fromStdString(text).split('\n')) expectChinese(line.toStdString());
+  }
+
+  static Recording simulated(std::vector<std::unique_ptr<model::Effect>> effects, std::uint64_t seed) {
+    model::SimConfig c;
+    c.seed = seed;
+    c.fog.setOwnDelayS(0.31e-3);
+    auto run = model::simulate(c, diagnosis::blindCheckPlan(), std::move(effects));
+    if (!run) qFatal("simulation failed: %s", run.status().toString().c_str());
+    auto rec = protocol::decodeRecording(run->bytes);
+    if (!rec) qFatal("decoding failed: %s", rec.status().toString().c_str());
+    return *rec;
+  }
+
+  void expectDiagnosisChinese(const Recording& rec) {
+    SessionInfo info;
+    info.plan = diagnosis::blindCheckPlan();
+    auto d = diagnosis::diagnose(rec, &info, {}, {});
+    QVERIFY2(d.isOk(), d.status().toString().c_str());
+    expectEveryLineChinese(diagnosis::formatDiagnosisText(*d));
+    expectChinese(d->verdict);
+    expectChinese(d->verdictReason);
+    for (const auto& e : d->effects) expectChinese(e.name);
+    for (const auto& n : d->notes) expectChinese(n);
+    for (const auto& g : d->gapMap) {
+      expectChinese(diagnosis::channelName(g.key.channel));
+      expectChinese(diagnosis::quantityName(g.key));
+    }
+  }
+
+ private slots:
+  void initTestCase() { QCOMPARE(ui::installTranslations(*qApp, "zh_CN"), QString("zh_CN")); }
+
+  void aTemplateIsTranslatedWithItsVariablePartsAndTheRestKept() {
+    QCOMPARE(ui::coreText(std::string("test point 2: no test point gave a delay")),
+             QString::fromUtf8("测试点 2：没有测试点给出延迟"));
+    QCOMPARE(ui::coreText(std::string("something the catalogue does not know")),
+             QString("something the catalogue does not know"));
+    QCOMPARE(ui::coreText(std::string("gyro channel (excess chi2 40 over 8 cells, 10.0 sigma)")),
+             QString::fromUtf8("陀螺 通道（8 格上超出 chi2 40，10.0 σ）"));
+  }
+
+  void diagnosisOfACleanSession() { expectDiagnosisChinese(simulated({}, 21)); }
+
+  void diagnosisOfASessionWithAnEffect() {
+    std::vector<std::unique_ptr<model::Effect>> e;
+    e.push_back(diagnosis::makeEffect(diagnosis::EffectId::kFirstOrderLag, {3.0}));
+    expectDiagnosisChinese(simulated(std::move(e), 22));
+  }
+
+  void effectNamesParametersAndUnits() {
+    for (const auto& spec : diagnosis::effectLibrary()) {
+      expectChinese(spec.name);
+      for (const auto& p : spec.parameters) {
+        expectChinese(p.name);
+        expectChinese(p.unit);
+      }
+    }
+  }
+
+  void analysisVerdictsAndValidityChecks() {
+    const Recording rec = simulated({}, 23);
+    for (int sign : {1, -1}) {
+      analysis::BenchConstants constants;
+      constants.gyroSign = {sign, sign, sign};
+      auto report = analysis::analyzeRecording(rec, constants);
+      QVERIFY2(report.isOk(), report.status().toString().c_str());
+      for (const auto& p : report->points)
+        for (const auto& c : p.checks) expectChinese(c.detail);
+      for (double limit : {0.1, 10.0})
+        for (const auto& why : analysis::judgeReport(*report, limit).reasons) expectChinese(why);
+    }
+  }
+
+  void sourcesAndAStoppedRun() {
+    for (double speed : {0.0, 1.0, 20.0}) {
+      auto s = acquisition::SimulatorSource::create({}, diagnosis::blindCheckPlan(), speed);
+      QVERIFY(s.isOk());
+      expectChinese((*s)->description());
+    }
+    for (double speed : {0.0, 10.0}) expectChinese(acquisition::ReplaySource({}, speed, "run.fbs").description());
+    auto source = acquisition::SimulatorSource::create({}, diagnosis::blindCheckPlan(), 1.0);
+    QVERIFY(source.isOk());
+    std::atomic<bool> stop{true};
+    auto run = acquisition::acquire(**source, {}, &stop);
+    QVERIFY2(run.isOk(), run.status().toString().c_str());
+    QVERIFY(!run->incompleteReason.empty());
+    expectChinese(run->incompleteReason);
+  }
+
+  void unreadableSessionFiles() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const std::string base = dir.path().toStdString();
+    std::ofstream(base + "/empty.fbs").close();
+    std::ofstream(base + "/text.fbs") << "not a session at all, just some text long enough to be read as a header";
+    auto writer = session::SessionWriter::create(base + "/whole.fbs", {});
+    QVERIFY(writer.isOk());
+    QVERIFY((*writer)->finish(true, "").isOk());
+    writer->reset();
+    std::ifstream whole(base + "/whole.fbs", std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(whole)), {});
+    std::ofstream(base + "/cut.fbs", std::ios::binary) << bytes.substr(0, bytes.size() / 2);
+    for (const char* name : {"empty.fbs", "text.fbs", "cut.fbs", "missing.fbs", ""}) {
+      auto r = session::SessionReader::open(base + "/" + name);
+      QVERIFY2(!r.isOk(), name);
+      expectChinese(r.status().message(), dir.path());
+    }
+  }
+
+  void noiseTermNames() {
+    for (auto kind : {noise::NoiseTermKind::kQuantisation, noise::NoiseTermKind::kAngleRandomWalk,
+                      noise::NoiseTermKind::kBiasInstability, noise::NoiseTermKind::kRateRandomWalk,
+                      noise::NoiseTermKind::kRateRamp, noise::NoiseTermKind::kMarkov})
+      expectChinese(noise::noiseTermName(kind));
+  }
+
+  void cleanup() {
+    const QString all = failures_.join("\n");
+    failures_.clear();
+    QVERIFY2(all.isEmpty(), qPrintable(all));
+  }
+
+  void cleanupTestCase() { qInfo("%d core messages checked", checked_); }
+};
+
+}  // namespace
+
+QTEST_MAIN(CoreTextTest)
+#include "core_text_test.moc"

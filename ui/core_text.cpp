@@ -1,0 +1,306 @@
+#include "ui/core_text.h"
+
+#include <QCoreApplication>
+#include <QRegularExpression>
+#include <QStringList>
+#include <algorithm>
+#include <vector>
+
+
+namespace fog::ui {
+namespace {
+
+// The core's message templates, as the core writes them (core/analysis,
+// core/diagnosis, core/noise, core/acquisition, core/session); %1, %2, ...
+// stand for the variable parts. A template is only ever matched whole, so a
+// message the core changes stops matching and shows in English until its
+// template here follows (tests/ui/core_text_test.cpp then fails).
+const char* const kTemplates[] = {
+    QT_TRANSLATE_NOOP("core_text", "table"),
+    QT_TRANSLATE_NOOP("core_text", "gyro"),
+    QT_TRANSLATE_NOOP("core_text", "gyro-table"),
+    QT_TRANSLATE_NOOP("core_text", "timing"),
+    QT_TRANSLATE_NOOP("core_text", "imu"),
+    QT_TRANSLATE_NOOP("core_text", "none"),
+    QT_TRANSLATE_NOOP("core_text", "unexplained"),
+    QT_TRANSLATE_NOOP("core_text", "bias_drift"),
+    QT_TRANSLATE_NOOP("core_text", "scale_factor_error"),
+    QT_TRANSLATE_NOOP("core_text", "scale_factor_asymmetry"),
+    QT_TRANSLATE_NOOP("core_text", "scale_factor_nonlinearity"),
+    QT_TRANSLATE_NOOP("core_text", "misalignment"),
+    QT_TRANSLATE_NOOP("core_text", "g_sensitivity"),
+    QT_TRANSLATE_NOOP("core_text", "first_order_lag"),
+    QT_TRANSLATE_NOOP("core_text", "table_harmonic_distortion"),
+    QT_TRANSLATE_NOOP("core_text", "encoder_cyclic_error"),
+    QT_TRANSLATE_NOOP("core_text", "timestamp_jitter"),
+    QT_TRANSLATE_NOOP("core_text", "clock_drift"),
+    QT_TRANSLATE_NOOP("core_text", "dropped_frames"),
+    QT_TRANSLATE_NOOP("core_text", "earth_rate_projection"),
+    QT_TRANSLATE_NOOP("core_text", "h%1_in_phase"),
+    QT_TRANSLATE_NOOP("core_text", "h%1_quadrature"),
+    QT_TRANSLATE_NOOP("core_text", "residual_ms"),
+    QT_TRANSLATE_NOOP("core_text", "gain"),
+    QT_TRANSLATE_NOOP("core_text", "delay"),
+    QT_TRANSLATE_NOOP("core_text", "trend"),
+    QT_TRANSLATE_NOOP("core_text", "cross_in_phase"),
+    QT_TRANSLATE_NOOP("core_text", "cross_quadrature"),
+    QT_TRANSLATE_NOOP("core_text", "table_interval"),
+    QT_TRANSLATE_NOOP("core_text", "table_interval_var"),
+    QT_TRANSLATE_NOOP("core_text", "imu_interval"),
+    QT_TRANSLATE_NOOP("core_text", "imu_interval_var"),
+    QT_TRANSLATE_NOOP("core_text", "imu_lost"),
+    QT_TRANSLATE_NOOP("core_text", "frames"),
+    QT_TRANSLATE_NOOP("core_text", "drift"),
+    QT_TRANSLATE_NOOP("core_text", "scale_factor"),
+    QT_TRANSLATE_NOOP("core_text", "asymmetry"),
+    QT_TRANSLATE_NOOP("core_text", "nonlinearity"),
+    QT_TRANSLATE_NOOP("core_text", "time_constant"),
+    QT_TRANSLATE_NOOP("core_text", "sin_amplitude"),
+    QT_TRANSLATE_NOOP("core_text", "cos_amplitude"),
+    QT_TRANSLATE_NOOP("core_text", "jitter_variance"),
+    QT_TRANSLATE_NOOP("core_text", "loss_rate"),
+    QT_TRANSLATE_NOOP("core_text", "latitude_error"),
+    QT_TRANSLATE_NOOP("core_text", "heading_error"),
+    QT_TRANSLATE_NOOP("core_text", "deg/h per min"),
+    QT_TRANSLATE_NOOP("core_text", "ppm at 100 deg/s"),
+    QT_TRANSLATE_NOOP("core_text", "per mille"),
+    QT_TRANSLATE_NOOP("core_text", "arcsec"),
+    QT_TRANSLATE_NOOP("core_text", "Sim-to-real diagnosis: %1 gap-map cells, chi2 %2 (%3)"),
+    QT_TRANSLATE_NOOP("core_text", "significant gap"),
+    QT_TRANSLATE_NOOP("core_text", "no significant gap"),
+    QT_TRANSLATE_NOOP("core_text", "replay calibrated to: lag %1 ms, table frequency %2 ppm, encoder noise %3 deg, ARW %4 deg/sqrt(h), bias %5 deg/h,"),
+    QT_TRANSLATE_NOOP("core_text", "heading %1 +- %2 deg, table every %3 ms, IMU every %4 ms"),
+    QT_TRANSLATE_NOOP("core_text", "Timing audit real replay"),
+    QT_TRANSLATE_NOOP("core_text", "%1 interval %2 ppm, std %3 us, gaps %4, dup %5 | %6 ppm, std %7 us, gaps %8"),
+    QT_TRANSLATE_NOOP("core_text", "lost %1 / %2, duplicates %3 / %4, wraps %5 / %6, checksum failures %7 / %8"),
+    QT_TRANSLATE_NOOP("core_text", "Gap per channel (rms z; 1 = within the simulator's spread) before after held-out shrink"),
+    QT_TRANSLATE_NOOP("core_text", "%1 %2 cells %3 %4 %5 %"),
+    QT_TRANSLATE_NOOP("core_text", "largest cells:"),
+    QT_TRANSLATE_NOOP("core_text", "point %1 segment %2 %3 %4 axis %5: real %6, replay %7 +- %8 %9 (z %10)"),
+    QT_TRANSLATE_NOOP("core_text", "Effects, ranked (score = training delta chi2 - k ln n)"),
+    QT_TRANSLATE_NOOP("core_text", "%1 score %2 held-out shrink %3 % KEPT %4"),
+    QT_TRANSLATE_NOOP("core_text", "%1 score %2 held-out shrink %3 % %4"),
+    QT_TRANSLATE_NOOP("core_text", "%1 %2 +- %3 %4, %5"),
+    QT_TRANSLATE_NOOP("core_text", "%1 %2 +- %3 %4"),
+    QT_TRANSLATE_NOOP("core_text", "Alias groups (swing data cannot separate these)"),
+    QT_TRANSLATE_NOOP("core_text", "to separate: %1"),
+    QT_TRANSLATE_NOOP("core_text", "note: %1"),
+    QT_TRANSLATE_NOOP("core_text", "Verdict: %1 (+ %2) - %3"),
+    QT_TRANSLATE_NOOP("core_text", "Verdict: %1 - %2"),
+    QT_TRANSLATE_NOOP("core_text", "(diagnosis took %1 s)"),
+    QT_TRANSLATE_NOOP("core_text", "constant delay: %1"),
+    QT_TRANSLATE_NOOP("core_text", "constant rate: %1"),
+    QT_TRANSLATE_NOOP("core_text", "pure gyro delay, first-order lag with time constant <= 5 ms, table read delay, timestamp offset, fixed serial / board latency"),
+    QT_TRANSLATE_NOOP("core_text", "gyro bias, earth_rate_projection (latitude / heading error)"),
+    QT_TRANSLATE_NOOP("core_text", "lag %1 ms (taken as the replay's nominal delay)"),
+    QT_TRANSLATE_NOOP("core_text", "bias %1 / %2 / %3 deg/h (X/Y/Z, over the nominal Earth rate)"),
+    QT_TRANSLATE_NOOP("core_text", "swing data shift all of them by one constant at every frequency: measure the read delay and the board latency on the board (loop-back / sync pulse), and separate a lag from a delay with a step or a swing above 1/(2 pi tau) (~30 Hz for 5 ms)"),
+    QT_TRANSLATE_NOOP("core_text", "a constant rate per axis looks the same either way: a multi-position static test (IMU turned to four headings) separates the Earth rate from the bias"),
+    QT_TRANSLATE_NOOP("core_text", "the gap is significant and no effect in the library closes it on held-out blocks"),
+    QT_TRANSLATE_NOOP("core_text", "real and simulated data agree within the simulator's own spread"),
+    QT_TRANSLATE_NOOP("core_text", "%1 closes %2 % of the held-out gap but leaves a significant remainder in the %3; the rest is not in the library"),
+    QT_TRANSLATE_NOOP("core_text", "closes %1 % of the held-out gap"),
+    QT_TRANSLATE_NOOP("core_text", "%1 channel (%2)"),
+    QT_TRANSLATE_NOOP("core_text", "held-out cells (%1)"),
+    QT_TRANSLATE_NOOP("core_text", "excess chi2 %1 over %2 cells, %3 sigma"),
+    QT_TRANSLATE_NOOP("core_text", "%1 lost IMU frames filled with the mean increment"),
+    QT_TRANSLATE_NOOP("core_text", "the noise model fits the Allan curve poorly (chi^2 %1 for %2 dof): a term outside IEEE 952, or non-white quantisation"),
+    QT_TRANSLATE_NOOP("core_text", "quantisation"),
+    QT_TRANSLATE_NOOP("core_text", "angle random walk"),
+    QT_TRANSLATE_NOOP("core_text", "bias instability"),
+    QT_TRANSLATE_NOOP("core_text", "rate random walk"),
+    QT_TRANSLATE_NOOP("core_text", "rate ramp"),
+    QT_TRANSLATE_NOOP("core_text", "simulator, seed %1, %2"),
+    QT_TRANSLATE_NOOP("core_text", "real time"),
+    QT_TRANSLATE_NOOP("core_text", "as fast as possible"),
+    QT_TRANSLATE_NOOP("core_text", "%1x real time"),
+    QT_TRANSLATE_NOOP("core_text", "replay of %1 at as fast as possible"),
+    QT_TRANSLATE_NOOP("core_text", "replay of %1 at %2x"),
+    QT_TRANSLATE_NOOP("core_text", "stopped by the operator after %1 s"),
+    QT_TRANSLATE_NOOP("core_text", "%1 (after %2 s)"),
+    QT_TRANSLATE_NOOP("core_text", "the session file could not be written after %1 s (%2)"),
+    QT_TRANSLATE_NOOP("core_text", "no data for %1 s from %2 (after %3 s)"),
+    QT_TRANSLATE_NOOP("core_text", "the session file could not be written at the end of the run (%1)"),
+    QT_TRANSLATE_NOOP("core_text", "test point %1: %2"),
+    QT_TRANSLATE_NOOP("core_text", "%1 (no delay)"),
+    QT_TRANSLATE_NOOP("core_text", "no test point gave a delay"),
+    QT_TRANSLATE_NOOP("core_text", "the delay or its uncertainty is not a finite number"),
+    QT_TRANSLATE_NOOP("core_text", "every test point passed its validity checks and its IMU delay + 2σ is below the %1 ms limit"),
+    QT_TRANSLATE_NOOP("core_text", "IMU delay %1 ± %2 ms; + 2σ = %3 ms < %4 ms limit (margin %5 ms)"),
+    QT_TRANSLATE_NOOP("core_text", "IMU delay %1 ± %2 ms; + 2σ = %3 ms ≥ %4 ms limit (over by %5 ms)"),
+    QT_TRANSLATE_NOOP("core_text", "the gyro turns with the table (gyro/table ratio %1)"),
+    QT_TRANSLATE_NOOP("core_text", "the gyro turns with the table (gyro/table ratio %1, after the stated sign -1)"),
+    QT_TRANSLATE_NOOP("core_text", "the gyro's %1 axis turns against the table (gyro/table ratio %2): the axis is mounted the other way round or its sign convention differs from the table's; the delay is refused (read as a normal axis it would be a half-period lag). If the IMU is mounted so, state it (metadata bench.gyro_sign {\"%3\": -1}, or --gyro-sign %4=-1) and analyse again"),
+    QT_TRANSLATE_NOOP("core_text", "the gyro's %1 axis turns against the table (gyro/table ratio %2 after the stated sign -1): the axis is mounted the other way round or its sign convention differs from the table's; the delay is refused (read as a normal axis it would be a half-period lag). Check the stated sign: without it the gyro turns with the table"),
+    QT_TRANSLATE_NOOP("core_text", "a steady sinusoid: smooth table residual %1, harmonics %2, amplitude change %3, smooth gyro residual %4 of the amplitude"),
+    QT_TRANSLATE_NOOP("core_text", "a steady sinusoid: smooth table residual %1, harmonics %2, amplitude change %3 of the amplitude"),
+    QT_TRANSLATE_NOOP("core_text", "not a steady sinusoid: %1. The sine fits are biased by such a swing (the noise figures then describe the misfit, not noise); the delay is refused. Check the table's servo and amplitude, and record a steady swing"),
+    QT_TRANSLATE_NOOP("core_text", "not a steady sinusoid: %1. The sine fits are biased by such a swing (the noise figures then describe the misfit, not noise); the delay is refused. Check the table's servo and amplitude, and record a steady swing. A damped sinusoid fits the table (decay time %2 s, residual %3 of the amplitude): its lag is %4 ± %5 ms, if the decay is the table's true motion"),
+    QT_TRANSLATE_NOOP("core_text", "the table's residual has a smooth part of %1 of the amplitude (limit %2)"),
+    QT_TRANSLATE_NOOP("core_text", "harmonics 2-5 reach %1 of the amplitude (limit %2)"),
+    QT_TRANSLATE_NOOP("core_text", "the amplitude decays by %1 over the record (limit %2)"),
+    QT_TRANSLATE_NOOP("core_text", "the amplitude grows by %1 over the record (limit %2)"),
+    QT_TRANSLATE_NOOP("core_text", "the gyro angle's residual has a smooth part of %1 of its amplitude (limit %2)"),
+    QT_TRANSLATE_NOOP("core_text", "per-period lag drifts %1 ± %2 ppm (%3 σ)"),
+    QT_TRANSLATE_NOOP("core_text", "periods differ by %1 ± %2 ppm (%3 σ)"),
+    QT_TRANSLATE_NOOP("core_text", "%1 (information)"),
+    QT_TRANSLATE_NOOP("core_text", "not judged: the swing is not a steady sinusoid (steady_sine), which moves the fitted periods and the per-period lags; %1"),
+    QT_TRANSLATE_NOOP("core_text", "table and gyro stamps keep one rate: %1"),
+    QT_TRANSLATE_NOOP("core_text", "the gyro's time stamps run %1 ppm fast against the table's (%2): the two streams are not stamped on one clock at one rate, so their phase difference is not a delay. Stamp both with the sampling board's common counter (or correct the clock rate) and record again"),
+    QT_TRANSLATE_NOOP("core_text", "the gyro's time stamps run %1 ppm slow against the table's (%2): the two streams are not stamped on one clock at one rate, so their phase difference is not a delay. Stamp both with the sampling board's common counter (or correct the clock rate) and record again"),
+    QT_TRANSLATE_NOOP("core_text", "the IMU delay is negative (%1 ± %2 ms): the gyro would report rotation before it happened. A stamping, sign or clock problem: check the table read delay constant, that both streams share one clock, and the gyro axis' sign"),
+    QT_TRANSLATE_NOOP("core_text", "the IMU delay is causal (%1 ms)"),
+    QT_TRANSLATE_NOOP("core_text", "'%1' is empty (0 bytes), not a fogbench session; it was never written"),
+    QT_TRANSLATE_NOOP("core_text", "'%1' is not a fogbench session (not an SQLite database)"),
+    QT_TRANSLATE_NOOP("core_text", "'%1' is not a fogbench session"),
+    QT_TRANSLATE_NOOP("core_text", "'%1' is a folder, not a fogbench session file"),
+    QT_TRANSLATE_NOOP("core_text", "cannot open session '%1': no such file; check the path"),
+    QT_TRANSLATE_NOOP("core_text", "'%1' is truncated: it holds %2 of its %3 bytes; copy it again from the original or restore a backup"),
+    QT_TRANSLATE_NOOP("core_text", "'%1' is truncated: it holds %2 of its %3 bytes; copy it again from the original or restore a backup (its -wal does not hold the missing pages)"),
+    QT_TRANSLATE_NOOP("core_text", "'%1' is an SQLite database but not a fogbench session (application_id %2)"),
+    QT_TRANSLATE_NOOP("core_text", "'%1' is a fogbench session whose SQLite header (its first 100 bytes) is damaged; it is not analysed as a raw stream. Restore it from a backup, or repair a copy: printf 'SQLite format 3\\0' | dd of=COPY.fbs conv=notrunc (when only the header's first bytes were hit, the copy opens again)"),
+    QT_TRANSLATE_NOOP("core_text", "Markov (correlated) rate"),
+    QT_TRANSLATE_NOOP("core_text", "deg"),
+    QT_TRANSLATE_NOOP("core_text", "the replay cannot reach the measured lag exactly"),
+    QT_TRANSLATE_NOOP("core_text", "heading %1 +- %2 deg, from the Earth rate the gyros see as the table turns"),
+    QT_TRANSLATE_NOOP("core_text", "left out: %1"),
+    QT_TRANSLATE_NOOP("core_text", "ran on %1 of the %2 threads asked for, to stay within the %3 MB memory limit"),
+    QT_TRANSLATE_NOOP("core_text", "the Ceres fit on the forward model failed (%1); linear fit kept"),
+};
+
+struct Template {
+  const char* source;
+  QRegularExpression strict;   // variable parts without "; " (a list of reasons is split first)
+  QRegularExpression relaxed;  // variable parts of any text
+  std::vector<int> placeholders;  // the placeholder number of each capture group, in order
+  int literalLength = 0;          // characters other than spaces outside the placeholders: more is more specific
+};
+
+// "%1 closes %2 %" -> ^(.*?)\s+closes\s+(.*?)\s+%$ ; runs of spaces match any
+// run of white space (the core aligns columns with them). The strict pattern
+// keeps "; " out of the variable parts: "A: %1" must not swallow "A: x; B: y".
+Template compile(const char* source) {
+  static const QRegularExpression placeholder(QStringLiteral("%(\\d+)"));
+  static const QRegularExpression spaces(QStringLiteral(" +"));
+  const QString text = QString::fromUtf8(source);
+  Template t{source, {}, {}, {}, 0};
+  QString re = QStringLiteral("^");
+  QString strict = re;
+  auto literal = [&](const QString& piece) {
+    const QStringList words = piece.split(spaces);
+    for (const QString& w : words) t.literalLength += static_cast<int>(w.size());
+    QStringList escaped;
+    for (const QString& w : words) escaped << QRegularExpression::escape(w);
+    re += escaped.join(QStringLiteral("\\s+"));
+    strict += escaped.join(QStringLiteral("\\s+"));
+  };
+  qsizetype last = 0;
+  for (auto it = placeholder.globalMatch(text); it.hasNext();) {
+    const auto m = it.next();
+    literal(text.mid(last, m.capturedStart() - last));
+    re += QStringLiteral("(.*?)");
+    strict += QStringLiteral("((?:(?!; ).)*?)");
+    t.placeholders.push_back(m.captured(1).toInt());
+    last = m.capturedEnd();
+  }
+  literal(text.mid(last));
+  re += QStringLiteral("$");
+  strict += QStringLiteral("$");
+  t.relaxed = QRegularExpression(re, QRegularExpression::DotMatchesEverythingOption);
+  t.strict = QRegularExpression(strict, QRegularExpression::DotMatchesEverythingOption);
+  return t;
+}
+
+// Compiled once; the most specific (most literal characters) first, so that a
+// general template ("%1 (after %2 s)") never takes a message a specific one
+// describes.
+const std::vector<Template>& templates() {
+  static const std::vector<Template> all = [] {
+    std::vector<Template> out;
+    for (const char* s : kTemplates) out.push_back(compile(s));
+    std::stable_sort(out.begin(), out.end(),
+                     [](const Template& a, const Template& b) { return a.literalLength > b.literalLength; });
+    return out;
+  }();
+  return all;
+}
+
+constexpr int kMaxDepth = 12;  // variable parts within variable parts (a list of six parameters is six deep)
+
+QString translatePart(const QString& text, int depth);
+
+// One message without line breaks; leading and trailing white space kept.
+QString translateMessage(const QString& text, int depth) {
+  const qsizetype begin = std::find_if(text.begin(), text.end(), [](QChar c) { return !c.isSpace(); }) - text.begin();
+  qsizetype end = text.size();
+  while (end > begin && text[end - 1].isSpace()) --end;
+  if (begin >= end) return text;
+  return text.left(begin) + translatePart(text.mid(begin, end - begin), depth) + text.mid(end);
+}
+
+// The first template (most specific first) whose pattern matches, translated
+// with its variable parts; an empty string when none matches.
+QString translateWith(const QString& text, int depth, QRegularExpression Template::*pattern) {
+  for (const Template& t : templates()) {
+    const auto m = (t.*pattern).match(text);
+    if (!m.hasMatch()) continue;
+    const QString translated = QCoreApplication::translate("core_text", t.source);
+    if (translated == QString::fromUtf8(t.source)) return text;  // no translation: as the core wrote it
+    QString out = translated;
+    // Highest placeholder numbers first: %10 before %1.
+    std::vector<std::size_t> order(t.placeholders.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return t.placeholders[a] > t.placeholders[b]; });
+    for (std::size_t i : order)
+      out.replace(QStringLiteral("%") + QString::number(t.placeholders[i]),
+                  translateMessage(m.captured(static_cast<int>(i) + 1), depth + 1));
+    return out;
+  }
+  return {};
+}
+
+QString translatePart(const QString& text, int depth) {
+  if (depth > kMaxDepth) return text;
+  if (QString out = translateWith(text, depth, &Template::strict); !out.isEmpty()) return out;
+  // A list of reasons joined by "; ", when each of them is a message of its own.
+  if (text.contains(QStringLiteral("; "))) {
+    QStringList parts = text.split(QStringLiteral("; "));
+    bool all = true;
+    for (QString& p : parts) {
+      const QString t = translateMessage(p, depth + 1);
+      all = all && t != p;
+      p = t;
+    }
+    if (all) return parts.join(QStringLiteral("；"));
+  }
+  if (QString out = translateWith(text, depth, &Template::relaxed); !out.isEmpty()) return out;
+  return text;
+}
+
+}  // namespace
+
+QString coreText(const QString& english) {
+  QStringList lines = english.split(QLatin1Char('\n'));
+  for (QString& line : lines) line = translateMessage(line, 0);
+  return displayUnits(lines.join(QLatin1Char('\n')));
+}
+
+QString coreText(const std::string& english) { return coreText(QString::fromStdString(english)); }
+
+QString coreText(const char* english) { return coreText(QString::fromUtf8(english)); }
+
+QString displayUnits(const QString& text) {
+  static const QRegularExpression per(QStringLiteral("\\bdeg/"));
+  static const QRegularExpression squared(QStringLiteral("/s\\^2\\b"));
+  static const QRegularExpression root(QStringLiteral("sqrt\\(h\\)"));
+  static const QRegularExpression angle(QStringLiteral("(\\d) ?deg\\b"));
+  QString out = text;
+  out.replace(per, QStringLiteral("°/"));
+  out.replace(squared, QStringLiteral("/s²"));
+  out.replace(root, QStringLiteral("√h"));
+  out.replace(angle, QStringLiteral("\\1°"));
+  return out;
+}
+
+
+}  // namespace fog::ui
