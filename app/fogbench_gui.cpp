@@ -37,6 +37,7 @@
 #include "ui/language.h"
 #include "ui/main_window.h"
 #include "ui/plan_editor.h"
+#include "ui/window_host.h"
 
 namespace {
 
@@ -116,7 +117,9 @@ int main(int argc, char* argv[]) {
                openOption, viewOption, screenshotOption, afterOption, languageOption, planOption, portOption,
                tableOption] = o;
 
-  fog::ui::MainWindow window;
+  // The host makes the window again when the operator picks another language.
+  fog::ui::WindowHost host(app);
+  fog::ui::MainWindow& window = *host.window();
   // What the command line chooses is for this start only.
   window.setRemembering(false);
   if (parser.isSet(presetOption) && !window.planEditor()->loadPreset(parser.value(presetOption)))

@@ -10,6 +10,8 @@
 namespace fog::ui {
 namespace {
 
+using Size = decltype(QString().size());  // int in Qt 5, qsizetype in Qt 6
+
 // The core's message templates, as the core writes them (core/analysis,
 // core/diagnosis, core/noise, core/acquisition, core/session); %1, %2, ...
 // stand for the variable parts. A template is only ever matched whole, so a
@@ -194,7 +196,7 @@ Template compile(const char* source) {
     re += escaped.join(QStringLiteral("\\s+"));
     strict += escaped.join(QStringLiteral("\\s+"));
   };
-  qsizetype last = 0;
+  Size last = 0;
   for (auto it = placeholder.globalMatch(text); it.hasNext();) {
     const auto m = it.next();
     literal(text.mid(last, m.capturedStart() - last));
@@ -231,8 +233,8 @@ QString translatePart(const QString& text, int depth);
 
 // One message without line breaks; leading and trailing white space kept.
 QString translateMessage(const QString& text, int depth) {
-  const qsizetype begin = std::find_if(text.begin(), text.end(), [](QChar c) { return !c.isSpace(); }) - text.begin();
-  qsizetype end = text.size();
+  Size begin = 0, end = text.size();
+  while (begin < end && text[begin].isSpace()) ++begin;
   while (end > begin && text[end - 1].isSpace()) --end;
   if (begin >= end) return text;
   return text.left(begin) + translatePart(text.mid(begin, end - begin), depth) + text.mid(end);

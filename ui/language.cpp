@@ -3,6 +3,7 @@
 #include <QCoreApplication>
 #include <QLibraryInfo>
 #include <QLocale>
+#include <QPointer>
 #include <QSettings>
 #include <QTranslator>
 
@@ -35,14 +36,28 @@ QString installTranslations(QCoreApplication& app, const QString& language) {
   QLocale locale(code == "en" ? QString("en_US") : code);
   locale.setNumberOptions(QLocale::OmitGroupSeparator);
   QLocale::setDefault(locale);
+  // The translators of an earlier choice go: the language can change while
+  // the program runs (WindowHost makes the window again).
+  static QPointer<QTranslator> installedOurs, installedQt;
+  for (QPointer<QTranslator>* t : {&installedOurs, &installedQt})
+    if (*t) {
+      QCoreApplication::removeTranslator(*t);
+      delete t->data();
+    }
   if (code == "en") return code;
   initTranslationResources();
   // Ours, compiled into the program; Qt's own (standard dialogs) where the
   // system has them.
   auto* ours = new QTranslator(&app);
-  if (ours->load(":/translations/fogbench_" + code + ".qm")) QCoreApplication::installTranslator(ours);
-  else return "en";
+  if (!ours->load(":/translations/fogbench_" + code + ".qm")) {
+    delete ours;
+    QLocale::setDefault(QLocale(QStringLiteral("en_US")));
+    return "en";
+  }
+  QCoreApplication::installTranslator(ours);
+  installedOurs = ours;
   auto* qt = new QTranslator(&app);
+  installedQt = qt;
 #if QT_VERSION >= QT_VERSION_CHECK(6, 0, 0)
   const QString qtDir = QLibraryInfo::path(QLibraryInfo::TranslationsPath);
 #else

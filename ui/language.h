@@ -24,8 +24,8 @@ QString languageName(const QString& code);
 QString localNumber(double value, char format = 'f', int precision = 4);
 
 // Installs the translators for `language` ("system" resolves through the
-// system locale) and sets the default locale. Returns the language code in
-// effect ("en" when nothing matched).
+// system locale), replacing those of an earlier call, and sets the default
+// locale. Returns the language code in effect ("en" when nothing matched).
 QString installTranslations(QCoreApplication& app, const QString& language);
 
 }  // namespace fog::ui

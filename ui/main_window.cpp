@@ -336,9 +336,16 @@ void MainWindow::buildMenus() {
     action->setCheckable(true);
     action->setChecked(code == current);
     group->addAction(action);
-    connect(action, &QAction::triggered, this, [this, code] {
+    connect(action, &QAction::triggered, this, [this, code, action] {
+      if (isRunning() || isDiagnosing()) {
+        // The window is made again in the new language: not under a run.
+        action->setChecked(false);
+        if (auto* same = findChild<QAction*>("language_" + languageSetting())) same->setChecked(true);
+        tell(tr("The language can be changed once the run or the diagnosis has ended."));
+        return;
+      }
       setLanguageSetting(code);
-      tell(tr("The language changes when fogbench starts again."));
+      emit languageChosen(code);
     });
   }
 
@@ -474,6 +481,9 @@ void MainWindow::closeEvent(QCloseEvent* event) {
 }
 
 void MainWindow::showView(View view) { tabs_->setCurrentIndex(view); }
+
+QString MainWindow::shownSessionPath() const { return shown_ ? QString::fromStdString(shown_->sessionPath) : QString(); }
+
 MainWindow::View MainWindow::currentView() const { return static_cast<View>(tabs_->currentIndex()); }
 
 void MainWindow::useSimulator(double speed, int seed) {

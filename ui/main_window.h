@@ -72,6 +72,8 @@ class MainWindow : public QMainWindow {
   DiagnosisView* diagnosisView() const { return diagnosisView_; }
   NoiseView* noiseView() const { return noiseView_; }
   void showView(View view);
+  // The session whose result is shown, or empty (a run not recorded, nothing shown).
+  QString shownSessionPath() const;
   View currentView() const;
 
   // Source: the simulator at `speed` x real time (0: as fast as possible),
@@ -149,6 +151,9 @@ class MainWindow : public QMainWindow {
   void diagnosisEnded(bool succeeded);
   // After every shown result: whether its static segments gave a noise analysis.
   void noiseAnalysed(bool succeeded);
+  // The operator picked a language ("system", "en", "zh_CN"; already remembered);
+  // the WindowHost makes the window again in it. Never during a run or a diagnosis.
+  void languageChosen(const QString& language);
 
  protected:
   // Closing during a run asks first (non-modal): stop the run and close, or

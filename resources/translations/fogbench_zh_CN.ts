@@ -193,7 +193,7 @@
 <context>
     <name>fog::ui::CompareView</name>
     <message>
-        <location filename="../../ui/compare_view.cpp" line="+122"/>
+        <location filename="../../ui/compare_view.cpp" line="+123"/>
         <source>session</source>
         <translation>会话</translation>
     </message>
@@ -667,7 +667,7 @@ counter %5 MHz / %6 bit</source>
 <context>
     <name>fog::ui::DiagnosisView</name>
     <message>
-        <location filename="../../ui/diagnosis_view.cpp" line="+98"/>
+        <location filename="../../ui/diagnosis_view.cpp" line="+99"/>
         <source>Test point</source>
         <translation>测试点</translation>
     </message>
@@ -869,7 +869,7 @@ Press Diagnose in the Results view to start it again.</source>
 <context>
     <name>fog::ui::LiveView</name>
     <message>
-        <location filename="../../ui/live_view.cpp" line="+60"/>
+        <location filename="../../ui/live_view.cpp" line="+61"/>
         <source>board time (s)</source>
         <translation>采样板时间 (s)</translation>
     </message>
@@ -1160,7 +1160,7 @@ Press Diagnose in the Results view to start it again.</source>
 <context>
     <name>fog::ui::MainWindow</name>
     <message>
-        <location filename="../../ui/main_window.cpp" line="+146"/>
+        <location filename="../../ui/main_window.cpp" line="+147"/>
         <source>fogbench %1 — FOG IMU delay bench</source>
         <translation>fogbench %1 —— 光纤陀螺 IMU 延迟测试台</translation>
     </message>
@@ -1186,12 +1186,12 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+854"/>
+        <location line="+864"/>
         <source>Diagnosis</source>
         <translation>诊断</translation>
     </message>
     <message>
-        <location line="-851"/>
+        <location line="-861"/>
         <source>Noise</source>
         <translation>噪声</translation>
     </message>
@@ -1221,12 +1221,7 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>跟随系统</translation>
     </message>
     <message>
-        <location line="+7"/>
-        <source>The language changes when fogbench starts again.</source>
-        <translation>重新启动 fogbench 后语言才会更改。</translation>
-    </message>
-    <message>
-        <location line="+4"/>
+        <location line="+18"/>
         <source>&amp;Help</source>
         <translation>帮助(&amp;H)</translation>
     </message>
@@ -1241,7 +1236,7 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>关于 fogbench</translation>
     </message>
     <message>
-        <location line="-115"/>
+        <location line="-122"/>
         <location line="+3"/>
         <source>Run</source>
         <translation>运行</translation>
@@ -1269,12 +1264,12 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+623"/>
+        <location line="+633"/>
         <source>Open session</source>
         <translation>打开会话</translation>
     </message>
     <message>
-        <location line="-622"/>
+        <location line="-632"/>
         <source>fogbench sessions (*.fbs);;All files (*)</source>
         <translation>fogbench 会话 (*.fbs);;所有文件 (*)</translation>
     </message>
@@ -1407,7 +1402,7 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>工具(&amp;T)</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+28"/>
         <source>&amp;Shortcuts</source>
         <translation>快捷键(&amp;S)</translation>
     </message>
@@ -1499,12 +1494,17 @@ Quit: Ctrl+Q</source>
         <translation>停止运行并关闭</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-122"/>
+        <source>The language can be changed once the run or the diagnosis has ended.</source>
+        <translation>运行或诊断结束后才能更改语言。</translation>
+    </message>
+    <message>
+        <location line="+124"/>
         <source>Keep running</source>
         <translation>继续运行</translation>
     </message>
     <message>
-        <location line="+74"/>
+        <location line="+77"/>
         <source>a run is under way</source>
         <translation>正在运行</translation>
     </message>
@@ -1867,7 +1867,7 @@ File: %1</source>
 <context>
     <name>fog::ui::NoiseView</name>
     <message>
-        <location filename="../../ui/noise_view.cpp" line="+32"/>
+        <location filename="../../ui/noise_view.cpp" line="+33"/>
         <source>Static segment</source>
         <translation>静态段</translation>
     </message>
@@ -2269,7 +2269,7 @@ File: %1</source>
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../../ui/main_window.cpp" line="-996"/>
+        <location filename="../../ui/main_window.cpp" line="-1006"/>
         <location filename="../../ui/plan_editor.cpp" line="-326"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
@@ -2295,7 +2295,7 @@ File: %1</source>
         <translation>PNG 图像 (*.png);;SVG 矢量图 (*.svg);;PDF 文档 (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../../ui/report/calibration_report.cpp" line="+65"/>
+        <location filename="../../ui/report/calibration_report.cpp" line="+67"/>
         <location line="+233"/>
         <source>not recorded</source>
         <translation>未记录</translation>
@@ -3339,7 +3339,7 @@ File: %1</source>
         <translation>IMU 延迟标定报告：%1 %2</translation>
     </message>
     <message>
-        <location filename="../../ui/result_view.cpp" line="+62"/>
+        <location filename="../../ui/result_view.cpp" line="+63"/>
         <source>%1: %2 axis, %3 Hz / %4°</source>
         <translation>%1：%2 轴，%3 Hz / %4°</translation>
     </message>
@@ -3846,7 +3846,7 @@ File: %1</source>
 <context>
     <name>fog::ui::SessionBrowser</name>
     <message>
-        <location filename="../../ui/session_browser.cpp" line="+34"/>
+        <location filename="../../ui/session_browser.cpp" line="+35"/>
         <source>Folder</source>
         <translation>文件夹</translation>
     </message>
@@ -3990,7 +3990,7 @@ File: %1</source>
 <context>
     <name>core_text</name>
     <message>
-        <location filename="../../ui/core_text.cpp" line="+20"/>
+        <location filename="../../ui/core_text.cpp" line="+21"/>
         <source>table</source>
         <translation>转台</translation>
     </message>
@@ -4262,7 +4262,7 @@ File: %1</source>
     <message>
         <location line="+1"/>
         <source>Timing audit real replay</source>
-        <translation>时序审核　　　　　　实测　　　　　　　　　回放</translation>
+        <translation>时序审核&#x3000;&#x3000;&#x3000;&#x3000;&#x3000;&#x3000;实测&#x3000;&#x3000;&#x3000;&#x3000;&#x3000;&#x3000;&#x3000;&#x3000;&#x3000;回放</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -4277,12 +4277,12 @@ File: %1</source>
     <message>
         <location line="+1"/>
         <source>Gap per channel (rms z; 1 = within the simulator&apos;s spread) before after held-out shrink</source>
-        <translation>各通道差异（z 的均方根；1 = 在仿真离散度之内）　之前　之后　留出数据缩减</translation>
+        <translation>各通道差异（z 的均方根；1 = 在仿真离散度之内）&#x3000;之前&#x3000;之后&#x3000;留出数据缩减</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>%1 %2 cells %3 %4 %5 %</source>
-        <translation>%1 %2 格　%3 %4 %5 %</translation>
+        <translation>%1 %2 格&#x3000;%3 %4 %5 %</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -4302,12 +4302,12 @@ File: %1</source>
     <message>
         <location line="+1"/>
         <source>%1 score %2 held-out shrink %3 % KEPT %4</source>
-        <translation>%1 得分 %2　留出缩减 %3 %　保留　%4</translation>
+        <translation>%1 得分 %2&#x3000;留出缩减 %3 %&#x3000;保留&#x3000;%4</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>%1 score %2 held-out shrink %3 % %4</source>
-        <translation>%1 得分 %2　留出缩减 %3 %　%4</translation>
+        <translation>%1 得分 %2&#x3000;留出缩减 %3 %&#x3000;%4</translation>
     </message>
     <message>
         <location line="+1"/>

@@ -66,6 +66,7 @@
 #include "ui/result_view.h"
 #include "ui/series_plot.h"
 #include "ui/session_browser.h"
+#include "ui/window_host.h"
 
 using fog::ui::MainWindow;
 using fog::ui::PlanEditor;
@@ -1600,6 +1601,34 @@ class BenchUiTest : public QObject {
     QCOMPARE(zoomed.front().x(), x[9999]);
     QVERIFY(fog::ui::decimateMinMax(x, y, 1.0, 1.0, 500).isEmpty());
     QVERIFY(fog::ui::decimateMinMax({}, {}, 0.0, 1.0, 500).isEmpty());
+  }
+
+  // The language changes while the program runs: the window is made again in
+  // it, with the plan it had; and back.
+  void languageChangesWithoutRestart() {
+    fog::ui::WindowHost host(*qApp);
+    host.window()->show();
+    fog::TestPlan plan;
+    plan.points = {fog::TestPoint{}};
+    plan.points[0].frequencyHz = 0.7;
+    plan.points[0].amplitudeDeg = 4.0;
+    plan.points[0].durationS = 30.0;
+    host.window()->planEditor()->setPlan(plan);
+    QSignalSpy replaced(&host, &fog::ui::WindowHost::windowReplaced);
+    auto* chinese = host.window()->findChild<QAction*>("language_zh_CN");
+    QVERIFY(chinese);
+    chinese->trigger();
+    QTRY_COMPARE(replaced.count(), 1);
+    QCOMPARE(replaced.at(0).at(1).toString(), QString("zh_CN"));
+    auto* tabs = host.window()->findChild<QTabWidget*>("viewTabs");
+    QCOMPARE(tabs->tabText(0), QString::fromUtf8("配置"));
+    QCOMPARE(button(*host.window(), "runButton")->text(), QString::fromUtf8("运行"));
+    QVERIFY(host.window()->isVisible());
+    QCOMPARE(host.window()->planEditor()->plan().points.size(), std::size_t{1});
+    QCOMPARE(host.window()->planEditor()->plan().points[0].frequencyHz, 0.7);
+    host.window()->findChild<QAction*>("language_en")->trigger();
+    QTRY_COMPARE(replaced.count(), 2);
+    QCOMPARE(host.window()->findChild<QTabWidget*>("viewTabs")->tabText(0), QString("Configure"));
   }
 
   // Runs last: it installs the Chinese translation into the application.
