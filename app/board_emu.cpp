@@ -256,7 +256,7 @@ int main(int argc, char** argv) {
       if (Clock::now() > giveUp) return failWith("no host opened " + std::string(name) + " within " + fmt("%g", o.waitOpenS) + " s");
       std::this_thread::sleep_for(std::chrono::milliseconds(5));
     }
-    // ... and for it to set its line (QSerialPort does so while opening). On
+    // ... and for it to set its line (the serial source does so while opening). On
     // Linux a pty master's tcgetattr reports the slave's settings.
     termios t{};
     const auto configured = Clock::now() + std::chrono::seconds(2);

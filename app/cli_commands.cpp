@@ -25,9 +25,7 @@
 #include "cli_common.h"
 #include "session_commands.h"
 #include "sim_options.h"
-#ifdef FOG_HAVE_SERIAL
 #include "serial_command.h"
-#endif
 
 namespace fog::app {
 
@@ -118,22 +116,10 @@ int runCommand(CliArguments& args) {
   auto source = args.text("source").value_or("sim");
   // --table manual|remote:ADDR: the bench drives the turntable (docs/table-control.md).
   if (auto table = args.text("table"); table && *table != "sim") {
-#ifdef FOG_HAVE_SERIAL
     return runTableCommand(args, *table);
-#else
-    return fail(invalidArgument("--table " + *table + " records a real sampling board, which needs the Qt build of "
-                                "fogbench-cli (QSerialPort; the release preset); this build has no Qt"),
-                2);
-#endif
   }
   if (source == "serial") {
-#ifdef FOG_HAVE_SERIAL
     return runSerialCommand(args);
-#else
-    return fail(invalidArgument("the serial source needs the Qt build of fogbench-cli (QSerialPort; the release "
-                                "preset); this build has no Qt"),
-                2);
-#endif
   }
   auto savePath = args.text("save-raw");
   const bool overwrite = args.flag("overwrite");

@@ -14,9 +14,7 @@
 #ifdef FOG_HAVE_REPORT
 #include "report_command.h"
 #endif
-#ifdef FOG_HAVE_SERIAL
 #include "serial_command.h"
-#endif
 
 namespace {
 
@@ -43,7 +41,7 @@ usage:
   fogbench-cli run --source serial --port DEV [--baud 921600] [--parity none|even|odd]
                   [--data-bits 8] [--stop-bits 1] [--stall-warning-s 2] [--stall-timeout-s 10]
                   [plan] [constants] [--out SESSION.fbs ...] [--json]
-      Record a sampling board on a serial port (Qt build) until its plan is done;
+      Record a sampling board on a serial port until its plan is done;
       the plan, if given, is stored as the one intended (the board runs its own).
       A port that vanishes or a line silent for --stall-timeout-s ends the run as
       incomplete, keeping everything received (docs/serial.md). The board is sent
@@ -52,13 +50,13 @@ usage:
   fogbench-cli run --table remote:tcp:HOST:PORT|remote:DEV|manual --source serial --port DEV
                   [plan] [constants] [--table-heartbeat-s 2] [--table-reply-timeout-s 2]
                   [--table-baud 115200] [--operator-timeout-s 600] [--speed X] [--out SESSION.fbs ...]
-      Drive the turntable through the plan while recording the board (Qt build):
+      Drive the turntable through the plan while recording the board:
       remote: a controller speaking the protocol of docs/table-control.md; manual:
       the operator is told what to set and the table angle decides when it is right.
       Test points are cut from the table angle; Ctrl+C or any fault brings the table
       to rest; the session keeps the table log. --table sim (default): the simulator.
   fogbench-cli ports
-      List the serial ports (Qt build).
+      List the serial ports.
   fogbench-cli analyze FILE [constants] [--limit-ms 0.8] [--json] [--no-store]
       The same report from a saved raw sampling-board byte stream, or from a
       session file (its own bench constants unless given; the result is stored
@@ -131,13 +129,7 @@ int main(int argc, char** argv) {
   }
   if (command == "run") return fog::app::runCommand(*parsed);
   if (command == "ports") {
-#ifdef FOG_HAVE_SERIAL
     return fog::app::portsCommand(*parsed);
-#else
-    std::cerr << "fogbench-cli: listing serial ports needs the Qt build (QSerialPort; the release preset); this "
-                 "build has no Qt\n";
-    return 2;
-#endif
   }
   if (command == "analyze") return fog::app::analyzeCommand(*parsed);
   if (command == "sessions") return fog::app::sessionsCommand(*parsed);

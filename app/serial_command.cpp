@@ -86,7 +86,6 @@ int runSerialCommand(CliArguments& args) {
   if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
   if (!args.positionals().empty()) return fail(invalidArgument("unexpected argument '" + args.positionals()[0] + "'"), 2);
 
-  serial::ensureQtCore();
   auto source = serial::SerialSource::open(*settings);
   if (!source) return fail(source.status(), 2);
   const std::string port = settings->port;
@@ -158,7 +157,6 @@ int runSerialCommand(CliArguments& args) {
 int portsCommand(CliArguments& args) {
   if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
   if (!args.positionals().empty()) return fail(invalidArgument("ports takes no arguments"), 2);
-  serial::ensureQtCore();
   const auto ports = serial::availablePorts();
   if (ports.empty()) {
     std::cout << "no serial ports found (a USB adapter may need its driver, or permission: group dialout)\n";

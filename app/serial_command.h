@@ -1,8 +1,8 @@
 #pragma once
 // fogbench-cli with a real sampling board on a serial port (docs/serial.md):
 // `run --source serial --port DEV ...` records the board's stream into a
-// session and reports the delay; `ports` lists the serial ports. Both need
-// the Qt build (QSerialPort); a build without Qt says so.
+// session and reports the delay; `ports` lists the serial ports. In every
+// build (core/serial is POSIX, Qt-free).
 
 #include "cli_arguments.h"
 #include "common/status.h"

@@ -170,7 +170,6 @@ int runTableCommand(CliArguments& args, const std::string& tableSpec) {
     }
   }
 
-  serial::ensureQtCore();
   auto source = serial::SerialSource::open(*settings);
   if (!source) return fail(source.status(), 2);
 

@@ -16,7 +16,7 @@
 
 #include "ui/commanded_motion.h"
 #include "ui/plan_editor.h"
-#include "ui/serial/serial_source.h"
+#include "serial/serial_source.h"
 
 namespace fog::ui {
 

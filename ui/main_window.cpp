@@ -48,7 +48,7 @@
 #include "ui/bench_settings_dialog.h"
 #include "ui/compare_view.h"
 #include "ui/core_text.h"
-#include "ui/serial/serial_source.h"
+#include "serial/serial_source.h"
 #include "ui/diagnosis_view.h"
 #include "ui/language.h"
 #include "ui/live_view.h"

@@ -1,6 +1,6 @@
 // A sampling board on a real pseudo-terminal: fogbench-board-emu plays the
 // simulator's stream (with faults on request) and fogbench-cli records it
-// through QSerialPort, as it would a board on /dev/ttyUSB0. Each test checks
+// through the serial source (termios), as it would a board on /dev/ttyUSB0. Each test checks
 // what the operator is told (stdout, stderr, exit code) and what the session
 // file kept. docs/serial.md lists the faults and the bench's answers.
 //

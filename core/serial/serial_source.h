@@ -1,28 +1,31 @@
 #pragma once
 // A real sampling board on a serial port as an acquisition::ByteSource,
-// through QSerialPort (Qt Core + SerialPort only: no widgets, no event loop).
+// through the POSIX terminal interface (termios, poll): Qt-free, so the
+// command line records a board in every build.
 //
 //   SerialSettings s; s.port = "/dev/ttyUSB0"; s.baudRate = 921600;
-//   auto source = SerialSource::open(s);          // in the acquisition thread
+//   auto source = SerialSource::open(s);
 //   acquisition::acquire(**source, options, &stop, observer);
 //
 // Contracts:
-//  - Thread affinity: QSerialPort is a QObject. open() and every read() must
-//    run in the same thread (the acquisition thread); the object may be
-//    destroyed there too. read() uses the blocking API (waitForReadyRead),
-//    which needs no running event loop. A QCoreApplication must exist in the
-//    process (the GUI has one; ensureQtCore() makes one for the CLI).
+//  - One thread reads (the acquisition's); queueForDevice() may be called
+//    from any thread.
+//  - open() applies the line settings at once and checks that the device
+//    kept them (a pseudo-terminal is always 8N1: 8E1 on one is refused). The
+//    baud rate is one a Linux driver takes by name (1200 .. 4000000). A port
+//    another program holds (flock) is refused: one program per port.
 //  - read() appends what has arrived, waiting at most `timeout` for the first
 //    byte; 0 bytes means the line was quiet. A serial line never ends by
 //    itself: endOfStream is never reported (the acquisition ends the run on
 //    the board's "done" STATUS, a stall limit, or the operator's stop).
 //  - A port that disappears (USB adapter unplugged, the board emulator's pty
-//    closed) or fails returns kIoError "serial port /dev/ttyUSB0 vanished:
-//    <reason>"; the source is then done and every later read() fails alike.
+//    closed: EIO or a hang-up, or the device node gone while the line is
+//    quiet) returns kIoError "serial port /dev/ttyUSB0 vanished: <reason>";
+//    the source is then done and every later read() fails alike.
 //  - The host-to-board direction: the port is opened read-write (read-only
 //    when the system refuses writing; then queueForDevice() returns false).
-//    queueForDevice() is thread-safe; the queued bytes go out in read() (and
-//    flushToDevice()), in the acquisition thread. Nothing waits for a reply.
+//    The queued bytes go out in read() (and flushToDevice()), in the
+//    acquisition thread, without blocking it; nothing waits for a reply.
 //  - Errors are fog::Status values; nothing throws.
 
 #include <memory>
@@ -33,14 +36,12 @@
 #include "acquisition/byte_source.h"
 #include "common/status.h"
 
-class QSerialPort;
-
 namespace fog::serial {
 
 enum class Parity { kNone, kEven, kOdd };
 
 struct SerialSettings {
-  std::string port;       // "/dev/ttyUSB0", "COM3" or a name from availablePorts()
+  std::string port;       // "/dev/ttyUSB0", or a name from availablePorts() ("ttyUSB0")
   int baudRate = 921600;  // bits per second
   Parity parity = Parity::kNone;
   int dataBits = 8;       // 5..8
@@ -62,12 +63,9 @@ struct PortInfo {
   std::string serialNumber;
 };
 
-// The serial ports the system reports now (may be empty). Needs a
-// QCoreApplication like SerialSource.
+// The serial ports the system has now (may be empty), sorted by name:
+// USB/ACM adapters with what they say of themselves, on-board UARTs.
 std::vector<PortInfo> availablePorts();
-
-// Makes a QCoreApplication when the process has none (command-line use).
-void ensureQtCore();
 
 class SerialSource : public acquisition::ByteSource {
  public:
@@ -84,11 +82,15 @@ class SerialSource : public acquisition::ByteSource {
   void flushToDevice(std::chrono::milliseconds timeout) override;
 
  private:
-  void writeQueued(int timeoutMs);
-  SerialSource(std::unique_ptr<QSerialPort> port, SerialSettings settings);
+  SerialSource(int fd, SerialSettings settings);
+  SerialSource(const SerialSource&) = delete;
+  SerialSource& operator=(const SerialSource&) = delete;
+  // Writes what is queued, waiting at most `timeout` for room; what does not
+  // fit stays queued, first in line.
+  void writeQueued(std::chrono::milliseconds timeout);
   Status vanished(const std::string& why);
 
-  std::unique_ptr<QSerialPort> port_;
+  int fd_ = -1;  // -1 once the port has failed
   SerialSettings settings_;
   Status failed_;  // set once the port has failed
   bool writable_ = false;
