@@ -1,3 +1,4 @@
+#include "serial/serial_source.h"
 #include "ui/configure_view.h"
 
 #include <QCheckBox>
@@ -16,7 +17,6 @@
 
 #include "ui/commanded_motion.h"
 #include "ui/plan_editor.h"
-#include "serial/serial_source.h"
 
 namespace fog::ui {
 
