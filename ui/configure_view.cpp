@@ -1,4 +1,3 @@
-#include "serial/serial_source.h"
 #include "ui/configure_view.h"
 
 #include <QCheckBox>
@@ -15,6 +14,7 @@
 #include <QVBoxLayout>
 #include <limits>
 
+#include "serial/serial_source.h"
 #include "ui/commanded_motion.h"
 #include "ui/plan_editor.h"
 
