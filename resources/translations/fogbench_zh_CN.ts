@@ -4262,7 +4262,7 @@ File: %1</source>
     <message>
         <location line="+1"/>
         <source>Timing audit real replay</source>
-        <translation>时序审核&#x3000;&#x3000;&#x3000;&#x3000;&#x3000;&#x3000;实测&#x3000;&#x3000;&#x3000;&#x3000;&#x3000;&#x3000;&#x3000;&#x3000;&#x3000;回放</translation>
+        <translation>时序审核　　　　　　实测　　　　　　　　　回放</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -4277,12 +4277,12 @@ File: %1</source>
     <message>
         <location line="+1"/>
         <source>Gap per channel (rms z; 1 = within the simulator&apos;s spread) before after held-out shrink</source>
-        <translation>各通道差异（z 的均方根；1 = 在仿真离散度之内）&#x3000;之前&#x3000;之后&#x3000;留出数据缩减</translation>
+        <translation>各通道差异（z 的均方根；1 = 在仿真离散度之内）　之前　之后　留出数据缩减</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>%1 %2 cells %3 %4 %5 %</source>
-        <translation>%1 %2 格&#x3000;%3 %4 %5 %</translation>
+        <translation>%1 %2 格　%3 %4 %5 %</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -4302,12 +4302,12 @@ File: %1</source>
     <message>
         <location line="+1"/>
         <source>%1 score %2 held-out shrink %3 % KEPT %4</source>
-        <translation>%1 得分 %2&#x3000;留出缩减 %3 %&#x3000;保留&#x3000;%4</translation>
+        <translation>%1 得分 %2　留出缩减 %3 %　保留　%4</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>%1 score %2 held-out shrink %3 % %4</source>
-        <translation>%1 得分 %2&#x3000;留出缩减 %3 %&#x3000;%4</translation>
+        <translation>%1 得分 %2　留出缩减 %3 %　%4</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -4738,6 +4738,296 @@ File: %1</source>
         <location line="+1"/>
         <source>the Ceres fit on the forward model failed (%1); linear fit kept</source>
         <translation>正向模型上的 Ceres 拟合失败（%1）；保留线性拟合</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>fogbench delay report</source>
+        <translation>fogbench 延迟报告</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>source: session %1 (%2)</source>
+        <translation>来源：会话 %1（%2）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>source: %1</source>
+        <translation>来源：%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>verdict: %1</source>
+        <translation>结论：%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>verdict: %1 (delay refused)</source>
+        <translation>结论：%1（延迟被拒绝）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PASS</source>
+        <translation>通过</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>FAIL</source>
+        <translation>不通过</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>INVALID</source>
+        <translation>无效</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>stream: %1 table, %2 IMU, %3 status frames; %4 checksum failures, %5 lost, %6 duplicated, %7 bytes skipped</source>
+        <translation>数据流：转台帧 %1，IMU 帧 %2，状态帧 %3；校验失败 %4，丢失 %5，重复 %6，跳过字节 %7</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>bench constants: table read delay %1 ± %2 ms, board delay %3 ± %4 ms</source>
+        <translation>台架常数：转台读数延迟 %1 ± %2 ms，板延迟 %3 ± %4 ms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Test point %1: %2 axis, %3 Hz / %4 deg, %5 s (%6 periods)</source>
+        <translation>测试点 %1：%2 轴，%3 Hz / %4 deg，%5 s（%6 个周期）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>fits (angle = A sin(2 pi (t - t0) / T); t0 is the phase):</source>
+        <translation>拟合（角度 = A sin(2π(t − t0)/T)；t0 为相位）：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 period %2 (nominal) ms phase %3 ± %4 ms amplitude %5 deg</source>
+        <translation>%1　周期 %2（标称）ms　相位 %3 ± %4 ms　幅值 %5 deg</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 period %2 ± %3 ms phase %4 ± %5 ms amplitude %6 deg</source>
+        <translation>%1　周期 %2 ± %3 ms　相位 %4 ± %5 ms　幅值 %6 deg</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>table 3-parameter</source>
+        <translation>转台 三参数</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>gyro 3-parameter</source>
+        <translation>陀螺 三参数</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>table 4-parameter</source>
+        <translation>转台 四参数</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>gyro 4-parameter</source>
+        <translation>陀螺 四参数</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>joint fit: frequency %1 Hz, gyro/table amplitude %2, trend %3 deg/s (%4 deg/h), chi2/dof %5</source>
+        <translation>联合拟合：频率 %1 Hz，陀螺/转台幅值比 %2，趋势 %3 deg/s（%4 deg/h），chi2/dof %5</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>delay:</source>
+        <translation>延迟：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>measured lag (gyro behind table) %1 ± %2 ms (CRLB %3 ms, std/CRLB %4)</source>
+        <translation>测得滞后（陀螺落后于转台）　%1 ± %2 ms（CRLB %3 ms，标准差/CRLB %4）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>uncertainty from %1 (fit alone %2 ms, per-period scatter %3 ms)</source>
+        <translation>不确定度取自%1（仅拟合 %2 ms，逐周期离散 %3 ms）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>fit, with errors that repeat every period</source>
+        <translation>拟合，含每个周期重复的误差</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>per-period scatter, with errors that repeat every period</source>
+        <translation>逐周期离散，含每个周期重复的误差</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>per-period scatter</source>
+        <translation>逐周期离散</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>fit, random walk at its upper bound (fewer than 5 periods to check it)</source>
+        <translation>拟合，随机游走取其上限（不足 5 个周期无法检验）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>+ table read delay %1 ms</source>
+        <translation>+ 转台读数延迟　　　%1 ms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>= IMU delay %1 ± %2 ms</source>
+        <translation>= IMU 延迟　　　　　%1 ± %2 ms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>- processing board delay %1 ms</source>
+        <translation>− 处理板延迟　　　　%1 ms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>= gyro&apos;s own delay %1 ± %2 ms</source>
+        <translation>= 陀螺自身延迟　　　%1 ± %2 ms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>simulator truth: lag %1 ms (error %2 ms = %3 std)</source>
+        <translation>仿真真值：滞后 %1 ms（误差 %2 ms = %3 倍标准差）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>per-period delay: %1 periods, mean %2 ms, scatter %3 ms</source>
+        <translation>逐周期延迟：%1 个周期，均值 %2 ms，离散 %3 ms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>noise: encoder %1 deg, pulse output %2 deg, angle random walk %3 deg/sqrt(h) (near the swing frequency %4)</source>
+        <translation>噪声：编码器 %1 deg，脉冲输出 %2 deg，角度随机游走 %3 deg/sqrt(h)（摆动频率附近 %4）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>lost IMU frames: %1</source>
+        <translation>丢失的 IMU 帧：%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>affected: %1 table and %2 IMU frames lost, %3 duplicated, %4 checksum failures, %5 bytes skipped; data cover %6 of %7 s (%8 %), longest gap %9 ms</source>
+        <translation>受影响：丢失转台帧 %1、IMU 帧 %2，重复 %3，校验失败 %4，跳过字节 %5；数据覆盖 %7 s 中的 %6 s（%8 %），最长缺口 %9 ms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>warning: %1</source>
+        <translation>警告：%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>checks:</source>
+        <translation>检查：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>ok %1: %2</source>
+        <translation>通过　%1：%2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>FAILED %1: %2</source>
+        <translation>未通过　%1：%2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>n/a %1: %2</source>
+        <translation>未判定　%1：%2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Test point %1: static segment, %2 axis, %3 s at rest: no delay to measure (gyro noise: fogbench-cli noise)</source>
+        <translation>测试点 %1：静止段，%2 轴，静止 %3 s：没有可测的延迟（陀螺噪声：fogbench-cli noise）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no delay from %1</source>
+        <translation>%1 没有给出延迟</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Delay against frequency, %1 axis (%2 frequencies): weighted lag %3 ± %4 ms, chi2 %5 on %6 dof, p = %7: %8</source>
+        <translation>延迟随频率，%1 轴（%2 个频率）：加权滞后 %3 ± %4 ms，chi2 %5（%6 个自由度），p = %7：%8</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>consistent with a pure delay</source>
+        <translation>与纯延迟一致</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>NOT a pure delay (frequency-dependent: lag, filtering or dynamics)</source>
+        <translation>不是纯延迟（随频率变化：滞后、滤波或动态特性）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the table swung at %1 Hz, not the planned %2 Hz; fitting from the measured frequency</source>
+        <translation>转台以 %1 Hz 摆动，而非计划的 %2 Hz；按测得的频率拟合</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the per-period lags scatter %1 ms, more than the fit&apos;s noise model implies; the uncertainty rests on their scatter (%2 ms instead of %3 ms)</source>
+        <translation>逐周期滞后的离散为 %1 ms，大于拟合噪声模型所预期的；不确定度取自其离散（%2 ms，而非 %3 ms）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the per-period lags scatter %1 ms, less than the fit&apos;s noise model implies; the uncertainty rests on their scatter (%2 ms instead of %3 ms)</source>
+        <translation>逐周期滞后的离散为 %1 ms，小于拟合噪声模型所预期的；不确定度取自其离散（%2 ms，而非 %3 ms）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 IMU frames were lost; their increments are missing</source>
+        <translation>丢失了 %1 个 IMU 帧；其增量缺失</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 table frames were lost; the data cover %2 of %3 s (longest gap %4 ms)</source>
+        <translation>丢失了 %1 个转台帧；数据覆盖 %3 s 中的 %2 s（最长缺口 %4 ms）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the residuals do not match the noise model (chi^2/dof = %1); an unmodelled effect may be present</source>
+        <translation>残差与噪声模型不符（chi^2/dof = %1）；可能存在未建模的效应</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the table swung %1 deg, not the planned %2 deg</source>
+        <translation>转台摆幅为 %1 deg，而非计划的 %2 deg</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the gyro&apos;s own delay is negative: the processing board delay (%1 ms) is larger than the IMU delay; check that constant</source>
+        <translation>陀螺自身延迟为负：处理板延迟（%1 ms）大于 IMU 延迟；请检查该常数</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>axis_sign</source>
+        <translation>轴向符号</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>steady_sine</source>
+        <translation>稳定正弦</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>clock_rate</source>
+        <translation>时钟速率</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>causal</source>
+        <translation>因果性</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1, fogbench %2</source>
+        <translation>%1，fogbench %2</translation>
     </message>
 </context>
 </TS>

@@ -13,6 +13,7 @@
 #include "acquisition/replay_source.h"
 #include "acquisition/simulator_source.h"
 #include "analysis/delay_analysis.h"
+#include "analysis/report_writer.h"
 #include "analysis/verdict.h"
 #include "diagnosis/blind_check.h"
 #include "diagnosis/diagnosis.h"
@@ -31,7 +32,7 @@ using namespace fog;
 // Words a Chinese operator reads as they are: units, acronyms, names.
 const QStringList kKept = {"IMU", "ARW", "chi", "ppm", "rms", "dof", "Hz", "ms", "fogbench", "SQLite", "Allan",
                            "IEEE", "printf", "dd", "COPY", "fbs", "conv", "notrunc", "of", "format", "urad",
-                           "udeg", "us", "sigma"};
+                           "udeg", "us", "sigma", "CRLB", "sin"};
 
 // English left in a translated text: runs of three or more Latin letters that
 // are not kept words, identifiers (with _ . or -) or the given path.
@@ -130,8 +131,15 @@ class CoreTextTest : public QObject {
       constants.gyroSign = {sign, sign, sign};
       auto report = analysis::analyzeRecording(rec, constants);
       QVERIFY2(report.isOk(), report.status().toString().c_str());
-      for (const auto& p : report->points)
+      for (const auto& p : report->points) {
         for (const auto& c : p.checks) expectChinese(c.detail);
+        for (const auto& w : p.warnings) expectChinese(w);
+      }
+      // The text report under Results, line by line.
+      analysis::ReportContext context;
+      context.source = "simulator, seed 1, as fast as possible, fogbench 0.1.0";
+      context.trueLagMs = {0.5, 0.5, 0.5};
+      expectEveryLineChinese(analysis::formatReportText(*report, context));
       for (double limit : {0.1, 10.0})
         for (const auto& why : analysis::judgeReport(*report, limit).reasons) expectChinese(why);
     }
