@@ -142,7 +142,9 @@ DiagnosisView::DiagnosisView(QWidget* parent) : QWidget(parent) {
                            tr("relative to the fundamental (ppm)"));
   spectrumPlot_->setObjectName("spectrumPlot");
   spectrumPlot_->insertLegend(new QwtLegend(), QwtPlot::BottomLegend);
-  shrinkPlot_ = makePlot(tr("Held-out shrink per candidate effect"), QString(), tr("held-out gap closed (%)"));
+  // Bars across, names down the left: the effect names are long, and upright
+  // under the bars they squashed the plot to a strip.
+  shrinkPlot_ = makePlot(tr("Held-out shrink per candidate effect"), tr("held-out gap closed (%)"), QString());
   shrinkPlot_->setObjectName("shrinkPlot");
   // One interaction on every plot; measuring cursors on the residual curves.
   PlotInteraction::Options curveOptions;
@@ -440,17 +442,15 @@ void DiagnosisView::showShrink() {
     kept.push_back(e.kept);
   }
   auto* chart = new ShrinkChart(kept);
+  chart->setOrientation(Qt::Horizontal);
   chart->setSamples(shrink);
   chart->attach(shrinkPlot_);
-  auto* draw = new NamedScaleDraw(names);
-  // Upright names would overlap; slanted ones run off the plot's left edge.
-  draw->setLabelRotation(-90.0);
-  draw->setLabelAlignment(Qt::AlignLeft | Qt::AlignVCenter);
-  shrinkPlot_->setAxisScaleDraw(QwtPlot::xBottom, draw);
-  shrinkPlot_->setAxisScale(QwtPlot::xBottom, -0.6, static_cast<double>(names.size()) - 0.4, 1.0);
-  shrinkPlot_->setAxisMaxMinor(QwtPlot::xBottom, 0);
+  // Ranked from the top: the scale runs from the last effect up to the first.
+  shrinkPlot_->setAxisScaleDraw(QwtPlot::yLeft, new NamedScaleDraw(names));
+  shrinkPlot_->setAxisScale(QwtPlot::yLeft, static_cast<double>(names.size()) - 0.4, -0.6, 1.0);
+  shrinkPlot_->setAxisMaxMinor(QwtPlot::yLeft, 0);
   const double lowest = shrink.isEmpty() ? 0.0 : *std::min_element(shrink.begin(), shrink.end());
-  shrinkPlot_->setAxisScale(QwtPlot::yLeft, std::min(0.0, lowest), 100.0);
+  shrinkPlot_->setAxisScale(QwtPlot::xBottom, std::min(0.0, lowest), 100.0);
   shrinkPlot_->replot();
   shrinkInteraction_->setHome();
 }

@@ -802,6 +802,11 @@ class BenchUiTest : public QObject {
     for (auto* item : w->diagnosisView()->shrinkPlot()->itemList(QwtPlotItem::Rtti_PlotBarChart))
       bars += static_cast<int>(static_cast<QwtPlotBarChart*>(item)->dataSize());
     QCOMPARE(bars, static_cast<int>(d->effects.size()));
+    // Bars across with the names down the left, the best ranked on top.
+    const QwtScaleDiv& names = w->diagnosisView()->shrinkPlot()->axisScaleDiv(QwtPlot::yLeft);
+    QVERIFY(names.lowerBound() > names.upperBound());
+    QCOMPARE(w->diagnosisView()->shrinkPlot()->axisScaleDraw(QwtPlot::yLeft)->label(0.0).text(),
+             QString::fromStdString(d->effects.front().name));
     QCOMPARE(w->diagnosisView()->curvePlot()->itemList(QwtPlotItem::Rtti_PlotCurve).size(), 2);
   }
 
