@@ -443,6 +443,9 @@ void DiagnosisView::showShrink() {
   }
   auto* chart = new ShrinkChart(kept);
   chart->setOrientation(Qt::Horizontal);
+  // Each bar 0.7 of its row, however many effects share the height.
+  chart->setLayoutPolicy(QwtPlotAbstractBarChart::ScaleSamplesToAxes);
+  chart->setLayoutHint(0.7);
   chart->setSamples(shrink);
   chart->attach(shrinkPlot_);
   // Ranked from the top: the scale runs from the last effect up to the first.
