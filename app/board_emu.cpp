@@ -26,11 +26,11 @@
 #include <thread>
 #include <vector>
 
-#include "board_faults.h"
-#include "board_host.h"
-#include "cli_arguments.h"
-#include "model/simulator.h"
-#include "sim_options.h"
+#include "app/board_faults.h"
+#include "app/board_host.h"
+#include "app/cli_arguments.h"
+#include "core/model/simulator.h"
+#include "app/sim_options.h"
 
 namespace {
 

@@ -1,8 +1,8 @@
-#include "board_faults.h"
+#include "app/board_faults.h"
 
 #include <cmath>
 
-#include "protocol/frame.h"
+#include "core/protocol/frame.h"
 
 namespace fog::app {
 

@@ -1,4 +1,4 @@
-#include "board_host.h"
+#include "app/board_host.h"
 
 #include <cstdio>
 

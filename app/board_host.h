@@ -18,9 +18,9 @@
 #include <string>
 #include <vector>
 
-#include "protocol/decoder.h"
-#include "protocol/frame.h"
-#include "protocol/host_command.h"
+#include "core/protocol/decoder.h"
+#include "core/protocol/frame.h"
+#include "core/protocol/host_command.h"
 
 namespace fog::app {
 

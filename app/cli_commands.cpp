@@ -1,4 +1,4 @@
-#include "cli_commands.h"
+#include "app/cli_commands.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,22 +10,22 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "acquisition/acquisition.h"
-#include "acquisition/simulator_source.h"
-#include "analysis/delay_analysis.h"
-#include "analysis/report_writer.h"
-#include "analysis/theory.h"
-#include "common/text.h"
-#include "common/version.h"
-#include "diagnosis/accuracy_study.h"
-#include "diagnosis/effects.h"
-#include "model/simulator.h"
-#include "protocol/recording_builder.h"
-#include "session/session_file.h"
-#include "cli_common.h"
-#include "session_commands.h"
-#include "sim_options.h"
-#include "serial_command.h"
+#include "core/acquisition/acquisition.h"
+#include "core/acquisition/simulator_source.h"
+#include "core/analysis/delay_analysis.h"
+#include "core/analysis/report_writer.h"
+#include "core/analysis/theory.h"
+#include "core/common/text.h"
+#include "core/common/version.h"
+#include "core/diagnosis/accuracy_study.h"
+#include "core/diagnosis/effects.h"
+#include "core/model/simulator.h"
+#include "core/protocol/recording_builder.h"
+#include "core/session/session_file.h"
+#include "app/cli_common.h"
+#include "app/session_commands.h"
+#include "app/sim_options.h"
+#include "app/serial_command.h"
 
 namespace fog::app {
 

@@ -2,7 +2,7 @@
 // The fogbench-cli commands. Each returns the process exit code and prints
 // its own output; errors are one line on stderr saying what is wrong.
 
-#include "cli_arguments.h"
+#include "app/cli_arguments.h"
 
 namespace fog::app {
 

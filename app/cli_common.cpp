@@ -1,11 +1,11 @@
-#include "cli_common.h"
+#include "app/cli_common.h"
 
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
 
-#include "common/text.h"
-#include "session/session_file.h"
+#include "core/common/text.h"
+#include "core/session/session_file.h"
 
 namespace fog::app {
 

@@ -9,13 +9,13 @@
 #include <array>
 #include <string>
 
-#include "acquisition/acquisition.h"
-#include "analysis/delay_analysis.h"
-#include "analysis/verdict.h"
-#include "cli_arguments.h"
-#include "common/session_info.h"
-#include "common/status.h"
-#include "common/test_plan.h"
+#include "core/acquisition/acquisition.h"
+#include "core/analysis/delay_analysis.h"
+#include "core/analysis/verdict.h"
+#include "app/cli_arguments.h"
+#include "core/common/session_info.h"
+#include "core/common/status.h"
+#include "core/common/test_plan.h"
 
 namespace fog::app {
 

@@ -1,4 +1,4 @@
-#include "diagnose_command.h"
+#include "app/diagnose_command.h"
 
 #include <cmath>
 #include <cstdio>
@@ -6,11 +6,11 @@
 #include <iostream>
 #include <iterator>
 
-#include "cli_common.h"
-#include "diagnosis/blind_check.h"
-#include "diagnosis/diagnosis.h"
-#include "protocol/recording_builder.h"
-#include "session/session_file.h"
+#include "app/cli_common.h"
+#include "core/diagnosis/blind_check.h"
+#include "core/diagnosis/diagnosis.h"
+#include "core/protocol/recording_builder.h"
+#include "core/session/session_file.h"
 
 namespace fog::app {
 

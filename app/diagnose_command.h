@@ -1,7 +1,7 @@
 #pragma once
 // fogbench-cli diagnose and bench-diagnosis (docs/diagnosis.md).
 
-#include "cli_arguments.h"
+#include "app/cli_arguments.h"
 
 namespace fog::app {
 

@@ -5,16 +5,16 @@
 #include <string>
 #include <vector>
 
-#include "cli_arguments.h"
-#include "cli_commands.h"
-#include "common/version.h"
-#include "diagnose_command.h"
-#include "noise_command.h"
-#include "session_commands.h"
+#include "app/cli_arguments.h"
+#include "app/cli_commands.h"
+#include "core/common/version.h"
+#include "app/diagnose_command.h"
+#include "app/noise_command.h"
+#include "app/session_commands.h"
 #ifdef FOG_HAVE_REPORT
-#include "report_command.h"
+#include "app/report_command.h"
 #endif
-#include "serial_command.h"
+#include "app/serial_command.h"
 
 namespace {
 

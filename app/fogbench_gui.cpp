@@ -31,8 +31,8 @@
 #include <cstdio>
 #include <cstring>
 
-#include "common/version.h"
-#include "gui_screenshot.h"
+#include "core/common/version.h"
+#include "app/gui_screenshot.h"
 #include "ui/bench_presets.h"
 #include "ui/language.h"
 #include "ui/main_window.h"

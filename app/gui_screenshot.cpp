@@ -1,4 +1,4 @@
-#include "gui_screenshot.h"
+#include "app/gui_screenshot.h"
 
 #include <QApplication>
 #include <QPixmap>

@@ -1,14 +1,14 @@
-#include "noise_command.h"
+#include "app/noise_command.h"
 
 #include <cmath>
 #include <fstream>
 #include <iostream>
 #include <iterator>
 
-#include "cli_common.h"
-#include "noise/gyro_noise.h"
-#include "protocol/recording_builder.h"
-#include "session/session_file.h"
+#include "app/cli_common.h"
+#include "core/noise/gyro_noise.h"
+#include "core/protocol/recording_builder.h"
+#include "core/session/session_file.h"
 
 namespace fog::app {
 

@@ -2,7 +2,7 @@
 // fogbench-cli noise: gyro noise characterisation from the static segments of
 // a session or raw stream (docs/noise.md).
 
-#include "cli_arguments.h"
+#include "app/cli_arguments.h"
 
 namespace fog::app {
 

@@ -1,4 +1,4 @@
-#include "report_command.h"
+#include "app/report_command.h"
 
 #include <QApplication>
 #include <QDateTime>
@@ -10,12 +10,12 @@
 #include <iostream>
 #include <iterator>
 
-#include "analysis/delay_analysis.h"
-#include "cli_common.h"
-#include "common/version.h"
-#include "model/simulator.h"
-#include "protocol/recording_builder.h"
-#include "session/session_file.h"
+#include "core/analysis/delay_analysis.h"
+#include "app/cli_common.h"
+#include "core/common/version.h"
+#include "core/model/simulator.h"
+#include "core/protocol/recording_builder.h"
+#include "core/session/session_file.h"
 #include "ui/report/calibration_report.h"
 
 namespace fog::app {

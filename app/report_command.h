@@ -11,7 +11,7 @@
 // verdict; the verdict is printed), 1 the data gave no delay, 2 bad command
 // line, unreadable input or unwritable output.
 
-#include "cli_arguments.h"
+#include "app/cli_arguments.h"
 
 namespace fog::app {
 

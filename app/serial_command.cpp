@@ -1,4 +1,4 @@
-#include "serial_command.h"
+#include "app/serial_command.h"
 
 #include <atomic>
 #include <cmath>
@@ -6,16 +6,16 @@
 #include <cstdio>
 #include <iostream>
 
-#include "acquisition/acquisition.h"
-#include "analysis/report_writer.h"
-#include "acquisition/board_commander.h"
-#include "cli_common.h"
-#include "common/text.h"
-#include "common/version.h"
-#include "serial/serial_source.h"
-#include "session/session_file.h"
-#include "session_commands.h"
-#include "sim_options.h"
+#include "core/acquisition/acquisition.h"
+#include "core/analysis/report_writer.h"
+#include "core/acquisition/board_commander.h"
+#include "app/cli_common.h"
+#include "core/common/text.h"
+#include "core/common/version.h"
+#include "core/serial/serial_source.h"
+#include "core/session/session_file.h"
+#include "app/session_commands.h"
+#include "app/sim_options.h"
 
 namespace fog::app {
 

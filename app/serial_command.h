@@ -4,9 +4,9 @@
 // session and reports the delay; `ports` lists the serial ports. In every
 // build (core/serial is POSIX, Qt-free).
 
-#include "cli_arguments.h"
-#include "common/status.h"
-#include "serial/serial_source.h"
+#include "app/cli_arguments.h"
+#include "core/common/status.h"
+#include "core/serial/serial_source.h"
 
 namespace fog::app {
 

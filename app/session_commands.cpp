@@ -1,4 +1,4 @@
-#include "session_commands.h"
+#include "app/session_commands.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,16 +8,16 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
-#include "cli_common.h"
-#include "acquisition/acquisition.h"
-#include "acquisition/replay_source.h"
-#include "common/text.h"
-#include "common/version.h"
-#include "io/csv_export.h"
-#include "io/csv_import.h"
-#include "io/imported_session.h"
-#include "session/session_file.h"
-#include "session/session_list.h"
+#include "app/cli_common.h"
+#include "core/acquisition/acquisition.h"
+#include "core/acquisition/replay_source.h"
+#include "core/common/text.h"
+#include "core/common/version.h"
+#include "core/io/csv_export.h"
+#include "core/io/csv_import.h"
+#include "core/io/imported_session.h"
+#include "core/session/session_file.h"
+#include "core/session/session_list.h"
 
 namespace fog::app {
 

@@ -11,12 +11,12 @@
 #include <string>
 #include <vector>
 
-#include "analysis/delay_analysis.h"
-#include "analysis/report_writer.h"
-#include "cli_arguments.h"
-#include "common/session_info.h"
-#include "common/test_plan.h"
-#include "model/sim_config.h"
+#include "core/analysis/delay_analysis.h"
+#include "core/analysis/report_writer.h"
+#include "app/cli_arguments.h"
+#include "core/common/session_info.h"
+#include "core/common/test_plan.h"
+#include "core/model/sim_config.h"
 
 namespace fog::app {
 

@@ -1,4 +1,4 @@
-#include "sim_options.h"
+#include "app/sim_options.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <iterator>
 #include <string>
 
-#include "cli_common.h"
+#include "app/cli_common.h"
 
 namespace fog::app {
 

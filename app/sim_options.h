@@ -3,10 +3,10 @@
 // board emulator (fogbench-board-emu): one parser, so both programs accept
 // the same plan and chain options.
 
-#include "cli_arguments.h"
-#include "common/status.h"
-#include "common/test_plan.h"
-#include "model/sim_config.h"
+#include "app/cli_arguments.h"
+#include "core/common/status.h"
+#include "core/common/test_plan.h"
+#include "core/model/sim_config.h"
 
 namespace fog::app {
 

@@ -19,20 +19,20 @@
 #include <mutex>
 #include <thread>
 
-#include "acquisition/acquisition.h"
-#include "analysis/report_writer.h"
-#include "acquisition/board_commander.h"
-#include "cli_common.h"
-#include "common/text.h"
-#include "common/version.h"
-#include "serial_command.h"
-#include "session/session_file.h"
-#include "session_commands.h"
-#include "sim_options.h"
-#include "table/manual_table.h"
-#include "table/plan_runner.h"
-#include "table/remote_table.h"
-#include "table/stream_recorder.h"
+#include "core/acquisition/acquisition.h"
+#include "core/analysis/report_writer.h"
+#include "core/acquisition/board_commander.h"
+#include "app/cli_common.h"
+#include "core/common/text.h"
+#include "core/common/version.h"
+#include "app/serial_command.h"
+#include "core/session/session_file.h"
+#include "app/session_commands.h"
+#include "app/sim_options.h"
+#include "core/table/manual_table.h"
+#include "core/table/plan_runner.h"
+#include "core/table/remote_table.h"
+#include "core/table/stream_recorder.h"
 
 namespace fog::app {
 

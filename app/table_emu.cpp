@@ -34,12 +34,12 @@
 #include <thread>
 #include <vector>
 
-#include "board_host.h"
-#include "cli_arguments.h"
-#include "model/effect.h"
-#include "model/simulator.h"
-#include "sim_options.h"
-#include "table/emulated_table.h"
+#include "app/board_host.h"
+#include "app/cli_arguments.h"
+#include "core/model/effect.h"
+#include "core/model/simulator.h"
+#include "app/sim_options.h"
+#include "core/table/emulated_table.h"
 
 namespace {
 

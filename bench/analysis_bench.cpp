@@ -5,13 +5,13 @@
 
 #include <algorithm>
 
-#include "analysis/channels.h"
-#include "analysis/delay_analysis.h"
-#include "analysis/joint_fit.h"
-#include "analysis/sine_fit.h"
-#include "common/units.h"
-#include "model/simulator.h"
-#include "protocol/recording_builder.h"
+#include "core/analysis/channels.h"
+#include "core/analysis/delay_analysis.h"
+#include "core/analysis/joint_fit.h"
+#include "core/analysis/sine_fit.h"
+#include "core/common/units.h"
+#include "core/model/simulator.h"
+#include "core/protocol/recording_builder.h"
 
 namespace {
 

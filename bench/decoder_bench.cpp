@@ -8,9 +8,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "protocol/decoder.h"
-#include "protocol/frame.h"
-#include "protocol/recording_builder.h"
+#include "core/protocol/decoder.h"
+#include "core/protocol/frame.h"
+#include "core/protocol/recording_builder.h"
 
 namespace {
 

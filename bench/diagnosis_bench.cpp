@@ -8,11 +8,11 @@
 
 #include <benchmark/benchmark.h>
 
-#include "common/test_plan.h"
-#include "diagnosis/blind_check.h"
-#include "diagnosis/diagnosis.h"
-#include "model/simulator.h"
-#include "protocol/recording_builder.h"
+#include "core/common/test_plan.h"
+#include "core/diagnosis/blind_check.h"
+#include "core/diagnosis/diagnosis.h"
+#include "core/model/simulator.h"
+#include "core/protocol/recording_builder.h"
 
 namespace {
 

@@ -10,8 +10,8 @@
 #include <filesystem>
 #include <random>
 
-#include "io/csv_export.h"
-#include "io/csv_import.h"
+#include "core/io/csv_export.h"
+#include "core/io/csv_import.h"
 
 namespace {
 

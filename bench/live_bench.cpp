@@ -18,8 +18,8 @@
 #include <cstdio>
 #include <vector>
 
-#include "acquisition/acquisition.h"
-#include "acquisition/simulator_source.h"
+#include "core/acquisition/acquisition.h"
+#include "core/acquisition/simulator_source.h"
 #include "ui/live_view.h"
 #include "ui/main_window.h"
 #include "ui/plan_editor.h"

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <vector>
 
-#include "model/random.h"
-#include "noise/noise_terms.h"
+#include "core/model/random.h"
+#include "core/noise/noise_terms.h"
 
 namespace {
 

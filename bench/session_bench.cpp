@@ -15,10 +15,10 @@
 #include <string>
 #include <unistd.h>
 
-#include "analysis/delay_analysis.h"
-#include "model/simulator.h"
-#include "protocol/recording_builder.h"
-#include "session/session_file.h"
+#include "core/analysis/delay_analysis.h"
+#include "core/model/simulator.h"
+#include "core/protocol/recording_builder.h"
+#include "core/session/session_file.h"
 
 namespace {
 

@@ -12,8 +12,8 @@
 #include <span>
 #include <vector>
 
-#include "protocol/decoder.h"
-#include "protocol/recording_builder.h"
+#include "core/protocol/decoder.h"
+#include "core/protocol/recording_builder.h"
 
 namespace {
 

@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
-#include "common/test_plan.h"
-#include "io/csv_import.h"
+#include "core/common/test_plan.h"
+#include "core/io/csv_import.h"
 
 namespace {
 

@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "protocol/frame.h"
-#include "protocol/recording_builder.h"
-#include "session/session_file.h"
+#include "core/protocol/frame.h"
+#include "core/protocol/recording_builder.h"
+#include "core/session/session_file.h"
 
 namespace {
 

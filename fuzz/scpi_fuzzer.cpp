@@ -16,8 +16,8 @@
 #include <string>
 #include <string_view>
 
-#include "table/emulated_table.h"
-#include "table/scpi.h"
+#include "core/table/emulated_table.h"
+#include "core/table/scpi.h"
 
 namespace {
 

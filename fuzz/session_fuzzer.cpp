@@ -14,7 +14,7 @@
 #include <fstream>
 #include <string>
 
-#include "session/session_file.h"
+#include "core/session/session_file.h"
 
 namespace {
 

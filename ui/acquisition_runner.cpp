@@ -3,7 +3,7 @@
 #include <QMetaObject>
 #include <QtConcurrent/QtConcurrentRun>
 
-#include "session/session_file.h"
+#include "core/session/session_file.h"
 #include "ui/table_drive.h"
 
 namespace fog::ui {

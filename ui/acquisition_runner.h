@@ -29,7 +29,7 @@
 #include <mutex>
 #include <vector>
 
-#include "acquisition/acquisition.h"
+#include "core/acquisition/acquisition.h"
 #include "ui/run_outcome.h"
 
 namespace fog::ui {

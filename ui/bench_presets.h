@@ -5,7 +5,7 @@
 #include <optional>
 #include <vector>
 
-#include "common/test_plan.h"
+#include "core/common/test_plan.h"
 
 namespace fog::ui {
 

@@ -6,7 +6,7 @@
 
 #include <QDialog>
 
-#include "common/session_info.h"
+#include "core/common/session_info.h"
 
 class QDoubleSpinBox;
 class QSpinBox;

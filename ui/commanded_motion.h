@@ -8,7 +8,7 @@
 
 #include <QWidget>
 
-#include "common/test_plan.h"
+#include "core/common/test_plan.h"
 
 class QLabel;
 class QTableWidget;

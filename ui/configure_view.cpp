@@ -14,7 +14,7 @@
 #include <QVBoxLayout>
 #include <limits>
 
-#include "serial/serial_source.h"
+#include "core/serial/serial_source.h"
 #include "ui/commanded_motion.h"
 #include "ui/plan_editor.h"
 

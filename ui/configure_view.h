@@ -10,7 +10,7 @@
 #include <QString>
 #include <QWidget>
 
-#include "common/session_info.h"
+#include "core/common/session_info.h"
 
 class QCheckBox;
 class QComboBox;

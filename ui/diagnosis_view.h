@@ -13,7 +13,7 @@
 #include <QWidget>
 #include <memory>
 
-#include "diagnosis/diagnosis.h"
+#include "core/diagnosis/diagnosis.h"
 
 class QComboBox;
 class QLabel;

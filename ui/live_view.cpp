@@ -13,7 +13,7 @@
 #include <cmath>
 #include <vector>
 
-#include "table/stream_recorder.h"
+#include "core/table/stream_recorder.h"
 #include <algorithm>
 #include <cmath>
 #include <qwt_legend.h>

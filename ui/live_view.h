@@ -15,8 +15,8 @@
 #include <optional>
 #include <span>
 
-#include "acquisition/live_traces.h"
-#include "common/test_plan.h"
+#include "core/acquisition/live_traces.h"
+#include "core/common/test_plan.h"
 #include "ui/table_drive.h"
 
 class QGroupBox;

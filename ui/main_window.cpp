@@ -38,14 +38,14 @@
 #include <qwt_global.h>
 #include <sstream>
 
-#include "acquisition/replay_source.h"
-#include "acquisition/simulator_source.h"
-#include "analysis/report_writer.h"
-#include "common/version.h"
-#include "io/csv_import.h"
-#include "io/imported_session.h"
-#include "serial/serial_source.h"
-#include "session/session_file.h"
+#include "core/acquisition/replay_source.h"
+#include "core/acquisition/simulator_source.h"
+#include "core/analysis/report_writer.h"
+#include "core/common/version.h"
+#include "core/io/csv_import.h"
+#include "core/io/imported_session.h"
+#include "core/serial/serial_source.h"
+#include "core/session/session_file.h"
 #include "ui/bench_settings_dialog.h"
 #include "ui/compare_view.h"
 #include "ui/core_text.h"

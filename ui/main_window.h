@@ -29,7 +29,7 @@
 #include <atomic>
 #include <memory>
 
-#include "common/session_info.h"
+#include "core/common/session_info.h"
 #include "ui/acquisition_runner.h"
 #include "ui/configure_view.h"
 

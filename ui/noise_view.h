@@ -10,7 +10,7 @@
 #include <memory>
 #include <vector>
 
-#include "noise/gyro_noise.h"
+#include "core/noise/gyro_noise.h"
 
 class QComboBox;
 class QLabel;

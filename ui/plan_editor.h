@@ -11,7 +11,7 @@
 #include <QWidget>
 #include <vector>
 
-#include "common/test_plan.h"
+#include "core/common/test_plan.h"
 
 class QComboBox;
 class QDoubleSpinBox;

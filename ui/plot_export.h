@@ -4,7 +4,7 @@
 
 #include <QString>
 
-#include "common/status.h"
+#include "core/common/status.h"
 
 class QwtPlot;
 

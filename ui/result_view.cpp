@@ -36,10 +36,10 @@
 #include <qwt_scale_div.h>
 #include <qwt_symbol.h>
 
-#include "analysis/theory.h"
-#include "analysis/verdict.h"
-#include "common/version.h"
-#include "session/session_file.h"
+#include "core/analysis/theory.h"
+#include "core/analysis/verdict.h"
+#include "core/common/version.h"
+#include "core/session/session_file.h"
 #include "ui/core_text.h"
 #include "ui/language.h"
 #include "ui/plot_export.h"

@@ -5,8 +5,8 @@
 #include <QJsonObject>
 #include <algorithm>
 
-#include "analysis/report_writer.h"
-#include "session/session_file.h"
+#include "core/analysis/report_writer.h"
+#include "core/session/session_file.h"
 
 namespace fog::ui {
 

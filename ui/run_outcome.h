@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "analysis/delay_analysis.h"
-#include "common/recording.h"
-#include "common/session_info.h"
-#include "model/simulator.h"
+#include "core/analysis/delay_analysis.h"
+#include "core/common/recording.h"
+#include "core/common/session_info.h"
+#include "core/model/simulator.h"
 #include "ui/plot_data/test_point_traces.h"
 
 namespace fog::session {

@@ -10,7 +10,7 @@
 #include <QTableWidget>
 #include <QVBoxLayout>
 
-#include "session/session_list.h"
+#include "core/session/session_list.h"
 #include "ui/core_text.h"
 #include "ui/language.h"
 #include "ui/messages.h"

@@ -14,7 +14,7 @@
 #include <optional>
 #include <vector>
 
-#include "analysis/delay_analysis.h"
+#include "core/analysis/delay_analysis.h"
 
 namespace fog::ui {
 

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <cstdlib>
 
-#include "table/manual_table.h"
-#include "table/remote_table.h"
+#include "core/table/manual_table.h"
+#include "core/table/remote_table.h"
 
 namespace fog::ui {
 

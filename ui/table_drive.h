@@ -30,15 +30,15 @@
 #include <thread>
 #include <vector>
 
-#include "acquisition/acquisition.h"
-#include "acquisition/board_commander.h"
-#include "common/status.h"
-#include "common/test_plan.h"
-#include "protocol/frame.h"
-#include "session/session_file.h"
-#include "table/plan_runner.h"
-#include "table/stream_recorder.h"
-#include "table/table_controller.h"
+#include "core/acquisition/acquisition.h"
+#include "core/acquisition/board_commander.h"
+#include "core/common/status.h"
+#include "core/common/test_plan.h"
+#include "core/protocol/frame.h"
+#include "core/session/session_file.h"
+#include "core/table/plan_runner.h"
+#include "core/table/stream_recorder.h"
+#include "core/table/table_controller.h"
 
 namespace fog::ui {
 

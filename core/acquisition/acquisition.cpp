@@ -1,13 +1,13 @@
-#include "acquisition/acquisition.h"
+#include "core/acquisition/acquisition.h"
 
 #include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <nlohmann/json.hpp>
 
-#include "common/version.h"
-#include "protocol/recording_builder.h"
-#include "session/session_file.h"
+#include "core/common/version.h"
+#include "core/protocol/recording_builder.h"
+#include "core/session/session_file.h"
 
 namespace fog::acquisition {
 

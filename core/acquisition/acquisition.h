@@ -37,14 +37,14 @@
 #include <string>
 #include <vector>
 
-#include "acquisition/byte_source.h"
-#include "analysis/delay_analysis.h"
-#include "analysis/report_writer.h"
-#include "common/recording.h"
-#include "common/session_info.h"
-#include "common/status.h"
-#include "protocol/decoder.h"
-#include "session/session_file.h"
+#include "core/acquisition/byte_source.h"
+#include "core/analysis/delay_analysis.h"
+#include "core/analysis/report_writer.h"
+#include "core/common/recording.h"
+#include "core/common/session_info.h"
+#include "core/common/status.h"
+#include "core/protocol/decoder.h"
+#include "core/session/session_file.h"
 
 namespace fog::acquisition {
 

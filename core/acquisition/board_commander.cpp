@@ -1,4 +1,4 @@
-#include "acquisition/board_commander.h"
+#include "core/acquisition/board_commander.h"
 
 #include <cmath>
 #include <cstdio>

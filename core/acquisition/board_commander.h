@@ -13,9 +13,9 @@
 #include <mutex>
 #include <string>
 
-#include "acquisition/byte_source.h"
-#include "common/test_plan.h"
-#include "protocol/host_command.h"
+#include "core/acquisition/byte_source.h"
+#include "core/common/test_plan.h"
+#include "core/protocol/host_command.h"
 
 namespace fog::acquisition {
 

@@ -1,4 +1,4 @@
-#include "acquisition/live_traces.h"
+#include "core/acquisition/live_traces.h"
 
 #include <Eigen/Cholesky>
 #include <cmath>

@@ -22,8 +22,8 @@
 
 #include <Eigen/Core>
 
-#include "common/test_plan.h"
-#include "protocol/decoder.h"
+#include "core/common/test_plan.h"
+#include "core/protocol/decoder.h"
 
 namespace fog::acquisition {
 

@@ -1,4 +1,4 @@
-#include "acquisition/replay_source.h"
+#include "core/acquisition/replay_source.h"
 
 #include <algorithm>
 #include <cstdio>

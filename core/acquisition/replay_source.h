@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "acquisition/byte_source.h"
-#include "acquisition/paced_clock.h"
-#include "protocol/decoder.h"
+#include "core/acquisition/byte_source.h"
+#include "core/acquisition/paced_clock.h"
+#include "core/protocol/decoder.h"
 
 namespace fog::acquisition {
 

@@ -1,4 +1,4 @@
-#include "acquisition/simulator_source.h"
+#include "core/acquisition/simulator_source.h"
 
 #include <algorithm>
 #include <cstdio>

@@ -8,9 +8,9 @@
 #include <memory>
 #include <vector>
 
-#include "acquisition/byte_source.h"
-#include "acquisition/paced_clock.h"
-#include "model/simulator.h"
+#include "core/acquisition/byte_source.h"
+#include "core/acquisition/paced_clock.h"
+#include "core/model/simulator.h"
 
 namespace fog::acquisition {
 

@@ -1,10 +1,10 @@
-#include "analysis/channels.h"
+#include "core/analysis/channels.h"
 
 #include <algorithm>
 #include <cmath>
 #include <string>
 
-#include "common/units.h"
+#include "core/common/units.h"
 
 namespace fog::analysis {
 

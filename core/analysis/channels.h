@@ -17,9 +17,9 @@
 #include <cstddef>
 #include <vector>
 
-#include "analysis/sin_cos_series.h"
-#include "common/recording.h"
-#include "common/status.h"
+#include "core/analysis/sin_cos_series.h"
+#include "core/common/recording.h"
+#include "core/common/status.h"
 
 namespace fog::analysis {
 

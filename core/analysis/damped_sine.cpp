@@ -1,10 +1,10 @@
-#include "analysis/damped_sine.h"
+#include "core/analysis/damped_sine.h"
 
 #include <Eigen/Dense>
 #include <cmath>
 
-#include "analysis/least_squares.h"
-#include "common/units.h"
+#include "core/analysis/least_squares.h"
+#include "core/common/units.h"
 
 namespace fog::analysis {
 

@@ -15,7 +15,7 @@
 
 #include <optional>
 
-#include "analysis/channels.h"
+#include "core/analysis/channels.h"
 
 namespace fog::analysis {
 

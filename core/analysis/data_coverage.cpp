@@ -1,4 +1,4 @@
-#include "analysis/data_coverage.h"
+#include "core/analysis/data_coverage.h"
 
 #include <algorithm>
 #include <cmath>

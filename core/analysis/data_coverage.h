@@ -20,7 +20,7 @@
 #include <cstddef>
 #include <string>
 
-#include "common/recording.h"
+#include "core/common/recording.h"
 
 namespace fog::analysis {
 

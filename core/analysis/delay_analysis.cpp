@@ -1,4 +1,4 @@
-#include "analysis/delay_analysis.h"
+#include "core/analysis/delay_analysis.h"
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -7,11 +7,11 @@
 #include <numeric>
 #include <sstream>
 
-#include "analysis/data_coverage.h"
-#include "analysis/least_squares.h"
-#include "analysis/sin_cos_series.h"
-#include "analysis/statistics.h"
-#include "common/units.h"
+#include "core/analysis/data_coverage.h"
+#include "core/analysis/least_squares.h"
+#include "core/analysis/sin_cos_series.h"
+#include "core/analysis/statistics.h"
+#include "core/common/units.h"
 
 namespace fog::analysis {
 

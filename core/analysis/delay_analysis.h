@@ -15,13 +15,13 @@
 #include <string>
 #include <vector>
 
-#include "analysis/damped_sine.h"
-#include "analysis/joint_fit.h"
-#include "analysis/sine_fit.h"
-#include "analysis/validity.h"
-#include "common/recording.h"
-#include "common/session_info.h"
-#include "common/status.h"
+#include "core/analysis/damped_sine.h"
+#include "core/analysis/joint_fit.h"
+#include "core/analysis/sine_fit.h"
+#include "core/analysis/validity.h"
+#include "core/common/recording.h"
+#include "core/common/session_info.h"
+#include "core/common/status.h"
 
 namespace fog::analysis {
 

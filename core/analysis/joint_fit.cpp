@@ -1,11 +1,11 @@
-#include "analysis/joint_fit.h"
+#include "core/analysis/joint_fit.h"
 
 #include <cmath>
 #include <future>
 
-#include "analysis/least_squares.h"
-#include "analysis/sin_cos_series.h"
-#include "common/units.h"
+#include "core/analysis/least_squares.h"
+#include "core/analysis/sin_cos_series.h"
+#include "core/common/units.h"
 
 namespace fog::analysis {
 

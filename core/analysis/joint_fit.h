@@ -8,9 +8,9 @@
 // (gyro fitted on its increments, whitened by its noise model; table
 // weighted by its white noise). Parameters (w, a, b, c, g, lag, d).
 
-#include "analysis/channels.h"
-#include "analysis/sine_fit.h"
-#include "common/status.h"
+#include "core/analysis/channels.h"
+#include "core/analysis/sine_fit.h"
+#include "core/common/status.h"
 
 namespace fog::analysis {
 

@@ -1,4 +1,4 @@
-#include "analysis/least_squares.h"
+#include "core/analysis/least_squares.h"
 
 #include <ceres/tiny_solver.h>
 

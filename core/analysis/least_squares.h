@@ -16,7 +16,7 @@
 
 #include <Eigen/Dense>
 
-#include "common/status.h"
+#include "core/common/status.h"
 
 namespace fog::analysis {
 

@@ -1,4 +1,4 @@
-#include "analysis/report_writer.h"
+#include "core/analysis/report_writer.h"
 
 #include <algorithm>
 #include <cmath>

@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
-#include "analysis/delay_analysis.h"
-#include "analysis/verdict.h"
+#include "core/analysis/delay_analysis.h"
+#include "core/analysis/verdict.h"
 
 namespace fog::analysis {
 

@@ -1,12 +1,12 @@
-#include "analysis/sine_fit.h"
+#include "core/analysis/sine_fit.h"
 
 #include <Eigen/Dense>
 #include <cmath>
 #include <future>
 
-#include "analysis/least_squares.h"
-#include "analysis/sin_cos_series.h"
-#include "common/units.h"
+#include "core/analysis/least_squares.h"
+#include "core/analysis/sin_cos_series.h"
+#include "core/common/units.h"
 
 namespace fog::analysis {
 

@@ -11,8 +11,8 @@
 
 #include <cstddef>
 
-#include "analysis/channels.h"
-#include "common/status.h"
+#include "core/analysis/channels.h"
+#include "core/common/status.h"
 
 namespace fog::analysis {
 

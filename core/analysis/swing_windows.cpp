@@ -1,4 +1,4 @@
-#include "analysis/swing_windows.h"
+#include "core/analysis/swing_windows.h"
 
 #include <algorithm>
 #include <charconv>
@@ -6,8 +6,8 @@
 #include <deque>
 #include <optional>
 
-#include "analysis/channels.h"
-#include "analysis/validity.h"
+#include "core/analysis/channels.h"
+#include "core/analysis/validity.h"
 
 namespace fog::analysis {
 

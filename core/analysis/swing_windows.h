@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "common/recording.h"
-#include "common/status.h"
+#include "core/common/recording.h"
+#include "core/common/status.h"
 
 namespace fog::analysis {
 

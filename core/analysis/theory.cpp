@@ -1,9 +1,9 @@
-#include "analysis/theory.h"
+#include "core/analysis/theory.h"
 
 #include <cmath>
 
-#include "analysis/delay_analysis.h"
-#include "common/units.h"
+#include "core/analysis/delay_analysis.h"
+#include "core/common/units.h"
 
 namespace fog::analysis {
 

@@ -1,4 +1,4 @@
-#include "analysis/validity.h"
+#include "core/analysis/validity.h"
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -6,7 +6,7 @@
 #include <complex>
 #include <unsupported/Eigen/FFT>
 
-#include "common/units.h"
+#include "core/common/units.h"
 
 namespace fog::analysis {
 

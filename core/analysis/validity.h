@@ -14,9 +14,9 @@
 #include <string>
 #include <vector>
 
-#include "analysis/channels.h"
-#include "analysis/sine_fit.h"
-#include "common/status.h"
+#include "core/analysis/channels.h"
+#include "core/analysis/sine_fit.h"
+#include "core/common/status.h"
 
 namespace fog::analysis {
 

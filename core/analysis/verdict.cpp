@@ -1,4 +1,4 @@
-#include "analysis/verdict.h"
+#include "core/analysis/verdict.h"
 
 #include <algorithm>
 #include <cmath>

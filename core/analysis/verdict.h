@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "analysis/delay_analysis.h"
+#include "core/analysis/delay_analysis.h"
 
 namespace fog::analysis {
 

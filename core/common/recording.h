@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "common/test_plan.h"
+#include "core/common/test_plan.h"
 
 namespace fog {
 

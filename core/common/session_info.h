@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "common/test_plan.h"
+#include "core/common/test_plan.h"
 
 namespace fog {
 

@@ -1,11 +1,11 @@
-#include "common/test_plan.h"
+#include "core/common/test_plan.h"
 
 #include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "common/units.h"
+#include "core/common/units.h"
 
 namespace fog {
 

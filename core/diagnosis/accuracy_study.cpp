@@ -1,13 +1,13 @@
-#include "diagnosis/accuracy_study.h"
+#include "core/diagnosis/accuracy_study.h"
 
 #include <cmath>
 #include <mutex>
 
-#include "analysis/delay_analysis.h"
-#include "analysis/statistics.h"
-#include "common/parallel.h"
-#include "model/simulator.h"
-#include "protocol/recording_builder.h"
+#include "core/analysis/delay_analysis.h"
+#include "core/analysis/statistics.h"
+#include "core/common/parallel.h"
+#include "core/model/simulator.h"
+#include "core/protocol/recording_builder.h"
 
 namespace fog::diagnosis {
 

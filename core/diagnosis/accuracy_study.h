@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "common/status.h"
-#include "common/test_plan.h"
+#include "core/common/status.h"
+#include "core/common/test_plan.h"
 
 namespace fog::diagnosis {
 

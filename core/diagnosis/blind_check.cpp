@@ -1,4 +1,4 @@
-#include "diagnosis/blind_check.h"
+#include "core/diagnosis/blind_check.h"
 
 #include <algorithm>
 #include <chrono>
@@ -6,11 +6,11 @@
 #include <cstdio>
 #include <mutex>
 
-#include "common/parallel.h"
-#include "common/units.h"
-#include "model/random.h"
-#include "model/simulator.h"
-#include "protocol/recording_builder.h"
+#include "core/common/parallel.h"
+#include "core/common/units.h"
+#include "core/model/random.h"
+#include "core/model/simulator.h"
+#include "core/protocol/recording_builder.h"
 
 namespace fog::diagnosis {
 

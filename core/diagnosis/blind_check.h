@@ -14,10 +14,10 @@
 #include <string>
 #include <vector>
 
-#include "common/status.h"
-#include "common/test_plan.h"
-#include "diagnosis/diagnosis.h"
-#include "model/effect.h"
+#include "core/common/status.h"
+#include "core/common/test_plan.h"
+#include "core/diagnosis/diagnosis.h"
+#include "core/model/effect.h"
 
 namespace fog::diagnosis {
 

@@ -1,4 +1,4 @@
-#include "diagnosis/diagnosis.h"
+#include "core/diagnosis/diagnosis.h"
 
 #include <ceres/ceres.h>
 
@@ -17,11 +17,11 @@
 #include <numeric>
 #include <thread>
 
-#include "common/units.h"
-#include "model/random.h"
-#include "model/simulator.h"
-#include "common/parallel.h"
-#include "protocol/recording_builder.h"
+#include "core/common/units.h"
+#include "core/model/random.h"
+#include "core/model/simulator.h"
+#include "core/common/parallel.h"
+#include "core/protocol/recording_builder.h"
 
 namespace fog::diagnosis {
 

@@ -33,13 +33,13 @@
 #include <string>
 #include <vector>
 
-#include "analysis/delay_analysis.h"
-#include "common/recording.h"
-#include "common/session_info.h"
-#include "common/status.h"
-#include "diagnosis/effects.h"
-#include "diagnosis/features.h"
-#include "model/sim_config.h"
+#include "core/analysis/delay_analysis.h"
+#include "core/common/recording.h"
+#include "core/common/session_info.h"
+#include "core/common/status.h"
+#include "core/diagnosis/effects.h"
+#include "core/diagnosis/features.h"
+#include "core/model/sim_config.h"
 
 namespace fog::diagnosis {
 

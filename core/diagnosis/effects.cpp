@@ -1,11 +1,11 @@
-#include "diagnosis/effects.h"
+#include "core/diagnosis/effects.h"
 
 #include <algorithm>
 #include <cassert>
 #include <cmath>
 
-#include "common/units.h"
-#include "model/random.h"
+#include "core/common/units.h"
+#include "core/model/random.h"
 
 namespace fog::diagnosis {
 

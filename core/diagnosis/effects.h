@@ -18,9 +18,9 @@
 #include <string>
 #include <vector>
 
-#include "common/status.h"
-#include "model/effect.h"
-#include "model/sim_config.h"
+#include "core/common/status.h"
+#include "core/model/effect.h"
+#include "core/model/sim_config.h"
 
 namespace fog::diagnosis {
 

@@ -1,10 +1,10 @@
-#include "diagnosis/features.h"
+#include "core/diagnosis/features.h"
 
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 
-#include "common/units.h"
+#include "core/common/units.h"
 
 namespace fog::diagnosis {
 

@@ -1,4 +1,4 @@
-#include "io/csv_export.h"
+#include "core/io/csv_export.h"
 
 #include <charconv>
 #include <cmath>
@@ -6,10 +6,10 @@
 #include <filesystem>
 #include <system_error>
 
-#include "analysis/channels.h"
-#include "analysis/report_writer.h"
-#include "analysis/sine_fit.h"
-#include "io/metadata.h"
+#include "core/analysis/channels.h"
+#include "core/analysis/report_writer.h"
+#include "core/analysis/sine_fit.h"
+#include "core/io/metadata.h"
 
 namespace fog::io {
 

@@ -24,10 +24,10 @@
 
 #include <string>
 
-#include "analysis/delay_analysis.h"
-#include "common/recording.h"
-#include "common/session_info.h"
-#include "common/status.h"
+#include "core/analysis/delay_analysis.h"
+#include "core/common/recording.h"
+#include "core/common/session_info.h"
+#include "core/common/status.h"
 
 namespace fog::io {
 

@@ -1,4 +1,4 @@
-#include "io/csv_import.h"
+#include "core/io/csv_import.h"
 
 #include <algorithm>
 #include <array>
@@ -10,7 +10,7 @@
 #include <string_view>
 #include <system_error>
 
-#include "io/metadata.h"
+#include "core/io/metadata.h"
 
 namespace fog::io {
 

@@ -26,11 +26,11 @@
 #include <string>
 #include <vector>
 
-#include "analysis/delay_analysis.h"
-#include "analysis/swing_windows.h"
-#include "common/recording.h"
-#include "common/session_info.h"
-#include "common/status.h"
+#include "core/analysis/delay_analysis.h"
+#include "core/analysis/swing_windows.h"
+#include "core/common/recording.h"
+#include "core/common/session_info.h"
+#include "core/common/status.h"
 
 namespace fog::io {
 

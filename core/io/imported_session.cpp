@@ -1,7 +1,7 @@
-#include "io/imported_session.h"
+#include "core/io/imported_session.h"
 
-#include "common/version.h"
-#include "session/session_file.h"
+#include "core/common/version.h"
+#include "core/session/session_file.h"
 
 namespace fog::io {
 

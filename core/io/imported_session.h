@@ -5,8 +5,8 @@
 
 #include <string>
 
-#include "common/status.h"
-#include "io/csv_import.h"
+#include "core/common/status.h"
+#include "core/io/csv_import.h"
 
 namespace fog::io {
 

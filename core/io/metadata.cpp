@@ -1,4 +1,4 @@
-#include "io/metadata.h"
+#include "core/io/metadata.h"
 
 #include <cmath>
 #include <nlohmann/json.hpp>

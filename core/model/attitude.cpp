@@ -1,9 +1,9 @@
-#include "model/attitude.h"
+#include "core/model/attitude.h"
 
 #include <cmath>
 
-#include "common/units.h"
-#include "model/sim_config.h"
+#include "core/common/units.h"
+#include "core/model/sim_config.h"
 
 namespace fog::model {
 

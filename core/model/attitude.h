@@ -20,7 +20,7 @@
 
 #include <Eigen/Core>
 
-#include "common/test_plan.h"
+#include "core/common/test_plan.h"
 
 namespace fog::model {
 

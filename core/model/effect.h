@@ -12,7 +12,7 @@
 #include <array>
 #include <string>
 
-#include "common/test_plan.h"
+#include "core/common/test_plan.h"
 
 namespace fog::model {
 

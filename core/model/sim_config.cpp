@@ -1,8 +1,8 @@
-#include "model/sim_config.h"
+#include "core/model/sim_config.h"
 
 #include <cmath>
 
-#include "common/units.h"
+#include "core/common/units.h"
 
 namespace fog::model {
 

@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <string>
 
-#include "common/test_plan.h"
+#include "core/common/test_plan.h"
 
 namespace fog::model {
 

@@ -1,13 +1,13 @@
-#include "model/simulator.h"
+#include "core/model/simulator.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "common/units.h"
-#include "model/attitude.h"
-#include "model/random.h"
-#include "protocol/frame.h"
+#include "core/common/units.h"
+#include "core/model/attitude.h"
+#include "core/model/random.h"
+#include "core/protocol/frame.h"
 
 namespace fog::model {
 

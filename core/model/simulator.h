@@ -13,11 +13,11 @@
 #include <span>
 #include <vector>
 
-#include "common/status.h"
-#include "common/test_plan.h"
-#include "model/effect.h"
-#include "model/sim_config.h"
-#include "model/turntable.h"
+#include "core/common/status.h"
+#include "core/common/test_plan.h"
+#include "core/model/effect.h"
+#include "core/model/sim_config.h"
+#include "core/model/turntable.h"
 
 namespace fog::model {
 

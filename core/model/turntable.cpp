@@ -1,10 +1,10 @@
-#include "model/turntable.h"
+#include "core/model/turntable.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "common/units.h"
-#include "model/sim_config.h"
+#include "core/common/units.h"
+#include "core/model/sim_config.h"
 
 namespace fog::model {
 

@@ -10,7 +10,7 @@
 #include <array>
 #include <vector>
 
-#include "common/test_plan.h"
+#include "core/common/test_plan.h"
 
 namespace fog::model {
 

@@ -1,6 +1,6 @@
-#include "noise/allan.h"
+#include "core/noise/allan.h"
 
-#include "analysis/statistics.h"
+#include "core/analysis/statistics.h"
 
 #include <algorithm>
 #include <cmath>

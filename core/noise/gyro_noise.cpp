@@ -1,4 +1,4 @@
-#include "noise/gyro_noise.h"
+#include "core/noise/gyro_noise.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "common/units.h"
+#include "core/common/units.h"
 
 namespace fog::noise {
 

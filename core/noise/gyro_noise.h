@@ -14,11 +14,11 @@
 #include <string>
 #include <vector>
 
-#include "analysis/theory.h"
-#include "common/recording.h"
-#include "common/status.h"
-#include "model/sim_config.h"
-#include "noise/noise_terms.h"
+#include "core/analysis/theory.h"
+#include "core/common/recording.h"
+#include "core/common/status.h"
+#include "core/model/sim_config.h"
+#include "core/noise/noise_terms.h"
 
 namespace fog::noise {
 

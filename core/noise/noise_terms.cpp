@@ -1,4 +1,4 @@
-#include "noise/noise_terms.h"
+#include "core/noise/noise_terms.h"
 
 #include <Eigen/Dense>
 #include <algorithm>

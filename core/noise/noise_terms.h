@@ -39,8 +39,8 @@
 #include <string>
 #include <vector>
 
-#include "common/status.h"
-#include "noise/allan.h"
+#include "core/common/status.h"
+#include "core/noise/allan.h"
 
 namespace fog::noise {
 

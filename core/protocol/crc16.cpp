@@ -1,4 +1,4 @@
-#include "protocol/crc16.h"
+#include "core/protocol/crc16.h"
 
 #include <array>
 

@@ -1,9 +1,9 @@
-#include "protocol/decoder.h"
+#include "core/protocol/decoder.h"
 
 #include <algorithm>
 #include <cstring>
 
-#include "protocol/crc16.h"
+#include "core/protocol/crc16.h"
 
 namespace fog::protocol {
 namespace {

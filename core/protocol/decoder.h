@@ -34,8 +34,8 @@
 #include <span>
 #include <vector>
 
-#include "common/recording.h"
-#include "protocol/frame.h"
+#include "core/common/recording.h"
+#include "core/protocol/frame.h"
 
 namespace fog::protocol {
 

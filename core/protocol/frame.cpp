@@ -1,10 +1,10 @@
-#include "protocol/frame.h"
+#include "core/protocol/frame.h"
 
 #include <bit>
 #include <cassert>
 #include <span>
 
-#include "protocol/crc16.h"
+#include "core/protocol/crc16.h"
 
 namespace fog::protocol {
 namespace {

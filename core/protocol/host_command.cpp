@@ -1,9 +1,9 @@
-#include "protocol/host_command.h"
+#include "core/protocol/host_command.h"
 
 #include <cmath>
 #include <cstring>
 
-#include "protocol/crc16.h"
+#include "core/protocol/crc16.h"
 
 namespace fog::protocol {
 

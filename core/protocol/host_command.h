@@ -16,7 +16,7 @@
 #include <span>
 #include <vector>
 
-#include "protocol/frame.h"
+#include "core/protocol/frame.h"
 
 namespace fog::protocol {
 

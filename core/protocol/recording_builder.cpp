@@ -1,4 +1,4 @@
-#include "protocol/recording_builder.h"
+#include "core/protocol/recording_builder.h"
 
 #include <algorithm>
 #include <cmath>

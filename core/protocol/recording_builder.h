@@ -38,9 +38,9 @@
 #include <span>
 #include <vector>
 
-#include "common/recording.h"
-#include "common/status.h"
-#include "protocol/decoder.h"
+#include "core/common/recording.h"
+#include "core/common/status.h"
+#include "core/protocol/decoder.h"
 
 namespace fog::protocol {
 

@@ -1,4 +1,4 @@
-#include "serial/serial_source.h"
+#include "core/serial/serial_source.h"
 
 #include <dirent.h>
 #include <fcntl.h>

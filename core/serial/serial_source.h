@@ -33,8 +33,8 @@
 #include <string>
 #include <vector>
 
-#include "acquisition/byte_source.h"
-#include "common/status.h"
+#include "core/acquisition/byte_source.h"
+#include "core/common/status.h"
 
 namespace fog::serial {
 

@@ -1,4 +1,4 @@
-#include "session/session_file.h"
+#include "core/session/session_file.h"
 
 #include <fcntl.h>
 #include <sqlite3.h>
@@ -17,9 +17,9 @@
 #include <span>
 #include <utility>
 
-#include "common/text.h"
-#include "common/version.h"
-#include "protocol/recording_builder.h"
+#include "core/common/text.h"
+#include "core/common/version.h"
+#include "core/protocol/recording_builder.h"
 
 namespace fog::session {
 

@@ -34,9 +34,9 @@
 #include <string>
 #include <vector>
 
-#include "common/recording.h"
-#include "common/session_info.h"
-#include "common/status.h"
+#include "core/common/recording.h"
+#include "core/common/session_info.h"
+#include "core/common/status.h"
 
 struct sqlite3;
 

@@ -1,11 +1,11 @@
-#include "session/session_list.h"
+#include "core/session/session_list.h"
 
 #include <algorithm>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
-#include "common/text.h"
-#include "session/session_file.h"
+#include "core/common/text.h"
+#include "core/session/session_file.h"
 
 namespace fog::session {
 

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "common/session_info.h"
-#include "common/status.h"
+#include "core/common/session_info.h"
+#include "core/common/status.h"
 
 namespace fog::session {
 

@@ -1,10 +1,10 @@
-#include "table/emulated_table.h"
+#include "core/table/emulated_table.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "common/units.h"
+#include "core/common/units.h"
 
 namespace fog::table {
 

@@ -27,9 +27,9 @@
 #include <string>
 #include <vector>
 
-#include "common/test_plan.h"
-#include "table/scpi.h"
-#include "table/table_controller.h"
+#include "core/common/test_plan.h"
+#include "core/table/scpi.h"
+#include "core/table/table_controller.h"
 
 namespace fog::table {
 

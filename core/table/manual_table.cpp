@@ -1,6 +1,6 @@
-#include "table/manual_table.h"
+#include "core/table/manual_table.h"
 
-#include "table/scpi.h"
+#include "core/table/scpi.h"
 
 namespace fog::table {
 

@@ -13,7 +13,7 @@
 #include <functional>
 #include <string>
 
-#include "table/table_controller.h"
+#include "core/table/table_controller.h"
 
 namespace fog::table {
 

@@ -39,9 +39,9 @@
 #include <memory>
 #include <string>
 
-#include "common/status.h"
-#include "common/test_plan.h"
-#include "table/table_controller.h"
+#include "core/common/status.h"
+#include "core/common/test_plan.h"
+#include "core/table/table_controller.h"
 
 namespace fog::table {
 

@@ -12,7 +12,7 @@
 #include <cerrno>
 #include <cstring>
 
-#include "table/transport.h"
+#include "core/table/transport.h"
 
 namespace fog::table {
 

@@ -1,8 +1,8 @@
-#include "table/remote_table.h"
+#include "core/table/remote_table.h"
 
 #include <cmath>
 
-#include "table/scpi.h"
+#include "core/table/scpi.h"
 
 namespace fog::table {
 

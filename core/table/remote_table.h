@@ -26,8 +26,8 @@
 #include <memory>
 #include <string>
 
-#include "table/table_controller.h"
-#include "table/transport.h"
+#include "core/table/table_controller.h"
+#include "core/table/transport.h"
 
 namespace fog::table {
 

@@ -1,4 +1,4 @@
-#include "table/stream_recorder.h"
+#include "core/table/stream_recorder.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 
 #include <Eigen/Dense>
 
-#include "common/units.h"
+#include "core/common/units.h"
 
 namespace fog::table {
 

@@ -30,9 +30,9 @@
 #include <string>
 #include <vector>
 
-#include "common/recording.h"
-#include "protocol/decoder.h"
-#include "table/plan_runner.h"
+#include "core/common/recording.h"
+#include "core/protocol/decoder.h"
+#include "core/table/plan_runner.h"
 
 namespace fog::table {
 

@@ -1,9 +1,9 @@
-#include "table/table_controller.h"
+#include "core/table/table_controller.h"
 
 #include <cmath>
 #include <cstdio>
 
-#include "common/units.h"
+#include "core/common/units.h"
 
 namespace fog::table {
 

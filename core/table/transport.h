@@ -16,7 +16,7 @@
 #include <string>
 #include <string_view>
 
-#include "common/status.h"
+#include "core/common/status.h"
 
 namespace fog::table {
 

@@ -30,9 +30,9 @@
 #include <vector>
 
 #include "child_process.h"
-#include "protocol/decoder.h"
-#include "protocol/host_command.h"
-#include "session/session_file.h"
+#include "core/protocol/decoder.h"
+#include "core/protocol/host_command.h"
+#include "core/session/session_file.h"
 
 namespace {
 

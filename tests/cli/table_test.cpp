@@ -25,8 +25,8 @@
 #include <vector>
 
 #include "child_process.h"
-#include "protocol/recording_builder.h"
-#include "session/session_file.h"
+#include "core/protocol/recording_builder.h"
+#include "core/session/session_file.h"
 
 namespace {
 

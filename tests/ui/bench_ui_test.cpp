@@ -42,12 +42,12 @@
 #include <qwt_scale_widget.h>
 #include <vector>
 
-#include "common/version.h"
-#include "acquisition/acquisition.h"
-#include "acquisition/simulator_source.h"
-#include "diagnosis/effects.h"
-#include "io/csv_export.h"
-#include "session/session_file.h"
+#include "core/common/version.h"
+#include "core/acquisition/acquisition.h"
+#include "core/acquisition/simulator_source.h"
+#include "core/diagnosis/effects.h"
+#include "core/io/csv_export.h"
+#include "core/session/session_file.h"
 #include "ui/commanded_motion.h"
 #include "ui/compare_view.h"
 #include "ui/configure_view.h"
@@ -55,7 +55,7 @@
 #include "ui/diagnosis_view.h"
 #include "ui/language.h"
 #include "ui/delta_picker.h"
-#include "io/csv_import.h"
+#include "core/io/csv_import.h"
 #include "ui/live_view.h"
 #include "ui/main_window.h"
 #include "ui/messages.h"

@@ -6,9 +6,9 @@
 #include <QtTest>
 #include <cmath>
 
-#include "analysis/delay_analysis.h"
-#include "model/simulator.h"
-#include "protocol/recording_builder.h"
+#include "core/analysis/delay_analysis.h"
+#include "core/model/simulator.h"
+#include "core/protocol/recording_builder.h"
 #include "ui/report/calibration_report.h"
 
 using fog::report::ReportInput;

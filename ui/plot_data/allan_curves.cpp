@@ -8,7 +8,7 @@
 #include <qwt_scale_engine.h>
 #include <qwt_symbol.h>
 
-#include "noise/gyro_noise.h"
+#include "core/noise/gyro_noise.h"
 
 namespace fog::ui {
 

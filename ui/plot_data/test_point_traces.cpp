@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "analysis/channels.h"
+#include "core/analysis/channels.h"
 
 namespace fog::ui {
 

@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
-#include "analysis/delay_analysis.h"
-#include "common/recording.h"
-#include "common/status.h"
+#include "core/analysis/delay_analysis.h"
+#include "core/common/recording.h"
+#include "core/common/status.h"
 
 namespace fog::ui {
 

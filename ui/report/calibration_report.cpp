@@ -11,10 +11,10 @@
 #include <cmath>
 #include <qwt_plot.h>
 
-#include "analysis/theory.h"
-#include "analysis/verdict.h"
-#include "common/version.h"
-#include "noise/gyro_noise.h"
+#include "core/analysis/theory.h"
+#include "core/analysis/verdict.h"
+#include "core/common/version.h"
+#include "core/noise/gyro_noise.h"
 #include "ui/core_text.h"
 #include "ui/plot_data/allan_curves.h"
 #include "ui/report/page_flow.h"

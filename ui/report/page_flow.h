@@ -19,7 +19,7 @@
 #include <memory>
 #include <vector>
 
-#include "common/status.h"
+#include "core/common/status.h"
 
 class QwtPlot;
 

@@ -1,7 +1,7 @@
 // The acquisition run: recording, decoding, live batches, stop and source
 // failure, on the simulator and on scripted sources.
 
-#include "acquisition/acquisition.h"
+#include "core/acquisition/acquisition.h"
 
 #include <gtest/gtest.h>
 
@@ -9,11 +9,11 @@
 #include <chrono>
 #include <thread>
 
-#include "acquisition/simulator_source.h"
-#include "analysis/delay_analysis.h"
-#include "protocol/frame.h"
-#include "protocol/recording_builder.h"
-#include "session/session_file.h"
+#include "core/acquisition/simulator_source.h"
+#include "core/analysis/delay_analysis.h"
+#include "core/protocol/frame.h"
+#include "core/protocol/recording_builder.h"
+#include "core/session/session_file.h"
 #include "session_test_util.h"
 
 namespace fog::acquisition {

@@ -1,12 +1,12 @@
 // LiveTraces: what the live plots show, from decoded frames as they arrive.
 
-#include "acquisition/live_traces.h"
+#include "core/acquisition/live_traces.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "model/simulator.h"
+#include "core/model/simulator.h"
 #include "session_test_util.h"
 
 namespace fog::acquisition {

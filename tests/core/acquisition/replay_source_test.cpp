@@ -1,14 +1,14 @@
 // ReplaySource: a recorded stream through the same acquisition path as a live
 // source, paced by its own board counter or as fast as possible.
 
-#include "acquisition/replay_source.h"
+#include "core/acquisition/replay_source.h"
 
 #include <gtest/gtest.h>
 
 #include <chrono>
 
-#include "acquisition/acquisition.h"
-#include "protocol/recording_builder.h"
+#include "core/acquisition/acquisition.h"
+#include "core/protocol/recording_builder.h"
 #include "session_test_util.h"
 
 namespace fog::acquisition {

@@ -1,14 +1,14 @@
 // What the analysis says about damaged test points: frames lost, the time the
 // data cover, the longest gap, and when it refuses to report a delay.
 
-#include "analysis/data_coverage.h"
+#include "core/analysis/data_coverage.h"
 
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
 
-#include "analysis/delay_analysis.h"
-#include "analysis/report_writer.h"
+#include "core/analysis/delay_analysis.h"
+#include "core/analysis/report_writer.h"
 #include "synthetic.h"
 
 namespace fog::analysis {

@@ -1,11 +1,11 @@
-#include "analysis/delay_analysis.h"
+#include "core/analysis/delay_analysis.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "analysis/statistics.h"
-#include "analysis/theory.h"
+#include "core/analysis/statistics.h"
+#include "core/analysis/theory.h"
 #include "synthetic.h"
 
 namespace fog::analysis {

@@ -8,7 +8,7 @@
 #include <random>
 #include <vector>
 
-#include "analysis/channels.h"
+#include "core/analysis/channels.h"
 
 namespace fog::analysis {
 namespace {

@@ -8,7 +8,7 @@
 #include <random>
 #include <vector>
 
-#include "analysis/least_squares.h"
+#include "core/analysis/least_squares.h"
 
 namespace fog::analysis {
 namespace {

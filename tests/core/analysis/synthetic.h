@@ -6,8 +6,8 @@
 #include <cmath>
 #include <random>
 
-#include "common/recording.h"
-#include "common/units.h"
+#include "core/common/recording.h"
+#include "core/common/units.h"
 
 namespace fog::analysis::testing {
 

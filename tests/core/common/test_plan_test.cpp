@@ -1,4 +1,4 @@
-#include "common/test_plan.h"
+#include "core/common/test_plan.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // Text that enters the bench is made valid UTF-8 (common/text.h).
 
-#include "common/text.h"
+#include "core/common/text.h"
 
 #include <gtest/gtest.h>
 

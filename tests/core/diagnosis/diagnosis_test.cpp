@@ -9,10 +9,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "diagnosis/blind_check.h"
-#include "diagnosis/diagnosis.h"
-#include "model/simulator.h"
-#include "protocol/recording_builder.h"
+#include "core/diagnosis/blind_check.h"
+#include "core/diagnosis/diagnosis.h"
+#include "core/model/simulator.h"
+#include "core/protocol/recording_builder.h"
 
 namespace fog::diagnosis {
 namespace {
@@ -81,8 +81,11 @@ TEST(Diagnosis, CleanSessionHasNoGapAndNoVerdict) {
   int perChannel = 0;
   for (const auto& g : d.gapBefore) perChannel += g.cells;
   EXPECT_EQ(perChannel, informative);
-  for (const auto& g : d.gapBefore)
-    if (g.channel != Channel::kTiming) EXPECT_GT(g.cells, 0) << channelName(g.channel);
+  for (const auto& g : d.gapBefore) {
+    if (g.channel != Channel::kTiming) {
+      EXPECT_GT(g.cells, 0) << channelName(g.channel);
+    }
+  }
 }
 
 // 200 ppm scale-factor error (~10x its threshold in this plan): named,

@@ -7,12 +7,12 @@
 
 #include <cmath>
 
-#include "analysis/delay_analysis.h"
-#include "common/units.h"
-#include "diagnosis/effects.h"
-#include "diagnosis/features.h"
-#include "model/simulator.h"
-#include "protocol/recording_builder.h"
+#include "core/analysis/delay_analysis.h"
+#include "core/common/units.h"
+#include "core/diagnosis/effects.h"
+#include "core/diagnosis/features.h"
+#include "core/model/simulator.h"
+#include "core/protocol/recording_builder.h"
 
 namespace fog::diagnosis {
 namespace {

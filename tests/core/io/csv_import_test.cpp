@@ -9,11 +9,11 @@
 #include <filesystem>
 #include <random>
 
-#include "analysis/data_coverage.h"
-#include "analysis/delay_analysis.h"
-#include "common/units.h"
-#include "io/csv_export.h"
-#include "io/csv_import.h"
+#include "core/analysis/data_coverage.h"
+#include "core/analysis/delay_analysis.h"
+#include "core/common/units.h"
+#include "core/io/csv_export.h"
+#include "core/io/csv_import.h"
 #include "io_test_util.h"
 
 namespace fog::io {

@@ -8,13 +8,13 @@
 #include <filesystem>
 #include <sstream>
 
-#include "analysis/delay_analysis.h"
-#include "analysis/report_writer.h"
-#include "io/csv_export.h"
-#include "io/csv_import.h"
+#include "core/analysis/delay_analysis.h"
+#include "core/analysis/report_writer.h"
+#include "core/io/csv_export.h"
+#include "core/io/csv_import.h"
 #include "io_test_util.h"
-#include "model/simulator.h"
-#include "protocol/recording_builder.h"
+#include "core/model/simulator.h"
+#include "core/protocol/recording_builder.h"
 
 namespace fog::io {
 namespace {

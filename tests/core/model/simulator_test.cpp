@@ -1,13 +1,13 @@
-#include "model/simulator.h"
+#include "core/model/simulator.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "common/units.h"
-#include "model/attitude.h"
-#include "model/turntable.h"
-#include "protocol/recording_builder.h"
+#include "core/common/units.h"
+#include "core/model/attitude.h"
+#include "core/model/turntable.h"
+#include "core/protocol/recording_builder.h"
 
 namespace fog::model {
 namespace {

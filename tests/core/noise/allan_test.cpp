@@ -1,7 +1,7 @@
 // Overlapping Allan deviation, EDF and chi-squared intervals against
 // published reference values.
 
-#include "noise/allan.h"
+#include "core/noise/allan.h"
 
 #include <gtest/gtest.h>
 

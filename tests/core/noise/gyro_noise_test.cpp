@@ -2,16 +2,16 @@
 // chain (simulator -> sampling-board bytes -> decoder -> noise analysis), the
 // simulator feed and the swing-test prediction.
 
-#include "noise/gyro_noise.h"
+#include "core/noise/gyro_noise.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <nlohmann/json.hpp>
 
-#include "common/units.h"
-#include "model/simulator.h"
-#include "protocol/recording_builder.h"
+#include "core/common/units.h"
+#include "core/model/simulator.h"
+#include "core/protocol/recording_builder.h"
 
 namespace fog::noise {
 namespace {

@@ -1,6 +1,6 @@
 // Noise-term identification on gyros with known noise.
 
-#include "noise/noise_terms.h"
+#include "core/noise/noise_terms.h"
 
 #include <gtest/gtest.h>
 

@@ -12,7 +12,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "model/random.h"
+#include "core/model/random.h"
 
 namespace fog::noise::testing {
 

@@ -1,4 +1,4 @@
-#include "protocol/decoder.h"
+#include "core/protocol/decoder.h"
 
 #include <gtest/gtest.h>
 

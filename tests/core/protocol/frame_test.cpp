@@ -1,11 +1,11 @@
-#include "protocol/frame.h"
+#include "core/protocol/frame.h"
 
 #include <gtest/gtest.h>
 
 #include <limits>
 
-#include "protocol/crc16.h"
-#include "protocol/decoder.h"
+#include "core/protocol/crc16.h"
+#include "core/protocol/decoder.h"
 #include "test_streams.h"
 
 namespace fog::protocol {

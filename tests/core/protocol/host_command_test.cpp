@@ -1,4 +1,4 @@
-#include "protocol/host_command.h"
+#include "core/protocol/host_command.h"
 
 #include <gtest/gtest.h>
 

@@ -4,8 +4,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "protocol/decoder.h"
-#include "protocol/frame.h"
+#include "core/protocol/decoder.h"
+#include "core/protocol/frame.h"
 
 namespace fog::protocol::testing {
 

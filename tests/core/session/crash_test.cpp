@@ -17,9 +17,9 @@
 #include <sstream>
 #include <string>
 
-#include "protocol/decoder.h"
+#include "core/protocol/decoder.h"
 #include "record_helper_stream.h"
-#include "session/session_file.h"
+#include "core/session/session_file.h"
 #include "session_test_util.h"
 
 namespace fog::session {

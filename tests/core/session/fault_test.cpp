@@ -21,13 +21,13 @@
 #include <string>
 #include <thread>
 
-#include "acquisition/acquisition.h"
-#include "acquisition/replay_source.h"
+#include "core/acquisition/acquisition.h"
+#include "core/acquisition/replay_source.h"
 #include "full_disk_vfs.h"
-#include "protocol/decoder.h"
-#include "protocol/recording_builder.h"
+#include "core/protocol/decoder.h"
+#include "core/protocol/recording_builder.h"
 #include "record_helper_stream.h"
-#include "session/session_file.h"
+#include "core/session/session_file.h"
 #include "session_test_util.h"
 
 namespace fog::session {

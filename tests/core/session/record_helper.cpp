@@ -12,9 +12,9 @@
 #include <cstdlib>
 #include <thread>
 
-#include "model/simulator.h"
+#include "core/model/simulator.h"
 #include "record_helper_stream.h"
-#include "session/session_file.h"
+#include "core/session/session_file.h"
 
 int main(int argc, char** argv) {
   if (argc != 2 && argc != 3) {

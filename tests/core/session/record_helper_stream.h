@@ -2,8 +2,8 @@
 // The stream the record helper produces, shared with the kill -9 test so the
 // test can regenerate exactly what the helper was recording.
 
-#include "common/test_plan.h"
-#include "model/sim_config.h"
+#include "core/common/test_plan.h"
+#include "core/model/sim_config.h"
 
 namespace fog::test {
 

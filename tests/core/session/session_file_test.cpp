@@ -1,7 +1,7 @@
 // Session files: round trip, results, read-only review, and every kind of
 // wrong file.
 
-#include "session/session_file.h"
+#include "core/session/session_file.h"
 
 #include <gtest/gtest.h>
 #include <sqlite3.h>
@@ -12,8 +12,8 @@
 #include <random>
 #include <thread>
 
-#include "analysis/delay_analysis.h"
-#include "protocol/recording_builder.h"
+#include "core/analysis/delay_analysis.h"
+#include "core/protocol/recording_builder.h"
 #include "session_test_util.h"
 
 namespace fog::session {

@@ -12,9 +12,9 @@
 #include <unistd.h>
 #include <vector>
 
-#include "common/recording.h"
-#include "model/simulator.h"
-#include "protocol/recording_builder.h"
+#include "core/common/recording.h"
+#include "core/model/simulator.h"
+#include "core/protocol/recording_builder.h"
 
 namespace fog::test {
 

@@ -6,10 +6,10 @@
 #include <cmath>
 #include <memory>
 
-#include "analysis/delay_analysis.h"
-#include "diagnosis/effects.h"
-#include "model/simulator.h"
-#include "protocol/recording_builder.h"
+#include "core/analysis/delay_analysis.h"
+#include "core/diagnosis/effects.h"
+#include "core/model/simulator.h"
+#include "core/protocol/recording_builder.h"
 
 namespace fog {
 namespace {

@@ -10,14 +10,14 @@
 #include <nlohmann/json.hpp>
 #include <unistd.h>
 
-#include "analysis/delay_analysis.h"
-#include "analysis/report_writer.h"
-#include "common/units.h"
-#include "io/csv_export.h"
-#include "io/csv_import.h"
-#include "model/simulator.h"
-#include "protocol/recording_builder.h"
-#include "session/session_file.h"
+#include "core/analysis/delay_analysis.h"
+#include "core/analysis/report_writer.h"
+#include "core/common/units.h"
+#include "core/io/csv_export.h"
+#include "core/io/csv_import.h"
+#include "core/model/simulator.h"
+#include "core/protocol/recording_builder.h"
+#include "core/session/session_file.h"
 
 namespace fog {
 namespace {

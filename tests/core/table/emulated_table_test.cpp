@@ -1,4 +1,4 @@
-#include "table/emulated_table.h"
+#include "core/table/emulated_table.h"
 
 #include <gtest/gtest.h>
 

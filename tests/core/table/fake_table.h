@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "table/plan_runner.h"
+#include "core/table/plan_runner.h"
 
 namespace fog::table::testing {
 

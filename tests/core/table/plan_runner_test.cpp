@@ -1,4 +1,4 @@
-#include "table/plan_runner.h"
+#include "core/table/plan_runner.h"
 
 #include <gtest/gtest.h>
 

@@ -1,11 +1,11 @@
-#include "table/remote_table.h"
+#include "core/table/remote_table.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <deque>
 
-#include "table/emulated_table.h"
+#include "core/table/emulated_table.h"
 
 namespace fog::table {
 namespace {

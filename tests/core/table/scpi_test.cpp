@@ -1,4 +1,4 @@
-#include "table/scpi.h"
+#include "core/table/scpi.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "table/stream_recorder.h"
+#include "core/table/stream_recorder.h"
 
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 #include <cstdio>
 
 #include "fake_table.h"
-#include "table/manual_table.h"
+#include "core/table/manual_table.h"
 
 namespace fog::table {
 namespace {
