@@ -362,5 +362,4 @@ QString displayUnits(const QString& text) {
   return out;
 }
 
-
 }  // namespace fog::ui

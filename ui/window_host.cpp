@@ -5,6 +5,7 @@
 
 #include "ui/language.h"
 #include "ui/main_window.h"
+#include "ui/configure_view.h"
 #include "ui/plan_editor.h"
 
 namespace fog::ui {
@@ -28,7 +29,14 @@ void WindowHost::changeLanguage(const QString& language) {
   const bool visible = old->isVisible();
   const MainWindow::View view = old->currentView();
   const QString session = old->shownSessionPath();
-  const TestPlan plan = old->planEditor()->plan();  // also one the command line gave, not remembered
+  // What the window holds now, also what the command line gave and the
+  // settings do not remember: the plan, the session folder, the bench
+  // constants, the simulator's pace and seed.
+  const TestPlan plan = old->planEditor()->plan();
+  const QString folder = old->sessionFolder();
+  const BenchSettings bench = old->benchSettings();
+  const double pace = old->configureView()->pace();
+  const int seed = old->configureView()->seed();
   delete old;
   const QString installed = installTranslations(app_, language);
   auto* window = new MainWindow();
@@ -36,6 +44,10 @@ void WindowHost::changeLanguage(const QString& language) {
   window->restoreGeometry(geometry);
   window->setRemembering(false);
   window->planEditor()->setPlan(plan);
+  window->setSessionFolder(folder);
+  window->setBenchSettings(bench);
+  window->configureView()->setPace(pace);
+  window->configureView()->setSeed(seed);
   window->setRemembering(true);
   window->showView(view);
   if (visible) window->show();

@@ -1,9 +1,10 @@
 #pragma once
 // Owns the bench's main window and makes it again when the operator picks
 // another language (Settings → Language): every text of the window is built
-// in the new language, with no restart. What the window remembers (plan,
-// pace, operator, IMU, session folder, size and place) comes back from the
-// settings, and the session it showed is opened again. A language is not
+// in the new language, with no restart. The new window gets the old one's
+// plan, session folder, bench constants, pace and seed (also one-off choices
+// of the command line), view, size and place; the session it showed is opened
+// again; the rest (operator, IMU, source) comes back from the settings. A language is not
 // changed during a run or a diagnosis: the window says so and keeps its own.
 //
 //   WindowHost host(app);

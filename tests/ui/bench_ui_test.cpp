@@ -1619,6 +1619,12 @@ class BenchUiTest : public QObject {
     plan.points[0].amplitudeDeg = 4.0;
     plan.points[0].durationS = 30.0;
     host.window()->planEditor()->setPlan(plan);
+    // A one-off folder and seed (as the command line gives them) are kept too.
+    QTemporaryDir folder;
+    host.window()->setRemembering(false);
+    host.window()->setSessionFolder(folder.path());
+    host.window()->configureView()->setSeed(17);
+    host.window()->setRemembering(true);
     QSignalSpy replaced(&host, &fog::ui::WindowHost::windowReplaced);
     auto* chinese = host.window()->findChild<QAction*>("language_zh_CN");
     QVERIFY(chinese);
@@ -1631,6 +1637,8 @@ class BenchUiTest : public QObject {
     QVERIFY(host.window()->isVisible());
     QCOMPARE(host.window()->planEditor()->plan().points.size(), std::size_t{1});
     QCOMPARE(host.window()->planEditor()->plan().points[0].frequencyHz, 0.7);
+    QCOMPARE(host.window()->sessionFolder(), folder.path());
+    QCOMPARE(host.window()->configureView()->seed(), 17);
     host.window()->findChild<QAction*>("language_en")->trigger();
     QTRY_COMPARE(replaced.count(), 2);
     QCOMPARE(host.window()->findChild<QTabWidget*>("viewTabs")->tabText(0), QString("Configure"));
