@@ -1337,6 +1337,8 @@ void auditTimings(const Recording& used, const Replay& replay, std::uint64_t see
 // (1.5 + 1.5 threads) times the samples' size (907 MB measured for an hour
 // at 1 kHz / 500 Hz on 2 threads, whose samples take 200 MB). Fewer threads
 // when that is over the budget; a refusal when even one is.
+std::string megabytes(double bytes) { return std::to_string(static_cast<long long>(bytes / 1e6)) + " MB"; }
+
 Result<int> threadsWithinMemory(const Recording& recording, int requested) {
   double sampleBytes = 0.0;
   for (const auto& tp : recording.testPoints)
@@ -1346,11 +1348,9 @@ Result<int> threadsWithinMemory(const Recording& recording, int requested) {
   int threads = std::max(1, requested);
   while (threads > 1 && peak(threads) > kDiagnosisMemoryBudgetBytes) --threads;
   if (peak(threads) > kDiagnosisMemoryBudgetBytes)
-    return outOfRange("the session holds " + std::to_string(static_cast<long long>(sampleBytes / 1e6)) +
-                      " MB of samples; its diagnosis would need about " +
-                      std::to_string(static_cast<long long>(peak(1) / 1e6)) + " MB, over the " +
-                      std::to_string(static_cast<long long>(kDiagnosisMemoryBudgetBytes / 1e6)) +
-                      " MB limit; diagnose a session of fewer or shorter test points (up to an hour at 1 kHz / 500 Hz "
+    return outOfRange("the session holds " + megabytes(sampleBytes) + " of samples; its diagnosis would need about " +
+                      megabytes(peak(1)) + ", over the " + megabytes(kDiagnosisMemoryBudgetBytes) +
+                      " limit; diagnose a session of fewer or shorter test points (up to an hour at 1 kHz / 500 Hz "
                       "fits)");
   return threads;
 }
@@ -1372,8 +1372,8 @@ Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, cons
   Diagnosis d;
   if (options.threads < requested.threads)
     d.notes.push_back("ran on " + std::to_string(options.threads) + " of the " + std::to_string(requested.threads) +
-                      " threads asked for, to stay within the " +
-                      std::to_string(static_cast<long long>(kDiagnosisMemoryBudgetBytes / 1e6)) + " MB memory limit");
+                      " threads asked for, to stay within the " + megabytes(kDiagnosisMemoryBudgetBytes) +
+                      " memory limit");
 
   auto session = analyseSession(input, info, constants, d.notes);
   if (!session) return session.status();
