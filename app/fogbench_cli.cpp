@@ -81,7 +81,8 @@ usage:
   fogbench-cli accuracy [--seeds N] [--threads K]
       Monte Carlo study of both paper conditions (docs/accuracy.md).
   fogbench-cli report (SESSION.fbs | FILE.bin | --preset NAME [--seed N]) [--pdf OUT.pdf] [--png-dir DIR [--dpi 100]]
-                      [--overwrite] [--limit-ms 0.8] [--imu-model M --imu-serial S --operator NAME] [constants]
+                      [--overwrite] [--limit-ms 0.8] [--imu-model M --imu-serial S --operator NAME]
+                      [--language en|zh_CN] [constants]
       The calibration report (docs/report.md): PASS when every validity check passes
       and IMU delay + 2 sigma < limit; a session brings its own identity and constants.
   fogbench-cli diagnose SESSION.fbs|FILE.bin [--json] [--seeds K] [--threads T] [constants]

@@ -4,6 +4,7 @@
 //   fogbench [--preset NAME] [--seed N] [--speed X] [--replay SESSION.fbs]
 //            [--plan PLAN.json] [--port DEV [--table remote:ADDRESS|manual]]
 //            [--session-folder DIR] [--open SESSION.fbs] [--run]
+//            [--compare A.fbs --compare B.fbs ...]
 //            [--view configure|live|results|sessions|diagnosis|noise]
 //            [--screenshot FILE [--screenshot-after S]] [--language system|en|zh_CN]
 //
@@ -66,6 +67,8 @@ struct Options {
   QCommandLineOption tableOption{"table",
                                  "With --port: drive the turntable, remote:tcp:HOST:PORT, remote:DEVICE or manual.",
                                  "DRIVER"};
+  QCommandLineOption compareOption{"compare", "Compare these sessions (give it two or more times: A, B, ...).",
+                                   "SESSION"};
 
   explicit Options(QCommandLineParser& parser) {
     for (const auto& p : fog::ui::benchPresets()) presetNames << p.name;
@@ -77,7 +80,7 @@ struct Options {
     parser.addVersionOption();
     parser.addOptions({runOption, presetOption, seedOption, speedOption, replayOption, folderOption, openOption,
                        viewOption, screenshotOption, afterOption, languageOption, planOption, portOption,
-                       tableOption});
+                       tableOption, compareOption});
   }
 };
 
@@ -115,7 +118,7 @@ int main(int argc, char* argv[]) {
   parser.process(app);
   const auto& [presetNames, views, runOption, presetOption, seedOption, speedOption, replayOption, folderOption,
                openOption, viewOption, screenshotOption, afterOption, languageOption, planOption, portOption,
-               tableOption] = o;
+               tableOption, compareOption] = o;
 
   // The host makes the window again when the operator picks another language.
   fog::ui::WindowHost host(app);
@@ -156,10 +159,15 @@ int main(int argc, char* argv[]) {
   const double after = parser.isSet(afterOption) ? parser.value(afterOption).toDouble(&ok) : 3.0;
   if (!ok || after < 0) return fail("--screenshot-after needs seconds >= 0");
 
+  const QStringList compared = parser.values(compareOption);
+  if (compared.size() == 1) return fail("--compare needs two or more sessions (--compare A --compare B)");
+  if (!compared.isEmpty() && (parser.isSet(openOption) || parser.isSet(runOption)))
+    return fail("--compare cannot be combined with --open or --run");
+
   fog::app::ScreenshotRequest screenshot{parser.value(screenshotOption), view, after, parser.isSet(afterOption),
                                         parser.isSet(openOption)};
   const bool run = parser.isSet(runOption) || fog::app::screenshotNeedsRun(screenshot);
-  if (!screenshot.path.isEmpty()) fog::app::armScreenshot(window, screenshot, run);
+  if (!screenshot.path.isEmpty() && compared.isEmpty()) fog::app::armScreenshot(window, screenshot, run);
 
   window.setRemembering(true);
 
@@ -171,7 +179,13 @@ int main(int argc, char* argv[]) {
   window.resize(size);
   window.show();
   if (view == "sessions") window.showView(fog::ui::MainWindow::kSessions);
-  if (parser.isSet(openOption)) {
+  if (!compared.isEmpty()) {
+    const QString path = screenshot.path;
+    QTimer::singleShot(0, &window, [&window, compared, path] {
+      QWidget* compareWindow = window.compareSessions(compared);
+      if (!path.isEmpty()) fog::app::armCompareScreenshot(compareWindow, path);
+    });
+  } else if (parser.isSet(openOption)) {
     const QString path = parser.value(openOption);
     QTimer::singleShot(0, &window, [&window, path] { window.openSession(path); });
   } else if (run) {

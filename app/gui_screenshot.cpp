@@ -5,12 +5,13 @@
 #include <QTimer>
 #include <cstdio>
 
+#include "ui/compare_view.h"
 #include "ui/main_window.h"
 
 namespace fog::app {
 namespace {
 
-void saveAndQuit(fog::ui::MainWindow& window, const QString& path, bool succeeded) {
+void saveAndQuit(QWidget& window, const QString& path, bool succeeded) {
   // Let pending layout and paint events settle before grabbing.
   QTimer::singleShot(300, &window, [&window, path, succeeded] {
     const bool saved = window.grab().save(path);
@@ -70,6 +71,16 @@ void armScreenshot(fog::ui::MainWindow& window, const ScreenshotRequest& request
     QObject::connect(&window, &MainWindow::runEnded, &window, done);
     QObject::connect(&window, &MainWindow::sessionOpened, &window, done);
   }
+}
+
+void armCompareScreenshot(QWidget* compareWindow, const QString& path) {
+  auto* view = compareWindow->findChild<fog::ui::CompareView*>();
+  if (view == nullptr) {
+    QApplication::exit(1);
+    return;
+  }
+  QObject::connect(view, &fog::ui::CompareView::loaded, compareWindow,
+                   [compareWindow, path] { saveAndQuit(*compareWindow, path, true); });
 }
 
 }  // namespace fog::app

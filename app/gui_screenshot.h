@@ -9,6 +9,7 @@
 //   noise                when the noise analysis of that result ended
 //   diagnosis            when its diagnosis ended, or afterS seconds into it
 //                        when afterS was given (its progress)
+//   --compare            the Compare window, once all its sessions arrived
 //
 // The program exits 1 when the run gave no result, the analysis failed or
 // the image could not be written, 0 otherwise.
@@ -18,6 +19,7 @@
 namespace fog::ui {
 class MainWindow;
 }
+class QWidget;
 
 namespace fog::app {
 
@@ -35,5 +37,9 @@ bool screenshotNeedsRun(const ScreenshotRequest& request);
 // Arranges for the image to be taken and the program to quit; call before
 // the window is shown and the run or the opening starts.
 void armScreenshot(fog::ui::MainWindow& window, const ScreenshotRequest& request, bool run);
+
+// The image of a Compare window (MainWindow::compareSessions) once its
+// sessions arrived, then quit.
+void armCompareScreenshot(QWidget* compareWindow, const QString& path);
 
 }  // namespace fog::app

@@ -16,6 +16,7 @@
 #include "core/model/simulator.h"
 #include "core/protocol/recording_builder.h"
 #include "core/session/session_file.h"
+#include "ui/language.h"
 #include "ui/report/calibration_report.h"
 
 namespace fog::app {
@@ -118,6 +119,7 @@ int reportCommand(CliArguments& args) {
   const auto imuModel = args.text("imu-model");
   const auto imuSerial = args.text("imu-serial");
   const auto operatorName = args.text("operator");
+  const auto language = args.text("language");
   const bool overwrite = args.flag("overwrite");
   for (const auto* r : {&seed, &limit, &dpi})
     if (!*r) return fail(r->status(), 2);
@@ -128,6 +130,8 @@ int reportCommand(CliArguments& args) {
   else if (*dpi < 30 || *dpi > 600 || *dpi != std::floor(*dpi))
     bad = invalidArgument("--dpi must be a whole number in 30 .. 600");
   else if (args.text("seed") && !preset) bad = invalidArgument("--seed applies to --preset only");
+  else if (language && *language != "en" && *language != "zh_CN")
+    bad = invalidArgument("--language must be en or zh_CN");
   else if (pdf) bad = checkOutputFile(*pdf, overwrite, "--pdf");
   if (bad.isOk() && pngDir) bad = checkPageFiles(*pngDir, overwrite);
   if (!bad.isOk()) {
@@ -169,6 +173,9 @@ int reportCommand(CliArguments& args) {
   static char name[] = "fogbench-cli";
   static char* argv[] = {name, nullptr};
   QApplication app(argc, argv);
+  // The report in the GUI's languages; English unless asked (not the
+  // system's locale: a script's output should not change with it).
+  fog::ui::installTranslations(app, QString::fromStdString(language.value_or("en")));
 
   if (pdf) {
     if (auto s = report::writeCalibrationPdf(in, QString::fromStdString(*pdf)); !s.isOk()) return fail(s, 2);

@@ -248,6 +248,7 @@ void CompareView::setOutcome(int position, std::shared_ptr<const RunOutcome> out
     sessionTable_->resizeColumnsToContents();
     recompare();
     showTrend();
+    emit loaded();
   }
 }
 

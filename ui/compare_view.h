@@ -58,6 +58,10 @@ class CompareView : public QWidget {
   QwtPlot* trendPlot() const { return trendPlot_; }
   QString summary() const;
 
+ signals:
+  // Every session has arrived (readable or not) and the comparison is shown.
+  void loaded();
+
  private:
   void fillSessionRow(int position);
   void recompare();

@@ -116,6 +116,8 @@ const char* const kTemplates[] = {
     QT_TRANSLATE_NOOP("core_text", "real time"),
     QT_TRANSLATE_NOOP("core_text", "as fast as possible"),
     QT_TRANSLATE_NOOP("core_text", "%1x real time"),
+    QT_TRANSLATE_NOOP("core_text", "preset %1"),
+    QT_TRANSLATE_NOOP("core_text", "simulator truth, test point %1: lag %2 ms"),
     QT_TRANSLATE_NOOP("core_text", "replay of %1 at as fast as possible"),
     QT_TRANSLATE_NOOP("core_text", "replay of %1 at %2x"),
     QT_TRANSLATE_NOOP("core_text", "stopped by the operator after %1 s"),

@@ -1080,7 +1080,7 @@ void MainWindow::analyseNoise(std::shared_ptr<const RunOutcome> outcome) {
       });
 }
 
-void MainWindow::compareSessions(const QStringList& paths) {
+QWidget* MainWindow::compareSessions(const QStringList& paths) {
   auto* dialog = new QWidget(this, Qt::Window);
   dialog->setAttribute(Qt::WA_DeleteOnClose);
   dialog->setObjectName("compareWindow");
@@ -1100,6 +1100,7 @@ void MainWindow::compareSessions(const QStringList& paths) {
   if (const QScreen* screen = this->screen()) size = size.boundedTo(screen->availableGeometry().size() * 0.95);
   dialog->resize(size);
   dialog->show();
+  return dialog;
 }
 
 }  // namespace fog::ui

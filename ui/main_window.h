@@ -132,6 +132,9 @@ class MainWindow : public QMainWindow {
   // Cancels a running diagnosis (it ends within about a second, with no result).
   void cancelDiagnosis();
   bool isDiagnosing() const { return diagnosisCancel_ != nullptr; }
+  // Opens a Compare window of these sessions (A, B, C, ... in this order)
+  // and returns it; its CompareView emits loaded() once all have arrived.
+  QWidget* compareSessions(const QStringList& paths);
   // Opens the folder of the last export (or the session folder) in the
   // desktop's file manager.
   void openExportFolder();
@@ -183,7 +186,6 @@ class MainWindow : public QMainWindow {
                    std::function<void(std::shared_ptr<const RunOutcome>)> done);
   // Shows a loaded session's outcome in Results (and its noise analysis).
   void showLoaded(std::shared_ptr<const RunOutcome> outcome);
-  void compareSessions(const QStringList& paths);
   // The Allan deviation of the outcome's static segments, in the background.
   void analyseNoise(std::shared_ptr<const RunOutcome> outcome);
   void updateRunButton();

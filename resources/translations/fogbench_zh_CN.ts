@@ -244,12 +244,12 @@
     </message>
     <message>
         <location line="+15"/>
-        <location line="+126"/>
+        <location line="+127"/>
         <source>test point</source>
         <translation>测试点</translation>
     </message>
     <message>
-        <location line="-120"/>
+        <location line="-121"/>
         <source>Zero crossing of A and B</source>
         <translation>A 与 B 的过零点</translation>
     </message>
@@ -319,7 +319,7 @@
         <translation>无法读取：%1</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+23"/>
         <source>no delay: %1</source>
         <translation>无延迟：%1</translation>
     </message>
@@ -722,7 +722,7 @@ counter %5 MHz / %6 bit</source>
         <translation>相对基波 (ppm)</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+5"/>
         <source>Held-out shrink per candidate effect</source>
         <translation>各候选效应在留出数据上的差异缩减</translation>
     </message>
@@ -4478,6 +4478,16 @@ File: %1</source>
         <location line="+1"/>
         <source>%1x real time</source>
         <translation>%1 倍实时</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>preset %1</source>
+        <translation>预设 %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>simulator truth, test point %1: lag %2 ms</source>
+        <translation>仿真真值，测试点 %1：滞后 %2 ms</translation>
     </message>
     <message>
         <location line="+1"/>
