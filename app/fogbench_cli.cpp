@@ -7,6 +7,7 @@
 
 #include "app/cli_arguments.h"
 #include "app/cli_commands.h"
+#include "core/common/memory.h"
 #include "core/common/version.h"
 #include "app/diagnose_command.h"
 #include "app/noise_command.h"
@@ -106,6 +107,7 @@ exit codes: 0 ok, 1 the data gave no result, 2 bad command line or input.
 }  // namespace
 
 int main(int argc, char** argv) {
+  fog::keepFreedMemoryForReuse();
   std::vector<std::string> args(argv + 1, argv + argc);
   if (args.empty() || args[0] == "help" || args[0] == "--help" || args[0] == "-h") {
     std::cout << kHelp;

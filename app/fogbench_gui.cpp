@@ -35,6 +35,7 @@
 #include "core/common/version.h"
 #include "app/gui_screenshot.h"
 #include "ui/bench_presets.h"
+#include "core/common/memory.h"
 #include "ui/language.h"
 #include "ui/main_window.h"
 #include "ui/plan_editor.h"
@@ -93,6 +94,7 @@ void nameApplication() {
 }  // namespace
 
 int main(int argc, char* argv[]) {
+  fog::keepFreedMemoryForReuse();
   // --help and --version need no display: answer them before the GUI exists.
   for (int i = 1; i < argc; ++i)
     for (const char* flag : {"-h", "--help", "-?", "--help-all", "-v", "--version"})

@@ -8,6 +8,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include "core/common/memory.h"
+
 #include "core/common/test_plan.h"
 #include "core/diagnosis/blind_check.h"
 #include "core/diagnosis/diagnosis.h"
@@ -55,4 +57,11 @@ BENCHMARK(BM_DiagnoseBlindCheckSession)->Arg(1)->Arg(2)->Unit(benchmark::kMillis
 
 }  // namespace
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  fog::keepFreedMemoryForReuse();  // as the CLI and the GUI do
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -79,9 +79,12 @@ class Progress {
   std::atomic<bool> cancelled_{false};
 };
 
-// Runs the simulated chain and decodes its stream as it is made, two
-// simulated seconds at a time: the bytes of a long session are never held
-// whole (140 MB for an hour).
+// Runs the simulated chain and builds its recording as it is made, two
+// simulated seconds at a time: a long session's stream is never held whole
+// (140 MB of bytes for an hour). The frames go to the decoder as they are,
+// not encoded: the recording is the one the bytes would give
+// (SimulatorFrames.GiveTheRecordingTheirBytesGive), without the checksums
+// and parsing that were a fifth of a diagnosis' time.
 Result<Recording> simulateRecording(const model::SimConfig& config, const TestPlan& plan,
                                     std::vector<std::unique_ptr<model::Effect>> effects = {}) {
   constexpr double kChunkS = 2.0;
@@ -89,12 +92,12 @@ Result<Recording> simulateRecording(const model::SimConfig& config, const TestPl
   if (!sim) return sim.status();
   for (auto& e : effects) (*sim)->addEffect(std::move(e));
   protocol::StreamDecoder decoder;
-  std::vector<std::uint8_t> bytes;
-  for (double until = kChunkS; (*sim)->advance(until, bytes); until += kChunkS) {
-    decoder.push(bytes);
-    bytes.clear();
+  std::vector<protocol::Frame> frames;
+  for (double until = kChunkS; (*sim)->advance(until, frames); until += kChunkS) {
+    decoder.push(std::span<const protocol::Frame>(frames));
+    frames.clear();
   }
-  decoder.push(bytes);
+  decoder.push(std::span<const protocol::Frame>(frames));
   return decoder.finish();
 }
 
@@ -363,16 +366,30 @@ class ForwardCost final : public ceres::CostFunction {
   bool Evaluate(double const* const* x, double* residuals, double** jacobians) const override {
     const std::size_t k = effectSpec(s_.id).parameters.size();
     const bool wantJacobian = jacobians != nullptr && jacobians[0] != nullptr;
-    std::vector<std::vector<double>> points(wantJacobian ? k + 1 : 1, std::vector<double>(x[0], x[0] + k));
+    // Ceres costs a step first and asks for the Jacobian there only if it
+    // takes the step. When the difference points fit on the idle threads,
+    // they run with the cost (kept for that request): a step then costs one
+    // round of replays instead of two.
+    const bool withSteps = wantJacobian || static_cast<int>(k + 1) <= s_.threads;
+    std::vector<std::vector<double>> points(withSteps ? k + 1 : 1, std::vector<double>(x[0], x[0] + k));
     std::vector<double> steps(k, 0.0);
-    for (std::size_t j = 0; wantJacobian && j < k; ++j) {
+    for (std::size_t j = 0; withSteps && j < k; ++j) {
       steps[j] = std::max(s_.relativeStep * std::abs(x[0][j]), s_.minStep[j]);
       points[j + 1][j] += steps[j];
     }
+    // Ceres asks for the same point again (the Jacobian at a step it just
+    // costed, a rejected step retried): a replay with the same seed and
+    // parameters gives the same residuals, so those are kept, not re-run.
     std::vector<std::vector<double>> z(points.size());
-    std::vector<char> ok(points.size(), 0);
-    parallelFor(points.size(), s_.threads, [&](std::size_t i) { ok[i] = residualsAt(points[i], z[i]); });
+    std::vector<std::size_t> toRun;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      if (auto hit = evaluated_.find(points[i]); hit != evaluated_.end()) z[i] = hit->second;
+      else toRun.push_back(i);
+    }
+    std::vector<char> ok(toRun.size(), 0);
+    parallelFor(toRun.size(), s_.threads, [&](std::size_t i) { ok[i] = residualsAt(points[toRun[i]], z[toRun[i]]); });
     if (std::find(ok.begin(), ok.end(), 0) != ok.end()) return false;
+    for (std::size_t i : toRun) evaluated_.emplace(points[i], z[i]);
     for (std::size_t r = 0; r < s_.rows.size(); ++r) residuals[r] = z[0][r];
     if (wantJacobian)
       for (std::size_t r = 0; r < s_.rows.size(); ++r)
@@ -402,6 +419,7 @@ class ForwardCost final : public ceres::CostFunction {
   }
 
   Setup s_;
+  mutable std::map<std::vector<double>, std::vector<double>> evaluated_;  // point -> residuals
 };
 
 std::string fmt(const char* f, double v) {
@@ -1070,6 +1088,11 @@ Status refineBest(std::vector<Candidate>& cands, const Replay& replay, const Gap
     // can tell from progress: stop on a step under 1 % instead.
     so.max_num_iterations = 6;
     so.parameter_tolerance = 0.01;
+    // With a bound, Ceres follows each trust-region step with a projected
+    // line search that evaluates the Jacobian (k + 1 replays) at every trial
+    // point: half the replays of a lag fit, for steps that only wander in
+    // the quantisation noise. The bound is kept; the line search is not.
+    so.max_num_line_search_step_size_iterations = 0;
     so.logging_type = ceres::SILENT;
     so.linear_solver_type = ceres::DENSE_QR;
     ceres::Solver::Summary summary;

@@ -26,9 +26,25 @@ Attitude::Attitude(const EarthParams& earth, const TurntableParams& table)
       order_(table.axisOrder),
       earthLocalDegPerH_(Eigen::Vector3d::Map(earth.rateLocalDegPerH().data())) {}
 
+const Eigen::Matrix3d& AxisRotations::of(Axis axis, double angleDeg) {
+  const auto a = static_cast<std::size_t>(axis);
+  if (!known_[a] || angleDeg_[a] != angleDeg) {
+    rotation_[a] = axisRotation(axis, angleDeg);
+    angleDeg_[a] = angleDeg;
+    known_[a] = true;
+  }
+  return rotation_[a];
+}
+
 Eigen::Matrix3d Attitude::bodyToTable(const TableAngles& tableDeg) const {
   Eigen::Matrix3d c = Eigen::Matrix3d::Identity();
   for (Axis a : order_) c = c * axisRotation(a, tableDeg[static_cast<std::size_t>(a)]);
+  return c * mounting_;
+}
+
+Eigen::Matrix3d Attitude::bodyToTable(const TableAngles& tableDeg, AxisRotations& rotations) const {
+  Eigen::Matrix3d c = Eigen::Matrix3d::Identity();
+  for (Axis a : order_) c = c * rotations.of(a, tableDeg[static_cast<std::size_t>(a)]);
   return c * mounting_;
 }
 

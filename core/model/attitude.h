@@ -29,6 +29,20 @@ struct TurntableParams;
 
 using TableAngles = std::array<double, kAxisCount>;  // deg, indexed by Axis
 
+// Each table axis' rotation, kept while its angle holds: in a swing two of
+// the three axes stand still, so a simulator that asks at every sample
+// computes one sine and cosine instead of three. Gives exactly what
+// axisRotation() gives. One per simulator (not thread-safe).
+class AxisRotations {
+ public:
+  const Eigen::Matrix3d& of(Axis axis, double angleDeg);
+
+ private:
+  std::array<double, kAxisCount> angleDeg_{};
+  std::array<bool, kAxisCount> known_{};
+  std::array<Eigen::Matrix3d, kAxisCount> rotation_;
+};
+
 class Attitude {
  public:
   Attitude(const EarthParams& earth, const TurntableParams& table);
@@ -37,6 +51,8 @@ class Attitude {
   Eigen::Matrix3d bodyToLocal(const Eigen::Matrix3d& bodyToTable) const { return heading_ * bodyToTable; }
   // Body to table-frame rotation (the motion alone, no heading).
   Eigen::Matrix3d bodyToTable(const TableAngles& tableDeg) const;
+  // The same, with the axes' rotations from (and kept in) `rotations`.
+  Eigen::Matrix3d bodyToTable(const TableAngles& tableDeg, AxisRotations& rotations) const;
 
   // Earth rate in the body frame, deg/h, for the attitude bodyToTable().
   Eigen::Vector3d earthRateBodyDegPerH(const Eigen::Matrix3d& bodyToTable) const;

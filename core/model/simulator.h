@@ -18,6 +18,7 @@
 #include "core/model/effect.h"
 #include "core/model/sim_config.h"
 #include "core/model/turntable.h"
+#include "core/protocol/frame.h"
 
 namespace fog::model {
 
@@ -48,6 +49,10 @@ class Simulator {
   // Appends every frame stamped before untilS (true seconds since the start)
   // to out. Returns false once the whole plan has been emitted.
   bool advance(double untilS, std::vector<std::uint8_t>& out);
+  // The same frames, not encoded (protocol::StreamDecoder::push takes them):
+  // for a replay that would decode its own bytes at once. One simulator
+  // emits either bytes or frames, not both.
+  bool advance(double untilS, std::vector<protocol::Frame>& out);
   // Runs to the end of the plan.
   void runToEnd(std::vector<std::uint8_t>& out);
 
@@ -59,6 +64,8 @@ class Simulator {
  private:
   class Impl;
   void start();
+  template <class Out>
+  bool advanceInto(double untilS, Out& out);
 
   SimConfig config_;
   TestPlan plan_;

@@ -92,6 +92,8 @@ std::size_t Decoder::parse(const std::uint8_t* data, std::size_t size, std::vect
   return p;
 }
 
+void Decoder::push(Frame frame, std::vector<DecodedFrame>& out) { accept(frame, out); }
+
 void Decoder::accept(Frame& frame, std::vector<DecodedFrame>& out) {
   const auto ti = static_cast<std::size_t>(frame.type) - 1;
   std::uint32_t lost = 0;

@@ -58,6 +58,10 @@ class Decoder {
  public:
   // Decodes `bytes` (any length, including 0) and appends emitted frames.
   void push(std::span<const std::uint8_t> bytes, std::vector<DecodedFrame>& out);
+  // A frame that never was bytes (a simulator's replay): the sequence and
+  // counter rules above apply to it as to a decoded one; no checksum, no
+  // skipped bytes.
+  void push(Frame frame, std::vector<DecodedFrame>& out);
 
   const fog::StreamHealth& health() const { return health_; }
   // Bytes buffered awaiting the rest of a frame; at the end of the input these

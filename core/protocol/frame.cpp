@@ -131,15 +131,27 @@ bool decodePayload(FrameType type, const std::uint8_t* p, std::size_t size,
 }
 
 void FrameWriter::imu(std::uint32_t counter, const ImuPayload& payload, std::vector<std::uint8_t>& out) {
-  appendFrame(Frame{FrameType::kImu, next_[0]++, counter, payload}, out);
+  appendFrame(numbered(counter, payload), out);
 }
 
 void FrameWriter::table(std::uint32_t counter, const TablePayload& payload, std::vector<std::uint8_t>& out) {
-  appendFrame(Frame{FrameType::kTable, next_[1]++, counter, payload}, out);
+  appendFrame(numbered(counter, payload), out);
 }
 
 void FrameWriter::status(std::uint32_t counter, const StatusPayload& payload, std::vector<std::uint8_t>& out) {
-  appendFrame(Frame{FrameType::kStatus, next_[2]++, counter, payload}, out);
+  appendFrame(numbered(counter, payload), out);
+}
+
+Frame FrameWriter::numbered(std::uint32_t counter, const ImuPayload& payload) {
+  return Frame{FrameType::kImu, next_[0]++, counter, payload};
+}
+
+Frame FrameWriter::numbered(std::uint32_t counter, const TablePayload& payload) {
+  return Frame{FrameType::kTable, next_[1]++, counter, payload};
+}
+
+Frame FrameWriter::numbered(std::uint32_t counter, const StatusPayload& payload) {
+  return Frame{FrameType::kStatus, next_[2]++, counter, payload};
 }
 
 std::uint16_t FrameWriter::nextSequence(FrameType type) const {

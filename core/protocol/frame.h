@@ -96,6 +96,13 @@ class FrameWriter {
   void imu(std::uint32_t counter, const ImuPayload& payload, std::vector<std::uint8_t>& out);
   void table(std::uint32_t counter, const TablePayload& payload, std::vector<std::uint8_t>& out);
   void status(std::uint32_t counter, const StatusPayload& payload, std::vector<std::uint8_t>& out);
+  // The next frame of the payload's type, numbered but not encoded: the same
+  // frame the byte-writing calls above encode (a simulator's replay hands it
+  // to the decoder without the byte round trip). Uses up the sequence
+  // number, as a frame lost on the link does.
+  Frame numbered(std::uint32_t counter, const ImuPayload& payload);
+  Frame numbered(std::uint32_t counter, const TablePayload& payload);
+  Frame numbered(std::uint32_t counter, const StatusPayload& payload);
 
   // Sequence number the next frame of this type will carry.
   std::uint16_t nextSequence(FrameType type) const;

@@ -144,6 +144,12 @@ void StreamDecoder::push(std::span<const std::uint8_t> bytes) {
   bytes_ += bytes.size();
 }
 
+void StreamDecoder::push(std::span<const Frame> frames) {
+  frames_.clear();
+  for (const Frame& f : frames) decoder_.push(f, frames_);
+  builder_.add(frames_);
+}
+
 Result<Recording> StreamDecoder::finish() {
   const StreamHealth health = decoder_.health();
   if (builder_.framesAdded() == 0)

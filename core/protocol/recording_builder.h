@@ -107,6 +107,10 @@ fog::Result<fog::Recording> decodeRecording(std::span<const std::uint8_t> bytes)
 class StreamDecoder {
  public:
   void push(std::span<const std::uint8_t> bytes);
+  // Frames that never were bytes (Simulator::advance's frame overload): the
+  // recording is the one their encoded bytes would give, without the
+  // encoding, checksums and parsing (a replay in the diagnosis).
+  void push(std::span<const Frame> frames);
   fog::Result<fog::Recording> finish();
 
  private:

@@ -58,6 +58,70 @@ TEST(Simulator, ChunkedAdvanceLandingOnTheEndEqualsOneRun) {
   EXPECT_EQ(bytes, whole->bytes);
 }
 
+// Drops every 7th IMU frame and every 11th table frame (a lossy link).
+class DropSome : public Effect {
+ public:
+  std::string name() const override { return "drop_some"; }
+  void onImuStamp(double&, bool& drop) override { drop = ++imu_ % 7 == 0; }
+  void onTableStamp(double&, bool& drop) override { drop = ++table_ % 11 == 0; }
+
+ private:
+  int imu_ = 0, table_ = 0;
+};
+
+TEST(SimulatorFrames, GiveTheRecordingTheirBytesGive) {
+  // The frame overload (a diagnosis replay) must be the byte stream without
+  // the encoding: the same frames, lost ones and counter wraps included.
+  SimConfig c;
+  c.seed = 5;
+  c.samplingBoard.counterBits = 24;  // wraps every 1.7 s at 10 MHz
+  auto bytesRun = Simulator::create(c, shortPlan());
+  auto framesRun = Simulator::create(c, shortPlan());
+  ASSERT_TRUE(bytesRun.isOk() && framesRun.isOk());
+  (*bytesRun)->addEffect(std::make_unique<DropSome>());
+  (*framesRun)->addEffect(std::make_unique<DropSome>());
+  std::vector<std::uint8_t> bytes;
+  protocol::StreamDecoder fromFrames;
+  std::vector<std::uint8_t> encoded;
+  std::vector<protocol::Frame> frames;
+  for (double until = 0.7;; until += 0.7) {
+    const bool more = (*bytesRun)->advance(until, bytes);
+    EXPECT_EQ(more, (*framesRun)->advance(until, frames));
+    for (const auto& f : frames) protocol::appendFrame(f, encoded);
+    fromFrames.push(std::span<const protocol::Frame>(frames));
+    frames.clear();
+    if (!more) break;
+  }
+  EXPECT_EQ(encoded, bytes);
+  auto a = protocol::decodeRecording(bytes);
+  auto b = fromFrames.finish();
+  ASSERT_TRUE(a.isOk() && b.isOk());
+  EXPECT_GT(a->health.lostFrames, 100u);
+  EXPECT_GE(a->health.counterWraps, 3u);
+  EXPECT_EQ(a->health.lostFrames, b->health.lostFrames);
+  EXPECT_EQ(a->health.counterWraps, b->health.counterWraps);
+  EXPECT_EQ(a->health.imuFrames, b->health.imuFrames);
+  EXPECT_EQ(a->health.tableFrames, b->health.tableFrames);
+  EXPECT_EQ(a->health.statusFrames, b->health.statusFrames);
+  EXPECT_EQ(a->pulseEquivalentDeg, b->pulseEquivalentDeg);
+  ASSERT_EQ(a->testPoints.size(), b->testPoints.size());
+  for (std::size_t i = 0; i < a->testPoints.size(); ++i) {
+    const auto& x = a->testPoints[i];
+    const auto& y = b->testPoints[i];
+    ASSERT_EQ(x.table.size(), y.table.size());
+    ASSERT_EQ(x.imu.size(), y.imu.size());
+    for (std::size_t k = 0; k < x.table.size(); ++k) {
+      EXPECT_EQ(x.table[k].timeS, y.table[k].timeS);
+      EXPECT_EQ(x.table[k].angleDeg, y.table[k].angleDeg);
+    }
+    for (std::size_t k = 0; k < x.imu.size(); ++k) {
+      EXPECT_EQ(x.imu[k].timeS, y.imu[k].timeS);
+      EXPECT_EQ(x.imu[k].incrementDeg, y.imu[k].incrementDeg);
+      EXPECT_EQ(x.imu[k].lostBefore, y.imu[k].lostBefore);
+    }
+  }
+}
+
 TEST(Simulator, RefusesImpossibleConfigurations) {
   SimConfig c;
   c.fog.setOwnDelayS(0.9e-3);  // beyond one 0.5 ms pulse update period
