@@ -12,6 +12,7 @@
 #include <cmath>
 
 #include "ui/bench_presets.h"
+#include "ui/core_text.h"
 #include "ui/messages.h"
 
 namespace fog::ui {
@@ -34,50 +35,24 @@ QString durationText(double s) {
   return s >= 120 ? QObject::tr("%1 min").arg(s / 60.0, 0, 'f', 1) : QObject::tr("%1 s").arg(s, 0, 'f', 0);
 }
 
-QString num(double v) { return QString::number(v, 'g', 6); }
-
 }  // namespace
 
 std::vector<PlanEditor::PointProblem> PlanEditor::pointProblems(const TestPoint& p, const TurntableLimits& limits) {
+  using Field = TestPoint::Problem::Field;
   std::vector<PointProblem> out;
-  auto add = [&out](Column c, const QString& text) { out.push_back({c, text}); };
-  for (int a = 0; a < kAxisCount; ++a)
-    if (!std::isfinite(p.positionDeg[a]) || std::abs(p.positionDeg[a]) > kMaxPositionDeg)
-      add(kAxis, tr("table position of axis %1 must be within ±%2°, got %3°")
-                     .arg(QString::fromLatin1(axisLabel(static_cast<Axis>(a))), num(kMaxPositionDeg), num(p.positionDeg[a])));
-  const bool durationOk = std::isfinite(p.durationS);
-  if (p.isStatic()) {
-    if (p.frequencyHz != 0.0 || p.amplitudeDeg != 0.0 || p.startPhaseDeg != 0.0)
-      add(kKind, tr("a static segment has no frequency, amplitude or start phase (got %1 Hz, %2°, %3°); leave them out")
-                     .arg(num(p.frequencyHz), num(p.amplitudeDeg), num(p.startPhaseDeg)));
-    if (!durationOk || p.durationS <= 0.0) add(kDuration, tr("a static segment needs a duration > 0 s, got %1").arg(num(p.durationS)));
-  } else {
-    const bool frequencyOk = std::isfinite(p.frequencyHz) && p.frequencyHz > 0.0;
-    const bool amplitudeOk = std::isfinite(p.amplitudeDeg) && p.amplitudeDeg > 0.0;
-    if (!frequencyOk) add(kFrequency, tr("frequency must be > 0 Hz, got %1").arg(num(p.frequencyHz)));
-    else if (p.frequencyHz > limits.maxFrequencyHz)
-      add(kFrequency, tr("frequency %1 Hz is beyond the table limit of %2 Hz").arg(num(p.frequencyHz), num(limits.maxFrequencyHz)));
-    if (!amplitudeOk) add(kAmplitude, tr("amplitude must be > 0°, got %1").arg(num(p.amplitudeDeg)));
-    else if (p.amplitudeDeg > limits.maxAmplitudeDeg)
-      add(kAmplitude,
-          tr("amplitude %1° is beyond the table limit of %2°").arg(num(p.amplitudeDeg), num(limits.maxAmplitudeDeg)));
-    if (frequencyOk && amplitudeOk) {
-      const double w = 2.0 * 3.14159265358979323846 * p.frequencyHz;
-      if (w * p.amplitudeDeg > limits.maxRateDegPerS)
-        add(kFrequency, tr("peak rate %1 °/s exceeds the table limit of %2 °/s; lower the frequency or amplitude")
-                            .arg(num(w * p.amplitudeDeg), num(limits.maxRateDegPerS)));
-      if (w * w * p.amplitudeDeg > limits.maxAccelDegPerS2)
-        add(kFrequency, tr("peak acceleration %1 °/s² exceeds the table limit of %2 °/s²; lower the frequency or amplitude")
-                            .arg(num(w * w * p.amplitudeDeg), num(limits.maxAccelDegPerS2)));
+  for (const auto& problem : p.problems(limits)) {
+    Column column = kCheck;
+    switch (problem.field) {
+      case Field::kPosition: column = kAxis; break;
+      case Field::kKind: column = kKind; break;
+      case Field::kFrequency: column = kFrequency; break;
+      case Field::kAmplitude: column = kAmplitude; break;
+      case Field::kDuration: column = kDuration; break;
+      case Field::kSettle: column = kSettle; break;
+      case Field::kStartPhase: column = kCheck; break;  // not a column of the table
     }
-    if (!durationOk || (frequencyOk && p.durationS < 2.0 * p.periodS()))
-      add(kDuration, tr("duration %1 s is under two swing periods (%2 s); a delay needs at least two whole periods")
-                         .arg(num(p.durationS), num(frequencyOk ? 2.0 * p.periodS() : 0.0)));
-    if (!std::isfinite(p.startPhaseDeg)) add(kCheck, tr("start phase must be finite"));
+    out.push_back({column, coreText(problem.message)});
   }
-  if (durationOk && p.durationS > 24.0 * 3600.0)
-    add(kDuration, tr("duration %1 s is over 24 h; split the test into points").arg(num(p.durationS)));
-  if (!std::isfinite(p.settleS) || p.settleS < 0.0) add(kSettle, tr("settle time must be >= 0 s, got %1").arg(num(p.settleS)));
   return out;
 }
 

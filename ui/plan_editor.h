@@ -36,9 +36,9 @@ class PlanEditor : public QWidget {
     Column column;
     QString text;
   };
-  // Every problem of one test point, not only the first: the conditions of
-  // TestPoint::validate, in the GUI's words (translated) and units. Empty
-  // exactly when TestPoint::validate is ok.
+  // Every problem of one test point, not only the first
+  // (TestPoint::problems), each by its column, in the GUI's language and
+  // units (coreText). Empty exactly when TestPoint::validate is ok.
   static std::vector<PointProblem> pointProblems(const TestPoint& p, const TurntableLimits& limits);
 
   void setPlan(const TestPlan& plan);

@@ -57,52 +57,60 @@ std::string num(double v) {
 }
 }  // namespace
 
-Status TestPoint::validate(const TurntableLimits& limits) const {
+std::vector<TestPoint::Problem> TestPoint::problems(const TurntableLimits& limits) const {
+  using Field = Problem::Field;
+  std::vector<Problem> out;
+  auto add = [&out](Field field, std::string message) { out.push_back({field, std::move(message)}); };
   for (int a = 0; a < kAxisCount; ++a)
     if (!std::isfinite(positionDeg[a]) || std::abs(positionDeg[a]) > kMaxPositionDeg)
-      return invalidArgument(std::string("table position of axis ") + axisLabel(static_cast<Axis>(a)) + " must be within +-" +
-                             num(kMaxPositionDeg) + " deg, got " + num(positionDeg[a]));
+      add(Field::kPosition, std::string("table position of axis ") + axisLabel(static_cast<Axis>(a)) +
+                                " must be within +-" + num(kMaxPositionDeg) + " deg, got " + num(positionDeg[a]) +
+                                " deg");
+  const bool durationOk = std::isfinite(durationS);
   if (isStatic()) {
     if (frequencyHz != 0.0 || amplitudeDeg != 0.0 || startPhaseDeg != 0.0)
-      return invalidArgument("a static segment has no frequency, amplitude or start phase (got " + num(frequencyHz) +
-                             " Hz, " + num(amplitudeDeg) + " deg, " + num(startPhaseDeg) + " deg); leave them out");
-    if (!std::isfinite(durationS) || durationS <= 0.0)
-      return invalidArgument("a static segment needs a duration > 0 s, got " + num(durationS));
-    if (durationS > 24.0 * 3600.0)
-      return invalidArgument("duration " + num(durationS) + " s is over 24 h; split the test into points");
-    if (!std::isfinite(settleS) || settleS < 0.0)
-      return invalidArgument("settle time must be >= 0 s, got " + num(settleS));
-    return Status::ok();
+      add(Field::kKind, "a static segment has no frequency, amplitude or start phase (got " + num(frequencyHz) +
+                            " Hz, " + num(amplitudeDeg) + " deg, " + num(startPhaseDeg) + " deg); leave them out");
+    if (!durationOk || durationS <= 0.0)
+      add(Field::kDuration, "a static segment needs a duration > 0 s, got " + num(durationS));
+  } else {
+    const bool frequencyOk = std::isfinite(frequencyHz) && frequencyHz > 0.0;
+    const bool amplitudeOk = std::isfinite(amplitudeDeg) && amplitudeDeg > 0.0;
+    if (!frequencyOk)
+      add(Field::kFrequency, "frequency must be > 0 Hz, got " + num(frequencyHz));
+    else if (frequencyHz > limits.maxFrequencyHz)
+      add(Field::kFrequency, "frequency " + num(frequencyHz) + " Hz is beyond the table limit of " +
+                                 num(limits.maxFrequencyHz) + " Hz");
+    if (!amplitudeOk)
+      add(Field::kAmplitude, "amplitude must be > 0 deg, got " + num(amplitudeDeg));
+    else if (amplitudeDeg > limits.maxAmplitudeDeg)
+      add(Field::kAmplitude, "amplitude " + num(amplitudeDeg) + " deg is beyond the table limit of " +
+                                 num(limits.maxAmplitudeDeg) + " deg");
+    if (frequencyOk && amplitudeOk) {
+      const double w = kTwoPi * frequencyHz;
+      const double peakRate = w * amplitudeDeg;
+      if (peakRate > limits.maxRateDegPerS)
+        add(Field::kFrequency, "peak rate " + num(peakRate) + " deg/s exceeds the table limit of " +
+                                   num(limits.maxRateDegPerS) + " deg/s; lower the frequency or amplitude");
+      const double peakAccel = w * w * amplitudeDeg;
+      if (peakAccel > limits.maxAccelDegPerS2)
+        add(Field::kFrequency, "peak acceleration " + num(peakAccel) + " deg/s^2 exceeds the table limit of " +
+                                   num(limits.maxAccelDegPerS2) + " deg/s^2; lower the frequency or amplitude");
+    }
+    if (!durationOk || (frequencyOk && durationS < 2.0 * periodS()))
+      add(Field::kDuration, "duration " + num(durationS) + " s is under two swing periods (" +
+                                num(frequencyOk ? 2.0 * periodS() : 0.0) + " s); a delay needs at least two whole periods");
   }
-  if (!std::isfinite(frequencyHz) || frequencyHz <= 0.0)
-    return invalidArgument("frequency must be > 0 Hz, got " + num(frequencyHz));
-  if (frequencyHz > limits.maxFrequencyHz)
-    return invalidArgument("frequency " + num(frequencyHz) + " Hz is beyond the table limit of " +
-                           num(limits.maxFrequencyHz) + " Hz");
-  if (!std::isfinite(amplitudeDeg) || amplitudeDeg <= 0.0)
-    return invalidArgument("amplitude must be > 0 deg, got " + num(amplitudeDeg));
-  if (amplitudeDeg > limits.maxAmplitudeDeg)
-    return invalidArgument("amplitude " + num(amplitudeDeg) + " deg is beyond the table limit of " +
-                           num(limits.maxAmplitudeDeg) + " deg");
-  const double w = kTwoPi * frequencyHz;
-  const double peakRate = w * amplitudeDeg;
-  if (peakRate > limits.maxRateDegPerS)
-    return invalidArgument("peak rate " + num(peakRate) + " deg/s exceeds the table limit of " +
-                           num(limits.maxRateDegPerS) + " deg/s; lower the frequency or amplitude");
-  const double peakAccel = w * w * amplitudeDeg;
-  if (peakAccel > limits.maxAccelDegPerS2)
-    return invalidArgument("peak acceleration " + num(peakAccel) + " deg/s^2 exceeds the table limit of " +
-                           num(limits.maxAccelDegPerS2) +
-                           " deg/s^2; lower the frequency or amplitude");
-  if (!std::isfinite(durationS) || durationS < 2.0 * periodS())
-    return invalidArgument("duration " + num(durationS) + " s is under two swing periods (" +
-                           num(2.0 * periodS()) + " s); a delay needs at least two whole periods");
-  if (durationS > 24.0 * 3600.0)
-    return invalidArgument("duration " + num(durationS) + " s is over 24 h; split the test into points");
-  if (!std::isfinite(settleS) || settleS < 0.0)
-    return invalidArgument("settle time must be >= 0 s, got " + num(settleS));
-  if (!std::isfinite(startPhaseDeg)) return invalidArgument("start phase must be finite");
-  return Status::ok();
+  if (durationOk && durationS > 24.0 * 3600.0)
+    add(Field::kDuration, "duration " + num(durationS) + " s is over 24 h; split the test into points");
+  if (!std::isfinite(settleS) || settleS < 0.0) add(Field::kSettle, "settle time must be >= 0 s, got " + num(settleS));
+  if (!isStatic() && !std::isfinite(startPhaseDeg)) add(Field::kStartPhase, "start phase must be finite");
+  return out;
+}
+
+Status TestPoint::validate(const TurntableLimits& limits) const {
+  const auto found = problems(limits);
+  return found.empty() ? Status::ok() : invalidArgument(found.front().message);
 }
 
 Status TestPlan::validate(const TurntableLimits& limits) const {

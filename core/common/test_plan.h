@@ -57,7 +57,16 @@ struct TestPoint {
   double periodS() const { return isStatic() ? 0.0 : 1.0 / frequencyHz; }
   // A static segment: table at rest for durationS after settleS.
   static TestPoint staticSegment(Axis axis, double durationS, double settleS = 0.0);
-  // Ok, or an error saying what is wrong and what to do.
+  // One thing wrong with the point: the field it is about and what to do.
+  struct Problem {
+    enum class Field { kPosition, kKind, kFrequency, kAmplitude, kDuration, kSettle, kStartPhase };
+    Field field;
+    std::string message;
+  };
+  // Every problem of the point, in the order of validate()'s checks (a plan
+  // editor shows them all, each by its field).
+  std::vector<Problem> problems(const TurntableLimits& limits) const;
+  // Ok, or the first of problems(): what is wrong and what to do.
   Status validate(const TurntableLimits& limits) const;
 };
 

@@ -1985,72 +1985,7 @@ File: %1</source>
 <context>
     <name>fog::ui::PlanEditor</name>
     <message>
-        <location filename="../../ui/plan_editor.cpp" line="+46"/>
-        <source>table position of axis %1 must be within ±%2°, got %3°</source>
-        <translation>%1 轴的转台位置须在 ±%2° 以内，当前为 %3°</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>a static segment has no frequency, amplitude or start phase (got %1 Hz, %2°, %3°); leave them out</source>
-        <translation>静态段没有频率、幅值或起始相位（当前为 %1 Hz、%2°、%3°）；请去掉它们</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>a static segment needs a duration &gt; 0 s, got %1</source>
-        <translation>静态段的时长须 &gt; 0 s，当前为 %1</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>frequency must be &gt; 0 Hz, got %1</source>
-        <translation>频率须 &gt; 0 Hz，当前为 %1</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>frequency %1 Hz is beyond the table limit of %2 Hz</source>
-        <translation>频率 %1 Hz 超出转台限值 %2 Hz</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>amplitude must be &gt; 0°, got %1</source>
-        <translation>幅值须 &gt; 0°，当前为 %1</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>amplitude %1° is beyond the table limit of %2°</source>
-        <translation>幅值 %1° 超出转台限值 %2°</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>peak rate %1 °/s exceeds the table limit of %2 °/s; lower the frequency or amplitude</source>
-        <translation>峰值角速率 %1 °/s 超出转台限值 %2 °/s；请降低频率或幅值</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>peak acceleration %1 °/s² exceeds the table limit of %2 °/s²; lower the frequency or amplitude</source>
-        <translation>峰值角加速度 %1 °/s² 超出转台限值 %2 °/s²；请降低频率或幅值</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>duration %1 s is under two swing periods (%2 s); a delay needs at least two whole periods</source>
-        <translation>时长 %1 s 不足两个摆动周期（%2 s）；测量延迟至少需要两个完整周期</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>start phase must be finite</source>
-        <translation>起始相位须为有限值</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>duration %1 s is over 24 h; split the test into points</source>
-        <translation>时长 %1 s 超过 24 h；请将测试拆分为多个测试点</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>settle time must be &gt;= 0 s, got %1</source>
-        <translation>稳定时间须 &gt;= 0 s，当前为 %1</translation>
-    </message>
-    <message>
-        <location line="+9"/>
+        <location filename="../../ui/plan_editor.cpp" line="+64"/>
         <source>Preset</source>
         <translation>预设</translation>
     </message>
@@ -2270,7 +2205,7 @@ File: %1</source>
     <message>
         <location line="+1"/>
         <location filename="../../ui/main_window.cpp" line="-1006"/>
-        <location filename="../../ui/plan_editor.cpp" line="-326"/>
+        <location filename="../../ui/plan_editor.cpp" line="-300"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
@@ -4528,6 +4463,111 @@ File: %1</source>
         <location line="+1"/>
         <source>test point %1: %2</source>
         <translation>测试点 %1：%2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>table position of axis %1 must be within +-%2 deg, got %3 deg</source>
+        <translation>%1 轴的转台位置须在 ±%2° 以内，当前为 %3°</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a static segment has no frequency, amplitude or start phase (got %1 Hz, %2 deg, %3 deg); leave them out</source>
+        <translation>静态段没有频率、幅值或起始相位（当前为 %1 Hz、%2°、%3°）；请去掉它们</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a static segment needs a duration &gt; 0 s, got %1</source>
+        <translation>静态段的时长须 &gt; 0 s，当前为 %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>frequency must be &gt; 0 Hz, got %1</source>
+        <translation>频率须 &gt; 0 Hz，当前为 %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>frequency %1 Hz is beyond the table limit of %2 Hz</source>
+        <translation>频率 %1 Hz 超出转台限值 %2 Hz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>amplitude must be &gt; 0 deg, got %1</source>
+        <translation>幅值须 &gt; 0°，当前为 %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>amplitude %1 deg is beyond the table limit of %2 deg</source>
+        <translation>幅值 %1° 超出转台限值 %2°</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>peak rate %1 deg/s exceeds the table limit of %2 deg/s; lower the frequency or amplitude</source>
+        <translation>峰值角速率 %1 °/s 超出转台限值 %2 °/s；请降低频率或幅值</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>peak acceleration %1 deg/s^2 exceeds the table limit of %2 deg/s^2; lower the frequency or amplitude</source>
+        <translation>峰值角加速度 %1 °/s² 超出转台限值 %2 °/s²；请降低频率或幅值</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>duration %1 s is under two swing periods (%2 s); a delay needs at least two whole periods</source>
+        <translation>时长 %1 s 不足两个摆动周期（%2 s）；测量延迟至少需要两个完整周期</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>duration %1 s is over 24 h; split the test into points</source>
+        <translation>时长 %1 s 超过 24 h；请将测试拆分为多个测试点</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>settle time must be &gt;= 0 s, got %1</source>
+        <translation>稳定时间须 &gt;= 0 s，当前为 %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>start phase must be finite</source>
+        <translation>起始相位须为有限值</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the test plan has no test points</source>
+        <translation>测试计划中没有测试点</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>rest time between points must be &gt;= 0 s</source>
+        <translation>测试点之间的静止时间须 &gt;= 0 s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the test plan has %1 test points; at most %2</source>
+        <translation>测试计划有 %1 个测试点；最多 %2 个</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 turns the table by %2 deg with no rest time to move in; give rest_between_s &gt; 0</source>
+        <translation>%1 需将转台转动 %2°，但没有可用于移动的静止时间；请设置 rest_between_s &gt; 0</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the move to test point %1</source>
+        <translation>移动到测试点 %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the return to zero after the last point</source>
+        <translation>最后一个测试点之后的回零</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 (%2 deg in %3 s) exceeds the table&apos;s rate or acceleration limit; give rest_between_s &gt;= %4 s</source>
+        <translation>%1（%3 s 内转动 %2°）超出转台的角速率或角加速度限值；请设置 rest_between_s &gt;= %4 s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the test plan lasts %1 h in all; at most %2 h (every sample is held in memory): split it into several sessions</source>
+        <translation>测试计划总时长 %1 h；最多 %2 h（所有样本都保存在内存中）：请拆分为多个会话</translation>
     </message>
     <message>
         <location line="+1"/>

@@ -51,6 +51,7 @@
 #include "ui/commanded_motion.h"
 #include "ui/compare_view.h"
 #include "ui/configure_view.h"
+#include "ui/core_text.h"
 #include "ui/plot_data/curve_decimation.h"
 #include "ui/diagnosis_view.h"
 #include "ui/language.h"
@@ -251,7 +252,8 @@ class BenchUiTest : public QObject {
     QVERIFY(editor->cellEditor(0, PlanEditor::kDuration)->toolTip().isEmpty());
     QVERIFY(!editor->problem().contains("deg"));
 
-    // The same verdict as TestPoint::validate over a grid of points.
+    // The core's problems over a grid of points, each at a column and in
+    // the GUI's words: the first is validate()'s message.
     const fog::TurntableLimits limits;
     int bad = 0;
     for (double f : {-1.0, 0.0, 0.5, 5.0, 25.0})
@@ -272,6 +274,9 @@ class BenchUiTest : public QObject {
                        qPrintable(QString("f %1 a %2 d %3 settle %4 static %5: core '%6'")
                                       .arg(f).arg(a).arg(d).arg(settle).arg(still)
                                       .arg(QString::fromStdString(core.message()))));
+              QCOMPARE(problems.size(), p.problems(limits).size());
+              if (!problems.empty()) QCOMPARE(problems.front().text, fog::ui::coreText(core.message()));
+              for (const auto& problem : problems) QVERIFY(!problem.text.contains("deg"));
               bad += core.isOk() ? 0 : 1;
             }
     QVERIFY(bad > 20);

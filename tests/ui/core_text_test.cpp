@@ -8,6 +8,7 @@
 #include <QtTest>
 #include <atomic>
 #include <fstream>
+#include <limits>
 
 #include "core/acquisition/acquisition.h"
 #include "core/acquisition/replay_source.h"
@@ -179,6 +180,36 @@ class CoreTextTest : public QObject {
       QVERIFY2(!r.isOk(), name);
       expectChinese(r.status().message(), dir.path());
     }
+  }
+
+  void planProblems() {
+    // Every problem of points beyond each limit, and the plan-level refusals.
+    const TurntableLimits limits;
+    for (double f : {-1.0, 0.0, 5.0, 25.0})
+      for (double a : {0.0, 30.0, 60.0})
+        for (double d : {0.5, 1e5})
+          for (bool still : {false, true}) {
+            TestPoint p = still ? TestPoint::staticSegment(Axis::kY, d, -1.0) : TestPoint{};
+            if (!still) p.frequencyHz = f, p.amplitudeDeg = a, p.durationS = d, p.settleS = -1.0;
+            p.positionDeg[2] = 400.0;
+            if (still) p.amplitudeDeg = a;
+            else p.startPhaseDeg = std::numeric_limits<double>::infinity();
+            for (const auto& problem : p.problems(limits)) expectChinese(problem.message);
+          }
+    TestPlan plan;
+    expectChinese(plan.validate(limits).message());
+    plan.points.push_back({Axis::kX, 1.0, 3.0, 4.0, 1.0, 0.0});
+    plan.points.back().positionDeg[1] = 90.0;
+    for (double rest : {0.0, 0.5, -1.0}) {
+      plan.restBetweenS = rest;
+      expectChinese(plan.validate(limits).message());
+    }
+    plan.restBetweenS = 5.0;
+    plan.points.back().durationS = 90.0 * 3600.0;
+    expectChinese(plan.validate(limits).message());
+    plan.points.back().durationS = 4.0;
+    plan.points.back().frequencyHz = 50.0;
+    expectChinese(plan.validate(limits).message());
   }
 
   void noiseTermNames() {
