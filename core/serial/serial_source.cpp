@@ -15,33 +15,11 @@
 #include <cstring>
 #include <fstream>
 
+#include "core/common/baud_rates.h"
+
 namespace fog::serial {
 
 namespace {
-
-struct Rate {
-  int baud;
-  speed_t code;
-};
-// The rates a Linux serial driver takes by name.
-constexpr Rate kRates[] = {{1200, B1200},       {2400, B2400},       {4800, B4800},       {9600, B9600},
-                           {19200, B19200},     {38400, B38400},     {57600, B57600},     {115200, B115200},
-                           {230400, B230400},   {460800, B460800},   {500000, B500000},   {576000, B576000},
-                           {921600, B921600},   {1000000, B1000000}, {1152000, B1152000}, {1500000, B1500000},
-                           {2000000, B2000000}, {2500000, B2500000}, {3000000, B3000000}, {3500000, B3500000},
-                           {4000000, B4000000}};
-
-speed_t speedCode(int baud) {
-  for (const Rate& r : kRates)
-    if (r.baud == baud) return r.code;
-  return B0;
-}
-
-std::string rateList() {
-  std::string s;
-  for (const Rate& r : kRates) s += (s.empty() ? "" : ", ") + std::to_string(r.baud);
-  return s;
-}
 
 // "ttyUSB0" names /dev/ttyUSB0; a path is used as given.
 std::string devicePath(const std::string& port) { return port.find('/') == std::string::npos ? "/dev/" + port : port; }
@@ -67,9 +45,9 @@ tcflag_t sizeFlag(int dataBits) {
 Status SerialSettings::validate() const {
   if (port.empty()) return invalidArgument("no serial port given (--port DEVICE; fogbench-cli ports lists them)");
   if (baudRate <= 0) return invalidArgument("the baud rate must be > 0, got " + std::to_string(baudRate));
-  if (speedCode(baudRate) == B0)
+  if (baudRateCode(baudRate) == B0)
     return invalidArgument("baud rate " + std::to_string(baudRate) + " is not one a serial driver takes; use one of " +
-                           rateList());
+                           acceptedBaudRates());
   if (dataBits < 5 || dataBits > 8) return invalidArgument("data bits must be 5..8, got " + std::to_string(dataBits));
   if (stopBits != 1 && stopBits != 2) return invalidArgument("stop bits must be 1 or 2, got " + std::to_string(stopBits));
   return Status::ok();
@@ -152,7 +130,7 @@ Result<std::unique_ptr<SerialSource>> SerialSource::open(const SerialSettings& s
   if (settings.parity == Parity::kOdd) t.c_cflag |= PARODD;
   if (settings.stopBits == 2) t.c_cflag |= CSTOPB;
   t.c_iflag &= ~static_cast<tcflag_t>(IXON | IXOFF | IXANY);
-  ::cfsetspeed(&t, speedCode(settings.baudRate));
+  ::cfsetspeed(&t, baudRateCode(settings.baudRate));
   if (::tcsetattr(fd, TCSANOW, &t) != 0)
     return ioError("cannot open serial port " + settings.port + " for " + settings.summary() + ": " +
                    std::strerror(errno));

@@ -12,6 +12,7 @@
 #include <cerrno>
 #include <cstring>
 
+#include "core/common/baud_rates.h"
 #include "core/table/transport.h"
 
 namespace fog::table {
@@ -82,20 +83,6 @@ class FdTransport : public ByteTransport {
   Status broken_;
 };
 
-speed_t speedCode(int baud) {
-  switch (baud) {
-    case 9600: return B9600;
-    case 19200: return B19200;
-    case 38400: return B38400;
-    case 57600: return B57600;
-    case 115200: return B115200;
-    case 230400: return B230400;
-    case 460800: return B460800;
-    case 921600: return B921600;
-    default: return B0;
-  }
-}
-
 Result<std::unique_ptr<ByteTransport>> openTcp(const std::string& address, std::chrono::milliseconds connectTimeout,
                                                std::chrono::milliseconds writeTimeout) {
   const std::string rest = address.substr(4);
@@ -144,8 +131,10 @@ Result<std::unique_ptr<ByteTransport>> openTransport(const std::string& address,
                                                      std::chrono::milliseconds writeTimeout) {
   if (address.rfind("tcp:", 0) == 0) return openTcp(address, connectTimeout, writeTimeout);
   if (address.empty()) return invalidArgument("no table address given (tcp:HOST:PORT or a device path)");
-  const speed_t code = speedCode(baud);
-  if (code == B0) return invalidArgument("table link baud rate " + std::to_string(baud) + " is not supported");
+  const speed_t code = baudRateCode(baud);
+  if (code == B0)
+    return invalidArgument("table link baud rate " + std::to_string(baud) + " is not supported; use one of " +
+                           acceptedBaudRates());
   const int fd = ::open(address.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
   if (fd < 0) return ioError("cannot open the table controller's port " + address + ": " + std::strerror(errno));
   termios t{};
