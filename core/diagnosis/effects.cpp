@@ -372,7 +372,7 @@ std::vector<EffectSpec> buildLibrary() {
        {{"sin_amplitude", "arcsec", 1.0}, {"cos_amplitude", "arcsec", 1.0}}},
       {E::kTimestampJitter, "timestamp_jitter", "white jitter on the IMU frame stamps",
        {{"jitter_variance", "us^2", 100.0, false}}},
-      {E::kClockDrift, "clock_drift", "IMU stamps drift against the table's time base", {{"drift", "ppm", 10.0}}},
+      {E::kClockDrift, "clock_drift", "IMU stamps drift against the table's time base", {{"drift", "ppm", 1.0}}},
       {E::kDroppedFrames, "dropped_frames", "IMU frames lost at random", {{"loss_rate", "per mille", 5.0, false}}},
       {E::kEarthRateProjection, "earth_rate_projection", "wrong latitude / heading for the Earth-rate projection",
        {{"latitude_error", "deg", 5.0}, {"heading_error", "deg", 5.0}}, false, false},
