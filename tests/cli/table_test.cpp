@@ -189,12 +189,13 @@ TEST_F(TableBench, AThreeAxisPlanRunsThroughTheWholeHardwarePathAndMeasuresTheTr
     EXPECT_EQ(byMarkers->testPoints[i].axis, rec->testPoints[i].axis);
     // "Recording" is marked once the swing is verified, which is after the
     // start of the checked stretch the bench's cut begins with (at most the
-    // check's 2 periods or 1 s, plus the link's latency), and lasts until
+    // check's 2 periods or 1 s, plus the link's latency: 3.4 s seen once in
+    // the ASan build with two tests in parallel, so 5 s), and lasts until
     // the runner ends the point, after the cut's end.
     const auto& marked = byMarkers->testPoints[i].table;
     const auto& cut = rec->testPoints[i].table;
     EXPECT_GE(marked.front().timeS, cut.front().timeS) << "point " << i + 1;
-    EXPECT_LE(marked.front().timeS, cut.front().timeS + 3.0) << "point " << i + 1;
+    EXPECT_LE(marked.front().timeS, cut.front().timeS + 5.0) << "point " << i + 1;
     EXPECT_GE(marked.back().timeS, cut.back().timeS) << "point " << i + 1;
   }
 }
