@@ -17,20 +17,26 @@
 namespace fog::diagnosis {
 namespace {
 
-Diagnosis diagnoseWith(std::vector<std::unique_ptr<model::Effect>> effects, std::uint64_t seed) {
-  model::SimConfig c;
-  c.seed = seed;
-  c.fog.setOwnDelayS(0.31e-3);
-  const TestPlan plan = blindCheckPlan();
+// A session of `plan` simulated with `effects`, diagnosed blind.
+Diagnosis diagnoseSimulated(const model::SimConfig& c, const TestPlan& plan,
+                            std::vector<std::unique_ptr<model::Effect>> effects, const DiagnosisOptions& options = {}) {
   auto run = model::simulate(c, plan, std::move(effects));
   EXPECT_TRUE(run.isOk());
   auto rec = protocol::decodeRecording(run->bytes);
   EXPECT_TRUE(rec.isOk());
   SessionInfo info;
   info.plan = plan;
-  auto d = diagnose(*rec, &info, {}, {});
+  auto d = diagnose(*rec, &info, {}, options);
   EXPECT_TRUE(d.isOk()) << d.status().toString();
   return *d;
+}
+
+// The blind-check plan with a gyro delay of 0.31 ms.
+Diagnosis diagnoseWith(std::vector<std::unique_ptr<model::Effect>> effects, std::uint64_t seed) {
+  model::SimConfig c;
+  c.seed = seed;
+  c.fog.setOwnDelayS(0.31e-3);
+  return diagnoseSimulated(c, blindCheckPlan(), std::move(effects));
 }
 
 Diagnosis diagnoseWith(EffectId id, std::vector<double> params, std::uint64_t seed) {
@@ -144,20 +150,12 @@ TEST(Diagnosis, ClockDriftIsNamedAndRecovered) {
 TEST(Diagnosis, ASmallClockDriftIsFittedAtItsSizeOnThePapersPlan) {
   model::SimConfig c;
   c.seed = 1;
-  const TestPlan plan = *presetPlan("paper");
   std::vector<std::unique_ptr<model::Effect>> e;
   e.push_back(makeEffect(EffectId::kClockDrift, {0.013}));
-  auto run = model::simulate(c, plan, std::move(e));
-  ASSERT_TRUE(run.isOk());
-  auto rec = protocol::decodeRecording(run->bytes);
-  ASSERT_TRUE(rec.isOk());
-  SessionInfo info;
-  info.plan = plan;
   DiagnosisOptions options;
   options.threads = 2;
-  auto d = diagnose(*rec, &info, {}, options);
-  ASSERT_TRUE(d.isOk()) << d.status().toString();
-  const EffectFit& f = fitOf(*d, "clock_drift");
+  const Diagnosis d = diagnoseSimulated(c, *presetPlan("paper"), std::move(e), options);
+  const EffectFit& f = fitOf(d, "clock_drift");
   EXPECT_NEAR(f.values[0], 0.013, 3.0 * f.standardErrors[0]) << f.values[0] << " +- " << f.standardErrors[0];
 }
 
