@@ -25,6 +25,27 @@ Result<int> wholeNumber(CliArguments& args, const std::string& name, double fall
   return static_cast<int>(v);
 }
 
+// --bias-instability DEG_H and --bias-correlation S: the IMU's Gauss-Markov
+// bias as its static noise test measured it (unset: the replays' default).
+Status readBiasInstability(CliArguments& args, diagnosis::DiagnosisOptions& options) {
+  if (args.has("bias-instability")) {
+    FOG_ASSIGN_OR_RETURN(const double v, args.number("bias-instability", 0.0));
+    if (!(v >= 0.0 && v <= 3600.0))
+      return invalidArgument("--bias-instability must be a rate in 0 .. 3600 deg/h (the IMU's bias instability, "
+                             "1 sigma, from its static noise test)");
+    options.biasInstabilityDegPerH = v;
+  }
+  if (args.has("bias-correlation")) {
+    FOG_ASSIGN_OR_RETURN(const double v, args.number("bias-correlation", 0.0));
+    if (!(v >= 1.0 && v <= 1e6))
+      return invalidArgument("--bias-correlation must be a time in 1 .. 1e6 s (the bias instability's correlation time)");
+    if (!options.biasInstabilityDegPerH)
+      return invalidArgument("--bias-correlation needs --bias-instability: state the IMU's bias instability with it");
+    options.biasCorrelationS = v;
+  }
+  return Status::ok();
+}
+
 }  // namespace
 
 int diagnoseCommand(CliArguments& args) {
@@ -33,6 +54,8 @@ int diagnoseCommand(CliArguments& args) {
   auto threads = wholeNumber(args, "threads", 2, 1, 256);
   if (!seeds) return fail(seeds.status(), 2);
   if (!threads) return fail(threads.status(), 2);
+  diagnosis::DiagnosisOptions options;
+  if (Status s = readBiasInstability(args, options); !s.isOk()) return fail(s, 2);
   if (args.positionals().size() != 1) {
     (void)args.checkAllUsed();
     return fail(invalidArgument("diagnose needs exactly one SESSION.fbs or raw stream FILE"), 2);
@@ -71,7 +94,6 @@ int diagnoseCommand(CliArguments& args) {
     recording = std::move(*rec);
     constants = *c;
   }
-  diagnosis::DiagnosisOptions options;
   options.monteCarloSeeds = *seeds;
   options.threads = *threads;
   auto d = diagnosis::diagnose(recording, haveInfo ? &info : nullptr, constants, options);

@@ -86,9 +86,12 @@ usage:
                       [--language en|zh_CN] [constants]
       The calibration report (docs/report.md): PASS when every validity check passes
       and IMU delay + 2 sigma < limit; a session brings its own identity and constants.
-  fogbench-cli diagnose SESSION.fbs|FILE.bin [--json] [--seeds K] [--threads T] [constants]
+  fogbench-cli diagnose SESSION.fbs|FILE.bin [--json] [--seeds K] [--threads T]
+                        [--bias-instability DEG_H [--bias-correlation S]] [constants]
       Sim-to-real gap diagnosis (docs/diagnosis.md): where real and simulated data
       differ, which effect explains it, held-out shrink, alias groups, verdict.
+      The IMU's bias instability (its static noise test) sharpens the gyro-trend
+      test; unstated, 0.5 deg/h over 300 s is assumed.
   fogbench-cli bench-diagnosis [--trials N] [--seed S] [--threads T]
       Blind check of the diagnosis on sessions with withheld effects.
   fogbench-cli noise SESSION.fbs|FILE.bin [--json] [--axis x|y|z] [--taus-per-octave N]

@@ -1,6 +1,8 @@
 #include "ui/diagnosis_view.h"
 
+#include <QCheckBox>
 #include <QComboBox>
+#include <QDoubleSpinBox>
 #include <QFontDatabase>
 #include <QGridLayout>
 #include <QHBoxLayout>
@@ -8,6 +10,7 @@
 #include <QPlainTextEdit>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QSettings>
 #include <QSplitter>
 #include <QStackedWidget>
 #include <QVBoxLayout>
@@ -103,6 +106,56 @@ DiagnosisView::DiagnosisView(QWidget* parent) : QWidget(parent) {
   pointCombo_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
   top->addWidget(pointCombo_);
   layout->addLayout(top);
+
+  // What the replays take for the IMU's bias instability: one recording
+  // cannot tell a wander of the bias from a drift or step, so the operator
+  // states it from the IMU's static noise test (Noise view).
+  auto* noiseRow = new QHBoxLayout();
+  const model::FogParams nominal;
+  QSettings settings;
+  settings.beginGroup("diagnosis");
+  noiseStated_ = new QCheckBox(tr("IMU bias instability known:"));
+  noiseStated_->setObjectName("noiseStatedBox");
+  noiseStated_->setChecked(settings.value("bias_instability_stated", false).toBool());
+  noiseStated_->setToolTip(tr("The IMU's bias instability from its static noise test (Noise view: Markov sigma and "
+                              "correlation time). Unchecked, the diagnosis assumes %1 °/h over %2 s, and a bias drift "
+                              "or step smaller than such a wander is not resolved.")
+                               .arg(nominal.biasInstabilityDegPerH)
+                               .arg(nominal.biasCorrelationS));
+  instability_ = new QDoubleSpinBox();
+  instability_->setObjectName("instabilitySpin");
+  instability_->setRange(0.0, 3600.0);
+  instability_->setDecimals(4);
+  instability_->setSuffix(tr(" °/h"));
+  instability_->setValue(settings.value("bias_instability_deg_h", nominal.biasInstabilityDegPerH).toDouble());
+  correlation_ = new QDoubleSpinBox();
+  correlation_->setObjectName("correlationSpin");
+  correlation_->setRange(1.0, 1e6);
+  correlation_->setDecimals(0);
+  correlation_->setPrefix(tr("over "));
+  correlation_->setSuffix(tr(" s"));
+  correlation_->setValue(settings.value("bias_correlation_s", nominal.biasCorrelationS).toDouble());
+  auto enable = [this](bool on) {
+    instability_->setEnabled(on);
+    correlation_->setEnabled(on);
+  };
+  enable(noiseStated_->isChecked());
+  connect(noiseStated_, &QCheckBox::toggled, this, enable);
+  auto remember = [this] {
+    QSettings q;
+    q.beginGroup("diagnosis");
+    q.setValue("bias_instability_stated", noiseStated_->isChecked());
+    q.setValue("bias_instability_deg_h", instability_->value());
+    q.setValue("bias_correlation_s", correlation_->value());
+  };
+  connect(noiseStated_, &QCheckBox::toggled, this, remember);
+  connect(instability_, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, remember);
+  connect(correlation_, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, remember);
+  noiseRow->addWidget(noiseStated_);
+  noiseRow->addWidget(instability_);
+  noiseRow->addWidget(correlation_);
+  noiseRow->addStretch(1);
+  layout->addLayout(noiseRow);
 
   // Progress of a running diagnosis, with Cancel.
   progressRow_ = new QWidget();
@@ -239,6 +292,12 @@ void DiagnosisView::showPlaceholder(const QString& text) {
   // Test points only with a result.
   pointLabel_->hide();
   pointCombo_->hide();
+}
+
+void DiagnosisView::applyStatedNoise(diagnosis::DiagnosisOptions& options) const {
+  if (!noiseStated_->isChecked()) return;
+  options.biasInstabilityDegPerH = instability_->value();
+  options.biasCorrelationS = correlation_->value();
 }
 
 void DiagnosisView::startDiagnosis(const QString& title) {

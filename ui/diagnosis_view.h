@@ -15,7 +15,9 @@
 
 #include "core/diagnosis/diagnosis.h"
 
+class QCheckBox;
 class QComboBox;
+class QDoubleSpinBox;
 class QLabel;
 class QPlainTextEdit;
 class QProgressBar;
@@ -53,6 +55,14 @@ class DiagnosisView : public QWidget {
 
   QProgressBar* progressBar() const { return progress_; }
   QPushButton* cancelButton() const { return cancel_; }
+  // The IMU's bias instability as the operator stated it (its static noise
+  // test) into the options of the next diagnosis; unstated, the options keep
+  // the simulator's default. Remembered between runs (QSettings, group
+  // "diagnosis").
+  void applyStatedNoise(diagnosis::DiagnosisOptions& options) const;
+  QCheckBox* noiseStatedBox() const { return noiseStated_; }
+  QDoubleSpinBox* instabilitySpin() const { return instability_; }
+  QDoubleSpinBox* correlationSpin() const { return correlation_; }
   QString stageShown() const;
   // The plots are shown (only with a result).
   bool plotsShown() const;
@@ -90,6 +100,9 @@ class DiagnosisView : public QWidget {
   QLabel* verdict_ = nullptr;
   QLabel* pointLabel_ = nullptr;
   QComboBox* pointCombo_ = nullptr;
+  QCheckBox* noiseStated_ = nullptr;
+  QDoubleSpinBox* instability_ = nullptr;
+  QDoubleSpinBox* correlation_ = nullptr;
   QwtPlot* curvePlot_ = nullptr;
   QwtPlot* gapMapPlot_ = nullptr;
   QwtPlot* spectrumPlot_ = nullptr;

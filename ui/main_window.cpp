@@ -1003,6 +1003,7 @@ void MainWindow::diagnoseShown() {
     Status status;
   };
   diagnosis::DiagnosisOptions options;
+  diagnosisView_->applyStatedNoise(options);
   // Called on the diagnosis' threads, one call at a time: posted to the GUI
   // thread, never waited for. (The window waits for a running diagnosis
   // before it goes, so `this` outlives every call.)

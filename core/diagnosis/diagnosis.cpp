@@ -675,6 +675,18 @@ Result<CalibratedReplay> calibrate(const AnalysedSession& session, const Session
   c.turntable.frequencyErrorPpm = std::clamp(cal.tableFrequencyErrorPpm, -999.0, 999.0);
   cal.arwDegPerSqrtH = median(arw);
   c.fog.arwDegPerSqrtH = cal.arwDegPerSqrtH;
+  // The bias instability is the IMU's, from its static noise test: within one
+  // recording a wander of the bias and a drift or step look alike.
+  if (options.biasInstabilityDegPerH) c.fog.biasInstabilityDegPerH = *options.biasInstabilityDegPerH;
+  if (options.biasCorrelationS) c.fog.biasCorrelationS = *options.biasCorrelationS;
+  cal.biasInstabilityDegPerH = c.fog.biasInstabilityDegPerH;
+  cal.biasCorrelationS = c.fog.biasCorrelationS;
+  cal.biasInstabilityStated = options.biasInstabilityDegPerH.has_value();
+  if (!cal.biasInstabilityStated)
+    notes.push_back("bias instability " + fmt("%.3g", cal.biasInstabilityDegPerH) + " deg/h over " +
+                    fmt("%.0f", cal.biasCorrelationS) +
+                    " s assumed (the simulator's default): a bias drift or step within such a wander is not "
+                    "resolved; state the IMU's own (its static noise test) for a sharper test of the gyro trends");
   cal.lagMs = lagSum / wsum;
   setLag(c, cal.lagMs * 1e-3, notes);
 
@@ -1501,7 +1513,10 @@ std::string formatDiagnosisJson(const Diagnosis& d) {
                       {"imu_period_ms", c.config.imuBoard.framePeriodS * 1e3},
                       {"encoder_noise_deg", c.encoderNoiseDeg},
                       {"arw_deg_sqrt_h", c.arwDegPerSqrtH},
-                      {"bias_deg_h", c.biasDegPerH}};
+                      {"bias_deg_h", c.biasDegPerH},
+                      {"bias_instability_deg_h", c.biasInstabilityDegPerH},
+                      {"bias_correlation_s", c.biasCorrelationS},
+                      {"bias_instability_stated", c.biasInstabilityStated}};
   json cells = json::array();
   for (const auto& g : d.gapMap)
     cells.push_back({{"channel", channelName(g.key.channel)}, {"quantity", quantityName(g.key)}, {"unit", unitName(g.key.unit)},
@@ -1525,10 +1540,11 @@ std::string formatDiagnosisText(const Diagnosis& d) {
   std::snprintf(b, sizeof b,
                 "  replay calibrated to: lag %.4f ms, table frequency %+.2f ppm, encoder noise %.2g deg, ARW %.4f "
                 "deg/sqrt(h), bias %+.3f/%+.3f/%+.3f deg/h,\n  heading %.1f +- %.1f deg, "
-                "table every %.4f ms, IMU every %.4f ms\n",
+                "table every %.4f ms, IMU every %.4f ms, bias instability %.3g deg/h over %.0f s (%s)\n",
                 c.lagMs, c.tableFrequencyErrorPpm, c.encoderNoiseDeg, c.arwDegPerSqrtH, c.biasDegPerH[0],
                 c.biasDegPerH[1], c.biasDegPerH[2], c.headingDeg, c.headingStdDeg, c.config.encoder.samplePeriodS * 1e3,
-                c.config.imuBoard.framePeriodS * 1e3);
+                c.config.imuBoard.framePeriodS * 1e3, c.biasInstabilityDegPerH, c.biasCorrelationS,
+                c.biasInstabilityStated ? "stated" : "assumed");
   s += b;
   s += "\nTiming audit            real                         replay\n";
   auto line = [&](const char* name, const StreamTiming& r, const StreamTiming& m) {

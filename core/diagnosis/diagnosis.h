@@ -61,6 +61,15 @@ struct DiagnosisOptions {
   double channelWorsening = 25.0;
   int refineTop = 3;         // effects re-evaluated on the exact forward model
   bool allowPairs = true;
+  // The IMU's bias instability, a first-order Gauss-Markov rate (1 sigma,
+  // deg/h, and its correlation time, s), as its static noise test measured
+  // it (the Noise view). The replays carry it, so it sets how far the gyro
+  // trend cells may wander by chance. One recording cannot tell such a
+  // wander from a bias drift or step, so it is not calibrated from the
+  // session; unset, the replays assume the simulator's default (0.5 deg/h
+  // over 300 s) and the diagnosis says so in its notes.
+  std::optional<double> biasInstabilityDegPerH;
+  std::optional<double> biasCorrelationS;
   // Progress and cancellation, for a GUI. Called from diagnose()'s own
   // threads, one call at a time (never concurrently), at least once per
   // replay (~0.1-0.5 s apart): `fraction` of the work done, in [0, 1] and
@@ -79,6 +88,10 @@ struct Calibration {
   double encoderNoiseDeg = 0.0;
   double arwDegPerSqrtH = 0.0;
   std::array<double, kAxisCount> biasDegPerH{};  // at the calibrated heading
+  // The replays' bias instability (DiagnosisOptions) and whether the user
+  // stated it (false: the simulator's default was assumed).
+  double biasInstabilityDegPerH = 0.0, biasCorrelationS = 0.0;
+  bool biasInstabilityStated = false;
   // The table's heading as the Earth rate in the gyros shows it (sessions do
   // not state it), with its standard error.
   double headingDeg = 0.0;

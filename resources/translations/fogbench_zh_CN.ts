@@ -667,12 +667,37 @@ counter %5 MHz / %6 bit</source>
 <context>
     <name>fog::ui::DiagnosisView</name>
     <message>
-        <location filename="../../ui/diagnosis_view.cpp" line="+99"/>
+        <location filename="../../ui/diagnosis_view.cpp" line="+102"/>
         <source>Test point</source>
         <translation>测试点</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+15"/>
+        <source>IMU bias instability known:</source>
+        <translation>已知 IMU 零偏不稳定性：</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The IMU&apos;s bias instability from its static noise test (Noise view: Markov sigma and correlation time). Unchecked, the diagnosis assumes %1 °/h over %2 s, and a bias drift or step smaller than such a wander is not resolved.</source>
+        <translation>IMU 静态噪声测试得到的零偏不稳定性（噪声视图：马尔可夫 σ 与相关时间）。不勾选时，诊断假定 %1 °/h、相关时间 %2 s，小于这种漂移的零偏漂移或阶跃无法分辨。</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source> °/h</source>
+        <translation> °/h</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>over </source>
+        <translation>相关时间 </translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <location line="+39"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
@@ -777,7 +802,7 @@ counter %5 MHz / %6 bit</source>
         <translation>得出结论</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+26"/>
         <source>starting …</source>
         <translation>正在开始 …</translation>
     </message>
@@ -1186,12 +1211,12 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+864"/>
+        <location line="+865"/>
         <source>Diagnosis</source>
         <translation>诊断</translation>
     </message>
     <message>
-        <location line="-861"/>
+        <location line="-862"/>
         <source>Noise</source>
         <translation>噪声</translation>
     </message>
@@ -1758,7 +1783,7 @@ File: %1</source>
         <translation>%1：显示第 %2 个结果（共 %3 个）</translation>
     </message>
     <message>
-        <location line="+186"/>
+        <location line="+187"/>
         <source>Compare %1</source>
         <translation>比较 %1</translation>
     </message>
@@ -1768,7 +1793,7 @@ File: %1</source>
         <translation>无法读取该会话（见消息）</translation>
     </message>
     <message>
-        <location line="-198"/>
+        <location line="-199"/>
         <source>%1 re-analysed</source>
         <translation>%1 已重新分析</translation>
     </message>
@@ -1824,7 +1849,7 @@ File: %1</source>
         <translation>正在诊断 %1 …</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+28"/>
         <source>Diagnosis of %1 cancelled</source>
         <translation>%1 的诊断已取消</translation>
     </message>
@@ -2204,7 +2229,7 @@ File: %1</source>
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../../ui/main_window.cpp" line="-1006"/>
+        <location filename="../../ui/main_window.cpp" line="-1007"/>
         <location filename="../../ui/plan_editor.cpp" line="-300"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
@@ -4191,13 +4216,23 @@ File: %1</source>
     </message>
     <message>
         <location line="+1"/>
-        <source>heading %1 +- %2 deg, table every %3 ms, IMU every %4 ms</source>
-        <translation>航向 %1 ± %2 deg，转台每 %3 ms、IMU 每 %4 ms 一个样本</translation>
+        <source>heading %1 +- %2 deg, table every %3 ms, IMU every %4 ms, bias instability %5 deg/h over %6 s (%7)</source>
+        <translation>航向 %1 ± %2 deg，转台每 %3 ms、IMU 每 %4 ms 一个样本，零偏不稳定性 %5 deg/h、相关时间 %6 s（%7）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>stated</source>
+        <translation>已给定</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>assumed</source>
+        <translation>假定值</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Timing audit real replay</source>
-        <translation>时序审核　　　　　　实测　　　　　　　　　回放</translation>
+        <translation>时序审核&#x3000;&#x3000;&#x3000;&#x3000;&#x3000;&#x3000;实测&#x3000;&#x3000;&#x3000;&#x3000;&#x3000;&#x3000;&#x3000;&#x3000;&#x3000;回放</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -4212,12 +4247,12 @@ File: %1</source>
     <message>
         <location line="+1"/>
         <source>Gap per channel (rms z; 1 = within the simulator&apos;s spread) before after held-out shrink</source>
-        <translation>各通道差异（z 的均方根；1 = 在仿真离散度之内）　之前　之后　留出数据缩减</translation>
+        <translation>各通道差异（z 的均方根；1 = 在仿真离散度之内）&#x3000;之前&#x3000;之后&#x3000;留出数据缩减</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>%1 %2 cells %3 %4 %5 %</source>
-        <translation>%1 %2 格　%3 %4 %5 %</translation>
+        <translation>%1 %2 格&#x3000;%3 %4 %5 %</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -4237,12 +4272,12 @@ File: %1</source>
     <message>
         <location line="+1"/>
         <source>%1 score %2 held-out shrink %3 % KEPT %4</source>
-        <translation>%1 得分 %2　留出缩减 %3 %　保留　%4</translation>
+        <translation>%1 得分 %2&#x3000;留出缩减 %3 %&#x3000;保留&#x3000;%4</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>%1 score %2 held-out shrink %3 % %4</source>
-        <translation>%1 得分 %2　留出缩减 %3 %　%4</translation>
+        <translation>%1 得分 %2&#x3000;留出缩减 %3 %&#x3000;%4</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -4781,6 +4816,11 @@ File: %1</source>
     </message>
     <message>
         <location line="+1"/>
+        <source>bias instability %1 deg/h over %2 s assumed (the simulator&apos;s default): a bias drift or step within such a wander is not resolved; state the IMU&apos;s own (its static noise test) for a sharper test of the gyro trends</source>
+        <translation>假定零偏不稳定性 %1 deg/h、相关时间 %2 s（仿真器默认值）：在这种漂移范围内的零偏漂移或阶跃无法分辨；给出该 IMU 自身的值（其静态噪声测试）可更严格地检验陀螺趋势</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>ran on %1 of the %2 threads asked for, to stay within the %3 MB memory limit</source>
         <translation>为不超过 %3 MB 的内存限制，只用了所要求的 %2 个线程中的 %1 个</translation>
     </message>
@@ -4852,12 +4892,12 @@ File: %1</source>
     <message>
         <location line="+1"/>
         <source>%1 period %2 (nominal) ms phase %3 ± %4 ms amplitude %5 deg</source>
-        <translation>%1　周期 %2（标称）ms　相位 %3 ± %4 ms　幅值 %5 deg</translation>
+        <translation>%1&#x3000;周期 %2（标称）ms&#x3000;相位 %3 ± %4 ms&#x3000;幅值 %5 deg</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>%1 period %2 ± %3 ms phase %4 ± %5 ms amplitude %6 deg</source>
-        <translation>%1　周期 %2 ± %3 ms　相位 %4 ± %5 ms　幅值 %6 deg</translation>
+        <translation>%1&#x3000;周期 %2 ± %3 ms&#x3000;相位 %4 ± %5 ms&#x3000;幅值 %6 deg</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -4892,7 +4932,7 @@ File: %1</source>
     <message>
         <location line="+1"/>
         <source>measured lag (gyro behind table) %1 ± %2 ms (CRLB %3 ms, std/CRLB %4)</source>
-        <translation>测得滞后（陀螺落后于转台）　%1 ± %2 ms（CRLB %3 ms，标准差/CRLB %4）</translation>
+        <translation>测得滞后（陀螺落后于转台）&#x3000;%1 ± %2 ms（CRLB %3 ms，标准差/CRLB %4）</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -4922,22 +4962,22 @@ File: %1</source>
     <message>
         <location line="+1"/>
         <source>+ table read delay %1 ms</source>
-        <translation>+ 转台读数延迟　　　%1 ms</translation>
+        <translation>+ 转台读数延迟&#x3000;&#x3000;&#x3000;%1 ms</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>= IMU delay %1 ± %2 ms</source>
-        <translation>= IMU 延迟　　　　　%1 ± %2 ms</translation>
+        <translation>= IMU 延迟&#x3000;&#x3000;&#x3000;&#x3000;&#x3000;%1 ± %2 ms</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>- processing board delay %1 ms</source>
-        <translation>− 处理板延迟　　　　%1 ms</translation>
+        <translation>− 处理板延迟&#x3000;&#x3000;&#x3000;&#x3000;%1 ms</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>= gyro&apos;s own delay %1 ± %2 ms</source>
-        <translation>= 陀螺自身延迟　　　%1 ± %2 ms</translation>
+        <translation>= 陀螺自身延迟&#x3000;&#x3000;&#x3000;%1 ± %2 ms</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -4977,17 +5017,17 @@ File: %1</source>
     <message>
         <location line="+1"/>
         <source>ok %1: %2</source>
-        <translation>通过　%1：%2</translation>
+        <translation>通过&#x3000;%1：%2</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>FAILED %1: %2</source>
-        <translation>未通过　%1：%2</translation>
+        <translation>未通过&#x3000;%1：%2</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>n/a %1: %2</source>
-        <translation>未判定　%1：%2</translation>
+        <translation>未判定&#x3000;%1：%2</translation>
     </message>
     <message>
         <location line="+1"/>

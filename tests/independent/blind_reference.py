@@ -6,7 +6,10 @@ shared with core/model), imported with `fogbench-cli import` and diagnosed
 blind with `fogbench-cli diagnose --json`. Every session varies what a real
 bench varies: IMU crystal +-50 ppm, table rate +-20 ppm, the non-swinging
 azimuth (z) at any angle, ARW and pulse / encoder quanta up to 2x off the
-defaults, latitude 20..60 deg and any heading, biases, the IMU delay.
+defaults, latitude 20..60 deg and any heading, biases, the IMU delay, a
+bias instability of 0.01..0.2 deg/h over 100..600 s. The diagnosis is told
+the bias instability as a static noise test would state it, each figure
+within a factor sqrt(2) of the truth (--bias-instability, --bias-correlation).
 
 Trial kinds, interleaved (of every 20): 12 one library effect at 3..10x its
 detection threshold, 3 none, 2 two effects at once, 3 outside the library
@@ -86,7 +89,16 @@ def nominal(rng, plan):
         "heading_deg": float(rng.uniform(0, 360)),
         "bias_deg_h": [float(x) for x in rng.uniform(-1, 1, 3)],
         "imu_delay_ms": float(rng.uniform(0.4, 0.7)),
+        "bias_instability_deg_h": float(0.01 * 20 ** rng.uniform()),
+        "bias_correlation_s": float(rng.uniform(100, 600)),
     }
+
+
+def stated_noise(rng, params):
+    """The bias instability the diagnosis is told, as a static noise test
+    would state it: each figure within a factor sqrt(2) of the truth."""
+    return {"instability": params["bias_instability_deg_h"] * 2 ** rng.uniform(-0.5, 0.5),
+            "correlation": params["bias_correlation_s"] * 2 ** rng.uniform(-0.5, 0.5)}
 
 
 def run(cmd):
@@ -96,12 +108,14 @@ def run(cmd):
     return p.stdout
 
 
-def diagnose(cli, params, work, name):
+def diagnose(cli, params, work, name, stated):
     d = os.path.join(work, name)
     refgen.write_dir(refgen.generate(params), d, overwrite=True)
     session = d + ".fbs"
     run([cli, "import", d, "--out", session])
-    out = json.loads(run([cli, "diagnose", session, "--json", "--threads", "1"]))
+    out = json.loads(run([cli, "diagnose", session, "--json", "--threads", "1",
+                          "--bias-instability", "%.6g" % stated["instability"],
+                          "--bias-correlation", "%.6g" % stated["correlation"]]))
     for f in os.listdir(d):
         os.remove(os.path.join(d, f))
     os.rmdir(d)
@@ -161,8 +175,9 @@ def trial(cli, plan, seed, t, th, work):
             params["decay_tau_s"] = float(rng.uniform(150, 400))
         else:
             params["amp_drift_per_s"] = -float(rng.uniform(0.1, 0.3)) / 60.0
+    stated = stated_noise(rng, params)
     start = time.time()
-    d = diagnose(cli, params, work, "trial-%d" % t)
+    d = diagnose(cli, params, work, "trial-%d" % t, stated)
     ranked = [e["name"] for e in d["effects"]]
     best = next((e for e in d["effects"] if e["name"] == d["verdict"]), None)
     return {"trial": t, "kind": kind, "truth": truth, "values": values, "verdict": d["verdict"],
@@ -208,8 +223,9 @@ def main(argv=None):
         clean = refgen.default_params()
         clean.update(nominal(np.random.default_rng([a.seed, 0]), a.plan))
         clean.update({"seed": a.seed, "imu_clock_ppm": 0.0, "table_freq_error_ppm": 0.0, "fixed_angles_deg": [0, 0, 0],
-                      "arw_deg_sqrt_h": 0.004, "pulse_arcsec": 0.18, "encoder_arcsec": 0.36})
-        th = thresholds_from(diagnose(a.cli, clean, work, "clean"))
+                      "arw_deg_sqrt_h": 0.004, "pulse_arcsec": 0.18, "encoder_arcsec": 0.36,
+                      "bias_instability_deg_h": 0.05, "bias_correlation_s": 300.0})
+        th = thresholds_from(diagnose(a.cli, clean, work, "clean", {"instability": 0.05, "correlation": 300.0}))
         results = []
         with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, a.jobs)) as pool:
             futures = [pool.submit(trial, a.cli, a.plan, a.seed, t, th, work) for t in range(a.trials)]

@@ -137,6 +137,11 @@ def default_params():
         "bias_deg_h": [1.0, 1.0, 1.0],
         "bias_step_deg_h": [0.0, 0.0, 0.0],
         "bias_step_time_s": math.inf,
+        # Bias instability: a first-order Gauss-Markov rate per gyro, 1 sigma
+        # and correlation time, stationary from before the first instant
+        # (exact AR(1) steps of at most 0.1 s, linear between them).
+        "bias_instability_deg_h": 0.0,
+        "bias_correlation_s": 300.0,
         "arw_deg_sqrt_h": 0.005,
         "pulse_arcsec": 0.18,
         "imu_period_ms": 2.0,
@@ -571,6 +576,28 @@ def _grid(start, period, n):
     return start + n * period
 
 
+def gauss_markov(p, start, end):
+    """The bias instability on a grid from start to end: (times, rates in
+    deg/s per gyro), or None when there is none. Its own random stream, so a
+    session without it is the same as before it existed."""
+    sigma = p["bias_instability_deg_h"] / 3600.0
+    if sigma <= 0.0:
+        return None
+    tau = p["bias_correlation_s"]
+    if not tau > 0.0:
+        raise ValueError("bias_correlation_s must be > 0")
+    h = min(0.1, tau / 50.0)
+    n = int(math.ceil((end - start) / h)) + 1
+    rng = np.random.default_rng([int(p["seed"]), 0xB1A5])
+    phi = math.exp(-h / tau)
+    kicks = rng.normal(0.0, sigma * math.sqrt(1.0 - phi * phi), (n, 3))
+    x = np.empty((n, 3))
+    x[0] = rng.normal(0.0, sigma, 3)
+    for k in range(1, n):
+        x[k] = phi * x[k - 1] + kicks[k]
+    return start + h * np.arange(n), x
+
+
 def generate(params, chunk_frames=5000):
     """Runs the model; returns a dict of arrays (true and written values)."""
     p = resolve(params)
@@ -613,6 +640,7 @@ def generate(params, chunk_frames=5000):
     sign = np.array(p["gyro_sign"], dtype=float)
     bias = np.array(p["bias_deg_h"]) / 3600.0
     bstep = np.array(p["bias_step_deg_h"]) / 3600.0
+    wander = gauss_markov(p, t0 - p["_gyro_offset_s"] - 1.0, t_end + 1.0)
     arw_step = p["arw_deg_sqrt_h"] / 60.0 * math.sqrt(dt)   # deg per fine step
     pe = p["pulse_arcsec"] * ARCSEC
 
@@ -654,6 +682,9 @@ def generate(params, chunk_frames=5000):
         out = w * sign + bias
         if np.any(bstep):
             out = out + np.where((tf >= p["bias_step_time_s"])[:, None], bstep, 0.0)
+        if wander is not None:
+            grid, values = wander
+            out = out + np.stack([np.interp(tf, grid, values[:, a]) for a in range(3)], axis=1)
         return out
 
     prev_rate = measured_rate(np.array([t_first]))[0]
@@ -736,6 +767,7 @@ def generate(params, chunk_frames=5000):
         "table_true": tab_true,
         "table_deg": tab_meas,
         "frame_t_true": frame_t,
+        "bias_wander": wander,            # None, or (times, deg/s per gyro)
         "frame_stamp": stamp,
         "frame_theta": theta_out,
         "frame_pulses": inc_pulses,

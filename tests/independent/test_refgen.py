@@ -299,6 +299,36 @@ class Defects(unittest.TestCase):
         r2 = np.polyfit(t[(t > 7.1) & (t < 12)], th[(t > 7.1) & (t < 12)], 1)[0]
         self.assertAlmostEqual((r2 - r1) * 3600.0, 36.0, delta=1e-6)
 
+    def test_bias_instability_statistics(self):
+        # stationary Gauss-Markov: variance sigma^2, autocorrelation exp(-lag/tau)
+        p = refgen.resolve(quiet(bias_instability_deg_h=36.0, bias_correlation_s=10.0))
+        t, x = refgen.gauss_markov(p, 0.0, 20000.0)
+        self.assertAlmostEqual(t[1] - t[0], 0.1, places=12)
+        self.assertAlmostEqual(np.std(x) * 3600.0 / 36.0, 1.0, delta=0.04)
+        k = 100  # one correlation time
+        r = np.mean([np.corrcoef(x[:-k, a], x[k:, a])[0, 1] for a in range(3)])
+        self.assertAlmostEqual(r, math.exp(-1.0), delta=0.04)
+
+    def test_bias_instability_reaches_the_gyros(self):
+        # the wander is added to the measured rate: the angle difference to
+        # the same session without it is the wander's integral
+        seg = [{"axis": "x", "freq_hz": 1.0, "amp_deg": 0.0, "duration_s": 12.0}]
+        base = refgen.generate(quiet(segments=seg))
+        p = quiet(segments=seg, bias_instability_deg_h=360.0, bias_correlation_s=5.0)
+        res = refgen.generate(p)
+        t = res["frame_t_true"]
+        grid, w = res["bias_wander"]
+        self.assertLess(grid[0], t[0])
+        self.assertGreater(grid[-1], t[-1])
+        fine = np.linspace(t[0], t[-1], 200001)
+        wf = np.interp(fine, grid, w[:, 1])
+        expect = np.concatenate([[0.0], np.cumsum(0.5 * (wf[1:] + wf[:-1]) * np.diff(fine))])
+        got = res["frame_theta"][:, 1] - base["frame_theta"][:, 1]
+        got -= got[0]
+        pe = p.get("pulse_arcsec", 0.18) / 3600.0
+        self.assertLess(np.max(np.abs(got - np.interp(t, fine, expect))), 2 * pe + 1e-9)
+        self.assertGreater(np.max(np.abs(got)), 100 * pe)
+
     def test_arw_level(self):
         # increments' scatter from ARW: std = ARW/60 * sqrt(frame period)
         p = quiet(arw_deg_sqrt_h=0.5, segments=[{"axis": "x", "freq_hz": 1.0, "amp_deg": 0.0,

@@ -4,6 +4,7 @@
 // session from the browser, re-analyse and export.
 
 #include <QAction>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDir>
 #include <QHeaderView>
@@ -770,6 +771,19 @@ class BenchUiTest : public QObject {
       values.push_back(v);
       stages << view->stageShown();
     });
+    // The IMU's bias instability, stated (the simulator's own: 0.5 deg/h
+    // over 300 s), goes to the diagnosis and is remembered.
+    QVERIFY(!view->noiseStatedBox()->isChecked() && !view->instabilitySpin()->isEnabled());
+    view->noiseStatedBox()->setChecked(true);
+    QVERIFY(view->instabilitySpin()->isEnabled());
+    view->instabilitySpin()->setValue(0.5);
+    view->correlationSpin()->setValue(300.0);
+    {
+      fog::ui::DiagnosisView again;
+      QVERIFY(again.noiseStatedBox()->isChecked());
+      QCOMPARE(again.instabilitySpin()->value(), 0.5);
+      QCOMPARE(again.correlationSpin()->value(), 300.0);
+    }
     click(*w, "diagnoseButton");
     // Running: the bar, Cancel, and no plots (no empty default axes).
     QCOMPARE(view->state(), fog::ui::DiagnosisView::State::kRunning);
@@ -790,6 +804,9 @@ class BenchUiTest : public QObject {
     const auto* d = w->diagnosisView()->diagnosis();
     QVERIFY(d);
     QCOMPARE(QString::fromStdString(d->verdict), QString("scale_factor_error"));
+    QVERIFY(d->calibration.biasInstabilityStated);
+    QCOMPARE(d->calibration.biasInstabilityDegPerH, 0.5);
+    QCOMPARE(d->calibration.biasCorrelationS, 300.0);
     QVERIFY(w->diagnosisView()->verdictText().contains("scale_factor_error"));
     QVERIFY(w->diagnosisView()->gapMapRows() > 10);
     QVERIFY(w->diagnosisView()->gapMapColumns() >= 1);
