@@ -183,6 +183,8 @@ def trial(cli, plan, seed, t, th, work):
     return {"trial": t, "kind": kind, "truth": truth, "values": values, "verdict": d["verdict"],
             "verdict_effects": d["verdict_effects"], "top3": ranked[:3], "reason": d["verdict_reason"],
             "shrink": best["heldout_shrink"] if best else None, "heading_true": params["heading_deg"],
+            "fitted": {e["name"]: [[q["value"], q["std"]] for q in e["parameters"].values()]
+                       for e in d["effects"] if e["name"] in truth},
             "heading": d["calibration"].get("heading_deg"), "seconds": time.time() - start}
 
 

@@ -208,6 +208,7 @@ class BenchUiTest : public QObject {
   }
   std::unique_ptr<MainWindow> window() {
     QSettings().remove("state");  // each test starts from the defaults
+    QSettings().remove("diagnosis");
     auto w = std::make_unique<MainWindow>();
     w->setSessionFolder(sessions_.path());
     w->resize(1400, 900);
