@@ -1469,6 +1469,8 @@ std::string formatDiagnosisJson(const Diagnosis& d) {
   json effects = json::array();
   for (const auto& e : d.effects) {
     json params = json::object();
+    json order = json::array();  // the library's order (an object's keys have none)
+    for (std::size_t p = 0; p < e.parameters.size(); ++p) order.push_back(e.parameters[p].name);
     for (std::size_t p = 0; p < e.parameters.size(); ++p)
       params[e.parameters[p].name] = {{"value", e.values[p]},
                                       {"std", e.standardErrors[p]},
@@ -1480,6 +1482,7 @@ std::string formatDiagnosisJson(const Diagnosis& d) {
     effects.push_back({{"name", e.name},
                        {"description", e.description},
                        {"parameters", params},
+                       {"parameter_order", order},
                        {"heldout_shrink", e.heldOutShrink},
                        {"heldout_shrink_per_channel", per},
                        {"score", e.score ? json(*e.score) : json(nullptr)},  // null: no signature

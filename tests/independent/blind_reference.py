@@ -123,10 +123,16 @@ def diagnose(cli, params, work, name, stated):
     return out
 
 
+def ordered_parameters(effect):
+    """An effect's parameters in the library's order (the order MAKERS take
+    their values in; the JSON object's keys are sorted by name)."""
+    return [effect["parameters"][name] for name in effect["parameter_order"]]
+
+
 def thresholds_from(diag):
     th = {}
     for e in diag["effects"]:
-        th[e["name"]] = [p["detection_threshold"] for p in e["parameters"].values()]
+        th[e["name"]] = [p["detection_threshold"] for p in ordered_parameters(e)]
     return th
 
 
@@ -183,7 +189,7 @@ def trial(cli, plan, seed, t, th, work):
     return {"trial": t, "kind": kind, "truth": truth, "values": values, "verdict": d["verdict"],
             "verdict_effects": d["verdict_effects"], "top3": ranked[:3], "reason": d["verdict_reason"],
             "shrink": best["heldout_shrink"] if best else None, "heading_true": params["heading_deg"],
-            "fitted": {e["name"]: [[q["value"], q["std"]] for q in e["parameters"].values()]
+            "fitted": {e["name"]: [[q["value"], q["std"]] for q in ordered_parameters(e)]
                        for e in d["effects"] if e["name"] in truth},
             "heading": d["calibration"].get("heading_deg"), "seconds": time.time() - start}
 
