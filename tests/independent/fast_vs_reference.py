@@ -14,6 +14,16 @@ sees, fitted here in numpy the same way for both recordings:
               the table angle, ppm of its amplitude
   h2_*        second harmonic of each gyro, ppm of the table amplitude
   trend_*     each gyro's mean rate, deg/h
+  ramp_*      each gyro's rate ramp, deg/h per min
+  table_h2_*, table_h3_*
+              the table angle's 2nd and 3rd harmonics, in phase and in
+              quadrature with its fundamental, ppm of its amplitude
+
+The effects of the diagnosis' library that act on the motion, the rate or
+the encoder are cases too, each in both simulators at a size the figures
+resolve; timestamp jitter and dropped frames are random and clock drift is
+a matter of the time origin, so the blind check (blind_reference.py)
+covers those.
 
 Every figure must agree within the case's tolerance (docs/simulator.md gives
 the table of tolerances and measured differences). Exit status 1 on any
@@ -66,6 +76,36 @@ CASES = {
     "g_sensitivity": dict(
         what="g-sensitivity 50 deg/h/g along each gyro: X swing 0.1 Hz / 10 deg about 20 deg, Y at -15",
         axis="x", f=0.1, a=10.0, d=60.0, pos=[20, -15, 0], lat=40.0, heading=0.0, gsens=50.0),
+    # The library's other effects: (fogbench-cli run --effect, refgen parameters).
+    "scale_factor_error": dict(
+        what="scale-factor error 300 ppm: X swing 1 Hz / 3 deg",
+        axis="x", f=1.0, a=3.0, d=30.0, pos=[0, 0, 0], lat=40.0, heading=0.0,
+        effect=("scale_factor_error=300", {"scale_factor_ppm": 300.0})),
+    "scale_factor_asymmetry": dict(
+        what="scale-factor asymmetry 300 ppm of the rate's magnitude: X swing 1 Hz / 3 deg",
+        axis="x", f=1.0, a=3.0, d=30.0, pos=[0, 0, 0], lat=40.0, heading=0.0,
+        effect=("scale_factor_asymmetry=300", {"sf_asymmetry_ppm": 300.0})),
+    "scale_factor_nonlinearity": dict(
+        what="cubic scale-factor nonlinearity 1000 ppm at 100 deg/s: X swing 2 Hz / 5 deg (63 deg/s)",
+        axis="x", f=2.0, a=5.0, d=20.0, pos=[0, 0, 0], lat=40.0, heading=0.0,
+        effect=("scale_factor_nonlinearity=1000", {"sf_nonlinearity_ppm_at_100": 1000.0})),
+    "bias_drift": dict(
+        what="bias ramp 2 deg/h per min on every gyro: X swing 1 Hz / 3 deg",
+        axis="x", f=1.0, a=3.0, d=30.0, pos=[0, 0, 0], lat=40.0, heading=0.0,
+        effect=("bias_drift=2", {"bias_drift_deg_h_per_min": 2.0}),
+        # The ramp's zero is each simulator's own start (refgen: the first
+        # frame; fogbench: the simulation's start, 1 s earlier), which only
+        # moves the mean rate -- a constant bias, which the diagnosis
+        # calibrates. The ramp itself is compared.
+        skip=("trend_",)),
+    "table_harmonic_distortion": dict(
+        what="table motion distorted by 50 / 30 ppm (2nd / 3rd, at 10 deg): X swing 0.2 Hz / 10 deg",
+        axis="x", f=0.2, a=10.0, d=30.0, pos=[0, 0, 0], lat=40.0, heading=0.0,
+        effect=("table_harmonic_distortion=50,30", {"table_poly_ppm": [50.0, 30.0]})),
+    "encoder_cyclic_error": dict(
+        what="encoder cyclic error 0.5 sin + 0.3 cos arcsec (10 deg period): X swing 0.2 Hz / 8 deg",
+        axis="x", f=0.2, a=8.0, d=30.0, pos=[0, 0, 0], lat=40.0, heading=0.0,
+        effect=("encoder_cyclic_error=0.5,0.3", {"encoder_cyclic_arcsec": [0.5, 0.3]})),
 }
 
 # Tolerances, the same for every case: what two correct simulators of the
@@ -75,7 +115,8 @@ CASES = {
 # 0.05 us plus 2e-5 of itself: the fast simulator's lag takes the sensed
 # angle as a quadratic between its 2-ms samples (0.055 us of 5443 us for a
 # 5-ms lag at 2 Hz).
-TOL = {"delay_us": 0.05, "delay_rel": 2e-5, "gain_ppm": 1.0, "cross_ppm": 1.0, "h2_ppm": 1.0, "trend_deg_h": 0.01}
+TOL = {"delay_us": 0.05, "delay_rel": 2e-5, "gain_ppm": 1.0, "cross_ppm": 1.0, "h2_ppm": 1.0, "trend_deg_h": 0.01,
+       "ramp_deg_h_per_min": 0.01}
 
 
 def reference_params(c):
@@ -90,6 +131,7 @@ def reference_params(c):
         "encoder_arcsec": 1e-7 * 3600.0, "imu_clock_ppm": c.get("imu_ppm", 0.0),
         "misalignment_urad": c.get("mis", [0.0] * 6), "g_sens_deg_h_g": c.get("gsens", 0.0),
         "lag_tau_ms": c.get("lag_ms", 0.0),
+        **(c["effect"][1] if "effect" in c else {}),
     }
 
 
@@ -101,6 +143,8 @@ def fast_args(c, plan_path, out):
         effects.append("misalignment=" + ",".join(repr(v) for v in c["mis"]))
     if c.get("gsens"):
         effects.append("g_sensitivity=%r" % c["gsens"])
+    if "effect" in c:
+        effects.append(c["effect"][0])
     args = ["run", "--plan", plan_path, "--seed", "1", "--arw-deg-sqrt-h", "0", "--bias-instability-deg-h", "0",
             "--bias-x-deg-h", "0", "--bias-y-deg-h", "0", "--bias-z-deg-h", "0", "--pulse-equivalent-deg", "1e-6",
             "--encoder-quantum-deg", "1e-7", "--table-freq-error-ppm", "0", "--latitude-deg", repr(c["lat"]),
@@ -131,21 +175,29 @@ def coefficients(directory, c):
     t0 = tt[0]
     # Table: sin / cos of the fundamental, offset.
     th = tab[c["axis"] + "_deg"]
-    A = np.column_stack([np.sin(w * (tt - t0)), np.cos(w * (tt - t0)), np.ones_like(tt)])
-    ts, tc, _ = np.linalg.lstsq(A, th, rcond=None)[0]
+    A = np.column_stack([np.sin(h * w * (tt - t0)) for h in (1, 2, 3)] +
+                        [np.cos(h * w * (tt - t0)) for h in (1, 2, 3)] + [np.ones_like(tt)])
+    ts, th2s, th3s, tc, th2c, th3c, _ = np.linalg.lstsq(A, th, rcond=None)[0]
     table = complex(ts, tc)
-    # Gyros: cumulative angle at the stamps; fundamental, 2nd harmonic,
-    # offset and trend. The first frame's increment belongs before its stamp.
-    gt = gyr["time_s"]
     out = {}
+    # Harmonic h of the table relative to its fundamental: the phase of the
+    # fundamental, h times, taken out (in phase / quadrature).
+    for h, z in ((2, complex(th2s, th2c)), (3, complex(th3s, th3c))):
+        rel = z / (table / abs(table)) ** h / abs(table) * 1e6
+        out["table_h%d_in_phase_ppm" % h] = rel.real
+        out["table_h%d_quadrature_ppm" % h] = rel.imag
+    # Gyros: cumulative angle at the stamps; fundamental, 2nd harmonic,
+    # offset, trend and ramp. The first frame's increment belongs before its stamp.
+    gt = gyr["time_s"]
     G = np.column_stack([np.sin(w * (gt - t0)), np.cos(w * (gt - t0)), np.sin(2 * w * (gt - t0)),
-                         np.cos(2 * w * (gt - t0)), np.ones_like(gt), gt - t0])
+                         np.cos(2 * w * (gt - t0)), np.ones_like(gt), gt - t0, (gt - t0) ** 2])
     for ax in AXES:
         col = ax + "_inc_deg"
         if col not in gyr:
             continue
         cum = np.cumsum(gyr[col])
-        s1, c1, s2, c2, _, slope = np.linalg.lstsq(G, cum, rcond=None)[0]
+        s1, c1, s2, c2, _, slope, curve = np.linalg.lstsq(G, cum, rcond=None)[0]
+        out["ramp_%s_deg_h_per_min" % ax] = 2.0 * curve * 3600.0 * 60.0
         r = complex(s1, c1) / table
         if ax == c["axis"]:
             # gyro = table delayed by tau: ratio = g e^{-i w tau}
@@ -155,7 +207,8 @@ def coefficients(directory, c):
             out["cross_in_phase_%s_ppm" % ax] = r.real * 1e6
             out["cross_quadrature_%s_ppm" % ax] = r.imag * 1e6
         out["h2_%s_ppm" % ax] = abs(complex(s2, c2)) / abs(table) * 1e6
-        out["trend_%s_deg_h" % ax] = slope * 3600.0
+        # the mean rate over the record (the ramp's middle)
+        out["trend_%s_deg_h" % ax] = (slope + curve * (gt[-1] - t0)) * 3600.0
     return out
 
 
@@ -166,8 +219,10 @@ def tolerance(key, value):
         return TOL["gain_ppm"]
     if key.startswith("cross"):
         return TOL["cross_ppm"]
-    if key.startswith("h2"):
+    if key.startswith("h2") or key.startswith("table_h"):
         return TOL["h2_ppm"]
+    if key.startswith("ramp"):
+        return TOL["ramp_deg_h_per_min"]
     return TOL["trend_deg_h"]
 
 
@@ -190,6 +245,8 @@ def run_case(name, c, cli, work):
     fast = coefficients(fast_dir, c)
     rows = []
     for key in sorted(ref):
+        if key.startswith(c.get("skip", ())):
+            continue
         rows.append((key, ref[key], fast[key], fast[key] - ref[key], tolerance(key, ref[key])))
     return rows
 
