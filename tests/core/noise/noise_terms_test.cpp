@@ -89,9 +89,27 @@ TEST(NoiseTerms, WhiteRateAloneGivesOnlyAngleRandomWalk) {
 
 struct MonteCarlo {
   double ratio[3] = {};  // mean stated uncertainty / scatter: Q, N, Markov sigma
+  // The same over the seeds whose model has exactly the true terms (Q, N,
+  // Markov), and how many seeds took an extra term.
+  double ratioTrueTerms[3] = {};
+  int seedsWithExtraTerms = 0;
   double coverage = 0.0;
   double worstChi2PerDof = 0.0;
 };
+
+// Mean stated uncertainty over the scatter of the values (0 for < 3 values).
+double spreadRatio(const std::vector<double>& values, const std::vector<double>& stated) {
+  if (values.size() < 3) return 0.0;
+  const double n = static_cast<double>(values.size());
+  double mean = 0.0, meanStated = 0.0;
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    mean += values[i] / n;
+    meanStated += stated[i] / n;
+  }
+  double ss = 0.0;
+  for (double v : values) ss += (v - mean) * (v - mean);
+  return meanStated / std::sqrt(ss / (n - 1.0));
+}
 
 // Over `seeds` seeds: the stated uncertainties against the scatter of the
 // estimates (each mean unbiased within 3 standard errors of the mean), the
@@ -101,18 +119,24 @@ MonteCarlo monteCarlo(const testing::SyntheticGyro& g, int seeds, double pulseDe
   const NoiseTermKind kinds[] = {NoiseTermKind::kQuantisation, NoiseTermKind::kAngleRandomWalk, NoiseTermKind::kMarkov};
   const double q = pulseDeg > 0.0 ? pulseDeg / std::sqrt(12.0) : g.whiteAngleDeg;
   const double truth[] = {q, g.arwDegPerSqrtS, g.markovSigmaDegPerS};
-  std::vector<double> values[3], stated[3];
+  std::vector<double> values[3], stated[3], trueValues[3], trueStated[3];
   std::size_t covered = 0, intervals = 0;
   MonteCarlo mc;
   for (int seed = 100; seed < 100 + seeds; ++seed) {
     const auto r = identify(g.increments(kFrames, static_cast<std::uint64_t>(seed)), g.intervalS, pulseDeg);
     mc.worstChi2PerDof = std::max(mc.worstChi2PerDof, r.model.chiSquare / std::max(1, r.model.dof));
+    const bool trueTerms = r.model.terms.size() == 3;
+    mc.seedsWithExtraTerms += trueTerms ? 0 : 1;
     for (int k = 0; k < 3; ++k) {
       const NoiseTerm* t = r.model.find(kinds[k]);
       EXPECT_NE(t, nullptr) << "seed " << seed << " lost " << noiseTermName(kinds[k]);
       if (!t) return mc;
       values[k].push_back(t->value);
       stated[k].push_back(t->stdError);
+      if (trueTerms) {
+        trueValues[k].push_back(t->value);
+        trueStated[k].push_back(t->stdError);
+      }
     }
     for (const auto& p : r.curve.points) {
       if (pulseDeg > 0.0) continue;  // the true curve of a pulse-quantised gyro depends on its noise: not tabulated
@@ -134,22 +158,36 @@ MonteCarlo monteCarlo(const testing::SyntheticGyro& g, int seeds, double pulseDe
     mc.ratio[k] = meanStated / scatter;
     std::printf("%s: mean %.6g (truth %.6g), scatter %.4g, stated %.4g, stated/scatter %.3f\n", noiseTermName(kinds[k]),
                 mean, truth[k], scatter, meanStated, mc.ratio[k]);
+    mc.ratioTrueTerms[k] = spreadRatio(trueValues[k], trueStated[k]);
   }
+  std::printf("%d of %d seeds took an extra term; stated/scatter of the others: %.3f (Q), %.3f (N), %.3f (Markov)\n",
+              mc.seedsWithExtraTerms, seeds, mc.ratioTrueTerms[0], mc.ratioTrueTerms[1], mc.ratioTrueTerms[2]);
   mc.coverage = intervals ? static_cast<double>(covered) / static_cast<double>(intervals) : 0.0;
   return mc;
 }
 
 // 50 seeds of white angle noise (IEEE 952 Q). The jackknife uncertainties
 // against the true scatter: measured ratios in docs/noise.md; a factor-2 band
-// is asserted. With 50 seeds the scatter itself is known to +-10 %.
+// is asserted. With 50 seeds the scatter itself is known to +-10 %. Over the
+// seeds whose model has the true terms the stated uncertainties of Q and N
+// are the scatter's (0.97 and 0.96 measured, asserted 0.8 .. 1.25); the
+// shortfall over all seeds is model selection: a seed that takes a flicker
+// or ramp term of its own (5 of 50) moves N by up to 3 % (5 of its stated
+// errors), which no uncertainty of a fixed set of terms can state.
 TEST(NoiseTerms, StatedUncertaintyAgreesWithMonteCarloScatter) {
   const auto mc = monteCarlo(knownGyro(), 50, 0.0);
   const char* keys[] = {"quantisation", "angle_random_walk", "markov"};
   for (int k = 0; k < 3; ++k) {
     RecordProperty(std::string(keys[k]) + "_stated_over_scatter", std::to_string(mc.ratio[k]));
+    RecordProperty(std::string(keys[k]) + "_stated_over_scatter_true_terms", std::to_string(mc.ratioTrueTerms[k]));
     EXPECT_GT(mc.ratio[k], 0.5) << keys[k];
     EXPECT_LT(mc.ratio[k], 2.0) << keys[k];
   }
+  for (int k = 0; k < 2; ++k) {
+    EXPECT_GT(mc.ratioTrueTerms[k], 0.8) << keys[k];
+    EXPECT_LT(mc.ratioTrueTerms[k], 1.25) << keys[k];
+  }
+  EXPECT_LE(mc.seedsWithExtraTerms, 8);
   // 1-sigma (68.3 %) intervals: pooled coverage over ~1600 intervals (binomial
   // std 1.2 %); neighbouring taus are correlated, so a +-10 % band.
   RecordProperty("interval_coverage", std::to_string(mc.coverage));
