@@ -343,6 +343,7 @@ void jackknife(const AllanCurve& curve, const Fit& fit, NoiseModel& model) {
       if (p.jackknifeVariance.empty()) continue;
       replicate.points[i++].deviation = std::sqrt(std::max(p.jackknifeVariance[b], 0.0));
     }
+    if (b < curve.jackknifeStepChange.size()) replicate.pulse.stepDeg = curve.pulse.stepDeg + curve.jackknifeStepChange[b];
     const Fit f = solve(replicate, fit.active, fit.tcS, markov, &start);
     if (!f.ok) continue;
     for (std::size_t j = 0; j < k; ++j) values[j].push_back(std::sqrt(f.coefficient[static_cast<Eigen::Index>(j)]));
@@ -470,6 +471,17 @@ Result<AllanCurve> overlappingAllanCurve(std::span<const double> phase, double t
   curve.tau0S = tau0S;
   curve.phasePoints = phase.size();
   curve.confidence = options.confidence;
+  if (options.jackknifeBlocks >= 2 && phase.size() >= static_cast<std::size_t>(4 * options.jackknifeBlocks)) {
+    // The mean step of the record without block b (phase index blocks).
+    const auto blocks = static_cast<std::size_t>(options.jackknifeBlocks);
+    const std::size_t last = phase.size() - 1;
+    const double total = phase[last] - phase[0];
+    for (std::size_t b = 0; b < blocks; ++b) {
+      const std::size_t lo = last * b / blocks, hi = last * (b + 1) / blocks;
+      const double rest = static_cast<double>(last - (hi - lo));
+      curve.jackknifeStepChange.push_back((total - (phase[hi] - phase[lo])) / rest - total / static_cast<double>(last));
+    }
+  }
   for (std::size_t m : averagingFactors(phase.size(), options.tausPerOctave, options.maxTauFraction)) {
     AllanPoint p;
     p.m = m;

@@ -75,6 +75,11 @@ struct AllanCurve {
   PulseQuantisation pulse;
   double confidence = kOneSigmaConfidence;
   std::vector<AllanPoint> points;
+  // Per jackknife block b: how much the record's mean step per tau0 changes
+  // when block b is left out (phase units). A pulse-quantised record's
+  // quantisation shape depends steeply on its mean step, so each replicate
+  // is fitted at its own (pulse.stepDeg + this).
+  std::vector<double> jackknifeStepChange;
 };
 
 struct AllanOptions {

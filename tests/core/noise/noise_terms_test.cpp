@@ -204,8 +204,11 @@ TEST(NoiseTerms, StatedUncertaintyAgreesWithMonteCarloScatter) {
 // so the short-tau Allan points vary with the wander far more than the
 // white-phase EDF (~1e5) says: chi^2/dof is 2-14 (the white model: hundreds);
 // the bench's own 0.5 deg/h wander fits with chi^2/dof < 1 (gyro_noise_test).
-// The jackknife is then conservative for Q and N (docs/noise.md); asserted:
-// never optimistic by more than a factor 2.
+// The wander also moves each jackknife block's mean pulse rate, and the
+// quantisation shape depends steeply on it: each replicate is fitted at its
+// own mean step (AllanCurve::jackknifeStepChange). Fitted at the record's
+// instead, the stated Q and N were 7.6 and 4.3 times the scatter; now 1.24,
+// 0.97 and 0.81 (Markov), asserted within a factor 2.
 TEST(NoiseTerms, PulseQuantisedGyroAtRestFitsAndRecoversItsTerms) {
   auto g = knownGyro();
   g.whiteAngleDeg = 0.0;
@@ -218,8 +221,8 @@ TEST(NoiseTerms, PulseQuantisedGyroAtRestFitsAndRecoversItsTerms) {
   for (int k = 0; k < 3; ++k) {
     RecordProperty(std::string(keys[k]) + "_stated_over_scatter", std::to_string(mc.ratio[k]));
     EXPECT_GT(mc.ratio[k], 0.5) << keys[k];
+    EXPECT_LT(mc.ratio[k], 2.0) << keys[k];
   }
-  EXPECT_LT(mc.ratio[2], 2.0);
   // Told nothing of the pulse, the same data do not fit (white quantisation).
   const auto white = identify(g.increments(kFrames, 100), g.intervalS);
   std::printf("white quantisation model: chi^2 %.1f for %d dof\n", white.model.chiSquare, white.model.dof);
