@@ -7,6 +7,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 #include <atomic>
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <limits>
 
@@ -33,7 +35,7 @@ using namespace fog;
 // Words a Chinese operator reads as they are: units, acronyms, names.
 const QStringList kKept = {"IMU", "ARW", "chi", "ppm", "rms", "dof", "Hz", "ms", "fogbench", "SQLite", "Allan",
                            "IEEE", "printf", "dd", "COPY", "fbs", "conv", "notrunc", "of", "format", "urad",
-                           "udeg", "us", "sigma", "CRLB", "sin"};
+                           "udeg", "us", "sigma", "CRLB", "sin", "ioctl"};
 
 // English left in a translated text: runs of three or more Latin letters that
 // are not kept words, identifiers (with _ . or -) or the given path.
@@ -180,6 +182,21 @@ class CoreTextTest : public QObject {
       QVERIFY2(!r.isOk(), name);
       expectChinese(r.status().message(), dir.path());
     }
+  }
+
+  // The C library's words for a system error, quoted inside a reason: a
+  // session that cannot be created, and every errno a bench meets.
+  void systemErrorsInsideReasons() {
+    const std::string missing = "/nonexistent-fogbench-folder/s.fbs";
+    auto writer = session::SessionWriter::create(missing, {});
+    QVERIFY(!writer.isOk());
+    expectChinese(writer.status().message(), QString::fromStdString(missing));
+    for (int e : {EPERM, ENOENT, EINTR, EIO, ENXIO, EBADF, EAGAIN, EACCES, EBUSY, EEXIST, ENODEV, ENOTDIR, EISDIR, EINVAL,
+                  ENFILE, EMFILE, ENOTTY, EFBIG, ENOSPC, EROFS, EPIPE, ENAMETOOLONG, ELOOP, EDQUOT, ECONNREFUSED,
+                  ECONNRESET, ETIMEDOUT, EHOSTUNREACH, ENETUNREACH, EADDRINUSE, ENOTCONN, ETXTBSY, ENOMEM})
+      expectChinese("cannot create session '/data/s.fbs': " + std::string(std::strerror(e)) +
+                        "; check the folder exists and is writable",
+                    "/data/s.fbs");
   }
 
   void planProblems() {
