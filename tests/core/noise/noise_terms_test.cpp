@@ -172,8 +172,8 @@ MonteCarlo monteCarlo(const testing::SyntheticGyro& g, int seeds, double pulseDe
 // seeds whose model has the true terms the stated uncertainties of Q and N
 // are the scatter's (0.97 and 0.96 measured, asserted 0.8 .. 1.25); the
 // shortfall over all seeds is model selection: a seed that takes a flicker
-// or ramp term of its own (5 of 50) moves N by up to 3 % (5 of its stated
-// errors), which no uncertainty of a fixed set of terms can state.
+// or ramp term of its own (5 of 50) moves N by up to 3 % (6 times a typical
+// stated error), which no uncertainty of a fixed set of terms can state.
 TEST(NoiseTerms, StatedUncertaintyAgreesWithMonteCarloScatter) {
   const auto mc = monteCarlo(knownGyro(), 50, 0.0);
   const char* keys[] = {"quantisation", "angle_random_walk", "markov"};
