@@ -679,12 +679,10 @@ Result<CalibratedReplay> calibrate(const AnalysedSession& session, const Session
   // recording a wander of the bias and a drift or step look alike.
   if (options.biasInstabilityDegPerH) c.fog.biasInstabilityDegPerH = *options.biasInstabilityDegPerH;
   if (options.biasCorrelationS) c.fog.biasCorrelationS = *options.biasCorrelationS;
-  cal.biasInstabilityDegPerH = c.fog.biasInstabilityDegPerH;
-  cal.biasCorrelationS = c.fog.biasCorrelationS;
   cal.biasInstabilityStated = options.biasInstabilityDegPerH.has_value();
   if (!cal.biasInstabilityStated)
-    notes.push_back("bias instability " + fmt("%.3g", cal.biasInstabilityDegPerH) + " deg/h over " +
-                    fmt("%.0f", cal.biasCorrelationS) +
+    notes.push_back("bias instability " + fmt("%.3g", c.fog.biasInstabilityDegPerH) + " deg/h over " +
+                    fmt("%.0f", c.fog.biasCorrelationS) +
                     " s assumed (the simulator's default): a bias drift or step within such a wander is not "
                     "resolved; state the IMU's own (its static noise test) for a sharper test of the gyro trends");
   cal.lagMs = lagSum / wsum;
@@ -1517,8 +1515,8 @@ std::string formatDiagnosisJson(const Diagnosis& d) {
                       {"encoder_noise_deg", c.encoderNoiseDeg},
                       {"arw_deg_sqrt_h", c.arwDegPerSqrtH},
                       {"bias_deg_h", c.biasDegPerH},
-                      {"bias_instability_deg_h", c.biasInstabilityDegPerH},
-                      {"bias_correlation_s", c.biasCorrelationS},
+                      {"bias_instability_deg_h", c.config.fog.biasInstabilityDegPerH},
+                      {"bias_correlation_s", c.config.fog.biasCorrelationS},
                       {"bias_instability_stated", c.biasInstabilityStated}};
   json cells = json::array();
   for (const auto& g : d.gapMap)
@@ -1546,8 +1544,8 @@ std::string formatDiagnosisText(const Diagnosis& d) {
                 "table every %.4f ms, IMU every %.4f ms, bias instability %.3g deg/h over %.0f s (%s)\n",
                 c.lagMs, c.tableFrequencyErrorPpm, c.encoderNoiseDeg, c.arwDegPerSqrtH, c.biasDegPerH[0],
                 c.biasDegPerH[1], c.biasDegPerH[2], c.headingDeg, c.headingStdDeg, c.config.encoder.samplePeriodS * 1e3,
-                c.config.imuBoard.framePeriodS * 1e3, c.biasInstabilityDegPerH, c.biasCorrelationS,
-                c.biasInstabilityStated ? "stated" : "assumed");
+                c.config.imuBoard.framePeriodS * 1e3, c.config.fog.biasInstabilityDegPerH,
+                c.config.fog.biasCorrelationS, c.biasInstabilityStated ? "stated" : "assumed");
   s += b;
   s += "\nTiming audit            real                         replay\n";
   auto line = [&](const char* name, const StreamTiming& r, const StreamTiming& m) {

@@ -88,9 +88,9 @@ struct Calibration {
   double encoderNoiseDeg = 0.0;
   double arwDegPerSqrtH = 0.0;
   std::array<double, kAxisCount> biasDegPerH{};  // at the calibrated heading
-  // The replays' bias instability (DiagnosisOptions) and whether the user
-  // stated it (false: the simulator's default was assumed).
-  double biasInstabilityDegPerH = 0.0, biasCorrelationS = 0.0;
+  // Whether the user stated the replays' bias instability
+  // (config.fog.biasInstabilityDegPerH, biasCorrelationS; DiagnosisOptions),
+  // false: the simulator's default was assumed.
   bool biasInstabilityStated = false;
   // The table's heading as the Earth rate in the gyros shows it (sessions do
   // not state it), with its standard error.

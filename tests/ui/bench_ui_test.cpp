@@ -806,8 +806,8 @@ class BenchUiTest : public QObject {
     QVERIFY(d);
     QCOMPARE(QString::fromStdString(d->verdict), QString("scale_factor_error"));
     QVERIFY(d->calibration.biasInstabilityStated);
-    QCOMPARE(d->calibration.biasInstabilityDegPerH, 0.5);
-    QCOMPARE(d->calibration.biasCorrelationS, 300.0);
+    QCOMPARE(d->calibration.config.fog.biasInstabilityDegPerH, 0.5);
+    QCOMPARE(d->calibration.config.fog.biasCorrelationS, 300.0);
     QVERIFY(w->diagnosisView()->verdictText().contains("scale_factor_error"));
     QVERIFY(w->diagnosisView()->gapMapRows() > 10);
     QVERIFY(w->diagnosisView()->gapMapColumns() >= 1);
