@@ -97,18 +97,24 @@ struct MonteCarlo {
   double worstChi2PerDof = 0.0;
 };
 
-// Mean stated uncertainty over the scatter of the values (0 for < 3 values).
-double spreadRatio(const std::vector<double>& values, const std::vector<double>& stated) {
-  if (values.size() < 3) return 0.0;
+// Estimates over seeds: their mean, their scatter (sample standard
+// deviation) and the mean of their stated uncertainties.
+struct Spread {
+  double mean = 0.0, scatter = 0.0, meanStated = 0.0;
+  double ratio() const { return scatter > 0.0 ? meanStated / scatter : 0.0; }  // 0 for < 2 values
+};
+Spread spreadOf(const std::vector<double>& values, const std::vector<double>& stated) {
+  Spread s;
+  if (values.size() < 2) return s;
   const double n = static_cast<double>(values.size());
-  double mean = 0.0, meanStated = 0.0;
   for (std::size_t i = 0; i < values.size(); ++i) {
-    mean += values[i] / n;
-    meanStated += stated[i] / n;
+    s.mean += values[i] / n;
+    s.meanStated += stated[i] / n;
   }
   double ss = 0.0;
-  for (double v : values) ss += (v - mean) * (v - mean);
-  return meanStated / std::sqrt(ss / (n - 1.0));
+  for (double v : values) ss += (v - s.mean) * (v - s.mean);
+  s.scatter = std::sqrt(ss / (n - 1.0));
+  return s;
 }
 
 // Over `seeds` seeds: the stated uncertainties against the scatter of the
@@ -146,19 +152,12 @@ MonteCarlo monteCarlo(const testing::SyntheticGyro& g, int seeds, double pulseDe
     }
   }
   for (int k = 0; k < 3; ++k) {
-    double mean = 0.0, meanStated = 0.0;
-    for (int i = 0; i < seeds; ++i) {
-      mean += values[k][static_cast<std::size_t>(i)] / seeds;
-      meanStated += stated[k][static_cast<std::size_t>(i)] / seeds;
-    }
-    double ss = 0.0;
-    for (double v : values[k]) ss += (v - mean) * (v - mean);
-    const double scatter = std::sqrt(ss / (seeds - 1));
-    EXPECT_NEAR(mean, truth[k], 3.0 * scatter / std::sqrt(seeds)) << noiseTermName(kinds[k]);
-    mc.ratio[k] = meanStated / scatter;
+    const Spread all = spreadOf(values[k], stated[k]);
+    EXPECT_NEAR(all.mean, truth[k], 3.0 * all.scatter / std::sqrt(seeds)) << noiseTermName(kinds[k]);
+    mc.ratio[k] = all.ratio();
     std::printf("%s: mean %.6g (truth %.6g), scatter %.4g, stated %.4g, stated/scatter %.3f\n", noiseTermName(kinds[k]),
-                mean, truth[k], scatter, meanStated, mc.ratio[k]);
-    mc.ratioTrueTerms[k] = spreadRatio(trueValues[k], trueStated[k]);
+                all.mean, truth[k], all.scatter, all.meanStated, mc.ratio[k]);
+    mc.ratioTrueTerms[k] = spreadOf(trueValues[k], trueStated[k]).ratio();
   }
   std::printf("%d of %d seeds took an extra term; stated/scatter of the others: %.3f (Q), %.3f (N), %.3f (Markov)\n",
               mc.seedsWithExtraTerms, seeds, mc.ratioTrueTerms[0], mc.ratioTrueTerms[1], mc.ratioTrueTerms[2]);
