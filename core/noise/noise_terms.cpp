@@ -323,6 +323,31 @@ double significanceOf(const Fit& f, std::size_t j) {
   return s > 0.0 ? 1.0 / s : 0.0;
 }
 
+// Per tau with replicates: the factor (>= 1) by which its replicates'
+// deviations from the full variance are stretched (in the logarithm) so
+// that their spread is at least the model's 2 / EDF. Only where a second
+// difference spans more than a jackknife block (2 m blocks > record): there
+// the blocks' data are shared by so many differences that the replicates
+// cannot see the variance -- in a 250-seed Monte Carlo their spread was
+// 0.45-0.65 of the scatter of ln(avar) beyond tau = T/20, while 2 / EDF was
+// 0.91-1.00 of it beyond T/10 (docs/noise.md). Shorter taus keep the
+// jackknife's own spread (within 0.89-1.22 of the scatter), which also
+// holds when the model is wrong.
+std::vector<double> replicateStretch(const AllanCurve& curve, const Fit& fit, std::size_t blocks) {
+  std::vector<double> stretch;
+  for (const auto& p : curve.points) {
+    if (p.jackknifeVariance.empty()) continue;
+    const bool spans = 2.0 * static_cast<double>(p.m) * static_cast<double>(blocks) > static_cast<double>(curve.phasePoints);
+    const double full = p.deviation * p.deviation;
+    double squares = 0.0;
+    for (double v : p.jackknifeVariance) squares += std::pow(std::log(std::max(v, 1e-300) / full), 2);
+    const double spread = squares * static_cast<double>(blocks - 1) / static_cast<double>(blocks);
+    const double modelSpread = 2.0 / edfOverlappingAllan(curve.phasePoints, p.m, noiseOfSlope(modelSlope(fit, p.tauS)));
+    stretch.push_back(spans && spread > 0.0 ? std::max(1.0, std::sqrt(modelSpread / spread)) : 1.0);
+  }
+  return stretch;
+}
+
 // Delete-a-block jackknife of the term values (and Tc): refit each replicate
 // curve with the same terms, starting from the full fit.
 void jackknife(const AllanCurve& curve, const Fit& fit, NoiseModel& model) {
@@ -337,11 +362,15 @@ void jackknife(const AllanCurve& curve, const Fit& fit, NoiseModel& model) {
   const Eigen::VectorXd start = fit.coefficient.array().log().matrix();
   const std::size_t k = fit.active.size();
   std::vector<std::vector<double>> values(k + 1);
+  const std::vector<double> stretch = replicateStretch(curve, fit, blocks);
   for (std::size_t b = 0; b < blocks; ++b) {
     std::size_t i = 0;
     for (const auto& p : curve.points) {
       if (p.jackknifeVariance.empty()) continue;
-      replicate.points[i++].deviation = std::sqrt(std::max(p.jackknifeVariance[b], 0.0));
+      const double full = p.deviation * p.deviation;
+      const double logRatio = std::log(std::max(p.jackknifeVariance[b], 1e-300) / full);
+      replicate.points[i].deviation = std::sqrt(full * std::exp(stretch[i] * logRatio));
+      ++i;
     }
     if (b < curve.jackknifeStepChange.size()) replicate.pulse.stepDeg = curve.pulse.stepDeg + curve.jackknifeStepChange[b];
     const Fit f = solve(replicate, fit.active, fit.tcS, markov, &start);
@@ -369,6 +398,67 @@ void jackknife(const AllanCurve& curve, const Fit& fit, NoiseModel& model) {
       t.correlationTimeHighS = t.correlationTimeS * std::exp(s);
     }
   }
+}
+
+// The overlapping Allan variance at averaging factor m and its
+// delete-a-block jackknife replicates, in one pass: the record's increments are cut into
+// `blocks` blocks and block b's data are left out -- every second
+// difference that uses an increment of the block, i.e. those starting up to
+// 2m - 1 before it too. Leaving out only the differences that start in the
+// block (as a jackknife of independent blocks would) keeps the overlapping
+// ones, so neighbouring blocks' sums are correlated once 2 tau nears the
+// block length, and the replicates' spread understated the scatter of the
+// long-tau variances by up to 5x (a 250-seed Monte Carlo, docs/noise.md).
+// A replicate that leaves out l_b of the n differences spreads by
+// (n - l_b) / l_b per unit of the variance of the estimate (delete-l
+// jackknife of dependent data, l beyond the dependence); it is returned
+// rescaled, v + c_b (v_b - v) with c_b^2 = (n - l_b) / (l_b (blocks - 1)),
+// so that the ordinary delete-1-of-`blocks` formula applies to every tau
+// alike (c_b = 1 when l_b = n / blocks). Each replicate then stands for the
+// same data left out at every tau, which keeps their correlation across
+// taus for the refit.
+struct BlockedAllanVariance {
+  double variance = 0.0;
+  std::vector<double> replicates;
+};
+BlockedAllanVariance allanVarianceInBlocks(std::span<const double> phase, double tau0S, std::size_t m, std::size_t blocks) {
+  const std::size_t increments = phase.size() - 1, count = phase.size() - 2 * m;
+  // Starts of the differences left out with block b: [lo_b, hi_b).
+  std::vector<std::size_t> lo(blocks), hi(blocks), cuts = {0, count};
+  for (std::size_t b = 0; b < blocks; ++b) {
+    const std::size_t first = increments * b / blocks, end = increments * (b + 1) / blocks;
+    lo[b] = first + 1 > 2 * m ? std::min(first + 1 - 2 * m, count) : 0;
+    hi[b] = std::min(end, count);
+    cuts.push_back(lo[b]);
+    cuts.push_back(hi[b]);
+  }
+  std::sort(cuts.begin(), cuts.end());
+  cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+  // Sum of the squared second differences (as variance x count) before each cut.
+  std::vector<double> before(cuts.size(), 0.0);
+  for (std::size_t c = 1; c < cuts.size(); ++c) {
+    const std::size_t n = cuts[c] - cuts[c - 1];
+    std::size_t used = 0;
+    const double v = allanVariance(phase.subspan(cuts[c - 1], n + 2 * m), tau0S, m, true, &used);
+    before[c] = before[c - 1] + v * static_cast<double>(used);
+  }
+  auto sumBefore = [&](std::size_t at) {
+    return before[static_cast<std::size_t>(std::lower_bound(cuts.begin(), cuts.end(), at) - cuts.begin())];
+  };
+  BlockedAllanVariance result;
+  const double full = result.variance = before.back() / static_cast<double>(count);
+  for (std::size_t b = 0; b < blocks; ++b) {
+    const std::size_t left = hi[b] - lo[b];
+    if (left == 0 || left >= count) {  // nothing or everything left out: no spread to take
+      result.replicates.push_back(full);
+      continue;
+    }
+    const double v = (before.back() - (sumBefore(hi[b]) - sumBefore(lo[b]))) / static_cast<double>(count - left);
+    const double c = std::sqrt(static_cast<double>(count - left) /
+                               (static_cast<double>(left) * static_cast<double>(blocks - 1)));
+    result.replicates.push_back(full + c * (v - full));
+  }
+  return result;
 }
 
 }  // namespace
@@ -491,27 +581,10 @@ Result<AllanCurve> overlappingAllanCurve(std::span<const double> phase, double t
     if (blocks < 2 || count < static_cast<std::size_t>(4 * blocks)) {
       p.deviation = std::sqrt(allanVariance(phase, tau0S, m, true, &p.differences));
     } else {
-      // One pass in blocks: partial sums of the squared second differences by
-      // block of their start give the variance and its jackknife replicates.
-      std::vector<double> sums(static_cast<std::size_t>(blocks), 0.0);
-      std::vector<std::size_t> counts(static_cast<std::size_t>(blocks), 0);
-      for (int b = 0; b < blocks; ++b) {
-        const std::size_t lo = count * static_cast<std::size_t>(b) / static_cast<std::size_t>(blocks);
-        const std::size_t hi = count * static_cast<std::size_t>(b + 1) / static_cast<std::size_t>(blocks);
-        const std::size_t n = hi - lo + 2 * m;
-        std::size_t used = 0;
-        const double v = allanVariance(phase.subspan(lo, n), tau0S, m, true, &used);
-        sums[static_cast<std::size_t>(b)] = v * static_cast<double>(used);
-        counts[static_cast<std::size_t>(b)] = used;
-      }
-      double total = 0.0;
-      for (double v : sums) total += v;
+      auto blocked = allanVarianceInBlocks(phase, tau0S, m, static_cast<std::size_t>(blocks));
       p.differences = count;
-      p.deviation = std::sqrt(total / static_cast<double>(count));
-      for (int b = 0; b < blocks; ++b) {
-        const auto bb = static_cast<std::size_t>(b);
-        p.jackknifeVariance.push_back((total - sums[bb]) / static_cast<double>(count - counts[bb]));
-      }
+      p.deviation = std::sqrt(blocked.variance);
+      p.jackknifeVariance = std::move(blocked.replicates);
     }
     curve.points.push_back(p);
   }

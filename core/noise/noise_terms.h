@@ -26,8 +26,12 @@
 // Neighbouring taus of an overlapping Allan curve are strongly correlated,
 // so the fit's covariance understates the uncertainties (by 2-4x, see
 // docs/noise.md). The stated uncertainties are therefore delete-a-block
-// jackknife estimates: the record is cut into blocks, each left out in turn,
-// the fit repeated (same terms) and the spread of the replicates taken. The
+// jackknife estimates: the record is cut into blocks, each block's data
+// left out in turn (every second difference that uses it), the fit repeated
+// (same terms) and the spread of the replicates taken; where a second
+// difference spans more than a block the replicates cannot see the
+// variance, and each tau's spread there is raised to at least its 2 / EDF
+// before the refit. The
 // fit's covariance (scaled by chi^2/dof when above 1) is used only to decide
 // which terms are significant, and when the curve has no replicates.
 //
@@ -52,8 +56,10 @@ struct AllanPoint {
   PowerLawNoise noise = PowerLawNoise::kWhiteFrequency;  // noise type the EDF assumes
   double edf = 0.0;
   Interval interval;            // at AllanCurve::confidence
-  // The Allan variance with the second differences starting in block b of
-  // the record left out (delete-a-block jackknife replicates).
+  // Delete-a-block jackknife replicates: the Allan variance with block b's
+  // data left out (every second difference using an increment of it),
+  // rescaled to the spread of leaving out 1/blocks of the differences, so
+  // that the delete-1 jackknife formula holds at every tau.
   std::vector<double> jackknifeVariance;
 };
 
