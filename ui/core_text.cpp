@@ -190,6 +190,9 @@ const char* const kTemplates[] = {
     QT_TRANSLATE_NOOP("core_text", "deg"),
     QT_TRANSLATE_NOOP("core_text", "the replay cannot reach the measured lag exactly"),
     QT_TRANSLATE_NOOP("core_text", "heading %1 +- %2 deg, from the Earth rate the gyros see as the table turns"),
+    QT_TRANSLATE_NOOP("core_text",
+                      "heading %1 +- %2 deg, from the Earth rate the gyros see as the table turns; %3 is taken >= 0: "
+                      "the plan's swings do not show its sign"),
     QT_TRANSLATE_NOOP("core_text", "left out: %1"),
     // The C library's texts of the system errors a bench meets (strerror,
     // glibc), quoted inside the core's reasons.

@@ -522,9 +522,23 @@ Status calibrateEarthRateAndBias(Replay& replay, const std::vector<FeatureKey>& 
   };
   if (inScan.sum() < 2.0) return Status::ok();
   if (a.col(0).squaredNorm() + a.col(1).squaredNorm() <= 0.0) return Status::ok();
+  // A component the scanned cells do not see (less than 1 chi^2 between
+  // none and all of the horizontal Earth rate along it) leaves the heading
+  // two-fold: only X swings see sin h alone, so h and 180 - h fit alike,
+  // and the tie used to go to whichever rounded lower (180 deg for a table
+  // at 0). The convention is then cos h >= 0 (or sin h >= 0), and the note
+  // says so.
+  const bool cosSeen = a.col(0).cwiseProduct(inScan).squaredNorm() >= 1.0;
+  const bool sinSeen = a.col(1).cwiseProduct(inScan).squaredNorm() >= 1.0;
+  auto allowed = [&](int k) {
+    const double h = k * kRadPerDeg;
+    return (cosSeen || std::cos(h) >= -1e-12) && (sinSeen || std::sin(h) >= -1e-12);
+  };
   std::vector<double> chi(360);
   for (int k = 0; k < 360; ++k) chi[static_cast<std::size_t>(k)] = fitAt(k, nullptr);
-  const int best = static_cast<int>(std::min_element(chi.begin(), chi.end()) - chi.begin());
+  int best = -1;
+  for (int k = 0; k < 360; ++k)
+    if (allowed(k) && (best < 0 || chi[static_cast<std::size_t>(k)] < chi[static_cast<std::size_t>(best)])) best = k;
   const double cm = chi[static_cast<std::size_t>((best + 359) % 360)], c0 = chi[static_cast<std::size_t>(best)],
                cp = chi[static_cast<std::size_t>((best + 1) % 360)];
   const double curvature = cm - 2.0 * c0 + cp;  // per deg^2
@@ -537,7 +551,10 @@ Status calibrateEarthRateAndBias(Replay& replay, const std::vector<FeatureKey>& 
   cal.headingStdDeg = curvature > 0.0 ? std::sqrt(2.0 / curvature) : 180.0;
   cal.config.earth.headingDeg = heading;
   notes.push_back("heading " + fmt("%.1f", heading) + " +- " + fmt("%.1f", cal.headingStdDeg) +
-                  " deg, from the Earth rate the gyros see as the table turns");
+                  " deg, from the Earth rate the gyros see as the table turns" +
+                  (cosSeen && sinSeen ? std::string()
+                                      : std::string("; ") + (cosSeen ? "sin h" : "cos h") +
+                                            " is taken >= 0: the plan's swings do not show its sign"));
   Eigen::VectorXd x = Eigen::VectorXd::Zero(5);
   for (std::size_t j = 0; j < biasCols.size(); ++j) x(biasCols[j]) = biases(static_cast<Eigen::Index>(j));
   // The biases were fitted at the heading the columns describe; the trend

@@ -4811,6 +4811,11 @@ File: %1</source>
     </message>
     <message>
         <location line="+1"/>
+        <source>heading %1 +- %2 deg, from the Earth rate the gyros see as the table turns; %3 is taken &gt;= 0: the plan&apos;s swings do not show its sign</source>
+        <translation>航向 %1 ± %2 deg，由转台转动时陀螺感受到的地球自转角速度求得；%3 取 &gt;= 0：计划中的摆动显示不出它的符号</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>left out: %1</source>
         <translation>未计入：%1</translation>
     </message>
