@@ -35,7 +35,7 @@ using namespace fog;
 // Words a Chinese operator reads as they are: units, acronyms, names.
 const QStringList kKept = {"IMU", "ARW", "chi", "ppm", "rms", "dof", "Hz", "ms", "fogbench", "SQLite", "Allan",
                            "IEEE", "printf", "dd", "COPY", "fbs", "conv", "notrunc", "of", "format", "urad",
-                           "udeg", "us", "sigma", "CRLB", "sin", "ioctl"};
+                           "udeg", "us", "sigma", "CRLB", "sin", "cos", "ioctl"};
 
 // English left in a translated text: runs of three or more Latin letters that
 // are not kept words, identifiers (with _ . or -) or the given path.
@@ -70,20 +70,21 @@ class CoreTextTest : public QObject {
     for (const QString& line : QString::fromStdString(text).split('\n')) expectChinese(line.toStdString());
   }
 
-  static Recording simulated(std::vector<std::unique_ptr<model::Effect>> effects, std::uint64_t seed) {
+  static Recording simulated(std::vector<std::unique_ptr<model::Effect>> effects, std::uint64_t seed,
+                             const TestPlan& plan = diagnosis::blindCheckPlan()) {
     model::SimConfig c;
     c.seed = seed;
     c.fog.setOwnDelayS(0.31e-3);
-    auto run = model::simulate(c, diagnosis::blindCheckPlan(), std::move(effects));
+    auto run = model::simulate(c, plan, std::move(effects));
     if (!run) qFatal("simulation failed: %s", run.status().toString().c_str());
     auto rec = protocol::decodeRecording(run->bytes);
     if (!rec) qFatal("decoding failed: %s", rec.status().toString().c_str());
     return *rec;
   }
 
-  void expectDiagnosisChinese(const Recording& rec) {
+  void expectDiagnosisChinese(const Recording& rec, const TestPlan& plan = diagnosis::blindCheckPlan()) {
     SessionInfo info;
-    info.plan = diagnosis::blindCheckPlan();
+    info.plan = plan;
     auto d = diagnosis::diagnose(rec, &info, {}, {});
     QVERIFY2(d.isOk(), d.status().toString().c_str());
     expectEveryLineChinese(diagnosis::formatDiagnosisText(*d));
@@ -110,6 +111,12 @@ class CoreTextTest : public QObject {
   }
 
   void diagnosisOfACleanSession() { expectDiagnosisChinese(simulated({}, 21)); }
+
+  // An X-only plan: the heading note says which sign was taken.
+  void diagnosisOfAnXOnlyPlan() {
+    const TestPlan plan = *presetPlan("quick");
+    expectDiagnosisChinese(simulated({}, 2, plan), plan);
+  }
 
   void diagnosisOfASessionWithAnEffect() {
     std::vector<std::unique_ptr<model::Effect>> e;

@@ -159,10 +159,6 @@ TEST(Diagnosis, ASmallClockDriftIsFittedAtItsSizeOnThePapersPlan) {
   EXPECT_NEAR(f.values[0], 0.013, 3.0 * f.standardErrors[0]) << f.values[0] << " +- " << f.standardErrors[0];
 }
 
-// A gyro bias step half-way through is not in the library: a ramp closes
-// ~90 % of its held-out gap but leaves a remainder of many sigma in the gyro
-// trends, so the answer is "unexplained" (with the ramp as a partial
-// explanation). (A 7.3 Hz gyro vibration is tested below.)
 // The quick preset swings X only, so the Earth rate the gyros see shows
 // sin h of the table's heading but not the sign of cos h: h and 180 - h fit
 // alike. The tie went to whichever rounded lower, and 3 of the first 6 seeds
@@ -180,6 +176,10 @@ TEST(Diagnosis, AnXOnlyPlanGivesTheHeadingWithCosHTakenPositive) {
   }
 }
 
+// A gyro bias step half-way through is not in the library: a ramp closes
+// ~90 % of its held-out gap but leaves a remainder of many sigma in the gyro
+// trends, so the answer is "unexplained" (with the ramp as a partial
+// explanation). (A 7.3 Hz gyro vibration is tested below.)
 TEST(Diagnosis, OutOfLibraryBiasStepIsUnexplained) {
   std::vector<std::unique_ptr<model::Effect>> e;
   e.push_back(makeOutsideEffect(OutsideEffect::kBiasStep, 4.0));
