@@ -112,6 +112,11 @@ std::optional<DampedSineLag> fitDampedSineLag(const Channels& ch, double omegaSt
   out.decayTimeS = lambda != 0.0 ? 1.0 / lambda : INFINITY;
   out.tableResidualRmsDeg = std::sqrt(sol->chiSquare / static_cast<double>(tt.size()));
   out.gain = std::sqrt(r2 / rt2) * std::exp(-lambda * out.lagMs * 1e-3);
+  // Degenerate increments (all but zero: a frame period of 1e-300 ms) leave a
+  // singular gyro system: no lag is offered rather than "± nan".
+  if (!std::isfinite(out.lagMs) || !(out.lagStdMs >= 0.0) || !std::isfinite(out.lagStdMs) ||
+      !std::isfinite(out.gain) || !std::isfinite(out.tableResidualRmsDeg))
+    return std::nullopt;
   return out;
 }
 

@@ -64,7 +64,13 @@ struct CompressedProblem {
 };
 
 // The covariance inv(J^T J) * chi^2/(N - p), or an error if it is not usable.
+// A solver that never completed a finite evaluation leaves `jtj` empty, and
+// data with a value near the double's range (an increment of 1e200 squares to
+// inf) leave it or chi^2 non-finite: both are refusals, never a covariance.
 Status fillCovariance(const Eigen::MatrixXd& jtj, LeastSquaresSolution& out, int p) {
+  if (jtj.rows() != p || jtj.cols() != p || !jtj.allFinite() || !std::isfinite(out.chiSquare))
+    return Status(StatusCode::kNotConverged,
+                  "the fit's sums are not finite numbers (a value in the data is far beyond its range)");
   Eigen::LDLT<Eigen::MatrixXd> ldlt(jtj);
   if (ldlt.info() != Eigen::Success || !(ldlt.rcond() > 1e-300))
     return Status(StatusCode::kNotConverged, "the fit's parameters are not determined by the data");

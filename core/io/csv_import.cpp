@@ -10,6 +10,7 @@
 #include <string_view>
 #include <system_error>
 
+#include "core/common/file_read.h"
 #include "core/io/metadata.h"
 
 namespace fog::io {
@@ -18,19 +19,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// Each file of an import: a regular file of at most kMaxImportFileBytes
+// (file_read.h: a FIFO or a device is refused before it is opened).
 Result<std::string> readWholeFile(const std::string& path) {
-  std::error_code ec;
-  if (!fs::exists(path, ec)) return ioError(path + " does not exist; check the path (docs/formats.md lists the files)");
-  if (fs::is_directory(path, ec)) return ioError(path + " is a directory, not a file");
-  std::FILE* f = std::fopen(path.c_str(), "rb");
-  if (!f) return ioError("cannot open " + path + " for reading; check its permissions");
-  std::string text;
-  char buf[1 << 16];
-  std::size_t n;
-  while ((n = std::fread(buf, 1, sizeof buf, f)) > 0) text.append(buf, n);
-  const bool failed = std::ferror(f) != 0;
-  std::fclose(f);
-  if (failed) return ioError("error while reading " + path);
+  FOG_ASSIGN_OR_RETURN(auto text, readRegularTextFile(path, kMaxImportFileBytes, "an import file"));
   // A UTF-8 byte-order mark, as some spreadsheets write it.
   if (text.size() >= 3 && text.compare(0, 3, "\xEF\xBB\xBF") == 0) text.erase(0, 3);
   return text;
@@ -99,6 +91,13 @@ std::string list(const char* const* names, std::size_t n) {
   }
   return s;
 }
+
+// The range a CSV value may take, with its unit and the reason for the bound.
+struct ValueRange {
+  double min, max;
+  const char* what;  // "a time stamp (s)", for messages
+  const char* why;   // the bound's reason, for messages
+};
 
 // One data file being parsed: where to find each column, and how to word errors.
 class CsvStream {
@@ -175,8 +174,12 @@ class CsvStream {
     return q;
   }
 
-  // A finite double: std::from_chars, locale-independent, the whole field.
-  Status number(int id, double& out) const {
+  // A finite double within [-limit.maxAbs, limit.maxAbs] (or [limit.min,
+  // limit.maxAbs]): std::from_chars, locale-independent, the whole field. The
+  // ranges are physical (ValueRange below): a value far beyond them is a unit
+  // or column error, and near the double's range its square overflows the fits.
+  Status number(int id, double& out, const ValueRange& range) const;
+  Status finiteNumber(int id, double& out) const {
     std::string_view s = field(id);
     if (s.empty()) return error(id, "empty value; every row needs a number here");
     if (s.front() == '+') s.remove_prefix(1);
@@ -207,6 +210,33 @@ class CsvStream {
   std::size_t columns_ = 0, headerLine_ = 0;
 };
 
+// Seconds: at 1e10 s a double still resolves 2 us; a Unix time stamp is 1.8e9 s.
+constexpr ValueRange kTimeRange{-1e10, 1e10, "a time stamp (s)",
+                                "seconds on the common clock; beyond 1e10 s a double no longer resolves microseconds"};
+// Degrees: a million turns of a continuously rotating table.
+constexpr ValueRange kAngleRange{-3.6e8, 3.6e8, "a table angle (deg)", "a million turns of the table"};
+// A gyro frame's increment: 1e4 deg is over 27 turns in one frame.
+constexpr ValueRange kIncrementRange{-1e4, 1e4, "a gyro increment (deg)",
+                                     "over 27 turns in one IMU frame; check the column's unit"};
+// A rate: 1e6 deg/s is some 300 times a navigation FOG's range.
+constexpr ValueRange kRateRange{-1e6, 1e6, "a gyro rate (deg/s)", "far beyond any gyro's range; check the unit"};
+// "-1e+10", "1000", "-273.15": a bound as the user would write it.
+std::string shortNumber(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+constexpr ValueRange kTemperatureRange{-273.15, 1000.0, "a temperature (deg C)", "degrees Celsius"};
+
+Status CsvStream::number(int id, double& out, const ValueRange& range) const {
+  FOG_RETURN_IF_ERROR(finiteNumber(id, out));
+  if (out < range.min || out > range.max)
+    return error(id, quoted(id) + " is out of range for " + range.what + ": it must be within " +
+                         shortNumber(range.min) + " .. " + shortNumber(range.max) + " (" + range.why + ")");
+  return Status::ok();
+}
+
 // Per test point, the last time seen and its line: times must increase
 // strictly within a test point (analysis and the increment model need it).
 struct TimeCheck {
@@ -229,7 +259,7 @@ Status testPointOf(const CsvStream& s, std::size_t count, std::size_t& tp) {
 }
 
 Status timeOf(const CsvStream& s, std::size_t tp, TimeCheck& check, double& t) {
-  FOG_RETURN_IF_ERROR(s.number(kTime, t));
+  FOG_RETURN_IF_ERROR(s.number(kTime, t, kTimeRange));
   if (!(t > check.last[tp]))
     return s.error(kTime, std::string(s.field(kTime)) + " s is not after the previous time of test point " +
                               std::to_string(tp + 1) + " (line " + std::to_string(check.line[tp]) +
@@ -285,7 +315,7 @@ Status parseTable(CsvStream& s, std::vector<TestPointData>& points) {
                      sample.timeS = timeS;
                      for (int a = 0; a < kAxisCount; ++a)
                        if (s.has(kAxis0 + a))
-                         FOG_RETURN_IF_ERROR(s.number(kAxis0 + a, sample.angleDeg[static_cast<std::size_t>(a)]));
+                         FOG_RETURN_IF_ERROR(s.number(kAxis0 + a, sample.angleDeg[static_cast<std::size_t>(a)], kAngleRange));
                      points[tp].table.push_back(sample);
                      return Status::ok();
                    });
@@ -303,11 +333,11 @@ Status parseGyro(CsvStream& s, std::vector<TestPointData>& points) {
         sample.timeS = timeS;
         for (int a = 0; a < kAxisCount; ++a) {
           if (s.has(kAxis0 + a))
-            FOG_RETURN_IF_ERROR(s.number(kAxis0 + a, sample.incrementDeg[static_cast<std::size_t>(a)]));
+            FOG_RETURN_IF_ERROR(s.number(kAxis0 + a, sample.incrementDeg[static_cast<std::size_t>(a)], kIncrementRange));
           if (s.has(kRate0 + a))
-            FOG_RETURN_IF_ERROR(s.number(kRate0 + a, sample.incrementDeg[static_cast<std::size_t>(a)]));
+            FOG_RETURN_IF_ERROR(s.number(kRate0 + a, sample.incrementDeg[static_cast<std::size_t>(a)], kRateRange));
         }
-        if (s.has(kTemperature)) FOG_RETURN_IF_ERROR(s.number(kTemperature, sample.temperatureC));
+        if (s.has(kTemperature)) FOG_RETURN_IF_ERROR(s.number(kTemperature, sample.temperatureC, kTemperatureRange));
         if (s.has(kLostBefore)) {
           std::uint64_t lost = 0;
           FOG_RETURN_IF_ERROR(

@@ -23,6 +23,7 @@
 //      kInvalidArgument  importCsvFiles was given the wrong set of files
 //  - Nothing is read from the network and no file is written.
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,12 @@
 #include "core/common/status.h"
 
 namespace fog::io {
+
+// The largest file of an import read: a table CSV of 256 MiB is some 8
+// million rows (2.2 h at 1 kHz); the text and the samples it becomes take
+// about 0.7 GB at the peak (docs/reliability.md). A longer recording is
+// split into several imports.
+inline constexpr std::uint64_t kMaxImportFileBytes = 256ull << 20;
 
 struct ImportedSession {
   SessionInfo info;

@@ -6,11 +6,22 @@
 #include <utility>
 #include <vector>
 
+#include "core/common/test_plan.h"
+
 namespace fog::io::detail {
 
 namespace {
 
 using Json = nlohmann::ordered_json;
+
+// Physical bounds of the metadata's numbers (docs/formats.md): beyond them a
+// value is a unit or typing error, and near a double's range it overflows.
+constexpr double kMaxPulseEquivalentDeg = 1.0;     // degrees per gyro pulse
+constexpr double kMaxCounterHz = 1e12;             // the board's time-stamp counter
+constexpr double kMinFramePeriodMs = 1e-3;         // an IMU frame at 1 MHz
+constexpr double kMaxFramePeriodMs = 1000.0;       // ... at 1 Hz
+constexpr double kMaxSwingFrequencyHz = 1000.0;
+constexpr double kMaxSwingAmplitudeDeg = 3600.0;   // ten turns each way
 
 // Reads one JSON object's keys, refusing unknown ones so that a typo is not
 // silently replaced by a default.
@@ -39,8 +50,11 @@ class Reader {
     return Status::ok();
   }
 
-  // A finite number >= min; required when `required` (otherwise `out` keeps its default).
-  Status number(const char* key, double& out, bool required, double min = -HUGE_VAL) const {
+  // A finite number within [min, max]; required when `required` (otherwise
+  // `out` keeps its default). The bounds are physical: near a double's range a
+  // constant overflows the sums it enters (a frame period of 1e300 ms crashed
+  // the fit; 1e-300 gave "± -nan ms").
+  Status number(const char* key, double& out, bool required, double min = -HUGE_VAL, double max = HUGE_VAL) const {
     if (!has(key)) {
       if (required)
         return corruptData(path_ + ": missing \"" + name(key) + "\"; it is required (docs/formats.md)");
@@ -49,9 +63,8 @@ class Reader {
     const Json& v = j_.at(key);
     if (!v.is_number()) return corruptData(path_ + ": \"" + name(key) + "\" must be a number, not " + v.dump());
     const double d = v.get<double>();
-    if (!std::isfinite(d) || d < min)
-      return corruptData(path_ + ": \"" + name(key) + "\" = " + v.dump() + " is out of range" +
-                         (min > -HUGE_VAL ? " (must be >= " + Json(min).dump() + ")" : ""));
+    if (!std::isfinite(d) || d < min || d > max)
+      return corruptData(path_ + ": \"" + name(key) + "\" = " + v.dump() + " is out of range" + bounds(min, max));
     out = d;
     return Status::ok();
   }
@@ -63,6 +76,13 @@ class Reader {
       return corruptData(path_ + ": \"" + name(key) + "\" must be a non-negative integer, not " + v.dump());
     out = v.get<std::uint64_t>();
     return Status::ok();
+  }
+
+  static std::string bounds(double min, double max) {
+    if (min > -HUGE_VAL && max < HUGE_VAL) return " (must be within " + Json(min).dump() + " .. " + Json(max).dump() + ")";
+    if (min > -HUGE_VAL) return " (must be >= " + Json(min).dump() + ")";
+    if (max < HUGE_VAL) return " (must be <= " + Json(max).dump() + ")";
+    return "";
   }
 
   std::string name(const std::string& key) const { return where_.empty() ? key : where_ + "." + key; }
@@ -162,7 +182,7 @@ Result<Metadata> metadataFromJson(const std::string& path, const std::string& te
   FOG_RETURN_IF_ERROR(top.string("software_version", s.softwareVersion));
   FOG_RETURN_IF_ERROR(top.string("created_utc", s.createdUtc));
   FOG_RETURN_IF_ERROR(top.string("notes", s.notes));
-  FOG_RETURN_IF_ERROR(top.number("rest_between_s", s.plan.restBetweenS, false, 0.0));
+  FOG_RETURN_IF_ERROR(top.number("rest_between_s", s.plan.restBetweenS, false, 0.0, kMaxPlanDurationS));
 
   // The delays and the pulse equivalent belong to the bench that recorded
   // the data: defaulting them to this bench's values would give a wrong
@@ -191,10 +211,10 @@ Result<Metadata> metadataFromJson(const std::string& path, const std::string& te
                          " ms is beyond a second; bench delays are in milliseconds (docs/formats.md)");
   FOG_RETURN_IF_ERROR(bench.number("latitude_deg", b.latitudeDeg, false, -90.0));
   if (b.latitudeDeg > 90.0) return corruptData(path + ": \"bench.latitude_deg\" must be within [-90, 90]");
-  FOG_RETURN_IF_ERROR(bench.number("pulse_equivalent_deg", b.pulseEquivalentDeg, true));
+  FOG_RETURN_IF_ERROR(bench.number("pulse_equivalent_deg", b.pulseEquivalentDeg, true, -HUGE_VAL, kMaxPulseEquivalentDeg));
   if (!(b.pulseEquivalentDeg > 0.0))
     return corruptData(path + ": \"bench.pulse_equivalent_deg\" must be > 0 (degrees per gyro pulse)");
-  FOG_RETURN_IF_ERROR(bench.number("counter_hz", b.counterHz, false));
+  FOG_RETURN_IF_ERROR(bench.number("counter_hz", b.counterHz, false, -HUGE_VAL, kMaxCounterHz));
   if (!(b.counterHz > 0.0)) return corruptData(path + ": \"bench.counter_hz\" must be > 0");
   std::uint64_t bits = static_cast<std::uint64_t>(b.counterBits);
   FOG_RETURN_IF_ERROR(bench.integer("counter_bits", bits));
@@ -209,8 +229,10 @@ Result<Metadata> metadataFromJson(const std::string& path, const std::string& te
                               "increment over the IMU's frame period) or \"sample_at_stamp\" (each rate is the "
                               "rate at its row's time stamp), not \"" + convention + "\"");
   FOG_RETURN_IF_ERROR(bench.number("gyro_frame_period_ms", meta.gyroFramePeriodMs, false, 0.0));
-  if (bench.has("gyro_frame_period_ms") && !(meta.gyroFramePeriodMs > 0.0))
-    return corruptData(path + ": \"bench.gyro_frame_period_ms\" must be > 0 (the IMU's own frame period)");
+  if (bench.has("gyro_frame_period_ms") &&
+      !(meta.gyroFramePeriodMs >= kMinFramePeriodMs && meta.gyroFramePeriodMs <= kMaxFramePeriodMs))
+    return corruptData(path + ": \"bench.gyro_frame_period_ms\" = " + Json(meta.gyroFramePeriodMs).dump() +
+                       " must be within 0.001 .. 1000 (the IMU's own frame period in milliseconds: 1 MHz to 1 Hz)");
   if (bench.has("gyro_sign")) {
     const Json& signs = j.at("bench").at("gyro_sign");
     if (!signs.is_object())
@@ -248,12 +270,12 @@ Result<Metadata> metadataFromJson(const std::string& path, const std::string& te
     if (!r.has("axis") || !parsed)
       return corruptData(path + ": \"" + where + ".axis\" must be \"x\", \"y\" or \"z\" (the swing axis)");
     p.axis = *parsed;
-    FOG_RETURN_IF_ERROR(r.number("frequency_hz", p.frequencyHz, false, 0.0));
-    FOG_RETURN_IF_ERROR(r.number("amplitude_deg", p.amplitudeDeg, false, 0.0));
+    FOG_RETURN_IF_ERROR(r.number("frequency_hz", p.frequencyHz, false, 0.0, kMaxSwingFrequencyHz));
+    FOG_RETURN_IF_ERROR(r.number("amplitude_deg", p.amplitudeDeg, false, 0.0, kMaxSwingAmplitudeDeg));
     p.hasPlan = r.has("duration_s");
-    FOG_RETURN_IF_ERROR(r.number("duration_s", p.durationS, false, 0.0));
-    FOG_RETURN_IF_ERROR(r.number("settle_s", p.settleS, false, 0.0));
-    FOG_RETURN_IF_ERROR(r.number("start_phase_deg", p.startPhaseDeg, false));
+    FOG_RETURN_IF_ERROR(r.number("duration_s", p.durationS, false, 0.0, kMaxPlanDurationS));
+    FOG_RETURN_IF_ERROR(r.number("settle_s", p.settleS, false, 0.0, kMaxPlanDurationS));
+    FOG_RETURN_IF_ERROR(r.number("start_phase_deg", p.startPhaseDeg, false, -1e6, 1e6));
     meta.testPoints.push_back(p);
   }
 

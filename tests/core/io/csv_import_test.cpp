@@ -294,16 +294,75 @@ TEST(CsvImportErrors, ADuplicateKeyOrADelayBeyondASecondIsRefused) {
   EXPECT_NE(huge.status().message().find("beyond a second"), std::string::npos) << huge.status().message();
 }
 
-TEST(CsvImport, ATimeOf1e300IsAnalysedWithoutOverflow) {
-  // The last table row 1e300 s after the others: a gap, reported, never a
-  // signed overflow (UBSan) in the frame count.
+TEST(CsvImportErrors, ATimeBeyondTheClocksRangeIsRefusedWhereItEnters) {
+  // A time of 1e300 s once overflowed the lost-frame count (signed overflow,
+  // UBSan): beyond 1e10 s a double does not resolve microseconds, so the
+  // row is refused with its line.
   std::string table = std::string(kTable) + "1,1e300,0.4,0,0\n";
   auto s = importCsvDirectory(goodDir(kMetadata, table.c_str()));
-  ASSERT_TRUE(s.isOk()) << s.status().toString();
-  const auto c = analysis::measureCoverage(s->recording.testPoints.at(0));
-  EXPECT_GE(c.lostTableFrames, 1u);
-  auto report = analysis::analyzeRecording(s->recording, analysis::benchConstantsOf(s->info.bench));
-  EXPECT_FALSE(report.isOk());  // two table readings and two gyro frames give no delay, with a reason
+  ASSERT_FALSE(s.isOk());
+  EXPECT_NE(s.status().message().find("table.csv line 5, column \"time_s\": \"1e300\" is out of range for a time "
+                                      "stamp (s): it must be within -1e+10 .. 1e+10"),
+            std::string::npos)
+      << s.status().message();
+  // A Unix time stamp is well inside.
+  std::string unix = "time_s,x_deg\n1764100000.001,0.1\n1764100000.002,0.2\n";
+  EXPECT_TRUE(importCsvDirectory(goodDir(kMetadata, unix.c_str(), "time_s,x_inc_deg\n1764100000.002,0.001\n")).isOk());
+}
+
+// Values near a double's range square to infinity in the fits: an increment
+// of 1e200 killed analyze, report, diagnose and export (SIGSEGV). Each kind of
+// value is refused where it enters, with its physical range.
+TEST(CsvImportErrors, ValuesBeyondTheirPhysicalRangeAreRefusedWithTheRange) {
+  struct Case {
+    std::string table, gyro, message;
+  } cases[] = {
+      {kTable, "time_s,x_inc_deg\n0.002,0.001\n0.004,1e200\n",
+       "gyro.csv line 3, column \"x_inc_deg\": \"1e200\" is out of range for a gyro increment (deg): it must be "
+       "within -10000 .. 10000"},
+      {kTable, "time_s,x_inc_deg\n0.002,-1e5\n", "is out of range for a gyro increment (deg)"},
+      {"time_s,x_deg\n0.001,4e8\n", kGyro, "table.csv line 2, column \"x_deg\": \"4e8\" is out of range for a table angle"},
+      {kTable, "time_s,x_inc_deg,temperature_c\n0.002,0.001,-300\n", "is out of range for a temperature (deg C)"},
+  };
+  for (const auto& c : cases) {
+    auto s = importCsvDirectory(goodDir(kMetadata, c.table.c_str(), c.gyro.c_str()));
+    ASSERT_FALSE(s.isOk()) << c.message;
+    EXPECT_NE(s.status().message().find(c.message), std::string::npos) << s.status().message();
+  }
+  const char* rateMeta = R"({"bench": {"table_read_delay_ms": 0.05, "board_delay_ms": 0.28, "pulse_equivalent_deg":
+    5e-5, "gyro_rate_convention": "sample_at_stamp"}, "test_points": [{"axis": "x"}]})";
+  auto rate = importCsvDirectory(goodDir(rateMeta, kTable, "time_s,x_rate_deg_s\n0.002,1e300\n0.004,1\n"));
+  ASSERT_FALSE(rate.isOk());
+  EXPECT_NE(rate.status().message().find("is out of range for a gyro rate (deg/s)"), std::string::npos)
+      << rate.status().message();
+}
+
+// gyro_frame_period_ms: 1e300 crashed analyze, 1e-300 gave "± -nan ms".
+TEST(CsvImportErrors, BenchConstantsBeyondTheirPhysicalRangeAreRefused) {
+  struct Case {
+    const char* bench;
+    const char* message;
+  } cases[] = {
+      {R"("gyro_rate_convention": "frame_average", "gyro_frame_period_ms": 1e300)",
+       "\"bench.gyro_frame_period_ms\" = 1e+300 must be within 0.001 .. 1000"},
+      {R"("gyro_rate_convention": "frame_average", "gyro_frame_period_ms": 1e-300)",
+       "\"bench.gyro_frame_period_ms\" = 1e-300 must be within 0.001 .. 1000"},
+      {R"("counter_hz": 1e300)", "\"bench.counter_hz\" = 1e+300 is out of range (must be <= 1000000000000.0)"},
+  };
+  for (const auto& c : cases) {
+    const std::string meta = std::string(R"({"bench": {"table_read_delay_ms": 0.05, "board_delay_ms": 0.28,
+      "pulse_equivalent_deg": 5e-5, )") + c.bench + R"(}, "test_points": [{"axis": "x"}]})";
+    auto s = importCsvDirectory(goodDir(meta.c_str(), kTable, "time_s,x_rate_deg_s\n0.002,1\n0.004,1\n"));
+    ASSERT_FALSE(s.isOk()) << c.bench;
+    EXPECT_NE(s.status().message().find(c.message), std::string::npos) << s.status().message();
+  }
+  auto point = importCsvDirectory(goodDir(R"({"bench": {"table_read_delay_ms": 0.05, "board_delay_ms": 0.28,
+    "pulse_equivalent_deg": 5e-5}, "test_points": [{"axis": "x", "frequency_hz": 1e300}]})"));
+  ASSERT_FALSE(point.isOk());
+  EXPECT_NE(point.status().message().find("\"test_points[0].frequency_hz\" = 1e+300 is out of range (must be within "
+                                          "0.0 .. 1000.0)"),
+            std::string::npos)
+      << point.status().message();
 }
 
 TEST(CsvImport, TheSourceNeverNests) {
