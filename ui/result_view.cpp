@@ -623,11 +623,13 @@ void ResultView::showFrequencyPlot() {
     mean->setLineStyle(QwtPlotMarker::HLine);
     mean->setLinePen(QPen(kAxisColour[static_cast<int>(c.axis)], 1, Qt::DashLine));
     mean->setYValue(c.weightedLagMs);
-    mean->setLabel(QwtText(tr("%1: weighted %2 ms, %3 with a pure delay (p = %4)")
-                               .arg(QString(axisName(c.axis)).toUpper())
-                               .arg(num(c.weightedLagMs, 4))
-                               .arg(c.consistentWithPureDelay ? tr("consistent") : tr("NOT consistent"))
-                               .arg(num(c.pValue, 3))));
+    QString label = tr("%1: weighted %2 ms, %3 with a pure delay (p = %4)")
+                        .arg(QString(axisName(c.axis)).toUpper())
+                        .arg(num(c.weightedLagMs, 4))
+                        .arg(c.consistentWithPureDelay ? tr("consistent") : tr("NOT consistent"))
+                        .arg(num(c.pValue, 3));
+    if (c.leftOutPoints > 0) label += tr("; %1 refused test point(s) left out").arg(c.leftOutPoints);
+    mean->setLabel(QwtText(label));
     mean->setLabelAlignment(Qt::AlignLeft | Qt::AlignTop);
     mean->attach(frequencyPlot_);
   }

@@ -517,6 +517,20 @@ Result<TestPointResult> analyzeTestPoint(const TestPointData& data, double incre
   r.magnitudeRatio = joint->gain;
   r.phaseDeg = -w * joint->lagS * kDegPerRad;
 
+  // A number the fits could not make finite (a value near a double's range,
+  // a degenerate record) is a refusal with its reason, never a result that a
+  // verdict could pass: "± nan" compares false with every limit.
+  for (const auto& [name, value] : {std::pair{"lag", r.lagMs}, {"lag uncertainty", r.lagStdMs},
+                                    {"IMU delay", r.imuDelayMs}, {"Cramér–Rao bound", r.crlbMs},
+                                    {"gyro/table amplitude ratio", r.magnitudeRatio}})
+    if (!std::isfinite(value))
+      return Status(StatusCode::kNotConverged,
+                    std::string("the fits gave no finite ") + name + " (" + fmt(value, 4) +
+                        "): the data hold values the sine model cannot fit; check the recording's units and values");
+  if (r.lagStdMs < 0.0)
+    return Status(StatusCode::kNotConverged, "the fits gave a negative lag uncertainty (" + fmt(r.lagStdMs, 4) +
+                                                 " ms): the data are too degenerate for the noise model");
+
   addValidityChecks(r, ch, gyroAngleResidual, times, amplitudes, lags, amplitude);
 
   // What the user should know about this result.
@@ -538,12 +552,24 @@ Result<TestPointResult> analyzeTestPoint(const TestPointData& data, double incre
   return r;
 }
 
+bool passedItsChecks(const TestPointResult& point) {
+  return std::none_of(point.checks.begin(), point.checks.end(),
+                      [](const ValidityCheck& c) { return c.judged && !c.passed; });
+}
+
 std::vector<FrequencyConsistency> frequencyConsistency(const std::vector<TestPointResult>& points) {
   std::vector<FrequencyConsistency> out;
   for (int a = 0; a < kAxisCount; ++a) {
+    // Only delays the analysis stands behind are pooled: a point whose
+    // validity check failed has its lag refused, and pooling it would turn
+    // refused numbers into a "consistent with a pure delay".
     std::vector<const TestPointResult*> onAxis;
-    for (const auto& p : points)
-      if (static_cast<int>(p.axis) == a && p.lagStdMs > 0.0) onAxis.push_back(&p);
+    int leftOut = 0;
+    for (const auto& p : points) {
+      if (static_cast<int>(p.axis) != a) continue;
+      if (p.lagStdMs > 0.0 && passedItsChecks(p)) onAxis.push_back(&p);
+      else ++leftOut;
+    }
     if (onAxis.size() < 2) continue;
     // Distinct frequencies only make a frequency test.
     bool distinct = false;
@@ -553,6 +579,7 @@ std::vector<FrequencyConsistency> frequencyConsistency(const std::vector<TestPoi
     FrequencyConsistency c;
     c.axis = static_cast<Axis>(a);
     c.points = static_cast<int>(onAxis.size());
+    c.leftOutPoints = leftOut;
     double sw = 0.0, swx = 0.0;
     for (const auto* p : onAxis) {
       const double wgt = 1.0 / (p->lagStdMs * p->lagStdMs);

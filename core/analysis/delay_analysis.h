@@ -116,7 +116,8 @@ struct TestPointResult {
 // Delay against frequency on one axis.
 struct FrequencyConsistency {
   Axis axis = Axis::kX;
-  int points = 0;
+  int points = 0;         // pooled: test points that passed every validity check
+  int leftOutPoints = 0;  // on this axis but not pooled: a check failed (their delay is refused)
   double weightedLagMs = 0.0, weightedLagStdMs = 0.0;
   double chiSquare = 0.0;
   int dof = 0;
@@ -163,6 +164,12 @@ Result<TestPointResult> analyzeTestPoint(const TestPointData& data, double incre
 // delay (a recording of static segments only says so).
 Result<DelayReport> analyzeRecording(const Recording& recording, const BenchConstants& constants);
 
+// True when no judged validity check of the point failed: its delay stands.
+bool passedItsChecks(const TestPointResult& point);
+
+// Per axis with two or more distinct frequencies among the points that passed
+// their checks: the weighted lag and the chi^2 test of one pure delay. Points
+// whose checks failed are left out and counted (leftOutPoints).
 std::vector<FrequencyConsistency> frequencyConsistency(const std::vector<TestPointResult>& points);
 
 // Asymptotic Cramer-Rao bound on the lag (s) for sinusoids of the given

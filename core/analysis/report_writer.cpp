@@ -125,7 +125,10 @@ std::string formatReportText(const DelayReport& report, const ReportContext& con
   for (const auto& fp : report.failedPoints) o << "\nno delay from " << fp << "\n";
   for (const auto& cc : report.consistency) {
     o << "\nDelay against frequency, " << axisLabel(cc.axis) << " axis (" << cc.points
-      << " frequencies): weighted lag " << fixed(cc.weightedLagMs, decimalsFor(cc.weightedLagStdMs)) << " ± "
+      << " frequencies"
+      << (cc.leftOutPoints > 0 ? "; " + std::to_string(cc.leftOutPoints) + " test point(s) left out: their checks failed"
+                               : std::string())
+      << "): weighted lag " << fixed(cc.weightedLagMs, decimalsFor(cc.weightedLagStdMs)) << " ± "
       << fixed(cc.weightedLagStdMs, decimalsFor(cc.weightedLagStdMs))
       << " ms, chi2 " << f("%.2f", cc.chiSquare) << " on " << cc.dof << " dof, p = " << f("%.3f", cc.pValue)
       << ": "
@@ -246,6 +249,7 @@ std::string formatReportJson(const DelayReport& report, const ReportContext& con
   for (const auto& cc : report.consistency)
     doc["frequency_consistency"].push_back({{"axis", axisName(cc.axis)},
                                             {"points", cc.points},
+                                            {"left_out_points", cc.leftOutPoints},
                                             {"weighted_lag_ms", cc.weightedLagMs},
                                             {"weighted_lag_std_ms", cc.weightedLagStdMs},
                                             {"chi2", cc.chiSquare},

@@ -1211,12 +1211,12 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+865"/>
+        <location line="+861"/>
         <source>Diagnosis</source>
         <translation>诊断</translation>
     </message>
     <message>
-        <location line="-862"/>
+        <location line="-858"/>
         <source>Noise</source>
         <translation>噪声</translation>
     </message>
@@ -1289,12 +1289,12 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+633"/>
+        <location line="+629"/>
         <source>Open session</source>
         <translation>打开会话</translation>
     </message>
     <message>
-        <location line="-632"/>
+        <location line="-628"/>
         <source>fogbench sessions (*.fbs);;All files (*)</source>
         <translation>fogbench 会话 (*.fbs);;所有文件 (*)</translation>
     </message>
@@ -1464,7 +1464,7 @@ Quit: Ctrl+Q</source>
         <translation>（暂无）</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+20"/>
         <source>Test plan loaded from %1</source>
         <translation>已从 %1 载入测试计划</translation>
     </message>
@@ -1519,12 +1519,12 @@ Quit: Ctrl+Q</source>
         <translation>停止运行并关闭</translation>
     </message>
     <message>
-        <location line="-122"/>
+        <location line="-118"/>
         <source>The language can be changed once the run or the diagnosis has ended.</source>
         <translation>运行或诊断结束后才能更改语言。</translation>
     </message>
     <message>
-        <location line="+124"/>
+        <location line="+120"/>
         <source>Keep running</source>
         <translation>继续运行</translation>
     </message>
@@ -2229,7 +2229,7 @@ File: %1</source>
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../../ui/main_window.cpp" line="-1007"/>
+        <location filename="../../ui/main_window.cpp" line="-1003"/>
         <location filename="../../ui/plan_editor.cpp" line="-300"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
@@ -2483,7 +2483,7 @@ File: %1</source>
         <translation>不是纯延迟（随频率变化）</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+6"/>
         <source>Lag: gyro output behind the stamped table angle (joint fit). IMU delay = lag + table read delay; gyro delay = IMU delay − processing-board delay. CRLB: Cramér–Rao bound on the lag for the noise measured in this session.</source>
         <translation>滞后：陀螺输出相对于打时间戳的转台角度的滞后（联合拟合）。IMU 延迟 = 滞后 + 转台读数延迟；陀螺延迟 = IMU 延迟 − 处理板延迟。CRLB：按本次会话实测噪声计算的滞后 Cramér–Rao 界。</translation>
     </message>
@@ -2662,7 +2662,7 @@ File: %1</source>
         <translation>未给出</translation>
     </message>
     <message>
-        <location line="-116"/>
+        <location line="-119"/>
         <source>Result reported</source>
         <translation>报告的结果</translation>
     </message>
@@ -2672,7 +2672,12 @@ File: %1</source>
         <translation>生成本报告时计算，使用第 2 页的常数</translation>
     </message>
     <message>
-        <location line="+118"/>
+        <location line="+43"/>
+        <source> %1 refused test point(s) left out: their checks failed.</source>
+        <translation>未计入 %1 个被拒绝的测试点：其有效性检查未通过。</translation>
+    </message>
+    <message>
+        <location line="+78"/>
         <source>The plan was not recorded with the data; the test points as the stream states them:</source>
         <translation>数据未附带测试计划；以下为数据流给出的测试点：</translation>
     </message>
@@ -3793,6 +3798,11 @@ File: %1</source>
         <location line="+0"/>
         <source>NOT consistent</source>
         <translation>不一致</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>; %1 refused test point(s) left out</source>
+        <translation>；未计入 %1 个被拒绝的测试点</translation>
     </message>
 </context>
 <context>

@@ -342,7 +342,10 @@ void firstPage(PageFlow& flow, const Content& c) {
                        .arg(cc.dof)
                        .arg(fixed(cc.pValue, 3))
                        .arg(cc.consistentWithPureDelay ? QObject::tr("consistent with a pure delay")
-                                                       : QObject::tr("NOT a pure delay (frequency-dependent)")),
+                                                       : QObject::tr("NOT a pure delay (frequency-dependent)")) +
+                       (cc.leftOutPoints > 0
+                            ? QObject::tr(" %1 refused test point(s) left out: their checks failed.").arg(cc.leftOutPoints)
+                            : QString()),
                    PageFlow::font(8.5));
   }
   flow.paragraph(QObject::tr("Lag: gyro output behind the stamped table angle (joint fit). IMU delay = lag + table "

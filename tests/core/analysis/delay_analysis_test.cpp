@@ -158,6 +158,53 @@ TEST(DelayAnalysis, RefusesTooFewSamples) {
   EXPECT_EQ(r.status().code(), StatusCode::kInsufficientData);
 }
 
+// A recording made before values were range-checked where they enter (or by
+// another program) can hold a value whose square is not a double: the fits
+// refuse it with a reason; an increment of 1e200 crashed the covariance
+// (SIGSEGV in fillCovariance on an empty J^T J).
+TEST(DelayAnalysis, AValueBeyondADoublesSquareIsRefusedNotCrashed) {
+  for (const double extreme : {1e200, -1e300, 1e155}) {
+    auto data = makeSynthetic(SyntheticSpec{});
+    data.imu[data.imu.size() / 2].incrementDeg[1] = extreme;
+    auto r = analyzeTestPoint(data, 1.0, BenchConstants{});
+    ASSERT_FALSE(r.isOk()) << extreme << ": lag " << r->lagMs << " ± " << r->lagStdMs;
+    EXPECT_NE(r.status().message().find("fit"), std::string::npos) << r.status().message();  // which fit, and why
+  }
+  auto table = makeSynthetic(SyntheticSpec{});
+  table.table[100].angleDeg[1] = 1e200;
+  auto r = analyzeTestPoint(table, 1.0, BenchConstants{});
+  EXPECT_FALSE(r.isOk());
+}
+
+// The delay-against-frequency test pools only points whose checks passed: 9
+// refused pendulum episodes once read "weighted lag -21.87 ± 5.40 ms ...
+// consistent with a pure delay".
+TEST(DelayAnalysis, TheFrequencyTestPoolsOnlyPointsThatPassedTheirChecks) {
+  std::vector<TestPointResult> points(3);
+  const double f[] = {0.5, 1.0, 2.0}, lag[] = {0.5, 0.5, 30.0};
+  for (int i = 0; i < 3; ++i) {
+    points[i].index = i;
+    points[i].axis = Axis::kX;
+    points[i].nominalFrequencyHz = f[i];
+    points[i].lagMs = lag[i];
+    points[i].lagStdMs = 0.01;
+    points[i].checks.push_back({"axis_sign", true, "ok"});
+  }
+  points[2].checks.push_back({"steady_sine", false, "not a steady sinusoid"});
+  auto c = frequencyConsistency(points);
+  ASSERT_EQ(c.size(), 1u);
+  EXPECT_EQ(c[0].points, 2);
+  EXPECT_EQ(c[0].leftOutPoints, 1);
+  EXPECT_NEAR(c[0].weightedLagMs, 0.5, 1e-12);
+  EXPECT_TRUE(c[0].consistentWithPureDelay);
+  // An unjudged check (n/a) does not leave a point out; with one point left no test is made.
+  points[2].checks.back().judged = false;
+  EXPECT_EQ(frequencyConsistency(points).at(0).points, 3);
+  points[1].checks.push_back({"causal", false, "negative"});
+  points[2].checks.back().judged = true;
+  EXPECT_TRUE(frequencyConsistency(points).empty());
+}
+
 TEST(DelayAnalysis, StreamWithoutPulseEquivalentNeedsTheConstant) {
   Recording rec;
   rec.pulseEquivalentDeg = 0.0;
