@@ -5,6 +5,7 @@
 #include <cmath>
 #include <deque>
 #include <optional>
+#include <string_view>
 
 #include "core/analysis/channels.h"
 #include "core/analysis/validity.h"
@@ -137,18 +138,35 @@ Result<std::vector<SwingWindow>> findSwingWindows(const std::vector<TableSample>
   return windows;
 }
 
+namespace {
+
+// A whole field as one finite number of seconds within the range a time
+// stamp may take (the CSV reader's): from_chars stops at the first character
+// it cannot use, so "1e" of "1e-300" read as 1.
+bool wholeSeconds(std::string_view s, double& out) {
+  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
+  return !s.empty() && ec == std::errc() && end == s.data() + s.size() && std::isfinite(out) &&
+         std::abs(out) <= 1e10;
+}
+
+// "START-END": the separating dash is the one whose both sides read whole
+// (an exponent's or a sign's dash does not), e.g. "1e-3-2e-3", "-5--2".
+bool splitWindow(std::string_view item, double& start, double& end) {
+  for (std::size_t dash = item.find('-', 1); dash != std::string_view::npos; dash = item.find('-', dash + 1))
+    if (wholeSeconds(item.substr(0, dash), start) && wholeSeconds(item.substr(dash + 1), end)) return true;
+  return false;
+}
+
+}  // namespace
+
 Result<std::vector<SwingWindow>> parseSwingWindows(const std::string& text) {
   std::vector<SwingWindow> out;
   std::size_t at = 0;
   while (at <= text.size()) {
     const auto end = std::min(text.find(',', at), text.size());
     const std::string item = text.substr(at, end - at);
-    const auto dash = item.find('-', 1);
     SwingWindow w;
-    const bool ok = dash != std::string::npos &&
-                    std::from_chars(item.data(), item.data() + dash, w.startS).ec == std::errc() &&
-                    std::from_chars(item.data() + dash + 1, item.data() + item.size(), w.endS).ec == std::errc() &&
-                    std::isfinite(w.startS) && std::isfinite(w.endS) && w.endS > w.startS &&
+    const bool ok = splitWindow(item, w.startS, w.endS) && w.endS > w.startS &&
                     (out.empty() || w.startS >= out.back().endS);
     if (!ok)
       return invalidArgument("--segment takes 'auto' or windows START-END in seconds, ascending and not overlapping, "
