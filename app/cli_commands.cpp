@@ -20,7 +20,7 @@
 #include "core/diagnosis/accuracy_study.h"
 #include "core/diagnosis/effects.h"
 #include "core/model/simulator.h"
-#include "core/protocol/recording_builder.h"
+#include "core/session/raw_stream_file.h"
 #include "core/session/session_file.h"
 #include "app/cli_common.h"
 #include "app/session_commands.h"
@@ -196,15 +196,12 @@ int analyzeCommand(CliArguments& args) {
   if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
   if (args.positionals().size() != 1) return fail(invalidArgument("analyze needs exactly one FILE"), 2);
   const std::string path = args.positionals()[0];
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return fail(ioError("cannot read '" + path + "'"), 2);
-  std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  auto recording = protocol::decodeRecording(bytes);
-  if (!recording) return fail(Status(recording.status().code(), path + ": " + recording.status().message()), 2);
+  auto stream = session::readRawStreamFile(path);
+  if (!stream) return fail(stream.status(), 2);
   analysis::ReportContext context;
   context.source = "raw stream " + toValidUtf8(path);  // a file name need not be UTF-8
   context.imuDelayLimitMs = *limit;
-  return printReport(analysis::analyzeRecording(*recording, *constants), context, json);
+  return printReport(analysis::analyzeRecording(stream->recording, *constants), context, json);
 }
 
 int theoryCommand(CliArguments& args) {

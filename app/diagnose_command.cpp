@@ -2,14 +2,13 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 #include <iterator>
 
 #include "app/cli_common.h"
 #include "core/diagnosis/blind_check.h"
 #include "core/diagnosis/diagnosis.h"
-#include "core/protocol/recording_builder.h"
+#include "core/session/raw_stream_file.h"
 #include "core/session/session_file.h"
 
 namespace fog::app {
@@ -86,12 +85,9 @@ int diagnoseCommand(CliArguments& args) {
     auto c = readConstants(args, noPulseEquivalent);
     if (!c) return fail(c.status(), 2);
     if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return fail(ioError("cannot read '" + path + "'"), 2);
-    std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    auto rec = protocol::decodeRecording(bytes);
-    if (!rec) return fail(Status(rec.status().code(), path + ": " + rec.status().message()), 2);
-    recording = std::move(*rec);
+    auto stream = session::readRawStreamFile(path);
+    if (!stream) return fail(stream.status(), 2);
+    recording = std::move(stream->recording);
     constants = *c;
   }
   options.monteCarloSeeds = *seeds;

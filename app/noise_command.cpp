@@ -1,13 +1,12 @@
 #include "app/noise_command.h"
 
 #include <cmath>
-#include <fstream>
 #include <iostream>
 #include <iterator>
 
 #include "app/cli_common.h"
 #include "core/noise/gyro_noise.h"
-#include "core/protocol/recording_builder.h"
+#include "core/session/raw_stream_file.h"
 #include "core/session/session_file.h"
 
 namespace fog::app {
@@ -69,18 +68,12 @@ int noiseCommand(CliArguments& args) {
     recording = std::move(*rec);
   } else {
     bench.pulseEquivalentDeg = 0.0;
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
+    auto stream = session::readRawStreamFile(path);
+    if (!stream) {
       (void)args.checkAllUsed();
-      return fail(ioError("cannot read '" + path + "'"), 2);
+      return fail(stream.status(), 2);
     }
-    std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    auto rec = protocol::decodeRecording(bytes);
-    if (!rec) {
-      (void)args.checkAllUsed();
-      return fail(Status(rec.status().code(), path + ": " + rec.status().message()), 2);
-    }
-    recording = std::move(*rec);
+    recording = std::move(stream->recording);
   }
   auto latitude = args.number("latitude-deg", bench.latitudeDeg);
   auto pulse = args.number("pulse-equivalent-deg", bench.pulseEquivalentDeg);

@@ -6,7 +6,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <iterator>
 
@@ -15,6 +14,7 @@
 #include "core/common/version.h"
 #include "core/model/simulator.h"
 #include "core/protocol/recording_builder.h"
+#include "core/session/raw_stream_file.h"
 #include "core/session/session_file.h"
 #include "ui/language.h"
 #include "ui/report/calibration_report.h"
@@ -70,15 +70,11 @@ Result<report::ReportInput> fileSession(const std::string& path) {
     in.rawBytes = std::move(bytes);
     return in;
   }
-  std::ifstream file(path, std::ios::binary);
-  if (!file) return ioError("cannot read '" + path + "'");
-  std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-  auto recording = protocol::decodeRecording(bytes);
-  if (!recording) return Status(StatusCode::kCorruptData, path + ": " + recording.status().message());
+  FOG_ASSIGN_OR_RETURN(auto stream, session::readRawStreamFile(path));
   in.info.source = "raw stream " + path;
   in.info.bench.pulseEquivalentDeg = 0.0;  // only the stream or the command line can tell
-  in.recording = std::move(*recording);
-  in.rawBytes = std::move(bytes);
+  in.recording = std::move(stream.recording);
+  in.rawBytes = std::move(stream.bytes);
   return in;
 }
 

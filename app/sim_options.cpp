@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <iterator>
 #include <string>
 
 #include "app/cli_common.h"
@@ -30,12 +28,7 @@ Result<TestPlan> readPlan(CliArguments& args) {
   if ((file ? 1 : 0) + (preset ? 1 : 0) + (single ? 1 : 0) > 1)
     return invalidArgument("give one of --plan, --preset or --axis/--freq-hz/--amp-deg/--duration-s");
   if (file) {
-    std::ifstream in(*file);
-    if (!in) return ioError("cannot read plan file '" + *file + "'");
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    auto plan = testPlanFromJson(text);
-    if (!plan) return invalidArgument(*file + ": " + plan.status().message());
-    return plan;
+    return loadTestPlanFile(*file);
   }
   if (single) {
     TestPoint p;

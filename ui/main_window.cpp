@@ -387,11 +387,7 @@ void MainWindow::addRecentSession(const QString& path) {
 }
 
 Status MainWindow::loadPlanFile(const QString& path) {
-  std::ifstream in(path.toStdString(), std::ios::binary);
-  if (!in) return ioError("cannot read '" + path.toStdString() + "'; check the name and that the file is readable");
-  std::ostringstream text;
-  text << in.rdbuf();
-  auto plan = testPlanFromJson(text.str());
+  auto plan = loadTestPlanFile(path.toStdString());
   if (!plan) return plan.status();
   planEditor_->setPlan(*plan);
   tell(tr("Test plan loaded from %1").arg(QDir::toNativeSeparators(path)));

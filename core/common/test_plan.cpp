@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "core/common/file_read.h"
 #include "core/common/units.h"
 
 namespace fog {
@@ -222,6 +223,13 @@ Result<TestPlan> presetPlan(std::string_view name) {
   std::string known;
   for (const auto& n : presetPlanNames()) known += (known.empty() ? "" : ", ") + n;
   return invalidArgument("unknown preset '" + std::string(name) + "' (" + known + ")");
+}
+
+Result<TestPlan> loadTestPlanFile(const std::string& path) {
+  FOG_ASSIGN_OR_RETURN(auto text, readRegularTextFile(path, 16u << 20, "a plan file"));
+  auto plan = testPlanFromJson(text);
+  if (!plan) return Status(plan.status().code(), path + ": " + plan.status().message());
+  return plan;
 }
 
 Result<TestPlan> testPlanFromJson(std::string_view text) {

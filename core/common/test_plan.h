@@ -108,6 +108,11 @@ struct TestPlan {
 // before.
 Result<TestPlan> testPlanFromJson(std::string_view json);
 
+// A plan file (`run --plan`, the GUI's Open plan): a regular file of at most
+// 16 MiB (a 1 000-point plan is some 200 kB), parsed by testPlanFromJson().
+// Errors name the file.
+Result<TestPlan> loadTestPlanFile(const std::string& path);
+
 // The named plans the command line and the GUI offer, in display order:
 //   paper       the paper's two conditions on X: 0.1 Hz / 10 deg 294 s, then 1 Hz / 3 deg 60 s
 //   paper-slow  0.1 Hz / 10 deg, 294 s
