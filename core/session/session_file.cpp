@@ -17,6 +17,7 @@
 #include <span>
 #include <utility>
 
+#include "core/common/file_read.h"
 #include "core/common/text.h"
 #include "core/common/version.h"
 #include "core/protocol/recording_builder.h"
@@ -304,19 +305,42 @@ struct HeaderInfo {
 };
 
 // A session whose SQLite header (first 100 bytes) is damaged still holds its
-// schema as text in page 1 (sqlite_master). Such a file must never be taken
-// for a raw sampling-board stream: a stream never holds this text.
+// schema as text in page 1 (sqlite_master); one whose whole first page is
+// lost (zeroed: 4 KiB) still holds its session row, with the plan's JSON, in
+// the pages after it. Such a file must never be taken for a raw
+// sampling-board stream: a stream never holds this text, and decoding the
+// database pages as a stream reads the stream's chunks in page order with
+// the pages' own bytes between them (192 checksum failures and 1.1 MB
+// skipped in a 20-s session; the delay came out right by luck of the order).
+enum class SessionDamage { kNone, kHeader, kFirstPage };
 constexpr std::size_t kSchemaSearchBytes = 64 * 1024;
-bool hasSessionSchemaText(const std::string& path) {
+SessionDamage sessionDamage(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   std::string head(kSchemaSearchBytes, '\0');
   in.read(head.data(), static_cast<std::streamsize>(head.size()));
   head.resize(static_cast<std::size_t>(in.gcount()));
-  return head.find("CREATE TABLE raw_chunk") != std::string::npos &&
-         head.find("CREATE TABLE session") != std::string::npos;
+  if (head.find("CREATE TABLE raw_chunk") != std::string::npos &&
+      head.find("CREATE TABLE session") != std::string::npos)
+    return SessionDamage::kHeader;
+  // Without the schema: a file of whole pages whose second page (at the
+  // smallest page size a session uses, 4 KiB) is a table b-tree page, and
+  // the session row's plan text. A plan file or a CSV is not made of pages.
+  constexpr std::size_t kPage = 4096;
+  std::error_code ec;
+  const auto size = fs::file_size(path, ec);
+  const bool pages = !ec && size >= 2 * kPage && size % kPage == 0 && head.size() > kPage &&
+                     (head[kPage] == 0x0d || head[kPage] == 0x05);
+  if (pages && head.find("\"rest_between_s\"") != std::string::npos &&
+      head.find("\"points\"") != std::string::npos)
+    return SessionDamage::kFirstPage;
+  return SessionDamage::kNone;
 }
 
-std::string damagedHeaderMessage(const std::string& path) {
+std::string damagedSessionMessage(const std::string& path, SessionDamage damage) {
+  if (damage == SessionDamage::kFirstPage)
+    return "'" + path + "' is a fogbench session whose first page (the SQLite header and the list of its tables, "
+           "4 KiB) is damaged; it is not analysed as a raw stream (the stream inside is cut into database pages). "
+           "Restore it from a backup";
   return "'" + path + "' is a fogbench session whose SQLite header (its first 100 bytes) is damaged; it is not "
          "analysed as a raw stream. Restore it from a backup, or repair a copy: printf 'SQLite format 3\\0' | "
          "dd of=COPY.fbs conv=notrunc (when only the header's first bytes were hit, the copy opens again)";
@@ -329,6 +353,9 @@ Result<HeaderInfo> readHeader(const std::string& path) {
   if (ec || !fs::exists(status))
     return ioError("cannot open session '" + path + "': no such file; check the path");
   if (fs::is_directory(status)) return ioError("'" + path + "' is a folder, not a fogbench session file");
+  // A FIFO would block the read below and a device never ends: only a
+  // regular file can be a session (file_read.h words the refusal).
+  if (!fs::is_regular_file(status)) return checkRegularFile(path, 0, "a fogbench session file");
   const auto size = fs::file_size(path, ec);
   if (ec) return ioError("cannot read '" + path + "': " + ec.message());
   if (size == 0)
@@ -339,8 +366,8 @@ Result<HeaderInfo> readHeader(const std::string& path) {
   if (!in && in.gcount() == 0) return ioError("cannot read '" + path + "'; check its permissions");
   static constexpr char kMagic[] = "SQLite format 3";  // 16 bytes with the NUL
   if (size < h.size() || std::memcmp(h.data(), kMagic, sizeof kMagic) != 0) {
-    if (hasSessionSchemaText(path))
-      return corruptData(damagedHeaderMessage(path));
+    if (const auto damage = sessionDamage(path); damage != SessionDamage::kNone)
+      return corruptData(damagedSessionMessage(path, damage));
     return corruptData("'" + path + "' is not a fogbench session (not an SQLite database)");
   }
   HeaderInfo info;
@@ -467,12 +494,13 @@ std::string utcNow() {
 bool looksLikeSession(const std::string& path) {
   auto h = readHeader(path);
   if (h.isOk()) return h->applicationId == static_cast<std::uint32_t>(kApplicationId);
-  return h.status().message() == damagedHeaderMessage(path);
+  // kCorruptData: a regular file that was read (a FIFO is never opened).
+  return h.status().code() == StatusCode::kCorruptData && sessionDamage(path) != SessionDamage::kNone;
 }
 
 bool isSqliteFile(const std::string& path) {
   auto h = readHeader(path);
-  return h.isOk() || h.status().message() == damagedHeaderMessage(path);
+  return h.isOk() || (h.status().code() == StatusCode::kCorruptData && sessionDamage(path) != SessionDamage::kNone);
 }
 
 bool isBeingRecorded(const std::string& path) {
