@@ -1,5 +1,6 @@
 #include "app/session_commands.h"
 
+#include <cctype>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -141,6 +142,9 @@ int sessionsCommand(CliArguments& args) {
     e["lag_ms"] = s.lagMs;
     e["imu_delay_ms"] = s.imuDelayMs;
     e["results"] = s.results;
+    e["damaged_results"] = s.damagedResults;
+    e["shown_result"] = s.shownResult;  // 1-based; 0: none intact
+    e["verdict"] = s.verdict;
     list.push_back(e);
   }
   if (asJson) {
@@ -159,17 +163,27 @@ int sessionsCommand(CliArguments& args) {
     return s.empty() ? std::string("-") : s;
   };
   std::vector<std::vector<std::string>> rows = {
-      {"file", "created (UTC)", "operator", "IMU", "axes", "state", "lag (ms)", "IMU delay (ms)"}};
+      {"file", "created (UTC)", "operator", "IMU", "axes", "state", "result", "lag (ms)", "IMU delay (ms)"}};
+  // "PASS (2 of 2)", "INVALID (1 of 3; 2 damaged)", "damaged (1 of 1)", "-".
+  auto resultColumn = [](const json& e) {
+    const std::size_t n = e["results"], damaged = e["damaged_results"], shown = e["shown_result"];
+    if (n == 0) return std::string("-");
+    if (shown == 0) return "damaged (" + std::to_string(damaged) + " of " + std::to_string(n) + ")";
+    std::string verdict = e["verdict"];
+    for (auto& c : verdict) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return (verdict.empty() ? std::string("stored") : verdict) + " (" + std::to_string(shown) + " of " +
+           std::to_string(n) + (damaged > 0 ? "; " + std::to_string(damaged) + " damaged" : std::string()) + ")";
+  };
   for (const auto& e : list) {
     if (e.contains("error")) {
-      rows.push_back({e["file"], "-", "-", "-", "-", "unreadable: " + e["error"].get<std::string>(), "-", "-"});
+      rows.push_back({e["file"], "-", "-", "-", "-", "unreadable: " + e["error"].get<std::string>(), "-", "-", "-"});
       continue;
     }
     std::string imu = e["imu_model"].get<std::string>();
     if (!e["imu_serial"].get<std::string>().empty()) imu += (imu.empty() ? "" : " ") + e["imu_serial"].get<std::string>();
     rows.push_back({e["file"], e["created_utc"], e["operator"].get<std::string>().empty() ? "-" : e["operator"],
                     imu.empty() ? "-" : imu, e["axes"], e["complete"].get<bool>() ? "complete" : "incomplete",
-                    joinMs(e["lag_ms"]), joinMs(e["imu_delay_ms"])});
+                    resultColumn(e), joinMs(e["lag_ms"]), joinMs(e["imu_delay_ms"])});
   }
   std::vector<std::size_t> width(rows[0].size(), 0);
   for (const auto& row : rows)

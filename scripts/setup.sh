@@ -15,7 +15,7 @@ packages=(
   libeigen3-dev libceres-dev
   libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev
   qtbase5-dev libqt5svg5-dev libqt5opengl5-dev
-  libqwt-qt5-dev libsqlite3-dev qttools5-dev qttools5-dev-tools
+  libqwt-qt5-dev libsqlite3-dev sqlite3 qttools5-dev qttools5-dev-tools
   qt6-base-dev qt6-base-dev-tools qt6-svg-dev qt6-tools-dev qt6-tools-dev-tools
   qt6-l10n-tools qt6-qpa-plugins qmake6 libgl-dev bzip2
   clang libclang-rt-14-dev

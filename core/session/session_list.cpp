@@ -65,15 +65,23 @@ Result<SessionListing> listSessions(const std::string& dirText) {
     s.incompleteReason = (*r)->incompleteReason();
     auto results = (*r)->results();
     if (results) s.results = results->size();
-    // The latest result that passes its checksum.
-    const StoredResult* latest = nullptr;
+    // The latest result that passes its checksum and parses as a report.
+    nlohmann::json latest;
     if (results)
-      for (const auto& res : *results)
-        if (res.intact) latest = &res;
-    if (latest) {
-      const auto doc = nlohmann::json::parse(latest->reportJson, nullptr, false);
-      if (doc.is_object() && doc.contains("test_points") && doc["test_points"].is_array()) {
-        for (const auto& tp : doc["test_points"]) {
+      for (std::size_t i = 0; i < results->size(); ++i) {
+        const auto& res = (*results)[i];
+        auto doc = res.intact ? nlohmann::json::parse(res.reportJson, nullptr, false) : nlohmann::json();
+        if (!doc.is_object()) {
+          ++s.damagedResults;
+          continue;
+        }
+        latest = std::move(doc);
+        s.shownResult = i + 1;
+      }
+    if (s.shownResult > 0) {
+      if (latest.contains("verdict") && latest["verdict"].is_string()) s.verdict = latest["verdict"];
+      if (latest.contains("test_points") && latest["test_points"].is_array()) {
+        for (const auto& tp : latest["test_points"]) {
           if (tp.contains("lag_ms") && tp["lag_ms"].is_number()) s.lagMs.push_back(tp["lag_ms"]);
           if (tp.contains("imu_delay_ms") && tp["imu_delay_ms"].is_number()) s.imuDelayMs.push_back(tp["imu_delay_ms"]);
         }

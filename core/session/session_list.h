@@ -19,7 +19,14 @@ struct SessionSummary {
   bool complete = false;
   std::string incompleteReason;
   std::size_t results = 0;
-  // Per test point, from the latest stored result (empty without one).
+  // Stored results that fail their checksum or do not parse: never shown,
+  // always counted, so a listing says a result is damaged instead of "-".
+  std::size_t damagedResults = 0;
+  // The result shown: the latest intact one (1-based; 0: none), its verdict
+  // as stored ("pass", "fail", "invalid"; empty when it states none) and,
+  // per test point, its lag and IMU delay.
+  std::size_t shownResult = 0;
+  std::string verdict;
   std::vector<double> lagMs, imuDelayMs;
 };
 
