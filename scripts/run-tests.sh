@@ -79,17 +79,17 @@ if [ "$asan_failed" != 0 ]; then
   exit 1
 fi
 
-stage "fuzzing: sampling-board decoder, session reader, CSV import and plan JSON, table SCPI (libFuzzer + ASan/UBSan, clang)"
+stage "fuzzing: sampling-board decoder, session reader, CSV import and plan JSON, analysis with numeric extremes, table SCPI (libFuzzer + ASan/UBSan, clang)"
 # Bounded: FUZZ_SECONDS each (default 60). Seeds: the committed decoder corpus
 # and small simulated streams and sessions written by fog_fuzz_seed_corpus.
 # A crash fails the run and leaves its input in the scratch folder printed
 # below (docs/reliability.md).
 fuzz_seconds="${FUZZ_SECONDS:-60}"
 cmake --preset fuzz
-cmake --build --preset fuzz --target fog_fuzz_decoder fog_fuzz_session fog_fuzz_import fog_fuzz_scpi fog_fuzz_seed_corpus
+cmake --build --preset fuzz --target fog_fuzz_decoder fog_fuzz_session fog_fuzz_import fog_fuzz_analysis fog_fuzz_scpi fog_fuzz_seed_corpus
 fuzz_dir="$(mktemp -d /tmp/fogbench-fuzz.XXXXXX)"
 echo "fuzz scratch: $fuzz_dir"
-mkdir -p "$fuzz_dir"/{seed-decoder,seed-session,seed-import,decoder,session,import,scpi}
+mkdir -p "$fuzz_dir"/{seed-decoder,seed-session,seed-import,decoder,session,import,analysis,scpi}
 # Import seed: a plan, a metadata text, a table and a gyro file, NUL-separated.
 printf '%s\0%s\0%s\0%s' \
   '{"rest_between_s": 1, "points": [{"axis": "x", "frequency_hz": 1, "amplitude_deg": 3, "duration_s": 10}]}' \
@@ -103,6 +103,10 @@ build/fuzz/fuzz/fog_fuzz_session -max_total_time="$fuzz_seconds" -print_final_st
   -artifact_prefix="$fuzz_dir/session-" "$fuzz_dir/session" "$fuzz_dir/seed-session"
 build/fuzz/fuzz/fog_fuzz_import -max_total_time="$fuzz_seconds" -print_final_stats=1 -max_len=65536 \
   -artifact_prefix="$fuzz_dir/import-" "$fuzz_dir/import" "$fuzz_dir/seed-import"
+# The analysis over recordings with numeric extremes (committed seeds: ±1e±300,
+# subnormals, NaN, inf, huge counts): half the time (each input is a whole analysis).
+build/fuzz/fuzz/fog_fuzz_analysis -max_total_time="$(( (fuzz_seconds + 1) / 2 ))" -print_final_stats=1 -max_len=512 \
+  -artifact_prefix="$fuzz_dir/analysis-" "$fuzz_dir/analysis" fuzz/corpus/analysis
 # The table's SCPI parser and emulated controller: half the time (a small parser).
 build/fuzz/fuzz/fog_fuzz_scpi -max_total_time="$(( (fuzz_seconds + 1) / 2 ))" -print_final_stats=1 -max_len=4096 \
   -artifact_prefix="$fuzz_dir/scpi-" "$fuzz_dir/scpi" fuzz/corpus/scpi

@@ -300,10 +300,54 @@ double lagCramerRaoBoundS(double w, double recordS, double tableAmplitudeDeg, do
   return std::sqrt(var);
 }
 
+namespace {
+
+// What every later stage assumes of its input, checked once where the
+// analysis starts: finite samples, times strictly increasing within each
+// stream. The decoder and the importer give no other, but a session's stored
+// samples may have been crafted, and a time out of order turned a bin index
+// of the frequency estimate into an overflowed cast (fog_fuzz_analysis).
+Status checkSamples(const TestPointData& data, double incrementScale) {
+  if (!std::isfinite(incrementScale) || incrementScale == 0.0)
+    return invalidArgument("the gyro pulse equivalent (" + fmt(incrementScale, 6) + " deg) is not a usable number");
+  for (std::size_t i = 0; i < data.table.size(); ++i) {
+    const auto& s = data.table[i];
+    if (!std::isfinite(s.timeS) || (i > 0 && !(s.timeS > data.table[i - 1].timeS)))
+      return corruptData("table sample " + std::to_string(i + 1) + ": its time (" + fmt(s.timeS, 6) +
+                         " s) is not finite or not after the previous one; the recording is damaged");
+    for (double a : s.angleDeg)
+      if (!std::isfinite(a))
+        return corruptData("table sample " + std::to_string(i + 1) + ": an angle is not finite; the recording is damaged");
+  }
+  // A test point longer than this is not one swing (plans stop at 24 h): its
+  // span would overflow the frequency estimate's bins.
+  constexpr double kMaxSpanS = 1e6;
+  for (const auto& [name, span] :
+       {std::pair{"table", data.table.empty() ? 0.0 : data.table.back().timeS - data.table.front().timeS},
+        {"gyro", data.imu.empty() ? 0.0 : data.imu.back().timeS - data.imu.front().timeS}})
+    if (!(span <= kMaxSpanS))
+      return invalidArgument(std::string("the test point's ") + name + " samples span " + fmt(span, 6) +
+                             " s; one test point is at most 1e6 s (11.6 days) long: check the time stamps");
+  for (std::size_t i = 0; i < data.imu.size(); ++i) {
+    const auto& s = data.imu[i];
+    if (!std::isfinite(s.timeS) || (i > 0 && !(s.timeS > data.imu[i - 1].timeS)))
+      return corruptData("gyro sample " + std::to_string(i + 1) + ": its time (" + fmt(s.timeS, 6) +
+                         " s) is not finite or not after the previous one; the recording is damaged");
+    for (double d : s.incrementDeg)
+      if (!std::isfinite(d) || !std::isfinite(d * incrementScale))
+        return corruptData("gyro sample " + std::to_string(i + 1) +
+                           ": an increment is not finite; the recording is damaged");
+  }
+  return Status::ok();
+}
+
+}  // namespace
+
 Result<TestPointResult> analyzeTestPoint(const TestPointData& data, double incrementScale,
                                          const BenchConstants& constants) {
   const int sign = constants.gyroSign[static_cast<std::size_t>(data.axis)] < 0 ? -1 : 1;
-  FOG_ASSIGN_OR_RETURN(auto channels, makeChannels(data, incrementScale * sign));
+  FOG_ASSIGN_OR_RETURN(auto channels, makeChannels(data, incrementScale * sign));  // refuses too few samples
+  FOG_RETURN_IF_ERROR(checkSamples(data, incrementScale));
   Channels& ch = channels;
   TestPointResult r;
   r.index = data.index;
