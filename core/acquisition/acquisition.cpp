@@ -71,6 +71,7 @@ Result<AcquisitionResult> acquire(ByteSource& source, const AcquisitionOptions& 
   auto lastBatch = started;
   auto lastByte = started;
   bool ended = false;
+  std::uint64_t samples = 0;   // table and IMU frames decoded (the memory budget)
   bool boardRecorded = false;  // a STATUS with phase recording has been seen
   Status sessionFailure;       // writing the session failed (a full disk): the run ends
 
@@ -111,6 +112,8 @@ Result<AcquisitionResult> acquire(ByteSource& source, const AcquisitionOptions& 
       decoded.clear();
       decoder.push(bytes, decoded);
       builder.add(decoded);
+      for (const auto& d : decoded)
+        samples += !std::holds_alternative<protocol::StatusPayload>(d.frame.payload);
       batch.frames.insert(batch.frames.end(), decoded.begin(), decoded.end());
       if (options.endWhenBoardDone)
         for (const auto& d : decoded) {
@@ -133,6 +136,14 @@ Result<AcquisitionResult> acquire(ByteSource& source, const AcquisitionOptions& 
     if (writer && options.drainTableLog && sessionFailure.isOk()) {
       if (auto lines = options.drainTableLog(); !lines.empty())
         if (auto s = writer->appendTableLog(lines); !s.isOk()) sessionFailure = s;
+    }
+    if (samples >= options.maxSamples && !ended) {
+      // Bounded by design: whatever the source sends, a run never holds more
+      // samples than its memory budget (test_plan.h).
+      result.incompleteReason = "the run reached its memory budget of " + std::to_string(options.maxSamples) +
+                                " table and IMU samples after " + fixed1(seconds(now - started)) +
+                                " s; everything recorded is kept";
+      break;
     }
     if (now - lastBatch >= options.batchInterval) deliver(now);
     if (options.shouldEnd && !ended) {

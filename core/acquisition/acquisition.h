@@ -74,6 +74,10 @@ struct AcquisitionOptions {
   // recording handed over is the whole stream as one test point (the STATUS
   // frames' test-point markers are not followed).
   std::function<Recording(const Recording&)> segment;
+  // The memory budget (test_plan.h): once this many table and IMU frames
+  // have arrived the run ends as incomplete ("the run reached its memory
+  // budget ..."), keeping and analysing what it recorded.
+  std::uint64_t maxSamples = kMaxRunSamples;
 };
 
 struct AcquisitionBatch {
