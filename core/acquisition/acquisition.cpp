@@ -37,6 +37,20 @@ Status usability(bool anyFrames, const Recording& rec, std::uint64_t bytes) {
 
 }  // namespace
 
+analysis::ReportContext reportContextOf(const AcquisitionResult& run, const AcquisitionOptions& options) {
+  analysis::ReportContext context = options.reportContext;
+  if (run.complete) return context;
+  context.incompleteReason = run.incompleteReason.empty() ? std::string("the run ended early") : run.incompleteReason;
+  double last = 0.0;
+  for (const auto& tp : run.recording.testPoints) {
+    if (!tp.table.empty()) last = std::max(last, tp.table.back().timeS);
+    if (!tp.imu.empty()) last = std::max(last, tp.imu.back().timeS);
+  }
+  context.recordedS = last;
+  if (!options.info.plan.points.empty()) context.plannedS = options.info.plan.totalDurationS();
+  return context;
+}
+
 std::string analysisSettingsJson(const analysis::BenchConstants& c, const std::string& producedBy) {
   nlohmann::json doc = {{"table_read_delay_ms", c.tableReadDelayMs},
                         {"table_read_delay_std_ms", c.tableReadDelayStdMs},
@@ -194,7 +208,7 @@ Result<AcquisitionResult> acquire(ByteSource& source, const AcquisitionOptions& 
     writer.reset();
     if (result.report) {
       if (auto s = session::addResult(options.sessionPath, analysisSettingsJson(options.constants, "acquisition"),
-                                      analysis::formatReportJson(*result.report, options.reportContext));
+                                      analysis::formatReportJson(*result.report, reportContextOf(result, options)));
           !s.isOk())
         return s;
     }

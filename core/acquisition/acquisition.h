@@ -106,6 +106,11 @@ Result<AcquisitionResult> acquire(ByteSource& source, const AcquisitionOptions& 
                                   const std::atomic<bool>* stop,
                                   const std::function<void(AcquisitionBatch&&)>& observer = {});
 
+// The report context of a finished run: options.reportContext with the
+// run's state (incomplete, why, how much of the plan was recorded), so that
+// every report of an incomplete run says so in its verdict.
+analysis::ReportContext reportContextOf(const AcquisitionResult& run, const AcquisitionOptions& options);
+
 // The settings a stored result was produced with (bench constants, software
 // version, what produced it), as JSON.
 std::string analysisSettingsJson(const analysis::BenchConstants& constants, const std::string& producedBy);
