@@ -176,7 +176,7 @@ int runCommand(CliArguments& args) {
   if (tee && !tee->close()) return fail(ioError("cannot write raw stream to '" + *savePath + "'"), 2);
   if (!run->complete) printIncompleteRun(*run);
   if (!run->recordingStatus.isOk()) return fail(run->recordingStatus, 1);
-  return printReport(run->report, options.reportContext, json);
+  return printReport(run->report, acquisition::reportContextOf(*run, options), json);
 }
 
 int analyzeCommand(CliArguments& args) {

@@ -149,8 +149,9 @@ int runSerialCommand(CliArguments& args) {
   if (!run->complete) printIncompleteRun(*run);
   if (!run->recordingStatus.isOk()) return fail(run->recordingStatus, 1);
   if (!run->report) return fail(run->report.status(), exitCodeFor(run->report.status()));
-  std::cout << (json ? analysis::formatReportJson(*run->report, options.reportContext) + "\n"
-                     : forTerminal(analysis::formatReportText(*run->report, options.reportContext)));
+  const auto context = acquisition::reportContextOf(*run, options);
+  std::cout << (json ? analysis::formatReportJson(*run->report, context) + "\n"
+                     : forTerminal(analysis::formatReportText(*run->report, context)));
   return 0;
 }
 

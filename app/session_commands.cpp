@@ -94,6 +94,7 @@ int analyzeSessionCommand(CliArguments& args, const std::string& path) {
   if (!recording) return fail(recording.status(), exitCodeFor(recording.status()));
   analysis::ReportContext context;
   context.source = sessionSource(**reader, "session");
+  if (!(*reader)->complete()) context.incompleteReason = (*reader)->incompleteReason();
   context.imuDelayLimitMs = *limit;
   auto report = analysis::analyzeRecording(*recording, *constants);
   if (!report) return fail(report.status(), exitCodeFor(report.status()));
@@ -234,6 +235,7 @@ int replayCommand(CliArguments& args) {
                 exitCodeFor(replayed->recordingStatus));
   analysis::ReportContext context;
   context.source = sessionSource(**reader, "replay of session");
+  if (!(*reader)->complete()) context.incompleteReason = (*reader)->incompleteReason();
   context.imuDelayLimitMs = *limit;
   const auto& report = replayed->report;
   if (!report) return fail(report.status(), exitCodeFor(report.status()));
@@ -336,6 +338,7 @@ int exportCommand(CliArguments& args) {
               << "); samples are exported without fits\n";
   analysis::ReportContext context;
   context.source = sessionSource(**reader, "session");
+  if (!(*reader)->complete()) context.incompleteReason = (*reader)->incompleteReason();
   context.imuDelayLimitMs = *limit;
 
   if (csvDir) {

@@ -195,7 +195,7 @@ int main(int argc, char** argv) {
     config->samplingBoard.markTestPoints = false;
     TestPlan idle;
     idle.restBetweenS = 0.0;
-    idle.points = {TestPoint::staticSegment(Axis::kX, 86000.0)};
+    idle.points = {TestPoint::staticSegment(Axis::kX, kMaxPlanDurationS)};  // as long as a plan may last
     auto created = model::Simulator::create(*config, idle);
     if (!created) return failWith(created.status().message());
     sim = std::move(*created);

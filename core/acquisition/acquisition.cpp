@@ -37,6 +37,20 @@ Status usability(bool anyFrames, const Recording& rec, std::uint64_t bytes) {
 
 }  // namespace
 
+analysis::ReportContext reportContextOf(const AcquisitionResult& run, const AcquisitionOptions& options) {
+  analysis::ReportContext context = options.reportContext;
+  if (run.complete) return context;
+  context.incompleteReason = run.incompleteReason.empty() ? std::string("the run ended early") : run.incompleteReason;
+  double last = 0.0;
+  for (const auto& tp : run.recording.testPoints) {
+    if (!tp.table.empty()) last = std::max(last, tp.table.back().timeS);
+    if (!tp.imu.empty()) last = std::max(last, tp.imu.back().timeS);
+  }
+  context.recordedS = last;
+  if (!options.info.plan.points.empty()) context.plannedS = options.info.plan.totalDurationS();
+  return context;
+}
+
 std::string analysisSettingsJson(const analysis::BenchConstants& c, const std::string& producedBy) {
   nlohmann::json doc = {{"table_read_delay_ms", c.tableReadDelayMs},
                         {"table_read_delay_std_ms", c.tableReadDelayStdMs},
@@ -71,6 +85,7 @@ Result<AcquisitionResult> acquire(ByteSource& source, const AcquisitionOptions& 
   auto lastBatch = started;
   auto lastByte = started;
   bool ended = false;
+  std::uint64_t samples = 0;   // table and IMU frames decoded (the memory budget)
   bool boardRecorded = false;  // a STATUS with phase recording has been seen
   Status sessionFailure;       // writing the session failed (a full disk): the run ends
 
@@ -111,6 +126,8 @@ Result<AcquisitionResult> acquire(ByteSource& source, const AcquisitionOptions& 
       decoded.clear();
       decoder.push(bytes, decoded);
       builder.add(decoded);
+      for (const auto& d : decoded)
+        samples += !std::holds_alternative<protocol::StatusPayload>(d.frame.payload);
       batch.frames.insert(batch.frames.end(), decoded.begin(), decoded.end());
       if (options.endWhenBoardDone)
         for (const auto& d : decoded) {
@@ -133,6 +150,14 @@ Result<AcquisitionResult> acquire(ByteSource& source, const AcquisitionOptions& 
     if (writer && options.drainTableLog && sessionFailure.isOk()) {
       if (auto lines = options.drainTableLog(); !lines.empty())
         if (auto s = writer->appendTableLog(lines); !s.isOk()) sessionFailure = s;
+    }
+    if (samples >= options.maxSamples && !ended) {
+      // Bounded by design: whatever the source sends, a run never holds more
+      // samples than its memory budget (test_plan.h).
+      result.incompleteReason = "the run reached its memory budget of " + std::to_string(options.maxSamples) +
+                                " table and IMU samples after " + fixed1(seconds(now - started)) +
+                                " s; everything recorded is kept";
+      break;
     }
     if (now - lastBatch >= options.batchInterval) deliver(now);
     if (options.shouldEnd && !ended) {
@@ -183,7 +208,7 @@ Result<AcquisitionResult> acquire(ByteSource& source, const AcquisitionOptions& 
     writer.reset();
     if (result.report) {
       if (auto s = session::addResult(options.sessionPath, analysisSettingsJson(options.constants, "acquisition"),
-                                      analysis::formatReportJson(*result.report, options.reportContext));
+                                      analysis::formatReportJson(*result.report, reportContextOf(result, options)));
           !s.isOk())
         return s;
     }

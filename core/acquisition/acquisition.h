@@ -74,6 +74,10 @@ struct AcquisitionOptions {
   // recording handed over is the whole stream as one test point (the STATUS
   // frames' test-point markers are not followed).
   std::function<Recording(const Recording&)> segment;
+  // The memory budget (test_plan.h): once this many table and IMU frames
+  // have arrived the run ends as incomplete ("the run reached its memory
+  // budget ..."), keeping and analysing what it recorded.
+  std::uint64_t maxSamples = kMaxRunSamples;
 };
 
 struct AcquisitionBatch {
@@ -101,6 +105,11 @@ struct AcquisitionResult {
 Result<AcquisitionResult> acquire(ByteSource& source, const AcquisitionOptions& options,
                                   const std::atomic<bool>* stop,
                                   const std::function<void(AcquisitionBatch&&)>& observer = {});
+
+// The report context of a finished run: options.reportContext with the
+// run's state (incomplete, why, how much of the plan was recorded), so that
+// every report of an incomplete run says so in its verdict.
+analysis::ReportContext reportContextOf(const AcquisitionResult& run, const AcquisitionOptions& options);
 
 // The settings a stored result was produced with (bench constants, software
 // version, what produced it), as JSON.

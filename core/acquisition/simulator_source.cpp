@@ -17,6 +17,20 @@ Result<std::unique_ptr<SimulatorSource>> SimulatorSource::create(
     const model::SimConfig& config, const TestPlan& plan, double speed,
     std::vector<std::unique_ptr<model::Effect>> effects) {
   FOG_ASSIGN_OR_RETURN(auto sim, model::Simulator::create(config, plan));
+  // The memory budget (test_plan.h): refused here, before anything is
+  // simulated, when the plan at these sampling rates would hold more samples
+  // than a run may (the plan's own 1-h limit assumes the standard rates).
+  const double samples = sim->endS() * (1.0 / config.encoder.samplePeriodS + 1.0 / config.imuBoard.framePeriodS);
+  // (0.1 % to spare: the run's own guard counts the frames as they come.)
+  if (!(samples * 1.001 <= static_cast<double>(kMaxRunSamples))) {
+    char why[320];
+    std::snprintf(why, sizeof why,
+                  "the run would hold %.3g table and IMU samples (%.0f s at %g Hz table + %g Hz IMU); at most %.3g "
+                  "(every sample is held in memory, within 1 GB): shorten the plan or lower the sampling rates",
+                  samples, sim->endS(), 1.0 / config.encoder.samplePeriodS, 1.0 / config.imuBoard.framePeriodS,
+                  static_cast<double>(kMaxRunSamples));
+    return invalidArgument(why);
+  }
   for (auto& e : effects) sim->addEffect(std::move(e));
   return std::unique_ptr<SimulatorSource>(new SimulatorSource(std::move(sim), speed));
 }

@@ -6,6 +6,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "core/common/text.h"
+
 namespace fog::analysis {
 
 namespace {
@@ -48,6 +50,14 @@ nlohmann::json fitJson(const SineFit& s) {
 
 }  // namespace
 
+std::string incompleteRunText(const ReportContext& context) {
+  if (context.incompleteReason.empty()) return {};
+  if (!(context.recordedS > 0.0)) return context.incompleteReason;
+  std::string s = "run stopped after " + f("%.1f", context.recordedS) + " s";
+  if (context.plannedS > 0.0) s += " of " + f("%.1f", context.plannedS) + " s";
+  return s + ": " + context.incompleteReason;
+}
+
 std::string formatReportText(const DelayReport& report, const ReportContext& context) {
   std::ostringstream o;
   const auto& c = report.constants;
@@ -55,7 +65,12 @@ std::string formatReportText(const DelayReport& report, const ReportContext& con
   const ReportVerdict verdict = judgeReport(report, context.imuDelayLimitMs);
   o << "fogbench delay report\n";
   if (!context.source.empty()) o << "source: " << context.source << "\n";
-  o << "verdict: " << upper(verdictName(verdict.verdict)) << "\n";
+  if (!context.incompleteReason.empty())
+    // Never a bare PASS for a run that did not finish its plan.
+    o << "verdict: INCOMPLETE (" << incompleteRunText(context) << "); the data recorded give "
+      << upper(verdictName(verdict.verdict)) << "\n";
+  else
+    o << "verdict: " << upper(verdictName(verdict.verdict)) << "\n";
   for (const auto& why : verdict.reasons) o << "  " << why << "\n";
   o << "stream: " << h.tableFrames << " table, " << h.imuFrames << " IMU, " << h.statusFrames
     << " status frames; " << h.checksumFailures << " checksum failures, " << h.lostFrames << " lost, "
@@ -146,6 +161,14 @@ std::string formatReportJson(const DelayReport& report, const ReportContext& con
   doc["report_format"] = 1;  // bump on any incompatible change (docs/report.md)
   doc["verdict"] = verdictName(verdict.verdict);
   doc["verdict_reasons"] = verdict.reasons;
+  if (!context.incompleteReason.empty()) {
+    doc["verdict"] = "incomplete";
+    doc["data_verdict"] = verdictName(verdict.verdict);
+    doc["run"] = {{"complete", false},
+                  {"incomplete_reason", toValidUtf8(context.incompleteReason)},
+                  {"recorded_s", context.recordedS},
+                  {"planned_s", context.plannedS}};
+  }
   doc["imu_delay_limit_ms"] = verdict.limitMs;
   doc["software"] = "fogbench";
   doc["source"] = context.source;

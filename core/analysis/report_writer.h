@@ -2,7 +2,9 @@
 // The delay report as a person reads it (plain text) and as a program reads
 // it (JSON). Numbers in JSON are plain, locale-independent doubles.
 //
-// JSON layout: {"verdict": "pass"|"fail"|"invalid", "verdict_reasons": [...],
+// JSON layout: {"verdict": "pass"|"fail"|"invalid"|"incomplete", "verdict_reasons": [...],
+//   "run": {"complete", "incomplete_reason", "recorded_s", "planned_s"} and
+//   "data_verdict" (only for an incomplete run),
 //   "imu_delay_limit_ms": ..., "software": ..., "source": ..., "constants": {...},
 //   "stream": {...}, "test_points": [{"axis", "frequency_hz", "amplitude_deg",
 //   "table_fit": {"period_ms", "phase_ms", "amplitude_deg", ...},
@@ -27,7 +29,18 @@ struct ReportContext {
   std::vector<double> trueLagMs;
   // The acceptance limit of the verdict (verdict.h).
   double imuDelayLimitMs = kDefaultImuDelayLimitMs;
+  // The run ended before its plan did (stopped by the operator, a vanished
+  // port, a full disk, the memory budget): why; empty for a complete run or
+  // data of unknown completeness. The report's verdict is then "incomplete",
+  // whatever the recorded data give (that is still shown as data_verdict).
+  std::string incompleteReason;
+  double recordedS = 0.0;  // stream time the run recorded, s (0: unknown)
+  double plannedS = 0.0;   // the plan's total time, s (0: unknown)
 };
+
+// "run stopped after 3.4 s of 62.3 s: <reason>" (the recorded and planned
+// stream time when known; else the reason alone), or "" for a complete run.
+std::string incompleteRunText(const ReportContext& context);
 
 std::string formatReportText(const DelayReport& report, const ReportContext& context);
 std::string formatReportJson(const DelayReport& report, const ReportContext& context);

@@ -4,6 +4,7 @@
 // the command line / GUI (which edit it).
 
 #include <cstddef>
+#include <cstdint>
 #include <array>
 #include <string>
 #include <string_view>
@@ -75,8 +76,21 @@ inline constexpr double kMaxPositionDeg = 360.0;
 
 // Bounds of a plan (issue 15): every sample of a run is held in memory, so a
 // plan is at most this long in total and has at most this many points.
+//
+// The memory budget of a run is 1 GB of address space (docs/reliability.md,
+// "limits"): a run holds every decoded sample, and the analysis works on
+// copies of them. Measured at the board's standard rates (table 1 kHz, IMU
+// 500 Hz): `run --out` on a 1-h plan fits in 700 MB (`ulimit -v`) and
+// 3 990 s still fit in 1 GB (peak RSS 569 MB); 90 min did not (std::bad_alloc,
+// exit 134). The diagnosis of a 1-h session peaks at 918 MB RSS
+// (docs/benchmarks.md). A plan is
+// therefore at most 1 h in all, and a run at most kMaxRunSamples table + IMU
+// samples: a simulated run at higher rates is refused beforehand when its
+// plan would exceed that, and a live run (a board sending faster or longer
+// than planned) ends there as incomplete, keeping what it recorded.
 inline constexpr std::size_t kMaxPlanPoints = 1000;
-inline constexpr double kMaxPlanDurationS = 24.0 * 3600.0;
+inline constexpr double kMaxPlanDurationS = 3600.0;
+inline constexpr std::uint64_t kMaxRunSamples = 6'000'000;  // 4 000 s at 1 kHz + 500 Hz
 
 struct TestPlan {
   std::vector<TestPoint> points;

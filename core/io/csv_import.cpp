@@ -616,6 +616,9 @@ Status splitIntoSwingWindows(ImportedSession& imported, const std::vector<analys
     return invalidArgument("--segment cuts one continuous swing recording (metadata with one test point); this one "
                            "holds " + std::to_string(points.size()) + " test points already");
   if (windows.empty()) return invalidArgument("no swing windows to cut the recording into");
+  if (windows.size() > kMaxPlanPoints)  // as many test points as a plan may have
+    return invalidArgument(std::to_string(windows.size()) + " swing windows; at most " +
+                           std::to_string(kMaxPlanPoints) + " test points, as in a plan: import the recording in parts");
   const Axis axis = points.front().axis;
   auto cut = analysis::splitIntoWindows(points.front(), windows);
   for (const auto& tp : cut)

@@ -136,27 +136,100 @@ std::string metadataToJson(const Metadata& meta) {
   return j.dump(2) + "\n";
 }
 
+// A first pass over the text with nlohmann's SAX interface, before any
+// document is built: a key given twice in one object (which would silently
+// keep the last value) and sizes no metadata has are refused here. Linear in
+// the text: the parser callback this replaces made nlohmann 3.11's DOM
+// parser scan every parent array at each object's end (quadratic: 100 000
+// test points took 4 s to parse, 300 000 took 50 s), and an object's keys
+// are looked up linearly in an ordered_json, so one with very many keys
+// would be quadratic too.
+class MetadataShape : public nlohmann::json_sax<Json> {
+ public:
+  static constexpr std::size_t kMaxKeys = 256;  // a metadata object has at most 13 known keys
+
+  std::string problem;  // empty: fine
+  std::string parseError;
+
+  bool null() override { return value(); }
+  bool boolean(bool) override { return value(); }
+  bool number_integer(number_integer_t) override { return value(); }
+  bool number_unsigned(number_unsigned_t) override { return value(); }
+  bool number_float(number_float_t, const string_t&) override { return value(); }
+  bool string(string_t&) override { return value(); }
+  bool binary(binary_t&) override { return value(); }
+  bool start_object(std::size_t) override {
+    if (!value()) return false;
+    stack_.push_back({false, 0, {}, pendingKey_});
+    return true;
+  }
+  bool key(string_t& k) override {
+    Level& l = stack_.back();
+    if (!l.keys.insert(k).second) return fail("the key \"" + k + "\" appears twice in one object; keep one");
+    if (l.keys.size() > kMaxKeys)
+      return fail("an object with more than " + std::to_string(kMaxKeys) + " keys; metadata objects have a few "
+                  "known keys each (docs/formats.md)");
+    pendingKey_ = k;
+    return true;
+  }
+  bool end_object() override {
+    stack_.pop_back();
+    return true;
+  }
+  bool start_array(std::size_t) override {
+    if (!value()) return false;
+    stack_.push_back({true, 0, {}, pendingKey_});
+    return true;
+  }
+  bool end_array() override {
+    stack_.pop_back();
+    return true;
+  }
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception& e) override {
+    parseError = e.what();
+    return false;
+  }
+
+ private:
+  struct Level {
+    bool array = false;
+    std::size_t elements = 0;
+    std::set<std::string> keys;
+    std::string name;  // the key this object or array is the value of
+  };
+  // Every value, an object's or array's start included, counts as an element
+  // of the array it is in.
+  bool value() {
+    if (stack_.empty() || !stack_.back().array) return true;
+    Level& l = stack_.back();
+    if (++l.elements <= kMaxPlanPoints) return true;
+    if (stack_.size() == 2 && l.name == "test_points")
+      return fail("\"test_points\" lists more than " + std::to_string(kMaxPlanPoints) + " test points; at most " +
+                  std::to_string(kMaxPlanPoints) + ", as in a plan: split the data into several imports");
+    return fail("an array of more than " + std::to_string(kMaxPlanPoints) + " elements; no metadata has one");
+  }
+  bool fail(std::string why) {
+    problem = std::move(why);
+    return false;
+  }
+  std::vector<Level> stack_;
+  std::string pendingKey_;
+};
+
 Result<Metadata> metadataFromJson(const std::string& path, const std::string& text) {
   Json j;
-  // A key given twice in one object would silently keep the last value: it
-  // is refused, like an unknown key.
-  std::vector<std::set<std::string>> keysPerObject;
-  std::string duplicate;
-  const Json::parser_callback_t noDuplicates = [&](int, Json::parse_event_t event, Json& parsed) {
-    if (event == Json::parse_event_t::object_start) keysPerObject.emplace_back();
-    else if (event == Json::parse_event_t::object_end && !keysPerObject.empty()) keysPerObject.pop_back();
-    else if (event == Json::parse_event_t::key && !keysPerObject.empty() &&
-             !keysPerObject.back().insert(parsed.get<std::string>()).second && duplicate.empty())
-      duplicate = parsed.get<std::string>();
-    return true;
-  };
+  MetadataShape shape;
+  bool shapeOk = false;
   try {
-    j = Json::parse(text, noDuplicates);
+    shapeOk = Json::sax_parse(text, &shape);
+    if (shapeOk) j = Json::parse(text);
   } catch (const nlohmann::json::exception& e) {  // parse_error, and out_of_range for a number beyond a double
     return corruptData(path + ": not valid JSON (" + e.what() + "); metadata must be one JSON object (docs/formats.md)");
   }
-  if (!duplicate.empty())
-    return corruptData(path + ": the key \"" + duplicate + "\" appears twice in one object; keep one");
+  if (!shape.problem.empty()) return corruptData(path + ": " + shape.problem);
+  if (!shapeOk)
+    return corruptData(path + ": not valid JSON (" + shape.parseError +
+                       "); metadata must be one JSON object (docs/formats.md)");
   if (!j.is_object()) return corruptData(path + ": must hold one JSON object {...} (docs/formats.md)");
 
   Metadata meta;
@@ -252,6 +325,9 @@ Result<Metadata> metadataFromJson(const std::string& path, const std::string& te
     return corruptData(path + ": missing \"test_points\": a non-empty array with one {\"axis\": \"x\", ...} per "
                               "test point (docs/formats.md)");
   const Json& points = j.at("test_points");
+  if (points.size() > kMaxPlanPoints)  // (the first pass refuses them already)
+    return corruptData(path + ": \"test_points\" lists " + std::to_string(points.size()) + " test points; at most " +
+                       std::to_string(kMaxPlanPoints));
   for (std::size_t i = 0; i < points.size(); ++i) {
     const std::string where = "test_points[" + std::to_string(i) + "]";
     if (!points[i].is_object()) return corruptData(path + ": \"" + where + "\" must be an object");

@@ -157,6 +157,46 @@ TEST(Acquisition, SourceFailureEndsTheRunIncompleteWithEverythingKept) {
   EXPECT_EQ((*reader)->results()->size(), 1u);
 }
 
+// The memory budget (test_plan.h): a source that sends more samples than a
+// run may hold (a board sending faster or longer than planned) ends the run
+// there as incomplete, with everything received kept and analysed.
+TEST(Acquisition, ASourceBeyondTheSampleBudgetEndsTheRunIncompleteKeepingWhatItSent) {
+  fog::test::ScratchDir dir;
+  const auto& bytes = fog::test::shortRun().bytes;
+  ScriptedSource source(bytes, ScriptedSource::Then::kSilence);
+  auto options = sessionOptions(dir.file("s.fbs"));
+  options.maxSamples = 6000;  // 4 s of the standard rates; the stream holds 12 s
+  auto r = acquire(source, options, nullptr);
+  ASSERT_TRUE(r.isOk()) << r.status().message();
+  EXPECT_FALSE(r->complete);
+  EXPECT_NE(r->incompleteReason.find("memory budget of 6000 table and IMU samples"), std::string::npos)
+      << r->incompleteReason;
+  EXPECT_LT(r->bytesReceived, bytes.size());
+  EXPECT_EQ(r->sessionBytes, r->bytesReceived);
+  std::size_t held = 0;
+  for (const auto& tp : r->recording.testPoints) held += tp.table.size() + tp.imu.size();
+  EXPECT_LE(held, 6000u + 4096u);  // at most one read beyond the budget
+  auto reader = session::SessionReader::open(dir.file("s.fbs"));
+  ASSERT_TRUE(reader.isOk());
+  EXPECT_FALSE((*reader)->complete());
+  EXPECT_EQ((*reader)->incompleteReason(), r->incompleteReason);
+}
+
+// A simulated plan that the plan's 1-h limit allows at the standard rates but
+// that would exceed the sample budget at higher ones is refused before it runs.
+TEST(Acquisition, ASimulatedRunBeyondTheSampleBudgetIsRefusedBeforeItStarts) {
+  model::SimConfig config;
+  TestPlan plan;
+  plan.points.push_back({Axis::kX, 1.0, 3.0, 3000.0, 0.0, 0.0});
+  EXPECT_TRUE(SimulatorSource::create(config, plan, 0.0).isOk());
+  config.encoder.samplePeriodS = 0.25e-3;  // 4 kHz table: 15 M samples
+  config.encoder.readDelayS = std::min(config.encoder.readDelayS, 0.1e-3);
+  auto refused = SimulatorSource::create(config, plan, 0.0);
+  ASSERT_FALSE(refused.isOk());
+  EXPECT_EQ(refused.status().code(), StatusCode::kInvalidArgument);
+  EXPECT_NE(refused.status().message().find("at most 6e+06"), std::string::npos) << refused.status().message();
+}
+
 TEST(Acquisition, SilenceIsReportedInTheBatches) {
   const auto& bytes = fog::test::shortRun().bytes;
   ScriptedSource source(std::vector<std::uint8_t>(bytes.begin(), bytes.begin() + 20000),

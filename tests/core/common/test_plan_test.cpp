@@ -165,7 +165,15 @@ TEST(TestPlanLimits, TooManyPointsOrTooLongInAllIsRefused) {
   std::string why;
   why = tenDays.validate(TurntableLimits{}).message();
   EXPECT_FALSE(why.empty());
-  EXPECT_NE(why.find("at most 24 h"), std::string::npos) << why;
+  EXPECT_NE(why.find("at most 1 h"), std::string::npos) << why;
+
+  // The memory budget (test_plan.h): 1 h in all is allowed, a second more is not.
+  TestPlan hour;
+  hour.points.push_back({Axis::kX, 1.0, 3.0, 3600.0 - 5.0 - 1.0, 5.0, 0.0});
+  EXPECT_TRUE(hour.validate(TurntableLimits{}).isOk()) << hour.validate(TurntableLimits{}).message();
+  hour.points.front().durationS += 1.0;
+  why = hour.validate(TurntableLimits{}).message();
+  EXPECT_NE(why.find("at most 1 h (every sample is held in memory)"), std::string::npos) << why;
 
   TestPlan many;
   for (std::size_t i = 0; i <= kMaxPlanPoints; ++i) many.points.push_back({Axis::kX, 1.0, 3.0, 2.0, 0.0, 0.0});

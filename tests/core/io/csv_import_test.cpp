@@ -294,6 +294,37 @@ TEST(CsvImportErrors, ADuplicateKeyOrADelayBeyondASecondIsRefused) {
   EXPECT_NE(huge.status().message().find("beyond a second"), std::string::npos) << huge.status().message();
 }
 
+// Metadata listing more test points than a plan may have (kMaxPlanPoints)
+// wrote a session that every command then refused: it is refused at import.
+std::string metadataWithPoints(std::size_t n) {
+  std::string meta = R"({"bench": {"table_read_delay_ms": 0.05, "board_delay_ms": 0.28, "pulse_equivalent_deg": 5e-5},
+    "test_points": [)";
+  for (std::size_t i = 0; i < n; ++i) meta += std::string(i ? "," : "") + R"({"axis": "x", "frequency_hz": 1})";
+  return meta + "]}";
+}
+
+TEST(CsvImportErrors, MoreTestPointsThanAPlanMayHaveAreRefused) {
+  auto most = importCsvDirectory(goodDir(metadataWithPoints(kMaxPlanPoints).c_str()));
+  ASSERT_TRUE(most.isOk()) << most.status().toString();
+  EXPECT_EQ(most->info.plan.points.size(), kMaxPlanPoints);
+  for (std::size_t n : {kMaxPlanPoints + 1, std::size_t{100000}}) {
+    auto many = importCsvDirectory(goodDir(metadataWithPoints(n).c_str()));
+    ASSERT_FALSE(many.isOk()) << n;
+    EXPECT_EQ(many.status().code(), StatusCode::kCorruptData);
+    EXPECT_NE(many.status().message().find("\"test_points\" lists more than 1000 test points; at most 1000"),
+              std::string::npos)
+        << many.status().message();
+  }
+  // Objects with absurdly many keys are refused before a document is built
+  // (an ordered_json looks keys up one by one).
+  std::string keys = R"({"bench": {"table_read_delay_ms": 0.05)";
+  for (int i = 0; i < 300; ++i) keys += ",\"k" + std::to_string(i) + "\": 1";
+  keys += R"(}, "test_points": [{"axis": "x"}]})";
+  auto wide = importCsvDirectory(goodDir(keys.c_str()));
+  ASSERT_FALSE(wide.isOk());
+  EXPECT_NE(wide.status().message().find("more than 256 keys"), std::string::npos) << wide.status().message();
+}
+
 TEST(CsvImportErrors, ATimeBeyondTheClocksRangeIsRefusedWhereItEnters) {
   // A time of 1e300 s once overflowed the lost-frame count (signed overflow,
   // UBSan): beyond 1e10 s a double does not resolve microseconds, so the

@@ -468,6 +468,16 @@ TEST(SessionFaults, AFullDiskDuringARecordingKeepsWhatWasWrittenAndAnalyses) {
   EXPECT_LT(run->sessionBytes, run->bytesReceived);
   // Everything received was analysed, like after a vanished port.
   ASSERT_TRUE(run->report.isOk()) << run->report.status().message();
+  // What the run prints says it is incomplete, and why: its verdict is never
+  // a bare PASS (the full disk used to be told on standard error only).
+  const auto context = acquisition::reportContextOf(*run, options);
+  const std::string text = analysis::formatReportText(*run->report, context);
+  EXPECT_NE(text.find("verdict: INCOMPLETE (run stopped after "), std::string::npos) << text;
+  EXPECT_NE(text.find(" s of 11.0 s: the session file could not be written"), std::string::npos) << text;
+  EXPECT_EQ(text.find("\nverdict: PASS"), std::string::npos) << text;
+  const std::string json = analysis::formatReportJson(*run->report, context);
+  EXPECT_NE(json.find("\"verdict\": \"incomplete\""), std::string::npos) << json;
+  EXPECT_NE(json.find("\"incomplete_reason\": \"the session file could not be written"), std::string::npos);
 
   auto r = SessionReader::open(path);
   ASSERT_TRUE(r.isOk()) << r.status().message();
