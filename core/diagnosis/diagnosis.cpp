@@ -85,10 +85,13 @@ class Progress {
 // not encoded: the recording is the one the bytes would give
 // (SimulatorFrames.GiveTheRecordingTheirBytesGive), without the checksums
 // and parsing that were a fifth of a diagnosis' time.
-Result<Recording> simulateRecording(const model::SimConfig& config, const TestPlan& plan,
+//
+// maxFrames: the stream's budget (Simulator::frameBound()); a configuration
+// that could emit more is refused before anything runs.
+Result<Recording> simulateRecording(const model::SimConfig& config, const TestPlan& plan, double maxFrames,
                                     std::vector<std::unique_ptr<model::Effect>> effects = {}) {
   constexpr double kChunkS = 2.0;
-  auto sim = model::Simulator::create(config, plan);
+  auto sim = model::Simulator::create(config, plan, maxFrames);
   if (!sim) return sim.status();
   for (auto& e : effects) (*sim)->addEffect(std::move(e));
   protocol::StreamDecoder decoder;
@@ -106,6 +109,9 @@ struct Replay {
   FeatureReference ref;
   EffectContext context;
   Progress* progress = nullptr;  // counts the replays; a cancel makes run() fail at once
+  // Frames one replay's stream may hold (set by budgetReplays()); a replay over
+  // it fails with kOutOfRange instead of growing.
+  double maxFrames = model::kMaxSimulatedFrames;
 
   Result<FeatureSet> run(std::uint64_t seed, const EffectList& effects) const {
     if (progress && progress->cancelled()) return cancelledByCaller();
@@ -119,7 +125,11 @@ struct Replay {
     model::SimConfig config = cal.config;
     config.seed = seed;
     std::vector<std::unique_ptr<model::Effect>> list;
-    for (const auto& [id, p] : effects) list.push_back(makeEffect(id, p, context));
+    for (const auto& [id, p] : effects) {
+      // A fitted value outside the effect's modelled range is never replayed.
+      FOG_RETURN_IF_ERROR(checkParameters(id, p));
+      list.push_back(makeEffect(id, p, context));
+    }
     // The encoder quantises exact motion, so without a change of phase every
     // replay would read the table alike and the table cells would have no
     // spread; a start phase drawn per seed (well under a sample period's
@@ -128,7 +138,7 @@ struct Replay {
     TestPlan plan = cal.plan;
     model::Random phase(model::Random::derive(seed, 0x7ab1e));
     for (auto& p : plan.points) p.startPhaseDeg += 0.1 * (phase.uniform() - 0.5);
-    auto rec = simulateRecording(config, plan, std::move(list));
+    auto rec = simulateRecording(config, plan, maxFrames, std::move(list));
     if (!rec) return rec.status();
     return extractFeatures(*rec, ref);
   }
@@ -720,7 +730,6 @@ Result<CalibratedReplay> calibrate(const AnalysedSession& session, const Session
   }
   if (Status s = c.validate(); !s.isOk())
     return invalidArgument("the calibrated replay is not a valid chain: " + s.message());
-  FOG_RETURN_IF_ERROR(calibrateEarthRateAndBias(replay, keys, real, options, notes));
   return out;
 }
 
@@ -1108,7 +1117,13 @@ Status refineBest(std::vector<Candidate>& cands, const Replay& replay, const Gap
     auto* cost = new ForwardCost(std::move(setup));
     ceres::Problem problem;
     problem.AddResidualBlock(cost, nullptr, x.data());
-    for (std::size_t j = 0; j < x.size(); ++j) problem.SetParameterLowerBound(x.data(), static_cast<int>(j), 0.0);
+    for (std::size_t j = 0; j < x.size(); ++j) {
+      // Within the range the effect is modelled for: a replay outside it fails.
+      const double top = spec.parameters[j].maxMagnitude;
+      problem.SetParameterLowerBound(x.data(), static_cast<int>(j), 0.0);
+      problem.SetParameterUpperBound(x.data(), static_cast<int>(j), squared ? top * top : top);
+      x[j] = std::min(x[j], squared ? top * top : top);
+    }
     ceres::Solver::Options so;
     // Near the optimum the steps only wander in the re-drawn quantisation
     // noise (~1 % of tau^2 for a 2-ms lag), which no tolerance on the cost
@@ -1136,9 +1151,19 @@ Status refineBest(std::vector<Candidate>& cands, const Replay& replay, const Gap
   }
   std::vector<std::vector<double>> zExact(static_cast<std::size_t>(refine));
   std::vector<char> okExact(static_cast<std::size_t>(refine), 0);
+  // A fit outside the effect's modelled range (a linear signature
+  // extrapolated 1e7 times past its reference) is no finding: it is not
+  // replayed, and not kept.
+  for (int r = 0; r < refine; ++r) {
+    Candidate& cand = cands[static_cast<std::size_t>(r)];
+    if (!cand.fit.score) continue;
+    if (Status s = checkParameters(library[cand.lib].id, cand.fit.values); !s.isOk())
+      cand.fit.note += std::string(cand.fit.note.empty() ? "" : "; ") + "not kept: fitted " + s.message();
+  }
   parallelFor(static_cast<std::size_t>(refine), options.threads, [&](std::size_t r) {
     const Candidate& cand = cands[r];
-    okExact[r] = cand.fit.score.has_value() && exactZ({{library[cand.lib].id, cand.fit.values}}, zExact[r]);
+    okExact[r] = cand.fit.score.has_value() && checkParameters(library[cand.lib].id, cand.fit.values).isOk() &&
+                 exactZ({{library[cand.lib].id, cand.fit.values}}, zExact[r]);
   });
   for (int r = 0; r < refine; ++r) {
     Candidate& cand = cands[static_cast<std::size_t>(r)];
@@ -1242,7 +1267,10 @@ VerdictModel chooseModel(std::vector<Candidate>& cands, const Replay& replay, co
       if (library[cands[partner].lib].id == EffectId::kFirstOrderLag)
         for (double& v : p2) v = std::sqrt(v);
       std::vector<double> zPair;
-      if (exactZ({{library[cands[first].lib].id, p1}, {library[cands[partner].lib].id, p2}}, zPair)) {
+      // A joint fit outside either effect's modelled range is not replayed.
+      const bool inRange = checkParameters(library[cands[first].lib].id, p1).isOk() &&
+                           checkParameters(library[cands[partner].lib].id, p2).isOk();
+      if (inRange && exactZ({{library[cands[first].lib].id, p1}, {library[cands[partner].lib].id, p2}}, zPair)) {
         const double gainHeld = chi2(zModel, st.held, true) - chi2(zPair, st.held, true);
         const double gainAll = gainHeld + chi2(zModel, st.held, false) - chi2(zPair, st.held, false);
         const double k2 = static_cast<double>(p2.size());
@@ -1378,7 +1406,7 @@ void auditTimings(const Recording& used, const Replay& replay, std::uint64_t see
   d.realTiming = auditTiming(used, replay.ref.tablePeriodS, replay.ref.imuPeriodS);
   model::SimConfig c0 = replay.cal.config;
   c0.seed = seed;
-  if (auto rec = simulateRecording(c0, replay.cal.plan))
+  if (auto rec = simulateRecording(c0, replay.cal.plan, replay.maxFrames))
     d.simTiming = auditTiming(*rec, replay.ref.tablePeriodS, replay.ref.imuPeriodS);
 }
 
@@ -1389,11 +1417,16 @@ void auditTimings(const Recording& used, const Replay& replay, std::uint64_t see
 // when that is over the budget; a refusal when even one is.
 std::string megabytes(double bytes) { return std::to_string(static_cast<long long>(bytes / 1e6)) + " MB"; }
 
-Result<int> threadsWithinMemory(const Recording& recording, int requested) {
+double sampleBytesOf(const Recording& recording) {
   double sampleBytes = 0.0;
   for (const auto& tp : recording.testPoints)
     sampleBytes += static_cast<double>(tp.table.size()) * sizeof(TableSample) +
                    static_cast<double>(tp.imu.size()) * sizeof(ImuSample);
+  return sampleBytes;
+}
+
+Result<int> threadsWithinMemory(const Recording& recording, int requested) {
+  const double sampleBytes = sampleBytesOf(recording);
   const auto peak = [&](int threads) { return sampleBytes * (1.5 + 1.5 * threads); };
   int threads = std::max(1, requested);
   while (threads > 1 && peak(threads) > kDiagnosisMemoryBudgetBytes) --threads;
@@ -1403,6 +1436,39 @@ Result<int> threadsWithinMemory(const Recording& recording, int requested) {
                       " limit; diagnose a session of fewer or shorter test points (up to an hour at 1 kHz / 500 Hz "
                       "fits)");
   return threads;
+}
+
+// The replays' share of the budget, once the calibrated replay is known and
+// before any runs. A replay's stream is not the session's: it settles 2 s
+// before each point and rests between points, at the session's own sample
+// periods (a period calibrated from jittered or damaged stamps is what once
+// made one grow without bound). Each replay holds the recording it builds,
+// at most Simulator::frameBound() samples (counted at the larger sample's
+// size, with the builder's growth of 1.5), one per thread. Fewer threads
+// when that is over the budget; a refusal (kOutOfRange) when even one is.
+// Sets replay.maxFrames, which every replay's simulator then enforces.
+Status budgetReplays(const Recording& input, Replay& replay, DiagnosisOptions& options,
+                     std::vector<std::string>& notes) {
+  const double sessionPeak = 1.5 * sampleBytesOf(input);
+  auto sim = model::Simulator::create(replay.cal.config, replay.cal.plan);
+  if (!sim) return invalidArgument("the calibrated replay cannot run: " + sim.status().message());
+  const double frames = (*sim)->frameBound();
+  constexpr double kBytesPerFrame = 1.5 * static_cast<double>(std::max(sizeof(TableSample), sizeof(ImuSample)));
+  const double perReplay = frames * kBytesPerFrame;
+  int threads = std::max(1, options.threads);
+  while (threads > 1 && sessionPeak + threads * perReplay > kDiagnosisMemoryBudgetBytes) --threads;
+  if (sessionPeak + threads * perReplay > kDiagnosisMemoryBudgetBytes)
+    return outOfRange("the replay of this session would hold up to " + std::to_string(static_cast<long long>(frames)) +
+                      " frames (" + megabytes(perReplay) + ": " + fmt("%.0f", (*sim)->endS()) + " s at a table period of " +
+                      fmt("%.4g", replay.cal.config.encoder.samplePeriodS * 1e3) + " ms and an IMU period of " +
+                      fmt("%.4g", replay.cal.config.imuBoard.framePeriodS * 1e3) + " ms, as calibrated from the stamps), over the " +
+                      megabytes(kDiagnosisMemoryBudgetBytes) + " limit with the session's own " + megabytes(sessionPeak));
+  if (threads < options.threads)
+    notes.push_back("ran the replays on " + std::to_string(threads) + " of " + std::to_string(options.threads) +
+                    " threads, to stay within the " + megabytes(kDiagnosisMemoryBudgetBytes) + " memory limit");
+  options.threads = threads;
+  replay.maxFrames = (kDiagnosisMemoryBudgetBytes - sessionPeak) / threads / kBytesPerFrame;
+  return Status::ok();
 }
 
 }  // namespace
@@ -1429,6 +1495,9 @@ Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, cons
   if (!session) return session.status();
   auto calibrated = calibrate(*session, info, options, progress, d.notes);
   if (!calibrated) return calibrated.status();
+  FOG_RETURN_IF_ERROR(budgetReplays(input, calibrated->replay, options, d.notes));
+  FOG_RETURN_IF_ERROR(calibrateEarthRateAndBias(calibrated->replay, calibrated->real.keys, calibrated->real.values,
+                                                options, d.notes));
   const Replay& replay = calibrated->replay;
   const FeatureSet& real = calibrated->real;
 
