@@ -425,7 +425,8 @@ class ForwardCost final : public ceres::CostFunction {
     projectOut(*s_.nuisance, z, s_.stats->held, true);
     out.resize(s_.rows.size());
     for (std::size_t r = 0; r < s_.rows.size(); ++r) out[r] = z[s_.rows[r]];
-    return true;
+    // Ceres is told of a non-finite replay as a failed evaluation.
+    return std::all_of(out.begin(), out.end(), [](double v) { return std::isfinite(v); });
   }
 
   Setup s_;
@@ -436,6 +437,25 @@ std::string fmt(const char* f, double v) {
   char b[64];
   std::snprintf(b, sizeof b, f, v);
   return b;
+}
+
+// "gyro h3_in_phase of test point 2, segment 3", for messages.
+std::string describeCell(const FeatureKey& k) {
+  std::string s = std::string(channelName(k.channel)) + " " + quantityName(k);
+  if (k.axis >= 0) s += std::string(" (gyro ") + "xyz"[k.axis] + ")";
+  return s + " of test point " + std::to_string(k.point + 1) + ", segment " + std::to_string(k.segment + 1);
+}
+
+// Ok when the recording's feature i and its formal error are finite;
+// otherwise a refusal naming the cell (kCorruptData).
+Status checkFinite(const FeatureSet& real, std::size_t i) {
+  const bool value = std::isfinite(real.values[i]);
+  if (value && std::isfinite(real.formalStd[i])) return Status::ok();
+  return corruptData("the diagnosis cannot compare this session with its replay: the recording's " +
+                     describeCell(real.keys[i]) + (value ? " has a standard error of " + fmt("%g", real.formalStd[i])
+                                                         : " is " + fmt("%g", real.values[i])) +
+                     ", not a finite number (a sample in that segment is not a finite number or far beyond its "
+                     "range); nothing was concluded");
 }
 
 // The table's heading is not in a session, and the Earth rate it turns into
@@ -713,11 +733,21 @@ Result<CalibratedReplay> calibrate(const AnalysedSession& session, const Session
                     " s assumed (the simulator's default): a bias drift or step within such a wander is not "
                     "resolved; state the IMU's own (its static noise test) for a sharper test of the gyro trends");
   cal.lagMs = lagSum / wsum;
+  // The replay is built from these numbers: a NaN lag or rate would make an
+  // invalid chain whose message names the wrong cause.
+  for (const auto& [value, what] : {std::pair{cal.lagMs, "lag"}, std::pair{cal.tableFrequencyErrorPpm, "table frequency error"},
+                                    std::pair{cal.arwDegPerSqrtH, "angle random walk"}})
+    if (!std::isfinite(value))
+      return corruptData(std::string("the session's analysis gave a ") + what + " that is not a finite number (" +
+                         fmt("%g", value) + "): no replay can be calibrated to it; nothing was concluded");
   setLag(c, cal.lagMs * 1e-3, notes);
 
   auto realFeatures = extractFeatures(used, replay.ref);
   if (!realFeatures) return realFeatures.status();
   out.real = std::move(*realFeatures);
+  // Before anything is calibrated from them (a NaN cell would turn into a
+  // NaN bias, refused under a name that hides the cause).
+  for (std::size_t i = 0; i < out.real.values.size(); ++i) FOG_RETURN_IF_ERROR(checkFinite(out.real, i));
   const auto& keys = out.real.keys;
   const std::vector<double>& real = out.real.values;
   {
@@ -726,6 +756,9 @@ Result<CalibratedReplay> calibrate(const AnalysedSession& session, const Session
       if (keys[i].channel == Channel::kTable && keys[i].quantity == Quantity::kResidualMeanSquare) tableMs.push_back(real[i]);
     // White encoder noise sigma^2 = q^2 / 12 for a quantising encoder.
     cal.encoderNoiseDeg = std::sqrt(median(tableMs)) * 1e-6;
+    if (!std::isfinite(cal.encoderNoiseDeg))
+      return corruptData("the session's table residual is not a finite number (" + fmt("%g", cal.encoderNoiseDeg) +
+                         " deg): no replay can be calibrated to it; nothing was concluded");
     c.encoder.quantumDeg = std::sqrt(12.0) * cal.encoderNoiseDeg;
   }
   if (Status s = c.validate(); !s.isOk())
@@ -808,9 +841,12 @@ struct GapModel {
 };
 
 // Fills d's gap map and its headline numbers.
-GapModel buildGapMap(const FeatureSet& realFeatures, const std::vector<SignatureJob>& jobs,
-                     const std::vector<FeatureSet>& outputs, double counterTickUs, const DiagnosisOptions& options,
-                     Diagnosis& d) {
+// Refuses (kCorruptData / kInternal) when a cell's inputs or statistics are
+// not finite numbers: a NaN z would make chi2 NaN, and "chi2 - n > 5 sigma"
+// is false for NaN, which once read as "real and simulated data agree".
+Result<GapModel> buildGapMap(const FeatureSet& realFeatures, const std::vector<SignatureJob>& jobs,
+                             const std::vector<FeatureSet>& outputs, double counterTickUs,
+                             const DiagnosisOptions& options, Diagnosis& d) {
   const auto& keys = realFeatures.keys;
   const std::vector<double>& real = realFeatures.values;
   const auto& library = effectLibrary();
@@ -818,6 +854,14 @@ GapModel buildGapMap(const FeatureSet& realFeatures, const std::vector<Signature
   const int K = monteCarloReplays(options);
   GapModel g;
   Stats& st = g.st;
+  for (std::size_t i = 0; i < n; ++i) {
+    FOG_RETURN_IF_ERROR(checkFinite(realFeatures, i));
+    for (const auto& o : outputs)
+      if (!std::isfinite(o.values[i]))
+        return Status(StatusCode::kInternal, "the diagnosis cannot compare this session with its replay: the replay's " +
+                                                 describeCell(keys[i]) + " is " + fmt("%g", o.values[i]) +
+                                                 ", not a finite number; nothing was concluded");
+  }
   st.mean.assign(n, 0.0);
   st.sigma.assign(n, 0.0);
   st.z.assign(n, 0.0);
@@ -869,6 +913,10 @@ GapModel buildGapMap(const FeatureSet& realFeatures, const std::vector<Signature
     const double formal = realFeatures.formalStd[i];
     st.sigma[i] = std::sqrt(std::max(var, formal * formal) + fl * fl + lostExpected[i]);
     st.z[i] = (real[i] - st.mean[i]) / st.sigma[i];
+    if (!(std::isfinite(st.sigma[i]) && st.sigma[i] > 0.0 && std::isfinite(st.z[i])))
+      return Status(StatusCode::kInternal, "the diagnosis cannot score the " + describeCell(keys[i]) + ": real " +
+                                               fmt("%g", real[i]) + ", replays " + fmt("%g", st.mean[i]) + " +- " +
+                                               fmt("%g", st.sigma[i]) + " give no finite z; nothing was concluded");
     st.held[i] = keys[i].segment % 2 == 1;
     // A cell whose replays spread by less than a tenth of its floor (the
     // timing cells of a simulator whose clocks have no jitter, the lost-frame
@@ -906,6 +954,9 @@ GapModel buildGapMap(const FeatureSet& realFeatures, const std::vector<Signature
   projectOut(nuisance, g.z0, st.held, true);
   g.chiTrain = chi2(g.z0, st.held, false);
   g.chiHeld = chi2(g.z0, st.held, true);
+  if (!std::isfinite(d.chiSquare) || !std::isfinite(g.chiTrain) || !std::isfinite(g.chiHeld))
+    return Status(StatusCode::kInternal, "the gap map's chi2 is not a finite number (" + fmt("%g", d.chiSquare) +
+                                             "); nothing was concluded");
   return g;
 }
 
@@ -1025,6 +1076,11 @@ std::vector<Candidate> scoreEffects(const FeatureSet& realFeatures, const GapMod
     f.trainDeltaChi2 = g.chiTrain - chi2(zTrain, st.held, false);
     f.heldOutDeltaChi2 = g.chiHeld - chi2(zTrain, st.held, true);
     f.score = f.trainDeltaChi2 - k * std::log(static_cast<double>(nTrain));
+    if (!std::isfinite(*f.score) || !std::isfinite(f.heldOutDeltaChi2)) {
+      // Not ranked, never kept: a NaN score would sort anywhere.
+      f.score.reset();
+      f.note = "its fit is not a finite number in this session's features (not scored)";
+    }
     const double chiAfter = chi2(zAll, st.held, false) + chi2(zAll, st.held, true);
     const double scale = std::sqrt(std::max(1.0, chiAfter / std::max(1.0, static_cast<double>(n) - k)));
     for (std::size_t j = 0; j < cand.cols.size(); ++j) {
@@ -1070,7 +1126,9 @@ class ExactEvaluator {
     for (std::size_t i = 0; i < n; ++i)
       zOut[i] = (real_[i] - g_.st.mean[i] - (f->values[i] - g_.base[i])) / g_.st.sigma[i];
     projectOut(g_.nuisance, zOut, g_.st.held, true);
-    return true;
+    // A replay with non-finite features is no evaluation: the effect is
+    // judged as if it had not been replayed (not kept).
+    return std::all_of(zOut.begin(), zOut.end(), [](double v) { return std::isfinite(v); });
   }
 
  private:
@@ -1300,6 +1358,29 @@ void decideVerdict(const VerdictModel& chosen, const std::vector<Candidate>& can
   d.gapAfter = channelGaps(d.gapMap, true);
   HeldOutShrink total;
   d.heldOut = shrinkPerChannel(d.gapMap, z0, zModel, &total);
+  // Every verdict, "none" above all, is a comparison of finite chi2 values:
+  // with a NaN anywhere, "chi2 - n > 5 sigma" is false and would read as
+  // agreement. buildGapMap() refuses non-finite cells; this is the last line.
+  std::string notFinite;
+  auto requireFinite = [&](double v, const std::string& what) {
+    if (notFinite.empty() && !std::isfinite(v)) notFinite = what + " is " + fmt("%g", v);
+  };
+  requireFinite(d.chiSquare, "the gap's chi2");
+  for (const auto& g : d.gapBefore) requireFinite(g.chiSquare, std::string("the ") + channelName(g.channel) + " channel's chi2");
+  for (const auto& g : d.gapAfter)
+    requireFinite(g.chiSquare, std::string("the ") + channelName(g.channel) + " channel's chi2 after the model");
+  for (const auto& h : d.heldOut) {
+    requireFinite(h.before, std::string("the ") + channelName(h.channel) + " channel's held-out chi2");
+    requireFinite(h.after, std::string("the ") + channelName(h.channel) + " channel's held-out chi2 after the model");
+  }
+  for (std::size_t m : model)
+    for (double v : cands[m].fit.values) requireFinite(v, "the fit of " + cands[m].fit.name);
+  if (!notFinite.empty()) {
+    d.verdict = "undetermined";
+    d.verdictReason = "no verdict: " + notFinite + ", not a finite number, so real and simulated data cannot be compared";
+    for (auto& cand : cands) d.effects.push_back(cand.fit);
+    return;
+  }
   // A right model leaves noise: its held-out remainder is tested like the
   // gap itself, over all held-out cells and within each channel (a ramp
   // fitted to a bias step closes ~90 % of the gap but leaves a remainder of
@@ -1505,7 +1586,9 @@ Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, cons
   auto outputs = runReplays(replay, jobs, real.values.size(), options.threads, progress);
   if (!outputs) return outputs.status();
   const double counterTickUs = 1e6 / replay.cal.config.samplingBoard.counterHz;
-  const GapModel gap = buildGapMap(real, jobs, *outputs, counterTickUs, options, d);
+  auto gapMap = buildGapMap(real, jobs, *outputs, counterTickUs, options, d);
+  if (!gapMap) return gapMap.status();
+  const GapModel& gap = *gapMap;
 
   progress.stage("effects", expectedReplays);
   std::vector<Candidate> candidates = scoreEffects(real, gap, jobs, *outputs, d.gapMap);
