@@ -296,17 +296,17 @@ Result<std::unique_ptr<Simulator>> Simulator::create(const SimConfig& config, co
   return sim;
 }
 
-double Simulator::frameBound() const {
-  // Counted in double: a period of 1e-300 s must give a huge count, not an
-  // overflowed one. Indices 0..floor(limit / period) of each stream, the
+Simulator::FrameCounts Simulator::frameCounts() const {
+  // Indices 0..floor(limit / period) of the table and IMU streams, the
   // periodic status frames and three status events per point.
   const double limit = endS() + streamSlackS();
   const double imuPeriod = config_.imuBoard.framePeriodS * (1.0 + config_.imuBoard.clockErrorPpm * 1e-6);
-  const double table = std::floor(limit / config_.encoder.samplePeriodS) + 1.0;
-  const double imu = std::floor(std::max(0.0, limit - config_.imuBoard.firstSampleS) / imuPeriod) + 1.0;
-  const double status = std::floor(endS() / config_.samplingBoard.statusPeriodS) + 1.0 +
-                        3.0 * static_cast<double>(turntable_.schedule().size());
-  return table + imu + status;
+  FrameCounts n;
+  n.table = std::floor(limit / config_.encoder.samplePeriodS) + 1.0;
+  n.imu = std::floor(std::max(0.0, limit - config_.imuBoard.firstSampleS) / imuPeriod) + 1.0;
+  n.status = std::floor(endS() / config_.samplingBoard.statusPeriodS) + 1.0 +
+             3.0 * static_cast<double>(turntable_.schedule().size());
+  return n;
 }
 
 void Simulator::addEffect(std::unique_ptr<Effect> effect) { effects_.push_back(std::move(effect)); }

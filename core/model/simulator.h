@@ -57,8 +57,14 @@ class Simulator {
   // frame whose nominal instant is more than streamSlackS() past endS()
   // ends its stream even if an effect stamped it earlier; a stamp past
   // endS(), or not finite, ends it too). Each step of advance() emits or
-  // drops one of these frames, so advance() always returns.
-  double frameBound() const;
+  // drops one of these frames, so advance() always returns. Counted in
+  // double: a period of 1e-300 s gives a huge count, not an overflow.
+  struct FrameCounts {
+    double table = 0.0, imu = 0.0, status = 0.0;
+    double total() const { return table + imu + status; }
+  };
+  FrameCounts frameCounts() const;
+  double frameBound() const { return frameCounts().total(); }
   double streamSlackS() const { return 1.0 + 0.01 * endS(); }
 
   // Effects must be added before the first advance().
