@@ -1522,33 +1522,36 @@ Result<int> threadsWithinMemory(const Recording& recording, int requested) {
 // The replays' share of the budget, once the calibrated replay is known and
 // before any runs. A replay's stream is not the session's: it settles 2 s
 // before each point and rests between points, at the session's own sample
-// periods (a period calibrated from jittered or damaged stamps is what once
-// made one grow without bound). Each replay holds the recording it builds,
-// at most Simulator::frameBound() samples (counted at the larger sample's
-// size, with the builder's growth of 1.5), one per thread. Fewer threads
-// when that is over the budget; a refusal (kOutOfRange) when even one is.
-// Sets replay.maxFrames, which every replay's simulator then enforces.
+// periods. Each replay holds the recording it builds, at most
+// Simulator::frameCounts() table and IMU samples, with the builder's growth
+// (1.5x), one replay per thread. Fewer threads when that is over the
+// budget; a refusal (kOutOfRange) when even one is. Sets replay.maxFrames
+// to the calibrated replay's own bound, which every replay's simulator then
+// enforces (they differ from it only in seed, heading, bias and effects,
+// none of which can add a frame).
 Status budgetReplays(const Recording& input, Replay& replay, DiagnosisOptions& options,
                      std::vector<std::string>& notes) {
   const double sessionPeak = 1.5 * sampleBytesOf(input);
   auto sim = model::Simulator::create(replay.cal.config, replay.cal.plan);
-  if (!sim) return invalidArgument("the calibrated replay cannot run: " + sim.status().message());
-  const double frames = (*sim)->frameBound();
-  constexpr double kBytesPerFrame = 1.5 * static_cast<double>(std::max(sizeof(TableSample), sizeof(ImuSample)));
-  const double perReplay = frames * kBytesPerFrame;
+  if (!sim) return outOfRange("the calibrated replay cannot run: " + sim.status().message());
+  const auto frames = (*sim)->frameCounts();
+  const double perReplay = 1.5 * (frames.table * static_cast<double>(sizeof(TableSample)) +
+                                  frames.imu * static_cast<double>(sizeof(ImuSample)));
   int threads = std::max(1, options.threads);
   while (threads > 1 && sessionPeak + threads * perReplay > kDiagnosisMemoryBudgetBytes) --threads;
   if (sessionPeak + threads * perReplay > kDiagnosisMemoryBudgetBytes)
-    return outOfRange("the replay of this session would hold up to " + std::to_string(static_cast<long long>(frames)) +
-                      " frames (" + megabytes(perReplay) + ": " + fmt("%.0f", (*sim)->endS()) + " s at a table period of " +
+    return outOfRange("the replay of this session would hold up to " +
+                      std::to_string(static_cast<long long>(frames.total())) + " frames (" + megabytes(perReplay) +
+                      ": " + fmt("%.0f", (*sim)->endS()) + " s at a table period of " +
                       fmt("%.4g", replay.cal.config.encoder.samplePeriodS * 1e3) + " ms and an IMU period of " +
-                      fmt("%.4g", replay.cal.config.imuBoard.framePeriodS * 1e3) + " ms, as calibrated from the stamps), over the " +
-                      megabytes(kDiagnosisMemoryBudgetBytes) + " limit with the session's own " + megabytes(sessionPeak));
+                      fmt("%.4g", replay.cal.config.imuBoard.framePeriodS * 1e3) +
+                      " ms, as calibrated from the stamps), over the " + megabytes(kDiagnosisMemoryBudgetBytes) +
+                      " limit with the session's own " + megabytes(sessionPeak));
   if (threads < options.threads)
     notes.push_back("ran the replays on " + std::to_string(threads) + " of " + std::to_string(options.threads) +
                     " threads, to stay within the " + megabytes(kDiagnosisMemoryBudgetBytes) + " memory limit");
   options.threads = threads;
-  replay.maxFrames = (kDiagnosisMemoryBudgetBytes - sessionPeak) / threads / kBytesPerFrame;
+  replay.maxFrames = frames.total();
   return Status::ok();
 }
 
