@@ -75,7 +75,9 @@ void expectFiniteVerdict(const Diagnosis& d) {
   for (const auto& g : d.gapAfter) EXPECT_TRUE(std::isfinite(g.chiSquare)) << channelName(g.channel);
   for (const auto& c : d.gapMap) EXPECT_TRUE(std::isfinite(c.z) && std::isfinite(c.zAfter) && c.simStd > 0.0);
   for (const auto& e : d.effects) {
-    if (e.score) EXPECT_TRUE(std::isfinite(*e.score)) << e.name;
+    if (e.score) {
+      EXPECT_TRUE(std::isfinite(*e.score)) << e.name;
+    }
     if (e.kept) {
       const auto id = effectIdFromName(e.name);
       ASSERT_TRUE(id.isOk());
@@ -104,8 +106,9 @@ TEST(DiagnosisRobustness, AJitteredDampedPendulumAt90And50HzIsDiagnosedWithinThe
   for (const auto& e : d->effects)
     if (e.name == "clock_drift") {
       EXPECT_FALSE(e.kept);
-      if (!e.values.empty() && std::abs(e.values[0]) > 1000.0)
+      if (!e.values.empty() && std::abs(e.values[0]) > 1000.0) {
         EXPECT_NE(e.note.find("outside the range"), std::string::npos) << e.note;
+      }
     }
 }
 
@@ -114,6 +117,38 @@ TEST(DiagnosisRobustness, TheSamePendulumWithoutJitterIsDiagnosedToo) {
   ASSERT_TRUE(d.isOk()) << d.status().toString();
   expectFiniteVerdict(*d);
   EXPECT_NE(d->verdict, "none") << d->verdictReason;  // the swing decays; the replay's does not
+}
+
+// A small session whose table is sampled every 0.1 us: its replay settles
+// 2 s and rests 1 s at that rate, ~4e7 frames, over the budget although
+// the session itself is 0.2 s: refused before any replay runs.
+TEST(DiagnosisRobustness, AReplayOverTheMemoryBudgetIsRefusedBeforeItRuns) {
+  const double f = 20.0, amp = 1.0, dur = 0.2, lag = 0.5e-3, tableP = 1e-7, imuP = 1e-3;
+  const auto angle = [&](double t) { return amp * std::sin(kTwoPi * f * t); };
+  Recording rec;
+  rec.pulseEquivalentDeg = 5e-5;
+  TestPointData tp;
+  tp.nominalFrequencyHz = f;
+  tp.nominalAmplitudeDeg = amp;
+  for (int k = 0; k * tableP < dur; ++k) {
+    TableSample s;
+    s.timeS = k * tableP;
+    s.angleDeg[0] = angle(s.timeS);
+    tp.table.push_back(s);
+  }
+  for (int k = 0; k * imuP < dur; ++k) {
+    ImuSample s;
+    s.timeS = k * imuP;
+    s.incrementDeg[0] = angle(s.timeS - lag) - angle(s.timeS - lag - imuP);
+    tp.imu.push_back(s);
+  }
+  rec.testPoints.push_back(std::move(tp));
+  auto d = diagnose(rec, nullptr, {}, {});
+  ASSERT_FALSE(d.isOk());
+  EXPECT_EQ(d.status().code(), StatusCode::kOutOfRange) << d.status().toString();
+  EXPECT_NE(d.status().message().find("the replay of this session would hold"), std::string::npos)
+      << d.status().toString();
+  EXPECT_LT(peakRssBytes(), kDiagnosisMemoryBudgetBytes);
 }
 
 // The simulator itself: an effect that stamps IMU frames backwards in time
