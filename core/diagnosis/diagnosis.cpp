@@ -577,6 +577,11 @@ Status calibrateEarthRateAndBias(Replay& replay, const std::vector<FeatureKey>& 
   if (heading > 180.0) heading -= 360.0;
   Eigen::VectorXd biases;
   fitAt(heading, &biases);
+  // From finite features the scan is finite; a replay's NaN would otherwise
+  // surface as "heading must be within [-360, 360] deg".
+  if (!std::isfinite(heading) || !biases.allFinite())
+    return Status(StatusCode::kInternal, "the Earth-rate calibration gave a heading of " + fmt("%g", heading) +
+                                             " deg or biases that are not finite numbers; nothing was concluded");
   cal.headingDeg = heading;
   cal.headingStdDeg = curvature > 0.0 ? std::sqrt(2.0 / curvature) : 180.0;
   cal.config.earth.headingDeg = heading;
