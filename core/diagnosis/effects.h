@@ -53,7 +53,7 @@ struct EffectParameter {
   // reference, is extrapolated far past where it was measured, or the chain
   // stops being physical (a clock drift of -1e6 ppm stops the IMU's clock
   // and stamps its frames backwards). The diagnosis never replays such a
-  // value (inRange()).
+  // value (checkParameters()).
   double maxMagnitude = 0.0;
 };
 
