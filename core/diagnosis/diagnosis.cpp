@@ -85,10 +85,13 @@ class Progress {
 // not encoded: the recording is the one the bytes would give
 // (SimulatorFrames.GiveTheRecordingTheirBytesGive), without the checksums
 // and parsing that were a fifth of a diagnosis' time.
-Result<Recording> simulateRecording(const model::SimConfig& config, const TestPlan& plan,
+//
+// maxFrames: the stream's budget (Simulator::frameBound()); a configuration
+// that could emit more is refused before anything runs.
+Result<Recording> simulateRecording(const model::SimConfig& config, const TestPlan& plan, double maxFrames,
                                     std::vector<std::unique_ptr<model::Effect>> effects = {}) {
   constexpr double kChunkS = 2.0;
-  auto sim = model::Simulator::create(config, plan);
+  auto sim = model::Simulator::create(config, plan, maxFrames);
   if (!sim) return sim.status();
   for (auto& e : effects) (*sim)->addEffect(std::move(e));
   protocol::StreamDecoder decoder;
@@ -106,6 +109,9 @@ struct Replay {
   FeatureReference ref;
   EffectContext context;
   Progress* progress = nullptr;  // counts the replays; a cancel makes run() fail at once
+  // Frames one replay's stream may hold (set by budgetReplays()); a replay over
+  // it fails with kOutOfRange instead of growing.
+  double maxFrames = model::kMaxSimulatedFrames;
 
   Result<FeatureSet> run(std::uint64_t seed, const EffectList& effects) const {
     if (progress && progress->cancelled()) return cancelledByCaller();
@@ -119,7 +125,11 @@ struct Replay {
     model::SimConfig config = cal.config;
     config.seed = seed;
     std::vector<std::unique_ptr<model::Effect>> list;
-    for (const auto& [id, p] : effects) list.push_back(makeEffect(id, p, context));
+    for (const auto& [id, p] : effects) {
+      // A fitted value outside the effect's modelled range is never replayed.
+      FOG_RETURN_IF_ERROR(checkParameters(id, p));
+      list.push_back(makeEffect(id, p, context));
+    }
     // The encoder quantises exact motion, so without a change of phase every
     // replay would read the table alike and the table cells would have no
     // spread; a start phase drawn per seed (well under a sample period's
@@ -128,7 +138,7 @@ struct Replay {
     TestPlan plan = cal.plan;
     model::Random phase(model::Random::derive(seed, 0x7ab1e));
     for (auto& p : plan.points) p.startPhaseDeg += 0.1 * (phase.uniform() - 0.5);
-    auto rec = simulateRecording(config, plan, std::move(list));
+    auto rec = simulateRecording(config, plan, maxFrames, std::move(list));
     if (!rec) return rec.status();
     return extractFeatures(*rec, ref);
   }
@@ -415,7 +425,8 @@ class ForwardCost final : public ceres::CostFunction {
     projectOut(*s_.nuisance, z, s_.stats->held, true);
     out.resize(s_.rows.size());
     for (std::size_t r = 0; r < s_.rows.size(); ++r) out[r] = z[s_.rows[r]];
-    return true;
+    // Ceres is told of a non-finite replay as a failed evaluation.
+    return std::all_of(out.begin(), out.end(), [](double v) { return std::isfinite(v); });
   }
 
   Setup s_;
@@ -426,6 +437,25 @@ std::string fmt(const char* f, double v) {
   char b[64];
   std::snprintf(b, sizeof b, f, v);
   return b;
+}
+
+// "gyro h3_in_phase of test point 2, segment 3", for messages.
+std::string describeCell(const FeatureKey& k) {
+  std::string s = std::string(channelName(k.channel)) + " " + quantityName(k);
+  if (k.axis >= 0) s += std::string(" (gyro ") + "xyz"[k.axis] + ")";
+  return s + " of test point " + std::to_string(k.point + 1) + ", segment " + std::to_string(k.segment + 1);
+}
+
+// Ok when the recording's feature i and its formal error are finite;
+// otherwise a refusal naming the cell (kCorruptData).
+Status checkFinite(const FeatureSet& real, std::size_t i) {
+  const bool value = std::isfinite(real.values[i]);
+  if (value && std::isfinite(real.formalStd[i])) return Status::ok();
+  return corruptData("the diagnosis cannot compare this session with its replay: the recording's " +
+                     describeCell(real.keys[i]) + (value ? " has a standard error of " + fmt("%g", real.formalStd[i])
+                                                         : " is " + fmt("%g", real.values[i])) +
+                     ", not a finite number (a sample in that segment is not a finite number or far beyond its "
+                     "range); nothing was concluded");
 }
 
 // The table's heading is not in a session, and the Earth rate it turns into
@@ -547,6 +577,11 @@ Status calibrateEarthRateAndBias(Replay& replay, const std::vector<FeatureKey>& 
   if (heading > 180.0) heading -= 360.0;
   Eigen::VectorXd biases;
   fitAt(heading, &biases);
+  // From finite features the scan is finite; a replay's NaN would otherwise
+  // surface as "heading must be within [-360, 360] deg".
+  if (!std::isfinite(heading) || !biases.allFinite())
+    return Status(StatusCode::kInternal, "the Earth-rate calibration gave a heading of " + fmt("%g", heading) +
+                                             " deg or biases that are not finite numbers; nothing was concluded");
   cal.headingDeg = heading;
   cal.headingStdDeg = curvature > 0.0 ? std::sqrt(2.0 / curvature) : 180.0;
   cal.config.earth.headingDeg = heading;
@@ -703,11 +738,21 @@ Result<CalibratedReplay> calibrate(const AnalysedSession& session, const Session
                     " s assumed (the simulator's default): a bias drift or step within such a wander is not "
                     "resolved; state the IMU's own (its static noise test) for a sharper test of the gyro trends");
   cal.lagMs = lagSum / wsum;
+  // The replay is built from these numbers: a NaN lag or rate would make an
+  // invalid chain whose message names the wrong cause.
+  for (const auto& [value, what] : {std::pair{cal.lagMs, "lag"}, std::pair{cal.tableFrequencyErrorPpm, "table frequency error"},
+                                    std::pair{cal.arwDegPerSqrtH, "angle random walk"}})
+    if (!std::isfinite(value))
+      return corruptData(std::string("the session's analysis gave a ") + what + " that is not a finite number (" +
+                         fmt("%g", value) + "): no replay can be calibrated to it; nothing was concluded");
   setLag(c, cal.lagMs * 1e-3, notes);
 
   auto realFeatures = extractFeatures(used, replay.ref);
   if (!realFeatures) return realFeatures.status();
   out.real = std::move(*realFeatures);
+  // Before anything is calibrated from them (a NaN cell would turn into a
+  // NaN bias, refused under a name that hides the cause).
+  for (std::size_t i = 0; i < out.real.values.size(); ++i) FOG_RETURN_IF_ERROR(checkFinite(out.real, i));
   const auto& keys = out.real.keys;
   const std::vector<double>& real = out.real.values;
   {
@@ -716,11 +761,13 @@ Result<CalibratedReplay> calibrate(const AnalysedSession& session, const Session
       if (keys[i].channel == Channel::kTable && keys[i].quantity == Quantity::kResidualMeanSquare) tableMs.push_back(real[i]);
     // White encoder noise sigma^2 = q^2 / 12 for a quantising encoder.
     cal.encoderNoiseDeg = std::sqrt(median(tableMs)) * 1e-6;
+    if (!std::isfinite(cal.encoderNoiseDeg))
+      return corruptData("the session's table residual is not a finite number (" + fmt("%g", cal.encoderNoiseDeg) +
+                         " deg): no replay can be calibrated to it; nothing was concluded");
     c.encoder.quantumDeg = std::sqrt(12.0) * cal.encoderNoiseDeg;
   }
   if (Status s = c.validate(); !s.isOk())
     return invalidArgument("the calibrated replay is not a valid chain: " + s.message());
-  FOG_RETURN_IF_ERROR(calibrateEarthRateAndBias(replay, keys, real, options, notes));
   return out;
 }
 
@@ -799,9 +846,12 @@ struct GapModel {
 };
 
 // Fills d's gap map and its headline numbers.
-GapModel buildGapMap(const FeatureSet& realFeatures, const std::vector<SignatureJob>& jobs,
-                     const std::vector<FeatureSet>& outputs, double counterTickUs, const DiagnosisOptions& options,
-                     Diagnosis& d) {
+// Refuses (kCorruptData / kInternal) when a cell's inputs or statistics are
+// not finite numbers: a NaN z would make chi2 NaN, and "chi2 - n > 5 sigma"
+// is false for NaN, which once read as "real and simulated data agree".
+Result<GapModel> buildGapMap(const FeatureSet& realFeatures, const std::vector<SignatureJob>& jobs,
+                             const std::vector<FeatureSet>& outputs, double counterTickUs,
+                             const DiagnosisOptions& options, Diagnosis& d) {
   const auto& keys = realFeatures.keys;
   const std::vector<double>& real = realFeatures.values;
   const auto& library = effectLibrary();
@@ -809,6 +859,14 @@ GapModel buildGapMap(const FeatureSet& realFeatures, const std::vector<Signature
   const int K = monteCarloReplays(options);
   GapModel g;
   Stats& st = g.st;
+  for (std::size_t i = 0; i < n; ++i) {
+    FOG_RETURN_IF_ERROR(checkFinite(realFeatures, i));
+    for (const auto& o : outputs)
+      if (!std::isfinite(o.values[i]))
+        return Status(StatusCode::kInternal, "the diagnosis cannot compare this session with its replay: the replay's " +
+                                                 describeCell(keys[i]) + " is " + fmt("%g", o.values[i]) +
+                                                 ", not a finite number; nothing was concluded");
+  }
   st.mean.assign(n, 0.0);
   st.sigma.assign(n, 0.0);
   st.z.assign(n, 0.0);
@@ -860,6 +918,10 @@ GapModel buildGapMap(const FeatureSet& realFeatures, const std::vector<Signature
     const double formal = realFeatures.formalStd[i];
     st.sigma[i] = std::sqrt(std::max(var, formal * formal) + fl * fl + lostExpected[i]);
     st.z[i] = (real[i] - st.mean[i]) / st.sigma[i];
+    if (!(std::isfinite(st.sigma[i]) && st.sigma[i] > 0.0 && std::isfinite(st.z[i])))
+      return Status(StatusCode::kInternal, "the diagnosis cannot score the " + describeCell(keys[i]) + ": real " +
+                                               fmt("%g", real[i]) + ", replays " + fmt("%g", st.mean[i]) + " +- " +
+                                               fmt("%g", st.sigma[i]) + " give no finite z; nothing was concluded");
     st.held[i] = keys[i].segment % 2 == 1;
     // A cell whose replays spread by less than a tenth of its floor (the
     // timing cells of a simulator whose clocks have no jitter, the lost-frame
@@ -897,6 +959,9 @@ GapModel buildGapMap(const FeatureSet& realFeatures, const std::vector<Signature
   projectOut(nuisance, g.z0, st.held, true);
   g.chiTrain = chi2(g.z0, st.held, false);
   g.chiHeld = chi2(g.z0, st.held, true);
+  if (!std::isfinite(d.chiSquare) || !std::isfinite(g.chiTrain) || !std::isfinite(g.chiHeld))
+    return Status(StatusCode::kInternal, "the gap map's chi2 is not a finite number (" + fmt("%g", d.chiSquare) +
+                                             "); nothing was concluded");
   return g;
 }
 
@@ -1016,6 +1081,11 @@ std::vector<Candidate> scoreEffects(const FeatureSet& realFeatures, const GapMod
     f.trainDeltaChi2 = g.chiTrain - chi2(zTrain, st.held, false);
     f.heldOutDeltaChi2 = g.chiHeld - chi2(zTrain, st.held, true);
     f.score = f.trainDeltaChi2 - k * std::log(static_cast<double>(nTrain));
+    if (!std::isfinite(*f.score) || !std::isfinite(f.heldOutDeltaChi2)) {
+      // Not ranked, never kept: a NaN score would sort anywhere.
+      f.score.reset();
+      f.note = "its fit is not a finite number in this session's features (not scored)";
+    }
     const double chiAfter = chi2(zAll, st.held, false) + chi2(zAll, st.held, true);
     const double scale = std::sqrt(std::max(1.0, chiAfter / std::max(1.0, static_cast<double>(n) - k)));
     for (std::size_t j = 0; j < cand.cols.size(); ++j) {
@@ -1061,7 +1131,9 @@ class ExactEvaluator {
     for (std::size_t i = 0; i < n; ++i)
       zOut[i] = (real_[i] - g_.st.mean[i] - (f->values[i] - g_.base[i])) / g_.st.sigma[i];
     projectOut(g_.nuisance, zOut, g_.st.held, true);
-    return true;
+    // A replay with non-finite features is no evaluation: the effect is
+    // judged as if it had not been replayed (not kept).
+    return std::all_of(zOut.begin(), zOut.end(), [](double v) { return std::isfinite(v); });
   }
 
  private:
@@ -1108,7 +1180,13 @@ Status refineBest(std::vector<Candidate>& cands, const Replay& replay, const Gap
     auto* cost = new ForwardCost(std::move(setup));
     ceres::Problem problem;
     problem.AddResidualBlock(cost, nullptr, x.data());
-    for (std::size_t j = 0; j < x.size(); ++j) problem.SetParameterLowerBound(x.data(), static_cast<int>(j), 0.0);
+    for (std::size_t j = 0; j < x.size(); ++j) {
+      // Within the range the effect is modelled for: a replay outside it fails.
+      const double top = spec.parameters[j].maxMagnitude;
+      problem.SetParameterLowerBound(x.data(), static_cast<int>(j), 0.0);
+      problem.SetParameterUpperBound(x.data(), static_cast<int>(j), squared ? top * top : top);
+      x[j] = std::min(x[j], squared ? top * top : top);
+    }
     ceres::Solver::Options so;
     // Near the optimum the steps only wander in the re-drawn quantisation
     // noise (~1 % of tau^2 for a 2-ms lag), which no tolerance on the cost
@@ -1136,9 +1214,19 @@ Status refineBest(std::vector<Candidate>& cands, const Replay& replay, const Gap
   }
   std::vector<std::vector<double>> zExact(static_cast<std::size_t>(refine));
   std::vector<char> okExact(static_cast<std::size_t>(refine), 0);
+  // A fit outside the effect's modelled range (a linear signature
+  // extrapolated 1e7 times past its reference) is no finding: it is not
+  // replayed, and not kept.
+  for (int r = 0; r < refine; ++r) {
+    Candidate& cand = cands[static_cast<std::size_t>(r)];
+    if (!cand.fit.score) continue;
+    if (Status s = checkParameters(library[cand.lib].id, cand.fit.values); !s.isOk())
+      cand.fit.note += std::string(cand.fit.note.empty() ? "" : "; ") + "not kept: fitted " + s.message();
+  }
   parallelFor(static_cast<std::size_t>(refine), options.threads, [&](std::size_t r) {
     const Candidate& cand = cands[r];
-    okExact[r] = cand.fit.score.has_value() && exactZ({{library[cand.lib].id, cand.fit.values}}, zExact[r]);
+    okExact[r] = cand.fit.score.has_value() && checkParameters(library[cand.lib].id, cand.fit.values).isOk() &&
+                 exactZ({{library[cand.lib].id, cand.fit.values}}, zExact[r]);
   });
   for (int r = 0; r < refine; ++r) {
     Candidate& cand = cands[static_cast<std::size_t>(r)];
@@ -1242,7 +1330,10 @@ VerdictModel chooseModel(std::vector<Candidate>& cands, const Replay& replay, co
       if (library[cands[partner].lib].id == EffectId::kFirstOrderLag)
         for (double& v : p2) v = std::sqrt(v);
       std::vector<double> zPair;
-      if (exactZ({{library[cands[first].lib].id, p1}, {library[cands[partner].lib].id, p2}}, zPair)) {
+      // A joint fit outside either effect's modelled range is not replayed.
+      const bool inRange = checkParameters(library[cands[first].lib].id, p1).isOk() &&
+                           checkParameters(library[cands[partner].lib].id, p2).isOk();
+      if (inRange && exactZ({{library[cands[first].lib].id, p1}, {library[cands[partner].lib].id, p2}}, zPair)) {
         const double gainHeld = chi2(zModel, st.held, true) - chi2(zPair, st.held, true);
         const double gainAll = gainHeld + chi2(zModel, st.held, false) - chi2(zPair, st.held, false);
         const double k2 = static_cast<double>(p2.size());
@@ -1272,6 +1363,29 @@ void decideVerdict(const VerdictModel& chosen, const std::vector<Candidate>& can
   d.gapAfter = channelGaps(d.gapMap, true);
   HeldOutShrink total;
   d.heldOut = shrinkPerChannel(d.gapMap, z0, zModel, &total);
+  // Every verdict, "none" above all, is a comparison of finite chi2 values:
+  // with a NaN anywhere, "chi2 - n > 5 sigma" is false and would read as
+  // agreement. buildGapMap() refuses non-finite cells; this is the last line.
+  std::string notFinite;
+  auto requireFinite = [&](double v, const std::string& what) {
+    if (notFinite.empty() && !std::isfinite(v)) notFinite = what + " is " + fmt("%g", v);
+  };
+  requireFinite(d.chiSquare, "the gap's chi2");
+  for (const auto& g : d.gapBefore) requireFinite(g.chiSquare, std::string("the ") + channelName(g.channel) + " channel's chi2");
+  for (const auto& g : d.gapAfter)
+    requireFinite(g.chiSquare, std::string("the ") + channelName(g.channel) + " channel's chi2 after the model");
+  for (const auto& h : d.heldOut) {
+    requireFinite(h.before, std::string("the ") + channelName(h.channel) + " channel's held-out chi2");
+    requireFinite(h.after, std::string("the ") + channelName(h.channel) + " channel's held-out chi2 after the model");
+  }
+  for (std::size_t m : model)
+    for (double v : cands[m].fit.values) requireFinite(v, "the fit of " + cands[m].fit.name);
+  if (!notFinite.empty()) {
+    d.verdict = "undetermined";
+    d.verdictReason = "no verdict: " + notFinite + ", not a finite number, so real and simulated data cannot be compared";
+    for (auto& cand : cands) d.effects.push_back(cand.fit);
+    return;
+  }
   // A right model leaves noise: its held-out remainder is tested like the
   // gap itself, over all held-out cells and within each channel (a ramp
   // fitted to a bias step closes ~90 % of the gap but leaves a remainder of
@@ -1378,7 +1492,7 @@ void auditTimings(const Recording& used, const Replay& replay, std::uint64_t see
   d.realTiming = auditTiming(used, replay.ref.tablePeriodS, replay.ref.imuPeriodS);
   model::SimConfig c0 = replay.cal.config;
   c0.seed = seed;
-  if (auto rec = simulateRecording(c0, replay.cal.plan))
+  if (auto rec = simulateRecording(c0, replay.cal.plan, replay.maxFrames))
     d.simTiming = auditTiming(*rec, replay.ref.tablePeriodS, replay.ref.imuPeriodS);
 }
 
@@ -1389,11 +1503,16 @@ void auditTimings(const Recording& used, const Replay& replay, std::uint64_t see
 // when that is over the budget; a refusal when even one is.
 std::string megabytes(double bytes) { return std::to_string(static_cast<long long>(bytes / 1e6)) + " MB"; }
 
-Result<int> threadsWithinMemory(const Recording& recording, int requested) {
+double sampleBytesOf(const Recording& recording) {
   double sampleBytes = 0.0;
   for (const auto& tp : recording.testPoints)
     sampleBytes += static_cast<double>(tp.table.size()) * sizeof(TableSample) +
                    static_cast<double>(tp.imu.size()) * sizeof(ImuSample);
+  return sampleBytes;
+}
+
+Result<int> threadsWithinMemory(const Recording& recording, int requested) {
+  const double sampleBytes = sampleBytesOf(recording);
   const auto peak = [&](int threads) { return sampleBytes * (1.5 + 1.5 * threads); };
   int threads = std::max(1, requested);
   while (threads > 1 && peak(threads) > kDiagnosisMemoryBudgetBytes) --threads;
@@ -1403,6 +1522,42 @@ Result<int> threadsWithinMemory(const Recording& recording, int requested) {
                       " limit; diagnose a session of fewer or shorter test points (up to an hour at 1 kHz / 500 Hz "
                       "fits)");
   return threads;
+}
+
+// The replays' share of the budget, once the calibrated replay is known and
+// before any runs. A replay's stream is not the session's: it settles 2 s
+// before each point and rests between points, at the session's own sample
+// periods. Each replay holds the recording it builds, at most
+// Simulator::frameCounts() table and IMU samples, with the builder's growth
+// (1.5x), one replay per thread. Fewer threads when that is over the
+// budget; a refusal (kOutOfRange) when even one is. Sets replay.maxFrames
+// to the calibrated replay's own bound, which every replay's simulator then
+// enforces (they differ from it only in seed, heading, bias and effects,
+// none of which can add a frame).
+Status budgetReplays(const Recording& input, Replay& replay, DiagnosisOptions& options,
+                     std::vector<std::string>& notes) {
+  const double sessionPeak = 1.5 * sampleBytesOf(input);
+  auto sim = model::Simulator::create(replay.cal.config, replay.cal.plan);
+  if (!sim) return outOfRange("the calibrated replay cannot run: " + sim.status().message());
+  const auto frames = (*sim)->frameCounts();
+  const double perReplay = 1.5 * (frames.table * static_cast<double>(sizeof(TableSample)) +
+                                  frames.imu * static_cast<double>(sizeof(ImuSample)));
+  int threads = std::max(1, options.threads);
+  while (threads > 1 && sessionPeak + threads * perReplay > kDiagnosisMemoryBudgetBytes) --threads;
+  if (sessionPeak + threads * perReplay > kDiagnosisMemoryBudgetBytes)
+    return outOfRange("the replay of this session would hold up to " +
+                      std::to_string(static_cast<long long>(frames.total())) + " frames (" + megabytes(perReplay) +
+                      ": " + fmt("%.0f", (*sim)->endS()) + " s at a table period of " +
+                      fmt("%.4g", replay.cal.config.encoder.samplePeriodS * 1e3) + " ms and an IMU period of " +
+                      fmt("%.4g", replay.cal.config.imuBoard.framePeriodS * 1e3) +
+                      " ms, as calibrated from the stamps), over the " + megabytes(kDiagnosisMemoryBudgetBytes) +
+                      " limit with the session's own " + megabytes(sessionPeak));
+  if (threads < options.threads)
+    notes.push_back("ran the replays on " + std::to_string(threads) + " of " + std::to_string(options.threads) +
+                    " threads, to stay within the " + megabytes(kDiagnosisMemoryBudgetBytes) + " memory limit");
+  options.threads = threads;
+  replay.maxFrames = frames.total();
+  return Status::ok();
 }
 
 }  // namespace
@@ -1429,6 +1584,9 @@ Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, cons
   if (!session) return session.status();
   auto calibrated = calibrate(*session, info, options, progress, d.notes);
   if (!calibrated) return calibrated.status();
+  FOG_RETURN_IF_ERROR(budgetReplays(input, calibrated->replay, options, d.notes));
+  FOG_RETURN_IF_ERROR(calibrateEarthRateAndBias(calibrated->replay, calibrated->real.keys, calibrated->real.values,
+                                                options, d.notes));
   const Replay& replay = calibrated->replay;
   const FeatureSet& real = calibrated->real;
 
@@ -1436,7 +1594,9 @@ Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, cons
   auto outputs = runReplays(replay, jobs, real.values.size(), options.threads, progress);
   if (!outputs) return outputs.status();
   const double counterTickUs = 1e6 / replay.cal.config.samplingBoard.counterHz;
-  const GapModel gap = buildGapMap(real, jobs, *outputs, counterTickUs, options, d);
+  auto gapMap = buildGapMap(real, jobs, *outputs, counterTickUs, options, d);
+  if (!gapMap) return gapMap.status();
+  const GapModel& gap = *gapMap;
 
   progress.stage("effects", expectedReplays);
   std::vector<Candidate> candidates = scoreEffects(real, gap, jobs, *outputs, d.gapMap);

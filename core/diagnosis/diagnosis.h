@@ -2,7 +2,7 @@
 // Sim-to-real gap diagnosis (docs/diagnosis.md).
 //
 //   auto d = diagnosis::diagnose(recording, &info, constants, {});
-//   d->verdict  // "scale_factor_error", "none" or "unexplained"
+//   d->verdict  // "scale_factor_error", "none", "unexplained" or "undetermined"
 //
 // 1. Replay: the session's test points are rebuilt as a plan and run on the
 //    simulator with the nominal model, calibrated to the session (table
@@ -20,7 +20,19 @@
 //    all blocks agrees; two effects at once are tried.
 // 5. Verdict: the best kept effect; "none" when real and replay agree;
 //    "unexplained" when the gap is significant and nothing in the library
-//    closes it on held-out blocks.
+//    closes it on held-out blocks; "undetermined" (with the reason) when a
+//    chi2 the verdict rests on is not a finite number. Every verdict needs a
+//    finite chi2 in every channel: a cell whose recording or replay value,
+//    spread or z is not finite makes diagnose() refuse (kCorruptData for the
+//    recording's, kInternal for the replay's) before any verdict; fits and
+//    scores that are not finite are not ranked, never kept.
+//
+// Memory (kDiagnosisMemoryBudgetBytes): the session is checked before
+// anything runs; the calibrated replay's stream (model::Simulator::
+// frameBound(), which holds whatever the effects do to the stamps) before
+// any replay runs. Over budget: kOutOfRange, never an abort. A fitted effect
+// value outside its modelled range (EffectParameter::maxMagnitude) is never
+// replayed.
 //
 // Contracts: Qt-free; thread-safe (no shared state; it starts its own worker
 // threads); errors are Status values, never exceptions. Deterministic for a
@@ -179,7 +191,7 @@ struct Diagnosis {
   std::vector<EffectFit> effects;                // ranked, best first
   std::vector<HeldOutShrink> heldOut;            // held-out shrink of the verdict's model per channel
   std::vector<std::string> verdictEffects;       // the kept effects
-  std::string verdict;                           // effect name, "none" or "unexplained"
+  std::string verdict;                           // effect name, "none", "unexplained" or "undetermined"
   std::string verdictReason;
   std::vector<AliasGroup> aliasGroups;
   std::vector<std::string> notes;

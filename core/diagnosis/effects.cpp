@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <cstdio>
 
 #include "core/common/units.h"
 #include "core/model/random.h"
@@ -10,6 +11,12 @@
 namespace fog::diagnosis {
 
 namespace {
+
+std::string fmtValue(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.4g", v);
+  return b;
+}
 
 using Angles = std::array<double, kAxisCount>;
 
@@ -352,30 +359,38 @@ class EarthRateProjection final : public RateErrorEffect {
 // central difference leaves that part to the exact evaluation.
 std::vector<EffectSpec> buildLibrary() {
   using E = EffectId;
+  // {name, unit, reference, can be negative, largest magnitude modelled}
   return {
-      {E::kBiasDrift, "bias_drift", "gyro bias ramp (temperature-like), all axes", {{"drift", "deg/h per min", 2.0}}},
-      {E::kScaleFactorError, "scale_factor_error", "gyro scale factor error", {{"scale_factor", "ppm", 1000.0}}},
+      {E::kBiasDrift, "bias_drift", "gyro bias ramp (temperature-like), all axes",
+       {{"drift", "deg/h per min", 2.0, true, 1000.0}}},
+      {E::kScaleFactorError, "scale_factor_error", "gyro scale factor error",
+       {{"scale_factor", "ppm", 1000.0, true, 1e6}}},
       {E::kScaleFactorAsymmetry, "scale_factor_asymmetry", "scale factor differs for positive / negative rate",
-       {{"asymmetry", "ppm", 1000.0}}},
+       {{"asymmetry", "ppm", 1000.0, true, 1e6}}},
       {E::kScaleFactorNonlinearity, "scale_factor_nonlinearity", "cubic scale-factor nonlinearity (error at 100 deg/s)",
-       {{"nonlinearity", "ppm at 100 deg/s", 20000.0}}},
+       {{"nonlinearity", "ppm at 100 deg/s", 20000.0, true, 1e6}}},
       {E::kMisalignment, "misalignment", "gyro triad misalignment / non-orthogonality (gyro i senses m_ij of axis j)",
-       {{"m_xy", "urad", 200.0}, {"m_xz", "urad", 200.0}, {"m_yx", "urad", 200.0},
-        {"m_yz", "urad", 200.0}, {"m_zx", "urad", 200.0}, {"m_zy", "urad", 200.0}}},
+       {{"m_xy", "urad", 200.0, true, 1e5}, {"m_xz", "urad", 200.0, true, 1e5}, {"m_yx", "urad", 200.0, true, 1e5},
+        {"m_yz", "urad", 200.0, true, 1e5}, {"m_zx", "urad", 200.0, true, 1e5}, {"m_zy", "urad", 200.0, true, 1e5}}},
       {E::kGSensitivity, "g_sensitivity", "g-sensitive bias: each gyro's rate error k times the specific force along it",
-       {{"g_sensitivity", "deg/h/g", 50.0}}},
-      {E::kFirstOrderLag, "first_order_lag", "first-order low-pass of the gyro output", {{"time_constant", "ms", 2.0, false}},
-       false},
+       {{"g_sensitivity", "deg/h/g", 50.0, true, 1e4}}},
+      {E::kFirstOrderLag, "first_order_lag", "first-order low-pass of the gyro output",
+       {{"time_constant", "ms", 2.0, false, 1000.0}}, false},
       {E::kTableHarmonicDistortion, "table_harmonic_distortion", "2nd/3rd harmonic in the table motion",
-       {{"h2_at_10deg", "ppm", 200.0}, {"h3_at_10deg", "ppm", 400.0}}},
+       {{"h2_at_10deg", "ppm", 200.0, true, 1e6}, {"h3_at_10deg", "ppm", 400.0, true, 1e6}}},
       {E::kEncoderCyclicError, "encoder_cyclic_error", "encoder error periodic in angle (10 deg period)",
-       {{"sin_amplitude", "arcsec", 1.0}, {"cos_amplitude", "arcsec", 1.0}}},
+       {{"sin_amplitude", "arcsec", 1.0, true, 3600.0}, {"cos_amplitude", "arcsec", 1.0, true, 3600.0}}},
+      // Up to 10 ms rms: beyond, frames of a 2-ms stream swap order.
       {E::kTimestampJitter, "timestamp_jitter", "white jitter on the IMU frame stamps",
-       {{"jitter_variance", "us^2", 100.0, false}}},
-      {E::kClockDrift, "clock_drift", "IMU stamps drift against the table's time base", {{"drift", "ppm", 1.0}}},
-      {E::kDroppedFrames, "dropped_frames", "IMU frames lost at random", {{"loss_rate", "per mille", 5.0, false}}},
+       {{"jitter_variance", "us^2", 100.0, false, 1e8}}},
+      // The IMU board's own clock error is modelled up to 1000 ppm
+      // (SimConfig::validate); at -1e6 ppm its stamps would run backwards.
+      {E::kClockDrift, "clock_drift", "IMU stamps drift against the table's time base",
+       {{"drift", "ppm", 1.0, true, 1000.0}}},
+      {E::kDroppedFrames, "dropped_frames", "IMU frames lost at random",
+       {{"loss_rate", "per mille", 5.0, false, 1000.0}}},
       {E::kEarthRateProjection, "earth_rate_projection", "wrong latitude / heading for the Earth-rate projection",
-       {{"latitude_error", "deg", 5.0}, {"heading_error", "deg", 5.0}}, false, false},
+       {{"latitude_error", "deg", 5.0, true, 180.0}, {"heading_error", "deg", 5.0, true, 360.0}}, false, false},
   };
 }
 
@@ -392,6 +407,21 @@ Result<EffectId> effectIdFromName(const std::string& name) {
   for (const auto& s : effectLibrary())
     if (s.name == name) return s.id;
   return invalidArgument("unknown effect '" + name + "'");
+}
+
+Status checkParameters(EffectId id, const std::vector<double>& p) {
+  const EffectSpec& spec = effectSpec(id);
+  if (p.size() != spec.parameters.size())
+    return invalidArgument(spec.name + " takes " + std::to_string(spec.parameters.size()) + " parameters");
+  for (std::size_t j = 0; j < p.size(); ++j) {
+    const EffectParameter& q = spec.parameters[j];
+    if (!std::isfinite(p[j])) return invalidArgument(spec.name + ": " + q.name + " is not a finite number");
+    if (std::abs(p[j]) > q.maxMagnitude || (!q.canBeNegative && p[j] < 0.0))
+      return outOfRange(spec.name + ": " + q.name + " = " + fmtValue(p[j]) + " " + q.unit +
+                        " is outside the range the effect is modelled for (" + (q.canBeNegative ? "+-" : "0 .. ") +
+                        fmtValue(q.maxMagnitude) + " " + q.unit + ")");
+  }
+  return Status::ok();
 }
 
 std::unique_ptr<model::Effect> makeEffect(EffectId id, const std::vector<double>& p, const EffectContext& context) {

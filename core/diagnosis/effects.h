@@ -48,6 +48,13 @@ struct EffectParameter {
   // False for a parameter that cannot be negative (a time constant, a
   // variance, a loss rate): its signature is a one-sided difference.
   bool canBeNegative = true;
+  // Largest magnitude the effect is modelled for, in `unit`. A fitted value
+  // beyond it is not a finding: the linear signature, measured at the
+  // reference, is extrapolated far past where it was measured, or the chain
+  // stops being physical (a clock drift of -1e6 ppm stops the IMU's clock
+  // and stamps its frames backwards). The diagnosis never replays such a
+  // value (checkParameters()).
+  double maxMagnitude = 0.0;
 };
 
 struct EffectSpec {
@@ -76,6 +83,10 @@ struct EffectContext {
 const std::vector<EffectSpec>& effectLibrary();
 const EffectSpec& effectSpec(EffectId id);
 Result<EffectId> effectIdFromName(const std::string& name);
+
+// Ok when every parameter is finite and within its maxMagnitude (and not
+// negative where it cannot be); otherwise what is out of range, in words.
+Status checkParameters(EffectId id, const std::vector<double>& params);
 
 // params.size() must equal the spec's parameter count.
 std::unique_ptr<model::Effect> makeEffect(EffectId id, const std::vector<double>& params,

@@ -61,9 +61,9 @@ std::int32_t toMicroDeg(double deg) { return static_cast<std::int32_t>(std::llro
 
 class Simulator::Impl {
  public:
-  Impl(const SimConfig& config, const Turntable& table,
+  Impl(const SimConfig& config, const Turntable& table, double slackS,
        std::vector<std::unique_ptr<Effect>>& effects)
-      : c_(config), table_(table), effects_(effects), attitude_(config.earth, config.turntable),
+      : c_(config), table_(table), slackS_(slackS), effects_(effects), attitude_(config.earth, config.turntable),
         noiseRng_(Random::derive(config.seed, 0)) {
     for (int a = 0; a < kAxisCount; ++a) {
       GyroChannel& g = gyro_[a];
@@ -95,16 +95,24 @@ class Simulator::Impl {
 
   // Emits frames whose stamps are below untilS, in stamp order: encoded
   // (bytes) or as they are (frames).
+  //
+  // Termination: every pass of the loop either returns or moves one of the
+  // three streams to its next index (status, table or IMU), and each stream
+  // is over once its index passes a bound fixed by the configuration
+  // (tableOver(), imuOver(), nextStatusTimeS()): an effect that stamps
+  // frames backwards in time (a clock drift of -100 %, issue: diagnose on a
+  // jittered pendulum) or with NaN cannot make the loop emit for ever.
   template <class Out>
   void advance(double untilS, Out& out) {
     for (;;) {
       const double tStatus = nextStatusTimeS();
-      const double t = std::min({tStatus, table_.endS() < tableStampS_ ? kNever : tableStampS_,
-                                 table_.endS() < imuStampS_ ? kNever : imuStampS_});
+      const double tTable = tableOver() ? kNever : tableStampS_;
+      const double tImu = imuOver() ? kNever : imuStampS_;
+      const double t = std::min({tStatus, tTable, tImu});
       if (!(t < untilS) || t == kNever) return;
       if (t == tStatus) {
         emit(statusFrame(t), out);
-      } else if (t == tableStampS_) {
+      } else if (t == tTable) {
         // A dropped frame still uses its sequence number, as on a lossy link.
         const auto frame = writer_.numbered(toCounter(tableStampS_, c_.samplingBoard), tablePayload_);
         if (!tableDropped_) emit(frame, out);
@@ -194,6 +202,16 @@ class Simulator::Impl {
     for (const auto& e : effects_) e->onImuStamp(imuStampS_, imuDropped_);
   }
 
+  // A stream is over at a stamp past the end (or not finite: an effect's
+  // NaN), or at an index whose nominal instant is past the end by more than
+  // the slack any real stamp error (ppm of clock drift, ms of jitter) moves
+  // a frame: that bound is what Simulator::frameBound() counts.
+  bool tableOver() const {
+    return !(tableStampS_ <= table_.endS()) ||
+           static_cast<double>(tableIndex_) * c_.encoder.samplePeriodS > table_.endS() + slackS_;
+  }
+  bool imuOver() const { return !(imuStampS_ <= table_.endS()) || imuSampleTime(imuIndex_) > table_.endS() + slackS_; }
+
   double nextStatusTimeS() const {
     const double periodic = static_cast<double>(statusIndex_) * c_.samplingBoard.statusPeriodS;
     const double event = nextEvent_ < statusEvents_.size() ? statusEvents_[nextEvent_] : kNever;
@@ -230,6 +248,7 @@ class Simulator::Impl {
 
   const SimConfig& c_;
   const Turntable& table_;
+  const double slackS_;  // Simulator::streamSlackS()
   std::vector<std::unique_ptr<Effect>>& effects_;
   Attitude attitude_;
   AxisRotations rotations_;
@@ -263,15 +282,36 @@ Simulator::Simulator(const SimConfig& config, const TestPlan& plan)
 
 Simulator::~Simulator() = default;
 
-Result<std::unique_ptr<Simulator>> Simulator::create(const SimConfig& config, const TestPlan& plan) {
+Result<std::unique_ptr<Simulator>> Simulator::create(const SimConfig& config, const TestPlan& plan, double maxFrames) {
   if (Status s = config.validate(); !s.isOk()) return invalidArgument("simulator configuration: " + s.message());
   FOG_RETURN_IF_ERROR(plan.validate(config.turntable.limits));
-  return std::make_unique<Simulator>(config, plan);
+  auto sim = std::make_unique<Simulator>(config, plan);
+  const double frames = sim->frameBound();
+  if (!(frames <= maxFrames))
+    return outOfRange("the simulated stream would hold up to " + std::to_string(frames) + " frames (" +
+                      std::to_string(sim->endS()) + " s at a table period of " +
+                      std::to_string(config.encoder.samplePeriodS * 1e3) + " ms, an IMU period of " +
+                      std::to_string(config.imuBoard.framePeriodS * 1e3) + " ms), over the budget of " +
+                      std::to_string(maxFrames) + " frames");
+  return sim;
+}
+
+Simulator::FrameCounts Simulator::frameCounts() const {
+  // Indices 0..floor(limit / period) of the table and IMU streams, the
+  // periodic status frames and three status events per point.
+  const double limit = endS() + streamSlackS();
+  const double imuPeriod = config_.imuBoard.framePeriodS * (1.0 + config_.imuBoard.clockErrorPpm * 1e-6);
+  FrameCounts n;
+  n.table = std::floor(limit / config_.encoder.samplePeriodS) + 1.0;
+  n.imu = std::floor(std::max(0.0, limit - config_.imuBoard.firstSampleS) / imuPeriod) + 1.0;
+  n.status = std::floor(endS() / config_.samplingBoard.statusPeriodS) + 1.0 +
+             3.0 * static_cast<double>(turntable_.schedule().size());
+  return n;
 }
 
 void Simulator::addEffect(std::unique_ptr<Effect> effect) { effects_.push_back(std::move(effect)); }
 
-void Simulator::start() { impl_ = std::make_unique<Impl>(config_, turntable_, effects_); }
+void Simulator::start() { impl_ = std::make_unique<Impl>(config_, turntable_, streamSlackS(), effects_); }
 
 bool Simulator::advance(double untilS, std::vector<std::uint8_t>& out) { return advanceInto(untilS, out); }
 

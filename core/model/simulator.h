@@ -34,20 +34,45 @@ struct TestPointTruth {
   double gyroTrendDegPerS = 0.0;  // bias + Earth-rate projection on the swing axis
 };
 
+// Frames a simulator may emit unless its caller states a smaller budget:
+// a day at 11 kHz of frames, far beyond any real chain (1.5 kHz). A
+// configuration needing more (a sample period of 1e-300 s) is refused by
+// create() instead of running for ever.
+inline constexpr double kMaxSimulatedFrames = 1e9;
+
 class Simulator {
  public:
   // The configuration and plan must be valid (see create()).
   Simulator(const SimConfig& config, const TestPlan& plan);
   ~Simulator();
 
-  // Checks configuration and plan, then builds a simulator.
-  static Result<std::unique_ptr<Simulator>> create(const SimConfig& config, const TestPlan& plan);
+  // Checks configuration and plan, then builds a simulator. Refuses
+  // (kOutOfRange, saying how many frames) a run whose frameBound() exceeds
+  // maxFrames: a caller that holds the stream states its memory as frames.
+  static Result<std::unique_ptr<Simulator>> create(const SimConfig& config, const TestPlan& plan,
+                                                   double maxFrames = kMaxSimulatedFrames);
+
+  // Most frames the whole run can emit, whatever the effects do: every
+  // stream ends at a sample index fixed by the configuration (a table or IMU
+  // frame whose nominal instant is more than streamSlackS() past endS()
+  // ends its stream even if an effect stamped it earlier; a stamp past
+  // endS(), or not finite, ends it too). Each step of advance() emits or
+  // drops one of these frames, so advance() always returns. Counted in
+  // double: a period of 1e-300 s gives a huge count, not an overflow.
+  struct FrameCounts {
+    double table = 0.0, imu = 0.0, status = 0.0;
+    double total() const { return table + imu + status; }
+  };
+  FrameCounts frameCounts() const;
+  double frameBound() const { return frameCounts().total(); }
+  double streamSlackS() const { return 1.0 + 0.01 * endS(); }
 
   // Effects must be added before the first advance().
   void addEffect(std::unique_ptr<Effect> effect);
 
   // Appends every frame stamped before untilS (true seconds since the start)
-  // to out. Returns false once the whole plan has been emitted.
+  // to out. Returns false once the whole plan has been emitted. At most
+  // frameBound() frames over the whole run.
   bool advance(double untilS, std::vector<std::uint8_t>& out);
   // The same frames, not encoded (protocol::StreamDecoder::push takes them):
   // for a replay that would decode its own bytes at once. One simulator
