@@ -319,7 +319,7 @@ Status checkSamples(const TestPointData& data, double incrementScale) {
       if (!std::isfinite(a))
         return corruptData("table sample " + std::to_string(i + 1) + ": an angle is not finite; the recording is damaged");
   }
-  // A test point longer than this is not one swing (plans stop at 24 h): its
+  // A test point longer than this is not one swing (plans stop at 1 h): its
   // span would overflow the frequency estimate's bins.
   constexpr double kMaxSpanS = 1e6;
   for (const auto& [name, span] :

@@ -1515,10 +1515,11 @@ Result<int> threadsWithinMemory(const Recording& recording, int requested) {
   const double sampleBytes = sampleBytesOf(recording);
   const auto peak = [&](int threads) { return sampleBytes * (1.5 + 1.5 * threads); };
   int threads = std::max(1, requested);
-  while (threads > 1 && peak(threads) > kDiagnosisMemoryBudgetBytes) --threads;
-  if (peak(threads) > kDiagnosisMemoryBudgetBytes)
+  while (threads > 1 && peak(threads) > kDiagnosisSampleBudgetBytes) --threads;
+  if (peak(threads) > kDiagnosisSampleBudgetBytes)
     return outOfRange("the session holds " + megabytes(sampleBytes) + " of samples; its diagnosis would need about " +
-                      megabytes(peak(1)) + ", over the " + megabytes(kDiagnosisMemoryBudgetBytes) +
+                      megabytes(peak(1)) + " of samples, over the " + megabytes(kDiagnosisSampleBudgetBytes) + " they may take of the " +
+                      megabytes(kDiagnosisMemoryBudgetBytes) +
                       " limit; diagnose a session of fewer or shorter test points (up to an hour at 1 kHz / 500 Hz "
                       "fits)");
   return threads;
@@ -1543,14 +1544,15 @@ Status budgetReplays(const Recording& input, Replay& replay, DiagnosisOptions& o
   const double perReplay = 1.5 * (frames.table * static_cast<double>(sizeof(TableSample)) +
                                   frames.imu * static_cast<double>(sizeof(ImuSample)));
   int threads = std::max(1, options.threads);
-  while (threads > 1 && sessionPeak + threads * perReplay > kDiagnosisMemoryBudgetBytes) --threads;
-  if (sessionPeak + threads * perReplay > kDiagnosisMemoryBudgetBytes)
+  while (threads > 1 && sessionPeak + threads * perReplay > kDiagnosisSampleBudgetBytes) --threads;
+  if (sessionPeak + threads * perReplay > kDiagnosisSampleBudgetBytes)
     return outOfRange("the replay of this session would hold up to " +
                       std::to_string(static_cast<long long>(frames.total())) + " frames (" + megabytes(perReplay) +
                       ": " + fmt("%.0f", (*sim)->endS()) + " s at a table period of " +
                       fmt("%.4g", replay.cal.config.encoder.samplePeriodS * 1e3) + " ms and an IMU period of " +
                       fmt("%.4g", replay.cal.config.imuBoard.framePeriodS * 1e3) +
-                      " ms, as calibrated from the stamps), over the " + megabytes(kDiagnosisMemoryBudgetBytes) +
+                      " ms, as calibrated from the stamps), over the " + megabytes(kDiagnosisSampleBudgetBytes) +
+                      " that samples may take of the " + megabytes(kDiagnosisMemoryBudgetBytes) +
                       " limit with the session's own " + megabytes(sessionPeak));
   if (threads < options.threads)
     notes.push_back("ran the replays on " + std::to_string(threads) + " of " + std::to_string(options.threads) +

@@ -198,10 +198,18 @@ struct Diagnosis {
   double elapsedS = 0.0;
 };
 
-// Peak memory a diagnosis may use. A session whose diagnosis would need more
-// even on one thread (about 3x its samples' size) is refused with kOutOfRange
-// before anything runs; one that fits on fewer threads than asked gets fewer.
+// Peak memory a diagnosis may use, counted as `ulimit -v` counts it (address
+// space, docs/reliability.md): 1 GB. Its samples (the session's, its
+// analysis copy, one replay per thread with the builder's growth) may take
+// kDiagnosisSampleBudgetBytes of it; the rest is the program's own (code and
+// libraries, thread stacks, malloc's per-thread arenas). Measured: an hour's
+// session at 1 kHz / 500 Hz (200 MB of samples) peaked at 907 MB resident on
+// 2 threads and did not fit in 1 GiB of address space; on 1 thread it does.
+// A session whose diagnosis would need more even on one thread is refused
+// with kOutOfRange before anything runs; one that fits on fewer threads than
+// asked gets fewer.
 inline constexpr double kDiagnosisMemoryBudgetBytes = 1e9;
+inline constexpr double kDiagnosisSampleBudgetBytes = 0.75e9;
 
 // info may be null (a raw stream): the plan is then rebuilt from the
 // recording alone. Fails when the analysis gives no delay for any test point.

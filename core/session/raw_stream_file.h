@@ -14,9 +14,9 @@
 namespace fog::session {
 
 // The largest raw stream file read: 160 MiB, some 70 min of the bench's
-// 39 kB/s stream. Reading, decoding and analysing a 148 MiB stream peaks at
-// 704 MB (analyze; diagnose 741 MB), within the 1 GB budget of
-// docs/reliability.md; a longer recording belongs in a session.
+// 39 kB/s stream (a plan is at most 1 h). Reading, decoding and analysing a
+// 148 MiB stream peaks at 704 MB (analyze; diagnose 741 MB), within the 1 GB
+// budget of docs/reliability.md.
 inline constexpr std::uint64_t kMaxRawStreamBytes = 160ull << 20;
 
 struct RawStreamFile {

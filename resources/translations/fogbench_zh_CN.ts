@@ -4801,6 +4801,71 @@ File: %1</source>
     </message>
     <message>
         <location line="+1"/>
+        <source>&apos;%1&apos; is a fogbench session whose first page (the SQLite header and the list of its tables, 4 KiB) is damaged; it is not analysed as a raw stream (the stream inside is cut into database pages). Restore it from a backup</source>
+        <translation>“%1”是首页（SQLite 文件头及其表目录，4 KiB）已损坏的 fogbench 会话；不会作为原始数据流分析（其中的数据流被切分在数据库页中）。请从备份恢复</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 is %2, not %3: only regular files are read (a pipe or a device may never end); copy the data into a file first</source>
+        <translation>%1 是%2，不是%3：只读取普通文件（管道或设备可能永无结束）；请先将数据复制到文件中</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 (a link to %2) is %3, not %4: only regular files are read (a pipe or a device may never end); copy the data into a file first</source>
+        <translation>%1（指向 %2 的链接）是%3，不是%4：只读取普通文件（管道或设备可能永无结束）；请先将数据复制到文件中</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a FIFO (named pipe)</source>
+        <translation>FIFO（命名管道）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a device</source>
+        <translation>设备</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a fogbench session file</source>
+        <translation>fogbench 会话文件</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a raw sampling-board stream</source>
+        <translation>采样板原始数据流</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a plan file</source>
+        <translation>计划文件</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 holds %2 bytes, more than the %3 that %4 may hold (docs/reliability.md): split the recording</source>
+        <translation>%1 有 %2 字节，超过%4允许的 %3（docs/reliability.md）：请拆分记录</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the fits gave no finite %1 (%2): the data hold values the sine model cannot fit; check the recording&apos;s units and values</source>
+        <translation>拟合未得到有限的%1（%2）：数据中有正弦模型无法拟合的数值；请检查记录的单位和数值</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the run reached its memory budget of %1 table and IMU samples after %2 s; everything recorded is kept</source>
+        <translation>运行在 %2 s 后达到其内存预算（%1 个转台和 IMU 样本）；已记录的全部数据均已保留</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no verdict: %1, not a finite number, so real and simulated data cannot be compared</source>
+        <translation>无结论：%1 不是有限数值，因此无法比较实测数据与仿真数据</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>undetermined</source>
+        <translation>无法判定</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Markov (correlated) rate</source>
         <translation>马尔可夫（相关）角速度</translation>
     </message>

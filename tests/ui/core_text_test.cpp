@@ -6,6 +6,7 @@
 #include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QtTest>
+#include <sys/stat.h>
 #include <atomic>
 #include <cerrno>
 #include <cstring>
@@ -35,12 +36,15 @@ using namespace fog;
 // Words a Chinese operator reads as they are: units, acronyms, names.
 const QStringList kKept = {"IMU", "ARW", "chi", "ppm", "rms", "dof", "Hz", "ms", "fogbench", "SQLite", "Allan",
                            "IEEE", "printf", "dd", "COPY", "fbs", "conv", "notrunc", "of", "format", "urad",
-                           "udeg", "us", "sigma", "CRLB", "sin", "cos", "ioctl"};
+                           "udeg", "us", "sigma", "CRLB", "sin", "cos", "ioctl", "KiB", "MiB", "FIFO"};
 
 // English left in a translated text: runs of three or more Latin letters that
-// are not kept words, identifiers (with _ . or -) or the given path.
+// are not kept words, identifiers (with _ . or -), the given path or a
+// device's path (/dev/...).
 QStringList englishIn(QString text, const QString& path = {}) {
   if (!path.isEmpty()) text.replace(path, "");
+  static const QRegularExpression device(R"(/dev/[A-Za-z0-9/]+)");
+  text.replace(device, " ");
   static const QRegularExpression identifier(R"([A-Za-z0-9]*[_.][A-Za-z0-9_.]*|--[a-z-]+)");
   text.replace(identifier, " ");
   static const QRegularExpression word(R"([A-Za-z]{3,})");
@@ -184,9 +188,14 @@ class CoreTextTest : public QObject {
     std::ifstream whole(base + "/whole.fbs", std::ios::binary);
     std::string bytes((std::istreambuf_iterator<char>(whole)), {});
     std::ofstream(base + "/cut.fbs", std::ios::binary) << bytes.substr(0, bytes.size() / 2);
-    for (const char* name : {"empty.fbs", "text.fbs", "cut.fbs", "missing.fbs", ""}) {
+    std::ofstream(base + "/page.fbs", std::ios::binary) << std::string(4096, '\0') << bytes.substr(4096);
+    QCOMPARE(::mkfifo((base + "/pipe.fbs").c_str(), 0600), 0);
+    QVERIFY(QFile::link("/dev/zero", dir.path() + "/zero.fbs"));
+    for (const char* name : {"empty.fbs", "text.fbs", "cut.fbs", "page.fbs", "pipe.fbs", "zero.fbs", "missing.fbs", ""}) {
       auto r = session::SessionReader::open(base + "/" + name);
       QVERIFY2(!r.isOk(), name);
+      if (std::string(name) == "page.fbs")
+        QVERIFY2(r.status().message().find("first page") != std::string::npos, r.status().message().c_str());
       expectChinese(r.status().message(), dir.path());
     }
   }
