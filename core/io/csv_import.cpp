@@ -284,7 +284,8 @@ Status needsTestPointColumn(const CsvStream& s, std::size_t count) {
 bool hasAny(const CsvStream& s, int first) { return s.has(first) || s.has(first + 1) || s.has(first + 2); }
 
 template <typename ReadRow>
-Status parseRows(CsvStream& s, std::size_t pointCount, const std::string& noAxisColumn, const ReadRow& row) {
+Status parseRows(CsvStream& s, std::size_t pointCount, std::uint64_t& samplesSoFar, const std::string& noAxisColumn,
+                 const ReadRow& row) {
   FOG_RETURN_IF_ERROR(s.readHeader());
   if (!s.has(kTime)) return corruptData(s.path() + ": missing column \"time_s\" (seconds on the common clock)");
   const bool rates = s.has(kRate0) || s.has(kRate0 + 1) || s.has(kRate0 + 2);
@@ -298,6 +299,12 @@ Status parseRows(CsvStream& s, std::size_t pointCount, const std::string& noAxis
     FOG_ASSIGN_OR_RETURN(auto more, s.nextRow());
     if (!more) break;
     ++rows;
+    // The run's memory budget (test_plan.h) holds for imports too: a session
+    // every command could read again, refused before the rows are held.
+    if (++samplesSoFar > kMaxRunSamples)
+      return corruptData(s.path() + " line " + std::to_string(s.lineNo()) + ": the import holds more than " +
+                         std::to_string(kMaxRunSamples) + " table and gyro rows in all, the memory budget of a "
+                         "session (an hour at 1 kHz / 500 Hz, docs/reliability.md); split it into several imports");
     std::size_t tp = 0;
     FOG_RETURN_IF_ERROR(testPointOf(s, pointCount, tp));
     double timeS = 0.0;
@@ -308,8 +315,8 @@ Status parseRows(CsvStream& s, std::size_t pointCount, const std::string& noAxis
   return Status::ok();
 }
 
-Status parseTable(CsvStream& s, std::vector<TestPointData>& points) {
-  return parseRows(s, points.size(), "no angle column; give at least the swing axis' one (x_deg, y_deg or z_deg)",
+Status parseTable(CsvStream& s, std::vector<TestPointData>& points, std::uint64_t& samplesSoFar) {
+  return parseRows(s, points.size(), samplesSoFar, "no angle column; give at least the swing axis' one (x_deg, y_deg or z_deg)",
                    [&](std::size_t tp, double timeS) {
                      TableSample sample;
                      sample.timeS = timeS;
@@ -323,9 +330,9 @@ Status parseTable(CsvStream& s, std::vector<TestPointData>& points) {
 
 // Rows of a rate file hold the rates (deg/s) in incrementDeg until
 // convertRates() turns them into increments.
-Status parseGyro(CsvStream& s, std::vector<TestPointData>& points) {
+Status parseGyro(CsvStream& s, std::vector<TestPointData>& points, std::uint64_t& samplesSoFar) {
   return parseRows(
-      s, points.size(),
+      s, points.size(), samplesSoFar,
       "no increment column; give at least the swing axis' one (x_inc_deg, y_inc_deg or z_inc_deg), or rates "
       "(x_rate_deg_s ...) with their convention in the metadata",
       [&](std::size_t tp, double timeS) {
@@ -468,9 +475,10 @@ Result<ImportedSession> importTexts(const std::string& what, const std::string& 
   }
 
   CsvStream table(tablePath, tableText, kTableColumns.data(), kTableColumns.size());
-  FOG_RETURN_IF_ERROR(parseTable(table, points));
+  std::uint64_t samples = 0;
+  FOG_RETURN_IF_ERROR(parseTable(table, points, samples));
   CsvStream gyro(gyroPath, gyroText, kGyroColumns.data(), kGyroColumns.size());
-  FOG_RETURN_IF_ERROR(parseGyro(gyro, points));
+  FOG_RETURN_IF_ERROR(parseGyro(gyro, points, samples));
 
   ImportedSession out;
   // The swing axis must be there; the others are read as 0 (another bench may

@@ -396,6 +396,23 @@ TEST(CsvImportErrors, BenchConstantsBeyondTheirPhysicalRangeAreRefused) {
       << point.status().message();
 }
 
+// An import holds what a run may hold (test_plan.h, kMaxRunSamples): rows
+// beyond it are refused while they are read, not after they are all held.
+TEST(CsvImportErrors, RowsBeyondTheMemoryBudgetAreRefusedWhileRead) {
+  std::string table = "time_s,x_deg\n";
+  table.reserve(16 * kMaxRunSamples);
+  char row[32];
+  for (std::uint64_t i = 1; i <= kMaxRunSamples; ++i) {
+    const int n = std::snprintf(row, sizeof row, "%llu,0\n", static_cast<unsigned long long>(i));
+    table.append(row, static_cast<std::size_t>(n));
+  }
+  auto s = importCsvTexts(kMetadata, table, "time_s,x_inc_deg\n1,0.001\n2,0.001\n");
+  ASSERT_FALSE(s.isOk());
+  EXPECT_NE(s.status().message().find("gyro.csv line 2: the import holds more than 6000000 table and gyro rows"),
+            std::string::npos)
+      << s.status().message();
+}
+
 TEST(CsvImport, TheSourceNeverNests) {
   const std::string meta = R"json({"source": "import run1 (recorded by: bench B, 2026)",
     "bench": {"table_read_delay_ms": 0.05, "board_delay_ms": 0.28, "pulse_equivalent_deg": 5e-5},
