@@ -2,7 +2,8 @@
 # the largest plan allowed (1 h in all) runs to the end with --out in 1 GB of
 # address space (`ulimit -v`), and what would not fit is refused before
 # anything is simulated, with one line and exit 2 (a 23.9-h plan used to
-# abort with std::bad_alloc at 1.9 GB).
+# abort with std::bad_alloc at 1.9 GB); its session analyses and diagnoses
+# within the same limit.
 #   -DCLI=path -DDIR=scratch folder
 set(dir ${DIR}/run_memory_budget_test)
 file(REMOVE_RECURSE ${dir})
@@ -10,7 +11,7 @@ file(MAKE_DIRECTORY ${dir})
 
 function(run_limited out_code out_stdout out_stderr)
   execute_process(COMMAND sh -c "ulimit -v 1048576; exec \"$0\" \"$@\"" ${CLI} ${ARGN}
-                  RESULT_VARIABLE c OUTPUT_VARIABLE o ERROR_VARIABLE e TIMEOUT 120)
+                  RESULT_VARIABLE c OUTPUT_VARIABLE o ERROR_VARIABLE e TIMEOUT 300)
   set(${out_code} "${c}" PARENT_SCOPE)
   set(${out_stdout} "${o}" PARENT_SCOPE)
   set(${out_stderr} "${e}" PARENT_SCOPE)
@@ -24,6 +25,12 @@ endif()
 run_limited(c o e analyze ${dir}/hour.fbs --no-store)
 if(NOT c EQUAL 0 OR NOT o MATCHES "measured lag")
   message(FATAL_ERROR "the session of the largest allowed plan did not analyse in 1 GB (exit ${c}):\n${e}\n${o}")
+endif()
+# Its diagnosis (on 2 threads it aborted with bad_alloc under this limit):
+# the replays run on as many threads as the budget allows, and say so.
+run_limited(c o e diagnose ${dir}/hour.fbs --seeds 2)
+if(NOT c EQUAL 0 OR NOT o MATCHES "Verdict: " OR NOT o MATCHES "ran on 1 of the 2 threads asked for")
+  message(FATAL_ERROR "the session of the largest allowed plan did not diagnose in 1 GB (exit ${c}):\n${e}\n${o}")
 endif()
 
 # One second more: refused before anything is simulated, in one line.
