@@ -77,9 +77,13 @@ struct EarthParams {
 };
 
 struct ImuBoardParams {
-  double framePeriodS = 2e-3;  // nominal; the IMU's crystal makes it framePeriodS * (1 + clockErrorPpm)
+  double framePeriodS = 2e-3;  // nominal; the IMU's crystal makes it framePeriodS / (1 + clockErrorPpm)
   double firstSampleS = 0.3e-3;  // IMU clock phase against the sampling board
+  // The IMU crystal's frequency error: > 0 runs fast (shorter frames), the
+  // sign of a frequency offset and of the reference generator
+  // (tests/independent/refgen.py, imu_clock_ppm).
   double clockErrorPpm = 0.0;
+  double actualFramePeriodS() const { return framePeriodS / (1.0 + clockErrorPpm * 1e-6); }
   // Processing (pulse sampling, temperature compensation) and the serial
   // frame. The paper measured 0.28 ms on the board and budgets the 31-byte
   // frame at 1 Mbaud as ~0.25 ms (8 bits per byte); the rest is processing.

@@ -135,8 +135,7 @@ class Simulator::Impl {
   }
 
   double imuSampleTime(std::int64_t k) const {
-    return c_.imuBoard.firstSampleS +
-           static_cast<double>(k) * c_.imuBoard.framePeriodS * (1.0 + c_.imuBoard.clockErrorPpm * 1e-6);
+    return c_.imuBoard.firstSampleS + static_cast<double>(k) * c_.imuBoard.actualFramePeriodS();
   }
   // The instant whose motion the pulse register holds when sample k is taken.
   double imuSenseTime(std::int64_t k) const {
@@ -300,7 +299,7 @@ Simulator::FrameCounts Simulator::frameCounts() const {
   // Indices 0..floor(limit / period) of the table and IMU streams, the
   // periodic status frames and three status events per point.
   const double limit = endS() + streamSlackS();
-  const double imuPeriod = config_.imuBoard.framePeriodS * (1.0 + config_.imuBoard.clockErrorPpm * 1e-6);
+  const double imuPeriod = config_.imuBoard.actualFramePeriodS();
   FrameCounts n;
   n.table = std::floor(limit / config_.encoder.samplePeriodS) + 1.0;
   n.imu = std::floor(std::max(0.0, limit - config_.imuBoard.firstSampleS) / imuPeriod) + 1.0;

@@ -18,6 +18,10 @@ sees, fitted here in numpy the same way for both recordings:
   table_h2_*, table_h3_*
               the table angle's 2nd and 3rd harmonics, in phase and in
               quadrature with its fundamental, ppm of its amplitude
+  interval_*  the mean interval between table readings and between gyro
+              frames (their stamps), ppm off the nominal 1 ms and 2 ms: the
+              sign of a clock error (an IMU crystal > 0 runs fast, shorter
+              frames) must be one in both simulators
 
 The effects of the diagnosis' library that act on the motion, the rate or
 the encoder are cases too, each in both simulators at a size the figures
@@ -116,7 +120,7 @@ CASES = {
 # angle as a quadratic between its 2-ms samples (0.055 us of 5443 us for a
 # 5-ms lag at 2 Hz).
 TOL = {"delay_us": 0.05, "delay_rel": 2e-5, "gain_ppm": 1.0, "cross_ppm": 1.0, "h2_ppm": 1.0, "trend_deg_h": 0.01,
-       "ramp_deg_h_per_min": 0.01}
+       "ramp_deg_h_per_min": 0.01, "interval_ppm": 0.5}
 
 
 def reference_params(c):
@@ -186,6 +190,11 @@ def coefficients(directory, c):
         rel = z / (table / abs(table)) ** h / abs(table) * 1e6
         out["table_h%d_in_phase_ppm" % h] = rel.real
         out["table_h%d_quadrature_ppm" % h] = rel.imag
+    # Clocks: the mean stamp interval of each stream against its nominal
+    # period (the sampling board stamps both on its one counter).
+    for name, times, nominal in (("table", tt, 1e-3), ("imu", gyr["time_s"], 2e-3)):
+        mean = (times[-1] - times[0]) / (len(times) - 1)
+        out["interval_%s_ppm" % name] = (mean / nominal - 1.0) * 1e6
     # Gyros: cumulative angle at the stamps; fundamental, 2nd harmonic,
     # offset, trend and ramp. The first frame's increment belongs before its stamp.
     gt = gyr["time_s"]
@@ -223,6 +232,8 @@ def tolerance(key, value):
         return TOL["h2_ppm"]
     if key.startswith("ramp"):
         return TOL["ramp_deg_h_per_min"]
+    if key.startswith("interval"):
+        return TOL["interval_ppm"]
     return TOL["trend_deg_h"]
 
 
