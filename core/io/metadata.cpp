@@ -216,47 +216,10 @@ class MetadataShape : public nlohmann::json_sax<Json> {
   std::string pendingKey_;
 };
 
-Result<Metadata> metadataFromJson(const std::string& path, const std::string& text) {
-  Json j;
-  MetadataShape shape;
-  bool shapeOk = false;
-  try {
-    shapeOk = Json::sax_parse(text, &shape);
-    if (shapeOk) j = Json::parse(text);
-  } catch (const nlohmann::json::exception& e) {  // parse_error, and out_of_range for a number beyond a double
-    return corruptData(path + ": not valid JSON (" + e.what() + "); metadata must be one JSON object (docs/formats.md)");
-  }
-  if (!shape.problem.empty()) return corruptData(path + ": " + shape.problem);
-  if (!shapeOk)
-    return corruptData(path + ": not valid JSON (" + shape.parseError +
-                       "); metadata must be one JSON object (docs/formats.md)");
-  if (!j.is_object()) return corruptData(path + ": must hold one JSON object {...} (docs/formats.md)");
+namespace {
 
-  Metadata meta;
-  SessionInfo& s = meta.info;
-  const Reader top(path, j, "");
-  FOG_RETURN_IF_ERROR(top.checkKeys({"format", "format_version", "operator", "imu_model", "imu_serial", "source",
-                                     "software_version", "created_utc", "notes", "bench", "rest_between_s",
-                                     "test_points", "stream"}));
-  std::string format;
-  FOG_RETURN_IF_ERROR(top.string("format", format));
-  if (top.has("format") && format != kFormatName)
-    return corruptData(path + ": \"format\" is \"" + format + "\", expected \"" + kFormatName + "\"");
-  if (top.has("format_version")) {
-    const Json& v = j.at("format_version");
-    if (!v.is_number_integer() || v.get<std::int64_t>() < 1 || v.get<std::int64_t>() > kFormatVersion)
-      return corruptData(path + ": \"format_version\" " + v.dump() + " is not supported; this fogbench reads version " +
-                         std::to_string(kFormatVersion));
-  }
-  FOG_RETURN_IF_ERROR(top.string("operator", s.operatorName));
-  FOG_RETURN_IF_ERROR(top.string("imu_model", s.imuModel));
-  FOG_RETURN_IF_ERROR(top.string("imu_serial", s.imuSerial));
-  FOG_RETURN_IF_ERROR(top.string("source", s.source));
-  FOG_RETURN_IF_ERROR(top.string("software_version", s.softwareVersion));
-  FOG_RETURN_IF_ERROR(top.string("created_utc", s.createdUtc));
-  FOG_RETURN_IF_ERROR(top.string("notes", s.notes));
-  FOG_RETURN_IF_ERROR(top.number("rest_between_s", s.plan.restBetweenS, false, 0.0, kMaxPlanDurationS));
-
+// The "bench" object: the bench constants, the rate convention and the gyro signs.
+Status readBench(const std::string& path, const Json& j, Metadata& meta) {
   // The delays and the pulse equivalent belong to the bench that recorded
   // the data: defaulting them to this bench's values would give a wrong
   // breakdown without a word, so they are required.
@@ -264,7 +227,7 @@ Result<Metadata> metadataFromJson(const std::string& path, const std::string& te
     return corruptData(path + ": missing \"bench\" object with table_read_delay_ms, board_delay_ms and "
                               "pulse_equivalent_deg (docs/formats.md)");
   const Reader bench(path, j.at("bench"), "bench");
-  BenchSettings& b = s.bench;
+  BenchSettings& b = meta.info.bench;
   FOG_RETURN_IF_ERROR(bench.checkKeys({"table_read_delay_ms", "table_read_delay_std_ms", "board_delay_ms",
                                        "board_delay_std_ms", "latitude_deg", "pulse_equivalent_deg", "counter_hz",
                                        "counter_bits", "gyro_rate_convention", "gyro_frame_period_ms",
@@ -321,6 +284,11 @@ Result<Metadata> metadataFromJson(const std::string& path, const std::string& te
     }
   }
 
+  return Status::ok();
+}
+
+// The "test_points" array: one entry per test point, as a plan's point.
+Status readTestPoints(const std::string& path, const Json& j, Metadata& meta) {
   if (!j.contains("test_points") || !j.at("test_points").is_array() || j.at("test_points").empty())
     return corruptData(path + ": missing \"test_points\": a non-empty array with one {\"axis\": \"x\", ...} per "
                               "test point (docs/formats.md)");
@@ -355,6 +323,11 @@ Result<Metadata> metadataFromJson(const std::string& path, const std::string& te
     meta.testPoints.push_back(p);
   }
 
+  return Status::ok();
+}
+
+// The optional "stream" object: the decoder health of the original stream.
+Status readStream(const std::string& path, const Json& j, Metadata& meta) {
   if (j.contains("stream")) {
     if (!j.at("stream").is_object()) return corruptData(path + ": \"stream\" must be an object");
     const Reader r(path, j.at("stream"), "stream");
@@ -373,6 +346,55 @@ Result<Metadata> metadataFromJson(const std::string& path, const std::string& te
     FOG_RETURN_IF_ERROR(r.integer("counter_wraps", h.counterWraps));
     meta.hasStream = true;
   }
+  return Status::ok();
+}
+
+}  // namespace
+
+Result<Metadata> metadataFromJson(const std::string& path, const std::string& text) {
+  Json j;
+  MetadataShape shape;
+  bool shapeOk = false;
+  try {
+    shapeOk = Json::sax_parse(text, &shape);
+    if (shapeOk) j = Json::parse(text);
+  } catch (const nlohmann::json::exception& e) {  // parse_error, and out_of_range for a number beyond a double
+    return corruptData(path + ": not valid JSON (" + e.what() + "); metadata must be one JSON object (docs/formats.md)");
+  }
+  if (!shape.problem.empty()) return corruptData(path + ": " + shape.problem);
+  if (!shapeOk)
+    return corruptData(path + ": not valid JSON (" + shape.parseError +
+                       "); metadata must be one JSON object (docs/formats.md)");
+  if (!j.is_object()) return corruptData(path + ": must hold one JSON object {...} (docs/formats.md)");
+
+  Metadata meta;
+  SessionInfo& s = meta.info;
+  const Reader top(path, j, "");
+  FOG_RETURN_IF_ERROR(top.checkKeys({"format", "format_version", "operator", "imu_model", "imu_serial", "source",
+                                     "software_version", "created_utc", "notes", "bench", "rest_between_s",
+                                     "test_points", "stream"}));
+  std::string format;
+  FOG_RETURN_IF_ERROR(top.string("format", format));
+  if (top.has("format") && format != kFormatName)
+    return corruptData(path + ": \"format\" is \"" + format + "\", expected \"" + kFormatName + "\"");
+  if (top.has("format_version")) {
+    const Json& v = j.at("format_version");
+    if (!v.is_number_integer() || v.get<std::int64_t>() < 1 || v.get<std::int64_t>() > kFormatVersion)
+      return corruptData(path + ": \"format_version\" " + v.dump() + " is not supported; this fogbench reads version " +
+                         std::to_string(kFormatVersion));
+  }
+  FOG_RETURN_IF_ERROR(top.string("operator", s.operatorName));
+  FOG_RETURN_IF_ERROR(top.string("imu_model", s.imuModel));
+  FOG_RETURN_IF_ERROR(top.string("imu_serial", s.imuSerial));
+  FOG_RETURN_IF_ERROR(top.string("source", s.source));
+  FOG_RETURN_IF_ERROR(top.string("software_version", s.softwareVersion));
+  FOG_RETURN_IF_ERROR(top.string("created_utc", s.createdUtc));
+  FOG_RETURN_IF_ERROR(top.string("notes", s.notes));
+  FOG_RETURN_IF_ERROR(top.number("rest_between_s", s.plan.restBetweenS, false, 0.0, kMaxPlanDurationS));
+
+  FOG_RETURN_IF_ERROR(readBench(path, j, meta));
+  FOG_RETURN_IF_ERROR(readTestPoints(path, j, meta));
+  FOG_RETURN_IF_ERROR(readStream(path, j, meta));
   return meta;
 }
 
