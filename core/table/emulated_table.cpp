@@ -253,202 +253,228 @@ std::optional<std::string> TableServer::handleLine(const std::string& line, doub
   return execute(c, tableS);
 }
 
-std::optional<std::string> TableServer::execute(const scpi::Command& c, double t) {
-  using scpi::matches;
-  using scpi::keywordIs;
-  auto axisOf = [&]() { return c.keywords[1] == "X" ? Axis::kX : c.keywords[1] == "Y" ? Axis::kY : Axis::kZ; };
-  auto wantArgs = [&](std::size_t n) {
-    if (c.args.size() < n) {
-      pushError(scpi::kMissingParameter);
-      return false;
-    }
-    if (c.args.size() > n) {
-      pushError(scpi::kParameterNotAllowed);
-      return false;
-    }
-    return true;
-  };
-  auto nums = [&](std::vector<double>& out) {
-    for (const auto& a : c.args) {
-      auto v = scpi::number(a);
-      if (!v) {
-        pushError(scpi::kDataOutOfRange, v.status().message());
-        return false;
-      }
-      out.push_back(*v);
-    }
-    return true;
-  };
-  auto modeWord = [](AxisMode m) {
-    switch (m) {
-      case AxisMode::kRest: return "REST";
-      case AxisMode::kPositioning: return "POS";
-      case AxisMode::kSwinging: return "SWING";
-      case AxisMode::kStopping: return "STOP";
-      case AxisMode::kEmergencyStop: return "ESTOP";
-      default: return "REST";
-    }
-  };
-  const auto& L = table_.params().limits;
-  if (c.query) {
-    if (!c.args.empty()) {
-      pushError(scpi::kParameterNotAllowed);
-      return std::string();
-    }
-    if (matches(c, "*IDN")) return identity_;
-    if (matches(c, "*OPC")) return std::string("1");
-    if (matches(c, "SYSTem:ERRor[:NEXT]")) {
-      if (errors_.empty()) return scpi::formatError(0, "No error");
-      auto e = errors_.front();
-      errors_.pop_front();
-      return scpi::formatError(e.first, e.second);
-    }
-    if (matches(c, "SYSTem:HEARTbeat:TIMeout")) return scpi::formatNumber(heartbeatTimeoutS_);
-    if (matches(c, "SYSTem:STATus")) {
-      return std::string(interlockOpen_ ? "1" : "0") + "," + (estop_ ? "1" : "0") + "," + (heartbeatLost_ ? "1" : "0") +
-             ",NONE";
-    }
-    if (c.keywords.size() == 3 && keywordIs(c.keywords[0], "AXIS") && matches(c, "AXIS:#:" + c.keywords[2])) {
-      const Axis a = axisOf();
-      const auto& l = L.axes[static_cast<std::size_t>(a)];
-      if (matches(c, "AXIS:#:POSition")) return scpi::formatNumber(table_.angleDeg(a, t));
-      if (matches(c, "AXIS:#:RATE")) return scpi::formatNumber(table_.rateDegPerS(a, t));
-      if (matches(c, "AXIS:#:MODE")) return std::string(modeWord(table_.mode(a, t)));
-      if (matches(c, "AXIS:#:STATe"))
-        return std::string(modeWord(table_.mode(a, t))) + "," + scpi::formatNumber(table_.angleDeg(a, t)) + "," +
-               scpi::formatNumber(table_.rateDegPerS(a, t));
-      if (matches(c, "AXIS:#:LIMits"))
-        return scpi::formatNumber(l.maxAmplitudeDeg) + "," + scpi::formatNumber(l.maxFrequencyHz) + "," +
-               scpi::formatNumber(l.maxRateDegPerS) + "," + scpi::formatNumber(l.maxAccelDegPerS2) + "," +
-               scpi::formatNumber(L.maxPositionDeg);
-      if (matches(c, "AXIS:#:SWING")) {
-        const auto& s = swings_[static_cast<std::size_t>(a)];
-        if (!s) return std::string("0,0,0,0");
-        return scpi::formatNumber(s->frequencyHz) + "," + scpi::formatNumber(s->amplitudeDeg) + "," +
-               scpi::formatNumber(s->centreDeg) + "," + scpi::formatNumber(s->startPhaseDeg);
-      }
-    }
-    pushError(scpi::kUndefinedHeader, c.text);
-    return std::string();  // an empty line: the query has no answer (the error queue says why)
+namespace {
+
+Axis axisOf(const scpi::Command& c) {
+  return c.keywords[1] == "X" ? Axis::kX : c.keywords[1] == "Y" ? Axis::kY : Axis::kZ;
+}
+
+bool isAxisCommand(const scpi::Command& c) {
+  return c.keywords.size() == 3 && scpi::keywordIs(c.keywords[0], "AXIS") &&
+         scpi::matches(c, "AXIS:#:" + c.keywords[2]);
+}
+
+const char* modeWord(AxisMode m) {
+  switch (m) {
+    case AxisMode::kRest: return "REST";
+    case AxisMode::kPositioning: return "POS";
+    case AxisMode::kSwinging: return "SWING";
+    case AxisMode::kStopping: return "STOP";
+    case AxisMode::kEmergencyStop: return "ESTOP";
+    default: return "REST";
   }
-  // Commands.
+}
+
+// Why a swing cannot be configured on an axis with these limits, or "".
+std::string swingRefusal(const auto& L, const auto& l, double f, double amp, double centre, double phase) {
+  const double w = kTwoPi * f;
+  if (!(f > 0.0) || !(amp > 0.0)) return "frequency and amplitude must be > 0";
+  if (!(phase > -360.0 && phase < 360.0)) return "start phase must be within -360 .. 360 deg";
+  if (amp > l.maxAmplitudeDeg) return "amplitude beyond " + scpi::formatNumber(l.maxAmplitudeDeg) + " deg";
+  if (f > l.maxFrequencyHz) return "frequency beyond " + scpi::formatNumber(l.maxFrequencyHz) + " Hz";
+  if (w * amp > l.maxRateDegPerS) return "peak rate beyond " + scpi::formatNumber(l.maxRateDegPerS) + " deg/s";
+  if (w * w * amp > l.maxAccelDegPerS2)
+    return "peak acceleration beyond " + scpi::formatNumber(l.maxAccelDegPerS2) + " deg/s^2";
+  if (std::abs(centre) + amp > L.maxPositionDeg) return "swing leaves the position range";
+  return {};
+}
+
+}  // namespace
+
+bool TableServer::wantArgs(const scpi::Command& c, std::size_t n) {
+  if (c.args.size() < n) {
+    pushError(scpi::kMissingParameter);
+    return false;
+  }
+  if (c.args.size() > n) {
+    pushError(scpi::kParameterNotAllowed);
+    return false;
+  }
+  return true;
+}
+
+bool TableServer::numbers(const scpi::Command& c, std::vector<double>& out) {
+  for (const auto& a : c.args) {
+    auto v = scpi::number(a);
+    if (!v) {
+      pushError(scpi::kDataOutOfRange, v.status().message());
+      return false;
+    }
+    out.push_back(*v);
+  }
+  return true;
+}
+
+std::optional<std::string> TableServer::execute(const scpi::Command& c, double t) {
+  if (c.query) return query(c, t);
+  if (systemCommand(c, t)) return std::nullopt;
+  if (isAxisCommand(c) && axisCommand(c, t)) return std::nullopt;
+  pushError(scpi::kUndefinedHeader, c.text);
+  return std::nullopt;
+}
+
+std::string TableServer::query(const scpi::Command& c, double t) {
+  using scpi::matches;
+  if (!c.args.empty()) {
+    pushError(scpi::kParameterNotAllowed);
+    return std::string();
+  }
+  if (matches(c, "*IDN")) return identity_;
+  if (matches(c, "*OPC")) return std::string("1");
+  if (matches(c, "SYSTem:ERRor[:NEXT]")) {
+    if (errors_.empty()) return scpi::formatError(0, "No error");
+    auto e = errors_.front();
+    errors_.pop_front();
+    return scpi::formatError(e.first, e.second);
+  }
+  if (matches(c, "SYSTem:HEARTbeat:TIMeout")) return scpi::formatNumber(heartbeatTimeoutS_);
+  if (matches(c, "SYSTem:STATus")) {
+    return std::string(interlockOpen_ ? "1" : "0") + "," + (estop_ ? "1" : "0") + "," + (heartbeatLost_ ? "1" : "0") +
+           ",NONE";
+  }
+  if (isAxisCommand(c)) {
+    const auto& L = table_.params().limits;
+    const Axis a = axisOf(c);
+    const auto& l = L.axes[static_cast<std::size_t>(a)];
+    if (matches(c, "AXIS:#:POSition")) return scpi::formatNumber(table_.angleDeg(a, t));
+    if (matches(c, "AXIS:#:RATE")) return scpi::formatNumber(table_.rateDegPerS(a, t));
+    if (matches(c, "AXIS:#:MODE")) return std::string(modeWord(table_.mode(a, t)));
+    if (matches(c, "AXIS:#:STATe"))
+      return std::string(modeWord(table_.mode(a, t))) + "," + scpi::formatNumber(table_.angleDeg(a, t)) + "," +
+             scpi::formatNumber(table_.rateDegPerS(a, t));
+    if (matches(c, "AXIS:#:LIMits"))
+      return scpi::formatNumber(l.maxAmplitudeDeg) + "," + scpi::formatNumber(l.maxFrequencyHz) + "," +
+             scpi::formatNumber(l.maxRateDegPerS) + "," + scpi::formatNumber(l.maxAccelDegPerS2) + "," +
+             scpi::formatNumber(L.maxPositionDeg);
+    if (matches(c, "AXIS:#:SWING")) {
+      const auto& s = swings_[static_cast<std::size_t>(a)];
+      if (!s) return std::string("0,0,0,0");
+      return scpi::formatNumber(s->frequencyHz) + "," + scpi::formatNumber(s->amplitudeDeg) + "," +
+             scpi::formatNumber(s->centreDeg) + "," + scpi::formatNumber(s->startPhaseDeg);
+    }
+  }
+  pushError(scpi::kUndefinedHeader, c.text);
+  return std::string();  // an empty line: the query has no answer (the error queue says why)
+}
+
+bool TableServer::systemCommand(const scpi::Command& c, double t) {
+  using scpi::matches;
   if (matches(c, "*RST")) {
-    if (!wantArgs(0)) return std::nullopt;
+    if (!wantArgs(c, 0)) return true;
     stopAll(t, table_.params().stopAccelDegPerS2);
     swings_ = {};
     heartbeatTimeoutS_ = 0.0;
-    return std::nullopt;
+    return true;
   }
   if (matches(c, "*CLS")) {
-    if (!wantArgs(0)) return std::nullopt;
+    if (!wantArgs(c, 0)) return true;
     errors_.clear();
     heartbeatLost_ = false;
-    return std::nullopt;
+    return true;
   }
   if (matches(c, "SYSTem:HEARTbeat")) {
-    wantArgs(0);
-    return std::nullopt;
+    wantArgs(c, 0);
+    return true;
   }
   if (matches(c, "SYSTem:HEARTbeat:TIMeout")) {
     std::vector<double> v;
-    if (!wantArgs(1) || !nums(v)) return std::nullopt;
+    if (!wantArgs(c, 1) || !numbers(c, v)) return true;
     if (v[0] < 0.0 || v[0] > 3600.0) {
       pushError(scpi::kDataOutOfRange, "heartbeat timeout must be 0 .. 3600 s");
-      return std::nullopt;
+      return true;
     }
     heartbeatTimeoutS_ = v[0];
-    return std::nullopt;
+    return true;
   }
   if (matches(c, "STOP")) {
-    if (!wantArgs(0)) return std::nullopt;
-    stopAll(t, table_.params().stopAccelDegPerS2);
-    return std::nullopt;
+    if (wantArgs(c, 0)) stopAll(t, table_.params().stopAccelDegPerS2);
+    return true;
   }
   if (matches(c, "SYSTem:ESTOP")) {
-    if (!wantArgs(0)) return std::nullopt;
+    if (!wantArgs(c, 0)) return true;
     estop_ = true;
     stopAll(t, table_.params().emergencyAccelDegPerS2);
     for (int a = 0; a < kAxisCount; ++a) table_.markEmergency(static_cast<Axis>(a), true);
     event("estop: engaged at table time " + scpi::formatNumber(t) + " s");
-    return std::nullopt;
+    return true;
   }
   if (matches(c, "SYSTem:ESTOP:RESet")) {
-    if (!wantArgs(0)) return std::nullopt;
+    if (!wantArgs(c, 0)) return true;
     for (int a = 0; a < kAxisCount; ++a)
       if (std::abs(table_.rateDegPerS(static_cast<Axis>(a), t)) > 0.0) {
         pushError(scpi::kSettingsConflict, "the table is still moving");
-        return std::nullopt;
+        return true;
       }
     estop_ = false;
     for (int a = 0; a < kAxisCount; ++a) table_.markEmergency(static_cast<Axis>(a), false);
-    return std::nullopt;
+    return true;
   }
-  if (c.keywords.size() == 3 && keywordIs(c.keywords[0], "AXIS") && matches(c, "AXIS:#:" + c.keywords[2])) {
-    const Axis a = axisOf();
-    const auto& l = L.axes[static_cast<std::size_t>(a)];
-    if (matches(c, "AXIS:#:STOP")) {
-      if (wantArgs(0)) table_.stop(a, t, table_.params().stopAccelDegPerS2);
-      return std::nullopt;
-    }
-    if (matches(c, "AXIS:#:SWING")) {
-      std::vector<double> v;
-      // F,A,C or F,A,C,PHASE (the start phase, deg; 0 when left out).
-      if (!wantArgs(c.args.size() == 4 ? 4 : 3) || !nums(v)) return std::nullopt;
-      const double f = v[0], amp = v[1], centre = v[2], w = kTwoPi * f;
-      const double phase = v.size() == 4 ? v[3] : 0.0;
-      std::string why;
-      if (!(f > 0.0) || !(amp > 0.0)) why = "frequency and amplitude must be > 0";
-      else if (!(phase > -360.0 && phase < 360.0)) why = "start phase must be within -360 .. 360 deg";
-      else if (amp > l.maxAmplitudeDeg) why = "amplitude beyond " + scpi::formatNumber(l.maxAmplitudeDeg) + " deg";
-      else if (f > l.maxFrequencyHz) why = "frequency beyond " + scpi::formatNumber(l.maxFrequencyHz) + " Hz";
-      else if (w * amp > l.maxRateDegPerS) why = "peak rate beyond " + scpi::formatNumber(l.maxRateDegPerS) + " deg/s";
-      else if (w * w * amp > l.maxAccelDegPerS2)
-        why = "peak acceleration beyond " + scpi::formatNumber(l.maxAccelDegPerS2) + " deg/s^2";
-      else if (std::abs(centre) + amp > L.maxPositionDeg) why = "swing leaves the position range";
-      if (!why.empty()) {
-        pushError(scpi::kDataOutOfRange, why);
-        return std::nullopt;
-      }
-      swings_[static_cast<std::size_t>(a)] = SwingSpec{f, amp, centre, phase};
-      return std::nullopt;
-    }
-    if (matches(c, "AXIS:#:POSition")) {
-      std::vector<double> v;
-      if (!wantArgs(1) || !nums(v)) return std::nullopt;
-      if (auto b = blocked(); !b.empty()) {
-        pushError(estop_ ? scpi::kEmergencyStop : interlockOpen_ ? scpi::kInterlockOpen : scpi::kHeartbeatLost);
-        return std::nullopt;
-      }
-      if (auto s = table_.moveTo(a, v[0], t); !s.isOk())
-        pushError(s.code() == StatusCode::kOutOfRange ? scpi::kDataOutOfRange : scpi::kSettingsConflict, s.message());
-      return std::nullopt;
-    }
-    if (matches(c, "AXIS:#:START")) {
-      if (!wantArgs(0)) return std::nullopt;
-      if (auto b = blocked(); !b.empty()) {
-        pushError(estop_ ? scpi::kEmergencyStop : interlockOpen_ ? scpi::kInterlockOpen : scpi::kHeartbeatLost);
-        return std::nullopt;
-      }
-      const auto& s = swings_[static_cast<std::size_t>(a)];
-      if (!s) {
-        pushError(scpi::kSettingsConflict, "no swing configured (AXIS:" + c.keywords[1] + ":SWING)");
-        return std::nullopt;
-      }
-      if (auto st = table_.startSwing(a, *s, t); !st.isOk()) {
-        pushError(scpi::kSettingsConflict, st.message());
-        return std::nullopt;
-      }
-      if (firstSwingS_ < 0.0) firstSwingS_ = t;
-      ++swingsStarted_;
-      event("swing: " + std::string(axisLabel(a)) + " " + scpi::formatNumber(s->frequencyHz) + " Hz " +
-            scpi::formatNumber(s->amplitudeDeg) + " deg about " + scpi::formatNumber(s->centreDeg) + " deg" +
-            (s->startPhaseDeg != 0.0 ? " phase " + scpi::formatNumber(s->startPhaseDeg) + " deg" : std::string()) +
-            " started at table time " + scpi::formatNumber(t) + " s");
-      return std::nullopt;
-    }
+  return false;
+}
+
+bool TableServer::axisCommand(const scpi::Command& c, double t) {
+  using scpi::matches;
+  const auto& L = table_.params().limits;
+  const Axis a = axisOf(c);
+  const auto& l = L.axes[static_cast<std::size_t>(a)];
+  const auto refuseMotion = [&] {
+    if (blocked().empty()) return false;
+    pushError(estop_ ? scpi::kEmergencyStop : interlockOpen_ ? scpi::kInterlockOpen : scpi::kHeartbeatLost);
+    return true;
+  };
+  if (matches(c, "AXIS:#:STOP")) {
+    if (wantArgs(c, 0)) table_.stop(a, t, table_.params().stopAccelDegPerS2);
+    return true;
   }
-  pushError(scpi::kUndefinedHeader, c.text);
-  return std::nullopt;
+  if (matches(c, "AXIS:#:SWING")) {
+    std::vector<double> v;
+    // F,A,C or F,A,C,PHASE (the start phase, deg; 0 when left out).
+    if (!wantArgs(c, c.args.size() == 4 ? 4 : 3) || !numbers(c, v)) return true;
+    const double phase = v.size() == 4 ? v[3] : 0.0;
+    if (auto why = swingRefusal(L, l, v[0], v[1], v[2], phase); !why.empty()) {
+      pushError(scpi::kDataOutOfRange, why);
+      return true;
+    }
+    swings_[static_cast<std::size_t>(a)] = SwingSpec{v[0], v[1], v[2], phase};
+    return true;
+  }
+  if (matches(c, "AXIS:#:POSition")) {
+    std::vector<double> v;
+    if (!wantArgs(c, 1) || !numbers(c, v) || refuseMotion()) return true;
+    if (auto s = table_.moveTo(a, v[0], t); !s.isOk())
+      pushError(s.code() == StatusCode::kOutOfRange ? scpi::kDataOutOfRange : scpi::kSettingsConflict, s.message());
+    return true;
+  }
+  if (matches(c, "AXIS:#:START")) {
+    if (!wantArgs(c, 0) || refuseMotion()) return true;
+    const auto& s = swings_[static_cast<std::size_t>(a)];
+    if (!s) {
+      pushError(scpi::kSettingsConflict, "no swing configured (AXIS:" + c.keywords[1] + ":SWING)");
+      return true;
+    }
+    if (auto st = table_.startSwing(a, *s, t); !st.isOk()) {
+      pushError(scpi::kSettingsConflict, st.message());
+      return true;
+    }
+    if (firstSwingS_ < 0.0) firstSwingS_ = t;
+    ++swingsStarted_;
+    event("swing: " + std::string(axisLabel(a)) + " " + scpi::formatNumber(s->frequencyHz) + " Hz " +
+          scpi::formatNumber(s->amplitudeDeg) + " deg about " + scpi::formatNumber(s->centreDeg) + " deg" +
+          (s->startPhaseDeg != 0.0 ? " phase " + scpi::formatNumber(s->startPhaseDeg) + " deg" : std::string()) +
+          " started at table time " + scpi::formatNumber(t) + " s");
+    return true;
+  }
+  return false;
 }
 
 }  // namespace fog::table

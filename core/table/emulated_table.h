@@ -110,7 +110,16 @@ class TableServer {
 
  private:
   void pushError(int code, const std::string& text = {});
+  // One parsed line: a query's answer, or nothing for a command (errors go
+  // to the queue). Queries, the system commands and the axis commands are
+  // handled each by their own function; false: not one of theirs.
   std::optional<std::string> execute(const scpi::Command& c, double t);
+  std::string query(const scpi::Command& c, double t);
+  bool systemCommand(const scpi::Command& c, double t);
+  bool axisCommand(const scpi::Command& c, double t);
+  // The argument checks of every command: they queue the SCPI error.
+  bool wantArgs(const scpi::Command& c, std::size_t n);
+  bool numbers(const scpi::Command& c, std::vector<double>& out);
   std::string blocked() const;  // error text when motion is not allowed, else empty
   void stopAll(double t, double accel);
   void event(const std::string& e) {
