@@ -126,6 +126,56 @@ std::unique_ptr<model::Effect> makeOutsideEffect(OutsideEffect e, double m) {
   return nullptr;
 }
 
+namespace {
+
+// The scores of the trials run: top-1 / top-3 (all and at >= 3x the
+// threshold), false alarms, "unexplained" recall, pairs, the confusion
+// matrix, the median held-out shrink of right answers and time per trial.
+void scoreTrials(BlindCheckSummary& out) {
+  int top1 = 0, top3 = 0, top1x3 = 0, top3x3 = 0, none = 0, falseAlarms = 0, outside = 0, unexplained = 0, pairs = 0,
+      pairHits = 0;
+  std::vector<double> shrinks, seconds;
+  for (const auto& r : out.trials) {
+    seconds.push_back(r.elapsedS);
+    const std::string label = r.kind == TrialKind::kSingle ? r.truth[0]
+                              : r.kind == TrialKind::kNone  ? "none"
+                              : r.kind == TrialKind::kPair  ? "pair"
+                                                            : "outside: " + r.truth[0];
+    out.confusion[label][r.verdict]++;
+    if (r.kind == TrialKind::kSingle) {
+      ++out.singleTrials;
+      const bool hit1 = r.verdict == r.truth[0];
+      bool hit3 = false;
+      for (std::size_t i = 0; i < std::min<std::size_t>(3, r.ranked.size()); ++i) hit3 |= r.ranked[i] == r.truth[0];
+      hit3 = hit3 && r.verdict != "none";
+      top1 += hit1, top3 += hit3;
+      if (r.magnitude >= 3.0) ++out.singleAt3x, top1x3 += hit1, top3x3 += hit3;
+      if (hit1) shrinks.push_back(r.heldOutShrink);
+    } else if (r.kind == TrialKind::kNone) {
+      ++none;
+      falseAlarms += r.verdict != "none";
+    } else if (r.kind == TrialKind::kOutside) {
+      ++outside;
+      unexplained += r.verdict == "unexplained";
+    } else {
+      ++pairs;
+      pairHits += std::find(r.truth.begin(), r.truth.end(), r.verdict) != r.truth.end();
+    }
+  }
+  auto frac = [](int a, int b) { return b > 0 ? static_cast<double>(a) / b : 0.0; };
+  out.top1 = frac(top1, out.singleTrials);
+  out.top3 = frac(top3, out.singleTrials);
+  out.top1At3x = frac(top1x3, out.singleAt3x);
+  out.top3At3x = frac(top3x3, out.singleAt3x);
+  out.falseAlarm = frac(falseAlarms, none);
+  out.unexplainedRecall = frac(unexplained, outside);
+  out.pairAnyTop1 = frac(pairHits, pairs);
+  out.medianShrinkWhenRight = medianOf(shrinks);
+  out.medianSecondsPerTrial = medianOf(seconds);
+}
+
+}  // namespace
+
 Result<BlindCheckSummary> runBlindCheck(const BlindCheckOptions& options,
                                         const std::function<void(const TrialResult&)>& progress) {
   const auto wallStart = std::chrono::steady_clock::now();
@@ -235,46 +285,7 @@ Result<BlindCheckSummary> runBlindCheck(const BlindCheckOptions& options,
     }
   });
 
-  int top1 = 0, top3 = 0, top1x3 = 0, top3x3 = 0, none = 0, falseAlarms = 0, outside = 0, unexplained = 0, pairs = 0,
-      pairHits = 0;
-  std::vector<double> shrinks, seconds;
-  for (const auto& r : out.trials) {
-    seconds.push_back(r.elapsedS);
-    const std::string label = r.kind == TrialKind::kSingle ? r.truth[0]
-                              : r.kind == TrialKind::kNone  ? "none"
-                              : r.kind == TrialKind::kPair  ? "pair"
-                                                            : "outside: " + r.truth[0];
-    out.confusion[label][r.verdict]++;
-    if (r.kind == TrialKind::kSingle) {
-      ++out.singleTrials;
-      const bool hit1 = r.verdict == r.truth[0];
-      bool hit3 = false;
-      for (std::size_t i = 0; i < std::min<std::size_t>(3, r.ranked.size()); ++i) hit3 |= r.ranked[i] == r.truth[0];
-      hit3 = hit3 && r.verdict != "none";
-      top1 += hit1, top3 += hit3;
-      if (r.magnitude >= 3.0) ++out.singleAt3x, top1x3 += hit1, top3x3 += hit3;
-      if (hit1) shrinks.push_back(r.heldOutShrink);
-    } else if (r.kind == TrialKind::kNone) {
-      ++none;
-      falseAlarms += r.verdict != "none";
-    } else if (r.kind == TrialKind::kOutside) {
-      ++outside;
-      unexplained += r.verdict == "unexplained";
-    } else {
-      ++pairs;
-      pairHits += std::find(r.truth.begin(), r.truth.end(), r.verdict) != r.truth.end();
-    }
-  }
-  auto frac = [](int a, int b) { return b > 0 ? static_cast<double>(a) / b : 0.0; };
-  out.top1 = frac(top1, out.singleTrials);
-  out.top3 = frac(top3, out.singleTrials);
-  out.top1At3x = frac(top1x3, out.singleAt3x);
-  out.top3At3x = frac(top3x3, out.singleAt3x);
-  out.falseAlarm = frac(falseAlarms, none);
-  out.unexplainedRecall = frac(unexplained, outside);
-  out.pairAnyTop1 = frac(pairHits, pairs);
-  out.medianShrinkWhenRight = medianOf(shrinks);
-  out.medianSecondsPerTrial = medianOf(seconds);
+  scoreTrials(out);
   out.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
   return out;
 }
