@@ -217,6 +217,12 @@ int theoryCommand(CliArguments& args) {
   if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
   if (fibre <= 0 || stability < 0 || freq <= 0 || amp <= 0 || duration <= 0 || arw < 0)
     return fail(invalidArgument("lengths, frequency, amplitude and duration must be > 0"), 2);
+  // Physical ranges (a frequency of 1e300 Hz printed a budget of zeros).
+  if (fibre > 1e5 || stability > 3600 || freq > 1000 || amp > 3600 || duration > 86400 || arw > 100)
+    return fail(invalidArgument("theory takes a fibre up to 100 km, a frequency up to 1000 Hz, an amplitude up to "
+                                "3600 deg, a duration up to 24 h, a stability up to 3600 deg/h and an ARW up to 100 "
+                                "deg/sqrt(h)"),
+                2);
   in.fibreLengthM = fibre;
   test.frequencyHz = freq;
   test.amplitudeDeg = amp;

@@ -93,7 +93,11 @@ Result<std::array<int, kAxisCount>> parseGyroSigns(const std::string& text) {
 
 Result<double> readDelayLimit(CliArguments& args) {
   FOG_ASSIGN_OR_RETURN(auto limit, args.number("limit-ms", analysis::kDefaultImuDelayLimitMs));
-  if (!(limit > 0.0) || limit > 1e6) return invalidArgument("--limit-ms must be a number of milliseconds > 0");
+  // A microsecond to a second: an IMU delay limit outside is a unit error
+  // (a subnormal 1e-320 ms was accepted and failed every point).
+  if (!(limit >= 1e-3 && limit <= 1000.0))
+    return invalidArgument("--limit-ms must be within 0.001 .. 1000 milliseconds (the IMU delay limit), not " +
+                           *args.text("limit-ms"));
   return limit;
 }
 

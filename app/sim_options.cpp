@@ -52,7 +52,10 @@ Result<TestPlan> readPlan(CliArguments& args) {
 Result<model::SimConfig> readSimConfig(CliArguments& args) {
   model::SimConfig c;
   FOG_ASSIGN_OR_RETURN(auto seed, args.number("seed", 1.0));
-  if (seed < 0 || seed != std::floor(seed)) return invalidArgument("--seed must be a whole number >= 0");
+  // Whole numbers up to 2^53 are exact in a double; 1e300 was cast to a
+  // 64-bit integer (undefined) and ran as seed 0.
+  if (!(seed >= 0 && seed <= 9007199254740992.0) || seed != std::floor(seed))
+    return invalidArgument("--seed must be a whole number within 0 .. 2^53");
   c.seed = static_cast<std::uint64_t>(seed);
   struct Field {
     const char* name;
@@ -82,6 +85,8 @@ Result<model::SimConfig> readSimConfig(CliArguments& args) {
   for (const auto* r : {&gyroDelay, &bits, &start})
     if (!*r) return r->status();
   c.fog.setOwnDelayS(*gyroDelay * 1e-3);
+  if (!(*bits >= 16 && *bits <= 32) || *bits != std::floor(*bits))  // checked before the cast
+    return invalidArgument("--counter-bits must be a whole number within 16 .. 32");
   c.samplingBoard.counterBits = static_cast<int>(*bits);
   if (*start < 0 || *start > 4294967295.0) return invalidArgument("--counter-start must be within 0 .. 2^32-1");
   c.samplingBoard.counterStart = static_cast<std::uint32_t>(*start);

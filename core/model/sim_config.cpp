@@ -31,10 +31,14 @@ bool nonNegative(double v) { return std::isfinite(v) && v >= 0.0; }
 }  // namespace
 
 Status SimConfig::validate() const {
-  if (!positive(encoder.samplePeriodS)) return invalidArgument("encoder sample period must be > 0 s");
+  // Physical ranges: beyond them a value is a unit error, and near a
+  // double's range the simulated stream or the fits overflow (docs/simulator.md).
+  if (!(encoder.samplePeriodS >= 1e-5 && encoder.samplePeriodS <= 1.0))
+    return invalidArgument("encoder sample period must be within 0.01 .. 1000 ms");
   if (!nonNegative(encoder.readDelayS) || encoder.readDelayS >= encoder.samplePeriodS)
     return invalidArgument("encoder read delay must be in [0, sample period)");
-  if (!nonNegative(encoder.quantumDeg)) return invalidArgument("encoder quantum must be >= 0 deg");
+  if (!(encoder.quantumDeg >= 0.0 && encoder.quantumDeg <= 1.0))
+    return invalidArgument("encoder quantum must be within 0 .. 1 deg");
   if (!positive(fog.fibreLengthM) || !positive(fog.groupIndex))
     return invalidArgument("fibre length and group index must be > 0");
   if (!nonNegative(fog.loopDelayEigenPeriods)) return invalidArgument("loop delay must be >= 0");
@@ -42,12 +46,16 @@ Status SimConfig::validate() const {
   if (!nonNegative(fog.sampleAfterUpdateS) || fog.sampleAfterUpdateS >= fog.pulseUpdatePeriodS)
     return invalidArgument("time from pulse update to board sampling must be in [0, pulse update period); "
                        "the requested gyro delay is not reachable with this loop delay");
-  if (!positive(fog.pulseEquivalentDeg)) return invalidArgument("pulse equivalent must be > 0 deg");
+  if (!(fog.pulseEquivalentDeg >= 1e-9 && fog.pulseEquivalentDeg <= 1.0))
+    return invalidArgument("pulse equivalent must be within 1e-9 .. 1 deg");
   for (double b : fog.biasDegPerH)
     if (!std::isfinite(b) || std::abs(b) > 3600.0) return invalidArgument("gyro bias must be finite and under 3600 deg/h");
-  if (!nonNegative(fog.arwDegPerSqrtH)) return invalidArgument("angle random walk must be >= 0");
-  if (!nonNegative(fog.biasInstabilityDegPerH)) return invalidArgument("bias instability must be >= 0");
-  if (!positive(fog.biasCorrelationS)) return invalidArgument("bias correlation time must be > 0 s");
+  if (!(fog.arwDegPerSqrtH >= 0.0 && fog.arwDegPerSqrtH <= 100.0))
+    return invalidArgument("angle random walk must be within 0 .. 100 deg/sqrt(h)");
+  if (!(fog.biasInstabilityDegPerH >= 0.0 && fog.biasInstabilityDegPerH <= 3600.0))
+    return invalidArgument("bias instability must be within 0 .. 3600 deg/h");
+  if (!(fog.biasCorrelationS > 0.0 && fog.biasCorrelationS <= 1e6))
+    return invalidArgument("bias correlation time must be within 0 .. 1e6 s");
   if (!std::isfinite(earth.latitudeDeg) || std::abs(earth.latitudeDeg) > 90.0)
     return invalidArgument("latitude must be within [-90, 90] deg");
   if (!std::isfinite(earth.headingDeg) || std::abs(earth.headingDeg) > 360.0)
@@ -60,7 +68,8 @@ Status SimConfig::validate() const {
   for (double m : turntable.mountingDeg)
     if (!std::isfinite(m) || std::abs(m) > 360.0)
       return invalidArgument("IMU mounting angles must be within [-360, 360] deg");
-  if (!positive(imuBoard.framePeriodS)) return invalidArgument("IMU frame period must be > 0 s");
+  if (!(imuBoard.framePeriodS >= 1e-5 && imuBoard.framePeriodS <= 1.0))
+    return invalidArgument("IMU frame period must be within 0.01 .. 1000 ms");
   if (!nonNegative(imuBoard.firstSampleS)) return invalidArgument("IMU first sample time must be >= 0 s");
   if (!nonNegative(imuBoard.processingS) || !positive(imuBoard.baud) || imuBoard.frameBytes <= 0 ||
       !positive(imuBoard.bitsPerByte))
