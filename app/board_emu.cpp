@@ -193,19 +193,13 @@ Result<Options> readOptions(app::CliArguments& args) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<std::string> argList(argv + 1, argv + argc);
-  for (const auto& a : argList)
-    if (a == "--help" || a == "-h" || a == "help") {
-      std::fputs(kHelp, stdout);
-      return 0;
-    }
-  auto parsed = app::CliArguments::parse(argList, {});
-  if (!parsed) return failWith(parsed.status().message());
-  auto& args = *parsed;
+  auto started = app::startEmulator(argc, argv, kHelp);
+  if (!started) return failWith(started.status().message());
+  if (!*started) return 0;  // --help
+  auto& args = (*started)->args;
+  auto* config = &(*started)->config;
   auto plan = app::readPlan(args);
   if (!plan) return failWith(plan.status().message());
-  auto config = app::readSimConfig(args);
-  if (!config) return failWith(config.status().message());
   auto options = readOptions(args);
   if (!options) return failWith(options.status().message());
   if (auto s = args.checkAllUsed(); !s.isOk()) return failWith(s.message());

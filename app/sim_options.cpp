@@ -49,6 +49,18 @@ Result<TestPlan> readPlan(CliArguments& args) {
   return presetPlan(preset.value_or("paper"));
 }
 
+Result<std::optional<EmulatorStart>> startEmulator(int argc, char** argv, const char* help) {
+  std::vector<std::string> argList(argv + 1, argv + argc);
+  for (const auto& a : argList)
+    if (a == "--help" || a == "-h" || a == "help") {
+      std::fputs(help, stdout);
+      return std::optional<EmulatorStart>();
+    }
+  FOG_ASSIGN_OR_RETURN(auto args, CliArguments::parse(argList, {}));
+  FOG_ASSIGN_OR_RETURN(auto config, readSimConfig(args));
+  return std::optional<EmulatorStart>(EmulatorStart{std::move(args), std::move(config)});
+}
+
 Result<model::SimConfig> readSimConfig(CliArguments& args) {
   model::SimConfig c;
   FOG_ASSIGN_OR_RETURN(auto seed, args.number("seed", 1.0));

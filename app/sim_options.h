@@ -3,6 +3,8 @@
 // board emulator (fogbench-board-emu): one parser, so both programs accept
 // the same plan and chain options.
 
+#include <optional>
+
 #include "app/cli_arguments.h"
 #include "core/common/status.h"
 #include "core/common/test_plan.h"
@@ -20,5 +22,14 @@ bool planGiven(const CliArguments& args);
 // --seed and the chain options (--gyro-delay-ms, --arw-deg-sqrt-h, ...,
 // --counter-bits, --counter-start). Marks the options used.
 Result<model::SimConfig> readSimConfig(CliArguments& args);
+
+// The start every emulator's main() shares: --help, -h or help prints
+// `help` and gives nullopt (exit 0); otherwise the parsed arguments and the
+// simulator's chain (readSimConfig), or why not.
+struct EmulatorStart {
+  CliArguments args;
+  model::SimConfig config;
+};
+Result<std::optional<EmulatorStart>> startEmulator(int argc, char** argv, const char* help);
 
 }  // namespace fog::app

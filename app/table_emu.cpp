@@ -120,17 +120,11 @@ bool slaveOpen(int master) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<std::string> argList(argv + 1, argv + argc);
-  for (const auto& a : argList)
-    if (a == "--help" || a == "-h" || a == "help") {
-      std::fputs(kHelp, stdout);
-      return 0;
-    }
-  auto parsed = app::CliArguments::parse(argList, {});
-  if (!parsed) return failWith(parsed.status().message());
-  auto& args = *parsed;
-  auto config = app::readSimConfig(args);
-  if (!config) return failWith(config.status().message());
+  auto started = app::startEmulator(argc, argv, kHelp);
+  if (!started) return failWith(started.status().message());
+  if (!*started) return 0;  // --help
+  auto& args = (*started)->args;
+  auto* config = &(*started)->config;
   const std::string link = args.text("link").value_or("tcp");
   const std::string boardMode = args.text("board").value_or("pty");
   struct Num {
