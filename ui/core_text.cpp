@@ -199,6 +199,7 @@ const char* const kTemplates[] = {
     QT_TRANSLATE_NOOP("core_text", "the run reached its memory budget of %1 table and IMU samples after %2 s; everything recorded is kept"),
     QT_TRANSLATE_NOOP("core_text", "no verdict: %1, not a finite number, so real and simulated data cannot be compared"),
     QT_TRANSLATE_NOOP("core_text", "undetermined"),
+    QT_TRANSLATE_NOOP("core_text", "static segment %1: the %2 gyro's %3 increments are all %4 deg: no noise to analyse (a dead or disconnected axis, or a file of constants)"),
     QT_TRANSLATE_NOOP("core_text", "Markov (correlated) rate"),
     QT_TRANSLATE_NOOP("core_text", "deg"),
     QT_TRANSLATE_NOOP("core_text", "the replay cannot reach the measured lag exactly"),

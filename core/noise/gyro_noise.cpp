@@ -75,6 +75,17 @@ Result<GyroNoiseReport> analyzeStaticSegment(const TestPointData& data, double d
   if (r.lostFrames)
     r.warnings.push_back(std::to_string(r.lostFrames) + " lost IMU frames filled with the mean increment");
 
+  // A gyro whose every increment is the same (a dead or disconnected axis, a
+  // file of zeros) has no noise to analyse: its Allan deviation is 0 at every
+  // tau, and a fit to it gave "rate ramp: 0 ± 0" with chi^2 2.5e10.
+  if (std::all_of(increments.begin(), increments.end(), [&](double d) { return d == increments.front(); }))
+    return insufficientData("static segment " + std::to_string(data.index + 1) + ": the " + std::string(axisLabel(r.gyroAxis)) +
+                            " gyro's " + std::to_string(increments.size()) + " increments are all " +
+                            fmt("%.6g", increments.front()) +
+                            " deg: no noise to analyse (a dead or disconnected axis, or a file of constants)");
+  if (!std::all_of(increments.begin(), increments.end(), [](double d) { return std::isfinite(d); }))
+    return corruptData("static segment " + std::to_string(data.index + 1) + ": an increment is not finite");
+
   const double meanRateDegPerS = meanIncrement / r.intervalS;
   r.biasDegPerH = meanRateDegPerS * kSecondsPerHour;
   r.earthRateDegPerH = options.earth.projectionDegPerH(r.gyroAxis);

@@ -4866,6 +4866,11 @@ File: %1</source>
     </message>
     <message>
         <location line="+1"/>
+        <source>static segment %1: the %2 gyro&apos;s %3 increments are all %4 deg: no noise to analyse (a dead or disconnected axis, or a file of constants)</source>
+        <translation>静态段 %1：%2 陀螺的 %3 个增量全为 %4°：没有可分析的噪声（轴失效或未连接，或文件中为常数）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Markov (correlated) rate</source>
         <translation>马尔可夫（相关）角速度</translation>
     </message>

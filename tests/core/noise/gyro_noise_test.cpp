@@ -182,5 +182,30 @@ TEST(GyroNoise, ARecordingWithoutStaticSegmentSaysSo) {
   EXPECT_NE(r.status().message().find("no static segment"), std::string::npos);
 }
 
+// A dead or disconnected gyro (every increment the same) has no noise: it
+// once fitted "rate ramp: 0 ± 0" with chi^2 2.5e10 and no word of why.
+TEST(GyroNoise, AGyroWhoseIncrementsNeverChangeIsRefusedInWords) {
+  TestPointData tp;
+  tp.kind = TestPointKind::kStatic;
+  tp.axis = Axis::kY;
+  for (int k = 0; k < 5000; ++k) {
+    ImuSample s;
+    s.timeS = 0.002 * (k + 1);
+    tp.imu.push_back(s);  // all increments 0
+  }
+  Recording rec;
+  rec.pulseEquivalentDeg = 5e-5;
+  rec.testPoints.push_back(tp);
+  auto r = analyzeGyroNoise(rec, GyroNoiseOptions{});
+  ASSERT_FALSE(r.isOk());
+  EXPECT_EQ(r.status().code(), StatusCode::kInsufficientData);
+  EXPECT_NE(r.status().message().find("the Y gyro's 5000 increments are all 0 deg: no noise to analyse"),
+            std::string::npos)
+      << r.status().message();
+  // One pulse anywhere and there is something to analyse.
+  rec.testPoints[0].imu[2500].incrementDeg[1] = 1.0;
+  EXPECT_TRUE(analyzeGyroNoise(rec, GyroNoiseOptions{}).isOk());
+}
+
 }  // namespace
 }  // namespace fog::noise
