@@ -1,0 +1,74 @@
+#include "core/analysis/uncertainty_bound.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "core/analysis/statistics.h"
+
+namespace fog::analysis {
+
+namespace {
+
+std::string fixed(double v, int decimals) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  return buf;
+}
+
+std::string shortest(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.2g", v);
+  return buf;
+}
+
+// The x with P(χ²(ν) > x) = 1 - p: bisection on the survival function.
+double chiSquareQuantile(double p, int dof) {
+  double lo = 0.0, hi = std::max(10.0, 10.0 * dof);
+  for (int i = 0; i < 200; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    if (1.0 - chiSquareSurvival(mid, dof) < p) lo = mid;
+    else hi = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+}  // namespace
+
+int lagStdDegreesOfFreedom(const TestPointResult& point) {
+  if (point.lagStdSource.rfind("per-period scatter", 0) == 0)
+    return std::max(1, static_cast<int>(point.periodTrack.size()) - 1);
+  // The fit's σ scales with its residuals: table and gyro samples less the
+  // joint fit's parameters. Capped: beyond ~10^4 the quantile is 1 to 3 %.
+  const auto samples = static_cast<long long>(point.tableSamples + point.imuSamples);
+  return static_cast<int>(std::clamp(samples - 8, 1LL, 100000LL));
+}
+
+double smallestStdOverBound(int dof) {
+  return kBoundModelFactor * std::sqrt(chiSquareQuantile(0.001, dof) / static_cast<double>(dof));
+}
+
+ValidityCheck uncertaintyBelowBoundCheck(const TestPointResult& point) {
+  ValidityCheck c;
+  c.id = "uncertainty_below_bound";
+  if (!(point.crlbMs > 0.0)) {
+    c.judged = false;
+    c.detail = "not judged: the Cramér–Rao bound of this session's noise is not known";
+    return c;
+  }
+  const int dof = lagStdDegreesOfFreedom(point);
+  const double ratio = point.lagStdMs / point.crlbMs, least = smallestStdOverBound(dof);
+  c.passed = ratio >= least;
+  const std::string measured = "σ " + shortest(point.lagStdMs) + " ms is " + fixed(ratio, 2) +
+                               " of the Cramér–Rao bound " + shortest(point.crlbMs) + " ms (" + point.lagStdSource +
+                               ", " + std::to_string(dof) + " degrees of freedom; at least " + fixed(least, 2) +
+                               " expected)";
+  c.detail = c.passed ? measured
+                      : "the stated uncertainty is below what the noise allows: " + measured +
+                            ". No estimate of the lag scatters less than the bound; the σ is understated and the "
+                            "delay is not vouched for. Record more periods, or check the noise model (docs/method.md)";
+  return c;
+}
+
+}  // namespace fog::analysis
