@@ -47,6 +47,10 @@ Result<Bytes> readBounded(const std::string& path, std::uint64_t maxBytes, const
   std::FILE* f = std::fopen(path.c_str(), "rb");
   if (!f) return ioError("cannot open " + path + " for reading; check its permissions");
   Bytes out;
+  // The size was checked: the whole file in one allocation (growing by
+  // doubling would hold up to twice the bound for a moment).
+  std::error_code ec;
+  out.reserve(static_cast<std::size_t>(fs::file_size(path, ec)));
   char buf[1 << 16];
   std::size_t n;
   bool tooLong = false;
