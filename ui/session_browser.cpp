@@ -91,7 +91,7 @@ SessionBrowser::SessionBrowser(QWidget* parent) : QWidget(parent) {
   reanalyseButton_ = new QPushButton(tr("Re-analyse with the bench constants"));
   reanalyseButton_->setObjectName("reanalyseButton");
   reanalyseButton_->setToolTip(tr("Adds a new result to the session, analysed with the bench constants, gyro signs "
-                                  "and limit (Settings); its raw data and earlier results never change"));
+                                  "and limit (Tools → Bench constants); its raw data and earlier results never change"));
   compareButton_ = new QPushButton(tr("Compare the selected"));
   compareButton_->setObjectName("compareButton");
   compareButton_->setToolTip(tr("Two sessions: their delays per test point and the difference with its significance; "
