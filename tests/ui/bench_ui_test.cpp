@@ -24,6 +24,9 @@
 #include <QFile>
 #include <QGroupBox>
 #include <QLabel>
+#include <QJsonObject>
+#include <QJsonDocument>
+#include <QJsonArray>
 #include <QProcess>
 #include <QTcpSocket>
 #include <QProgressBar>
@@ -51,6 +54,7 @@
 #include "core/diagnosis/effects.h"
 #include "core/io/csv_export.h"
 #include "core/session/session_file.h"
+#include "ui/bench_settings_dialog.h"
 #include "ui/commanded_motion.h"
 #include "ui/compare_view.h"
 #include "ui/configure_view.h"
@@ -704,6 +708,56 @@ class BenchUiTest : public QObject {
     QVERIFY(compareView->differenceTable()->item(0, 1)->text().endsWith("INVALID"));
     w->findChild<QWidget*>("compareWindow")->close();
 
+    // A record this version's analysis does not reproduce (its IMU delay
+    // changed by 0.01 ms, its verdict FAIL): the stored FAIL is shown, and a
+    // note says the analysis differs and offers re-analysis.
+    {
+      auto reader = fog::session::SessionReader::open(reversed.toStdString());
+      QVERIFY(reader.isOk());
+      auto recording = (*reader)->recording();
+      QVERIFY(recording.isOk());
+      const auto constants = fog::analysis::benchConstantsOf((*reader)->info().bench);
+      auto report = fog::analysis::analyzeRecording(*recording, constants);
+      QVERIFY(report.isOk());
+      reader->reset();
+      QJsonObject doc = QJsonDocument::fromJson(QByteArray::fromStdString(fog::analysis::formatReportJson(
+                                                    *report, fog::analysis::ReportContext{})))
+                            .object();
+      QJsonArray points = doc["test_points"].toArray();
+      QJsonObject point = points[0].toObject();
+      point["imu_delay_ms"] = point["imu_delay_ms"].toDouble() + 0.01;
+      point["verdict"] = "fail";
+      points[0] = point;
+      doc["test_points"] = points;
+      doc["verdict"] = "fail";
+      QVERIFY(fog::session::addResult(reversed.toStdString(),
+                                      fog::acquisition::analysisSettingsJson(constants, 0.8, "an older fogbench"),
+                                      QJsonDocument(doc).toJson().toStdString())
+                  .isOk());
+    }
+    opened.clear();
+    w->openSession(reversed);
+    QTRY_VERIFY_WITH_TIMEOUT(!opened.isEmpty(), 30000);
+    QCOMPARE(w->lastOutcome()->differences.size(), std::size_t{2});
+    const QString differing = w->findChild<QLabel*>("verdictLabel")->text();
+    QVERIFY2(differing.contains("<b>FAIL</b>") && differing.contains("differs from the stored result") &&
+                 differing.contains("Re-analyse") && differing.contains("pass by this version's analysis"),
+             qPrintable(differing));
+
+    // The bench-constants dialog sets what the CLI sets: gyro signs, limit.
+    {
+      fog::ui::BenchSettingsDialog dialog(w->benchSettings(), fog::ui::AnalysisChoices{{1, 1, -1}, 0.6});
+      auto* z = dialog.findChild<QComboBox*>("gyroSignZCombo");
+      auto* limit = dialog.findChild<QDoubleSpinBox*>("limitSpin");
+      QVERIFY(z && limit && dialog.findChild<QComboBox*>("gyroSignXCombo"));
+      QCOMPARE(z->currentData().toInt(), -1);
+      QCOMPARE(limit->value(), 0.6);
+      z->setCurrentIndex(0);
+      limit->setValue(0.5);
+      QCOMPARE(dialog.analysisChoices().gyroSign[2], 1);
+      QCOMPARE(dialog.analysisChoices().imuDelayLimitMs, 0.5);
+    }
+
     // A re-analysis stores the GUI's gyro signs and limit with its result.
     w->setAnalysisChoices(fog::ui::AnalysisChoices{{-1, 1, 1}, 0.5});
     opened.clear();
@@ -714,7 +768,7 @@ class BenchUiTest : public QObject {
     auto reader = fog::session::SessionReader::open(reversed.toStdString());
     QVERIFY(reader.isOk());
     const auto stored = *(*reader)->results();
-    QCOMPARE(stored.size(), std::size_t{3});
+    QCOMPARE(stored.size(), std::size_t{4});
     const auto newest = fog::acquisition::readStoredResult(stored.back(), {});
     QCOMPARE(newest.constants.gyroSign[0], -1);
     QVERIFY(newest.gyroSignStated);
