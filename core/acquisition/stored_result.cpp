@@ -83,6 +83,19 @@ StoredResultRecord readStoredResult(const session::StoredResult& stored, const a
       c.gyroSign[static_cast<std::size_t>(a)] = s < 0 ? -1 : 1;
     }
   }
+  // A row stored before its settings held the signs: its report states the
+  // sign applied to each analysed test point's swing axis (`gyro_sign`), so
+  // e.g. an older `analyze --gyro-sign x=-1` is still reviewed with -1.
+  if (!r.gyroSignStated && report.contains("test_points") && report["test_points"].is_array())
+    for (const auto& tp : report["test_points"]) {
+      const std::string axis = textOr(tp, "axis");
+      const double sign = numberOr(tp, "gyro_sign", 0.0);
+      for (int a = 0; a < kAxisCount; ++a)
+        if (axis == axisName(static_cast<Axis>(a)) && sign != 0.0) {
+          c.gyroSign[static_cast<std::size_t>(a)] = sign < 0 ? -1 : 1;
+          r.gyroSignStated = true;
+        }
+    }
   // The limit the verdict used: the report's own field is what judged it.
   const double limit = numberOr(report, "imu_delay_limit_ms", numberOr(settings, "imu_delay_limit_ms", NAN));
   if (std::isfinite(limit) && limit > 0.0) {

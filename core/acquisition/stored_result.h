@@ -45,7 +45,10 @@ struct StoredResultRecord {
   std::string softwareVersion;  // "" when not stated
   std::string analysedBy;       // "acquisition", "fogbench GUI", "fogbench-cli analyze", ...
   analysis::BenchConstants constants;
-  bool gyroSignStated = false;  // false: an older row; +1 on every axis was the only possibility then
+  // The signs come from the settings, or, for a row stored before they were
+  // kept there, from its report's per-point `gyro_sign` (the swing axes');
+  // an axis neither states is +1. False: nothing stated any sign.
+  bool gyroSignStated = false;
   double imuDelayLimitMs = analysis::kDefaultImuDelayLimitMs;
   bool limitStated = false;     // false: neither the settings nor the report state it
 
