@@ -86,6 +86,9 @@ usage:
                       [--language en|zh_CN] [constants]
       The calibration report (docs/report.md): PASS when every validity check passes
       and IMU delay + 2 sigma < limit; a session brings its own identity and constants.
+      A session with a stored result is reported as stored (its settings, limit and
+      verdict; INCOMPLETE for a run stopped early): --limit-ms and constants apply only
+      to data without one (analyze stores another analysis first).
   fogbench-cli diagnose SESSION.fbs|FILE.bin [--json] [--seeds K] [--threads T]
                         [--bias-instability DEG_H [--bias-correlation S]] [constants]
       Sim-to-real gap diagnosis (docs/diagnosis.md): where real and simulated data

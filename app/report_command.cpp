@@ -9,6 +9,7 @@
 #include <iostream>
 #include <iterator>
 
+#include "core/acquisition/stored_result.h"
 #include "core/analysis/delay_analysis.h"
 #include "app/cli_common.h"
 #include "core/common/version.h"
@@ -65,7 +66,26 @@ Result<report::ReportInput> fileSession(const std::string& path) {
     FOG_ASSIGN_OR_RETURN(auto bytes, reader->rawBytes());
     in.info = reader->info();
     in.info.source = "session " + path + (in.info.source.empty() ? "" : " (" + in.info.source + ")");
-    if (!reader->complete()) in.info.source += " [incomplete: " + reader->incompleteReason() + "]";
+    if (!reader->complete()) {
+      in.info.source += " [incomplete: " + reader->incompleteReason() + "]";
+      in.incompleteReason = reader->incompleteReason();
+    }
+    // The newest intact stored result is the one reported, as stored.
+    FOG_ASSIGN_OR_RETURN(auto stored, reader->results());
+    const auto records = acquisition::readStoredResults(stored, analysis::benchConstantsOf(in.info.bench));
+    if (const auto* shown = acquisition::newestUsable(records)) {
+      in.stored = *shown;
+      std::size_t number = 0;
+      for (std::size_t i = 0; i < records.size(); ++i)
+        if (records[i].id == shown->id) number = i + 1;
+      in.resultShown = QString::fromStdString("result " + std::to_string(number) + " of " +
+                                              std::to_string(records.size()) + ", stored " + shown->createdUtc +
+                                              " by " + (shown->analysedBy.empty() ? "analysis" : shown->analysedBy) +
+                                              " (fogbench " +
+                                              (shown->softwareVersion.empty() ? "version not stated"
+                                                                              : shown->softwareVersion) +
+                                              ")");
+    }
     in.recording = std::move(recording);
     in.rawBytes = std::move(bytes);
     return in;
@@ -148,16 +168,34 @@ int reportCommand(CliArguments& args) {
     return fail(input.status(), 2);
   }
   report::ReportInput& in = *input;
-  // The session's own constants, unless the command line gives others.
+  if (in.stored) {
+    // A stored result is a record: reported with the settings and verdict
+    // it was stored with. Other settings are another analysis, stored as a
+    // new result first; never a silent re-judgement on paper.
+    for (const char* option : {"limit-ms", "read-delay-ms", "read-delay-std-ms", "board-delay-ms",
+                               "board-delay-std-ms", "pulse-equivalent-deg", "gyro-sign"})
+      if (args.has(option)) {
+        (void)args.checkAllUsed();
+        return fail(invalidArgument(std::string("--") + option + " does not apply: the report shows the session's "
+                                    "stored result with the settings it was stored with (" +
+                                    in.resultShown.toStdString() + "); to report other settings, store a result "
+                                    "with them first: fogbench-cli analyze " + files.front() + " --" + option +
+                                    " ..., then report again"),
+                    2);
+      }
+  }
+  // The stored result's constants (with its gyro signs); else the session's
+  // own, unless the command line gives others.
   auto constants = readConstants(args, in.info.bench);
   if (!constants) return fail(constants.status(), 2);
+  if (in.stored) *constants = in.stored->constants;
   if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
 
   if (imuModel) in.info.imuModel = *imuModel;
   if (imuSerial) in.info.imuSerial = *imuSerial;
   if (operatorName) in.info.operatorName = *operatorName;
   storeConstants(*constants, in.info.bench);
-  in.imuDelayLimitMs = *limit;
+  in.imuDelayLimitMs = in.stored ? in.stored->imuDelayLimitMs : *limit;
 
   auto delays = analysis::analyzeRecording(in.recording, *constants);
   if (!delays) return fail(delays.status(), exitCodeFor(delays.status()));
@@ -188,7 +226,8 @@ int reportCommand(CliArguments& args) {
       std::cout << "page " << i + 1 << ": " << path.toStdString() << "\n";
     }
   }
-  const auto verdict = report::calibrationVerdict(in.delays, in.imuDelayLimitMs);
+  const auto verdict = report::calibrationVerdict(in);
+  if (!in.resultShown.isEmpty()) std::cout << "result shown: " << in.resultShown.toStdString() << "\n";
   std::cout << verdict.headline.toStdString() << "\n";
   for (const auto& p : verdict.points) std::cout << "  test point " << p.index + 1 << ": " << p.line.toStdString() << "\n";
   return 0;

@@ -109,7 +109,7 @@ int analyzeSessionCommand(CliArguments& args, const std::string& path) {
     return 0;
   }
   reader->reset();  // close before writing
-  if (auto s = session::addResult(path, acquisition::analysisSettingsJson(*constants, "fogbench-cli analyze"),
+  if (auto s = session::addResult(path, acquisition::analysisSettingsJson(*constants, *limit, "fogbench-cli analyze"),
                                   analysis::formatReportJson(*report, context));
       !s.isOk())
     return fail(s, 2);
@@ -393,7 +393,7 @@ int exportCommand(CliArguments& args) {
                   {"raw_bytes", (*reader)->rawByteCount()}}},
                 {"stored_results", results},
                 {"current_analysis",
-                 report ? json{{"settings", json::parse(acquisition::analysisSettingsJson(*constants, "fogbench-cli export"))},
+                 report ? json{{"settings", json::parse(acquisition::analysisSettingsJson(*constants, context.imuDelayLimitMs, "fogbench-cli export"))},
                                {"report", json::parse(analysis::formatReportJson(*report, context))}}
                         : json{{"error", report.status().message()}}}};
     // Serialised before the file is opened: nothing can leave it empty.

@@ -21,6 +21,7 @@ packages=(
   clang libclang-rt-14-dev
   xvfb xauth fonts-wqy-microhei
   python3 python3-numpy
+  poppler-utils
 )
 
 missing=()

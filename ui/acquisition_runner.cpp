@@ -74,6 +74,7 @@ bool AcquisitionRunner::start(RunRequest request) {
       outcome->recording = std::move(result->recording);
       outcome->report = std::move(result->report);
       outcome->truth = request.truth;
+      outcome->imuDelayLimitMs = request.options.reportContext.imuDelayLimitMs;
       // The result the run stored is the session's first: shown as such.
       if (!outcome->sessionPath.empty() && outcome->report)
         if (auto reader = session::SessionReader::open(outcome->sessionPath); reader)

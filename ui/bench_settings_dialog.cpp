@@ -1,5 +1,6 @@
 #include "ui/bench_settings_dialog.h"
 
+#include <QComboBox>
 #include <QDialogButtonBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
@@ -53,7 +54,28 @@ void saveBenchSettings(const BenchSettings& s) {
   q.setValue("counter_bits", s.counterBits);
 }
 
-BenchSettingsDialog::BenchSettingsDialog(const BenchSettings& s, QWidget* parent) : QDialog(parent) {
+AnalysisChoices loadAnalysisChoices() {
+  QSettings q;
+  q.beginGroup("analysis");
+  AnalysisChoices c;
+  for (int a = 0; a < kAxisCount; ++a)
+    c.gyroSign[static_cast<std::size_t>(a)] =
+        q.value(QString("gyro_sign_%1").arg(axisName(static_cast<Axis>(a))), 1).toInt() < 0 ? -1 : 1;
+  const double limit = q.value("imu_delay_limit_ms", c.imuDelayLimitMs).toDouble();
+  if (limit > 0.0 && limit <= 1e6) c.imuDelayLimitMs = limit;
+  return c;
+}
+
+void saveAnalysisChoices(const AnalysisChoices& c) {
+  QSettings q;
+  q.beginGroup("analysis");
+  for (int a = 0; a < kAxisCount; ++a)
+    q.setValue(QString("gyro_sign_%1").arg(axisName(static_cast<Axis>(a))), c.gyroSign[static_cast<std::size_t>(a)]);
+  q.setValue("imu_delay_limit_ms", c.imuDelayLimitMs);
+}
+
+BenchSettingsDialog::BenchSettingsDialog(const BenchSettings& s, const AnalysisChoices& choices, QWidget* parent)
+    : QDialog(parent) {
   setWindowTitle(tr("Bench constants"));
   setObjectName("benchSettingsDialog");
   auto* form = new QFormLayout();
@@ -78,10 +100,24 @@ BenchSettingsDialog::BenchSettingsDialog(const BenchSettings& s, QWidget* parent
   form->addRow(tr("Gyro pulse equivalent"), pulseEquivalent_);
   form->addRow(tr("Sampling-board counter"), counterMHz_);
   form->addRow(tr("Counter width"), counterBits_);
+  for (int a = 0; a < kAxisCount; ++a) {
+    auto* sign = new QComboBox();
+    sign->addItem(tr("+1 (turns with the table)"), 1);
+    sign->addItem(tr("−1 (mounted the other way round)"), -1);
+    sign->setCurrentIndex(choices.gyroSign[static_cast<std::size_t>(a)] < 0 ? 1 : 0);
+    sign->setObjectName(QString("gyroSign%1Combo").arg(QString(axisName(static_cast<Axis>(a))).toUpper()));
+    gyroSign_[static_cast<std::size_t>(a)] = sign;
+    form->addRow(tr("Gyro sign, %1 axis").arg(QString(axisName(static_cast<Axis>(a))).toUpper()), sign);
+  }
+  limit_ = spin(0.001, 1000.0, 3, tr(" ms"), choices.imuDelayLimitMs);
+  limit_->setObjectName("limitSpin");
+  form->addRow(tr("IMU delay limit (acceptance)"), limit_);
 
   auto* note = new QLabel(tr("IMU delay = measured lag + table read delay; gyro's own delay = IMU delay − "
                              "processing-board delay. The pulse equivalent is used only when the board's stream "
-                             "does not state it; the simulator uses these values for the chain it simulates."));
+                             "does not state it; the simulator uses these values for the chain it simulates. "
+                             "The gyro signs and the limit are stored with every result: changing them changes "
+                             "no stored verdict; re-analyse a session to store a new result with them."));
   note->setWordWrap(true);
   auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel |
                                        QDialogButtonBox::RestoreDefaults);
@@ -97,6 +133,8 @@ BenchSettingsDialog::BenchSettingsDialog(const BenchSettings& s, QWidget* parent
     pulseEquivalent_->setValue(d.pulseEquivalentDeg);
     counterMHz_->setValue(d.counterHz / 1e6);
     counterBits_->setValue(d.counterBits);
+    for (auto* sign : gyroSign_) sign->setCurrentIndex(0);
+    limit_->setValue(AnalysisChoices{}.imuDelayLimitMs);
   });
   auto* layout = new QVBoxLayout(this);
   layout->addLayout(form);
@@ -115,6 +153,13 @@ BenchSettings BenchSettingsDialog::settings() const {
   s.counterHz = counterMHz_->value() * 1e6;
   s.counterBits = counterBits_->value();
   return s;
+}
+
+AnalysisChoices BenchSettingsDialog::analysisChoices() const {
+  AnalysisChoices c;
+  for (std::size_t a = 0; a < gyroSign_.size(); ++a) c.gyroSign[a] = gyroSign_[a]->currentData().toInt() < 0 ? -1 : 1;
+  c.imuDelayLimitMs = limit_->value();
+  return c;
 }
 
 }  // namespace fog::ui

@@ -1,13 +1,18 @@
 #pragma once
 // The bench constants dialog: table read delay, processing-board delay (each
 // with its standard uncertainty), latitude, pulse equivalent and the sampling
-// board's counter frequency. What the operator sets is remembered between
-// runs (QSettings, group "bench").
+// board's counter frequency; and the analysis settings the CLI takes as
+// --gyro-sign and --limit-ms (the sense of each gyro axis, the acceptance
+// limit). What the operator sets is remembered between runs (QSettings,
+// groups "bench" and "analysis"); every run and re-analysis stores them with
+// its result (acquisition::analysisSettingsJson).
 
 #include <QDialog>
+#include <array>
 
 #include "core/common/session_info.h"
 
+class QComboBox;
 class QDoubleSpinBox;
 class QSpinBox;
 class QLabel;
@@ -18,12 +23,22 @@ namespace fog::ui {
 BenchSettings loadBenchSettings();
 void saveBenchSettings(const BenchSettings& settings);
 
+// What the analysis is told besides the bench constants (the CLI's
+// --gyro-sign and --limit-ms). Defaults: every gyro axis +1, 0.8 ms.
+struct AnalysisChoices {
+  std::array<int, kAxisCount> gyroSign{1, 1, 1};
+  double imuDelayLimitMs = 0.8;
+};
+AnalysisChoices loadAnalysisChoices();
+void saveAnalysisChoices(const AnalysisChoices& choices);
+
 class BenchSettingsDialog : public QDialog {
   Q_OBJECT
 
  public:
-  explicit BenchSettingsDialog(const BenchSettings& settings, QWidget* parent = nullptr);
+  BenchSettingsDialog(const BenchSettings& settings, const AnalysisChoices& choices, QWidget* parent = nullptr);
   BenchSettings settings() const;
+  AnalysisChoices analysisChoices() const;
 
  private:
   QDoubleSpinBox* readDelay_ = nullptr;
@@ -34,6 +49,8 @@ class BenchSettingsDialog : public QDialog {
   QDoubleSpinBox* pulseEquivalent_ = nullptr;
   QDoubleSpinBox* counterMHz_ = nullptr;
   QSpinBox* counterBits_ = nullptr;
+  std::array<QComboBox*, kAxisCount> gyroSign_{};
+  QDoubleSpinBox* limit_ = nullptr;
 };
 
 }  // namespace fog::ui

@@ -1,5 +1,7 @@
 #include "ui/compare_view.h"
 
+#include "ui/result_view.h"
+
 #include <QComboBox>
 #include <QDateTime>
 #include <QFileInfo>
@@ -271,7 +273,21 @@ void CompareView::fillSessionRow(int position) {
                  .arg(o.results.size())
                  .arg(num(c.tableReadDelayMs, 4), num(c.tableReadDelayStdMs, 4), num(c.boardDelayMs, 4));
   }
+  // The stored verdict leads: Compare sets delays side by side, it never
+  // re-judges them (a result stored INVALID stays INVALID here).
+  if (const ResultRecord* r = o.shownResult()) {
+    result = tr("%1 (stored, limit %2 ms) · %3")
+                 .arg(ResultView::verdictWord(r->verdict), num(r->imuDelayLimitMs, 3), result);
+    if (!o.differences.empty())
+      result += tr(" · this version's analysis differs from the stored result; re-analyse to store it");
+  } else if (!o.complete) {
+    result = tr("%1 (not stored) · %2").arg(ResultView::verdictWord("incomplete"), result);
+  }
   setCell(sessionTable_, position, 5, result);
+  if (const ResultRecord* r = o.shownResult())
+    sessionTable_->item(position, 5)->setForeground(r->verdict == "pass"      ? QColor(20, 110, 40)
+                                                    : r->verdict == "invalid" ? QColor(160, 80, 0)
+                                                                              : QColor(176, 0, 0));
 }
 
 void CompareView::recompare() {
@@ -302,8 +318,18 @@ void CompareView::recompare() {
   for (int r = 0; r < static_cast<int>(comparisons_.size()); ++r) {
     const auto& c = comparisons_[static_cast<std::size_t>(r)];
     setCell(differenceTable_, r, 0, c.label);
-    setCell(differenceTable_, r, 1, c.a ? tr("%1 ± %2").arg(num(c.aMs, 4), num(c.aStdMs, 4)) : QString("—"), true);
-    setCell(differenceTable_, r, 2, c.b ? tr("%1 ± %2").arg(num(c.bMs, 4), num(c.bStdMs, 4)) : QString("—"), true);
+    // A delay whose stored verdict is not a pass carries that verdict.
+    auto delayCell = [&](const std::shared_ptr<const RunOutcome>& o, std::optional<std::size_t> at, double ms,
+                         double stdMs) {
+      if (!at) return QString("—");
+      QString text = tr("%1 ± %2").arg(num(ms, 4), num(stdMs, 4));
+      if (const ResultRecord* rec = o->shownResult())
+        if (const auto* sp = rec->point(o->report->points[*at].index); sp && sp->verdict != "pass")
+          text += " " + ResultView::verdictWord(sp->verdict);
+      return text;
+    };
+    setCell(differenceTable_, r, 1, delayCell(oa, c.a, c.aMs, c.aStdMs), true);
+    setCell(differenceTable_, r, 2, delayCell(ob, c.b, c.bMs, c.bStdMs), true);
     if (c.both()) {
       ++both;
       commonConstant = c.commonTableConstant;

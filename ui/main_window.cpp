@@ -172,6 +172,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   buildToolBar();
   buildMenus();
   setBenchSettings(loadBenchSettings());
+  analysis_ = loadAnalysisChoices();
 
   framesLabel_ = new QLabel();
   framesLabel_->setObjectName("framesLabel");
@@ -221,10 +222,12 @@ MainWindow::~MainWindow() {
 }
 
 void MainWindow::editBenchSettings() {
-  BenchSettingsDialog dialog(bench_, this);
+  BenchSettingsDialog dialog(bench_, analysis_, this);
   if (dialog.exec() == QDialog::Accepted) {
     setBenchSettings(dialog.settings());
     saveBenchSettings(bench_);
+    analysis_ = dialog.analysisChoices();
+    saveAnalysisChoices(analysis_);
   }
 }
 
@@ -566,6 +569,8 @@ Result<RunRequest> MainWindow::buildRunRequest() const {
   RunRequest request;
   request.options.info = sessionInfo();
   request.options.constants = analysis::benchConstantsOf(bench_);
+  request.options.constants.gyroSign = analysis_.gyroSign;
+  request.options.reportContext.imuDelayLimitMs = analysis_.imuDelayLimitMs;
   TestPlan plan;
   if (kind == SourceKind::kSimulator) {
     plan = planEditor_->plan();
@@ -819,6 +824,7 @@ void MainWindow::loadSession(const QString& path, bool reanalyse, std::int64_t r
   const QString name = QFileInfo(path).fileName();
   tell(reanalyse ? tr("Re-analysing %1 …").arg(name) : tr("Opening %1 …").arg(name));
   const BenchSettings bench = bench_;
+  const AnalysisChoices choices = analysis_;
   // QFuture needs a default-constructible value: the outcome, or why not.
   struct Loaded {
     std::shared_ptr<RunOutcome> outcome;
@@ -826,7 +832,7 @@ void MainWindow::loadSession(const QString& path, bool reanalyse, std::int64_t r
   };
   // Reading and fitting a long session takes a while: off the GUI thread.
   inBackground(
-      this, [path, reanalyse, resultId, bench]() -> Loaded {
+      this, [path, reanalyse, resultId, bench, choices]() -> Loaded {
         auto reader = session::SessionReader::open(path.toStdString());
         if (!reader) return {nullptr, reader.status()};
         auto recording = (*reader)->recording();
@@ -841,11 +847,16 @@ void MainWindow::loadSession(const QString& path, bool reanalyse, std::int64_t r
         outcome->recording = std::move(*recording);
         const auto sessionConstants = analysis::benchConstantsOf(outcome->info.bench);
         outcome->results = resultRecords(*stored, sessionConstants);
-        // A re-analysis uses the bench's constants; review the chosen stored
-        // result's (the newest unless one is asked for), or the session's own
-        // when none is stored.
-        analysis::BenchConstants constants = reanalyse ? analysis::benchConstantsOf(bench) : sessionConstants;
-        if (!reanalyse) {
+        // A re-analysis uses the bench's constants, gyro signs and limit, and
+        // stores them with its result. Review re-analyses with exactly the
+        // chosen stored result's settings (the newest unless one is asked
+        // for), only to draw its plots and fits: the verdict shown is the
+        // stored one. With none stored: the session's own constants.
+        analysis::BenchConstants constants = sessionConstants;
+        if (reanalyse) {
+          constants = analysis::benchConstantsOf(bench);
+          constants.gyroSign = choices.gyroSign;
+        } else {
           const ResultRecord* chosen = newestUsable(outcome->results);
           for (const auto& r : outcome->results)
             if (r.id == resultId && r.usable) chosen = &r;
@@ -860,7 +871,12 @@ void MainWindow::loadSession(const QString& path, bool reanalyse, std::int64_t r
         if (reanalyse && outcome->report) {
           analysis::ReportContext context;
           context.source = source;
-          if (auto s = session::addResult(path.toStdString(), acquisition::analysisSettingsJson(constants, "fogbench GUI"),
+          context.imuDelayLimitMs = choices.imuDelayLimitMs;
+          // A session that stopped early stays incomplete whatever the analysis.
+          if (!outcome->complete) context.incompleteReason = outcome->incompleteReason;
+          if (auto s = session::addResult(path.toStdString(),
+                                          acquisition::analysisSettingsJson(constants, choices.imuDelayLimitMs,
+                                                                            "fogbench GUI"),
                                           analysis::formatReportJson(*outcome->report, context));
               !s.isOk())
             return {nullptr, s};
@@ -878,6 +894,8 @@ void MainWindow::loadSession(const QString& path, bool reanalyse, std::int64_t r
         outcome->info.bench.boardDelayMs = constants.boardDelayMs;
         outcome->info.bench.boardDelayStdMs = constants.boardDelayStdMs;
         if (constants.pulseEquivalentDeg > 0.0) outcome->info.bench.pulseEquivalentDeg = constants.pulseEquivalentDeg;
+        if (const ResultRecord* shown = outcome->shownResult(); shown && outcome->report)
+          outcome->differences = acquisition::differencesFromRecord(*shown, *outcome->report);
         completeOutcome(*outcome, source);
         return {outcome, Status::ok()};
       },

@@ -31,6 +31,7 @@
 
 #include "core/common/session_info.h"
 #include "ui/acquisition_runner.h"
+#include "ui/bench_settings_dialog.h"
 #include "ui/configure_view.h"
 
 class QAction;
@@ -103,6 +104,10 @@ class MainWindow : public QMainWindow {
   QString sessionFolder() const;
   void setBenchSettings(const BenchSettings& settings);
   const BenchSettings& benchSettings() const { return bench_; }
+  // The gyro signs and acceptance limit every run and re-analysis uses and
+  // stores with its result (the bench-constants dialog).
+  const AnalysisChoices& analysisChoices() const { return analysis_; }
+  void setAnalysisChoices(const AnalysisChoices& choices) { analysis_ = choices; }
 
   bool isRunning() const { return runner_.isRunning(); }
   // The last run's or opened session's result (null before one).
@@ -211,6 +216,7 @@ class MainWindow : public QMainWindow {
   QTimer liveTimer_;
   QElapsedTimer runClock_;
   BenchSettings bench_;
+  AnalysisChoices analysis_;
   std::shared_ptr<const RunOutcome> shown_;
   QString lastMessage_;
   QString lastExport_;

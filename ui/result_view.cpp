@@ -72,6 +72,17 @@ QString constantsText(const analysis::BenchConstants& c) {
   return QObject::tr("table read %1 ms, board %2 ms").arg(num(c.tableReadDelayMs, 4), num(c.boardDelayMs, 4));
 }
 
+// A stored result's settings in a few words: its constants, any reversed
+// gyro axis and its limit.
+QString settingsText(const ResultRecord& r) {
+  QString text = constantsText(r.constants);
+  QStringList reversed;
+  for (int a = 0; a < kAxisCount; ++a)
+    if (r.constants.gyroSign[static_cast<std::size_t>(a)] < 0) reversed << QString(axisName(static_cast<Axis>(a))).toUpper();
+  if (!reversed.isEmpty()) text += QObject::tr(", gyro sign −1 on %1").arg(reversed.join(", "));
+  return text + QObject::tr(", limit %1 ms").arg(num(r.imuDelayLimitMs, 3));
+}
+
 QString versionText(const ResultRecord& r) {
   return r.softwareVersion.empty() ? QObject::tr("version not stated")
                                    : QObject::tr("fogbench %1").arg(QString::fromStdString(r.softwareVersion));
@@ -256,16 +267,13 @@ ResultView::ResultView(QWidget* parent) : QWidget(parent) {
   menu->addSeparator();
   menu->addAction(tr("Calibration report (PDF)…"), this, [this] {
     if (!outcome_ || !outcome_->report) return;
-    bool ok = false;
-    const double limit = QInputDialog::getDouble(this, tr("Calibration report"),
-                                                 tr("Pass when IMU delay + 2σ is below (ms):"), 0.8, 0.001, 100.0, 3,
-                                                 &ok);
-    if (!ok) return;
+    // No limit is asked for: the report prints the stored result's verdict
+    // and limit (another limit is a re-analysis, stored as a new result).
     const QString path = QFileDialog::getSaveFileName(this, tr("Calibration report"),
                                                       defaultExportPath("calibration-report", "pdf"),
                                                       tr("PDF document (*.pdf)"));
     if (path.isEmpty()) return;
-    if (auto s = exportReportTo(path, limit); !s.isOk())
+    if (auto s = exportReportTo(path); !s.isOk())
       emit exportFailed(tr("Calibration report"), coreText(s.message()));
   });
   menu->addSeparator();
@@ -348,11 +356,12 @@ QString ResultView::resultDescription() const {
     return tr("none stored in the session; computed by fogbench %1 with the session's constants (%2)")
         .arg(QStringLiteral(FOG_VERSION), constants);
   }
-  return tr("result %1 of %2, stored %3 by %4 (%5), %6")
+  return tr("result %1 of %2: %7, stored %3 by %4 (%5), %6")
       .arg(outcome_->shownResultNumber())
       .arg(outcome_->results.size())
       .arg(storedText(*r), versionText(*r),
-           r->analysedBy.empty() ? tr("analysis") : QString::fromStdString(r->analysedBy), constantsText(r->constants));
+           r->analysedBy.empty() ? tr("analysis") : QString::fromStdString(r->analysedBy), settingsText(*r),
+           verdictWord(r->verdict));
 }
 
 void ResultView::fillResultCombo() {
@@ -361,10 +370,14 @@ void ResultView::fillResultCombo() {
   const int count = static_cast<int>(outcome_->results.size());
   for (int i = 0; i < count; ++i) {
     const auto& r = outcome_->results[static_cast<std::size_t>(i)];
-    QString text = tr("%1 of %2 · %3 · %4 · %5")
-                       .arg(i + 1)
-                       .arg(count)
-                       .arg(storedText(r), versionText(r), constantsText(r.constants));
+    QString text = r.usable ? tr("%1 of %2 · %6 · %3 · %4 · %5")
+                                  .arg(i + 1)
+                                  .arg(count)
+                                  .arg(storedText(r), versionText(r), settingsText(r), verdictWord(r.verdict))
+                            : tr("%1 of %2 · %3 · %4 · %5")
+                                  .arg(i + 1)
+                                  .arg(count)
+                                  .arg(storedText(r), versionText(r), constantsText(r.constants));
     if (!r.usable) text += tr(" · damaged, cannot be shown");
     resultCombo_->addItem(text, QVariant::fromValue<qint64>(r.id));
     resultCombo_->setItemData(i, text, Qt::ToolTipRole);
@@ -436,6 +449,73 @@ void ResultView::fillTables(std::size_t i) {
          true);
 }
 
+QString ResultView::verdictWord(const std::string& verdict) {
+  if (verdict == "pass") return tr("PASS");
+  if (verdict == "fail") return tr("FAIL");
+  if (verdict == "invalid") return tr("INVALID");
+  if (verdict == "incomplete") return tr("INCOMPLETE");
+  return tr("no verdict stored");
+}
+
+QString ResultView::verdictHtml(const analysis::TestPointResult& p) const {
+  auto colourOf = [](const std::string& v) {
+    return v == "pass" ? "#146e28" : v == "invalid" ? "#a05000" : "#b00000";  // fail, incomplete, none: red
+  };
+  std::string pointVerdict, reportVerdict, dataVerdict;
+  QStringList reasons;
+  double limit = outcome_->imuDelayLimitMs;
+  QString whose;
+  if (const ResultRecord* r = outcome_->shownResult()) {
+    // The record: its verdict, its reasons, its limit; never re-judged here.
+    limit = r->imuDelayLimitMs;
+    reportVerdict = r->verdict;
+    dataVerdict = r->dataVerdict;
+    if (const auto* sp = r->point(p.index)) {
+      pointVerdict = sp->verdict;
+      for (const auto& why : sp->reasons) reasons << coreText(why).toHtmlEscaped();
+    } else {
+      reasons << tr("the stored result has no delay for this test point").toHtmlEscaped();
+    }
+    whose = tr("stored verdict");
+  } else {
+    // Not stored (a run without a session, or a session without a result):
+    // judged once, here, with the run's own limit.
+    const analysis::PointVerdict v = analysis::judgePoint(p, limit);
+    pointVerdict = analysis::verdictName(v.verdict);
+    const analysis::ReportVerdict all = analysis::judgeReport(*outcome_->report, limit);
+    reportVerdict = analysis::verdictName(all.verdict);
+    if (!outcome_->complete) {
+      dataVerdict = reportVerdict;
+      reportVerdict = "incomplete";
+    }
+    for (const auto& why : v.reasons) reasons << coreText(why).toHtmlEscaped();
+    whose = tr("verdict, not stored");
+  }
+  QString html = tr("Result: <span style='color:%1'><b>%2</b></span>")
+                     .arg(colourOf(reportVerdict), verdictWord(reportVerdict));
+  if (reportVerdict == "incomplete") {
+    html += tr(" (incomplete run: %1; the data recorded give %2)")
+                .arg(coreText(outcome_->incompleteReason).toHtmlEscaped(), verdictWord(dataVerdict));
+  }
+  html += tr("  ·  %1 (limit %2 ms)").arg(whose, num(limit, 3));
+  if (reportVerdict == "incomplete")  // no point of an incomplete run passes
+    html += tr("<br>Test point: <span style='color:%1'><b>%2</b></span> (its data give %3): %4")
+                .arg(colourOf(reportVerdict), verdictWord(reportVerdict), verdictWord(pointVerdict),
+                     reasons.join("<br>"));
+  else
+    html += tr("<br>Test point: <span style='color:%1'><b>%2</b></span>: %3")
+                .arg(colourOf(pointVerdict), verdictWord(pointVerdict), reasons.join("<br>"));
+  if (!outcome_->differences.empty()) {
+    QStringList diffs;
+    for (const auto& d : outcome_->differences) diffs << coreText(d).toHtmlEscaped();
+    html += tr("<br><span style='color:#a05000'>This version's analysis of the same data with the stored settings "
+               "differs from the stored result (%1); the verdict shown is the stored one. Re-analyse the session "
+               "(Sessions) to store this version's result.</span>")
+                .arg(diffs.join("; "));
+  }
+  return html;
+}
+
 void ResultView::showTestPoint(int position) {
   anglePlot_->clearCurves();
   residualPlot_->clearCurves();
@@ -453,38 +533,8 @@ void ResultView::showTestPoint(int position) {
   for (const auto& t : outcome_->truth)
     if (t.index == p.index) lag += tr("  ·  simulator truth: lag %1 ms").arg(num(t.lagS * 1e3, 4));
   if (!outcome_->complete) lag += tr("  ·  <span style='color:#b00000'>incomplete run</span>");
-  // A result stored by another version may hold other numbers than this
-  // version's analysis with its constants gives: said, never hidden.
-  if (const ResultRecord* r = outcome_->shownResult())
-    for (const auto& [index, stored] : r->storedImuDelayMs)
-      if (index == p.index && std::abs(stored - p.imuDelayMs) > 1e-6)
-        lag += tr("<br><span style='color:#a05000'>The stored result gives IMU delay %1 ms (%2); shown is this "
-                  "version's analysis with its constants.</span>")
-                   .arg(num(stored, 4), versionText(*r));
   lagLabel_->setText(lag);
-  const analysis::PointVerdict verdict = analysis::judgePoint(p, analysis::kDefaultImuDelayLimitMs);
-  const QString word = verdict.verdict == analysis::Verdict::kPass   ? tr("PASS")
-                       : verdict.verdict == analysis::Verdict::kFail ? tr("FAIL")
-                                                                     : tr("INVALID");
-  const char* colour = verdict.verdict == analysis::Verdict::kPass   ? "#146e28"
-                       : verdict.verdict == analysis::Verdict::kFail ? "#b00000"
-                                                                     : "#a05000";
-  QStringList reasons;
-  if (verdict.verdict == analysis::Verdict::kInvalid) {
-    for (const auto& why : verdict.reasons) reasons << coreText(why).toHtmlEscaped();
-  } else {
-    // The comparison with the limit, in the GUI's language.
-    const double limit = analysis::kDefaultImuDelayLimitMs;
-    const int d = p.imuDelayStdMs > 0.0 ? std::clamp(1 - static_cast<int>(std::floor(std::log10(p.imuDelayStdMs))), 0, 6) : 4;
-    const bool pass = verdict.verdict == analysis::Verdict::kPass;
-    reasons << (pass ? tr("IMU delay %1 ± %2 ms; + 2σ = %3 ms < %4 ms limit (margin %5 ms)")
-                     : tr("IMU delay %1 ± %2 ms; + 2σ = %3 ms ≥ %4 ms limit (over by %5 ms)"))
-                   .arg(num(p.imuDelayMs, d), num(p.imuDelayStdMs, d), num(verdict.upperMs, d), num(limit, 1),
-                        num(std::abs(limit - verdict.upperMs), d))
-                   .toHtmlEscaped();
-  }
-  verdictLabel_->setText(tr("<span style='color:%1'><b>%2</b></span> (limit %3 ms): %4")
-                             .arg(colour, word, num(analysis::kDefaultImuDelayLimitMs, 1), reasons.join("<br>")));
+  verdictLabel_->setText(verdictHtml(p));
   fillTables(i);
 
   // Aliasing pointers: the plots share the outcome, nothing is copied.
@@ -660,8 +710,8 @@ Status ResultView::exportPlotTo(QwtPlot* plot, const QString& path) {
   return Status::ok();
 }
 
-Status ResultView::exportReportTo(const QString& path, double imuDelayLimitMs) {
-  FOG_RETURN_IF_ERROR(writeReportPdf(path, imuDelayLimitMs));
+Status ResultView::exportReportTo(const QString& path) {
+  FOG_RETURN_IF_ERROR(writeReportPdf(path));
   emit exported(path);
   return Status::ok();
 }
@@ -685,14 +735,20 @@ QString ResultView::defaultExportPath(const QString& what, const QString& suffix
   return QDir(folder).filePath(name);
 }
 
-Result<report::ReportInput> ResultView::reportInput(double imuDelayLimitMs) const {
+Result<report::ReportInput> ResultView::reportInput() const {
   if (!outcome_ || !outcome_->report) return insufficientData("there is no delay result to report");
   report::ReportInput in;
   in.info = outcome_->info;
   in.recording = outcome_->recording;
   in.delays = *outcome_->report;
-  in.imuDelayLimitMs = imuDelayLimitMs;
   in.resultShown = resultDescription();
+  if (const ResultRecord* r = outcome_->shownResult()) {
+    in.stored = *r;
+    in.imuDelayLimitMs = r->imuDelayLimitMs;
+  } else {
+    in.imuDelayLimitMs = outcome_->imuDelayLimitMs;
+    if (!outcome_->complete) in.incompleteReason = outcome_->incompleteReason;
+  }
   // The report carries the hash of the raw stream the result came from.
   if (!outcome_->sessionPath.empty()) {
     FOG_ASSIGN_OR_RETURN(auto reader, session::SessionReader::open(outcome_->sessionPath));
@@ -702,8 +758,8 @@ Result<report::ReportInput> ResultView::reportInput(double imuDelayLimitMs) cons
   return in;
 }
 
-Status ResultView::writeReportPdf(const QString& path, double imuDelayLimitMs) const {
-  FOG_ASSIGN_OR_RETURN(auto in, reportInput(imuDelayLimitMs));
+Status ResultView::writeReportPdf(const QString& path) const {
+  FOG_ASSIGN_OR_RETURN(auto in, reportInput());
   return report::writeCalibrationPdf(in, path);
 }
 

@@ -50,6 +50,12 @@ class ResultView : public QWidget {
   // Shared ownership of what is shown (for exporting off the widget).
   std::shared_ptr<const RunOutcome> sharedOutcome() const { return outcome_; }
   void showTestPoint(int position);
+  // The verdict line of a test point: the shown stored result's verdict,
+  // reasons and limit as stored (a record is never re-judged), or, for a
+  // result not stored, the run's own judgement; an incomplete run's verdict
+  // is INCOMPLETE. Says when this version's analysis differs from the record.
+  QString verdictHtml(const analysis::TestPointResult& point) const;
+  static QString verdictWord(const std::string& verdict);
 
   SeriesPlot* anglePlot() const { return anglePlot_; }
   SeriesPlot* residualPlot() const { return residualPlot_; }
@@ -68,14 +74,16 @@ class ResultView : public QWidget {
   QTableWidget* delayTable() const { return delayTable_; }
   QString reportText() const;
 
-  // What the calibration report of the shown result is drawn from.
-  Result<report::ReportInput> reportInput(double imuDelayLimitMs) const;
+  // What the calibration report of the shown result is drawn from: the
+  // shown stored result's verdict and limit, as stored; for a result not
+  // stored, the run's limit (and INCOMPLETE for a run stopped early).
+  Result<report::ReportInput> reportInput() const;
   // Writes the calibration report of what is shown (see ui/report).
-  Status writeReportPdf(const QString& path, double imuDelayLimitMs) const;
+  Status writeReportPdf(const QString& path) const;
   // The export menu's work without its file dialogs: writes and, when it
   // worked, emits exported().
   Status exportPlotTo(QwtPlot* plot, const QString& path);
-  Status exportReportTo(const QString& path, double imuDelayLimitMs);
+  Status exportReportTo(const QString& path);
 
   // Where an export goes unless the operator picks another place: the
   // folder of the shown session (else the fallback folder), named with what

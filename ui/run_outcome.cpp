@@ -1,9 +1,8 @@
 #include "ui/run_outcome.h"
 
-#include <QJsonArray>
-#include <QJsonDocument>
-#include <QJsonObject>
 #include <algorithm>
+#include <cctype>
+#include <cstdio>
 
 #include "core/analysis/report_writer.h"
 #include "core/session/session_file.h"
@@ -12,55 +11,22 @@ namespace fog::ui {
 
 namespace {
 
-QJsonObject objectOf(const std::string& json) {
-  QJsonParseError error{};
-  const QJsonDocument doc = QJsonDocument::fromJson(QByteArray::fromStdString(json), &error);
-  return error.error == QJsonParseError::NoError && doc.isObject() ? doc.object() : QJsonObject();
+std::string upperCase(std::string s) {
+  for (auto& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return s;
 }
 
-double numberOr(const QJsonObject& o, const char* key, double fallback) {
-  const QJsonValue v = o.value(QLatin1String(key));
-  return v.isDouble() ? v.toDouble() : fallback;
+std::string limitText(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
 }
 
 }  // namespace
 
 std::vector<ResultRecord> resultRecords(const std::vector<session::StoredResult>& stored,
                                         const analysis::BenchConstants& fallback) {
-  std::vector<ResultRecord> out;
-  for (const auto& r : stored) {
-    ResultRecord rec;
-    rec.id = r.id;
-    rec.createdUtc = r.createdUtc;
-    const QJsonObject settings = objectOf(r.settingsJson);
-    const QJsonObject report = objectOf(r.reportJson);
-    const QJsonObject reported = report.value("constants").toObject();
-    rec.usable = r.intact && !settings.isEmpty();
-    rec.softwareVersion = settings.value("software_version").toString().toStdString();
-    rec.analysedBy = settings.value("analysed_by").toString().toStdString();
-    auto constant = [&](const char* key, double otherwise) {
-      return numberOr(settings, key, numberOr(reported, key, otherwise));
-    };
-    rec.constants = fallback;
-    rec.constants.tableReadDelayMs = constant("table_read_delay_ms", fallback.tableReadDelayMs);
-    rec.constants.tableReadDelayStdMs = constant("table_read_delay_std_ms", fallback.tableReadDelayStdMs);
-    rec.constants.boardDelayMs = constant("board_delay_ms", fallback.boardDelayMs);
-    rec.constants.boardDelayStdMs = constant("board_delay_std_ms", fallback.boardDelayStdMs);
-    rec.constants.pulseEquivalentDeg = constant("pulse_equivalent_deg", fallback.pulseEquivalentDeg);
-    for (const QJsonValue& v : report.value("test_points").toArray()) {
-      const QJsonObject tp = v.toObject();
-      if (tp.value("index").isDouble() && tp.value("imu_delay_ms").isDouble())
-        rec.storedImuDelayMs.emplace_back(tp.value("index").toInt(), tp.value("imu_delay_ms").toDouble());
-    }
-    out.push_back(std::move(rec));
-  }
-  return out;
-}
-
-const ResultRecord* newestUsable(const std::vector<ResultRecord>& records) {
-  for (auto r = records.rbegin(); r != records.rend(); ++r)
-    if (r->usable) return &*r;
-  return nullptr;
+  return acquisition::readStoredResults(stored, fallback);
 }
 
 const ResultRecord* RunOutcome::shownResult() const {
@@ -100,6 +66,9 @@ void completeOutcome(RunOutcome& outcome, const std::string& source) {
   }
   analysis::ReportContext context;
   context.source = source;
+  const ResultRecord* shown = outcome.shownResult();
+  context.imuDelayLimitMs = shown ? shown->imuDelayLimitMs : outcome.imuDelayLimitMs;
+  if (!outcome.complete) context.incompleteReason = outcome.incompleteReason;
   // The report pairs trueLagMs with its points by position; a test point that
   // gave no delay is missing from report.points, so match by index.
   for (const auto& point : report.points) {
@@ -110,6 +79,20 @@ void completeOutcome(RunOutcome& outcome, const std::string& source) {
   }
   outcome.reportText = analysis::formatReportText(report, context);
   if (!outcome.complete) outcome.reportText = "INCOMPLETE RUN: " + outcome.incompleteReason + "\n\n" + outcome.reportText;
+  if (shown) {
+    // The record first: its verdict is the one that counts; the text below
+    // is this version's analysis with the record's settings (for the plots).
+    std::string head = "Stored verdict: " + upperCase(shown->verdict.empty() ? "not stated" : shown->verdict);
+    if (!shown->dataVerdict.empty()) head += " (the data recorded give " + upperCase(shown->dataVerdict) + ")";
+    head += ", against the stored limit of " + limitText(shown->imuDelayLimitMs) + " ms\n";
+    for (const auto& why : shown->verdictReasons) head += "  " + why + "\n";
+    if (!outcome.differences.empty()) {
+      head += "This version's analysis of the same data with the same settings differs from the stored result:\n";
+      for (const auto& d : outcome.differences) head += "  " + d + "\n";
+    }
+    head += "\nThis version's analysis with the stored result's settings (plots and fits):\n";
+    outcome.reportText = head + outcome.reportText;
+  }
 }
 
 }  // namespace fog::ui

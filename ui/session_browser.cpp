@@ -1,5 +1,6 @@
 #include "ui/session_browser.h"
 
+#include <QColor>
 #include <QDir>
 #include <QFileDialog>
 #include <QHBoxLayout>
@@ -19,7 +20,28 @@ namespace fog::ui {
 
 namespace {
 
-enum Column { kFile = 0, kCreated, kOperator, kImu, kAxes, kState, kLag, kImuDelay, kColumns };
+enum Column { kFile = 0, kCreated, kOperator, kImu, kAxes, kState, kVerdict, kLag, kImuDelay, kColumns };
+
+// The shown (latest intact) result's verdict as stored, with which result it
+// is: "INVALID (2 of 2)", "PASS (1 of 3; 2 damaged)", "damaged (1 of 1)",
+// "-" — the words of `fogbench-cli sessions`.
+QString verdictText(const session::SessionSummary& s) {
+  if (s.results == 0) return QStringLiteral("-");
+  const QString damaged = s.damagedResults > 0 ? QObject::tr("; %1 damaged").arg(s.damagedResults) : QString();
+  if (s.shownResult == 0) return QObject::tr("damaged (%1 of %2)").arg(s.damagedResults).arg(s.results);
+  const QString word = s.verdict == "pass"         ? QObject::tr("PASS")
+                       : s.verdict == "fail"       ? QObject::tr("FAIL")
+                       : s.verdict == "invalid"    ? QObject::tr("INVALID")
+                       : s.verdict == "incomplete" ? QObject::tr("INCOMPLETE")
+                                                   : QObject::tr("stored");
+  return QObject::tr("%1 (%2 of %3%4)").arg(word).arg(s.shownResult).arg(s.results).arg(damaged);
+}
+
+QColor verdictColour(const session::SessionSummary& s) {
+  if (s.verdict == "pass") return QColor(20, 110, 40);
+  if (s.verdict == "invalid") return QColor(160, 80, 0);
+  return QColor(176, 0, 0);  // fail, incomplete, damaged
+}
 
 QString joinMs(const std::vector<double>& values) {
   QStringList parts;
@@ -46,7 +68,7 @@ SessionBrowser::SessionBrowser(QWidget* parent) : QWidget(parent) {
   table_ = new QTableWidget(0, kColumns);
   table_->setObjectName("sessionTable");
   table_->setHorizontalHeaderLabels({tr("File"), tr("Recorded (UTC)"), tr("Operator"), tr("IMU"), tr("Axes"),
-                                     tr("State"), tr("Lag (ms)"), tr("IMU delay (ms)")});
+                                     tr("State"), tr("Verdict"), tr("Lag (ms)"), tr("IMU delay (ms)")});
   // The state (a damaged file's reason can be long) takes the room that is
   // left and is elided; its whole text is in the tooltip. The delays stay
   // in view.
@@ -68,7 +90,8 @@ SessionBrowser::SessionBrowser(QWidget* parent) : QWidget(parent) {
   openButton_->setObjectName("openSessionButton");
   reanalyseButton_ = new QPushButton(tr("Re-analyse with the bench constants"));
   reanalyseButton_->setObjectName("reanalyseButton");
-  reanalyseButton_->setToolTip(tr("Adds a new result to the session; its raw data never changes"));
+  reanalyseButton_->setToolTip(tr("Adds a new result to the session, analysed with the bench constants, gyro signs "
+                                  "and limit (Tools → Bench constants); its raw data and earlier results never change"));
   compareButton_ = new QPushButton(tr("Compare the selected"));
   compareButton_->setObjectName("compareButton");
   compareButton_->setToolTip(tr("Two sessions: their delays per test point and the difference with its significance; "
@@ -163,6 +186,9 @@ void SessionBrowser::refresh() {
     set(kAxes, QString::fromStdString(session::axesOf(s.info.plan)).toUpper());
     set(kState, s.complete ? tr("complete") : tr("incomplete: %1").arg(coreText(s.incompleteReason)));
     if (!s.complete) table_->item(row, kState)->setForeground(QColor(170, 90, 0));
+    // The stored verdict, never a re-judgement (docs/sessions.md).
+    set(kVerdict, verdictText(s));
+    if (s.results > 0) table_->item(row, kVerdict)->setForeground(verdictColour(s));
     set(kLag, joinMs(s.lagMs));
     set(kImuDelay, joinMs(s.imuDelayMs));
   }

@@ -51,17 +51,6 @@ analysis::ReportContext reportContextOf(const AcquisitionResult& run, const Acqu
   return context;
 }
 
-std::string analysisSettingsJson(const analysis::BenchConstants& c, const std::string& producedBy) {
-  nlohmann::json doc = {{"table_read_delay_ms", c.tableReadDelayMs},
-                        {"table_read_delay_std_ms", c.tableReadDelayStdMs},
-                        {"board_delay_ms", c.boardDelayMs},
-                        {"board_delay_std_ms", c.boardDelayStdMs},
-                        {"pulse_equivalent_deg", c.pulseEquivalentDeg},
-                        {"software_version", FOG_VERSION},
-                        {"analysed_by", producedBy}};
-  return doc.dump();
-}
-
 Result<AcquisitionResult> acquire(ByteSource& source, const AcquisitionOptions& options,
                                   const std::atomic<bool>* stop,
                                   const std::function<void(AcquisitionBatch&&)>& observer) {
@@ -207,7 +196,7 @@ Result<AcquisitionResult> acquire(ByteSource& source, const AcquisitionOptions& 
     result.sessionBytes = writer->committedBytes();
     writer.reset();
     if (result.report) {
-      if (auto s = session::addResult(options.sessionPath, analysisSettingsJson(options.constants, "acquisition"),
+      if (auto s = session::addResult(options.sessionPath, analysisSettingsJson(options.constants, options.reportContext.imuDelayLimitMs, "acquisition"),
                                       analysis::formatReportJson(*result.report, reportContextOf(result, options)));
           !s.isOk())
         return s;

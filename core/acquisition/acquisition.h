@@ -45,6 +45,7 @@
 #include "core/common/status.h"
 #include "core/protocol/decoder.h"
 #include "core/session/session_file.h"
+#include "core/acquisition/stored_result.h"  // analysisSettingsJson
 
 namespace fog::acquisition {
 
@@ -111,8 +112,5 @@ Result<AcquisitionResult> acquire(ByteSource& source, const AcquisitionOptions& 
 // every report of an incomplete run says so in its verdict.
 analysis::ReportContext reportContextOf(const AcquisitionResult& run, const AcquisitionOptions& options);
 
-// The settings a stored result was produced with (bench constants, software
-// version, what produced it), as JSON.
-std::string analysisSettingsJson(const analysis::BenchConstants& constants, const std::string& producedBy);
 
 }  // namespace fog::acquisition

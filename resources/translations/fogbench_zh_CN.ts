@@ -32,7 +32,7 @@
 <context>
     <name>fog::ui::BenchSettingsDialog</name>
     <message>
-        <location filename="../../ui/bench_settings_dialog.cpp" line="+57"/>
+        <location filename="../../ui/bench_settings_dialog.cpp" line="+79"/>
         <source>Bench constants</source>
         <translation>测试台常数</translation>
     </message>
@@ -41,11 +41,12 @@
         <location line="+1"/>
         <location line="+1"/>
         <location line="+1"/>
+        <location line="+27"/>
         <source> ms</source>
         <translation> ms</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-26"/>
         <source> °</source>
         <translation> °</translation>
     </message>
@@ -101,9 +102,29 @@
         <translation>计数器位宽</translation>
     </message>
     <message>
+        <location line="+3"/>
+        <source>+1 (turns with the table)</source>
+        <translation>+1（与转台同向转动）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>−1 (mounted the other way round)</source>
+        <translation>−1（反向安装）</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Gyro sign, %1 axis</source>
+        <translation>陀螺符号，%1 轴</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>IMU delay limit (acceptance)</source>
+        <translation>IMU 延迟限值（验收）</translation>
+    </message>
+    <message>
         <location line="+2"/>
-        <source>IMU delay = measured lag + table read delay; gyro&apos;s own delay = IMU delay − processing-board delay. The pulse equivalent is used only when the board&apos;s stream does not state it; the simulator uses these values for the chain it simulates.</source>
-        <translation>IMU 延迟 = 测得滞后 + 转台读数延迟；陀螺自身延迟 = IMU 延迟 − 处理板延迟。仅当采样板数据流未给出脉冲当量时才使用此处的值；仿真器按这些数值构建其仿真链路。</translation>
+        <source>IMU delay = measured lag + table read delay; gyro&apos;s own delay = IMU delay − processing-board delay. The pulse equivalent is used only when the board&apos;s stream does not state it; the simulator uses these values for the chain it simulates. The gyro signs and the limit are stored with every result: changing them changes no stored verdict; re-analyse a session to store a new result with them.</source>
+        <translation>IMU 延迟 = 测得滞后 + 转台读数延迟；陀螺自身延迟 = IMU 延迟 − 处理板延迟。仅当采样板数据流未给出脉冲当量时才使用此处的脉冲当量；仿真器按这些值仿真其链路。陀螺符号和限值随每个结果一起保存：修改它们不会改变任何已保存的判定；重新分析会话即可按新设置保存新结果。</translation>
     </message>
 </context>
 <context>
@@ -193,7 +214,7 @@
 <context>
     <name>fog::ui::CompareView</name>
     <message>
-        <location filename="../../ui/compare_view.cpp" line="+123"/>
+        <location filename="../../ui/compare_view.cpp" line="+125"/>
         <source>session</source>
         <translation>会话</translation>
     </message>
@@ -244,12 +265,12 @@
     </message>
     <message>
         <location line="+15"/>
-        <location line="+127"/>
+        <location line="+141"/>
         <source>test point</source>
         <translation>测试点</translation>
     </message>
     <message>
-        <location line="-121"/>
+        <location line="-135"/>
         <source>Zero crossing of A and B</source>
         <translation>A 与 B 的过零点</translation>
     </message>
@@ -329,7 +350,22 @@
         <translation>结果 %1/%2；转台读数延迟 %3 ± %4 ms，板卡 %5 ms</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+8"/>
+        <source>%1 (stored, limit %2 ms) · %3</source>
+        <translation>%1（已保存，限值 %2 ms）· %3</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source> · this version&apos;s analysis differs from the stored result; re-analyse to store it</source>
+        <translation> · 本版本的分析与已保存结果不同；重新分析即可保存</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 (not stored) · %2</source>
+        <translation>%1（未保存）· %2</translation>
+    </message>
+    <message>
+        <location line="+20"/>
         <source>Choose two different sessions.</source>
         <translation>请选择两个不同的会话。</translation>
     </message>
@@ -360,13 +396,12 @@
         <translation>|%1 − %2|/σ</translation>
     </message>
     <message>
-        <location line="+7"/>
-        <location line="+1"/>
+        <location line="+11"/>
         <source>%1 ± %2</source>
         <translation>%1 ± %2</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+16"/>
         <source>differs (more than 2σ)</source>
         <translation>有差异（超过 2σ）</translation>
     </message>
@@ -1211,22 +1246,22 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+861"/>
+        <location line="+879"/>
         <source>Diagnosis</source>
         <translation>诊断</translation>
     </message>
     <message>
-        <location line="-858"/>
+        <location line="-876"/>
         <source>Noise</source>
         <translation>噪声</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+44"/>
         <source>Configure a plan and press Run.</source>
         <translation>请配置测试计划并按“运行”。</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+21"/>
         <source>&lt;h3&gt;fogbench %1&lt;/h3&gt;&lt;p&gt;Fiber-optic gyro IMU delay test bench: swing the IMU on a turntable, stamp table angle and gyro increments with one counter, fit sinusoids to both and turn their phase difference into the IMU&apos;s delay, with its uncertainty.&lt;/p&gt;&lt;p&gt;Built with Qt %2 (running on %3) and Qwt %4.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;fogbench %1&lt;/h3&gt;&lt;p&gt;光纤陀螺 IMU 延迟测试台：转台带动 IMU 摆动，用同一计数器为转台角度和陀螺增量打时间戳，对两者拟合正弦，并将相位差换算为 IMU 延迟及其不确定度。&lt;/p&gt;&lt;p&gt;基于 Qt %2（运行于 %3）和 Qwt %4 构建。&lt;/p&gt;</translation>
     </message>
@@ -1289,12 +1324,12 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+629"/>
+        <location line="+644"/>
         <source>Open session</source>
         <translation>打开会话</translation>
     </message>
     <message>
-        <location line="-628"/>
+        <location line="-643"/>
         <source>fogbench sessions (*.fbs);;All files (*)</source>
         <translation>fogbench 会话 (*.fbs);;所有文件 (*)</translation>
     </message>
@@ -1569,7 +1604,7 @@ Quit: Ctrl+Q</source>
         <translation>&lt;span style=&apos;color:#b00000&apos;&gt;无法运行：%1&lt;/span&gt;</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+27"/>
         <source>the baud rate must be a whole number</source>
         <translation>波特率必须是整数</translation>
     </message>
@@ -1739,7 +1774,7 @@ Quit: Ctrl+Q</source>
         <translation>正在打开 %1 …</translation>
     </message>
     <message>
-        <location line="+66"/>
+        <location line="+79"/>
         <location line="+8"/>
         <source>Re-analyse</source>
         <translation>重新分析</translation>
@@ -2229,7 +2264,7 @@ File: %1</source>
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../../ui/main_window.cpp" line="-1003"/>
+        <location filename="../../ui/main_window.cpp" line="-1021"/>
         <location filename="../../ui/plan_editor.cpp" line="-300"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
@@ -3260,31 +3295,35 @@ File: %1</source>
     </message>
     <message>
         <location line="+102"/>
+        <location line="+73"/>
         <source>PASS: every test point passed its validity checks and its IMU delay + 2σ is below the %1 ms limit.</source>
         <translation>合格：每个测试点都通过有效性检查，且其 IMU 延迟 + 2σ 低于 %1 ms 限值。</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="-68"/>
+        <location line="+80"/>
         <source>%1 of %2 test points failed a validity check</source>
         <translation>%2 个测试点中有 %1 个未通过有效性检查</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-78"/>
         <source>no test point gave a delay</source>
         <translation>没有测试点给出延迟</translation>
     </message>
     <message>
         <location line="+1"/>
+        <location line="+76"/>
         <source>INVALID: the result cannot be vouched for: %1.</source>
         <translation>无效：结果无法保证：%1。</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-74"/>
+        <location line="+67"/>
         <source>FAIL against the %1 ms limit: %2 of %3 test points exceed the limit.</source>
         <translation>对 %1 ms 限值不合格：%3 个测试点中有 %2 个超限。</translation>
     </message>
     <message>
-        <location line="-4"/>
+        <location line="-71"/>
         <source>%1 test point(s) gave no delay</source>
         <translation>%1 个测试点未得到延迟</translation>
     </message>
@@ -3299,7 +3338,53 @@ File: %1</source>
         <translation>陀螺角度（增量累加，%1 ms）</translation>
     </message>
     <message>
-        <location line="+315"/>
+        <location line="+306"/>
+        <source>INCOMPLETE (the run stopped early); its data give %1</source>
+        <translation>不完整（运行提前停止）；其数据给出 %1</translation>
+    </message>
+    <message>
+        <location filename="../../ui/session_browser.cpp" line="+35"/>
+        <source>INCOMPLETE</source>
+        <translation>不完整</translation>
+    </message>
+    <message>
+        <location line="-3"/>
+        <source>PASS</source>
+        <translation>通过</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>FAIL</source>
+        <translation>不通过</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>INVALID</source>
+        <translation>无效</translation>
+    </message>
+    <message>
+        <location filename="../../ui/report/calibration_report.cpp" line="+18"/>
+        <location line="+49"/>
+        <source>INCOMPLETE: the run stopped before its plan ended (%1); no calibration verdict. The data recorded give %2.</source>
+        <translation>不完整：运行在计划结束前停止（%1）；没有校准判定。已记录的数据给出 %2。</translation>
+    </message>
+    <message>
+        <location line="-26"/>
+        <source>the stored result has no delay for this test point</source>
+        <translation>已保存的结果中没有此测试点的延迟</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>NO VERDICT: the stored result states none; re-analyse the session to store one.</source>
+        <translation>无判定：已保存的结果未给出判定；请重新分析会话以保存判定。</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>This version&apos;s analysis of the same data with the stored settings differs from the stored result (%1); the verdict is the stored one.</source>
+        <translation>本版本用已保存的设置对同一数据的分析与已保存结果不同（%1）；判定以已保存的为准。</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>IMU delay calibration report: %1 %2</source>
         <translation>IMU 延迟标定报告：%1 %2</translation>
     </message>
@@ -3312,6 +3397,16 @@ File: %1</source>
         <location line="+9"/>
         <source>table read %1 ms, board %2 ms</source>
         <translation>转台读数 %1 ms，处理板 %2 ms</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>, gyro sign −1 on %1</source>
+        <translation>，%1 轴陀螺符号 −1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>, limit %1 ms</source>
+        <translation>，限值 %1 ms</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -3327,6 +3422,26 @@ File: %1</source>
         <location filename="../../ui/session_compare.cpp" line="+21"/>
         <source>%1 axis, %2 Hz / %3°</source>
         <translation>%1 轴，%2 Hz / %3°</translation>
+    </message>
+    <message>
+        <location filename="../../ui/session_browser.cpp" line="-4"/>
+        <source>; %1 damaged</source>
+        <translation>；%1 个损坏</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>damaged (%1 of %2)</source>
+        <translation>损坏（%2 个中的 %1 个）</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>stored</source>
+        <translation>已保存</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 (%2 of %3%4)</source>
+        <translation>%1（%3 个中的第 %2 个%4）</translation>
     </message>
 </context>
 <context>
@@ -3518,19 +3633,18 @@ File: %1</source>
         <translation>标定报告（PDF）…</translation>
     </message>
     <message>
-        <location line="+3"/>
         <location line="+4"/>
         <location line="+5"/>
         <source>Calibration report</source>
         <translation>标定报告</translation>
     </message>
     <message>
-        <location line="-8"/>
-        <source>Pass when IMU delay + 2σ is below (ms):</source>
-        <translation>IMU 延迟 + 2σ 低于此值时合格（ms）：</translation>
+        <location line="+82"/>
+        <source>result %1 of %2: %7, stored %3 by %4 (%5), %6</source>
+        <translation>结果 %1/%2：%7，%3 由 %4（%5）保存，%6</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="-85"/>
         <source>PDF document (*.pdf)</source>
         <translation>PDF 文档 (*.pdf)</translation>
     </message>
@@ -3580,17 +3694,17 @@ File: %1</source>
         <translation>会话中未存储结果；由 fogbench %1 使用会话的常数（%2）计算</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>result %1 of %2, stored %3 by %4 (%5), %6</source>
-        <translation>第 %1 个结果（共 %2 个），%3 由 %4（%5）存储，%6</translation>
-    </message>
-    <message>
-        <location line="+4"/>
+        <location line="+7"/>
         <source>analysis</source>
         <translation>分析</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
+        <source>%1 of %2 · %6 · %3 · %4 · %5</source>
+        <translation>%1/%2 · %6 · %3 · %4 · %5</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>%1 of %2 · %3 · %4 · %5</source>
         <translation>%1 / %2 · %3 · %4 · %5</translation>
     </message>
@@ -3690,7 +3804,62 @@ File: %1</source>
         <translation>敏感、闭环与脉冲更新</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+8"/>
+        <source>INCOMPLETE</source>
+        <translation>不完整</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no verdict stored</source>
+        <translation>未保存判定</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>the stored result has no delay for this test point</source>
+        <translation>已保存的结果中没有此测试点的延迟</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>stored verdict</source>
+        <translation>已保存的判定</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>verdict, not stored</source>
+        <translation>判定（未保存）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Result: &lt;span style=&apos;color:%1&apos;&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/span&gt;</source>
+        <translation>结果：&lt;span style=&apos;color:%1&apos;&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source> (incomplete run: %1; the data recorded give %2)</source>
+        <translation>（运行不完整：%1；已记录的数据给出 %2）</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>  ·  %1 (limit %2 ms)</source>
+        <translation>  ·  %1（限值 %2 ms）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&lt;br&gt;Test point: &lt;span style=&apos;color:%1&apos;&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/span&gt; (its data give %3): %4</source>
+        <translation>&lt;br&gt;测试点：&lt;span style=&apos;color:%1&apos;&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/span&gt;（其数据给出 %3）：%4</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&lt;br&gt;Test point: &lt;span style=&apos;color:%1&apos;&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/span&gt;: %3</source>
+        <translation>&lt;br&gt;测试点：&lt;span style=&apos;color:%1&apos;&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/span&gt;：%3</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&lt;br&gt;&lt;span style=&apos;color:#a05000&apos;&gt;This version&apos;s analysis of the same data with the stored settings differs from the stored result (%1); the verdict shown is the stored one. Re-analyse the session (Sessions) to store this version&apos;s result.&lt;/span&gt;</source>
+        <translation>&lt;br&gt;&lt;span style=&apos;color:#a05000&apos;&gt;本版本用已保存的设置对同一数据的分析与已保存结果不同（%1）；显示的判定以已保存的为准。在“会话”中重新分析即可保存本版本的结果。&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <location line="+20"/>
         <source>&lt;b&gt;lag %1 ± %2 ms&lt;/b&gt;  ·  IMU delay %3 ms  ·  gyro&apos;s own delay %4 ms</source>
         <translation>&lt;b&gt;滞后 %1 ± %2 ms&lt;/b&gt;  ·  IMU 延迟 %3 ms  ·  陀螺自身延迟 %4 ms</translation>
     </message>
@@ -3705,12 +3874,7 @@ File: %1</source>
         <translation>  ·  &lt;span style=&apos;color:#b00000&apos;&gt;运行未完成&lt;/span&gt;</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>&lt;br&gt;&lt;span style=&apos;color:#a05000&apos;&gt;The stored result gives IMU delay %1 ms (%2); shown is this version&apos;s analysis with its constants.&lt;/span&gt;</source>
-        <translation>&lt;br&gt;&lt;span style=&apos;color:#a05000&apos;&gt;存储的结果给出 IMU 延迟 %1 ms（%2）；此处显示的是本版本用其常数所做的分析。&lt;/span&gt;</translation>
-    </message>
-    <message>
-        <location line="+5"/>
+        <location line="-82"/>
         <source>PASS</source>
         <translation>通过</translation>
     </message>
@@ -3725,22 +3889,7 @@ File: %1</source>
         <translation>无效</translation>
     </message>
     <message>
-        <location line="+12"/>
-        <source>IMU delay %1 ± %2 ms; + 2σ = %3 ms &lt; %4 ms limit (margin %5 ms)</source>
-        <translation>IMU 延迟 %1 ± %2 ms；+ 2σ = %3 ms &lt; 限值 %4 ms（余量 %5 ms）</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>IMU delay %1 ± %2 ms; + 2σ = %3 ms ≥ %4 ms limit (over by %5 ms)</source>
-        <translation>IMU 延迟 %1 ± %2 ms；+ 2σ = %3 ms ≥ 限值 %4 ms（超出 %5 ms）</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>&lt;span style=&apos;color:%1&apos;&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/span&gt; (limit %3 ms): %4</source>
-        <translation>&lt;span style=&apos;color:%1&apos;&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/span&gt;（限值 %3 ms）：%4</translation>
-    </message>
-    <message>
-        <location line="+7"/>
+        <location line="+88"/>
         <location line="+8"/>
         <location line="+48"/>
         <source>table</source>
@@ -3816,7 +3965,7 @@ File: %1</source>
 <context>
     <name>fog::ui::SessionBrowser</name>
     <message>
-        <location filename="../../ui/session_browser.cpp" line="+35"/>
+        <location filename="../../ui/session_browser.cpp" line="+20"/>
         <source>Folder</source>
         <translation>文件夹</translation>
     </message>
@@ -3871,6 +4020,11 @@ File: %1</source>
         <translation>IMU 延迟 (ms)</translation>
     </message>
     <message>
+        <location line="+0"/>
+        <source>Verdict</source>
+        <translation>判定</translation>
+    </message>
+    <message>
         <location line="+18"/>
         <source>Open (read-only)</source>
         <translation>打开（只读）</translation>
@@ -3882,11 +4036,11 @@ File: %1</source>
     </message>
     <message>
         <location line="+2"/>
-        <source>Adds a new result to the session; its raw data never changes</source>
-        <translation>向会话添加一条新结果；原始数据不会改变</translation>
+        <source>Adds a new result to the session, analysed with the bench constants, gyro signs and limit (Tools → Bench constants); its raw data and earlier results never change</source>
+        <translation>按测试台常数、陀螺符号和限值（工具 → 测试台常数）分析，并向会话添加一个新结果；其原始数据和先前的结果都不会改变</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Compare the selected</source>
         <translation>比较所选会话</translation>
     </message>
@@ -3936,7 +4090,7 @@ File: %1</source>
         <translation>未完成：%1</translation>
     </message>
     <message numerus="yes">
-        <location line="+6"/>
+        <location line="+9"/>
         <source>%n session(s)</source>
         <translation>
             <numerusform>%n 个会话</numerusform>
@@ -4658,6 +4812,41 @@ File: %1</source>
         <location line="+1"/>
         <source>the gyro&apos;s %1 axis turns against the table (gyro/table ratio %2): the axis is mounted the other way round or its sign convention differs from the table&apos;s; the delay is refused (read as a normal axis it would be a half-period lag). If the IMU is mounted so, state it (metadata bench.gyro_sign {&quot;%3&quot;: -1}, or --gyro-sign %4=-1) and analyse again</source>
         <translation>陀螺的 %1 轴与转台反向转动（陀螺/转台比 %2）：该轴装反了，或其符号约定与转台不同；延迟被拒绝（按正常轴读取会是半个周期的滞后）。如果 IMU 就是这样安装的，请声明（元数据 bench.gyro_sign {&quot;%3&quot;: -1}，或 --gyro-sign %4=-1）后重新分析</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>test point %1: IMU delay %2 ms stored, %3 ms by this version&apos;s analysis</source>
+        <translation>测试点 %1：已保存的 IMU 延迟为 %2 ms，本版本的分析为 %3 ms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>test point %1: %2 stored, %3 by this version&apos;s analysis</source>
+        <translation>测试点 %1：已保存为 %2，本版本的分析为 %3</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>pass</source>
+        <translation>通过</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>fail</source>
+        <translation>不通过</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>invalid</source>
+        <translation>无效</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>test point %1: the stored result has no delay for it; this version&apos;s analysis gives one</source>
+        <translation>测试点 %1：已保存的结果中没有其延迟；本版本的分析给出了延迟</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>test point %1: the stored result has a delay; this version&apos;s analysis gives none</source>
+        <translation>测试点 %1：已保存的结果中有其延迟；本版本的分析未给出延迟</translation>
     </message>
     <message>
         <location line="+1"/>

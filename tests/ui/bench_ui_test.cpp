@@ -24,6 +24,9 @@
 #include <QFile>
 #include <QGroupBox>
 #include <QLabel>
+#include <QJsonObject>
+#include <QJsonDocument>
+#include <QJsonArray>
 #include <QProcess>
 #include <QTcpSocket>
 #include <QProgressBar>
@@ -35,6 +38,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 #include <algorithm>
+#include <functional>
+#include <optional>
 #include <cmath>
 #include <qwt_plot.h>
 #include <qwt_plot_barchart.h>
@@ -49,6 +54,7 @@
 #include "core/diagnosis/effects.h"
 #include "core/io/csv_export.h"
 #include "core/session/session_file.h"
+#include "ui/bench_settings_dialog.h"
 #include "ui/commanded_motion.h"
 #include "ui/compare_view.h"
 #include "ui/configure_view.h"
@@ -542,7 +548,7 @@ class BenchUiTest : public QObject {
     // The calibration report of what is shown.
     QTemporaryDir dir;
     const QString pdf = dir.filePath("report.pdf");
-    const auto written = w->resultView()->writeReportPdf(pdf, 0.8);
+    const auto written = w->resultView()->writeReportPdf(pdf);
     QVERIFY2(written.isOk(), written.message().c_str());
     QFile file(pdf);
     QVERIFY(file.open(QIODevice::ReadOnly));
@@ -574,6 +580,201 @@ class BenchUiTest : public QObject {
     // the stop varies.
     QVERIFY((*reader)->rawByteCount() >= 3000u * 25u);
     QVERIFY(button(*w, "runButton")->isEnabled());
+  }
+
+  // A stored result is a record (docs/sessions.md, "Stored results"): a
+  // result stored INVALID by `fogbench-cli analyze --gyro-sign x=-1` (here
+  // stored exactly as analyze stores it) is INVALID in Results, Sessions,
+  // Compare and the PDF, never a re-judged PASS; a run stopped early is
+  // INCOMPLETE in each. The GUI's gyro signs and limit are stored with a
+  // re-analysis.
+  void storedResultsShowTheirStoredVerdict() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    fog::TestPlan plan;
+    plan.points = {fog::TestPoint{fog::Axis::kX, 2.0, 2.0, 10.0, 0.3}};
+    auto record = [&](const QString& path, std::function<std::optional<std::string>()> shouldEnd) {
+      auto source = fog::acquisition::SimulatorSource::create(fog::model::SimConfig{}, plan, 0.0);
+      QVERIFY(source.isOk());
+      fog::acquisition::AcquisitionOptions options;
+      options.sessionPath = path.toStdString();
+      options.info.plan = plan;
+      options.shouldEnd = std::move(shouldEnd);
+      QVERIFY(fog::acquisition::acquire(**source, options, nullptr).isOk());
+    };
+    const QString reversed = dir.filePath("reversed.fbs");
+    record(reversed, {});
+    {
+      // What `fogbench-cli analyze reversed.fbs --gyro-sign x=-1` stores.
+      auto reader = fog::session::SessionReader::open(reversed.toStdString());
+      QVERIFY(reader.isOk());
+      auto recording = (*reader)->recording();
+      QVERIFY(recording.isOk());
+      auto constants = fog::analysis::benchConstantsOf((*reader)->info().bench);
+      constants.gyroSign = {-1, 1, 1};
+      auto report = fog::analysis::analyzeRecording(*recording, constants);
+      QVERIFY(report.isOk());
+      reader->reset();
+      fog::analysis::ReportContext context;
+      QVERIFY(fog::session::addResult(reversed.toStdString(),
+                                      fog::acquisition::analysisSettingsJson(constants, 0.8, "fogbench-cli analyze"),
+                                      fog::analysis::formatReportJson(*report, context))
+                  .isOk());
+    }
+    // Stopped after about 3 s of its 10.3 s, as the operator's Stop does.
+    const QString stopped = dir.filePath("stopped.fbs");
+    int loops = 0;
+    record(stopped, [&]() -> std::optional<std::string> {
+      if (++loops < 12) return std::nullopt;  // 0.25 s of stream per read at full speed
+      return std::string("stopped by the operator after 3.0 s");
+    });
+
+    auto w = window();
+    // The GUI's own limit and signs are not the record's: they change nothing shown.
+    w->setAnalysisChoices(fog::ui::AnalysisChoices{{1, 1, 1}, 5.0});
+    QSignalSpy opened(w.get(), &MainWindow::sessionOpened);
+    w->openSession(reversed);
+    QTRY_VERIFY_WITH_TIMEOUT(!opened.isEmpty(), 30000);
+    auto* results = w->resultView();
+    const QString verdict = w->findChild<QLabel*>("verdictLabel")->text();
+    QVERIFY2(verdict.contains("INVALID") && !verdict.contains("PASS") && verdict.contains("stored verdict") &&
+                 verdict.contains("limit 0.800 ms") && verdict.contains("turns against the table"),
+             qPrintable(verdict));
+    QVERIFY2(results->resultDescription().startsWith("result 2 of 2: INVALID") &&
+                 results->resultDescription().contains("gyro sign −1 on X"),
+             qPrintable(results->resultDescription()));
+    // Re-analysed with exactly the stored settings (the gyro sign -1) for the
+    // plots: it agrees with the record, so no note.
+    QVERIFY(w->lastOutcome()->differences.empty());
+    QCOMPARE(w->lastOutcome()->report->points.front().gyroSign, -1);
+    QVERIFY(results->reportText().contains("Stored verdict: INVALID"));
+    QStringList drawn;
+    auto input = results->reportInput();
+    QVERIFY(input.isOk());
+    QVERIFY(fog::report::renderCalibrationPages(*input, 30, &drawn).isOk());
+    QVERIFY2(drawn.contains("INVALID") && !drawn.join("\n").contains("PASS"), qPrintable(drawn.join("\n").left(3000)));
+    const QString pdf = dir.filePath("reversed.pdf");
+    QVERIFY(results->writeReportPdf(pdf).isOk());
+
+    // The older result (PASS as stored) stays PASS when chosen: a record each.
+    QSignalSpy chosen(w.get(), &MainWindow::resultShown);
+    emit results->resultCombo()->activated(0);
+    QTRY_VERIFY_WITH_TIMEOUT(!chosen.isEmpty(), 30000);
+    QVERIFY(w->findChild<QLabel*>("verdictLabel")->text().contains("PASS"));
+    QVERIFY(results->resultDescription().startsWith("result 1 of 2: PASS"));
+
+    // The stopped run.
+    opened.clear();
+    w->openSession(stopped);
+    QTRY_VERIFY_WITH_TIMEOUT(!opened.isEmpty(), 30000);
+    const QString stoppedVerdict = w->findChild<QLabel*>("verdictLabel")->text();
+    QVERIFY2(stoppedVerdict.contains("INCOMPLETE") && stoppedVerdict.contains("stopped by the operator") &&
+                 !stoppedVerdict.contains("<b>PASS</b>"),
+             qPrintable(stoppedVerdict));
+    drawn.clear();
+    input = results->reportInput();
+    QVERIFY(input.isOk());
+    QVERIFY(fog::report::renderCalibrationPages(*input, 30, &drawn).isOk());
+    QVERIFY2(drawn.contains("INCOMPLETE") && !drawn.contains("PASS"), qPrintable(drawn.join("\n").left(3000)));
+
+    // Sessions: the verdict column.
+    w->showView(MainWindow::kSessions);
+    auto* browser = w->sessionBrowser();
+    browser->setFolder(dir.path());
+    settle();
+    auto* table = browser->table();
+    QCOMPARE(table->horizontalHeaderItem(6)->text(), QString("Verdict"));
+    QMap<QString, QString> shown;
+    for (int r = 0; r < table->rowCount(); ++r) shown[table->item(r, 0)->text()] = table->item(r, 6)->text();
+    QCOMPARE(shown.value("reversed.fbs"), QString("INVALID (2 of 2)"));
+    QCOMPARE(shown.value("stopped.fbs"), QString("INCOMPLETE (1 of 1)"));
+
+    // Compare: each session's stored verdict.
+    browser->table()->clearSelection();
+    browser->table()->setSelectionMode(QAbstractItemView::MultiSelection);
+    QVERIFY(browser->selectPath(reversed));
+    QVERIFY(browser->selectPath(stopped));
+    click(*w, "compareButton");
+    auto* compareView = w->findChild<QWidget*>("compareWindow")->findChild<fog::ui::CompareView*>();
+    QVERIFY(compareView);
+    QTRY_VERIFY_WITH_TIMEOUT(compareView->allLoaded(), 30000);
+    auto* sessions = compareView->findChild<QTableWidget*>("compareSessionTable");
+    QVERIFY(sessions);
+    QStringList rows;
+    for (int r = 0; r < sessions->rowCount(); ++r) rows << sessions->item(r, 5)->text();
+    QVERIFY2(rows.size() == 2 && rows[0].startsWith("INVALID (stored, limit 0.800 ms)") &&
+                 rows[1].startsWith("INCOMPLETE (stored"),
+             qPrintable(rows.join("\n")));
+    QVERIFY(compareView->differenceTable()->item(0, 1)->text().endsWith("INVALID"));
+    w->findChild<QWidget*>("compareWindow")->close();
+
+    // A record this version's analysis does not reproduce (its IMU delay
+    // changed by 0.01 ms, its verdict FAIL): the stored FAIL is shown, and a
+    // note says the analysis differs and offers re-analysis.
+    {
+      auto reader = fog::session::SessionReader::open(reversed.toStdString());
+      QVERIFY(reader.isOk());
+      auto recording = (*reader)->recording();
+      QVERIFY(recording.isOk());
+      const auto constants = fog::analysis::benchConstantsOf((*reader)->info().bench);
+      auto report = fog::analysis::analyzeRecording(*recording, constants);
+      QVERIFY(report.isOk());
+      reader->reset();
+      QJsonObject doc = QJsonDocument::fromJson(QByteArray::fromStdString(fog::analysis::formatReportJson(
+                                                    *report, fog::analysis::ReportContext{})))
+                            .object();
+      QJsonArray points = doc["test_points"].toArray();
+      QJsonObject point = points[0].toObject();
+      point["imu_delay_ms"] = point["imu_delay_ms"].toDouble() + 0.01;
+      point["verdict"] = "fail";
+      points[0] = point;
+      doc["test_points"] = points;
+      doc["verdict"] = "fail";
+      QVERIFY(fog::session::addResult(reversed.toStdString(),
+                                      fog::acquisition::analysisSettingsJson(constants, 0.8, "an older fogbench"),
+                                      QJsonDocument(doc).toJson().toStdString())
+                  .isOk());
+    }
+    opened.clear();
+    w->openSession(reversed);
+    QTRY_VERIFY_WITH_TIMEOUT(!opened.isEmpty(), 30000);
+    QCOMPARE(w->lastOutcome()->differences.size(), std::size_t{2});
+    const QString differing = w->findChild<QLabel*>("verdictLabel")->text();
+    QVERIFY2(differing.contains("<b>FAIL</b>") && differing.contains("differs from the stored result") &&
+                 differing.contains("Re-analyse") && differing.contains("pass by this version's analysis"),
+             qPrintable(differing));
+
+    // The bench-constants dialog sets what the CLI sets: gyro signs, limit.
+    {
+      fog::ui::BenchSettingsDialog dialog(w->benchSettings(), fog::ui::AnalysisChoices{{1, 1, -1}, 0.6});
+      auto* z = dialog.findChild<QComboBox*>("gyroSignZCombo");
+      auto* limit = dialog.findChild<QDoubleSpinBox*>("limitSpin");
+      QVERIFY(z && limit && dialog.findChild<QComboBox*>("gyroSignXCombo"));
+      QCOMPARE(z->currentData().toInt(), -1);
+      QCOMPARE(limit->value(), 0.6);
+      z->setCurrentIndex(0);
+      limit->setValue(0.5);
+      QCOMPARE(dialog.analysisChoices().gyroSign[2], 1);
+      QCOMPARE(dialog.analysisChoices().imuDelayLimitMs, 0.5);
+    }
+
+    // A re-analysis stores the GUI's gyro signs and limit with its result.
+    w->setAnalysisChoices(fog::ui::AnalysisChoices{{-1, 1, 1}, 0.5});
+    opened.clear();
+    QSignalSpy reanalysed(w.get(), &MainWindow::reanalysed);
+    w->reanalyseSession(reversed);
+    QTRY_VERIFY_WITH_TIMEOUT(!reanalysed.isEmpty(), 30000);
+    if (auto* box = w->findChild<QMessageBox*>("infoDialog")) box->close();
+    auto reader = fog::session::SessionReader::open(reversed.toStdString());
+    QVERIFY(reader.isOk());
+    const auto stored = *(*reader)->results();
+    QCOMPARE(stored.size(), std::size_t{4});
+    const auto newest = fog::acquisition::readStoredResult(stored.back(), {});
+    QCOMPARE(newest.constants.gyroSign[0], -1);
+    QVERIFY(newest.gyroSignStated);
+    QCOMPARE(newest.imuDelayLimitMs, 0.5);
+    QCOMPARE(newest.verdict, std::string("invalid"));
+    QVERIFY(newest.analysedBy == "fogbench GUI");
   }
 
   // A saved session opens read-only in the browser; re-analysis adds a
@@ -638,7 +839,7 @@ class BenchUiTest : public QObject {
     QVERIFY(results->reportText().contains(newest));
     auto reportOf = [&] {
       QStringList drawn;
-      auto input = results->reportInput(0.8);
+      auto input = results->reportInput();
       if (!input.isOk() || !fog::report::renderCalibrationPages(*input, 30, &drawn).isOk()) return QString();
       return drawn.join("\n");
     };
@@ -1258,7 +1459,7 @@ class BenchUiTest : public QObject {
     // The reason does not fit: the column elides it instead of widening.
     QVERIFY(table->fontMetrics().horizontalAdvance(longest->text()) > table->columnWidth(5));
     auto* header = table->horizontalHeader();
-    for (int column : {6, 7})
+    for (int column : {6, 7, 8})
       QVERIFY2(header->sectionViewportPosition(column) + header->sectionSize(column) <= table->viewport()->width(),
                qPrintable(QString("column %1 ends at %2 of %3").arg(column)
                               .arg(header->sectionViewportPosition(column) + header->sectionSize(column))
@@ -1510,7 +1711,7 @@ class BenchUiTest : public QObject {
     QVERIFY2(QFileInfo(pdf).fileName().startsWith("calibration-report-SN_77_b-" + date), qPrintable(pdf));
     QVERIFY(pdf.endsWith(".pdf"));
     QVERIFY(!w->findChild<QAction*>("openExportFolderAction")->isEnabled() || w->lastExport().isEmpty());
-    const auto written = w->resultView()->exportReportTo(pdf, 0.8);
+    const auto written = w->resultView()->exportReportTo(pdf);
     QVERIFY2(written.isOk(), written.message().c_str());
     QVERIFY(QFile::exists(pdf));
     QCOMPARE(w->lastExport(), pdf);

@@ -16,6 +16,7 @@
 #include "core/acquisition/acquisition.h"
 #include "core/acquisition/replay_source.h"
 #include "core/acquisition/simulator_source.h"
+#include "core/acquisition/stored_result.h"
 #include "core/analysis/delay_analysis.h"
 #include "core/analysis/report_writer.h"
 #include "core/analysis/verdict.h"
@@ -140,6 +141,7 @@ class CoreTextTest : public QObject {
 
   void analysisVerdictsAndValidityChecks() {
     const Recording rec = simulated({}, 23);
+    std::string storedJson;
     for (int sign : {1, -1}) {
       analysis::BenchConstants constants;
       constants.gyroSign = {sign, sign, sign};
@@ -156,6 +158,23 @@ class CoreTextTest : public QObject {
       expectEveryLineChinese(analysis::formatReportText(*report, context));
       for (double limit : {0.1, 10.0})
         for (const auto& why : analysis::judgeReport(*report, limit).reasons) expectChinese(why);
+      // Where this version's analysis departs from a stored result (the
+      // Results view's and the PDF's note): the result stored with sign +1
+      // against the analysis with -1, and with points missing on either side.
+      if (sign == 1) {
+        storedJson = analysis::formatReportJson(*report, context);
+        continue;
+      }
+      const session::StoredResult stored{1, "2026-11-26T07:00:00Z", "{}", storedJson, true};
+      auto record = acquisition::readStoredResult(stored, {});
+      auto differences = acquisition::differencesFromRecord(record, *report);
+      QVERIFY(!differences.empty());
+      analysis::DelayReport none = *report;
+      none.points.clear();
+      for (const auto& d : acquisition::differencesFromRecord(record, none)) differences.push_back(d);
+      record.points.clear();
+      for (const auto& d : acquisition::differencesFromRecord(record, *report)) differences.push_back(d);
+      for (const auto& d : differences) expectChinese(d);
     }
   }
 

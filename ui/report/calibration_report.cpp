@@ -774,7 +774,7 @@ Result<Content> prepare(const ReportInput& in) {
   if (auto s = checkReportInput(in); !s.isOk()) return s;
   if (!qobject_cast<QApplication*>(QCoreApplication::instance()))
     return Status(StatusCode::kInternal, "the report's plots need a QApplication");
-  Content c{in, calibrationVerdict(in.delays, in.imuDelayLimitMs), rawDataSha256(in.rawBytes), {},
+  Content c{in, calibrationVerdict(in), rawDataSha256(in.rawBytes), {},
             QDateTime::currentDateTimeUtc().toString(Qt::ISODate), {}};
   const double scale = in.recording.pulseEquivalentDeg > 0.0 ? 1.0 : in.delays.constants.pulseEquivalentDeg;
   for (const auto& p : in.delays.points) {
@@ -867,6 +867,95 @@ Verdict calibrationVerdict(const DelayReport& delays, double limitMs) {
                      .arg(limitText(limitMs))
                      .arg(failed)
                      .arg(total);
+  }
+  return v;
+}
+
+namespace {
+// A test point of an incomplete run has no verdict of its own: INCOMPLETE,
+// with what its data give.
+void markIncomplete(PointVerdict& p) {
+  p.pass = false;
+  p.line = QObject::tr("INCOMPLETE (the run stopped early); its data give %1").arg(p.line);
+  p.word = QStringLiteral("INCOMPLETE");
+}
+}  // namespace
+
+Verdict calibrationVerdict(const ReportInput& in) {
+  // The verdict words stay as the report has always printed them (the
+  // rule's names, upper case), in every language.
+  auto word = [](const std::string& v) {
+    return v.empty() ? QStringLiteral("NO VERDICT") : QString::fromStdString(v).toUpper();
+  };
+  if (!in.stored) {
+    Verdict v = calibrationVerdict(in.delays, in.imuDelayLimitMs);
+    if (in.incompleteReason.empty()) return v;
+    const QString data = v.word;
+    v.pass = false;
+    v.word = word("incomplete");
+    for (auto& p : v.points) markIncomplete(p);
+    v.headline = QObject::tr("INCOMPLETE: the run stopped before its plan ended (%1); no calibration verdict. The "
+                             "data recorded give %2.")
+                     .arg(coreText(in.incompleteReason), data);
+    return v;
+  }
+  // The record, as stored.
+  const acquisition::StoredResultRecord& r = *in.stored;
+  Verdict v;
+  v.pass = r.verdict == "pass";
+  v.word = word(r.verdict);
+  int failed = 0, invalid = 0;
+  for (const auto& p : in.delays.points) {
+    PointVerdict pv;
+    pv.index = p.index;
+    QStringList why;
+    if (const auto* sp = r.point(p.index)) {
+      pv.pass = sp->verdict == "pass";
+      pv.word = word(sp->verdict);
+      for (const auto& reason : sp->reasons) why << coreText(reason);
+      failed += sp->verdict == "fail";
+      invalid += sp->verdict == "invalid";
+    } else {
+      pv.word = word("");
+      why << QObject::tr("the stored result has no delay for this test point");
+    }
+    pv.line = pv.word + ": " + why.join("; ");
+    if (r.verdict == "incomplete") markIncomplete(pv);
+    v.points.push_back(pv);
+  }
+  const auto total = static_cast<int>(r.points.size());
+  const QString limit = limitText(r.imuDelayLimitMs);
+  if (r.verdict == "pass") {
+    v.headline = QObject::tr("PASS: every test point passed its validity checks and its IMU delay + 2σ is below the "
+                             "%1 ms limit.")
+                     .arg(limit);
+  } else if (r.verdict == "fail") {
+    v.headline = QObject::tr("FAIL against the %1 ms limit: %2 of %3 test points exceed the limit.")
+                     .arg(limit)
+                     .arg(failed)
+                     .arg(total);
+  } else if (r.verdict == "invalid") {
+    QStringList why;
+    for (const auto& reason : r.verdictReasons) why << coreText(reason);
+    v.headline = QObject::tr("INVALID: the result cannot be vouched for: %1.")
+                     .arg(why.isEmpty() ? QObject::tr("%1 of %2 test points failed a validity check")
+                                              .arg(invalid)
+                                              .arg(total)
+                                        : why.join("; "));
+  } else if (r.verdict == "incomplete") {
+    v.headline = QObject::tr("INCOMPLETE: the run stopped before its plan ended (%1); no calibration verdict. The "
+                             "data recorded give %2.")
+                     .arg(coreText(r.incompleteReason), word(r.dataVerdict));
+  } else {
+    v.headline = QObject::tr("NO VERDICT: the stored result states none; re-analyse the session to store one.");
+  }
+  const auto differences = acquisition::differencesFromRecord(r, in.delays);
+  if (!differences.empty()) {
+    QStringList d;
+    for (const auto& s : differences) d << coreText(s);
+    v.headline += " " + QObject::tr("This version's analysis of the same data with the stored settings differs from "
+                                    "the stored result (%1); the verdict is the stored one.")
+                            .arg(d.join("; "));
   }
   return v;
 }

@@ -12,6 +12,10 @@
 // the IMU's identity and a footer with the session, the raw data hash and
 // "page n of N".
 //
+// The verdict of a stored result is printed as stored (its word, reasons and
+// limit: ReportInput::stored), never re-judged; an incomplete run's verdict
+// is INCOMPLETE, whatever its data give.
+//
 // Acceptance rule (analysis/verdict.h): a test point is INVALID when a
 // validity check failed; otherwise it PASSES when IMU delay + 2 sigma < limit
 // (one-sided, k = 2) and FAILS if not. The session passes when every test
@@ -24,8 +28,11 @@
 #include <QString>
 #include <QStringList>
 #include <cstdint>
+#include <optional>
+#include <string>
 #include <vector>
 
+#include "core/acquisition/stored_result.h"
 #include "core/analysis/delay_analysis.h"
 #include "core/common/recording.h"
 #include "core/common/session_info.h"
@@ -46,6 +53,14 @@ struct ReportInput {
   // report prints it on its first page. Empty: computed for the report
   // (fogbench-cli report), with the constants it shows.
   QString resultShown;
+  // The stored result the report shows: its verdict, reasons and limit are
+  // printed as stored (imuDelayLimitMs is then the record's). Unset: a
+  // report of data no result was stored for, judged here with
+  // imuDelayLimitMs.
+  std::optional<acquisition::StoredResultRecord> stored;
+  // Unset `stored` only: why the run stopped early ("" for a complete run);
+  // the verdict is then INCOMPLETE.
+  std::string incompleteReason;
 };
 
 // SHA-256 of the bytes, 64 lower-case hex digits; empty for no bytes.
@@ -63,11 +78,16 @@ struct PointVerdict {
 };
 struct Verdict {
   bool pass = false;
-  QString word;      // "PASS", "FAIL" or "INVALID"
+  QString word;      // "PASS", "FAIL", "INVALID" or "INCOMPLETE"
   QString headline;  // the word and the reason in a few words
   std::vector<PointVerdict> points;  // one per analysed test point, report order
 };
 Verdict calibrationVerdict(const analysis::DelayReport& delays, double imuDelayLimitMs);
+// The verdict the report of `in` prints: the stored record's when there is
+// one (points in delays' order, matched by index), else judged as above;
+// INCOMPLETE for an incomplete run. When this version's analysis (in.delays)
+// differs from the stored record the headline says so.
+Verdict calibrationVerdict(const ReportInput& in);
 
 // Checks what the drawing needs: a finite limit > 0, and recording data for
 // every analysed test point.

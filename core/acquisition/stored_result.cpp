@@ -1,0 +1,186 @@
+#include "core/acquisition/stored_result.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+
+#include "core/common/version.h"
+
+namespace fog::acquisition {
+
+namespace {
+
+using nlohmann::json;
+
+double numberOr(const json& o, const char* key, double fallback) {
+  if (!o.is_object()) return fallback;
+  const auto it = o.find(key);
+  return it != o.end() && it->is_number() ? it->get<double>() : fallback;
+}
+
+std::string textOr(const json& o, const char* key, const std::string& fallback = {}) {
+  if (!o.is_object()) return fallback;
+  const auto it = o.find(key);
+  return it != o.end() && it->is_string() ? it->get<std::string>() : fallback;
+}
+
+std::vector<std::string> texts(const json& o, const char* key) {
+  std::vector<std::string> out;
+  if (!o.is_object()) return out;
+  const auto it = o.find(key);
+  if (it == o.end() || !it->is_array()) return out;
+  for (const auto& v : *it)
+    if (v.is_string()) out.push_back(v.get<std::string>());
+  return out;
+}
+
+}  // namespace
+
+const StoredPointVerdict* StoredResultRecord::point(int index) const {
+  for (const auto& p : points)
+    if (p.index == index) return &p;
+  return nullptr;
+}
+
+StoredResultRecord readStoredResult(const session::StoredResult& stored, const analysis::BenchConstants& fallback) {
+  StoredResultRecord r;
+  r.id = stored.id;
+  r.createdUtc = stored.createdUtc;
+  r.constants = fallback;
+  r.constants.gyroSign = {1, 1, 1};  // what every row before gyro signs were stored was analysed with
+  if (!stored.intact) {
+    r.problem = "the stored result fails its checksum";
+    return r;
+  }
+  const json settings = json::parse(stored.settingsJson, nullptr, false);
+  const json report = json::parse(stored.reportJson, nullptr, false);
+  if (!settings.is_object()) {
+    r.problem = "the stored settings are not a JSON object";
+    return r;
+  }
+  if (!report.is_object()) {
+    r.problem = "the stored report is not a JSON object";
+    return r;
+  }
+  r.usable = true;
+  r.softwareVersion = textOr(settings, "software_version");
+  r.analysedBy = textOr(settings, "analysed_by");
+  const json reported = report.is_object() && report.contains("constants") ? report["constants"] : json();
+  auto constant = [&](const char* key, double otherwise) {
+    return numberOr(settings, key, numberOr(reported, key, otherwise));
+  };
+  auto& c = r.constants;
+  c.tableReadDelayMs = constant("table_read_delay_ms", fallback.tableReadDelayMs);
+  c.tableReadDelayStdMs = constant("table_read_delay_std_ms", fallback.tableReadDelayStdMs);
+  c.boardDelayMs = constant("board_delay_ms", fallback.boardDelayMs);
+  c.boardDelayStdMs = constant("board_delay_std_ms", fallback.boardDelayStdMs);
+  c.pulseEquivalentDeg = constant("pulse_equivalent_deg", fallback.pulseEquivalentDeg);
+  if (settings.contains("gyro_sign") && settings["gyro_sign"].is_object()) {
+    r.gyroSignStated = true;
+    for (int a = 0; a < kAxisCount; ++a) {
+      const double s = numberOr(settings["gyro_sign"], axisName(static_cast<Axis>(a)), 1.0);
+      c.gyroSign[static_cast<std::size_t>(a)] = s < 0 ? -1 : 1;
+    }
+  }
+  // A row stored before its settings held the signs: its report states the
+  // sign applied to each analysed test point's swing axis (`gyro_sign`), so
+  // e.g. an older `analyze --gyro-sign x=-1` is still reviewed with -1.
+  if (!r.gyroSignStated && report.contains("test_points") && report["test_points"].is_array())
+    for (const auto& tp : report["test_points"]) {
+      const std::string axis = textOr(tp, "axis");
+      const double sign = numberOr(tp, "gyro_sign", 0.0);
+      for (int a = 0; a < kAxisCount; ++a)
+        if (axis == axisName(static_cast<Axis>(a)) && sign != 0.0) {
+          c.gyroSign[static_cast<std::size_t>(a)] = sign < 0 ? -1 : 1;
+          r.gyroSignStated = true;
+        }
+    }
+  // The limit the verdict used: the report's own field is what judged it.
+  const double limit = numberOr(report, "imu_delay_limit_ms", numberOr(settings, "imu_delay_limit_ms", NAN));
+  if (std::isfinite(limit) && limit > 0.0) {
+    r.imuDelayLimitMs = limit;
+    r.limitStated = true;
+  }
+  r.verdict = textOr(report, "verdict");
+  r.verdictReasons = texts(report, "verdict_reasons");
+  r.dataVerdict = textOr(report, "data_verdict");
+  if (report.contains("run") && report["run"].is_object()) {
+    r.incompleteReason = textOr(report["run"], "incomplete_reason", "the run ended early");
+    r.recordedS = numberOr(report["run"], "recorded_s", 0.0);
+    r.plannedS = numberOr(report["run"], "planned_s", 0.0);
+  }
+  if (report.contains("test_points") && report["test_points"].is_array())
+    for (const auto& tp : report["test_points"]) {
+      if (!tp.is_object() || !tp.contains("index") || !tp["index"].is_number_integer()) continue;
+      StoredPointVerdict p;
+      p.index = tp["index"].get<int>();
+      p.verdict = textOr(tp, "verdict");
+      p.reasons = texts(tp, "verdict_reasons");
+      p.lagMs = numberOr(tp, "lag_ms", NAN);
+      p.imuDelayMs = numberOr(tp, "imu_delay_ms", NAN);
+      p.imuDelayStdMs = numberOr(tp, "imu_delay_std_ms", NAN);
+      r.points.push_back(std::move(p));
+    }
+  return r;
+}
+
+std::vector<StoredResultRecord> readStoredResults(const std::vector<session::StoredResult>& stored,
+                                                  const analysis::BenchConstants& fallback) {
+  std::vector<StoredResultRecord> out;
+  out.reserve(stored.size());
+  for (const auto& s : stored) out.push_back(readStoredResult(s, fallback));
+  return out;
+}
+
+const StoredResultRecord* newestUsable(const std::vector<StoredResultRecord>& records) {
+  for (auto r = records.rbegin(); r != records.rend(); ++r)
+    if (r->usable) return &*r;
+  return nullptr;
+}
+
+std::vector<std::string> differencesFromRecord(const StoredResultRecord& record, const analysis::DelayReport& now) {
+  std::vector<std::string> out;
+  char buf[256];
+  for (const auto& p : now.points) {
+    const StoredPointVerdict* s = record.point(p.index);
+    const std::string tp = "test point " + std::to_string(p.index + 1);
+    if (!s) {
+      out.push_back(tp + ": the stored result has no delay for it; this version's analysis gives one");
+      continue;
+    }
+    // Rounding: the JSON keeps 17 digits; 1e-6 ms is far below any reported digit.
+    if (!(std::abs(s->imuDelayMs - p.imuDelayMs) <= 1e-6)) {
+      std::snprintf(buf, sizeof buf, "%s: IMU delay %.4f ms stored, %.4f ms by this version's analysis", tp.c_str(),
+                    s->imuDelayMs, p.imuDelayMs);
+      out.push_back(buf);
+    }
+    const std::string judged = analysis::verdictName(analysis::judgePoint(p, record.imuDelayLimitMs).verdict);
+    if (!s->verdict.empty() && s->verdict != judged) out.push_back(tp + ": " + s->verdict + " stored, " + judged +
+                                                                   " by this version's analysis");
+  }
+  for (const auto& s : record.points) {
+    const bool analysed = std::any_of(now.points.begin(), now.points.end(),
+                                      [&](const analysis::TestPointResult& p) { return p.index == s.index; });
+    if (!analysed)
+      out.push_back("test point " + std::to_string(s.index + 1) +
+                    ": the stored result has a delay; this version's analysis gives none");
+  }
+  return out;
+}
+
+std::string analysisSettingsJson(const analysis::BenchConstants& c, double imuDelayLimitMs,
+                                 const std::string& producedBy) {
+  json doc = {{"table_read_delay_ms", c.tableReadDelayMs},
+              {"table_read_delay_std_ms", c.tableReadDelayStdMs},
+              {"board_delay_ms", c.boardDelayMs},
+              {"board_delay_std_ms", c.boardDelayStdMs},
+              {"pulse_equivalent_deg", c.pulseEquivalentDeg},
+              {"gyro_sign", {{"x", c.gyroSign[0]}, {"y", c.gyroSign[1]}, {"z", c.gyroSign[2]}}},
+              {"imu_delay_limit_ms", imuDelayLimitMs},
+              {"software_version", FOG_VERSION},
+              {"analysed_by", producedBy}};
+  return doc.dump();
+}
+
+}  // namespace fog::acquisition
