@@ -176,11 +176,19 @@ TEST(DiagnosisRobustness, AClockRunningBackwardsCannotGrowTheSimulatedStream) {
 
 TEST(DiagnosisRobustness, ASimulatedStreamOverItsFrameBudgetIsRefused) {
   model::SimConfig c;
-  c.encoder.samplePeriodS = 1e-12;  // a period "calibrated" from damaged stamps
+  c.encoder.samplePeriodS = 1e-12;  // a period "calibrated" from damaged stamps: not a chain at all
   c.encoder.readDelayS = 0.0;
   TestPlan plan;
   plan.points.push_back({Axis::kX, 1.0, 3.0, 4.0, 1.0, 0.0});
-  auto sim = model::Simulator::create(c, plan);
+  auto absurd = model::Simulator::create(c, plan);
+  ASSERT_FALSE(absurd.isOk());
+  EXPECT_NE(absurd.status().message().find("encoder sample period must be within"), std::string::npos);
+  // The shortest period a chain may have, 0.1 us, over a long point: a valid
+  // chain whose stream is over the frame budget.
+  c.encoder.samplePeriodS = 1e-7;
+  TestPlan longPlan;
+  longPlan.points.push_back({Axis::kX, 1.0, 3.0, 300.0, 1.0, 0.0});
+  auto sim = model::Simulator::create(c, longPlan);
   ASSERT_FALSE(sim.isOk());
   EXPECT_EQ(sim.status().code(), StatusCode::kOutOfRange);
   EXPECT_NE(sim.status().message().find("budget"), std::string::npos) << sim.status().toString();
