@@ -1,0 +1,434 @@
+// The diagnosis' calibration (diagnosis_stages.h): the session as analysed,
+// the replay calibrated to it, the Earth rate and the gyro biases, and the
+// memory budget of the replays.
+#include "core/diagnosis/diagnosis_stages.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+#include <optional>
+
+#include "core/common/parallel.h"
+#include "core/common/units.h"
+#include "core/model/simulator.h"
+
+namespace fog::diagnosis::detail {
+
+namespace {
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
+  return v[v.size() / 2];
+}
+
+// The sample period of a stream as recorded: the span of each test point's
+// stamps over the number of periods in it (the median interval rounds the
+// count, so lost frames do not bias it); the median over the test points.
+// 0 when no test point has two samples.
+template <typename Samples>
+double recordedPeriodS(const std::vector<TestPointData>& points, Samples TestPointData::*member) {
+  std::vector<double> periods;
+  for (const auto& tp : points) {
+    const auto& v = tp.*member;
+    if (v.size() < 2) continue;
+    std::vector<double> dt;
+    dt.reserve(v.size() - 1);
+    for (std::size_t k = 1; k < v.size(); ++k) dt.push_back(v[k].timeS - v[k - 1].timeS);
+    const double typical = median(std::move(dt));
+    const double span = v.back().timeS - v.front().timeS;
+    if (typical > 0.0 && span > 0.0) periods.push_back(span / std::max(1.0, std::round(span / typical)));
+  }
+  return median(std::move(periods));
+}
+
+// Sets the replay's chain so that its lag equals lagS, preferring the gyro's
+// own delay, then the board's processing time, then the table read delay.
+void setLag(model::SimConfig& c, double lagS, std::vector<std::string>& notes) {
+  const double loop = c.fog.loopDelayS(), update = c.fog.pulseUpdatePeriodS;
+  double own = lagS + c.encoder.readDelayS - c.imuBoard.boardDelayS();
+  double extra = 0.0;
+  if (own >= loop + 0.95 * update) {
+    extra = own - (loop + 0.5 * update);
+    own = loop + 0.5 * update;
+  } else if (own < loop) {
+    extra = own - loop;
+    own = loop;
+  }
+  c.fog.setOwnDelayS(own);
+  c.imuBoard.processingS += extra;
+  // The board must finish a frame within the frame period: a longer lag (a
+  // slow first-order lag) is left to the fitted session delay (nuisance).
+  c.imuBoard.processingS = std::min(c.imuBoard.processingS, 0.9 * c.imuBoard.framePeriodS - c.imuBoard.serialS());
+  if (c.imuBoard.processingS < 0.0) {
+    c.encoder.readDelayS = std::min(0.9 * c.encoder.samplePeriodS, c.encoder.readDelayS - c.imuBoard.processingS);
+    c.imuBoard.processingS = 0.0;
+  }
+  if (std::abs(c.trueLagS() - lagS) > 1e-9) notes.push_back("the replay cannot reach the measured lag exactly");
+}
+
+}  // namespace
+
+// The table's heading is not in a session, and the Earth rate it turns into
+// the body frame shows in every gyro's trend and cross-axis cells as the
+// geometry changes between points (a swing about X modulates what z senses
+// by Omega cos(lat) sin(h) sin(angle)). Its horizontal part in the table
+// frame, Omega cos(lat) (cos h, -sin h), enters the features linearly, as
+// does each gyro's bias: replays with zero bias at headings 0, 90 and 180
+// deg (common random numbers) give the columns, a second seed the cells'
+// spread, and weighted least squares on the trend and cross-axis cells
+// gives the heading and the three biases. When the plan leaves cos h or
+// sin h unseen (only X swings: sin h), the other is taken with cos h >= 0.
+Status calibrateEarthRateAndBias(Replay& replay, const std::vector<FeatureKey>& keys, const std::vector<double>& real,
+                                 const DiagnosisOptions& options, std::vector<std::string>& notes) {
+  Calibration& cal = replay.cal;
+  Replay base = replay;
+  base.cal.config.fog.biasDegPerH = {0.0, 0.0, 0.0};
+  const std::uint64_t seedA = options.seed + 1000, seedB = options.seed + 1001;
+  struct Run {
+    double headingDeg;
+    std::uint64_t seed;
+  };
+  const std::vector<Run> runs = {{0.0, seedA}, {0.0, seedB}, {90.0, seedA}, {180.0, seedA}};
+  static_assert(kCalibrationReplays == 4);
+  std::vector<Result<FeatureSet>> out(runs.size(), Status(StatusCode::kInternal, "not run"));
+  parallelFor(runs.size(), options.threads, [&](std::size_t i) {
+    Replay r = base;
+    r.cal.config.earth.headingDeg = runs[i].headingDeg;
+    out[i] = r.run(runs[i].seed, {});
+  });
+  if (replay.progress && replay.progress->cancelled()) return cancelledByCaller();
+  for (auto& o : out) {
+    if (!o) return Status(o.status().code(), "replay (Earth-rate calibration): " + o.status().message());
+    if (o->values.size() != real.size())
+      return Status(StatusCode::kInternal, "the replay's features do not line up with the session's");
+  }
+  const auto& f0 = out[0]->values;
+  const auto& f0b = out[1]->values;
+  const auto& f90 = out[2]->values;
+  const auto& f180 = out[3]->values;
+  std::map<GroupKey, std::pair<double, double>> spread;  // sum of squares, count
+  for (std::size_t i = 0; i < keys.size(); ++i) {
+    auto& g = spread[groupKey(keys[i])];
+    g.first += 0.5 * (f0[i] - f0b[i]) * (f0[i] - f0b[i]);
+    g.second += 1.0;
+  }
+  std::vector<std::size_t> rows;
+  for (std::size_t i = 0; i < keys.size(); ++i)
+    // The Earth rate a swing modulates is a rate in phase with the angle, an
+    // angle in quadrature with it (and a trend); the in-phase cross cells are
+    // where misalignment shows, so they are left to the effect fit.
+    if (keys[i].channel == Channel::kGyro && (keys[i].quantity == Quantity::kTrend || keys[i].quantity == Quantity::kCrossQuadrature))
+      rows.push_back(i);
+  if (rows.size() < 6) return Status::ok();
+  const auto m = static_cast<Eigen::Index>(rows.size());
+  Eigen::MatrixXd a = Eigen::MatrixXd::Zero(m, 5);
+  Eigen::VectorXd y(m);
+  for (Eigen::Index r = 0; r < m; ++r) {
+    const std::size_t i = rows[static_cast<std::size_t>(r)];
+    const auto& g = spread[groupKey(keys[i])];
+    const double b = 0.5 * (f0[i] + f180[i]);
+    const double sigma = std::sqrt(g.first / std::max(1.0, g.second) + 1e-6 + 1e-6 * b * b);
+    a(r, 0) = 0.5 * (f0[i] - f180[i]) / sigma;  // times cos h
+    a(r, 1) = (b - f90[i]) / sigma;             // times -sin h
+    if (keys[i].quantity == Quantity::kTrend) a(r, 2 + keys[i].axis) = 1.0 / sigma;  // bias, deg/h
+    y(r) = (real[i] - b) / sigma;
+  }
+  // The horizontal Earth rate's size is the stated latitude's; its
+  // direction is searched (1-deg grid, then a parabola through the best
+  // three) on the quadrature cross cells alone, where the biases do not
+  // reach; then the biases are the trend cells' least-squares part at that
+  // heading. (Fitting both on all cells let an effect's trend pattern, e.g.
+  // g-sensitivity's -k cos(angle) on the vertical gyro, pull the heading.)
+  std::vector<Eigen::Index> biasCols;
+  for (Eigen::Index j = 2; j < 5; ++j)
+    if (a.col(j).squaredNorm() > 0.0) biasCols.push_back(j);
+  // Only cells the heading moves by more than their spread take part: where
+  // it does not (gyro y in a swing about X), its columns hold only the
+  // replays' re-drawn quantisation, which a large unmodelled signal there
+  // (g-sensitivity) would turn into a heading.
+  Eigen::VectorXd isTrend(m), inScan(m);
+  for (Eigen::Index r = 0; r < m; ++r) {
+    isTrend(r) = keys[rows[static_cast<std::size_t>(r)]].quantity == Quantity::kTrend ? 1.0 : 0.0;
+    inScan(r) = isTrend(r) == 0.0 && std::hypot(a(r, 0), a(r, 1)) > 2.0 ? 1.0 : 0.0;
+  }
+  Eigen::MatrixXd t(m, static_cast<Eigen::Index>(biasCols.size()));
+  for (std::size_t j = 0; j < biasCols.size(); ++j) t.col(static_cast<Eigen::Index>(j)) = a.col(biasCols[j]);
+  const auto qr = t.colPivHouseholderQr();
+  auto fitAt = [&](double hDeg, Eigen::VectorXd* bias) {
+    const double h = hDeg * kRadPerDeg;
+    const Eigen::VectorXd rest = y - std::cos(h) * a.col(0) + std::sin(h) * a.col(1);
+    if (bias) *bias = biasCols.empty() ? Eigen::VectorXd() : Eigen::VectorXd(qr.solve(rest.cwiseProduct(isTrend)));
+    return rest.cwiseProduct(inScan).squaredNorm();
+  };
+  if (inScan.sum() < 2.0) return Status::ok();
+  if (a.col(0).squaredNorm() + a.col(1).squaredNorm() <= 0.0) return Status::ok();
+  // A component the scanned cells do not see (less than 1 chi^2 between
+  // none and all of the horizontal Earth rate along it) leaves the heading
+  // two-fold: only X swings see sin h alone, so h and 180 - h fit alike,
+  // and the tie used to go to whichever rounded lower (180 deg for a table
+  // at 0). The convention is then cos h >= 0 (or sin h >= 0), and the note
+  // says so.
+  const bool cosSeen = a.col(0).cwiseProduct(inScan).squaredNorm() >= 1.0;
+  const bool sinSeen = a.col(1).cwiseProduct(inScan).squaredNorm() >= 1.0;
+  auto allowed = [&](int k) {
+    const double h = k * kRadPerDeg;
+    return (cosSeen || std::cos(h) >= -1e-12) && (sinSeen || std::sin(h) >= -1e-12);
+  };
+  std::vector<double> chi(360);
+  for (int k = 0; k < 360; ++k) chi[static_cast<std::size_t>(k)] = fitAt(k, nullptr);
+  int best = -1;
+  for (int k = 0; k < 360; ++k)
+    if (allowed(k) && (best < 0 || chi[static_cast<std::size_t>(k)] < chi[static_cast<std::size_t>(best)])) best = k;
+  const double cm = chi[static_cast<std::size_t>((best + 359) % 360)], c0 = chi[static_cast<std::size_t>(best)],
+               cp = chi[static_cast<std::size_t>((best + 1) % 360)];
+  const double curvature = cm - 2.0 * c0 + cp;  // per deg^2
+  const double offset = curvature > 0.0 ? std::clamp(0.5 * (cm - cp) / curvature, -0.5, 0.5) : 0.0;
+  double heading = best + offset;
+  if (heading > 180.0) heading -= 360.0;
+  Eigen::VectorXd biases;
+  fitAt(heading, &biases);
+  // From finite features the scan is finite; a replay's NaN would otherwise
+  // surface as "heading must be within [-360, 360] deg".
+  if (!std::isfinite(heading) || !biases.allFinite())
+    return Status(StatusCode::kInternal, "the Earth-rate calibration gave a heading of " + fmt("%g", heading) +
+                                             " deg or biases that are not finite numbers; nothing was concluded");
+  cal.headingDeg = heading;
+  cal.headingStdDeg = curvature > 0.0 ? std::sqrt(2.0 / curvature) : 180.0;
+  cal.config.earth.headingDeg = heading;
+  notes.push_back("heading " + fmt("%.1f", heading) + " +- " + fmt("%.1f", cal.headingStdDeg) +
+                  " deg, from the Earth rate the gyros see as the table turns" +
+                  (cosSeen && sinSeen ? std::string()
+                                      : std::string("; ") + (cosSeen ? "sin h" : "cos h") +
+                                            " is taken >= 0: the plan's swings do not show its sign"));
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(5);
+  for (std::size_t j = 0; j < biasCols.size(); ++j) x(biasCols[j]) = biases(static_cast<Eigen::Index>(j));
+  // The biases were fitted at the heading the columns describe; the trend
+  // cells of the calibrated replay then match on average.
+  for (int ax = 0; ax < kAxisCount; ++ax) {
+    cal.biasDegPerH[static_cast<std::size_t>(ax)] = x(2 + ax);
+    cal.config.fog.biasDegPerH[static_cast<std::size_t>(ax)] = std::clamp(x(2 + ax), -3000.0, 3000.0);
+  }
+  return cal.config.validate();
+}
+
+Result<AnalysedSession> analyseSession(const Recording& input, const SessionInfo* info,
+                                       const analysis::BenchConstants& constants, std::vector<std::string>& notes) {
+  // Raw pulse counts (a stream without its pulse equivalent) become degrees.
+  std::optional<Recording> scaled;
+  if (input.pulseEquivalentDeg <= 0.0) {
+    const double pe = constants.pulseEquivalentDeg > 0.0 ? constants.pulseEquivalentDeg
+                                                        : (info ? info->bench.pulseEquivalentDeg : 0.0);
+    if (pe <= 0.0) return invalidArgument("the stream does not state its pulse equivalent: give --pulse-equivalent-deg");
+    scaled = input;
+    for (auto& tp : scaled->testPoints)
+      for (auto& m : tp.imu)
+        for (double& v : m.incrementDeg) v *= pe;
+    scaled->pulseEquivalentDeg = pe;
+  }
+  const Recording& recording = scaled ? *scaled : input;
+  auto report = analysis::analyzeRecording(recording, constants);
+  if (!report) return report.status();
+
+  AnalysedSession s;
+  s.used = recording;
+  s.used.testPoints.clear();
+  for (const auto& tp : recording.testPoints)
+    for (const auto& r : report->points)
+      if (r.index == tp.index && r.axis == tp.axis) {
+        s.used.testPoints.push_back(tp);
+        s.results.push_back(r);
+        break;
+      }
+  if (s.used.testPoints.empty()) return insufficientData("no test point gave a delay: nothing to diagnose");
+  for (const auto& f : report->failedPoints) notes.push_back("left out: " + f);
+  return s;
+}
+
+Result<CalibratedReplay> calibrate(const AnalysedSession& session, const SessionInfo* info,
+                                   const DiagnosisOptions& options, Progress& progress,
+                                   std::vector<std::string>& notes) {
+  const Recording& used = session.used;
+  CalibratedReplay out;
+  Replay& replay = out.replay;
+  replay.progress = &progress;
+  Calibration& cal = replay.cal;
+  model::SimConfig& c = cal.config;
+  c.samplingBoard.counterHz = used.counterHz > 0 ? used.counterHz : c.samplingBoard.counterHz;
+  c.samplingBoard.counterBits = used.counterBits >= 16 ? used.counterBits : c.samplingBoard.counterBits;
+  c.fog.pulseEquivalentDeg = used.pulseEquivalentDeg;
+  if (info) c.earth.latitudeDeg = info->bench.latitudeDeg;
+  replay.context.earth = c.earth;
+  replay.context.expectedDrops = true;
+  // The replay samples as the recording did (its own table and IMU periods:
+  // an IMU crystal off by ppm, a board at other rates) and moves the table
+  // between points as fast as it must: it is not a real table, so the
+  // limits do not apply to it.
+  if (const double t = recordedPeriodS(used.testPoints, &TestPointData::table); t > 0.0) c.encoder.samplePeriodS = t;
+  if (const double t = recordedPeriodS(used.testPoints, &TestPointData::imu); t > 0.0) c.imuBoard.framePeriodS = t;
+  c.imuBoard.clockErrorPpm = 0.0;
+  c.encoder.readDelayS = std::min(c.encoder.readDelayS, 0.5 * c.encoder.samplePeriodS);
+  c.imuBoard.firstSampleS = std::min(c.imuBoard.firstSampleS, 0.5 * c.imuBoard.framePeriodS);
+  c.turntable.limits = {kMaxPositionDeg, 1e6, 1e9, 1e12};
+  cal.plan.restBetweenS = 1.0;
+  std::vector<double> ppm, arw;
+  double wsum = 0.0, lagSum = 0.0;
+  for (std::size_t i = 0; i < used.testPoints.size(); ++i) {
+    const auto& tp = used.testPoints[i];
+    const auto& r = session.results[i];
+    const double fitHz = r.tableFit.frequencyHz > 0 ? r.tableFit.frequencyHz : r.joint.frequencyHz;
+    const double nominalHz = tp.nominalFrequencyHz > 0 ? tp.nominalFrequencyHz : fitHz;
+    ppm.push_back((fitHz / nominalHz - 1.0) * 1e6);
+    arw.push_back(r.noise.gyroArwDegPerSqrtH);
+    const double w = 1.0 / std::max(r.lagStdMs * r.lagStdMs, 1e-12);
+    wsum += w;
+    lagSum += w * r.lagMs;
+    TestPoint p;
+    p.axis = tp.axis;
+    p.frequencyHz = nominalHz;
+    p.amplitudeDeg = std::abs(r.tableFit.amplitudeDeg);
+    p.durationS = tp.table.back().timeS - tp.table.front().timeS + 0.5 * c.encoder.samplePeriodS;
+    // The replay swings 2 s before it records (longer when the plan says so):
+    // a recorded test point is a steady swing, and an imported one states no
+    // settle time (0) although its table was swinging before the record.
+    p.settleS = 2.0;
+    // The table's geometry as recorded: the swing about its fitted centre,
+    // the other axes where they were held (a swing about X sees the Earth
+    // rate and gravity as the other axes' angles turn them).
+    for (int a = 0; a < kAxisCount; ++a) {
+      double sum = 0.0;
+      for (const auto& sample : tp.table) sum += sample.angleDeg[static_cast<std::size_t>(a)];
+      p.positionDeg[static_cast<std::size_t>(a)] = sum / static_cast<double>(tp.table.size());
+    }
+    p.positionDeg[static_cast<std::size_t>(tp.axis)] = r.tableFit.offsetDeg;
+    if (info)
+      for (const auto& q : info->plan.points)
+        if (&q - info->plan.points.data() == tp.index)
+          p.settleS = std::max(p.settleS, q.settleS), p.startPhaseDeg = q.startPhaseDeg;
+    cal.plan.points.push_back(p);
+    PointReference pr;
+    pr.omegaRadPerS = kTwoPi * fitHz;
+    pr.segments = segmentsFor(p.durationS, fitHz);
+    pr.swingAxis = static_cast<int>(tp.axis);
+    replay.ref.points.push_back(pr);
+  }
+  replay.ref.tablePeriodS = c.encoder.samplePeriodS;
+  replay.ref.imuPeriodS = c.imuBoard.framePeriodS;
+  cal.tableFrequencyErrorPpm = std::accumulate(ppm.begin(), ppm.end(), 0.0) / static_cast<double>(ppm.size());
+  c.turntable.frequencyErrorPpm = std::clamp(cal.tableFrequencyErrorPpm, -999.0, 999.0);
+  cal.arwDegPerSqrtH = median(arw);
+  c.fog.arwDegPerSqrtH = cal.arwDegPerSqrtH;
+  // The bias instability is the IMU's, from its static noise test: within one
+  // recording a wander of the bias and a drift or step look alike.
+  if (options.biasInstabilityDegPerH) c.fog.biasInstabilityDegPerH = *options.biasInstabilityDegPerH;
+  if (options.biasCorrelationS) c.fog.biasCorrelationS = *options.biasCorrelationS;
+  cal.biasInstabilityStated = options.biasInstabilityDegPerH.has_value();
+  if (!cal.biasInstabilityStated)
+    notes.push_back("bias instability " + fmt("%.3g", c.fog.biasInstabilityDegPerH) + " deg/h over " +
+                    fmt("%.0f", c.fog.biasCorrelationS) +
+                    " s assumed (the simulator's default): a bias drift or step within such a wander is not "
+                    "resolved; state the IMU's own (its static noise test) for a sharper test of the gyro trends");
+  cal.lagMs = lagSum / wsum;
+  // The replay is built from these numbers: a NaN lag or rate would make an
+  // invalid chain whose message names the wrong cause.
+  for (const auto& [value, what] : {std::pair{cal.lagMs, "lag"}, std::pair{cal.tableFrequencyErrorPpm, "table frequency error"},
+                                    std::pair{cal.arwDegPerSqrtH, "angle random walk"}})
+    if (!std::isfinite(value))
+      return corruptData(std::string("the session's analysis gave a ") + what + " that is not a finite number (" +
+                         fmt("%g", value) + "): no replay can be calibrated to it; nothing was concluded");
+  setLag(c, cal.lagMs * 1e-3, notes);
+
+  auto realFeatures = extractFeatures(used, replay.ref);
+  if (!realFeatures) return realFeatures.status();
+  out.real = std::move(*realFeatures);
+  // Before anything is calibrated from them (a NaN cell would turn into a
+  // NaN bias, refused under a name that hides the cause).
+  for (std::size_t i = 0; i < out.real.values.size(); ++i) FOG_RETURN_IF_ERROR(checkFinite(out.real, i));
+  const auto& keys = out.real.keys;
+  const std::vector<double>& real = out.real.values;
+  {
+    std::vector<double> tableMs;
+    for (std::size_t i = 0; i < keys.size(); ++i)
+      if (keys[i].channel == Channel::kTable && keys[i].quantity == Quantity::kResidualMeanSquare) tableMs.push_back(real[i]);
+    // White encoder noise sigma^2 = q^2 / 12 for a quantising encoder.
+    cal.encoderNoiseDeg = std::sqrt(median(tableMs)) * 1e-6;
+    if (!std::isfinite(cal.encoderNoiseDeg))
+      return corruptData("the session's table residual is not a finite number (" + fmt("%g", cal.encoderNoiseDeg) +
+                         " deg): no replay can be calibrated to it; nothing was concluded");
+    c.encoder.quantumDeg = std::sqrt(12.0) * cal.encoderNoiseDeg;
+  }
+  if (Status s = c.validate(); !s.isOk())
+    return invalidArgument("the calibrated replay is not a valid chain: " + s.message());
+  return out;
+}
+
+// Memory: the session's samples, at most one copy of them, and one replay's
+// samples per thread at a time with the recording builder's growth: about
+// (1.5 + 1.5 threads) times the samples' size (907 MB measured for an hour
+// at 1 kHz / 500 Hz on 2 threads, whose samples take 200 MB). Fewer threads
+// when that is over the budget; a refusal when even one is.
+std::string megabytes(double bytes) { return std::to_string(static_cast<long long>(bytes / 1e6)) + " MB"; }
+
+namespace {
+double sampleBytesOf(const Recording& recording) {
+  double sampleBytes = 0.0;
+  for (const auto& tp : recording.testPoints)
+    sampleBytes += static_cast<double>(tp.table.size()) * sizeof(TableSample) +
+                   static_cast<double>(tp.imu.size()) * sizeof(ImuSample);
+  return sampleBytes;
+}
+}  // namespace
+
+Result<int> threadsWithinMemory(const Recording& recording, int requested) {
+  const double sampleBytes = sampleBytesOf(recording);
+  const auto peak = [&](int threads) { return sampleBytes * (1.5 + 1.5 * threads); };
+  int threads = std::max(1, requested);
+  while (threads > 1 && peak(threads) > kDiagnosisSampleBudgetBytes) --threads;
+  if (peak(threads) > kDiagnosisSampleBudgetBytes)
+    return outOfRange("the session holds " + megabytes(sampleBytes) + " of samples; its diagnosis would need about " +
+                      megabytes(peak(1)) + " of samples, over the " + megabytes(kDiagnosisSampleBudgetBytes) + " they may take of the " +
+                      megabytes(kDiagnosisMemoryBudgetBytes) +
+                      " limit; diagnose a session of fewer or shorter test points (up to an hour at 1 kHz / 500 Hz "
+                      "fits)");
+  return threads;
+}
+
+// The replays' share of the budget, once the calibrated replay is known and
+// before any runs. A replay's stream is not the session's: it settles 2 s
+// before each point and rests between points, at the session's own sample
+// periods. Each replay holds the recording it builds, at most
+// Simulator::frameCounts() table and IMU samples, with the builder's growth
+// (1.5x), one replay per thread. Fewer threads when that is over the
+// budget; a refusal (kOutOfRange) when even one is. Sets replay.maxFrames
+// to the calibrated replay's own bound, which every replay's simulator then
+// enforces (they differ from it only in seed, heading, bias and effects,
+// none of which can add a frame).
+Status budgetReplays(const Recording& input, Replay& replay, DiagnosisOptions& options,
+                     std::vector<std::string>& notes) {
+  const double sessionPeak = 1.5 * sampleBytesOf(input);
+  auto sim = model::Simulator::create(replay.cal.config, replay.cal.plan);
+  if (!sim) return outOfRange("the calibrated replay cannot run: " + sim.status().message());
+  const auto frames = (*sim)->frameCounts();
+  const double perReplay = 1.5 * (frames.table * static_cast<double>(sizeof(TableSample)) +
+                                  frames.imu * static_cast<double>(sizeof(ImuSample)));
+  int threads = std::max(1, options.threads);
+  while (threads > 1 && sessionPeak + threads * perReplay > kDiagnosisSampleBudgetBytes) --threads;
+  if (sessionPeak + threads * perReplay > kDiagnosisSampleBudgetBytes)
+    return outOfRange("the replay of this session would hold up to " +
+                      std::to_string(static_cast<long long>(frames.total())) + " frames (" + megabytes(perReplay) +
+                      ": " + fmt("%.0f", (*sim)->endS()) + " s at a table period of " +
+                      fmt("%.4g", replay.cal.config.encoder.samplePeriodS * 1e3) + " ms and an IMU period of " +
+                      fmt("%.4g", replay.cal.config.imuBoard.framePeriodS * 1e3) +
+                      " ms, as calibrated from the stamps), over the " + megabytes(kDiagnosisSampleBudgetBytes) +
+                      " that samples may take of the " + megabytes(kDiagnosisMemoryBudgetBytes) +
+                      " limit with the session's own " + megabytes(sessionPeak));
+  if (threads < options.threads)
+    notes.push_back("ran the replays on " + std::to_string(threads) + " of " + std::to_string(options.threads) +
+                    " threads, to stay within the " + megabytes(kDiagnosisMemoryBudgetBytes) + " memory limit");
+  options.threads = threads;
+  replay.maxFrames = frames.total();
+  return Status::ok();
+}
+
+}  // namespace fog::diagnosis::detail
