@@ -36,7 +36,9 @@ double power(const std::vector<double>& y, double binS, double w) {
     ys += s * y[i];
     yc += c * y[i];
     y1 += y[i];
-    rot *= step;
+    // rot *= step, written out: the same products and sums, without the
+    // library's check for infinities after each (the rotation stays finite).
+    rot = {c * step.real() - s * step.imag(), c * step.imag() + s * step.real()};
     if ((i & 1023) == 1023) rot = std::polar(1.0, w * binS * static_cast<double>(i + 1));  // no drift
   }
   Eigen::Matrix3d ata;
@@ -214,13 +216,20 @@ double periodicResidualInflation(const std::vector<double>& r, double samplesPer
     shift[lags++] = s;
   }
   // Every lag's sum in one pass over the residual rather than one pass per
-  // lag: each sum still runs over i in order, so it is the same number.
-  // Shifts grow with the lag, so once one runs past the end all later do.
+  // lag: the residual is walked in blocks that stay in the cache, and within
+  // a block each lag's sum takes its products in turn. Each sum still runs
+  // over i in order, so it is the same number as one loop per lag.
+  constexpr std::size_t kBlock = 2048;
   std::array<double, kMaxLags> c{};
   if (lags > 0) countPass(stream);
-  for (std::size_t i = 0; lags > 0 && i < n; ++i) {
-    const double ri = r[i] - mean;
-    for (std::size_t k = 0; k < lags && i + shift[k] < n; ++k) c[k] += ri * (r[i + shift[k]] - mean);
+  for (std::size_t from = 0; lags > 0 && from < n; from += kBlock) {
+    for (std::size_t k = 0; k < lags; ++k) {
+      const std::size_t to = std::min(from + kBlock, n - std::min(n, shift[k]));
+      const double* ahead = r.data() + shift[k];
+      double sum = c[k];
+      for (std::size_t i = from; i < to; ++i) sum += (r[i] - mean) * (ahead[i] - mean);
+      c[k] = sum;
+    }
   }
   double inflation = 0.0;
   for (std::size_t k = 0; k < lags; ++k) {
