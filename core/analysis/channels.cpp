@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "core/analysis/sample_passes.h"
 #include "core/common/units.h"
 
 namespace fog::analysis {
@@ -12,6 +13,7 @@ void GyroChannel::setNoise(double qDeg2PerS, double s2Deg2) {
   arwVarianceDeg2PerS = qDeg2PerS;
   quantisationVarianceDeg2 = s2Deg2;
   const std::size_t n = size();
+  countPass(SampleStream::kGyro);
   cholDiag.assign(n, 0.0);
   cholSub.assign(n, 0.0);
   for (std::size_t k = 0; k < n; ++k) {
@@ -25,6 +27,7 @@ void GyroChannel::setNoise(double qDeg2PerS, double s2Deg2) {
 
 void GyroChannel::whiten(double* x) const {
   const std::size_t n = size();
+  countPass(SampleStream::kGyro);
   double previous = 0.0;
   for (std::size_t k = 0; k < n; ++k) {
     x[k] = (x[k] - cholSub[k] * previous) / cholDiag[k];
@@ -34,6 +37,7 @@ void GyroChannel::whiten(double* x) const {
 
 void GyroChannel::whitenRows(double* x, std::size_t columns) const {
   const std::size_t n = size();
+  countPass(SampleStream::kGyro);
   for (std::size_t j = 0; j < columns; ++j) x[j] /= cholDiag[0];
   for (std::size_t k = 1; k < n; ++k) {
     double* row = x + k * columns;
@@ -47,6 +51,7 @@ namespace {
 // Pulse quantisation from the lag-1 autocovariance (g1 = -s2): at the frame
 // level quantisation dominates, so this is where it is seen best.
 double quantisationVariance(const GyroChannel& gyro, const std::vector<double>& r) {
+  countPass(SampleStream::kGyro);
   double g1 = 0.0;
   std::size_t n1 = 0;
   for (std::size_t k = 1; k < r.size(); ++k)
@@ -58,32 +63,37 @@ double quantisationVariance(const GyroChannel& gyro, const std::vector<double>& 
   return std::max(-g1, 0.0);
 }
 
-// Sums of m consecutive increments, m the block length in frames nearest
-// blockS (at least 1, at most an eighth of the record), through prefix sums:
-// sum(k) = prefix[k + m] - prefix[k].
-struct BlockSums {
+// m, the block length in frames nearest blockS (at least 1, at most an
+// eighth of the record); sum(k) = prefix[k + m] - prefix[k].
+struct Blocks {
   std::size_t m = 1;
   double blockS = 0.0;  // m frame periods: the block length actually used
-  std::vector<double> prefix;
+  const std::vector<double>& prefix;
   double sum(std::size_t k) const { return prefix[k + m] - prefix[k]; }
 };
 
-BlockSums blockSums(const GyroChannel& gyro, const std::vector<double>& r, double blockS) {
-  const std::size_t n = r.size();
-  BlockSums b;
-  b.m = std::clamp<std::size_t>(static_cast<std::size_t>(std::llround(blockS / gyro.framePeriodS)), 1,
-                                std::max<std::size_t>(n / 8, 1));
-  b.blockS = static_cast<double>(b.m) * gyro.framePeriodS;
-  b.prefix.assign(n + 1, 0.0);
-  for (std::size_t k = 0; k < n; ++k) b.prefix[k + 1] = b.prefix[k] + r[k];
-  return b;
+Blocks blocksOf(const GyroChannel& gyro, const IncrementResidualSums& sums, double blockS) {
+  const std::size_t n = sums.prefix.size() - 1;
+  const std::size_t m = std::clamp<std::size_t>(static_cast<std::size_t>(std::llround(blockS / gyro.framePeriodS)), 1,
+                                                std::max<std::size_t>(n / 8, 1));
+  return {m, static_cast<double>(m) * gyro.framePeriodS, sums.prefix};
 }
 }  // namespace
 
-double estimateWhiteRateVariance(const GyroChannel& gyro, const std::vector<double>& r, double blockS) {
-  const std::size_t n = r.size();
-  const double s2 = quantisationVariance(gyro, r);
-  const BlockSums b = blockSums(gyro, r, blockS);
+IncrementResidualSums incrementResidualSums(const GyroChannel& gyro, const std::vector<double>& r) {
+  IncrementResidualSums out;
+  out.quantisationVarianceDeg2 = quantisationVariance(gyro, r);
+  countPass(SampleStream::kGyro);
+  out.prefix.assign(r.size() + 1, 0.0);
+  for (std::size_t k = 0; k < r.size(); ++k) out.prefix[k + 1] = out.prefix[k] + r[k];
+  return out;
+}
+
+double estimateWhiteRateVariance(const GyroChannel& gyro, const IncrementResidualSums& sums, double blockS) {
+  const std::size_t n = sums.prefix.size() - 1;
+  const double s2 = sums.quantisationVarianceDeg2;
+  const Blocks b = blocksOf(gyro, sums, blockS);
+  countPass(SampleStream::kGyro);
   double v = 0.0;
   std::size_t pairs = 0;
   for (std::size_t k = 0; k + 2 * b.m <= n; ++k) {
@@ -96,16 +106,21 @@ double estimateWhiteRateVariance(const GyroChannel& gyro, const std::vector<doub
   return std::max(v - 6.0 * s2, 1e-6 * v) / (2.0 * b.blockS);
 }
 
-void estimateGyroNoise(GyroChannel& gyro, const std::vector<double>& r, double blockS) {
-  const std::size_t n = r.size();
-  const double s2 = quantisationVariance(gyro, r);
+double estimateWhiteRateVariance(const GyroChannel& gyro, const std::vector<double>& r, double blockS) {
+  return estimateWhiteRateVariance(gyro, incrementResidualSums(gyro, r), blockS);
+}
+
+BlockRateVariance blockRateVariance(const GyroChannel& gyro, const IncrementResidualSums& sums, double blockS) {
+  const std::size_t n = sums.prefix.size() - 1;
+  const double s2 = sums.quantisationVarianceDeg2;
   // Angle random walk from overlapping sums of M increments: their variance
   // is q*M*dt + 2*s2 (quantisation enters only at the two ends). Block sums
   // see the noise at low frequencies, near the swing, where the lag is
   // decided; per-frame variances would be swamped by quantisation.
-  const BlockSums b = blockSums(gyro, r, blockS);
+  const Blocks b = blocksOf(gyro, sums, blockS);
   const std::size_t m = b.m;
   const double usedBlockS = b.blockS;
+  countPass(SampleStream::kGyro);
   double v = 0.0;
   std::size_t blocks = 0;
   for (std::size_t k = 0; k + m <= n; ++k) {
@@ -116,7 +131,6 @@ void estimateGyroNoise(GyroChannel& gyro, const std::vector<double>& r, double b
   v /= static_cast<double>(std::max<std::size_t>(blocks, 1));
   const double floorVar = 1e-6 * (v + 2.0 * s2) + 1e-30;
   const double q = std::max(v - 2.0 * s2, floorVar) / usedBlockS;
-  gyro.setNoise(q, s2);
   // Sampling error of v - 2*s2. The random-walk part of overlapping m-sums
   // varies like 2 (q m dt)^2 (4/3) m/n (few independent blocks); their
   // quantisation part, two values per sum, like 2 (2 s2)^2 * 2/n; the lag-1
@@ -127,7 +141,17 @@ void estimateGyroNoise(GyroChannel& gyro, const std::vector<double>& r, double b
   const double walk = std::max(q * usedBlockS, 2.0 * s2 * std::sqrt(2.0 / nd));
   const double v1 = 2.0 * s2 + q * gyro.framePeriodS;
   const double varV = 2.0 * walk * walk * (4.0 / 3.0) * static_cast<double>(m) / nd + 16.0 * s2 * s2 / nd;
-  gyro.arwVarianceStdDeg2PerS = std::sqrt(varV + 4.0 * v1 * v1 / nd) / usedBlockS;
+  return {q, std::sqrt(varV + 4.0 * v1 * v1 / nd) / usedBlockS};
+}
+
+void estimateGyroNoise(GyroChannel& gyro, const IncrementResidualSums& sums, double blockS) {
+  const BlockRateVariance q = blockRateVariance(gyro, sums, blockS);
+  gyro.setNoise(q.varianceDeg2PerS, sums.quantisationVarianceDeg2);
+  gyro.arwVarianceStdDeg2PerS = q.stdDeg2PerS;
+}
+
+void estimateGyroNoise(GyroChannel& gyro, const std::vector<double>& r, double blockS) {
+  estimateGyroNoise(gyro, incrementResidualSums(gyro, r), blockS);
 }
 
 namespace {
@@ -154,6 +178,7 @@ Result<Channels> makeChannels(const TestPointData& data, double incrementScale) 
                             " do not overlap in time");
   ch.referenceS = 0.5 * (ch.startS + ch.endS);
 
+  countPass(SampleStream::kTable);
   ch.table.timeS.reserve(data.table.size());
   ch.table.angleDeg.reserve(data.table.size());
   for (const auto& s : data.table) {
@@ -162,6 +187,7 @@ Result<Channels> makeChannels(const TestPointData& data, double incrementScale) 
     ch.table.angleDeg.push_back(s.angleDeg[axis]);
   }
 
+  countPass(SampleStream::kGyro);
   std::vector<double> intervals;
   intervals.reserve(data.imu.size());
   for (std::size_t k = 1; k < data.imu.size(); ++k)
@@ -175,6 +201,7 @@ Result<Channels> makeChannels(const TestPointData& data, double incrementScale) 
   g.endS.reserve(n);
   g.incrementDeg.reserve(n);
   g.continuesPrevious.reserve(n);
+  countPass(SampleStream::kGyro);
   // The first frame only marks where integration starts: its increment
   // belongs to an interval before the record.
   for (std::size_t k = 1; k < data.imu.size(); ++k) {
@@ -194,6 +221,7 @@ Result<Channels> makeChannels(const TestPointData& data, double incrementScale) 
 }
 
 std::vector<double> cumulativeGyroAngle(const GyroChannel& gyro) {
+  countPass(SampleStream::kGyro);
   std::vector<double> out(gyro.size());
   double sum = 0.0;
   for (std::size_t k = 0; k < gyro.size(); ++k) out[k] = (sum += gyro.incrementDeg[k]);

@@ -96,10 +96,28 @@ struct Channels {
 // in degrees; the pulse equivalent when the stream carried raw pulses).
 Result<Channels> makeChannels(const TestPointData& data, double incrementScale);
 
+// What every noise estimate below starts from, taken from residuals of
+// increments in two passes, so that estimates over several block lengths
+// share them: s2 (pulse quantisation, from the lag-1 autocovariance) and the
+// residuals' prefix sums (prefix[k] = sum of the first k).
+struct IncrementResidualSums {
+  double quantisationVarianceDeg2 = 0.0;
+  std::vector<double> prefix;
+};
+IncrementResidualSums incrementResidualSums(const GyroChannel& gyro, const std::vector<double>& residualDeg);
+
+// q from the variance of sums of increments over blockS seconds (one pass),
+// with its standard error: what estimateGyroNoise applies.
+struct BlockRateVariance {
+  double varianceDeg2PerS = 0.0, stdDeg2PerS = 0.0;
+};
+BlockRateVariance blockRateVariance(const GyroChannel& gyro, const IncrementResidualSums& sums, double blockS);
+
 // Estimates q and s2 from residuals of increments and applies them to the
 // channel: s2 from the lag-1 autocovariance, q from the variance of sums of
 // increments over blockS seconds.
 void estimateGyroNoise(GyroChannel& gyro, const std::vector<double>& residualDeg, double blockS);
+void estimateGyroNoise(GyroChannel& gyro, const IncrementResidualSums& sums, double blockS);
 
 // The white rate noise alone (angle random walk, deg^2/s) from the same
 // residuals: the variance of the difference of two adjacent sums over blockS
@@ -107,6 +125,7 @@ void estimateGyroNoise(GyroChannel& gyro, const std::vector<double>& residualDeg
 // and a slowly varying bias (a bias wander over an hour, a trend the fit
 // left) cancels in it, where the sums alone take it for a random walk.
 double estimateWhiteRateVariance(const GyroChannel& gyro, const std::vector<double>& residualDeg, double blockS);
+double estimateWhiteRateVariance(const GyroChannel& gyro, const IncrementResidualSums& sums, double blockS);
 
 
 // Cumulative gyro angle at each interval end (starting from 0 before the

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/analysis/least_squares.h"
+#include "core/analysis/sample_passes.h"
 #include "core/common/units.h"
 
 namespace fog::analysis {
@@ -20,6 +21,7 @@ class DampedTableProblem final : public LeastSquaresProblem {
   std::size_t numResiduals() const override { return t_.timeS.size(); }
   int numParameters() const override { return kParams; }
   double accumulate(const double* x, Eigen::MatrixXd* jtj, Eigen::VectorXd* jtr) const override {
+    countPass(SampleStream::kTable);
     NormalSums<kParams> sums;
     double rss = 0.0;
     for (std::size_t i = 0; i < t_.timeS.size(); ++i) {
@@ -47,6 +49,7 @@ std::optional<DampedSineLag> fitDampedSineLag(const Channels& ch, double omegaSt
   const auto& tt = ch.table.timeS;
   if (tt.size() < 32 || ch.gyro.size() < 32) return std::nullopt;
   // Linear start at (omega, lambda).
+  countPass(SampleStream::kTable);
   Eigen::Matrix3d ata = Eigen::Matrix3d::Zero();
   Eigen::Vector3d aty = Eigen::Vector3d::Zero();
   for (std::size_t i = 0; i < tt.size(); ++i) {
@@ -74,6 +77,7 @@ std::optional<DampedSineLag> fitDampedSineLag(const Channels& ch, double omegaSt
     s = e * std::sin(w * t);
     c = e * std::cos(w * t);
   };
+  countPass(SampleStream::kGyro, 2);  // the fit and its residuals
   for (std::size_t k = 0; k < g.size(); ++k) {
     double s1, c1, s0, c0;
     basis(g.endS[k], s1, c1);

@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <vector>
 
+#include "core/analysis/sample_passes.h"
+
 namespace fog::analysis {
 
 namespace {
@@ -18,6 +20,7 @@ std::string fmt(const char* format, double v) {
 
 template <typename Sample>
 double medianInterval(const std::vector<Sample>& s, bool imu) {
+  countPass(imu ? SampleStream::kGyro : SampleStream::kTable);
   std::vector<double> d;
   d.reserve(s.size());
   for (std::size_t i = 1; i < s.size(); ++i) {
@@ -42,6 +45,7 @@ DataCoverage measureCoverage(const TestPointData& data) {
   // Table: stamps on a regular grid; a longer interval is a gap.
   double tableMissingS = 0.0;
   if (const double dt = medianInterval(data.table, false); dt > 0.0) {
+    countPass(SampleStream::kTable);
     for (std::size_t i = 1; i < data.table.size(); ++i) {
       const double interval = data.table[i].timeS - data.table[i - 1].timeS;
       if (interval <= 1.5 * dt) continue;
@@ -56,6 +60,7 @@ DataCoverage measureCoverage(const TestPointData& data) {
   // IMU: the sequence gap says how many frames are missing.
   double imuMissingS = 0.0;
   if (const double dt = medianInterval(data.imu, true); dt > 0.0) {
+    countPass(SampleStream::kGyro);
     for (std::size_t i = 1; i < data.imu.size(); ++i) {
       const auto lost = data.imu[i].lostBefore;
       if (lost == 0) continue;

@@ -9,6 +9,7 @@
 
 #include "core/analysis/data_coverage.h"
 #include "core/analysis/least_squares.h"
+#include "core/analysis/sample_passes.h"
 #include "core/analysis/sin_cos_series.h"
 #include "core/analysis/statistics.h"
 #include "core/common/units.h"
@@ -58,6 +59,8 @@ std::vector<PeriodDelay> periodTrack(const Channels& ch, double w, double refere
   const double period = kTwoPi / w;
   const auto& tt = ch.table.timeS;
   const auto& g = ch.gyro;
+  countPass(SampleStream::kTable);
+  countPass(SampleStream::kGyro);
   SinCosStream tablePhase(w, 0.0);
   GyroSinCosStream gyroPhase(g, w, 0.0);
   const double first = std::max(tt.front(), g.startS.front());
@@ -93,6 +96,32 @@ std::vector<PeriodDelay> periodTrack(const Channels& ch, double w, double refere
   return out;
 }
 
+// What the stages of one test point's analysis hand each other, Ceres-style:
+// each stage reads what earlier ones left here and adds its own, so that
+// what a pass over the samples gave (the 4-parameter fits' residuals above
+// all) is computed once and read by every later stage that needs it.
+struct PointWork {
+  PointWork(const TestPointData& d, const BenchConstants& c) : data(d), constants(c) {}
+  const TestPointData& data;
+  const BenchConstants& constants;
+  Channels ch;
+  TestPointResult r;
+  DataCoverage coverage;      // what is missing from the samples
+  double f0 = 0.0, w0 = 0.0;  // the frequency the fits start from (Hz, rad/s)
+  SineFit gyroStart;          // unweighted 3-parameter gyro fit at the table's frequency
+  double whiteRateVariance = 0.0;  // the gyro's q from blocks of a twentieth of a period (the bound's)
+  bool gyroTurnsAgainst = false;
+  // Residuals of the 4-parameter fits, one per sample: table angles, and the
+  // cumulative gyro angle's (its offset removed).
+  std::vector<double> tableResidual, gyroAngleResidual;
+  // From the joint fit: the table's amplitude, its frequency (rad/s) and the
+  // mean table sample interval.
+  double amplitude = 0.0, w = 0.0, tableInterval = 0.0;
+  // The per-period track as columns, and the lags' spread.
+  std::vector<double> lags, times, amplitudes;
+  MeanAndSpread spread;
+};
+
 // Thresholds of the validity checks (docs/method.md, "Validity checks").
 // None rests on the noise level fitted from the same residuals: misfits are
 // compared with the amplitude, timing with significance from the data's own
@@ -106,13 +135,14 @@ constexpr double kCausalSignificance = 3.0;  // a negative IMU delay beyond 3 si
 
 std::string percent(double fraction) { return fmt(100.0 * fraction, fraction < 0.001 ? 3 : 2) + " %"; }
 
-void addValidityChecks(TestPointResult& r, const Channels& ch, const std::vector<double>& gyroAngleResidual,
-                       const std::vector<double>& times, const std::vector<double>& amplitudes,
-                       const std::vector<double>& lags, double amplitude) {
-  const std::string axis = axisLabel(r.axis);
-  const double w = r.joint.omegaRadPerS;
-  const double periodS = kTwoPi / w;
+// The validity checks, one function each, in the order the report lists
+// them (clock_rate reads steady_sine's outcome). They read the fits and the
+// residuals the earlier stages left in PointWork; none passes over the
+// samples again except steady_sine's two residual measures (and, for a
+// decaying swing, the damped-sine fit it offers).
 
+void checkAxisSign(TestPointResult& r) {
+  const std::string axis = axisLabel(r.axis);
   // The gyro turns with the table.
   {
     ValidityCheck c{"axis_sign", r.magnitudeRatio > 0.0, ""};
@@ -132,17 +162,27 @@ void addValidityChecks(TestPointResult& r, const Channels& ch, const std::vector
     }
     r.checks.push_back(c);
   }
+}
 
+void checkSteadySine(PointWork& work) {
+  TestPointResult& r = work.r;
+  const Channels& ch = work.ch;
+  const double w = r.joint.omegaRadPerS;
+  const double periodS = kTwoPi / w;
+  const double amplitude = work.amplitude;
+  const auto& amplitudes = work.amplitudes;
+  const auto& times = work.times;
+  const auto& gyroAngleResidual = work.gyroAngleResidual;
   // A steady sinusoid: what the fits leave is noise, not shape.
   {
     const double windowS = std::max(periodS / 20.0, 3.0 * periodS / std::max(1.0, static_cast<double>(r.tableSamples) / r.periods));
-    const auto tableResidual = tableResiduals(ch.table, r.tableFit);
-    r.tableMisfitFraction = smoothResidualRms(ch.table.timeS, tableResidual, windowS) / amplitude;
-    r.harmonicFraction = harmonicAmplitude(ch.table.timeS, tableResidual, w) / amplitude;
+    const auto& tableResidual = work.tableResidual;
+    r.tableMisfitFraction = smoothResidualRms(ch.table.timeS, tableResidual, windowS, SampleStream::kTable) / amplitude;
+    r.harmonicFraction = harmonicAmplitude(ch.table.timeS, tableResidual, w, SampleStream::kTable) / amplitude;
     const bool gyroChecked = ch.gyro.lostFrames == 0;  // lost increments make steps in the cumulative angle
     if (gyroChecked)
-      r.gyroMisfitFraction =
-          smoothResidualRms(ch.gyro.endS, gyroAngleResidual, windowS) / (amplitude * std::abs(r.magnitudeRatio));
+      r.gyroMisfitFraction = smoothResidualRms(ch.gyro.endS, gyroAngleResidual, windowS, SampleStream::kGyro) /
+                             (amplitude * std::abs(r.magnitudeRatio));
     double amplitudeZ = 0.0;
     std::optional<LineFit> amplitudeLine;
     if (amplitudes.size() >= 3) amplitudeLine = fitLine(times, amplitudes);
@@ -195,7 +235,12 @@ void addValidityChecks(TestPointResult& r, const Channels& ch, const std::vector
     }
     r.checks.push_back(c);
   }
+}
 
+void checkClockRate(PointWork& work) {
+  TestPointResult& r = work.r;
+  const auto& lags = work.lags;
+  const auto& times = work.times;
   // Table and gyro stamped on one clock at one rate: their periods agree and
   // the per-period lag has no trend. The period uncertainties are raised by
   // the same factor as the lag's when the noise model fell short.
@@ -255,7 +300,9 @@ void addValidityChecks(TestPointResult& r, const Channels& ch, const std::vector
     }
     r.checks.push_back(c);
   }
+}
 
+void checkCausal(TestPointResult& r) {
   // A causal delay: the gyro cannot report rotation before it happens.
   {
     const bool acausal = r.imuDelayMs + kCausalSignificance * r.imuDelayStdMs < 0.0;
@@ -268,6 +315,15 @@ void addValidityChecks(TestPointResult& r, const Channels& ch, const std::vector
     r.checks.push_back(c);
   }
 }
+
+// The validity checks of a point whose delay has been measured (validity.h).
+void addValidityChecks(PointWork& work) {
+  checkAxisSign(work.r);
+  checkSteadySine(work);
+  checkClockRate(work);
+  checkCausal(work.r);
+}
+
 
 }  // namespace
 
@@ -310,6 +366,8 @@ namespace {
 Status checkSamples(const TestPointData& data, double incrementScale) {
   if (!std::isfinite(incrementScale) || incrementScale == 0.0)
     return invalidArgument("the gyro pulse equivalent (" + fmt(incrementScale, 6) + " deg) is not a usable number");
+  countPass(SampleStream::kTable);
+  countPass(SampleStream::kGyro);
   for (std::size_t i = 0; i < data.table.size(); ++i) {
     const auto& s = data.table[i];
     if (!std::isfinite(s.timeS) || (i > 0 && !(s.timeS > data.table[i - 1].timeS)))
@@ -343,13 +401,19 @@ Status checkSamples(const TestPointData& data, double incrementScale) {
 
 }  // namespace
 
-Result<TestPointResult> analyzeTestPoint(const TestPointData& data, double incrementScale,
-                                         const BenchConstants& constants) {
-  const int sign = constants.gyroSign[static_cast<std::size_t>(data.axis)] < 0 ? -1 : 1;
-  FOG_ASSIGN_OR_RETURN(auto channels, makeChannels(data, incrementScale * sign));  // refuses too few samples
+namespace {
+
+// The stages of analyzeTestPoint, in order. Each reads what the earlier ones
+// left in PointWork; those that return a Status refuse the point with it.
+
+// The channels, the samples' own checks and what is missing.
+Status prepare(PointWork& work, double incrementScale) {
+  const TestPointData& data = work.data;
+  const int sign = work.constants.gyroSign[static_cast<std::size_t>(data.axis)] < 0 ? -1 : 1;
+  FOG_ASSIGN_OR_RETURN(work.ch, makeChannels(data, incrementScale * sign));  // refuses too few samples
   FOG_RETURN_IF_ERROR(checkSamples(data, incrementScale));
-  Channels& ch = channels;
-  TestPointResult r;
+  Channels& ch = work.ch;
+  TestPointResult& r = work.r;
   r.index = data.index;
   r.axis = data.axis;
   r.gyroSign = sign;
@@ -360,16 +424,25 @@ Result<TestPointResult> analyzeTestPoint(const TestPointData& data, double incre
 
   // What is missing, and whether the rest can still support a delay: checked
   // before the frequency is estimated from data a gap would distort.
-  const DataCoverage coverage = measureCoverage(data);
+  work.coverage = measureCoverage(data);
+  const DataCoverage& coverage = work.coverage;
   r.lostTableFrames = coverage.lostTableFrames;
   r.coveredS = coverage.coveredS();
   r.largestGapS = coverage.largestGapS;
   r.damage = data.health;
   if (const double f = data.nominalFrequencyHz > 0.0 ? data.nominalFrequencyHz : 0.0; f > 0.0)
     if (auto why = coverageRefusal(coverage, f); !why.empty()) return insufficientData(why);
+  return Status::ok();
+}
 
-  // Nominal frequency: what the plan said, checked against the data.
-  FOG_ASSIGN_OR_RETURN(auto measured, estimateSwingFrequencyHz(ch.table));
+// Nominal frequency: what the plan said, checked against the data
+// (measuredHz: estimateSwingFrequencyHz of the table channel).
+Status chooseFrequency(PointWork& work, const Result<double>& measuredHz) {
+  const TestPointData& data = work.data;
+  const DataCoverage& coverage = work.coverage;
+  TestPointResult& r = work.r;
+  if (!measuredHz) return measuredHz.status();
+  const double measured = *measuredHz;
   double f0 = data.nominalFrequencyHz > 0.0 ? data.nominalFrequencyHz : measured;
   if (std::abs(measured / f0 - 1.0) > 0.01) {
     r.warnings.push_back("the table swung at " + fmt(measured, 5) + " Hz, not the planned " + fmt(f0, 5) +
@@ -384,8 +457,16 @@ Result<TestPointResult> analyzeTestPoint(const TestPointData& data, double incre
     return insufficientData("test point " + std::to_string(data.index + 1) + " covers " + fmt(r.periods, 2) +
                             " swing periods; a delay needs at least two whole periods");
   const double w0 = kTwoPi * f0;
+  work.f0 = f0;
+  work.w0 = w0;
+  return Status::ok();
+}
 
-  // 1. The table: 3-parameter fit at the nominal frequency, then 4-parameter.
+// 1. The table: 3-parameter fit at the nominal frequency, then 4-parameter.
+Status fitTable(PointWork& work) {
+  Channels& ch = work.ch;
+  TestPointResult& r = work.r;
+  const double w0 = work.w0;
   r.tableNominal = fitTableLinear(ch.table, w0, ch.referenceS);
   ch.table.noiseDeg = std::max(r.tableNominal.residualRmsDeg, 1e-12);
   FOG_ASSIGN_OR_RETURN(auto table4, fitTableNonlinear(ch.table, r.tableNominal));
@@ -399,6 +480,9 @@ Result<TestPointResult> analyzeTestPoint(const TestPointData& data, double incre
   const double nominalRatio = r.tableNominal.residualRmsDeg / ch.table.noiseDeg;
   r.tableNominal.chiSquarePerDof = nominalRatio * nominalRatio * static_cast<double>(r.tableNominal.samples) /
                                    static_cast<double>(r.tableNominal.samples - 3);
+  r.tableFit = table4;
+  return Status::ok();
+}
 
   // 2. The gyro's noise, from the residuals of a fit at the table's measured
   // frequency (at the nominal one, 8 ppm of error would dominate the slow
@@ -417,47 +501,76 @@ Result<TestPointResult> analyzeTestPoint(const TestPointData& data, double incre
   //    blocks cannot see under pulse quantisation (0.0014 deg/sqrt(h) under
   //    1.2" pulses at 0.09 Hz) dominates and left the uncertainty 7 times too
   //    small.
+void measureGyroNoise(PointWork& work) {
+  Channels& ch = work.ch;
+  TestPointResult& r = work.r;
+  const double f0 = work.f0;
+  const SineFit& table4 = r.tableFit;
   const SineFit gyroStart = fitGyroLinear(ch.gyro, table4.omegaRadPerS, ch.referenceS, false);
   const auto startResiduals = gyroIncrementResiduals(ch.gyro, gyroStart);
   const double blockS = std::clamp(0.05 / f0, 0.05, 1.0);
-  r.noise.gyroArwDegPerSqrtH = std::sqrt(estimateWhiteRateVariance(ch.gyro, startResiduals, blockS)) * 60.0;
-  estimateGyroNoise(ch.gyro, startResiduals, blockS);
-  const double whiteRateVariance = ch.gyro.arwVarianceDeg2PerS;
-  estimateGyroNoise(ch.gyro, startResiduals, std::clamp(0.25 / f0, 0.05, std::max(0.05, r.durationS / 8.0)));
+  const IncrementResidualSums sums = incrementResidualSums(ch.gyro, startResiduals);  // shared by all three
+  r.noise.gyroArwDegPerSqrtH = std::sqrt(estimateWhiteRateVariance(ch.gyro, sums, blockS)) * 60.0;
+  const double whiteRateVariance = blockRateVariance(ch.gyro, sums, blockS).varianceDeg2PerS;
+  estimateGyroNoise(ch.gyro, sums, std::clamp(0.25 / f0, 0.05, std::max(0.05, r.durationS / 8.0)));
+  work.gyroStart = gyroStart;
+  work.whiteRateVariance = whiteRateVariance;
+}
 
   // 3. The gyro: 3-parameter fit at the nominal frequency (beside, on the
   // second core), then 4-parameter.
+Status fitGyro(PointWork& work) {
+  Channels& ch = work.ch;
+  TestPointResult& r = work.r;
+  const double w0 = work.w0;
   auto gyroNominal = std::async(std::launch::async, [&] { return fitGyroLinear(ch.gyro, w0, ch.referenceS, true); });
-  auto gyro4 = fitGyroNonlinear(ch.gyro, gyroStart);
+  auto gyro4 = fitGyroNonlinear(ch.gyro, work.gyroStart);
   r.gyroNominal = gyroNominal.get();
   if (!gyro4) return gyro4.status();
-  r.tableFit = table4;
   r.gyroFit = *gyro4;
-  // The cumulative gyro angle's offset (for plots that overlay the fit) and
-  // its residuals (for the adequacy checks).
-  std::vector<double> gyroAngleResidual;
-  {
-    const auto angle = cumulativeGyroAngle(ch.gyro);
-    std::vector<double> sn(angle.size()), cs(angle.size());
-    sinCosSeries(ch.gyro.endS.data(), angle.size(), r.gyroFit.omegaRadPerS, 0.0, sn.data(), cs.data());
-    gyroAngleResidual.resize(angle.size());
-    double sum = 0.0;
-    for (std::size_t k = 0; k < angle.size(); ++k) {
-      gyroAngleResidual[k] =
-          angle[k] - (r.gyroFit.a * sn[k] + r.gyroFit.b * cs[k] + r.gyroFit.trendDegPerS * ch.gyro.endS[k]);
-      sum += gyroAngleResidual[k];
-    }
-    r.gyroFit.offsetDeg = sum / static_cast<double>(angle.size());
-    for (auto& v : gyroAngleResidual) v -= r.gyroFit.offsetDeg;
-  }
   // A gyro in antiphase with the table turns against it (a reversed axis).
   const bool gyroTurnsAgainst =
       std::cos(std::atan2(r.tableFit.b, r.tableFit.a) - std::atan2(r.gyroFit.b, r.gyroFit.a)) < 0.0;
+  work.gyroTurnsAgainst = gyroTurnsAgainst;
+  return Status::ok();
+}
+
+// The 4-parameter fits' residuals, once each, for the uncertainty (errors
+// that repeat every period) and the steady_sine check.
+void computeResiduals(PointWork& work) {
+  const Channels& ch = work.ch;
+  TestPointResult& r = work.r;
+  work.tableResidual = tableResiduals(ch.table, r.tableFit);
+  // The cumulative gyro angle's offset (for plots that overlay the fit) and
+  // its residuals, in one pass: the running sum of the increments, the fit
+  // and their difference (the offset, their mean, is taken off after).
+  countPass(SampleStream::kGyro, 2);  // the pass and the offset's removal
+  const GyroChannel& g = ch.gyro;
+  auto& residual = work.gyroAngleResidual;
+  residual.resize(g.size());
+  SinCosStream phase(r.gyroFit.omegaRadPerS, 0.0);
+  double angle = 0.0, sum = 0.0;
+  for (std::size_t k = 0; k < g.size(); ++k) {
+    double sn, cs;
+    phase.next(g.endS[k], sn, cs);
+    angle += g.incrementDeg[k];
+    residual[k] = angle - (r.gyroFit.a * sn + r.gyroFit.b * cs + r.gyroFit.trendDegPerS * g.endS[k]);
+    sum += residual[k];
+  }
+  r.gyroFit.offsetDeg = sum / static_cast<double>(g.size());
+  for (auto& v : residual) v -= r.gyroFit.offsetDeg;
+}
 
   // 4. Joint fit: one frequency, the delay as a parameter. The per-period
   // track needs only a frequency close to the swing's; it runs beside.
+Status fitJointAndTrack(PointWork& work) {
+  const Channels& ch = work.ch;
+  TestPointResult& r = work.r;
+  const double trackOmega = r.tableFit.omegaRadPerS;
+  const bool gyroTurnsAgainst = work.gyroTurnsAgainst;
   auto track = std::async(std::launch::async,
-                          [&] { return periodTrack(ch, table4.omegaRadPerS, ch.referenceS, gyroTurnsAgainst); });
+                          [&] { return periodTrack(ch, trackOmega, ch.referenceS, gyroTurnsAgainst); });
+  const double whiteRateVariance = work.whiteRateVariance;
   auto joint = fitJoint(ch, r.tableFit, r.gyroFit);
   r.periodTrack = track.get();
   if (!joint) return joint.status();
@@ -478,17 +591,21 @@ Result<TestPointResult> analyzeTestPoint(const TestPointData& data, double incre
                                       amplitude * std::abs(joint->gain), ch.gyro.framePeriodS,
                                       ch.gyro.quantisationVarianceDeg2, whiteRateVariance);
   r.stdOverCrlb = r.crlbMs > 0.0 ? r.fitLagStdMs / r.crlbMs : 0.0;
+  work.tableInterval = tableInterval;
+  work.amplitude = amplitude;
+  work.w = w;
 
-  // Per-period delays.
-  std::vector<double> lags, times, amplitudes;
+  // Per-period delays, as columns.
   for (const auto& p : r.periodTrack) {
-    lags.push_back(p.lagMs);
-    times.push_back(p.timeS);
-    amplitudes.push_back(p.tableAmplitudeDeg);
+    work.lags.push_back(p.lagMs);
+    work.times.push_back(p.timeS);
+    work.amplitudes.push_back(p.tableAmplitudeDeg);
   }
-  const auto spread = meanAndSpread(lags);
-  r.periodMeanLagMs = spread.mean;
-  r.periodScatterMs = spread.stdDev;
+  work.spread = meanAndSpread(work.lags);
+  r.periodMeanLagMs = work.spread.mean;
+  r.periodScatterMs = work.spread.stdDev;
+  return Status::ok();
+}
 
   // 5. An honest uncertainty. (a) White-noise terms assume errors that
   // average down sample by sample; with stamps commensurate with the swing,
@@ -500,59 +617,73 @@ Result<TestPointResult> analyzeTestPoint(const TestPointData& data, double incre
   // significantly larger than the fit's uncertainty it is taken; with 20 or
   // more periods also when significantly smaller (time-stamp jitter, whose
   // errors follow the rate, makes the white-noise model pessimistic).
-  {
-    const double periodS = kTwoPi / w;
-    const double tableTerm =
-        2.0 * ch.table.noiseDeg * ch.table.noiseDeg * tableInterval / (amplitude * amplitude * r.durationS * w * w);
-    const double gyroAmp = amplitude * std::abs(joint->gain);
-    const double quantTerm = 2.0 * ch.gyro.quantisationVarianceDeg2 * ch.gyro.framePeriodS /
-                             (gyroAmp * gyroAmp * r.durationS * w * w);
-    const double inflT = periodicResidualInflation(tableResiduals(ch.table, r.tableFit), periodS / tableInterval,
-                                                   r.periods);
-    const double inflG =
-        periodicResidualInflation(gyroAngleResidual, periodS / ch.gyro.framePeriodS, r.periods);
-    const double addedMs2 = 1e6 * (tableTerm * inflT + quantTerm * inflG);
-    r.periodicInflation = addedMs2 / (r.fitLagStdMs * r.fitLagStdMs);
-    double baseMs = r.fitLagStdMs;
-    if (r.periodicInflation > 0.1) r.lagStdSource = "fit, with errors that repeat every period";
-    if (lags.size() >= 5) {
-      const auto n = static_cast<double>(lags.size());
-      const int dof = static_cast<int>(lags.size()) - 1;
-      r.trackLagStdMs = spread.stdDev / std::sqrt(n);
-      // (n - 1) s^2 / (n sigma^2) is chi^2 with n - 1 dof when sigma is right.
-      const double x = (n - 1.0) * r.trackLagStdMs * r.trackLagStdMs / (r.fitLagStdMs * r.fitLagStdMs);
-      const bool larger = r.trackLagStdMs > r.fitLagStdMs && chiSquareSurvival(x, dof) < 1e-3;
-      const bool smaller = lags.size() >= 20 && r.trackLagStdMs < r.fitLagStdMs && 1.0 - chiSquareSurvival(x, dof) < 1e-3;
-      if (larger || smaller) {
-        baseMs = r.trackLagStdMs;
-        r.lagStdSource = r.periodicInflation > 0.1 ? "per-period scatter, with errors that repeat every period"
-                                                   : "per-period scatter";
-        r.warnings.push_back("the per-period lags scatter " + fmt(spread.stdDev, 4) + " ms, " +
-                             (larger ? "more" : "less") +
-                             " than the fit's noise model implies; the uncertainty rests on their scatter (" +
-                             fmt(r.trackLagStdMs, 5) + " ms instead of " + fmt(r.fitLagStdMs, 5) + " ms)");
-      }
+void honestUncertainty(PointWork& work) {
+  const Channels& ch = work.ch;
+  TestPointResult& r = work.r;
+  const JointFit* joint = &r.joint;
+  const double w = work.w, amplitude = work.amplitude, tableInterval = work.tableInterval;
+  const auto& lags = work.lags;
+  const auto& spread = work.spread;
+  const double periodS = kTwoPi / w;
+  const double tableTerm =
+      2.0 * ch.table.noiseDeg * ch.table.noiseDeg * tableInterval / (amplitude * amplitude * r.durationS * w * w);
+  const double gyroAmp = amplitude * std::abs(joint->gain);
+  const double quantTerm = 2.0 * ch.gyro.quantisationVarianceDeg2 * ch.gyro.framePeriodS /
+                           (gyroAmp * gyroAmp * r.durationS * w * w);
+  const double inflT =
+      periodicResidualInflation(work.tableResidual, periodS / tableInterval, r.periods, SampleStream::kTable);
+  const double inflG =
+      periodicResidualInflation(work.gyroAngleResidual, periodS / ch.gyro.framePeriodS, r.periods,
+                                SampleStream::kGyro);
+  const double addedMs2 = 1e6 * (tableTerm * inflT + quantTerm * inflG);
+  r.periodicInflation = addedMs2 / (r.fitLagStdMs * r.fitLagStdMs);
+  double baseMs = r.fitLagStdMs;
+  if (r.periodicInflation > 0.1) r.lagStdSource = "fit, with errors that repeat every period";
+  if (lags.size() >= 5) {
+    const auto n = static_cast<double>(lags.size());
+    const int dof = static_cast<int>(lags.size()) - 1;
+    r.trackLagStdMs = spread.stdDev / std::sqrt(n);
+    // (n - 1) s^2 / (n sigma^2) is chi^2 with n - 1 dof when sigma is right.
+    const double x = (n - 1.0) * r.trackLagStdMs * r.trackLagStdMs / (r.fitLagStdMs * r.fitLagStdMs);
+    const bool larger = r.trackLagStdMs > r.fitLagStdMs && chiSquareSurvival(x, dof) < 1e-3;
+    const bool smaller = lags.size() >= 20 && r.trackLagStdMs < r.fitLagStdMs && 1.0 - chiSquareSurvival(x, dof) < 1e-3;
+    if (larger || smaller) {
+      baseMs = r.trackLagStdMs;
+      r.lagStdSource = r.periodicInflation > 0.1 ? "per-period scatter, with errors that repeat every period"
+                                                 : "per-period scatter";
+      r.warnings.push_back("the per-period lags scatter " + fmt(spread.stdDev, 4) + " ms, " +
+                           (larger ? "more" : "less") +
+                           " than the fit's noise model implies; the uncertainty rests on their scatter (" +
+                           fmt(r.trackLagStdMs, 5) + " ms instead of " + fmt(r.fitLagStdMs, 5) + " ms)");
     }
-    if (lags.size() < 5 && ch.gyro.arwVarianceStdDeg2PerS > 0.0) {
-      // Too few periods to check the noise model against the data: the
-      // random walk, the part a short record estimates worst (under coarse
-      // pulses 3x too low in 1 of 5 records of 3.8 periods), is taken at its
-      // upper 2-sigma bound.
-      const double q = ch.gyro.arwVarianceDeg2PerS, qHigh = q + 2.0 * ch.gyro.arwVarianceStdDeg2PerS;
-      auto bound = [&](double arw) {
-        return lagCramerRaoBoundS(w, r.durationS, amplitude, tableInterval, ch.table.noiseDeg, gyroAmp,
-                                  ch.gyro.framePeriodS, ch.gyro.quantisationVarianceDeg2, arw);
-      };
-      const double factor = bound(qHigh) / bound(q);
-      if (factor > 1.05) {
-        baseMs *= factor;
-        r.lagStdSource = "fit, random walk at its upper bound (fewer than 5 periods to check it)";
-      }
-    }
-    const double stdMs = std::sqrt(baseMs * baseMs + addedMs2);
-    r.lagStdMs = stdMs;
   }
+  if (lags.size() < 5 && ch.gyro.arwVarianceStdDeg2PerS > 0.0) {
+    // Too few periods to check the noise model against the data: the
+    // random walk, the part a short record estimates worst (under coarse
+    // pulses 3x too low in 1 of 5 records of 3.8 periods), is taken at its
+    // upper 2-sigma bound.
+    const double q = ch.gyro.arwVarianceDeg2PerS, qHigh = q + 2.0 * ch.gyro.arwVarianceStdDeg2PerS;
+    auto bound = [&](double arw) {
+      return lagCramerRaoBoundS(w, r.durationS, amplitude, tableInterval, ch.table.noiseDeg, gyroAmp,
+                                ch.gyro.framePeriodS, ch.gyro.quantisationVarianceDeg2, arw);
+    };
+    const double factor = bound(qHigh) / bound(q);
+    if (factor > 1.05) {
+      baseMs *= factor;
+      r.lagStdSource = "fit, random walk at its upper bound (fewer than 5 periods to check it)";
+    }
+  }
+  const double stdMs = std::sqrt(baseMs * baseMs + addedMs2);
+  r.lagStdMs = stdMs;
+}
 
+// The breakdown into IMU and gyro delay, and the refusal of numbers the fits
+// could not make finite.
+Status breakDown(PointWork& work) {
+  TestPointResult& r = work.r;
+  const BenchConstants& constants = work.constants;
+  const JointFit* joint = &r.joint;
+  const double w = work.w;
   const DelayBreakdown breakdown = delayBreakdown(r.lagMs, r.lagStdMs, constants);
   r.imuDelayMs = breakdown.imuDelayMs;
   r.imuDelayStdMs = breakdown.imuDelayStdMs;
@@ -574,10 +705,16 @@ Result<TestPointResult> analyzeTestPoint(const TestPointData& data, double incre
   if (r.lagStdMs < 0.0)
     return Status(StatusCode::kNotConverged, "the fits gave a negative lag uncertainty (" + fmt(r.lagStdMs, 4) +
                                                  " ms): the data are too degenerate for the noise model");
+  return Status::ok();
+}
 
-  addValidityChecks(r, ch, gyroAngleResidual, times, amplitudes, lags, amplitude);
-
-  // What the user should know about this result.
+// What the user should know about this result.
+void addWarnings(PointWork& work) {
+  TestPointResult& r = work.r;
+  const TestPointData& data = work.data;
+  const BenchConstants& constants = work.constants;
+  const JointFit* joint = &r.joint;
+  const double amplitude = work.amplitude;
   if (r.lostImuFrames > 0)
     r.warnings.push_back(std::to_string(r.lostImuFrames) + " IMU frames were lost; their increments are missing");
   if (r.lostTableFrames > 0)
@@ -593,8 +730,54 @@ Result<TestPointResult> analyzeTestPoint(const TestPointData& data, double incre
   if (r.gyroDelayMs < 0.0 && r.imuDelayMs >= 0.0 && r.gyroDelayMs + 3.0 * r.gyroDelayStdMs < 0.0)
     r.warnings.push_back("the gyro's own delay is negative: the processing board delay (" +
                          fmt(constants.boardDelayMs, 4) + " ms) is larger than the IMU delay; check that constant");
-  return r;
 }
+
+// The stages from the fits on, once the frequency is chosen.
+Result<TestPointResult> fitAndCheck(PointWork& work) {
+  FOG_RETURN_IF_ERROR(fitTable(work));
+  measureGyroNoise(work);
+  FOG_RETURN_IF_ERROR(fitGyro(work));
+  computeResiduals(work);
+  FOG_RETURN_IF_ERROR(fitJointAndTrack(work));
+  honestUncertainty(work);
+  FOG_RETURN_IF_ERROR(breakDown(work));
+  addValidityChecks(work);
+  addWarnings(work);
+  return std::move(work.r);
+}
+
+}  // namespace
+
+Result<TestPointResult> analyzeTestPoint(const TestPointData& data, double incrementScale,
+                                         const BenchConstants& constants) {
+  PointWork work(data, constants);
+  FOG_RETURN_IF_ERROR(prepare(work, incrementScale));
+  const double planned = data.nominalFrequencyHz;
+  if (!(planned > 0.0 && work.r.durationS * planned >= 2.0)) {
+    FOG_RETURN_IF_ERROR(chooseFrequency(work, estimateSwingFrequencyHz(work.ch.table)));
+    return fitAndCheck(work);
+  }
+  // The plan states the frequency, and the fits start from it unless the
+  // table swung more than 1 % off it. The check (a 262 144-point FFT and 42
+  // periodogram evaluations, the same for 1 min as for 5: two thirds of a
+  // 1-min analysis) reads only the table's times and angles, so it runs on
+  // the second core beside the fits. In the rare case it finds the plan off,
+  // the point is analysed again, in order, from the measured frequency: the
+  // result is the same as when the check runs first.
+  auto measured = std::async(std::launch::async, [&table = work.ch.table] { return estimateSwingFrequencyHz(table); });
+  const Status chosen = chooseFrequency(work, planned);  // as the check finds it within 1 %
+  Result<TestPointResult> result = chosen.isOk() ? fitAndCheck(work) : Result<TestPointResult>(chosen);
+  const Result<double> measuredHz = measured.get();
+  if (!measuredHz) return measuredHz.status();  // the check's refusal comes first, as when it runs first
+  if (std::abs(*measuredHz / planned - 1.0) > 0.01) {
+    PointWork again(data, constants);
+    FOG_RETURN_IF_ERROR(prepare(again, incrementScale));
+    FOG_RETURN_IF_ERROR(chooseFrequency(again, measuredHz));
+    return fitAndCheck(again);
+  }
+  return result;
+}
+
 
 bool passedItsChecks(const TestPointResult& point) {
   return std::none_of(point.checks.begin(), point.checks.end(),

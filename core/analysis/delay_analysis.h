@@ -155,7 +155,10 @@ DelayBreakdown delayBreakdown(double lagMs, double lagStdMs, const BenchConstant
 // wrapped into (-T/2, T/2].
 double lagFromPhasesMs(double tablePhaseMs, double gyroPhaseMs, double periodMs);
 
-// incrementScale: see makeChannels().
+// incrementScale: see makeChannels(). Walks the samples a fixed number of
+// times (sample_passes.h; SamplePasses in tests/core/analysis). Uses up to
+// three threads: the fits split some passes over two, and when the plan
+// states the frequency its check against the data runs beside them.
 Result<TestPointResult> analyzeTestPoint(const TestPointData& data, double incrementScale,
                                          const BenchConstants& constants);
 

@@ -4,6 +4,7 @@
 #include <future>
 
 #include "core/analysis/least_squares.h"
+#include "core/analysis/sample_passes.h"
 #include "core/analysis/sin_cos_series.h"
 #include "core/common/units.h"
 
@@ -25,6 +26,8 @@ class JointProblem final : public LeastSquaresProblem {
   // The table and gyro rows are independent sums: each pass runs them on two
   // threads (the bench machine has two cores) and adds the results.
   double accumulate(const double* x, Eigen::MatrixXd* jtj, Eigen::VectorXd* jtr) const override {
+    countPass(SampleStream::kTable);
+    countPass(SampleStream::kGyro);
     NormalSums<4> tableSums;
     NormalSums<kParams> gyroSums;
     const bool withJacobian = jtj != nullptr;

@@ -5,6 +5,7 @@
 #include <future>
 
 #include "core/analysis/least_squares.h"
+#include "core/analysis/sample_passes.h"
 #include "core/analysis/sin_cos_series.h"
 #include "core/common/units.h"
 
@@ -56,6 +57,7 @@ class TableSineProblem final : public LeastSquaresProblem {
   int numParameters() const override { return 4; }
   // Rows are independent: the two halves are summed on two threads.
   double accumulate(const double* x, Eigen::MatrixXd* jtj, Eigen::VectorXd* jtr) const override {
+    countPass(SampleStream::kTable);  // one pass, its halves on two threads
     NormalSums<4> first, second;
     const bool withJacobian = jtj != nullptr;
     auto half = std::async(std::launch::async, [&] { return accumulateRows(x, 0, n_ / 2, withJacobian, first); });
@@ -99,6 +101,7 @@ class GyroSineProblem final : public LeastSquaresProblem {
   std::size_t numResiduals() const override { return n_; }
   int numParameters() const override { return 4; }
   double accumulate(const double* x, Eigen::MatrixXd* jtj, Eigen::VectorXd* jtr) const override {
+    countPass(SampleStream::kGyro);
     const double a = x[0], b = x[1], d = x[2], w = x[3];
     GyroSinCosStream phase(g_, w, 0.0);
     const auto& te = g_.endS;
@@ -155,6 +158,7 @@ Linear3 solveGram(const NormalSums<4>& g) {
 
 SineFit fitTableLinear(const TableChannel& table, double w, double referenceS) {
   const std::size_t n = table.timeS.size();
+  countPass(SampleStream::kTable);
   SinCosStream phase(w, 0.0);
   NormalSums<4> gram;
   for (std::size_t i = 0; i < n; ++i) {
@@ -180,6 +184,7 @@ SineFit fitTableLinear(const TableChannel& table, double w, double referenceS) {
 
 SineFit fitGyroLinear(const GyroChannel& gyro, double w, double referenceS, bool weighted) {
   const std::size_t n = gyro.size();
+  countPass(SampleStream::kGyro);
   GyroSinCosStream phase(gyro, w, 0.0);
   // Gram matrices of the raw and (when weighted) the whitened rows.
   NormalSums<4> raw, white;
@@ -254,6 +259,7 @@ Result<SineFit> fitGyroNonlinear(const GyroChannel& gyro, const SineFit& start) 
   finishFit(f, &sol->covariance, 0, 1, 3);
   const auto r = gyroIncrementResiduals(gyro, f);
   double raw = 0.0;
+  countPass(SampleStream::kGyro);
   for (double v : r) raw += v * v;
   f.residualRmsDeg = std::sqrt(raw / static_cast<double>(r.size()));
   return f;
@@ -261,6 +267,7 @@ Result<SineFit> fitGyroNonlinear(const GyroChannel& gyro, const SineFit& start) 
 
 std::vector<double> tableResiduals(const TableChannel& table, const SineFit& f) {
   const std::size_t n = table.timeS.size();
+  countPass(SampleStream::kTable);
   std::vector<double> r(n), sn(n), cs(n);
   sinCosSeries(table.timeS.data(), n, f.omegaRadPerS, 0.0, sn.data(), cs.data());
   for (std::size_t i = 0; i < n; ++i) r[i] = table.angleDeg[i] - (f.a * sn[i] + f.b * cs[i] + f.offsetDeg);
@@ -268,6 +275,7 @@ std::vector<double> tableResiduals(const TableChannel& table, const SineFit& f) 
 }
 
 std::vector<double> gyroIncrementResiduals(const GyroChannel& gyro, const SineFit& f) {
+  countPass(SampleStream::kGyro);
   std::vector<double> r(gyro.size());
   GyroSinCosStream phase(gyro, f.omegaRadPerS, 0.0);
   for (std::size_t k = 0; k < r.size(); ++k) {

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/analysis/channels.h"
+#include "core/analysis/sample_passes.h"
 #include "core/analysis/sine_fit.h"
 #include "core/common/status.h"
 
@@ -43,21 +44,29 @@ Result<double> estimateSwingFrequencyHz(const TableChannel& table);
 
 // Angle residuals averaged over windows of windowS seconds: the smooth part
 // of a misfit, from which white noise and quantisation average out. Returns
-// the RMS of the window means (weighted by their sample counts).
-double smoothResidualRms(const std::vector<double>& timeS, const std::vector<double>& residual, double windowS);
+// the RMS of the window means (weighted by their sample counts). stream:
+// whose samples the residual belongs to (its pass is counted there, as for
+// the two functions below).
+double smoothResidualRms(const std::vector<double>& timeS, const std::vector<double>& residual, double windowS,
+                         SampleStream stream);
 
 // Amplitude of the harmonics 2..5 of the fundamental in a residual (each
 // fitted by linear least squares at k*omega), root-sum-square, in the
-// residual's unit.
-double harmonicAmplitude(const std::vector<double>& timeS, const std::vector<double>& residual, double omegaRadPerS);
+// residual's unit. One pass: the harmonics' sines and cosines come from the
+// fundamental's by the angle-addition recurrence (rounding-level agreement
+// with sin(k*w*t)).
+double harmonicAmplitude(const std::vector<double>& timeS, const std::vector<double>& residual, double omegaRadPerS,
+                         SampleStream stream);
 
 // Correlation of the residuals one, two, ... swing periods apart (at the
 // nearest sample), summed as 2*sum_k (1 - k/n) rho_k over k = 1 .. K with
 // rho_k > 0. When stamps are commensurate with the swing (1 Hz at 1 kHz),
 // quantisation errors repeat every period and do not average down; the
 // variance of a phase estimate then grows by (1 + this sum). About 0 for
-// incommensurate stamps.
-double periodicResidualInflation(const std::vector<double>& residual, double samplesPerPeriod, double periods);
+// incommensurate stamps. Three passes: the mean, the variance, and all the
+// lags' sums together.
+double periodicResidualInflation(const std::vector<double>& residual, double samplesPerPeriod, double periods,
+                                 SampleStream stream);
 
 // Straight-line fit y = a + b*x with the standard error of b from the
 // scatter about the line (needs 3 or more points).

@@ -241,5 +241,28 @@ TEST(DelayAnalysis, StandardErrorMatchesMonteCarloScatterAndBound) {
   EXPECT_NEAR(sd.mean / bound.mean, 1.0, 0.1);
 }
 
+// The frequency check runs beside the fits when the plan states the
+// frequency (analyzeTestPoint); when it finds the table 5 % off the plan, the
+// point is analysed again from the measured frequency: the same lag as when
+// no frequency was planned, and a warning that says so.
+TEST(DelayAnalysis, APlanOffByMoreThanOnePercentIsFittedFromTheMeasuredFrequency) {
+  SyntheticSpec s;
+  s.frequencyHz = 1.05;
+  auto data = makeSynthetic(s);
+  data.nominalFrequencyHz = 1.0;
+  const auto planned = analyzeTestPoint(data, 1.0, BenchConstants{});
+  data.nominalFrequencyHz = 0.0;
+  const auto unplanned = analyzeTestPoint(data, 1.0, BenchConstants{});
+  ASSERT_TRUE(planned.isOk()) << planned.status().toString();
+  ASSERT_TRUE(unplanned.isOk()) << unplanned.status().toString();
+  EXPECT_NEAR(planned->nominalFrequencyHz, 1.05, 1e-4);
+  EXPECT_EQ(planned->nominalFrequencyHz, unplanned->nominalFrequencyHz);
+  EXPECT_EQ(planned->lagMs, unplanned->lagMs);
+  EXPECT_EQ(planned->lagStdMs, unplanned->lagStdMs);
+  ASSERT_FALSE(planned->warnings.empty());
+  EXPECT_NE(planned->warnings.front().find("not the planned 1.00000 Hz"), std::string::npos) << planned->warnings.front();
+  EXPECT_EQ(planned->warnings.size(), unplanned->warnings.size() + 1);
+}
+
 }  // namespace
 }  // namespace fog::analysis
