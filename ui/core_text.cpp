@@ -313,6 +313,12 @@ const char* const kTemplates[] = {
     QT_TRANSLATE_NOOP("core_text", "steady_sine"),
     QT_TRANSLATE_NOOP("core_text", "clock_rate"),
     QT_TRANSLATE_NOOP("core_text", "causal"),
+    QT_TRANSLATE_NOOP("core_text", "uncertainty_below_bound"),
+    QT_TRANSLATE_NOOP("core_text", "σ %1 ms is %2 of the Cramér–Rao bound %3 ms (%4, %5 degrees of freedom; at least %6 expected)"),
+    QT_TRANSLATE_NOOP("core_text", "the stated uncertainty is below what the noise allows: %1. No estimate of the lag scatters less than the bound; the σ is understated and the delay is not vouched for. Record more periods, or check the noise model (docs/method.md)"),
+    QT_TRANSLATE_NOOP("core_text", "not judged: the Cramér–Rao bound of this session's noise is not known"),
+    QT_TRANSLATE_NOOP("core_text", "fit"),
+    QT_TRANSLATE_NOOP("core_text", "measured lag (gyro behind table) %1 ± %2 ms (CRLB %3 ms, std/CRLB %4: BELOW THE BOUND, the σ is understated (uncertainty_below_bound))"),
     QT_TRANSLATE_NOOP("core_text", "%1, fogbench %2"),
 };
 

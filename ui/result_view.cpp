@@ -37,6 +37,7 @@
 #include <qwt_symbol.h>
 
 #include "core/analysis/theory.h"
+#include "core/analysis/uncertainty_bound.h"
 #include "core/analysis/verdict.h"
 #include "core/common/version.h"
 #include "core/session/session_file.h"
@@ -430,7 +431,9 @@ void ResultView::fillTables(std::size_t i) {
   delayTable_->setRowCount(5);
   setRow(delayTable_, 0,
          {tr("measured lag (gyro behind table)"), num(p.lagMs, 5), num(p.lagStdMs, 5), QString(),
-          tr("joint fit; CRLB %1 ms, σ/CRLB %2").arg(num(p.crlbMs, 5), num(p.stdOverCrlb, 2))},
+          tr("joint fit; CRLB %1 ms, σ/CRLB %2").arg(num(p.crlbMs, 5), num(p.stdOverCrlb, 2)) +
+              (analysis::sigmaBelowBound(p) ? tr(" — σ below the bound: understated (check uncertainty_below_bound)")
+                                            : QString())},
          true);
   setRow(delayTable_, 1,
          {tr("+ table read delay"), num(c.tableReadDelayMs, 5), num(c.tableReadDelayStdMs, 5), QString(),

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "core/analysis/uncertainty_bound.h"
 #include "core/common/text.h"
 
 namespace fog::analysis {
@@ -97,7 +98,8 @@ std::string formatReportText(const DelayReport& report, const ReportContext& con
     o << "  delay:\n";
     const int d = decimalsFor(p.lagStdMs);
     o << "    measured lag (gyro behind table) " << fixed(p.lagMs, d, 9) << " ± " << fixed(p.lagStdMs, d)
-      << " ms   (CRLB " << sd(p.crlbMs) << " ms, std/CRLB " << f("%.2f", p.stdOverCrlb) << ")\n";
+      << " ms   (CRLB " << sd(p.crlbMs) << " ms, std/CRLB " << f("%.2f", p.stdOverCrlb)
+      << (sigmaBelowBound(p) ? ": BELOW THE BOUND, the σ is understated (uncertainty_below_bound)" : "") << ")\n";
     if (p.lagStdSource != "fit")
       o << "    uncertainty from " << p.lagStdSource << " (fit alone " << fixed(p.fitLagStdMs, d)
         << " ms, per-period scatter " << fixed(p.trackLagStdMs, d) << " ms)\n";

@@ -71,4 +71,10 @@ ValidityCheck uncertaintyBelowBoundCheck(const TestPointResult& point) {
   return c;
 }
 
+bool sigmaBelowBound(const TestPointResult& point) {
+  return std::any_of(point.checks.begin(), point.checks.end(), [](const ValidityCheck& c) {
+    return c.id == "uncertainty_below_bound" && c.judged && !c.passed;
+  });
+}
+
 }  // namespace fog::analysis

@@ -40,4 +40,8 @@ double smallestStdOverBound(int dof);
 // only when the bound is known (> 0).
 ValidityCheck uncertaintyBelowBoundCheck(const TestPointResult& point);
 
+// True when the point's check uncertainty_below_bound was judged and failed:
+// the views mark the σ/CRLB they show beside the σ.
+bool sigmaBelowBound(const TestPointResult& point);
+
 }  // namespace fog::analysis

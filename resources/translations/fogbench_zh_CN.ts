@@ -2290,7 +2290,7 @@ File: %1</source>
         <translation>PNG 图像 (*.png);;SVG 矢量图 (*.svg);;PDF 文档 (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../../ui/report/calibration_report.cpp" line="+67"/>
+        <location filename="../../ui/report/calibration_report.cpp" line="+68"/>
         <location line="+233"/>
         <source>not recorded</source>
         <translation>未记录</translation>
@@ -2540,12 +2540,12 @@ File: %1</source>
     </message>
     <message>
         <location line="-282"/>
-        <location line="+365"/>
+        <location line="+367"/>
         <source>value</source>
         <translation>数值</translation>
     </message>
     <message>
-        <location line="-364"/>
+        <location line="-366"/>
         <source>std. uncertainty</source>
         <translation>标准不确定度</translation>
     </message>
@@ -2888,12 +2888,12 @@ File: %1</source>
         <location line="+16"/>
         <location line="+16"/>
         <location line="+12"/>
-        <location line="+83"/>
+        <location line="+85"/>
         <source>time (s)</source>
         <translation>时间 (s)</translation>
     </message>
     <message>
-        <location line="-126"/>
+        <location line="-128"/>
         <location line="+16"/>
         <source>angle (°)</source>
         <translation>角度 (°)</translation>
@@ -3041,6 +3041,11 @@ File: %1</source>
     </message>
     <message>
         <location line="+1"/>
+        <source> — σ below the bound: understated (check uncertainty_below_bound)</source>
+        <translation> — σ 低于克拉美–罗界：不确定度被低估（检查 uncertainty_below_bound）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>+ table read delay</source>
         <translation>+ 转台读数延迟</translation>
     </message>
@@ -3328,7 +3333,7 @@ File: %1</source>
         <translation>%1 个测试点未得到延迟</translation>
     </message>
     <message>
-        <location line="-305"/>
+        <location line="-307"/>
         <source>table angle (encoder, %1 ms)</source>
         <translation>转台角度（编码器，%1 ms）</translation>
     </message>
@@ -3338,7 +3343,7 @@ File: %1</source>
         <translation>陀螺角度（增量累加，%1 ms）</translation>
     </message>
     <message>
-        <location line="+306"/>
+        <location line="+308"/>
         <source>INCOMPLETE (the run stopped early); its data give %1</source>
         <translation>不完整（运行提前停止）；其数据给出 %1</translation>
     </message>
@@ -3389,7 +3394,7 @@ File: %1</source>
         <translation>IMU 延迟标定报告：%1 %2</translation>
     </message>
     <message>
-        <location filename="../../ui/result_view.cpp" line="+63"/>
+        <location filename="../../ui/result_view.cpp" line="+64"/>
         <source>%1: %2 axis, %3 Hz / %4°</source>
         <translation>%1：%2 轴，%3 Hz / %4°</translation>
     </message>
@@ -3764,7 +3769,12 @@ File: %1</source>
         <translation>联合拟合；CRLB %1 ms，σ/CRLB %2</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+1"/>
+        <source> — σ below the bound: understated (check uncertainty_below_bound)</source>
+        <translation> — σ 低于克拉美–罗界：不确定度被低估（检查 uncertainty_below_bound）</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>+ table read delay</source>
         <translation>+ 转台读数延迟</translation>
     </message>
@@ -5557,6 +5567,36 @@ File: %1</source>
         <location line="+1"/>
         <source>causal</source>
         <translation>因果性</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>uncertainty_below_bound</source>
+        <translation>不确定度低于下界</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>σ %1 ms is %2 of the Cramér–Rao bound %3 ms (%4, %5 degrees of freedom; at least %6 expected)</source>
+        <translation>σ %1 ms 为克拉美–罗界 %3 ms 的 %2 倍（%4，自由度 %5；应至少为 %6）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the stated uncertainty is below what the noise allows: %1. No estimate of the lag scatters less than the bound; the σ is understated and the delay is not vouched for. Record more periods, or check the noise model (docs/method.md)</source>
+        <translation>给出的不确定度低于噪声所允许的下限：%1。任何滞后估计的离散都不会小于该下界；σ 被低估，延迟无法担保。请记录更多周期，或检查噪声模型（docs/method.md）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not judged: the Cramér–Rao bound of this session&apos;s noise is not known</source>
+        <translation>未判定：本次会话噪声的克拉美–罗界未知</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>fit</source>
+        <translation>拟合</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>measured lag (gyro behind table) %1 ± %2 ms (CRLB %3 ms, std/CRLB %4: BELOW THE BOUND, the σ is understated (uncertainty_below_bound))</source>
+        <translation>测得滞后（陀螺落后于转台）&#x3000;%1 ± %2 ms（CRLB %3 ms，标准差/CRLB %4：低于下界，σ 被低估（uncertainty_below_bound））</translation>
     </message>
     <message>
         <location line="+1"/>

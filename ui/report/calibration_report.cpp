@@ -12,6 +12,7 @@
 #include <qwt_plot.h>
 
 #include "core/analysis/theory.h"
+#include "core/analysis/uncertainty_bound.h"
 #include "core/analysis/verdict.h"
 #include "core/common/version.h"
 #include "core/noise/gyro_noise.h"
@@ -655,7 +656,9 @@ void resultsPage(PageFlow& flow, const Content& c, const TestPointResult& p, con
                    {QObject::tr("basis"), 66, Qt::AlignLeft}};
   delay.rows = {
       {QObject::tr("measured lag (gyro behind table)"), fixed(p.lagMs, dec), fixed(p.lagStdMs, dec),
-       QObject::tr("joint fit; CRLB %1 ms, σ/CRLB %2").arg(fixed(p.crlbMs, dec), fixed(p.stdOverCrlb, 2))},
+       QObject::tr("joint fit; CRLB %1 ms, σ/CRLB %2").arg(fixed(p.crlbMs, dec), fixed(p.stdOverCrlb, 2)) +
+           (analysis::sigmaBelowBound(p) ? QObject::tr(" — σ below the bound: understated (check uncertainty_below_bound)")
+                                         : QString())},
       {QObject::tr("+ table read delay"), fixed(k.tableReadDelayMs, dec), fixed(k.tableReadDelayStdMs, dec),
        QObject::tr("bench constant")},
       {QObject::tr("= IMU delay"), fixed(p.imuDelayMs, dec), fixed(p.imuDelayStdMs, dec),
