@@ -66,7 +66,11 @@ std::vector<PeriodDelay> periodTrack(const Channels& ch, double w, double refere
   GyroSinCosStream gyroPhase(g, w, 0.0);
   const double first = std::max(tt.front(), g.startS.front());
   const double last = std::min(tt.back(), g.endS.back());
-  const int count = static_cast<int>(std::floor((last - first) / period));
+  // Checked before the cast: a fit run from a wild start (a planned
+  // frequency of 1e300 Hz, fog_fuzz_analysis) gave 1e301 periods.
+  const double periods = std::floor((last - first) / period);
+  if (!(periods >= 0.0 && periods <= static_cast<double>(tt.size()))) return out;
+  const int count = static_cast<int>(periods);
   std::size_t i = 0, k = 0;
   for (int j = 0; j < count; ++j) {
     const double a = first + j * period, b = a + period;
@@ -370,6 +374,11 @@ namespace {
 // samples may have been crafted, and a time out of order turned a bin index
 // of the frequency estimate into an overflowed cast (fog_fuzz_analysis).
 Status checkSamples(const TestPointData& data, double incrementScale) {
+  // The planned frequency starts the fits (beside the frequency check): one
+  // beyond any swing would start them far from the data.
+  if (!std::isfinite(data.nominalFrequencyHz) || data.nominalFrequencyHz < 0.0 || data.nominalFrequencyHz > 1000.0)
+    return invalidArgument("the planned swing frequency (" + fmt(data.nominalFrequencyHz, 6) +
+                           " Hz) is not within 0 .. 1000 Hz; check the plan or the metadata");
   if (!std::isfinite(incrementScale) || incrementScale == 0.0)
     return invalidArgument("the gyro pulse equivalent (" + fmt(incrementScale, 6) + " deg) is not a usable number");
   countPass(SampleStream::kTable);

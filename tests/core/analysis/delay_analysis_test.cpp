@@ -176,6 +176,18 @@ TEST(DelayAnalysis, AValueBeyondADoublesSquareIsRefusedNotCrashed) {
   EXPECT_FALSE(r.isOk());
 }
 
+// A planned frequency beyond any swing starts the fits far from the data:
+// 1e300 Hz gave 1e301 periods and an overflowed cast (fog_fuzz_analysis).
+TEST(DelayAnalysis, APlannedFrequencyBeyondAnySwingIsRefused) {
+  for (const double planned : {1e300, 2000.0, -1.0}) {
+    auto data = makeSynthetic(SyntheticSpec{});
+    data.nominalFrequencyHz = planned;
+    auto r = analyzeTestPoint(data, 1.0, BenchConstants{});
+    ASSERT_FALSE(r.isOk()) << planned;
+    EXPECT_NE(r.status().message().find("is not within 0 .. 1000 Hz"), std::string::npos) << r.status().message();
+  }
+}
+
 // The delay-against-frequency test pools only points whose checks passed: 9
 // refused pendulum episodes once read "weighted lag -21.87 ± 5.40 ms ...
 // consistent with a pure delay".
