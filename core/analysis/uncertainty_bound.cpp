@@ -2,26 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <string>
 
 #include "core/analysis/statistics.h"
+#include "core/common/text.h"
 
 namespace fog::analysis {
 
 namespace {
-
-std::string fixed(double v, int decimals) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  return buf;
-}
-
-std::string shortest(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.2g", v);
-  return buf;
-}
 
 // The x with P(χ²(ν) > x) = 1 - p: bisection on the survival function.
 double chiSquareQuantile(double p, int dof) {
@@ -60,8 +48,8 @@ ValidityCheck uncertaintyBelowBoundCheck(const TestPointResult& point) {
   const int dof = lagStdDegreesOfFreedom(point);
   const double ratio = point.lagStdMs / point.crlbMs, least = smallestStdOverBound(dof);
   c.passed = ratio >= least;
-  const std::string measured = "σ " + shortest(point.lagStdMs) + " ms is " + fixed(ratio, 2) +
-                               " of the Cramér–Rao bound " + shortest(point.crlbMs) + " ms (" + point.lagStdSource +
+  const std::string measured = "σ " + printfNumber("%.2g", point.lagStdMs) + " ms is " + fixed(ratio, 2) +
+                               " of the Cramér–Rao bound " + printfNumber("%.2g", point.crlbMs) + " ms (" + point.lagStdSource +
                                ", " + std::to_string(dof) + " degrees of freedom; at least " + fixed(least, 2) +
                                " expected)";
   c.detail = c.passed ? measured

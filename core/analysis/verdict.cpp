@@ -4,22 +4,14 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/common/text.h"
+
 namespace fog::analysis {
 
 namespace {
 
-std::string fixed(double v, int decimals) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  return buf;
-}
-
 // The limit as the user wrote it: 0.8, not 0.8000.
-std::string limitText(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
+std::string limitText(double v) { return printfNumber("%g", v); }
 
 }  // namespace
 

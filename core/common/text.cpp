@@ -1,5 +1,7 @@
 #include "core/common/text.h"
 
+#include <cstdio>
+
 #include <cstdint>
 
 namespace fog {
@@ -80,6 +82,18 @@ std::string forTerminal(std::string_view text) {
     }
   }
   return out;
+}
+
+std::string printfNumber(const char* format, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, format, v);
+  return buf;
+}
+
+std::string fixed(double v, int decimals) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  return buf;
 }
 
 }  // namespace fog

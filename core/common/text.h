@@ -25,4 +25,9 @@ std::string toValidUtf8(std::string_view text);
 // not move the cursor or retitle the window). Valid UTF-8 otherwise kept.
 std::string forTerminal(std::string_view text);
 
+// A number in a message, as printf writes it: `format` takes one double
+// ("%g": 0.8, 1e+10; "%.2g"), fixed() a number of decimals ("0.25").
+std::string printfNumber(const char* format, double v);
+std::string fixed(double v, int decimals);
+
 }  // namespace fog

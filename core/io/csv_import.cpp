@@ -11,6 +11,7 @@
 #include <system_error>
 
 #include "core/common/file_read.h"
+#include "core/common/text.h"
 #include "core/io/metadata.h"
 
 namespace fog::io {
@@ -220,20 +221,13 @@ constexpr ValueRange kIncrementRange{-1e4, 1e4, "a gyro increment (deg)",
                                      "over 27 turns in one IMU frame; check the column's unit"};
 // A rate: 1e6 deg/s is some 300 times a navigation FOG's range.
 constexpr ValueRange kRateRange{-1e6, 1e6, "a gyro rate (deg/s)", "far beyond any gyro's range; check the unit"};
-// "-1e+10", "1000", "-273.15": a bound as the user would write it.
-std::string shortNumber(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
-
 constexpr ValueRange kTemperatureRange{-273.15, 1000.0, "a temperature (deg C)", "degrees Celsius"};
 
 Status CsvStream::number(int id, double& out, const ValueRange& range) const {
   FOG_RETURN_IF_ERROR(finiteNumber(id, out));
   if (out < range.min || out > range.max)
     return error(id, quoted(id) + " is out of range for " + range.what + ": it must be within " +
-                         shortNumber(range.min) + " .. " + shortNumber(range.max) + " (" + range.why + ")");
+                         printfNumber("%g", range.min) + " .. " + printfNumber("%g", range.max) + " (" + range.why + ")");
   return Status::ok();
 }
 
