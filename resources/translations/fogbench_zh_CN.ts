@@ -5325,6 +5325,36 @@ File: %1</source>
     </message>
     <message>
         <location line="+1"/>
+        <source>INCOMPLETE</source>
+        <translation>未完成</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Stored verdict: %1, against the stored limit of %2 ms</source>
+        <translation>已保存的判定：%1，依据保存的限值 %2 ms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Stored verdict: %1 (the data recorded give %2), against the stored limit of %3 ms</source>
+        <translation>已保存的判定：%1（已记录的数据给出 %2），依据保存的限值 %3 ms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>This version&apos;s analysis of the same data with the same settings differs from the stored result:</source>
+        <translation>本版本以相同设置对相同数据的分析与已保存的结果不同：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>This version&apos;s analysis with the stored result&apos;s settings (plots and fits):</source>
+        <translation>本版本以已保存结果的设置所做的分析（曲线与拟合）：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>INCOMPLETE RUN: %1</source>
+        <translation>运行未完成：%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>stream: %1 table, %2 IMU, %3 status frames; %4 checksum failures, %5 lost, %6 duplicated, %7 bytes skipped</source>
         <translation>数据流：转台帧 %1，IMU 帧 %2，状态帧 %3；校验失败 %4，丢失 %5，重复 %6，跳过字节 %7</translation>
     </message>
