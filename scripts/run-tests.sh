@@ -102,7 +102,7 @@ build/fuzz/fuzz/fog_fuzz_decoder -max_total_time="$fuzz_seconds" -print_final_st
 build/fuzz/fuzz/fog_fuzz_session -max_total_time="$fuzz_seconds" -print_final_stats=1 \
   -artifact_prefix="$fuzz_dir/session-" "$fuzz_dir/session" "$fuzz_dir/seed-session"
 build/fuzz/fuzz/fog_fuzz_import -max_total_time="$fuzz_seconds" -print_final_stats=1 -max_len=65536 \
-  -artifact_prefix="$fuzz_dir/import-" "$fuzz_dir/import" "$fuzz_dir/seed-import"
+  -artifact_prefix="$fuzz_dir/import-" "$fuzz_dir/import" "$fuzz_dir/seed-import" fuzz/corpus/import
 # The analysis over recordings with numeric extremes (committed seeds: ±1e±300,
 # subnormals, NaN, inf, huge counts): half the time (each input is a whole analysis).
 build/fuzz/fuzz/fog_fuzz_analysis -max_total_time="$(( (fuzz_seconds + 1) / 2 ))" -print_final_stats=1 -max_len=512 \

@@ -241,7 +241,7 @@ Result<TestPlan> testPlanFromJson(std::string_view text) {
   TestPlan plan;
   for (auto it = doc.begin(); it != doc.end(); ++it) {
     if (it.key() == "points") continue;
-    if (it.key() == "rest_between_s" && it->is_number()) {
+    if (it.key() == "rest_between_s" && it->is_number() && std::isfinite(it->get<double>())) {
       plan.restBetweenS = it->get<double>();
       continue;
     }
@@ -278,13 +278,17 @@ Result<TestPlan> testPlanFromJson(std::string_view text) {
         if (!it->is_array() || it->size() != kAxisCount)
           return invalidArgument(where + "\"position_deg\" must be [x, y, z] in degrees");
         for (int a = 0; a < kAxisCount; ++a) {
-          if (!(*it)[a].is_number()) return invalidArgument(where + "\"position_deg\" must hold three numbers");
+          if (!(*it)[a].is_number() || !std::isfinite((*it)[a].get<double>()))
+            return invalidArgument(where + "\"position_deg\" must hold three finite numbers");
           point.positionDeg[a] = (*it)[a].get<double>();
         }
         continue;
       }
       if (!it->is_number()) return invalidArgument(where + "\"" + key + "\" must be a number");
       const double v = it->get<double>();
+      // JSON has no infinity, but a literal beyond double's range parses to
+      // one, and it would be written back as null.
+      if (!std::isfinite(v)) return invalidArgument(where + "\"" + key + "\" is beyond any finite number");
       if (key == "frequency_hz") {
         point.frequencyHz = v;
         gaveFrequency = true;
@@ -305,7 +309,13 @@ Result<TestPlan> testPlanFromJson(std::string_view text) {
       if (!gaveAmplitude) point.amplitudeDeg = 0.0;
       if (periods != 0.0) return invalidArgument(where + "a static segment has no periods; give \"duration_s\"");
     }
-    if (periods != 0.0) point.durationS = periods / point.frequencyHz;
+    if (periods != 0.0) {
+      if (!(point.frequencyHz > 0.0))
+        return invalidArgument(where + "\"periods\" needs \"frequency_hz\" > 0 to give a duration");
+      point.durationS = periods / point.frequencyHz;
+      if (!std::isfinite(point.durationS))
+        return invalidArgument(where + "\"periods\" / \"frequency_hz\" is beyond any finite duration");
+    }
     plan.points.push_back(point);
   }
   return plan;

@@ -68,6 +68,25 @@ TEST(TestPlan, JsonPeriodsSetDuration) {
   EXPECT_DOUBLE_EQ(plan->points[0].durationS, 60.0);
 }
 
+// The import fuzzer's find: periods over a zero frequency made an infinite
+// duration that was written back as null, so the plan did not read back.
+// Every plan that parses writes JSON that parses again.
+TEST(TestPlan, PeriodsWithoutAFrequencyOrBeyondAnyNumberAreRefused) {
+  for (const char* text : {R"({"points":[{"periods":5,"frequency_hz":0}]})",
+                           R"({"points":[{"periods":1e300,"frequency_hz":1e-300}]})",
+                           R"({"points":[{"duration_s":1e400}]})",
+                           R"({"points":[{"position_deg":[0,1e999,0]}]})",
+                           R"({"rest_between_s":-1e999,"points":[]})"}) {
+    auto plan = testPlanFromJson(text);
+    EXPECT_FALSE(plan.isOk()) << text;
+    if (!plan.isOk()) {
+      EXPECT_FALSE(plan.status().message().empty());
+    }
+  }
+  auto zero = testPlanFromJson(R"({"points":[{"periods":5,"frequency_hz":0}]})");
+  EXPECT_NE(zero.status().message().find("frequency_hz\" > 0"), std::string::npos) << zero.status().toString();
+}
+
 TEST(TestPlan, JsonErrorsSayWhatIsWrong) {
   EXPECT_EQ(testPlanFromJson("{").status().code(), StatusCode::kInvalidArgument);
   auto typo = testPlanFromJson(R"({"points":[{"frequncy_hz":1}]})");
