@@ -51,6 +51,8 @@
 #include "core/common/version.h"
 #include "core/acquisition/acquisition.h"
 #include "core/acquisition/simulator_source.h"
+#include "core/analysis/uncertainty_bound.h"
+#include "core/protocol/recording_builder.h"
 #include "core/diagnosis/effects.h"
 #include "core/io/csv_export.h"
 #include "core/session/session_file.h"
@@ -588,6 +590,42 @@ class BenchUiTest : public QObject {
   // Compare and the PDF, never a re-judged PASS; a run stopped early is
   // INCOMPLETE in each. The GUI's gyro signs and limit are stored with a
   // re-analysis.
+  // A point whose stated σ is 6x below its Cramér–Rao bound: the Results
+  // view marks its failed check beside the σ/CRLB it shows, the verdict is
+  // not PASS and the text report pane says it too.
+  void aSigmaBelowTheBoundIsMarkedInResults() {
+    fog::TestPlan plan;
+    plan.points = {fog::TestPoint{fog::Axis::kX, 2.0, 2.0, 10.0, 0.3}};
+    auto run = fog::model::simulate(fog::model::SimConfig{}, plan);
+    QVERIFY(run.isOk());
+    auto recording = fog::protocol::decodeRecording(run->bytes);
+    QVERIFY(recording.isOk());
+    auto report = fog::analysis::analyzeRecording(*recording, {});
+    QVERIFY2(report.isOk(), report.status().message().c_str());
+    auto& p = report->points.front();
+    p.crlbMs = 6.0 * p.lagStdMs;
+    p.stdOverCrlb = p.lagStdMs / p.crlbMs;
+    for (auto& c : p.checks)
+      if (c.id == "uncertainty_below_bound") c = fog::analysis::uncertaintyBelowBoundCheck(p);
+    QVERIFY(fog::analysis::sigmaBelowBound(p));
+
+    auto outcome = std::make_shared<fog::ui::RunOutcome>();
+    outcome->info.plan = plan;
+    outcome->recording = std::move(*recording);
+    outcome->report = std::move(*report);
+    fog::ui::completeOutcome(*outcome, "simulator");
+    fog::ui::ResultView view;
+    view.resize(1200, 800);
+    view.showOutcome(outcome);
+    const QString note = view.delayTable()->item(0, 4)->text();
+    QVERIFY2(note.contains("σ/CRLB 0.17") && note.contains("σ below the bound") &&
+                 note.contains("uncertainty_below_bound"),
+             qPrintable(note));
+    const QString verdict = view.verdictHtml(outcome->report->points.front());
+    QVERIFY2(!verdict.contains("PASS") && verdict.contains("INVALID"), qPrintable(verdict));
+    QVERIFY2(view.reportText().contains("BELOW THE BOUND"), qPrintable(view.reportText()));
+  }
+
   void storedResultsShowTheirStoredVerdict() {
     QTemporaryDir dir;
     QVERIFY(dir.isValid());

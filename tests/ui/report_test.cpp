@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "core/analysis/delay_analysis.h"
+#include "core/analysis/uncertainty_bound.h"
 #include "core/model/simulator.h"
 #include "core/protocol/recording_builder.h"
 #include "ui/report/calibration_report.h"
@@ -108,6 +109,33 @@ class ReportTest : public QObject {
     QVERIFY(!text.contains("FAIL"));
     QVERIFY(all.contains(QString("PASS: IMU delay %1 ± ").arg(QString::number(point().imuDelayMs, 'f', 5))));
     QVERIFY(all.contains("< 0.8 ms limit (margin "));
+  }
+
+  // A point whose stated σ is 6x below its Cramér–Rao bound: its failed
+  // check uncertainty_below_bound is marked beside the σ/CRLB shown, and the
+  // point cannot pass (the analysis' own check, recomputed for a bound the
+  // session's noise would give).
+  void aSigmaBelowTheBoundIsMarkedBesideIt() {
+    auto input = session_;
+    auto& p = input.delays.points.front();
+    p.crlbMs = 6.0 * p.lagStdMs;
+    p.stdOverCrlb = p.lagStdMs / p.crlbMs;
+    bool replaced = false;
+    for (auto& c : p.checks)
+      if (c.id == "uncertainty_below_bound") c = fog::analysis::uncertaintyBelowBoundCheck(p), replaced = true;
+    QVERIFY(replaced);
+    QVERIFY(fog::analysis::sigmaBelowBound(p));
+    QStringList text;
+    QVERIFY(fog::report::renderCalibrationPages(input, 40, &text).isOk());
+    const QString all = text.join('\n');
+    QVERIFY2(all.contains("σ/CRLB 0.17 — σ below the bound: understated (check uncertainty_below_bound)"),
+             qPrintable(all));
+    QVERIFY(!text.contains("PASS"));
+    QVERIFY2(all.contains("INVALID"), qPrintable(all));
+    // The same session with the analysis' own bound is not marked.
+    text.clear();
+    QVERIFY(fog::report::renderCalibrationPages(session_, 40, &text).isOk());
+    QVERIFY(!text.join('\n').contains("σ below the bound"));
   }
 
   void sha256MatchesTheStandardVector() {
