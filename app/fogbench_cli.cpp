@@ -70,9 +70,13 @@ usage:
       Feed a session's raw stream through the decoder at X times real time
       (default 1) or as fast as possible, and report.
   fogbench-cli import DIR | META.json TABLE.csv GYRO.csv --out SESSION.fbs [--segment auto|S-E,...]
+                     [--rate-convention frame_average|sample_at_stamp] [--frame-period-ms P]
                      [--operator NAME ...]
       Make a session of data from another bench (the CSV layout of docs/formats.md);
-      --segment cuts a continuous recording into its steady-swing windows.
+      --segment cuts a continuous recording into its steady-swing windows;
+      --rate-convention says how a gyro file of rates was sampled when its metadata
+      does not (with the IMU's frame period for frame_average). Both are stored with
+      the session and every result of it.
   fogbench-cli export SESSION.fbs [--csv DIR] [--results-json FILE.json] [--overwrite] [constants]
       Decoded samples, fits and residuals as CSV (readable back by import);
       the stored results and the current analysis as JSON.

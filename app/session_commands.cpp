@@ -108,8 +108,10 @@ int analyzeSessionCommand(CliArguments& args, const std::string& path) {
               << " is being recorded right now; analyse it again when the recording has finished\n";
     return 0;
   }
+  const ImportSettings imported = (*reader)->info().imported;
   reader->reset();  // close before writing
-  if (auto s = session::addResult(path, acquisition::analysisSettingsJson(*constants, *limit, "fogbench-cli analyze"),
+  if (auto s = session::addResult(path,
+                                  acquisition::analysisSettingsJson(*constants, *limit, "fogbench-cli analyze", imported),
                                   analysis::formatReportJson(*report, context));
       !s.isOk())
     return fail(s, 2);
@@ -247,31 +249,24 @@ int replayCommand(CliArguments& args) {
 int importCommand(CliArguments& args) {
   auto out = readSessionOutput(args);
   if (!out) return fail(out.status(), 2);
-  const auto segment = args.text("segment");
+  io::ImportOptions options;
+  options.segmentation = args.text("segment").value_or("");
+  options.gyroRateConvention = args.text("rate-convention").value_or("");
+  auto framePeriod = args.number("frame-period-ms", 0.0);
+  if (!framePeriod) return fail(framePeriod.status(), 2);
+  options.gyroFramePeriodMs = *framePeriod;
   if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
   if (!*out) return fail(invalidArgument("import needs --out SESSION.fbs: the session file to create"), 2);
   const auto& inputs = args.positionals();
   if (inputs.size() != 1 && inputs.size() != 3)
     return fail(invalidArgument("import takes one DIR (metadata.json, table.csv, gyro.csv) or those three FILES"), 2);
-  auto imported = inputs.size() == 1 ? io::importCsvDirectory(inputs[0]) : io::importCsvFiles(inputs);
+  auto imported = inputs.size() == 1 ? io::importCsvDirectory(inputs[0], options) : io::importCsvFiles(inputs, options);
   if (!imported) return fail(imported.status(), 2);
-  if (segment) {
-    // A continuous recording without test-point markers: one test point per
-    // steady-swing window, found (auto) or given by the user.
-    auto& points = imported->recording.testPoints;
-    Result<std::vector<analysis::SwingWindow>> windows =
-        *segment == "auto"
-            ? (points.size() == 1 ? analysis::findSwingWindows(points.front().table, points.front().axis)
-                                  : Result<std::vector<analysis::SwingWindow>>(invalidArgument(
-                                        "--segment auto cuts one continuous recording; this import holds " +
-                                        std::to_string(points.size()) + " test points already")))
-            : analysis::parseSwingWindows(*segment);
-    if (!windows) return fail(windows.status(), 2);
-    if (auto s = io::splitIntoSwingWindows(*imported, *windows); !s.isOk()) return fail(s, 2);
-    std::cout << "Swing windows (" << (*segment == "auto" ? "found" : "given") << "; override with --segment "
-              << "START-END,...):\n";
-    for (std::size_t i = 0; i < windows->size(); ++i) {
-      const auto& w = (*windows)[i];
+  if (!imported->windows.empty()) {
+    std::cout << "Swing windows (" << (options.segmentation == "auto" ? "found" : "given")
+              << "; override with --segment START-END,...):\n";
+    for (std::size_t i = 0; i < imported->windows.size(); ++i) {
+      const auto& w = imported->windows[i];
       char line[200];
       if (w.frequencyHz > 0.0)
         std::snprintf(line, sizeof line, "  test point %zu: %.3f - %.3f s, %.5g Hz / %.4g deg (%.1f periods)\n",
@@ -393,7 +388,8 @@ int exportCommand(CliArguments& args) {
                   {"raw_bytes", (*reader)->rawByteCount()}}},
                 {"stored_results", results},
                 {"current_analysis",
-                 report ? json{{"settings", json::parse(acquisition::analysisSettingsJson(*constants, context.imuDelayLimitMs, "fogbench-cli export"))},
+                 report ? json{{"settings", json::parse(acquisition::analysisSettingsJson(*constants, context.imuDelayLimitMs,
+                                                                                             "fogbench-cli export", info.imported))},
                                {"report", json::parse(analysis::formatReportJson(*report, context))}}
                         : json{{"error", report.status().message()}}}};
     // Serialised before the file is opened: nothing can leave it empty.

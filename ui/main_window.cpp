@@ -49,6 +49,7 @@
 #include "ui/bench_settings_dialog.h"
 #include "ui/compare_view.h"
 #include "ui/core_text.h"
+#include "ui/import_dialog.h"
 #include "ui/diagnosis_view.h"
 #include "ui/language.h"
 #include "ui/live_view.h"
@@ -188,7 +189,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   connect(sessionBrowser_, &SessionBrowser::reanalyseRequested, this, &MainWindow::reanalyseSession);
   connect(resultView_, &ResultView::resultChosen, this, &MainWindow::chooseResult);
   connect(sessionBrowser_, &SessionBrowser::compareRequested, this, &MainWindow::compareSessions);
-  connect(sessionBrowser_, &SessionBrowser::importRequested, this, &MainWindow::importCsv);
+  connect(sessionBrowser_, &SessionBrowser::importRequested, this, &MainWindow::chooseImportOptions);
   connect(resultView_, &ResultView::diagnoseRequested, this, &MainWindow::diagnoseShown);
   connect(diagnosisView_, &DiagnosisView::cancelRequested, this, &MainWindow::cancelDiagnosis);
   connect(resultView_, &ResultView::exported, this, &MainWindow::exported);
@@ -292,7 +293,7 @@ void MainWindow::buildMenus() {
   file->addSeparator();
   auto* import = file->addAction(tr("&Import CSV data…"), this, [this] {
     const QString dir = QFileDialog::getExistingDirectory(this, tr("Folder with metadata.json, table.csv, gyro.csv"));
-    if (!dir.isEmpty()) importCsv(dir);
+    if (!dir.isEmpty()) chooseImportOptions(dir);
   });
   import->setObjectName("importAction");
   openExportFolderAction_ = file->addAction(tr("Open the &export folder"), this, &MainWindow::openExportFolder);
@@ -876,7 +877,7 @@ void MainWindow::loadSession(const QString& path, bool reanalyse, std::int64_t r
           if (!outcome->complete) context.incompleteReason = outcome->incompleteReason;
           if (auto s = session::addResult(path.toStdString(),
                                           acquisition::analysisSettingsJson(constants, choices.imuDelayLimitMs,
-                                                                            "fogbench GUI"),
+                                                                            "fogbench GUI", outcome->info.imported),
                                           analysis::formatReportJson(*outcome->report, context));
               !s.isOk())
             return {nullptr, s};
@@ -964,7 +965,12 @@ void MainWindow::showLoaded(std::shared_ptr<const RunOutcome> outcome) {
   showView(kResults);
 }
 
-void MainWindow::importCsv(const QString& csvFolder) {
+void MainWindow::chooseImportOptions(const QString& csvFolder) {
+  ImportDialog dialog(csvFolder, this);
+  if (dialog.exec() == QDialog::Accepted) importCsv(csvFolder, dialog.options());
+}
+
+void MainWindow::importCsv(const QString& csvFolder, const io::ImportOptions& options) {
   QString folder = sessionBrowser_->folder();
   if (folder.isEmpty()) folder = sessionFolder();
   if (folder.isEmpty() || !QDir().mkpath(folder)) {
@@ -978,8 +984,8 @@ void MainWindow::importCsv(const QString& csvFolder) {
                                              "-import-" + QFileInfo(csvFolder).fileName() + ".fbs");
   tell(tr("Importing %1 …").arg(csvFolder));
   inBackground(
-      this, [csvFolder, path]() -> Status {
-        auto imported = io::importCsvDirectory(csvFolder.toStdString());
+      this, [csvFolder, path, options]() -> Status {
+        auto imported = io::importCsvDirectory(csvFolder.toStdString(), options);
         if (!imported) return imported.status();
         return io::saveImportedSession(*imported, csvFolder.toStdString(), path.toStdString());
       },

@@ -30,6 +30,7 @@
 #include <memory>
 
 #include "core/common/session_info.h"
+#include "core/io/csv_import.h"
 #include "ui/acquisition_runner.h"
 #include "ui/bench_settings_dialog.h"
 #include "ui/configure_view.h"
@@ -129,8 +130,11 @@ class MainWindow : public QMainWindow {
   // Shows another stored result of the shown session (its id).
   void chooseResult(qint64 resultId);
   // Imports a folder in the CSV layout (docs/formats.md) as a new session in
-  // the browser's folder, in the background.
-  void importCsv(const QString& csvFolder);
+  // the browser's folder, in the background, with the options the import
+  // dialog sets (rate convention, segmentation; stored with the session).
+  void importCsv(const QString& csvFolder, const io::ImportOptions& options = {});
+  // Asks for the import options of the folder (ImportDialog), then imports.
+  void chooseImportOptions(const QString& csvFolder);
   // The sim-to-real diagnosis of the shown result, in the background; shown
   // in the Diagnosis view.
   void diagnoseShown();

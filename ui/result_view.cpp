@@ -73,15 +73,27 @@ QString constantsText(const analysis::BenchConstants& c) {
   return QObject::tr("table read %1 ms, board %2 ms").arg(num(c.tableReadDelayMs, 4), num(c.boardDelayMs, 4));
 }
 
+// What an import applied, in words ("" for a recorded session).
+QString importText(const ImportSettings& imported) {
+  QStringList parts;
+  if (imported.gyroRateConvention == "frame_average")
+    parts << QObject::tr("rates as frame averages (%1 ms frames)").arg(num(imported.gyroFramePeriodMs, 4));
+  else if (imported.gyroRateConvention == "sample_at_stamp")
+    parts << QObject::tr("rates sampled at their stamps");
+  if (!imported.segmentation.empty())
+    parts << QObject::tr("cut at the swing windows %1").arg(QString::fromStdString(imported.segmentation));
+  return parts.isEmpty() ? QString() : QObject::tr(", imported with %1").arg(parts.join(QObject::tr("; ")));
+}
+
 // A stored result's settings in a few words: its constants, any reversed
-// gyro axis and its limit.
+// gyro axis, its limit and what the import applied.
 QString settingsText(const ResultRecord& r) {
   QString text = constantsText(r.constants);
   QStringList reversed;
   for (int a = 0; a < kAxisCount; ++a)
     if (r.constants.gyroSign[static_cast<std::size_t>(a)] < 0) reversed << QString(axisName(static_cast<Axis>(a))).toUpper();
   if (!reversed.isEmpty()) text += QObject::tr(", gyro sign −1 on %1").arg(reversed.join(", "));
-  return text + QObject::tr(", limit %1 ms").arg(num(r.imuDelayLimitMs, 3));
+  return text + QObject::tr(", limit %1 ms").arg(num(r.imuDelayLimitMs, 3)) + importText(r.imported);
 }
 
 QString versionText(const ResultRecord& r) {
@@ -350,7 +362,8 @@ QString ResultView::resultDescription() const {
   if (!outcome_) return QString();
   const ResultRecord* r = outcome_->shownResult();
   if (!r) {
-    const QString constants = outcome_->report ? constantsText(outcome_->report->constants) : QString();
+    const QString constants = (outcome_->report ? constantsText(outcome_->report->constants) : QString()) +
+                              importText(outcome_->info.imported);
     if (outcome_->sessionPath.empty())
       return tr("this run's, not recorded in a session; computed by fogbench %1 with %2")
           .arg(QStringLiteral(FOG_VERSION), constants);

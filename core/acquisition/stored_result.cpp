@@ -96,6 +96,10 @@ StoredResultRecord readStoredResult(const session::StoredResult& stored, const a
           r.gyroSignStated = true;
         }
     }
+  if (settings.contains("import")) {
+    auto imported = importSettingsFromJson(settings["import"].dump());
+    if (imported) r.imported = std::move(*imported);
+  }
   // The limit the verdict used: the report's own field is what judged it.
   const double limit = numberOr(report, "imu_delay_limit_ms", numberOr(settings, "imu_delay_limit_ms", NAN));
   if (std::isfinite(limit) && limit > 0.0) {
@@ -170,7 +174,7 @@ std::vector<std::string> differencesFromRecord(const StoredResultRecord& record,
 }
 
 std::string analysisSettingsJson(const analysis::BenchConstants& c, double imuDelayLimitMs,
-                                 const std::string& producedBy) {
+                                 const std::string& producedBy, const ImportSettings& imported) {
   json doc = {{"table_read_delay_ms", c.tableReadDelayMs},
               {"table_read_delay_std_ms", c.tableReadDelayStdMs},
               {"board_delay_ms", c.boardDelayMs},
@@ -180,6 +184,7 @@ std::string analysisSettingsJson(const analysis::BenchConstants& c, double imuDe
               {"imu_delay_limit_ms", imuDelayLimitMs},
               {"software_version", FOG_VERSION},
               {"analysed_by", producedBy}};
+  if (!imported.empty()) doc["import"] = json::parse(importSettingsToJson(imported));
   return doc.dump();
 }
 

@@ -51,6 +51,10 @@ struct StoredResultRecord {
   bool gyroSignStated = false;
   double imuDelayLimitMs = analysis::kDefaultImuDelayLimitMs;
   bool limitStated = false;     // false: neither the settings nor the report state it
+  // What the import applied to make the recording (rate convention, swing
+  // windows), as the settings state it; empty for a recorded session or a
+  // row stored before the settings held it.
+  ImportSettings imported;
 
   // The verdict (report_json): "pass", "fail", "invalid", "incomplete";
   // "" when the stored report states none (a very old row).
@@ -85,8 +89,9 @@ std::vector<std::string> differencesFromRecord(const StoredResultRecord& record,
 
 // The settings a stored result was produced with, as JSON (settings_json):
 // the bench constants with the gyro signs, the acceptance limit, the
-// software version and what produced it.
+// software version, what produced it and, for an imported session, what the
+// import applied (its rate convention and swing windows: `import`).
 std::string analysisSettingsJson(const analysis::BenchConstants& constants, double imuDelayLimitMs,
-                                 const std::string& producedBy);
+                                 const std::string& producedBy, const ImportSettings& imported = {});
 
 }  // namespace fog::acquisition

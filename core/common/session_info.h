@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "core/common/status.h"
 #include "core/common/test_plan.h"
 
 namespace fog {
@@ -22,6 +23,22 @@ struct BenchSettings {
   int counterBits = 32;
 };
 
+// What an import of another bench's files applied to make the session's
+// recording: part of every setting a result of it was produced with
+// (docs/formats.md, "Import settings"). Empty for a recorded session.
+struct ImportSettings {
+  // How the gyro file's rates were turned into increments: "frame_average"
+  // or "sample_at_stamp", with the IMU's frame period for the first;
+  // "" when the file held increments.
+  std::string gyroRateConvention;
+  double gyroFramePeriodMs = 0.0;
+  // How one continuous recording was cut into test points: "" not cut (the
+  // files' own test points), else "auto: S-E,..." (found) or "given: S-E,..."
+  // with the windows applied, in seconds on the recording's time axis.
+  std::string segmentation;
+  bool empty() const { return gyroRateConvention.empty() && segmentation.empty(); }
+};
+
 struct SessionInfo {
   std::string operatorName;
   std::string imuModel;
@@ -32,6 +49,13 @@ struct SessionInfo {
   std::string notes;            // free text
   BenchSettings bench;
   TestPlan plan;
+  ImportSettings imported;  // empty unless the session was imported
 };
+
+// The import settings as a JSON object ("" when empty: a recorded session),
+// and back; "" reads as empty. Used by the session file and the stored
+// results' settings (docs/sessions.md).
+std::string importSettingsToJson(const ImportSettings& settings);
+Result<ImportSettings> importSettingsFromJson(const std::string& text);
 
 }  // namespace fog

@@ -454,11 +454,78 @@ std::string originalSource(std::string source) {
   return source;
 }
 
+std::string rateConventionName(detail::RateConvention c) {
+  switch (c) {
+    case detail::RateConvention::kFrameAverage: return "frame_average";
+    case detail::RateConvention::kSampleAtStamp: return "sample_at_stamp";
+    case detail::RateConvention::kNone: break;
+  }
+  return "";
+}
+
+// The user's rate convention and frame period join the metadata's; where
+// both state one they must agree (the convention moves the delay by about
+// half a frame: two answers are never reconciled by a guess).
+Status applyRateOptions(detail::Metadata& meta, const ImportOptions& options, const std::string& metaPath) {
+  if (!options.gyroRateConvention.empty()) {
+    detail::RateConvention given = detail::RateConvention::kNone;
+    if (options.gyroRateConvention == "frame_average") given = detail::RateConvention::kFrameAverage;
+    else if (options.gyroRateConvention == "sample_at_stamp") given = detail::RateConvention::kSampleAtStamp;
+    else
+      return invalidArgument("the gyro rate convention must be \"frame_average\" or \"sample_at_stamp\", not \"" +
+                             options.gyroRateConvention + "\"");
+    if (meta.rateConvention != detail::RateConvention::kNone && meta.rateConvention != given)
+      return invalidArgument(metaPath + " states bench.gyro_rate_convention \"" +
+                             rateConventionName(meta.rateConvention) + "\", the import was asked for \"" +
+                             options.gyroRateConvention + "\": correct the one that is wrong");
+    meta.rateConvention = given;
+  }
+  if (options.gyroFramePeriodMs != 0.0) {
+    if (!(options.gyroFramePeriodMs >= detail::kMinFramePeriodMs && options.gyroFramePeriodMs <= detail::kMaxFramePeriodMs))
+      return invalidArgument("the IMU's frame period must be within " + fixed(detail::kMinFramePeriodMs, 3) + " .. " +
+                             fixed(detail::kMaxFramePeriodMs, 0) + " ms");
+    if (meta.gyroFramePeriodMs > 0.0 && meta.gyroFramePeriodMs != options.gyroFramePeriodMs)
+      return invalidArgument(metaPath + " states bench.gyro_frame_period_ms " + printfNumber("%.9g", meta.gyroFramePeriodMs) +
+                             ", the import was asked for " + printfNumber("%.9g", options.gyroFramePeriodMs) +
+                             " ms: correct the one that is wrong");
+    meta.gyroFramePeriodMs = options.gyroFramePeriodMs;
+  }
+  return Status::ok();
+}
+
+// Cuts a continuous recording at its swing windows as `spec` says ("auto" or
+// "S-E,..."), and records what was applied in the session's import settings.
+Status applySegmentation(ImportedSession& imported, const std::string& spec) {
+  auto& points = imported.recording.testPoints;
+  Result<std::vector<analysis::SwingWindow>> windows = invalidArgument("no segmentation");
+  if (spec == "auto") {
+    if (points.size() != 1)
+      return invalidArgument("automatic segmentation cuts one continuous recording; this import holds " +
+                             std::to_string(points.size()) + " test points already");
+    windows = analysis::findSwingWindows(points.front().table, points.front().axis);
+  } else {
+    windows = analysis::parseSwingWindows(spec);
+  }
+  if (!windows) return windows.status();
+  FOG_RETURN_IF_ERROR(splitIntoSwingWindows(imported, *windows));
+  std::string applied = spec == "auto" ? "auto: " : "given: ";
+  for (std::size_t i = 0; i < windows->size(); ++i) {
+    if (i > 0) applied += ',';
+    applied += printfNumber("%.6f", (*windows)[i].startS);
+    applied += '-';
+    applied += printfNumber("%.6f", (*windows)[i].endS);
+  }
+  imported.info.imported.segmentation = applied;
+  imported.windows = std::move(*windows);
+  return Status::ok();
+}
+
 Result<ImportedSession> importTexts(const std::string& what, const std::string& metaPath,
                                     const std::string& metaText, const std::string& tablePath,
                                     const std::string& tableText, const std::string& gyroPath,
-                                    const std::string& gyroText) {
+                                    const std::string& gyroText, const ImportOptions& options) {
   FOG_ASSIGN_OR_RETURN(auto meta, detail::metadataFromJson(metaPath, metaText));
+  FOG_RETURN_IF_ERROR(applyRateOptions(meta, options, metaPath));
   const std::size_t count = meta.testPoints.size();
   std::vector<TestPointData> points(count);
   for (std::size_t i = 0; i < count; ++i) {
@@ -538,12 +605,17 @@ Result<ImportedSession> importTexts(const std::string& what, const std::string& 
   }
   rec.health = meta.hasStream ? meta.stream : counted;
   if (rec.testPoints.empty()) return corruptData(what + " holds no data for any test point");
+  if (hasAny(gyro, kRate0)) {
+    info.imported.gyroRateConvention = rateConventionName(meta.rateConvention);
+    info.imported.gyroFramePeriodMs = meta.gyroFramePeriodMs;
+  }
+  if (!options.segmentation.empty()) FOG_RETURN_IF_ERROR(applySegmentation(out, options.segmentation));
   return out;
 }
 
 }  // namespace
 
-Result<ImportedSession> importCsvDirectory(const std::string& dir) {
+Result<ImportedSession> importCsvDirectory(const std::string& dir, const ImportOptions& options) {
   std::error_code ec;
   if (!fs::is_directory(dir, ec))
     return ioError(dir + " is not a directory; give the directory that holds metadata.json, table.csv and gyro.csv");
@@ -554,15 +626,15 @@ Result<ImportedSession> importCsvDirectory(const std::string& dir) {
   FOG_ASSIGN_OR_RETURN(auto meta, readWholeFile(metaPath));
   FOG_ASSIGN_OR_RETURN(auto table, readWholeFile(tablePath));
   FOG_ASSIGN_OR_RETURN(auto gyro, readWholeFile(gyroPath));
-  return importTexts(dir, metaPath, meta, tablePath, table, gyroPath, gyro);
+  return importTexts(dir, metaPath, meta, tablePath, table, gyroPath, gyro, options);
 }
 
 Result<ImportedSession> importCsvTexts(const std::string& metadataText, const std::string& tableText,
-                                       const std::string& gyroText) {
-  return importTexts("(texts)", "metadata.json", metadataText, "table.csv", tableText, "gyro.csv", gyroText);
+                                       const std::string& gyroText, const ImportOptions& options) {
+  return importTexts("(texts)", "metadata.json", metadataText, "table.csv", tableText, "gyro.csv", gyroText, options);
 }
 
-Result<ImportedSession> importCsvFiles(const std::vector<std::string>& paths) {
+Result<ImportedSession> importCsvFiles(const std::vector<std::string>& paths, const ImportOptions& options) {
   if (paths.size() != 3)
     return invalidArgument("give three files (metadata JSON, table CSV, gyro CSV), not " +
                            std::to_string(paths.size()));
@@ -609,13 +681,13 @@ Result<ImportedSession> importCsvFiles(const std::vector<std::string>& paths) {
     return invalidArgument(std::string("missing the ") + (!meta ? "metadata" : !table ? "table" : "gyro") +
                            " file; give one metadata, one table and one gyro file");
   return importTexts(paths[*meta] + ", " + paths[*table] + ", " + paths[*gyro], paths[*meta], texts[*meta],
-                     paths[*table], texts[*table], paths[*gyro], texts[*gyro]);
+                     paths[*table], texts[*table], paths[*gyro], texts[*gyro], options);
 }
 
 Status splitIntoSwingWindows(ImportedSession& imported, const std::vector<analysis::SwingWindow>& windows) {
   auto& points = imported.recording.testPoints;
   if (points.size() != 1 || points.front().kind != TestPointKind::kSwing)
-    return invalidArgument("--segment cuts one continuous swing recording (metadata with one test point); this one "
+    return invalidArgument("segmentation cuts one continuous swing recording (metadata with one test point); this one "
                            "holds " + std::to_string(points.size()) + " test points already");
   if (windows.empty()) return invalidArgument("no swing windows to cut the recording into");
   if (windows.size() > kMaxPlanPoints)  // as many test points as a plan may have

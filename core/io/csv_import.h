@@ -41,30 +41,48 @@ namespace fog::io {
 // split into several imports.
 inline constexpr std::uint64_t kMaxImportFileBytes = 256ull << 20;
 
+// What the user chooses for an import beside its files (the CLI's
+// --rate-convention, --frame-period-ms and --segment; the GUI's import
+// dialog). What it applied is in ImportedSession::info.imported.
+struct ImportOptions {
+  // How the gyro file's rates were sampled when the metadata does not say:
+  // "frame_average" or "sample_at_stamp"; "" = as the metadata states. A
+  // metadata that states another convention is refused: two answers.
+  std::string gyroRateConvention;
+  double gyroFramePeriodMs = 0.0;  // for "frame_average"; 0 = as the metadata states
+  // How one continuous recording (one swing test point) is cut into test
+  // points: "" keeps the files' test points; "auto" cuts it at the steady
+  // swing windows it finds; "S-E,S-E" at the windows given (seconds).
+  std::string segmentation;
+};
+
 struct ImportedSession {
   SessionInfo info;
   Recording recording;
   // Things the user should know that are not errors: axes absent from the
   // files (read as 0), test points without data, the files read.
   std::vector<std::string> notes;
+  // The swing windows the recording was cut at (ImportOptions::segmentation),
+  // one per test point, with what was measured in each; empty when not cut.
+  std::vector<analysis::SwingWindow> windows;
 };
 
 // Reads <dir>/metadata.json, <dir>/table.csv and <dir>/gyro.csv. Other files
 // in the directory (an export's fits.csv, residuals_*.csv, report.json) are
 // ignored.
-Result<ImportedSession> importCsvDirectory(const std::string& dir);
+Result<ImportedSession> importCsvDirectory(const std::string& dir, const ImportOptions& options = {});
 
 // The same from three explicitly named files in any order: the metadata is
 // the one whose content starts with '{' (JSON); of the CSV files the gyro
 // stream is the one whose header has an increment column (x_inc_deg,
 // y_inc_deg or z_inc_deg), the table stream the one with an angle column
 // (x_deg, y_deg or z_deg).
-Result<ImportedSession> importCsvFiles(const std::vector<std::string>& paths);
+Result<ImportedSession> importCsvFiles(const std::vector<std::string>& paths, const ImportOptions& options = {});
 
 // The same from the three files' texts (named metadata.json, table.csv and
 // gyro.csv in messages): for programs that hold the data, and the fuzzer.
 Result<ImportedSession> importCsvTexts(const std::string& metadataText, const std::string& tableText,
-                                       const std::string& gyroText);
+                                       const std::string& gyroText, const ImportOptions& options = {});
 
 // A continuous recording (one swing test point, no test-point markers) cut
 // into one test point per window (analysis/swing_windows.h); the plan

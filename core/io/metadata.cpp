@@ -18,8 +18,6 @@ using Json = nlohmann::ordered_json;
 // value is a unit or typing error, and near a double's range it overflows.
 constexpr double kMaxPulseEquivalentDeg = 1.0;     // degrees per gyro pulse
 constexpr double kMaxCounterHz = 1e12;             // the board's time-stamp counter
-constexpr double kMinFramePeriodMs = 1e-3;         // an IMU frame at 1 MHz
-constexpr double kMaxFramePeriodMs = 1000.0;       // ... at 1 Hz
 constexpr double kMaxSwingFrequencyHz = 1000.0;
 constexpr double kMaxSwingAmplitudeDeg = 3600.0;   // ten turns each way
 

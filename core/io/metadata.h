@@ -26,6 +26,11 @@ struct MetaTestPoint {
   TestPointKind kind = TestPointKind::kSwing;  // "kind": "static" is written only for static segments
 };
 
+// The IMU's frame period (bench.gyro_frame_period_ms) as a physical bound:
+// beyond it a value is a unit or typing error.
+inline constexpr double kMinFramePeriodMs = 1e-3;    // an IMU frame at 1 MHz
+inline constexpr double kMaxFramePeriodMs = 1000.0;  // ... at 1 Hz
+
 // How a gyro stream of rates (x_rate_deg_s ...) was sampled
 // (docs/formats.md, "Rates"); the importer converts them to increments.
 enum class RateConvention {

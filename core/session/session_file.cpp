@@ -130,6 +130,14 @@ CREATE TABLE table_log (
 );
 )sql";
 
+// Schema 4: what an import applied to make the recording (the gyro rate
+// convention and frame period, the swing windows cut), as JSON
+// (docs/sessions.md); '' for a recorded session. Part of the metadata
+// checksum when not empty, so a migrated file's checksum still holds.
+constexpr const char* kSchemaV4Step = R"sql(
+ALTER TABLE session ADD COLUMN import_json TEXT NOT NULL DEFAULT '';
+)sql";
+
 // Sample blocks: small enough to stay far below SQLite's 1 GB value limit
 // whatever the test point's length, large enough that a block costs little.
 constexpr std::size_t kSamplesPerBlock = 65536;
@@ -244,13 +252,28 @@ constexpr const char* kMetadataColumns =
     " table_read_delay_std_ms, board_delay_ms, board_delay_std_ms, latitude_deg, pulse_equivalent_deg, counter_hz,"
     " counter_bits, test_plan_json, state, incomplete_reason, finished_utc";
 
+// True when the file's session table has the column (a reader reads older
+// layouts without migrating them).
+bool hasSessionColumn(sqlite3* db, const char* column) {
+  Stmt s(db, "SELECT 1 FROM pragma_table_info('session') WHERE name = ?1");
+  if (!s.ok()) return false;
+  s.bind(1, std::string(column));
+  return s.step() == SQLITE_ROW;
+}
+
 Result<std::int64_t> metadataChecksum(sqlite3* db) {
-  Stmt s(db, (std::string("SELECT ") + kMetadataColumns + " FROM session WHERE id = 1").c_str());
+  const bool withImport = hasSessionColumn(db, "import_json");
+  Stmt s(db, (std::string("SELECT ") + kMetadataColumns + (withImport ? ", import_json" : "") +
+              " FROM session WHERE id = 1")
+                 .c_str());
   if (!s.ok() || s.step() != SQLITE_ROW) return ioError(sqliteMessage(db));
   std::uint64_t h = 0xcbf29ce484222325ULL;
   const int n = sqlite3_column_count(s.get());
   for (int i = 0; i < n; ++i) {
     const auto type = static_cast<std::uint8_t>(sqlite3_column_type(s.get(), i));
+    // import_json (the last, schema 4) counts only when it holds something,
+    // so the checksum of a file migrated from schema 3 still holds.
+    if (withImport && i == n - 1 && type == SQLITE_TEXT && s.text(i).empty()) break;
     fnv1aAdd(h, &type, 1);
     std::uint8_t v[8];
     if (type == SQLITE_INTEGER) {
@@ -459,6 +482,11 @@ Status migrate(sqlite3* db, int from) {
     if (!exec(db, kSchemaV3Step) || !exec(db, "PRAGMA user_version = 3"))
       return ioError("migrating from schema 2 to 3 failed: " + sqliteMessage(db));
   }
+  if (from < 4) {
+    // 3 -> 4: no import settings ('', a recorded session or an older import).
+    if (!exec(db, kSchemaV4Step) || !exec(db, "PRAGMA user_version = 4"))
+      return ioError("migrating from schema 3 to 4 failed: " + sqliteMessage(db));
+  }
   return Status::ok();
 }
 
@@ -587,14 +615,14 @@ Result<std::unique_ptr<SessionWriter>> SessionWriter::create(const std::string& 
   const std::string ids = "PRAGMA application_id = " + std::to_string(kApplicationId) +
                           "; PRAGMA user_version = " + std::to_string(kSchemaVersion) + ";";
   if (!exec(w->db_, "BEGIN") || !exec(w->db_, ids.c_str()) || !exec(w->db_, kSchemaV1) ||
-      !exec(w->db_, kSchemaV2Step) || !exec(w->db_, kSchemaV3Step))
+      !exec(w->db_, kSchemaV2Step) || !exec(w->db_, kSchemaV3Step) || !exec(w->db_, kSchemaV4Step))
     return abandon("schema");
   {
     Stmt s(w->db_,
            "INSERT INTO session (id, operator, imu_model, imu_serial, source, software_version, created_utc, notes,"
            " table_read_delay_ms, table_read_delay_std_ms, board_delay_ms, board_delay_std_ms, latitude_deg,"
-           " pulse_equivalent_deg, counter_hz, counter_bits, test_plan_json, state)"
-           " VALUES (1, ?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, 'recording')");
+           " pulse_equivalent_deg, counter_hz, counter_bits, test_plan_json, state, import_json)"
+           " VALUES (1, ?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, 'recording', ?17)");
     if (!s.ok()) return abandon("metadata");
     s.bind(1, info.operatorName);
     s.bind(2, info.imuModel);
@@ -612,6 +640,7 @@ Result<std::unique_ptr<SessionWriter>> SessionWriter::create(const std::string& 
     s.bind(14, info.bench.counterHz);
     s.bind(15, std::int64_t{info.bench.counterBits});
     s.bind(16, testPlanToJson(info.plan));
+    s.bind(17, importSettingsToJson(info.imported));
     if (s.step() != SQLITE_DONE) return abandon("metadata");
   }
   if (!updateMetadataChecksum(w->db_)) return abandon("metadata checksum");
@@ -874,7 +903,9 @@ Result<std::unique_ptr<SessionReader>> SessionReader::open(const std::string& pa
       cut("notes", notes) +
       ", table_read_delay_ms, table_read_delay_std_ms, board_delay_ms, board_delay_std_ms, latitude_deg,"
       " pulse_equivalent_deg, counter_hz, counter_bits, test_plan_json, state, " +
-      cut("incomplete_reason", field) + ", length(CAST(notes AS BLOB)) FROM session WHERE id = 1";
+      cut("incomplete_reason", field) + ", length(CAST(notes AS BLOB)), " +
+      (hasSessionColumn(r->db_, "import_json") ? cut("import_json", field) : std::string("''")) +
+      " FROM session WHERE id = 1";
   Stmt s(r->db_, sql.c_str());
   if (!s.ok()) return r->readError("reading its metadata");
   const int rc = s.step();
@@ -906,6 +937,11 @@ Result<std::unique_ptr<SessionReader>> SessionReader::open(const std::string& pa
     return corruptData("session '" + path + "': its stored test plan is unreadable (" + plan.status().message() +
                        ")");
   info.plan = std::move(*plan);
+  auto imported = importSettingsFromJson(s.text(19));
+  if (!imported)
+    return corruptData("session '" + path + "': its import settings are unreadable (" + imported.status().message() +
+                       ")");
+  info.imported = std::move(*imported);
   r->state_ = s.text(16);
   r->reason_ = toValidUtf8(s.text(17));
   return r;

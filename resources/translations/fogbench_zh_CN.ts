@@ -927,6 +927,99 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
 </context>
 <context>
+    <name>fog::ui::ImportDialog</name>
+    <message>
+        <location filename="../../ui/import_dialog.cpp" line="+26"/>
+        <source>Import CSV data</source>
+        <translation>导入 CSV 数据</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>From %1</source>
+        <translation>来自 %1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>as metadata.json states (increments need none)</source>
+        <translation>按 metadata.json 所述（增量无需此项）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>frame average: each rate is its frame&apos;s increment / frame period</source>
+        <translation>帧平均：每个角速率为该帧增量 / 帧周期</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>sample at stamp: each rate is the rate at its row&apos;s time</source>
+        <translation>时标采样：每个角速率为该行时刻的瞬时角速率</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>How a gyro file of rates (x_rate_deg_s …) was sampled. The choice moves the delay by about half a frame, so it is never guessed; a metadata.json that states another one is refused.</source>
+        <translation>角速率陀螺文件（x_rate_deg_s …）的采样方式。该选择会使延迟移动约半帧，因此从不猜测；metadata.json 中写明另一种方式时将被拒绝。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Gyro rates</source>
+        <translation>陀螺角速率</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source> ms</source>
+        <translation> ms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>as metadata.json states</source>
+        <translation>按 metadata.json 所述</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The IMU&apos;s own frame period, for rates averaged over a frame</source>
+        <translation>IMU 自身的帧周期，用于按帧平均的角速率</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>IMU frame period</source>
+        <translation>IMU 帧周期</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the files&apos; test points</source>
+        <translation>文件中的测试点</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cut one continuous recording at the steady swings found</source>
+        <translation>将一段连续记录按找到的稳定摆动切分</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cut one continuous recording at the windows given</source>
+        <translation>将一段连续记录按给定的时间窗切分</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Test points</source>
+        <translation>测试点</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>start-end in seconds, e.g. 12.5-42,50-80.25</source>
+        <translation>起止时间（秒），例如 12.5-42,50-80.25</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Swing windows</source>
+        <translation>摆动时间窗</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Import</source>
+        <translation>导入</translation>
+    </message>
+</context>
+<context>
     <name>fog::ui::LiveView</name>
     <message>
         <location filename="../../ui/live_view.cpp" line="+61"/>
@@ -1220,7 +1313,7 @@ Press Diagnose in the Results view to start it again.</source>
 <context>
     <name>fog::ui::MainWindow</name>
     <message>
-        <location filename="../../ui/main_window.cpp" line="+147"/>
+        <location filename="../../ui/main_window.cpp" line="+148"/>
         <source>fogbench %1 — FOG IMU delay bench</source>
         <translation>fogbench %1 —— 光纤陀螺 IMU 延迟测试台</translation>
     </message>
@@ -1246,12 +1339,12 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+879"/>
+        <location line="+884"/>
         <source>Diagnosis</source>
         <translation>诊断</translation>
     </message>
     <message>
-        <location line="-876"/>
+        <location line="-881"/>
         <source>Noise</source>
         <translation>噪声</translation>
     </message>
@@ -1818,7 +1911,7 @@ File: %1</source>
         <translation>%1：显示第 %2 个结果（共 %3 个）</translation>
     </message>
     <message>
-        <location line="+187"/>
+        <location line="+192"/>
         <source>Compare %1</source>
         <translation>比较 %1</translation>
     </message>
@@ -1828,7 +1921,7 @@ File: %1</source>
         <translation>无法读取该会话（见消息）</translation>
     </message>
     <message>
-        <location line="-199"/>
+        <location line="-204"/>
         <source>%1 re-analysed</source>
         <translation>%1 已重新分析</translation>
     </message>
@@ -1838,7 +1931,7 @@ File: %1</source>
         <translation>%1：只读查看</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+54"/>
         <source>Choose a session folder to import into first.</source>
         <translation>请先选择导入目标会话文件夹。</translation>
     </message>
@@ -2264,7 +2357,7 @@ File: %1</source>
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../../ui/main_window.cpp" line="-1021"/>
+        <location filename="../../ui/main_window.cpp" line="-1026"/>
         <location filename="../../ui/plan_editor.cpp" line="-300"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
@@ -3404,6 +3497,31 @@ File: %1</source>
         <translation>转台读数 %1 ms，处理板 %2 ms</translation>
     </message>
     <message>
+        <location line="+7"/>
+        <source>rates as frame averages (%1 ms frames)</source>
+        <translation>角速率为帧平均（帧长 %1 ms）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>rates sampled at their stamps</source>
+        <translation>角速率在时标处采样</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>cut at the swing windows %1</source>
+        <translation>按摆动时间窗 %1 切分</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>, imported with %1</source>
+        <translation>，导入设置：%1</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>; </source>
+        <translation>；</translation>
+    </message>
+    <message>
         <location line="+10"/>
         <source>, gyro sign −1 on %1</source>
         <translation>，%1 轴陀螺符号 −1</translation>
@@ -3644,12 +3762,12 @@ File: %1</source>
         <translation>标定报告</translation>
     </message>
     <message>
-        <location line="+82"/>
+        <location line="+83"/>
         <source>result %1 of %2: %7, stored %3 by %4 (%5), %6</source>
         <translation>结果 %1/%2：%7，%3 由 %4（%5）保存，%6</translation>
     </message>
     <message>
-        <location line="-85"/>
+        <location line="-86"/>
         <source>PDF document (*.pdf)</source>
         <translation>PDF 文档 (*.pdf)</translation>
     </message>
@@ -3689,7 +3807,7 @@ File: %1</source>
         <translation>&lt;b&gt;无延迟结果：&lt;/b&gt;%1</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>this run&apos;s, not recorded in a session; computed by fogbench %1 with %2</source>
         <translation>本次运行的结果，未记录到会话；由 fogbench %1 使用 %2 计算</translation>
     </message>

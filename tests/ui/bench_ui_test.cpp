@@ -6,6 +6,7 @@
 #include <QAction>
 #include <QCheckBox>
 #include <QComboBox>
+#include <QDialogButtonBox>
 #include <QDir>
 #include <QHeaderView>
 #include <QLayout>
@@ -61,6 +62,7 @@
 #include "ui/compare_view.h"
 #include "ui/configure_view.h"
 #include "ui/core_text.h"
+#include "ui/import_dialog.h"
 #include "ui/plot_data/curve_decimation.h"
 #include "ui/diagnosis_view.h"
 #include "ui/language.h"
@@ -979,6 +981,69 @@ class BenchUiTest : public QObject {
     QVERIFY(imported.back().front().toString().isEmpty());
     QVERIFY2(w->lastMessage().contains("Cannot import") && w->lastMessage().contains("metadata.json"),
              qPrintable(w->lastMessage()));
+  }
+
+  // The import dialog sets what the CLI's --segment and --rate-convention
+  // set; what the import applied is stored with the session, shown with its
+  // result and stored again with every re-analysis.
+  void importOptionsAreChosenAppliedAndStored() {
+    {
+      fog::ui::ImportDialog dialog("/data/run7");
+      QVERIFY(dialog.options().segmentation.empty() && dialog.options().gyroRateConvention.empty());
+      auto* segmentation = dialog.findChild<QComboBox*>("importSegmentation");
+      auto* windows = dialog.findChild<QLineEdit*>("importWindows");
+      auto* rates = dialog.findChild<QComboBox*>("importRateConvention");
+      QVERIFY(segmentation && windows && rates);
+      QVERIFY(!windows->isEnabled());
+      segmentation->setCurrentIndex(1);
+      QCOMPARE(QString::fromStdString(dialog.options().segmentation), QString("auto"));
+      segmentation->setCurrentIndex(2);
+      QVERIFY(windows->isEnabled());
+      windows->setText("12-5");
+      QVERIFY2(!dialog.problem().isEmpty(), "a window that ends before it starts is refused");
+      auto* ok = dialog.findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Ok);
+      QVERIFY(!ok->isEnabled());
+      windows->setText("2-8");
+      QVERIFY(dialog.problem().isEmpty() && ok->isEnabled());
+      QCOMPARE(QString::fromStdString(dialog.options().segmentation), QString("2-8"));
+      rates->setCurrentIndex(2);
+      QCOMPARE(QString::fromStdString(dialog.options().gyroRateConvention), QString("sample_at_stamp"));
+    }
+    // A one-point recording cut at a window given.
+    QTemporaryDir dir;
+    fog::TestPlan plan;
+    plan.points = {fog::TestPoint{fog::Axis::kX, 2.0, 2.0, 12.0, 0.3}};
+    auto run = fog::model::simulate(fog::model::SimConfig{}, plan);
+    QVERIFY(run.isOk());
+    auto recording = fog::protocol::decodeRecording(run->bytes);
+    QVERIFY(recording.isOk());
+    fog::SessionInfo info;
+    info.plan = plan;
+    QVERIFY(fog::io::exportCsv(dir.filePath("run").toStdString(), info, *recording, nullptr).isOk());
+    const double start = recording->testPoints.front().table.front().timeS;
+    fog::io::ImportOptions options;
+    options.segmentation = QString("%1-%2").arg(start + 2.0, 0, 'f', 3).arg(start + 10.0, 0, 'f', 3).toStdString();
+    auto w = window();
+    QSignalSpy imported(w.get(), &MainWindow::importEnded);
+    w->importCsv(dir.filePath("run"), options);
+    QTRY_VERIFY_WITH_TIMEOUT(!imported.isEmpty(), 30000);
+    const QString path = imported.front().front().toString();
+    QVERIFY2(!path.isEmpty(), qPrintable(w->lastMessage()));
+    {
+      auto reader = fog::session::SessionReader::open(path.toStdString());
+      QVERIFY(reader.isOk());
+      QVERIFY2(QString::fromStdString((*reader)->info().imported.segmentation).startsWith("given: "),
+               (*reader)->info().imported.segmentation.c_str());
+    }
+    QSignalSpy reanalysed(w.get(), &MainWindow::reanalysed);
+    w->reanalyseSession(path);
+    QTRY_VERIFY_WITH_TIMEOUT(!reanalysed.isEmpty(), 30000);
+    QVERIFY(reanalysed.front().front().toBool());
+    const auto* shown = w->lastOutcome()->shownResult();
+    QVERIFY(shown);
+    QVERIFY(shown->imported.segmentation.rfind("given: ", 0) == 0);
+    QVERIFY2(w->resultView()->resultDescription().contains("cut at the swing windows given: "),
+             qPrintable(w->resultView()->resultDescription()));
   }
 
   // A session recorded with a 300 ppm scale-factor error the bench is not

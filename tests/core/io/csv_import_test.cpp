@@ -258,6 +258,67 @@ TEST(CsvImportRates, AnUnstatedConventionIsRefusedNeverGuessed) {
   EXPECT_NE(noPeriod.status().message().find("gyro_frame_period_ms"), std::string::npos);
 }
 
+// The convention the metadata does not state may be given beside the files
+// (the CLI's --rate-convention, the GUI's import dialog); it is applied and
+// stored with the session. One that contradicts the metadata is refused.
+TEST(CsvImportRates, AConventionGivenBesideTheFilesIsAppliedAndRecorded) {
+  const auto r = rateFiles();
+  const std::string meta = R"({"bench": {"table_read_delay_ms": 0, "board_delay_ms": 0, "pulse_equivalent_deg": 1e-6},
+                              "test_points": [{"axis": "x", "frequency_hz": 1}]})";
+  const auto dir = goodDir(meta.c_str(), r.table.c_str(), r.frameAverage.c_str());
+  ImportOptions options;
+  options.gyroRateConvention = "frame_average";
+  options.gyroFramePeriodMs = 2.0;
+  auto s = importCsvDirectory(dir, options);
+  ASSERT_TRUE(s.isOk()) << s.status().message();
+  EXPECT_EQ(s->info.imported.gyroRateConvention, "frame_average");
+  EXPECT_EQ(s->info.imported.gyroFramePeriodMs, 2.0);
+  auto report = analysis::analyzeRecording(s->recording, analysis::benchConstantsOf(s->info.bench));
+  ASSERT_TRUE(report.isOk());
+  EXPECT_NEAR(report->points.at(0).lagMs, 0.5, 1e-4);
+
+  // The metadata states frame_average; asking for sample_at_stamp is two answers.
+  options.gyroRateConvention = "sample_at_stamp";
+  options.gyroFramePeriodMs = 0.0;
+  auto clash = importCsvDirectory(goodDir(rateMeta("frame_average").c_str(), r.table.c_str(), r.frameAverage.c_str()),
+                                  options);
+  ASSERT_FALSE(clash.isOk());
+  EXPECT_NE(clash.status().message().find("correct the one that is wrong"), std::string::npos)
+      << clash.status().message();
+  options.gyroRateConvention = "average";
+  auto unknown = importCsvDirectory(dir, options);
+  ASSERT_FALSE(unknown.isOk());
+  EXPECT_NE(unknown.status().message().find("\"frame_average\" or \"sample_at_stamp\""), std::string::npos);
+  // A file of increments records no convention.
+  auto increments = importCsvDirectory(goodDir(kMetadata, kTable, kGyro));
+  ASSERT_TRUE(increments.isOk());
+  EXPECT_TRUE(increments->info.imported.empty());
+}
+
+// One continuous recording cut at the windows given: one test point each,
+// and the windows applied are recorded with the session.
+TEST(CsvImportSegmentation, WindowsGivenAreCutAndRecorded) {
+  const auto r = rateFiles();
+  ImportOptions options;
+  options.segmentation = "2-8,10-16.5";
+  auto s = importCsvDirectory(goodDir(rateMeta("frame_average").c_str(), r.table.c_str(), r.frameAverage.c_str()),
+                              options);
+  ASSERT_TRUE(s.isOk()) << s.status().message();
+  ASSERT_EQ(s->recording.testPoints.size(), 2u);
+  ASSERT_EQ(s->windows.size(), 2u);
+  EXPECT_EQ(s->info.imported.segmentation, "given: 2.000000-8.000000,10.000000-16.500000");
+  EXPECT_EQ(s->info.plan.points.size(), 2u);
+  EXPECT_NEAR(s->recording.testPoints[1].table.front().timeS, 10.0, 1e-3);
+  options.segmentation = "auto";
+  auto found = importCsvDirectory(goodDir(rateMeta("frame_average").c_str(), r.table.c_str(), r.frameAverage.c_str()),
+                                  options);
+  ASSERT_TRUE(found.isOk()) << found.status().message();
+  EXPECT_EQ(found->info.imported.segmentation.rfind("auto: ", 0), 0u) << found->info.imported.segmentation;
+  EXPECT_GE(found->windows.size(), 1u);
+  options.segmentation = "8-2";
+  EXPECT_FALSE(importCsvDirectory(goodDir(kMetadata, kTable, kGyro), options).isOk());
+}
+
 TEST(CsvImportRates, AColumnThatLooksLikeARatePointsToTheRules) {
   auto s = importCsvDirectory(goodDir(kMetadata, kTable, "time_s,x_rate\n0.002,1\n0.004,1\n"));
   ASSERT_FALSE(s.isOk());

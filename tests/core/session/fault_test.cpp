@@ -533,7 +533,8 @@ TEST(SessionFaults, ASchemaOneSessionIsReadAndMigratedWhenAResultIsAdded) {
   ScratchDir dir;
   // Schema 1 as the first fogbench wrote it: no checksum columns, no table log.
   const auto path = craftedSession(dir, "v1.fbs",
-                                   "DROP TABLE table_log; ALTER TABLE session DROP COLUMN metadata_fnv1a;"
+                                   "DROP TABLE table_log; ALTER TABLE session DROP COLUMN import_json;"
+                                   " ALTER TABLE session DROP COLUMN metadata_fnv1a;"
                                    " ALTER TABLE result DROP COLUMN fnv1a; PRAGMA user_version = 1;");
   {
     auto r = SessionReader::open(path);
@@ -546,7 +547,7 @@ TEST(SessionFaults, ASchemaOneSessionIsReadAndMigratedWhenAResultIsAdded) {
   ASSERT_TRUE(addResult(path, "{}", R"({"lag_ms":0.466})").isOk());
   auto r = SessionReader::open(path);
   ASSERT_TRUE(r.isOk()) << r.status().message();
-  EXPECT_EQ((*r)->schemaVersion(), 3);  // 1 -> 2 -> 3
+  EXPECT_EQ((*r)->schemaVersion(), 4);  // 1 -> 2 -> 3 -> 4
   auto results = (*r)->results();
   ASSERT_TRUE(results.isOk());
   ASSERT_EQ(results->size(), 1u);
@@ -558,7 +559,9 @@ TEST(SessionFaults, ASchemaOneSessionIsReadAndMigratedWhenAResultIsAdded) {
 TEST(SessionFaults, ASchemaTwoSessionIsReadWithoutATableLogAndMigratedWhenOneIsAdded) {
   ScratchDir dir;
   // Schema 2 as fogbench wrote it before the table log.
-  const auto path = craftedSession(dir, "v2.fbs", "DROP TABLE table_log; PRAGMA user_version = 2;");
+  const auto path = craftedSession(dir, "v2.fbs",
+                                   "DROP TABLE table_log; ALTER TABLE session DROP COLUMN import_json;"
+                                   " PRAGMA user_version = 2;");
   {
     auto r = SessionReader::open(path);
     ASSERT_TRUE(r.isOk()) << r.status().message();
@@ -571,7 +574,7 @@ TEST(SessionFaults, ASchemaTwoSessionIsReadWithoutATableLogAndMigratedWhenOneIsA
   ASSERT_TRUE(appendTableLog(path, {{1.5, "command", "AXIS:X:STOP"}, {1.6, "status", "X rest"}}).isOk());
   auto r = SessionReader::open(path);
   ASSERT_TRUE(r.isOk()) << r.status().message();
-  EXPECT_EQ((*r)->schemaVersion(), 3);
+  EXPECT_EQ((*r)->schemaVersion(), 4);  // 2 -> 3 -> 4
   auto log = (*r)->tableLog();
   ASSERT_TRUE(log.isOk());
   ASSERT_EQ(log->size(), 2u);
@@ -580,6 +583,56 @@ TEST(SessionFaults, ASchemaTwoSessionIsReadWithoutATableLogAndMigratedWhenOneIsA
   EXPECT_DOUBLE_EQ((*log)[1].elapsedS, 1.6);
   EXPECT_TRUE((*r)->recording().isOk());
   EXPECT_TRUE((*r)->results().isOk());
+}
+
+// Schema 3 (before the import settings): read as it is, its metadata checksum
+// holds; migrated when a result is added, and the checksum still holds.
+TEST(SessionFaults, ASchemaThreeSessionIsReadAndMigratedWithItsChecksumIntact) {
+  ScratchDir dir;
+  const auto path = craftedSession(dir, "v3.fbs", "ALTER TABLE session DROP COLUMN import_json; PRAGMA user_version = 3;");
+  {
+    auto r = SessionReader::open(path);
+    ASSERT_TRUE(r.isOk()) << r.status().message();
+    EXPECT_EQ((*r)->schemaVersion(), 3);
+    EXPECT_TRUE((*r)->info().imported.empty());
+  }
+  ASSERT_TRUE(addResult(path, "{}", R"({"lag_ms":0.466})").isOk());
+  auto r = SessionReader::open(path);
+  ASSERT_TRUE(r.isOk()) << r.status().message();
+  EXPECT_EQ((*r)->schemaVersion(), 4);
+  EXPECT_TRUE((*r)->info().imported.empty());
+  EXPECT_TRUE((*r)->recording().isOk());
+}
+
+// An imported session keeps what the import applied; a flipped byte in it
+// fails the metadata checksum like any other metadata.
+TEST(SessionFaults, ImportSettingsAreStoredAndChecked) {
+  ScratchDir dir;
+  SessionInfo info;
+  info.imported.gyroRateConvention = "frame_average";
+  info.imported.gyroFramePeriodMs = 2.5;
+  info.imported.segmentation = "auto: 10.000000-40.000000";
+  {
+    auto w = SessionWriter::create(dir.file("imported.fbs"), info);
+    ASSERT_TRUE(w.isOk()) << w.status().message();
+    ASSERT_TRUE((*w)->finish(true, "").isOk());
+  }
+  {
+    auto r = SessionReader::open(dir.file("imported.fbs"));
+    ASSERT_TRUE(r.isOk()) << r.status().message();
+    EXPECT_EQ((*r)->info().imported.gyroRateConvention, "frame_average");
+    EXPECT_EQ((*r)->info().imported.gyroFramePeriodMs, 2.5);
+    EXPECT_EQ((*r)->info().imported.segmentation, "auto: 10.000000-40.000000");
+  }
+  sqlite3* db = nullptr;
+  ASSERT_EQ(sqlite3_open(dir.file("imported.fbs").c_str(), &db), SQLITE_OK);
+  ASSERT_EQ(sqlite3_exec(db, "UPDATE session SET import_json = replace(import_json, '10.0', '11.0')", nullptr,
+                         nullptr, nullptr),
+            SQLITE_OK);
+  sqlite3_close(db);
+  auto r = SessionReader::open(dir.file("imported.fbs"));
+  ASSERT_FALSE(r.isOk());
+  EXPECT_NE(r.status().message().find("checksum"), std::string::npos) << r.status().message();
 }
 
 // --- 11. limits -----------------------------------------------------------------
