@@ -349,8 +349,10 @@ void DiagnosisView::showDiagnosis(std::shared_ptr<const diagnosis::Diagnosis> d,
                 .arg(localNumber(diagnosis_->gapAfter[i].rmsZ, 'f', 2));
   verdict_->setText(tr("<b>%1 — verdict: %2</b><br>%3<br>gap per channel (rms z, 1 = within the simulator's "
                        "spread), before → after: %4")
-                        .arg(title.toHtmlEscaped(), coreText(diagnosis_->verdict).toHtmlEscaped(),
+                        .arg(title.toHtmlEscaped(), coreText(diagnosis::effectTitle(diagnosis_->verdict)).toHtmlEscaped(),
                              coreText(diagnosis_->verdictReason).toHtmlEscaped(), gaps));
+  // The identifier the JSON and the CLI's options use, for whoever needs it.
+  verdict_->setToolTip(tr("verdict: %1 (the JSON's \"verdict\")").arg(QString::fromStdString(diagnosis_->verdict)));
   text_->setPlainText(coreText(diagnosis::formatDiagnosisText(*diagnosis_)));
   {
     const QSignalBlocker block(pointCombo_);
@@ -421,9 +423,11 @@ void DiagnosisView::showGapMap() {
   columnNames_.clear();
   std::map<std::pair<int, int>, int> columns;                 // (point, segment) -> column
   std::map<std::tuple<int, std::string, int>, int> rows;      // (channel, quantity, axis) -> row
+  std::map<std::string, std::string> titles;                  // quantity name -> in words
   for (const auto& c : diagnosis_->gapMap) {
     columns.emplace(std::pair{c.key.point, c.key.segment}, 0);
     rows.emplace(std::tuple{static_cast<int>(c.key.channel), quantityName(c.key), c.key.axis}, 0);
+    titles.emplace(quantityName(c.key), diagnosis::quantityTitle(c.key));
   }
   int i = 0;
   for (auto& [key, index] : columns) {
@@ -435,8 +439,8 @@ void DiagnosisView::showGapMap() {
     index = i++;
     const auto& [channel, quantity, axis] = key;
     rowNames_ << QString("%1 %2 %3")
-                     .arg(coreText(diagnosis::channelName(static_cast<diagnosis::Channel>(channel))), coreText(quantity),
-                          axisLetter(axis))
+                     .arg(coreText(diagnosis::channelName(static_cast<diagnosis::Channel>(channel))),
+                          coreText(titles[quantity]), axisLetter(axis))
                      .trimmed();
   }
   const int nRows = static_cast<int>(rowNames_.size()), nCols = static_cast<int>(columnNames_.size());
@@ -496,7 +500,7 @@ void DiagnosisView::showShrink() {
   QVector<double> shrink;
   std::vector<bool> kept;
   for (const auto& e : diagnosis_->effects) {
-    names << coreText(e.name);
+    names << coreText(diagnosis::effectTitle(e.name));
     shrink << 100.0 * std::clamp(e.heldOutShrink, -1.0, 1.0);
     kept.push_back(e.kept);
   }

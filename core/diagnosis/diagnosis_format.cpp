@@ -139,8 +139,8 @@ std::string formatDiagnosisText(const Diagnosis& d) {
   s += "  largest cells:\n";
   for (std::size_t i = 0; i < std::min<std::size_t>(5, worst.size()); ++i) {
     const auto& g = *worst[i];
-    std::snprintf(b, sizeof b, "    point %d segment %d %-10s %-18s axis %2d: real %.4g, replay %.4g +- %.3g %s (z %+.1f)\n",
-                  g.key.point + 1, g.key.segment + 1, channelName(g.key.channel), quantityName(g.key).c_str(), g.key.axis,
+    std::snprintf(b, sizeof b, "    point %d segment %d %-10s %-30s axis %2d: real %.4g, replay %.4g +- %.3g %s (z %+.1f)\n",
+                  g.key.point + 1, g.key.segment + 1, channelName(g.key.channel), quantityTitle(g.key).c_str(), g.key.axis,
                   g.real, g.simMean, g.simStd, unitName(g.key.unit), g.z);
     s += b;
   }
@@ -154,7 +154,7 @@ std::string formatDiagnosisText(const Diagnosis& d) {
     }
     char score[32] = "        -";  // no signature in this session
     if (e.score) std::snprintf(score, sizeof score, "%9.1f", *e.score);
-    std::snprintf(b, sizeof b, "  %-26s score %s  held-out shrink %5.0f %%%s  %s\n", e.name.c_str(), score,
+    std::snprintf(b, sizeof b, "  %-26s score %s  held-out shrink %5.0f %%%s  %s\n", effectTitle(e.name).c_str(), score,
                   100.0 * e.heldOutShrink, e.kept ? "  KEPT" : "", params.c_str());
     s += b;
   }
@@ -165,8 +165,8 @@ std::string formatDiagnosisText(const Diagnosis& d) {
     s += "  " + a.name + ": " + m + "\n    " + a.value + "\n    to separate: " + a.separatingTest + "\n";
   }
   for (const auto& n : d.notes) s += "note: " + n + "\n";
-  s += "\nVerdict: " + d.verdict;
-  if (d.verdictEffects.size() > 1) s += " (+ " + d.verdictEffects[1] + ")";
+  s += "\nVerdict: " + effectTitle(d.verdict);
+  if (d.verdictEffects.size() > 1) s += " (+ " + effectTitle(d.verdictEffects[1]) + ")";
   s += " - " + d.verdictReason + "\n";
   std::snprintf(b, sizeof b, "(diagnosis took %.2f s)\n", d.elapsedS);
   s += b;

@@ -361,40 +361,49 @@ std::vector<EffectSpec> buildLibrary() {
   using E = EffectId;
   // {name, unit, reference, can be negative, largest magnitude modelled}
   return {
-      {E::kBiasDrift, "bias_drift", "gyro bias ramp (temperature-like), all axes",
+      {E::kBiasDrift, "bias_drift", "bias drift", "gyro bias ramp (temperature-like), all axes",
        {{"drift", "deg/h per min", 2.0, true, 1000.0}}},
-      {E::kScaleFactorError, "scale_factor_error", "gyro scale factor error",
+      {E::kScaleFactorError, "scale_factor_error", "scale-factor error", "gyro scale factor error",
        {{"scale_factor", "ppm", 1000.0, true, 1e6}}},
-      {E::kScaleFactorAsymmetry, "scale_factor_asymmetry", "scale factor differs for positive / negative rate",
+      {E::kScaleFactorAsymmetry, "scale_factor_asymmetry", "scale-factor asymmetry", "scale factor differs for positive / negative rate",
        {{"asymmetry", "ppm", 1000.0, true, 1e6}}},
-      {E::kScaleFactorNonlinearity, "scale_factor_nonlinearity", "cubic scale-factor nonlinearity (error at 100 deg/s)",
+      {E::kScaleFactorNonlinearity, "scale_factor_nonlinearity", "scale-factor nonlinearity", "cubic scale-factor nonlinearity (error at 100 deg/s)",
        {{"nonlinearity", "ppm at 100 deg/s", 20000.0, true, 1e6}}},
-      {E::kMisalignment, "misalignment", "gyro triad misalignment / non-orthogonality (gyro i senses m_ij of axis j)",
+      {E::kMisalignment, "misalignment", "misalignment", "gyro triad misalignment / non-orthogonality (gyro i senses m_ij of axis j)",
        {{"m_xy", "urad", 200.0, true, 1e5}, {"m_xz", "urad", 200.0, true, 1e5}, {"m_yx", "urad", 200.0, true, 1e5},
         {"m_yz", "urad", 200.0, true, 1e5}, {"m_zx", "urad", 200.0, true, 1e5}, {"m_zy", "urad", 200.0, true, 1e5}}},
-      {E::kGSensitivity, "g_sensitivity", "g-sensitive bias: each gyro's rate error k times the specific force along it",
+      {E::kGSensitivity, "g_sensitivity", "g-sensitivity", "g-sensitive bias: each gyro's rate error k times the specific force along it",
        {{"g_sensitivity", "deg/h/g", 50.0, true, 1e4}}},
-      {E::kFirstOrderLag, "first_order_lag", "first-order low-pass of the gyro output",
+      {E::kFirstOrderLag, "first_order_lag", "first-order lag", "first-order low-pass of the gyro output",
        {{"time_constant", "ms", 2.0, false, 1000.0}}, false},
-      {E::kTableHarmonicDistortion, "table_harmonic_distortion", "2nd/3rd harmonic in the table motion",
+      {E::kTableHarmonicDistortion, "table_harmonic_distortion", "table harmonic distortion", "2nd/3rd harmonic in the table motion",
        {{"h2_at_10deg", "ppm", 200.0, true, 1e6}, {"h3_at_10deg", "ppm", 400.0, true, 1e6}}},
-      {E::kEncoderCyclicError, "encoder_cyclic_error", "encoder error periodic in angle (10 deg period)",
+      {E::kEncoderCyclicError, "encoder_cyclic_error", "encoder cyclic error", "encoder error periodic in angle (10 deg period)",
        {{"sin_amplitude", "arcsec", 1.0, true, 3600.0}, {"cos_amplitude", "arcsec", 1.0, true, 3600.0}}},
       // Up to 10 ms rms: beyond, frames of a 2-ms stream swap order.
-      {E::kTimestampJitter, "timestamp_jitter", "white jitter on the IMU frame stamps",
+      {E::kTimestampJitter, "timestamp_jitter", "time-stamp jitter", "white jitter on the IMU frame stamps",
        {{"jitter_variance", "us^2", 100.0, false, 1e8}}},
       // The IMU board's own clock error is modelled up to 1000 ppm
       // (SimConfig::validate); at -1e6 ppm its stamps would run backwards.
-      {E::kClockDrift, "clock_drift", "IMU stamps drift against the table's time base",
+      {E::kClockDrift, "clock_drift", "IMU clock drift", "IMU stamps drift against the table's time base",
        {{"drift", "ppm", 1.0, true, 1000.0}}},
-      {E::kDroppedFrames, "dropped_frames", "IMU frames lost at random",
+      {E::kDroppedFrames, "dropped_frames", "dropped frames", "IMU frames lost at random",
        {{"loss_rate", "per mille", 5.0, false, 1000.0}}},
-      {E::kEarthRateProjection, "earth_rate_projection", "wrong latitude / heading for the Earth-rate projection",
+      {E::kEarthRateProjection, "earth_rate_projection", "Earth-rate projection", "wrong latitude / heading for the Earth-rate projection",
        {{"latitude_error", "deg", 5.0, true, 180.0}, {"heading_error", "deg", 5.0, true, 360.0}}, false, false},
   };
 }
 
 }  // namespace
+
+std::string effectTitle(const std::string& name) {
+  if (name == "none") return "none (the recording agrees with the simulation)";
+  if (name == "unexplained") return "unexplained (no effect of the library closes the gap)";
+  if (name == "undetermined") return "undetermined";
+  for (const auto& spec : effectLibrary())
+    if (spec.name == name) return spec.title;
+  return name;
+}
 
 const std::vector<EffectSpec>& effectLibrary() {
   static const std::vector<EffectSpec> library = buildLibrary();

@@ -59,7 +59,8 @@ struct EffectParameter {
 
 struct EffectSpec {
   EffectId id;
-  std::string name;         // stable key, "scale_factor_error"
+  std::string name;         // stable key, "scale_factor_error" (JSON, CLI options)
+  std::string title;        // in words for people, "scale-factor error"
   std::string description;  // one line for reports
   std::vector<EffectParameter> parameters;
   // Features respond linearly in the parameters (fitted by variable
@@ -83,6 +84,11 @@ struct EffectContext {
 const std::vector<EffectSpec>& effectLibrary();
 const EffectSpec& effectSpec(EffectId id);
 Result<EffectId> effectIdFromName(const std::string& name);
+
+// An effect's name or a diagnosis verdict ("none", "unexplained",
+// "undetermined") in words for people: what the text report and the GUI
+// show; the name stays the key of the JSON. An unknown name is returned as is.
+std::string effectTitle(const std::string& name);
 
 // Ok when every parameter is finite and within its maxMagnitude (and not
 // negative where it cannot be); otherwise what is out of range, in words.

@@ -273,6 +273,25 @@ std::string quantityName(const FeatureKey& key) {
   return "?";
 }
 
+std::string quantityTitle(const FeatureKey& key) {
+  switch (key.quantity) {
+    case Quantity::kInPhase: return "harmonic " + std::to_string(key.harmonic) + ", in phase";
+    case Quantity::kQuadrature: return "harmonic " + std::to_string(key.harmonic) + ", quadrature";
+    case Quantity::kResidualMeanSquare: return "residual mean square";
+    case Quantity::kGain: return "gain";
+    case Quantity::kDelay: return "delay";
+    case Quantity::kTrend: return "trend";
+    case Quantity::kCrossInPhase: return "cross-axis, in phase";
+    case Quantity::kCrossQuadrature: return "cross-axis, quadrature";
+    case Quantity::kTableInterval: return "table stamp interval";
+    case Quantity::kTableIntervalVariance: return "table stamp-interval variance";
+    case Quantity::kImuInterval: return "IMU stamp interval";
+    case Quantity::kImuIntervalVariance: return "IMU stamp-interval variance";
+    case Quantity::kImuLost: return "IMU frames lost";
+  }
+  return "?";
+}
+
 const char* unitName(Unit unit) {
   switch (unit) {
     case Unit::kPpm: return "ppm";

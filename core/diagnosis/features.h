@@ -60,6 +60,10 @@ struct FeatureKey {
 // "residual_ms", "imu_lost", ...; "ppm", "us", "deg/h", "udeg^2", "us^2", "frames".
 std::string quantityName(const FeatureKey& key);
 const char* unitName(Unit unit);
+// The same quantity in words for people ("harmonic 2, quadrature",
+// "IMU stamp-interval variance"): what the text report and the GUI show;
+// the name above stays the key of the JSON (and the GUI's tooltip).
+std::string quantityTitle(const FeatureKey& key);
 
 struct PointReference {
   double omegaRadPerS = 0.0;  // reference swing frequency (the real session's table fit)

@@ -617,7 +617,7 @@ void decideVerdict(const VerdictModel& chosen, const std::vector<Candidate>& can
                                        : "real and simulated data agree within the simulator's own spread";
   } else if (!left.empty()) {
     d.verdict = "unexplained";
-    d.verdictReason = cands[model[0]].fit.name + " closes " + fmt("%.0f", 100.0 * total.shrink) +
+    d.verdictReason = effectTitle(cands[model[0]].fit.name) + " closes " + fmt("%.0f", 100.0 * total.shrink) +
                       " % of the held-out gap but leaves a significant remainder in the " + left +
                       "; the rest is not in the library";
   } else {

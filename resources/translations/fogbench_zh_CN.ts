@@ -876,7 +876,12 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>&lt;b&gt;%1 —— 结论：%2&lt;/b&gt;&lt;br&gt;%3&lt;br&gt;各通道差异（z 的均方根，1 = 在仿真离散度之内），之前 → 之后：%4</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+5"/>
+        <source>verdict: %1 (the JSON&apos;s &quot;verdict&quot;)</source>
+        <translation>判定：%1（JSON 中的 &quot;verdict&quot;）</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>%1: %2 axis, %3 Hz</source>
         <translation>%1：%2 轴，%3 Hz</translation>
     </message>
@@ -911,7 +916,7 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>陀螺，仿真</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+36"/>
         <source>P%1 S%2</source>
         <translation>点%1 段%2</translation>
     </message>
@@ -4340,6 +4345,126 @@ File: %1</source>
         <location line="+1"/>
         <source>earth_rate_projection</source>
         <translation>地球自转角速度投影</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>bias drift</source>
+        <translation>零偏漂移</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>scale-factor error</source>
+        <translation>标度因数误差</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>scale-factor asymmetry</source>
+        <translation>标度因数不对称</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>scale-factor nonlinearity</source>
+        <translation>标度因数非线性</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>g-sensitivity</source>
+        <translation>g 敏感性</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>first-order lag</source>
+        <translation>一阶滞后</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>table harmonic distortion</source>
+        <translation>转台运动谐波失真</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>encoder cyclic error</source>
+        <translation>编码器周期误差</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>time-stamp jitter</source>
+        <translation>时间戳抖动</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>IMU clock drift</source>
+        <translation>IMU 时钟漂移</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>dropped frames</source>
+        <translation>丢帧</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Earth-rate projection</source>
+        <translation>地球自转角速度投影</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>none (the recording agrees with the simulation)</source>
+        <translation>无（记录与仿真一致）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>unexplained (no effect of the library closes the gap)</source>
+        <translation>无法解释（效应库中没有效应能消除差异）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>harmonic %1, in phase</source>
+        <translation>%1 次谐波，同相</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>harmonic %1, quadrature</source>
+        <translation>%1 次谐波，正交</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>residual mean square</source>
+        <translation>残差均方</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cross-axis, in phase</source>
+        <translation>交叉轴，同相</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cross-axis, quadrature</source>
+        <translation>交叉轴，正交</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>table stamp interval</source>
+        <translation>转台时间戳间隔</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>table stamp-interval variance</source>
+        <translation>转台时间戳间隔方差</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>IMU stamp interval</source>
+        <translation>IMU 时间戳间隔</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>IMU stamp-interval variance</source>
+        <translation>IMU 时间戳间隔方差</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>IMU frames lost</source>
+        <translation>IMU 丢帧数</translation>
     </message>
     <message>
         <location line="+1"/>

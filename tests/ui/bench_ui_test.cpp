@@ -1112,7 +1112,11 @@ class BenchUiTest : public QObject {
     QVERIFY(d->calibration.biasInstabilityStated);
     QCOMPARE(d->calibration.config.fog.biasInstabilityDegPerH, 0.5);
     QCOMPARE(d->calibration.config.fog.biasCorrelationS, 300.0);
-    QVERIFY(w->diagnosisView()->verdictText().contains("scale_factor_error"));
+    // In words; the identifier only in the tooltip (and the JSON).
+    QVERIFY2(w->diagnosisView()->verdictText().contains("verdict: scale-factor error") &&
+                 !w->diagnosisView()->verdictText().contains("scale_factor_error"),
+             qPrintable(w->diagnosisView()->verdictText()));
+    QVERIFY(w->diagnosisView()->findChild<QLabel*>("diagnosisVerdict")->toolTip().contains("scale_factor_error"));
     QVERIFY(w->diagnosisView()->gapMapRows() > 10);
     QVERIFY(w->diagnosisView()->gapMapColumns() >= 1);
     {
@@ -1133,7 +1137,8 @@ class BenchUiTest : public QObject {
     const QwtScaleDiv& names = w->diagnosisView()->shrinkPlot()->axisScaleDiv(QwtPlot::yLeft);
     QVERIFY(names.lowerBound() > names.upperBound());
     QCOMPARE(w->diagnosisView()->shrinkPlot()->axisScaleDraw(QwtPlot::yLeft)->label(0.0).text(),
-             QString::fromStdString(d->effects.front().name));
+             QString::fromStdString(fog::diagnosis::effectTitle(d->effects.front().name)));
+    QVERIFY(!w->diagnosisView()->shrinkPlot()->axisScaleDraw(QwtPlot::yLeft)->label(0.0).text().contains('_'));
     QCOMPARE(w->diagnosisView()->curvePlot()->itemList(QwtPlotItem::Rtti_PlotCurve).size(), 2);
   }
 
