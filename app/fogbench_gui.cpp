@@ -31,6 +31,8 @@
 #include <QTimer>
 #include <cstdio>
 #include <cstring>
+#include <map>
+#include <memory>
 
 #include "core/common/version.h"
 #include "app/gui_screenshot.h"
@@ -173,14 +175,42 @@ int main(int argc, char* argv[]) {
 
   window.setRemembering(true);
 
-  // As large as the screen allows, up to 1500 x 950 (a laptop's 1366 x 768
-  // gets a window that fits it).
-  QSize size(1500, 950);
-  if (const QScreen* screen = QApplication::primaryScreen())
-    size = size.boundedTo(screen->availableGeometry().size());
-  window.resize(size);
-  window.show();
-  if (view == "sessions") window.showView(fog::ui::MainWindow::kSessions);
+  // The layout of the last session (size, position, splitters, view); the
+  // first time, 1500 x 950 on a screen that has room for it with the
+  // window's frame, else maximised: the frame, the title bar and the status
+  // bar stay on the screen (a window as large as the screen's free area
+  // would put its frame beyond it).
+  if (!window.restoreLayout()) {
+    const QScreen* screen = QApplication::primaryScreen();
+    const QRect free = screen ? screen->availableGeometry() : QRect(0, 0, 1500, 950);
+    if (free.width() >= 1500 + 60 && free.height() >= 950 + 80) {
+      window.resize(1500, 950);
+      window.move(free.center() - QPoint(750, 475));
+      window.show();
+    } else {
+      window.showMaximized();
+    }
+  } else {
+    window.show();
+  }
+  const std::map<QString, fog::ui::MainWindow::View> viewOf = {
+      {"configure", fog::ui::MainWindow::kConfigure}, {"live", fog::ui::MainWindow::kLive},
+      {"results", fog::ui::MainWindow::kResults},     {"sessions", fog::ui::MainWindow::kSessions},
+      {"diagnosis", fog::ui::MainWindow::kDiagnosis}, {"noise", fog::ui::MainWindow::kNoise}};
+  const auto asked = viewOf.find(view);
+  if (asked != viewOf.end()) {
+    window.showView(asked->second);
+    // Opening a session shows Results when it arrives; the view asked for
+    // wins (a diagnosis or noise of the session is one click away there).
+    if (parser.isSet(openOption) && asked->second != fog::ui::MainWindow::kResults) {
+      auto target = asked->second;
+      auto once = std::make_shared<QMetaObject::Connection>();
+      *once = QObject::connect(&window, &fog::ui::MainWindow::sessionOpened, &window, [&window, target, once](bool opened) {
+        QObject::disconnect(*once);
+        if (opened) window.showView(target);
+      });
+    }
+  }
   if (!compared.isEmpty()) {
     const QString path = screenshot.path;
     QTimer::singleShot(0, &window, [&window, compared, path] {

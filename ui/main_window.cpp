@@ -431,6 +431,64 @@ void MainWindow::restoreState() {
   restoring_ = false;
 }
 
+namespace {
+// Splitters are named by their place among the window's splitters (created
+// in the same order at every start), unless they have a name of their own.
+QString splitterKey(const QSplitter* splitter, int index) {
+  return "splitter/" + (splitter->objectName().isEmpty() ? QString::number(index) : splitter->objectName());
+}
+}  // namespace
+
+void MainWindow::saveLayout() {
+  if (!remembering_) return;
+  QSettings s;
+  s.beginGroup("layout");
+  s.setValue("geometry", saveGeometry());
+  s.setValue("view", static_cast<int>(currentView()));
+  const auto splitters = findChildren<QSplitter*>();
+  for (int i = 0; i < splitters.size(); ++i) s.setValue(splitterKey(splitters[i], i), splitters[i]->saveState());
+}
+
+namespace {
+// Restores a splitter's divider once it is on screen at its real size: a
+// splitter in a view not shown yet has no size, and its divider would be
+// rescaled when the view first appears.
+class SplitterRestorer : public QObject {
+ public:
+  SplitterRestorer(QSplitter* splitter, QByteArray state) : QObject(splitter), state_(std::move(state)) {
+    splitter->installEventFilter(this);
+    if (splitter->isVisible()) restoreLater(splitter);
+  }
+  bool eventFilter(QObject* watched, QEvent* event) override {
+    if (event->type() == QEvent::Show) restoreLater(static_cast<QSplitter*>(watched));
+    return false;
+  }
+
+ private:
+  void restoreLater(QSplitter* splitter) {
+    splitter->removeEventFilter(this);
+    QTimer::singleShot(0, this, [this, splitter] {
+      splitter->restoreState(state_);
+      deleteLater();
+    });
+  }
+  QByteArray state_;
+};
+}  // namespace
+
+bool MainWindow::restoreLayout() {
+  QSettings s;
+  s.beginGroup("layout");
+  const auto splitters = findChildren<QSplitter*>();
+  for (int i = 0; i < splitters.size(); ++i)
+    if (const QVariant state = s.value(splitterKey(splitters[i], i)); state.isValid())
+      new SplitterRestorer(splitters[i], state.toByteArray());
+  const int view = s.value("view", -1).toInt();
+  if (view >= kConfigure && view <= kNoise) showView(static_cast<View>(view));
+  // Qt moves a remembered window back onto a screen that has changed.
+  return s.contains("geometry") && restoreGeometry(s.value("geometry").toByteArray());
+}
+
 void MainWindow::reportError(const QString& title, const QString& headline, const QString& details) {
   tell(headline);
   showMessage(this, MessageKind::kError, title, headline, details);
@@ -452,6 +510,7 @@ void MainWindow::openExportFolder() {
 
 void MainWindow::closeEvent(QCloseEvent* event) {
   if (!runner_.isRunning()) {
+    saveLayout();
     event->accept();
     return;
   }

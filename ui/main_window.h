@@ -95,6 +95,13 @@ class MainWindow : public QMainWindow {
   // serial, session folder) are remembered for the next start. Off while the
   // command line applies one-off choices (--session-folder, --preset).
   void setRemembering(bool remembering) { remembering_ = remembering; }
+  // The window's layout: size and position, every splitter and the view
+  // shown, remembered when the window closes (QSettings group "layout") and
+  // restored at the next start. restoreLayout() returns false when nothing
+  // was remembered (or it no longer fits a screen): the caller then sizes
+  // the window to the screen.
+  void saveLayout();
+  bool restoreLayout();
   // Test plans in the CLI's JSON format (fogbench-cli run --plan FILE).
   Status loadPlanFile(const QString& path);
   Status savePlanFile(const QString& path);

@@ -1344,12 +1344,12 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+884"/>
+        <location line="+943"/>
         <source>Diagnosis</source>
         <translation>诊断</translation>
     </message>
     <message>
-        <location line="-881"/>
+        <location line="-940"/>
         <source>Noise</source>
         <translation>噪声</translation>
     </message>
@@ -1422,12 +1422,12 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+644"/>
+        <location line="+703"/>
         <source>Open session</source>
         <translation>打开会话</translation>
     </message>
     <message>
-        <location line="-643"/>
+        <location line="-702"/>
         <source>fogbench sessions (*.fbs);;All files (*)</source>
         <translation>fogbench 会话 (*.fbs);;所有文件 (*)</translation>
     </message>
@@ -1607,7 +1607,7 @@ Quit: Ctrl+Q</source>
         <translation>测试计划已保存为 %1</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+93"/>
         <source>Saved %1 — File ▸ Open the export folder shows it</source>
         <translation>已保存 %1 —— “文件 ▸ 打开导出文件夹”可查看</translation>
     </message>
@@ -1627,7 +1627,7 @@ Quit: Ctrl+Q</source>
         <translation>没有文件管理器响应；请手动打开该文件夹：%1</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>A run is under way</source>
         <translation>运行正在进行</translation>
     </message>
@@ -1652,12 +1652,12 @@ Quit: Ctrl+Q</source>
         <translation>停止运行并关闭</translation>
     </message>
     <message>
-        <location line="-118"/>
+        <location line="-177"/>
         <source>The language can be changed once the run or the diagnosis has ended.</source>
         <translation>运行或诊断结束后才能更改语言。</translation>
     </message>
     <message>
-        <location line="+120"/>
+        <location line="+179"/>
         <source>Keep running</source>
         <translation>继续运行</translation>
     </message>
@@ -2362,7 +2362,7 @@ File: %1</source>
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../../ui/main_window.cpp" line="-1026"/>
+        <location filename="../../ui/main_window.cpp" line="-1085"/>
         <location filename="../../ui/plan_editor.cpp" line="-300"/>
         <source>%1 s</source>
         <translation>%1 s</translation>

@@ -17,6 +17,7 @@
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QSettings>
+#include <QSplitter>
 #include <QStatusBar>
 #include <QTabBar>
 #include <QToolButton>
@@ -219,6 +220,7 @@ class BenchUiTest : public QObject {
   std::unique_ptr<MainWindow> window() {
     QSettings().remove("state");  // each test starts from the defaults
     QSettings().remove("diagnosis");
+    QSettings().remove("layout");
     auto w = std::make_unique<MainWindow>();
     w->setSessionFolder(sessions_.path());
     w->resize(1400, 900);
@@ -981,6 +983,44 @@ class BenchUiTest : public QObject {
     QVERIFY(imported.back().front().toString().isEmpty());
     QVERIFY2(w->lastMessage().contains("Cannot import") && w->lastMessage().contains("metadata.json"),
              qPrintable(w->lastMessage()));
+  }
+
+  // The window's layout is remembered when it closes: the next start shows
+  // the same view, size and splitters; nothing remembered: restoreLayout
+  // says so and the caller sizes the window.
+  void theLayoutIsRememberedBetweenStarts() {
+    QList<int> sizes;
+    {
+      auto w = window();
+      QVERIFY(!w->restoreLayout());
+      w->showView(MainWindow::kConfigure);
+      w->resize(1100, 720);
+      settle();
+      auto* split = w->findChild<QSplitter*>("configureSplitter");
+      sizes = split->sizes();
+      QVERIFY2(sizes.size() == 2 && sizes[0] > 40, qPrintable(QString("sizes %1").arg(sizes.size() ? sizes[0] : -1)));
+      sizes = {sizes[0] - 30, sizes[1] + 30};
+      split->setSizes(sizes);
+      sizes = split->sizes();
+      w->showView(MainWindow::kSessions);
+      w->close();
+    }
+    auto again = std::make_unique<MainWindow>();
+    QVERIFY(again->restoreLayout());
+    again->show();
+    QCOMPARE(again->currentView(), MainWindow::kSessions);
+    QCOMPARE(again->size(), QSize(1100, 720));
+    // The divider of a view not shown yet is restored when the view appears.
+    again->showView(MainWindow::kConfigure);
+    QTRY_COMPARE(again->findChild<QSplitter*>("configureSplitter")->sizes(), sizes);
+    again->showView(MainWindow::kSessions);
+    again->setRemembering(false);  // a window that remembers nothing leaves the layout alone
+    again->showView(MainWindow::kNoise);
+    again->close();
+    auto third = std::make_unique<MainWindow>();
+    QVERIFY(third->restoreLayout());
+    QCOMPARE(third->currentView(), MainWindow::kSessions);
+    QSettings().remove("layout");
   }
 
   // The import dialog sets what the CLI's --segment and --rate-convention
