@@ -5,6 +5,7 @@
 #include <sys/file.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <cmath>
@@ -14,6 +15,7 @@
 #include <ctime>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <span>
 #include <utility>
 
@@ -130,6 +132,15 @@ CREATE TABLE table_log (
 );
 )sql";
 
+// Schema 4: the gyro signs of the bench constants (+1, or -1 for a gyro axis
+// mounted the other way round). Files of older schemas read +1: what every
+// analysis of them used.
+constexpr const char* kSchemaV4Step = R"sql(
+ALTER TABLE session ADD COLUMN gyro_sign_x INTEGER NOT NULL DEFAULT 1;
+ALTER TABLE session ADD COLUMN gyro_sign_y INTEGER NOT NULL DEFAULT 1;
+ALTER TABLE session ADD COLUMN gyro_sign_z INTEGER NOT NULL DEFAULT 1;
+)sql";
+
 // Sample blocks: small enough to stay far below SQLite's 1 GB value limit
 // whatever the test point's length, large enough that a block costs little.
 constexpr std::size_t kSamplesPerBlock = 65536;
@@ -243,9 +254,12 @@ constexpr const char* kMetadataColumns =
     "operator, imu_model, imu_serial, source, software_version, created_utc, notes, table_read_delay_ms,"
     " table_read_delay_std_ms, board_delay_ms, board_delay_std_ms, latitude_deg, pulse_equivalent_deg, counter_hz,"
     " counter_bits, test_plan_json, state, incomplete_reason, finished_utc";
+constexpr const char* kSchemaV4MetadataColumns = ", gyro_sign_x, gyro_sign_y, gyro_sign_z";
 
-Result<std::int64_t> metadataChecksum(sqlite3* db) {
-  Stmt s(db, (std::string("SELECT ") + kMetadataColumns + " FROM session WHERE id = 1").c_str());
+// Over the metadata columns the file's schema has.
+Result<std::int64_t> metadataChecksum(sqlite3* db, int schemaVersion = kSchemaVersion) {
+  const std::string columns = std::string(kMetadataColumns) + (schemaVersion >= 4 ? kSchemaV4MetadataColumns : "");
+  Stmt s(db, ("SELECT " + columns + " FROM session WHERE id = 1").c_str());
   if (!s.ok() || s.step() != SQLITE_ROW) return ioError(sqliteMessage(db));
   std::uint64_t h = 0xcbf29ce484222325ULL;
   const int n = sqlite3_column_count(s.get());
@@ -459,6 +473,21 @@ Status migrate(sqlite3* db, int from) {
     if (!exec(db, kSchemaV3Step) || !exec(db, "PRAGMA user_version = 3"))
       return ioError("migrating from schema 2 to 3 failed: " + sqliteMessage(db));
   }
+  if (from < 4) {
+    // 3 -> 4: gyro signs, +1 (what the file was analysed with). A checked
+    // metadata row stays checked over the new columns only if it still
+    // matches its checksum: a damaged row is never blessed.
+    std::optional<std::int64_t> stored;
+    {
+      Stmt c(db, "SELECT metadata_fnv1a FROM session WHERE id = 1");
+      if (c.ok() && c.step() == SQLITE_ROW && sqlite3_column_type(c.get(), 0) != SQLITE_NULL) stored = c.integer(0);
+    }
+    const auto before = metadataChecksum(db, 3);
+    if (!exec(db, kSchemaV4Step) || !exec(db, "PRAGMA user_version = 4"))
+      return ioError("migrating from schema 3 to 4 failed: " + sqliteMessage(db));
+    if (stored && before && *before == *stored && !updateMetadataChecksum(db))
+      return ioError("migrating from schema 3 to 4 failed: " + sqliteMessage(db));
+  }
   return Status::ok();
 }
 
@@ -587,14 +616,16 @@ Result<std::unique_ptr<SessionWriter>> SessionWriter::create(const std::string& 
   const std::string ids = "PRAGMA application_id = " + std::to_string(kApplicationId) +
                           "; PRAGMA user_version = " + std::to_string(kSchemaVersion) + ";";
   if (!exec(w->db_, "BEGIN") || !exec(w->db_, ids.c_str()) || !exec(w->db_, kSchemaV1) ||
-      !exec(w->db_, kSchemaV2Step) || !exec(w->db_, kSchemaV3Step))
+      !exec(w->db_, kSchemaV2Step) || !exec(w->db_, kSchemaV3Step) || !exec(w->db_, kSchemaV4Step))
     return abandon("schema");
   {
     Stmt s(w->db_,
            "INSERT INTO session (id, operator, imu_model, imu_serial, source, software_version, created_utc, notes,"
            " table_read_delay_ms, table_read_delay_std_ms, board_delay_ms, board_delay_std_ms, latitude_deg,"
-           " pulse_equivalent_deg, counter_hz, counter_bits, test_plan_json, state)"
-           " VALUES (1, ?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, 'recording')");
+           " pulse_equivalent_deg, counter_hz, counter_bits, test_plan_json, state, gyro_sign_x, gyro_sign_y,"
+           " gyro_sign_z)"
+           " VALUES (1, ?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, 'recording', ?17, ?18,"
+           " ?19)");
     if (!s.ok()) return abandon("metadata");
     s.bind(1, info.operatorName);
     s.bind(2, info.imuModel);
@@ -612,6 +643,8 @@ Result<std::unique_ptr<SessionWriter>> SessionWriter::create(const std::string& 
     s.bind(14, info.bench.counterHz);
     s.bind(15, std::int64_t{info.bench.counterBits});
     s.bind(16, testPlanToJson(info.plan));
+    for (int a = 0; a < kAxisCount; ++a)
+      s.bind(17 + a, std::int64_t{info.bench.gyroSign[static_cast<std::size_t>(a)] < 0 ? -1 : 1});
     if (s.step() != SQLITE_DONE) return abandon("metadata");
   }
   if (!updateMetadataChecksum(w->db_)) return abandon("metadata checksum");
@@ -855,7 +888,7 @@ Result<std::unique_ptr<SessionReader>> SessionReader::open(const std::string& pa
     Stmt c(r->db_, "SELECT metadata_fnv1a FROM session WHERE id = 1");
     if (!c.ok() || c.step() != SQLITE_ROW) return r->readError("reading its metadata");
     if (sqlite3_column_type(c.get(), 0) != SQLITE_NULL) {
-      auto sum = metadataChecksum(r->db_);
+      auto sum = metadataChecksum(r->db_, r->schemaVersion_);
       if (!sum) return r->readError("reading its metadata");
       if (*sum != c.integer(0))
         return corruptData("session '" + path + "': its metadata (who, bench constants, plan, state) fails its "
@@ -874,7 +907,8 @@ Result<std::unique_ptr<SessionReader>> SessionReader::open(const std::string& pa
       cut("notes", notes) +
       ", table_read_delay_ms, table_read_delay_std_ms, board_delay_ms, board_delay_std_ms, latitude_deg,"
       " pulse_equivalent_deg, counter_hz, counter_bits, test_plan_json, state, " +
-      cut("incomplete_reason", field) + ", length(CAST(notes AS BLOB)) FROM session WHERE id = 1";
+      cut("incomplete_reason", field) + ", length(CAST(notes AS BLOB))" +
+      (r->schemaVersion_ >= 4 ? ", gyro_sign_x, gyro_sign_y, gyro_sign_z" : "") + " FROM session WHERE id = 1";
   Stmt s(r->db_, sql.c_str());
   if (!s.ok()) return r->readError("reading its metadata");
   const int rc = s.step();
@@ -901,6 +935,10 @@ Result<std::unique_ptr<SessionReader>> SessionReader::open(const std::string& pa
   info.bench.pulseEquivalentDeg = s.real(12);
   info.bench.counterHz = s.real(13);
   info.bench.counterBits = static_cast<int>(s.integer(14));
+  // Older schemas have no signs: +1, what their analyses used.
+  if (r->schemaVersion_ >= 4)
+    for (int a = 0; a < kAxisCount; ++a)
+      info.bench.gyroSign[static_cast<std::size_t>(a)] = s.integer(19 + a) < 0 ? -1 : 1;
   auto plan = testPlanFromJson(s.text(15));
   if (!plan)
     return corruptData("session '" + path + "': its stored test plan is unreadable (" + plan.status().message() +
@@ -961,10 +999,11 @@ bool SessionReader::hasStoredRecording() const {
   return s.ok() && s.step() == SQLITE_ROW && s.integer(0) > 0;
 }
 
-Result<Recording> SessionReader::recording() const {
+Result<Recording> SessionReader::recording(double pulseEquivalentDeg) const {
+  const double bench = pulseEquivalentDeg > 0.0 ? pulseEquivalentDeg : info_.bench.pulseEquivalentDeg;
   if (!hasStoredRecording()) {
     FOG_ASSIGN_OR_RETURN(auto raw, rawBytes());
-    auto rec = protocol::decodeRecording(raw);
+    auto rec = protocol::decodeRecording(raw, bench);
     if (!rec) return Status(rec.status().code(), "session '" + path_ + "': " + rec.status().message());
     return rec;
   }
@@ -1075,6 +1114,21 @@ Result<Recording> SessionReader::recording() const {
     rec.testPoints.push_back(std::move(tp));
   }
   if (rc != SQLITE_DONE) return readError("reading the decoded samples");
+  // Sessions stored before the builder had to resolve the pulse equivalent
+  // kept raw pulse counts (pulse_equivalent_deg 0) when the stream did not
+  // state it; they were analysed with the session's bench constant, which
+  // turns them into degrees here as the builder does now.
+  const bool anyImu = std::any_of(rec.testPoints.begin(), rec.testPoints.end(),
+                                  [](const TestPointData& tp) { return !tp.imu.empty(); });
+  if (anyImu && !(rec.pulseEquivalentDeg > 0.0)) {
+    if (!(std::isfinite(bench) && bench > 0.0))
+      return invalidArgument("session '" + path_ + "': the stream does not state its gyro pulse equivalent (degrees "
+                             "per pulse): give --pulse-equivalent-deg or set it in the bench constants");
+    rec.pulseEquivalentDeg = bench;
+    for (auto& tp : rec.testPoints)
+      for (auto& m : tp.imu)
+        for (double& v : m.incrementDeg) v *= bench;
+  }
   return rec;
 }
 
