@@ -187,16 +187,14 @@ int analyzeCommand(CliArguments& args) {
   const bool json = args.flag("json");
   // A raw stream states its pulse equivalent in its STATUS frames; there is
   // no session to fall back on, so only the command line can supply one.
-  BenchSettings noPulseEquivalent;
-  noPulseEquivalent.pulseEquivalentDeg = 0.0;
-  auto constants = readConstants(args, noPulseEquivalent);
+  auto constants = readConstants(args);
   if (!constants) return fail(constants.status(), 2);
   auto limit = readDelayLimit(args);
   if (!limit) return fail(limit.status(), 2);
   if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
   if (args.positionals().size() != 1) return fail(invalidArgument("analyze needs exactly one FILE"), 2);
   const std::string path = args.positionals()[0];
-  auto stream = session::readRawStreamFile(path);
+  auto stream = session::readRawStreamFile(path, constants->pulseEquivalentDeg);
   if (!stream) return fail(stream.status(), 2);
   analysis::ReportContext context;
   context.source = "raw stream " + toValidUtf8(path);  // a file name need not be UTF-8

@@ -41,16 +41,17 @@ int exitCodeFor(const Status& s) {
   return s.code() == StatusCode::kInsufficientData || s.code() == StatusCode::kNotConverged ? 1 : 2;
 }
 
-void storeConstants(const analysis::BenchConstants& c, BenchSettings& bench) {
+void storeConstants(const BenchConstants& c, BenchConstants& bench) {
   bench.tableReadDelayMs = c.tableReadDelayMs;
   bench.tableReadDelayStdMs = c.tableReadDelayStdMs;
   bench.boardDelayMs = c.boardDelayMs;
   bench.boardDelayStdMs = c.boardDelayStdMs;
   if (c.pulseEquivalentDeg > 0) bench.pulseEquivalentDeg = c.pulseEquivalentDeg;
+  bench.gyroSign = c.gyroSign;
 }
 
-Result<analysis::BenchConstants> readConstants(CliArguments& args, const BenchSettings& defaults) {
-  analysis::BenchConstants c = analysis::benchConstantsOf(defaults);
+Result<BenchConstants> readConstants(CliArguments& args, const BenchConstants& defaults) {
+  BenchConstants c = defaults;
   struct Field {
     const char* name;
     double* target;

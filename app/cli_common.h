@@ -37,12 +37,12 @@ Status checkOutputFile(const std::string& path, bool overwrite, const std::strin
 // overridable on the command line: --read-delay-ms, --read-delay-std-ms,
 // --board-delay-ms, --board-delay-std-ms, --pulse-equivalent-deg; and
 // --gyro-sign x=-1[,y=-1...] for a gyro axis mounted the other way round.
-Result<analysis::BenchConstants> readConstants(CliArguments& args, const BenchSettings& defaults = {});
+Result<BenchConstants> readConstants(CliArguments& args, const BenchConstants& defaults = {});
 // --gyro-sign's text ("x=-1,z=-1") into per-axis signs (the rest +1).
 Result<std::array<int, kAxisCount>> parseGyroSigns(const std::string& text);
 // --limit-ms: the IMU delay limit of the verdict (default 0.8 ms).
 Result<double> readDelayLimit(CliArguments& args);
 // Writes the constants back into the settings a session stores.
-void storeConstants(const analysis::BenchConstants& constants, BenchSettings& bench);
+void storeConstants(const BenchConstants& constants, BenchConstants& bench);
 
 }  // namespace fog::app

@@ -63,7 +63,7 @@ int diagnoseCommand(CliArguments& args) {
   Recording recording;
   SessionInfo info;
   bool haveInfo = false;
-  analysis::BenchConstants constants;
+  BenchConstants constants;
   if (session::isSqliteFile(path)) {
     auto reader = session::SessionReader::open(path);
     if (!reader) {
@@ -73,19 +73,18 @@ int diagnoseCommand(CliArguments& args) {
     auto c = readConstants(args, (*reader)->info().bench);
     if (!c) return fail(c.status(), 2);
     if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
-    auto rec = (*reader)->recording();  // stored samples (imports have no raw bytes) or the decoded raw stream
+    // Stored samples (imports have no raw bytes) or the decoded raw stream.
+    auto rec = (*reader)->recording(c->pulseEquivalentDeg);
     if (!rec) return fail(rec.status(), exitCodeFor(rec.status()));
     recording = std::move(*rec);
     info = (*reader)->info();
     haveInfo = true;
     constants = *c;
   } else {
-    BenchSettings noPulseEquivalent;
-    noPulseEquivalent.pulseEquivalentDeg = 0.0;
-    auto c = readConstants(args, noPulseEquivalent);
+    auto c = readConstants(args);  // a raw stream has no bench constants of its own
     if (!c) return fail(c.status(), 2);
     if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
-    auto stream = session::readRawStreamFile(path);
+    auto stream = session::readRawStreamFile(path, c->pulseEquivalentDeg);
     if (!stream) return fail(stream.status(), 2);
     recording = std::move(stream->recording);
     constants = *c;

@@ -52,7 +52,11 @@ int noiseCommand(CliArguments& args) {
   }
   const std::string path = args.positionals()[0];
   Recording recording;
-  BenchSettings bench;
+  BenchConstants bench;
+  // Degrees per pulse for a stream that does not state its own; a session
+  // falls back on its bench constant.
+  auto pulse = args.number("pulse-equivalent-deg", 0.0);
+  if (!pulse) return fail(pulse.status(), 2);
   if (session::isSqliteFile(path)) {
     auto reader = session::SessionReader::open(path);
     if (!reader) {
@@ -60,15 +64,14 @@ int noiseCommand(CliArguments& args) {
       return fail(reader.status(), 2);
     }
     bench = (*reader)->info().bench;
-    auto rec = (*reader)->recording();
+    auto rec = (*reader)->recording(*pulse);
     if (!rec) {
       (void)args.checkAllUsed();
       return fail(rec.status(), exitCodeFor(rec.status()));
     }
     recording = std::move(*rec);
   } else {
-    bench.pulseEquivalentDeg = 0.0;
-    auto stream = session::readRawStreamFile(path);
+    auto stream = session::readRawStreamFile(path, *pulse);
     if (!stream) {
       (void)args.checkAllUsed();
       return fail(stream.status(), 2);
@@ -76,12 +79,9 @@ int noiseCommand(CliArguments& args) {
     recording = std::move(stream->recording);
   }
   auto latitude = args.number("latitude-deg", bench.latitudeDeg);
-  auto pulse = args.number("pulse-equivalent-deg", bench.pulseEquivalentDeg);
   if (!latitude) return fail(latitude.status(), 2);
-  if (!pulse) return fail(pulse.status(), 2);
   if (!(std::abs(*latitude) <= 90.0)) return fail(invalidArgument("--latitude-deg must be within [-90, 90]"), 2);
   options.earth.latitudeDeg = *latitude;
-  options.pulseEquivalentDeg = *pulse;
   if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
 
   auto reports = noise::analyzeGyroNoise(recording, options);

@@ -57,12 +57,13 @@ Result<report::ReportInput> simulatedSession(const std::string& preset, double s
 
 // A session file (recorded or imported) or a saved raw sampling-board
 // stream, as `analyze` reads them. A session brings its own identity and
-// bench constants; a raw stream has neither.
-Result<report::ReportInput> fileSession(const std::string& path) {
+// bench constants; a raw stream has neither. pulseEquivalentDeg (> 0): for a
+// stream that does not state its own (--pulse-equivalent-deg).
+Result<report::ReportInput> fileSession(const std::string& path, double pulseEquivalentDeg) {
   report::ReportInput in;
   if (session::isSqliteFile(path)) {
     FOG_ASSIGN_OR_RETURN(auto reader, session::SessionReader::open(path));
-    FOG_ASSIGN_OR_RETURN(auto recording, reader->recording());
+    FOG_ASSIGN_OR_RETURN(auto recording, reader->recording(pulseEquivalentDeg));
     FOG_ASSIGN_OR_RETURN(auto bytes, reader->rawBytes());
     in.info = reader->info();
     in.info.source = "session " + path + (in.info.source.empty() ? "" : " (" + in.info.source + ")");
@@ -72,7 +73,7 @@ Result<report::ReportInput> fileSession(const std::string& path) {
     }
     // The newest intact stored result is the one reported, as stored.
     FOG_ASSIGN_OR_RETURN(auto stored, reader->results());
-    const auto records = acquisition::readStoredResults(stored, analysis::benchConstantsOf(in.info.bench));
+    const auto records = acquisition::readStoredResults(stored, in.info.bench);
     if (const auto* shown = acquisition::newestUsable(records)) {
       in.stored = *shown;
       std::size_t number = 0;
@@ -90,9 +91,8 @@ Result<report::ReportInput> fileSession(const std::string& path) {
     in.rawBytes = std::move(bytes);
     return in;
   }
-  FOG_ASSIGN_OR_RETURN(auto stream, session::readRawStreamFile(path));
+  FOG_ASSIGN_OR_RETURN(auto stream, session::readRawStreamFile(path, pulseEquivalentDeg));
   in.info.source = "raw stream " + path;
-  in.info.bench.pulseEquivalentDeg = 0.0;  // only the stream or the command line can tell
   in.recording = std::move(stream.recording);
   in.rawBytes = std::move(stream.bytes);
   return in;
@@ -162,7 +162,13 @@ int reportCommand(CliArguments& args) {
     (void)args.checkAllUsed();
     return fail(invalidArgument("report needs one SESSION file or --preset NAME"), 2);
   }
-  auto input = preset ? simulatedSession(*preset, *seed) : fileSession(files.front());
+  // Read here for the stream's decoding, and again with the other constants.
+  auto pulse = args.number("pulse-equivalent-deg", 0.0);
+  if (!pulse) {
+    (void)args.checkAllUsed();
+    return fail(pulse.status(), 2);
+  }
+  auto input = preset ? simulatedSession(*preset, *seed) : fileSession(files.front(), *pulse);
   if (!input) {
     (void)args.checkAllUsed();
     return fail(input.status(), 2);

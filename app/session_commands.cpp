@@ -63,7 +63,7 @@ Result<std::optional<SessionOutput>> readSessionOutput(CliArguments& args) {
 }
 
 SessionInfo simulatedSessionInfo(const SessionInfo& given, const TestPlan& plan, const model::SimConfig& config,
-                                 const analysis::BenchConstants& constants) {
+                                 const BenchConstants& constants) {
   SessionInfo info = given;
   info.softwareVersion = FOG_VERSION;
   info.createdUtc = session::utcNow();
@@ -90,7 +90,7 @@ int analyzeSessionCommand(CliArguments& args, const std::string& path) {
   if (!limit) return fail(limit.status(), 2);
   if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
   if (args.positionals().size() != 1) return fail(invalidArgument("analyze needs exactly one FILE"), 2);
-  auto recording = (*reader)->recording();
+  auto recording = (*reader)->recording(constants->pulseEquivalentDeg);
   if (!recording) return fail(recording.status(), exitCodeFor(recording.status()));
   analysis::ReportContext context;
   context.source = sessionSource(**reader, "session");
@@ -322,7 +322,7 @@ int exportCommand(CliArguments& args) {
   if (jsonPath)
     if (auto s = checkOutputFile(*jsonPath, overwrite, "--results-json"); !s.isOk()) return fail(s, 2);
 
-  auto recording = (*reader)->recording();
+  auto recording = (*reader)->recording(constants->pulseEquivalentDeg);
   if (!recording) return fail(recording.status(), 2);
   // The fits and residuals come from an analysis with the session's
   // constants (or those given); data that supports no delay is still

@@ -33,7 +33,7 @@ Result<std::optional<SessionOutput>> readSessionOutput(CliArguments& args);
 // line gave, plus the plan, the bench constants and the simulated chain's
 // latitude, pulse equivalent and counter.
 SessionInfo simulatedSessionInfo(const SessionInfo& given, const TestPlan& plan, const model::SimConfig& config,
-                                 const analysis::BenchConstants& constants);
+                                 const BenchConstants& constants);
 
 int analyzeSessionCommand(CliArguments& args, const std::string& path);  // analyze SESSION.fbs
 int sessionsCommand(CliArguments& args);                                  // sessions DIR

@@ -25,7 +25,7 @@ fog::Recording decoded(const fog::TestPlan& plan) {
 void BM_AnalyzeSlowSession(benchmark::State& state) {
   const fog::Recording rec = decoded(fog::TestPlan::paperSlow());
   for (auto _ : state) {
-    auto report = fog::analysis::analyzeRecording(rec, fog::analysis::BenchConstants{});
+    auto report = fog::analysis::analyzeRecording(rec, fog::BenchConstants{});
     benchmark::DoNotOptimize(report);
   }
   state.counters["table_samples"] = static_cast<double>(rec.testPoints[0].table.size());
@@ -36,7 +36,7 @@ BENCHMARK(BM_AnalyzeSlowSession)->Unit(benchmark::kMillisecond)->MinTime(3.0);
 void BM_AnalyzeFastSession(benchmark::State& state) {
   const fog::Recording rec = decoded(fog::TestPlan::paperFast());
   for (auto _ : state) {
-    auto report = fog::analysis::analyzeRecording(rec, fog::analysis::BenchConstants{});
+    auto report = fog::analysis::analyzeRecording(rec, fog::BenchConstants{});
     benchmark::DoNotOptimize(report);
   }
 }
@@ -46,15 +46,14 @@ BENCHMARK(BM_AnalyzeFastSession)->Unit(benchmark::kMillisecond)->MinTime(2.0);
 // inputs analyzeTestPoint gives it (some of them run concurrently there).
 struct SlowStages {
   fog::TestPointData data;
-  double scale = 0.0, w0 = 0.0;
+  double w0 = 0.0;
   fog::analysis::Channels ch;
   fog::analysis::SineFit tableLinear, table4, gyroStart, gyro4;
   SlowStages() {
     const fog::Recording rec = decoded(fog::TestPlan::paperSlow());
     data = rec.testPoints[0];
-    scale = rec.pulseEquivalentDeg;
     w0 = fog::kTwoPi * data.nominalFrequencyHz;
-    ch = *fog::analysis::makeChannels(data, scale);
+    ch = *fog::analysis::makeChannels(data, 1.0);  // in degrees, gyro sign +1
     tableLinear = fog::analysis::fitTableLinear(ch.table, w0, ch.referenceS);
     ch.table.noiseDeg = tableLinear.residualRmsDeg;
     table4 = *fog::analysis::fitTableNonlinear(ch.table, tableLinear);
@@ -72,7 +71,7 @@ const SlowStages& slowStages() {
 
 void BM_StageChannels(benchmark::State& state) {
   const auto& s = slowStages();
-  for (auto _ : state) benchmark::DoNotOptimize(fog::analysis::makeChannels(s.data, s.scale));
+  for (auto _ : state) benchmark::DoNotOptimize(fog::analysis::makeChannels(s.data, 1.0));
 }
 BENCHMARK(BM_StageChannels)->Unit(benchmark::kMillisecond);
 

@@ -101,7 +101,7 @@ void BM_SessionOpenAnalyse30Min(benchmark::State& state) {
   for (auto _ : state) {
     auto r = fog::session::SessionReader::open(path);
     auto rec = (*r)->recording();
-    auto report = fog::analysis::analyzeRecording(*rec, fog::analysis::BenchConstants{});
+    auto report = fog::analysis::analyzeRecording(*rec, fog::BenchConstants{});
     if (!report) state.SkipWithError(report.status().message().c_str());
     benchmark::DoNotOptimize(report);
   }

@@ -98,7 +98,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     tp.imu.push_back(s);
   }
 
-  fog::analysis::BenchConstants constants;
+  fog::BenchConstants constants;
   constants.pulseEquivalentDeg = 5e-5;
   for (std::size_t at = 8; at + 11 <= size; at += 11) {
     const std::uint8_t field = data[at] % 11;

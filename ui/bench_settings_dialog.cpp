@@ -25,11 +25,11 @@ QDoubleSpinBox* spin(double min, double max, int decimals, const QString& suffix
 
 }  // namespace
 
-BenchSettings loadBenchSettings() {
+BenchConstants loadBenchConstants() {
   QSettings q;
   q.beginGroup("bench");
-  const BenchSettings d;
-  BenchSettings s;
+  const BenchConstants d;
+  BenchConstants s;
   s.tableReadDelayMs = q.value("table_read_delay_ms", d.tableReadDelayMs).toDouble();
   s.tableReadDelayStdMs = q.value("table_read_delay_std_ms", d.tableReadDelayStdMs).toDouble();
   s.boardDelayMs = q.value("board_delay_ms", d.boardDelayMs).toDouble();
@@ -41,7 +41,7 @@ BenchSettings loadBenchSettings() {
   return s;
 }
 
-void saveBenchSettings(const BenchSettings& s) {
+void saveBenchConstants(const BenchConstants& s) {
   QSettings q;
   q.beginGroup("bench");
   q.setValue("table_read_delay_ms", s.tableReadDelayMs);
@@ -74,7 +74,7 @@ void saveAnalysisChoices(const AnalysisChoices& c) {
   q.setValue("imu_delay_limit_ms", c.imuDelayLimitMs);
 }
 
-BenchSettingsDialog::BenchSettingsDialog(const BenchSettings& s, const AnalysisChoices& choices, QWidget* parent)
+BenchSettingsDialog::BenchSettingsDialog(const BenchConstants& s, const AnalysisChoices& choices, QWidget* parent)
     : QDialog(parent) {
   setWindowTitle(tr("Bench constants"));
   setObjectName("benchSettingsDialog");
@@ -124,7 +124,7 @@ BenchSettingsDialog::BenchSettingsDialog(const BenchSettings& s, const AnalysisC
   connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
   connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
   connect(buttons->button(QDialogButtonBox::RestoreDefaults), &QPushButton::clicked, this, [this] {
-    const BenchSettings d;
+    const BenchConstants d;
     readDelay_->setValue(d.tableReadDelayMs);
     readDelayStd_->setValue(d.tableReadDelayStdMs);
     boardDelay_->setValue(d.boardDelayMs);
@@ -142,8 +142,8 @@ BenchSettingsDialog::BenchSettingsDialog(const BenchSettings& s, const AnalysisC
   layout->addWidget(buttons);
 }
 
-BenchSettings BenchSettingsDialog::settings() const {
-  BenchSettings s;
+BenchConstants BenchSettingsDialog::settings() const {
+  BenchConstants s;
   s.tableReadDelayMs = readDelay_->value();
   s.tableReadDelayStdMs = readDelayStd_->value();
   s.boardDelayMs = boardDelay_->value();

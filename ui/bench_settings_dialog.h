@@ -20,8 +20,8 @@ class QLabel;
 namespace fog::ui {
 
 // The remembered constants (defaults: the paper's) and storing new ones.
-BenchSettings loadBenchSettings();
-void saveBenchSettings(const BenchSettings& settings);
+BenchConstants loadBenchConstants();
+void saveBenchConstants(const BenchConstants& settings);
 
 // What the analysis is told besides the bench constants (the CLI's
 // --gyro-sign and --limit-ms). Defaults: every gyro axis +1, 0.8 ms.
@@ -36,8 +36,8 @@ class BenchSettingsDialog : public QDialog {
   Q_OBJECT
 
  public:
-  BenchSettingsDialog(const BenchSettings& settings, const AnalysisChoices& choices, QWidget* parent = nullptr);
-  BenchSettings settings() const;
+  BenchSettingsDialog(const BenchConstants& settings, const AnalysisChoices& choices, QWidget* parent = nullptr);
+  BenchConstants settings() const;
   AnalysisChoices analysisChoices() const;
 
  private:

@@ -282,7 +282,7 @@ void ConfigureView::setIdentity(const QString& operatorName, const QString& imuM
   imuSerialEdit_->setText(imuSerial);
 }
 
-void ConfigureView::showBenchSettings(const BenchSettings& s) {
+void ConfigureView::showBenchConstants(const BenchConstants& s) {
   // Line breaks of its own, no word wrap: a wrapping label would let the
   // column be squeezed under its real height on a small screen.
   constantsLabel_->setText(tr("table read delay %1 ms · board delay %2 ms\nlatitude %3° · pulse equivalent %4°\n"

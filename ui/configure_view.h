@@ -71,7 +71,7 @@ class ConfigureView : public QWidget {
   QString notes() const;
   void setIdentity(const QString& operatorName, const QString& imuModel, const QString& imuSerial);
 
-  void showBenchSettings(const BenchSettings& settings);
+  void showBenchConstants(const BenchConstants& settings);
   // Rich text under the source and session: why a run cannot start, or how
   // the last one ended.
   void setMessage(const QString& html);

@@ -215,6 +215,8 @@ const char* const kTemplates[] = {
     QT_TRANSLATE_NOOP("core_text", "'%1' is not a fogbench session"),
     QT_TRANSLATE_NOOP("core_text", "'%1' is a folder, not a fogbench session file"),
     QT_TRANSLATE_NOOP("core_text", "cannot open session '%1': no such file; check the path"),
+    QT_TRANSLATE_NOOP("core_text", "the stream does not state its gyro pulse equivalent (degrees per pulse): give --pulse-equivalent-deg or set it in the bench constants"),
+    QT_TRANSLATE_NOOP("core_text", "session '%1': the stream does not state its gyro pulse equivalent (degrees per pulse): give --pulse-equivalent-deg or set it in the bench constants"),
     QT_TRANSLATE_NOOP("core_text", "'%1' is truncated: it holds %2 of its %3 bytes; copy it again from the original or restore a backup"),
     QT_TRANSLATE_NOOP("core_text", "'%1' is truncated: it holds %2 of its %3 bytes; copy it again from the original or restore a backup (its -wal does not hold the missing pages)"),
     QT_TRANSLATE_NOOP("core_text", "'%1' is an SQLite database but not a fogbench session (application_id %2)"),

@@ -224,7 +224,8 @@ void LiveView::setFollowing(bool following) {
   }
 }
 
-void LiveView::startRun(const TestPlan& plan, double speed) {
+void LiveView::startRun(const TestPlan& plan, double speed, double benchPulseEquivalentDeg) {
+  traces_.setBenchPulseEquivalent(benchPulseEquivalentDeg);
   traces_.clear();
   plan_ = plan;
   speed_ = speed;

@@ -36,7 +36,8 @@ class LiveView : public QWidget {
   explicit LiveView(QWidget* parent = nullptr);
 
   // A new run of `plan` (empty plan: unknown, e.g. a serial board's own).
-  void startRun(const TestPlan& plan, double speed);
+  // benchPulseEquivalentDeg: acquisition::LiveTraces::setBenchPulseEquivalent.
+  void startRun(const TestPlan& plan, double speed, double benchPulseEquivalentDeg = 0.0);
   void addFrames(std::span<const protocol::DecodedFrame> frames);
   // Redraws with everything added since the last call.
   void refresh();

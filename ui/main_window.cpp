@@ -71,13 +71,13 @@ QString durationText(double seconds) {
 
 // The simulated chain follows the bench's constants, so that the simulator
 // behaves like the bench the operator described.
-model::SimConfig simConfigOf(const BenchSettings& b, int seed) {
+model::SimConfig simConfigOf(const BenchConstants& b, int seed) {
   model::SimConfig c;
   c.seed = static_cast<std::uint64_t>(seed);
   c.encoder.readDelayS = b.tableReadDelayMs * 1e-3;
   c.imuBoard.processingS = b.boardDelayMs * 1e-3 - c.imuBoard.serialS();
   c.earth.latitudeDeg = b.latitudeDeg;
-  c.fog.pulseEquivalentDeg = b.pulseEquivalentDeg;
+  if (b.pulseEquivalentDeg > 0.0) c.fog.pulseEquivalentDeg = b.pulseEquivalentDeg;  // else the simulator's own
   c.samplingBoard.counterHz = b.counterHz;
   c.samplingBoard.counterBits = b.counterBits;
   return c;
@@ -172,7 +172,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   setCentralWidget(tabs_);
   buildToolBar();
   buildMenus();
-  setBenchSettings(loadBenchSettings());
+  setBenchConstants(loadBenchConstants());
   analysis_ = loadAnalysisChoices();
 
   framesLabel_ = new QLabel();
@@ -210,7 +210,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   connect(configureView_, &ConfigureView::sourceChanged, this, [this] { setRunning(runner_.isRunning()); });
   connect(configureView_, &ConfigureView::runnabilityChanged, this, &MainWindow::updateRunButton);
   connect(configureView_, &ConfigureView::folderChosen, this, [this](const QString& folder) { setSessionFolder(folder); });
-  connect(configureView_, &ConfigureView::editBenchSettingsRequested, this, &MainWindow::editBenchSettings);
+  connect(configureView_, &ConfigureView::editBenchSettingsRequested, this, &MainWindow::editBenchConstants);
   setRunning(false);
   tell(tr("Configure a plan and press Run."));
 }
@@ -222,11 +222,11 @@ MainWindow::~MainWindow() {
   diagnosisFuture_.waitForFinished();
 }
 
-void MainWindow::editBenchSettings() {
+void MainWindow::editBenchConstants() {
   BenchSettingsDialog dialog(bench_, analysis_, this);
   if (dialog.exec() == QDialog::Accepted) {
-    setBenchSettings(dialog.settings());
-    saveBenchSettings(bench_);
+    setBenchConstants(dialog.settings());
+    saveBenchConstants(bench_);
     analysis_ = dialog.analysisChoices();
     saveAnalysisChoices(analysis_);
   }
@@ -327,7 +327,7 @@ void MainWindow::buildMenus() {
   }
 
   auto* tools = menuBar()->addMenu(tr("&Tools"));
-  auto* constants = tools->addAction(tr("&Bench constants…"), this, &MainWindow::editBenchSettings);
+  auto* constants = tools->addAction(tr("&Bench constants…"), this, &MainWindow::editBenchConstants);
   constants->setObjectName("benchConstantsAction");
   auto* languages = tools->addMenu(tr("&Language"));
   auto* group = new QActionGroup(languages);
@@ -575,9 +575,9 @@ void MainWindow::setSessionFolder(const QString& folder) {
 
 QString MainWindow::sessionFolder() const { return configureView_->sessionFolder(); }
 
-void MainWindow::setBenchSettings(const BenchSettings& s) {
+void MainWindow::setBenchConstants(const BenchConstants& s) {
   bench_ = s;
-  configureView_->showBenchSettings(s);
+  configureView_->showBenchConstants(s);
 }
 
 const RunOutcome* MainWindow::lastOutcome() const { return shown_.get(); }
@@ -628,8 +628,10 @@ Result<RunRequest> MainWindow::buildRunRequest() const {
   const SourceKind kind = sourceKind();
   RunRequest request;
   request.options.info = sessionInfo();
-  request.options.constants = analysis::benchConstantsOf(bench_);
-  request.options.constants.gyroSign = analysis_.gyroSign;
+  // The gyro signs are chosen with the analysis settings and stored with the
+  // session's bench constants, so that the session reads with them later.
+  request.options.info.bench.gyroSign = analysis_.gyroSign;
+  request.options.constants = request.options.info.bench;
   request.options.reportContext.imuDelayLimitMs = analysis_.imuDelayLimitMs;
   TestPlan plan;
   if (kind == SourceKind::kSimulator) {
@@ -682,7 +684,7 @@ Result<RunRequest> MainWindow::buildRunRequest() const {
     request.options.info = original;
     request.options.info.createdUtc = session::utcNow();
     request.options.info.softwareVersion = FOG_VERSION;
-    request.options.constants = analysis::benchConstantsOf(original.bench);
+    request.options.constants = original.bench;
     auto source = std::make_shared<acquisition::ReplaySource>(std::move(*bytes), speed,
                                                               "session " + QFileInfo(path).fileName().toStdString());
     request.options.info.source = source->description();
@@ -742,7 +744,8 @@ void MainWindow::startRun() {
     liveView_->setTableDriver(sourceKind() == SourceKind::kSimulator ? tr("simulator (simulated turntable)") : QString());
   liveView_->setTableSnapshot(table_ ? std::optional<TableSnapshot>(table_->snapshot()) : std::nullopt);
   // A serial board runs at its own (real-time) pace; a driven table at the pace chosen.
-  liveView_->startRun(plan, request.openSource && !table_ ? 1.0 : speed);
+  liveView_->startRun(plan, request.openSource && !table_ ? 1.0 : speed,
+                      request.options.constants.pulseEquivalentDeg);
   showHealth({}, 0);
   runClock_.start();
   if (!runner_.start(std::move(request))) {
@@ -883,7 +886,7 @@ void MainWindow::loadSession(const QString& path, bool reanalyse, std::int64_t r
                              std::function<void(std::shared_ptr<const RunOutcome>)> done) {
   const QString name = QFileInfo(path).fileName();
   tell(reanalyse ? tr("Re-analysing %1 …").arg(name) : tr("Opening %1 …").arg(name));
-  const BenchSettings bench = bench_;
+  const BenchConstants bench = bench_;
   const AnalysisChoices choices = analysis_;
   // QFuture needs a default-constructible value: the outcome, or why not.
   struct Loaded {
@@ -905,16 +908,16 @@ void MainWindow::loadSession(const QString& path, bool reanalyse, std::int64_t r
         outcome->complete = (*reader)->complete();
         outcome->incompleteReason = (*reader)->incompleteReason();
         outcome->recording = std::move(*recording);
-        const auto sessionConstants = analysis::benchConstantsOf(outcome->info.bench);
+        const auto sessionConstants = outcome->info.bench;
         outcome->results = resultRecords(*stored, sessionConstants);
         // A re-analysis uses the bench's constants, gyro signs and limit, and
         // stores them with its result. Review re-analyses with exactly the
         // chosen stored result's settings (the newest unless one is asked
         // for), only to draw its plots and fits: the verdict shown is the
         // stored one. With none stored: the session's own constants.
-        analysis::BenchConstants constants = sessionConstants;
+        BenchConstants constants = sessionConstants;
         if (reanalyse) {
-          constants = analysis::benchConstantsOf(bench);
+          constants = bench;
           constants.gyroSign = choices.gyroSign;
         } else {
           const ResultRecord* chosen = newestUsable(outcome->results);
@@ -954,6 +957,7 @@ void MainWindow::loadSession(const QString& path, bool reanalyse, std::int64_t r
         outcome->info.bench.boardDelayMs = constants.boardDelayMs;
         outcome->info.bench.boardDelayStdMs = constants.boardDelayStdMs;
         if (constants.pulseEquivalentDeg > 0.0) outcome->info.bench.pulseEquivalentDeg = constants.pulseEquivalentDeg;
+        outcome->info.bench.gyroSign = constants.gyroSign;
         if (const ResultRecord* shown = outcome->shownResult(); shown && outcome->report)
           outcome->differences = acquisition::differencesFromRecord(*shown, *outcome->report);
         completeOutcome(*outcome, source);
@@ -1144,7 +1148,6 @@ void MainWindow::analyseNoise(std::shared_ptr<const RunOutcome> outcome) {
       this, [outcome]() -> Done {
         noise::GyroNoiseOptions options;
         options.earth.latitudeDeg = outcome->info.bench.latitudeDeg;
-        options.pulseEquivalentDeg = outcome->info.bench.pulseEquivalentDeg;
         auto reports = noise::analyzeGyroNoise(outcome->recording, options);
         if (!reports) return {{}, reports.status()};
         return {std::move(*reports), Status::ok()};

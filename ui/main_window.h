@@ -110,8 +110,8 @@ class MainWindow : public QMainWindow {
   // The file the last export wrote (empty before one).
   QString lastExport() const { return lastExport_; }
   QString sessionFolder() const;
-  void setBenchSettings(const BenchSettings& settings);
-  const BenchSettings& benchSettings() const { return bench_; }
+  void setBenchConstants(const BenchConstants& settings);
+  const BenchConstants& benchConstants() const { return bench_; }
   // The gyro signs and acceptance limit every run and re-analysis uses and
   // stores with its result (the bench-constants dialog).
   const AnalysisChoices& analysisChoices() const { return analysis_; }
@@ -209,7 +209,7 @@ class MainWindow : public QMainWindow {
   // constants, plan, where it is recorded), or why it cannot run.
   Result<RunRequest> buildRunRequest() const;
   SessionInfo sessionInfo() const;
-  void editBenchSettings();
+  void editBenchConstants();
 
   // Whether the run drives the turntable (a serial board with a remote or
   // manual table driver chosen).
@@ -226,7 +226,7 @@ class MainWindow : public QMainWindow {
   QFuture<void> diagnosisFuture_;
   QTimer liveTimer_;
   QElapsedTimer runClock_;
-  BenchSettings bench_;
+  BenchConstants bench_;
   AnalysisChoices analysis_;
   std::shared_ptr<const RunOutcome> shown_;
   QString lastMessage_;

@@ -69,7 +69,7 @@ QString pointLabel(const analysis::TestPointResult& p) {
 }
 
 // A result's constants in a few words.
-QString constantsText(const analysis::BenchConstants& c) {
+QString constantsText(const BenchConstants& c) {
   return QObject::tr("table read %1 ms, board %2 ms").arg(num(c.tableReadDelayMs, 4), num(c.boardDelayMs, 4));
 }
 

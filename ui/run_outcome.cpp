@@ -25,7 +25,7 @@ std::string limitText(double v) {
 }  // namespace
 
 std::vector<ResultRecord> resultRecords(const std::vector<session::StoredResult>& stored,
-                                        const analysis::BenchConstants& fallback) {
+                                        const BenchConstants& fallback) {
   return acquisition::readStoredResults(stored, fallback);
 }
 
@@ -49,13 +49,12 @@ void completeOutcome(RunOutcome& outcome, const std::string& source) {
     return;
   }
   const auto& report = *outcome.report;
-  const double scale = outcome.recording.pulseEquivalentDeg > 0.0 ? 1.0 : report.constants.pulseEquivalentDeg;
   for (const auto& point : report.points) {
     const auto& points = outcome.recording.testPoints;
     const auto data = std::find_if(points.begin(), points.end(),
                                    [&](const TestPointData& d) { return d.index == point.index; });
     Result<TestPointTraces> traces = data == points.end() ? Result<TestPointTraces>(insufficientData("no data"))
-                                                          : makeTestPointTraces(*data, point, scale);
+                                                          : makeTestPointTraces(*data, point);
     if (traces) {
       outcome.traces.push_back(std::move(*traces));
     } else {

@@ -25,7 +25,7 @@ using ResultRecord = acquisition::StoredResultRecord;
 // settings do not state (older files) is taken from `fallback` (the
 // session's own bench constants).
 std::vector<ResultRecord> resultRecords(const std::vector<session::StoredResult>& stored,
-                                        const analysis::BenchConstants& fallback);
+                                        const BenchConstants& fallback);
 using acquisition::newestUsable;
 
 struct RunOutcome {

@@ -34,7 +34,7 @@ void WindowHost::changeLanguage(const QString& language) {
   // constants, the simulator's pace and seed.
   const TestPlan plan = old->planEditor()->plan();
   const QString folder = old->sessionFolder();
-  const BenchSettings bench = old->benchSettings();
+  const BenchConstants bench = old->benchConstants();
   const double pace = old->configureView()->pace();
   const int seed = old->configureView()->seed();
   delete old;
@@ -45,7 +45,7 @@ void WindowHost::changeLanguage(const QString& language) {
   window->setRemembering(false);
   window->planEditor()->setPlan(plan);
   window->setSessionFolder(folder);
-  window->setBenchSettings(bench);
+  window->setBenchConstants(bench);
   window->configureView()->setPace(pace);
   window->configureView()->setSeed(seed);
   window->setRemembering(true);

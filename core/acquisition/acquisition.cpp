@@ -168,16 +168,24 @@ Result<AcquisitionResult> acquire(ByteSource& source, const AcquisitionOptions& 
   deliver(Clock::now());
 
   const bool anyFrames = builder.framesAdded() > 0;
-  result.recording = builder.finish(decoder.health());
-  if (options.segment) result.recording = options.segment(result.recording);
-  result.recordingStatus = usability(anyFrames, result.recording, result.bytesReceived);
+  auto built = builder.finish(decoder.health(), options.constants.pulseEquivalentDeg);
+  // A stream whose pulses cannot be turned into degrees has no recording to
+  // store: its raw bytes are kept, and reading the session says why.
+  const bool builtOk = built.isOk();
+  if (builtOk) {
+    result.recording = std::move(*built);
+    if (options.segment) result.recording = options.segment(result.recording);
+    result.recordingStatus = usability(anyFrames, result.recording, result.bytesReceived);
+  } else {
+    result.recordingStatus = built.status();
+  }
   if (result.recordingStatus.isOk()) result.report = analysis::analyzeRecording(result.recording, options.constants);
   else result.report = result.recordingStatus;
 
   if (writer) {
     result.sessionPath = options.sessionPath;
     Status written = sessionFailure;
-    if (written.isOk() && anyFrames) written = writer->storeRecording(result.recording);
+    if (written.isOk() && anyFrames && builtOk) written = writer->storeRecording(result.recording);
     if (written.isOk()) written = writer->finish(result.complete, result.incompleteReason);
     if (!written.isOk()) {
       // A full disk at the end: the same as during the run.

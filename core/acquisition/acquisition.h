@@ -52,7 +52,9 @@ namespace fog::acquisition {
 struct AcquisitionOptions {
   std::string sessionPath;  // empty: do not record
   SessionInfo info;         // stored in the session (plan, bench constants, who, source)
-  analysis::BenchConstants constants;
+  // What the analysis uses; its pulse equivalent converts a stream that
+  // does not state its own (protocol::RecordingBuilder::finish).
+  BenchConstants constants;
   analysis::ReportContext reportContext;  // source line and truth for the stored report
   std::chrono::milliseconds readTimeout{20};
   std::chrono::milliseconds batchInterval{33};  // ~30 batches per second

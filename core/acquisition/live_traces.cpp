@@ -9,7 +9,11 @@ namespace fog::acquisition {
 
 LiveTraces::LiveTraces(double windowS) : windowS_(windowS > 0.0 ? windowS : 20.0) {}
 
-void LiveTraces::clear() { *this = LiveTraces(windowS_); }
+void LiveTraces::clear() {
+  const double bench = benchPulseEquivalentDeg_;
+  *this = LiveTraces(windowS_);
+  benchPulseEquivalentDeg_ = bench;
+}
 
 void LiveTraces::startTestPoint(int index, Axis axis, double frequencyHz) {
   testPoint_ = index;
@@ -61,9 +65,8 @@ void LiveTraces::add(std::span<const protocol::DecodedFrame> frames) {
     } else if (const auto* t = std::get_if<protocol::TablePayload>(&f.frame.payload)) {
       table_.push_back({streamTimeS_, t->angleMicroDeg[static_cast<std::size_t>(axis_)] * 1e-6});
     } else if (const auto* g = std::get_if<protocol::ImuPayload>(&f.frame.payload)) {
-      // Raw pulses until the pulse equivalent is known: the shape is right,
-      // only the scale is not.
-      const double scale = pulseEquivalentDeg_ > 0.0 ? pulseEquivalentDeg_ : 1.0;
+      const double scale = pulseEquivalentDeg_ > 0.0 ? pulseEquivalentDeg_ : benchPulseEquivalentDeg_;
+      if (!(std::isfinite(scale) && scale > 0.0)) continue;
       gyroAngleDeg_ += g->pulses[static_cast<std::size_t>(axis_)] * scale;
       gyro_.push_back({streamTimeS_, gyroAngleDeg_});
       const Eigen::Vector4d b = basis(streamTimeS_);

@@ -32,6 +32,12 @@ class LiveTraces {
   // windowS: how much history the plots keep (board seconds).
   explicit LiveTraces(double windowS = 20.0);
 
+  // The bench's pulse equivalent (degrees per pulse), for a stream that does
+  // not state its own: the rule of protocol::RecordingBuilder. While neither
+  // is known the gyro is not drawn (the recording would refuse it too).
+  // Kept by clear().
+  void setBenchPulseEquivalent(double degPerPulse) { benchPulseEquivalentDeg_ = degPerPulse; }
+
   void add(std::span<const protocol::DecodedFrame> frames);
   void clear();
   // Where the run stands as the host knows it (a table-driven run, whose
@@ -75,7 +81,8 @@ class LiveTraces {
   bool haveFirst_ = false;
   std::int64_t firstTicks_ = 0;
   double counterHz_ = 10e6;
-  double pulseEquivalentDeg_ = 0.0;
+  double pulseEquivalentDeg_ = 0.0;       // the stream's latest statement
+  double benchPulseEquivalentDeg_ = 0.0;  // 0 = not set
   double streamTimeS_ = 0.0;
   std::uint64_t frames_ = 0;
 

@@ -43,7 +43,7 @@ const StoredPointVerdict* StoredResultRecord::point(int index) const {
   return nullptr;
 }
 
-StoredResultRecord readStoredResult(const session::StoredResult& stored, const analysis::BenchConstants& fallback) {
+StoredResultRecord readStoredResult(const session::StoredResult& stored, const BenchConstants& fallback) {
   StoredResultRecord r;
   r.id = stored.id;
   r.createdUtc = stored.createdUtc;
@@ -130,7 +130,7 @@ StoredResultRecord readStoredResult(const session::StoredResult& stored, const a
 }
 
 std::vector<StoredResultRecord> readStoredResults(const std::vector<session::StoredResult>& stored,
-                                                  const analysis::BenchConstants& fallback) {
+                                                  const BenchConstants& fallback) {
   std::vector<StoredResultRecord> out;
   out.reserve(stored.size());
   for (const auto& s : stored) out.push_back(readStoredResult(s, fallback));
@@ -173,7 +173,7 @@ std::vector<std::string> differencesFromRecord(const StoredResultRecord& record,
   return out;
 }
 
-std::string analysisSettingsJson(const analysis::BenchConstants& c, double imuDelayLimitMs,
+std::string analysisSettingsJson(const BenchConstants& c, double imuDelayLimitMs,
                                  const std::string& producedBy, const ImportSettings& imported) {
   json doc = {{"table_read_delay_ms", c.tableReadDelayMs},
               {"table_read_delay_std_ms", c.tableReadDelayStdMs},

@@ -44,7 +44,7 @@ struct StoredResultRecord {
   // then `fallback`).
   std::string softwareVersion;  // "" when not stated
   std::string analysedBy;       // "acquisition", "fogbench GUI", "fogbench-cli analyze", ...
-  analysis::BenchConstants constants;
+  BenchConstants constants;
   // The signs come from the settings, or, for a row stored before they were
   // kept there, from its report's per-point `gyro_sign` (the swing axes');
   // an axis neither states is +1. False: nothing stated any sign.
@@ -73,10 +73,10 @@ struct StoredResultRecord {
 // Reads one stored result. Constants the row does not state come from
 // `fallback` (the session's own bench constants). Never fails: a row that
 // cannot be read is returned with usable = false and the reason.
-StoredResultRecord readStoredResult(const session::StoredResult& stored, const analysis::BenchConstants& fallback);
+StoredResultRecord readStoredResult(const session::StoredResult& stored, const BenchConstants& fallback);
 
 std::vector<StoredResultRecord> readStoredResults(const std::vector<session::StoredResult>& stored,
-                                                  const analysis::BenchConstants& fallback);
+                                                  const BenchConstants& fallback);
 
 // The newest usable record, or null.
 const StoredResultRecord* newestUsable(const std::vector<StoredResultRecord>& records);
@@ -91,7 +91,7 @@ std::vector<std::string> differencesFromRecord(const StoredResultRecord& record,
 // the bench constants with the gyro signs, the acceptance limit, the
 // software version, what produced it and, for an imported session, what the
 // import applied (its rate convention and swing windows: `import`).
-std::string analysisSettingsJson(const analysis::BenchConstants& constants, double imuDelayLimitMs,
+std::string analysisSettingsJson(const BenchConstants& constants, double imuDelayLimitMs,
                                  const std::string& producedBy, const ImportSettings& imported = {});
 
 }  // namespace fog::acquisition

@@ -92,8 +92,9 @@ struct Channels {
 
 // Builds the channels for the test point's swing axis. Fails with a reason
 // when the data cannot support a delay (too few samples, no gyro scale).
-// incrementScale multiplies the recorded increments (1 when they are already
-// in degrees; the pulse equivalent when the stream carried raw pulses).
+// incrementScale multiplies the recorded increments (in degrees): the
+// stated gyro sign of the axis (+1, or -1 for one mounted the other way
+// round: TestPointResult::gyroSign).
 Result<Channels> makeChannels(const TestPointData& data, double incrementScale);
 
 // What every noise estimate below starts from, taken from residuals of

@@ -17,16 +17,6 @@
 
 namespace fog::analysis {
 
-BenchConstants benchConstantsOf(const BenchSettings& bench) {
-  BenchConstants c;
-  c.tableReadDelayMs = bench.tableReadDelayMs;
-  c.tableReadDelayStdMs = bench.tableReadDelayStdMs;
-  c.boardDelayMs = bench.boardDelayMs;
-  c.boardDelayStdMs = bench.boardDelayStdMs;
-  c.pulseEquivalentDeg = bench.pulseEquivalentDeg;
-  return c;
-}
-
 namespace {
 
 std::string fmt(double v, int precision = 4) {
@@ -373,14 +363,12 @@ namespace {
 // stream. The decoder and the importer give no other, but a session's stored
 // samples may have been crafted, and a time out of order turned a bin index
 // of the frequency estimate into an overflowed cast (fog_fuzz_analysis).
-Status checkSamples(const TestPointData& data, double incrementScale) {
+Status checkSamples(const TestPointData& data) {
   // The planned frequency starts the fits (beside the frequency check): one
   // beyond any swing would start them far from the data.
   if (!std::isfinite(data.nominalFrequencyHz) || data.nominalFrequencyHz < 0.0 || data.nominalFrequencyHz > 1000.0)
     return invalidArgument("the planned swing frequency (" + fmt(data.nominalFrequencyHz, 6) +
                            " Hz) is not within 0 .. 1000 Hz; check the plan or the metadata");
-  if (!std::isfinite(incrementScale) || incrementScale == 0.0)
-    return invalidArgument("the gyro pulse equivalent (" + fmt(incrementScale, 6) + " deg) is not a usable number");
   countPass(SampleStream::kTable);
   countPass(SampleStream::kGyro);
   for (std::size_t i = 0; i < data.table.size(); ++i) {
@@ -407,7 +395,7 @@ Status checkSamples(const TestPointData& data, double incrementScale) {
       return corruptData("gyro sample " + std::to_string(i + 1) + ": its time (" + fmt(s.timeS, 6) +
                          " s) is not finite or not after the previous one; the recording is damaged");
     for (double d : s.incrementDeg)
-      if (!std::isfinite(d) || !std::isfinite(d * incrementScale))
+      if (!std::isfinite(d))
         return corruptData("gyro sample " + std::to_string(i + 1) +
                            ": an increment is not finite; the recording is damaged");
   }
@@ -422,11 +410,11 @@ namespace {
 // left in PointWork; those that return a Status refuse the point with it.
 
 // The channels, the samples' own checks and what is missing.
-Status prepare(PointWork& work, double incrementScale) {
+Status prepare(PointWork& work) {
   const TestPointData& data = work.data;
   const int sign = work.constants.gyroSign[static_cast<std::size_t>(data.axis)] < 0 ? -1 : 1;
-  FOG_ASSIGN_OR_RETURN(work.ch, makeChannels(data, incrementScale * sign));  // refuses too few samples
-  FOG_RETURN_IF_ERROR(checkSamples(data, incrementScale));
+  FOG_ASSIGN_OR_RETURN(work.ch, makeChannels(data, sign));  // refuses too few samples
+  FOG_RETURN_IF_ERROR(checkSamples(data));
   Channels& ch = work.ch;
   TestPointResult& r = work.r;
   r.index = data.index;
@@ -762,10 +750,9 @@ Result<TestPointResult> fitAndCheck(PointWork& work) {
 
 }  // namespace
 
-Result<TestPointResult> analyzeTestPoint(const TestPointData& data, double incrementScale,
-                                         const BenchConstants& constants) {
+Result<TestPointResult> analyzeTestPoint(const TestPointData& data, const BenchConstants& constants) {
   PointWork work(data, constants);
-  FOG_RETURN_IF_ERROR(prepare(work, incrementScale));
+  FOG_RETURN_IF_ERROR(prepare(work));
   const double planned = data.nominalFrequencyHz;
   if (!(planned > 0.0 && work.r.durationS * planned >= 2.0)) {
     FOG_RETURN_IF_ERROR(chooseFrequency(work, estimateSwingFrequencyHz(work.ch.table)));
@@ -785,7 +772,7 @@ Result<TestPointResult> analyzeTestPoint(const TestPointData& data, double incre
   if (!measuredHz) return measuredHz.status();  // the check's refusal comes first, as when it runs first
   if (std::abs(*measuredHz / planned - 1.0) > 0.01) {
     PointWork again(data, constants);
-    FOG_RETURN_IF_ERROR(prepare(again, incrementScale));
+    FOG_RETURN_IF_ERROR(prepare(again));
     FOG_RETURN_IF_ERROR(chooseFrequency(again, measuredHz));
     return fitAndCheck(again);
   }
@@ -842,13 +829,6 @@ Result<DelayReport> analyzeRecording(const Recording& recording, const BenchCons
   DelayReport report;
   report.constants = constants;
   report.health = recording.health;
-  double scale = 1.0;
-  if (!(recording.pulseEquivalentDeg > 0.0)) {
-    if (!(constants.pulseEquivalentDeg > 0.0))
-      return invalidArgument("the stream does not state the gyro pulse equivalent; give it "
-                             "(degrees per pulse) as a bench constant");
-    scale = constants.pulseEquivalentDeg;
-  }
   for (const auto& tp : recording.testPoints) {
     if (tp.kind == TestPointKind::kStatic) {
       StaticSegment s;
@@ -859,7 +839,7 @@ Result<DelayReport> analyzeRecording(const Recording& recording, const BenchCons
       report.staticSegments.push_back(s);
       continue;
     }
-    auto r = analyzeTestPoint(tp, scale, constants);
+    auto r = analyzeTestPoint(tp, constants);
     if (r) report.points.push_back(std::move(*r));
     else report.failedPoints.push_back("test point " + std::to_string(tp.index + 1) + ": " + r.status().message());
   }

@@ -25,24 +25,6 @@
 
 namespace fog::analysis {
 
-// Constants of the bench, measured elsewhere, with their standard uncertainties.
-struct BenchConstants {
-  double tableReadDelayMs = 0.05;
-  double tableReadDelayStdMs = 0.0;
-  double boardDelayMs = 0.28;  // IMU processing board, measured on the board
-  double boardDelayStdMs = 0.0;
-  // Degrees per gyro pulse; used only when the stream does not state it.
-  double pulseEquivalentDeg = 0.0;
-  // Sense of each gyro axis against the table's, as the user states it: -1
-  // for a gyro axis mounted the other way round (its increments are negated
-  // before the fits). A gyro that turns against the table while its stated
-  // sign is +1 makes the test point invalid, never a half-period lag.
-  std::array<int, kAxisCount> gyroSign{1, 1, 1};
-};
-
-// The constants a session's bench settings give the analysis.
-BenchConstants benchConstantsOf(const BenchSettings& bench);
-
 // Noise seen in the session, estimated from fit residuals.
 struct NoiseEstimate {
   double tableNoiseDeg = 0.0;         // encoder white noise (1 sigma)
@@ -155,12 +137,13 @@ DelayBreakdown delayBreakdown(double lagMs, double lagStdMs, const BenchConstant
 // wrapped into (-T/2, T/2].
 double lagFromPhasesMs(double tablePhaseMs, double gyroPhaseMs, double periodMs);
 
-// incrementScale: see makeChannels(). Walks the samples a fixed number of
-// times (sample_passes.h; SamplePasses in tests/core/analysis). Uses up to
-// three threads: the fits split some passes over two, and when the plan
-// states the frequency its check against the data runs beside them.
-Result<TestPointResult> analyzeTestPoint(const TestPointData& data, double incrementScale,
-                                         const BenchConstants& constants);
+// The increments are in degrees (protocol::RecordingBuilder); those of the
+// swing axis are negated when constants.gyroSign says -1. Walks the samples
+// a fixed number of times (sample_passes.h; SamplePasses in
+// tests/core/analysis). Uses up to three threads: the fits split some passes
+// over two, and when the plan states the frequency its check against the
+// data runs beside them.
+Result<TestPointResult> analyzeTestPoint(const TestPointData& data, const BenchConstants& constants);
 
 // Analyses every swing test point; static segments are listed in
 // staticSegments and not analysed. Fails only when no test point gives a

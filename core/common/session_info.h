@@ -5,23 +5,11 @@
 
 #include <string>
 
+#include "core/common/bench_constants.h"
 #include "core/common/status.h"
 #include "core/common/test_plan.h"
 
 namespace fog {
-
-// Bench constants as set for the session. The breakdown uses the delays;
-// the rest describe the chain that produced the data.
-struct BenchSettings {
-  double tableReadDelayMs = 0.05;
-  double tableReadDelayStdMs = 0.0;
-  double boardDelayMs = 0.28;  // IMU processing board, measured on the board
-  double boardDelayStdMs = 0.0;
-  double latitudeDeg = 40.0;
-  double pulseEquivalentDeg = 5e-5;  // degrees per gyro pulse
-  double counterHz = 10e6;           // sampling board's common counter
-  int counterBits = 32;
-};
 
 // What an import of another bench's files applied to make the session's
 // recording: part of every setting a result of it was produced with
@@ -47,7 +35,7 @@ struct SessionInfo {
   std::string softwareVersion;  // FOG_VERSION of the program that recorded it
   std::string createdUtc;       // ISO 8601, e.g. "2026-11-22T02:45:00Z"
   std::string notes;            // free text
-  BenchSettings bench;
+  BenchConstants bench;  // as set for the session
   TestPlan plan;
   ImportSettings imported;  // empty unless the session was imported
 };

@@ -29,7 +29,7 @@ Result<AccuracyResult> runAccuracyStudy(const AccuracyCondition& condition, int 
     config.seed = static_cast<std::uint64_t>(i + 1);
     auto run = model::simulate(config, condition.plan);
     auto rec = run ? protocol::decodeRecording(run->bytes) : Result<Recording>(run.status());
-    auto rep = rec ? analysis::analyzeRecording(*rec, analysis::BenchConstants{})
+    auto rep = rec ? analysis::analyzeRecording(*rec, BenchConstants{})
                    : Result<analysis::DelayReport>(rec.status());
     if (!rep) {
       std::lock_guard<std::mutex> lock(errorMutex);

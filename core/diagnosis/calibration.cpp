@@ -213,21 +213,8 @@ Status calibrateEarthRateAndBias(Replay& replay, const std::vector<FeatureKey>& 
   return cal.config.validate();
 }
 
-Result<AnalysedSession> analyseSession(const Recording& input, const SessionInfo* info,
-                                       const analysis::BenchConstants& constants, std::vector<std::string>& notes) {
-  // Raw pulse counts (a stream without its pulse equivalent) become degrees.
-  std::optional<Recording> scaled;
-  if (input.pulseEquivalentDeg <= 0.0) {
-    const double pe = constants.pulseEquivalentDeg > 0.0 ? constants.pulseEquivalentDeg
-                                                        : (info ? info->bench.pulseEquivalentDeg : 0.0);
-    if (pe <= 0.0) return invalidArgument("the stream does not state its pulse equivalent: give --pulse-equivalent-deg");
-    scaled = input;
-    for (auto& tp : scaled->testPoints)
-      for (auto& m : tp.imu)
-        for (double& v : m.incrementDeg) v *= pe;
-    scaled->pulseEquivalentDeg = pe;
-  }
-  const Recording& recording = scaled ? *scaled : input;
+Result<AnalysedSession> analyseSession(const Recording& recording, const BenchConstants& constants,
+                                       std::vector<std::string>& notes) {
   auto report = analysis::analyzeRecording(recording, constants);
   if (!report) return report.status();
 

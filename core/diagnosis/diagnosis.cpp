@@ -85,7 +85,7 @@ void auditTimings(const Recording& used, const Replay& replay, std::uint64_t see
 }  // namespace
 }  // namespace detail
 
-Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, const analysis::BenchConstants& constants,
+Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, const BenchConstants& constants,
                            const DiagnosisOptions& requested) {
   using namespace detail;
   const auto started = std::chrono::steady_clock::now();
@@ -104,7 +104,7 @@ Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, cons
                       " threads asked for, to stay within the " + megabytes(kDiagnosisMemoryBudgetBytes) +
                       " memory limit");
 
-  auto session = analyseSession(input, info, constants, d.notes);
+  auto session = analyseSession(input, constants, d.notes);
   if (!session) return session.status();
   auto calibrated = calibrate(*session, info, options, progress, d.notes);
   if (!calibrated) return calibrated.status();

@@ -214,7 +214,7 @@ inline constexpr double kDiagnosisSampleBudgetBytes = 0.75e9;
 // info may be null (a raw stream): the plan is then rebuilt from the
 // recording alone. Fails when the analysis gives no delay for any test point.
 Result<Diagnosis> diagnose(const Recording& recording, const SessionInfo* info,
-                           const analysis::BenchConstants& constants, const DiagnosisOptions& options = {});
+                           const BenchConstants& constants, const DiagnosisOptions& options = {});
 
 std::string formatDiagnosisText(const Diagnosis& d);
 std::string formatDiagnosisJson(const Diagnosis& d);

@@ -187,15 +187,13 @@ struct AnalysedSession {
   std::vector<analysis::TestPointResult> results;  // one per used test point
 };
 
-// Takes the recording, its session (for the pulse equivalent of a raw
-// stream) and the bench constants; runs the delay analysis and gives the
-// test points that gave a delay, in recording order, with their results
-// (the others are noted as left out). Refuses kInvalidArgument for a
-// stream of raw pulse counts with no pulse equivalent anywhere, the
-// analysis' own refusals, and kInsufficientData when no test point gave a
-// delay.
-Result<AnalysedSession> analyseSession(const Recording& input, const SessionInfo* info,
-                                       const analysis::BenchConstants& constants, std::vector<std::string>& notes);
+// Takes the recording (in degrees, protocol::RecordingBuilder) and the
+// bench constants; runs the delay analysis and gives the test points that
+// gave a delay, in recording order, with their results (the others are
+// noted as left out). Refuses with the analysis' own refusals, and
+// kInsufficientData when no test point gave a delay.
+Result<AnalysedSession> analyseSession(const Recording& recording, const BenchConstants& constants,
+                                       std::vector<std::string>& notes);
 
 // The replay calibrated to the session, and the session's own features
 // against the replay's reference.

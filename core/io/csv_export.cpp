@@ -115,7 +115,7 @@ std::string tableCsv(const Recording& rec) {
   return t.str();
 }
 
-std::string gyroCsv(const Recording& rec, double scale) {
+std::string gyroCsv(const Recording& rec) {
   Text t;
   std::size_t rows = 0;
   for (const auto& p : rec.testPoints) rows += p.imu.size();
@@ -125,9 +125,8 @@ std::string gyroCsv(const Recording& rec, double scale) {
   for (const auto& p : rec.testPoints)
     for (const auto& s : p.imu) {
       t.integer(static_cast<std::uint64_t>(p.index + 1)).comma().num(s.timeS);
-      // Multiplied only for raw pulses: degrees are written untouched so that
-      // they read back bit-identical.
-      for (double d : s.incrementDeg) t.comma().num(scale == 1.0 ? d : d * scale);
+      // Degrees as recorded, so that they read back bit-identical.
+      for (double d : s.incrementDeg) t.comma().num(d);
       t.comma().num(s.temperatureC).comma().integer(s.lostBefore).eol();
     }
   return t.str();
@@ -175,10 +174,10 @@ std::string fitsCsv(const analysis::DelayReport& report) {
   return t.str();
 }
 
-Result<std::string> residualsCsv(const TestPointData& data, double scale, const analysis::TestPointResult& p) {
-  // The channels exactly as the analysis built them, so the residuals are
-  // those of the reported fits.
-  FOG_ASSIGN_OR_RETURN(auto ch, analysis::makeChannels(data, scale));
+Result<std::string> residualsCsv(const TestPointData& data, const analysis::TestPointResult& p) {
+  // The channels exactly as the analysis built them (with the gyro sign it
+  // applied), so the residuals are those of the reported fits.
+  FOG_ASSIGN_OR_RETURN(auto ch, analysis::makeChannels(data, p.gyroSign));
   const auto table = analysis::tableResiduals(ch.table, p.tableFit);
   const auto gyro = analysis::gyroIncrementResiduals(ch.gyro, p.gyroFit);
   Text t;
@@ -212,19 +211,14 @@ std::string formatDouble(double v) {
 
 Status exportCsv(const std::string& dirText, const SessionInfo& info, const Recording& rec,
                  const analysis::DelayReport* report, bool overwrite) {
-  // Increments go out in degrees; a recording of raw pulses is scaled here.
-  double scale = 1.0;
-  double pulseEquivalentDeg = rec.pulseEquivalentDeg;
-  if (!(rec.pulseEquivalentDeg > 0.0)) {
-    if (!(info.bench.pulseEquivalentDeg > 0.0))
-      return invalidArgument("the recording holds raw gyro pulses and the session gives no pulse equivalent; "
-                             "set the bench's pulse equivalent (degrees per pulse) before exporting");
-    scale = pulseEquivalentDeg = info.bench.pulseEquivalentDeg;
-  }
-
+  // The increments are in degrees (protocol::RecordingBuilder); the metadata
+  // states the pulse equivalent they were made with.
+  if (!(rec.pulseEquivalentDeg > 0.0))
+    return invalidArgument("the recording states no gyro pulse equivalent (it holds no gyro samples); "
+                           "there is nothing to export");
   detail::Metadata meta;
   meta.info = info;
-  meta.info.bench.pulseEquivalentDeg = pulseEquivalentDeg;
+  meta.info.bench.pulseEquivalentDeg = rec.pulseEquivalentDeg;
   meta.info.bench.counterHz = rec.counterHz;
   meta.info.bench.counterBits = rec.counterBits;
   meta.hasStream = true;
@@ -259,11 +253,10 @@ Status exportCsv(const std::string& dirText, const SessionInfo& info, const Reco
   if (Status s = prepareDirectory(dir, overwrite); !s.isOk()) return s;
   if (Status s = writeFile(dir / "metadata.json", detail::metadataToJson(meta)); !s.isOk()) return s;
   if (Status s = writeFile(dir / "table.csv", tableCsv(rec)); !s.isOk()) return s;
-  if (Status s = writeFile(dir / "gyro.csv", gyroCsv(rec, scale)); !s.isOk()) return s;
+  if (Status s = writeFile(dir / "gyro.csv", gyroCsv(rec)); !s.isOk()) return s;
   if (!report) return Status::ok();
 
   if (Status s = writeFile(dir / "fits.csv", fitsCsv(*report)); !s.isOk()) return s;
-  const double analysisScale = rec.pulseEquivalentDeg > 0.0 ? 1.0 : report->constants.pulseEquivalentDeg;
   for (const auto& p : report->points) {
     const TestPointData* data = nullptr;
     for (const auto& tp : rec.testPoints)
@@ -271,7 +264,7 @@ Status exportCsv(const std::string& dirText, const SessionInfo& info, const Reco
     if (!data)
       return invalidArgument("the report has test point " + std::to_string(p.index + 1) +
                              ", which the recording does not; export the report with its own recording");
-    FOG_ASSIGN_OR_RETURN(auto text, residualsCsv(*data, analysisScale, p));
+    FOG_ASSIGN_OR_RETURN(auto text, residualsCsv(*data, p));
     if (Status s = writeFile(dir / ("residuals_" + std::to_string(p.index + 1) + ".csv"), text); !s.isOk()) return s;
   }
   analysis::ReportContext context;

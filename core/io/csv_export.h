@@ -12,15 +12,17 @@
 //
 // Numbers are written with std::to_chars: the shortest text that reads back
 // to the same double (at most 17 significant digits), locale-independent.
-// Gyro increments are written in degrees: a recording that holds raw pulses
-// (pulseEquivalentDeg == 0) is scaled by info.bench.pulseEquivalentDeg.
+// Gyro increments are written in degrees, as the recording holds them
+// (protocol::RecordingBuilder); metadata.json states the recording's pulse
+// equivalent and the session's gyro signs (bench.gyro_sign).
 //
 // The directory is created if needed. It must be empty, unless overwrite is
 // set; even then it may hold only files of a previous export (the names
 // above), which are removed first, so that no foreign file is ever replaced
 // and no stale residuals file survives.
-// Errors: kInvalidArgument (directory not empty, foreign files, no pulse
-// equivalent for raw pulses), kIoError (cannot create or write).
+// Errors: kInvalidArgument (directory not empty, foreign files, a recording
+// without gyro samples: no pulse equivalent), kIoError (cannot create or
+// write).
 
 #include <string>
 

@@ -559,13 +559,14 @@ Result<ImportedSession> importTexts(const std::string& what, const std::string& 
   // (Axis and temperature columns the docs allow to leave out read as 0
   // without a note: only what the user must know is said.)
   if (hasAny(gyro, kRate0)) FOG_RETURN_IF_ERROR(convertRates(points, meta, gyroPath, metaPath, out.notes));
-  for (int a = 0; a < kAxisCount; ++a) {
-    if (meta.gyroSign[static_cast<std::size_t>(a)] > 0) continue;
-    for (auto& p : points)
-      for (auto& s : p.imu) s.incrementDeg[static_cast<std::size_t>(a)] = -s.incrementDeg[static_cast<std::size_t>(a)];
-    out.notes.push_back(std::string("gyro ") + axisLabel(static_cast<Axis>(a)) +
-                        " axis mounted the other way round (bench.gyro_sign -1): its increments are negated");
-  }
+  // The increments stay as recorded: the signs go with the session's bench
+  // constants, and the analysis negates them where they enter, as for a
+  // live session.
+  for (int a = 0; a < kAxisCount; ++a)
+    if (meta.info.bench.gyroSign[static_cast<std::size_t>(a)] < 0)
+      out.notes.push_back(std::string("gyro ") + axisLabel(static_cast<Axis>(a)) +
+                          " axis mounted the other way round (bench.gyro_sign -1): the analysis negates its "
+                          "increments");
 
   SessionInfo& info = out.info;
   info = meta.info;

@@ -95,7 +95,7 @@ class Reader {
 
 std::string metadataToJson(const Metadata& meta) {
   const SessionInfo& s = meta.info;
-  const BenchSettings& b = s.bench;
+  const BenchConstants& b = s.bench;
   Json j;
   j["format"] = kFormatName;
   j["format_version"] = kFormatVersion;
@@ -110,6 +110,11 @@ std::string metadataToJson(const Metadata& meta) {
                 {"board_delay_ms", b.boardDelayMs},          {"board_delay_std_ms", b.boardDelayStdMs},
                 {"latitude_deg", b.latitudeDeg},             {"pulse_equivalent_deg", b.pulseEquivalentDeg},
                 {"counter_hz", b.counterHz},                 {"counter_bits", b.counterBits}};
+  // Only the axes mounted the other way round: a file without the key reads +1.
+  Json signs = Json::object();
+  for (int a = 0; a < kAxisCount; ++a)
+    if (b.gyroSign[static_cast<std::size_t>(a)] < 0) signs[axisName(static_cast<Axis>(a))] = -1;
+  if (!signs.empty()) j["bench"]["gyro_sign"] = std::move(signs);
   j["rest_between_s"] = s.plan.restBetweenS;
   Json points = Json::array();
   for (const auto& p : meta.testPoints) {
@@ -225,7 +230,7 @@ Status readBench(const std::string& path, const Json& j, Metadata& meta) {
     return corruptData(path + ": missing \"bench\" object with table_read_delay_ms, board_delay_ms and "
                               "pulse_equivalent_deg (docs/formats.md)");
   const Reader bench(path, j.at("bench"), "bench");
-  BenchSettings& b = meta.info.bench;
+  BenchConstants& b = meta.info.bench;
   FOG_RETURN_IF_ERROR(bench.checkKeys({"table_read_delay_ms", "table_read_delay_std_ms", "board_delay_ms",
                                        "board_delay_std_ms", "latitude_deg", "pulse_equivalent_deg", "counter_hz",
                                        "counter_bits", "gyro_rate_convention", "gyro_frame_period_ms",
@@ -278,7 +283,7 @@ Status readBench(const std::string& path, const Json& j, Metadata& meta) {
       if (!axis || !v.is_number_integer() || (v.get<std::int64_t>() != 1 && v.get<std::int64_t>() != -1))
         return corruptData(path + ": \"bench.gyro_sign\" takes the axes \"x\", \"y\", \"z\" with 1 or -1, not \"" +
                            item.key() + "\": " + v.dump());
-      meta.gyroSign[static_cast<std::size_t>(*axis)] = static_cast<int>(v.get<std::int64_t>());
+      b.gyroSign[static_cast<std::size_t>(*axis)] = static_cast<int>(v.get<std::int64_t>());
     }
   }
 

@@ -45,12 +45,12 @@ struct Metadata {
   // Import-time facts about the gyro stream, applied where the data enter.
   RateConvention rateConvention = RateConvention::kNone;
   double gyroFramePeriodMs = 0.0;  // the IMU's own frame period; 0 = not stated
-  std::array<int, kAxisCount> gyroSign{1, 1, 1};  // -1: axis mounted the other way round
   bool hasStream = false;
   StreamHealth stream;
 };
 
-// Serialises; pulseEquivalentDeg/counter values are taken from info.bench.
+// Serialises; pulseEquivalentDeg/counter values and the gyro signs are taken
+// from info.bench.
 std::string metadataToJson(const Metadata& meta);
 // Parses and checks every key; errors are kCorruptData naming `path` and
 // the offending key.

@@ -43,8 +43,8 @@ MarkovPeak markovPeak() {
 
 }  // namespace
 
-Result<GyroNoiseReport> analyzeStaticSegment(const TestPointData& data, double degPerIncrement,
-                                             const GyroNoiseOptions& options, double degPerPulse) {
+Result<GyroNoiseReport> analyzeStaticSegment(const TestPointData& data, const GyroNoiseOptions& options,
+                                             double degPerPulse) {
   GyroNoiseReport r;
   r.testPointIndex = data.index;
   r.gyroAxis = options.gyroAxis.value_or(data.axis);
@@ -57,14 +57,14 @@ Result<GyroNoiseReport> analyzeStaticSegment(const TestPointData& data, double d
   std::vector<double> increments;
   increments.reserve(data.imu.size() + 16);
   double sum = 0.0;
-  for (const auto& s : data.imu) sum += s.incrementDeg[a] * degPerIncrement;
+  for (const auto& s : data.imu) sum += s.incrementDeg[a];
   const double meanIncrement = sum / static_cast<double>(data.imu.size());
   for (std::size_t k = 0; k < data.imu.size(); ++k) {
     const auto& s = data.imu[k];
     if (k > 0)
       for (std::uint32_t l = 0; l < s.lostBefore; ++l) increments.push_back(meanIncrement);
     if (k > 0) r.lostFrames += s.lostBefore;
-    increments.push_back(s.incrementDeg[a] * degPerIncrement);
+    increments.push_back(s.incrementDeg[a]);
   }
   r.samples = data.imu.size();
   // The first sample's increment covers the frame before its stamp.
@@ -98,7 +98,7 @@ Result<GyroNoiseReport> analyzeStaticSegment(const TestPointData& data, double d
   // pulse count of an angle moving meanIncrement per frame (docs/noise.md).
   bool wholePulses = options.pulseQuantisation && degPerPulse > 0.0;
   for (std::size_t k = 0; wholePulses && k < data.imu.size(); ++k) {
-    const double c = data.imu[k].incrementDeg[a] * degPerIncrement / degPerPulse;
+    const double c = data.imu[k].incrementDeg[a] / degPerPulse;
     wholePulses = std::abs(c - std::round(c)) < 1e-6 * std::max(1.0, std::abs(c));
   }
   if (wholePulses) r.curve.pulse = {degPerPulse, meanIncrement};
@@ -112,17 +112,12 @@ Result<GyroNoiseReport> analyzeStaticSegment(const TestPointData& data, double d
 }
 
 Result<std::vector<GyroNoiseReport>> analyzeGyroNoise(const Recording& recording, const GyroNoiseOptions& options) {
-  double scale = 1.0;
-  if (!(recording.pulseEquivalentDeg > 0.0)) {
-    if (!(options.pulseEquivalentDeg > 0.0))
-      return invalidArgument("the stream does not state the gyro pulse equivalent; give it (degrees per pulse)");
-    scale = options.pulseEquivalentDeg;
-  }
+  // Increments are in degrees (protocol::RecordingBuilder); the pulse
+  // equivalent is the quantum for the quantisation term.
   std::vector<GyroNoiseReport> out;
   for (const auto& tp : recording.testPoints) {
     if (tp.kind != TestPointKind::kStatic) continue;
-    const double pulse = recording.pulseEquivalentDeg > 0.0 ? recording.pulseEquivalentDeg : scale;
-    FOG_ASSIGN_OR_RETURN(auto r, analyzeStaticSegment(tp, scale, options, pulse));
+    FOG_ASSIGN_OR_RETURN(auto r, analyzeStaticSegment(tp, options, recording.pulseEquivalentDeg));
     out.push_back(std::move(r));
   }
   if (out.empty())

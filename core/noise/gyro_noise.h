@@ -27,8 +27,6 @@ struct GyroNoiseOptions {
   AllanOptions allan;
   IdentifyOptions identify;
   model::EarthParams earth;      // site latitude and IMU axes, for the Earth-rate correction
-  // Degrees per pulse when the stream does not state it (0: unknown -> error).
-  double pulseEquivalentDeg = 0.0;
   // Model the quantisation as the pulse count of the angle (exact at rest,
   // where the angle moves a pulse only every few frames) when every increment
   // is a whole number of pulses; false: white quantisation (IEEE 952).
@@ -51,8 +49,8 @@ struct GyroNoiseReport {
 
 // One static segment. Fails with kInsufficientData under 8 IMU samples.
 // degPerPulse: the gyro's pulse equivalent (0: unknown; white quantisation).
-Result<GyroNoiseReport> analyzeStaticSegment(const TestPointData& data, double degPerIncrement,
-                                             const GyroNoiseOptions& options, double degPerPulse = 0.0);
+Result<GyroNoiseReport> analyzeStaticSegment(const TestPointData& data, const GyroNoiseOptions& options,
+                                             double degPerPulse = 0.0);
 // Every static segment of the recording. kInsufficientData ("the recording
 // has no static segment ...") when there is none.
 Result<std::vector<GyroNoiseReport>> analyzeGyroNoise(const Recording& recording, const GyroNoiseOptions& options);

@@ -78,11 +78,15 @@ void RecordingBuilder::add(const DecodedFrame& f) {
   }
 }
 
-Recording RecordingBuilder::finish(const StreamHealth& health) {
+Result<Recording> RecordingBuilder::finish(const StreamHealth& health, double benchPulseEquivalentDeg) {
+  // The stream's own statement wins; the bench's constant only stands in
+  // for a stream that never states one.
+  const bool benchKnows = std::isfinite(benchPulseEquivalentDeg) && benchPulseEquivalentDeg > 0.0;
+  const double fallback = pulseEquivalentDeg_ > 0.0 ? pulseEquivalentDeg_ : benchKnows ? benchPulseEquivalentDeg : 0.0;
   Recording rec;
   rec.counterHz = counterHz_;
   rec.counterBits = counterBits_;
-  rec.pulseEquivalentDeg = pulseEquivalentDeg_;
+  rec.pulseEquivalentDeg = fallback;
   rec.health = health;
 
   if (!sawRecording_) {
@@ -104,6 +108,13 @@ Recording RecordingBuilder::finish(const StreamHealth& health) {
     segments_.push_back(std::move(whole_));
   }
 
+  const bool anyImu = std::any_of(segments_.begin(), segments_.end(), [](const Segment& s) { return !s.imu.empty(); });
+  if (anyImu && !(fallback > 0.0)) {
+    *this = RecordingBuilder{};
+    return invalidArgument("the stream does not state its gyro pulse equivalent (degrees per pulse): give "
+                           "--pulse-equivalent-deg or set it in the bench constants");
+  }
+
   const double secondsPerTick = 1.0 / counterHz_;
   for (auto& seg : segments_) {
     if (seg.table.empty() && seg.imu.empty()) continue;
@@ -120,8 +131,7 @@ Recording RecordingBuilder::finish(const StreamHealth& health) {
     for (std::size_t c = 0; c < seg.pulseEquivalents.size(); ++c) {
       const auto [from, known] = seg.pulseEquivalents[c];
       const std::size_t to = c + 1 < seg.pulseEquivalents.size() ? seg.pulseEquivalents[c + 1].first : tp.imu.size();
-      // Raw pulses when the stream never states the pulse equivalent.
-      const double scale = known > 0.0 ? known : pulseEquivalentDeg_ > 0.0 ? pulseEquivalentDeg_ : 1.0;
+      const double scale = known > 0.0 ? known : fallback;
       for (std::size_t k = from; k < to; ++k)
         for (double& v : tp.imu[k].incrementDeg) v *= scale;
     }
@@ -155,7 +165,7 @@ Result<Recording> StreamDecoder::finish() {
   if (builder_.framesAdded() == 0)
     return corruptData("no valid sampling-board frames found in " + std::to_string(bytes_) +
                        " bytes; is this a fogbench raw stream, or is the baud rate wrong?");
-  Recording rec = builder_.finish(health);
+  FOG_ASSIGN_OR_RETURN(Recording rec, builder_.finish(health, benchPulseEquivalentDeg_));
   const bool usable = std::any_of(rec.testPoints.begin(), rec.testPoints.end(),
                                   [](const TestPointData& tp) { return !tp.table.empty() && !tp.imu.empty(); });
   if (!usable)
@@ -166,8 +176,8 @@ Result<Recording> StreamDecoder::finish() {
   return rec;
 }
 
-Result<Recording> decodeRecording(std::span<const std::uint8_t> bytes) {
-  StreamDecoder decoder;
+Result<Recording> decodeRecording(std::span<const std::uint8_t> bytes, double benchPulseEquivalentDeg) {
+  StreamDecoder decoder(benchPulseEquivalentDeg);
   decoder.push(bytes);
   return decoder.finish();
 }

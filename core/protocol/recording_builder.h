@@ -4,7 +4,7 @@
 //
 //   RecordingBuilder b;
 //   b.add(frames);            // as often as frames arrive, in stream order
-//   Recording r = b.finish(decoder.health());
+//   Result<Recording> r = b.finish(decoder.health(), bench.pulseEquivalentDeg);
 //
 // Rules:
 //  - Times are seconds on the board counter: (ticks - ticks of the first frame
@@ -17,15 +17,18 @@
 //    flags carry kStatusFlagStatic). Samples in other phases
 //    are not collected.
 //  - Table: angleDeg = angleMicroDeg * 1e-6. IMU: incrementDeg = pulses *
-//    pulseEquivalentDeg of the latest STATUS (or of the last STATUS of the
-//    stream with a usable value when none was known yet); temperatureC =
-//    centi-degC / 100; lostBefore = the decoder's sequence gap.
+//    the pulse equivalent: that of the latest STATUS (or of the last STATUS
+//    of the stream with a usable value when none was known yet), or, when no
+//    STATUS states one (finite, > 0), the bench constant given to finish();
+//    temperatureC = centi-degC / 100; lostBefore = the decoder's sequence gap.
 //  - No STATUS with phase kRecording in the whole stream: everything becomes
 //    one test point, index 0, whose axis is the one with the largest table
 //    angle peak-to-peak; nominal frequency and amplitude 0 (unknown).
-//  - Pulse equivalent unknown (no STATUS with a finite value > 0):
-//    Recording.pulseEquivalentDeg stays 0 and incrementDeg holds raw pulse
-//    counts; the analysis must then be given the pulse equivalent.
+//  - Recording.pulseEquivalentDeg says what one pulse was (the stream's last
+//    statement, else the bench constant): always > 0 when there are IMU
+//    samples, and incrementDeg is always in degrees. IMU samples with neither
+//    a statement nor a bench constant fail finish() (kInvalidArgument, saying
+//    to give the pulse equivalent): raw pulse counts never leave the builder.
 //  - Test points without any sample are dropped.
 //  - TestPointData::health counts the frames and the damage (lost,
 //    duplicated, out-of-order frames, checksum failures, skipped bytes) the
@@ -59,8 +62,10 @@ class RecordingBuilder {
   std::size_t framesAdded() const { return framesAdded_; }
 
   // Builds the recording from everything added, copies `health` (normally the
-  // decoder's) into it, and resets the builder for a new stream.
-  fog::Recording finish(const fog::StreamHealth& health = {});
+  // decoder's) into it, and resets the builder for a new stream (also when it
+  // fails). benchPulseEquivalentDeg: degrees per pulse for a stream that does
+  // not state its own (BenchConstants::pulseEquivalentDeg; 0 = none).
+  fog::Result<fog::Recording> finish(const fog::StreamHealth& health = {}, double benchPulseEquivalentDeg = 0.0);
 
  private:
   bool followMarkers_ = true;
@@ -98,14 +103,19 @@ class RecordingBuilder {
 
 // Decodes a complete raw stream and builds its recording. Errors:
 // kCorruptData when the bytes hold no valid frame at all; kInsufficientData
-// when frames exist but no test point has both table and IMU samples.
-fog::Result<fog::Recording> decodeRecording(std::span<const std::uint8_t> bytes);
+// when frames exist but no test point has both table and IMU samples;
+// kInvalidArgument when the stream does not state its pulse equivalent and
+// benchPulseEquivalentDeg is not > 0 (RecordingBuilder::finish).
+fog::Result<fog::Recording> decodeRecording(std::span<const std::uint8_t> bytes,
+                                            double benchPulseEquivalentDeg = 0.0);
 
 // The same, for a stream that arrives in pieces: push() them in order, then
 // finish() gives what decodeRecording() gives for their concatenation,
 // without the bytes ever being held whole (a simulated hour is 140 MB).
 class StreamDecoder {
  public:
+  // benchPulseEquivalentDeg: as for decodeRecording().
+  explicit StreamDecoder(double benchPulseEquivalentDeg = 0.0) : benchPulseEquivalentDeg_(benchPulseEquivalentDeg) {}
   void push(std::span<const std::uint8_t> bytes);
   // Frames that never were bytes (Simulator::advance's frame overload): the
   // recording is the one their encoded bytes would give, without the
@@ -114,6 +124,7 @@ class StreamDecoder {
   fog::Result<fog::Recording> finish();
 
  private:
+  double benchPulseEquivalentDeg_ = 0.0;
   Decoder decoder_;
   RecordingBuilder builder_;
   std::vector<DecodedFrame> frames_;

@@ -26,6 +26,8 @@ struct RawStreamFile {
 
 // Reads the file (a regular file of at most kMaxRawStreamBytes: a FIFO or a
 // device is refused, file_read.h) and decodes it. Errors name the path.
-Result<RawStreamFile> readRawStreamFile(const std::string& path);
+// benchPulseEquivalentDeg: for a stream that does not state its pulse
+// equivalent (protocol::decodeRecording).
+Result<RawStreamFile> readRawStreamFile(const std::string& path, double benchPulseEquivalentDeg = 0.0);
 
 }  // namespace fog::session

@@ -5,6 +5,7 @@
 #include <sys/file.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <cmath>
@@ -14,6 +15,7 @@
 #include <ctime>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <span>
 #include <utility>
 
@@ -130,11 +132,15 @@ CREATE TABLE table_log (
 );
 )sql";
 
-// Schema 4: what an import applied to make the recording (the gyro rate
-// convention and frame period, the swing windows cut), as JSON
-// (docs/sessions.md); '' for a recorded session. Part of the metadata
-// checksum when not empty, so a migrated file's checksum still holds.
+// Schema 4: the gyro signs of the bench constants (+1, or -1 for a gyro axis
+// mounted the other way round; files of older schemas read +1: what every
+// analysis of them used), and what an import applied to make the recording
+// (the gyro rate convention and frame period, the swing windows cut) as
+// JSON, '' for a recorded session (docs/sessions.md).
 constexpr const char* kSchemaV4Step = R"sql(
+ALTER TABLE session ADD COLUMN gyro_sign_x INTEGER NOT NULL DEFAULT 1;
+ALTER TABLE session ADD COLUMN gyro_sign_y INTEGER NOT NULL DEFAULT 1;
+ALTER TABLE session ADD COLUMN gyro_sign_z INTEGER NOT NULL DEFAULT 1;
 ALTER TABLE session ADD COLUMN import_json TEXT NOT NULL DEFAULT '';
 )sql";
 
@@ -251,29 +257,17 @@ constexpr const char* kMetadataColumns =
     "operator, imu_model, imu_serial, source, software_version, created_utc, notes, table_read_delay_ms,"
     " table_read_delay_std_ms, board_delay_ms, board_delay_std_ms, latitude_deg, pulse_equivalent_deg, counter_hz,"
     " counter_bits, test_plan_json, state, incomplete_reason, finished_utc";
+constexpr const char* kSchemaV4MetadataColumns = ", gyro_sign_x, gyro_sign_y, gyro_sign_z, import_json";
 
-// True when the file's session table has the column (a reader reads older
-// layouts without migrating them).
-bool hasSessionColumn(sqlite3* db, const char* column) {
-  Stmt s(db, "SELECT 1 FROM pragma_table_info('session') WHERE name = ?1");
-  if (!s.ok()) return false;
-  s.bind(1, std::string(column));
-  return s.step() == SQLITE_ROW;
-}
-
-Result<std::int64_t> metadataChecksum(sqlite3* db) {
-  const bool withImport = hasSessionColumn(db, "import_json");
-  Stmt s(db, (std::string("SELECT ") + kMetadataColumns + (withImport ? ", import_json" : "") +
-              " FROM session WHERE id = 1")
-                 .c_str());
+// Over the metadata columns the file's schema has.
+Result<std::int64_t> metadataChecksum(sqlite3* db, int schemaVersion = kSchemaVersion) {
+  const std::string columns = std::string(kMetadataColumns) + (schemaVersion >= 4 ? kSchemaV4MetadataColumns : "");
+  Stmt s(db, ("SELECT " + columns + " FROM session WHERE id = 1").c_str());
   if (!s.ok() || s.step() != SQLITE_ROW) return ioError(sqliteMessage(db));
   std::uint64_t h = 0xcbf29ce484222325ULL;
   const int n = sqlite3_column_count(s.get());
   for (int i = 0; i < n; ++i) {
     const auto type = static_cast<std::uint8_t>(sqlite3_column_type(s.get(), i));
-    // import_json (the last, schema 4) counts only when it holds something,
-    // so the checksum of a file migrated from schema 3 still holds.
-    if (withImport && i == n - 1 && type == SQLITE_TEXT && s.text(i).empty()) break;
     fnv1aAdd(h, &type, 1);
     std::uint8_t v[8];
     if (type == SQLITE_INTEGER) {
@@ -483,8 +477,19 @@ Status migrate(sqlite3* db, int from) {
       return ioError("migrating from schema 2 to 3 failed: " + sqliteMessage(db));
   }
   if (from < 4) {
-    // 3 -> 4: no import settings ('', a recorded session or an older import).
+    // 3 -> 4: gyro signs, +1 (what the file was analysed with), and no
+    // import settings. A checked
+    // metadata row stays checked over the new columns only if it still
+    // matches its checksum: a damaged row is never blessed.
+    std::optional<std::int64_t> stored;
+    {
+      Stmt c(db, "SELECT metadata_fnv1a FROM session WHERE id = 1");
+      if (c.ok() && c.step() == SQLITE_ROW && sqlite3_column_type(c.get(), 0) != SQLITE_NULL) stored = c.integer(0);
+    }
+    const auto before = metadataChecksum(db, 3);
     if (!exec(db, kSchemaV4Step) || !exec(db, "PRAGMA user_version = 4"))
+      return ioError("migrating from schema 3 to 4 failed: " + sqliteMessage(db));
+    if (stored && before && *before == *stored && !updateMetadataChecksum(db))
       return ioError("migrating from schema 3 to 4 failed: " + sqliteMessage(db));
   }
   return Status::ok();
@@ -621,8 +626,10 @@ Result<std::unique_ptr<SessionWriter>> SessionWriter::create(const std::string& 
     Stmt s(w->db_,
            "INSERT INTO session (id, operator, imu_model, imu_serial, source, software_version, created_utc, notes,"
            " table_read_delay_ms, table_read_delay_std_ms, board_delay_ms, board_delay_std_ms, latitude_deg,"
-           " pulse_equivalent_deg, counter_hz, counter_bits, test_plan_json, state, import_json)"
-           " VALUES (1, ?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, 'recording', ?17)");
+           " pulse_equivalent_deg, counter_hz, counter_bits, test_plan_json, state, gyro_sign_x, gyro_sign_y,"
+           " gyro_sign_z, import_json)"
+           " VALUES (1, ?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, 'recording', ?17, ?18,"
+           " ?19, ?20)");
     if (!s.ok()) return abandon("metadata");
     s.bind(1, info.operatorName);
     s.bind(2, info.imuModel);
@@ -640,7 +647,9 @@ Result<std::unique_ptr<SessionWriter>> SessionWriter::create(const std::string& 
     s.bind(14, info.bench.counterHz);
     s.bind(15, std::int64_t{info.bench.counterBits});
     s.bind(16, testPlanToJson(info.plan));
-    s.bind(17, importSettingsToJson(info.imported));
+    for (int a = 0; a < kAxisCount; ++a)
+      s.bind(17 + a, std::int64_t{info.bench.gyroSign[static_cast<std::size_t>(a)] < 0 ? -1 : 1});
+    s.bind(20, importSettingsToJson(info.imported));
     if (s.step() != SQLITE_DONE) return abandon("metadata");
   }
   if (!updateMetadataChecksum(w->db_)) return abandon("metadata checksum");
@@ -884,7 +893,7 @@ Result<std::unique_ptr<SessionReader>> SessionReader::open(const std::string& pa
     Stmt c(r->db_, "SELECT metadata_fnv1a FROM session WHERE id = 1");
     if (!c.ok() || c.step() != SQLITE_ROW) return r->readError("reading its metadata");
     if (sqlite3_column_type(c.get(), 0) != SQLITE_NULL) {
-      auto sum = metadataChecksum(r->db_);
+      auto sum = metadataChecksum(r->db_, r->schemaVersion_);
       if (!sum) return r->readError("reading its metadata");
       if (*sum != c.integer(0))
         return corruptData("session '" + path + "': its metadata (who, bench constants, plan, state) fails its "
@@ -903,8 +912,8 @@ Result<std::unique_ptr<SessionReader>> SessionReader::open(const std::string& pa
       cut("notes", notes) +
       ", table_read_delay_ms, table_read_delay_std_ms, board_delay_ms, board_delay_std_ms, latitude_deg,"
       " pulse_equivalent_deg, counter_hz, counter_bits, test_plan_json, state, " +
-      cut("incomplete_reason", field) + ", length(CAST(notes AS BLOB)), " +
-      (hasSessionColumn(r->db_, "import_json") ? cut("import_json", field) : std::string("''")) +
+      cut("incomplete_reason", field) + ", length(CAST(notes AS BLOB))" +
+      (r->schemaVersion_ >= 4 ? ", gyro_sign_x, gyro_sign_y, gyro_sign_z, " + cut("import_json", field) : "") +
       " FROM session WHERE id = 1";
   Stmt s(r->db_, sql.c_str());
   if (!s.ok()) return r->readError("reading its metadata");
@@ -932,16 +941,22 @@ Result<std::unique_ptr<SessionReader>> SessionReader::open(const std::string& pa
   info.bench.pulseEquivalentDeg = s.real(12);
   info.bench.counterHz = s.real(13);
   info.bench.counterBits = static_cast<int>(s.integer(14));
+  // Older schemas have no signs: +1, what their analyses used.
+  if (r->schemaVersion_ >= 4)
+    for (int a = 0; a < kAxisCount; ++a)
+      info.bench.gyroSign[static_cast<std::size_t>(a)] = s.integer(19 + a) < 0 ? -1 : 1;
   auto plan = testPlanFromJson(s.text(15));
   if (!plan)
     return corruptData("session '" + path + "': its stored test plan is unreadable (" + plan.status().message() +
                        ")");
   info.plan = std::move(*plan);
-  auto imported = importSettingsFromJson(s.text(19));
-  if (!imported)
-    return corruptData("session '" + path + "': its import settings are unreadable (" + imported.status().message() +
-                       ")");
-  info.imported = std::move(*imported);
+  if (r->schemaVersion_ >= 4) {  // older schemas have no import settings
+    auto imported = importSettingsFromJson(s.text(22));
+    if (!imported)
+      return corruptData("session '" + path + "': its import settings are unreadable (" +
+                         imported.status().message() + ")");
+    info.imported = std::move(*imported);
+  }
   r->state_ = s.text(16);
   r->reason_ = toValidUtf8(s.text(17));
   return r;
@@ -997,10 +1012,11 @@ bool SessionReader::hasStoredRecording() const {
   return s.ok() && s.step() == SQLITE_ROW && s.integer(0) > 0;
 }
 
-Result<Recording> SessionReader::recording() const {
+Result<Recording> SessionReader::recording(double pulseEquivalentDeg) const {
+  const double bench = pulseEquivalentDeg > 0.0 ? pulseEquivalentDeg : info_.bench.pulseEquivalentDeg;
   if (!hasStoredRecording()) {
     FOG_ASSIGN_OR_RETURN(auto raw, rawBytes());
-    auto rec = protocol::decodeRecording(raw);
+    auto rec = protocol::decodeRecording(raw, bench);
     if (!rec) return Status(rec.status().code(), "session '" + path_ + "': " + rec.status().message());
     return rec;
   }
@@ -1111,6 +1127,21 @@ Result<Recording> SessionReader::recording() const {
     rec.testPoints.push_back(std::move(tp));
   }
   if (rc != SQLITE_DONE) return readError("reading the decoded samples");
+  // Sessions stored before the builder had to resolve the pulse equivalent
+  // kept raw pulse counts (pulse_equivalent_deg 0) when the stream did not
+  // state it; they were analysed with the session's bench constant, which
+  // turns them into degrees here as the builder does now.
+  const bool anyImu = std::any_of(rec.testPoints.begin(), rec.testPoints.end(),
+                                  [](const TestPointData& tp) { return !tp.imu.empty(); });
+  if (anyImu && !(rec.pulseEquivalentDeg > 0.0)) {
+    if (!(std::isfinite(bench) && bench > 0.0))
+      return invalidArgument("session '" + path_ + "': the stream does not state its gyro pulse equivalent (degrees "
+                             "per pulse): give --pulse-equivalent-deg or set it in the bench constants");
+    rec.pulseEquivalentDeg = bench;
+    for (auto& tp : rec.testPoints)
+      for (auto& m : tp.imu)
+        for (double& v : m.incrementDeg) v *= bench;
+  }
   return rec;
 }
 

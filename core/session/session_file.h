@@ -158,7 +158,10 @@ class SessionReader {
   // Whether decoded samples were stored (false after a crash).
   bool hasStoredRecording() const;
   // The stored decoded samples; if none were stored, decodes rawBytes().
-  Result<Recording> recording() const;
+  // Increments are in degrees: a stream that does not state its pulse
+  // equivalent takes pulseEquivalentDeg when > 0, else the session's bench
+  // constant, else fails as protocol::RecordingBuilder::finish does.
+  Result<Recording> recording(double pulseEquivalentDeg = 0.0) const;
   // Every stored analysis result, oldest first.
   Result<std::vector<StoredResult>> results() const;
   // The table log, in order; empty for a session without one (the simulator,

@@ -1088,12 +1088,12 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+244"/>
+        <location line="+245"/>
         <source>Step</source>
         <translation>步骤</translation>
     </message>
     <message>
-        <location line="-234"/>
+        <location line="-235"/>
         <source>Turntable angle</source>
         <translation>转台角度</translation>
     </message>
@@ -1119,7 +1119,7 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>计划</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+43"/>
         <source>Waiting for the first frames …</source>
         <translation>等待首批数据帧 …</translation>
     </message>
@@ -1344,12 +1344,12 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+943"/>
+        <location line="+947"/>
         <source>Diagnosis</source>
         <translation>诊断</translation>
     </message>
     <message>
-        <location line="-940"/>
+        <location line="-944"/>
         <source>Noise</source>
         <translation>噪声</translation>
     </message>
@@ -1422,12 +1422,12 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+703"/>
+        <location line="+707"/>
         <source>Open session</source>
         <translation>打开会话</translation>
     </message>
     <message>
-        <location line="-702"/>
+        <location line="-706"/>
         <source>fogbench sessions (*.fbs);;All files (*)</source>
         <translation>fogbench 会话 (*.fbs);;所有文件 (*)</translation>
     </message>
@@ -1702,7 +1702,7 @@ Quit: Ctrl+Q</source>
         <translation>&lt;span style=&apos;color:#b00000&apos;&gt;无法运行：%1&lt;/span&gt;</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+29"/>
         <source>the baud rate must be a whole number</source>
         <translation>波特率必须是整数</translation>
     </message>
@@ -1747,7 +1747,7 @@ Quit: Ctrl+Q</source>
         <translation>仿真器（仿真转台）</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <source>Running: %1 …</source>
         <translation>运行中：%1 …</translation>
     </message>
@@ -1872,7 +1872,7 @@ Quit: Ctrl+Q</source>
         <translation>正在打开 %1 …</translation>
     </message>
     <message>
-        <location line="+79"/>
+        <location line="+80"/>
         <location line="+8"/>
         <source>Re-analyse</source>
         <translation>重新分析</translation>
@@ -1916,7 +1916,7 @@ File: %1</source>
         <translation>%1：显示第 %2 个结果（共 %3 个）</translation>
     </message>
     <message>
-        <location line="+192"/>
+        <location line="+191"/>
         <source>Compare %1</source>
         <translation>比较 %1</translation>
     </message>
@@ -1926,7 +1926,7 @@ File: %1</source>
         <translation>无法读取该会话（见消息）</translation>
     </message>
     <message>
-        <location line="-204"/>
+        <location line="-203"/>
         <source>%1 re-analysed</source>
         <translation>%1 已重新分析</translation>
     </message>
@@ -2017,7 +2017,7 @@ File: %1</source>
         <translation>正在计算 Allan 标准差 …</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+15"/>
         <source>No noise analysis: %1</source>
         <translation>无噪声分析：%1</translation>
     </message>
@@ -2362,13 +2362,13 @@ File: %1</source>
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../../ui/main_window.cpp" line="-1085"/>
+        <location filename="../../ui/main_window.cpp" line="-1088"/>
         <location filename="../../ui/plan_editor.cpp" line="-300"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../../ui/live_view.cpp" line="-409"/>
+        <location filename="../../ui/live_view.cpp" line="-410"/>
         <source>%1:%2</source>
         <translation>%1:%2</translation>
     </message>
@@ -2632,18 +2632,18 @@ File: %1</source>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+283"/>
+        <location line="+282"/>
         <source>quantity</source>
         <translation>量</translation>
     </message>
     <message>
-        <location line="-282"/>
-        <location line="+367"/>
+        <location line="-281"/>
+        <location line="+366"/>
         <source>value</source>
         <translation>数值</translation>
     </message>
     <message>
-        <location line="-366"/>
+        <location line="-365"/>
         <source>std. uncertainty</source>
         <translation>标准不确定度</translation>
     </message>
@@ -2658,7 +2658,7 @@ File: %1</source>
         <translation>0（视为精确）</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+2"/>
         <source>table read delay</source>
         <translation>转台读数延迟</translation>
     </message>
@@ -2688,17 +2688,7 @@ File: %1</source>
         <translation>%1″/脉冲</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>stated by the stream</source>
-        <translation>由数据流给出</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>bench setting</source>
-        <translation>测试台设置</translation>
-    </message>
-    <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>sampling-board counter</source>
         <translation>采样板计数器</translation>
     </message>
@@ -2795,7 +2785,7 @@ File: %1</source>
         <translation>未给出</translation>
     </message>
     <message>
-        <location line="-119"/>
+        <location line="-118"/>
         <source>Result reported</source>
         <translation>报告的结果</translation>
     </message>
@@ -2810,7 +2800,12 @@ File: %1</source>
         <translation>未计入 %1 个被拒绝的测试点：其有效性检查未通过。</translation>
     </message>
     <message>
-        <location line="+78"/>
+        <location line="+34"/>
+        <source>the stream&apos;s statement, else the bench constant: turns pulses into degrees</source>
+        <translation>数据流给出的值，否则为测试台常数：把脉冲换算为度</translation>
+    </message>
+    <message>
+        <location line="+43"/>
         <source>The plan was not recorded with the data; the test points as the stream states them:</source>
         <translation>数据未附带测试计划；以下为数据流给出的测试点：</translation>
     </message>
@@ -3397,7 +3392,7 @@ File: %1</source>
         <translation>χ²/dof %1</translation>
     </message>
     <message>
-        <location line="+102"/>
+        <location line="+100"/>
         <location line="+73"/>
         <source>PASS: every test point passed its validity checks and its IMU delay + 2σ is below the %1 ms limit.</source>
         <translation>合格：每个测试点都通过有效性检查，且其 IMU 延迟 + 2σ 低于 %1 ms 限值。</translation>
@@ -3431,7 +3426,7 @@ File: %1</source>
         <translation>%1 个测试点未得到延迟</translation>
     </message>
     <message>
-        <location line="-307"/>
+        <location line="-305"/>
         <source>table angle (encoder, %1 ms)</source>
         <translation>转台角度（编码器，%1 ms）</translation>
     </message>
@@ -3441,7 +3436,7 @@ File: %1</source>
         <translation>陀螺角度（增量累加，%1 ms）</translation>
     </message>
     <message>
-        <location line="+308"/>
+        <location line="+306"/>
         <source>INCOMPLETE (the run stopped early); its data give %1</source>
         <translation>不完整（运行提前停止）；其数据给出 %1</translation>
     </message>
@@ -5220,6 +5215,16 @@ File: %1</source>
         <location line="+1"/>
         <source>cannot open session &apos;%1&apos;: no such file; check the path</source>
         <translation>无法打开会话“%1”：文件不存在；请检查路径</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the stream does not state its gyro pulse equivalent (degrees per pulse): give --pulse-equivalent-deg or set it in the bench constants</source>
+        <translation>数据流未给出陀螺脉冲当量（每个脉冲的度数）：请用 --pulse-equivalent-deg 给出，或在测试台常数中设置</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>session &apos;%1&apos;: the stream does not state its gyro pulse equivalent (degrees per pulse): give --pulse-equivalent-deg or set it in the bench constants</source>
+        <translation>会话“%1”：数据流未给出陀螺脉冲当量（每个脉冲的度数）：请用 --pulse-equivalent-deg 给出，或在测试台常数中设置</translation>
     </message>
     <message>
         <location line="+1"/>

@@ -652,7 +652,7 @@ class BenchUiTest : public QObject {
       QVERIFY(reader.isOk());
       auto recording = (*reader)->recording();
       QVERIFY(recording.isOk());
-      auto constants = fog::analysis::benchConstantsOf((*reader)->info().bench);
+      auto constants = (*reader)->info().bench;
       constants.gyroSign = {-1, 1, 1};
       auto report = fog::analysis::analyzeRecording(*recording, constants);
       QVERIFY(report.isOk());
@@ -758,7 +758,7 @@ class BenchUiTest : public QObject {
       QVERIFY(reader.isOk());
       auto recording = (*reader)->recording();
       QVERIFY(recording.isOk());
-      const auto constants = fog::analysis::benchConstantsOf((*reader)->info().bench);
+      const auto constants = (*reader)->info().bench;
       auto report = fog::analysis::analyzeRecording(*recording, constants);
       QVERIFY(report.isOk());
       reader->reset();
@@ -788,7 +788,7 @@ class BenchUiTest : public QObject {
 
     // The bench-constants dialog sets what the CLI sets: gyro signs, limit.
     {
-      fog::ui::BenchSettingsDialog dialog(w->benchSettings(), fog::ui::AnalysisChoices{{1, 1, -1}, 0.6});
+      fog::ui::BenchSettingsDialog dialog(w->benchConstants(), fog::ui::AnalysisChoices{{1, 1, -1}, 0.6});
       auto* z = dialog.findChild<QComboBox*>("gyroSignZCombo");
       auto* limit = dialog.findChild<QDoubleSpinBox*>("limitSpin");
       QVERIFY(z && limit && dialog.findChild<QComboBox*>("gyroSignXCombo"));
@@ -844,9 +844,9 @@ class BenchUiTest : public QObject {
     QCOMPARE(sha256(complete), before);  // review never writes
 
     // Re-analysis with other constants: one more result, same raw data.
-    fog::BenchSettings other = w->benchSettings();
+    fog::BenchConstants other = w->benchConstants();
     other.boardDelayMs = 0.3;
-    w->setBenchSettings(other);
+    w->setBenchConstants(other);
     QVERIFY(browser->selectPath(complete));
     click(*w, "reanalyseButton");
     QTRY_VERIFY_WITH_TIMEOUT(w->lastMessage().contains("re-analysed"), 30000);

@@ -143,7 +143,7 @@ class CoreTextTest : public QObject {
     const Recording rec = simulated({}, 23);
     std::string storedJson;
     for (int sign : {1, -1}) {
-      analysis::BenchConstants constants;
+      BenchConstants constants;
       constants.gyroSign = {sign, sign, sign};
       auto report = analysis::analyzeRecording(rec, constants);
       QVERIFY2(report.isOk(), report.status().toString().c_str());
@@ -217,6 +217,36 @@ class CoreTextTest : public QObject {
         QVERIFY2(r.status().message().find("first page") != std::string::npos, r.status().message().c_str());
       expectChinese(r.status().message(), dir.path());
     }
+  }
+
+  // A stream that does not state its pulse equivalent, with no bench
+  // constant: as decoded (a run, a replay) and as a stored session reads it.
+  void aStreamWithoutItsPulseEquivalent() {
+    protocol::StreamDecoder decoder;
+    protocol::ImuPayload imu;
+    imu.pulses = {3, 0, 0};
+    const std::vector<protocol::Frame> frames{{protocol::FrameType::kImu, 0, 100, imu},
+                                              {protocol::FrameType::kImu, 1, 200, imu}};
+    decoder.push(std::span<const protocol::Frame>(frames));
+    auto rec = decoder.finish();
+    QVERIFY(!rec.isOk());
+    expectChinese(rec.status().message());
+
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const std::string path = dir.path().toStdString() + "/pulses.fbs";
+    Recording pulses = simulated({}, 3);
+    pulses.pulseEquivalentDeg = 0.0;  // as stored before the builder resolved it
+    auto writer = session::SessionWriter::create(path, {});
+    QVERIFY(writer.isOk());
+    QVERIFY((*writer)->storeRecording(pulses).isOk());
+    QVERIFY((*writer)->finish(true, "").isOk());
+    writer->reset();
+    auto reader = session::SessionReader::open(path);
+    QVERIFY(reader.isOk());
+    auto stored = (*reader)->recording();
+    QVERIFY(!stored.isOk());
+    expectChinese(stored.status().message(), dir.path());
   }
 
   // The C library's words for a system error, quoted inside a reason: a

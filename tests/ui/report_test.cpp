@@ -40,7 +40,7 @@ class ReportTest : public QObject {
     QVERIFY2(run.isOk(), run.status().message().c_str());
     auto recording = fog::protocol::decodeRecording(run->bytes);
     QVERIFY(recording.isOk());
-    auto delays = fog::analysis::analyzeRecording(*recording, fog::analysis::BenchConstants{});
+    auto delays = fog::analysis::analyzeRecording(*recording, fog::BenchConstants{});
     QVERIFY2(delays.isOk(), delays.status().message().c_str());
     QCOMPARE(delays->points.size(), std::size_t(1));
 

@@ -40,9 +40,8 @@ double TestPointTraces::gyroFitNormalised(double tS) const {
   return sinusoidDeg(gyroFit, tS) / amplitudeOf(gyroFit);
 }
 
-Result<TestPointTraces> makeTestPointTraces(const TestPointData& data, const analysis::TestPointResult& result,
-                                            double incrementScale) {
-  FOG_ASSIGN_OR_RETURN(auto channels, analysis::makeChannels(data, incrementScale));
+Result<TestPointTraces> makeTestPointTraces(const TestPointData& data, const analysis::TestPointResult& result) {
+  FOG_ASSIGN_OR_RETURN(auto channels, analysis::makeChannels(data, result.gyroSign));
   const analysis::Channels& ch = channels;
 
   TestPointTraces t;

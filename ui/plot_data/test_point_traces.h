@@ -38,9 +38,7 @@ struct TestPointTraces {
 // NaN when the fit has no frequency.
 double risingZeroCrossingS(const analysis::SineFit& fit, double nearS);
 
-// incrementScale as for analysis::makeChannels(): 1 when the recording's
-// increments are in degrees, the pulse equivalent when they are raw pulses.
-Result<TestPointTraces> makeTestPointTraces(const TestPointData& data, const analysis::TestPointResult& result,
-                                            double incrementScale);
+// The gyro as the analysis saw it: in degrees, with the result's gyro sign.
+Result<TestPointTraces> makeTestPointTraces(const TestPointData& data, const analysis::TestPointResult& result);
 
 }  // namespace fog::ui

@@ -372,15 +372,14 @@ void constantsAndPlanPage(PageFlow& flow, const Content& c) {
                     {QObject::tr("std. uncertainty"), 30, Qt::AlignRight},
                     {QObject::tr("role"), 62, Qt::AlignLeft}};
   auto uncertainty = [](double sd) { return sd > 0.0 ? fixed(sd, 4) + " ms" : QObject::tr("0 (taken as exact)"); };
-  const double pulse = rec.pulseEquivalentDeg > 0.0 ? rec.pulseEquivalentDeg : k.pulseEquivalentDeg;
   consts.rows = {
       {QObject::tr("table read delay"), fixed(k.tableReadDelayMs, 4) + " ms", uncertainty(k.tableReadDelayStdMs),
        QObject::tr("added to the lag: IMU delay")},
       {QObject::tr("processing-board delay"), fixed(k.boardDelayMs, 4) + " ms", uncertainty(k.boardDelayStdMs),
        QObject::tr("subtracted from the IMU delay: gyro delay")},
       {QObject::tr("gyro pulse equivalent"),
-       QObject::tr("%1″/pulse").arg(QString::number(pulse * 3600.0, 'g', 4)), "",
-       rec.pulseEquivalentDeg > 0.0 ? QObject::tr("stated by the stream") : QObject::tr("bench setting")},
+       QObject::tr("%1″/pulse").arg(QString::number(rec.pulseEquivalentDeg * 3600.0, 'g', 4)), "",
+       QObject::tr("the stream's statement, else the bench constant: turns pulses into degrees")},
       {QObject::tr("sampling-board counter"),
        imported ? QObject::tr("not stated") : QObject::tr("%1 MHz, %2 bit").arg(rec.counterHz / 1e6).arg(rec.counterBits),
        "",
@@ -779,11 +778,10 @@ Result<Content> prepare(const ReportInput& in) {
     return Status(StatusCode::kInternal, "the report's plots need a QApplication");
   Content c{in, calibrationVerdict(in), rawDataSha256(in.rawBytes), {},
             QDateTime::currentDateTimeUtc().toString(Qt::ISODate), {}};
-  const double scale = in.recording.pulseEquivalentDeg > 0.0 ? 1.0 : in.delays.constants.pulseEquivalentDeg;
   for (const auto& p : in.delays.points) {
     const auto& tps = in.recording.testPoints;
     const auto data = std::find_if(tps.begin(), tps.end(), [&](const TestPointData& d) { return d.index == p.index; });
-    auto traces = ui::makeTestPointTraces(*data, p, scale);
+    auto traces = ui::makeTestPointTraces(*data, p);
     if (!traces)
       return Status(traces.status().code(),
                     "test point " + std::to_string(p.index + 1) + " cannot be plotted: " + traces.status().message());
@@ -794,7 +792,6 @@ Result<Content> prepare(const ReportInput& in) {
                   [](const TestPointData& d) { return d.kind == TestPointKind::kStatic; })) {
     noise::GyroNoiseOptions options;
     options.earth.latitudeDeg = in.info.bench.latitudeDeg;
-    options.pulseEquivalentDeg = in.delays.constants.pulseEquivalentDeg;
     auto reports = noise::analyzeGyroNoise(in.recording, options);
     if (!reports) return Status(reports.status().code(), "the static segments' noise: " + reports.status().message());
     c.noise = std::move(*reports);

@@ -29,7 +29,7 @@ json reportWith(const std::string& verdict, double imuDelayMs, const std::string
 }
 
 TEST(StoredResult, SettingsCarryTheGyroSignsAndTheLimit) {
-  analysis::BenchConstants c;
+  BenchConstants c;
   c.gyroSign = {-1, 1, -1};
   c.boardDelayMs = 0.3;
   const session::StoredResult row{7, "2026-11-26T07:00:00Z", analysisSettingsJson(c, 0.5, "fogbench-cli analyze"),
@@ -49,7 +49,7 @@ TEST(StoredResult, SettingsCarryTheGyroSignsAndTheLimit) {
 }
 
 TEST(StoredResult, AnOlderRowReadsAsGyroSignPlusOneAndItsReportsLimit) {
-  analysis::BenchConstants fallback;
+  BenchConstants fallback;
   fallback.gyroSign = {-1, -1, -1};  // the session's or the GUI's: never an older row's
   json report = reportWith("pass", 0.51, "pass");
   report["imu_delay_limit_ms"] = 1.5;

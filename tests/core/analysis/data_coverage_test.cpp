@@ -73,14 +73,14 @@ TEST(DataCoverage, CountsLostFramesAndTheLongestGap) {
 TEST(DelayAnalysis, SaysHowATestPointWasAffectedAndStillMeasures) {
   SyntheticSpec s;
   auto d = makeSynthetic(s);
-  const auto undamaged = analyzeTestPoint(d, 1.0, BenchConstants{});
+  const auto undamaged = analyzeTestPoint(d, BenchConstants{});
   ASSERT_TRUE(undamaged.isOk());
   for (std::size_t i = 0; i < 50; ++i) dropTable(d, 1000 + 300 * i, 1);
   dropTable(d, 9000, 10);
   dropImu(d, 2000, 5);
   d.health.duplicateFrames = 7;  // as the decoder reports them for this point
   d.health.checksumFailures = 3;
-  auto r = analyzeTestPoint(d, 1.0, BenchConstants{});
+  auto r = analyzeTestPoint(d, BenchConstants{});
   ASSERT_TRUE(r.isOk()) << r.status().message();
   EXPECT_EQ(r->lostTableFrames, 60u);
   EXPECT_EQ(r->lostImuFrames, 5u);
@@ -110,7 +110,7 @@ TEST(DelayAnalysis, SaysHowATestPointWasAffectedAndStillMeasures) {
 TEST(DelayAnalysis, RefusesAcrossAGapLongerThanAPeriod) {
   auto d = makeSynthetic(SyntheticSpec{});  // 1 Hz, 20 s
   outage(d, 8.0, 1.2);
-  auto r = analyzeTestPoint(d, 1.0, BenchConstants{});
+  auto r = analyzeTestPoint(d, BenchConstants{});
   ASSERT_FALSE(r.isOk());
   EXPECT_EQ(r.status().code(), StatusCode::kInsufficientData);
   EXPECT_NE(r.status().message().find("a gap of 1.20 s without data is longer than one swing period (1.00 s)"),
@@ -122,7 +122,7 @@ TEST(DelayAnalysis, AcceptsAGapShorterThanAPeriod) {
   SyntheticSpec s;
   auto d = makeSynthetic(s);
   outage(d, 8.0, 0.8);
-  auto r = analyzeTestPoint(d, 1.0, BenchConstants{});
+  auto r = analyzeTestPoint(d, BenchConstants{});
   ASSERT_TRUE(r.isOk()) << r.status().message();
   EXPECT_NEAR(r->largestGapS, 0.8, 3e-3);
   EXPECT_NEAR(r->lagMs, s.lagS * 1e3, 3.0 * r->lagStdMs + 1e-6);
@@ -134,7 +134,7 @@ TEST(DelayAnalysis, RefusesWhenGapsLeaveUnderTwoPeriods) {
   auto d = makeSynthetic(s);
   outage(d, 0.5, 0.9);
   outage(d, 2.0, 0.9);
-  auto r = analyzeTestPoint(d, 1.0, BenchConstants{});
+  auto r = analyzeTestPoint(d, BenchConstants{});
   ASSERT_FALSE(r.isOk());
   EXPECT_NE(r.status().message().find("swing periods once gaps are removed"), std::string::npos)
       << r.status().message();
@@ -144,7 +144,7 @@ TEST(DelayAnalysis, RefusesWhenGapsLeaveUnderTwoPeriods) {
 TEST(DelayAnalysis, RefusesWhenMoreThanAFifthOfTheRecordIsMissing) {
   auto d = makeSynthetic(SyntheticSpec{});  // 20 s
   for (double at = 1.0; at < 18.0; at += 2.0) outage(d, at, 0.6);  // 9 x 0.6 s = 27 %
-  auto r = analyzeTestPoint(d, 1.0, BenchConstants{});
+  auto r = analyzeTestPoint(d, BenchConstants{});
   ASSERT_FALSE(r.isOk());
   EXPECT_TRUE(r.status().message().find("% of the record is missing") != std::string::npos &&
               r.status().message().find("at most 20 %") != std::string::npos)

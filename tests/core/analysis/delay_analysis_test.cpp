@@ -99,7 +99,7 @@ TEST(DelayAnalysis, NoiselessDataGiveTheExactLag) {
   s.tableQuantumDeg = 0.0;
   s.pulseEquivalentDeg = 0.0;
   s.trendDegPerS = 2e-3;
-  auto r = analyzeTestPoint(makeSynthetic(s), 1.0, BenchConstants{});
+  auto r = analyzeTestPoint(makeSynthetic(s), BenchConstants{});
   ASSERT_TRUE(r.isOk()) << r.status().toString();
   EXPECT_NEAR(r->lagMs, 0.4658, 1e-6);  // 1 ns
   EXPECT_NEAR(r->joint.trendDegPerS, 2e-3, 1e-9);
@@ -112,7 +112,7 @@ TEST(DelayAnalysis, RecoversLagFrequencyAndAmplitudeUnderQuantisation) {
   s.lagS = 0.5467e-3;
   auto data = makeSynthetic(s);
   data.nominalFrequencyHz = 1.0;
-  auto r = analyzeTestPoint(data, 1.0, BenchConstants{});
+  auto r = analyzeTestPoint(data, BenchConstants{});
   ASSERT_TRUE(r.isOk()) << r.status().toString();
   EXPECT_NEAR(r->lagMs, 0.5467, 3.0 * r->lagStdMs + 1e-6);
   EXPECT_LT(r->lagStdMs, 1e-3);  // under 1 us with quantisation only
@@ -132,7 +132,7 @@ TEST(DelayAnalysis, PhaseFollowsThePaperConvention) {
   SyntheticSpec s;
   s.frequencyHz = 0.5;
   s.durationS = 40.0;
-  auto r = analyzeTestPoint(makeSynthetic(s), 1.0, BenchConstants{});
+  auto r = analyzeTestPoint(makeSynthetic(s), BenchConstants{});
   ASSERT_TRUE(r.isOk());
   const double t0 = -0.3 / (kTwoPi * 0.5);
   EXPECT_NEAR(r->tableFit.phaseMs, t0 * 1e3, 1e-3);
@@ -143,7 +143,7 @@ TEST(DelayAnalysis, RefusesUnderTwoPeriods) {
   SyntheticSpec s;
   s.frequencyHz = 0.1;
   s.durationS = 15.0;
-  auto r = analyzeTestPoint(makeSynthetic(s), 1.0, BenchConstants{});
+  auto r = analyzeTestPoint(makeSynthetic(s), BenchConstants{});
   ASSERT_FALSE(r.isOk());
   EXPECT_EQ(r.status().code(), StatusCode::kInsufficientData);
   EXPECT_NE(r.status().message().find("two whole"), std::string::npos) << r.status().message();
@@ -153,7 +153,7 @@ TEST(DelayAnalysis, RefusesTooFewSamples) {
   TestPointData d;
   d.table.resize(3);
   d.imu.resize(3);
-  auto r = analyzeTestPoint(d, 1.0, BenchConstants{});
+  auto r = analyzeTestPoint(d, BenchConstants{});
   ASSERT_FALSE(r.isOk());
   EXPECT_EQ(r.status().code(), StatusCode::kInsufficientData);
 }
@@ -166,13 +166,13 @@ TEST(DelayAnalysis, AValueBeyondADoublesSquareIsRefusedNotCrashed) {
   for (const double extreme : {1e200, -1e300, 1e155}) {
     auto data = makeSynthetic(SyntheticSpec{});
     data.imu[data.imu.size() / 2].incrementDeg[1] = extreme;
-    auto r = analyzeTestPoint(data, 1.0, BenchConstants{});
+    auto r = analyzeTestPoint(data, BenchConstants{});
     ASSERT_FALSE(r.isOk()) << extreme << ": lag " << r->lagMs << " ± " << r->lagStdMs;
     EXPECT_NE(r.status().message().find("fit"), std::string::npos) << r.status().message();  // which fit, and why
   }
   auto table = makeSynthetic(SyntheticSpec{});
   table.table[100].angleDeg[1] = 1e200;
-  auto r = analyzeTestPoint(table, 1.0, BenchConstants{});
+  auto r = analyzeTestPoint(table, BenchConstants{});
   EXPECT_FALSE(r.isOk());
 }
 
@@ -182,7 +182,7 @@ TEST(DelayAnalysis, APlannedFrequencyBeyondAnySwingIsRefused) {
   for (const double planned : {1e300, 2000.0, -1.0}) {
     auto data = makeSynthetic(SyntheticSpec{});
     data.nominalFrequencyHz = planned;
-    auto r = analyzeTestPoint(data, 1.0, BenchConstants{});
+    auto r = analyzeTestPoint(data, BenchConstants{});
     ASSERT_FALSE(r.isOk()) << planned;
     EXPECT_NE(r.status().message().find("is not within 0 .. 1000 Hz"), std::string::npos) << r.status().message();
   }
@@ -217,13 +217,22 @@ TEST(DelayAnalysis, TheFrequencyTestPoolsOnlyPointsThatPassedTheirChecks) {
   EXPECT_TRUE(frequencyConsistency(points).empty());
 }
 
-TEST(DelayAnalysis, StreamWithoutPulseEquivalentNeedsTheConstant) {
+// A recording is in degrees (protocol::RecordingBuilder refuses a stream
+// whose pulses it cannot convert): the bench's pulse equivalent never
+// rescales it a second time.
+TEST(DelayAnalysis, TheBenchPulseEquivalentNeverRescalesARecording) {
   Recording rec;
-  rec.pulseEquivalentDeg = 0.0;
+  rec.pulseEquivalentDeg = 5e-5;
   rec.testPoints.push_back(makeSynthetic(SyntheticSpec{}));
-  auto r = analyzeRecording(rec, BenchConstants{});
-  ASSERT_FALSE(r.isOk());
-  EXPECT_NE(r.status().message().find("pulse equivalent"), std::string::npos);
+  BenchConstants unset, other;
+  other.pulseEquivalentDeg = 0.25;
+  auto a = analyzeRecording(rec, unset);
+  auto b = analyzeRecording(rec, other);
+  ASSERT_TRUE(a.isOk() && b.isOk());
+  ASSERT_EQ(a->points.size(), 1u);
+  ASSERT_EQ(b->points.size(), 1u);
+  EXPECT_EQ(a->points[0].lagMs, b->points[0].lagMs);
+  EXPECT_EQ(a->points[0].joint.gain, b->points[0].joint.gain);
 }
 
 // Monte Carlo: with angle random walk dominating, the reported standard
@@ -237,7 +246,7 @@ TEST(DelayAnalysis, StandardErrorMatchesMonteCarloScatterAndBound) {
     s.durationS = 20.0;
     s.arwDegPerSqrtS = 0.02 / 60.0;
     s.seed = 1000u + static_cast<unsigned>(i);
-    auto r = analyzeTestPoint(makeSynthetic(s), 1.0, BenchConstants{});
+    auto r = analyzeTestPoint(makeSynthetic(s), BenchConstants{});
     ASSERT_TRUE(r.isOk()) << r.status().toString();
     lags.push_back(r->lagMs);
     stds.push_back(r->lagStdMs);
@@ -262,9 +271,9 @@ TEST(DelayAnalysis, APlanOffByMoreThanOnePercentIsFittedFromTheMeasuredFrequency
   s.frequencyHz = 1.05;
   auto data = makeSynthetic(s);
   data.nominalFrequencyHz = 1.0;
-  const auto planned = analyzeTestPoint(data, 1.0, BenchConstants{});
+  const auto planned = analyzeTestPoint(data, BenchConstants{});
   data.nominalFrequencyHz = 0.0;
-  const auto unplanned = analyzeTestPoint(data, 1.0, BenchConstants{});
+  const auto unplanned = analyzeTestPoint(data, BenchConstants{});
   ASSERT_TRUE(planned.isOk()) << planned.status().toString();
   ASSERT_TRUE(unplanned.isOk()) << unplanned.status().toString();
   EXPECT_NEAR(planned->nominalFrequencyHz, 1.05, 1e-4);

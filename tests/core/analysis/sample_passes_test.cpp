@@ -66,7 +66,7 @@ constexpr std::uint64_t kMaxGyroPasses = 27;
 TEST(SamplePasses, AnalyzeTestPointWalksTheSamplesAFixedNumberOfTimes) {
   const auto data = makeSynthetic(SyntheticSpec{});
   std::optional<Result<TestPointResult>> r;
-  const auto passes = passesOf([&] { r.emplace(analyzeTestPoint(data, 1.0, BenchConstants{})); });
+  const auto passes = passesOf([&] { r.emplace(analyzeTestPoint(data, BenchConstants{})); });
   ASSERT_TRUE(r->isOk()) << r->status().toString();
   ASSERT_EQ((*r)->checks.size(), 5u);  // every check ran (uncertainty_below_bound walks no sample)
   EXPECT_LE(passes.table, kMaxTablePasses) << "table passes";

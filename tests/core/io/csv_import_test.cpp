@@ -77,7 +77,7 @@ TEST(CsvImport, ReadsTheDocumentedLayout) {
   EXPECT_EQ(r.health.tableFrames, 3u);
   EXPECT_EQ(r.health.imuFrames, 2u);
   EXPECT_EQ(r.health.lostFrames, 1u);
-  const auto c = analysis::benchConstantsOf(s->info.bench);
+  const auto c = s->info.bench;
   EXPECT_DOUBLE_EQ(c.tableReadDelayMs, 0.05);
   EXPECT_DOUBLE_EQ(c.boardDelayMs, 0.28);
 }
@@ -206,7 +206,7 @@ double importedLagMs(const std::string& dir, std::vector<std::string>* notes = n
   EXPECT_TRUE(s.isOk()) << s.status().toString();
   if (!s) return NAN;
   if (notes) *notes = s->notes;
-  auto report = analysis::analyzeRecording(s->recording, analysis::benchConstantsOf(s->info.bench));
+  auto report = analysis::analyzeRecording(s->recording, s->info.bench);
   EXPECT_TRUE(report.isOk()) << report.status().toString();
   return report ? report->points.at(0).lagMs : NAN;
 }
@@ -273,7 +273,7 @@ TEST(CsvImportRates, AConventionGivenBesideTheFilesIsAppliedAndRecorded) {
   ASSERT_TRUE(s.isOk()) << s.status().message();
   EXPECT_EQ(s->info.imported.gyroRateConvention, "frame_average");
   EXPECT_EQ(s->info.imported.gyroFramePeriodMs, 2.0);
-  auto report = analysis::analyzeRecording(s->recording, analysis::benchConstantsOf(s->info.bench));
+  auto report = analysis::analyzeRecording(s->recording, s->info.bench);
   ASSERT_TRUE(report.isOk());
   EXPECT_NEAR(report->points.at(0).lagMs, 0.5, 1e-4);
 
@@ -325,14 +325,22 @@ TEST(CsvImportRates, AColumnThatLooksLikeARatePointsToTheRules) {
   EXPECT_NE(s.status().message().find("x_rate_deg_s"), std::string::npos) << s.status().message();
 }
 
-TEST(CsvImport, AStatedGyroSignNegatesThatAxisWhereTheDataEnter) {
+// The signs go with the session's bench constants, and the analysis negates
+// the axis where the increments enter, as for a live session; the data stay
+// as recorded (an export writes them back unchanged).
+TEST(CsvImport, AStatedGyroSignGoesWithTheBenchConstants) {
   const std::string meta = R"({"bench": {"table_read_delay_ms": 0.05, "board_delay_ms": 0.28,
     "pulse_equivalent_deg": 5e-5, "gyro_sign": {"x": -1}}, "test_points": [{"axis": "x"}]})";
   auto s = importCsvDirectory(goodDir(meta.c_str()));
   ASSERT_TRUE(s.isOk()) << s.status().toString();
-  EXPECT_EQ(s->recording.testPoints.at(0).imu.at(0).incrementDeg[0], -0.001);
+  EXPECT_EQ(s->recording.testPoints.at(0).imu.at(0).incrementDeg[0], 0.001);
+  EXPECT_EQ(s->info.bench.gyroSign, (std::array<int, kAxisCount>{-1, 1, 1}));
   ASSERT_EQ(s->notes.size(), 1u);
   EXPECT_NE(s->notes[0].find("X axis mounted the other way round"), std::string::npos);
+  // Without the key every axis is +1.
+  auto plain = importCsvDirectory(goodDir());
+  ASSERT_TRUE(plain.isOk());
+  EXPECT_EQ(plain->info.bench.gyroSign, (std::array<int, kAxisCount>{1, 1, 1}));
   auto bad = importCsvDirectory(goodDir(R"({"bench": {"table_read_delay_ms": 0.05, "board_delay_ms": 0.28,
     "pulse_equivalent_deg": 5e-5, "gyro_sign": {"x": -2}}, "test_points": [{"axis": "x"}]})"));
   ASSERT_FALSE(bad.isOk());
@@ -520,7 +528,7 @@ TEST(CsvImport, AnotherBenchWithOnlyTheXAxisIsAnalysed) {
   // import says only what the user must know.
   EXPECT_TRUE(s->notes.empty()) << s->notes.front();
 
-  auto report = analysis::analyzeRecording(s->recording, analysis::benchConstantsOf(s->info.bench));
+  auto report = analysis::analyzeRecording(s->recording, s->info.bench);
   ASSERT_TRUE(report.isOk()) << report.status().toString();
   const auto& r = report->points.at(0);
   EXPECT_NEAR(r.nominalFrequencyHz, 1.0, 1e-3);  // estimated from the table: metadata gave none
@@ -702,26 +710,37 @@ TEST(CsvExport, CreatesNestedDirectories) {
   EXPECT_EQ(back->info.imuSerial, "SN 42");
 }
 
-TEST(CsvExport, RawPulsesAreWrittenInDegrees) {
+// A recording is in degrees (protocol::RecordingBuilder): they are written
+// untouched, with the pulse equivalent the recording states (not the bench
+// constant, which only stands in for a stream that states none) and the
+// session's gyro signs; all of it reads back.
+TEST(CsvExport, TheRecordingsPulseEquivalentAndTheGyroSignsRoundTrip) {
   auto s = importCsvDirectory(goodDir());
   ASSERT_TRUE(s.isOk());
-  Recording raw = s->recording;
-  raw.pulseEquivalentDeg = 0.0;  // as decoded from a stream that never stated it
-  for (auto& i : raw.testPoints[0].imu) i.incrementDeg = {20.0, -3.0, 0.0};
+  Recording rec = s->recording;
+  rec.pulseEquivalentDeg = 1e-4;
+  for (auto& i : rec.testPoints[0].imu) i.incrementDeg = {20.0 * 1e-4, -3.0 * 1e-4, 0.0};
   SessionInfo info = s->info;
-  info.bench.pulseEquivalentDeg = 1e-4;
+  info.bench.pulseEquivalentDeg = 7e-5;
+  info.bench.gyroSign = {1, -1, -1};
   const std::string dir = freshDir("-out");
-  ASSERT_TRUE(exportCsv(dir, info, raw, nullptr).isOk());
+  ASSERT_TRUE(exportCsv(dir, info, rec, nullptr).isOk());
   auto back = importCsvDirectory(dir);
   ASSERT_TRUE(back.isOk()) << back.status().toString();
   EXPECT_DOUBLE_EQ(back->recording.pulseEquivalentDeg, 1e-4);
-  EXPECT_DOUBLE_EQ(back->recording.testPoints[0].imu[0].incrementDeg[0], 20.0 * 1e-4);
-  EXPECT_DOUBLE_EQ(back->recording.testPoints[0].imu[0].incrementDeg[1], -3.0 * 1e-4);
+  EXPECT_DOUBLE_EQ(back->info.bench.pulseEquivalentDeg, 1e-4);
+  EXPECT_EQ(back->recording.testPoints[0].imu[0].incrementDeg[0], 20.0 * 1e-4);
+  EXPECT_EQ(back->recording.testPoints[0].imu[0].incrementDeg[1], -3.0 * 1e-4);
+  EXPECT_EQ(back->info.bench.gyroSign, (std::array<int, kAxisCount>{1, -1, -1}));
 
-  info.bench.pulseEquivalentDeg = 0.0;
-  const Status st = exportCsv(freshDir("-none"), info, raw, nullptr);
+  // A recording without gyro samples states no pulse equivalent: the
+  // metadata could not say what the (absent) increments were.
+  Recording tableOnly = rec;
+  tableOnly.pulseEquivalentDeg = 0.0;
+  tableOnly.testPoints[0].imu.clear();
+  const Status st = exportCsv(freshDir("-none"), info, tableOnly, nullptr);
   EXPECT_EQ(st.code(), StatusCode::kInvalidArgument);
-  EXPECT_NE(st.message().find("raw gyro pulses"), std::string::npos);
+  EXPECT_NE(st.message().find("states no gyro pulse equivalent"), std::string::npos);
 }
 
 TEST(CsvExport, NumbersAreShortestRoundTripText) {

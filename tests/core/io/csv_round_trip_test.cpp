@@ -53,7 +53,7 @@ void roundTrip(const model::SimConfig& config, const TestPlan& plan) {
   info.createdUtc = "2026-11-22T02:45:00Z";
   info.notes = "round trip, \"quoted\" and, commas";
   info.plan = plan;
-  const auto constants = analysis::benchConstantsOf(info.bench);
+  const auto constants = info.bench;
   auto original = analysis::analyzeRecording(*rec, constants);
   ASSERT_TRUE(original.isOk()) << original.status().toString();
 
@@ -79,7 +79,7 @@ void roundTrip(const model::SimConfig& config, const TestPlan& plan) {
   EXPECT_EQ(back.bench.boardDelayMs, info.bench.boardDelayMs);
   EXPECT_EQ(imported->recording.health.imuFrames, rec->health.imuFrames);
 
-  auto again = analysis::analyzeRecording(imported->recording, analysis::benchConstantsOf(back.bench));
+  auto again = analysis::analyzeRecording(imported->recording, back.bench);
   ASSERT_TRUE(again.isOk()) << again.status().toString();
 
   // The text report, every printed digit, with the same context.

@@ -123,8 +123,11 @@ TEST(RecordingBuilder, NotFollowingMarkersKeepsTheWholeStreamAsOneTestPoint) {
   RecordingBuilder marked, whole(false);
   marked.add(frames);
   whole.add(frames);
-  const auto byMarkers = marked.finish(decoder.health());
-  const auto all = whole.finish(decoder.health());
+  const auto byMarkersResult = marked.finish(decoder.health());
+  const auto allResult = whole.finish(decoder.health());
+  ASSERT_TRUE(byMarkersResult.isOk() && allResult.isOk());
+  const Recording& byMarkers = *byMarkersResult;
+  const Recording& all = *allResult;
   ASSERT_EQ(byMarkers.testPoints.size(), 1u);
   EXPECT_EQ(byMarkers.testPoints[0].table.size(), 1u);
   ASSERT_EQ(all.testPoints.size(), 1u);
@@ -166,7 +169,7 @@ TEST(RecordingBuilder, TestPointsWithoutSamplesAreDropped) {
 
 TEST(RecordingBuilder, WithoutRecordingStatusTheWholeStreamIsOneTestPointOnTheLargestSwing) {
   StreamBuilder s;
-  // No status at all: 10 MHz default, pulse equivalent unknown.
+  // No status at all: 10 MHz default, pulse equivalent from the bench.
   for (int i = 0; i < 100; ++i) {
     const auto t = static_cast<std::uint32_t>(5000 + i * 10000);
     const double phase = 2.0 * std::numbers::pi * i / 50.0;
@@ -174,7 +177,7 @@ TEST(RecordingBuilder, WithoutRecordingStatusTheWholeStreamIsOneTestPointOnTheLa
                        static_cast<std::int32_t>(-3e6 * std::sin(phase)), 1000000));
     if (i % 2 == 0) s.imu(t + 3000, imuWith(7, -9, 0));
   }
-  auto rec = decodeRecording(s.bytes);
+  auto rec = decodeRecording(s.bytes, 2e-4);
   ASSERT_TRUE(rec.isOk()) << rec.status().toString();
   ASSERT_EQ(rec->testPoints.size(), 1u);
   const auto& p = rec->testPoints[0];
@@ -183,14 +186,52 @@ TEST(RecordingBuilder, WithoutRecordingStatusTheWholeStreamIsOneTestPointOnTheLa
   EXPECT_EQ(p.nominalFrequencyHz, 0.0);
   EXPECT_EQ(p.nominalAmplitudeDeg, 0.0);
   EXPECT_EQ(rec->counterHz, 10e6);
-  EXPECT_EQ(rec->pulseEquivalentDeg, 0.0);
+  EXPECT_EQ(rec->pulseEquivalentDeg, 2e-4);
   ASSERT_EQ(p.table.size(), 100u);
   ASSERT_EQ(p.imu.size(), 50u);
   EXPECT_DOUBLE_EQ(p.table[1].timeS, 0.001);
   EXPECT_DOUBLE_EQ(p.imu[0].timeS, 0.0003);
-  // Unknown pulse equivalent: increments stay in raw pulses.
-  EXPECT_EQ(p.imu[0].incrementDeg[0], 7.0);
-  EXPECT_EQ(p.imu[0].incrementDeg[1], -9.0);
+  // The stream states no pulse equivalent: the bench's turns pulses into degrees.
+  EXPECT_DOUBLE_EQ(p.imu[0].incrementDeg[0], 7 * 2e-4);
+  EXPECT_DOUBLE_EQ(p.imu[0].incrementDeg[1], -9 * 2e-4);
+}
+
+// Raw pulse counts never leave the builder: a stream that does not state
+// its pulse equivalent, read without a bench constant, is refused in words
+// that say what to do.
+TEST(RecordingBuilder, AStreamWithoutAPulseEquivalentAndNoBenchConstantIsRefused) {
+  StreamBuilder s;
+  s.table(1000, tableAt(1)).imu(1500, imuWith(7)).table(2000, tableAt(2));
+  auto rec = decodeRecording(s.bytes);
+  ASSERT_FALSE(rec.isOk());
+  EXPECT_EQ(rec.status().code(), StatusCode::kInvalidArgument);
+  EXPECT_EQ(rec.status().message(),
+            "the stream does not state its gyro pulse equivalent (degrees per pulse): give --pulse-equivalent-deg "
+            "or set it in the bench constants");
+  // A pulse equivalent that is no number is none.
+  EXPECT_FALSE(decodeRecording(s.bytes, std::nan("")).isOk());
+  EXPECT_FALSE(decodeRecording(s.bytes, -1e-4).isOk());
+  // The builder is reset after refusing: the next stream starts afresh.
+  Decoder decoder;
+  std::vector<DecodedFrame> frames;
+  decoder.push(s.bytes, frames);
+  RecordingBuilder b;
+  b.add(frames);
+  EXPECT_FALSE(b.finish(decoder.health()).isOk());
+  EXPECT_EQ(b.framesAdded(), 0u);
+  b.add(frames);
+  auto again = b.finish(decoder.health(), 1e-4);
+  ASSERT_TRUE(again.isOk()) << again.status().toString();
+  EXPECT_DOUBLE_EQ(again->testPoints.at(0).imu.at(0).incrementDeg[0], 7e-4);
+  // A stream of table frames only needs no pulse equivalent.
+  StreamBuilder tableOnly;
+  tableOnly.table(1000, tableAt(1));
+  Decoder d2;
+  std::vector<DecodedFrame> f2;
+  d2.push(tableOnly.bytes, f2);
+  RecordingBuilder t;
+  t.add(f2);
+  EXPECT_TRUE(t.finish(d2.health()).isOk());
 }
 
 TEST(RecordingBuilder, FallbackTakesPulseEquivalentAndCounterFromAnIdleStatus) {
@@ -199,7 +240,8 @@ TEST(RecordingBuilder, FallbackTakesPulseEquivalentAndCounterFromAnIdleStatus) {
   auto idle = statusFor(kNoTestPoint, TestPhase::kIdle);
   idle.pulseEquivalentDeg = 1e-4;
   s.status(500, idle).table(1000, tableAt(0, 0, -1)).imu(1100, imuWith(6));
-  auto rec = decodeRecording(s.bytes);
+  // The stream's statement wins over the bench's constant.
+  auto rec = decodeRecording(s.bytes, 3e-3);
   ASSERT_TRUE(rec.isOk()) << rec.status().toString();
   ASSERT_EQ(rec->testPoints.size(), 1u);
   const auto& p = rec->testPoints[0];
@@ -221,11 +263,11 @@ TEST(RecordingBuilder, FinishResetsTheBuilder) {
   RecordingBuilder b;
   b.add(frames);
   EXPECT_EQ(b.framesAdded(), 3u);
-  const Recording first = b.finish(d.health());
+  const Recording first = *b.finish(d.health());
   EXPECT_EQ(first.testPoints.size(), 1u);
   EXPECT_EQ(first.health.tableFrames, 1u);
   EXPECT_EQ(b.framesAdded(), 0u);
-  const Recording empty = b.finish();
+  const Recording empty = *b.finish();
   EXPECT_TRUE(empty.testPoints.empty());
 }
 
@@ -295,10 +337,10 @@ TEST(RecordingBuilder, EachTestPointCountsTheDamageMetWhileItWasRecorded) {
   RecordingBuilder builder;
   std::vector<DecodedFrame> frames;
   decoder.push(s.bytes, frames);
-  const Recording rec = builder.finish(decoder.health());
+  const Recording rec = *builder.finish(decoder.health());
   ASSERT_TRUE(rec.testPoints.empty()) << "finish() before add() gives nothing";
   builder.add(frames);
-  const Recording r = builder.finish(decoder.health());
+  const Recording r = *builder.finish(decoder.health());
   ASSERT_EQ(r.testPoints.size(), 2u);
   const auto& a = r.testPoints[0].health;
   const auto& b = r.testPoints[1].health;

@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <bit>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -318,6 +319,12 @@ TEST(SessionFaults, TwoRecordersRacingForOneFileNeverHarmTheWinner) {
 
 // A complete session with stored samples; `sql` then edits it as an attacker
 // would (SQLite and the blob checksums stay valid).
+// What turns a session of this schema into one written before schema 4.
+// What schema 4 added: the gyro signs and the import settings.
+constexpr const char* kDropGyroSigns =
+    " ALTER TABLE session DROP COLUMN gyro_sign_x; ALTER TABLE session DROP COLUMN gyro_sign_y;"
+    " ALTER TABLE session DROP COLUMN gyro_sign_z; ALTER TABLE session DROP COLUMN import_json;";
+
 std::string craftedSession(const ScratchDir& dir, const std::string& name, const std::string& sql) {
   const std::string path = dir.file(name);
   {
@@ -531,11 +538,12 @@ TEST(SessionFaults, ADamagedStoredResultIsMarkedNotTrusted) {
 
 TEST(SessionFaults, ASchemaOneSessionIsReadAndMigratedWhenAResultIsAdded) {
   ScratchDir dir;
-  // Schema 1 as the first fogbench wrote it: no checksum columns, no table log.
+  // Schema 1 as the first fogbench wrote it: no checksum columns, no table
+  // log, no gyro signs.
   const auto path = craftedSession(dir, "v1.fbs",
-                                   "DROP TABLE table_log; ALTER TABLE session DROP COLUMN import_json;"
-                                   " ALTER TABLE session DROP COLUMN metadata_fnv1a;"
-                                   " ALTER TABLE result DROP COLUMN fnv1a; PRAGMA user_version = 1;");
+                                   "DROP TABLE table_log; ALTER TABLE session DROP COLUMN metadata_fnv1a;"
+                                   " ALTER TABLE result DROP COLUMN fnv1a;" + std::string(kDropGyroSigns) +
+                                       " PRAGMA user_version = 1;");
   {
     auto r = SessionReader::open(path);
     ASSERT_TRUE(r.isOk()) << r.status().message();
@@ -548,6 +556,7 @@ TEST(SessionFaults, ASchemaOneSessionIsReadAndMigratedWhenAResultIsAdded) {
   auto r = SessionReader::open(path);
   ASSERT_TRUE(r.isOk()) << r.status().message();
   EXPECT_EQ((*r)->schemaVersion(), 4);  // 1 -> 2 -> 3 -> 4
+  EXPECT_EQ((*r)->info().bench.gyroSign, (std::array<int, kAxisCount>{1, 1, 1}));
   auto results = (*r)->results();
   ASSERT_TRUE(results.isOk());
   ASSERT_EQ(results->size(), 1u);
@@ -556,12 +565,94 @@ TEST(SessionFaults, ASchemaOneSessionIsReadAndMigratedWhenAResultIsAdded) {
   EXPECT_TRUE((*r)->tableLog()->empty());
 }
 
+// metadata_fnv1a as schema 2 and 3 computed it (docs/sessions.md): FNV-1a
+// 64 over each metadata column's SQLite type and bytes, written out here
+// independently of the reader's code.
+std::int64_t schemaThreeMetadataChecksum(sqlite3* db) {
+  sqlite3_stmt* s = nullptr;
+  EXPECT_EQ(sqlite3_prepare_v2(db,
+                               "SELECT operator, imu_model, imu_serial, source, software_version, created_utc, notes,"
+                               " table_read_delay_ms, table_read_delay_std_ms, board_delay_ms, board_delay_std_ms,"
+                               " latitude_deg, pulse_equivalent_deg, counter_hz, counter_bits, test_plan_json, state,"
+                               " incomplete_reason, finished_utc FROM session WHERE id = 1",
+                               -1, &s, nullptr),
+            SQLITE_OK);
+  EXPECT_EQ(sqlite3_step(s), SQLITE_ROW);
+  std::uint64_t h = 0xcbf29ce484222325ULL;
+  auto add = [&h](const void* data, std::size_t n) {
+    const auto* p = static_cast<const std::uint8_t*>(data);
+    for (std::size_t i = 0; i < n; ++i) h = (h ^ p[i]) * 0x100000001b3ULL;
+  };
+  auto add64 = [&add](std::uint64_t bits) {
+    std::uint8_t b[8];
+    for (int i = 0; i < 8; ++i) b[i] = static_cast<std::uint8_t>(bits >> (8 * i));
+    add(b, 8);
+  };
+  for (int i = 0; i < sqlite3_column_count(s); ++i) {
+    const auto type = static_cast<std::uint8_t>(sqlite3_column_type(s, i));
+    add(&type, 1);
+    if (type == SQLITE_INTEGER) add64(static_cast<std::uint64_t>(sqlite3_column_int64(s, i)));
+    else if (type == SQLITE_FLOAT) add64(std::bit_cast<std::uint64_t>(sqlite3_column_double(s, i)));
+    else if (type != SQLITE_NULL) {
+      const auto* text = sqlite3_column_text(s, i);
+      const auto n = static_cast<std::size_t>(sqlite3_column_bytes(s, i));
+      add64(n);
+      add(text, n);
+    }
+  }
+  sqlite3_finalize(s);
+  return std::bit_cast<std::int64_t>(h);
+}
+
+TEST(SessionFaults, ASchemaThreeSessionWithoutGyroSignsReadsPlusOneAndKeepsItsChecksumWhenMigrated) {
+  ScratchDir dir;
+  // Schema 3 as fogbench wrote it before the gyro signs were kept, with the
+  // metadata checksum schema 3 computed.
+  const auto path = craftedSession(dir, "v3.fbs", std::string(kDropGyroSigns) + " PRAGMA user_version = 3;");
+  {
+    sqlite3* db = nullptr;
+    ASSERT_EQ(sqlite3_open_v2(path.c_str(), &db, SQLITE_OPEN_READWRITE, nullptr), SQLITE_OK);
+    const std::string sql = "UPDATE session SET metadata_fnv1a = " + std::to_string(schemaThreeMetadataChecksum(db));
+    ASSERT_EQ(sqlite3_exec(db, sql.c_str(), nullptr, nullptr, nullptr), SQLITE_OK);
+    sqlite3_close(db);
+  }
+  {
+    auto r = SessionReader::open(path);
+    ASSERT_TRUE(r.isOk()) << r.status().message();
+    EXPECT_EQ((*r)->schemaVersion(), 3);
+    EXPECT_EQ((*r)->info().bench.gyroSign, (std::array<int, kAxisCount>{1, 1, 1}));
+    EXPECT_TRUE((*r)->recording().isOk());
+  }
+  ASSERT_TRUE(addResult(path, "{}", R"({"lag_ms":0.466})").isOk());
+  // Still checked, now over the signs too: a flipped sign is damage.
+  auto r = SessionReader::open(path);
+  ASSERT_TRUE(r.isOk()) << r.status().message();
+  EXPECT_EQ((*r)->schemaVersion(), 4);
+  EXPECT_EQ((*r)->info().bench.gyroSign, (std::array<int, kAxisCount>{1, 1, 1}));
+  EXPECT_TRUE((*r)->info().imported.empty());
+  {
+    sqlite3* db = nullptr;
+    ASSERT_EQ(sqlite3_open_v2(path.c_str(), &db, SQLITE_OPEN_READONLY, nullptr), SQLITE_OK);
+    sqlite3_stmt* s = nullptr;
+    ASSERT_EQ(sqlite3_prepare_v2(db, "SELECT metadata_fnv1a IS NOT NULL FROM session", -1, &s, nullptr), SQLITE_OK);
+    ASSERT_EQ(sqlite3_step(s), SQLITE_ROW);
+    EXPECT_EQ(sqlite3_column_int(s, 0), 1);
+    sqlite3_finalize(s);
+    sqlite3_close(db);
+  }
+  auto results = (*r)->results();
+  ASSERT_TRUE(results.isOk());
+  ASSERT_EQ(results->size(), 1u);
+  EXPECT_TRUE(results->front().intact);
+}
+
 TEST(SessionFaults, ASchemaTwoSessionIsReadWithoutATableLogAndMigratedWhenOneIsAdded) {
   ScratchDir dir;
-  // Schema 2 as fogbench wrote it before the table log.
+  // Schema 2 as fogbench wrote it before the table log (and the gyro signs,
+  // whose columns its metadata checksum never covered: unchecked here).
   const auto path = craftedSession(dir, "v2.fbs",
-                                   "DROP TABLE table_log; ALTER TABLE session DROP COLUMN import_json;"
-                                   " PRAGMA user_version = 2;");
+                                   "DROP TABLE table_log;" + std::string(kDropGyroSigns) +
+                                       " UPDATE session SET metadata_fnv1a = NULL; PRAGMA user_version = 2;");
   {
     auto r = SessionReader::open(path);
     ASSERT_TRUE(r.isOk()) << r.status().message();
@@ -574,7 +665,7 @@ TEST(SessionFaults, ASchemaTwoSessionIsReadWithoutATableLogAndMigratedWhenOneIsA
   ASSERT_TRUE(appendTableLog(path, {{1.5, "command", "AXIS:X:STOP"}, {1.6, "status", "X rest"}}).isOk());
   auto r = SessionReader::open(path);
   ASSERT_TRUE(r.isOk()) << r.status().message();
-  EXPECT_EQ((*r)->schemaVersion(), 4);  // 2 -> 3 -> 4
+  EXPECT_EQ((*r)->schemaVersion(), 4);
   auto log = (*r)->tableLog();
   ASSERT_TRUE(log.isOk());
   ASSERT_EQ(log->size(), 2u);
@@ -583,25 +674,6 @@ TEST(SessionFaults, ASchemaTwoSessionIsReadWithoutATableLogAndMigratedWhenOneIsA
   EXPECT_DOUBLE_EQ((*log)[1].elapsedS, 1.6);
   EXPECT_TRUE((*r)->recording().isOk());
   EXPECT_TRUE((*r)->results().isOk());
-}
-
-// Schema 3 (before the import settings): read as it is, its metadata checksum
-// holds; migrated when a result is added, and the checksum still holds.
-TEST(SessionFaults, ASchemaThreeSessionIsReadAndMigratedWithItsChecksumIntact) {
-  ScratchDir dir;
-  const auto path = craftedSession(dir, "v3.fbs", "ALTER TABLE session DROP COLUMN import_json; PRAGMA user_version = 3;");
-  {
-    auto r = SessionReader::open(path);
-    ASSERT_TRUE(r.isOk()) << r.status().message();
-    EXPECT_EQ((*r)->schemaVersion(), 3);
-    EXPECT_TRUE((*r)->info().imported.empty());
-  }
-  ASSERT_TRUE(addResult(path, "{}", R"({"lag_ms":0.466})").isOk());
-  auto r = SessionReader::open(path);
-  ASSERT_TRUE(r.isOk()) << r.status().message();
-  EXPECT_EQ((*r)->schemaVersion(), 4);
-  EXPECT_TRUE((*r)->info().imported.empty());
-  EXPECT_TRUE((*r)->recording().isOk());
 }
 
 // An imported session keeps what the import applied; a flipped byte in it

@@ -102,6 +102,72 @@ TEST(SessionFile, RoundTripKeepsMetadataRawBytesAndSamplesExactly) {
   EXPECT_FALSE(fs::exists(path + "-shm"));
 }
 
+// The gyro signs are bench constants: stored with the session, read back.
+TEST(SessionFile, TheGyroSignsRoundTripWithTheBenchConstants) {
+  ScratchDir dir;
+  SessionInfo info = fullInfo();
+  info.bench.gyroSign = {-1, 1, -1};
+  const auto path = dir.file("signs.fbs");
+  {
+    auto w = SessionWriter::create(path, info);
+    ASSERT_TRUE(w.isOk()) << w.status().message();
+    ASSERT_TRUE((*w)->finish(true, "").isOk());
+  }
+  auto r = SessionReader::open(path);
+  ASSERT_TRUE(r.isOk()) << r.status().message();
+  EXPECT_EQ((*r)->info().bench.gyroSign, (std::array<int, kAxisCount>{-1, 1, -1}));
+  // The metadata checksum covers them: one flipped sign is damage, not a new sign.
+  sqlite3* db = nullptr;
+  ASSERT_EQ(sqlite3_open_v2(path.c_str(), &db, SQLITE_OPEN_READWRITE, nullptr), SQLITE_OK);
+  ASSERT_EQ(sqlite3_exec(db, "UPDATE session SET gyro_sign_y = -1", nullptr, nullptr, nullptr), SQLITE_OK);
+  sqlite3_close(db);
+  auto damaged = SessionReader::open(path);
+  ASSERT_FALSE(damaged.isOk());
+  EXPECT_NE(damaged.status().message().find("fails its checksum"), std::string::npos) << damaged.status().message();
+}
+
+// Sessions stored before the builder resolved the pulse equivalent kept raw
+// pulse counts (pulse_equivalent_deg 0) for a stream that did not state it;
+// they read in degrees through the session's bench constant, as they were
+// analysed, or say what to do when there is none.
+TEST(SessionFile, StoredRawPulsesOfAnOlderSessionReadInDegrees) {
+  ScratchDir dir;
+  Recording pulses = *protocol::decodeRecording(fog::test::shortRun().bytes);
+  const double stated = pulses.pulseEquivalentDeg;
+  ASSERT_GT(stated, 0.0);
+  for (auto& tp : pulses.testPoints)
+    for (auto& m : tp.imu)
+      for (double& v : m.incrementDeg) v = std::round(v / stated);
+  pulses.pulseEquivalentDeg = 0.0;
+  auto write = [&](const std::string& name, double benchPulse) {
+    SessionInfo info = fullInfo();
+    info.bench.pulseEquivalentDeg = benchPulse;
+    const auto path = dir.file(name);
+    auto w = SessionWriter::create(path, info);
+    EXPECT_TRUE(w.isOk());
+    EXPECT_TRUE((*w)->storeRecording(pulses).isOk());
+    EXPECT_TRUE((*w)->finish(true, "").isOk());
+    return path;
+  };
+  auto r = SessionReader::open(write("old.fbs", 2.5e-5));
+  ASSERT_TRUE(r.isOk()) << r.status().message();
+  auto rec = (*r)->recording();
+  ASSERT_TRUE(rec.isOk()) << rec.status().message();
+  EXPECT_EQ(rec->pulseEquivalentDeg, 2.5e-5);
+  const auto& m = rec->testPoints.at(0).imu.at(10);
+  EXPECT_EQ(m.incrementDeg[0], pulses.testPoints.at(0).imu.at(10).incrementDeg[0] * 2.5e-5);
+  // Given one (--pulse-equivalent-deg), it stands in for the session's.
+  EXPECT_EQ((*r)->recording(1e-4)->pulseEquivalentDeg, 1e-4);
+
+  auto none = SessionReader::open(write("none.fbs", 0.0));
+  ASSERT_TRUE(none.isOk());
+  auto refused = (*none)->recording();
+  ASSERT_FALSE(refused.isOk());
+  EXPECT_EQ(refused.status().code(), StatusCode::kInvalidArgument);
+  EXPECT_NE(refused.status().message().find("give --pulse-equivalent-deg or set it in the bench constants"),
+            std::string::npos);
+}
+
 TEST(SessionFile, EmptyMetadataGetsCreationTimeAndSoftwareVersion) {
   ScratchDir dir;
   const auto path = dir.file("b.fbs");
@@ -147,7 +213,7 @@ TEST(SessionFile, AnalysisOfTheReopenedSessionIsBitIdentical) {
   const auto rawOnly = writeSession(dir, "raw-only.fbs", false);
   const auto memory = protocol::decodeRecording(fog::test::shortRun().bytes);
   ASSERT_TRUE(memory.isOk());
-  const auto expected = analysis::analyzeRecording(*memory, analysis::BenchConstants{});
+  const auto expected = analysis::analyzeRecording(*memory, BenchConstants{});
   ASSERT_TRUE(expected.isOk()) << expected.status().message();
   for (const auto& path : {withSamples, rawOnly}) {
     auto r = SessionReader::open(path);
@@ -155,7 +221,7 @@ TEST(SessionFile, AnalysisOfTheReopenedSessionIsBitIdentical) {
     EXPECT_EQ((*r)->hasStoredRecording(), path == withSamples);
     auto rec = (*r)->recording();
     ASSERT_TRUE(rec.isOk()) << rec.status().message();
-    const auto got = analysis::analyzeRecording(*rec, analysis::BenchConstants{});
+    const auto got = analysis::analyzeRecording(*rec, BenchConstants{});
     ASSERT_TRUE(got.isOk()) << got.status().message();
     ASSERT_EQ(got->points.size(), expected->points.size());
     for (std::size_t i = 0; i < got->points.size(); ++i) {

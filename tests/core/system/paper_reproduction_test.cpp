@@ -25,7 +25,7 @@ Measured measure(const model::SimConfig& config, const TestPlan& plan) {
   EXPECT_TRUE(run.isOk()) << run.status().toString();
   auto rec = protocol::decodeRecording(run->bytes);
   EXPECT_TRUE(rec.isOk()) << rec.status().toString();
-  auto report = analysis::analyzeRecording(*rec, analysis::BenchConstants{});
+  auto report = analysis::analyzeRecording(*rec, BenchConstants{});
   EXPECT_TRUE(report.isOk()) << report.status().toString();
   return {report->points.at(0), run->truth.at(0), rec->health};
 }
@@ -89,7 +89,7 @@ TEST(PaperReproduction, PureDelayIsConsistentAcrossFrequencies) {
   ASSERT_TRUE(run.isOk());
   auto rec = protocol::decodeRecording(run->bytes);
   ASSERT_TRUE(rec.isOk());
-  auto report = analysis::analyzeRecording(*rec, analysis::BenchConstants{});
+  auto report = analysis::analyzeRecording(*rec, BenchConstants{});
   ASSERT_TRUE(report.isOk()) << report.status().toString();
   ASSERT_EQ(report->points.size(), 2u);
   ASSERT_EQ(report->consistency.size(), 1u);
@@ -110,7 +110,7 @@ TEST(PaperReproduction, FirstOrderLagIsNotAPureDelay) {
   ASSERT_TRUE(run.isOk());
   auto rec = protocol::decodeRecording(run->bytes);
   ASSERT_TRUE(rec.isOk());
-  auto report = analysis::analyzeRecording(*rec, analysis::BenchConstants{});
+  auto report = analysis::analyzeRecording(*rec, BenchConstants{});
   ASSERT_TRUE(report.isOk()) << report.status().toString();
   ASSERT_EQ(report->consistency.size(), 1u);
   EXPECT_FALSE(report->consistency[0].consistentWithPureDelay);

@@ -81,7 +81,7 @@ TEST(StaticSegment, SimulatorHoldsTheTableAndTheGyroSeesBiasAndEarthRate) {
 }
 
 TEST(StaticSegment, DelayAnalysisSkipsStaticSegmentsWithoutFailures) {
-  auto report = analysis::analyzeRecording(decoded().rec, analysis::BenchConstants{});
+  auto report = analysis::analyzeRecording(decoded().rec, BenchConstants{});
   ASSERT_TRUE(report.isOk()) << report.status().toString();
   ASSERT_EQ(report->points.size(), 1u);
   EXPECT_EQ(report->points[0].index, 1);
@@ -105,7 +105,7 @@ TEST(StaticSegment, OnlyStaticSegmentsSayUseTheNoiseCommand) {
   ASSERT_TRUE(run.isOk());
   auto rec = protocol::decodeRecording(run->bytes);
   ASSERT_TRUE(rec.isOk()) << rec.status().toString();
-  auto report = analysis::analyzeRecording(*rec, analysis::BenchConstants{});
+  auto report = analysis::analyzeRecording(*rec, BenchConstants{});
   ASSERT_FALSE(report.isOk());
   EXPECT_EQ(report.status().code(), StatusCode::kInsufficientData);
   EXPECT_NE(report.status().message().find("fogbench-cli noise"), std::string::npos);
@@ -151,7 +151,7 @@ TEST(StaticSegment, CsvExportAndImportKeepTheKind) {
   const auto dir = scratch("csv");
   SessionInfo info;
   info.plan = mixedPlan();
-  auto report = analysis::analyzeRecording(decoded().rec, analysis::benchConstantsOf(info.bench));
+  auto report = analysis::analyzeRecording(decoded().rec, info.bench);
   ASSERT_TRUE(report.isOk());
   ASSERT_TRUE(io::exportCsv(dir.string(), info, decoded().rec, &*report, true).isOk());
   auto back = io::importCsvDirectory(dir.string());
@@ -163,7 +163,7 @@ TEST(StaticSegment, CsvExportAndImportKeepTheKind) {
   ASSERT_EQ(back->recording.testPoints.size(), 3u);
   EXPECT_EQ(back->recording.testPoints[0].kind, TestPointKind::kStatic);
   EXPECT_EQ(back->recording.testPoints[1].kind, TestPointKind::kSwing);
-  auto again = analysis::analyzeRecording(back->recording, analysis::benchConstantsOf(back->info.bench));
+  auto again = analysis::analyzeRecording(back->recording, back->info.bench);
   ASSERT_TRUE(again.isOk()) << again.status().toString();
   EXPECT_EQ(again->staticSegments.size(), 2u);
   EXPECT_EQ(again->points[0].lagMs, report->points[0].lagMs);  // bit for bit
