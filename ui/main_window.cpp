@@ -898,7 +898,11 @@ void MainWindow::loadSession(const QString& path, bool reanalyse, std::int64_t r
       this, [path, reanalyse, resultId, bench, choices]() -> Loaded {
         auto reader = session::SessionReader::open(path.toStdString());
         if (!reader) return {nullptr, reader.status()};
-        auto recording = (*reader)->recording();
+        // The session's own pulse equivalent first; a session that states
+        // none (nor its stream) takes the bench constants' (as the CLI's
+        // --pulse-equivalent-deg), else the refusal says what to set.
+        const double fallbackPulse = (*reader)->info().bench.pulseEquivalentDeg > 0.0 ? 0.0 : bench.pulseEquivalentDeg;
+        auto recording = (*reader)->recording(fallbackPulse);
         if (!recording) return {nullptr, recording.status()};
         auto stored = (*reader)->results();
         if (!stored) return {nullptr, stored.status()};

@@ -30,7 +30,8 @@ NoiseView::NoiseView(QWidget* parent) : QWidget(parent) {
   summary_->setWordWrap(true);
   summary_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   top->addWidget(summary_, 1);
-  top->addWidget(new QLabel(tr("Static segment")));
+  segmentLabel_ = new QLabel(tr("Static segment"));
+  top->addWidget(segmentLabel_);
   segmentCombo_ = new QComboBox();
   segmentCombo_->setObjectName("noiseSegmentCombo");
   segmentCombo_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
@@ -66,11 +67,15 @@ NoiseView::NoiseView(QWidget* parent) : QWidget(parent) {
   split->setStretchFactor(0, 3);
   split->setStretchFactor(1, 1);
   layout->addWidget(split, 1);
+  content_ = split;
+  layout->addStretch(0);
   connect(segmentCombo_, qOverload<int>(&QComboBox::currentIndexChanged), this, &NoiseView::showSegment);
   showMessage(tr("No noise analysis yet."));
 }
 
 QString NoiseView::summaryText() const { return summary_->text(); }
+
+bool NoiseView::plotShown() const { return !content_->isHidden(); }
 
 void NoiseView::showMessage(const QString& message) {
   reports_.clear();
@@ -79,6 +84,9 @@ void NoiseView::showMessage(const QString& message) {
     segmentCombo_->clear();
   }
   summary_->setText(message);
+  content_->hide();
+  segmentLabel_->hide();
+  segmentCombo_->hide();
   plot_->detachItems(QwtPlotItem::Rtti_PlotCurve);
   plot_->detachItems(QwtPlotItem::Rtti_PlotIntervalCurve);
   plot_->replot();
@@ -87,6 +95,9 @@ void NoiseView::showMessage(const QString& message) {
 
 void NoiseView::showReports(std::vector<noise::GyroNoiseReport> reports) {
   reports_ = std::move(reports);
+  content_->show();
+  segmentLabel_->show();
+  segmentCombo_->show();
   {
     const QSignalBlocker block(segmentCombo_);
     segmentCombo_->clear();

@@ -33,6 +33,9 @@ class NoiseView : public QWidget {
   QwtPlot* allanPlot() const { return plot_; }
   QTableWidget* termTable() const { return table_; }
   QString summaryText() const;
+  // False while the view has no analysis to draw: it shows only why (an
+  // empty 0..1000 plot would look like a result).
+  bool plotShown() const;
 
  private:
   void showSegment(int position);
@@ -40,6 +43,8 @@ class NoiseView : public QWidget {
   std::vector<noise::GyroNoiseReport> reports_;
   QLabel* summary_ = nullptr;
   QComboBox* segmentCombo_ = nullptr;
+  QLabel* segmentLabel_ = nullptr;
+  QWidget* content_ = nullptr;  // the plot and the term table
   QwtPlot* plot_ = nullptr;
   PlotInteraction* interaction_ = nullptr;
   QTableWidget* table_ = nullptr;

@@ -1257,6 +1257,7 @@ class BenchUiTest : public QObject {
     QVERIFY(view->termTable()->rowCount() >= 1);
     QVERIFY(view->allanPlot()->itemList(QwtPlotItem::Rtti_PlotCurve).size() >= 3);  // measured, a term, the sum
     QVERIFY(view->summaryText().contains("Earth-corrected bias"));
+    QVERIFY(view->plotShown());
     for (int r = 0; r < view->termTable()->rowCount(); ++r)  // units as the GUI writes them
       QVERIFY2(!view->termTable()->item(r, 3)->text().contains("deg"), qPrintable(view->termTable()->item(r, 3)->text()));
 
@@ -1266,6 +1267,7 @@ class BenchUiTest : public QObject {
     QTRY_VERIFY_WITH_TIMEOUT(analysed.size() == 2, 60000);
     QCOMPARE(analysed.back().front().toBool(), false);
     QVERIFY(view->summaryText().contains("no static segment"));
+    QVERIFY(!view->plotShown());  // no empty 0 .. 1000 plot that looks like a result
   }
 
   // Issue 17 in the window: a serial board with the turntable driven
