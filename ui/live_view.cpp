@@ -324,11 +324,14 @@ void LiveView::updateTableStatus() {
   if (known && running_) {
     const TestPoint& p = plan_.points[static_cast<std::size_t>(i)];
     const double centre = p.positionDeg[static_cast<std::size_t>(p.axis)];
+    // An angle as the table is commanded: three decimals, and a centre a
+    // rounding away from zero reads 0 (not "-1.56e-08").
+    const QString centreText = localNumber(std::abs(centre) < 5e-4 ? 0.0 : centre, 'f', 3);
     tableCommandedLabel_->setText(
-        p.isStatic() ? tr("%1 at rest at %2°").arg(axis, localNumber(centre, 'g', 6))
+        p.isStatic() ? tr("%1 at rest at %2°").arg(axis, centreText)
                      : tr("%1 %2 Hz, %3° about %4°")
                            .arg(axis, localNumber(p.frequencyHz, 'g', 6), localNumber(p.amplitudeDeg, 'g', 6),
-                                localNumber(centre, 'g', 6)));
+                                centreText));
   } else {
     tableCommandedLabel_->setText(tr("—"));
   }
@@ -450,7 +453,7 @@ void LiveView::updateProgress() {
   const int i = traces_.testPoint();
   QString phase;
   switch (traces_.phase()) {
-    case protocol::TestPhase::kIdle: phase = tr("table at rest"); break;
+    case protocol::TestPhase::kIdle: phase = tr("board idle"); break;
     case protocol::TestPhase::kSettling: phase = tr("settling"); break;
     case protocol::TestPhase::kRecording: phase = tr("recording"); break;
     case protocol::TestPhase::kDone: phase = tr("done"); break;
@@ -466,7 +469,9 @@ void LiveView::updateProgress() {
                            .arg(localNumber(traces_.nominalFrequencyHz(), 'g', 6))
                            .arg(phase)
                            .arg(localNumber(traces_.streamTimeS(), 'f', 1))
-                           .arg(localNumber(traces_.gyroTrendDegPerS() * 3600.0, 'f', 2)));
+                           .arg(std::isnan(traces_.gyroTrendDegPerS())
+                                    ? tr("— (after two periods of recording)")
+                                    : localNumber(traces_.gyroTrendDegPerS() * 3600.0, 'f', 2)));
 }
 
 void LiveView::refresh() {

@@ -2,6 +2,7 @@
 
 #include <Eigen/Cholesky>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <variant>
 
@@ -22,9 +23,8 @@ void LiveTraces::startTestPoint(int index, Axis axis, double frequencyHz) {
   recordingStartS_ = -1.0;
   pointStartS_ = streamTimeS_;
   gyroAngleDeg_ = 0.0;
-  normal_.setZero();
-  rhs_.setZero();
-  fitSamples_ = 0;
+  fit_ = RunningFit{};
+  recordingFit_ = RunningFit{};
   table_.clear();
   gyro_.clear();
 }
@@ -70,9 +70,8 @@ void LiveTraces::add(std::span<const protocol::DecodedFrame> frames) {
       gyroAngleDeg_ += g->pulses[static_cast<std::size_t>(axis_)] * scale;
       gyro_.push_back({streamTimeS_, gyroAngleDeg_});
       const Eigen::Vector4d b = basis(streamTimeS_);
-      normal_.noalias() += b * b.transpose();
-      rhs_.noalias() += b * gyroAngleDeg_;
-      ++fitSamples_;
+      fit_.add(b, gyroAngleDeg_, streamTimeS_);
+      if (phase_ == protocol::TestPhase::kRecording) recordingFit_.add(b, gyroAngleDeg_, streamTimeS_);
     }
   }
   trim();
@@ -84,23 +83,35 @@ void LiveTraces::trim() {
   while (!gyro_.empty() && gyro_.front().timeS < oldest) gyro_.pop_front();
 }
 
-Eigen::Vector4d LiveTraces::trend() const {
-  // A handful of samples before anything is subtracted.
-  const bool sine = frequencyHz_ > 0.0;
-  if (fitSamples_ < 8) return Eigen::Vector4d::Zero();
-  if (!sine) {
-    const Eigen::Matrix2d n = normal_.topLeftCorner<2, 2>();
-    const Eigen::LDLT<Eigen::Matrix2d> ldlt(n);
-    if (ldlt.info() != Eigen::Success || !(ldlt.rcond() > 1e-12)) return Eigen::Vector4d::Zero();
-    const Eigen::Vector2d ab = ldlt.solve(rhs_.head<2>());
-    return {ab[0], ab[1], 0.0, 0.0};
-  }
-  const Eigen::LDLT<Eigen::Matrix4d> ldlt(normal_);
-  if (ldlt.info() != Eigen::Success || !(ldlt.rcond() > 1e-12)) return Eigen::Vector4d::Zero();
-  return ldlt.solve(rhs_);
+void LiveTraces::RunningFit::add(const Eigen::Vector4d& b, double angleDeg, double timeS) {
+  normal.noalias() += b * b.transpose();
+  rhs.noalias() += b * angleDeg;
+  if (samples++ == 0) firstS = timeS;
+  lastS = timeS;
 }
 
-double LiveTraces::gyroTrendDegPerS() const { return trend()[1]; }
+Eigen::Vector4d LiveTraces::solve(const RunningFit& fit) const {
+  // A handful of samples before anything is subtracted.
+  const bool sine = frequencyHz_ > 0.0;
+  if (fit.samples < 8) return Eigen::Vector4d::Zero();
+  if (!sine) {
+    const Eigen::Matrix2d n = fit.normal.topLeftCorner<2, 2>();
+    const Eigen::LDLT<Eigen::Matrix2d> ldlt(n);
+    if (ldlt.info() != Eigen::Success || !(ldlt.rcond() > 1e-12)) return Eigen::Vector4d::Zero();
+    const Eigen::Vector2d ab = ldlt.solve(fit.rhs.head<2>());
+    return {ab[0], ab[1], 0.0, 0.0};
+  }
+  const Eigen::LDLT<Eigen::Matrix4d> ldlt(fit.normal);
+  if (ldlt.info() != Eigen::Success || !(ldlt.rcond() > 1e-12)) return Eigen::Vector4d::Zero();
+  return ldlt.solve(fit.rhs);
+}
+
+double LiveTraces::gyroTrendDegPerS() const {
+  const double needS = frequencyHz_ > 0.0 ? 2.0 / frequencyHz_ : 2.0;
+  if (recordingFit_.samples < 8 || recordingFit_.lastS - recordingFit_.firstS < needS)
+    return std::numeric_limits<double>::quiet_NaN();
+  return solve(recordingFit_)[1];
+}
 
 std::vector<LiveTraces::Point> LiveTraces::gyroDetrended() const {
   const Eigen::Vector4d c = trend();

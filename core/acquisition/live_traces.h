@@ -54,7 +54,11 @@ class LiveTraces {
   const std::deque<Point>& table() const { return table_; }
   // The integrated gyro angle with the current trend estimate removed.
   std::vector<Point> gyroDetrended() const;
-  // The fitted trend (bias + Earth rate), deg/s; 0 until there is a fit.
+  // The gyro's trend (bias + Earth rate), deg/s, for the number the operator
+  // reads: fitted over the recording phase only (the settling swing ramps its
+  // amplitude), and NaN until that holds two whole periods (two seconds
+  // without a swing): over a part of a period a trend and the sinusoid are
+  // not told apart, and early values read hundreds of deg/h.
   double gyroTrendDegPerS() const;
 
   int testPoint() const { return testPoint_; }  // -1 before a STATUS names one
@@ -70,8 +74,18 @@ class LiveTraces {
  private:
   void startTestPoint(int index, Axis axis, double frequencyHz);
   void trim();
-  // The running fit's coefficients [a, b, c, d] (zeros when singular).
-  Eigen::Vector4d trend() const;
+  // A running least-squares fit of the gyro angle on basis(t).
+  struct RunningFit {
+    Eigen::Matrix4d normal = Eigen::Matrix4d::Zero();
+    Eigen::Vector4d rhs = Eigen::Vector4d::Zero();
+    std::size_t samples = 0;
+    double firstS = 0.0, lastS = 0.0;
+    void add(const Eigen::Vector4d& b, double angleDeg, double timeS);
+  };
+  // A fit's coefficients [a, b, c, d] (zeros when singular).
+  Eigen::Vector4d solve(const RunningFit& fit) const;
+  // The display's fit (the whole test point) solved.
+  Eigen::Vector4d trend() const { return solve(fit_); }
   Eigen::Vector4d basis(double t) const;
 
   double windowS_;
@@ -93,9 +107,8 @@ class LiveTraces {
   double recordingStartS_ = -1.0;
   double pointStartS_ = 0.0;  // origin of the fit's time axis (conditioning)
   double gyroAngleDeg_ = 0.0;
-  Eigen::Matrix4d normal_ = Eigen::Matrix4d::Zero();
-  Eigen::Vector4d rhs_ = Eigen::Vector4d::Zero();
-  std::size_t fitSamples_ = 0;
+  RunningFit fit_;           // the whole test point: levels the display from the first periods
+  RunningFit recordingFit_;  // the recording phase: the trend shown as a number
 };
 
 }  // namespace fog::acquisition

@@ -1088,12 +1088,12 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+245"/>
+        <location line="+248"/>
         <source>Step</source>
         <translation>步骤</translation>
     </message>
     <message>
-        <location line="-235"/>
+        <location line="-238"/>
         <source>Turntable angle</source>
         <translation>转台角度</translation>
     </message>
@@ -1155,30 +1155,40 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+17"/>
-        <location line="+56"/>
+        <location line="+59"/>
         <source>at rest (run over)</source>
         <translation>静止（运行结束）</translation>
     </message>
     <message>
-        <location line="-54"/>
+        <location line="-57"/>
         <source>swinging %1</source>
         <translation>%1 轴摆动中</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+59"/>
+        <location line="+62"/>
         <source>at rest (plan done)</source>
         <translation>静止（计划完成）</translation>
     </message>
     <message>
-        <location line="-57"/>
+        <location line="-60"/>
         <source>waiting</source>
         <translation>等待中</translation>
     </message>
     <message>
-        <location line="-30"/>
+        <location line="+133"/>
+        <source>board idle</source>
+        <translation>采集板空闲</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>— (after two periods of recording)</source>
+        <translation>—（记录两个周期后显示）</translation>
+    </message>
+    <message>
+        <location line="-180"/>
         <location line="+30"/>
-        <location line="+69"/>
+        <location line="+72"/>
         <source>at rest</source>
         <translation>静止</translation>
     </message>
@@ -1285,12 +1295,7 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>剩余 %1 / 共 %2</translation>
     </message>
     <message>
-        <location line="+11"/>
-        <source>table at rest</source>
-        <translation>转台静止</translation>
-    </message>
-    <message>
-        <location line="+1"/>
+        <location line="+12"/>
         <source>settling</source>
         <translation>稳定中</translation>
     </message>
@@ -1344,12 +1349,12 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+947"/>
+        <location line="+951"/>
         <source>Diagnosis</source>
         <translation>诊断</translation>
     </message>
     <message>
-        <location line="-944"/>
+        <location line="-948"/>
         <source>Noise</source>
         <translation>噪声</translation>
     </message>
@@ -1422,12 +1427,12 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+707"/>
+        <location line="+711"/>
         <source>Open session</source>
         <translation>打开会话</translation>
     </message>
     <message>
-        <location line="-706"/>
+        <location line="-710"/>
         <source>fogbench sessions (*.fbs);;All files (*)</source>
         <translation>fogbench 会话 (*.fbs);;所有文件 (*)</translation>
     </message>
@@ -1872,7 +1877,7 @@ Quit: Ctrl+Q</source>
         <translation>正在打开 %1 …</translation>
     </message>
     <message>
-        <location line="+80"/>
+        <location line="+84"/>
         <location line="+8"/>
         <source>Re-analyse</source>
         <translation>重新分析</translation>
@@ -2030,7 +2035,7 @@ File: %1</source>
         <translation>静态段</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>Overlapping Allan deviation of the gyro</source>
         <translation>陀螺的重叠 Allan 标准差</translation>
     </message>
@@ -2060,12 +2065,12 @@ File: %1</source>
         <translation>τ 范围 (s)</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+15"/>
         <source>No noise analysis yet.</source>
         <translation>尚无噪声分析。</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+32"/>
         <source>%1: %2 gyro, %3 s</source>
         <translation>%1：%2 陀螺，%3 s</translation>
     </message>
@@ -2362,13 +2367,13 @@ File: %1</source>
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../../ui/main_window.cpp" line="-1088"/>
+        <location filename="../../ui/main_window.cpp" line="-1092"/>
         <location filename="../../ui/plan_editor.cpp" line="-300"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../../ui/live_view.cpp" line="-410"/>
+        <location filename="../../ui/live_view.cpp" line="-413"/>
         <source>%1:%2</source>
         <translation>%1:%2</translation>
     </message>

@@ -81,7 +81,36 @@ TEST(LiveTraces, ClearStartsAfresh) {
   EXPECT_EQ(live.testPoint(), -1);
   EXPECT_TRUE(live.table().empty());
   EXPECT_TRUE(live.gyroDetrended().empty());
-  EXPECT_EQ(live.gyroTrendDegPerS(), 0.0);
+  EXPECT_TRUE(std::isnan(live.gyroTrendDegPerS()));
+}
+
+// The trend shown as a number comes from the recording phase only, once it
+// holds two whole periods: before, the operator reads "-", not a partial
+// fit's hundreds of deg/h.
+TEST(LiveTraces, TheTrendIsShownOnlyOverTwoWholePeriodsOfRecording) {
+  model::SimConfig config;
+  config.fog.biasDegPerH = {0.0, 0.0, 36.0};
+  auto run = model::simulate(config, fog::test::shortPlan());
+  ASSERT_TRUE(run.isOk());
+  const auto frames = decodeAll(run->bytes);
+  LiveTraces live(5.0);
+  bool sawRecording = false, sawNumber = false;
+  for (std::size_t at = 0; at < frames.size(); at += 50) {
+    live.add(std::span(frames).subspan(at, std::min<std::size_t>(50, frames.size() - at)));
+    const double trend = live.gyroTrendDegPerS();
+    const bool recordedTwoPeriods =
+        live.recordingStartS() >= 0.0 && live.streamTimeS() - live.recordingStartS() >= 2.0 / live.nominalFrequencyHz() + 0.01;
+    sawRecording |= live.recordingStartS() >= 0.0;
+    if (live.recordingStartS() < 0.0 || live.streamTimeS() - live.recordingStartS() < 2.0 / live.nominalFrequencyHz() - 0.01)
+      EXPECT_TRUE(std::isnan(trend)) << "at " << live.streamTimeS() << " s: " << trend;
+    if (recordedTwoPeriods) {
+      ASSERT_FALSE(std::isnan(trend)) << "at " << live.streamTimeS() << " s";
+      sawNumber = true;
+      // Within 25 % of the truth from the first value on (36 deg/h + Earth rate).
+      EXPECT_NEAR(trend, run->truth.at(0).gyroTrendDegPerS, 0.25 * std::abs(run->truth.at(0).gyroTrendDegPerS));
+    }
+  }
+  EXPECT_TRUE(sawRecording && sawNumber);
 }
 
 }  // namespace
