@@ -2394,12 +2394,12 @@ File: %1</source>
     </message>
     <message>
         <location filename="../../ui/report/calibration_report.cpp" line="+68"/>
-        <location line="+233"/>
+        <location line="+250"/>
         <source>not recorded</source>
         <translation>未记录</translation>
     </message>
     <message>
-        <location line="-226"/>
+        <location line="-243"/>
         <source>%1 axis
 %2 Hz / %3°, %4 s</source>
         <translation>%1 轴
@@ -2411,7 +2411,7 @@ File: %1</source>
         <translation>%1 轴，%2 Hz / %3°，%4 s</translation>
     </message>
     <message>
-        <location line="+104"/>
+        <location line="+116"/>
         <source>IMU %1 · S/N %2</source>
         <translation>IMU %1 · 序列号 %2</translation>
     </message>
@@ -2496,7 +2496,7 @@ File: %1</source>
         <translation>%1，序列号 %2</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+10"/>
         <source>Session</source>
         <translation>会话</translation>
     </message>
@@ -2790,7 +2790,12 @@ File: %1</source>
         <translation>未给出</translation>
     </message>
     <message>
-        <location line="-118"/>
+        <location line="-248"/>
+        <source>SIMULATED DATA — not a measurement of a real IMU</source>
+        <translation>仿真数据 —— 并非对真实 IMU 的测量</translation>
+    </message>
+    <message>
+        <location line="+130"/>
         <source>Result reported</source>
         <translation>报告的结果</translation>
     </message>

@@ -138,6 +138,18 @@ class ReportTest : public QObject {
     QVERIFY(!text.join('\n').contains("σ below the bound"));
   }
 
+  // Simulated data say so on every page; a real bench's data do not.
+  void simulatedDataAreMarkedOnEveryPage() {
+    QStringList text;
+    QVERIFY(fog::report::renderCalibrationPages(session_, 30, &text).isOk());
+    QCOMPARE(text.filter("SIMULATED DATA — not a measurement of a real IMU").size() >= 4, true);
+    auto real = session_;
+    real.info.source = "serial /dev/ttyUSB0 at 921600";
+    text.clear();
+    QVERIFY(fog::report::renderCalibrationPages(real, 30, &text).isOk());
+    QVERIFY(text.filter("SIMULATED").isEmpty());
+  }
+
   void sha256MatchesTheStandardVector() {
     const std::vector<std::uint8_t> abc{'a', 'b', 'c'};
     QCOMPARE(fog::report::rawDataSha256(abc),

@@ -180,10 +180,22 @@ struct Content {
   std::vector<noise::GyroNoiseReport> noise;   // one per static segment
 };
 
+// Data the bench's simulator made (a run on it, or an import or replay of
+// such a run): every page says so, so that no simulated report passes for
+// the calibration of a real IMU.
+bool simulatedData(const SessionInfo& info) {
+  return QString::fromStdString(info.source).contains(QStringLiteral("simulator"), Qt::CaseInsensitive);
+}
+
+QString simulatedBanner() { return QObject::tr("SIMULATED DATA — not a measurement of a real IMU"); }
+
 void decorate(PageFlow& flow, const Content& c, int page, int pageCount) {
   const double left = PageFlow::kLeftMm, width = PageFlow::kContentWidthMm;
   const QFont small = PageFlow::font(7.5);
   const auto& info = c.in.info;
+  if (simulatedData(info))
+    flow.text(QRectF(left, 16.2, width, 4.5), Qt::AlignHCenter | Qt::AlignVCenter, simulatedBanner(),
+              PageFlow::font(8.0, true), kFailColour);
   const QString imu = QObject::tr("IMU %1 · S/N %2").arg(orNotRecorded(info.imuModel), orNotRecorded(info.imuSerial));
   flow.text(QRectF(left, 10.0, width, 5.0), Qt::AlignLeft | Qt::AlignBottom,
             QObject::tr("fogbench · IMU delay calibration report"), small, kMuted);
@@ -287,6 +299,11 @@ void firstPage(PageFlow& flow, const Content& c) {
             QObject::tr("%1, serial number %2").arg(orNotRecorded(info.imuModel), orNotRecorded(info.imuSerial)),
             PageFlow::font(12.0), Qt::black);
   flow.space(9.0);
+  if (simulatedData(info)) {
+    flow.text(QRectF(left, flow.y(), width, 6.0), Qt::AlignLeft | Qt::AlignVCenter,
+              simulatedBanner(), PageFlow::font(10.0, true), kFailColour);
+    flow.space(8.0);
+  }
   verdictBox(flow, c);
 
   flow.heading(QObject::tr("Session"));
