@@ -5,6 +5,7 @@
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QSignalBlocker>
 #include <QTableWidget>
@@ -67,11 +68,12 @@ PlanEditor::PlanEditor(QWidget* parent) : QWidget(parent) {
   // Narrow on a laptop; the list shows the whole labels.
   presetCombo_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
   presetCombo_->setMinimumContentsLength(14);
+  // The first entry stands for a plan that is no preset (edited, loaded
+  // from a file): the box never names a preset the table does not hold.
+  presetCombo_->addItem(tr("custom plan"), QString());
   for (const auto& p : benchPresets()) presetCombo_->addItem(p.displayLabel(), p.name);
+  presetCombo_->setToolTip(tr("Choosing a preset replaces the plan below; an edited plan shows as \"custom plan\""));
   top->addWidget(presetCombo_, 1);
-  auto* load = new QPushButton(tr("Load preset"));
-  load->setObjectName("loadPresetButton");
-  top->addWidget(load);
   top->addSpacing(12);
   top->addWidget(new QLabel(tr("Rest")));
   restSpin_ = makeSpin(0.0, 3600.0, 1, tr(" s"));
@@ -116,7 +118,21 @@ PlanEditor::PlanEditor(QWidget* parent) : QWidget(parent) {
   layout->addLayout(buttons);
   layout->addWidget(summary_);
 
-  connect(load, &QPushButton::clicked, this, [this] { loadPreset(presetCombo_->currentData().toString()); });
+  // A preset chosen applies at once; an edited plan it would replace is
+  // kept unless the operator agrees.
+  connect(presetCombo_, qOverload<int>(&QComboBox::activated), this, [this](int index) {
+    const QString name = presetCombo_->itemData(index).toString();
+    if (name.isEmpty() || name == shownPreset_) return;
+    if (shownPreset_.isEmpty() && table_->rowCount() > 0 &&
+        QMessageBox::question(this, tr("Replace the test plan?"),
+                              tr("The plan below is not a preset (it was edited or loaded from a file). Replace it "
+                                 "with the preset \"%1\"?")
+                                  .arg(presetCombo_->itemText(index))) != QMessageBox::Yes) {
+      showPresetOfPlan();
+      return;
+    }
+    loadPreset(name);
+  });
   connect(addButton_, &QPushButton::clicked, this, [this] {
     const int rows = table_->rowCount();
     addRow(rows > 0 ? rowPoint(rows - 1) : TestPoint{});
@@ -261,9 +277,17 @@ void PlanEditor::setPlan(const TestPlan& plan) {
 bool PlanEditor::loadPreset(const QString& name) {
   const auto preset = findBenchPreset(name);
   if (!preset) return false;
-  presetCombo_->setCurrentIndex(presetCombo_->findData(name));
   setPlan(preset->plan);
   return true;
+}
+
+void PlanEditor::showPresetOfPlan() {
+  const std::string now = testPlanToJson(plan());
+  shownPreset_.clear();
+  for (const auto& p : benchPresets())
+    if (testPlanToJson(p.plan) == now) shownPreset_ = p.name;
+  const QSignalBlocker block(presetCombo_);
+  presetCombo_->setCurrentIndex(std::max(0, presetCombo_->findData(shownPreset_)));
 }
 
 void PlanEditor::setLimits(const TurntableLimits& limits) {
@@ -335,6 +359,7 @@ void PlanEditor::validate() {
                         : tr("<span style='color:#b00000'>Cannot run: %1</span>")
                               .arg(problem_.toHtmlEscaped().replace("\n", "<br>")));
   removeButton_->setEnabled(table_->rowCount() > 0);
+  showPresetOfPlan();
   emit planChanged();
   if (changed) emit validityChanged(problem_.isEmpty(), problem_);
 }

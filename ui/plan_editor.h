@@ -66,6 +66,8 @@ class PlanEditor : public QWidget {
   void moveSelectedRow(int by);
   void syncPeriods(int row, Column edited);
   void validate();
+  // Selects the preset the plan is, or "custom plan" when it is none.
+  void showPresetOfPlan();
   TestPoint rowPoint(int row) const;
   QDoubleSpinBox* spin(int row, Column column) const;
 
@@ -79,6 +81,7 @@ class PlanEditor : public QWidget {
   QPushButton* upButton_ = nullptr;
   QPushButton* downButton_ = nullptr;
   QString problem_;
+  QString shownPreset_;  // the preset the plan is; empty: a custom plan
   bool syncing_ = false;
 };
 

@@ -2148,29 +2148,34 @@ File: %1</source>
 <context>
     <name>fog::ui::PlanEditor</name>
     <message>
-        <location filename="../../ui/plan_editor.cpp" line="+64"/>
+        <location filename="../../ui/plan_editor.cpp" line="+65"/>
         <source>Preset</source>
         <translation>预设</translation>
     </message>
     <message>
         <location line="+8"/>
-        <source>Load preset</source>
-        <translation>载入预设</translation>
+        <source>custom plan</source>
+        <translation>自定义计划</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
+        <source>Choosing a preset replaces the plan below; an edited plan shows as &quot;custom plan&quot;</source>
+        <translation>选择预设会替换下方的计划；编辑过的计划显示为“自定义计划”</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Rest</source>
         <translation>静止</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+89"/>
+        <location line="+103"/>
         <location line="+2"/>
         <source> s</source>
         <translation> s</translation>
     </message>
     <message>
-        <location line="-87"/>
+        <location line="-101"/>
         <source>Rest between test points: the table at rest</source>
         <translation>测试点之间的静止时间：转台静止</translation>
     </message>
@@ -2235,7 +2240,17 @@ File: %1</source>
         <translation>下移</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+16"/>
+        <source>Replace the test plan?</source>
+        <translation>替换测试计划？</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The plan below is not a preset (it was edited or loaded from a file). Replace it with the preset &quot;%1&quot;?</source>
+        <translation>下方的计划不是预设（已被编辑或从文件载入）。要用预设“%1”替换它吗？</translation>
+    </message>
+    <message>
+        <location line="+32"/>
         <source>swing</source>
         <translation>摆动</translation>
     </message>
@@ -2290,7 +2305,7 @@ File: %1</source>
         <translation>开始记录前的摆动时间</translation>
     </message>
     <message>
-        <location line="+132"/>
+        <location line="+140"/>
         <source>ok: table at rest, %1 in all</source>
         <translation>正常：转台静止，共 %1</translation>
     </message>
@@ -2368,7 +2383,7 @@ File: %1</source>
     <message>
         <location line="+1"/>
         <location filename="../../ui/main_window.cpp" line="-1092"/>
-        <location filename="../../ui/plan_editor.cpp" line="-300"/>
+        <location filename="../../ui/plan_editor.cpp" line="-323"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>

@@ -58,6 +58,7 @@
 #include "core/diagnosis/effects.h"
 #include "core/io/csv_export.h"
 #include "core/session/session_file.h"
+#include "ui/bench_presets.h"
 #include "ui/bench_settings_dialog.h"
 #include "ui/commanded_motion.h"
 #include "ui/compare_view.h"
@@ -304,8 +305,22 @@ class BenchUiTest : public QObject {
     QVERIFY(editor->loadPreset("paper-fast"));
     QVERIFY(editor->isValid());
     QVERIFY(button(*w, "runButton")->isEnabled());
+    // The preset box names the preset the plan is, and "custom plan" once it
+    // is edited: never a preset the table does not hold.
+    auto* presets = editor->findChild<QComboBox*>("planPresetCombo");
+    QCOMPARE(presets->currentData().toString(), QString("paper-fast"));
+    // Choosing a preset applies it at once (no second button).
+    const int quick = presets->findData("quick");
+    presets->setCurrentIndex(quick);
+    emit presets->activated(quick);
+    QCOMPARE(editor->plan().points.size(), fog::ui::findBenchPreset("quick")->plan.points.size());
+    QCOMPARE(QString::fromStdString(fog::testPlanToJson(editor->plan())),
+             QString::fromStdString(fog::testPlanToJson(fog::ui::findBenchPreset("quick")->plan)));
+    QVERIFY(editor->loadPreset("paper-fast"));
 
     setValue(editor, 0, PlanEditor::kFrequency, 30.0);  // the table stops at 20 Hz
+    QCOMPARE(presets->currentData().toString(), QString());
+    QCOMPARE(presets->currentText(), QString("custom plan"));
     QVERIFY(!editor->isValid());
     const QString check = editor->table()->item(0, PlanEditor::kCheck)->text();
     QVERIFY2(check.contains("frequency 30 Hz is beyond the table limit of 20 Hz"), qPrintable(check));
