@@ -18,6 +18,7 @@
 #include <QMessageBox>
 #include <QPlainTextEdit>
 #include <QPushButton>
+#include <QScrollBar>
 #include <QSplitter>
 #include <QTabWidget>
 #include <QTableWidget>
@@ -214,13 +215,13 @@ ResultView::ResultView(QWidget* parent) : QWidget(parent) {
   fitTable_->setObjectName("fitTable");
   delayTable_ = makeTable({tr("delay"), tr("value (ms)"), tr("1σ (ms)"), tr("theory (ms)"), tr("basis")});
   delayTable_->setObjectName("delayTable");
-  for (QTableWidget* t : {fitTable_, delayTable_}) t->setMinimumSize(150, 80);
+  for (QTableWidget* t : {fitTable_, delayTable_}) t->setMinimumSize(150, 60);
   buildFrequencyPlot();
   // The lag itself, measurable: table and gyro around one zero crossing.
   zeroCrossingPlot_ = new SeriesPlot(tr("Zero crossing: the gyro behind the table"), tr("angle − offset (°)"), tr("°"));
   zeroCrossingPlot_->setObjectName("zeroCrossingPlot");
   zeroCrossingPlot_->setTimeAxis(tr("time from the table fit's zero crossing (ms)"), 1e-3);
-  zeroCrossingPlot_->setMinimumSize(200, 170);
+  zeroCrossingPlot_->setMinimumSize(200, 120);
   plotTabs_ = new QTabWidget();
   plotTabs_->setObjectName("resultPlotTabs");
   plotTabs_->addTab(zeroCrossingPlot_, tr("Zero crossing"));
@@ -229,6 +230,7 @@ ResultView::ResultView(QWidget* parent) : QWidget(parent) {
                                  "to set cursors A and B and read Δt"));
   plotTabs_->setTabToolTip(1, tr("The lag of every test point against its swing frequency"));
   auto* right = new QSplitter(Qt::Vertical);
+  right->setObjectName("resultRightSplitter");
   right->addWidget(fitTable_);
   right->addWidget(delayTable_);
   right->addWidget(plotTabs_);
@@ -303,7 +305,7 @@ void ResultView::buildFrequencyPlot() {
   frequencyPlot_->setAxisTitle(QwtPlot::yLeft, tr("lag (ms), ±1σ"));
   frequencyPlot_->setCanvasBackground(Qt::white);
   frequencyPlot_->insertLegend(new QwtLegend(), QwtPlot::BottomLegend);
-  frequencyPlot_->setMinimumSize(200, 170);
+  frequencyPlot_->setMinimumSize(200, 120);
   useCompactTitles(frequencyPlot_);
   PlotInteraction::Options options;
   options.timeAxis = false;
@@ -463,6 +465,22 @@ void ResultView::fillTables(std::size_t i) {
           range(std::max(0.0, budget.totalMinMs - budget.boardMaxMs), budget.totalMaxMs - budget.boardMaxMs),
           tr("sensing, loop and pulse update")},
          true);
+  // Every delay row stays in view (the gyro's own delay is the last): the
+  // table is as tall as its rows; the fit table above and the plot below give
+  // way (they scroll, the plot shrinks).
+  delayTable_->resizeRowsToContents();
+  int height = delayTable_->horizontalHeader()->height() + 2 * delayTable_->frameWidth();
+  for (int r = 0; r < delayTable_->rowCount(); ++r) height += delayTable_->rowHeight(r);
+  if (delayTable_->horizontalScrollBar()->isVisible()) height += delayTable_->horizontalScrollBar()->height();
+  delayTable_->setMinimumHeight(height);
+  // The fit table's own size hint would leave the zero-crossing plot a
+  // sliver on a laptop: when the plot is squeezed, the fit table gives way
+  // (it scrolls); a divider the operator set is kept otherwise.
+  if (auto* right = findChild<QSplitter*>("resultRightSplitter"); right && plotTabs_->height() < 200) {
+    const int total = right->height();
+    const int fits = std::min(fitTable_->height(), std::max(fitTable_->minimumHeight(), total / 6));
+    right->setSizes({fits, height, std::max(0, total - fits - height)});
+  }
 }
 
 QString ResultView::verdictWord(const std::string& verdict) {
