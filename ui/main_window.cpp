@@ -45,7 +45,7 @@
 #include "core/io/csv_import.h"
 #include "core/io/imported_session.h"
 #include "core/serial/serial_source.h"
-#include "core/session/session_file.h"
+#include "core/session/session_api.h"
 #include "ui/bench_settings_dialog.h"
 #include "ui/compare_view.h"
 #include "ui/core_text.h"
@@ -62,6 +62,13 @@
 namespace fog::ui {
 
 namespace {
+
+// The GUI opens sessions only (its file dialogs, the browser, replay).
+session::OpenOptions sessionOnly() {
+  session::OpenOptions options;
+  options.sessionOnly = true;
+  return options;
+}
 
 QString durationText(double seconds) {
   const auto s = static_cast<long long>(std::ceil(std::max(seconds, 0.0)));
@@ -611,19 +618,21 @@ Result<RunRequest> MainWindow::buildRunRequest() const {
     };
   } else {
     const QString path = configureView_->replayPath();
-    auto reader = session::SessionReader::open(path.toStdString());
-    if (!reader) return reader.status();
-    auto bytes = (*reader)->rawBytes();
-    if (!bytes) return bytes.status();
-    plan = (*reader)->info().plan;
+    session::OpenOptions what = sessionOnly();
+    what.rawBytes = true;
+    what.decode = false;  // the replay decodes the bytes as they are fed
+    auto opened = session::openSessionOrStream(path.toStdString(), what);
+    if (!opened) return opened.status();
+    auto bytes = std::move(opened->rawBytes);
+    plan = opened->info.plan;
     // A replay records into a new session like a live run, and keeps the
     // original's identity and constants.
-    const SessionInfo original = (*reader)->info();
+    const SessionInfo original = opened->info;
     request.options.info = original;
     request.options.info.createdUtc = session::utcNow();
     request.options.info.softwareVersion = FOG_VERSION;
     request.options.constants = analysis::benchConstantsOf(original.bench);
-    auto source = std::make_shared<acquisition::ReplaySource>(std::move(*bytes), speed,
+    auto source = std::make_shared<acquisition::ReplaySource>(std::move(bytes), speed,
                                                               "session " + QFileInfo(path).fileName().toStdString());
     request.options.info.source = source->description();
     request.source = source;
@@ -833,69 +842,55 @@ void MainWindow::loadSession(const QString& path, bool reanalyse, std::int64_t r
   // Reading and fitting a long session takes a while: off the GUI thread.
   inBackground(
       this, [path, reanalyse, resultId, bench, choices]() -> Loaded {
-        auto reader = session::SessionReader::open(path.toStdString());
-        if (!reader) return {nullptr, reader.status()};
-        auto recording = (*reader)->recording();
-        if (!recording) return {nullptr, recording.status()};
-        auto stored = (*reader)->results();
-        if (!stored) return {nullptr, stored.status()};
+        auto opened = session::openSessionOrStream(path.toStdString(), sessionOnly());
+        if (!opened) return {nullptr, opened.status()};
         auto outcome = std::make_shared<RunOutcome>();
-        outcome->info = (*reader)->info();
+        outcome->info = opened->info;
         outcome->sessionPath = path.toStdString();
-        outcome->complete = (*reader)->complete();
-        outcome->incompleteReason = (*reader)->incompleteReason();
-        outcome->recording = std::move(*recording);
-        const auto sessionConstants = analysis::benchConstantsOf(outcome->info.bench);
-        outcome->results = resultRecords(*stored, sessionConstants);
+        outcome->complete = opened->complete;
+        outcome->incompleteReason = opened->incompleteReason;
+        outcome->results = opened->results;
         // A re-analysis uses the bench's constants, gyro signs and limit, and
-        // stores them with its result. Review re-analyses with exactly the
-        // chosen stored result's settings (the newest unless one is asked
-        // for), only to draw its plots and fits: the verdict shown is the
-        // stored one. With none stored: the session's own constants.
-        analysis::BenchConstants constants = sessionConstants;
+        // stores them with its result; the new result is the newest, the one
+        // shown. Review re-analyses with exactly the chosen stored result's
+        // settings (the newest unless one is asked for), only to draw its
+        // plots and fits: the verdict shown is the stored one. With none
+        // stored: the session's own constants.
+        analysis::BenchConstants constants = analysis::benchConstantsOf(opened->info.bench);
+        std::string source = opened->sourceLine();
         if (reanalyse) {
-          constants = analysis::benchConstantsOf(bench);
-          constants.gyroSign = choices.gyroSign;
+          session::AnalysisSettings settings;
+          settings.constants = analysis::benchConstantsOf(bench);
+          settings.constants.gyroSign = choices.gyroSign;
+          settings.imuDelayLimitMs = choices.imuDelayLimitMs;
+          settings.producedBy = "fogbench GUI";
+          auto result = session::analyseAndStore(*opened, settings);
+          if (!result.storeStatus.isOk()) return {nullptr, result.storeStatus};
+          // A session being recorded is not written to: a re-analysis that
+          // cannot be stored is refused, not shown as if it were.
+          if (!result.notStored.empty())
+            return {nullptr, Status(StatusCode::kIoError, "the result was not stored: " + result.notStored)};
+          constants = settings.constants;
+          outcome->report = std::move(result.report);
+          outcome->results = std::move(result.results);
+          if (result.stored)
+            if (const auto* newest = newestUsable(outcome->results)) outcome->shownResultId = newest->id;
+          if (const ResultRecord* shown = outcome->shownResult(); shown && outcome->report)
+            outcome->differences = session::differencesFromRecord(*shown, *outcome->report);
         } else {
-          const ResultRecord* chosen = newestUsable(outcome->results);
-          for (const auto& r : outcome->results)
-            if (r.id == resultId && r.usable) chosen = &r;
-          if (chosen) {
-            constants = chosen->constants;
-            outcome->shownResultId = chosen->id;
-          }
+          auto shown = session::showResult(*opened, resultId, constants, choices.imuDelayLimitMs);
+          constants = shown.constants;
+          if (shown.record) outcome->shownResultId = shown.record->id;
+          outcome->report = std::move(shown.report);
+          outcome->differences = std::move(shown.differences);
         }
-        outcome->report = analysis::analyzeRecording(outcome->recording, constants);
-        const std::string source = "session " + path.toStdString() + " (" + (*reader)->info().source + ")";
-        reader->reset();
-        if (reanalyse && outcome->report) {
-          analysis::ReportContext context;
-          context.source = source;
-          context.imuDelayLimitMs = choices.imuDelayLimitMs;
-          // A session that stopped early stays incomplete whatever the analysis.
-          if (!outcome->complete) context.incompleteReason = outcome->incompleteReason;
-          if (auto s = session::addResult(path.toStdString(),
-                                          acquisition::analysisSettingsJson(constants, choices.imuDelayLimitMs,
-                                                                            "fogbench GUI"),
-                                          analysis::formatReportJson(*outcome->report, context));
-              !s.isOk())
-            return {nullptr, s};
-          // The new result is the newest: it is the one shown.
-          auto again = session::SessionReader::open(path.toStdString());
-          if (!again) return {nullptr, again.status()};
-          auto all = (*again)->results();
-          if (!all) return {nullptr, all.status()};
-          outcome->results = resultRecords(*all, sessionConstants);
-          if (const auto* newest = newestUsable(outcome->results)) outcome->shownResultId = newest->id;
-        }
+        outcome->recording = std::move(opened->recording);
         // What the shown result was computed with, everywhere (report pages, Diagnose).
         outcome->info.bench.tableReadDelayMs = constants.tableReadDelayMs;
         outcome->info.bench.tableReadDelayStdMs = constants.tableReadDelayStdMs;
         outcome->info.bench.boardDelayMs = constants.boardDelayMs;
         outcome->info.bench.boardDelayStdMs = constants.boardDelayStdMs;
         if (constants.pulseEquivalentDeg > 0.0) outcome->info.bench.pulseEquivalentDeg = constants.pulseEquivalentDeg;
-        if (const ResultRecord* shown = outcome->shownResult(); shown && outcome->report)
-          outcome->differences = acquisition::differencesFromRecord(*shown, *outcome->report);
         completeOutcome(*outcome, source);
         return {outcome, Status::ok()};
       },

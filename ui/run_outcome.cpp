@@ -26,7 +26,7 @@ std::string limitText(double v) {
 
 std::vector<ResultRecord> resultRecords(const std::vector<session::StoredResult>& stored,
                                         const analysis::BenchConstants& fallback) {
-  return acquisition::readStoredResults(stored, fallback);
+  return session::readStoredResults(stored, fallback);
 }
 
 const ResultRecord* RunOutcome::shownResult() const {

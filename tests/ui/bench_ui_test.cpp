@@ -617,7 +617,7 @@ class BenchUiTest : public QObject {
       reader->reset();
       fog::analysis::ReportContext context;
       QVERIFY(fog::session::addResult(reversed.toStdString(),
-                                      fog::acquisition::analysisSettingsJson(constants, 0.8, "fogbench-cli analyze"),
+                                      fog::session::analysisSettingsJson(constants, 0.8, "fogbench-cli analyze"),
                                       fog::analysis::formatReportJson(*report, context))
                   .isOk());
     }
@@ -731,7 +731,7 @@ class BenchUiTest : public QObject {
       doc["test_points"] = points;
       doc["verdict"] = "fail";
       QVERIFY(fog::session::addResult(reversed.toStdString(),
-                                      fog::acquisition::analysisSettingsJson(constants, 0.8, "an older fogbench"),
+                                      fog::session::analysisSettingsJson(constants, 0.8, "an older fogbench"),
                                       QJsonDocument(doc).toJson().toStdString())
                   .isOk());
     }
@@ -769,7 +769,7 @@ class BenchUiTest : public QObject {
     QVERIFY(reader.isOk());
     const auto stored = *(*reader)->results();
     QCOMPARE(stored.size(), std::size_t{4});
-    const auto newest = fog::acquisition::readStoredResult(stored.back(), {});
+    const auto newest = fog::session::readStoredResult(stored.back(), {});
     QCOMPARE(newest.constants.gyroSign[0], -1);
     QVERIFY(newest.gyroSignStated);
     QCOMPARE(newest.imuDelayLimitMs, 0.5);
