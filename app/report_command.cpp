@@ -15,7 +15,7 @@
 #include "core/model/simulator.h"
 #include "core/protocol/recording_builder.h"
 #include "app/session_input.h"
-#include "ui/language.h"
+#include "ui/language/language.h"
 #include "ui/report/calibration_report.h"
 
 namespace fog::app {

@@ -50,7 +50,7 @@
 #include "ui/compare_view.h"
 #include "ui/core_text.h"
 #include "ui/diagnosis_view.h"
-#include "ui/language.h"
+#include "ui/language/language.h"
 #include "ui/live_view.h"
 #include "ui/messages.h"
 #include "ui/noise_view.h"

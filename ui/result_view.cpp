@@ -42,11 +42,11 @@
 #include "core/common/version.h"
 #include "core/session/session_api.h"
 #include "ui/core_text.h"
-#include "ui/language.h"
-#include "ui/plot_export.h"
-#include "ui/plot_interaction.h"
+#include "ui/language/language.h"
+#include "ui/plots/plot_export.h"
+#include "ui/plots/plot_interaction.h"
 #include "ui/report/calibration_report.h"
-#include "ui/series_plot.h"
+#include "ui/plots/series_plot.h"
 
 namespace fog::ui {
 

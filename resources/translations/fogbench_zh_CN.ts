@@ -687,7 +687,7 @@ counter %5 MHz / %6 bit</source>
 <context>
     <name>fog::ui::DeltaPicker</name>
     <message>
-        <location filename="../../ui/delta_picker.cpp" line="+29"/>
+        <location filename="../../ui/plots/delta_picker.cpp" line="+29"/>
         <source>t = %1 s, %2 %3</source>
         <translation>t = %1 s，%2 %3</translation>
     </message>
@@ -1220,7 +1220,7 @@ Press Diagnose in the Results view to start it again.</source>
 <context>
     <name>fog::ui::MainWindow</name>
     <message>
-        <location filename="../../ui/main_window.cpp" line="+147"/>
+        <location filename="../../ui/main_window.cpp" line="+154"/>
         <source>fogbench %1 — FOG IMU delay bench</source>
         <translation>fogbench %1 —— 光纤陀螺 IMU 延迟测试台</translation>
     </message>
@@ -1246,12 +1246,12 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+879"/>
+        <location line="+867"/>
         <source>Diagnosis</source>
         <translation>诊断</translation>
     </message>
     <message>
-        <location line="-876"/>
+        <location line="-864"/>
         <source>Noise</source>
         <translation>噪声</translation>
     </message>
@@ -1324,12 +1324,12 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+644"/>
+        <location line="+632"/>
         <source>Open session</source>
         <translation>打开会话</translation>
     </message>
     <message>
-        <location line="-643"/>
+        <location line="-631"/>
         <source>fogbench sessions (*.fbs);;All files (*)</source>
         <translation>fogbench 会话 (*.fbs);;所有文件 (*)</translation>
     </message>
@@ -1609,7 +1609,7 @@ Quit: Ctrl+Q</source>
         <translation>波特率必须是整数</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+50"/>
         <source>cannot create the session folder &apos;%1&apos;; choose another one</source>
         <translation>无法创建会话文件夹“%1”；请另选一个</translation>
     </message>
@@ -1774,7 +1774,7 @@ Quit: Ctrl+Q</source>
         <translation>正在打开 %1 …</translation>
     </message>
     <message>
-        <location line="+79"/>
+        <location line="+65"/>
         <location line="+8"/>
         <source>Re-analyse</source>
         <translation>重新分析</translation>
@@ -2220,7 +2220,7 @@ File: %1</source>
 <context>
     <name>fog::ui::PlotInteraction</name>
     <message>
-        <location filename="../../ui/plot_interaction.cpp" line="+67"/>
+        <location filename="../../ui/plots/plot_interaction.cpp" line="+67"/>
         <source>wheel: zoom · drag: pan · double-click: whole view</source>
         <translation>滚轮：缩放 · 拖动：平移 · 双击：全图</translation>
     </message>
@@ -2253,7 +2253,7 @@ File: %1</source>
 <context>
     <name>QObject</name>
     <message>
-        <location filename="../../ui/delta_picker.cpp" line="-18"/>
+        <location filename="../../ui/plots/delta_picker.cpp" line="-18"/>
         <source>%1 µs</source>
         <translation>%1 µs</translation>
     </message>
@@ -2263,9 +2263,9 @@ File: %1</source>
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <location filename="../../ui/main_window.cpp" line="-1021"/>
+        <location filename="../../ui/main_window.cpp" line="-1009"/>
         <location filename="../../ui/plan_editor.cpp" line="-300"/>
+        <location filename="../../ui/plots/delta_picker.cpp" line="+1"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
@@ -2285,7 +2285,7 @@ File: %1</source>
         <translation>%1 分钟</translation>
     </message>
     <message>
-        <location filename="../../ui/plot_export.cpp" line="+11"/>
+        <location filename="../../ui/plots/plot_export.cpp" line="+11"/>
         <source>PNG image (*.png);;SVG drawing (*.svg);;PDF document (*.pdf)</source>
         <translation>PNG 图像 (*.png);;SVG 矢量图 (*.svg);;PDF 文档 (*.pdf)</translation>
     </message>
@@ -3299,7 +3299,7 @@ File: %1</source>
         <translation>χ²/dof %1</translation>
     </message>
     <message>
-        <location line="+102"/>
+        <location line="+122"/>
         <location line="+73"/>
         <source>PASS: every test point passed its validity checks and its IMU delay + 2σ is below the %1 ms limit.</source>
         <translation>合格：每个测试点都通过有效性检查，且其 IMU 延迟 + 2σ 低于 %1 ms 限值。</translation>
@@ -3333,7 +3333,7 @@ File: %1</source>
         <translation>%1 个测试点未得到延迟</translation>
     </message>
     <message>
-        <location line="-307"/>
+        <location line="-327"/>
         <source>table angle (encoder, %1 ms)</source>
         <translation>转台角度（编码器，%1 ms）</translation>
     </message>
@@ -3343,7 +3343,7 @@ File: %1</source>
         <translation>陀螺角度（增量累加，%1 ms）</translation>
     </message>
     <message>
-        <location line="+308"/>
+        <location line="+328"/>
         <source>INCOMPLETE (the run stopped early); its data give %1</source>
         <translation>不完整（运行提前停止）；其数据给出 %1</translation>
     </message>
@@ -3967,7 +3967,7 @@ File: %1</source>
 <context>
     <name>fog::ui::SeriesPlot</name>
     <message>
-        <location filename="../../ui/series_plot.cpp" line="+42"/>
+        <location filename="../../ui/plots/series_plot.cpp" line="+42"/>
         <source>time (s)</source>
         <translation>时间 (s)</translation>
     </message>

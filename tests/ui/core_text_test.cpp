@@ -28,7 +28,7 @@
 #include "core/protocol/recording_builder.h"
 #include "core/session/session_file.h"
 #include "ui/core_text.h"
-#include "ui/language.h"
+#include "ui/language/language.h"
 
 namespace {
 
