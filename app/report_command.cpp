@@ -137,10 +137,8 @@ int reportCommand(CliArguments& args) {
     // A session file (recorded or imported) or a saved raw sampling-board
     // stream, read as every command reads them. A session brings its own
     // identity, bench constants and stored results; a raw stream has none.
-    session::OpenOptions what;
-    what.rawBytes = true;  // hashed onto the report
-    int failed = 0;
-    auto opened = openFileArgument(args, "report takes one SESSION file", failed, what);
+    int failed = 0;  // the raw bytes are hashed onto the report
+    auto opened = openFileArgument(args, "report takes one SESSION file", failed, session::OpenOptions::withRawBytes());
     if (!opened) return failed;
     if (const auto* record = session::newestUsable(opened->results)) {
       // A stored result is a record: reported with the settings and verdict

@@ -192,12 +192,9 @@ int replayCommand(CliArguments& args) {
   if (!speed) return fail(speed.status(), 2);
   if (afap && speedText) return fail(invalidArgument("give --speed X or --afap, not both"), 2);
   if (*speed <= 0) return fail(invalidArgument("--speed must be > 0 (1 = real time); --afap for as fast as possible"), 2);
-  session::OpenOptions what;
-  what.rawBytes = true;
-  what.decode = false;  // the replay decodes the bytes as they are fed
-  what.sessionOnly = true;
   int failed = 0;
-  auto opened = openFileArgument(args, "replay needs exactly one SESSION.fbs", failed, what);
+  auto opened =
+      openFileArgument(args, "replay needs exactly one SESSION.fbs", failed, session::OpenOptions::sessionStream());
   if (!opened) return failed;
   const std::string& path = opened->path;
   auto constants = readConstants(args, opened->info.bench);
@@ -289,10 +286,8 @@ int exportCommand(CliArguments& args) {
   const auto csvDir = args.text("csv");
   const auto jsonPath = args.text("results-json");
   const bool overwrite = args.flag("overwrite");
-  session::OpenOptions sessionOnly;
-  sessionOnly.sessionOnly = true;
   int failed = 0;
-  auto opened = openFileArgument(args, "export needs exactly one SESSION.fbs", failed, sessionOnly);
+  auto opened = openFileArgument(args, "export needs exactly one SESSION.fbs", failed, session::OpenOptions::session());
   if (!opened) return failed;
   const std::string& path = opened->path;
   auto constants = readConstants(args, opened->info.bench);

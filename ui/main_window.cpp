@@ -63,13 +63,6 @@ namespace fog::ui {
 
 namespace {
 
-// The GUI opens sessions only (its file dialogs, the browser, replay).
-session::OpenOptions sessionOnly() {
-  session::OpenOptions options;
-  options.sessionOnly = true;
-  return options;
-}
-
 QString durationText(double seconds) {
   const auto s = static_cast<long long>(std::ceil(std::max(seconds, 0.0)));
   return s >= 60 ? QObject::tr("%1 min %2 s").arg(s / 60).arg(s % 60, 2, 10, QChar('0')) : QObject::tr("%1 s").arg(s);
@@ -618,10 +611,7 @@ Result<RunRequest> MainWindow::buildRunRequest() const {
     };
   } else {
     const QString path = configureView_->replayPath();
-    session::OpenOptions what = sessionOnly();
-    what.rawBytes = true;
-    what.decode = false;  // the replay decodes the bytes as they are fed
-    auto opened = session::openSessionOrStream(path.toStdString(), what);
+    auto opened = session::openSessionOrStream(path.toStdString(), session::OpenOptions::sessionStream());
     if (!opened) return opened.status();
     auto bytes = std::move(opened->rawBytes);
     plan = opened->info.plan;
@@ -842,7 +832,7 @@ void MainWindow::loadSession(const QString& path, bool reanalyse, std::int64_t r
   // Reading and fitting a long session takes a while: off the GUI thread.
   inBackground(
       this, [path, reanalyse, resultId, bench, choices]() -> Loaded {
-        auto opened = session::openSessionOrStream(path.toStdString(), sessionOnly());
+        auto opened = session::openSessionOrStream(path.toStdString(), session::OpenOptions::session());
         if (!opened) return {nullptr, opened.status()};
         auto outcome = std::make_shared<RunOutcome>();
         outcome->info = opened->info;

@@ -743,11 +743,8 @@ Result<report::ReportInput> ResultView::reportInput() const {
   // The report carries the hash of the raw stream the result came from.
   std::vector<std::uint8_t> rawBytes;
   if (!outcome_->sessionPath.empty()) {
-    session::OpenOptions what;
-    what.rawBytes = true;
-    what.decode = false;
-    what.sessionOnly = true;
-    FOG_ASSIGN_OR_RETURN(auto opened, session::openSessionOrStream(outcome_->sessionPath, what));
+    FOG_ASSIGN_OR_RETURN(auto opened,
+                         session::openSessionOrStream(outcome_->sessionPath, session::OpenOptions::sessionStream()));
     rawBytes = std::move(opened.rawBytes);
   }
   return report::makeReportInput(outcome_->info, outcome_->recording, *outcome_->report, std::move(rawBytes),

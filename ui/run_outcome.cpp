@@ -5,7 +5,6 @@
 #include <cstdio>
 
 #include "core/analysis/report_writer.h"
-#include "core/session/session_file.h"
 
 namespace fog::ui {
 
@@ -23,11 +22,6 @@ std::string limitText(double v) {
 }
 
 }  // namespace
-
-std::vector<ResultRecord> resultRecords(const std::vector<session::StoredResult>& stored,
-                                        const analysis::BenchConstants& fallback) {
-  return session::readStoredResults(stored, fallback);
-}
 
 const ResultRecord* RunOutcome::shownResult() const {
   for (const auto& r : results)

@@ -21,11 +21,6 @@ namespace fog::ui {
 // parser the CLI shares). The GUI shows that verdict, never a re-judgement.
 using ResultRecord = session::StoredResultRecord;
 
-// The session's results as records, oldest first. A constant a result's
-// settings do not state (older files) is taken from `fallback` (the
-// session's own bench constants).
-std::vector<ResultRecord> resultRecords(const std::vector<session::StoredResult>& stored,
-                                        const analysis::BenchConstants& fallback);
 using session::newestUsable;
 
 struct RunOutcome {

@@ -63,6 +63,31 @@ Result<OpenedSession> openSessionFile(const std::string& path, const OpenOptions
 
 }  // namespace
 
+OpenOptions OpenOptions::session() {
+  OpenOptions o;
+  o.sessionOnly = true;
+  return o;
+}
+
+OpenOptions OpenOptions::sessionStream() {
+  OpenOptions o = session();
+  o.rawBytes = true;
+  o.decode = false;  // a replay decodes the bytes as they are fed
+  return o;
+}
+
+OpenOptions OpenOptions::sessionRecords() {
+  OpenOptions o = session();
+  o.decode = false;
+  return o;
+}
+
+OpenOptions OpenOptions::withRawBytes() {
+  OpenOptions o;
+  o.rawBytes = true;
+  return o;
+}
+
 std::string OpenedSession::sourceLine(const std::string& what) const {
   if (!isSession) return "raw stream " + toValidUtf8(path);  // a file name need not be UTF-8
   std::string s = what + " " + toValidUtf8(path);

@@ -48,6 +48,12 @@ struct OpenOptions {
   // Refuse a file that is not a session with SessionReader::open's message
   // (export and replay need a session's identity and results).
   bool sessionOnly = false;
+
+  // The combinations the callers use, named by what they are for.
+  static OpenOptions session();        // a session (no raw stream), decoded: export, the GUI's review
+  static OpenOptions sessionStream();  // a session's raw bytes, not decoded: replay, the report's hash
+  static OpenOptions withRawBytes();   // a session or a stream, decoded, with its bytes: the report
+  static OpenOptions sessionRecords(); // a session's identity and results, nothing decoded: after a run
 };
 
 struct OpenedSession {

@@ -4,7 +4,6 @@
 #include "core/session/session_api.h"
 
 #include <gtest/gtest.h>
-#include <sqlite3.h>
 
 #include <fstream>
 #include <string>
@@ -18,30 +17,14 @@ namespace {
 
 using fog::test::ScratchDir;
 
-// A complete session of the short run with its decoded samples stored.
-std::string recordedSession(const ScratchDir& dir, const std::string& name, bool complete = true) {
-  const std::string path = dir.file(name);
+using fog::test::runSql;
+
+// A finished session of the short run, its decoded samples stored.
+std::string simulatedSession(const ScratchDir& dir, const std::string& name, bool complete = true) {
   SessionInfo info;
   info.source = "simulator, seed 3";
   info.plan = fog::test::shortPlan();
-  auto w = SessionWriter::create(path, info);
-  EXPECT_TRUE(w.isOk()) << w.status().message();
-  const auto& bytes = fog::test::shortRun().bytes;
-  EXPECT_TRUE((*w)->appendRaw(bytes.data(), bytes.size()).isOk());
-  auto rec = protocol::decodeRecording(bytes);
-  EXPECT_TRUE(rec.isOk());
-  EXPECT_TRUE((*w)->storeRecording(*rec).isOk());
-  EXPECT_TRUE((*w)->finish(complete, complete ? "" : "stopped by the operator").isOk());
-  return path;
-}
-
-void runSql(const std::string& path, const std::string& sql) {
-  sqlite3* db = nullptr;
-  ASSERT_EQ(sqlite3_open_v2(path.c_str(), &db, SQLITE_OPEN_READWRITE, nullptr), SQLITE_OK);
-  char* err = nullptr;
-  EXPECT_EQ(sqlite3_exec(db, sql.c_str(), nullptr, nullptr, &err), SQLITE_OK) << (err ? err : "");
-  sqlite3_free(err);
-  sqlite3_close(db);
+  return fog::test::recordedSession(dir, name, info, complete);
 }
 
 AnalysisSettings settingsWithLimit(double limitMs) {
@@ -53,7 +36,7 @@ AnalysisSettings settingsWithLimit(double limitMs) {
 
 TEST(SessionApi, OpensASessionWithItsIdentityRecordingAndNoResults) {
   ScratchDir dir;
-  const auto path = recordedSession(dir, "s.fbs");
+  const auto path = simulatedSession(dir, "s.fbs");
   auto s = openSessionOrStream(path);
   ASSERT_TRUE(s.isOk()) << s.status().message();
   EXPECT_TRUE(s->isSession);
@@ -68,14 +51,22 @@ TEST(SessionApi, OpensASessionWithItsIdentityRecordingAndNoResults) {
   EXPECT_EQ(s->sourceLine(), "session " + path + " (simulator, seed 3)");
 }
 
+TEST(SessionApi, ASessionsStreamIsReadUndecodedForAReplay) {
+  ScratchDir dir;
+  const auto path = simulatedSession(dir, "replay.fbs");
+  auto s = openSessionOrStream(path, OpenOptions::sessionStream());
+  ASSERT_TRUE(s.isOk()) << s.status().message();
+  EXPECT_TRUE(s->rawBytes == fog::test::shortRun().bytes);
+  EXPECT_TRUE(s->recording.testPoints.empty()) << "not decoded: the replay decodes as it feeds";
+  EXPECT_EQ(s->info.source, "simulator, seed 3");
+}
+
 TEST(SessionApi, OpensARawStreamFileWithoutIdentityOrPulseEquivalent) {
   ScratchDir dir;
   const std::string path = dir.file("run.bin");
   const auto& bytes = fog::test::shortRun().bytes;
   fog::test::writeFile(path, bytes);
-  OpenOptions withBytes;
-  withBytes.rawBytes = true;
-  auto s = openSessionOrStream(path, withBytes);
+  auto s = openSessionOrStream(path, OpenOptions::withRawBytes());
   ASSERT_TRUE(s.isOk()) << s.status().message();
   EXPECT_FALSE(s->isSession);
   EXPECT_EQ(s->rawByteCount, bytes.size());
@@ -88,16 +79,14 @@ TEST(SessionApi, OpensARawStreamFileWithoutIdentityOrPulseEquivalent) {
   EXPECT_TRUE(withoutBytes->rawBytes.empty()) << "kept only when asked for";
   EXPECT_EQ(withoutBytes->rawByteCount, bytes.size());
 
-  OpenOptions sessionOnly;
-  sessionOnly.sessionOnly = true;
-  auto refused = openSessionOrStream(path, sessionOnly);
+  auto refused = openSessionOrStream(path, OpenOptions::session());
   ASSERT_FALSE(refused.isOk());
   EXPECT_NE(refused.status().message().find("not a fogbench session"), std::string::npos) << refused.status().message();
 }
 
 TEST(SessionApi, ASessionWithADamagedHeaderIsRefusedNeverReadAsARawStream) {
   ScratchDir dir;
-  const auto path = recordedSession(dir, "hit.fbs");
+  const auto path = simulatedSession(dir, "hit.fbs");
   {
     std::fstream f(path, std::ios::binary | std::ios::in | std::ios::out);
     const char zeros[16] = {};
@@ -111,7 +100,7 @@ TEST(SessionApi, ASessionWithADamagedHeaderIsRefusedNeverReadAsARawStream) {
 
 TEST(SessionApi, DamagedDecodedSamplesAreReadFromTheIntactRawStreamAndSaySo) {
   ScratchDir dir;
-  const auto path = recordedSession(dir, "samples.fbs");
+  const auto path = simulatedSession(dir, "samples.fbs");
   runSql(path, "UPDATE decoded SET counter_bits = 4000");
   auto reader = SessionReader::open(path);
   ASSERT_TRUE(reader.isOk());
@@ -132,7 +121,7 @@ TEST(SessionApi, DamagedDecodedSamplesAreReadFromTheIntactRawStreamAndSaySo) {
 
 TEST(SessionApi, ADamagedRawStreamChunkIsNotPapedOver) {
   ScratchDir dir;
-  const auto path = recordedSession(dir, "both.fbs");
+  const auto path = simulatedSession(dir, "both.fbs");
   runSql(path, "UPDATE decoded SET counter_bits = 4000; UPDATE raw_chunk SET data_fnv1a = data_fnv1a + 1 WHERE seq = 0");
   auto s = openSessionOrStream(path);
   ASSERT_FALSE(s.isOk()) << "both copies damaged: nothing to analyse";
@@ -141,7 +130,7 @@ TEST(SessionApi, ADamagedRawStreamChunkIsNotPapedOver) {
 
 TEST(SessionApi, AnalyseAndStoreAddsTheResultWithItsSettings) {
   ScratchDir dir;
-  const auto path = recordedSession(dir, "store.fbs");
+  const auto path = simulatedSession(dir, "store.fbs");
   auto s = openSessionOrStream(path);
   ASSERT_TRUE(s.isOk());
   auto settings = settingsWithLimit(0.6);
@@ -176,7 +165,7 @@ TEST(SessionApi, AnalyseAndStoreAddsTheResultWithItsSettings) {
 
 TEST(SessionApi, NotAskedToStoreOrARawStreamStoresNothing) {
   ScratchDir dir;
-  const auto path = recordedSession(dir, "nostore.fbs");
+  const auto path = simulatedSession(dir, "nostore.fbs");
   auto s = openSessionOrStream(path);
   ASSERT_TRUE(s.isOk());
   const auto result = analyseAndStore(*s, settingsWithLimit(0.8), false);
@@ -190,7 +179,7 @@ TEST(SessionApi, NotAskedToStoreOrARawStreamStoresNothing) {
 
 TEST(SessionApi, AnIncompleteSessionStaysIncompleteInItsNewResult) {
   ScratchDir dir;
-  const auto path = recordedSession(dir, "stopped.fbs", false);
+  const auto path = simulatedSession(dir, "stopped.fbs", false);
   auto s = openSessionOrStream(path);
   ASSERT_TRUE(s.isOk());
   EXPECT_FALSE(s->complete);
@@ -212,7 +201,7 @@ TEST(SessionApi, AnIncompleteSessionStaysIncompleteInItsNewResult) {
 
 TEST(SessionApi, ShowResultTakesTheAskedForRecordAndItsConstants) {
   ScratchDir dir;
-  const auto path = recordedSession(dir, "two.fbs");
+  const auto path = simulatedSession(dir, "two.fbs");
   auto s = openSessionOrStream(path);
   ASSERT_TRUE(s.isOk());
   auto first = settingsWithLimit(0.8);
