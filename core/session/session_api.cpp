@@ -3,7 +3,6 @@
 #include <utility>
 
 #include "core/common/text.h"
-#include "core/common/version.h"
 #include "core/protocol/recording_builder.h"
 #include "core/session/raw_stream_file.h"
 

@@ -27,9 +27,17 @@ std::string simulatedSession(const ScratchDir& dir, const std::string& name, boo
   return fog::test::recordedSession(dir, name, info, complete);
 }
 
-AnalysisSettings settingsWithLimit(double limitMs) {
+// The same, opened as every caller opens it.
+Result<OpenedSession> openSimulated(const ScratchDir& dir, const std::string& name, bool complete = true) {
+  return openSessionOrStream(simulatedSession(dir, name, complete));
+}
+
+// Settings as a caller gives them; a board delay other than the default
+// tells two results apart.
+AnalysisSettings settingsWithLimit(double limitMs, double boardDelayMs = analysis::BenchConstants{}.boardDelayMs) {
   AnalysisSettings s;
   s.imuDelayLimitMs = limitMs;
+  s.constants.boardDelayMs = boardDelayMs;
   s.producedBy = "session_api_test";
   return s;
 }
@@ -130,9 +138,9 @@ TEST(SessionApi, ADamagedRawStreamChunkIsNotPapedOver) {
 
 TEST(SessionApi, AnalyseAndStoreAddsTheResultWithItsSettings) {
   ScratchDir dir;
-  const auto path = simulatedSession(dir, "store.fbs");
-  auto s = openSessionOrStream(path);
-  ASSERT_TRUE(s.isOk());
+  auto s = openSimulated(dir, "store.fbs");
+  ASSERT_TRUE(s.isOk()) << s.status().message();
+  const std::string path = s->path;
   auto settings = settingsWithLimit(0.6);
   settings.constants.gyroSign = {1, 1, 1};
   const auto result = analyseAndStore(*s, settings);
@@ -165,9 +173,9 @@ TEST(SessionApi, AnalyseAndStoreAddsTheResultWithItsSettings) {
 
 TEST(SessionApi, NotAskedToStoreOrARawStreamStoresNothing) {
   ScratchDir dir;
-  const auto path = simulatedSession(dir, "nostore.fbs");
-  auto s = openSessionOrStream(path);
-  ASSERT_TRUE(s.isOk());
+  auto s = openSimulated(dir, "nostore.fbs");
+  ASSERT_TRUE(s.isOk()) << s.status().message();
+  const std::string path = s->path;
   const auto result = analyseAndStore(*s, settingsWithLimit(0.8), false);
   ASSERT_TRUE(result.report.isOk());
   EXPECT_FALSE(result.stored);
@@ -179,9 +187,9 @@ TEST(SessionApi, NotAskedToStoreOrARawStreamStoresNothing) {
 
 TEST(SessionApi, AnIncompleteSessionStaysIncompleteInItsNewResult) {
   ScratchDir dir;
-  const auto path = simulatedSession(dir, "stopped.fbs", false);
-  auto s = openSessionOrStream(path);
-  ASSERT_TRUE(s.isOk());
+  auto s = openSimulated(dir, "stopped.fbs", false);
+  ASSERT_TRUE(s.isOk()) << s.status().message();
+  const std::string path = s->path;
   EXPECT_FALSE(s->complete);
   EXPECT_NE(s->sourceLine().find("[incomplete: stopped by the operator]"), std::string::npos) << s->sourceLine();
   const auto result = analyseAndStore(*s, settingsWithLimit(0.8));
@@ -201,15 +209,11 @@ TEST(SessionApi, AnIncompleteSessionStaysIncompleteInItsNewResult) {
 
 TEST(SessionApi, ShowResultTakesTheAskedForRecordAndItsConstants) {
   ScratchDir dir;
-  const auto path = simulatedSession(dir, "two.fbs");
-  auto s = openSessionOrStream(path);
-  ASSERT_TRUE(s.isOk());
-  auto first = settingsWithLimit(0.8);
-  first.constants.boardDelayMs = 0.25;
-  ASSERT_TRUE(analyseAndStore(*s, first).stored);
-  auto second = settingsWithLimit(0.9);
-  second.constants.boardDelayMs = 0.30;
-  ASSERT_TRUE(analyseAndStore(*s, second).stored);
+  auto s = openSimulated(dir, "two.fbs");
+  ASSERT_TRUE(s.isOk()) << s.status().message();
+  const std::string path = s->path;
+  ASSERT_TRUE(analyseAndStore(*s, settingsWithLimit(0.8, 0.25)).stored);
+  ASSERT_TRUE(analyseAndStore(*s, settingsWithLimit(0.9, 0.30)).stored);
   auto both = openSessionOrStream(path);
   ASSERT_TRUE(both.isOk());
   ASSERT_EQ(both->results.size(), 2u);
