@@ -20,8 +20,6 @@
 #include "core/diagnosis/accuracy_study.h"
 #include "core/diagnosis/effects.h"
 #include "core/model/simulator.h"
-#include "core/session/raw_stream_file.h"
-#include "core/session/session_file.h"
 #include "app/cli_common.h"
 #include "app/session_commands.h"
 #include "app/sim_options.h"
@@ -177,29 +175,6 @@ int runCommand(CliArguments& args) {
   if (!run->complete) printIncompleteRun(*run);
   if (!run->recordingStatus.isOk()) return fail(run->recordingStatus, 1);
   return printReport(run->report, acquisition::reportContextOf(*run, options), json);
-}
-
-int analyzeCommand(CliArguments& args) {
-  // A session file (any SQLite file: the session reader says clearly when it
-  // is a foreign or damaged one) rather than a raw stream.
-  if (args.positionals().size() == 1 && session::isSqliteFile(args.positionals()[0]))
-    return analyzeSessionCommand(args, args.positionals()[0]);
-  const bool json = args.flag("json");
-  // A raw stream states its pulse equivalent in its STATUS frames; there is
-  // no session to fall back on, so only the command line can supply one.
-  auto constants = readConstants(args);
-  if (!constants) return fail(constants.status(), 2);
-  auto limit = readDelayLimit(args);
-  if (!limit) return fail(limit.status(), 2);
-  if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
-  if (args.positionals().size() != 1) return fail(invalidArgument("analyze needs exactly one FILE"), 2);
-  const std::string path = args.positionals()[0];
-  auto stream = session::readRawStreamFile(path, constants->pulseEquivalentDeg);
-  if (!stream) return fail(stream.status(), 2);
-  analysis::ReportContext context;
-  context.source = "raw stream " + toValidUtf8(path);  // a file name need not be UTF-8
-  context.imuDelayLimitMs = *limit;
-  return printReport(analysis::analyzeRecording(stream->recording, *constants), context, json);
 }
 
 int theoryCommand(CliArguments& args) {

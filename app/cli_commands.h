@@ -7,7 +7,6 @@
 namespace fog::app {
 
 int runCommand(CliArguments& args);       // simulate a plan and report its delay
-int analyzeCommand(CliArguments& args);   // report the delay of a saved raw stream
 int theoryCommand(CliArguments& args);    // delay budget and resolution
 int accuracyCommand(CliArguments& args);  // Monte Carlo accuracy study
 

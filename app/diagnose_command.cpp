@@ -8,8 +8,7 @@
 #include "app/cli_common.h"
 #include "core/diagnosis/blind_check.h"
 #include "core/diagnosis/diagnosis.h"
-#include "core/session/raw_stream_file.h"
-#include "core/session/session_file.h"
+#include "app/session_input.h"
 
 namespace fog::app {
 
@@ -55,43 +54,17 @@ int diagnoseCommand(CliArguments& args) {
   if (!threads) return fail(threads.status(), 2);
   diagnosis::DiagnosisOptions options;
   if (Status s = readBiasInstability(args, options); !s.isOk()) return fail(s, 2);
-  if (args.positionals().size() != 1) {
-    (void)args.checkAllUsed();
-    return fail(invalidArgument("diagnose needs exactly one SESSION.fbs or raw stream FILE"), 2);
-  }
-  const std::string path = args.positionals()[0];
-  Recording recording;
-  SessionInfo info;
-  bool haveInfo = false;
-  BenchConstants constants;
-  if (session::isSqliteFile(path)) {
-    auto reader = session::SessionReader::open(path);
-    if (!reader) {
-      (void)args.checkAllUsed();
-      return fail(reader.status(), 2);
-    }
-    auto c = readConstants(args, (*reader)->info().bench);
-    if (!c) return fail(c.status(), 2);
-    if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
-    // Stored samples (imports have no raw bytes) or the decoded raw stream.
-    auto rec = (*reader)->recording(c->pulseEquivalentDeg);
-    if (!rec) return fail(rec.status(), exitCodeFor(rec.status()));
-    recording = std::move(*rec);
-    info = (*reader)->info();
-    haveInfo = true;
-    constants = *c;
-  } else {
-    auto c = readConstants(args);  // a raw stream has no bench constants of its own
-    if (!c) return fail(c.status(), 2);
-    if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
-    auto stream = session::readRawStreamFile(path, c->pulseEquivalentDeg);
-    if (!stream) return fail(stream.status(), 2);
-    recording = std::move(stream->recording);
-    constants = *c;
-  }
+  int failed = 0;
+  auto opened = openFileArgument(args, "diagnose needs exactly one SESSION.fbs or raw stream FILE", failed);
+  if (!opened) return failed;
+  // A session's constants (a raw stream's pulse equivalent only from the
+  // command line), unless the command line gives others.
+  auto constants = readConstants(args, opened->info.bench);
+  if (!constants) return fail(constants.status(), 2);
+  if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
   options.monteCarloSeeds = *seeds;
   options.threads = *threads;
-  auto d = diagnosis::diagnose(recording, haveInfo ? &info : nullptr, constants, options);
+  auto d = diagnosis::diagnose(opened->recording, opened->isSession ? &opened->info : nullptr, *constants, options);
   if (!d) return fail(d.status(), exitCodeFor(d.status()));
   std::cout << (json ? diagnosis::formatDiagnosisJson(*d) + "\n" : diagnosis::formatDiagnosisText(*d));
   return 0;

@@ -38,7 +38,7 @@
 #include "app/gui_screenshot.h"
 #include "ui/bench_presets.h"
 #include "core/common/memory.h"
-#include "ui/language.h"
+#include "ui/language/language.h"
 #include "ui/main_window.h"
 #include "ui/plan_editor.h"
 #include "ui/window_host.h"

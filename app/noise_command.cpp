@@ -6,8 +6,7 @@
 
 #include "app/cli_common.h"
 #include "core/noise/gyro_noise.h"
-#include "core/session/raw_stream_file.h"
-#include "core/session/session_file.h"
+#include "app/session_input.h"
 
 namespace fog::app {
 
@@ -46,38 +45,13 @@ int noiseCommand(CliArguments& args) {
       planned.push_back(t);
     }
   }
-  if (args.positionals().size() != 1) {
-    (void)args.checkAllUsed();
-    return fail(invalidArgument("noise needs exactly one SESSION.fbs or raw stream FILE"), 2);
-  }
-  const std::string path = args.positionals()[0];
-  Recording recording;
-  BenchConstants bench;
-  // Degrees per pulse for a stream that does not state its own; a session
-  // falls back on its bench constant.
-  auto pulse = args.number("pulse-equivalent-deg", 0.0);
-  if (!pulse) return fail(pulse.status(), 2);
-  if (session::isSqliteFile(path)) {
-    auto reader = session::SessionReader::open(path);
-    if (!reader) {
-      (void)args.checkAllUsed();
-      return fail(reader.status(), 2);
-    }
-    bench = (*reader)->info().bench;
-    auto rec = (*reader)->recording(*pulse);
-    if (!rec) {
-      (void)args.checkAllUsed();
-      return fail(rec.status(), exitCodeFor(rec.status()));
-    }
-    recording = std::move(*rec);
-  } else {
-    auto stream = session::readRawStreamFile(path, *pulse);
-    if (!stream) {
-      (void)args.checkAllUsed();
-      return fail(stream.status(), 2);
-    }
-    recording = std::move(stream->recording);
-  }
+  int failed = 0;
+  auto opened = openFileArgument(args, "noise needs exactly one SESSION.fbs or raw stream FILE", failed);
+  if (!opened) return failed;
+  // A raw stream states no latitude or pulse equivalent (0: the stream's
+  // STATUS frames or the command line must).
+  const BenchConstants& bench = opened->info.bench;
+  const Recording& recording = opened->recording;
   auto latitude = args.number("latitude-deg", bench.latitudeDeg);
   if (!latitude) return fail(latitude.status(), 2);
   if (!(std::abs(*latitude) <= 90.0)) return fail(invalidArgument("--latitude-deg must be within [-90, 90]"), 2);

@@ -9,15 +9,13 @@
 #include <iostream>
 #include <iterator>
 
-#include "core/acquisition/stored_result.h"
 #include "core/analysis/delay_analysis.h"
 #include "app/cli_common.h"
 #include "core/common/version.h"
 #include "core/model/simulator.h"
 #include "core/protocol/recording_builder.h"
-#include "core/session/raw_stream_file.h"
-#include "core/session/session_file.h"
-#include "ui/language.h"
+#include "app/session_input.h"
+#include "ui/language/language.h"
 #include "ui/report/calibration_report.h"
 
 namespace fog::app {
@@ -52,49 +50,6 @@ Result<report::ReportInput> simulatedSession(const std::string& preset, double s
   in.info.notes = truth;
   in.recording = std::move(recording);
   in.rawBytes = std::move(run.bytes);
-  return in;
-}
-
-// A session file (recorded or imported) or a saved raw sampling-board
-// stream, as `analyze` reads them. A session brings its own identity and
-// bench constants; a raw stream has neither. pulseEquivalentDeg (> 0): for a
-// stream that does not state its own (--pulse-equivalent-deg).
-Result<report::ReportInput> fileSession(const std::string& path, double pulseEquivalentDeg) {
-  report::ReportInput in;
-  if (session::isSqliteFile(path)) {
-    FOG_ASSIGN_OR_RETURN(auto reader, session::SessionReader::open(path));
-    FOG_ASSIGN_OR_RETURN(auto recording, reader->recording(pulseEquivalentDeg));
-    FOG_ASSIGN_OR_RETURN(auto bytes, reader->rawBytes());
-    in.info = reader->info();
-    in.info.source = "session " + path + (in.info.source.empty() ? "" : " (" + in.info.source + ")");
-    if (!reader->complete()) {
-      in.info.source += " [incomplete: " + reader->incompleteReason() + "]";
-      in.incompleteReason = reader->incompleteReason();
-    }
-    // The newest intact stored result is the one reported, as stored.
-    FOG_ASSIGN_OR_RETURN(auto stored, reader->results());
-    const auto records = acquisition::readStoredResults(stored, in.info.bench);
-    if (const auto* shown = acquisition::newestUsable(records)) {
-      in.stored = *shown;
-      std::size_t number = 0;
-      for (std::size_t i = 0; i < records.size(); ++i)
-        if (records[i].id == shown->id) number = i + 1;
-      in.resultShown = QString::fromStdString("result " + std::to_string(number) + " of " +
-                                              std::to_string(records.size()) + ", stored " + shown->createdUtc +
-                                              " by " + (shown->analysedBy.empty() ? "analysis" : shown->analysedBy) +
-                                              " (fogbench " +
-                                              (shown->softwareVersion.empty() ? "version not stated"
-                                                                              : shown->softwareVersion) +
-                                              ")");
-    }
-    in.recording = std::move(recording);
-    in.rawBytes = std::move(bytes);
-    return in;
-  }
-  FOG_ASSIGN_OR_RETURN(auto stream, session::readRawStreamFile(path, pulseEquivalentDeg));
-  in.info.source = "raw stream " + path;
-  in.recording = std::move(stream.recording);
-  in.rawBytes = std::move(stream.bytes);
   return in;
 }
 
@@ -162,50 +117,63 @@ int reportCommand(CliArguments& args) {
     (void)args.checkAllUsed();
     return fail(invalidArgument("report needs one SESSION file or --preset NAME"), 2);
   }
-  // Read here for the stream's decoding, and again with the other constants.
-  auto pulse = args.number("pulse-equivalent-deg", 0.0);
-  if (!pulse) {
-    (void)args.checkAllUsed();
-    return fail(pulse.status(), 2);
+  report::ReportInput in;
+  if (preset) {
+    auto simulated = simulatedSession(*preset, *seed);
+    if (!simulated) {
+      (void)args.checkAllUsed();
+      return fail(simulated.status(), 2);
+    }
+    in = std::move(*simulated);
+    auto constants = readConstants(args, in.info.bench);
+    if (!constants) return fail(constants.status(), 2);
+    if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
+    auto delays = analysis::analyzeRecording(in.recording, *constants);
+    if (!delays) return fail(delays.status(), exitCodeFor(delays.status()));
+    storeConstants(*constants, in.info.bench);
+    in.delays = std::move(*delays);
+    in.imuDelayLimitMs = *limit;
+  } else {
+    // A session file (recorded or imported) or a saved raw sampling-board
+    // stream, read as every command reads them. A session brings its own
+    // identity, bench constants and stored results; a raw stream has none.
+    int failed = 0;  // the raw bytes are hashed onto the report
+    auto opened = openFileArgument(args, "report takes one SESSION file", failed, session::OpenOptions::withRawBytes());
+    if (!opened) return failed;
+    if (const auto* record = session::newestUsable(opened->results)) {
+      // A stored result is a record: reported with the settings and verdict
+      // it was stored with. Other settings are another analysis, stored as a
+      // new result first; never a silent re-judgement on paper.
+      for (const char* option : {"limit-ms", "read-delay-ms", "read-delay-std-ms", "board-delay-ms",
+                                 "board-delay-std-ms", "pulse-equivalent-deg", "gyro-sign"})
+        if (args.has(option)) {
+          (void)args.checkAllUsed();
+          return fail(invalidArgument(std::string("--") + option + " does not apply: the report shows the "
+                                      "session's stored result with the settings it was stored with (" +
+                                      session::describeResult(opened->results, *record) + "); to report other settings, store a result with them "
+                                      "first: fogbench-cli analyze " + files.front() + " --" + option +
+                                      " ..., then report again"),
+                      2);
+        }
+    }
+    // Without a stored result: the session's own constants, unless the
+    // command line gives others.
+    auto constants = readConstants(args, opened->info.bench);
+    if (!constants) return fail(constants.status(), 2);
+    if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
+    auto shown = session::showResult(*opened, 0, *constants, *limit);
+    if (!shown.report) return fail(shown.report.status(), exitCodeFor(shown.report.status()));
+    SessionInfo info = opened->info;
+    info.source = shown.context.source;
+    storeConstants(shown.constants, info.bench);
+    in = report::makeReportInput(std::move(info), std::move(opened->recording), std::move(*shown.report),
+                                 std::move(opened->rawBytes), shown.record ? &*shown.record : nullptr,
+                                 shown.context.imuDelayLimitMs, shown.context.incompleteReason,
+                                 QString::fromStdString(shown.description));
   }
-  auto input = preset ? simulatedSession(*preset, *seed) : fileSession(files.front(), *pulse);
-  if (!input) {
-    (void)args.checkAllUsed();
-    return fail(input.status(), 2);
-  }
-  report::ReportInput& in = *input;
-  if (in.stored) {
-    // A stored result is a record: reported with the settings and verdict
-    // it was stored with. Other settings are another analysis, stored as a
-    // new result first; never a silent re-judgement on paper.
-    for (const char* option : {"limit-ms", "read-delay-ms", "read-delay-std-ms", "board-delay-ms",
-                               "board-delay-std-ms", "pulse-equivalent-deg", "gyro-sign"})
-      if (args.has(option)) {
-        (void)args.checkAllUsed();
-        return fail(invalidArgument(std::string("--") + option + " does not apply: the report shows the session's "
-                                    "stored result with the settings it was stored with (" +
-                                    in.resultShown.toStdString() + "); to report other settings, store a result "
-                                    "with them first: fogbench-cli analyze " + files.front() + " --" + option +
-                                    " ..., then report again"),
-                    2);
-      }
-  }
-  // The stored result's constants (with its gyro signs); else the session's
-  // own, unless the command line gives others.
-  auto constants = readConstants(args, in.info.bench);
-  if (!constants) return fail(constants.status(), 2);
-  if (in.stored) *constants = in.stored->constants;
-  if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
-
   if (imuModel) in.info.imuModel = *imuModel;
   if (imuSerial) in.info.imuSerial = *imuSerial;
   if (operatorName) in.info.operatorName = *operatorName;
-  storeConstants(*constants, in.info.bench);
-  in.imuDelayLimitMs = in.stored ? in.stored->imuDelayLimitMs : *limit;
-
-  auto delays = analysis::analyzeRecording(in.recording, *constants);
-  if (!delays) return fail(delays.status(), exitCodeFor(delays.status()));
-  in.delays = std::move(*delays);
 
   chooseQtPlatform();
   qInstallMessageHandler(quietQtMessages);

@@ -19,6 +19,7 @@
 #include "core/io/imported_session.h"
 #include "core/session/session_file.h"
 #include "core/session/session_list.h"
+#include "app/session_input.h"
 
 namespace fog::app {
 
@@ -27,12 +28,6 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-std::string sessionSource(const session::SessionReader& r, const std::string& what) {
-  std::string s = what + " " + toValidUtf8(r.path());  // a file name need not be UTF-8
-  if (!r.info().source.empty()) s += " (" + r.info().source + ")";
-  if (!r.complete()) s += " [incomplete: " + r.incompleteReason() + "]";
-  return s;
-}
 
 
 }  // namespace
@@ -76,46 +71,32 @@ SessionInfo simulatedSessionInfo(const SessionInfo& given, const TestPlan& plan,
   return info;
 }
 
-int analyzeSessionCommand(CliArguments& args, const std::string& path) {
+int analyzeCommand(CliArguments& args) {
   const bool json = args.flag("json");
   const bool noStore = args.flag("no-store");
-  auto reader = session::SessionReader::open(path);
-  if (!reader) {
-    (void)args.checkAllUsed();
-    return fail(reader.status(), 2);
-  }
-  auto constants = readConstants(args, (*reader)->info().bench);
+  int failed = 0;
+  auto opened = openFileArgument(args, "analyze needs exactly one FILE", failed);
+  if (!opened) return failed;
+  // A session's own constants, unless the command line gives others; a raw
+  // stream states its pulse equivalent in its STATUS frames, so only the
+  // command line can supply one (openSessionOrStream leaves it 0).
+  session::AnalysisSettings settings;
+  settings.producedBy = "fogbench-cli analyze";
+  auto constants = readConstants(args, opened->info.bench);
   if (!constants) return fail(constants.status(), 2);
   auto limit = readDelayLimit(args);
   if (!limit) return fail(limit.status(), 2);
   if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
-  if (args.positionals().size() != 1) return fail(invalidArgument("analyze needs exactly one FILE"), 2);
-  auto recording = (*reader)->recording(constants->pulseEquivalentDeg);
-  if (!recording) return fail(recording.status(), exitCodeFor(recording.status()));
-  analysis::ReportContext context;
-  context.source = sessionSource(**reader, "session");
-  if (!(*reader)->complete()) context.incompleteReason = (*reader)->incompleteReason();
-  context.imuDelayLimitMs = *limit;
-  auto report = analysis::analyzeRecording(*recording, *constants);
-  if (!report) return fail(report.status(), exitCodeFor(report.status()));
-  std::cout << (json ? analysis::formatReportJson(*report, context) + "\n"
-                     : forTerminal(analysis::formatReportText(*report, context)));
-  if (noStore) return 0;
-  if ((*reader)->beingRecorded()) {
-    // Never compete with the recorder for the write lock; the analysis of a
-    // part of the recording is printed, not stored.
-    std::cerr << "fogbench-cli: note: the result was not stored: session " << path
-              << " is being recorded right now; analyse it again when the recording has finished\n";
-    return 0;
-  }
-  const ImportSettings imported = (*reader)->info().imported;
-  reader->reset();  // close before writing
-  if (auto s = session::addResult(path,
-                                  acquisition::analysisSettingsJson(*constants, *limit, "fogbench-cli analyze", imported),
-                                  analysis::formatReportJson(*report, context));
-      !s.isOk())
-    return fail(s, 2);
-  if (!json) std::cout << "Result stored in session " << path << ".\n";
+  settings.constants = *constants;
+  settings.imuDelayLimitMs = *limit;
+  const auto result = session::analyseAndStore(*opened, settings, !noStore);
+  if (!result.report) return fail(result.report.status(), exitCodeFor(result.report.status()));
+  std::cout << (json ? analysis::formatReportJson(*result.report, result.context) + "\n"
+                     : forTerminal(analysis::formatReportText(*result.report, result.context)));
+  if (!result.storeStatus.isOk()) return fail(result.storeStatus, 2);
+  if (!result.notStored.empty())
+    std::cerr << "fogbench-cli: note: the result was not stored: " << forTerminal(result.notStored) << "\n";
+  if (result.stored && !json) std::cout << "Result stored in session " << opened->path << ".\n";
   return 0;
 }
 
@@ -211,22 +192,18 @@ int replayCommand(CliArguments& args) {
   if (!speed) return fail(speed.status(), 2);
   if (afap && speedText) return fail(invalidArgument("give --speed X or --afap, not both"), 2);
   if (*speed <= 0) return fail(invalidArgument("--speed must be > 0 (1 = real time); --afap for as fast as possible"), 2);
-  if (args.positionals().size() != 1) {
-    (void)args.checkAllUsed();
-    return fail(invalidArgument("replay needs exactly one SESSION.fbs"), 2);
-  }
-  const std::string path = args.positionals()[0];
-  auto reader = session::SessionReader::open(path);
-  if (!reader) return fail(reader.status(), 2);
-  auto constants = readConstants(args, (*reader)->info().bench);
+  int failed = 0;
+  auto opened =
+      openFileArgument(args, "replay needs exactly one SESSION.fbs", failed, session::OpenOptions::sessionStream());
+  if (!opened) return failed;
+  const std::string& path = opened->path;
+  auto constants = readConstants(args, opened->info.bench);
   if (!constants) return fail(constants.status(), 2);
   auto limit = readDelayLimit(args);
   if (!limit) return fail(limit.status(), 2);
   if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
-  auto bytes = (*reader)->rawBytes();
-  if (!bytes) return fail(bytes.status(), 2);
 
-  acquisition::ReplaySource source(std::move(*bytes), afap ? 0.0 : *speed, "session " + path);
+  acquisition::ReplaySource source(std::move(opened->rawBytes), afap ? 0.0 : *speed, "session " + path);
   if (!afap) std::cerr << "fogbench-cli: " << source.description() << " (Ctrl-C stops)\n";
   acquisition::AcquisitionOptions options;
   options.constants = *constants;
@@ -236,8 +213,8 @@ int replayCommand(CliArguments& args) {
     return fail(Status(replayed->recordingStatus.code(), path + ": " + replayed->recordingStatus.message()),
                 exitCodeFor(replayed->recordingStatus));
   analysis::ReportContext context;
-  context.source = sessionSource(**reader, "replay of session");
-  if (!(*reader)->complete()) context.incompleteReason = (*reader)->incompleteReason();
+  context.source = opened->sourceLine("replay of session");
+  if (!opened->complete) context.incompleteReason = opened->incompleteReason;
   context.imuDelayLimitMs = *limit;
   const auto& report = replayed->report;
   if (!report) return fail(report.status(), exitCodeFor(report.status()));
@@ -302,17 +279,11 @@ int exportCommand(CliArguments& args) {
   const auto csvDir = args.text("csv");
   const auto jsonPath = args.text("results-json");
   const bool overwrite = args.flag("overwrite");
-  if (args.positionals().size() != 1) {
-    (void)args.checkAllUsed();
-    return fail(invalidArgument("export needs exactly one SESSION.fbs"), 2);
-  }
-  const std::string path = args.positionals()[0];
-  auto reader = session::SessionReader::open(path);
-  if (!reader) {
-    (void)args.checkAllUsed();
-    return fail(reader.status(), 2);
-  }
-  auto constants = readConstants(args, (*reader)->info().bench);
+  int failed = 0;
+  auto opened = openFileArgument(args, "export needs exactly one SESSION.fbs", failed, session::OpenOptions::session());
+  if (!opened) return failed;
+  const std::string& path = opened->path;
+  auto constants = readConstants(args, opened->info.bench);
   if (!constants) return fail(constants.status(), 2);
   auto limit = readDelayLimit(args);
   if (!limit) return fail(limit.status(), 2);
@@ -322,31 +293,29 @@ int exportCommand(CliArguments& args) {
   if (jsonPath)
     if (auto s = checkOutputFile(*jsonPath, overwrite, "--results-json"); !s.isOk()) return fail(s, 2);
 
-  auto recording = (*reader)->recording(constants->pulseEquivalentDeg);
-  if (!recording) return fail(recording.status(), 2);
+  const Recording& recording = opened->recording;
   // The fits and residuals come from an analysis with the session's
   // constants (or those given); data that supports no delay is still
   // exported, only without fits.
-  auto report = analysis::analyzeRecording(*recording, *constants);
+  auto report = analysis::analyzeRecording(recording, *constants);
   if (!report)
     std::cerr << "fogbench-cli: note: no analysis to export (" << report.status().message()
               << "); samples are exported without fits\n";
   analysis::ReportContext context;
-  context.source = sessionSource(**reader, "session");
-  if (!(*reader)->complete()) context.incompleteReason = (*reader)->incompleteReason();
+  context.source = opened->sourceLine();
+  if (!opened->complete) context.incompleteReason = opened->incompleteReason;
   context.imuDelayLimitMs = *limit;
 
   if (csvDir) {
-    SessionInfo info = (*reader)->info();
+    SessionInfo info = opened->info;
     storeConstants(*constants, info.bench);
-    if (auto s = io::exportCsv(*csvDir, info, *recording, report ? &*report : nullptr, overwrite); !s.isOk())
+    if (auto s = io::exportCsv(*csvDir, info, recording, report ? &*report : nullptr, overwrite); !s.isOk())
       return fail(overwrite || s.code() != StatusCode::kInvalidArgument ? s : Status(s.code(), s.message() + " (--overwrite)"), 2);
     std::cout << "CSV export of " << path << ": " << *csvDir << "\n";
   }
   if (jsonPath) {
-    const SessionInfo& info = (*reader)->info();
-    auto stored = (*reader)->results();
-    if (!stored) return fail(stored.status(), 2);
+    const SessionInfo& info = opened->info;
+    const auto* stored = &opened->stored;
     json results = json::array();
     int damaged = 0;
     // A stored text that is not JSON (damaged, or written by something else)
@@ -383,13 +352,12 @@ int exportCommand(CliArguments& args) {
                   {"software_version", info.softwareVersion},
                   {"created_utc", info.createdUtc},
                   {"notes", info.notes},
-                  {"complete", (*reader)->complete()},
-                  {"incomplete_reason", (*reader)->incompleteReason()},
-                  {"raw_bytes", (*reader)->rawByteCount()}}},
+                  {"complete", opened->complete},
+                  {"incomplete_reason", opened->incompleteReason},
+                  {"raw_bytes", opened->rawByteCount}}},
                 {"stored_results", results},
                 {"current_analysis",
-                 report ? json{{"settings", json::parse(acquisition::analysisSettingsJson(*constants, context.imuDelayLimitMs,
-                                                                                             "fogbench-cli export", info.imported))},
+                 report ? json{{"settings", json::parse(session::analysisSettingsJson(*constants, context.imuDelayLimitMs, "fogbench-cli export", info.imported))},
                                {"report", json::parse(analysis::formatReportJson(*report, context))}}
                         : json{{"error", report.status().message()}}}};
     // Serialised before the file is opened: nothing can leave it empty.

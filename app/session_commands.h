@@ -35,7 +35,7 @@ Result<std::optional<SessionOutput>> readSessionOutput(CliArguments& args);
 SessionInfo simulatedSessionInfo(const SessionInfo& given, const TestPlan& plan, const model::SimConfig& config,
                                  const BenchConstants& constants);
 
-int analyzeSessionCommand(CliArguments& args, const std::string& path);  // analyze SESSION.fbs
+int analyzeCommand(CliArguments& args);                                   // analyze SESSION.fbs|FILE
 int sessionsCommand(CliArguments& args);                                  // sessions DIR
 int replayCommand(CliArguments& args);                                    // replay SESSION.fbs
 int importCommand(CliArguments& args);                                    // import DIR|FILES --out SESSION.fbs

@@ -3,7 +3,7 @@
 #include <QMetaObject>
 #include <QtConcurrent/QtConcurrentRun>
 
-#include "core/session/session_file.h"
+#include "core/session/session_api.h"
 #include "ui/table_drive.h"
 
 namespace fog::ui {
@@ -77,11 +77,10 @@ bool AcquisitionRunner::start(RunRequest request) {
       outcome->imuDelayLimitMs = request.options.reportContext.imuDelayLimitMs;
       // The result the run stored is the session's first: shown as such.
       if (!outcome->sessionPath.empty() && outcome->report)
-        if (auto reader = session::SessionReader::open(outcome->sessionPath); reader)
-          if (auto stored = (*reader)->results(); stored) {
-            outcome->results = resultRecords(*stored, request.options.constants);
-            if (const auto* newest = newestUsable(outcome->results)) outcome->shownResultId = newest->id;
-          }
+        if (auto opened = session::openSessionOrStream(outcome->sessionPath, session::OpenOptions::sessionRecords())) {
+          outcome->results = std::move(opened->results);
+          if (const auto* newest = newestUsable(outcome->results)) outcome->shownResultId = newest->id;
+        }
       completeOutcome(*outcome, request.options.reportContext.source);
     }
     const QString error = result ? QString() : QString::fromStdString(result.status().message());

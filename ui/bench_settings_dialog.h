@@ -5,7 +5,7 @@
 // --gyro-sign and --limit-ms (the sense of each gyro axis, the acceptance
 // limit). What the operator sets is remembered between runs (QSettings,
 // groups "bench" and "analysis"); every run and re-analysis stores them with
-// its result (acquisition::analysisSettingsJson).
+// its result (session::analysisSettingsJson).
 
 #include <QDialog>
 #include <array>

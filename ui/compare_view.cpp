@@ -28,9 +28,9 @@
 #include <qwt_text.h>
 
 #include "ui/core_text.h"
-#include "ui/language.h"
-#include "ui/plot_interaction.h"
-#include "ui/series_plot.h"
+#include "ui/language/language.h"
+#include "ui/plots/plot_interaction.h"
+#include "ui/plots/series_plot.h"
 
 namespace fog::ui {
 

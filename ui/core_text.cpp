@@ -182,7 +182,7 @@ const char* const kTemplates[] = {
     QT_TRANSLATE_NOOP("core_text", "the gyro turns with the table (gyro/table ratio %1)"),
     QT_TRANSLATE_NOOP("core_text", "the gyro turns with the table (gyro/table ratio %1, after the stated sign -1)"),
     QT_TRANSLATE_NOOP("core_text", "the gyro's %1 axis turns against the table (gyro/table ratio %2): the axis is mounted the other way round or its sign convention differs from the table's; the delay is refused (read as a normal axis it would be a half-period lag). If the IMU is mounted so, state it (metadata bench.gyro_sign {\"%3\": -1}, or --gyro-sign %4=-1) and analyse again"),
-    // acquisition::differencesFromRecord: this version's analysis against a stored result
+    // session::differencesFromRecord: this version's analysis against a stored result
     QT_TRANSLATE_NOOP("core_text", "test point %1: IMU delay %2 ms stored, %3 ms by this version's analysis"),
     QT_TRANSLATE_NOOP("core_text", "test point %1: %2 stored, %3 by this version's analysis"),
     // its verdicts (analysis::verdictName), as variable parts of the line above

@@ -32,8 +32,8 @@
 #include <qwt_text.h>
 
 #include "ui/core_text.h"
-#include "ui/language.h"
-#include "ui/plot_interaction.h"
+#include "ui/language/language.h"
+#include "ui/plots/plot_interaction.h"
 
 namespace fog::ui {
 

@@ -29,8 +29,8 @@
 
 #include "ui/core_text.h"
 #include "ui/plot_data/curve_decimation.h"
-#include "ui/plot_interaction.h"
-#include "ui/language.h"
+#include "ui/plots/plot_interaction.h"
+#include "ui/language/language.h"
 
 namespace fog::ui {
 
@@ -71,7 +71,7 @@ QwtPlot* LiveView::makePlot(const QString& title, const QString& yTitle, QwtPlot
   (*curve)->setPaintAttribute(QwtPlotCurve::ClipPolygons, true);
   (*curve)->attach(plot);
 
-  // The bench's one interaction (ui/plot_interaction.h): wheel zooms the
+  // The bench's one interaction (ui/plots/plot_interaction.h): wheel zooms the
   // time axis, drag pans it (both stop the scrolling), click sets cursors A
   // and B, double-click follows live again. The value axis keeps the common
   // range.

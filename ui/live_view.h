@@ -5,7 +5,7 @@
 // the whole plan. It paints only what the GUI timer hands it (about 30 times
 // a second); it never talks to the worker.
 //
-// Mouse (as on every plot, ui/plot_interaction.h): wheel zooms the time
+// Mouse (as on every plot, ui/plots/plot_interaction.h): wheel zooms the time
 // axis, drag pans it, clicks set cursors A and B (Δt and the values read
 // out), right-click removes them. Zooming or panning stops the scrolling;
 // "Follow live" or a double-click resumes it.

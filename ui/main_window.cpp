@@ -45,13 +45,13 @@
 #include "core/io/csv_import.h"
 #include "core/io/imported_session.h"
 #include "core/serial/serial_source.h"
-#include "core/session/session_file.h"
+#include "core/session/session_api.h"
 #include "ui/bench_settings_dialog.h"
 #include "ui/compare_view.h"
 #include "ui/core_text.h"
 #include "ui/import_dialog.h"
 #include "ui/diagnosis_view.h"
-#include "ui/language.h"
+#include "ui/language/language.h"
 #include "ui/live_view.h"
 #include "ui/messages.h"
 #include "ui/noise_view.h"
@@ -673,19 +673,18 @@ Result<RunRequest> MainWindow::buildRunRequest() const {
     };
   } else {
     const QString path = configureView_->replayPath();
-    auto reader = session::SessionReader::open(path.toStdString());
-    if (!reader) return reader.status();
-    auto bytes = (*reader)->rawBytes();
-    if (!bytes) return bytes.status();
-    plan = (*reader)->info().plan;
+    auto opened = session::openSessionOrStream(path.toStdString(), session::OpenOptions::sessionStream());
+    if (!opened) return opened.status();
+    auto bytes = std::move(opened->rawBytes);
+    plan = opened->info.plan;
     // A replay records into a new session like a live run, and keeps the
     // original's identity and constants.
-    const SessionInfo original = (*reader)->info();
+    const SessionInfo original = opened->info;
     request.options.info = original;
     request.options.info.createdUtc = session::utcNow();
     request.options.info.softwareVersion = FOG_VERSION;
     request.options.constants = original.bench;
-    auto source = std::make_shared<acquisition::ReplaySource>(std::move(*bytes), speed,
+    auto source = std::make_shared<acquisition::ReplaySource>(std::move(bytes), speed,
                                                               "session " + QFileInfo(path).fileName().toStdString());
     request.options.info.source = source->description();
     request.source = source;
@@ -896,65 +895,54 @@ void MainWindow::loadSession(const QString& path, bool reanalyse, std::int64_t r
   // Reading and fitting a long session takes a while: off the GUI thread.
   inBackground(
       this, [path, reanalyse, resultId, bench, choices]() -> Loaded {
-        auto reader = session::SessionReader::open(path.toStdString());
-        if (!reader) return {nullptr, reader.status()};
         // The session's own pulse equivalent first; a session that states
         // none (nor its stream) takes the bench constants' (as the CLI's
         // --pulse-equivalent-deg), else the refusal says what to set.
-        const double fallbackPulse = (*reader)->info().bench.pulseEquivalentDeg > 0.0 ? 0.0 : bench.pulseEquivalentDeg;
-        auto recording = (*reader)->recording(fallbackPulse);
-        if (!recording) return {nullptr, recording.status()};
-        auto stored = (*reader)->results();
-        if (!stored) return {nullptr, stored.status()};
+        auto options = session::OpenOptions::session();
+        options.fallbackPulseEquivalentDeg = bench.pulseEquivalentDeg;
+        auto opened = session::openSessionOrStream(path.toStdString(), options);
+        if (!opened) return {nullptr, opened.status()};
         auto outcome = std::make_shared<RunOutcome>();
-        outcome->info = (*reader)->info();
+        outcome->info = opened->info;
         outcome->sessionPath = path.toStdString();
-        outcome->complete = (*reader)->complete();
-        outcome->incompleteReason = (*reader)->incompleteReason();
-        outcome->recording = std::move(*recording);
-        const auto sessionConstants = outcome->info.bench;
-        outcome->results = resultRecords(*stored, sessionConstants);
+        outcome->complete = opened->complete;
+        outcome->incompleteReason = opened->incompleteReason;
+        outcome->results = opened->results;
         // A re-analysis uses the bench's constants, gyro signs and limit, and
-        // stores them with its result. Review re-analyses with exactly the
-        // chosen stored result's settings (the newest unless one is asked
-        // for), only to draw its plots and fits: the verdict shown is the
-        // stored one. With none stored: the session's own constants.
-        BenchConstants constants = sessionConstants;
+        // stores them with its result; the new result is the newest, the one
+        // shown. Review re-analyses with exactly the chosen stored result's
+        // settings (the newest unless one is asked for), only to draw its
+        // plots and fits: the verdict shown is the stored one. With none
+        // stored: the session's own constants.
+        BenchConstants constants = opened->info.bench;
+        std::string source = opened->sourceLine();
         if (reanalyse) {
-          constants = bench;
-          constants.gyroSign = choices.gyroSign;
+          session::AnalysisSettings settings;
+          settings.constants = bench;
+          settings.constants.gyroSign = choices.gyroSign;
+          settings.imuDelayLimitMs = choices.imuDelayLimitMs;
+          settings.producedBy = "fogbench GUI";
+          auto result = session::analyseAndStore(*opened, settings);
+          if (!result.storeStatus.isOk()) return {nullptr, result.storeStatus};
+          // A session being recorded is not written to: a re-analysis that
+          // cannot be stored is refused, not shown as if it were.
+          if (!result.notStored.empty())
+            return {nullptr, Status(StatusCode::kIoError, "the result was not stored: " + result.notStored)};
+          constants = settings.constants;
+          outcome->report = std::move(result.report);
+          outcome->results = std::move(result.results);
+          if (result.stored)
+            if (const auto* newest = newestUsable(outcome->results)) outcome->shownResultId = newest->id;
+          if (const ResultRecord* shown = outcome->shownResult(); shown && outcome->report)
+            outcome->differences = session::differencesFromRecord(*shown, *outcome->report);
         } else {
-          const ResultRecord* chosen = newestUsable(outcome->results);
-          for (const auto& r : outcome->results)
-            if (r.id == resultId && r.usable) chosen = &r;
-          if (chosen) {
-            constants = chosen->constants;
-            outcome->shownResultId = chosen->id;
-          }
+          auto shown = session::showResult(*opened, resultId, constants, choices.imuDelayLimitMs);
+          constants = shown.constants;
+          if (shown.record) outcome->shownResultId = shown.record->id;
+          outcome->report = std::move(shown.report);
+          outcome->differences = std::move(shown.differences);
         }
-        outcome->report = analysis::analyzeRecording(outcome->recording, constants);
-        const std::string source = "session " + path.toStdString() + " (" + (*reader)->info().source + ")";
-        reader->reset();
-        if (reanalyse && outcome->report) {
-          analysis::ReportContext context;
-          context.source = source;
-          context.imuDelayLimitMs = choices.imuDelayLimitMs;
-          // A session that stopped early stays incomplete whatever the analysis.
-          if (!outcome->complete) context.incompleteReason = outcome->incompleteReason;
-          if (auto s = session::addResult(path.toStdString(),
-                                          acquisition::analysisSettingsJson(constants, choices.imuDelayLimitMs,
-                                                                            "fogbench GUI", outcome->info.imported),
-                                          analysis::formatReportJson(*outcome->report, context));
-              !s.isOk())
-            return {nullptr, s};
-          // The new result is the newest: it is the one shown.
-          auto again = session::SessionReader::open(path.toStdString());
-          if (!again) return {nullptr, again.status()};
-          auto all = (*again)->results();
-          if (!all) return {nullptr, all.status()};
-          outcome->results = resultRecords(*all, sessionConstants);
-          if (const auto* newest = newestUsable(outcome->results)) outcome->shownResultId = newest->id;
-        }
+        outcome->recording = std::move(opened->recording);
         // What the shown result was computed with, everywhere (report pages, Diagnose).
         outcome->info.bench.tableReadDelayMs = constants.tableReadDelayMs;
         outcome->info.bench.tableReadDelayStdMs = constants.tableReadDelayStdMs;
@@ -962,8 +950,6 @@ void MainWindow::loadSession(const QString& path, bool reanalyse, std::int64_t r
         outcome->info.bench.boardDelayStdMs = constants.boardDelayStdMs;
         if (constants.pulseEquivalentDeg > 0.0) outcome->info.bench.pulseEquivalentDeg = constants.pulseEquivalentDeg;
         outcome->info.bench.gyroSign = constants.gyroSign;
-        if (const ResultRecord* shown = outcome->shownResult(); shown && outcome->report)
-          outcome->differences = acquisition::differencesFromRecord(*shown, *outcome->report);
         completeOutcome(*outcome, source);
         return {outcome, Status::ok()};
       },

@@ -15,9 +15,9 @@
 
 #include "ui/core_text.h"
 #include "ui/plot_data/allan_curves.h"
-#include "ui/language.h"
+#include "ui/language/language.h"
 #include "ui/messages.h"
-#include "ui/plot_interaction.h"
+#include "ui/plots/plot_interaction.h"
 
 namespace fog::ui {
 

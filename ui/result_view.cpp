@@ -41,13 +41,13 @@
 #include "core/analysis/uncertainty_bound.h"
 #include "core/analysis/verdict.h"
 #include "core/common/version.h"
-#include "core/session/session_file.h"
+#include "core/session/session_api.h"
 #include "ui/core_text.h"
-#include "ui/language.h"
-#include "ui/plot_export.h"
-#include "ui/plot_interaction.h"
+#include "ui/language/language.h"
+#include "ui/plots/plot_export.h"
+#include "ui/plots/plot_interaction.h"
 #include "ui/report/calibration_report.h"
-#include "ui/series_plot.h"
+#include "ui/plots/series_plot.h"
 
 namespace fog::ui {
 
@@ -771,25 +771,16 @@ QString ResultView::defaultExportPath(const QString& what, const QString& suffix
 
 Result<report::ReportInput> ResultView::reportInput() const {
   if (!outcome_ || !outcome_->report) return insufficientData("there is no delay result to report");
-  report::ReportInput in;
-  in.info = outcome_->info;
-  in.recording = outcome_->recording;
-  in.delays = *outcome_->report;
-  in.resultShown = resultDescription();
-  if (const ResultRecord* r = outcome_->shownResult()) {
-    in.stored = *r;
-    in.imuDelayLimitMs = r->imuDelayLimitMs;
-  } else {
-    in.imuDelayLimitMs = outcome_->imuDelayLimitMs;
-    if (!outcome_->complete) in.incompleteReason = outcome_->incompleteReason;
-  }
   // The report carries the hash of the raw stream the result came from.
+  std::vector<std::uint8_t> rawBytes;
   if (!outcome_->sessionPath.empty()) {
-    FOG_ASSIGN_OR_RETURN(auto reader, session::SessionReader::open(outcome_->sessionPath));
-    FOG_ASSIGN_OR_RETURN(auto bytes, reader->rawBytes());
-    in.rawBytes = std::move(bytes);
+    FOG_ASSIGN_OR_RETURN(auto opened,
+                         session::openSessionOrStream(outcome_->sessionPath, session::OpenOptions::sessionStream()));
+    rawBytes = std::move(opened.rawBytes);
   }
-  return in;
+  return report::makeReportInput(outcome_->info, outcome_->recording, *outcome_->report, std::move(rawBytes),
+                                 outcome_->shownResult(), outcome_->imuDelayLimitMs,
+                                 outcome_->complete ? std::string() : outcome_->incompleteReason, resultDescription());
 }
 
 Status ResultView::writeReportPdf(const QString& path) const {

@@ -5,7 +5,6 @@
 #include <cstdio>
 
 #include "core/analysis/report_writer.h"
-#include "core/session/session_file.h"
 
 namespace fog::ui {
 
@@ -23,11 +22,6 @@ std::string limitText(double v) {
 }
 
 }  // namespace
-
-std::vector<ResultRecord> resultRecords(const std::vector<session::StoredResult>& stored,
-                                        const BenchConstants& fallback) {
-  return acquisition::readStoredResults(stored, fallback);
-}
 
 const ResultRecord* RunOutcome::shownResult() const {
   for (const auto& r : results)

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "core/acquisition/stored_result.h"
+#include "core/session/stored_result.h"
 #include "core/analysis/delay_analysis.h"
 #include "core/common/recording.h"
 #include "core/common/session_info.h"
@@ -17,16 +17,11 @@
 namespace fog::ui {
 
 // One analysis result stored in a session file, as a record: the settings
-// that produced it and the verdict it gave (acquisition/stored_result.h, the
+// that produced it and the verdict it gave (core/session/stored_result.h, the
 // parser the CLI shares). The GUI shows that verdict, never a re-judgement.
-using ResultRecord = acquisition::StoredResultRecord;
+using ResultRecord = session::StoredResultRecord;
 
-// The session's results as records, oldest first. A constant a result's
-// settings do not state (older files) is taken from `fallback` (the
-// session's own bench constants).
-std::vector<ResultRecord> resultRecords(const std::vector<session::StoredResult>& stored,
-                                        const BenchConstants& fallback);
-using acquisition::newestUsable;
+using session::newestUsable;
 
 struct RunOutcome {
   SessionInfo info;            // who, what, plan, bench constants
@@ -49,7 +44,7 @@ struct RunOutcome {
   const ResultRecord* shownResult() const;
   // Where `report` (this version's analysis with the shown result's
   // settings, for the plots) departs from the shown record beyond rounding
-  // (acquisition::differencesFromRecord); empty when it agrees or none is
+  // (session::differencesFromRecord); empty when it agrees or none is
   // shown. The verdict shown is the record's all the same.
   std::vector<std::string> differences;
   // 1-based position of the shown result among `results` (0: none).

@@ -13,7 +13,7 @@
 
 #include "core/session/session_list.h"
 #include "ui/core_text.h"
-#include "ui/language.h"
+#include "ui/language/language.h"
 #include "ui/messages.h"
 
 namespace fog::ui {

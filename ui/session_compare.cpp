@@ -3,7 +3,7 @@
 #include <QObject>
 #include <cmath>
 
-#include "ui/language.h"
+#include "ui/language/language.h"
 
 namespace fog::ui {
 

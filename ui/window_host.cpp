@@ -3,7 +3,7 @@
 #include <QApplication>
 #include <QTimer>
 
-#include "ui/language.h"
+#include "ui/language/language.h"
 #include "ui/main_window.h"
 #include "ui/configure_view.h"
 #include "ui/plan_editor.h"

@@ -204,7 +204,7 @@ Result<AcquisitionResult> acquire(ByteSource& source, const AcquisitionOptions& 
     result.sessionBytes = writer->committedBytes();
     writer.reset();
     if (result.report) {
-      if (auto s = session::addResult(options.sessionPath, analysisSettingsJson(options.constants, options.reportContext.imuDelayLimitMs, "acquisition"),
+      if (auto s = session::addResult(options.sessionPath, session::analysisSettingsJson(options.constants, options.reportContext.imuDelayLimitMs, "acquisition"),
                                       analysis::formatReportJson(*result.report, reportContextOf(result, options)));
           !s.isOk())
         return s;

@@ -45,7 +45,7 @@
 #include "core/common/status.h"
 #include "core/protocol/decoder.h"
 #include "core/session/session_file.h"
-#include "core/acquisition/stored_result.h"  // analysisSettingsJson
+#include "core/session/stored_result.h"  // analysisSettingsJson
 
 namespace fog::acquisition {
 

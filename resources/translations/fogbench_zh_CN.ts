@@ -687,7 +687,7 @@ counter %5 MHz / %6 bit</source>
 <context>
     <name>fog::ui::DeltaPicker</name>
     <message>
-        <location filename="../../ui/delta_picker.cpp" line="+29"/>
+        <location filename="../../ui/plots/delta_picker.cpp" line="+29"/>
         <source>t = %1 s, %2 %3</source>
         <translation>t = %1 s，%2 %3</translation>
     </message>
@@ -1349,12 +1349,12 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+951"/>
+        <location line="+937"/>
         <source>Diagnosis</source>
         <translation>诊断</translation>
     </message>
     <message>
-        <location line="-948"/>
+        <location line="-934"/>
         <source>Noise</source>
         <translation>噪声</translation>
     </message>
@@ -1427,12 +1427,12 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+711"/>
+        <location line="+697"/>
         <source>Open session</source>
         <translation>打开会话</translation>
     </message>
     <message>
-        <location line="-710"/>
+        <location line="-696"/>
         <source>fogbench sessions (*.fbs);;All files (*)</source>
         <translation>fogbench 会话 (*.fbs);;所有文件 (*)</translation>
     </message>
@@ -1712,7 +1712,7 @@ Quit: Ctrl+Q</source>
         <translation>波特率必须是整数</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+47"/>
         <source>cannot create the session folder &apos;%1&apos;; choose another one</source>
         <translation>无法创建会话文件夹“%1”；请另选一个</translation>
     </message>
@@ -1877,7 +1877,7 @@ Quit: Ctrl+Q</source>
         <translation>正在打开 %1 …</translation>
     </message>
     <message>
-        <location line="+84"/>
+        <location line="+71"/>
         <location line="+8"/>
         <source>Re-analyse</source>
         <translation>重新分析</translation>
@@ -2338,7 +2338,7 @@ File: %1</source>
 <context>
     <name>fog::ui::PlotInteraction</name>
     <message>
-        <location filename="../../ui/plot_interaction.cpp" line="+67"/>
+        <location filename="../../ui/plots/plot_interaction.cpp" line="+67"/>
         <source>wheel: zoom · drag: pan · double-click: whole view</source>
         <translation>滚轮：缩放 · 拖动：平移 · 双击：全图</translation>
     </message>
@@ -2371,7 +2371,7 @@ File: %1</source>
 <context>
     <name>QObject</name>
     <message>
-        <location filename="../../ui/delta_picker.cpp" line="-18"/>
+        <location filename="../../ui/plots/delta_picker.cpp" line="-18"/>
         <source>%1 µs</source>
         <translation>%1 µs</translation>
     </message>
@@ -2381,9 +2381,9 @@ File: %1</source>
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <location filename="../../ui/main_window.cpp" line="-1092"/>
+        <location filename="../../ui/main_window.cpp" line="-1078"/>
         <location filename="../../ui/plan_editor.cpp" line="-323"/>
+        <location filename="../../ui/plots/delta_picker.cpp" line="+1"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
@@ -2403,7 +2403,7 @@ File: %1</source>
         <translation>%1 分钟</translation>
     </message>
     <message>
-        <location filename="../../ui/plot_export.cpp" line="+11"/>
+        <location filename="../../ui/plots/plot_export.cpp" line="+11"/>
         <source>PNG image (*.png);;SVG drawing (*.svg);;PDF document (*.pdf)</source>
         <translation>PNG 图像 (*.png);;SVG 矢量图 (*.svg);;PDF 文档 (*.pdf)</translation>
     </message>
@@ -3417,7 +3417,7 @@ File: %1</source>
         <translation>χ²/dof %1</translation>
     </message>
     <message>
-        <location line="+100"/>
+        <location line="+120"/>
         <location line="+73"/>
         <source>PASS: every test point passed its validity checks and its IMU delay + 2σ is below the %1 ms limit.</source>
         <translation>合格：每个测试点都通过有效性检查，且其 IMU 延迟 + 2σ 低于 %1 ms 限值。</translation>
@@ -3451,7 +3451,7 @@ File: %1</source>
         <translation>%1 个测试点未得到延迟</translation>
     </message>
     <message>
-        <location line="-305"/>
+        <location line="-325"/>
         <source>table angle (encoder, %1 ms)</source>
         <translation>转台角度（编码器，%1 ms）</translation>
     </message>
@@ -3461,7 +3461,7 @@ File: %1</source>
         <translation>陀螺角度（增量累加，%1 ms）</translation>
     </message>
     <message>
-        <location line="+306"/>
+        <location line="+326"/>
         <source>INCOMPLETE (the run stopped early); its data give %1</source>
         <translation>不完整（运行提前停止）；其数据给出 %1</translation>
     </message>
@@ -3512,7 +3512,7 @@ File: %1</source>
         <translation>IMU 延迟标定报告：%1 %2</translation>
     </message>
     <message>
-        <location filename="../../ui/result_view.cpp" line="+64"/>
+        <location filename="../../ui/result_view.cpp" line="+65"/>
         <source>%1: %2 axis, %3 Hz / %4°</source>
         <translation>%1：%2 轴，%3 Hz / %4°</translation>
     </message>
@@ -3745,7 +3745,7 @@ File: %1</source>
         <translation>各测试点的滞后随摆动频率的变化</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+23"/>
         <source>The delay report appears here after a run.</source>
         <translation>运行结束后，延迟报告显示在这里。</translation>
     </message>
@@ -3957,7 +3957,7 @@ File: %1</source>
         <translation>敏感、闭环与脉冲更新</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+24"/>
         <source>INCOMPLETE</source>
         <translation>不完整</translation>
     </message>
@@ -4110,7 +4110,7 @@ File: %1</source>
 <context>
     <name>fog::ui::SeriesPlot</name>
     <message>
-        <location filename="../../ui/series_plot.cpp" line="+42"/>
+        <location filename="../../ui/plots/series_plot.cpp" line="+42"/>
         <source>time (s)</source>
         <translation>时间 (s)</translation>
     </message>

@@ -67,18 +67,18 @@
 #include "ui/import_dialog.h"
 #include "ui/plot_data/curve_decimation.h"
 #include "ui/diagnosis_view.h"
-#include "ui/language.h"
-#include "ui/delta_picker.h"
+#include "ui/language/language.h"
+#include "ui/plots/delta_picker.h"
 #include "core/io/csv_import.h"
 #include "ui/live_view.h"
 #include "ui/main_window.h"
 #include "ui/messages.h"
 #include "ui/noise_view.h"
 #include "ui/plan_editor.h"
-#include "ui/plot_interaction.h"
-#include "ui/plot_export.h"
+#include "ui/plots/plot_interaction.h"
+#include "ui/plots/plot_export.h"
 #include "ui/result_view.h"
-#include "ui/series_plot.h"
+#include "ui/plots/series_plot.h"
 #include "ui/session_browser.h"
 #include "ui/window_host.h"
 
@@ -674,7 +674,7 @@ class BenchUiTest : public QObject {
       reader->reset();
       fog::analysis::ReportContext context;
       QVERIFY(fog::session::addResult(reversed.toStdString(),
-                                      fog::acquisition::analysisSettingsJson(constants, 0.8, "fogbench-cli analyze"),
+                                      fog::session::analysisSettingsJson(constants, 0.8, "fogbench-cli analyze"),
                                       fog::analysis::formatReportJson(*report, context))
                   .isOk());
     }
@@ -788,7 +788,7 @@ class BenchUiTest : public QObject {
       doc["test_points"] = points;
       doc["verdict"] = "fail";
       QVERIFY(fog::session::addResult(reversed.toStdString(),
-                                      fog::acquisition::analysisSettingsJson(constants, 0.8, "an older fogbench"),
+                                      fog::session::analysisSettingsJson(constants, 0.8, "an older fogbench"),
                                       QJsonDocument(doc).toJson().toStdString())
                   .isOk());
     }
@@ -826,7 +826,7 @@ class BenchUiTest : public QObject {
     QVERIFY(reader.isOk());
     const auto stored = *(*reader)->results();
     QCOMPARE(stored.size(), std::size_t{4});
-    const auto newest = fog::acquisition::readStoredResult(stored.back(), {});
+    const auto newest = fog::session::readStoredResult(stored.back(), {});
     QCOMPARE(newest.constants.gyroSign[0], -1);
     QVERIFY(newest.gyroSignStated);
     QCOMPARE(newest.imuDelayLimitMs, 0.5);

@@ -16,7 +16,7 @@
 #include "core/acquisition/acquisition.h"
 #include "core/acquisition/replay_source.h"
 #include "core/acquisition/simulator_source.h"
-#include "core/acquisition/stored_result.h"
+#include "core/session/stored_result.h"
 #include "core/analysis/delay_analysis.h"
 #include "core/analysis/report_writer.h"
 #include "core/analysis/verdict.h"
@@ -28,7 +28,7 @@
 #include "core/protocol/recording_builder.h"
 #include "core/session/session_file.h"
 #include "ui/core_text.h"
-#include "ui/language.h"
+#include "ui/language/language.h"
 
 namespace {
 
@@ -166,14 +166,14 @@ class CoreTextTest : public QObject {
         continue;
       }
       const session::StoredResult stored{1, "2026-11-26T07:00:00Z", "{}", storedJson, true};
-      auto record = acquisition::readStoredResult(stored, {});
-      auto differences = acquisition::differencesFromRecord(record, *report);
+      auto record = session::readStoredResult(stored, {});
+      auto differences = session::differencesFromRecord(record, *report);
       QVERIFY(!differences.empty());
       analysis::DelayReport none = *report;
       none.points.clear();
-      for (const auto& d : acquisition::differencesFromRecord(record, none)) differences.push_back(d);
+      for (const auto& d : session::differencesFromRecord(record, none)) differences.push_back(d);
       record.points.clear();
-      for (const auto& d : acquisition::differencesFromRecord(record, *report)) differences.push_back(d);
+      for (const auto& d : session::differencesFromRecord(record, *report)) differences.push_back(d);
       for (const auto& d : differences) expectChinese(d);
     }
   }

@@ -12,10 +12,10 @@
 #include <qwt_scale_div.h>
 #include <qwt_scale_map.h>
 
-#include "ui/delta_picker.h"
-#include "ui/language.h"
-#include "ui/plot_interaction.h"
-#include "ui/series_plot.h"
+#include "ui/plots/delta_picker.h"
+#include "ui/language/language.h"
+#include "ui/plots/plot_interaction.h"
+#include "ui/plots/series_plot.h"
 
 using fog::ui::PlotInteraction;
 using fog::ui::SeriesPlot;

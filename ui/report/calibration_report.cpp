@@ -829,6 +829,26 @@ void render(Target& target, const Content& c, QStringList* drawn) {
 
 }  // namespace
 
+ReportInput makeReportInput(SessionInfo info, Recording recording, analysis::DelayReport delays,
+                            std::vector<std::uint8_t> rawBytes, const session::StoredResultRecord* stored,
+                            double limitMs, const std::string& incompleteReason, QString resultShown) {
+  ReportInput in;
+  in.info = std::move(info);
+  in.recording = std::move(recording);
+  in.delays = std::move(delays);
+  in.rawBytes = std::move(rawBytes);
+  in.resultShown = std::move(resultShown);
+  if (stored) {
+    // A record: printed with the limit it was judged with, as stored.
+    in.stored = *stored;
+    in.imuDelayLimitMs = stored->imuDelayLimitMs;
+  } else {
+    in.imuDelayLimitMs = limitMs;
+    in.incompleteReason = incompleteReason;
+  }
+  return in;
+}
+
 QString rawDataSha256(const std::vector<std::uint8_t>& bytes) {
   if (bytes.empty()) return {};
   QCryptographicHash hash(QCryptographicHash::Sha256);
@@ -917,7 +937,7 @@ Verdict calibrationVerdict(const ReportInput& in) {
     return v;
   }
   // The record, as stored.
-  const acquisition::StoredResultRecord& r = *in.stored;
+  const session::StoredResultRecord& r = *in.stored;
   Verdict v;
   v.pass = r.verdict == "pass";
   v.word = word(r.verdict);
@@ -966,7 +986,7 @@ Verdict calibrationVerdict(const ReportInput& in) {
   } else {
     v.headline = QObject::tr("NO VERDICT: the stored result states none; re-analyse the session to store one.");
   }
-  const auto differences = acquisition::differencesFromRecord(r, in.delays);
+  const auto differences = session::differencesFromRecord(r, in.delays);
   if (!differences.empty()) {
     QStringList d;
     for (const auto& s : differences) d << coreText(s);

@@ -32,7 +32,7 @@
 #include <string>
 #include <vector>
 
-#include "core/acquisition/stored_result.h"
+#include "core/session/stored_result.h"
 #include "core/analysis/delay_analysis.h"
 #include "core/common/recording.h"
 #include "core/common/session_info.h"
@@ -57,11 +57,21 @@ struct ReportInput {
   // printed as stored (imuDelayLimitMs is then the record's). Unset: a
   // report of data no result was stored for, judged here with
   // imuDelayLimitMs.
-  std::optional<acquisition::StoredResultRecord> stored;
+  std::optional<session::StoredResultRecord> stored;
   // Unset `stored` only: why the run stopped early ("" for a complete run);
   // the verdict is then INCOMPLETE.
   std::string incompleteReason;
 };
+
+// The one place a report's input is put together (fogbench-cli report, the
+// GUI's Results view), from the result shown (session::showResult, or a
+// run's own analysis): with a stored record, its verdict and limit are the
+// report's; without one, `limitMs` judges and `incompleteReason` (an
+// incomplete run) makes the verdict INCOMPLETE. `resultShown` as in
+// ReportInput.
+ReportInput makeReportInput(SessionInfo info, Recording recording, analysis::DelayReport delays,
+                            std::vector<std::uint8_t> rawBytes, const session::StoredResultRecord* stored,
+                            double limitMs, const std::string& incompleteReason, QString resultShown);
 
 // SHA-256 of the bytes, 64 lower-case hex digits; empty for no bytes.
 QString rawDataSha256(const std::vector<std::uint8_t>& bytes);

@@ -326,23 +326,8 @@ constexpr const char* kDropGyroSigns =
     " ALTER TABLE session DROP COLUMN gyro_sign_z; ALTER TABLE session DROP COLUMN import_json;";
 
 std::string craftedSession(const ScratchDir& dir, const std::string& name, const std::string& sql) {
-  const std::string path = dir.file(name);
-  {
-    auto w = SessionWriter::create(path, SessionInfo{});
-    EXPECT_TRUE(w.isOk());
-    const auto& bytes = fog::test::shortRun().bytes;
-    EXPECT_TRUE((*w)->appendRaw(bytes.data(), bytes.size()).isOk());
-    auto rec = protocol::decodeRecording(bytes);
-    EXPECT_TRUE(rec.isOk());
-    EXPECT_TRUE((*w)->storeRecording(*rec).isOk());
-    EXPECT_TRUE((*w)->finish(true, "").isOk());
-  }
-  sqlite3* db = nullptr;
-  EXPECT_EQ(sqlite3_open_v2(path.c_str(), &db, SQLITE_OPEN_READWRITE, nullptr), SQLITE_OK);
-  char* err = nullptr;
-  EXPECT_EQ(sqlite3_exec(db, sql.c_str(), nullptr, nullptr, &err), SQLITE_OK) << (err ? err : "");
-  sqlite3_free(err);
-  sqlite3_close(db);
+  const std::string path = fog::test::recordedSession(dir, name);
+  fog::test::runSql(path, sql);
   return path;
 }
 

@@ -12,9 +12,12 @@
 #include <unistd.h>
 #include <vector>
 
+#include <sqlite3.h>
+
 #include "core/common/recording.h"
 #include "core/model/simulator.h"
 #include "core/protocol/recording_builder.h"
+#include "core/session/session_file.h"
 
 namespace fog::test {
 
@@ -117,6 +120,33 @@ inline std::vector<std::uint8_t> readFile(const std::string& path) {
 inline void writeFile(const std::string& path, const std::vector<std::uint8_t>& bytes) {
   std::ofstream out(path, std::ios::binary);
   out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+}
+
+// A finished session of shortRun() with its decoded samples stored, as a
+// run --out leaves it; `complete` false marks it stopped by the operator.
+inline std::string recordedSession(const ScratchDir& dir, const std::string& name, const SessionInfo& info = {},
+                                   bool complete = true) {
+  const std::string path = dir.file(name);
+  auto w = session::SessionWriter::create(path, info);
+  EXPECT_TRUE(w.isOk()) << w.status().message();
+  const auto& bytes = shortRun().bytes;
+  EXPECT_TRUE((*w)->appendRaw(bytes.data(), bytes.size()).isOk());
+  auto rec = protocol::decodeRecording(bytes);
+  EXPECT_TRUE(rec.isOk());
+  EXPECT_TRUE((*w)->storeRecording(*rec).isOk());
+  EXPECT_TRUE((*w)->finish(complete, complete ? "" : "stopped by the operator").isOk());
+  return path;
+}
+
+// Edits a session behind the reader's back (SQLite and the blob checksums
+// stay valid unless `sql` changes them), as a crafted or damaged file would.
+inline void runSql(const std::string& path, const std::string& sql) {
+  sqlite3* db = nullptr;
+  EXPECT_EQ(sqlite3_open_v2(path.c_str(), &db, SQLITE_OPEN_READWRITE, nullptr), SQLITE_OK);
+  char* err = nullptr;
+  EXPECT_EQ(sqlite3_exec(db, sql.c_str(), nullptr, nullptr, &err), SQLITE_OK) << (err ? err : "");
+  sqlite3_free(err);
+  sqlite3_close(db);
 }
 
 }  // namespace fog::test

@@ -5,7 +5,7 @@
 // functions are evaluated over the visible range at two points per pixel, so
 // they stay smooth at any zoom. Antialiasing is off for data curves.
 //
-// Interaction (ui/plot_interaction.h, as on every plot): wheel zoom, drag
+// Interaction (ui/plots/plot_interaction.h, as on every plot): wheel zoom, drag
 // pan, double-click for the whole data, click for measuring cursors A and B
 // (Δt and every curve's value at both, from the full data). The picker reads
 // out (time, value) at the mouse.

@@ -1,6 +1,6 @@
-#include "ui/delta_picker.h"
+#include "ui/plots/delta_picker.h"
 
-#include "ui/language.h"
+#include "ui/language/language.h"
 
 #include <QPen>
 #include <cmath>

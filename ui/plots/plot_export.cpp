@@ -1,4 +1,4 @@
-#include "ui/plot_export.h"
+#include "ui/plots/plot_export.h"
 
 #include <QFileInfo>
 #include <QImage>

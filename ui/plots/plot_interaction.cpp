@@ -1,4 +1,4 @@
-#include "ui/plot_interaction.h"
+#include "ui/plots/plot_interaction.h"
 
 #include <QApplication>
 #include <QEvent>
@@ -15,8 +15,8 @@
 #include <qwt_text.h>
 #include <qwt_text_label.h>
 
-#include "ui/delta_picker.h"
-#include "ui/language.h"
+#include "ui/plots/delta_picker.h"
+#include "ui/language/language.h"
 
 namespace fog::ui {
 

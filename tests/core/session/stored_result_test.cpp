@@ -1,14 +1,14 @@
-// Reading a stored result back as a record (acquisition/stored_result.h):
+// Reading a stored result back as a record (core/session/stored_result.h):
 // settings with gyro signs and limit, rows stored before them, damaged rows,
 // and where this version's analysis departs from a record.
 
-#include "core/acquisition/stored_result.h"
+#include "core/session/stored_result.h"
 
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
 
-namespace fog::acquisition {
+namespace fog::session {
 namespace {
 
 using nlohmann::json;
@@ -114,4 +114,4 @@ TEST(StoredResult, DifferencesBeyondRoundingAreNamed) {
 }
 
 }  // namespace
-}  // namespace fog::acquisition
+}  // namespace fog::session

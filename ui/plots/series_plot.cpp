@@ -1,4 +1,4 @@
-#include "ui/series_plot.h"
+#include "ui/plots/series_plot.h"
 
 #include <QResizeEvent>
 #include <algorithm>
@@ -16,7 +16,7 @@
 #include <qwt_text.h>
 
 #include "ui/plot_data/curve_decimation.h"
-#include "ui/plot_interaction.h"
+#include "ui/plots/plot_interaction.h"
 
 namespace fog::ui {
 

@@ -21,7 +21,7 @@
 #include "core/analysis/verdict.h"
 #include "core/session/session_file.h"
 
-namespace fog::acquisition {
+namespace fog::session {
 
 // One test point's stored verdict.
 struct StoredPointVerdict {
@@ -94,4 +94,4 @@ std::vector<std::string> differencesFromRecord(const StoredResultRecord& record,
 std::string analysisSettingsJson(const BenchConstants& constants, double imuDelayLimitMs,
                                  const std::string& producedBy, const ImportSettings& imported = {});
 
-}  // namespace fog::acquisition
+}  // namespace fog::session

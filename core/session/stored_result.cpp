@@ -1,4 +1,4 @@
-#include "core/acquisition/stored_result.h"
+#include "core/session/stored_result.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 
 #include "core/common/version.h"
 
-namespace fog::acquisition {
+namespace fog::session {
 
 namespace {
 
@@ -188,4 +188,4 @@ std::string analysisSettingsJson(const BenchConstants& c, double imuDelayLimitMs
   return doc.dump();
 }
 
-}  // namespace fog::acquisition
+}  // namespace fog::session
