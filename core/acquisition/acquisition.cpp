@@ -51,6 +51,36 @@ analysis::ReportContext reportContextOf(const AcquisitionResult& run, const Acqu
   return context;
 }
 
+// The end of a recorded run: the decoded samples and the session's final
+// state go to the file, then the run's result (with its settings). A file
+// that cannot be written at the end (a full disk) makes the run incomplete,
+// as during the run; only a failure to store the result is an error.
+static Status finishSession(std::unique_ptr<session::SessionWriter> writer, const Status& sessionFailure, bool storeSamples,
+                     const AcquisitionOptions& options, AcquisitionResult& result) {
+  result.sessionPath = options.sessionPath;
+  Status written = sessionFailure;
+  if (written.isOk() && storeSamples) written = writer->storeRecording(result.recording);
+  if (written.isOk()) written = writer->finish(result.complete, result.incompleteReason);
+  if (!written.isOk()) {
+    if (sessionFailure.isOk())
+      result.incompleteReason = "the session file could not be written at the end of the run (" + written.message() + ")";
+    result.complete = false;
+    // Best effort: mark the session incomplete with the reason (a full
+    // disk may refuse even that; it then reads as interrupted). Nothing
+    // else is written: decoded samples can be rebuilt from the raw stream.
+    (void)writer->finishAfterFailure(result.incompleteReason);
+    result.sessionBytes = writer->committedBytes();
+    return Status::ok();
+  }
+  result.sessionBytes = writer->committedBytes();
+  writer.reset();  // closed before the result is added
+  if (!result.report) return Status::ok();
+  return session::addResult(
+      options.sessionPath,
+      session::analysisSettingsJson(options.constants, options.reportContext.imuDelayLimitMs, "acquisition"),
+      analysis::formatReportJson(*result.report, reportContextOf(result, options)));
+}
+
 Result<AcquisitionResult> acquire(ByteSource& source, const AcquisitionOptions& options,
                                   const std::atomic<bool>* stop,
                                   const std::function<void(AcquisitionBatch&&)>& observer) {
@@ -182,34 +212,7 @@ Result<AcquisitionResult> acquire(ByteSource& source, const AcquisitionOptions& 
   if (result.recordingStatus.isOk()) result.report = analysis::analyzeRecording(result.recording, options.constants);
   else result.report = result.recordingStatus;
 
-  if (writer) {
-    result.sessionPath = options.sessionPath;
-    Status written = sessionFailure;
-    if (written.isOk() && anyFrames && builtOk) written = writer->storeRecording(result.recording);
-    if (written.isOk()) written = writer->finish(result.complete, result.incompleteReason);
-    if (!written.isOk()) {
-      // A full disk at the end: the same as during the run.
-      if (sessionFailure.isOk())
-        result.incompleteReason = "the session file could not be written at the end of the run (" +
-                                  written.message() + ")";
-      result.complete = false;
-      // Best effort: mark the session incomplete with the reason (a full
-      // disk may refuse even that; it then reads as interrupted). Nothing
-      // else is written: decoded samples can be rebuilt from the raw stream.
-      (void)writer->finishAfterFailure(result.incompleteReason);
-      result.sessionBytes = writer->committedBytes();
-      writer.reset();
-      return result;
-    }
-    result.sessionBytes = writer->committedBytes();
-    writer.reset();
-    if (result.report) {
-      if (auto s = session::addResult(options.sessionPath, session::analysisSettingsJson(options.constants, options.reportContext.imuDelayLimitMs, "acquisition"),
-                                      analysis::formatReportJson(*result.report, reportContextOf(result, options)));
-          !s.isOk())
-        return s;
-    }
-  }
+  if (writer) FOG_RETURN_IF_ERROR(finishSession(std::move(writer), sessionFailure, anyFrames && builtOk, options, result));
   return result;
 }
 
