@@ -19,12 +19,16 @@ std::vector<protocol::DecodedFrame> decodeAll(const std::vector<std::uint8_t>& b
   return frames;
 }
 
-TEST(LiveTraces, FollowsTheTestPointAndRemovesTheGyroTrend) {
-  // 1 Hz / 3 deg on Z for 8 s; a large bias (36 deg/h) so a trend left in
-  // would show: over 8 s it would add 0.08 deg.
+// 1 Hz / 3 deg on Z for 8 s; a large bias (36 deg/h) so a trend left in
+// would show: over 8 s it would add 0.08 deg.
+Result<model::SimulatedRun> biasedShortRun() {
   model::SimConfig config;
   config.fog.biasDegPerH = {0.0, 0.0, 36.0};
-  auto run = model::simulate(config, fog::test::shortPlan());
+  return model::simulate(config, fog::test::shortPlan());
+}
+
+TEST(LiveTraces, FollowsTheTestPointAndRemovesTheGyroTrend) {
+  auto run = biasedShortRun();
   ASSERT_TRUE(run.isOk());
   const auto frames = decodeAll(run->bytes);
 
@@ -88,9 +92,7 @@ TEST(LiveTraces, ClearStartsAfresh) {
 // holds two whole periods: before, the operator reads "-", not a partial
 // fit's hundreds of deg/h.
 TEST(LiveTraces, TheTrendIsShownOnlyOverTwoWholePeriodsOfRecording) {
-  model::SimConfig config;
-  config.fog.biasDegPerH = {0.0, 0.0, 36.0};
-  auto run = model::simulate(config, fog::test::shortPlan());
+  auto run = biasedShortRun();
   ASSERT_TRUE(run.isOk());
   const auto frames = decodeAll(run->bytes);
   LiveTraces live(5.0);
