@@ -22,6 +22,7 @@ packages=(
   xvfb xauth fonts-wqy-microhei
   python3 python3-numpy
   poppler-utils
+  qt6-translations-l10n qttranslations5-l10n
 )
 
 missing=()

@@ -100,11 +100,26 @@ class CoreTextTest : public QObject {
     for (const auto& g : d->gapMap) {
       expectChinese(diagnosis::channelName(g.key.channel));
       expectChinese(diagnosis::quantityName(g.key));
+      expectChinese(diagnosis::quantityTitle(g.key));  // what the text and the gap map show
     }
+    for (const auto& e : d->effects) expectChinese(diagnosis::effectTitle(e.name));
+    expectChinese(diagnosis::effectTitle(d->verdict));
   }
 
  private slots:
   void initTestCase() { QCOMPARE(ui::installTranslations(*qApp, "zh_CN"), QString("zh_CN")); }
+
+  // Qt's own words in its dialogs (file dialogs, message boxes) are Qt's
+  // translations, loaded beside ours (Debian: qt6-translations-l10n,
+  // qttranslations5-l10n; installed by setup).
+  void qtsOwnDialogWordsAreChinese() {
+    for (const auto& [context, word] : {std::pair{"QPlatformTheme", "Cancel"}, std::pair{"QPlatformTheme", "Close"},
+                                        std::pair{"QFileDialog", "Look in:"}, std::pair{"QFileDialog", "File &name:"}}) {
+      const QString shown = QCoreApplication::translate(context, word);
+      QVERIFY2(shown != QString::fromLatin1(word) && englishIn(shown).isEmpty(),
+               qPrintable(QString("%1 '%2' shows as '%3': Qt's translations are not loaded").arg(context, word, shown)));
+    }
+  }
 
   void aTemplateIsTranslatedWithItsVariablePartsAndTheRestKept() {
     QCOMPARE(ui::coreText(std::string("test point 2: no test point gave a delay")),
