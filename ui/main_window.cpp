@@ -308,14 +308,23 @@ void MainWindow::buildMenus() {
   auto* run = menuBar()->addMenu(tr("&Run"));
   runAction_ = run->addAction(tr("&Run"), this, &MainWindow::startRun);
   runAction_->setObjectName("runAction");
-  runAction_->setShortcut(QKeySequence(QStringLiteral("Ctrl+R")));
+  runAction_->setShortcuts({QKeySequence(QStringLiteral("F5")), QKeySequence(QStringLiteral("Ctrl+R"))});
   stopAction_ = run->addAction(tr("&Stop"), this, &MainWindow::stopRun);
   stopAction_->setObjectName("stopAction");
-  stopAction_->setShortcut(QKeySequence(QStringLiteral("Ctrl+.")));
+  stopAction_->setShortcuts({QKeySequence(QStringLiteral("Shift+F5")), QKeySequence(QStringLiteral("Ctrl+."))});
   stopAction_->setToolTip(tr("End the run now; everything received so far is kept and analysed"));
   run->addSeparator();
   auto* diagnose = run->addAction(tr("&Diagnose the shown result"), this, &MainWindow::diagnoseShown);
   diagnose->setObjectName("diagnoseAction");
+  diagnose->setShortcut(QKeySequence(QStringLiteral("Ctrl+D")));
+  auto* reanalyse = run->addAction(tr("Re-&analyse the shown session"), this, [this] {
+    if (const auto* o = resultView_->outcome(); o && !o->sessionPath.empty())
+      reanalyseSession(QString::fromStdString(o->sessionPath));
+    else
+      tell(tr("Open a session first: a re-analysis is stored in the session it analyses."));
+  });
+  reanalyse->setObjectName("reanalyseAction");
+  reanalyse->setShortcut(QKeySequence(QStringLiteral("Ctrl+Shift+R")));
 
   auto* view = menuBar()->addMenu(tr("&View"));
   const QStringList names = {tr("&Configure"), tr("&Live"), tr("&Results"), tr("&Sessions"), tr("&Diagnosis"),
@@ -356,8 +365,10 @@ void MainWindow::buildMenus() {
   auto* help = menuBar()->addMenu(tr("&Help"));
   auto* guide = help->addAction(tr("&Shortcuts"), this, [this] {
     showMessage(this, MessageKind::kInformation, tr("Shortcuts"), tr("Keyboard shortcuts"),
-                tr("Run: Ctrl+R\nStop: Ctrl+.\nOpen a session: Ctrl+O\nLoad a test plan: Ctrl+L\n"
-                   "Save the test plan: Ctrl+S\nViews: Ctrl+1 … Ctrl+6\nQuit: Ctrl+Q"));
+                tr("Run: F5 or Ctrl+R\nStop: Shift+F5 or Ctrl+.\nDiagnose the shown result: Ctrl+D\n"
+                   "Re-analyse the shown session: Ctrl+Shift+R\nOpen a session: Ctrl+O\nLoad a test plan: Ctrl+L\n"
+                   "Save the test plan: Ctrl+S\nViews: Ctrl+1 … Ctrl+6\nQuit: Ctrl+Q\n"
+                   "Plots: wheel zooms, drag pans, double-click shows all, click sets cursors A/B"));
   });
   guide->setObjectName("shortcutsAction");
   auto* about = help->addAction(tr("&About fogbench"));

@@ -1349,12 +1349,12 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+937"/>
+        <location line="+948"/>
         <source>Diagnosis</source>
         <translation>诊断</translation>
     </message>
     <message>
-        <location line="-934"/>
+        <location line="-945"/>
         <source>Noise</source>
         <translation>噪声</translation>
     </message>
@@ -1369,7 +1369,7 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>&lt;h3&gt;fogbench %1&lt;/h3&gt;&lt;p&gt;光纤陀螺 IMU 延迟测试台：转台带动 IMU 摆动，用同一计数器为转台角度和陀螺增量打时间戳，对两者拟合正弦，并将相位差换算为 IMU 延迟及其不确定度。&lt;/p&gt;&lt;p&gt;基于 Qt %2（运行于 %3）和 Qwt %4 构建。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location line="+94"/>
+        <location line="+103"/>
         <source>&amp;Bench constants…</source>
         <translation>测试台常数(&amp;B)…</translation>
     </message>
@@ -1389,7 +1389,7 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>帮助(&amp;H)</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+9"/>
         <source>&amp;About fogbench</source>
         <translation>关于 fogbench(&amp;A)</translation>
     </message>
@@ -1399,7 +1399,7 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>关于 fogbench</translation>
     </message>
     <message>
-        <location line="-122"/>
+        <location line="-133"/>
         <location line="+3"/>
         <source>Run</source>
         <translation>运行</translation>
@@ -1427,12 +1427,12 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+697"/>
+        <location line="+708"/>
         <source>Open session</source>
         <translation>打开会话</translation>
     </message>
     <message>
-        <location line="-696"/>
+        <location line="-707"/>
         <source>fogbench sessions (*.fbs);;All files (*)</source>
         <translation>fogbench 会话 (*.fbs);;所有文件 (*)</translation>
     </message>
@@ -1525,7 +1525,7 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>诊断当前结果(&amp;D)</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+12"/>
         <source>&amp;View</source>
         <translation>视图(&amp;V)</translation>
     </message>
@@ -1580,24 +1580,7 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>键盘快捷键</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Run: Ctrl+R
-Stop: Ctrl+.
-Open a session: Ctrl+O
-Load a test plan: Ctrl+L
-Save the test plan: Ctrl+S
-Views: Ctrl+1 … Ctrl+6
-Quit: Ctrl+Q</source>
-        <translation>运行：Ctrl+R
-停止：Ctrl+.
-打开会话：Ctrl+O
-载入测试计划：Ctrl+L
-保存测试计划：Ctrl+S
-视图：Ctrl+1 … Ctrl+6
-退出：Ctrl+Q</translation>
-    </message>
-    <message>
-        <location line="+18"/>
+        <location line="+21"/>
         <source>(none yet)</source>
         <translation>（暂无）</translation>
     </message>
@@ -1657,12 +1640,45 @@ Quit: Ctrl+Q</source>
         <translation>停止运行并关闭</translation>
     </message>
     <message>
-        <location line="-177"/>
+        <location line="-216"/>
+        <source>Re-&amp;analyse the shown session</source>
+        <translation>重新分析所显示的会话(&amp;A)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Open a session first: a re-analysis is stored in the session it analyses.</source>
+        <translation>请先打开一个会话：重新分析的结果保存在所分析的会话中。</translation>
+    </message>
+    <message>
+        <location line="+33"/>
         <source>The language can be changed once the run or the diagnosis has ended.</source>
         <translation>运行或诊断结束后才能更改语言。</translation>
     </message>
     <message>
-        <location line="+179"/>
+        <location line="+11"/>
+        <source>Run: F5 or Ctrl+R
+Stop: Shift+F5 or Ctrl+.
+Diagnose the shown result: Ctrl+D
+Re-analyse the shown session: Ctrl+Shift+R
+Open a session: Ctrl+O
+Load a test plan: Ctrl+L
+Save the test plan: Ctrl+S
+Views: Ctrl+1 … Ctrl+6
+Quit: Ctrl+Q
+Plots: wheel zooms, drag pans, double-click shows all, click sets cursors A/B</source>
+        <translation>运行：F5 或 Ctrl+R
+停止：Shift+F5 或 Ctrl+.
+诊断所显示的结果：Ctrl+D
+重新分析所显示的会话：Ctrl+Shift+R
+打开会话：Ctrl+O
+载入测试计划：Ctrl+L
+保存测试计划：Ctrl+S
+视图：Ctrl+1 … Ctrl+6
+退出：Ctrl+Q
+曲线图：滚轮缩放，拖动平移，双击显示全部，单击设置光标 A/B</translation>
+    </message>
+    <message>
+        <location line="+170"/>
         <source>Keep running</source>
         <translation>继续运行</translation>
     </message>
@@ -2381,7 +2397,7 @@ File: %1</source>
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location filename="../../ui/main_window.cpp" line="-1078"/>
+        <location filename="../../ui/main_window.cpp" line="-1089"/>
         <location filename="../../ui/plan_editor.cpp" line="-323"/>
         <location filename="../../ui/plots/delta_picker.cpp" line="+1"/>
         <source>%1 s</source>

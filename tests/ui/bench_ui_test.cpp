@@ -1641,8 +1641,10 @@ class BenchUiTest : public QObject {
     for (QAction* a : w->menuBar()->actions()) menus << a->text().remove('&');
     QCOMPARE(menus, QStringList({"File", "Run", "View", "Tools", "Help"}));
     const std::vector<std::pair<const char*, QKeySequence>> shortcuts = {
-        {"runAction", QKeySequence(QStringLiteral("Ctrl+R"))},
-        {"stopAction", QKeySequence(QStringLiteral("Ctrl+."))},
+        {"runAction", QKeySequence(QStringLiteral("F5"))},
+        {"stopAction", QKeySequence(QStringLiteral("Shift+F5"))},
+        {"diagnoseAction", QKeySequence(QStringLiteral("Ctrl+D"))},
+        {"reanalyseAction", QKeySequence(QStringLiteral("Ctrl+Shift+R"))},
         {"openSessionAction", QKeySequence(QKeySequence::Open)},
         {"loadPlanAction", QKeySequence(QStringLiteral("Ctrl+L"))},
         {"savePlanAction", QKeySequence(QKeySequence::Save)},
@@ -1653,6 +1655,9 @@ class BenchUiTest : public QObject {
       QVERIFY2(action, name);
       QCOMPARE(action->shortcut(), keys);
     }
+    // The second keys of Run and Stop, as before F5 came.
+    QVERIFY(w->findChild<QAction*>("runAction")->shortcuts().contains(QKeySequence(QStringLiteral("Ctrl+R"))));
+    QVERIFY(w->findChild<QAction*>("stopAction")->shortcuts().contains(QKeySequence(QStringLiteral("Ctrl+."))));
     QCOMPARE(QKeySequence(QKeySequence::Save).toString(), QString("Ctrl+S"));
     QCOMPARE(QKeySequence(QKeySequence::Open).toString(), QString("Ctrl+O"));
 
