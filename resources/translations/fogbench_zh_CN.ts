@@ -3433,41 +3433,46 @@ File: %1</source>
         <translation>χ²/dof %1</translation>
     </message>
     <message>
-        <location line="+120"/>
-        <location line="+73"/>
+        <location line="+103"/>
+        <source>NO VERDICT</source>
+        <translation>无判定</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <location line="+69"/>
         <source>PASS: every test point passed its validity checks and its IMU delay + 2σ is below the %1 ms limit.</source>
         <translation>合格：每个测试点都通过有效性检查，且其 IMU 延迟 + 2σ 低于 %1 ms 限值。</translation>
     </message>
     <message>
-        <location line="-68"/>
-        <location line="+80"/>
+        <location line="-64"/>
+        <location line="+76"/>
         <source>%1 of %2 test points failed a validity check</source>
         <translation>%2 个测试点中有 %1 个未通过有效性检查</translation>
     </message>
     <message>
-        <location line="-78"/>
+        <location line="-74"/>
         <source>no test point gave a delay</source>
         <translation>没有测试点给出延迟</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+76"/>
+        <location line="+72"/>
         <source>INVALID: the result cannot be vouched for: %1.</source>
         <translation>无效：结果无法保证：%1。</translation>
     </message>
     <message>
-        <location line="-74"/>
-        <location line="+67"/>
+        <location line="-70"/>
+        <location line="+63"/>
         <source>FAIL against the %1 ms limit: %2 of %3 test points exceed the limit.</source>
         <translation>对 %1 ms 限值不合格：%3 个测试点中有 %2 个超限。</translation>
     </message>
     <message>
-        <location line="-71"/>
+        <location line="-67"/>
         <source>%1 test point(s) gave no delay</source>
         <translation>%1 个测试点未得到延迟</translation>
     </message>
     <message>
-        <location line="-325"/>
+        <location line="-336"/>
         <source>table angle (encoder, %1 ms)</source>
         <translation>转台角度（编码器，%1 ms）</translation>
     </message>
@@ -3477,32 +3482,36 @@ File: %1</source>
         <translation>陀螺角度（增量累加，%1 ms）</translation>
     </message>
     <message>
-        <location line="+326"/>
+        <location line="+337"/>
         <source>INCOMPLETE (the run stopped early); its data give %1</source>
         <translation>不完整（运行提前停止）；其数据给出 %1</translation>
     </message>
     <message>
+        <location line="-52"/>
         <location filename="../../ui/session_browser.cpp" line="+35"/>
         <source>INCOMPLETE</source>
         <translation>不完整</translation>
     </message>
     <message>
         <location line="-3"/>
+        <location filename="../../ui/session_browser.cpp" line="-3"/>
         <source>PASS</source>
         <translation>通过</translation>
     </message>
     <message>
         <location line="+1"/>
+        <location filename="../../ui/session_browser.cpp" line="+1"/>
         <source>FAIL</source>
         <translation>不通过</translation>
     </message>
     <message>
         <location line="+1"/>
+        <location filename="../../ui/session_browser.cpp" line="+1"/>
         <source>INVALID</source>
         <translation>无效</translation>
     </message>
     <message>
-        <location filename="../../ui/report/calibration_report.cpp" line="+18"/>
+        <location line="+67"/>
         <location line="+49"/>
         <source>INCOMPLETE: the run stopped before its plan ended (%1); no calibration verdict. The data recorded give %2.</source>
         <translation>不完整：运行在计划结束前停止（%1）；没有校准判定。已记录的数据给出 %2。</translation>
@@ -4886,6 +4895,76 @@ File: %1</source>
         <location line="+1"/>
         <source>simulator, seed %1, %2</source>
         <translation>仿真器，种子 %1，%2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>session %1 (%2)</source>
+        <translation>会话 %1（%2）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>result %1 of %2, stored %3 by %4 (fogbench %5)</source>
+        <translation>结果 %1/%2，%3 由 %4 保存（fogbench %5）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>acquisition</source>
+        <translation>采集</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Sagnac sensing</source>
+        <translation>Sagnac 敏感</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>instantaneous in principle</source>
+        <translation>原理上是瞬时的</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>closed-loop delay</source>
+        <translation>闭环延迟</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&lt;= %1 eigen periods</source>
+        <translation>≤ %1 个本征周期</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>pulse output update</source>
+        <translation>脉冲输出更新</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>0 .. one update period</source>
+        <translation>0 … 一个更新周期</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>board: pulse sampling</source>
+        <translation>处理板：脉冲采样</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>board clock cycles</source>
+        <translation>处理板时钟周期</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>board: temperature compensation</source>
+        <translation>处理板：温度补偿</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>board: serial frame</source>
+        <translation>处理板：串行帧</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 bytes at %2 baud</source>
+        <translation>%1 字节，%2 波特</translation>
     </message>
     <message>
         <location line="+1"/>

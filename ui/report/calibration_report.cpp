@@ -313,14 +313,14 @@ void firstPage(PageFlow& flow, const Content& c) {
           {QObject::tr("IMU serial number"), orNotRecorded(info.imuSerial)},
           {QObject::tr("Operator"), orNotRecorded(info.operatorName)},
           {QObject::tr("Recorded (UTC)"), orNotRecorded(info.createdUtc)},
-          {QObject::tr("Data source"), orNotRecorded(info.source)},
+          {QObject::tr("Data source"), info.source.empty() ? orNotRecorded(info.source) : coreText(info.source)},
           {QObject::tr("Recorded with"),
            info.softwareVersion.empty() ? QObject::tr("not recorded")
                                         : "fogbench " + QString::fromStdString(info.softwareVersion)},
           {QObject::tr("Result reported"),
            c.in.resultShown.isEmpty()
                ? QObject::tr("computed when this report was produced, with the constants on page 2")
-               : c.in.resultShown},
+               : coreText(c.in.resultShown)},
           {QObject::tr("Report produced"), QObject::tr("%1 by fogbench %2").arg(c.producedUtc, QStringLiteral(FOG_VERSION))},
           {QObject::tr("Raw data"), rawDataText(c)},
           {QObject::tr("Raw data SHA-256"), c.hash.isEmpty() ? QObject::tr("none: no raw stream (imported)") : c.hash},
@@ -757,8 +757,8 @@ void noisePage(PageFlow& flow, const noise::GyroNoiseReport& r) {
                    {QObject::tr("from τ (s)"), 38, Qt::AlignLeft}};
   for (const auto& t : r.model.terms) {
     const auto u = noise::termInGyroUnits(t);
-    terms.rows.push_back({QString::fromUtf8(noise::noiseTermName(t.kind)), QString::number(u.value, 'g', 4),
-                          QString::number(u.stdError, 'g', 2), QString::fromUtf8(u.unit),
+    terms.rows.push_back({coreText(noise::noiseTermName(t.kind)), QString::number(u.value, 'g', 4),
+                          QString::number(u.stdError, 'g', 2), ui::displayUnits(QString::fromUtf8(u.unit)),
                           QString("%1 – %2").arg(QString::number(t.tauLowS, 'g', 3), QString::number(t.tauHighS, 'g', 3))});
   }
   flow.heading(QObject::tr("Noise terms (IEEE Std 952)"));
@@ -866,7 +866,18 @@ QString rawDataSha256(const std::vector<std::uint8_t>& bytes) {
 }
 
 namespace {
-QString verdictWord(analysis::Verdict v) { return QString::fromLatin1(analysis::verdictName(v)).toUpper(); }
+// The verdict's word on the page, in the report's language (the JSON and
+// the session keep the rule's English name).
+QString verdictWordText(const std::string& verdict) {
+  if (verdict == "pass") return QObject::tr("PASS");
+  if (verdict == "fail") return QObject::tr("FAIL");
+  if (verdict == "invalid") return QObject::tr("INVALID");
+  if (verdict == "incomplete") return QObject::tr("INCOMPLETE");
+  if (verdict.empty()) return QObject::tr("NO VERDICT");
+  return QString::fromStdString(verdict).toUpper();
+}
+
+QString verdictWord(analysis::Verdict v) { return verdictWordText(analysis::verdictName(v)); }
 }  // namespace
 
 Verdict calibrationVerdict(const DelayReport& delays, double limitMs) {
@@ -914,16 +925,12 @@ namespace {
 void markIncomplete(PointVerdict& p) {
   p.pass = false;
   p.line = QObject::tr("INCOMPLETE (the run stopped early); its data give %1").arg(p.line);
-  p.word = QStringLiteral("INCOMPLETE");
+  p.word = verdictWordText("incomplete");
 }
 }  // namespace
 
 Verdict calibrationVerdict(const ReportInput& in) {
-  // The verdict words stay as the report has always printed them (the
-  // rule's names, upper case), in every language.
-  auto word = [](const std::string& v) {
-    return v.empty() ? QStringLiteral("NO VERDICT") : QString::fromStdString(v).toUpper();
-  };
+  const auto word = verdictWordText;
   if (!in.stored) {
     Verdict v = calibrationVerdict(in.delays, in.imuDelayLimitMs);
     if (in.incompleteReason.empty()) return v;
