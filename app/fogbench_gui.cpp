@@ -188,6 +188,10 @@ int main(int argc, char* argv[]) {
       window.move(free.center() - QPoint(750, 475));
       window.show();
     } else {
+      // Without a window manager (a bare X server) maximising does nothing:
+      // the window is then the screen's free area less a frame's room.
+      window.resize(free.width() - 16, free.height() - 48);
+      window.move(free.topLeft());
       window.showMaximized();
     }
   } else {

@@ -486,7 +486,7 @@ void DiagnosisView::showGapMap() {
     gapMapPlot_->axisWidget(axis)->setFont(font);
   }
   // "P1 S2" explained where it is read.
-  QwtText columnsTitle(tr("test point P, segment S (P2 S1: test point 2, segment 1)"));
+  QwtText columnsTitle(tr("P test point, S segment"));
   QFont titleFont = gapMapPlot_->axisWidget(QwtPlot::xBottom)->font();
   columnsTitle.setFont(titleFont);
   gapMapPlot_->setAxisTitle(QwtPlot::xBottom, columnsTitle);
@@ -499,7 +499,12 @@ void DiagnosisView::showShrink() {
   QStringList names;
   QVector<double> shrink;
   std::vector<bool> kept;
-  for (const auto& e : diagnosis_->effects) {
+  // The best-ranked effects, as many as stay readable beside their bars at
+  // a laptop's height (all of them are in the text below, ranked).
+  constexpr std::size_t kShown = 6;
+  const std::size_t count = std::min(kShown, diagnosis_->effects.size());
+  for (std::size_t i = 0; i < count; ++i) {
+    const auto& e = diagnosis_->effects[i];
     names << coreText(diagnosis::effectTitle(e.name));
     shrink << 100.0 * std::clamp(e.heldOutShrink, -1.0, 1.0);
     kept.push_back(e.kept);
@@ -515,6 +520,11 @@ void DiagnosisView::showShrink() {
   shrinkPlot_->setAxisScaleDraw(QwtPlot::yLeft, new NamedScaleDraw(names));
   shrinkPlot_->setAxisScale(QwtPlot::yLeft, static_cast<double>(names.size()) - 0.4, -0.6, 1.0);
   shrinkPlot_->setAxisMaxMinor(QwtPlot::yLeft, 0);
+  shrinkPlot_->setTitle(diagnosis_->effects.size() > count
+                            ? tr("Held-out shrink: the %1 best-ranked of %2 effects (all in the text below)")
+                                  .arg(count)
+                                  .arg(diagnosis_->effects.size())
+                            : tr("Held-out shrink per candidate effect"));
   const double lowest = shrink.isEmpty() ? 0.0 : *std::min_element(shrink.begin(), shrink.end());
   shrinkPlot_->setAxisScale(QwtPlot::xBottom, std::min(0.0, lowest), 100.0);
   shrinkPlot_->replot();

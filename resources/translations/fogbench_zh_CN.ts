@@ -783,11 +783,12 @@ counter %5 MHz / %6 bit</source>
     </message>
     <message>
         <location line="+5"/>
+        <location line="+327"/>
         <source>Held-out shrink per candidate effect</source>
         <translation>各候选效应在留出数据上的差异缩减</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="-327"/>
         <source>held-out gap closed (%)</source>
         <translation>留出数据差异缩减 (%)</translation>
     </message>
@@ -927,8 +928,13 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+18"/>
-        <source>test point P, segment S (P2 S1: test point 2, segment 1)</source>
-        <translation>点N 段M：测试点 N 的第 M 段（点2 段1：测试点 2 的第 1 段）</translation>
+        <source>P test point, S segment</source>
+        <translation>点：测试点，段：分段</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>Held-out shrink: the %1 best-ranked of %2 effects (all in the text below)</source>
+        <translation>留出数据差异缩减：%2 个效应中排名前 %1 的（全部见下方文本）</translation>
     </message>
 </context>
 <context>

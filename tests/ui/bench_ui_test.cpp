@@ -1181,13 +1181,14 @@ class BenchUiTest : public QObject {
       for (int axis : {QwtPlot::yLeft, QwtPlot::xBottom})
         QVERIFY2(gap->axisWidget(axis)->font().pointSizeF() >= 9.0,
                  qPrintable(QString::number(gap->axisWidget(axis)->font().pointSizeF())));
-      QVERIFY2(gap->axisTitle(QwtPlot::xBottom).text().contains("test point P, segment S"),
+      QVERIFY2(gap->axisTitle(QwtPlot::xBottom).text().contains("P test point, S segment"),
                qPrintable(gap->axisTitle(QwtPlot::xBottom).text()));
     }
     int bars = 0;
     for (auto* item : w->diagnosisView()->shrinkPlot()->itemList(QwtPlotItem::Rtti_PlotBarChart))
       bars += static_cast<int>(static_cast<QwtPlotBarChart*>(item)->dataSize());
-    QCOMPARE(bars, static_cast<int>(d->effects.size()));
+    // The best-ranked six, readable; all are ranked in the text.
+    QCOMPARE(bars, std::min(6, static_cast<int>(d->effects.size())));
     // Bars across with the names down the left, the best ranked on top.
     const QwtScaleDiv& names = w->diagnosisView()->shrinkPlot()->axisScaleDiv(QwtPlot::yLeft);
     QVERIFY(names.lowerBound() > names.upperBound());
