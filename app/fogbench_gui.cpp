@@ -27,7 +27,6 @@
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QCoreApplication>
-#include <QScreen>
 #include <QTimer>
 #include <cstdio>
 #include <cstring>
@@ -175,28 +174,7 @@ int main(int argc, char* argv[]) {
 
   window.setRemembering(true);
 
-  // The layout of the last session (size, position, splitters, view); the
-  // first time, 1500 x 950 on a screen that has room for it with the
-  // window's frame, else maximised: the frame, the title bar and the status
-  // bar stay on the screen (a window as large as the screen's free area
-  // would put its frame beyond it).
-  if (!window.restoreLayout()) {
-    const QScreen* screen = QApplication::primaryScreen();
-    const QRect free = screen ? screen->availableGeometry() : QRect(0, 0, 1500, 950);
-    if (free.width() >= 1500 + 60 && free.height() >= 950 + 80) {
-      window.resize(1500, 950);
-      window.move(free.center() - QPoint(750, 475));
-      window.show();
-    } else {
-      // Without a window manager (a bare X server) maximising does nothing:
-      // the window is then the screen's free area less a frame's room.
-      window.resize(free.width() - 16, free.height() - 48);
-      window.move(free.topLeft());
-      window.showMaximized();
-    }
-  } else {
-    window.show();
-  }
+  window.showOnScreen();
   const std::map<QString, fog::ui::MainWindow::View> viewOf = {
       {"configure", fog::ui::MainWindow::kConfigure}, {"live", fog::ui::MainWindow::kLive},
       {"results", fog::ui::MainWindow::kResults},     {"sessions", fog::ui::MainWindow::kSessions},

@@ -3,6 +3,7 @@
 #include <QActionGroup>
 #include <QCloseEvent>
 #include <QDesktopServices>
+#include <QApplication>
 #include <QScreen>
 #include <QScrollArea>
 #include <QUrl>
@@ -498,6 +499,24 @@ bool MainWindow::restoreLayout() {
   if (view >= kConfigure && view <= kNoise) showView(static_cast<View>(view));
   // Qt moves a remembered window back onto a screen that has changed.
   return s.contains("geometry") && restoreGeometry(s.value("geometry").toByteArray());
+}
+
+void MainWindow::showOnScreen() {
+  if (restoreLayout()) {
+    show();
+    return;
+  }
+  const QScreen* screen = QApplication::primaryScreen();
+  const QRect free = screen ? screen->availableGeometry() : QRect(0, 0, 1500, 950);
+  if (free.width() >= 1500 + 60 && free.height() >= 950 + 80) {
+    resize(1500, 950);
+    move(free.center() - QPoint(750, 475));
+    show();
+    return;
+  }
+  resize(free.width() - 16, free.height() - 48);
+  move(free.topLeft());
+  showMaximized();
 }
 
 void MainWindow::reportError(const QString& title, const QString& headline, const QString& details) {

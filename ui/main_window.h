@@ -102,6 +102,11 @@ class MainWindow : public QMainWindow {
   // the window to the screen.
   void saveLayout();
   bool restoreLayout();
+  // Shows the window as a start does: the remembered layout, else 1500 x 950
+  // where the screen has room for it with its frame, else maximised (a bare
+  // X server without a window manager: the free area less a frame's room).
+  // The frame, the title bar and the status bar stay on the screen.
+  void showOnScreen();
   // Test plans in the CLI's JSON format (fogbench-cli run --plan FILE).
   Status loadPlanFile(const QString& path);
   Status savePlanFile(const QString& path);
