@@ -19,7 +19,7 @@ packages=(
   qt6-base-dev qt6-base-dev-tools qt6-svg-dev qt6-tools-dev qt6-tools-dev-tools
   qt6-l10n-tools qt6-qpa-plugins qmake6 libgl-dev bzip2
   clang libclang-rt-14-dev
-  xvfb xauth fonts-wqy-microhei
+  xvfb xauth openbox fonts-wqy-microhei
   python3 python3-numpy
   poppler-utils
   qt6-translations-l10n qttranslations5-l10n

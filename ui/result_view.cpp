@@ -215,6 +215,7 @@ ResultView::ResultView(QWidget* parent) : QWidget(parent) {
   fitTable_->setObjectName("fitTable");
   delayTable_ = makeTable({tr("delay"), tr("value (ms)"), tr("1σ (ms)"), tr("theory (ms)"), tr("basis")});
   delayTable_->setObjectName("delayTable");
+  delayTable_->installEventFilter(this);
   for (QTableWidget* t : {fitTable_, delayTable_}) t->setMinimumSize(150, 60);
   buildFrequencyPlot();
   // The lag itself, measurable: table and gyro around one zero crossing.
@@ -465,13 +466,18 @@ void ResultView::fillTables(std::size_t i) {
           range(std::max(0.0, budget.totalMinMs - budget.boardMaxMs), budget.totalMaxMs - budget.boardMaxMs),
           tr("sensing, loop and pulse update")},
          true);
-  // Every delay row stays in view (the gyro's own delay is the last): the
-  // table is as tall as its rows; the fit table above and the plot below give
-  // way (they scroll, the plot shrinks).
+  fitDelayTableHeight();
+}
+
+// Every delay row stays in view (the gyro's own delay is the last): the
+// table is as tall as its rows; the fit table above and the plot below give
+// way (they scroll, the plot shrinks).
+void ResultView::fitDelayTableHeight() {
   delayTable_->resizeRowsToContents();
   int height = delayTable_->horizontalHeader()->height() + 2 * delayTable_->frameWidth();
   for (int r = 0; r < delayTable_->rowCount(); ++r) height += delayTable_->rowHeight(r);
   if (delayTable_->horizontalScrollBar()->isVisible()) height += delayTable_->horizontalScrollBar()->height();
+  if (delayTable_->minimumHeight() == height) return;
   delayTable_->setMinimumHeight(height);
   // The fit table's own size hint would leave the zero-crossing plot a
   // sliver on a laptop: when the plot is squeezed, the fit table gives way
@@ -481,6 +487,12 @@ void ResultView::fillTables(std::size_t i) {
     const int fits = std::min(fitTable_->height(), std::max(fitTable_->minimumHeight(), total / 6));
     right->setSizes({fits, height, std::max(0, total - fits - height)});
   }
+}
+
+bool ResultView::eventFilter(QObject* watched, QEvent* event) {
+  if (watched == delayTable_ && event->type() == QEvent::Resize && delayTable_->rowCount() > 0)
+    QMetaObject::invokeMethod(this, &ResultView::fitDelayTableHeight, Qt::QueuedConnection);
+  return QWidget::eventFilter(watched, event);
 }
 
 QString ResultView::verdictWord(const std::string& verdict) {

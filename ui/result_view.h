@@ -105,7 +105,13 @@ class ResultView : public QWidget {
   // The export menu's "Open the export folder".
   void openExportFolderRequested();
 
+ protected:
+  // The delay table keeps every row in view as its width (and so its
+  // wrapped rows' heights) changes.
+  bool eventFilter(QObject* watched, QEvent* event) override;
+
  private:
+  void fitDelayTableHeight();
   void buildFrequencyPlot();
   void showFrequencyPlot();
   void fillTables(std::size_t i);

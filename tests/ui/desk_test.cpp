@@ -1,0 +1,224 @@
+// The bench at a lab desk (issue 31): the real window in a real X server with
+// a window manager, at the size and in the language the wrapper asks for
+// (tests/ui/run_desk_test.sh starts Xvfb and openbox; FOG_DESK_LANGUAGE is
+// en or zh_CN). What the offscreen tests cannot see: the window with its
+// frame on the screen, the status bar on the screen, every delay row and the
+// verdict without scrolling, no label over another, and no English left in a
+// Chinese window or in Qt's own dialogs.
+
+#include <QAbstractButton>
+#include <QApplication>
+#include <QComboBox>
+#include <QGroupBox>
+#include <QHeaderView>
+#include <QLabel>
+#include <QMessageBox>
+#include <QRegularExpression>
+#include <QScreen>
+#include <QScrollBar>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QStatusBar>
+#include <QTabBar>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QTextDocument>
+#include <QtTest>
+#include <memory>
+
+#include "core/acquisition/acquisition.h"
+#include "core/acquisition/simulator_source.h"
+#include "ui/language/language.h"
+#include "ui/main_window.h"
+#include "ui/result_view.h"
+
+using fog::ui::MainWindow;
+
+namespace {
+
+// Words a Chinese window keeps: units, names and identifiers of the trade.
+const QStringList kKept = {"IMU", "CRLB", "fogbench", "Hz", "ms", "MHz", "ppm", "dof", "RMS", "Allan", "IEEE",
+                           "Std", "SHA", "UTC", "FOG", "tcp", "HOST", "PORT", "dev", "ttyS", "ttyUSB", "fbs",
+                           "json", "csv", "CSV", "PDF", "PNG", "JSON", "Sagnac", "Qwt"};
+
+// English in a text: runs of three or more Latin letters that are not kept
+// words, file names or paths.
+QStringList englishIn(QString text) {
+  static const QRegularExpression path(R"((/[^\s]+|[A-Za-z0-9_.-]+\.(fbs|json|csv|pdf|png)))");
+  text.replace(path, " ");
+  static const QRegularExpression word(R"([A-Za-z]{3,})");
+  QStringList left;
+  for (auto it = word.globalMatch(text); it.hasNext();) {
+    const QString w = it.next().captured(0);
+    if (!kKept.contains(w)) left << w;
+  }
+  return left;
+}
+
+QString plainText(const QString& maybeRich) {
+  if (!Qt::mightBeRichText(maybeRich)) return maybeRich;
+  QTextDocument doc;
+  doc.setHtml(maybeRich);
+  return doc.toPlainText();
+}
+
+// A widget's rectangle in the window's coordinates.
+QRect inWindow(const QWidget* w) { return QRect(w->mapTo(w->window(), QPoint(0, 0)), w->size()); }
+
+bool related(const QWidget* a, const QWidget* b) { return a->isAncestorOf(b) || b->isAncestorOf(a); }
+
+}  // namespace
+
+class DeskTest : public QObject {
+  Q_OBJECT
+
+  std::unique_ptr<MainWindow> w_;
+  QString language_;
+  QTemporaryDir dir_;
+
+  static void settle() {
+    for (int i = 0; i < 5; ++i) {
+      QApplication::processEvents();
+      QTest::qWait(60);
+    }
+  }
+
+  // The visible texts of the shown view, each with its widget.
+  std::vector<std::pair<const QWidget*, QString>> visibleTexts(QWidget* root) const {
+    std::vector<std::pair<const QWidget*, QString>> out;
+    for (auto* l : root->findChildren<QLabel*>())
+      if (l->isVisible()) out.emplace_back(l, plainText(l->text()));
+    for (auto* b : root->findChildren<QAbstractButton*>())
+      if (b->isVisible()) out.emplace_back(b, b->text());
+    for (auto* g : root->findChildren<QGroupBox*>())
+      if (g->isVisible()) out.emplace_back(g, g->title());
+    for (auto* t : root->findChildren<QTabBar*>())
+      if (t->isVisible())
+        for (int i = 0; i < t->count(); ++i) out.emplace_back(t, t->tabText(i));
+    for (auto* t : root->findChildren<QTableWidget*>())
+      if (t->isVisible())
+        for (int c = 0; c < t->columnCount(); ++c)
+          if (auto* h = t->horizontalHeaderItem(c)) out.emplace_back(t, h->text());
+    return out;
+  }
+
+ private slots:
+  void initTestCase() {
+    // Settings (layout, folder) go to a test location, never the user's.
+    QStandardPaths::setTestModeEnabled(true);
+    QCoreApplication::setOrganizationName("fogbench-desk-tests");
+    QSettings().clear();
+    QCOMPARE(QGuiApplication::platformName(), QString("xcb"));  // a real X server: run_desk_test.sh
+    language_ = qEnvironmentVariable("FOG_DESK_LANGUAGE", "en");
+    QCOMPARE(fog::ui::installTranslations(*qApp, language_), language_);
+    QVERIFY(dir_.isValid());
+
+    // A recorded session to review: 2 Hz / 2 deg, 10 s.
+    fog::TestPlan plan;
+    plan.points = {fog::TestPoint{fog::Axis::kX, 2.0, 2.0, 10.0, 0.3}};
+    auto source = fog::acquisition::SimulatorSource::create(fog::model::SimConfig{}, plan, 0.0);
+    QVERIFY(source.isOk());
+    fog::acquisition::AcquisitionOptions options;
+    options.sessionPath = dir_.filePath("desk.fbs").toStdString();
+    options.info.plan = plan;
+    QVERIFY(fog::acquisition::acquire(**source, options, nullptr).isOk());
+
+    w_ = std::make_unique<MainWindow>();
+    w_->setSessionFolder(dir_.path());
+    w_->showOnScreen();
+    QVERIFY(QTest::qWaitForWindowExposed(w_.get()));
+    QSignalSpy opened(w_.get(), &MainWindow::sessionOpened);
+    w_->openSession(dir_.filePath("desk.fbs"));
+    QTRY_VERIFY_WITH_TIMEOUT(!opened.isEmpty(), 30000);
+    QVERIFY(opened.front().front().toBool());
+    settle();
+  }
+
+  // The window with its frame and title bar, and its status bar, on the screen.
+  void theWindowAndItsStatusBarAreOnTheScreen() {
+    const QRect screen = w_->screen()->geometry();
+    QTRY_VERIFY_WITH_TIMEOUT(w_->frameGeometry().height() > w_->geometry().height(), 5000);  // the WM's frame
+    QVERIFY2(screen.contains(w_->frameGeometry()),
+             qPrintable(QString("window with frame %1,%2 %3x%4 on a %5x%6 screen")
+                            .arg(w_->frameGeometry().x()).arg(w_->frameGeometry().y())
+                            .arg(w_->frameGeometry().width()).arg(w_->frameGeometry().height())
+                            .arg(screen.width()).arg(screen.height())));
+    const QRect status(w_->statusBar()->mapToGlobal(QPoint(0, 0)), w_->statusBar()->size());
+    QVERIFY(w_->statusBar()->isVisible());
+    QVERIFY2(screen.contains(status), "the status bar is beyond the screen's edge");
+  }
+
+  // Results: every delay row and the verdict without scrolling.
+  void resultsShowEveryDelayRowAndTheVerdict() {
+    w_->showView(MainWindow::kResults);
+    settle();
+    auto* results = w_->resultView();
+    auto* table = results->delayTable();
+    QCOMPARE(table->rowCount(), 5);
+    QCOMPARE(table->verticalScrollBar()->value(), 0);
+    const QRect viewport = table->viewport()->rect();
+    for (int r = 0; r < table->rowCount(); ++r) {
+      const QRect row = table->visualItemRect(table->item(r, 1));
+      QVERIFY2(viewport.contains(row), qPrintable(QString("delay row %1 (%2) is not in view")
+                                                      .arg(r + 1).arg(table->item(r, 0)->text())));
+    }
+    const QRect window(QPoint(0, 0), w_->size());
+    auto* verdict = w_->findChild<QLabel*>("verdictLabel");
+    QVERIFY(verdict && verdict->isVisible());
+    QVERIFY2(window.contains(inWindow(verdict)), "the verdict is outside the window");
+    QVERIFY2(window.contains(inWindow(table)), "the delay table is outside the window");
+  }
+
+  // Every view: no label over another, and in zh_CN no English left.
+  void everyViewIsReadable_data() {
+    QTest::addColumn<int>("view");
+    const char* names[] = {"configure", "live", "results", "sessions", "diagnosis", "noise"};
+    for (int v = MainWindow::kConfigure; v <= MainWindow::kNoise; ++v) QTest::newRow(names[v]) << v;
+  }
+  void everyViewIsReadable() {
+    QFETCH(int, view);
+    w_->showView(static_cast<MainWindow::View>(view));
+    settle();
+    QWidget* root = w_->centralWidget();
+    const auto texts = visibleTexts(root);
+    QStringList problems;
+    // Labels and buttons side by side, never one over another.
+    std::vector<const QWidget*> boxes;
+    for (const auto& [widget, text] : texts)
+      if (!text.trimmed().isEmpty() && (qobject_cast<const QLabel*>(widget) || qobject_cast<const QAbstractButton*>(widget)))
+        boxes.push_back(widget);
+    for (std::size_t i = 0; i < boxes.size(); ++i)
+      for (std::size_t j = i + 1; j < boxes.size(); ++j) {
+        if (related(boxes[i], boxes[j])) continue;
+        const QRect overlap = inWindow(boxes[i]).intersected(inWindow(boxes[j])).adjusted(1, 1, -1, -1);
+        if (overlap.isValid() && !overlap.isEmpty())
+          problems << QString("'%1' overlaps '%2'").arg(boxes[i]->objectName(), boxes[j]->objectName());
+      }
+    if (language_ == "zh_CN")
+      for (const auto& [widget, text] : texts)
+        if (const QStringList left = englishIn(text); !left.isEmpty())
+          problems << QString("English '%1' in '%2' (%3)").arg(left.join("', '"), text, widget->objectName());
+    problems.removeDuplicates();
+    QVERIFY2(problems.isEmpty(), qPrintable(problems.join("\n")));
+  }
+
+  // Qt's own dialog words (message boxes, file dialogs) in the language.
+  void qtsOwnDialogsSpeakTheLanguage() {
+    QMessageBox box;
+    box.setStandardButtons(QMessageBox::Cancel | QMessageBox::Close);
+    for (auto* b : box.buttons()) {
+      const QString text = b->text().remove('&');
+      if (language_ == "zh_CN") QVERIFY2(englishIn(text).isEmpty(), qPrintable("Qt's button reads '" + text + "'"));
+      else QVERIFY2(text == "Cancel" || text == "Close", qPrintable("Qt's button reads '" + text + "'"));
+    }
+  }
+
+  void cleanupTestCase() {
+    w_->setRemembering(false);
+    w_->close();
+    w_.reset();
+  }
+};
+
+QTEST_MAIN(DeskTest)
+#include "desk_test.moc"
