@@ -215,6 +215,9 @@ ResultView::ResultView(QWidget* parent) : QWidget(parent) {
   fitTable_->setObjectName("fitTable");
   delayTable_ = makeTable({tr("delay"), tr("value (ms)"), tr("1σ (ms)"), tr("theory (ms)"), tr("basis")});
   delayTable_->setObjectName("delayTable");
+  // One line a row (a cut text is whole in its tooltip): all five rows fit
+  // a laptop's height whatever the width and the fonts.
+  delayTable_->setWordWrap(false);
   delayTable_->installEventFilter(this);
   for (QTableWidget* t : {fitTable_, delayTable_}) t->setMinimumSize(150, 60);
   buildFrequencyPlot();
@@ -446,7 +449,10 @@ void ResultView::fillTables(std::size_t i) {
   auto range = [](double lo, double hi) { return QString("%1 – %2").arg(num(lo, 4), num(hi, 4)); };
   delayTable_->setRowCount(5);
   setRow(delayTable_, 0,
-         {tr("measured lag (gyro behind table)"), num(p.lagMs, 5), num(p.lagStdMs, 5), QString(),
+         {tr("measured lag (gyro behind table)"), num(p.lagMs, 5),
+          // A σ below its bound is marked on the number itself, not only in
+          // the basis column a narrow window may cut.
+          num(p.lagStdMs, 5) + (analysis::sigmaBelowBound(p) ? QStringLiteral(" ⚠") : QString()), QString(),
           tr("joint fit; CRLB %1 ms, σ/CRLB %2").arg(num(p.crlbMs, 5), num(p.stdOverCrlb, 2)) +
               (analysis::sigmaBelowBound(p) ? tr(" — σ below the bound: understated (check uncertainty_below_bound)")
                                             : QString())},

@@ -636,6 +636,7 @@ class BenchUiTest : public QObject {
     fog::ui::ResultView view;
     view.resize(1200, 800);
     view.showOutcome(outcome);
+    QVERIFY2(view.delayTable()->item(0, 2)->text().endsWith(" ⚠"), qPrintable(view.delayTable()->item(0, 2)->text()));
     const QString note = view.delayTable()->item(0, 4)->text();
     QVERIFY2(note.contains("σ/CRLB 0.17") && note.contains("σ below the bound") &&
                  note.contains("uncertainty_below_bound"),
