@@ -161,6 +161,8 @@ const char* const kTemplates[] = {
     QT_TRANSLATE_NOOP("core_text", "replay of %1 at as fast as possible"),
     QT_TRANSLATE_NOOP("core_text", "replay of %1 at %2x"),
     QT_TRANSLATE_NOOP("core_text", "stopped by the operator after %1 s"),
+    QT_TRANSLATE_NOOP("core_text", "recording was interrupted: the recording program stopped without finishing the session (crash, kill, power cut or a full disk); everything committed until then is kept"),
+    QT_TRANSLATE_NOOP("core_text", "being recorded now: the session is not finished yet"),
     QT_TRANSLATE_NOOP("core_text", "%1 (after %2 s)"),
     QT_TRANSLATE_NOOP("core_text", "the session file could not be written after %1 s (%2)"),
     QT_TRANSLATE_NOOP("core_text", "no data for %1 s from %2 (after %3 s)"),

@@ -1329,7 +1329,7 @@ Press Diagnose in the Results view to start it again.</source>
 <context>
     <name>fog::ui::MainWindow</name>
     <message>
-        <location filename="../../ui/main_window.cpp" line="+148"/>
+        <location filename="../../ui/main_window.cpp" line="+149"/>
         <source>fogbench %1 — FOG IMU delay bench</source>
         <translation>fogbench %1 —— 光纤陀螺 IMU 延迟测试台</translation>
     </message>
@@ -1355,12 +1355,12 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+948"/>
+        <location line="+966"/>
         <source>Diagnosis</source>
         <translation>诊断</translation>
     </message>
     <message>
-        <location line="-945"/>
+        <location line="-963"/>
         <source>Noise</source>
         <translation>噪声</translation>
     </message>
@@ -1433,12 +1433,12 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+708"/>
+        <location line="+726"/>
         <source>Open session</source>
         <translation>打开会话</translation>
     </message>
     <message>
-        <location line="-707"/>
+        <location line="-725"/>
         <source>fogbench sessions (*.fbs);;All files (*)</source>
         <translation>fogbench 会话 (*.fbs);;所有文件 (*)</translation>
     </message>
@@ -1601,7 +1601,7 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>测试计划已保存为 %1</translation>
     </message>
     <message>
-        <location line="+93"/>
+        <location line="+111"/>
         <source>Saved %1 — File ▸ Open the export folder shows it</source>
         <translation>已保存 %1 —— “文件 ▸ 打开导出文件夹”可查看</translation>
     </message>
@@ -1646,7 +1646,7 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>停止运行并关闭</translation>
     </message>
     <message>
-        <location line="-216"/>
+        <location line="-234"/>
         <source>Re-&amp;analyse the shown session</source>
         <translation>重新分析所显示的会话(&amp;A)</translation>
     </message>
@@ -1684,7 +1684,7 @@ Plots: wheel zooms, drag pans, double-click shows all, click sets cursors A/B</s
 曲线图：滚轮缩放，拖动平移，双击显示全部，单击设置光标 A/B</translation>
     </message>
     <message>
-        <location line="+170"/>
+        <location line="+188"/>
         <source>Keep running</source>
         <translation>继续运行</translation>
     </message>
@@ -2360,7 +2360,7 @@ File: %1</source>
 <context>
     <name>fog::ui::PlotInteraction</name>
     <message>
-        <location filename="../../ui/plots/plot_interaction.cpp" line="+67"/>
+        <location filename="../../ui/plots/plot_interaction.cpp" line="+70"/>
         <source>wheel: zoom · drag: pan · double-click: whole view</source>
         <translation>滚轮：缩放 · 拖动：平移 · 双击：全图</translation>
     </message>
@@ -2403,7 +2403,7 @@ File: %1</source>
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location filename="../../ui/main_window.cpp" line="-1089"/>
+        <location filename="../../ui/main_window.cpp" line="-1107"/>
         <location filename="../../ui/plan_editor.cpp" line="-323"/>
         <location filename="../../ui/plots/delta_picker.cpp" line="+1"/>
         <source>%1 s</source>
@@ -3736,7 +3736,7 @@ File: %1</source>
         <translation>依据</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+9"/>
         <source>Zero crossing: the gyro behind the table</source>
         <translation>过零点：陀螺滞后于转台</translation>
     </message>
@@ -3938,7 +3938,7 @@ File: %1</source>
         <translation>测得滞后（陀螺落后于转台）</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+4"/>
         <source>joint fit; CRLB %1 ms, σ/CRLB %2</source>
         <translation>联合拟合；CRLB %1 ms，σ/CRLB %2</translation>
     </message>
@@ -3988,7 +3988,7 @@ File: %1</source>
         <translation>敏感、闭环与脉冲更新</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+35"/>
         <source>INCOMPLETE</source>
         <translation>不完整</translation>
     </message>
@@ -5011,6 +5011,16 @@ File: %1</source>
         <location line="+1"/>
         <source>stopped by the operator after %1 s</source>
         <translation>操作员在 %1 s 后停止</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>recording was interrupted: the recording program stopped without finishing the session (crash, kill, power cut or a full disk); everything committed until then is kept</source>
+        <translation>记录被中断：记录程序未完成会话就停止了（崩溃、被终止、断电或磁盘已满）；此前已提交的内容全部保留</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>being recorded now: the session is not finished yet</source>
+        <translation>正在记录：会话尚未完成</translation>
     </message>
     <message>
         <location line="+1"/>

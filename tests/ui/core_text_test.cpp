@@ -207,6 +207,15 @@ class CoreTextTest : public QObject {
     QVERIFY2(run.isOk(), run.status().toString().c_str());
     QVERIFY(!run->incompleteReason.empty());
     expectChinese(run->incompleteReason);
+    // A session whose recorder stopped without finishing it (the Sessions
+    // list shows why).
+    QTemporaryDir dir;
+    const std::string path = dir.filePath("interrupted.fbs").toStdString();
+    { auto writer = session::SessionWriter::create(path, SessionInfo{}); QVERIFY(writer.isOk()); }
+    auto reader = session::SessionReader::open(path);
+    QVERIFY(reader.isOk());
+    QVERIFY(!(*reader)->complete());
+    expectChinese((*reader)->incompleteReason());
   }
 
   void unreadableSessionFiles() {

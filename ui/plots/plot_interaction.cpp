@@ -43,6 +43,9 @@ void useCompactTitles(QwtPlot* plot) {
   for (int axis : {kYLeft, kXBottom}) {
     QwtText text = plot->axisTitle(axis);
     text.setFont(plot->font());
+    // One line: a wrapped axis title lost its second line, the unit
+    // ("residual" without "(arcsec)"), on a short plot.
+    text.setRenderFlags(text.renderFlags() & ~Qt::TextWordWrap);
     plot->setAxisTitle(axis, text);
   }
 }
