@@ -68,14 +68,13 @@ Result<BenchConstants> readConstants(CliArguments& args, const BenchConstants& d
     return invalidArgument("uncertainties of bench constants must be >= 0");
   if (c.pulseEquivalentDeg < 0) return invalidArgument("--pulse-equivalent-deg must be >= 0");
   if (auto signs = args.text("gyro-sign")) {
-    FOG_ASSIGN_OR_RETURN(auto parsed, parseGyroSigns(*signs));
+    FOG_ASSIGN_OR_RETURN(auto parsed, parseGyroSigns(*signs, c.gyroSign));
     c.gyroSign = parsed;
   }
   return c;
 }
 
-Result<std::array<int, kAxisCount>> parseGyroSigns(const std::string& text) {
-  std::array<int, kAxisCount> signs{1, 1, 1};
+Result<std::array<int, kAxisCount>> parseGyroSigns(const std::string& text, std::array<int, kAxisCount> signs) {
   std::size_t at = 0;
   while (at <= text.size()) {
     const auto end = std::min(text.find(',', at), text.size());

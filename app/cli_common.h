@@ -39,7 +39,10 @@ Status checkOutputFile(const std::string& path, bool overwrite, const std::strin
 // --gyro-sign x=-1[,y=-1...] for a gyro axis mounted the other way round.
 Result<BenchConstants> readConstants(CliArguments& args, const BenchConstants& defaults = {});
 // --gyro-sign's text ("x=-1,z=-1") into per-axis signs (the rest +1).
-Result<std::array<int, kAxisCount>> parseGyroSigns(const std::string& text);
+// The axes given ("x=-1,z=-1") set their signs; the others keep `signs`
+// (the session's stored ones, +1 without a session).
+Result<std::array<int, kAxisCount>> parseGyroSigns(const std::string& text,
+                                                   std::array<int, kAxisCount> signs = {1, 1, 1});
 // --limit-ms: the IMU delay limit of the verdict (default 0.8 ms).
 Result<double> readDelayLimit(CliArguments& args);
 // Writes the constants back into the settings a session stores.

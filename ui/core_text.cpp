@@ -160,6 +160,8 @@ const char* const kTemplates[] = {
     QT_TRANSLATE_NOOP("core_text", "simulator truth, test point %1: lag %2 ms"),
     QT_TRANSLATE_NOOP("core_text", "replay of %1 at as fast as possible"),
     QT_TRANSLATE_NOOP("core_text", "replay of %1 at %2x"),
+    QT_TRANSLATE_NOOP("core_text", "replay of %1 at as fast as possible (%2)"),
+    QT_TRANSLATE_NOOP("core_text", "replay of %1 at %2x (%3)"),
     QT_TRANSLATE_NOOP("core_text", "stopped by the operator after %1 s"),
     QT_TRANSLATE_NOOP("core_text", "recording was interrupted: the recording program stopped without finishing the session (crash, kill, power cut or a full disk); everything committed until then is kept"),
     QT_TRANSLATE_NOOP("core_text", "being recorded now: the session is not finished yet"),

@@ -716,7 +716,10 @@ Result<RunRequest> MainWindow::buildRunRequest() const {
     request.options.constants = original.bench;
     auto source = std::make_shared<acquisition::ReplaySource>(std::move(bytes), speed,
                                                               "session " + QFileInfo(path).fileName().toStdString());
-    request.options.info.source = source->description();
+    // The original's source stays named (a replay of a simulated session is
+    // still simulated data: the report says so).
+    request.options.info.source =
+        source->description() + (original.source.empty() ? std::string() : " (" + original.source + ")");
     request.source = source;
   }
   request.options.info.plan = plan;
@@ -949,7 +952,12 @@ void MainWindow::loadSession(const QString& path, bool reanalyse, std::int64_t r
         if (reanalyse) {
           session::AnalysisSettings settings;
           settings.constants = bench;
-          settings.constants.gyroSign = choices.gyroSign;
+          // The session's stored signs (an import's bench.gyro_sign is applied
+          // by the analysis, not to the data); an axis the bench constants
+          // mark reversed is analysed reversed, as the CLI's --gyro-sign.
+          settings.constants.gyroSign = opened->info.bench.gyroSign;
+          for (std::size_t a = 0; a < settings.constants.gyroSign.size(); ++a)
+            if (choices.gyroSign[a] < 0) settings.constants.gyroSign[a] = -1;
           settings.imuDelayLimitMs = choices.imuDelayLimitMs;
           settings.producedBy = "fogbench GUI";
           auto result = session::analyseAndStore(*opened, settings);

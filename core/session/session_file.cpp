@@ -913,7 +913,7 @@ Result<std::unique_ptr<SessionReader>> SessionReader::open(const std::string& pa
       ", table_read_delay_ms, table_read_delay_std_ms, board_delay_ms, board_delay_std_ms, latitude_deg,"
       " pulse_equivalent_deg, counter_hz, counter_bits, test_plan_json, state, " +
       cut("incomplete_reason", field) + ", length(CAST(notes AS BLOB))" +
-      (r->schemaVersion_ >= 4 ? ", gyro_sign_x, gyro_sign_y, gyro_sign_z, " + cut("import_json", field) : "") +
+      (r->schemaVersion_ >= 4 ? ", gyro_sign_x, gyro_sign_y, gyro_sign_z, " + cut("import_json", notes) : "") +
       " FROM session WHERE id = 1";
   Stmt s(r->db_, sql.c_str());
   if (!s.ok()) return r->readError("reading its metadata");

@@ -1355,12 +1355,12 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+966"/>
+        <location line="+974"/>
         <source>Diagnosis</source>
         <translation>诊断</translation>
     </message>
     <message>
-        <location line="-963"/>
+        <location line="-971"/>
         <source>Noise</source>
         <translation>噪声</translation>
     </message>
@@ -1433,12 +1433,12 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+726"/>
+        <location line="+734"/>
         <source>Open session</source>
         <translation>打开会话</translation>
     </message>
     <message>
-        <location line="-725"/>
+        <location line="-733"/>
         <source>fogbench sessions (*.fbs);;All files (*)</source>
         <translation>fogbench 会话 (*.fbs);;所有文件 (*)</translation>
     </message>
@@ -1734,7 +1734,7 @@ Plots: wheel zooms, drag pans, double-click shows all, click sets cursors A/B</s
         <translation>波特率必须是整数</translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+50"/>
         <source>cannot create the session folder &apos;%1&apos;; choose another one</source>
         <translation>无法创建会话文件夹“%1”；请另选一个</translation>
     </message>
@@ -1899,7 +1899,7 @@ Plots: wheel zooms, drag pans, double-click shows all, click sets cursors A/B</s
         <translation>正在打开 %1 …</translation>
     </message>
     <message>
-        <location line="+71"/>
+        <location line="+76"/>
         <location line="+8"/>
         <source>Re-analyse</source>
         <translation>重新分析</translation>
@@ -2403,7 +2403,7 @@ File: %1</source>
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location filename="../../ui/main_window.cpp" line="-1107"/>
+        <location filename="../../ui/main_window.cpp" line="-1115"/>
         <location filename="../../ui/plan_editor.cpp" line="-323"/>
         <location filename="../../ui/plots/delta_picker.cpp" line="+1"/>
         <source>%1 s</source>
@@ -5006,6 +5006,16 @@ File: %1</source>
         <location line="+1"/>
         <source>replay of %1 at %2x</source>
         <translation>回放 %1，%2 倍速</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>replay of %1 at as fast as possible (%2)</source>
+        <translation>回放 %1，尽快（%2）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>replay of %1 at %2x (%3)</source>
+        <translation>回放 %1，%2 倍速（%3）</translation>
     </message>
     <message>
         <location line="+1"/>

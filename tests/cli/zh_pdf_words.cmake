@@ -19,7 +19,8 @@ execute_process(COMMAND ${CLI} run --plan ${dir}/plan.json --out ${dir}/s.fbs RE
 if(NOT c EQUAL 0)
   message(FATAL_ERROR "run --out failed (${c}): ${o}${e}")
 endif()
-execute_process(COMMAND ${CLI} report ${dir}/s.fbs --language zh_CN --pdf ${dir}/s.pdf RESULT_VARIABLE c
+# A short relative name: the data source line holds it whole.
+execute_process(COMMAND ${CLI} report s.fbs --language zh_CN --pdf s.pdf WORKING_DIRECTORY ${dir} RESULT_VARIABLE c
                 OUTPUT_VARIABLE o ERROR_VARIABLE e TIMEOUT 300)
 if(NOT c EQUAL 0)
   message(FATAL_ERROR "report --language zh_CN failed (${c}): ${o}${e}")
@@ -31,10 +32,11 @@ endif()
 if(NOT text MATCHES "噪声")
   message(FATAL_ERROR "the report has no noise page (the static segment):\n${text}")
 endif()
-# What may stay: the file's name, hexadecimal digests, and these words.
-string(REPLACE "${dir}/s.fbs" " " rest "${text}")
+# What may stay: the file's name, the SHA-256 digest (whole, and its first
+# 16 digits in the footer), and these words.
+string(REPLACE "s.fbs" " " rest "${text}")
+string(REGEX REPLACE "[0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f]+" " " rest "${text}")
 string(REPLACE "s.fbs" " " rest "${rest}")
-string(REGEX REPLACE "[0-9a-f]*[0-9][0-9a-f]*[a-f][0-9a-f]*" " " rest "${rest}")
 string(REGEX MATCHALL "[A-Za-z][A-Za-z]+" words "${rest}")
 set(allowed IMU fogbench SHA CRLB Cram Rao Allan dof RMS MHz Hz kHz ms sin cos UTC Sagnac Mbaud baud IEEE Std
             arcsec)

@@ -1039,6 +1039,35 @@ class BenchUiTest : public QObject {
     QSettings().remove("layout");
   }
 
+  // A session's stored gyro signs (here x = -1: an axis mounted the other
+  // way round, e.g. from an import's bench.gyro_sign) are what the GUI's
+  // re-analysis uses, as the CLI does: with the data not reversed, the axis
+  // turns against the table and the result is INVALID, never a PASS made
+  // with the GUI's +1.
+  void reanalysisKeepsTheSessionsStoredGyroSigns() {
+    QTemporaryDir dir;
+    fog::TestPlan plan;
+    plan.points = {fog::TestPoint{fog::Axis::kX, 2.0, 2.0, 10.0, 0.3}};
+    auto source = fog::acquisition::SimulatorSource::create(fog::model::SimConfig{}, plan, 0.0);
+    QVERIFY(source.isOk());
+    fog::acquisition::AcquisitionOptions options;
+    options.sessionPath = dir.filePath("signed.fbs").toStdString();
+    options.info.plan = plan;
+    options.info.bench.gyroSign = {-1, 1, 1};
+    options.constants = options.info.bench;
+    QVERIFY(fog::acquisition::acquire(**source, options, nullptr).isOk());
+    auto w = window();
+    w->setAnalysisChoices(fog::ui::AnalysisChoices{{1, 1, 1}, 0.8});
+    QSignalSpy reanalysed(w.get(), &MainWindow::reanalysed);
+    w->reanalyseSession(dir.filePath("signed.fbs"));
+    QTRY_VERIFY_WITH_TIMEOUT(!reanalysed.isEmpty(), 30000);
+    const auto* shown = w->lastOutcome()->shownResult();
+    QVERIFY(shown);
+    QCOMPARE(shown->analysedBy, std::string("fogbench GUI"));
+    QCOMPARE(shown->constants.gyroSign[0], -1);
+    QCOMPARE(QString::fromStdString(shown->verdict), QString("invalid"));
+  }
+
   // The import dialog sets what the CLI's --segment and --rate-convention
   // set; what the import applied is stored with the session, shown with its
   // result and stored again with every re-analysis.

@@ -15,6 +15,17 @@ for tool in Xvfb openbox; do
   fi
 done
 scratch=$(mktemp -d /tmp/fogbench-desk.XXXXXX)
+xvfb=""
+wm=""
+# Whatever ends the test (a CTest timeout's kill too), the X server and the
+# window manager go with it.
+cleanup() {
+  [ -n "$wm" ] && kill "$wm" 2>/dev/null
+  [ -n "$xvfb" ] && kill "$xvfb" 2>/dev/null
+  rm -rf "$scratch"
+}
+trap cleanup EXIT
+trap 'exit 143' INT TERM
 # Xvfb picks a free display and writes its number.
 Xvfb -displayfd 3 -screen 0 "${size}x24" -nolisten tcp 3>"$scratch/display" >"$scratch/xvfb.log" 2>&1 &
 xvfb=$!
@@ -25,7 +36,6 @@ done
 if [ ! -s "$scratch/display" ]; then
   echo "run_desk_test: Xvfb did not start:" >&2
   cat "$scratch/xvfb.log" >&2
-  kill "$xvfb" 2>/dev/null
   exit 1
 fi
 DISPLAY=":$(cat "$scratch/display")"
@@ -34,8 +44,4 @@ openbox --sm-disable >"$scratch/openbox.log" 2>&1 &
 wm=$!
 sleep 1
 QT_QPA_PLATFORM=xcb FOG_DESK_LANGUAGE="$language" "$@"
-status=$?
-kill "$wm" "$xvfb" 2>/dev/null
-wait "$wm" "$xvfb" 2>/dev/null
-rm -rf "$scratch"
-exit "$status"
+exit $?

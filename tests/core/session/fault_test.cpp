@@ -669,6 +669,21 @@ TEST(SessionFaults, ImportSettingsAreStoredAndChecked) {
   info.imported.gyroRateConvention = "frame_average";
   info.imported.gyroFramePeriodMs = 2.5;
   info.imported.segmentation = "auto: 10.000000-40.000000";
+  // The most windows an import may cut (1 000, as a plan's points) read back
+  // whole: a text field's 4 KiB cut would leave the JSON unreadable.
+  {
+    SessionInfo many = info;
+    many.imported.segmentation = "given: ";
+    for (int w = 0; w < 1000; ++w)
+      many.imported.segmentation += (w ? "," : "") + std::to_string(w * 10) + ".000000-" + std::to_string(w * 10 + 8) + ".000000";
+    auto writer = SessionWriter::create(dir.file("many.fbs"), many);
+    ASSERT_TRUE(writer.isOk()) << writer.status().message();
+    ASSERT_TRUE((*writer)->finish(true, "").isOk());
+    writer->reset();
+    auto reader = SessionReader::open(dir.file("many.fbs"));
+    ASSERT_TRUE(reader.isOk()) << reader.status().message();
+    EXPECT_EQ((*reader)->info().imported.segmentation, many.imported.segmentation);
+  }
   {
     auto w = SessionWriter::create(dir.file("imported.fbs"), info);
     ASSERT_TRUE(w.isOk()) << w.status().message();
