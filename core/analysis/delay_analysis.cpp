@@ -172,12 +172,17 @@ void checkSteadySine(PointWork& work) {
   {
     const double windowS = std::max(periodS / 20.0, 3.0 * periodS / std::max(1.0, static_cast<double>(r.tableSamples) / r.periods));
     const auto& tableResidual = work.tableResidual;
+    // The harmonics (a 9-column fit over every table sample) on the second
+    // core, beside the smooth-residual checks.
+    auto harmonics = std::async(std::launch::async, [&] {
+      return harmonicAmplitude(ch.table.timeS, tableResidual, w, SampleStream::kTable);
+    });
     r.tableMisfitFraction = smoothResidualRms(ch.table.timeS, tableResidual, windowS, SampleStream::kTable) / amplitude;
-    r.harmonicFraction = harmonicAmplitude(ch.table.timeS, tableResidual, w, SampleStream::kTable) / amplitude;
     const bool gyroChecked = ch.gyro.lostFrames == 0;  // lost increments make steps in the cumulative angle
     if (gyroChecked)
       r.gyroMisfitFraction = smoothResidualRms(ch.gyro.endS, gyroAngleResidual, windowS, SampleStream::kGyro) /
                              (amplitude * std::abs(r.magnitudeRatio));
+    r.harmonicFraction = harmonics.get() / amplitude;
     double amplitudeZ = 0.0;
     std::optional<LineFit> amplitudeLine;
     if (amplitudes.size() >= 3) amplitudeLine = fitLine(times, amplitudes);

@@ -61,7 +61,7 @@ Result<double> estimateSwingFrequencyHz(const TableChannel& table) {
   // Nyquist frequency of 250 Hz, far above any swing a table makes), at
   // least 4 096 and at most 65 536: the estimate only starts the fits (they
   // refine it), and its cost grows with the bins.
-  const auto wanted = static_cast<std::size_t>(std::clamp(std::ceil(spanS * 500.0), 4096.0, 65536.0));
+  const auto wanted = static_cast<std::size_t>(std::clamp(std::ceil(spanS * 500.0), 4096.0, 32768.0));
   const std::size_t bins = std::min<std::size_t>(y.size(), wanted);
   const double binS = spanS / static_cast<double>(bins);
   std::vector<double> sum(bins, 0.0);
