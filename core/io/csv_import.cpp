@@ -454,29 +454,18 @@ std::string originalSource(std::string source) {
   return source;
 }
 
-std::string rateConventionName(detail::RateConvention c) {
-  switch (c) {
-    case detail::RateConvention::kFrameAverage: return "frame_average";
-    case detail::RateConvention::kSampleAtStamp: return "sample_at_stamp";
-    case detail::RateConvention::kNone: break;
-  }
-  return "";
-}
-
 // The user's rate convention and frame period join the metadata's; where
 // both state one they must agree (the convention moves the delay by about
 // half a frame: two answers are never reconciled by a guess).
 Status applyRateOptions(detail::Metadata& meta, const ImportOptions& options, const std::string& metaPath) {
   if (!options.gyroRateConvention.empty()) {
-    detail::RateConvention given = detail::RateConvention::kNone;
-    if (options.gyroRateConvention == "frame_average") given = detail::RateConvention::kFrameAverage;
-    else if (options.gyroRateConvention == "sample_at_stamp") given = detail::RateConvention::kSampleAtStamp;
-    else
+    const detail::RateConvention given = detail::rateConventionFromName(options.gyroRateConvention);
+    if (given == detail::RateConvention::kNone)
       return invalidArgument("the gyro rate convention must be \"frame_average\" or \"sample_at_stamp\", not \"" +
                              options.gyroRateConvention + "\"");
     if (meta.rateConvention != detail::RateConvention::kNone && meta.rateConvention != given)
       return invalidArgument(metaPath + " states bench.gyro_rate_convention \"" +
-                             rateConventionName(meta.rateConvention) + "\", the import was asked for \"" +
+                             detail::rateConventionName(meta.rateConvention) + "\", the import was asked for \"" +
                              options.gyroRateConvention + "\": correct the one that is wrong");
     meta.rateConvention = given;
   }
@@ -607,7 +596,7 @@ Result<ImportedSession> importTexts(const std::string& what, const std::string& 
   rec.health = meta.hasStream ? meta.stream : counted;
   if (rec.testPoints.empty()) return corruptData(what + " holds no data for any test point");
   if (hasAny(gyro, kRate0)) {
-    info.imported.gyroRateConvention = rateConventionName(meta.rateConvention);
+    info.imported.gyroRateConvention = detail::rateConventionName(meta.rateConvention);
     info.imported.gyroFramePeriodMs = meta.gyroFramePeriodMs;
   }
   if (!options.segmentation.empty()) FOG_RETURN_IF_ERROR(applySegmentation(out, options.segmentation));

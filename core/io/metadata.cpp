@@ -21,6 +21,25 @@ constexpr double kMaxCounterHz = 1e12;             // the board's time-stamp cou
 constexpr double kMaxSwingFrequencyHz = 1000.0;
 constexpr double kMaxSwingAmplitudeDeg = 3600.0;   // ten turns each way
 
+}  // namespace
+
+const char* rateConventionName(RateConvention convention) {
+  switch (convention) {
+    case RateConvention::kFrameAverage: return "frame_average";
+    case RateConvention::kSampleAtStamp: return "sample_at_stamp";
+    case RateConvention::kNone: break;
+  }
+  return "";
+}
+
+RateConvention rateConventionFromName(const std::string& name) {
+  for (auto c : {RateConvention::kFrameAverage, RateConvention::kSampleAtStamp})
+    if (name == rateConventionName(c)) return c;
+  return RateConvention::kNone;
+}
+
+namespace {
+
 // Reads one JSON object's keys, refusing unknown ones so that a typo is not
 // silently replaced by a default.
 class Reader {
@@ -261,9 +280,8 @@ Status readBench(const std::string& path, const Json& j, Metadata& meta) {
   b.counterBits = static_cast<int>(bits);
   std::string convention;
   FOG_RETURN_IF_ERROR(bench.string("gyro_rate_convention", convention));
-  if (convention == "frame_average") meta.rateConvention = RateConvention::kFrameAverage;
-  else if (convention == "sample_at_stamp") meta.rateConvention = RateConvention::kSampleAtStamp;
-  else if (!convention.empty())
+  meta.rateConvention = rateConventionFromName(convention);
+  if (meta.rateConvention == RateConvention::kNone && !convention.empty())
     return corruptData(path + ": \"bench.gyro_rate_convention\" must be \"frame_average\" (each rate is its frame's "
                               "increment over the IMU's frame period) or \"sample_at_stamp\" (each rate is the "
                               "rate at its row's time stamp), not \"" + convention + "\"");

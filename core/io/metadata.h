@@ -39,6 +39,11 @@ enum class RateConvention {
   kSampleAtStamp,  // rate = the instantaneous rate at the row's time stamp
 };
 
+// A convention's name as the metadata writes it ("frame_average",
+// "sample_at_stamp"; "" for kNone), and back: kNone for any other name.
+const char* rateConventionName(RateConvention convention);
+RateConvention rateConventionFromName(const std::string& name);
+
 struct Metadata {
   SessionInfo info;  // plan left empty; built by the importer from testPoints
   std::vector<MetaTestPoint> testPoints;
