@@ -16,11 +16,14 @@ Frames and conventions
   Omega * (cos(lat), 0, -sin(lat)), Omega = 15.041067 deg/h.
 * Table: three axes with angles (a_x, a_y, a_z) in degrees.  The rotation
   from the body (IMU) frame to the local frame is
-      C(t) = R_z(heading) * R_axis1(a_1) * R_axis2(a_2) * R_axis3(a_3)
+      C(t) = L * R_axis1(a_1) * R_axis2(a_2) * R_axis3(a_3)
+  with L = R_z(heading) for a table whose z axis points down at zero
+  (z_up False) and L = R_z(heading) R_x(180 deg) for one whose z points up
   with the axes in `axis_order` (outer to inner, default "zyx":
   C = R_z(heading) R_z(a_z) R_y(a_y) R_x(a_x)).  R_k(a) is the proper
   right-handed rotation by +a about unit axis k.  With all angles and the
-  heading at 0 the body axes are x North, y East, z Down.
+  heading at 0 the body axes are x North, y East, z Down (z up: x North,
+  y West, z Up; heading 90 and z up: x East, y North, z Up).
 * Body angular rate: omega_b = sum over table axes of the axis' rate
   expressed in the body frame, plus C(t)^T omega_ie^n (the Earth rate
   rotated into the body frame at every fine step).
@@ -101,7 +104,15 @@ def default_params():
         "axis_order": "zyx",                   # outer to inner
         # Site
         "latitude_deg": 40.0,
-        "heading_deg": 0.0,
+        "heading_deg": 0.0,           # azimuth of the table's x axis at zero, from north toward east
+        # The table's (and the square-mounted IMU's) z axis at zero angles:
+        # False = down (x north, y east, z down at heading 0), True = up
+        # (x at the heading, y 90 deg to its left, z up: east-north-up at
+        # heading 90). The level frame is turned by L = R_z(heading) R_x(180).
+        "z_up": False,
+        # Written as bench.imu_frame when set (e.g. "ENU", "RFU:30"): what the
+        # metadata states, which may differ from the truth (a wrong statement).
+        "declare_frame": None,
         # Delays (ms)
         "imu_delay_ms": 0.5,
         "table_read_delay_ms": 0.05,
@@ -287,6 +298,12 @@ def rot(axis, angle_deg):
     return np.moveaxis(np.array(m), (0, 1), (-2, -1))
 
 
+def level_to_table(p):
+    """L: the table's axes at zero angles in the local NED frame, (3, 3)."""
+    r = rot("z", p["heading_deg"])
+    return r @ rot("x", 180.0) if p["z_up"] else r
+
+
 def earth_rate_ned_deg_s(lat_deg):
     om = EARTH_RATE_DEG_H / 3600.0
     lat = math.radians(lat_deg)
@@ -295,10 +312,9 @@ def earth_rate_ned_deg_s(lat_deg):
 
 def specific_force(angles, p):
     """Specific force of gravity at rest in the body frame, in g, (n, 3):
-    C(t)^T (0, 0, -1) in NED, through the same axis chain as body_rates
-    (the heading turns about down, so it leaves gravity alone)."""
+    C(t)^T (0, 0, -1) in NED, through the same axis chain as body_rates."""
     n = angles.shape[0]
-    u = np.tile(np.array([0.0, 0.0, -1.0]), (n, 1))
+    u = np.tile(_rot_t(level_to_table(p), np.array([0.0, 0.0, -1.0])), (n, 1))
     for ax in p["axis_order"]:
         u = _rot_t(rot(ax, angles[:, AXES.index(ax)]), u)
     return u
@@ -342,7 +358,7 @@ def body_rates(angles, rates, p):
     with the proper 3x3 rotation matrices of rot()."""
     n = angles.shape[0]
     w_n = earth_rate_ned_deg_s(p["latitude_deg"])
-    u = np.tile(_rot_t(rot("z", p["heading_deg"]), w_n), (n, 1))
+    u = np.tile(_rot_t(level_to_table(p), w_n), (n, 1))
     for ax in p["axis_order"]:                       # outer .. inner
         i = AXES.index(ax)
         a = angles[:, i]
@@ -880,6 +896,8 @@ def metadata(res):
         bench["gyro_frame_period_ms"] = p["imu_period_ms"]
     if p["declare_gyro_sign"] and any(sg < 0 for sg in p["gyro_sign"]):
         bench["gyro_sign"] = {ax: -1 for ax, sg in zip(AXES, p["gyro_sign"]) if sg < 0}
+    if p["declare_frame"]:
+        bench["imu_frame"] = p["declare_frame"]
     if p["continuous"]:
         tps = [{"axis": p["segments"][0]["axis"]}]
     elif p["meta_minimal"]:
@@ -1026,7 +1044,10 @@ def build_parser():
     g.add_argument("--axis-order", help="table axes outer to inner (default zyx)")
     g = ap.add_argument_group("site")
     g.add_argument("--latitude-deg", type=float)
-    g.add_argument("--heading-deg", type=float)
+    g.add_argument("--heading-deg", type=float, help="azimuth of the table's x axis at zero")
+    g.add_argument("--z-up", action="store_true", default=None,
+                   help="the table's z axis points up at zero angles (heading 90: east-north-up)")
+    g.add_argument("--declare-frame", help='write bench.imu_frame, e.g. "NED", "ENU", "RFU:30"')
     g = ap.add_argument_group("delays (ms)")
     g.add_argument("--imu-delay-ms", type=float)
     g.add_argument("--table-read-delay-ms", type=float)

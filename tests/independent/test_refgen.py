@@ -170,6 +170,25 @@ class EarthRate(unittest.TestCase):
         np.testing.assert_allclose(r, [om * math.cos(lat) * math.cos(psi), -om * math.cos(lat) * math.sin(psi),
                                        -om * math.sin(lat)], atol=1e-12)
 
+    def test_z_up_east_north_up(self):
+        # Heading 90 with z up: x east, y north, z up. The Earth rate
+        # Omega (cos lat, 0, -sin lat) in NED reads (0, Omega cos lat,
+        # +Omega sin lat) in these axes; the specific force at rest, -1 g
+        # along down, is +1 g along the body's z (up).
+        lat = math.radians(40.0)
+        r = self.static_rates(latitude_deg=40.0, heading_deg=90.0, z_up=True)
+        np.testing.assert_allclose(r, [0.0, OMEGA_DEG_S * math.cos(lat), OMEGA_DEG_S * math.sin(lat)], atol=1e-12)
+        f = refgen.specific_force(np.zeros((1, 3)), quiet(heading_deg=90.0, z_up=True))[0]
+        np.testing.assert_allclose(f, [0.0, 0.0, 1.0], atol=1e-15)
+        f = refgen.specific_force(np.zeros((1, 3)), quiet())[0]
+        np.testing.assert_allclose(f, [0.0, 0.0, -1.0], atol=1e-15)
+
+    def test_z_up_at_heading_zero(self):
+        # z up, heading 0: x north, y west, z up.
+        lat = math.radians(52.0)
+        r = self.static_rates(latitude_deg=52.0, z_up=True)
+        np.testing.assert_allclose(r, [OMEGA_DEG_S * math.cos(lat), 0.0, OMEGA_DEG_S * math.sin(lat)], atol=1e-12)
+
     def test_tilted_inner_axis(self):
         # x (inner) at +90 deg: body y points Down, body z points West.
         r = self.static_rates(fixed_angles_deg=[90.0, 0.0, 0.0])
@@ -429,6 +448,16 @@ class Output(unittest.TestCase):
                 self.assertEqual(meta["bench"]["gyro_frame_period_ms"], 2.0)
                 h, rows = self.read_csv(os.path.join(out, "gyro.csv"))
                 self.assertEqual(h, ["time_s", "x_rate_deg_s", "y_rate_deg_s", "z_rate_deg_s"])
+
+    def test_declared_frame_in_metadata(self):
+        with tempfile.TemporaryDirectory() as d:
+            p = refgen.case_params("nominal")
+            p["segments"][0]["duration_s"] = 3.0
+            refgen.write_dir(refgen.generate(p), os.path.join(d, "plain"))
+            self.assertNotIn("imu_frame", load_json(os.path.join(d, "plain", "metadata.json"))["bench"])
+            p.update(z_up=True, heading_deg=90.0, declare_frame="ENU")
+            refgen.write_dir(refgen.generate(p), os.path.join(d, "enu"))
+            self.assertEqual(load_json(os.path.join(d, "enu", "metadata.json"))["bench"]["imu_frame"], "ENU")
 
     def test_continuous_has_no_markers(self):
         with tempfile.TemporaryDirectory() as d:
