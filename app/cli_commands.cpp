@@ -129,8 +129,18 @@ int runCommand(CliArguments& args) {
   if (!limit) return fail(limit.status(), 2);
   auto plan = readPlan(args);
   if (!plan) return fail(plan.status(), 2);
+  const bool headingGiven = args.has("heading-deg");
   auto config = readSimConfig(args);
   if (!config) return fail(config.status(), 2);
+  // The simulated bench stands in the stated frame; a heading given beside
+  // a frame that names another is a contradiction, not a choice.
+  if (const auto h = constants->imuFrame.xHeadingDeg();
+      h && headingGiven && std::abs(std::remainder(*h - config->earth.headingDeg, 360.0)) > 1e-9)
+    return fail(invalidArgument("--heading-deg " + *args.text("heading-deg") + " contradicts --imu-frame " +
+                                imuFrameToText(constants->imuFrame) + ", whose x axis points at " +
+                                std::to_string(*h) + " deg; give one of them"),
+                2);
+  model::applyImuFrame(constants->imuFrame, config->earth);
   auto sessionOut = readSessionOutput(args);
   if (!sessionOut) return fail(sessionOut.status(), 2);
   const auto effectText = args.text("effect");

@@ -48,6 +48,7 @@ void storeConstants(const BenchConstants& c, BenchConstants& bench) {
   bench.boardDelayStdMs = c.boardDelayStdMs;
   if (c.pulseEquivalentDeg > 0) bench.pulseEquivalentDeg = c.pulseEquivalentDeg;
   bench.gyroSign = c.gyroSign;
+  bench.imuFrame = c.imuFrame;
 }
 
 Result<BenchConstants> readConstants(CliArguments& args, const BenchConstants& defaults) {
@@ -70,6 +71,11 @@ Result<BenchConstants> readConstants(CliArguments& args, const BenchConstants& d
   if (auto signs = args.text("gyro-sign")) {
     FOG_ASSIGN_OR_RETURN(auto parsed, parseGyroSigns(*signs, c.gyroSign));
     c.gyroSign = parsed;
+  }
+  if (auto frame = args.text("imu-frame")) {
+    auto parsed = imuFrameFromText(*frame);
+    if (!parsed) return invalidArgument("--imu-frame: " + parsed.status().message());
+    c.imuFrame = *parsed;
   }
   return c;
 }

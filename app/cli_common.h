@@ -36,7 +36,8 @@ Status checkOutputFile(const std::string& path, bool overwrite, const std::strin
 // The bench constants as the session (or the defaults) has them, each
 // overridable on the command line: --read-delay-ms, --read-delay-std-ms,
 // --board-delay-ms, --board-delay-std-ms, --pulse-equivalent-deg; and
-// --gyro-sign x=-1[,y=-1...] for a gyro axis mounted the other way round.
+// --gyro-sign x=-1[,y=-1...] for a gyro axis mounted the other way round;
+// --imu-frame NED|ENU|FRD[:H]|RFU[:H] for where the IMU's axes point at zero.
 Result<BenchConstants> readConstants(CliArguments& args, const BenchConstants& defaults = {});
 // --gyro-sign's text ("x=-1,z=-1") into per-axis signs (the rest +1).
 // The axes given ("x=-1,z=-1") set their signs; the others keep `signs`

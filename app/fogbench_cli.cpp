@@ -102,7 +102,7 @@ usage:
   fogbench-cli bench-diagnosis [--trials N] [--seed S] [--threads T]
       Blind check of the diagnosis on sessions with withheld effects.
   fogbench-cli noise SESSION.fbs|FILE.bin [--json] [--axis x|y|z] [--taus-per-octave N]
-                     [--freq-hz F --amp-deg A --duration-s T] [--latitude-deg L]
+                     [--freq-hz F --amp-deg A --duration-s T] [--latitude-deg L] [--imu-frame F]
       Gyro noise from the static segments (docs/noise.md): Allan deviation with
       confidence intervals, IEEE 952 noise terms, bias, Earth-corrected bias and
       the predicted lag sigma of a swing test. Exit 1 when there is no static segment.
@@ -111,6 +111,8 @@ usage:
 constants: --read-delay-ms (0.05) --read-delay-std-ms (0) --board-delay-ms (0.28)
            --board-delay-std-ms (0) --pulse-equivalent-deg (when the stream lacks it)
            --gyro-sign x=-1[,y=-1,z=-1] (a gyro axis mounted the other way round)
+           --imu-frame NED|ENU|FRD[:H]|RFU[:H] (the IMU's axes at zero table angles; H: azimuth
+             of its forward axis; unstated, the diagnosis finds z's direction from the data)
 exit codes: 0 ok, 1 the data gave no result, 2 bad command line or input.
 )";
 

@@ -56,6 +56,14 @@ int noiseCommand(CliArguments& args) {
   if (!latitude) return fail(latitude.status(), 2);
   if (!(std::abs(*latitude) <= 90.0)) return fail(invalidArgument("--latitude-deg must be within [-90, 90]"), 2);
   options.earth.latitudeDeg = *latitude;
+  // The Earth rate a static gyro sees depends on where its axes point.
+  ImuFrame frame = bench.imuFrame;
+  if (auto text = args.text("imu-frame")) {
+    auto parsed = imuFrameFromText(*text);
+    if (!parsed) return fail(invalidArgument("--imu-frame: " + parsed.status().message()), 2);
+    frame = *parsed;
+  }
+  model::applyImuFrame(frame, options.earth);
   if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
 
   auto reports = noise::analyzeGyroNoise(recording, options);

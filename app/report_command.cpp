@@ -145,7 +145,7 @@ int reportCommand(CliArguments& args) {
       // it was stored with. Other settings are another analysis, stored as a
       // new result first; never a silent re-judgement on paper.
       for (const char* option : {"limit-ms", "read-delay-ms", "read-delay-std-ms", "board-delay-ms",
-                                 "board-delay-std-ms", "pulse-equivalent-deg", "gyro-sign"})
+                                 "board-delay-std-ms", "pulse-equivalent-deg", "gyro-sign", "imu-frame"})
         if (args.has(option)) {
           (void)args.checkAllUsed();
           return fail(invalidArgument(std::string("--") + option + " does not apply: the report shows the "

@@ -10,6 +10,8 @@
 #include <QSpinBox>
 #include <QVBoxLayout>
 
+#include <algorithm>
+
 namespace fog::ui {
 
 namespace {
@@ -38,6 +40,9 @@ BenchConstants loadBenchConstants() {
   s.pulseEquivalentDeg = q.value("pulse_equivalent_deg", d.pulseEquivalentDeg).toDouble();
   s.counterHz = q.value("counter_hz", d.counterHz).toDouble();
   s.counterBits = q.value("counter_bits", d.counterBits).toInt();
+  // A frame that does not read (edited by hand) is not stated: the diagnosis
+  // then finds it from the data, never uses a half-read one.
+  if (auto frame = imuFrameFromText(q.value("imu_frame", QString()).toString().toStdString())) s.imuFrame = *frame;
   return s;
 }
 
@@ -52,6 +57,7 @@ void saveBenchConstants(const BenchConstants& s) {
   q.setValue("pulse_equivalent_deg", s.pulseEquivalentDeg);
   q.setValue("counter_hz", s.counterHz);
   q.setValue("counter_bits", s.counterBits);
+  q.setValue("imu_frame", QString::fromStdString(imuFrameToText(s.imuFrame)));
 }
 
 AnalysisChoices loadAnalysisChoices() {
@@ -109,6 +115,30 @@ BenchSettingsDialog::BenchSettingsDialog(const BenchConstants& s, const Analysis
     gyroSign_[static_cast<std::size_t>(a)] = sign;
     form->addRow(tr("Gyro sign, %1 axis").arg(QString(axisName(static_cast<Axis>(a))).toUpper()), sign);
   }
+  imuFrame_ = new QComboBox();
+  imuFrame_->setObjectName("imuFrameCombo");
+  imuFrame_->addItem(tr("not stated (found from the data)"), int(ImuFrame::Convention::kUnstated));
+  imuFrame_->addItem(tr("NED: x north, y east, z down"), int(ImuFrame::Convention::kNorthEastDown));
+  imuFrame_->addItem(tr("ENU: x east, y north, z up"), int(ImuFrame::Convention::kEastNorthUp));
+  imuFrame_->addItem(tr("FRD: x forward, y right, z down"), int(ImuFrame::Convention::kForwardRightDown));
+  imuFrame_->addItem(tr("RFU: x right, y forward, z up"), int(ImuFrame::Convention::kRightForwardUp));
+  imuFrame_->setCurrentIndex(std::max(0, imuFrame_->findData(int(s.imuFrame.convention))));
+  imuFrame_->setToolTip(tr("Where the IMU's axes point with the table at zero. The Earth rate and gravity the "
+                           "gyros see depend on it; the diagnosis replays the session in it and checks it "
+                           "against the data."));
+  forwardHeading_ = spin(-361.0, 360.0, 2, tr(" °"), s.imuFrame.forwardHeadingDeg.value_or(-361.0));
+  forwardHeading_->setObjectName("forwardHeadingSpin");
+  forwardHeading_->setSpecialValueText(tr("not stated"));
+  forwardHeading_->setToolTip(tr("Azimuth of the IMU's forward axis, from north toward east"));
+  auto forwardApplies = [this] {
+    const auto c = ImuFrame::Convention(imuFrame_->currentData().toInt());
+    forwardHeading_->setEnabled(c == ImuFrame::Convention::kForwardRightDown ||
+                                c == ImuFrame::Convention::kRightForwardUp);
+  };
+  forwardApplies();
+  connect(imuFrame_, QOverload<int>::of(&QComboBox::currentIndexChanged), this, forwardApplies);
+  form->addRow(tr("IMU frame at zero angles"), imuFrame_);
+  form->addRow(tr("  forward axis heading"), forwardHeading_);
   limit_ = spin(0.001, 1000.0, 3, tr(" ms"), choices.imuDelayLimitMs);
   limit_->setObjectName("limitSpin");
   form->addRow(tr("IMU delay limit (acceptance)"), limit_);
@@ -134,6 +164,8 @@ BenchSettingsDialog::BenchSettingsDialog(const BenchConstants& s, const Analysis
     counterMHz_->setValue(d.counterHz / 1e6);
     counterBits_->setValue(d.counterBits);
     for (auto* sign : gyroSign_) sign->setCurrentIndex(0);
+    imuFrame_->setCurrentIndex(0);
+    forwardHeading_->setValue(forwardHeading_->minimum());
     limit_->setValue(AnalysisChoices{}.imuDelayLimitMs);
   });
   auto* layout = new QVBoxLayout(this);
@@ -152,6 +184,9 @@ BenchConstants BenchSettingsDialog::settings() const {
   s.pulseEquivalentDeg = pulseEquivalent_->value();
   s.counterHz = counterMHz_->value() * 1e6;
   s.counterBits = counterBits_->value();
+  s.imuFrame.convention = ImuFrame::Convention(imuFrame_->currentData().toInt());
+  if (forwardHeading_->isEnabled() && forwardHeading_->value() > forwardHeading_->minimum())
+    s.imuFrame.forwardHeadingDeg = forwardHeading_->value();
   return s;
 }
 

@@ -50,6 +50,8 @@ class BenchSettingsDialog : public QDialog {
   QDoubleSpinBox* counterMHz_ = nullptr;
   QSpinBox* counterBits_ = nullptr;
   std::array<QComboBox*, kAxisCount> gyroSign_{};
+  QComboBox* imuFrame_ = nullptr;            // convention, or not stated
+  QDoubleSpinBox* forwardHeading_ = nullptr;  // FRD / RFU; its minimum reads "not stated"
   QDoubleSpinBox* limit_ = nullptr;
 };
 

@@ -78,6 +78,7 @@ model::SimConfig simConfigOf(const BenchConstants& b, int seed) {
   c.encoder.readDelayS = b.tableReadDelayMs * 1e-3;
   c.imuBoard.processingS = b.boardDelayMs * 1e-3 - c.imuBoard.serialS();
   c.earth.latitudeDeg = b.latitudeDeg;
+  model::applyImuFrame(b.imuFrame, c.earth);
   if (b.pulseEquivalentDeg > 0.0) c.fog.pulseEquivalentDeg = b.pulseEquivalentDeg;  // else the simulator's own
   c.samplingBoard.counterHz = b.counterHz;
   c.samplingBoard.counterBits = b.counterBits;
@@ -1124,9 +1125,13 @@ void MainWindow::diagnoseShown() {
     return !cancel->load();
   };
   // Several replays of the session in the simulator: off the GUI thread.
+  // The frame the session states; a session that states none is taken in
+  // the bench constants' (the diagnosis checks either against the data).
+  BenchConstants constants = outcome->report->constants;
+  constants.imuFrame = outcome->info.bench.imuFrame.stated() ? outcome->info.bench.imuFrame : bench_.imuFrame;
   diagnosisFuture_ = inBackground(
-      this, [outcome, options]() -> Done {
-        auto d = diagnosis::diagnose(outcome->recording, &outcome->info, outcome->report->constants, options);
+      this, [outcome, options, constants]() -> Done {
+        auto d = diagnosis::diagnose(outcome->recording, &outcome->info, constants, options);
         if (!d) return {nullptr, d.status()};
         return {std::make_shared<diagnosis::Diagnosis>(std::move(*d)), Status::ok()};
       },
@@ -1176,6 +1181,7 @@ void MainWindow::analyseNoise(std::shared_ptr<const RunOutcome> outcome) {
       this, [outcome]() -> Done {
         noise::GyroNoiseOptions options;
         options.earth.latitudeDeg = outcome->info.bench.latitudeDeg;
+        model::applyImuFrame(outcome->info.bench.imuFrame, options.earth);
         auto reports = noise::analyzeGyroNoise(outcome->recording, options);
         if (!reports) return {{}, reports.status()};
         return {std::move(*reports), Status::ok()};

@@ -7,6 +7,7 @@
 
 #include <array>
 
+#include "core/common/imu_frame.h"
 #include "core/common/test_plan.h"  // Axis, kAxisCount
 
 namespace fog {
@@ -32,6 +33,10 @@ struct BenchConstants {
   // while its stated sign is +1 makes the test point invalid, never a
   // half-period lag. Sessions stored before the signs were kept read +1.
   std::array<int, kAxisCount> gyroSign{1, 1, 1};
+  // Where the IMU's axes point at zero table angles (imu_frame.h): the
+  // diagnosis' replay uses it and checks it against the data. Sessions
+  // stored before it was kept read "not stated".
+  ImuFrame imuFrame;
 };
 
 }  // namespace fog

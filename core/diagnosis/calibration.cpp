@@ -80,22 +80,37 @@ void setLag(model::SimConfig& c, double lagS, std::vector<std::string>& notes) {
 // spread, and weighted least squares on the trend and cross-axis cells
 // gives the heading and the three biases. When the plan leaves cos h or
 // sin h unseen (only X swings: sin h), the other is taken with cos h >= 0.
+//
+// The vertical part, -Omega sin(lat) along down, is the frame check's
+// (FrameCheck): a replay at the opposite latitude (same seed) gives its
+// column v, and the other vertical is the same frame with y and z turned
+// over: its features are the configured ones plus 2 v with the heading
+// negated. Each vertical gets its own heading scan; the quadrature cross
+// cells either moves by more than its spread decide between them.
 Status calibrateEarthRateAndBias(Replay& replay, const std::vector<FeatureKey>& keys, const std::vector<double>& real,
-                                 const DiagnosisOptions& options, std::vector<std::string>& notes) {
+                                 const ImuFrame& stated, const DiagnosisOptions& options,
+                                 std::vector<std::string>& notes) {
   Calibration& cal = replay.cal;
+  cal.frame = FrameCheck{};
+  cal.frame.stated = stated;
+  cal.frame.zUp = cal.config.earth.zUp;
   Replay base = replay;
   base.cal.config.fog.biasDegPerH = {0.0, 0.0, 0.0};
   const std::uint64_t seedA = options.seed + 1000, seedB = options.seed + 1001;
+  const double latitude = base.cal.config.earth.latitudeDeg;
   struct Run {
-    double headingDeg;
+    double headingDeg, latitudeDeg;
     std::uint64_t seed;
   };
-  const std::vector<Run> runs = {{0.0, seedA}, {0.0, seedB}, {90.0, seedA}, {180.0, seedA}};
-  static_assert(kCalibrationReplays == 4);
+  const std::vector<Run> runs = {
+      {0.0, latitude, seedA}, {0.0, latitude, seedB}, {90.0, latitude, seedA}, {180.0, latitude, seedA},
+      {0.0, -latitude, seedA}};
+  static_assert(kCalibrationReplays == 5);
   std::vector<Result<FeatureSet>> out(runs.size(), Status(StatusCode::kInternal, "not run"));
   parallelFor(runs.size(), options.threads, [&](std::size_t i) {
     Replay r = base;
     r.cal.config.earth.headingDeg = runs[i].headingDeg;
+    r.cal.config.earth.latitudeDeg = runs[i].latitudeDeg;
     out[i] = r.run(runs[i].seed, {});
   });
   if (replay.progress && replay.progress->cancelled()) return cancelledByCaller();
@@ -108,6 +123,7 @@ Status calibrateEarthRateAndBias(Replay& replay, const std::vector<FeatureKey>& 
   const auto& f0b = out[1]->values;
   const auto& f90 = out[2]->values;
   const auto& f180 = out[3]->values;
+  const auto& fOtherLatitude = out[4]->values;
   std::map<GroupKey, std::pair<double, double>> spread;  // sum of squares, count
   for (std::size_t i = 0; i < keys.size(); ++i) {
     auto& g = spread[groupKey(keys[i])];
@@ -121,10 +137,13 @@ Status calibrateEarthRateAndBias(Replay& replay, const std::vector<FeatureKey>& 
     // where misalignment shows, so they are left to the effect fit.
     if (keys[i].channel == Channel::kGyro && (keys[i].quantity == Quantity::kTrend || keys[i].quantity == Quantity::kCrossQuadrature))
       rows.push_back(i);
-  if (rows.size() < 6) return Status::ok();
+  if (rows.size() < 6) {
+    notes.push_back("the IMU's frame was not checked: the plan gives too few gyro trend and cross-axis cells");
+    return Status::ok();
+  }
   const auto m = static_cast<Eigen::Index>(rows.size());
   Eigen::MatrixXd a = Eigen::MatrixXd::Zero(m, 5);
-  Eigen::VectorXd y(m);
+  Eigen::VectorXd y(m), vertical(m);
   for (Eigen::Index r = 0; r < m; ++r) {
     const std::size_t i = rows[static_cast<std::size_t>(r)];
     const auto& g = spread[groupKey(keys[i])];
@@ -134,6 +153,7 @@ Status calibrateEarthRateAndBias(Replay& replay, const std::vector<FeatureKey>& 
     a(r, 1) = (b - f90[i]) / sigma;             // times -sin h
     if (keys[i].quantity == Quantity::kTrend) a(r, 2 + keys[i].axis) = 1.0 / sigma;  // bias, deg/h
     y(r) = (real[i] - b) / sigma;
+    vertical(r) = 0.5 * (f0[i] - fOtherLatitude[i]) / sigma;  // the configured vertical's part
   }
   // The horizontal Earth rate's size is the stated latitude's; its
   // direction is searched (1-deg grid, then a parabola through the best
@@ -147,23 +167,25 @@ Status calibrateEarthRateAndBias(Replay& replay, const std::vector<FeatureKey>& 
   // Only cells the heading moves by more than their spread take part: where
   // it does not (gyro y in a swing about X), its columns hold only the
   // replays' re-drawn quantisation, which a large unmodelled signal there
-  // (g-sensitivity) would turn into a heading.
-  Eigen::VectorXd isTrend(m), inScan(m);
+  // (g-sensitivity) would turn into a heading. The frame check takes those
+  // cells and the ones turning the vertical over moves by more than theirs.
+  Eigen::VectorXd isTrend(m), inScan(m), inFrameCheck(m);
   for (Eigen::Index r = 0; r < m; ++r) {
     isTrend(r) = keys[rows[static_cast<std::size_t>(r)]].quantity == Quantity::kTrend ? 1.0 : 0.0;
     inScan(r) = isTrend(r) == 0.0 && std::hypot(a(r, 0), a(r, 1)) > 2.0 ? 1.0 : 0.0;
+    inFrameCheck(r) = isTrend(r) == 0.0 && (inScan(r) > 0.0 || 2.0 * std::abs(vertical(r)) > 2.0) ? 1.0 : 0.0;
   }
   Eigen::MatrixXd t(m, static_cast<Eigen::Index>(biasCols.size()));
   for (std::size_t j = 0; j < biasCols.size(); ++j) t.col(static_cast<Eigen::Index>(j)) = a.col(biasCols[j]);
   const auto qr = t.colPivHouseholderQr();
-  auto fitAt = [&](double hDeg, Eigen::VectorXd* bias) {
+  auto rest = [&](const Eigen::VectorXd& target, double hDeg) -> Eigen::VectorXd {
     const double h = hDeg * kRadPerDeg;
-    const Eigen::VectorXd rest = y - std::cos(h) * a.col(0) + std::sin(h) * a.col(1);
-    if (bias) *bias = biasCols.empty() ? Eigen::VectorXd() : Eigen::VectorXd(qr.solve(rest.cwiseProduct(isTrend)));
-    return rest.cwiseProduct(inScan).squaredNorm();
+    return target - std::cos(h) * a.col(0) + std::sin(h) * a.col(1);
   };
-  if (inScan.sum() < 2.0) return Status::ok();
-  if (a.col(0).squaredNorm() + a.col(1).squaredNorm() <= 0.0) return Status::ok();
+  if (inScan.sum() < 2.0 || a.col(0).squaredNorm() + a.col(1).squaredNorm() <= 0.0) {
+    notes.push_back("the IMU's frame was not checked: the plan's swings do not turn the Earth rate between the gyros");
+    return Status::ok();
+  }
   // A component the scanned cells do not see (less than 1 chi^2 between
   // none and all of the horizontal Earth rate along it) leaves the heading
   // two-fold: only X swings see sin h alone, so h and 180 - h fit alike,
@@ -176,32 +198,102 @@ Status calibrateEarthRateAndBias(Replay& replay, const std::vector<FeatureKey>& 
     const double h = k * kRadPerDeg;
     return (cosSeen || std::cos(h) >= -1e-12) && (sinSeen || std::sin(h) >= -1e-12);
   };
-  std::vector<double> chi(360);
-  for (int k = 0; k < 360; ++k) chi[static_cast<std::size_t>(k)] = fitAt(k, nullptr);
-  int best = -1;
-  for (int k = 0; k < 360; ++k)
-    if (allowed(k) && (best < 0 || chi[static_cast<std::size_t>(k)] < chi[static_cast<std::size_t>(best)])) best = k;
-  const double cm = chi[static_cast<std::size_t>((best + 359) % 360)], c0 = chi[static_cast<std::size_t>(best)],
-               cp = chi[static_cast<std::size_t>((best + 1) % 360)];
-  const double curvature = cm - 2.0 * c0 + cp;  // per deg^2
-  const double offset = curvature > 0.0 ? std::clamp(0.5 * (cm - cp) / curvature, -0.5, 0.5) : 0.0;
-  double heading = best + offset;
-  if (heading > 180.0) heading -= 360.0;
-  Eigen::VectorXd biases;
-  fitAt(heading, &biases);
+  struct Scan {
+    double headingDeg = 0.0, curvature = 0.0, frameChiSquare = 0.0;
+  };
+  auto scan = [&](const Eigen::VectorXd& target) {
+    std::vector<double> chi(360);
+    for (int k = 0; k < 360; ++k) chi[static_cast<std::size_t>(k)] = rest(target, k).cwiseProduct(inScan).squaredNorm();
+    int best = -1;
+    for (int k = 0; k < 360; ++k)
+      if (allowed(k) && (best < 0 || chi[static_cast<std::size_t>(k)] < chi[static_cast<std::size_t>(best)])) best = k;
+    const double cm = chi[static_cast<std::size_t>((best + 359) % 360)], c0 = chi[static_cast<std::size_t>(best)],
+                 cp = chi[static_cast<std::size_t>((best + 1) % 360)];
+    Scan s;
+    s.curvature = cm - 2.0 * c0 + cp;  // per deg^2
+    const double offset = s.curvature > 0.0 ? std::clamp(0.5 * (cm - cp) / s.curvature, -0.5, 0.5) : 0.0;
+    s.headingDeg = best + offset;
+    if (s.headingDeg > 180.0) s.headingDeg -= 360.0;
+    s.frameChiSquare = rest(target, s.headingDeg).cwiseProduct(inFrameCheck).squaredNorm();
+    return s;
+  };
+  const Eigen::VectorXd yOther = y + 2.0 * vertical;
+  const Scan configured = scan(y), other = scan(yOther);
+  // The frame check. The vertical Earth rate the data show, as a multiple
+  // alpha of the configured vertical's (+1: as configured, -1: turned over),
+  // at the configured vertical's best heading (the heading scan's cells do
+  // not see the vertical). An isotropic g-sensitivity k shifts alpha by
+  // k g / (Omega sin lat) and cannot be told from it, so the frame is turned
+  // over only when the data need alpha < -1/2 (a k beyond 1.5 Omega sin(lat)
+  // / g in the configured frame, 14.5 deg/h/g at 40 deg), 5 sigma clear of
+  // that boundary; a decision needs sigma(alpha) <= 0.3.
+  FrameCheck& frame = cal.frame;
+  const bool configuredUp = cal.config.earth.zUp;
+  const Eigen::VectorXd v = vertical.cwiseProduct(inFrameCheck);
+  const double information = v.squaredNorm();
+  frame.checked = information > 0.0 && 1.0 / std::sqrt(information) <= 0.3;
+  bool useOther = false;
+  if (frame.checked) {
+    frame.verticalRatio = 1.0 + rest(y, configured.headingDeg).cwiseProduct(inFrameCheck).dot(v) / information;
+    frame.verticalRatioStd = 1.0 / std::sqrt(information);
+    frame.chiSquareDown = configuredUp ? other.frameChiSquare : configured.frameChiSquare;
+    frame.chiSquareUp = configuredUp ? configured.frameChiSquare : other.frameChiSquare;
+    constexpr double kBoundary = -0.5;
+    frame.decisive = std::abs(frame.verticalRatio - kBoundary) > 5.0 * frame.verticalRatioStd;
+    useOther = frame.decisive && frame.verticalRatio < kBoundary;
+    const bool dataUp = useOther != configuredUp;
+    frame.contradicted = stated.stated() && frame.decisive && dataUp != stated.zUp();
+    const std::string ratio = "vertical Earth rate " + fmt("%+.2f", frame.verticalRatio) + " +- " +
+                              fmt("%.2f", frame.verticalRatioStd) + " of the z-" + (configuredUp ? "up" : "down") +
+                              " frame's";
+    const std::string shown = std::string("the data show the IMU's z axis ") + (dataUp ? "up" : "down") + " (" +
+                              ratio + ")";
+    if (!frame.decisive)
+      notes.push_back("the data cannot tell the IMU's z axis up from down (" + ratio + "); " +
+                      (stated.stated() ? "the stated frame is used" : "z down is assumed: state the IMU's frame"));
+    else if (frame.contradicted)
+      notes.push_back(shown + "; the bench constants state " + describeImuFrame(stated) +
+                      ": the replays use the frame the data show");
+    else if (!stated.stated())
+      notes.push_back(shown + "; the bench constants do not state the IMU's frame, so the replays use the one found: "
+                              "state it in the bench constants");
+    else
+      notes.push_back(shown + ", as the bench constants state");
+  } else {
+    notes.push_back(std::string("the IMU's frame was not checked: the plan's swings do not turn the vertical Earth "
+                                "rate between the gyros; ") +
+                    (stated.stated() ? "the stated frame is used" : "z down is assumed: state the IMU's frame"));
+  }
+  // The other vertical is the configured frame with y and z turned over:
+  // its heading is the scan's, negated.
+  const Scan& chosen = useOther ? other : configured;
+  const Eigen::VectorXd& target = useOther ? yOther : y;
+  frame.zUp = useOther ? !configuredUp : configuredUp;
+  cal.config.earth.zUp = frame.zUp;
+  // (When sin h is unseen, h and -h fit alike: the one with sin h >= 0.)
+  double heading = useOther && sinSeen ? -chosen.headingDeg : chosen.headingDeg;
+  Eigen::VectorXd biases =
+      biasCols.empty() ? Eigen::VectorXd() : Eigen::VectorXd(qr.solve(rest(target, chosen.headingDeg).cwiseProduct(isTrend)));
   // From finite features the scan is finite; a replay's NaN would otherwise
   // surface as "heading must be within [-360, 360] deg".
   if (!std::isfinite(heading) || !biases.allFinite())
     return Status(StatusCode::kInternal, "the Earth-rate calibration gave a heading of " + fmt("%g", heading) +
                                              " deg or biases that are not finite numbers; nothing was concluded");
   cal.headingDeg = heading;
-  cal.headingStdDeg = curvature > 0.0 ? std::sqrt(2.0 / curvature) : 180.0;
+  cal.headingStdDeg = chosen.curvature > 0.0 ? std::sqrt(2.0 / chosen.curvature) : 180.0;
   cal.config.earth.headingDeg = heading;
   notes.push_back("heading " + fmt("%.1f", heading) + " +- " + fmt("%.1f", cal.headingStdDeg) +
                   " deg, from the Earth rate the gyros see as the table turns" +
                   (cosSeen && sinSeen ? std::string()
                                       : std::string("; ") + (cosSeen ? "sin h" : "cos h") +
                                             " is taken >= 0: the plan's swings do not show its sign"));
+  if (const auto statedHeading = stated.xHeadingDeg(); statedHeading && cosSeen && sinSeen && !frame.contradicted) {
+    const double off = std::remainder(heading - *statedHeading, 360.0);
+    if (std::abs(off) > std::max(10.0, 3.0 * cal.headingStdDeg))
+      notes.push_back("the heading the data show, " + fmt("%.1f", heading) + " deg, is " + fmt("%.1f", off) +
+                      " deg from the stated frame's (" + fmt("%.1f", *statedHeading) +
+                      " deg for x): check the bench's heading; the replays use the one found");
+  }
   Eigen::VectorXd x = Eigen::VectorXd::Zero(5);
   for (std::size_t j = 0; j < biasCols.size(); ++j) x(biasCols[j]) = biases(static_cast<Eigen::Index>(j));
   // The biases were fitted at the heading the columns describe; the trend

@@ -73,6 +73,26 @@ std::vector<PointView> pointViews(const AnalysedSession& session, const Replay& 
   return points;
 }
 
+// A stated frame the data contradict: the verdict says so and names no
+// effect (an effect fitted in the wrong frame absorbs the frame: a z axis
+// stated down but up is an isotropic g-sensitivity of -2 Omega sin(lat) / g
+// that "closes" every clean session). The gap map stays, replayed in the
+// frame the data show; what the effects would say there is in the reason.
+void reportContradictedFrame(const FrameCheck& frame, Diagnosis& d) {
+  const std::string inFoundFrame = effectTitle(d.verdict);
+  d.verdict = "frame_contradicted";
+  d.verdictReason = std::string("the data show the IMU's z axis ") + (frame.zUp ? "up" : "down") +
+                    "; the bench constants state " + (frame.zUp ? "down" : "up") + " (" +
+                    describeImuFrame(frame.stated) + "). Correct the IMU frame in the bench constants (or the "
+                    "IMU's mounting) and diagnose again; no effect is named. Replayed in the frame the data show, "
+                    "the verdict would be: " + inFoundFrame;
+  d.verdictEffects.clear();
+  for (auto& c : d.gapMap) c.zAfter = c.z;
+  d.gapAfter = d.gapBefore;
+  d.heldOut.clear();
+  for (auto& e : d.effects) e.kept = false;
+}
+
 // The timing audits of the session and of the nominal replay.
 void auditTimings(const Recording& used, const Replay& replay, std::uint64_t seed, Diagnosis& d) {
   d.realTiming = auditTiming(used, replay.ref.tablePeriodS, replay.ref.imuPeriodS);
@@ -109,8 +129,9 @@ Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, cons
   auto calibrated = calibrate(*session, info, options, progress, d.notes);
   if (!calibrated) return calibrated.status();
   FOG_RETURN_IF_ERROR(budgetReplays(input, calibrated->replay, options, d.notes));
+  calibrated->replay.cal.config.earth.zUp = constants.imuFrame.stated() && constants.imuFrame.zUp();
   FOG_RETURN_IF_ERROR(calibrateEarthRateAndBias(calibrated->replay, calibrated->real.keys, calibrated->real.values,
-                                                options, d.notes));
+                                                constants.imuFrame, options, d.notes));
   const Replay& replay = calibrated->replay;
   const FeatureSet& real = calibrated->real;
 
@@ -135,6 +156,7 @@ Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, cons
 
   progress.stage("verdict", expectedReplays);
   decideVerdict(model, candidates, gap.z0, options, d);
+  if (replay.cal.frame.contradicted && d.verdict != "undetermined") reportContradictedFrame(replay.cal.frame, d);
   d.aliasGroups = aliasGroups(replay.cal);
   d.points = pointViews(*session, replay, real, *outputs, monteCarloReplays(options), gap.st);
   auditTimings(session->used, replay, options.seed, d);

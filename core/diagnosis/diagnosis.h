@@ -2,7 +2,8 @@
 // Sim-to-real gap diagnosis (docs/diagnosis.md).
 //
 //   auto d = diagnosis::diagnose(recording, &info, constants, {});
-//   d->verdict  // "scale_factor_error", "none", "unexplained" or "undetermined"
+//   d->verdict  // "scale_factor_error", "none", "unexplained", "undetermined"
+//               // or "frame_contradicted"
 //
 // 1. Replay: the session's test points are rebuilt as a plan and run on the
 //    simulator with the nominal model, calibrated to the session (table
@@ -46,6 +47,7 @@
 #include <vector>
 
 #include "core/analysis/delay_analysis.h"
+#include "core/common/imu_frame.h"
 #include "core/common/recording.h"
 #include "core/common/session_info.h"
 #include "core/common/status.h"
@@ -92,6 +94,34 @@ struct DiagnosisOptions {
   std::function<bool(double fraction, const std::string& stage)> progress;
 };
 
+// Where the IMU's z axis points, as the bench constants state it and as the
+// data show it (docs/diagnosis.md, "The IMU's frame"). A swing about a
+// horizontal axis turns the vertical Earth rate into the other horizontal
+// gyro, in quadrature with the angle, with opposite signs for z up and z
+// down; each vertical is fitted (with its own best heading) to those cells.
+// A vertical Earth rate and an isotropic g-sensitivity k look alike (k g
+// adds to the vertical rate): the frame is turned over only when the stated
+// one would need |k| > 1.5 Omega sin(lat) / g (14.5 deg/h/g at 40 deg), far
+// beyond a fibre-optic gyro's.
+struct FrameCheck {
+  ImuFrame stated;                   // as the bench constants state it
+  // The plan's swings turn enough of the vertical Earth rate into the cells
+  // (sigma of verticalRatio <= 0.3); else nothing below is set.
+  bool checked = false;
+  // The vertical Earth rate the data show, as a multiple of the vertical the
+  // replays were first configured in (the stated one, else z down): +1 as
+  // configured, -1 turned over; with its standard error.
+  double verticalRatio = 0.0, verticalRatioStd = 0.0;
+  double chiSquareDown = 0.0;        // the cells, z down at its best heading
+  double chiSquareUp = 0.0;          // ... z up
+  // verticalRatio is 5 sigma clear of -1/2, the boundary between the two.
+  bool decisive = false;
+  bool zUp = false;                  // the vertical the replays use
+  // Stated, and the data show the other vertical decisively: the verdict is
+  // "frame_contradicted" and names no effect.
+  bool contradicted = false;
+};
+
 struct Calibration {
   model::SimConfig config;   // the replay's nominal configuration
   TestPlan plan;             // the replay's plan (one point per analysed test point)
@@ -108,6 +138,7 @@ struct Calibration {
   // not state it), with its standard error.
   double headingDeg = 0.0;
   double headingStdDeg = 0.0;
+  FrameCheck frame;
 };
 
 // One cell of the gap map: a feature of the real session against the replay.
@@ -191,7 +222,9 @@ struct Diagnosis {
   std::vector<EffectFit> effects;                // ranked, best first
   std::vector<HeldOutShrink> heldOut;            // held-out shrink of the verdict's model per channel
   std::vector<std::string> verdictEffects;       // the kept effects
-  std::string verdict;                           // effect name, "none", "unexplained" or "undetermined"
+  // Effect name, "none", "unexplained", "undetermined" or
+  // "frame_contradicted" (FrameCheck; no effect is named).
+  std::string verdict;
   std::string verdictReason;
   std::vector<AliasGroup> aliasGroups;
   std::vector<std::string> notes;

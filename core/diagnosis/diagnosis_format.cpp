@@ -74,6 +74,16 @@ std::string formatDiagnosisJson(const Diagnosis& d) {
                       {"table_frequency_error_ppm", c.tableFrequencyErrorPpm},
                       {"heading_deg", c.headingDeg},
                       {"heading_std_deg", c.headingStdDeg},
+                      {"imu_frame",
+                       {{"stated", imuFrameToText(c.frame.stated)},
+                        {"checked", c.frame.checked},
+                        {"vertical_ratio", c.frame.verticalRatio},
+                        {"vertical_ratio_std", c.frame.verticalRatioStd},
+                        {"chi2_z_down", c.frame.chiSquareDown},
+                        {"chi2_z_up", c.frame.chiSquareUp},
+                        {"decisive", c.frame.decisive},
+                        {"z_up", c.frame.zUp},
+                        {"contradicted", c.frame.contradicted}}},
                       {"table_period_ms", c.config.encoder.samplePeriodS * 1e3},
                       {"imu_period_ms", c.config.imuBoard.framePeriodS * 1e3},
                       {"encoder_noise_deg", c.encoderNoiseDeg},
@@ -104,10 +114,10 @@ std::string formatDiagnosisText(const Diagnosis& d) {
   const auto& c = d.calibration;
   std::snprintf(b, sizeof b,
                 "  replay calibrated to: lag %.4f ms, table frequency %+.2f ppm, encoder noise %.2g deg, ARW %.4f "
-                "deg/sqrt(h), bias %+.3f/%+.3f/%+.3f deg/h,\n  heading %.1f +- %.1f deg, "
+                "deg/sqrt(h), bias %+.3f/%+.3f/%+.3f deg/h,\n  z %s, heading %.1f +- %.1f deg, "
                 "table every %.4f ms, IMU every %.4f ms, bias instability %.3g deg/h over %.0f s (%s)\n",
                 c.lagMs, c.tableFrequencyErrorPpm, c.encoderNoiseDeg, c.arwDegPerSqrtH, c.biasDegPerH[0],
-                c.biasDegPerH[1], c.biasDegPerH[2], c.headingDeg, c.headingStdDeg, c.config.encoder.samplePeriodS * 1e3,
+                c.biasDegPerH[1], c.biasDegPerH[2], c.frame.zUp ? "up" : "down", c.headingDeg, c.headingStdDeg, c.config.encoder.samplePeriodS * 1e3,
                 c.config.imuBoard.framePeriodS * 1e3, c.config.fog.biasInstabilityDegPerH,
                 c.config.fog.biasCorrelationS, c.biasInstabilityStated ? "stated" : "assumed");
   s += b;

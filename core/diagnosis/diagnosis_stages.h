@@ -37,7 +37,7 @@ namespace fog::diagnosis::detail {
 using EffectList = std::vector<std::pair<EffectId, std::vector<double>>>;
 
 // Replays run by calibrateEarthRateAndBias().
-inline constexpr std::size_t kCalibrationReplays = 4;
+inline constexpr std::size_t kCalibrationReplays = 5;
 
 // The status of a diagnosis the caller cancelled (kCancelled, "nothing was
 // concluded"): every stage returns it once Progress::cancelled() is true.
@@ -216,16 +216,19 @@ Result<CalibratedReplay> calibrate(const AnalysedSession& session, const Session
                                    const DiagnosisOptions& options, Progress& progress,
                                    std::vector<std::string>& notes);
 
-// Takes the calibrated replay and the session's features (keys and values,
-// in line with the replay's); runs kCalibrationReplays replays and sets the
-// replay's heading (and its spread) and each gyro's bias, with a note. Leaves
-// them as they were (ok) when the plan has too few trend or cross-axis cells
-// for it (6), or fewer than 2 that the heading moves. Refuses kCancelled, a replay's
-// failure, kInternal for replay features that do not line up with the
-// session's or a heading or bias that is not finite, and the calibrated
-// chain's own validation.
+// Takes the calibrated replay (in the stated frame's vertical), the
+// session's features (keys and values, in line with the replay's) and the
+// stated frame; runs kCalibrationReplays replays and sets the replay's
+// frame check and vertical (FrameCheck), its heading (and its spread) and
+// each gyro's bias, with notes. Leaves them as they were (ok, with a note)
+// when the plan has too few trend or cross-axis cells for it (6), or fewer
+// than 2 that the heading moves. Refuses kCancelled, a replay's failure,
+// kInternal for replay features that do not line up with the session's or a
+// heading or bias that is not finite, and the calibrated chain's own
+// validation.
 Status calibrateEarthRateAndBias(Replay& replay, const std::vector<FeatureKey>& keys, const std::vector<double>& real,
-                                 const DiagnosisOptions& options, std::vector<std::string>& notes);
+                                 const ImuFrame& stated, const DiagnosisOptions& options,
+                                 std::vector<std::string>& notes);
 
 // `bytes` as "123 MB", for messages.
 std::string megabytes(double bytes);

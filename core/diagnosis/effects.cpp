@@ -400,6 +400,7 @@ std::string effectTitle(const std::string& name) {
   if (name == "none") return "none (the recording agrees with the simulation)";
   if (name == "unexplained") return "unexplained (no effect of the library closes the gap)";
   if (name == "undetermined") return "undetermined";
+  if (name == "frame_contradicted") return "the IMU's frame contradicts the data (no effect named)";
   for (const auto& spec : effectLibrary())
     if (spec.name == name) return spec.title;
   return name;

@@ -86,7 +86,7 @@ const EffectSpec& effectSpec(EffectId id);
 Result<EffectId> effectIdFromName(const std::string& name);
 
 // An effect's name or a diagnosis verdict ("none", "unexplained",
-// "undetermined") in words for people: what the text report and the GUI
+// "undetermined", "frame_contradicted") in words for people: what the text report and the GUI
 // show; the name stays the key of the JSON. An unknown name is returned as is.
 std::string effectTitle(const std::string& name);
 

@@ -134,6 +134,7 @@ std::string metadataToJson(const Metadata& meta) {
   for (int a = 0; a < kAxisCount; ++a)
     if (b.gyroSign[static_cast<std::size_t>(a)] < 0) signs[axisName(static_cast<Axis>(a))] = -1;
   if (!signs.empty()) j["bench"]["gyro_sign"] = std::move(signs);
+  if (b.imuFrame.stated()) j["bench"]["imu_frame"] = imuFrameToText(b.imuFrame);
   j["rest_between_s"] = s.plan.restBetweenS;
   Json points = Json::array();
   for (const auto& p : meta.testPoints) {
@@ -253,7 +254,7 @@ Status readBench(const std::string& path, const Json& j, Metadata& meta) {
   FOG_RETURN_IF_ERROR(bench.checkKeys({"table_read_delay_ms", "table_read_delay_std_ms", "board_delay_ms",
                                        "board_delay_std_ms", "latitude_deg", "pulse_equivalent_deg", "counter_hz",
                                        "counter_bits", "gyro_rate_convention", "gyro_frame_period_ms",
-                                       "gyro_sign"}));
+                                       "gyro_sign", "imu_frame"}));
   FOG_RETURN_IF_ERROR(bench.number("table_read_delay_ms", b.tableReadDelayMs, true));
   FOG_RETURN_IF_ERROR(bench.number("table_read_delay_std_ms", b.tableReadDelayStdMs, false, 0.0));
   FOG_RETURN_IF_ERROR(bench.number("board_delay_ms", b.boardDelayMs, true));
@@ -304,6 +305,11 @@ Status readBench(const std::string& path, const Json& j, Metadata& meta) {
       b.gyroSign[static_cast<std::size_t>(*axis)] = static_cast<int>(v.get<std::int64_t>());
     }
   }
+  std::string frame;
+  FOG_RETURN_IF_ERROR(bench.string("imu_frame", frame));
+  auto parsed = imuFrameFromText(frame);
+  if (!parsed) return corruptData(path + ": \"bench.imu_frame\": " + parsed.status().message());
+  b.imuFrame = *parsed;
 
   return Status::ok();
 }

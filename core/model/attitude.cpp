@@ -20,7 +20,8 @@ Eigen::Matrix3d axisRotation(Axis axis, double angleDeg) {
 }
 
 Attitude::Attitude(const EarthParams& earth, const TurntableParams& table)
-    : heading_(axisRotation(Axis::kZ, earth.headingDeg)),
+    : tableToLocal_(axisRotation(Axis::kZ, earth.headingDeg) *
+                    Eigen::Vector3d(1.0, earth.zUp ? -1.0 : 1.0, earth.zUp ? -1.0 : 1.0).asDiagonal()),
       mounting_(axisRotation(Axis::kZ, table.mountingDeg[2]) * axisRotation(Axis::kY, table.mountingDeg[1]) *
                 axisRotation(Axis::kX, table.mountingDeg[0])),
       order_(table.axisOrder),
@@ -49,12 +50,12 @@ Eigen::Matrix3d Attitude::bodyToTable(const TableAngles& tableDeg, AxisRotations
 }
 
 Eigen::Vector3d Attitude::earthRateBodyDegPerH(const Eigen::Matrix3d& bodyToTable) const {
-  return (heading_ * bodyToTable).transpose() * earthLocalDegPerH_;
+  return (tableToLocal_ * bodyToTable).transpose() * earthLocalDegPerH_;
 }
 
 Eigen::Vector3d Attitude::specificForceBodyG(const Eigen::Matrix3d& bodyToTable) const {
-  // The heading turns about down: gravity looks the same in the table frame.
-  return bodyToTable.transpose() * Eigen::Vector3d(0.0, 0.0, -1.0);
+  // At rest the specific force is 1 g up: (0, 0, -1) in north-east-down.
+  return (tableToLocal_ * bodyToTable).transpose() * Eigen::Vector3d(0.0, 0.0, -1.0);
 }
 
 Eigen::Vector3d Attitude::tableAxisInBody(Axis axis, const TableAngles& tableDeg) const {

@@ -6,10 +6,12 @@
 //    Omega * (cos(lat), 0, -sin(lat)); gravity points along +down, so the
 //    specific force at rest is (0, 0, -1) g.
 //  - table frame: the table's axes at zero angles, the local frame turned by
-//    the heading about down (heading 0: table x north, y east, z down).
+//    the heading about down (heading 0: table x north, y east, z down) and,
+//    for a table whose z points up (EarthParams::zUp), half a turn about x:
+//    L = R_z(heading) R_x(180) (heading 90: x east, y north, z up).
 //  - body frame: the IMU's gyro axes. With the table axes in order outer,
 //    middle, inner (default z, y, x) and the IMU mounted on the inner frame:
-//        C_bn = R_z(heading) R_outer(a_o) R_middle(a_m) R_inner(a_i) M
+//        C_bn = L R_outer(a_o) R_middle(a_m) R_inner(a_i) M
 //    where R_k(a) is the right-handed rotation by +a about axis k and
 //    M = R_z(yaw) R_y(pitch) R_x(roll) the mounting. With zero angles and
 //    mounting, gyro x senses table axis x, and so on.
@@ -47,8 +49,8 @@ class Attitude {
  public:
   Attitude(const EarthParams& earth, const TurntableParams& table);
 
-  // Body to local-level rotation for the attitude bodyToTable() (adds the heading).
-  Eigen::Matrix3d bodyToLocal(const Eigen::Matrix3d& bodyToTable) const { return heading_ * bodyToTable; }
+  // Body to local-level rotation for the attitude bodyToTable() (adds L).
+  Eigen::Matrix3d bodyToLocal(const Eigen::Matrix3d& bodyToTable) const { return tableToLocal_ * bodyToTable; }
   // Body to table-frame rotation (the motion alone, no heading).
   Eigen::Matrix3d bodyToTable(const TableAngles& tableDeg) const;
   // The same, with the axes' rotations from (and kept in) `rotations`.
@@ -71,7 +73,7 @@ class Attitude {
                                      const Eigen::Matrix3d& toBodyToTable) const;
 
  private:
-  Eigen::Matrix3d heading_, mounting_;
+  Eigen::Matrix3d tableToLocal_, mounting_;  // L and M above
   std::array<Axis, kAxisCount> order_{};  // outer to inner
   Eigen::Vector3d earthLocalDegPerH_;
 };

@@ -17,12 +17,23 @@ std::array<double, 3> EarthParams::rateLocalDegPerH() const {
 double EarthParams::projectionDegPerH(Axis axis) const {
   const auto n = rateLocalDegPerH();
   const double h = headingDeg * kRadPerDeg;
+  const double up = zUp ? -1.0 : 1.0;  // R_x(180) negates y and z
   switch (axis) {
     case Axis::kX: return n[0] * std::cos(h);
-    case Axis::kY: return -n[0] * std::sin(h);
-    case Axis::kZ: return n[2];
+    case Axis::kY: return -up * n[0] * std::sin(h);
+    case Axis::kZ: return up * n[2];
   }
   return 0.0;
+}
+
+void applyImuFrame(const ImuFrame& frame, EarthParams& earth) {
+  if (!frame.stated()) return;
+  earth.zUp = frame.zUp();
+  if (const auto h = frame.xHeadingDeg()) {
+    double r = std::remainder(*h, 360.0);  // [-180, 180]
+    if (r == -180.0) r = 180.0;
+    earth.headingDeg = r;
+  }
 }
 
 namespace {

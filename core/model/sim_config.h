@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <string>
 
+#include "core/common/imu_frame.h"
 #include "core/common/test_plan.h"
 
 namespace fog::model {
@@ -62,19 +63,28 @@ struct FogParams {
 
 // The site and the table's heading (model/attitude.h): the table's axes at
 // zero are the local north-east-down frame turned by headingDeg about down
-// (heading 0: x north, y east, z down; 90: x east, y south).
+// (heading 0: x north, y east, z down; 90: x east, y south), and with zUp
+// then turned half a turn about x (heading 0: x north, y west, z up; 90: x
+// east, y north, z up, east-north-up).
 struct EarthParams {
   double latitudeDeg = 40.0;
   double headingDeg = 0.0;  // azimuth of the table's x axis at zero, from north toward east
+  bool zUp = false;         // the table's z axis points up at zero angles
   // Earth rate in the local north-east-down frame, deg/h:
   // Omega * (cos(lat), 0, -sin(lat)).
   std::array<double, 3> rateLocalDegPerH() const;
   // Earth rate sensed by a gyro with the table at zero and the IMU mounted
   // square on it, deg/h (Omega cos(lat) cos(heading) on x,
-  // -Omega cos(lat) sin(heading) on y, -Omega sin(lat) on z). The simulator
+  // -Omega cos(lat) sin(heading) on y, -Omega sin(lat) on z; with zUp the
+  // y and z values change sign). The simulator
   // rotates the Earth rate into the body frame at every sample instead.
   double projectionDegPerH(Axis axis) const;
 };
+
+// The site's frame as the bench constants state it (core/common/imu_frame.h):
+// where z points and, when the frame names it, the heading of x (within
+// (-180, 180]); an unstated frame, or an unstated heading, leaves `earth`'s.
+void applyImuFrame(const ImuFrame& frame, EarthParams& earth);
 
 struct ImuBoardParams {
   double framePeriodS = 2e-3;  // nominal; the IMU's crystal makes it framePeriodS / (1 + clockErrorPpm)

@@ -144,6 +144,13 @@ ALTER TABLE session ADD COLUMN gyro_sign_z INTEGER NOT NULL DEFAULT 1;
 ALTER TABLE session ADD COLUMN import_json TEXT NOT NULL DEFAULT '';
 )sql";
 
+// Schema 5: the IMU's frame at zero table angles as the bench constants
+// state it (core/common/imu_frame.h text: "NED", "RFU:30"; '' = not stated,
+// what files of older schemas read).
+constexpr const char* kSchemaV5Step = R"sql(
+ALTER TABLE session ADD COLUMN imu_frame TEXT NOT NULL DEFAULT '';
+)sql";
+
 // Sample blocks: small enough to stay far below SQLite's 1 GB value limit
 // whatever the test point's length, large enough that a block costs little.
 constexpr std::size_t kSamplesPerBlock = 65536;
@@ -258,10 +265,12 @@ constexpr const char* kMetadataColumns =
     " table_read_delay_std_ms, board_delay_ms, board_delay_std_ms, latitude_deg, pulse_equivalent_deg, counter_hz,"
     " counter_bits, test_plan_json, state, incomplete_reason, finished_utc";
 constexpr const char* kSchemaV4MetadataColumns = ", gyro_sign_x, gyro_sign_y, gyro_sign_z, import_json";
+constexpr const char* kSchemaV5MetadataColumns = ", imu_frame";
 
 // Over the metadata columns the file's schema has.
 Result<std::int64_t> metadataChecksum(sqlite3* db, int schemaVersion = kSchemaVersion) {
-  const std::string columns = std::string(kMetadataColumns) + (schemaVersion >= 4 ? kSchemaV4MetadataColumns : "");
+  const std::string columns = std::string(kMetadataColumns) + (schemaVersion >= 4 ? kSchemaV4MetadataColumns : "") +
+                              (schemaVersion >= 5 ? kSchemaV5MetadataColumns : "");
   Stmt s(db, ("SELECT " + columns + " FROM session WHERE id = 1").c_str());
   if (!s.ok() || s.step() != SQLITE_ROW) return ioError(sqliteMessage(db));
   std::uint64_t h = 0xcbf29ce484222325ULL;
@@ -287,8 +296,8 @@ Result<std::int64_t> metadataChecksum(sqlite3* db, int schemaVersion = kSchemaVe
 }
 
 // Stores the metadata row's checksum (inside the caller's transaction).
-bool updateMetadataChecksum(sqlite3* db) {
-  auto sum = metadataChecksum(db);
+bool updateMetadataChecksum(sqlite3* db, int schemaVersion = kSchemaVersion) {
+  auto sum = metadataChecksum(db, schemaVersion);
   if (!sum) return false;
   Stmt s(db, "UPDATE session SET metadata_fnv1a = ?1 WHERE id = 1");
   if (!s.ok()) return false;
@@ -476,22 +485,26 @@ Status migrate(sqlite3* db, int from) {
     if (!exec(db, kSchemaV3Step) || !exec(db, "PRAGMA user_version = 3"))
       return ioError("migrating from schema 2 to 3 failed: " + sqliteMessage(db));
   }
-  if (from < 4) {
-    // 3 -> 4: gyro signs, +1 (what the file was analysed with), and no
-    // import settings. A checked
-    // metadata row stays checked over the new columns only if it still
-    // matches its checksum: a damaged row is never blessed.
+  // 3 -> 4: gyro signs, +1 (what the file was analysed with), and no
+  // import settings; 4 -> 5: no stated IMU frame. A checked metadata row
+  // stays checked over the new columns only if it still matches its
+  // checksum: a damaged row is never blessed.
+  auto addMetadataColumns = [&](int to, const char* step) -> Status {
+    const std::string what = "migrating from schema " + std::to_string(to - 1) + " to " + std::to_string(to);
     std::optional<std::int64_t> stored;
     {
       Stmt c(db, "SELECT metadata_fnv1a FROM session WHERE id = 1");
       if (c.ok() && c.step() == SQLITE_ROW && sqlite3_column_type(c.get(), 0) != SQLITE_NULL) stored = c.integer(0);
     }
-    const auto before = metadataChecksum(db, 3);
-    if (!exec(db, kSchemaV4Step) || !exec(db, "PRAGMA user_version = 4"))
-      return ioError("migrating from schema 3 to 4 failed: " + sqliteMessage(db));
-    if (stored && before && *before == *stored && !updateMetadataChecksum(db))
-      return ioError("migrating from schema 3 to 4 failed: " + sqliteMessage(db));
-  }
+    const auto before = metadataChecksum(db, to - 1);
+    if (!exec(db, step) || !exec(db, ("PRAGMA user_version = " + std::to_string(to)).c_str()))
+      return ioError(what + " failed: " + sqliteMessage(db));
+    if (stored && before && *before == *stored && !updateMetadataChecksum(db, to))
+      return ioError(what + " failed: " + sqliteMessage(db));
+    return Status::ok();
+  };
+  if (from < 4) FOG_RETURN_IF_ERROR(addMetadataColumns(4, kSchemaV4Step));
+  if (from < 5) FOG_RETURN_IF_ERROR(addMetadataColumns(5, kSchemaV5Step));
   return Status::ok();
 }
 
@@ -620,16 +633,16 @@ Result<std::unique_ptr<SessionWriter>> SessionWriter::create(const std::string& 
   const std::string ids = "PRAGMA application_id = " + std::to_string(kApplicationId) +
                           "; PRAGMA user_version = " + std::to_string(kSchemaVersion) + ";";
   if (!exec(w->db_, "BEGIN") || !exec(w->db_, ids.c_str()) || !exec(w->db_, kSchemaV1) ||
-      !exec(w->db_, kSchemaV2Step) || !exec(w->db_, kSchemaV3Step) || !exec(w->db_, kSchemaV4Step))
+      !exec(w->db_, kSchemaV2Step) || !exec(w->db_, kSchemaV3Step) || !exec(w->db_, kSchemaV4Step) || !exec(w->db_, kSchemaV5Step))
     return abandon("schema");
   {
     Stmt s(w->db_,
            "INSERT INTO session (id, operator, imu_model, imu_serial, source, software_version, created_utc, notes,"
            " table_read_delay_ms, table_read_delay_std_ms, board_delay_ms, board_delay_std_ms, latitude_deg,"
            " pulse_equivalent_deg, counter_hz, counter_bits, test_plan_json, state, gyro_sign_x, gyro_sign_y,"
-           " gyro_sign_z, import_json)"
+           " gyro_sign_z, import_json, imu_frame)"
            " VALUES (1, ?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, 'recording', ?17, ?18,"
-           " ?19, ?20)");
+           " ?19, ?20, ?21)");
     if (!s.ok()) return abandon("metadata");
     s.bind(1, info.operatorName);
     s.bind(2, info.imuModel);
@@ -650,6 +663,7 @@ Result<std::unique_ptr<SessionWriter>> SessionWriter::create(const std::string& 
     for (int a = 0; a < kAxisCount; ++a)
       s.bind(17 + a, std::int64_t{info.bench.gyroSign[static_cast<std::size_t>(a)] < 0 ? -1 : 1});
     s.bind(20, importSettingsToJson(info.imported));
+    s.bind(21, imuFrameToText(info.bench.imuFrame));
     if (s.step() != SQLITE_DONE) return abandon("metadata");
   }
   if (!updateMetadataChecksum(w->db_)) return abandon("metadata checksum");
@@ -914,6 +928,7 @@ Result<std::unique_ptr<SessionReader>> SessionReader::open(const std::string& pa
       " pulse_equivalent_deg, counter_hz, counter_bits, test_plan_json, state, " +
       cut("incomplete_reason", field) + ", length(CAST(notes AS BLOB))" +
       (r->schemaVersion_ >= 4 ? ", gyro_sign_x, gyro_sign_y, gyro_sign_z, " + cut("import_json", notes) : "") +
+      (r->schemaVersion_ >= 5 ? ", " + cut("imu_frame", field) : "") +
       " FROM session WHERE id = 1";
   Stmt s(r->db_, sql.c_str());
   if (!s.ok()) return r->readError("reading its metadata");
@@ -956,6 +971,13 @@ Result<std::unique_ptr<SessionReader>> SessionReader::open(const std::string& pa
       return corruptData("session '" + path + "': its import settings are unreadable (" +
                          imported.status().message() + ")");
     info.imported = std::move(*imported);
+  }
+  if (r->schemaVersion_ >= 5) {  // older schemas state no frame
+    auto frame = imuFrameFromText(s.text(23));
+    if (!frame)
+      return corruptData("session '" + path + "': its stored IMU frame is unreadable (" + frame.status().message() +
+                         ")");
+    info.bench.imuFrame = *frame;
   }
   r->state_ = s.text(16);
   r->reason_ = toValidUtf8(s.text(17));

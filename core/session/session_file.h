@@ -42,7 +42,7 @@ struct sqlite3;
 
 namespace fog::session {
 
-inline constexpr int kSchemaVersion = 4;
+inline constexpr int kSchemaVersion = 5;
 // 'F' 'O' 'G' 'B' at offset 68 of the SQLite header.
 inline constexpr std::int32_t kApplicationId = 0x464F4742;
 inline constexpr const char* kFileExtension = ".fbs";

@@ -814,6 +814,24 @@ class BenchUiTest : public QObject {
       limit->setValue(0.5);
       QCOMPARE(dialog.analysisChoices().gyroSign[2], 1);
       QCOMPARE(dialog.analysisChoices().imuDelayLimitMs, 0.5);
+      // ... and the IMU's frame, as --imu-frame: a heading only where the
+      // convention has a forward axis, "not stated" at its minimum.
+      auto* frame = dialog.findChild<QComboBox*>("imuFrameCombo");
+      auto* forward = dialog.findChild<QDoubleSpinBox*>("forwardHeadingSpin");
+      QVERIFY(frame && forward);
+      QVERIFY(!dialog.settings().imuFrame.stated());
+      frame->setCurrentIndex(frame->findData(int(fog::ImuFrame::Convention::kEastNorthUp)));
+      QVERIFY(!forward->isEnabled());
+      QCOMPARE(fog::imuFrameToText(dialog.settings().imuFrame), std::string("ENU"));
+      frame->setCurrentIndex(frame->findData(int(fog::ImuFrame::Convention::kRightForwardUp)));
+      QVERIFY(forward->isEnabled());
+      QCOMPARE(fog::imuFrameToText(dialog.settings().imuFrame), std::string("RFU"));
+      forward->setValue(30.0);
+      QCOMPARE(fog::imuFrameToText(dialog.settings().imuFrame), std::string("RFU:30"));
+      // Kept in the settings and read back.
+      fog::ui::saveBenchConstants(dialog.settings());
+      QCOMPARE(fog::imuFrameToText(fog::ui::loadBenchConstants().imuFrame), std::string("RFU:30"));
+      fog::ui::saveBenchConstants(w->benchConstants());
     }
 
     // A re-analysis stores the GUI's gyro signs and limit with its result.

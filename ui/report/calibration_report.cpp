@@ -809,6 +809,7 @@ Result<Content> prepare(const ReportInput& in) {
                   [](const TestPointData& d) { return d.kind == TestPointKind::kStatic; })) {
     noise::GyroNoiseOptions options;
     options.earth.latitudeDeg = in.info.bench.latitudeDeg;
+    model::applyImuFrame(in.info.bench.imuFrame, options.earth);
     auto reports = noise::analyzeGyroNoise(in.recording, options);
     if (!reports) return Status(reports.status().code(), "the static segments' noise: " + reports.status().message());
     c.noise = std::move(*reports);

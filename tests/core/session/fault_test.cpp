@@ -319,9 +319,12 @@ TEST(SessionFaults, TwoRecordersRacingForOneFileNeverHarmTheWinner) {
 
 // A complete session with stored samples; `sql` then edits it as an attacker
 // would (SQLite and the blob checksums stay valid).
-// What turns a session of this schema into one written before schema 4.
-// What schema 4 added: the gyro signs and the import settings.
+// What turns a session of this schema into one written before schema 5:
+// schema 5 added the stated IMU frame.
+constexpr const char* kDropImuFrame = " ALTER TABLE session DROP COLUMN imu_frame;";
+// ... and before schema 4, which added the gyro signs and the import settings.
 constexpr const char* kDropGyroSigns =
+    " ALTER TABLE session DROP COLUMN imu_frame;"
     " ALTER TABLE session DROP COLUMN gyro_sign_x; ALTER TABLE session DROP COLUMN gyro_sign_y;"
     " ALTER TABLE session DROP COLUMN gyro_sign_z; ALTER TABLE session DROP COLUMN import_json;";
 
@@ -540,7 +543,8 @@ TEST(SessionFaults, ASchemaOneSessionIsReadAndMigratedWhenAResultIsAdded) {
   ASSERT_TRUE(addResult(path, "{}", R"({"lag_ms":0.466})").isOk());
   auto r = SessionReader::open(path);
   ASSERT_TRUE(r.isOk()) << r.status().message();
-  EXPECT_EQ((*r)->schemaVersion(), 4);  // 1 -> 2 -> 3 -> 4
+  EXPECT_EQ((*r)->schemaVersion(), kSchemaVersion);  // 1 -> 2 -> 3 -> 4 -> 5
+  EXPECT_FALSE((*r)->info().bench.imuFrame.stated());
   EXPECT_EQ((*r)->info().bench.gyroSign, (std::array<int, kAxisCount>{1, 1, 1}));
   auto results = (*r)->results();
   ASSERT_TRUE(results.isOk());
@@ -552,16 +556,15 @@ TEST(SessionFaults, ASchemaOneSessionIsReadAndMigratedWhenAResultIsAdded) {
 
 // metadata_fnv1a as schema 2 and 3 computed it (docs/sessions.md): FNV-1a
 // 64 over each metadata column's SQLite type and bytes, written out here
-// independently of the reader's code.
-std::int64_t schemaThreeMetadataChecksum(sqlite3* db) {
+// independently of the reader's code; later schemas add `laterColumns`.
+std::int64_t schemaThreeMetadataChecksum(sqlite3* db, const std::string& laterColumns = "") {
   sqlite3_stmt* s = nullptr;
-  EXPECT_EQ(sqlite3_prepare_v2(db,
-                               "SELECT operator, imu_model, imu_serial, source, software_version, created_utc, notes,"
-                               " table_read_delay_ms, table_read_delay_std_ms, board_delay_ms, board_delay_std_ms,"
-                               " latitude_deg, pulse_equivalent_deg, counter_hz, counter_bits, test_plan_json, state,"
-                               " incomplete_reason, finished_utc FROM session WHERE id = 1",
-                               -1, &s, nullptr),
-            SQLITE_OK);
+  const std::string sql =
+      "SELECT operator, imu_model, imu_serial, source, software_version, created_utc, notes,"
+      " table_read_delay_ms, table_read_delay_std_ms, board_delay_ms, board_delay_std_ms,"
+      " latitude_deg, pulse_equivalent_deg, counter_hz, counter_bits, test_plan_json, state,"
+      " incomplete_reason, finished_utc" + laterColumns + " FROM session WHERE id = 1";
+  EXPECT_EQ(sqlite3_prepare_v2(db, sql.c_str(), -1, &s, nullptr), SQLITE_OK);
   EXPECT_EQ(sqlite3_step(s), SQLITE_ROW);
   std::uint64_t h = 0xcbf29ce484222325ULL;
   auto add = [&h](const void* data, std::size_t n) {
@@ -612,7 +615,7 @@ TEST(SessionFaults, ASchemaThreeSessionWithoutGyroSignsReadsPlusOneAndKeepsItsCh
   // Still checked, now over the signs too: a flipped sign is damage.
   auto r = SessionReader::open(path);
   ASSERT_TRUE(r.isOk()) << r.status().message();
-  EXPECT_EQ((*r)->schemaVersion(), 4);
+  EXPECT_EQ((*r)->schemaVersion(), kSchemaVersion);
   EXPECT_EQ((*r)->info().bench.gyroSign, (std::array<int, kAxisCount>{1, 1, 1}));
   EXPECT_TRUE((*r)->info().imported.empty());
   {
@@ -629,6 +632,45 @@ TEST(SessionFaults, ASchemaThreeSessionWithoutGyroSignsReadsPlusOneAndKeepsItsCh
   ASSERT_TRUE(results.isOk());
   ASSERT_EQ(results->size(), 1u);
   EXPECT_TRUE(results->front().intact);
+}
+
+TEST(SessionFaults, ASchemaFourSessionStatesNoFrameAndKeepsItsChecksumWhenMigrated) {
+  ScratchDir dir;
+  const auto path = craftedSession(dir, "v4.fbs", std::string(kDropImuFrame) + " PRAGMA user_version = 4;");
+  auto setChecksum = [&](const std::string& columns) {
+    sqlite3* db = nullptr;
+    ASSERT_EQ(sqlite3_open_v2(path.c_str(), &db, SQLITE_OPEN_READWRITE, nullptr), SQLITE_OK);
+    const std::string sql =
+        "UPDATE session SET metadata_fnv1a = " + std::to_string(schemaThreeMetadataChecksum(db, columns));
+    ASSERT_EQ(sqlite3_exec(db, sql.c_str(), nullptr, nullptr, nullptr), SQLITE_OK);
+    sqlite3_close(db);
+  };
+  setChecksum(", gyro_sign_x, gyro_sign_y, gyro_sign_z, import_json");
+  {
+    auto r = SessionReader::open(path);
+    ASSERT_TRUE(r.isOk()) << r.status().message();
+    EXPECT_EQ((*r)->schemaVersion(), 4);
+    EXPECT_FALSE((*r)->info().bench.imuFrame.stated());
+  }
+  ASSERT_TRUE(addResult(path, "{}", R"({"lag_ms":0.466})").isOk());
+  auto r = SessionReader::open(path);
+  ASSERT_TRUE(r.isOk()) << r.status().message();
+  EXPECT_EQ((*r)->schemaVersion(), 5);
+  EXPECT_FALSE((*r)->info().bench.imuFrame.stated());
+  // Checked over the frame too: a frame written behind the checksum's back
+  // (z up where the bench stated nothing) is damage, not a statement.
+  fog::test::runSql(path, "UPDATE session SET imu_frame = 'ENU'");
+  auto damaged = SessionReader::open(path);
+  ASSERT_FALSE(damaged.isOk());
+  EXPECT_NE(damaged.status().message().find("checksum"), std::string::npos) << damaged.status().message();
+}
+
+TEST(SessionFaults, AnUnreadableStoredFrameIsRefusedWithItsReason) {
+  ScratchDir dir;
+  const auto path = craftedSession(dir, "frame.fbs", "UPDATE session SET imu_frame = 'SWU', metadata_fnv1a = NULL");
+  auto r = SessionReader::open(path);
+  ASSERT_FALSE(r.isOk());
+  EXPECT_NE(r.status().message().find("IMU frame"), std::string::npos) << r.status().message();
 }
 
 TEST(SessionFaults, ASchemaTwoSessionIsReadWithoutATableLogAndMigratedWhenOneIsAdded) {
@@ -650,7 +692,7 @@ TEST(SessionFaults, ASchemaTwoSessionIsReadWithoutATableLogAndMigratedWhenOneIsA
   ASSERT_TRUE(appendTableLog(path, {{1.5, "command", "AXIS:X:STOP"}, {1.6, "status", "X rest"}}).isOk());
   auto r = SessionReader::open(path);
   ASSERT_TRUE(r.isOk()) << r.status().message();
-  EXPECT_EQ((*r)->schemaVersion(), 4);
+  EXPECT_EQ((*r)->schemaVersion(), kSchemaVersion);
   auto log = (*r)->tableLog();
   ASSERT_TRUE(log.isOk());
   ASSERT_EQ(log->size(), 2u);

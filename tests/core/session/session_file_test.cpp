@@ -102,6 +102,25 @@ TEST(SessionFile, RoundTripKeepsMetadataRawBytesAndSamplesExactly) {
   EXPECT_FALSE(fs::exists(path + "-shm"));
 }
 
+// The IMU frame is a bench constant: stored with the session, read back.
+TEST(SessionFile, TheStatedImuFrameRoundTrips) {
+  ScratchDir dir;
+  for (const char* text : {"", "NED", "ENU", "FRD:-30", "RFU:12.5", "RFU"}) {
+    SessionInfo info = fullInfo();
+    info.bench.imuFrame = *imuFrameFromText(text);
+    const auto path = dir.file(std::string("frame") + text + ".fbs");
+    {
+      auto w = SessionWriter::create(path, info);
+      ASSERT_TRUE(w.isOk()) << w.status().message();
+      ASSERT_TRUE((*w)->finish(true, "").isOk());
+    }
+    auto r = SessionReader::open(path);
+    ASSERT_TRUE(r.isOk()) << r.status().message();
+    EXPECT_EQ((*r)->info().bench.imuFrame, info.bench.imuFrame) << text;
+    EXPECT_EQ(imuFrameToText((*r)->info().bench.imuFrame), text);
+  }
+}
+
 // The gyro signs are bench constants: stored with the session, read back.
 TEST(SessionFile, TheGyroSignsRoundTripWithTheBenchConstants) {
   ScratchDir dir;
@@ -443,9 +462,10 @@ TEST(SessionFileErrors, ForeignSqliteDatabase) {
 TEST(SessionFileErrors, NewerSchemaSaysUpdateFogbench) {
   ScratchDir dir;
   const auto path = writeSession(dir, "future.fbs");
-  makeDb(path, "PRAGMA user_version = 5");
+  makeDb(path, ("PRAGMA user_version = " + std::to_string(kSchemaVersion + 1)).c_str());
   EXPECT_TRUE(looksLikeSession(path));  // it is a session, just not one this build can read
-  expectRefused(path, "was written by a newer fogbench (schema 5; this one reads up to 4): update fogbench");
+  expectRefused(path, "was written by a newer fogbench (schema " + std::to_string(kSchemaVersion + 1) +
+                          "; this one reads up to " + std::to_string(kSchemaVersion) + "): update fogbench");
 }
 
 TEST(SessionFileErrors, SessionIdWithoutSchema) {
