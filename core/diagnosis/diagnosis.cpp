@@ -89,7 +89,10 @@ void reportContradictedFrame(const FrameCheck& frame, Diagnosis& d) {
   d.verdictEffects.clear();
   for (auto& c : d.gapMap) c.zAfter = c.z;
   d.gapAfter = d.gapBefore;
-  d.heldOut.clear();
+  for (auto& h : d.heldOut) {  // one per channel: nothing closed
+    h.after = h.before;
+    h.shrink = 0.0;
+  }
   for (auto& e : d.effects) e.kept = false;
 }
 

@@ -176,6 +176,55 @@ TEST(Diagnosis, AnXOnlyPlanGivesTheHeadingWithCosHTakenPositive) {
   }
 }
 
+// A lab whose IMU's z axis points up (east-north-up). Unstated, the data
+// show it and the replays use it (no false g-sensitivity of -2 Omega
+// sin(lat) / g = -19.3 deg/h/g, which a z-down replay used to fit at 100 %
+// of the held-out gap); stated, it is confirmed; stated wrongly, the verdict
+// says so and names no effect.
+TEST(Diagnosis, TheImuFrameIsFoundCheckedAndAContradictedOneNamesNoEffect) {
+  model::SimConfig c;
+  c.seed = 31;
+  c.fog.setOwnDelayS(0.31e-3);
+  c.earth.zUp = true;
+  c.earth.headingDeg = 90.0;
+  auto run = model::simulate(c, blindCheckPlan(), {});
+  ASSERT_TRUE(run.isOk());
+  auto rec = protocol::decodeRecording(run->bytes);
+  ASSERT_TRUE(rec.isOk());
+  SessionInfo info;
+  info.plan = blindCheckPlan();
+  auto diagnoseStating = [&](const char* frame) {
+    BenchConstants constants;
+    constants.imuFrame = *imuFrameFromText(frame);
+    auto d = diagnose(*rec, &info, constants);
+    EXPECT_TRUE(d.isOk()) << d.status().toString();
+    return *d;
+  };
+  for (const char* frame : {"", "ENU", "RFU:0"}) {
+    const Diagnosis d = diagnoseStating(frame);
+    const FrameCheck& f = d.calibration.frame;
+    EXPECT_TRUE(f.checked && f.decisive && f.zUp && !f.contradicted) << frame;
+    // The vertical Earth rate is the z-up frame's, measured to a few %.
+    EXPECT_NEAR(std::abs(f.verticalRatio), 1.0, std::max(0.05, 5.0 * f.verticalRatioStd)) << frame;
+    EXPECT_NEAR(d.calibration.headingDeg, 90.0, std::max(3.0, 3.0 * d.calibration.headingStdDeg)) << frame;
+    EXPECT_EQ(d.verdict, "none") << frame << ": " << d.verdictReason;
+  }
+  for (const char* frame : {"NED", "FRD:90"}) {
+    const Diagnosis d = diagnoseStating(frame);
+    EXPECT_TRUE(d.calibration.frame.contradicted) << frame;
+    EXPECT_EQ(d.verdict, "frame_contradicted") << frame;
+    EXPECT_TRUE(d.verdictEffects.empty());
+    EXPECT_NE(d.verdictReason.find("the data show the IMU's z axis up; the bench constants state down"),
+              std::string::npos)
+        << d.verdictReason;
+    EXPECT_TRUE(std::none_of(d.effects.begin(), d.effects.end(), [](const EffectFit& e) { return e.kept; }));
+    const auto json = nlohmann::json::parse(formatDiagnosisJson(d));
+    EXPECT_EQ(json["verdict"], "frame_contradicted");
+    EXPECT_EQ(json["calibration"]["imu_frame"]["stated"], frame);
+    EXPECT_EQ(json["calibration"]["imu_frame"]["z_up"], true);
+  }
+}
+
 // A gyro bias step half-way through is not in the library: a ramp closes
 // ~90 % of its held-out gap but leaves a remainder of many sigma in the gyro
 // trends, so the answer is "unexplained" (with the ramp as a partial
