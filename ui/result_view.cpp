@@ -206,6 +206,10 @@ ResultView::ResultView(QWidget* parent) : QWidget(parent) {
   // laptop screen and the Compare window's two columns fit side by side.
   for (QwtPlot* plot : {static_cast<QwtPlot*>(anglePlot_), static_cast<QwtPlot*>(residualPlot_)})
     plot->setMinimumSize(200, 130);
+  // One time axis for both: zoom or pan one, the other follows.
+  auto* timeLink = new TimeAxisLink(this);
+  timeLink->add(anglePlot_->interaction());
+  timeLink->add(residualPlot_->interaction());
   auto* left = new QSplitter(Qt::Vertical);
   left->addWidget(anglePlot_);
   left->addWidget(residualPlot_);
