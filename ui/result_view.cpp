@@ -38,6 +38,7 @@
 #include <qwt_symbol.h>
 
 #include "core/analysis/theory.h"
+#include "ui/data_export.h"
 #include "core/analysis/uncertainty_bound.h"
 #include "core/analysis/verdict.h"
 #include "core/common/version.h"
@@ -298,6 +299,28 @@ ResultView::ResultView(QWidget* parent) : QWidget(parent) {
     if (path.isEmpty()) return;
     if (auto s = exportReportTo(path); !s.isOk())
       emit exportFailed(tr("Calibration report"), coreText(s.message()));
+  });
+  menu->addSeparator();
+  // Data: the delay rows as one CSV, or the session's data with the shown
+  // result's fits as `fogbench-cli export --csv` writes them.
+  menu->addAction(tr("Delay table (CSV)…"), this, [this] {
+    if (!outcome_ || !outcome_->report) return;
+    const QString path = QFileDialog::getSaveFileName(this, tr("Delay table (CSV)"),
+                                                      defaultExportPath("delays", "csv"), tr("CSV file (*.csv)"));
+    if (path.isEmpty()) return;
+    if (const QString why = exportDelayRowsTo(path); !why.isEmpty()) emit exportFailed(tr("Delay table (CSV)"), why);
+  });
+  menu->addAction(tr("Session data and fits (CSV folder)…"), this, [this] {
+    if (!outcome_) return;
+    // A new folder's name: the export never writes into a folder that
+    // holds anything (the core refuses, saying so).
+    const QString dir = QFileDialog::getSaveFileName(this, tr("Session data: name a new folder"),
+                                                     defaultExportPath("data", QString()), QString(), nullptr,
+                                                     QFileDialog::DontConfirmOverwrite);
+    if (dir.isEmpty()) return;
+    if (auto s = exportDataTo(dir); !s.isOk())
+      emit exportFailed(tr("Session data (CSV)"),
+                        tr("%1\nThe session itself is unchanged.").arg(coreText(s.message())));
   });
   menu->addSeparator();
   menu->addAction(tr("Open the export folder"), this, &ResultView::openExportFolderRequested);
@@ -772,6 +795,22 @@ Status ResultView::exportReportTo(const QString& path) {
   return Status::ok();
 }
 
+QString ResultView::exportDelayRowsTo(const QString& path) {
+  if (!outcome_ || !outcome_->report) return tr("There is no delay result to export.");
+  const QString source = outcome_->sessionPath.empty() ? QString::fromStdString(outcome_->info.source)
+                                                       : QString::fromStdString(outcome_->sessionPath);
+  const QString why = writeTextFile(path, delayRowsCsv(*outcome_->report, source.toStdString()));
+  if (why.isEmpty()) emit exported(path);
+  return why;
+}
+
+Status ResultView::exportDataTo(const QString& dir) {
+  if (!outcome_) return insufficientData("there is no session to export");
+  FOG_RETURN_IF_ERROR(exportSessionData(*outcome_, dir));
+  emit exported(dir);
+  return Status::ok();
+}
+
 QString ResultView::defaultExportPath(const QString& what, const QString& suffix) const {
   QString folder = exportFolder_;
   QString name = what;
@@ -787,7 +826,7 @@ QString ResultView::defaultExportPath(const QString& what, const QString& suffix
     if (recorded.isValid()) when = recorded.toUTC();
   }
   if (folder.isEmpty()) folder = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
-  name += "-" + when.toString("yyyyMMdd-HHmmss") + "." + suffix;
+  name += "-" + when.toString("yyyyMMdd-HHmmss") + (suffix.isEmpty() ? QString() : "." + suffix);
   return QDir(folder).filePath(name);
 }
 
