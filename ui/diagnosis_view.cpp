@@ -224,6 +224,10 @@ DiagnosisView::DiagnosisView(QWidget* parent) : QWidget(parent) {
   spectrumInteraction_ = new PlotInteraction(spectrumPlot_, plain);
   shrinkInteraction_ = new PlotInteraction(shrinkPlot_, plain);
 
+  // Room for the gap map's and the shrink plot's rows of labels (one a
+  // line, never over each other): on a small window the view scrolls
+  // vertically instead of squeezing them.
+  for (QwtPlot* p : {gapMapPlot_, shrinkPlot_}) p->setMinimumHeight(300);
   auto* grid = new QGridLayout();
   grid->addWidget(curvePlot_, 0, 0);
   grid->addWidget(gapMapPlot_, 0, 1);

@@ -223,6 +223,12 @@ ResultView::ResultView(QWidget* parent) : QWidget(parent) {
   // One line a row (a cut text is whole in its tooltip): all five rows fit
   // a laptop's height whatever the width and the fonts.
   delayTable_->setWordWrap(false);
+  // The basis column takes the width that is left and elides; where too
+  // little is left it is hidden and each row's tooltip carries it: the table
+  // never scrolls sideways (fitDelayTableHeight).
+  delayTable_->horizontalHeader()->setSectionResizeMode(4, QHeaderView::Stretch);
+  delayTable_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  delayTable_->setTextElideMode(Qt::ElideRight);
   delayTable_->installEventFilter(this);
   for (QTableWidget* t : {fitTable_, delayTable_}) t->setMinimumSize(150, 60);
   buildFrequencyPlot();
@@ -499,6 +505,12 @@ void ResultView::fillTables(std::size_t i) {
           range(std::max(0.0, budget.totalMinMs - budget.boardMaxMs), budget.totalMaxMs - budget.boardMaxMs),
           tr("sensing, loop and pulse update")},
          true);
+  // Every cell's tooltip also gives the row's basis (hidden on a narrow table).
+  for (int r = 0; r < delayTable_->rowCount(); ++r)
+    if (const auto* basis = delayTable_->item(r, 4); basis && !basis->text().isEmpty())
+      for (int col = 0; col < 4; ++col)
+        if (auto* item = delayTable_->item(r, col))
+          item->setToolTip(item->text().isEmpty() ? basis->text() : item->text() + "\n" + basis->text());
   fitDelayTableHeight();
 }
 
@@ -506,6 +518,11 @@ void ResultView::fillTables(std::size_t i) {
 // table is as tall as its rows; the fit table above and the plot below give
 // way (they scroll, the plot shrinks).
 void ResultView::fitDelayTableHeight() {
+  // The basis column only where it has room to be read.
+  int fixed = 0;
+  for (int c = 0; c < 4; ++c) fixed += delayTable_->horizontalHeader()->sectionSize(c);
+  const int basisMin = delayTable_->fontMetrics().horizontalAdvance(QStringLiteral("bench constant"));
+  delayTable_->setColumnHidden(4, fixed + basisMin > delayTable_->viewport()->width());
   delayTable_->resizeRowsToContents();
   int height = delayTable_->horizontalHeader()->height() + 2 * delayTable_->frameWidth();
   for (int r = 0; r < delayTable_->rowCount(); ++r) height += delayTable_->rowHeight(r);
