@@ -38,10 +38,11 @@ using fog::ui::MainWindow;
 
 namespace {
 
-// Words a Chinese window keeps: units, names and identifiers of the trade.
+// Words a Chinese window keeps: units, names and identifiers of the trade, key names.
 const QStringList kKept = {"IMU", "CRLB", "fogbench", "Hz", "ms", "MHz", "ppm", "dof", "RMS", "Allan", "IEEE",
                            "Std", "SHA", "UTC", "FOG", "tcp", "HOST", "PORT", "dev", "ttyS", "ttyUSB", "fbs",
-                           "json", "csv", "CSV", "PDF", "PNG", "JSON", "Sagnac", "Qwt"};
+                           "json", "csv", "CSV", "PDF", "PNG", "JSON", "Sagnac", "Qwt",
+                           "Ctrl"};  // a key as its keycap reads
 
 // English in a text: runs of three or more Latin letters that are not kept
 // words, file names or paths.
