@@ -1,6 +1,6 @@
 #include "ui/data_export.h"
 
-#include <QCoreApplication>
+#include <QObject>
 #include <QDir>
 #include <QSaveFile>
 
@@ -70,14 +70,12 @@ std::string comparisonCsv(const std::vector<PointComparison>& rows, const analys
 QString writeTextFile(const QString& path, const std::string& text) {
   QSaveFile file(path);
   if (!file.open(QIODevice::WriteOnly))
-    return QCoreApplication::translate("fog::ui::DataExport", "Cannot create %1: %2. Nothing was written; choose "
-                                                              "another folder.")
+    return QObject::tr("Cannot create %1: %2. Nothing was written; choose another folder.")
         .arg(QDir::toNativeSeparators(path), file.errorString());
   const auto size = static_cast<qint64>(text.size());
   if (file.write(text.data(), size) != size || !file.commit())
-    return QCoreApplication::translate("fog::ui::DataExport",
-                                       "Could not write all of %1 (%2; disk full?). Nothing was changed there; "
-                                       "free some space or choose another folder.")
+    return QObject::tr("Could not write all of %1 (%2; disk full?). Nothing was changed there; "
+                       "free some space or choose another folder.")
         .arg(QDir::toNativeSeparators(path), file.errorString());
   return QString();
 }

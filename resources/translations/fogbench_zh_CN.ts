@@ -814,12 +814,12 @@ counter %5 MHz / %6 bit</source>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+331"/>
+        <location line="+332"/>
         <source>Held-out shrink per candidate effect</source>
         <translation>各候选效应在留出数据上的差异缩减</translation>
     </message>
     <message>
-        <location line="-331"/>
+        <location line="-332"/>
         <source>held-out gap closed (%)</source>
         <translation>留出数据差异缩减 (%)</translation>
     </message>
@@ -829,7 +829,7 @@ counter %5 MHz / %6 bit</source>
         <translation>″</translation>
     </message>
     <message>
-        <location line="+65"/>
+        <location line="+66"/>
         <source>Run or open a session, then press Diagnose in the Results view.</source>
         <translation>请运行或打开一个会话，然后在“结果”视图中按“诊断”。</translation>
     </message>
@@ -3698,6 +3698,16 @@ File: %1</source>
         <source>%1 (%2 of %3%4)</source>
         <translation>%1（%3 个中的第 %2 个%4）</translation>
     </message>
+    <message>
+        <location filename="../../ui/data_export.cpp" line="+73"/>
+        <source>Cannot create %1: %2. Nothing was written; choose another folder.</source>
+        <translation>无法创建 %1：%2。未写入任何内容；请选择其他文件夹。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Could not write all of %1 (%2; disk full?). Nothing was changed there; free some space or choose another folder.</source>
+        <translation>未能完整写入 %1（%2；磁盘已满？）。该处未作任何改动；请释放空间或选择其他文件夹。</translation>
+    </message>
 </context>
 <context>
     <name>fog::ui::ResultView</name>
@@ -6292,19 +6302,6 @@ The session itself is unchanged.</source>
         <location line="+1"/>
         <source>%1, fogbench %2</source>
         <translation>%1，fogbench %2</translation>
-    </message>
-</context>
-<context>
-    <name>fog::ui::DataExport</name>
-    <message>
-        <location filename="../../ui/data_export.cpp" line="+73"/>
-        <source>Cannot create %1: %2. Nothing was written; choose another folder.</source>
-        <translation>无法创建 %1：%2。未写入任何内容；请选择其他文件夹。</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>Could not write all of %1 (%2; disk full?). Nothing was changed there; free some space or choose another folder.</source>
-        <translation>未能完整写入 %1（%2；磁盘已满？）。该处未作任何改动；请释放空间或选择其他文件夹。</translation>
     </message>
 </context>
 </TS>
