@@ -4,7 +4,10 @@
 
 #include <QComboBox>
 #include <QDateTime>
+#include <QDir>
+#include <QFileDialog>
 #include <QFileInfo>
+#include <QPushButton>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
@@ -28,6 +31,8 @@
 #include <qwt_text.h>
 
 #include "ui/core_text.h"
+#include "ui/data_export.h"
+#include "ui/messages.h"
 #include "ui/language/language.h"
 #include "ui/plots/plot_interaction.h"
 #include "ui/plots/series_plot.h"
@@ -159,6 +164,21 @@ CompareView::CompareView(const QStringList& paths, QWidget* parent)
   pointCombo_->setMinimumContentsLength(16);
   chooser->addWidget(pointCombo_);
   chooser->addStretch(1);
+  exportButton_ = new QPushButton(tr("Export CSV…"));
+  exportButton_->setObjectName("compareExportButton");
+  exportButton_->setToolTip(tr("Save the rows of the comparison (each test point's IMU delay in A and B, B − A, "
+                               "its σ and |B − A|/σ) as a CSV file"));
+  exportButton_->setEnabled(false);
+  connect(exportButton_, &QPushButton::clicked, this, [this] {
+    const QString folder = QFileInfo(paths_.value(chosenB())).absolutePath();
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export the comparison (CSV)"),
+                                                      QDir(folder).filePath("comparison.csv"), tr("CSV file (*.csv)"));
+    if (path.isEmpty()) return;
+    if (const QString why = exportTo(path); !why.isEmpty())
+      showMessage(this, MessageKind::kError, tr("Export the comparison (CSV)"), tr("The comparison was not saved"),
+                  why);
+  });
+  chooser->addWidget(exportButton_);
   for (QComboBox* c : {aCombo_, bCombo_})
     connect(c, qOverload<int>(&QComboBox::activated), this, [this] { recompare(); });
 
@@ -290,8 +310,19 @@ void CompareView::fillSessionRow(int position) {
                                                                               : QColor(176, 0, 0));
 }
 
+QString CompareView::exportTo(const QString& path) {
+  const int a = chosenA(), b = chosenB();
+  const auto& oa = outcomes_[static_cast<std::size_t>(a)];
+  const auto& ob = outcomes_[static_cast<std::size_t>(b)];
+  if (comparisons_.empty() || !oa || !ob || !oa->report || !ob->report)
+    return tr("There is no comparison to export.");
+  return writeTextFile(path, comparisonCsv(comparisons_, *oa->report, *ob->report, paths_.value(a).toStdString(),
+                                           paths_.value(b).toStdString()));
+}
+
 void CompareView::recompare() {
   comparisons_.clear();
+  exportButton_->setEnabled(false);
   differenceTable_->setRowCount(0);
   {
     const QSignalBlocker block(pointCombo_);
@@ -308,6 +339,7 @@ void CompareView::recompare() {
     return;
   }
   comparisons_ = compareReports(*oa->report, *ob->report);
+  exportButton_->setEnabled(!comparisons_.empty());
   differenceTable_->setHorizontalHeaderLabels({tr("test point"), tr("%1: IMU delay (ms)").arg(letter(a)),
                                                tr("%1: IMU delay (ms)").arg(letter(b)),
                                                tr("%1 − %2 (ms)").arg(letter(b), letter(a)), tr("±σ (ms)"),

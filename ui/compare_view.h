@@ -13,6 +13,7 @@
 //                 against frequency of both, and the trend of the IMU delay
 //                 against the recording date of every session (several
 //                 sessions of one IMU).
+//   Export CSV…   the differences' rows as a CSV file.
 
 #include <QWidget>
 #include <memory>
@@ -23,6 +24,7 @@
 
 class QComboBox;
 class QLabel;
+class QPushButton;
 class QTableWidget;
 class QTabWidget;
 class QwtPlot;
@@ -57,6 +59,11 @@ class CompareView : public QWidget {
   QwtPlot* frequencyPlot() const { return frequencyPlot_; }
   QwtPlot* trendPlot() const { return trendPlot_; }
   QString summary() const;
+  // The comparison's rows (A and B as chosen) as CSV (ui/data_export.h):
+  // empty, or why not (a file already at `path` is then as it was). The
+  // "Export CSV…" button asks for the path.
+  QString exportTo(const QString& path);
+  QPushButton* exportButton() const { return exportButton_; }
 
  signals:
   // Every session has arrived (readable or not) and the comparison is shown.
@@ -77,6 +84,7 @@ class CompareView : public QWidget {
   QComboBox* bCombo_ = nullptr;
   QLabel* summary_ = nullptr;
   QTableWidget* differenceTable_ = nullptr;
+  QPushButton* exportButton_ = nullptr;
   QComboBox* pointCombo_ = nullptr;
   QTabWidget* tabs_ = nullptr;
   SeriesPlot* zeroCrossingPlot_ = nullptr;

@@ -224,6 +224,11 @@ DiagnosisView::DiagnosisView(QWidget* parent) : QWidget(parent) {
   spectrumInteraction_ = new PlotInteraction(spectrumPlot_, plain);
   shrinkInteraction_ = new PlotInteraction(shrinkPlot_, plain);
 
+  // Room for the gap map's and the shrink plot's rows of labels (one a
+  // line, never over each other): on a small window the view scrolls
+  // vertically instead of squeezing them.
+  shrinkPlot_->setMinimumHeight(240);
+  for (QwtPlot* p : {curvePlot_, gapMapPlot_, spectrumPlot_, shrinkPlot_}) useCompactTitles(p);
   auto* grid = new QGridLayout();
   grid->addWidget(curvePlot_, 0, 0);
   grid->addWidget(gapMapPlot_, 0, 1);

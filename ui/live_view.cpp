@@ -79,6 +79,8 @@ QwtPlot* LiveView::makePlot(const QString& title, const QString& yTitle, QwtPlot
   options.cursors = true;
   options.yUnit = unit;
   options.zoomY = false;
+  options.xOnlyZoom = true;
+  options.tracker = true;
   auto* interaction = new PlotInteraction(plot, options);
   interaction->setHomeFunction([this] { setFollowing(true); });
   const QwtPlotCurve* shown = *curve;
@@ -97,28 +99,17 @@ QwtPlot* LiveView::makePlot(const QString& title, const QString& yTitle, QwtPlot
     return values;
   });
   connect(interaction, &PlotInteraction::viewChangedByUser, this, [this] { setFollowing(false); });
-  auto* tracker = new QwtPlotPicker(QwtPlot::xBottom, QwtPlot::yLeft, QwtPicker::CrossRubberBand,
-                                    QwtPicker::AlwaysOn, plot->canvas());
-  tracker->setStateMachine(new QwtPickerTrackerMachine());
-  tracker->setRubberBandPen(QPen(QColor(150, 150, 150), 0, Qt::DotLine));
-  // Both plots show the same stretch of time.
-  connect(plot->axisWidget(QwtPlot::xBottom), &QwtScaleWidget::scaleDivChanged, this, [this, plot] {
-    if (following_ || syncingScales_) return;
-    syncingScales_ = true;
-    const auto div = plot->axisScaleDiv(QwtPlot::xBottom);
-    for (auto* other : {tablePlot_, gyroPlot_})
-      if (other && other != plot) {
-        other->setAxisScale(QwtPlot::xBottom, div.lowerBound(), div.upperBound());
-        other->replot();
-      }
-    syncingScales_ = false;
-    dirty_ = true;
-  });
+  // Both plots show the same stretch of time (refresh() sets both while
+  // following; then the link rests).
+  timeLink_->add(interaction);
   plot->setAxisScale(QwtPlot::yLeft, -1.0, 1.0);  // refresh() sets both plots' common range
   return plot;
 }
 
 LiveView::LiveView(QWidget* parent) : QWidget(parent) {
+  timeLink_ = new TimeAxisLink(this);
+  timeLink_->setPaused(following_);
+  connect(timeLink_, &TimeAxisLink::rangeChanged, this, [this] { dirty_ = true; });
   auto* layout = new QVBoxLayout(this);
   auto* state = new QHBoxLayout();
   stateLabel_ = new QLabel(tr("No run yet: configure a plan and press Run."));
@@ -214,6 +205,7 @@ LiveView::LiveView(QWidget* parent) : QWidget(parent) {
 
 void LiveView::setFollowing(bool following) {
   following_ = following;
+  timeLink_->setPaused(following);
   {
     const QSignalBlocker block(followButton_);
     followButton_->setChecked(following);

@@ -7,8 +7,9 @@
 //
 // Mouse (as on every plot, ui/plots/plot_interaction.h): wheel zooms the time
 // axis, drag pans it, clicks set cursors A and B (Δt and the values read
-// out), right-click removes them. Zooming or panning stops the scrolling;
-// "Follow live" or a double-click resumes it.
+// out), right-click removes them; the tracker lists both angles at the
+// mouse's time. The two plots' time axes are linked. Zooming or panning
+// stops the scrolling; "Follow live" or a double-click resumes it.
 
 #include <QElapsedTimer>
 #include <QWidget>
@@ -26,6 +27,10 @@ class QPushButton;
 class QDoubleSpinBox;
 class QwtPlot;
 class QwtPlotCurve;
+
+namespace fog::ui {
+class TimeAxisLink;
+}
 
 namespace fog::ui {
 
@@ -86,7 +91,7 @@ class LiveView : public QWidget {
   double speed_ = 1.0;
   bool following_ = true;
   bool dirty_ = false;
-  bool syncingScales_ = false;
+  TimeAxisLink* timeLink_ = nullptr;  // the two plots' time axes
   QElapsedTimer wall_;
 
   QwtPlot* tablePlot_ = nullptr;

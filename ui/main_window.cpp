@@ -30,6 +30,7 @@
 #include <QStatusBar>
 #include <QTabWidget>
 #include <QToolBar>
+#include <QDockWidget>
 #include <QVBoxLayout>
 #include <QtConcurrent/QtConcurrentRun>
 #include <algorithm>
@@ -49,6 +50,7 @@
 #include "core/session/session_api.h"
 #include "ui/bench_settings_dialog.h"
 #include "ui/compare_view.h"
+#include "ui/table_panel.h"
 #include "ui/core_text.h"
 #include "ui/import_dialog.h"
 #include "ui/diagnosis_view.h"
@@ -172,6 +174,18 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   noiseView_->setObjectName("noiseView");
   tabs_->addTab(scrollable(noiseView_), tr("Noise"));
   setCentralWidget(tabs_);
+  // The turntable between runs (ui/table_panel.h): a dock, hidden until
+  // View ▸ Table controls; its emergency stop is also in the tool bar.
+  tablePanel_ = new TablePanel();
+  tablePanel_->setAddressSource([this] {
+    return configureView_->tableDriver() == ConfigureView::TableDriver::kRemote ? configureView_->tableAddress()
+                                                                                : QString();
+  });
+  tableDock_ = new QDockWidget(tr("Table"));
+  tableDock_->setObjectName("tableDock");
+  tableDock_->setWidget(scrollable(tablePanel_));
+  addDockWidget(Qt::RightDockWidgetArea, tableDock_);
+  tableDock_->hide();
   buildToolBar();
   buildMenus();
   setBenchConstants(loadBenchConstants());
@@ -255,6 +269,35 @@ void MainWindow::buildToolBar() {
   bar->addWidget(stopButton_);
   connect(runButton_, &QPushButton::clicked, this, &MainWindow::startRun);
   connect(stopButton_, &QPushButton::clicked, this, &MainWindow::stopRun);
+
+  // The emergency stop, always in view: every axis of the connected table
+  // stops at once (and a run is stopped too).
+  bar->addSeparator();
+  emergencyStopAction_ = new QAction(tr("EMERGENCY STOP"), this);
+  emergencyStopAction_->setObjectName("emergencyStopAction");
+  connect(emergencyStopAction_, &QAction::triggered, this, &MainWindow::emergencyStop);
+  bar->addAction(emergencyStopAction_);
+  if (auto* button = bar->widgetForAction(emergencyStopAction_)) {
+    button->setObjectName("emergencyStopButton");
+    button->setStyleSheet("QToolButton { background: #c00000; color: white; font-weight: bold; padding: 3px 10px; }"
+                          "QToolButton:disabled { background: #d8b0b0; color: #f4f4f4; }");
+  }
+  auto follow = [this] {
+    emergencyStopAction_->setEnabled(tablePanel_->connected());
+    emergencyStopAction_->setToolTip(tablePanel_->connected()
+                                         ? tr("Stop every axis of the table at once (latched at the controller)")
+                                         : tablePanel_->disabledReason() + tr(" (View ▸ Table controls)"));
+  };
+  connect(tablePanel_, &TablePanel::availabilityChanged, this, follow);
+  follow();
+}
+
+void MainWindow::emergencyStop() {
+  const QString why = tablePanel_->emergencyStop();
+  if (runner_.isRunning()) stopRun();
+  tableDock_->show();  // where the axes' state and the message are
+  if (!why.isEmpty()) reportError(tr("Emergency stop"), tr("The emergency stop failed"), why);
+  else tell(tr("Emergency stop sent to the table."));
 }
 
 void MainWindow::buildMenus() {
@@ -336,6 +379,13 @@ void MainWindow::buildMenus() {
     action->setObjectName(QString("viewAction%1").arg(i));
     action->setShortcut(QKeySequence(QString("Ctrl+%1").arg(i + 1)));
   }
+
+  view->addSeparator();
+  QAction* tableAction = tableDock_->toggleViewAction();
+  tableAction->setText(tr("&Table controls"));
+  tableAction->setObjectName("tableControlsAction");
+  tableAction->setShortcut(QKeySequence(QStringLiteral("Ctrl+T")));
+  view->addAction(tableAction);
 
   auto* tools = menuBar()->addMenu(tr("&Tools"));
   auto* constants = tools->addAction(tr("&Bench constants…"), this, &MainWindow::editBenchConstants);
@@ -806,6 +856,7 @@ void MainWindow::stopRun() {
 }
 
 void MainWindow::setRunning(bool running) {
+  tablePanel_->setRunActive(running && drivesTable());
   stopButton_->setEnabled(running);
   stopAction_->setEnabled(running);
   configureView_->setRunning(running);

@@ -38,6 +38,7 @@
 class QAction;
 class QCheckBox;
 class QCloseEvent;
+class QDockWidget;
 class QMenu;
 class QComboBox;
 class QLabel;
@@ -55,6 +56,7 @@ class PlanEditor;
 class ResultView;
 class SessionBrowser;
 class TableDrive;
+class TablePanel;
 
 class MainWindow : public QMainWindow {
   Q_OBJECT
@@ -70,6 +72,12 @@ class MainWindow : public QMainWindow {
   PlanEditor* planEditor() const { return planEditor_; }
   LiveView* liveView() const { return liveView_; }
   ResultView* resultView() const { return resultView_; }
+  // The table's axis panel (a dock: View ▸ Table controls) and the tool
+  // bar's emergency stop, enabled while a table is connected.
+  TablePanel* tablePanel() const { return tablePanel_; }
+  QAction* emergencyStopAction() const { return emergencyStopAction_; }
+  // The tool bar's emergency stop: the panel's, and stops a run.
+  void emergencyStop();
   SessionBrowser* sessionBrowser() const { return sessionBrowser_; }
   DiagnosisView* diagnosisView() const { return diagnosisView_; }
   NoiseView* noiseView() const { return noiseView_; }
@@ -246,6 +254,9 @@ class MainWindow : public QMainWindow {
   PlanEditor* planEditor_ = nullptr;
   LiveView* liveView_ = nullptr;
   ResultView* resultView_ = nullptr;
+  TablePanel* tablePanel_ = nullptr;
+  QDockWidget* tableDock_ = nullptr;
+  QAction* emergencyStopAction_ = nullptr;
   SessionBrowser* sessionBrowser_ = nullptr;
   DiagnosisView* diagnosisView_ = nullptr;
   NoiseView* noiseView_ = nullptr;

@@ -38,6 +38,7 @@
 #include <qwt_symbol.h>
 
 #include "core/analysis/theory.h"
+#include "ui/data_export.h"
 #include "core/analysis/uncertainty_bound.h"
 #include "core/analysis/verdict.h"
 #include "core/common/version.h"
@@ -206,6 +207,10 @@ ResultView::ResultView(QWidget* parent) : QWidget(parent) {
   // laptop screen and the Compare window's two columns fit side by side.
   for (QwtPlot* plot : {static_cast<QwtPlot*>(anglePlot_), static_cast<QwtPlot*>(residualPlot_)})
     plot->setMinimumSize(200, 130);
+  // One time axis for both: zoom or pan one, the other follows.
+  auto* timeLink = new TimeAxisLink(this);
+  timeLink->add(anglePlot_->interaction());
+  timeLink->add(residualPlot_->interaction());
   auto* left = new QSplitter(Qt::Vertical);
   left->addWidget(anglePlot_);
   left->addWidget(residualPlot_);
@@ -218,6 +223,12 @@ ResultView::ResultView(QWidget* parent) : QWidget(parent) {
   // One line a row (a cut text is whole in its tooltip): all five rows fit
   // a laptop's height whatever the width and the fonts.
   delayTable_->setWordWrap(false);
+  // The basis column takes the width that is left and elides; where too
+  // little is left it is hidden and each row's tooltip carries it: the table
+  // never scrolls sideways (fitDelayTableHeight).
+  delayTable_->horizontalHeader()->setSectionResizeMode(4, QHeaderView::Stretch);
+  delayTable_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  delayTable_->setTextElideMode(Qt::ElideRight);
   delayTable_->installEventFilter(this);
   for (QTableWidget* t : {fitTable_, delayTable_}) t->setMinimumSize(150, 60);
   buildFrequencyPlot();
@@ -294,6 +305,28 @@ ResultView::ResultView(QWidget* parent) : QWidget(parent) {
     if (path.isEmpty()) return;
     if (auto s = exportReportTo(path); !s.isOk())
       emit exportFailed(tr("Calibration report"), coreText(s.message()));
+  });
+  menu->addSeparator();
+  // Data: the delay rows as one CSV, or the session's data with the shown
+  // result's fits as `fogbench-cli export --csv` writes them.
+  menu->addAction(tr("Delay table (CSV)…"), this, [this] {
+    if (!outcome_ || !outcome_->report) return;
+    const QString path = QFileDialog::getSaveFileName(this, tr("Delay table (CSV)"),
+                                                      defaultExportPath("delays", "csv"), tr("CSV file (*.csv)"));
+    if (path.isEmpty()) return;
+    if (const QString why = exportDelayRowsTo(path); !why.isEmpty()) emit exportFailed(tr("Delay table (CSV)"), why);
+  });
+  menu->addAction(tr("Session data and fits (CSV folder)…"), this, [this] {
+    if (!outcome_) return;
+    // A new folder's name: the export never writes into a folder that
+    // holds anything (the core refuses, saying so).
+    const QString dir = QFileDialog::getSaveFileName(this, tr("Session data: name a new folder"),
+                                                     defaultExportPath("data", QString()), QString(), nullptr,
+                                                     QFileDialog::DontConfirmOverwrite);
+    if (dir.isEmpty()) return;
+    if (auto s = exportDataTo(dir); !s.isOk())
+      emit exportFailed(tr("Session data (CSV)"),
+                        tr("%1\nThe session itself is unchanged.").arg(coreText(s.message())));
   });
   menu->addSeparator();
   menu->addAction(tr("Open the export folder"), this, &ResultView::openExportFolderRequested);
@@ -472,6 +505,12 @@ void ResultView::fillTables(std::size_t i) {
           range(std::max(0.0, budget.totalMinMs - budget.boardMaxMs), budget.totalMaxMs - budget.boardMaxMs),
           tr("sensing, loop and pulse update")},
          true);
+  // Every cell's tooltip also gives the row's basis (hidden on a narrow table).
+  for (int r = 0; r < delayTable_->rowCount(); ++r)
+    if (const auto* basis = delayTable_->item(r, 4); basis && !basis->text().isEmpty())
+      for (int col = 0; col < 4; ++col)
+        if (auto* item = delayTable_->item(r, col))
+          item->setToolTip(item->text().isEmpty() ? basis->text() : item->text() + "\n" + basis->text());
   fitDelayTableHeight();
 }
 
@@ -479,6 +518,11 @@ void ResultView::fillTables(std::size_t i) {
 // table is as tall as its rows; the fit table above and the plot below give
 // way (they scroll, the plot shrinks).
 void ResultView::fitDelayTableHeight() {
+  // The basis column only where it has room to be read.
+  int fixed = 0;
+  for (int c = 0; c < 4; ++c) fixed += delayTable_->horizontalHeader()->sectionSize(c);
+  const int basisMin = delayTable_->fontMetrics().horizontalAdvance(QStringLiteral("bench constant"));
+  delayTable_->setColumnHidden(4, fixed + basisMin > delayTable_->viewport()->width());
   delayTable_->resizeRowsToContents();
   int height = delayTable_->horizontalHeader()->height() + 2 * delayTable_->frameWidth();
   for (int r = 0; r < delayTable_->rowCount(); ++r) height += delayTable_->rowHeight(r);
@@ -768,6 +812,22 @@ Status ResultView::exportReportTo(const QString& path) {
   return Status::ok();
 }
 
+QString ResultView::exportDelayRowsTo(const QString& path) {
+  if (!outcome_ || !outcome_->report) return tr("There is no delay result to export.");
+  const QString source = outcome_->sessionPath.empty() ? QString::fromStdString(outcome_->info.source)
+                                                       : QString::fromStdString(outcome_->sessionPath);
+  const QString why = writeTextFile(path, delayRowsCsv(*outcome_->report, source.toStdString()));
+  if (why.isEmpty()) emit exported(path);
+  return why;
+}
+
+Status ResultView::exportDataTo(const QString& dir) {
+  if (!outcome_) return insufficientData("there is no session to export");
+  FOG_RETURN_IF_ERROR(exportSessionData(*outcome_, dir));
+  emit exported(dir);
+  return Status::ok();
+}
+
 QString ResultView::defaultExportPath(const QString& what, const QString& suffix) const {
   QString folder = exportFolder_;
   QString name = what;
@@ -783,7 +843,7 @@ QString ResultView::defaultExportPath(const QString& what, const QString& suffix
     if (recorded.isValid()) when = recorded.toUTC();
   }
   if (folder.isEmpty()) folder = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
-  name += "-" + when.toString("yyyyMMdd-HHmmss") + "." + suffix;
+  name += "-" + when.toString("yyyyMMdd-HHmmss") + (suffix.isEmpty() ? QString() : "." + suffix);
   return QDir(folder).filePath(name);
 }
 

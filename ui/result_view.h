@@ -84,11 +84,17 @@ class ResultView : public QWidget {
   // worked, emits exported().
   Status exportPlotTo(QwtPlot* plot, const QString& path);
   Status exportReportTo(const QString& path);
+  // The delay rows of every test point of the shown result as one CSV
+  // (ui/data_export.h); empty, or why not (the file is then as it was).
+  QString exportDelayRowsTo(const QString& path);
+  // The session's data with the shown result's fits, residuals and report,
+  // as `fogbench-cli export --csv` writes them, into a new or empty folder.
+  Status exportDataTo(const QString& dir);
 
   // Where an export goes unless the operator picks another place: the
   // folder of the shown session (else the fallback folder), named with what
   // it is, the IMU serial and the recording date, e.g.
-  // calibration-report-SN-77-20240102-103000.pdf.
+  // calibration-report-SN-77-20240102-103000.pdf (no suffix: a folder's name).
   QString defaultExportPath(const QString& what, const QString& suffix) const;
   // The folder for results that were not recorded into a session.
   void setExportFolder(const QString& folder) { exportFolder_ = folder; }

@@ -37,6 +37,15 @@ std::string TableState::blockingReason() const {
   return r;
 }
 
+Status checkPositionAgainstLimits(Axis axis, double positionDeg, const TableLimits& limits) {
+  if (!std::isfinite(positionDeg))
+    return invalidArgument(std::string(axisLabel(axis)) + " position is not a number; the table was not moved");
+  if (std::abs(positionDeg) > limits.maxPositionDeg)
+    return outOfRange(std::string(axisLabel(axis)) + " position " + num(positionDeg) + " deg is beyond the table's +-" +
+                      num(limits.maxPositionDeg) + " deg; the table was not moved");
+  return Status::ok();
+}
+
 Status checkPlanAgainstLimits(const TestPlan& plan, const TableLimits& limits) {
   if (plan.points.empty()) return invalidArgument("the plan has no test points");
   for (std::size_t i = 0; i < plan.points.size(); ++i) {

@@ -105,4 +105,10 @@ class TableController {
 // beyond the table's 200 deg/s on Y".
 Status checkPlanAgainstLimits(const TestPlan& plan, const TableLimits& limits);
 
+// Checks a position an axis is to be moved to (a jog, a go-to, home) against
+// the table's position range before any motion: kOutOfRange "X position
+// 200 deg is beyond the table's +-180 deg; the table was not moved", or
+// kInvalidArgument for a position that is not a number.
+Status checkPositionAgainstLimits(Axis axis, double positionDeg, const TableLimits& limits);
+
 }  // namespace fog::table

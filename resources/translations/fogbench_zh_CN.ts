@@ -214,7 +214,7 @@
 <context>
     <name>fog::ui::CompareView</name>
     <message>
-        <location filename="../../ui/compare_view.cpp" line="+125"/>
+        <location filename="../../ui/compare_view.cpp" line="+130"/>
         <source>session</source>
         <translation>会话</translation>
     </message>
@@ -264,13 +264,39 @@
         <translation>测试点</translation>
     </message>
     <message>
-        <location line="+15"/>
-        <location line="+141"/>
+        <location line="+7"/>
+        <source>Export CSV…</source>
+        <translation>导出 CSV…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Save the rows of the comparison (each test point&apos;s IMU delay in A and B, B − A, its σ and |B − A|/σ) as a CSV file</source>
+        <translation>将比较的各行（每个测试点在 A 和 B 中的 IMU 延迟、B − A、其 σ 及 |B − A|/σ）保存为 CSV 文件</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <location line="+4"/>
+        <source>Export the comparison (CSV)</source>
+        <translation>导出比较结果（CSV）</translation>
+    </message>
+    <message>
+        <location line="-3"/>
+        <source>CSV file (*.csv)</source>
+        <translation>CSV 文件 (*.csv)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The comparison was not saved</source>
+        <translation>比较结果未保存</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <location line="+153"/>
         <source>test point</source>
         <translation>测试点</translation>
     </message>
     <message>
-        <location line="-135"/>
+        <location line="-147"/>
         <source>Zero crossing of A and B</source>
         <translation>A 与 B 的过零点</translation>
     </message>
@@ -365,7 +391,12 @@
         <translation>%1（未保存）· %2</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+14"/>
+        <source>There is no comparison to export.</source>
+        <translation>没有可导出的比较结果。</translation>
+    </message>
+    <message>
+        <location line="+17"/>
         <source>Choose two different sessions.</source>
         <translation>请选择两个不同的会话。</translation>
     </message>
@@ -375,7 +406,7 @@
         <translation>会话 %1 或 %2 没有可比较的延迟结果。</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <location line="+1"/>
         <source>%1: IMU delay (ms)</source>
         <translation>%1：IMU 延迟 (ms)</translation>
@@ -783,12 +814,12 @@ counter %5 MHz / %6 bit</source>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+327"/>
+        <location line="+332"/>
         <source>Held-out shrink per candidate effect</source>
         <translation>各候选效应在留出数据上的差异缩减</translation>
     </message>
     <message>
-        <location line="-327"/>
+        <location line="-332"/>
         <source>held-out gap closed (%)</source>
         <translation>留出数据差异缩减 (%)</translation>
     </message>
@@ -798,7 +829,7 @@ counter %5 MHz / %6 bit</source>
         <translation>″</translation>
     </message>
     <message>
-        <location line="+61"/>
+        <location line="+66"/>
         <source>Run or open a session, then press Diagnose in the Results view.</source>
         <translation>请运行或打开一个会话，然后在“结果”视图中按“诊断”。</translation>
     </message>
@@ -1038,7 +1069,7 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>采样板时间 (s)</translation>
     </message>
     <message>
-        <location line="+63"/>
+        <location line="+54"/>
         <source>No run yet: configure a plan and press Run.</source>
         <translation>尚未运行：请配置测试计划并按“运行”。</translation>
     </message>
@@ -1094,12 +1125,12 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+248"/>
+        <location line="+249"/>
         <source>Step</source>
         <translation>步骤</translation>
     </message>
     <message>
-        <location line="-238"/>
+        <location line="-239"/>
         <source>Turntable angle</source>
         <translation>转台角度</translation>
     </message>
@@ -1125,7 +1156,7 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>计划</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+44"/>
         <source>Waiting for the first frames …</source>
         <translation>等待首批数据帧 …</translation>
     </message>
@@ -1329,7 +1360,7 @@ Press Diagnose in the Results view to start it again.</source>
 <context>
     <name>fog::ui::MainWindow</name>
     <message>
-        <location filename="../../ui/main_window.cpp" line="+149"/>
+        <location filename="../../ui/main_window.cpp" line="+151"/>
         <source>fogbench %1 — FOG IMU delay bench</source>
         <translation>fogbench %1 —— 光纤陀螺 IMU 延迟测试台</translation>
     </message>
@@ -1355,17 +1386,17 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+974"/>
+        <location line="+1023"/>
         <source>Diagnosis</source>
         <translation>诊断</translation>
     </message>
     <message>
-        <location line="-971"/>
+        <location line="-1020"/>
         <source>Noise</source>
         <translation>噪声</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+56"/>
         <source>Configure a plan and press Run.</source>
         <translation>请配置测试计划并按“运行”。</translation>
     </message>
@@ -1375,7 +1406,7 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>&lt;h3&gt;fogbench %1&lt;/h3&gt;&lt;p&gt;光纤陀螺 IMU 延迟测试台：转台带动 IMU 摆动，用同一计数器为转台角度和陀螺增量打时间戳，对两者拟合正弦，并将相位差换算为 IMU 延迟及其不确定度。&lt;/p&gt;&lt;p&gt;基于 Qt %2（运行于 %3）和 Qwt %4 构建。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location line="+103"/>
+        <location line="+139"/>
         <source>&amp;Bench constants…</source>
         <translation>测试台常数(&amp;B)…</translation>
     </message>
@@ -1405,7 +1436,7 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>关于 fogbench</translation>
     </message>
     <message>
-        <location line="-133"/>
+        <location line="-169"/>
         <location line="+3"/>
         <source>Run</source>
         <translation>运行</translation>
@@ -1417,7 +1448,7 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+64"/>
+        <location line="+93"/>
         <source>End the run now; everything received so far is kept and analysed</source>
         <translation>立即结束运行；已接收的全部数据都会保留并分析</translation>
     </message>
@@ -1433,12 +1464,12 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+734"/>
+        <location line="+742"/>
         <source>Open session</source>
         <translation>打开会话</translation>
     </message>
     <message>
-        <location line="-733"/>
+        <location line="-741"/>
         <source>fogbench sessions (*.fbs);;All files (*)</source>
         <translation>fogbench 会话 (*.fbs);;所有文件 (*)</translation>
     </message>
@@ -1566,7 +1597,7 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>噪声(&amp;N)</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+14"/>
         <source>&amp;Tools</source>
         <translation>工具(&amp;T)</translation>
     </message>
@@ -1646,7 +1677,42 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>停止运行并关闭</translation>
     </message>
     <message>
-        <location line="-234"/>
+        <location line="-422"/>
+        <source>Table</source>
+        <translation>转台</translation>
+    </message>
+    <message>
+        <location line="+92"/>
+        <source>EMERGENCY STOP</source>
+        <translation>急停</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Stop every axis of the table at once (latched at the controller)</source>
+        <translation>立即停止转台所有轴（在控制器处锁定）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> (View ▸ Table controls)</source>
+        <translation>（视图 ▸ 转台控制）</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Emergency stop</source>
+        <translation>急停</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>The emergency stop failed</source>
+        <translation>急停失败</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Emergency stop sent to the table.</source>
+        <translation>急停指令已发送至转台。</translation>
+    </message>
+    <message>
+        <location line="+65"/>
         <source>Re-&amp;analyse the shown session</source>
         <translation>重新分析所显示的会话(&amp;A)</translation>
     </message>
@@ -1656,7 +1722,12 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>请先打开一个会话：重新分析的结果保存在所分析的会话中。</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+16"/>
+        <source>&amp;Table controls</source>
+        <translation>转台控制(&amp;T)</translation>
+    </message>
+    <message>
+        <location line="+24"/>
         <source>The language can be changed once the run or the diagnosis has ended.</source>
         <translation>运行或诊断结束后才能更改语言。</translation>
     </message>
@@ -1789,7 +1860,7 @@ Plots: wheel zooms, drag pans, double-click shows all, click sets cursors A/B</s
         <translation>正在停止：已接收的数据全部保留 …</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>No data from the source for %1 s — check the connection</source>
         <translation>数据源已 %1 s 无数据——请检查连接</translation>
     </message>
@@ -2360,7 +2431,12 @@ File: %1</source>
 <context>
     <name>fog::ui::PlotInteraction</name>
     <message>
-        <location filename="../../ui/plots/plot_interaction.cpp" line="+70"/>
+        <location filename="../../ui/plots/plot_interaction.cpp" line="+97"/>
+        <source>wheel: zoom time (Ctrl: both axes) · drag: pan · double-click: whole view</source>
+        <translation>滚轮：缩放时间轴（Ctrl：两轴）· 拖动：平移 · 双击：全貌</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>wheel: zoom · drag: pan · double-click: whole view</source>
         <translation>滚轮：缩放 · 拖动：平移 · 双击：全图</translation>
     </message>
@@ -2370,7 +2446,7 @@ File: %1</source>
         <translation> · 单击：光标 A/B · 右击：移除光标</translation>
     </message>
     <message>
-        <location line="+118"/>
+        <location line="+113"/>
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
@@ -2380,7 +2456,7 @@ File: %1</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+36"/>
         <source>B − A: Δt = %1</source>
         <translation>B − A：Δt = %1</translation>
     </message>
@@ -2403,14 +2479,14 @@ File: %1</source>
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location filename="../../ui/main_window.cpp" line="-1115"/>
+        <location filename="../../ui/main_window.cpp" line="-1164"/>
         <location filename="../../ui/plan_editor.cpp" line="-323"/>
         <location filename="../../ui/plots/delta_picker.cpp" line="+1"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../../ui/live_view.cpp" line="-413"/>
+        <location filename="../../ui/live_view.cpp" line="-405"/>
         <source>%1:%2</source>
         <translation>%1:%2</translation>
     </message>
@@ -3543,7 +3619,7 @@ File: %1</source>
         <translation>IMU 延迟标定报告：%1 %2</translation>
     </message>
     <message>
-        <location filename="../../ui/result_view.cpp" line="+65"/>
+        <location filename="../../ui/result_view.cpp" line="+66"/>
         <source>%1: %2 axis, %3 Hz / %4°</source>
         <translation>%1：%2 轴，%3 Hz / %4°</translation>
     </message>
@@ -3622,6 +3698,16 @@ File: %1</source>
         <source>%1 (%2 of %3%4)</source>
         <translation>%1（%3 个中的第 %2 个%4）</translation>
     </message>
+    <message>
+        <location filename="../../ui/data_export.cpp" line="+73"/>
+        <source>Cannot create %1: %2. Nothing was written; choose another folder.</source>
+        <translation>无法创建 %1：%2。未写入任何内容；请选择其他文件夹。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Could not write all of %1 (%2; disk full?). Nothing was changed there; free some space or choose another folder.</source>
+        <translation>未能完整写入 %1（%2；磁盘已满？）。该处未作任何改动；请释放空间或选择其他文件夹。</translation>
+    </message>
 </context>
 <context>
     <name>fog::ui::ResultView</name>
@@ -3681,7 +3767,7 @@ File: %1</source>
         <translation>″</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+14"/>
         <source>fit</source>
         <translation>拟合</translation>
     </message>
@@ -3736,7 +3822,7 @@ File: %1</source>
         <translation>依据</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+15"/>
         <source>Zero crossing: the gyro behind the table</source>
         <translation>过零点：陀螺滞后于转台</translation>
     </message>
@@ -3818,17 +3904,55 @@ File: %1</source>
         <translation>标定报告</translation>
     </message>
     <message>
-        <location line="+83"/>
+        <location line="+105"/>
         <source>result %1 of %2: %7, stored %3 by %4 (%5), %6</source>
         <translation>结果 %1/%2：%7，%3 由 %4（%5）保存，%6</translation>
     </message>
     <message>
-        <location line="-86"/>
+        <location line="-108"/>
         <source>PDF document (*.pdf)</source>
         <translation>PDF 文档 (*.pdf)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
+        <source>Delay table (CSV)…</source>
+        <translation>延迟表（CSV）…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+3"/>
+        <source>Delay table (CSV)</source>
+        <translation>延迟表（CSV）</translation>
+    </message>
+    <message>
+        <location line="-2"/>
+        <source>CSV file (*.csv)</source>
+        <translation>CSV 文件 (*.csv)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Session data and fits (CSV folder)…</source>
+        <translation>会话数据与拟合（CSV 文件夹）…</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Session data: name a new folder</source>
+        <translation>会话数据：为新文件夹命名</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Session data (CSV)</source>
+        <translation>会话数据（CSV）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1
+The session itself is unchanged.</source>
+        <translation>%1
+会话本身未被改动。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Open the export folder</source>
         <translation>打开导出文件夹</translation>
     </message>
@@ -3988,7 +4112,7 @@ File: %1</source>
         <translation>敏感、闭环与脉冲更新</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+46"/>
         <source>INCOMPLETE</source>
         <translation>不完整</translation>
     </message>
@@ -4058,7 +4182,12 @@ File: %1</source>
         <translation>  ·  &lt;span style=&apos;color:#b00000&apos;&gt;运行未完成&lt;/span&gt;</translation>
     </message>
     <message>
-        <location line="-82"/>
+        <location line="+185"/>
+        <source>There is no delay result to export.</source>
+        <translation>没有可导出的延迟结果。</translation>
+    </message>
+    <message>
+        <location line="-267"/>
         <source>PASS</source>
         <translation>通过</translation>
     </message>
@@ -4141,7 +4270,7 @@ File: %1</source>
 <context>
     <name>fog::ui::SeriesPlot</name>
     <message>
-        <location filename="../../ui/plots/series_plot.cpp" line="+42"/>
+        <location filename="../../ui/plots/series_plot.cpp" line="+40"/>
         <source>time (s)</source>
         <translation>时间 (s)</translation>
     </message>
@@ -4293,6 +4422,153 @@ File: %1</source>
         <translation>
             <numerusform>跳过其他文件 %n 个</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>fog::ui::TablePanel</name>
+    <message>
+        <location filename="../../ui/table_panel.cpp" line="+23"/>
+        <source>idle</source>
+        <translation>空闲</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>moving</source>
+        <translation>运动中</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+261"/>
+        <source>emergency stop</source>
+        <translation>急停</translation>
+    </message>
+    <message>
+        <location line="-260"/>
+        <location line="+2"/>
+        <source>unknown</source>
+        <translation>未知</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <location line="+133"/>
+        <source>Connect</source>
+        <translation>连接</translation>
+    </message>
+    <message>
+        <location line="-123"/>
+        <source>axis</source>
+        <translation>轴</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>position</source>
+        <translation>位置</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>state</source>
+        <translation>状态</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Home</source>
+        <translation>回零</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Jog step</source>
+        <translation>点动步长</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <location line="+15"/>
+        <source> °</source>
+        <translation> °</translation>
+    </message>
+    <message>
+        <location line="-9"/>
+        <source>Go to</source>
+        <translation>转到</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Go</source>
+        <translation>执行</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>EMERGENCY STOP</source>
+        <translation>急停</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>No table address: choose Table ▸ Remote controller in Configure and give its address (tcp:HOST:PORT or a serial device).</source>
+        <translation>没有转台地址：请在“配置”中选择 转台 ▸ 远程控制器 并填写其地址（tcp:主机:端口 或串口设备）。</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>Disconnect</source>
+        <translation>断开</translation>
+    </message>
+    <message>
+        <location line="+40"/>
+        <source>A run drives the table; stop it first.</source>
+        <translation>运行正在驱动转台；请先停止运行。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The table does not answer (%1); the table was not moved.</source>
+        <translation>转台无应答（%1）；转台未运动。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The table cannot move: %1; the table was not moved.</source>
+        <translation>转台不能运动：%1；转台未运动。</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1 to %2°</source>
+        <translation>%1 轴转到 %2°</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>The emergency stop did not reach the controller: %1. Use the table&apos;s own stop button.</source>
+        <translation>急停指令未到达控制器：%1。请使用转台自身的停止按钮。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Emergency stop sent: every axis stops. Reset it at the controller before the table moves again.</source>
+        <translation>急停指令已发送：所有轴停止。转台再次运动前，请在控制器处复位。</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>No table is connected: press Connect (the address is the Configure view&apos;s remote table).</source>
+        <translation>未连接转台：请按“连接”（地址取自“配置”视图中的远程转台）。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A run drives the table; only the emergency stop is available.</source>
+        <translation>运行正在驱动转台；只有急停可用。</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>No table connected.</source>
+        <translation>未连接转台。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Unreachable: %1</source>
+        <translation>无法访问：%1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>unreachable</source>
+        <translation>无法访问</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Stop every axis at once through the controller</source>
+        <translation>通过控制器立即停止所有轴</translation>
     </message>
 </context>
 <context>

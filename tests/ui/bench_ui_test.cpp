@@ -1947,6 +1947,110 @@ class BenchUiTest : public QObject {
     QCOMPARE(w->lastExport(), png);
   }
 
+  // CSV out of Results, read back: the delay rows are the stored result's
+  // numbers; the session data is the CLI's export (its fits.csv holds the
+  // shown lag); a folder that holds anything is refused and its file left
+  // as it was; a path that cannot be written says so and writes nothing.
+  void csvExportsReadBackAsTheStoredResult() {
+    auto w = window();
+    QVERIFY(w->planEditor()->loadPreset("paper"));
+    w->useSimulator(0.0, 3);
+    QSignalSpy ended(w.get(), &MainWindow::runEnded);
+    click(*w, "runButton");
+    QTRY_VERIFY_WITH_TIMEOUT(!ended.isEmpty(), 120000);
+    const QString session = QString::fromStdString(w->lastOutcome()->sessionPath);
+    QSignalSpy opened(w.get(), &MainWindow::sessionOpened);
+    w->openSession(session);
+    QTRY_VERIFY_WITH_TIMEOUT(!opened.isEmpty(), 60000);
+    const auto* outcome = w->resultView()->outcome();
+    QVERIFY(outcome && outcome->report && outcome->shownResult());
+    const auto& report = *outcome->report;
+    QCOMPARE(report.points.size(), std::size_t(2));
+
+    QTemporaryDir out;
+    const QString csv = out.filePath("delays.csv");
+    QVERIFY2(w->resultView()->exportDelayRowsTo(csv).isEmpty(), qPrintable(w->lastMessage()));
+    QCOMPARE(w->lastExport(), csv);
+    QFile file(csv);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    QStringList rows;
+    for (const QString& line : QString::fromUtf8(file.readAll()).split('\n', Qt::SkipEmptyParts))
+      if (!line.startsWith('#')) rows << line;
+    QCOMPARE(rows.front(), QString("test_point,axis,frequency_hz,quantity,value_ms,std_ms"));
+    QCOMPARE(rows.size(), 1 + 5 * 2);
+    int imuRows = 0;
+    for (const QString& row : rows.mid(1)) {
+      const QStringList f = row.split(',');
+      QCOMPARE(f.size(), 6);
+      const int index = f[0].toInt() - 1;
+      QVERIFY(index >= 0 && index < 2);
+      const auto& p = report.points[static_cast<std::size_t>(index)];
+      QCOMPARE(f[1], QString(fog::axisLabel(p.axis)));
+      if (f[3] == "imu_delay") {
+        ++imuRows;
+        // Exactly this analysis's number, and the stored record's to its rounding.
+        QCOMPARE(f[4].toDouble(), p.imuDelayMs);
+        QCOMPARE(f[5].toDouble(), p.imuDelayStdMs);
+        const auto* stored = outcome->shownResult()->point(p.index);
+        QVERIFY(stored);
+        QVERIFY2(std::abs(f[4].toDouble() - stored->imuDelayMs) < 1e-6, qPrintable(row));
+        QVERIFY2(std::abs(f[5].toDouble() - stored->imuDelayStdMs) < 1e-6, qPrintable(row));
+      }
+      if (f[3] == "measured_lag") QCOMPARE(f[4].toDouble(), p.lagMs);
+      if (f[3] == "gyro_delay") QCOMPARE(f[4].toDouble(), p.gyroDelayMs);
+      if (f[3] == "table_read_delay") QCOMPARE(f[4].toDouble(), report.constants.tableReadDelayMs);
+    }
+    QCOMPARE(imuRows, 2);
+
+    // The session's data as fogbench-cli export writes it.
+    const QString data = out.filePath("data");
+    const auto written = w->resultView()->exportDataTo(data);
+    QVERIFY2(written.isOk(), written.message().c_str());
+    QCOMPARE(w->lastExport(), data);
+    for (const char* name : {"metadata.json", "table.csv", "gyro.csv", "fits.csv", "report.json", "residuals_1.csv"})
+      QVERIFY2(QFile::exists(QDir(data).filePath(name)), name);
+    QFile fits(QDir(data).filePath("fits.csv"));
+    QVERIFY(fits.open(QIODevice::ReadOnly));
+    QStringList header;
+    int joints = 0;
+    for (const QString& line : QString::fromUtf8(fits.readAll()).split('\n', Qt::SkipEmptyParts)) {
+      if (line.startsWith('#')) continue;
+      if (header.isEmpty()) {
+        header = line.split(',');
+        continue;
+      }
+      const QStringList f = line.split(',');
+      if (f.value(2) != "joint") continue;
+      const auto& p = report.points[static_cast<std::size_t>(f[0].toInt() - 1)];
+      QCOMPARE(f[header.indexOf("lag_ms")].toDouble(), p.joint.lagS * 1e3);
+      ++joints;
+    }
+    QCOMPARE(joints, 2);
+
+    // Never over a file the operator did not name: a folder holding one is
+    // refused, the file untouched.
+    const QString busy = out.filePath("busy");
+    QVERIFY(QDir().mkpath(busy));
+    QFile keep(QDir(busy).filePath("notes.txt"));
+    QVERIFY(keep.open(QIODevice::WriteOnly));
+    keep.write("mine");
+    keep.close();
+    QVERIFY(!w->resultView()->exportDataTo(busy).isOk());
+    QVERIFY(keep.open(QIODevice::ReadOnly));
+    QCOMPARE(keep.readAll(), QByteArray("mine"));
+    keep.close();
+    QCOMPARE(QDir(busy).entryList(QDir::Files).size(), 1);
+
+    // A path that cannot be written (its folder is a file): a reason naming
+    // it, nothing written, the last export unchanged.
+    const QString blocked = QDir(busy).filePath("notes.txt/delays.csv");
+    const QString why = w->resultView()->exportDelayRowsTo(blocked);
+    QVERIFY2(why.contains(QDir::toNativeSeparators(blocked)), qPrintable(why));
+    QCOMPARE(w->lastExport(), data);
+    QVERIFY(keep.open(QIODevice::ReadOnly));
+    QCOMPARE(keep.readAll(), QByteArray("mine"));
+  }
+
   // A board whose port vanishes mid-run: the run ends incomplete by itself,
   // and the reason is shown whole in the error box (not only in the status
   // bar, where the frame counters cut it).

@@ -3,6 +3,9 @@
 // by hand below), the table and the plots driven by one selector.
 
 #include <QComboBox>
+#include <QFile>
+#include <QPushButton>
+#include <QTemporaryDir>
 #include <QTableWidget>
 #include <QtTest>
 #include <cmath>
@@ -137,6 +140,50 @@ class CompareTest : public QObject {
     }
     QCOMPARE(curves, 3);  // X 0.1 Hz, X 1 Hz, Y 1 Hz
     QVERIFY(view.trendPlot()->title().text().contains("FOG-3 SN7"));
+  }
+
+  // The comparison's rows as CSV, read back: A's and B's IMU delays and
+  // B − A with its σ are the comparison's numbers, one row per test point.
+  void theComparisonExportsAsCsv() {
+    fog::ui::CompareView view({"/x/a.fbs", "/x/b.fbs"});
+    QVERIFY(!view.exportButton()->isEnabled());
+    auto outcome = [](DelayReport r) {
+      auto o = std::make_shared<fog::ui::RunOutcome>();
+      o->report = std::move(r);
+      return std::shared_ptr<const fog::ui::RunOutcome>(o);
+    };
+    view.setOutcome(0, outcome(reportA()));
+    view.setOutcome(1, outcome(reportB(0.05)));
+    QVERIFY(view.exportButton()->isEnabled());
+    QTemporaryDir dir;
+    const QString path = dir.filePath("c.csv");
+    QVERIFY(view.exportTo(path).isEmpty());
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QString text = QString::fromUtf8(file.readAll());
+    QVERIFY(text.contains("# A: /x/a.fbs") && text.contains("# B: /x/b.fbs"));
+    QStringList rows;
+    for (const QString& line : text.split('\n', Qt::SkipEmptyParts))
+      if (!line.startsWith('#')) rows << line;
+    QCOMPARE(rows.size(), 1 + 3);
+    const QStringList header = rows.front().split(',');
+    const auto& c = view.comparisons();
+    for (int i = 0; i < 3; ++i) {
+      const QStringList f = rows[i + 1].split(',');
+      QCOMPARE(f.size(), header.size());
+      const auto& r = c[static_cast<std::size_t>(i)];
+      QCOMPARE(f[header.indexOf("b_imu_delay_ms")].toDouble(), r.bMs);
+      if (r.both()) {
+        QCOMPARE(f[header.indexOf("a_imu_delay_ms")].toDouble(), r.aMs);
+        QCOMPARE(f[header.indexOf("difference_ms")].toDouble(), r.differenceMs);
+        QCOMPARE(f[header.indexOf("difference_std_ms")].toDouble(), r.differenceStdMs);
+      } else {
+        QVERIFY(f[header.indexOf("a_imu_delay_ms")].isEmpty());
+        QVERIFY(f[header.indexOf("difference_ms")].isEmpty());
+      }
+    }
+    // The 1 Hz row: 0.4700 + 0.05 against 0.4660 + 0.05.
+    QVERIFY(std::abs(rows[2].split(',')[header.indexOf("difference_ms")].toDouble() - 0.0040) < 1e-12);
   }
 };
 

@@ -25,10 +25,12 @@
 #include <QTextDocument>
 #include <QtTest>
 #include <memory>
+#include <qwt_plot.h>
 
 #include "core/acquisition/acquisition.h"
 #include "core/acquisition/simulator_source.h"
 #include "ui/language/language.h"
+#include "ui/diagnosis_view.h"
 #include "ui/main_window.h"
 #include "ui/result_view.h"
 
@@ -36,10 +38,11 @@ using fog::ui::MainWindow;
 
 namespace {
 
-// Words a Chinese window keeps: units, names and identifiers of the trade.
+// Words a Chinese window keeps: units, names and identifiers of the trade, key names.
 const QStringList kKept = {"IMU", "CRLB", "fogbench", "Hz", "ms", "MHz", "ppm", "dof", "RMS", "Allan", "IEEE",
                            "Std", "SHA", "UTC", "FOG", "tcp", "HOST", "PORT", "dev", "ttyS", "ttyUSB", "fbs",
-                           "json", "csv", "CSV", "PDF", "PNG", "JSON", "Sagnac", "Qwt"};
+                           "json", "csv", "CSV", "PDF", "PNG", "JSON", "Sagnac", "Qwt",
+                           "Ctrl"};  // a key as its keycap reads
 
 // English in a text: runs of three or more Latin letters that are not kept
 // words, file names or paths.
@@ -162,11 +165,43 @@ class DeskTest : public QObject {
       QVERIFY2(viewport.contains(row), qPrintable(QString("delay row %1 (%2) is not in view")
                                                       .arg(r + 1).arg(table->item(r, 0)->text())));
     }
+    // ... and no column scrolled out sideways: the basis is in view (cut
+    // if need be, whole in its tooltip).
+    // A column too narrow to read is hidden and its text is in the tooltips.
+    QCOMPARE(table->horizontalScrollBar()->maximum(), 0);
+    if (table->isColumnHidden(4)) {
+      QVERIFY(table->item(0, 0)->toolTip().contains(table->item(0, 4)->text()));
+    } else {
+      const QRect basis = table->visualItemRect(table->item(0, 4));
+      QVERIFY2(viewport.contains(basis.topLeft()) && basis.width() >= 60, "the basis column is out of view");
+    }
     const QRect window(QPoint(0, 0), w_->size());
     auto* verdict = w_->findChild<QLabel*>("verdictLabel");
     QVERIFY(verdict && verdict->isVisible());
     QVERIFY2(window.contains(inWindow(verdict)), "the verdict is outside the window");
     QVERIFY2(window.contains(inWindow(table)), "the delay table is outside the window");
+  }
+
+  // Diagnosis: its plots keep the room their rows of labels need; a small
+  // window scrolls the view instead of squeezing them.
+  void diagnosisPlotsKeepTheirRoom() {
+    w_->showView(MainWindow::kResults);
+    QSignalSpy ended(w_.get(), &MainWindow::diagnosisEnded);
+    w_->diagnoseShown();
+    QTRY_VERIFY_WITH_TIMEOUT(!ended.isEmpty(), 120000);
+    QVERIFY(ended.front().front().toBool());
+    w_->showView(MainWindow::kDiagnosis);
+    settle();
+    auto* view = w_->diagnosisView();
+    for (QwtPlot* plot : {view->curvePlot(), view->gapMapPlot(), view->spectrumPlot(), view->shrinkPlot()}) {
+      QVERIFY(plot->isVisible());
+      QVERIFY2(plot->height() >= plot->minimumHeight(), qPrintable(QString("%1 squeezed to %2 px (minimum %3)")
+                                                                      .arg(plot->objectName())
+                                                                      .arg(plot->height())
+                                                                      .arg(plot->minimumHeight())));
+      QVERIFY2(plot->canvas()->height() >= 120,
+               qPrintable(QString("%1's canvas is %2 px tall").arg(plot->objectName()).arg(plot->canvas()->height())));
+    }
   }
 
   // Every view: no label over another, and in zh_CN no English left.

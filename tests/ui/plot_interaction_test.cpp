@@ -142,6 +142,87 @@ class PlotInteractionTest : public QObject {
     QVERIFY2(text.contains(QString("Δt = %1").arg(fog::ui::formatDuration((0.6658 - 0.2) * 1e-3))), qPrintable(text));
     QVERIFY2(text.contains(QString("t = %1 ms").arg(fog::ui::localNumber(0.6658, 'f', 4))), qPrintable(text));
   }
+
+  // Two time plots of one view: a range set on either is taken by the other.
+  void linkedTimeAxesFollowEachOther() {
+    SeriesPlot a("a", "angle (°)", "°"), b("b", "residual (arcsec)", "″");
+    for (SeriesPlot* p : {&a, &b}) {
+      p->resize(600, 300);
+      p->show();
+      p->addData("table", QPen(Qt::blue), line(1.0, 0.0, 0.001));
+      p->showAll();
+    }
+    fog::ui::TimeAxisLink link;
+    link.add(a.interaction());
+    link.add(b.interaction());
+    QCOMPARE(a.interaction()->timeAxisLink(), &link);
+    a.setAxisScale(QwtPlot::xBottom, 0.5, 0.75);
+    a.replot();
+    QCOMPARE(b.axisScaleDiv(QwtPlot::xBottom).lowerBound(), 0.5);
+    QCOMPARE(b.axisScaleDiv(QwtPlot::xBottom).upperBound(), 0.75);
+    // And back the other way, by the wheel on b.
+    const QPoint centre = canvas(b)->rect().center();
+    QWheelEvent wheel(QPointF(centre), QPointF(canvas(b)->mapToGlobal(centre)), QPoint(), QPoint(0, 240),
+                      Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+    QApplication::sendEvent(canvas(b), &wheel);
+    const QwtScaleDiv zoomed = b.axisScaleDiv(QwtPlot::xBottom);
+    QVERIFY(zoomed.range() < 0.2);
+    QCOMPARE(a.axisScaleDiv(QwtPlot::xBottom).lowerBound(), zoomed.lowerBound());
+    QCOMPARE(a.axisScaleDiv(QwtPlot::xBottom).upperBound(), zoomed.upperBound());
+    // A paused link passes nothing on.
+    link.setPaused(true);
+    a.setAxisScale(QwtPlot::xBottom, 1.0, 2.0);
+    a.replot();
+    QCOMPARE(b.axisScaleDiv(QwtPlot::xBottom).lowerBound(), zoomed.lowerBound());
+  }
+
+  // On a time plot the wheel zooms time only; with Ctrl both axes.
+  void theWheelZoomsTimeOnlyUnlessCtrlIsHeld() {
+    SeriesPlot plot("test", "angle (°)");
+    plot.resize(700, 400);
+    plot.show();
+    plot.addData("table", QPen(Qt::blue), line(1.0, 0.0, 0.001));
+    plot.showAll();
+    const QwtScaleDiv x0 = plot.axisScaleDiv(QwtPlot::xBottom), y0 = plot.axisScaleDiv(QwtPlot::yLeft);
+    const QPoint centre = canvas(plot)->rect().center();
+    auto wheel = [&](Qt::KeyboardModifiers modifiers) {
+      QWheelEvent e(QPointF(centre), QPointF(canvas(plot)->mapToGlobal(centre)), QPoint(), QPoint(0, 240),
+                    Qt::NoButton, modifiers, Qt::NoScrollPhase, false);
+      QApplication::sendEvent(canvas(plot), &e);
+    };
+    wheel(Qt::NoModifier);
+    QVERIFY(plot.axisScaleDiv(QwtPlot::xBottom).range() < 0.8 * x0.range());
+    QCOMPARE(plot.axisScaleDiv(QwtPlot::yLeft).lowerBound(), y0.lowerBound());
+    QCOMPARE(plot.axisScaleDiv(QwtPlot::yLeft).upperBound(), y0.upperBound());
+    wheel(Qt::ControlModifier);
+    QVERIFY(plot.axisScaleDiv(QwtPlot::yLeft).range() < 0.8 * y0.range());
+  }
+
+  // The tracker names every curve with its value at the mouse's time, those
+  // of a linked plot too.
+  void theTrackerListsEveryCurveAtTheTime() {
+    SeriesPlot a("a", "angle (°)", "°"), b("b", "residual (arcsec)", "″");
+    a.addData("table", QPen(Qt::blue), line(2.0, 0.0, 0.001));
+    a.addData("gyro (integrated)", QPen(Qt::red), line(2.0, 0.25, 0.002));
+    a.addFunction("fit", QPen(Qt::black), [](double t) { return 3.0 * t; });
+    b.addData("residual", QPen(Qt::green), line(-1.0, 0.0, 0.001));
+    auto number = [](double v) { return fog::ui::localNumber(v, 'g', 4); };
+    QString text = a.interaction()->trackerText(1.5);
+    QVERIFY2(text.contains(QString("t = %1 s").arg(fog::ui::localNumber(1.5, 'f', 4))), qPrintable(text));
+    QVERIFY2(text.contains(QString("table: %1 °").arg(number(3.0))), qPrintable(text));
+    QVERIFY2(text.contains(QString("gyro: %1 °").arg(number(2.5))), qPrintable(text));
+    QVERIFY2(text.contains(QString("fit: %1 °").arg(number(4.5))), qPrintable(text));
+    QVERIFY2(!text.contains("residual"), qPrintable(text));
+    fog::ui::TimeAxisLink link;
+    link.add(a.interaction());
+    link.add(b.interaction());
+    text = a.interaction()->trackerText(1.5);
+    QVERIFY2(text.contains(QString("residual: %1 ″").arg(number(-1.5))), qPrintable(text));
+    QVERIFY2(text.contains(QString("gyro: %1 °").arg(number(2.5))), qPrintable(text));
+    // Outside a curve's data it is left out, not invented.
+    text = a.interaction()->trackerText(5.0);
+    QVERIFY2(!text.contains("table:") && text.contains("fit:"), qPrintable(text));
+  }
 };
 
 QTEST_MAIN(PlotInteractionTest)

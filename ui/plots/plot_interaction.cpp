@@ -10,6 +10,9 @@
 #include <qwt_plot.h>
 #include <qwt_plot_marker.h>
 #include <qwt_plot_panner.h>
+#include <qwt_plot_picker.h>
+#include <qwt_picker_machine.h>
+#include <qwt_scale_widget.h>
 #include <qwt_scale_div.h>
 #include <qwt_scale_map.h>
 #include <qwt_text.h>
@@ -30,6 +33,28 @@ const QColor kCursorColour(150, 30, 150);
 QString valueText(double v, const QString& unit) {
   return localNumber(v, 'g', 4) + (unit.isEmpty() ? QString() : QStringLiteral(" ") + unit);
 }
+
+// The mouse tracker: the plot interaction's text at the mouse's x.
+class CurveTracker : public QwtPlotPicker {
+ public:
+  CurveTracker(QWidget* canvas, const PlotInteraction* owner)
+      : QwtPlotPicker(QwtPlot::xBottom, QwtPlot::yLeft, QwtPicker::CrossRubberBand, QwtPicker::AlwaysOn, canvas),
+        owner_(owner) {
+    setStateMachine(new QwtPickerTrackerMachine());
+    setRubberBandPen(QPen(QColor(150, 150, 150), 0, Qt::DotLine));
+    setTrackerPen(QPen(Qt::black));
+  }
+
+ protected:
+  QwtText trackerTextF(const QPointF& pos) const override {
+    QwtText text(owner_->trackerText(pos.x()));
+    text.setBackgroundBrush(QColor(255, 255, 255, 220));
+    return text;
+  }
+
+ private:
+  const PlotInteraction* owner_;
+};
 
 }  // namespace
 
@@ -57,17 +82,20 @@ PlotInteraction::PlotInteraction(QwtPlot* plot, Options options)
   panner_->setMouseButton(Qt::LeftButton);
   Qt::Orientations pan;
   if (options_.zoomX) pan |= Qt::Horizontal;
-  if (options_.zoomY) pan |= Qt::Vertical;
+  if (options_.zoomY && !options_.xOnlyZoom) pan |= Qt::Vertical;
   panner_->setOrientations(pan);
   // Secondary axes (a colour bar) stay put.
   panner_->setAxisEnabled(kYRight, false);
   panner_->setAxisEnabled(kXTop, false);
   connect(panner_, &QwtPlotPanner::panned, this, &PlotInteraction::viewChangedByUser);
+  if (options_.tracker) new CurveTracker(canvas, this);
 
   hint_ = new QLabel(canvas);
   hint_->setObjectName("plotHint");
   hint_->setAttribute(Qt::WA_TransparentForMouseEvents);
-  QString text = tr("wheel: zoom · drag: pan · double-click: whole view");
+  QString text = options_.xOnlyZoom && options_.zoomY
+                     ? tr("wheel: zoom time (Ctrl: both axes) · drag: pan · double-click: whole view")
+                     : tr("wheel: zoom · drag: pan · double-click: whole view");
   if (options_.cursors) text += tr(" · click: cursors A/B · right-click: remove them");
   hint_->setText(text);
   QFont small = hint_->font();
@@ -179,16 +207,36 @@ void PlotInteraction::dataChanged() {
   updateReadout();
 }
 
+QString PlotInteraction::xText(double x) const {
+  if (!options_.timeAxis) return valueText(x, options_.xUnit);
+  return options_.secondsPerX == 1e-3 ? tr("%1 ms").arg(localNumber(x, 'f', 4))
+                                      : tr("%1 s").arg(localNumber(x * options_.secondsPerX, 'f', 4));
+}
+
+PlotInteraction::Values PlotInteraction::valuesAt(double x) const { return valuesAt_ ? valuesAt_(x) : Values{}; }
+
+QStringList PlotInteraction::valueLines(double x) const {
+  QStringList lines;
+  for (const auto& [name, value] : valuesAt(x))
+    lines << QString("%1: %2").arg(name.section(QStringLiteral(" ("), 0, 0), valueText(value, options_.yUnit));
+  return lines;
+}
+
+QString PlotInteraction::trackerText(double x) const {
+  QStringList lines;
+  lines << QString("%1 = %2").arg(options_.timeAxis ? QStringLiteral("t") : QStringLiteral("x"), xText(x));
+  lines << valueLines(x);
+  if (link_)
+    for (PlotInteraction* other : link_->members())
+      if (other != this) lines << other->valueLines(x);
+  return lines.join("\n");
+}
+
 void PlotInteraction::updateReadout() {
   // First line: where A and B are and Δt; then a line per curve with its
   // value at A and B and the change (dropped when the canvas is too small
   // to leave the curves visible).
   const QString xName = options_.timeAxis ? QStringLiteral("t") : QStringLiteral("x");
-  auto xText = [&](double x) {
-    if (!options_.timeAxis) return valueText(x, options_.xUnit);
-    return options_.secondsPerX == 1e-3 ? tr("%1 ms").arg(localNumber(x, 'f', 4))
-                                        : tr("%1 s").arg(localNumber(x * options_.secondsPerX, 'f', 4));
-  };
   QStringList head;
   Values at[2];
   for (int i = 0; i < 2; ++i) {
@@ -264,8 +312,9 @@ bool PlotInteraction::eventFilter(QObject* watched, QEvent* event) {
 #else
       const QPointF pos = we->posF();
 #endif
+      const bool both = !options_.xOnlyZoom || (we->modifiers() & Qt::ControlModifier);
       for (int axis : {kXBottom, kYLeft}) {
-        if ((axis == kXBottom && !options_.zoomX) || (axis == kYLeft && !options_.zoomY)) continue;
+        if ((axis == kXBottom && !options_.zoomX) || (axis == kYLeft && (!options_.zoomY || !both))) continue;
         if (!plot_->axisEnabled(axis)) continue;
         const QwtScaleMap map = plot_->canvasMap(axis);
         const double c = axis == kXBottom ? pos.x() : pos.y();
@@ -279,7 +328,16 @@ bool PlotInteraction::eventFilter(QObject* watched, QEvent* event) {
     }
     case QEvent::MouseButtonPress: {
       auto* me = static_cast<QMouseEvent*>(event);
-      if (me->button() == Qt::LeftButton) pressPos_ = me->pos();
+      if (me->button() == Qt::LeftButton) {
+        pressPos_ = me->pos();
+        // A time plot pans along time; Ctrl+drag both ways. Set before the
+        // panner (an earlier filter on the canvas) sees the press.
+        if (options_.xOnlyZoom) {
+          const bool both = (me->modifiers() & Qt::ControlModifier) && options_.zoomY;
+          panner_->setMouseButton(Qt::LeftButton, me->modifiers() & Qt::ControlModifier);
+          panner_->setOrientations(both ? Qt::Horizontal | Qt::Vertical : Qt::Horizontal);
+        }
+      }
       if (me->button() == Qt::RightButton && options_.cursors && cursorCount() > 0) {
         clearCursors();
         return true;
@@ -307,6 +365,36 @@ bool PlotInteraction::eventFilter(QObject* watched, QEvent* event) {
       break;
   }
   return false;
+}
+
+TimeAxisLink::TimeAxisLink(QObject* parent) : QObject(parent) {}
+
+void TimeAxisLink::add(PlotInteraction* member) {
+  members_.push_back(member);
+  member->link_ = this;
+  QwtPlot* plot = member->plot();
+  connect(plot->axisWidget(kXBottom), &QwtScaleWidget::scaleDivChanged, this, [this, member] { follow(member); });
+}
+
+std::vector<PlotInteraction*> TimeAxisLink::members() const {
+  std::vector<PlotInteraction*> out;
+  for (const auto& m : members_)
+    if (m) out.push_back(m);
+  return out;
+}
+
+void TimeAxisLink::follow(PlotInteraction* from) {
+  if (paused_ || passing_) return;
+  const QwtScaleDiv& div = from->plot()->axisScaleDiv(kXBottom);
+  const double lower = div.lowerBound(), upper = div.upperBound();
+  passing_ = true;
+  for (PlotInteraction* other : members())
+    if (other != from) {
+      other->plot()->setAxisScale(kXBottom, lower, upper);
+      other->plot()->replot();
+    }
+  passing_ = false;
+  emit rangeChanged(lower, upper);
 }
 
 }  // namespace fog::ui

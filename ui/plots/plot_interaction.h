@@ -1,7 +1,8 @@
 #pragma once
 // One way to handle every plot of the bench (Results, Diagnosis, Noise):
-//   wheel          zoom about the cursor
-//   drag (left)    pan
+//   wheel          zoom about the cursor (a time plot, Options::xOnlyZoom:
+//                  the time axis only; Ctrl+wheel zooms both axes)
+//   drag (left)    pan (a time plot: along time only; Ctrl+drag both ways)
 //   double-click   back to the whole view ("home")
 //   click          a measuring cursor: A, then B, then A again ...; the
 //                  readout gives x at each, Δx (Δt as a duration on time
@@ -11,8 +12,12 @@
 // plot exports (QwtPlotRenderer) leave it out. The cursors are plot markers
 // and do appear in exports; they stay attached to the plot (which owns them),
 // so a view must not detach all of its plot's items (detach by type).
+// The tracker (Options::tracker) follows the mouse and lists the time and
+// every curve's value at that time, those of the plots linked to it too.
+// A view's time plots share one time axis through a TimeAxisLink.
 
 #include <QObject>
+#include <QPointer>
 #include <QPoint>
 #include <QString>
 #include <QStringList>
@@ -47,6 +52,11 @@ class PlotInteraction : public QObject {
     QString xUnit;            // unit of x when it is not a time ("Hz")
     QString yUnit;            // unit appended to the curves' values ("″", "")
     bool zoomX = true, zoomY = true;  // which axes the wheel zooms and a drag pans
+    // A time plot: the wheel and a drag act on x only unless Ctrl is held
+    // (then on both axes, where zoomY allows).
+    bool xOnlyZoom = false;
+    // A tracker at the mouse listing x and every curve's value there.
+    bool tracker = false;
   };
   // A curve's name and its value at some x (the readout's lines).
   using Values = std::vector<std::pair<QString, double>>;
@@ -80,6 +90,16 @@ class PlotInteraction : public QObject {
   // Call when the data changed: cursors go, values are read anew.
   void dataChanged();
 
+  QwtPlot* plot() const { return plot_; }
+  const Options& options() const { return options_; }
+  // This plot's curves at x (setValuesAt's function; empty without one).
+  Values valuesAt(double x) const;
+  // The tracker's text at x: "t = 1.2345 s", then a line per curve with its
+  // value ("gyro: 0.4521 °"), this plot's curves first, then those of every
+  // plot linked to it (each with its own unit).
+  QString trackerText(double x) const;
+  class TimeAxisLink* timeAxisLink() const { return link_; }
+
  signals:
   // The operator zoomed or panned (not emitted for resetView()).
   void viewChangedByUser();
@@ -88,8 +108,11 @@ class PlotInteraction : public QObject {
   bool eventFilter(QObject* watched, QEvent* event) override;
 
  private:
+  friend class TimeAxisLink;
   void updateReadout();
   void placeOverlays();
+  QString xText(double x) const;
+  QStringList valueLines(double x) const;  // "name: value unit" per curve of this plot
 
   QwtPlot* plot_;
   // The plot's canvas, kept: events reach the filter while the plot is being
@@ -99,6 +122,7 @@ class PlotInteraction : public QObject {
   Options options_;
   QwtPlotPanner* panner_ = nullptr;
   QwtPlotMagnifier* magnifier_ = nullptr;
+  QPointer<TimeAxisLink> link_;
   QLabel* hint_ = nullptr;
   QLabel* readout_ = nullptr;
   QStringList readoutLines_;
@@ -112,6 +136,34 @@ class PlotInteraction : public QObject {
   QTimer clickTimer_;
   QPoint pressPos_;
   double pendingX_ = 0.0;
+};
+
+// The time plots of one view move together: when one's time axis changes
+// (wheel, drag, double-click, or setAxisScale + replot from code) every other
+// member takes its range. The members' trackers list the curves of all.
+// A plot belongs to at most one link; the link must outlive none of its
+// members' use (parent it to the view).
+class TimeAxisLink : public QObject {
+  Q_OBJECT
+
+ public:
+  explicit TimeAxisLink(QObject* parent = nullptr);
+  void add(PlotInteraction* member);
+  std::vector<PlotInteraction*> members() const;
+  // While paused, ranges are not passed on (a view that sets every member's
+  // range itself, as Live while it follows the stream).
+  void setPaused(bool paused) { paused_ = paused; }
+
+ signals:
+  // A member's time range changed and the others took it.
+  void rangeChanged(double lower, double upper);
+
+ private:
+  void follow(PlotInteraction* from);
+
+  std::vector<QPointer<PlotInteraction>> members_;
+  bool paused_ = false;
+  bool passing_ = false;  // while setting the others: their own changes are not passed back
 };
 
 }  // namespace fog::ui

@@ -5,11 +5,9 @@
 #include <cmath>
 #include <limits>
 #include <qwt_legend.h>
-#include <qwt_picker_machine.h>
 #include <qwt_plot_canvas.h>
 #include <qwt_plot_curve.h>
 #include <qwt_plot_grid.h>
-#include <qwt_plot_picker.h>
 #include <qwt_scale_div.h>
 #include <qwt_scale_widget.h>
 #include <qwt_symbol.h>
@@ -51,6 +49,8 @@ SeriesPlot::SeriesPlot(const QString& title, const QString& yTitle, const QStrin
   PlotInteraction::Options options;
   options.cursors = true;
   options.yUnit = valueUnit;
+  options.xOnlyZoom = true;
+  options.tracker = true;
   interaction_ = new PlotInteraction(this, options);
   interaction_->setHomeFunction([this] { showAll(); });
   interaction_->setValuesAt([this](double t) {
@@ -61,11 +61,6 @@ SeriesPlot::SeriesPlot(const QString& title, const QString& yTitle, const QStrin
     }
     return values;
   });
-
-  picker_ = new QwtPlotPicker(kTimeAxis, kValueAxis, QwtPicker::CrossRubberBand, QwtPicker::AlwaysOn, canvas());
-  picker_->setStateMachine(new QwtPickerTrackerMachine());
-  picker_->setRubberBandPen(QPen(QColor(150, 150, 150), 0, Qt::DotLine));
-  picker_->setTrackerPen(QPen(Qt::black));
 
   thinTimer_.setSingleShot(true);
   thinTimer_.setInterval(kThinningDelayMs);

@@ -6,9 +6,11 @@
 // they stay smooth at any zoom. Antialiasing is off for data curves.
 //
 // Interaction (ui/plots/plot_interaction.h, as on every plot): wheel zoom, drag
-// pan, double-click for the whole data, click for measuring cursors A and B
-// (Δt and every curve's value at both, from the full data). The picker reads
-// out (time, value) at the mouse.
+// pan (both along time only; Ctrl for both axes), double-click for the whole
+// data, click for measuring cursors A and B (Δt and every curve's value at
+// both, from the full data). The tracker lists the time and every curve's
+// value at the mouse (and those of plots linked with interaction()'s
+// TimeAxisLink).
 
 #include <QPen>
 #include <QString>
@@ -21,7 +23,6 @@
 #include "ui/plot_data/test_point_traces.h"
 
 class QwtPlotCurve;
-class QwtPlotPicker;
 
 namespace fog::ui {
 
@@ -68,7 +69,6 @@ class SeriesPlot : public QwtPlot {
 
   std::vector<Curve> curves_;
   PlotInteraction* interaction_ = nullptr;
-  QwtPlotPicker* picker_ = nullptr;
   QTimer thinTimer_;
 };
 
