@@ -32,7 +32,7 @@
 <context>
     <name>fog::ui::BenchSettingsDialog</name>
     <message>
-        <location filename="../../ui/bench_settings_dialog.cpp" line="+79"/>
+        <location filename="../../ui/bench_settings_dialog.cpp" line="+85"/>
         <source>Bench constants</source>
         <translation>测试台常数</translation>
     </message>
@@ -41,17 +41,18 @@
         <location line="+1"/>
         <location line="+1"/>
         <location line="+1"/>
-        <location line="+27"/>
+        <location line="+51"/>
         <source> ms</source>
         <translation> ms</translation>
     </message>
     <message>
-        <location line="-26"/>
+        <location line="-50"/>
+        <location line="+37"/>
         <source> °</source>
         <translation> °</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-36"/>
         <source> °/pulse</source>
         <translation> °/脉冲</translation>
     </message>
@@ -118,6 +119,56 @@
     </message>
     <message>
         <location line="+4"/>
+        <source>not stated (found from the data)</source>
+        <translation>未声明（由数据判定）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>NED: x north, y east, z down</source>
+        <translation>NED：x 北，y 东，z 下</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>ENU: x east, y north, z up</source>
+        <translation>ENU：x 东，y 北，z 上</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>FRD: x forward, y right, z down</source>
+        <translation>FRD：x 前，y 右，z 下</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>RFU: x right, y forward, z up</source>
+        <translation>RFU：x 右，y 前，z 上</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Where the IMU&apos;s axes point with the table at zero. The Earth rate and gravity the gyros see depend on it; the diagnosis replays the session in it and checks it against the data.</source>
+        <translation>转台各轴为零时 IMU 各轴的指向。陀螺敏感到的地球自转角速度和重力取决于它；诊断在该坐标系中回放会话，并用数据检验它。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>not stated</source>
+        <translation>未声明</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Azimuth of the IMU&apos;s forward axis, from north toward east</source>
+        <translation>IMU 前向轴的方位角，自北向东计</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>IMU frame at zero angles</source>
+        <translation>零位时的 IMU 坐标系</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>  forward axis heading</source>
+        <translation>  前向轴方位角</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>IMU delay limit (acceptance)</source>
         <translation>IMU 延迟限值（验收）</translation>
     </message>
@@ -1360,7 +1411,7 @@ Press Diagnose in the Results view to start it again.</source>
 <context>
     <name>fog::ui::MainWindow</name>
     <message>
-        <location filename="../../ui/main_window.cpp" line="+151"/>
+        <location filename="../../ui/main_window.cpp" line="+152"/>
         <source>fogbench %1 — FOG IMU delay bench</source>
         <translation>fogbench %1 —— 光纤陀螺 IMU 延迟测试台</translation>
     </message>
@@ -1386,12 +1437,12 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+1023"/>
+        <location line="+1027"/>
         <source>Diagnosis</source>
         <translation>诊断</translation>
     </message>
     <message>
-        <location line="-1020"/>
+        <location line="-1024"/>
         <source>Noise</source>
         <translation>噪声</translation>
     </message>
@@ -2014,7 +2065,7 @@ File: %1</source>
         <translation>%1：显示第 %2 个结果（共 %3 个）</translation>
     </message>
     <message>
-        <location line="+191"/>
+        <location line="+196"/>
         <source>Compare %1</source>
         <translation>比较 %1</translation>
     </message>
@@ -2024,7 +2075,7 @@ File: %1</source>
         <translation>无法读取该会话（见消息）</translation>
     </message>
     <message>
-        <location line="-203"/>
+        <location line="-208"/>
         <source>%1 re-analysed</source>
         <translation>%1 已重新分析</translation>
     </message>
@@ -2080,7 +2131,7 @@ File: %1</source>
         <translation>正在诊断 %1 …</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+32"/>
         <source>Diagnosis of %1 cancelled</source>
         <translation>%1 的诊断已取消</translation>
     </message>
@@ -2115,7 +2166,7 @@ File: %1</source>
         <translation>正在计算 Allan 标准差 …</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>No noise analysis: %1</source>
         <translation>无噪声分析：%1</translation>
     </message>
@@ -2479,7 +2530,7 @@ File: %1</source>
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location filename="../../ui/main_window.cpp" line="-1164"/>
+        <location filename="../../ui/main_window.cpp" line="-1170"/>
         <location filename="../../ui/plan_editor.cpp" line="-323"/>
         <location filename="../../ui/plots/delta_picker.cpp" line="+1"/>
         <source>%1 s</source>
@@ -2750,18 +2801,18 @@ File: %1</source>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+282"/>
+        <location line="+284"/>
         <source>quantity</source>
         <translation>量</translation>
     </message>
     <message>
-        <location line="-281"/>
-        <location line="+366"/>
+        <location line="-283"/>
+        <location line="+368"/>
         <source>value</source>
         <translation>数值</translation>
     </message>
     <message>
-        <location line="-365"/>
+        <location line="-367"/>
         <source>std. uncertainty</source>
         <translation>标准不确定度</translation>
     </message>
@@ -2841,7 +2892,7 @@ File: %1</source>
         <translation>地球自转角速率，由拟合的陀螺趋势项吸收</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+6"/>
         <source>Test plan</source>
         <translation>测试计划</translation>
     </message>
@@ -2897,13 +2948,13 @@ File: %1</source>
         <translation>记录时长 (s)</translation>
     </message>
     <message>
-        <location line="-34"/>
-        <location line="+37"/>
+        <location line="-36"/>
+        <location line="+39"/>
         <source>not stated</source>
         <translation>未给出</translation>
     </message>
     <message>
-        <location line="-248"/>
+        <location line="-250"/>
         <source>SIMULATED DATA — not a measurement of a real IMU</source>
         <translation>仿真数据 —— 并非对真实 IMU 的测量</translation>
     </message>
@@ -2928,7 +2979,17 @@ File: %1</source>
         <translation>数据流给出的值，否则为测试台常数：把脉冲换算为度</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+8"/>
+        <source>IMU frame</source>
+        <translation>IMU 坐标系</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the IMU&apos;s axes at zero table angles; the diagnosis checks it against the data</source>
+        <translation>转台各轴为零时 IMU 各轴的指向；诊断用数据检验它</translation>
+    </message>
+    <message>
+        <location line="+36"/>
         <source>The plan was not recorded with the data; the test points as the stream states them:</source>
         <translation>数据未附带测试计划；以下为数据流给出的测试点：</translation>
     </message>
@@ -3515,7 +3576,7 @@ File: %1</source>
         <translation>χ²/dof %1</translation>
     </message>
     <message>
-        <location line="+103"/>
+        <location line="+104"/>
         <source>NO VERDICT</source>
         <translation>无判定</translation>
     </message>
@@ -3554,7 +3615,7 @@ File: %1</source>
         <translation>%1 个测试点未得到延迟</translation>
     </message>
     <message>
-        <location line="-336"/>
+        <location line="-337"/>
         <source>table angle (encoder, %1 ms)</source>
         <translation>转台角度（编码器，%1 ms）</translation>
     </message>
@@ -3564,7 +3625,7 @@ File: %1</source>
         <translation>陀螺角度（增量累加，%1 ms）</translation>
     </message>
     <message>
-        <location line="+337"/>
+        <location line="+338"/>
         <source>INCOMPLETE (the run stopped early); its data give %1</source>
         <translation>不完整（运行提前停止）；其数据给出 %1</translation>
     </message>
@@ -4960,8 +5021,8 @@ The session itself is unchanged.</source>
     </message>
     <message>
         <location line="+1"/>
-        <source>heading %1 +- %2 deg, table every %3 ms, IMU every %4 ms, bias instability %5 deg/h over %6 s (%7)</source>
-        <translation>航向 %1 ± %2 deg，转台每 %3 ms、IMU 每 %4 ms 一个样本，零偏不稳定性 %5 deg/h、相关时间 %6 s（%7）</translation>
+        <source>z %1, heading %2 +- %3 deg, table every %4 ms, IMU every %5 ms, bias instability %6 deg/h over %7 s (%8)</source>
+        <translation>z 轴%1，航向 %2 ± %3 deg，转台每 %4 ms、IMU 每 %5 ms 一个样本，零偏不稳定性 %6 deg/h、相关时间 %7 s（%8）</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -5767,6 +5828,141 @@ The session itself is unchanged.</source>
         <location line="+3"/>
         <source>left out: %1</source>
         <translation>未计入：%1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>not stated</source>
+        <translation>未声明</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>north-east-down (x north, y east, z down)</source>
+        <translation>北东地（x 北，y 东，z 下）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>east-north-up (x east, y north, z up)</source>
+        <translation>东北天（x 东，y 北，z 上）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>forward-right-down (x forward, y right, z down)</source>
+        <translation>前右下（x 前，y 右，z 下）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>right-forward-up (x right, y forward, z up)</source>
+        <translation>右前上（x 右，y 前，z 上）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1, forward at %2 deg from north</source>
+        <translation>%1，前向轴方位 %2 deg（自北起）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>up</source>
+        <translation>向上</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>down</source>
+        <translation>向下</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the IMU&apos;s frame was not checked: the plan gives too few gyro trend and cross-axis cells</source>
+        <translation>未检验 IMU 坐标系：计划给出的陀螺趋势与交叉轴单元太少</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the IMU&apos;s frame was not checked: the plan&apos;s swings do not turn the Earth rate between the gyros</source>
+        <translation>未检验 IMU 坐标系：计划中的摆动不会使地球自转角速度在各陀螺之间转换</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the IMU&apos;s frame was not checked: the plan&apos;s swings do not turn the vertical Earth rate between the gyros</source>
+        <translation>未检验 IMU 坐标系：计划中的摆动不会使地球自转角速度的垂直分量在各陀螺之间转换</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the stated frame is used</source>
+        <translation>采用所声明的坐标系</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>z down is assumed: state the IMU&apos;s frame</source>
+        <translation>假定 z 轴向下：请声明 IMU 坐标系</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the data cannot tell the IMU&apos;s z axis up from down (vertical Earth rate %1 +- %2 of the z-%3 frame&apos;s)</source>
+        <translation>数据无法分辨 IMU 的 z 轴向上还是向下（地球自转垂直分量为 z 轴%3坐标系的 %1 ± %2 倍）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the data show the IMU&apos;s z axis %1 (vertical Earth rate %2 +- %3 of the z-%4 frame&apos;s)</source>
+        <translation>数据表明 IMU 的 z 轴%1（地球自转垂直分量为 z 轴%4坐标系的 %2 ± %3 倍）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the data show the IMU&apos;s z axis %1 (vertical Earth rate %2 +- %3 of the z-%4 frame&apos;s), as the bench constants state</source>
+        <translation>数据表明 IMU 的 z 轴%1（地球自转垂直分量为 z 轴%4坐标系的 %2 ± %3 倍），与台架常数的声明一致</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the bench constants state %1: the replays use the frame the data show</source>
+        <translation>台架常数声明为%1：回放采用数据所表明的坐标系</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the bench constants do not state the IMU&apos;s frame, so the replays use the one found: state it in the bench constants</source>
+        <translation>台架常数未声明 IMU 坐标系，回放采用由数据判定的坐标系：请在台架常数中声明</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the heading the data show, %1 deg, is %2 deg from the stated frame&apos;s (%3 deg for x): check the bench&apos;s heading</source>
+        <translation>数据表明的方位角 %1 deg 与所声明坐标系的方位角（x 轴 %3 deg）相差 %2 deg：请检查台架的方位</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the replays use the one found</source>
+        <translation>回放采用由数据判定的方位角</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the IMU&apos;s frame contradicts the data (no effect named)</source>
+        <translation>IMU 坐标系与数据矛盾（不指认任何效应）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the data show the IMU&apos;s z axis %1</source>
+        <translation>数据表明 IMU 的 z 轴%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the bench constants state %1 (%2). Correct the IMU frame in the bench constants (or the IMU&apos;s mounting) and diagnose again</source>
+        <translation>台架常数声明为%1（%2）。请更正台架常数中的 IMU 坐标系（或 IMU 的安装）后重新诊断</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no effect is named. Replayed in the frame the data show, the verdict would be: %1</source>
+        <translation>不指认任何效应。在数据所表明的坐标系中回放，结论将是：%1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 position is not a number</source>
+        <translation>%1 位置不是数值</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 position %2 deg is beyond the table&apos;s +-%3 deg</source>
+        <translation>%1 位置 %2 deg 超出转台的 ±%3 deg</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the table was not moved</source>
+        <translation>转台未运动</translation>
     </message>
     <message>
         <location line="+3"/>

@@ -404,6 +404,8 @@ void constantsAndPlanPage(PageFlow& flow, const Content& c) {
                 : QObject::tr("common time base of both channels")},
       {QObject::tr("latitude"), QObject::tr("%1°").arg(info.bench.latitudeDeg), "",
        QObject::tr("Earth rate, absorbed by the fitted gyro trend")},
+      {QObject::tr("IMU frame"), coreText(describeImuFrame(info.bench.imuFrame)), "",
+       QObject::tr("the IMU's axes at zero table angles; the diagnosis checks it against the data")},
   };
   flow.table(consts);
 

@@ -347,6 +347,25 @@ TEST(CsvImport, AStatedGyroSignGoesWithTheBenchConstants) {
   EXPECT_NE(bad.status().message().find("gyro_sign"), std::string::npos);
 }
 
+// The IMU's frame goes with the bench constants too; a frame fogbench does
+// not know is refused with the accepted forms.
+TEST(CsvImport, AStatedImuFrameGoesWithTheBenchConstants) {
+  auto s = importCsvDirectory(goodDir(R"({"bench": {"table_read_delay_ms": 0.05, "board_delay_ms": 0.28,
+    "pulse_equivalent_deg": 5e-5, "imu_frame": "rfu:30"}, "test_points": [{"axis": "x"}]})"));
+  ASSERT_TRUE(s.isOk()) << s.status().toString();
+  EXPECT_EQ(imuFrameToText(s->info.bench.imuFrame), "RFU:30");
+  auto plain = importCsvDirectory(goodDir());
+  ASSERT_TRUE(plain.isOk());
+  EXPECT_FALSE(plain->info.bench.imuFrame.stated());
+  for (const char* bad : {R"("SWU")", R"(3)", R"("ENU:10")"}) {
+    auto refused = importCsvDirectory(goodDir((std::string(R"({"bench": {"table_read_delay_ms": 0.05,
+      "board_delay_ms": 0.28, "pulse_equivalent_deg": 5e-5, "imu_frame": )") + bad +
+                                               R"(}, "test_points": [{"axis": "x"}]})").c_str()));
+    ASSERT_FALSE(refused.isOk()) << bad;
+    EXPECT_NE(refused.status().message().find("bench.imu_frame"), std::string::npos) << refused.status().message();
+  }
+}
+
 TEST(CsvImportErrors, ADuplicateKeyOrADelayBeyondASecondIsRefused) {
   auto twice = importCsvDirectory(goodDir(R"({"bench": {"table_read_delay_ms": 0.05, "board_delay_ms": 0.28,
     "board_delay_ms": 0.3, "pulse_equivalent_deg": 5e-5}, "test_points": [{"axis": "x"}]})"));
