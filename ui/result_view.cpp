@@ -244,6 +244,9 @@ ResultView::ResultView(QWidget* parent) : QWidget(parent) {
   plotTabs_->setTabToolTip(0, tr("Table and gyro angle around a zero crossing with the fitted lag marked: click twice "
                                  "to set cursors A and B and read Δt"));
   plotTabs_->setTabToolTip(1, tr("The lag of every test point against its swing frequency"));
+  // A plot with its title, legend and axis titles needs ~100 px besides its
+  // canvas: below this a restored divider left the canvas a 30 px sliver.
+  plotTabs_->setMinimumHeight(230);
   auto* right = new QSplitter(Qt::Vertical);
   right->setObjectName("resultRightSplitter");
   right->addWidget(fitTable_);

@@ -9,6 +9,7 @@
 #include <QAbstractButton>
 #include <QApplication>
 #include <QComboBox>
+#include <QFontMetrics>
 #include <QGroupBox>
 #include <QHeaderView>
 #include <QLabel>
@@ -26,6 +27,8 @@
 #include <QtTest>
 #include <memory>
 #include <qwt_plot.h>
+#include <qwt_scale_widget.h>
+#include <qwt_text.h>
 
 #include "core/acquisition/acquisition.h"
 #include "core/acquisition/simulator_source.h"
@@ -229,6 +232,19 @@ class DeskTest : public QObject {
         if (overlap.isValid() && !overlap.isEmpty())
           problems << QString("'%1' overlaps '%2'").arg(boxes[i]->objectName(), boxes[j]->objectName());
       }
+    // Every plot's value-axis title fits its axis: a longer one is drawn
+    // clipped at both ends ("e − offset) / ampl").
+    for (QwtPlot* plot : root->findChildren<QwtPlot*>()) {
+      if (!plot->isVisible() || !plot->axisEnabled(QwtPlot::yLeft)) continue;
+      const QwtText title = plot->axisTitle(QwtPlot::yLeft);
+      const int width = QFontMetrics(title.font()).horizontalAdvance(title.text());
+      const int room = plot->axisWidget(QwtPlot::yLeft)->height();
+      if (width > room)
+        problems << QString("%1's axis title '%2' is %3 px long on a %4 px axis")
+                        .arg(plot->objectName(), title.text())
+                        .arg(width)
+                        .arg(room);
+    }
     if (language_ == "zh_CN")
       for (const auto& [widget, text] : texts)
         if (const QStringList left = englishIn(text); !left.isEmpty())

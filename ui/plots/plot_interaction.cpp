@@ -2,10 +2,12 @@
 
 #include <QApplication>
 #include <QEvent>
+#include <QFontMetrics>
 #include <QLabel>
 #include <QMouseEvent>
 #include <QPen>
 #include <QWheelEvent>
+#include <algorithm>
 #include <cmath>
 #include <qwt_plot.h>
 #include <qwt_plot_marker.h>
@@ -56,6 +58,50 @@ class CurveTracker : public QwtPlotPicker {
   const PlotInteraction* owner_;
 };
 
+// Keeps the value axis' title whole on a short plot. A title longer than
+// its axis is drawn clipped at both ends ("e − offset) / ampl" of
+// "(angle − offset) / amplitude"), so on every resize the title's font
+// shrinks, by half points down to 7 pt, until it fits; what still does not
+// fit is cut at its start, keeping the unit at its end ("…amplitude",
+// "…(arcsec)"). A title the program sets later is taken as the new whole one.
+class AxisTitleFitter : public QObject {
+ public:
+  explicit AxisTitleFitter(QwtPlot* plot) : QObject(plot), plot_(plot) {
+    plot->axisWidget(kYLeft)->installEventFilter(this);
+  }
+
+ protected:
+  bool eventFilter(QObject* watched, QEvent* event) override {
+    if (event->type() == QEvent::Resize) fit();
+    return QObject::eventFilter(watched, event);
+  }
+
+ private:
+  void fit() {
+    QwtText title = plot_->axisTitle(kYLeft);
+    if (title.text() != fitted_ || title.font() != fittedFont_) {
+      whole_ = title.text();
+      wholeFont_ = title.font();
+    }
+    const int room = plot_->axisWidget(kYLeft)->height() - 6;
+    if (whole_.isEmpty() || room <= 0) return;
+    QFont font = wholeFont_;
+    while (QFontMetrics(font).horizontalAdvance(whole_) > room && font.pointSizeF() > 7.0)
+      font.setPointSizeF(std::max(7.0, font.pointSizeF() - 0.5));
+    const QString text = QFontMetrics(font).elidedText(whole_, Qt::ElideLeft, room);
+    fitted_ = text;
+    fittedFont_ = font;
+    if (text == title.text() && font == title.font()) return;
+    title.setText(text);
+    title.setFont(font);
+    plot_->setAxisTitle(kYLeft, title);
+  }
+
+  QwtPlot* plot_;
+  QString whole_, fitted_;
+  QFont wholeFont_, fittedFont_;
+};
+
 }  // namespace
 
 void useCompactTitles(QwtPlot* plot) {
@@ -72,6 +118,11 @@ void useCompactTitles(QwtPlot* plot) {
     // ("residual" without "(arcsec)"), on a short plot.
     text.setRenderFlags(text.renderFlags() & ~Qt::TextWordWrap);
     plot->setAxisTitle(axis, text);
+  }
+  // (A property, not findChild: the fitter has no meta-object of its own.)
+  if (!plot->property("fogAxisTitleFitter").toBool()) {
+    new AxisTitleFitter(plot);
+    plot->setProperty("fogAxisTitleFitter", true);
   }
 }
 

@@ -38,7 +38,9 @@ namespace fog::ui {
 
 // The bench's plots on screen: the title in the widget's font, bold; axis
 // titles in the widget's font, not bold (they wrap less on a small plot);
-// the title label sized for the font it draws (no clipped descenders).
+// the title label sized for the font it draws (no clipped descenders); the
+// value axis' title kept whole on a short plot (a smaller font, down to
+// 7 pt, then cut at its start so that its unit stays).
 void useCompactTitles(QwtPlot* plot);
 
 class PlotInteraction : public QObject {
