@@ -88,7 +88,7 @@ Response added(const SimConfig& off, const SimConfig& on, const TestPlan& plan) 
 }
 
 void print(const char* what, double measured, double expected, const char* unit) {
-  std::printf("%s: measured %.6f %s, closed form %.6f %s\n", what, measured, unit, expected, unit);
+  std::printf("%s: measured %.9g %s, closed form %.9g %s\n", what, measured, unit, expected, unit);
 }
 
 TEST(ChainConstants, OffByDefault) {
