@@ -35,6 +35,16 @@ usage:
       --latitude-deg, --heading-deg (table x axis from north toward east),
       --imu-clock-ppm, --imu-period-ms, --table-period-ms, --encoder-quantum-deg,
       --bias-x-deg-h, --bias-y-deg-h, --bias-z-deg-h,
+      nominal-chain constants (docs/simulator.md; 0 = off):
+      --register-period-ms P [--register-offset-ms O] (pulse register updated every P,
+      first at O, held until the next: the paper's 0.5), --boxcar-ms T (rate averaged
+      over T), --rate-filter-ms T (first-order rate filter), --rate-filter-hz F
+      [--rate-filter-damping Z] (second-order rate filter, default damping 0.7),
+      --base-tilt-deg B [--base-tilt-azimuth-deg A] (table base tilted by B about the
+      horizontal axis at azimuth A), --nonorthogonality-arcsec N (between adjacent
+      table axes), --eccentricity-um E [--eccentricity-radius-mm R, default 100]
+      [--eccentricity-phase-deg P] (encoder error E/R sin(angle + P)),
+      --lost-table-per-mille L (table frames lost),
       --effect NAME=V[,V][+NAME=V...] (unmodelled effects from docs/diagnosis.md,
       e.g. scale_factor_error=200)
       --out SESSION.fbs [--operator NAME --imu-model M --imu-serial S --notes TEXT]:

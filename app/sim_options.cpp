@@ -86,11 +86,27 @@ Result<model::SimConfig> readSimConfig(CliArguments& args) {
                 {"encoder-quantum-deg", &c.encoder.quantumDeg, 1.0},
                 {"bias-x-deg-h", &c.fog.biasDegPerH[0], 1.0},
                 {"bias-y-deg-h", &c.fog.biasDegPerH[1], 1.0},
-                {"bias-z-deg-h", &c.fog.biasDegPerH[2], 1.0}};
+                {"bias-z-deg-h", &c.fog.biasDegPerH[2], 1.0},
+                // The nominal chain's stated constants (docs/simulator.md); 0 = off.
+                {"register-period-ms", &c.fog.registerPeriodS, 1e-3},
+                {"register-offset-ms", &c.fog.registerOffsetS, 1e-3},
+                {"boxcar-ms", &c.fog.boxcarS, 1e-3},
+                {"rate-filter-ms", &c.fog.rateFilterTimeConstantS, 1e-3},
+                {"rate-filter-hz", &c.fog.rateFilterNaturalHz, 1.0},
+                {"rate-filter-damping", &c.fog.rateFilterDamping, 1.0},
+                {"base-tilt-deg", &c.turntable.baseTiltDeg, 1.0},
+                {"base-tilt-azimuth-deg", &c.turntable.baseTiltAzimuthDeg, 1.0},
+                {"eccentricity-um", &c.encoder.eccentricityUm, 1.0},
+                {"eccentricity-radius-mm", &c.encoder.eccentricityRadiusMm, 1.0},
+                {"eccentricity-phase-deg", &c.encoder.eccentricityPhaseDeg, 1.0},
+                {"lost-table-per-mille", &c.encoder.lostPerMille, 1.0}};
   for (auto& f : fields) {
     FOG_ASSIGN_OR_RETURN(auto v, args.number(f.name, *f.target / f.scale));
     *f.target = v * f.scale;
   }
+  // One value for both pairs of adjacent axes (outer-middle, middle-inner).
+  FOG_ASSIGN_OR_RETURN(auto nonOrthogonality, args.number("nonorthogonality-arcsec", 0.0));
+  c.turntable.nonOrthogonalityArcsec = {nonOrthogonality, nonOrthogonality};
   auto gyroDelay = args.number("gyro-delay-ms", c.fog.ownDelayS() * 1e3);
   auto bits = args.number("counter-bits", c.samplingBoard.counterBits);
   auto start = args.number("counter-start", c.samplingBoard.counterStart);

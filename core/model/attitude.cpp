@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include <Eigen/Geometry>
+
 #include "core/common/units.h"
 #include "core/model/sim_config.h"
 
@@ -19,13 +21,44 @@ Eigen::Matrix3d axisRotation(Axis axis, double angleDeg) {
   return r;
 }
 
+Eigen::Matrix3d rotationAbout(const Eigen::Vector3d& unitAxis, double angleDeg) {
+  const double a = angleDeg * kRadPerDeg;
+  const double c = std::cos(a), s = std::sin(a);
+  Eigen::Matrix3d cross;
+  cross << 0, -unitAxis.z(), unitAxis.y(), unitAxis.z(), 0, -unitAxis.x(), -unitAxis.y(), unitAxis.x(), 0;
+  return c * Eigen::Matrix3d::Identity() + s * cross + (1.0 - c) * unitAxis * unitAxis.transpose();
+}
+
+Eigen::Matrix3d baseTilt(const TurntableParams& table) {
+  const double az = table.baseTiltAzimuthDeg * kRadPerDeg;
+  return rotationAbout(Eigen::Vector3d(std::cos(az), std::sin(az), 0.0), table.baseTiltDeg);
+}
+
 Attitude::Attitude(const EarthParams& earth, const TurntableParams& table)
     : tableToLocal_(axisRotation(Axis::kZ, earth.headingDeg) *
                     Eigen::Vector3d(1.0, earth.zUp ? -1.0 : 1.0, earth.zUp ? -1.0 : 1.0).asDiagonal()),
       mounting_(axisRotation(Axis::kZ, table.mountingDeg[2]) * axisRotation(Axis::kY, table.mountingDeg[1]) *
                 axisRotation(Axis::kX, table.mountingDeg[0])),
       order_(table.axisOrder),
-      earthLocalDegPerH_(Eigen::Vector3d::Map(earth.rateLocalDegPerH().data())) {}
+      earthLocalDegPerH_(Eigen::Vector3d::Map(earth.rateLocalDegPerH().data())) {
+  if (table.baseTiltDeg != 0.0) tableToLocal_ = baseTilt(table) * tableToLocal_;
+  // The middle axis leans toward the outer one, the inner toward the middle.
+  for (int k = 1; k < kAxisCount; ++k) {
+    const double d = table.nonOrthogonalityArcsec[static_cast<std::size_t>(k - 1)];
+    if (d == 0.0) continue;
+    const auto self = static_cast<std::size_t>(order_[static_cast<std::size_t>(k)]);
+    const Eigen::Vector3d e = Eigen::Vector3d::Unit(static_cast<int>(self));
+    const Eigen::Vector3d toward = Eigen::Vector3d::Unit(static_cast<int>(order_[static_cast<std::size_t>(k - 1)]));
+    lean_[self] = rotationAbout(e.cross(toward), d / kArcsecPerDeg);
+    leaning_[self] = true;
+  }
+}
+
+Eigen::Matrix3d Attitude::rotation(Axis axis, double angleDeg) const {
+  const auto a = static_cast<std::size_t>(axis);
+  if (!leaning_[a]) return axisRotation(axis, angleDeg);
+  return lean_[a] * axisRotation(axis, angleDeg) * lean_[a].transpose();
+}
 
 const Eigen::Matrix3d& AxisRotations::of(Axis axis, double angleDeg) {
   const auto a = static_cast<std::size_t>(axis);
@@ -39,13 +72,19 @@ const Eigen::Matrix3d& AxisRotations::of(Axis axis, double angleDeg) {
 
 Eigen::Matrix3d Attitude::bodyToTable(const TableAngles& tableDeg) const {
   Eigen::Matrix3d c = Eigen::Matrix3d::Identity();
-  for (Axis a : order_) c = c * axisRotation(a, tableDeg[static_cast<std::size_t>(a)]);
+  for (Axis a : order_) c = c * rotation(a, tableDeg[static_cast<std::size_t>(a)]);
   return c * mounting_;
 }
 
 Eigen::Matrix3d Attitude::bodyToTable(const TableAngles& tableDeg, AxisRotations& rotations) const {
   Eigen::Matrix3d c = Eigen::Matrix3d::Identity();
-  for (Axis a : order_) c = c * rotations.of(a, tableDeg[static_cast<std::size_t>(a)]);
+  for (Axis a : order_) {
+    const auto k = static_cast<std::size_t>(a);
+    if (leaning_[k])
+      c = c * lean_[k] * rotations.of(a, tableDeg[k]) * lean_[k].transpose();
+    else
+      c = c * rotations.of(a, tableDeg[k]);
+  }
   return c * mounting_;
 }
 
@@ -64,10 +103,12 @@ Eigen::Vector3d Attitude::tableAxisInBody(Axis axis, const TableAngles& tableDeg
   Eigen::Matrix3d inner = Eigen::Matrix3d::Identity();
   bool inside = false;
   for (Axis a : order_) {
-    if (inside) inner = inner * axisRotation(a, tableDeg[static_cast<std::size_t>(a)]);
+    if (inside) inner = inner * rotation(a, tableDeg[static_cast<std::size_t>(a)]);
     if (a == axis) inside = true;
   }
-  return (inner * mounting_).transpose() * Eigen::Vector3d::Unit(static_cast<int>(axis));
+  const Eigen::Vector3d e = Eigen::Vector3d::Unit(static_cast<int>(axis));
+  const auto k = static_cast<std::size_t>(axis);
+  return (inner * mounting_).transpose() * (leaning_[k] ? Eigen::Vector3d(lean_[k] * e) : e);
 }
 
 Eigen::Vector3d Attitude::rotationBetweenDeg(const Eigen::Matrix3d& from, const Eigen::Matrix3d& to) const {

@@ -15,6 +15,13 @@
 //    where R_k(a) is the right-handed rotation by +a about axis k and
 //    M = R_z(yaw) R_y(pitch) R_x(roll) the mounting. With zero angles and
 //    mounting, gyro x senses table axis x, and so on.
+//  - a tilted base (TurntableParams::baseTiltDeg) turns the table frame in
+//    the local one: L becomes B L with B the rotation by the tilt about the
+//    horizontal axis (cos az, sin az, 0) at the tilt's azimuth.
+//  - non-orthogonal axes (TurntableParams::nonOrthogonalityArcsec): the
+//    middle axis turns about D e_m, D the rotation by the lean from e_m
+//    toward e_outer (about e_m x e_outer), so R_middle(a) becomes
+//    D R_middle(a) D^T; the inner axis leans toward the middle one likewise.
 //
 // Pure functions of their arguments; thread-safe.
 
@@ -73,12 +80,19 @@ class Attitude {
                                      const Eigen::Matrix3d& toBodyToTable) const;
 
  private:
+  // The rotation about table axis `axis`, leaning when it does.
+  Eigen::Matrix3d rotation(Axis axis, double angleDeg) const;
+
   Eigen::Matrix3d tableToLocal_, mounting_;  // L and M above
+  std::array<Eigen::Matrix3d, kAxisCount> lean_;  // D of each leaning axis
+  std::array<bool, kAxisCount> leaning_{};
   std::array<Axis, kAxisCount> order_{};  // outer to inner
   Eigen::Vector3d earthLocalDegPerH_;
 };
 
 // The proper rotation by +angleDeg about table axis `axis`.
 Eigen::Matrix3d axisRotation(Axis axis, double angleDeg);
+// The proper rotation by +angleDeg about a unit vector.
+Eigen::Matrix3d rotationAbout(const Eigen::Vector3d& unitAxis, double angleDeg);
 
 }  // namespace fog::model

@@ -9,6 +9,19 @@ namespace fog::model {
 double FogParams::eigenPeriodS() const { return fibreLengthM * groupIndex / kSpeedOfLightMPerS; }
 double FogParams::loopDelayS() const { return loopDelayEigenPeriods * eigenPeriodS(); }
 
+double FogParams::filterDelayS() const {
+  double d = 0.0;
+  if (registerPeriodS > 0.0) d += registerPeriodS / 2.0;
+  if (boxcarS > 0.0) d += boxcarS / 2.0;
+  if (rateFilterTimeConstantS > 0.0) d += rateFilterTimeConstantS;
+  if (rateFilterNaturalHz > 0.0) d += 2.0 * rateFilterDamping / (kTwoPi * rateFilterNaturalHz);
+  return d;
+}
+
+double EncoderParams::eccentricityPeakDeg() const {
+  return eccentricityUm > 0.0 ? eccentricityUm * 1e-6 / (eccentricityRadiusMm * 1e-3) * kDegPerRad : 0.0;
+}
+
 std::array<double, 3> EarthParams::rateLocalDegPerH() const {
   const double lat = latitudeDeg * kRadPerDeg;
   return {kEarthRateDegPerH * std::cos(lat), 0.0, -kEarthRateDegPerH * std::sin(lat)};
@@ -62,6 +75,20 @@ Status SimConfig::validate() const {
   if (!nonNegative(fog.sampleAfterUpdateS) || fog.sampleAfterUpdateS >= fog.pulseUpdatePeriodS)
     return invalidArgument("time from pulse update to board sampling must be in [0, pulse update period); "
                        "the requested gyro delay is not reachable with this loop delay");
+  // The register and the filters: up to 1 s (a filter far beyond any
+  // gyro's is a unit error), offsets within the period.
+  if (!(fog.registerPeriodS >= 0.0 && fog.registerPeriodS <= 1.0))
+    return invalidArgument("pulse register period must be within 0 (off) .. 1000 ms");
+  if (!(fog.registerOffsetS >= 0.0 && (fog.registerOffsetS < fog.registerPeriodS || fog.registerOffsetS == 0.0)))
+    return invalidArgument("pulse register offset must be in [0, register period)");
+  if (!(fog.boxcarS >= 0.0 && fog.boxcarS <= 1.0))
+    return invalidArgument("boxcar length must be within 0 (off) .. 1000 ms");
+  if (!(fog.rateFilterTimeConstantS >= 0.0 && fog.rateFilterTimeConstantS <= 1.0))
+    return invalidArgument("rate filter time constant must be within 0 (off) .. 1000 ms");
+  if (!(fog.rateFilterNaturalHz >= 0.0 && fog.rateFilterNaturalHz <= 1e6))
+    return invalidArgument("rate filter natural frequency must be within 0 (off) .. 1 MHz");
+  if (!(fog.rateFilterDamping > 0.0 && fog.rateFilterDamping <= 100.0))
+    return invalidArgument("rate filter damping must be within (0, 100]");
   if (!(fog.pulseEquivalentDeg >= 1e-9 && fog.pulseEquivalentDeg <= 1.0))
     return invalidArgument("pulse equivalent must be within 1e-9 .. 1 deg");
   for (double b : fog.biasDegPerH)
@@ -81,6 +108,24 @@ Status SimConfig::validate() const {
     if (o[0] == o[1] || o[1] == o[2] || o[0] == o[2])
       return invalidArgument("the table's axis order must name x, y and z once each (outer to inner)");
   }
+  if (!std::isfinite(turntable.baseTiltDeg) || std::abs(turntable.baseTiltDeg) > 90.0)
+    return invalidArgument("base tilt must be within [-90, 90] deg");
+  if (!std::isfinite(turntable.baseTiltAzimuthDeg) || std::abs(turntable.baseTiltAzimuthDeg) > 360.0)
+    return invalidArgument("base tilt azimuth must be within [-360, 360] deg");
+  // 1 deg of non-orthogonality is far beyond any table's (arcsec).
+  for (double n : turntable.nonOrthogonalityArcsec)
+    if (!std::isfinite(n) || std::abs(n) > 3600.0)
+      return invalidArgument("axis non-orthogonality must be within +-3600 arcsec");
+  if (!(encoder.eccentricityUm >= 0.0 && encoder.eccentricityUm <= 1e4))
+    return invalidArgument("encoder eccentricity must be within 0 .. 10000 um");
+  if (!(encoder.eccentricityRadiusMm >= 1.0 && encoder.eccentricityRadiusMm <= 1e4))
+    return invalidArgument("encoder read-head radius must be within 1 .. 10000 mm");
+  if (encoder.eccentricityUm * 1e-3 >= 0.1 * encoder.eccentricityRadiusMm)
+    return invalidArgument("encoder eccentricity must be under a tenth of the read-head radius");
+  if (!std::isfinite(encoder.eccentricityPhaseDeg) || std::abs(encoder.eccentricityPhaseDeg) > 360.0)
+    return invalidArgument("encoder eccentricity phase must be within [-360, 360] deg");
+  if (!(encoder.lostPerMille >= 0.0 && encoder.lostPerMille < 1000.0))
+    return invalidArgument("lost table frames must be within 0 .. 1000 per mille (not all)");
   for (double m : turntable.mountingDeg)
     if (!std::isfinite(m) || std::abs(m) > 360.0)
       return invalidArgument("IMU mounting angles must be within [-360, 360] deg");

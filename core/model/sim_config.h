@@ -26,12 +26,34 @@ struct TurntableParams {
   // The IMU on the inner frame: roll (x), pitch (y), yaw (z), deg, applied
   // as R_z(yaw) R_y(pitch) R_x(roll). Zero: gyro x senses table axis x.
   std::array<double, kAxisCount> mountingDeg{};
+  // The table's base is not level: its vertical is tilted by baseTiltDeg
+  // (deg, right-handed) about the horizontal axis at azimuth
+  // baseTiltAzimuthDeg (deg from north toward east), so the Earth rate and
+  // gravity reach the table turned by that rotation (model/attitude.h).
+  // 0 = a level base.
+  double baseTiltDeg = 0.0;
+  double baseTiltAzimuthDeg = 0.0;
+  // Axis non-orthogonality, arcsec: the middle axis leans this far toward
+  // the outer one ([0]) and the inner axis toward the middle one ([1]), so
+  // the angle between them is 90 deg minus it. 0 = square axes.
+  std::array<double, 2> nonOrthogonalityArcsec{};
 };
 
 struct EncoderParams {
   double samplePeriodS = 1e-3;  // the board reads the table angle every 1 ms
   double readDelayS = 0.05e-3;  // angle latched this long before the board stamps it
   double quantumDeg = 1e-4;     // 0.36 arcsec encoder resolution
+  // Eccentricity of every axis' grating against its axis: a once-per-
+  // revolution reading error (e / r) sin(theta + phase), rad, with e the
+  // eccentricity in um and r the read head's radius in mm. 0 um = none.
+  double eccentricityUm = 0.0;
+  double eccentricityRadiusMm = 100.0;
+  double eccentricityPhaseDeg = 0.0;
+  // Table readings lost on the way to the board, per mille (each frame
+  // independently; its sequence number is still used). 0 = none.
+  double lostPerMille = 0.0;
+  // Peak reading error of the eccentricity, deg.
+  double eccentricityPeakDeg() const;
 };
 
 struct FogParams {
@@ -43,6 +65,28 @@ struct FogParams {
   // it; with the FOG and board clocks locked this is constant in [0, update period).
   // Default: gyro's own delay = 0.2358 ms, the paper's X-axis result.
   double sampleAfterUpdateS = 0.2358e-3 - 2.0 * 1000.0 / 299792458.0;
+  // The pulse register modelled explicitly (0 = off: the time from the last
+  // update to the board's sampling is the constant sampleAfterUpdateS,
+  // FOG and board clocks locked). registerPeriodS > 0, s: the register is
+  // updated at instants registerOffsetS + j registerPeriodS of true time
+  // (the FOG's own clock; offset in [0, period)), latching the angle sensed
+  // up to that instant; what the board would read without the register
+  // (ownDelayS() before its sample) is the value of the last update at or
+  // before it, held until the next. This adds the hold: on average P / 2
+  // when the update grid and the IMU frames are not locked.
+  double registerPeriodS = 0.0;
+  double registerOffsetS = 0.0;
+  // Averaging (boxcar) filter of the rate over boxcarS, s, before it is
+  // integrated into the frame (0 = off): delay T / 2, gain sinc(pi f T).
+  double boxcarS = 0.0;
+  // First-order low-pass of the rate, time constant in s (0 = off):
+  // phase atan(omega T), delay T at low frequency.
+  double rateFilterTimeConstantS = 0.0;
+  // Second-order (resonant) low-pass of the rate: natural frequency in Hz
+  // (0 = off) and damping ratio; phase atan2(2 zeta w / wn, 1 - (w / wn)^2),
+  // delay 2 zeta / wn at low frequency.
+  double rateFilterNaturalHz = 0.0;
+  double rateFilterDamping = 0.7;
   double pulseEquivalentDeg = 5e-5;  // 0.18 arcsec per pulse
   std::array<double, kAxisCount> biasDegPerH{0.3, -0.2, 0.15};
   double arwDegPerSqrtH = 0.004;  // angle random walk
@@ -59,6 +103,10 @@ struct FogParams {
   double ownDelayS() const { return loopDelayS() + sampleAfterUpdateS; }
   // Sets sampleAfterUpdateS so that ownDelayS() == delayS.
   void setOwnDelayS(double delayS) { sampleAfterUpdateS = delayS - loopDelayS(); }
+  // Low-frequency delay the explicit register (mean hold, P / 2), the boxcar
+  // (T / 2) and the rate filters (T; 2 zeta / omega_n) add to ownDelayS();
+  // 0 with all of them off.
+  double filterDelayS() const;
 };
 
 // The site and the table's heading (model/attitude.h): the table's axes at
@@ -131,7 +179,12 @@ struct SimConfig {
   // The delays this configuration builds in, for the tests and for the
   // report's theory column. Lag is what the bench measures: the gyro's
   // output against the stamped table angle.
-  double trueGyroDelayS() const { return fog.ownDelayS(); }
+  // With the register or a filter on, the gyro's delay is its low-frequency
+  // value (FogParams::filterDelayS()).
+  double trueGyroDelayS() const {
+    const double filters = fog.filterDelayS();
+    return filters == 0.0 ? fog.ownDelayS() : fog.ownDelayS() + filters;
+  }
   double trueImuDelayS() const { return trueGyroDelayS() + imuBoard.boardDelayS(); }
   double trueLagS() const { return trueImuDelayS() - encoder.readDelayS; }
 };

@@ -6,6 +6,7 @@
 
 #include "core/common/units.h"
 #include "core/model/attitude.h"
+#include "core/model/gyro_filters.h"
 #include "core/model/random.h"
 #include "core/protocol/frame.h"
 
@@ -64,7 +65,7 @@ class Simulator::Impl {
   Impl(const SimConfig& config, const Turntable& table, double slackS,
        std::vector<std::unique_ptr<Effect>>& effects)
       : c_(config), table_(table), slackS_(slackS), effects_(effects), attitude_(config.earth, config.turntable),
-        noiseRng_(Random::derive(config.seed, 0)) {
+        noiseRng_(Random::derive(config.seed, 0)), lostRng_(Random::derive(config.seed, 1)), filters_(config.fog) {
     for (int a = 0; a < kAxisCount; ++a) {
       GyroChannel& g = gyro_[a];
       g.constantRateDegPerS = degPerHourToDegPerS(c_.fog.biasDegPerH[a]);
@@ -81,8 +82,8 @@ class Simulator::Impl {
     }
     // Start of the first interval: the pulse count one frame before the first.
     const double u0 = imuSenseTime(-1);
-    for (int a = 0; a < kAxisCount; ++a) gyro_[a].lastTimeS = u0;
-    const auto sensed = sensedAngles(u0);
+    for (int a = 0; a < kAxisCount; ++a) gyro_[a].lastTimeS = std::min(u0, latchTime(u0));
+    const auto sensed = gyroOutput(u0);
     for (int a = 0; a < kAxisCount; ++a)
       gyro_[a].lastCount = static_cast<std::int64_t>(std::floor(sensed[a] / c_.fog.pulseEquivalentDeg));
     statusEvents_.reserve(table_.schedule().size() * 3);
@@ -174,9 +175,32 @@ class Simulator::Impl {
     return sensed;
   }
 
+  // The last pulse-register update at or before u (u itself with the
+  // register off).
+  double latchTime(double u) const {
+    const double p = c_.fog.registerPeriodS;
+    if (!(p > 0.0)) return u;
+    const double o = c_.fog.registerOffsetS;
+    return o + p * std::floor((u - o) / p);
+  }
+
+  // What the board reads when it would read the angle sensed at u: the
+  // rate filters' output, held since the last register update.
+  std::array<double, kAxisCount> gyroOutput(double u) {
+    if (!(c_.fog.registerPeriodS > 0.0) && !filters_.active()) return sensedAngles(u);
+    const double t = latchTime(u);
+    if (haveLatch_ && t == latchS_) return latched_;
+    auto x = sensedAngles(t);
+    if (filters_.active()) filters_.apply(t, x);
+    haveLatch_ = true, latchS_ = t, latched_ = x;
+    return x;
+  }
+
   void prepareTable() {
     const double stamp = static_cast<double>(tableIndex_) * c_.encoder.samplePeriodS;
     auto reading = motion(stamp - c_.encoder.readDelayS);
+    if (const double e = c_.encoder.eccentricityPeakDeg(); e > 0.0)
+      for (double& r : reading) r += e * std::sin((r + c_.encoder.eccentricityPhaseDeg) * kRadPerDeg);
     for (const auto& e : effects_) e->onEncoderReading(stamp - c_.encoder.readDelayS, reading);
     for (int a = 0; a < kAxisCount; ++a) {
       const double q = c_.encoder.quantumDeg;
@@ -185,11 +209,12 @@ class Simulator::Impl {
     }
     tableStampS_ = stamp;
     tableDropped_ = false;
+    if (c_.encoder.lostPerMille > 0.0) tableDropped_ = lostRng_.uniform() < c_.encoder.lostPerMille * 1e-3;
     for (const auto& e : effects_) e->onTableStamp(tableStampS_, tableDropped_);
   }
 
   void prepareImu() {
-    const auto sensed = sensedAngles(imuSenseTime(imuIndex_));
+    const auto sensed = gyroOutput(imuSenseTime(imuIndex_));
     for (int a = 0; a < kAxisCount; ++a) {
       const auto count = static_cast<std::int64_t>(std::floor(sensed[a] / c_.fog.pulseEquivalentDeg));
       imuPayload_.pulses[a] = static_cast<std::int32_t>(count - gyro_[a].lastCount);
@@ -252,6 +277,11 @@ class Simulator::Impl {
   Attitude attitude_;
   AxisRotations rotations_;
   Random noiseRng_;
+  Random lostRng_;  // lost table frames (EncoderParams::lostPerMille)
+  GyroFilters filters_;
+  bool haveLatch_ = false;
+  double latchS_ = 0.0;
+  std::array<double, kAxisCount> latched_{};
   bool sensedBefore_ = false;
   double lastSenseS_ = 0.0;
   Eigen::Matrix3d lastBodyToTable_ = Eigen::Matrix3d::Identity();
