@@ -256,8 +256,9 @@ double medianInterval(const std::vector<ImuSample>& imu) {
 
 std::string quantityName(const FeatureKey& key) {
   switch (key.quantity) {
-    case Quantity::kInPhase: return "h" + std::to_string(key.harmonic) + "_in_phase";
-    case Quantity::kQuadrature: return "h" + std::to_string(key.harmonic) + "_quadrature";
+    // (std::string(1, 'h') +, not "h" +: GCC 12 warns -Wrestrict on the latter.)
+    case Quantity::kInPhase: return std::string(1, 'h') + std::to_string(key.harmonic) + "_in_phase";
+    case Quantity::kQuadrature: return std::string(1, 'h') + std::to_string(key.harmonic) + "_quadrature";
     case Quantity::kResidualMeanSquare: return "residual_ms";
     case Quantity::kGain: return "gain";
     case Quantity::kDelay: return "delay";

@@ -103,8 +103,9 @@ TEST(LiveTraces, TheTrendIsShownOnlyOverTwoWholePeriodsOfRecording) {
     const bool recordedTwoPeriods =
         live.recordingStartS() >= 0.0 && live.streamTimeS() - live.recordingStartS() >= 2.0 / live.nominalFrequencyHz() + 0.01;
     sawRecording |= live.recordingStartS() >= 0.0;
-    if (live.recordingStartS() < 0.0 || live.streamTimeS() - live.recordingStartS() < 2.0 / live.nominalFrequencyHz() - 0.01)
+    if (live.recordingStartS() < 0.0 || live.streamTimeS() - live.recordingStartS() < 2.0 / live.nominalFrequencyHz() - 0.01) {
       EXPECT_TRUE(std::isnan(trend)) << "at " << live.streamTimeS() << " s: " << trend;
+    }
     if (recordedTwoPeriods) {
       ASSERT_FALSE(std::isnan(trend)) << "at " << live.streamTimeS() << " s";
       sawNumber = true;
