@@ -38,6 +38,13 @@ Frames and conventions
   1 + clock_rate_ppm_gyro * 1e-6 against it, an error case).
 * Lag (what fogbench measures) = imu_delay_ms - table_read_delay_ms: the
   time by which the gyro output lags the stamped table reading.
+* Effects in their own physical form (all off by default; README "Outside
+  effects"): base tilt, table-axis non-orthogonality, encoder eccentricity,
+  encoder-to-fixture compliance, a servo's unbalance, the IMU mount's
+  rotation, g-sensitivity per gyro, the pulse register's update, a boxcar
+  of the rate, a bimodal / Markov latency, rate random walk, flicker, lost
+  table rows. truth.json's physical_effects states what each amounts to in
+  closed form (extra delay, equivalent lag, equivalent library values).
 """
 
 from __future__ import annotations
@@ -1469,6 +1476,8 @@ def build_parser():
     g.add_argument("--servo-unbalance-phase-deg", type=float)
     g.add_argument("--servo-corner-hz", type=float, help="the loop's first-order disturbance response (0: static)")
     g.add_argument("--table-drop-per-mille", type=float, help="table rows lost at random")
+    g.add_argument("--table-poly-ppm", type=_floats, help="c2,c3: theta + 10 (c2 x^2 - c3 x^3), x = theta / 10 deg")
+    g.add_argument("--encoder-cyclic-arcsec", type=_floats, help="s,c: s sin(2 pi theta / 10 deg) + c cos(..)")
     g = ap.add_argument_group("site")
     g.add_argument("--latitude-deg", type=float)
     g.add_argument("--heading-deg", type=float, help="azimuth of the table's x axis at zero")
@@ -1494,6 +1503,13 @@ def build_parser():
     g.add_argument("--rate-output", choices=["frame_average", "sample_at_stamp"])
     g.add_argument("--rate-lsb-deg-s", type=float)
     g.add_argument("--sample-hold-ms", type=float)
+    g.add_argument("--scale-factor-ppm", type=float)
+    g.add_argument("--sf-asymmetry-ppm", type=float)
+    g.add_argument("--sf-nonlinearity-ppm-at-100", type=float)
+    g.add_argument("--bias-drift-deg-h-per-min", type=float)
+    g.add_argument("--drop-per-mille", type=float, help="IMU frames lost at random (lost_before column)")
+    g.add_argument("--bias-instability-deg-h", type=float, help="Gauss-Markov bias, 1 sigma ...")
+    g.add_argument("--bias-correlation-s", type=float, help="... and its correlation time")
     g.add_argument("--misalignment-urad", type=_floats, help="six: m_xy,m_xz,m_yx,m_yz,m_zx,m_zy")
     g.add_argument("--mount-rpy-arcsec", type=_floats, help="IMU mount rotated by roll,pitch,yaw")
     g.add_argument("--g-sens-deg-h-g", type=_floats, help="1 value, or 3 (each gyro its own)")

@@ -294,6 +294,14 @@ class Defects(unittest.TestCase):
         # gyro period longer by 50 ppm
         self.assertAlmostEqual((1 / fg) / (1 / ft) - 1, 50e-6, delta=0.1e-6)
 
+    def test_imu_crystal_fast_means_shorter_frames(self):
+        # the one sign convention with fogbench (ImuBoardParams::clockErrorPpm):
+        # +ppm = the crystal runs fast = frames of imu_period_ms / (1 + ppm)
+        res = refgen.generate(quiet(imu_clock_ppm=40.0, timing="commensurate"))
+        mean = np.mean(np.diff(res["frame_stamp"]))
+        self.assertAlmostEqual((mean / 2e-3 - 1.0) * 1e6, 1.0 / (1.0 + 40e-6) * 1e6 - 1e6, delta=1e-3)
+        self.assertLess(mean, 2e-3)
+
     def test_table_frequency_error(self):
         p = quiet(table_freq_error_ppm=200.0)
         res = refgen.generate(p)
