@@ -11,19 +11,27 @@ bias instability of 0.01..0.2 deg/h over 100..600 s. The diagnosis is told
 the bias instability as a static noise test would state it, each figure
 within a factor sqrt(2) of the truth (--bias-instability, --bias-correlation).
 
-Trial kinds, interleaved (of every 20): 12 one library effect at 3..10x its
-detection threshold, 3 none, 2 two effects at once, 3 outside the library
-(a bias step, an amplitude decay, an amplitude drift). Scores (docs/diagnosis.md):
-top-1 / top-3 of single effects, false alarms of "none" trials, pairs named
-one of their two, "unexplained" recall of outside trials, median held-out
-shrink when right; the confusion matrix and every wrong answer with the
-diagnosis' own reason.
+Trial kinds, interleaved (of every 20): 10 one library effect at 3..10x its
+detection threshold, 3 none, 2 two effects at once, 5 outside the library.
+Misalignment, g-sensitivity and table distortion are made in their physical
+form (the IMU mount's roll/pitch/yaw, a k per gyro within 10 %, a servo's
+unbalance through its first-order disturbance response; --forms library:
+the library's own forms). The outside effects rotate through OUTSIDE (15
+physical effects, five different ones in every block of 20 trials), each
+with the answer that is right for it (README.md "Blind check": why).
+Scores (docs/diagnosis.md): top-1 / top-3 of single effects, false alarms
+of "none" trials, pairs named one of their two, "unexplained" recall of the
+outside trials whose right answer is "unexplained", outside trials answered
+right, median held-out shrink when right; per outside effect; the confusion
+matrix and every wrong answer with the diagnosis' own reason.
 
   blind_reference.py --cli build/release/app/fogbench-cli --trials 60 --seed 1 [--plan blind|paper]
-      [--jobs 2] [--json out.json] [--check]
+      [--forms physical|library] [--only I,J] [--jobs 2] [--keep DIR] [--json out.json]
+      [--check] [--min-correct N]
 
 --check exits 1 when a target is missed (top-1 >= 90 %, top-3 >= 98 %, false
-alarms <= 5 %, unexplained recall >= 80 %, pairs >= 80 %).
+alarms <= 5 %, unexplained recall >= 80 %, pairs >= 80 %); --min-correct N
+exits 1 when fewer than N trials are answered right.
 """
 
 import argparse
@@ -198,18 +206,28 @@ def _latency_telegraph(rng, ctx):
 
 
 def _rate_random_walk(rng, ctx):
-    # sized against the IMU's own bias instability (which the diagnosis is
-    # told): the walk's 1-sigma change over the session, K sqrt(T), is 4..8x
-    # the instability's sigma
+    # sized against what hides a bias wander in the trend cells (ctx
+    # "trend_noise"): the walk's 1-sigma change over the session, K sqrt(T),
+    # is 4..8x it
     ratio = float(rng.uniform(4.0, 8.0))
-    return {"rrw_deg_h_sqrt_h": ratio * ctx["instability"] / math.sqrt(ctx["total_s"] / 3600.0)}, {"unexplained"}
+    return {"rrw_deg_h_sqrt_h": ratio * ctx["trend_noise"] / math.sqrt(ctx["total_s"] / 3600.0)}, {"unexplained"}
 
 
 def _flicker(rng, ctx):
-    # B 4..8x the instability's sigma (a flicker's bias changes by ~0.94 B
-    # between two stretches of a record; the Gauss-Markov's by ~1 sigma)
-    return {"flicker_deg_h": float(rng.uniform(4.0, 8.0)) * ctx["instability"],
+    # B 4..8x the trend cells' noise (a flicker bias changes by ~0.94 B
+    # between two stretches of a record)
+    return {"flicker_deg_h": float(rng.uniform(4.0, 8.0)) * ctx["trend_noise"],
             "flicker_tau_range_s": [1.0, 10000.0]}, {"unexplained"}
+
+
+def trend_noise(params):
+    """What hides a bias wander in one gyro-trend cell (deg/h): the larger of
+    the IMU's bias instability (1 sigma) and the white noise's mean over the
+    plan's longest segment (a test point is cut into up to four segments of
+    at least two periods), ARW * 60 / sqrt(T_seg)."""
+    t_seg = max(s["duration_s"] / max(1, min(4, int(s["freq_hz"] * s["duration_s"] / 2.0)))
+                for s in params["segments"])
+    return max(params["bias_instability_deg_h"], params["arw_deg_sqrt_h"] * 60.0 / math.sqrt(t_seg))
 
 
 def _lost_table_rows(rng, ctx):
@@ -366,7 +384,7 @@ def trial(cli, plan, seed, t, th, work, forms="physical"):
         truth = [which]
         total = sum(s["duration_s"] for s in params["segments"]) + 3.0 * len(params["segments"])
         extra, right = OUTSIDE[which](rng, {"plan": plan, "total_s": total, "th": th,
-                                            "instability": params["bias_instability_deg_h"]})
+                                            "trend_noise": trend_noise(params)})
         physical[which] = extra
         params.update(extra)
     stated = stated_noise(rng, params)
