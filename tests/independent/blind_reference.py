@@ -397,7 +397,7 @@ def trial(cli, plan, seed, t, th, work, forms="physical"):
             "verdict_effects": d["verdict_effects"], "top3": ranked[:3], "reason": d["verdict_reason"],
             "shrink": best["heldout_shrink"] if best else None, "heading_true": params["heading_deg"],
             "fitted": {e["name"]: [[q["value"], q["std"]] for q in ordered_parameters(e)]
-                       for e in d["effects"] if e["name"] in truth},
+                       for e in d["effects"] if e["name"] in truth or e["name"] in d["verdict_effects"]},
             "heading": d["calibration"].get("heading_deg"), "seconds": time.time() - start}
 
 
