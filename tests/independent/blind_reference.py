@@ -11,19 +11,27 @@ bias instability of 0.01..0.2 deg/h over 100..600 s. The diagnosis is told
 the bias instability as a static noise test would state it, each figure
 within a factor sqrt(2) of the truth (--bias-instability, --bias-correlation).
 
-Trial kinds, interleaved (of every 20): 12 one library effect at 3..10x its
-detection threshold, 3 none, 2 two effects at once, 3 outside the library
-(a bias step, an amplitude decay, an amplitude drift). Scores (docs/diagnosis.md):
-top-1 / top-3 of single effects, false alarms of "none" trials, pairs named
-one of their two, "unexplained" recall of outside trials, median held-out
-shrink when right; the confusion matrix and every wrong answer with the
-diagnosis' own reason.
+Trial kinds, interleaved (of every 20): 10 one library effect at 3..10x its
+detection threshold, 3 none, 2 two effects at once, 5 outside the library.
+Misalignment, g-sensitivity and table distortion are made in their physical
+form (the IMU mount's roll/pitch/yaw, a k per gyro within 10 %, a servo's
+unbalance through its first-order disturbance response; --forms library:
+the library's own forms). The outside effects rotate through OUTSIDE (15
+physical effects, five different ones in every block of 20 trials), each
+with the answer that is right for it (README.md "Blind check": why).
+Scores (docs/diagnosis.md): top-1 / top-3 of single effects, false alarms
+of "none" trials, pairs named one of their two, "unexplained" recall of the
+outside trials whose right answer is "unexplained", outside trials answered
+right, median held-out shrink when right; per outside effect; the confusion
+matrix and every wrong answer with the diagnosis' own reason.
 
   blind_reference.py --cli build/release/app/fogbench-cli --trials 60 --seed 1 [--plan blind|paper]
-      [--jobs 2] [--json out.json] [--check]
+      [--forms physical|library] [--only I,J] [--jobs 2] [--keep DIR] [--json out.json]
+      [--check] [--min-correct N]
 
 --check exits 1 when a target is missed (top-1 >= 90 %, top-3 >= 98 %, false
-alarms <= 5 %, unexplained recall >= 80 %, pairs >= 80 %).
+alarms <= 5 %, unexplained recall >= 80 %, pairs >= 80 %); --min-correct N
+exits 1 when fewer than N trials are answered right.
 """
 
 import argparse
@@ -71,7 +79,185 @@ MAKERS = {
     "dropped_frames": _scalar("drop_per_mille"),
 }
 ONE_SIDED = {"first_order_lag", "timestamp_jitter", "dropped_frames"}
-OUTSIDE = ["bias_step", "amplitude_decay", "amplitude_drift"]
+
+# Library effects a real bench has in another physical form, and how refgen
+# makes them (--forms physical, the default): the diagnosis' answer is right
+# when it names the library effect, which closes most of the gap; `values`
+# keeps the library-equivalent parameters (for fitted against injected).
+TEN_DEG_RAD = math.radians(10.0)
+
+
+def mount_from(rng, m, th):
+    """Misalignment as the IMU mount's roll, pitch, yaw (arcsec). Gyro i then
+    senses m_ij = (yaw, -pitch, -yaw, roll, pitch, -roll)[k] of axis j (in
+    the library's order m_xy, m_xz, m_yx, m_yz, m_zx, m_zy). Each angle's
+    threshold is the smallest of its two cells that have one."""
+    t = np.array(th, dtype=float)
+    cells = {0: (3, 5), 1: (1, 4), 2: (0, 2)}        # roll: m_yz, m_zy; pitch: m_xz, m_zx; yaw: m_xy, m_yx
+    ang_th = np.array([min([t[c] for c in cells[a] if t[c] > 0], default=0.0) for a in range(3)])
+    live = ang_th > 0
+    direction = rng.normal(size=3) * live
+    direction /= np.linalg.norm(direction)
+    rpy_urad = m * ang_th * direction
+    r, p, y = rpy_urad
+    return {"mount_rpy_arcsec": [float(v) * 1e-6 * 180.0 / math.pi * 3600.0 for v in rpy_urad]}, \
+        [y, -p, -y, r, p, -r]
+
+
+def physical_form(rng, name, th):
+    """(refgen parameters, library-equivalent values) of a library effect in
+    its physical form, at 3..10x the detection threshold; None where the
+    library's own form is the physical one."""
+    m = 3.0 * (10.0 / 3.0) ** rng.uniform()
+    if name == "misalignment":
+        return mount_from(rng, m, th[name])
+    if name == "g_sensitivity":
+        k = m * th[name][0] * (1.0 if rng.uniform() < 0.5 else -1.0)
+        ks = [float(k * (1.0 + rng.uniform(-0.1, 0.1))) for _ in range(3)]   # each gyro its own, within 10 %
+        return {"g_sens_deg_h_g": ks}, [float(np.mean(ks))]
+    if name == "table_harmonic_distortion":
+        # an unbalance eps sin(theta + phi) through the servo (corner 10..40 Hz);
+        # its 2nd-harmonic term is the library's c2 = -eps sin(phi) (10 deg) / 2
+        c2 = m * th[name][0] * (1.0 if rng.uniform() < 0.5 else -1.0) * 1e-6
+        phi = float(rng.uniform(30.0, 150.0)) * (1.0 if c2 < 0 else -1.0)
+        eps = 2.0 * abs(c2) / (TEN_DEG_RAD * abs(math.sin(math.radians(phi))))
+        c3 = eps * math.cos(math.radians(phi)) * TEN_DEG_RAD ** 2 / 6.0
+        return {"servo_unbalance_arcsec": math.degrees(eps) * 3600.0, "servo_unbalance_phase_deg": phi,
+                "servo_corner_hz": float(10.0 * 4.0 ** rng.uniform())}, [c2 * 1e6, c3 * 1e6]
+    return None
+
+
+# Effects outside the library, each in its own physical form, at sizes a real
+# bench can have, and the answer that is right for it (README "Outside
+# effects": why). Each maker returns (refgen parameters, the right answers);
+# `ctx` has the plan, the session's total length and the thresholds.
+def _sign(rng):
+    return 1.0 if rng.uniform() < 0.5 else -1.0
+
+
+def _bias_step(rng, ctx):
+    return {"bias_step_deg_h": [float(rng.uniform(2, 5)) * _sign(rng)] * 3,
+            "bias_step_time_s": 1.0 + 0.5 * ctx["total_s"]}, {"unexplained"}
+
+
+def _amplitude_decay(rng, ctx):
+    return {"decay_tau_s": float(rng.uniform(150, 400))}, {"unexplained"}
+
+
+def _amplitude_drift(rng, ctx):
+    return {"amp_drift_per_s": -float(rng.uniform(0.1, 0.3)) / 60.0}, {"unexplained"}
+
+
+def _base_tilt(rng, ctx):
+    return {"base_tilt_deg": float(rng.uniform(0.5, 2.0)), "base_tilt_azimuth_deg": float(rng.uniform(0, 360))}, \
+        {"none"}
+
+
+def _nonorthogonality(rng, ctx):
+    p = {"nonorth_inner_arcsec": float(rng.uniform(10, 30)) * _sign(rng),
+         "nonorth_middle_arcsec": float(rng.uniform(10, 30)) * _sign(rng)}
+    swings_y = any(a == "y" for a, *_ in PLANS[ctx["plan"]])
+    return p, {"misalignment"} if swings_y else {"none"}
+
+
+def _eccentricity(rng, ctx):
+    e = float(rng.uniform(1.0, 3.0))
+    phi = float(rng.uniform(0, 360))
+    ecc = e * 1e-3 / 100.0
+    th = ctx["th"]
+    sf_ratio = ecc * abs(math.cos(math.radians(phi))) * 1e6 / th["scale_factor_error"][0]
+    c2_ratio = ecc * abs(math.sin(math.radians(phi))) * TEN_DEG_RAD * 1e6 / th["table_harmonic_distortion"][0]
+    right = set()
+    if c2_ratio >= 0.5:
+        right.add("unexplained")      # a 2nd harmonic in the reading only: no library form
+    if c2_ratio <= 2.0 and sf_ratio >= 1.0:
+        right.add("scale_factor_error")
+    if not right:
+        right.add("none")
+    return {"eccentricity_um": e, "eccentricity_radius_mm": 100.0, "eccentricity_phase_deg": phi}, right
+
+
+def _compliance(rng, ctx):
+    return {"compliance_fn_hz": float(40.0 * (150.0 / 40.0) ** rng.uniform()),
+            "compliance_zeta": float(rng.uniform(0.02, 0.2))}, {"unexplained"}
+
+
+def _register_update(rng, ctx):
+    return {"register_period_ms": 0.5, "register_offset_ms": float(rng.uniform(0.0, 0.5))}, {"none"}
+
+
+def _register_own_clock(rng, ctx):
+    return {"register_period_ms": 0.5, "register_offset_ms": float(rng.uniform(0.0, 0.5)),
+            "register_clock_ppm": float(rng.uniform(20.0, 100.0)) * _sign(rng)}, {"unexplained"}
+
+
+def _boxcar(rng, ctx):
+    return {"boxcar_ms": float(rng.choice([4.0, 5.0, 6.0, 7.0, 8.0]))}, {"first_order_lag"}
+
+
+def _latency_white(rng, ctx):
+    return {"latency_p2": float(rng.uniform(0.05, 0.3)), "latency_delta_us": float(rng.uniform(5.0, 30.0)),
+            "latency_sigma_us": 0.5}, {"timestamp_jitter"}
+
+
+def _latency_telegraph(rng, ctx):
+    return {"latency_p2": float(rng.uniform(0.2, 0.5)), "latency_delta_us": float(rng.uniform(20.0, 100.0)),
+            "latency_sigma_us": 0.5, "latency_dwell_s": float(rng.uniform(1.0, 5.0))}, {"unexplained"}
+
+
+def _rate_random_walk(rng, ctx):
+    # sized against what hides a bias wander in the trend cells (ctx
+    # "trend_noise"): the walk's 1-sigma change over the session, K sqrt(T),
+    # is 4..8x it
+    ratio = float(rng.uniform(4.0, 8.0))
+    return {"rrw_deg_h_sqrt_h": ratio * ctx["trend_noise"] / math.sqrt(ctx["total_s"] / 3600.0)}, {"unexplained"}
+
+
+def _flicker(rng, ctx):
+    # B 4..8x the trend cells' noise (a flicker bias changes by ~0.94 B
+    # between two stretches of a record)
+    return {"flicker_deg_h": float(rng.uniform(4.0, 8.0)) * ctx["trend_noise"],
+            "flicker_tau_range_s": [1.0, 10000.0]}, {"unexplained"}
+
+
+def trend_noise(params):
+    """What hides a bias wander in one gyro-trend cell (deg/h): the larger of
+    the IMU's bias instability (1 sigma) and the white noise's mean over the
+    plan's longest segment (a test point is cut into up to four segments of
+    at least two periods), ARW * 60 / sqrt(T_seg)."""
+    t_seg = max(s["duration_s"] / max(1, min(4, int(s["freq_hz"] * s["duration_s"] / 2.0)))
+                for s in params["segments"])
+    return max(params["bias_instability_deg_h"], params["arw_deg_sqrt_h"] * 60.0 / math.sqrt(t_seg))
+
+
+def _lost_table_rows(rng, ctx):
+    return {"table_drop_per_mille": float(rng.uniform(1.0, 5.0))}, {"unexplained"}
+
+
+OUTSIDE = {
+    "bias_step": _bias_step,
+    "amplitude_decay": _amplitude_decay,
+    "amplitude_drift": _amplitude_drift,
+    "base_tilt": _base_tilt,
+    "axis_nonorthogonality": _nonorthogonality,
+    "encoder_eccentricity": _eccentricity,
+    "fixture_compliance": _compliance,
+    "register_update": _register_update,
+    "register_own_clock": _register_own_clock,
+    "boxcar_filter": _boxcar,
+    "latency_bimodal": _latency_white,
+    "latency_telegraph": _latency_telegraph,
+    "rate_random_walk": _rate_random_walk,
+    "flicker_bias": _flicker,
+    "lost_table_rows": _lost_table_rows,
+}
+OUTSIDE_NAMES = list(OUTSIDE)
+# Of every 20 trials: 10 one library effect, 3 none, 2 pairs, 5 outside.
+SLOTS = {"single": range(0, 10), "none": range(10, 13), "pair": range(13, 15), "outside": range(15, 20)}
+
+
+def kind_of(slot):
+    return next(k for k, r in SLOTS.items() if slot in r)
 
 
 def nominal(rng, plan):
@@ -108,14 +294,22 @@ def run(cmd):
     return p.stdout
 
 
+KEEP = None   # --keep DIR: import directories, sessions and diagnoses kept there
+
+
 def diagnose(cli, params, work, name, stated):
-    d = os.path.join(work, name)
+    d = os.path.join(KEEP or work, name)
     refgen.write_dir(refgen.generate(params), d, overwrite=True)
     session = d + ".fbs"
     run([cli, "import", d, "--out", session])
-    out = json.loads(run([cli, "diagnose", session, "--json", "--threads", "1",
-                          "--bias-instability", "%.6g" % stated["instability"],
-                          "--bias-correlation", "%.6g" % stated["correlation"]]))
+    text = run([cli, "diagnose", session, "--json", "--threads", "1",
+                "--bias-instability", "%.6g" % stated["instability"],
+                "--bias-correlation", "%.6g" % stated["correlation"]])
+    out = json.loads(text)
+    if KEEP:
+        with open(d + ".diagnosis.json", "w") as fh:
+            fh.write(text)
+        return out
     for f in os.listdir(d):
         os.remove(os.path.join(d, f))
     os.rmdir(d)
@@ -152,46 +346,69 @@ def draw_effect(rng, name, th):
     return list(m * t * direction)
 
 
-def trial(cli, plan, seed, t, th, work):
+def outside_effect(seed, t):
+    """The outside effect of trial t: every block of 20 takes the next five of
+    the list, starting where the seed says, so that a 20-trial run draws five
+    different ones and three blocks go through the whole list."""
+    n_out = len(SLOTS["outside"])
+    j = SLOTS["outside"].index(t % 20)
+    return OUTSIDE_NAMES[(seed * n_out + (t // 20) * n_out + j) % len(OUTSIDE_NAMES)]
+
+
+def trial(cli, plan, seed, t, th, work, forms="physical"):
     rng = np.random.default_rng([seed, t, 77])
     slot = t % 20
-    kind = "single" if slot < 12 else "none" if slot < 15 else "pair" if slot < 17 else "outside"
+    kind = kind_of(slot)
     params = refgen.default_params()
     params.update(nominal(rng, plan))
     params["seed"] = seed * 100000 + t
     names = sorted(MAKERS)
-    truth, values = [], {}
+    truth, values, physical, right = [], {}, {}, None
     if kind == "single":
-        truth = [names[(t // 20 * 12 + slot) % len(names)]]
+        n_single = len(SLOTS["single"])
+        truth = [names[(t // 20 * n_single + slot) % len(names)]]
     elif kind == "pair":
         a, b = rng.choice(len(names), size=2, replace=False)
         truth = [names[a], names[b]]
     for name in truth:
-        v = draw_effect(rng, name, th)
-        values[name] = v
-        params.update(MAKERS[name](v))
+        form = physical_form(rng, name, th) if forms == "physical" else None
+        if form is None:
+            v = draw_effect(rng, name, th)
+            values[name] = v
+            params.update(MAKERS[name](v))
+        else:
+            physical[name], values[name] = form
+            params.update(form[0])
     if kind == "outside":
-        which = OUTSIDE[(t // 20) % len(OUTSIDE)]
+        which = outside_effect(seed, t)
         truth = [which]
         total = sum(s["duration_s"] for s in params["segments"]) + 3.0 * len(params["segments"])
-        if which == "bias_step":
-            params["bias_step_deg_h"] = [float(rng.uniform(2, 5)) * (1 if rng.uniform() < 0.5 else -1)] * 3
-            params["bias_step_time_s"] = 1.0 + 0.5 * total
-        elif which == "amplitude_decay":
-            params["decay_tau_s"] = float(rng.uniform(150, 400))
-        else:
-            params["amp_drift_per_s"] = -float(rng.uniform(0.1, 0.3)) / 60.0
+        extra, right = OUTSIDE[which](rng, {"plan": plan, "total_s": total, "th": th,
+                                            "trend_noise": trend_noise(params)})
+        physical[which] = extra
+        params.update(extra)
     stated = stated_noise(rng, params)
     start = time.time()
     d = diagnose(cli, params, work, "trial-%d" % t, stated)
     ranked = [e["name"] for e in d["effects"]]
     best = next((e for e in d["effects"] if e["name"] == d["verdict"]), None)
-    return {"trial": t, "kind": kind, "truth": truth, "values": values, "verdict": d["verdict"],
+    return {"trial": t, "kind": kind, "truth": truth, "values": values, "physical": physical,
+            "right_answers": sorted(right) if right is not None else None, "verdict": d["verdict"],
             "verdict_effects": d["verdict_effects"], "top3": ranked[:3], "reason": d["verdict_reason"],
             "shrink": best["heldout_shrink"] if best else None, "heading_true": params["heading_deg"],
             "fitted": {e["name"]: [[q["value"], q["std"]] for q in ordered_parameters(e)]
-                       for e in d["effects"] if e["name"] in truth},
+                       for e in d["effects"] if e["name"] in truth or e["name"] in d["verdict_effects"]},
             "heading": d["calibration"].get("heading_deg"), "seconds": time.time() - start}
+
+
+def is_right(r):
+    if r["kind"] == "single":
+        return r["verdict"] == r["truth"][0]
+    if r["kind"] == "pair":
+        return r["verdict"] in r["truth"]
+    if r["kind"] == "none":
+        return r["verdict"] == "none"
+    return r["verdict"] in r["right_answers"]
 
 
 def score(results):
@@ -199,18 +416,31 @@ def score(results):
     none = [r for r in results if r["kind"] == "none"]
     pair = [r for r in results if r["kind"] == "pair"]
     outside = [r for r in results if r["kind"] == "outside"]
+    unexplained = [r for r in outside if r["right_answers"] == ["unexplained"]]
     right = [r for r in single if r["verdict"] == r["truth"][0]]
     pct = lambda k, n: 100.0 * k / n if n else float("nan")
     shrinks = sorted(r["shrink"] for r in right if r["shrink"] is not None)
+    per_outside = {}
+    for r in outside:
+        e = per_outside.setdefault(r["truth"][0], {"trials": 0, "right": 0, "partial": 0, "verdicts": {}})
+        e["trials"] += 1
+        e["right"] += is_right(r)
+        # wrong, but "unexplained" with the right library effect kept as the partial explanation
+        e["partial"] += (not is_right(r) and r["verdict"] == "unexplained" and
+                         any(x in r["right_answers"] for x in r["verdict_effects"]))
+        e["verdicts"][r["verdict"]] = e["verdicts"].get(r["verdict"], 0) + 1
     return {
         "trials": len(results),
         "top1_pct": pct(len(right), len(single)),
         "top3_pct": pct(sum(r["truth"][0] in r["top3"] for r in single), len(single)),
         "false_alarm_pct": pct(sum(r["verdict"] != "none" for r in none), len(none)),
         "pair_one_of_two_pct": pct(sum(r["verdict"] in r["truth"] for r in pair), len(pair)),
-        "unexplained_recall_pct": pct(sum(r["verdict"] == "unexplained" for r in outside), len(outside)),
+        "unexplained_recall_pct": pct(sum(r["verdict"] == "unexplained" for r in unexplained), len(unexplained)),
+        "outside_right_pct": pct(sum(is_right(r) for r in outside), len(outside)),
         "median_shrink_when_right": shrinks[len(shrinks) // 2] if shrinks else float("nan"),
-        "counts": {"single": len(single), "none": len(none), "pair": len(pair), "outside": len(outside)},
+        "counts": {"single": len(single), "none": len(none), "pair": len(pair), "outside": len(outside),
+                   "outside_unexplained": len(unexplained)},
+        "per_outside_effect": per_outside,
     }
 
 
@@ -220,12 +450,22 @@ def main(argv=None):
     ap.add_argument("--trials", type=int, default=60)
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--plan", choices=sorted(PLANS), default="blind")
+    ap.add_argument("--forms", choices=["physical", "library"], default="physical",
+                    help="inject misalignment, g-sensitivity and table distortion in their physical form "
+                         "(default) or in the library's own")
+    ap.add_argument("--only", help="run only these trials of the seed's draw, e.g. 3,17")
     ap.add_argument("--jobs", type=int, default=2)
+    ap.add_argument("--keep", help="keep every trial's import directory, session and diagnosis JSON here")
     ap.add_argument("--json", help="write every trial and the scores here")
     ap.add_argument("--check", action="store_true", help="exit 1 when a target is missed")
     ap.add_argument("--min-correct", type=int, default=0,
                     help="exit 1 when fewer trials than this are answered right (a regression floor for short runs)")
     a = ap.parse_args(argv)
+    which = [int(x) for x in a.only.split(",")] if a.only else list(range(a.trials))
+    global KEEP
+    if a.keep:
+        os.makedirs(a.keep, exist_ok=True)
+        KEEP = a.keep
     with tempfile.TemporaryDirectory(prefix="fogbench-blind-") as work:
         # Detection thresholds from a clean session of the plan (nominal bench).
         clean = refgen.default_params()
@@ -236,15 +476,13 @@ def main(argv=None):
         th = thresholds_from(diagnose(a.cli, clean, work, "clean", {"instability": 0.05, "correlation": 300.0}))
         results = []
         with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, a.jobs)) as pool:
-            futures = [pool.submit(trial, a.cli, a.plan, a.seed, t, th, work) for t in range(a.trials)]
+            futures = [pool.submit(trial, a.cli, a.plan, a.seed, t, th, work, a.forms) for t in which]
             for f in concurrent.futures.as_completed(futures):
                 r = f.result()
                 results.append(r)
-                ok = (r["verdict"] in r["truth"]) if r["kind"] in ("single", "pair") else \
-                     (r["verdict"] == "none" if r["kind"] == "none" else r["verdict"] == "unexplained")
                 print("trial %3d %-7s truth %-45s verdict %-26s %s" % (
-                    r["trial"], r["kind"], "+".join(r["truth"]) or "none", r["verdict"], "" if ok else "WRONG"),
-                    flush=True)
+                    r["trial"], r["kind"], "+".join(r["truth"]) or "none", r["verdict"],
+                    "" if is_right(r) else "WRONG"), flush=True)
     results.sort(key=lambda r: r["trial"])
     s = score(results)
     confusion = collections.Counter((r["truth"][0] if r["truth"] else "none", r["verdict"])
@@ -252,24 +490,29 @@ def main(argv=None):
     print("\nconfusion (truth -> verdict: count):")
     for (truth, verdict), n in sorted(confusion.items()):
         print("  %-28s -> %-28s %d" % (truth, verdict, n))
+    print("\noutside effects (right answers: right / trials, [partial: unexplained with the right effect kept],"
+          " verdicts):")
+    for name in OUTSIDE_NAMES:
+        e = s["per_outside_effect"].get(name)
+        if e:
+            answers = sorted({a for r in results if r["kind"] == "outside" and r["truth"][0] == name
+                              for a in r["right_answers"]})
+            print("  %-24s %-40s %d / %d  [%d]  %s" % (name, "|".join(answers), e["right"], e["trials"],
+                                                       e["partial"], json.dumps(e["verdicts"])))
     print("\nwrong answers:")
     for r in results:
-        wrong = (r["kind"] == "single" and r["verdict"] != r["truth"][0]) or \
-                (r["kind"] == "none" and r["verdict"] != "none") or \
-                (r["kind"] == "pair" and r["verdict"] not in r["truth"]) or \
-                (r["kind"] == "outside" and r["verdict"] != "unexplained")
-        if wrong:
-            print("  trial %d %s %s -> %s: %s" % (r["trial"], r["kind"], "+".join(r["truth"]) or "none", r["verdict"],
-                                                 r["reason"]))
-    correct = sum(((r["verdict"] == r["truth"][0]) if r["kind"] == "single" else
-                   (r["verdict"] in r["truth"]) if r["kind"] == "pair" else
-                   (r["verdict"] == "none") if r["kind"] == "none" else (r["verdict"] == "unexplained"))
-                  for r in results)
-    print("\nscores: " + json.dumps(s))
+        if not is_right(r):
+            kept = ", ".join(r["verdict_effects"]) if r["verdict_effects"] else "-"
+            print("  trial %d %s %s -> %s (kept: %s; right: %s): %s" % (
+                r["trial"], r["kind"], "+".join(r["truth"]) or "none", r["verdict"], kept,
+                "|".join(r["right_answers"] or r["truth"] or ["none"]), r["reason"]))
+    correct = sum(is_right(r) for r in results)
+    print("\nscores: " + json.dumps({k: v for k, v in s.items() if k != "per_outside_effect"}))
     print("%d of %d trials answered right" % (correct, len(results)))
     if a.json:
         with open(a.json, "w") as fh:
-            json.dump({"plan": a.plan, "seed": a.seed, "thresholds": th, "scores": s, "trials": results}, fh, indent=1)
+            json.dump({"plan": a.plan, "seed": a.seed, "forms": a.forms, "thresholds": th, "scores": s,
+                       "trials": results}, fh, indent=1)
     if correct < a.min_correct:
         print("fewer than %d trials answered right" % a.min_correct)
         return 1

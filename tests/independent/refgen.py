@@ -38,6 +38,13 @@ Frames and conventions
   1 + clock_rate_ppm_gyro * 1e-6 against it, an error case).
 * Lag (what fogbench measures) = imu_delay_ms - table_read_delay_ms: the
   time by which the gyro output lags the stamped table reading.
+* Effects in their own physical form (all off by default; README "Outside
+  effects"): base tilt, table-axis non-orthogonality, encoder eccentricity,
+  encoder-to-fixture compliance, a servo's unbalance, the IMU mount's
+  rotation, g-sensitivity per gyro, the pulse register's update, a boxcar
+  of the rate, a bimodal / Markov latency, rate random walk, flicker, lost
+  table rows. truth.json's physical_effects states what each amounts to in
+  closed form (extra delay, equivalent lag, equivalent library values).
 """
 
 from __future__ import annotations
@@ -126,7 +133,7 @@ def default_params():
         # g_sens_deg_h_g times the specific force along its own axis; and its
         # output is the rate through a first-order lag of lag_tau_ms.
         "misalignment_urad": [0.0] * 6,
-        "g_sens_deg_h_g": 0.0,
+        "g_sens_deg_h_g": 0.0,     # one k for every gyro, or three (x, y, z): each gyro its own
         "lag_tau_ms": 0.0,
         # ... and a scale factor 1 + scale_factor_ppm, plus sf_asymmetry_ppm
         # of |rate| and sf_nonlinearity_ppm_at_100 * rate * (rate / 100)^2
@@ -145,6 +152,71 @@ def default_params():
         # (encoder_cyclic_arcsec = [s, c]).
         "table_poly_ppm": [0.0, 0.0],
         "encoder_cyclic_arcsec": [0.0, 0.0],
+        # ---- Effects in their own physical form (README "Outside effects");
+        # every one is off by default and then leaves every output as before.
+        # Table base tilted by base_tilt_deg about the horizontal axis at
+        # azimuth base_tilt_azimuth_deg (from north toward east): the level
+        # frame becomes R_tilt L, for the Earth rate and gravity alike.
+        "base_tilt_deg": 0.0,
+        "base_tilt_azimuth_deg": 0.0,
+        # Non-orthogonality of the table's axes (arcsec): the inner axis'
+        # bearing tilted toward the middle axis by nonorth_inner_arcsec
+        # (C = .. R_y(a_y) R_z(eps_i) R_x(a_x)), the middle axis' toward the
+        # outer one by nonorth_middle_arcsec (R_z(a_z) R_x(eps_m) R_y(a_y));
+        # only for axis_order zyx.
+        "nonorth_inner_arcsec": 0.0,
+        "nonorth_middle_arcsec": 0.0,
+        # Encoder disk eccentricity: e (um) at the read head's radius r (mm)
+        # gives a once-per-revolution reading error (e/r) sin(theta + phi) rad
+        # on the axes in eccentricity_axes.
+        "eccentricity_um": 0.0,
+        "eccentricity_radius_mm": 100.0,
+        "eccentricity_phase_deg": 0.0,
+        "eccentricity_axes": "xyz",
+        # Compliance between the encoder and the IMU fixture: the fixture's
+        # angle follows the encoder's through a spring-damper,
+        # (2 zeta wn s + wn^2) / (s^2 + 2 zeta wn s + wn^2); 0 Hz = rigid.
+        "compliance_fn_hz": 0.0,
+        "compliance_zeta": 0.05,
+        # Table servo: an unbalance torque m g l sin(theta + phi) on the
+        # horizontal axes (x, y) deflects the motion by
+        # servo_unbalance_arcsec * sin(theta + phi) through the loop's
+        # first-order disturbance response of corner servo_corner_hz
+        # (0 Hz: static). Seen by encoder and gyros alike.
+        "servo_unbalance_arcsec": 0.0,
+        "servo_unbalance_phase_deg": 0.0,
+        "servo_corner_hz": 0.0,
+        # IMU mount rotated by roll, pitch, yaw (arcsec, about the body x, y,
+        # z) against the table's inner frame: the gyros sense R_m^T omega_b
+        # (and R_m^T f for the g-sensitivity).
+        "mount_rpy_arcsec": [0.0, 0.0, 0.0],
+        # The gyro's pulse register is updated every register_period_ms (0 =
+        # continuously) on the IMU crystal, at register_offset_ms after each
+        # frame end modulo the period, its own clock register_clock_ppm
+        # faster than the frame clock; a frame reports the held value.
+        "register_period_ms": 0.0,
+        "register_offset_ms": 0.0,
+        "register_clock_ppm": 0.0,
+        # Moving average (boxcar) of the rate over boxcar_ms before the frame.
+        "boxcar_ms": 0.0,
+        # Latency between a frame's end and its stamp, beyond the delays: 0
+        # with probability 1 - latency_p2, latency_delta_us with latency_p2,
+        # each mode with latency_sigma_us rms; latency_dwell_s > 0 makes the
+        # mode a two-state Markov chain with that mean dwell in mode 2 (and
+        # dwell (1 - p2) / p2 times it in mode 1): a non-white latency.
+        "latency_p2": 0.0,
+        "latency_delta_us": 0.0,
+        "latency_sigma_us": 0.0,
+        "latency_dwell_s": 0.0,
+        # Rate random walk (deg/h/sqrt(h)) and flicker bias (deg/h, the
+        # bias-instability coefficient B of S(f) = B^2 / (2 pi f)) made of one
+        # Gauss-Markov process per decade of correlation time in
+        # flicker_tau_range_s, per gyro.
+        "rrw_deg_h_sqrt_h": 0.0,
+        "flicker_deg_h": 0.0,
+        "flicker_tau_range_s": [1.0, 10000.0],
+        # Table rows lost at random (per mille): missing from table.csv.
+        "table_drop_per_mille": 0.0,
         "bias_deg_h": [1.0, 1.0, 1.0],
         "bias_step_deg_h": [0.0, 0.0, 0.0],
         "bias_step_time_s": math.inf,
@@ -298,10 +370,38 @@ def rot(axis, angle_deg):
     return np.moveaxis(np.array(m), (0, 1), (-2, -1))
 
 
+def rot_about(u, angle_deg):
+    """Proper rotation by +angle about the unit vector u (Rodrigues), (3, 3)."""
+    u = np.asarray(u, dtype=float) / np.linalg.norm(u)
+    a = math.radians(angle_deg)
+    k = np.array([[0.0, -u[2], u[1]], [u[2], 0.0, -u[0]], [-u[1], u[0], 0.0]])
+    return np.eye(3) + math.sin(a) * k + (1.0 - math.cos(a)) * (k @ k)
+
+
 def level_to_table(p):
-    """L: the table's axes at zero angles in the local NED frame, (3, 3)."""
+    """L: the table's axes at zero angles in the local NED frame, (3, 3);
+    with a base tilt, R_tilt L (the tilt about the horizontal axis at its
+    azimuth, from north toward east)."""
     r = rot("z", p["heading_deg"])
-    return r @ rot("x", 180.0) if p["z_up"] else r
+    r = r @ rot("x", 180.0) if p["z_up"] else r
+    if p.get("base_tilt_deg", 0.0):
+        az = math.radians(p["base_tilt_azimuth_deg"])
+        r = rot_about([math.cos(az), math.sin(az), 0.0], p["base_tilt_deg"]) @ r
+    return r
+
+
+def axis_chain(p):
+    """The table's rotations outer to inner: ("axis", "z") for a table axis,
+    ("fixed", R) for a constant rotation between two axes (non-orthogonality:
+    R_x(eps_middle) between z and y, R_z(eps_inner) between y and x)."""
+    steps = [("axis", ax) for ax in p["axis_order"]]
+    em, ei = p.get("nonorth_middle_arcsec", 0.0), p.get("nonorth_inner_arcsec", 0.0)
+    if em or ei:
+        if p["axis_order"] != "zyx":
+            raise ValueError("axis non-orthogonality is modelled for axis_order zyx")
+        steps = [("axis", "z")] + ([("fixed", rot("x", em * ARCSEC))] if em else []) + [("axis", "y")] + \
+                ([("fixed", rot("z", ei * ARCSEC))] if ei else []) + [("axis", "x")]
+    return steps
 
 
 def earth_rate_ned_deg_s(lat_deg):
@@ -315,9 +415,51 @@ def specific_force(angles, p):
     C(t)^T (0, 0, -1) in NED, through the same axis chain as body_rates."""
     n = angles.shape[0]
     u = np.tile(_rot_t(level_to_table(p), np.array([0.0, 0.0, -1.0])), (n, 1))
-    for ax in p["axis_order"]:
-        u = _rot_t(rot(ax, angles[:, AXES.index(ax)]), u)
+    for kind, ax in axis_chain(p):
+        u = _rot_t(ax if kind == "fixed" else rot(ax, angles[:, AXES.index(ax)]), u)
     return u
+
+
+def linear_mode(pole, u, h, y0):
+    """y' = pole y + u(t) on samples u (n, ...) every h, u linear between
+    samples (exact for that), y = y0 at the first sample; pole may be
+    complex. Returns y at every sample. Summed in blocks short enough for
+    |a|^-L to stay finite, a = exp(pole h)."""
+    a = complex(np.exp(pole * h)) if isinstance(pole, complex) else math.exp(pole * h)
+    i0 = (a - 1.0) / pole
+    i1 = (a - 1.0) / pole ** 2 - h / pole
+    inc = u[:-1] * i0 + (u[1:] - u[:-1]) * (i1 / h)
+    dtype = np.complex128 if isinstance(pole, complex) else float
+    y = np.empty(u.shape, dtype=dtype)
+    y[0] = y0
+    decay = max(-float(np.real(pole)) * h, 1e-12)
+    L = max(1, int(30.0 / decay))
+    prev = np.asarray(y[0]).copy()
+    for b in range(0, inc.shape[0], L):
+        ub = inc[b:b + L]
+        k = np.arange(1, ub.shape[0] + 1).reshape((-1,) + (1,) * (u.ndim - 1))
+        w = a ** (-k.astype(float))
+        y[b + 1:b + 1 + ub.shape[0]] = a ** k * (prev + np.cumsum(ub * w, axis=0))
+        prev = np.asarray(y[b + ub.shape[0]]).copy()
+    return y
+
+
+def hermite(t, t0, h, v, dv):
+    """Cubic Hermite interpolation at times t of samples v with derivatives
+    dv every h from t0 (columns: axes)."""
+    x = np.clip((np.asarray(t, dtype=float) - t0) / h, 0.0, v.shape[0] - 1.0)
+    j = np.clip(np.floor(x).astype(np.int64), 0, v.shape[0] - 2)
+    s = (x - j)[:, None]
+    h00, h10 = 2 * s**3 - 3 * s**2 + 1, s**3 - 2 * s**2 + s
+    h01, h11 = -2 * s**3 + 3 * s**2, s**3 - s**2
+    val = h00 * v[j] + h10 * h * dv[j] + h01 * v[j + 1] + h11 * h * dv[j + 1]
+    d00, d10 = (6 * s**2 - 6 * s) / h, 3 * s**2 - 4 * s + 1
+    d01, d11 = (-6 * s**2 + 6 * s) / h, 3 * s**2 - 2 * s
+    der = d00 * v[j] + d10 * dv[j] + d01 * v[j + 1] + d11 * dv[j + 1]
+    return val, der
+
+
+MOTION_GRID_S = 0.25e-3   # step of the servo and compliance states (cubic Hermite between)
 
 
 def first_order_lag(x, dt, tau, y0, x0):
@@ -359,7 +501,10 @@ def body_rates(angles, rates, p):
     n = angles.shape[0]
     w_n = earth_rate_ned_deg_s(p["latitude_deg"])
     u = np.tile(_rot_t(level_to_table(p), w_n), (n, 1))
-    for ax in p["axis_order"]:                       # outer .. inner
+    for kind, ax in axis_chain(p):                   # outer .. inner
+        if kind == "fixed":
+            u = u @ ax
+            continue
         i = AXES.index(ax)
         a = angles[:, i]
         if n and np.all(a == a[0]):
@@ -478,8 +623,9 @@ class Swing:
         return ang, rate
 
 
-def table_state(t, swings, p):
-    """Table angles and angle rates (n, 3) at true times t."""
+def commanded_state(t, swings, p):
+    """The swings and the fixed angles: angles and rates (n, 3) at true
+    times t, before any table error."""
     t = np.asarray(t, dtype=float)
     ang = np.tile(np.asarray(p["fixed_angles_deg"], dtype=float), (t.size, 1))
     rate = np.zeros((t.size, 3))
@@ -497,12 +643,77 @@ def table_state(t, swings, p):
             a, r = sw.eval(t[sel])
             ang[sel, i] += a
             rate[sel, i] += r
+    return ang, rate
+
+
+SERVO_AXES = (0, 1)   # the unbalance acts on the horizontal axes x and y (z is vertical)
+
+
+def _unbalance(ang, p):
+    """The servo's static deflection eps sin(theta + phi) (deg) on x and y."""
+    eps = p["servo_unbalance_arcsec"] * ARCSEC
+    arg = np.deg2rad(ang[:, SERVO_AXES]) + math.radians(p["servo_unbalance_phase_deg"])
+    return eps * np.sin(arg), eps * np.cos(arg)
+
+
+def table_state(t, swings, p, fixture=False):
+    """Table angles and angle rates (n, 3) at true times t: the motion that
+    the encoder reads. fixture=True: the angles of the IMU's fixture, which
+    follows the motion through the compliance (when there is one)."""
+    t = np.asarray(t, dtype=float)
+    ang, rate = commanded_state(t, swings, p)
+    if p.get("servo_unbalance_arcsec", 0.0):
+        d, dc = _unbalance(ang, p)
+        if p["servo_corner_hz"] > 0:
+            t0, h, v, dv = p["_servo"]
+            delta, _ = hermite(t, t0, h, v, dv)
+            ddelta = (d - delta) * (2.0 * math.pi * p["servo_corner_hz"])
+        else:
+            delta, ddelta = d, dc * np.deg2rad(rate[:, SERVO_AXES])
+        ang[:, SERVO_AXES] += delta
+        rate[:, SERVO_AXES] += ddelta
     c2, c3 = (v * 1e-6 for v in p["table_poly_ppm"])
     if c2 or c3:
         x = ang / 10.0
         rate = rate * (1.0 + 2.0 * c2 * x - 3.0 * c3 * x * x)
         ang = ang + 10.0 * (c2 * x * x - c3 * x ** 3)
+    if fixture and p.get("compliance_fn_hz", 0.0) > 0:
+        t0, h, v, dv = p["_compliance"]
+        e, de = hermite(t, t0, h, v, dv)
+        ang, rate = ang + e, rate + de
     return ang, rate
+
+
+def prepare_motion(p, swings, t_lo, t_hi):
+    """The servo's and the compliance's states on a grid of MOTION_GRID_S
+    from t_lo (at rest there) to t_hi, exact for inputs linear between grid
+    points; stored in p["_servo"] / p["_compliance"] as (t0, h, value,
+    derivative) for table_state's Hermite interpolation."""
+    h = MOTION_GRID_S
+    if p.get("compliance_fn_hz", 0.0) > 0:
+        zeta = p["compliance_zeta"]
+        if not 0 < zeta < 1:
+            raise ValueError("compliance_zeta must be in (0, 1)")
+        t_lo = t_lo - 25.0 / (zeta * 2.0 * math.pi * p["compliance_fn_hz"])  # the start's transient: exp(-25)
+    if p.get("servo_unbalance_arcsec", 0.0) and p["servo_corner_hz"] > 0:
+        tg = t_lo + h * np.arange(int(math.ceil((t_hi - t_lo) / h)) + 2)
+        ang, _ = commanded_state(tg, swings, p)
+        d, _ = _unbalance(ang, p)
+        wc = 2.0 * math.pi * p["servo_corner_hz"]
+        delta = linear_mode(-wc, d * wc, h, d[0])
+        p["_servo"] = (t_lo, h, delta, (d - delta) * wc)
+    if p.get("compliance_fn_hz", 0.0) > 0:
+        zeta = p["compliance_zeta"]
+        wn = 2.0 * math.pi * p["compliance_fn_hz"]
+        tg = t_lo + h * np.arange(int(math.ceil((t_hi - t_lo) / h)) + 2)
+        _, r1 = table_state(tg + 0.5 * h, swings, p)
+        _, r0 = table_state(tg - 0.5 * h, swings, p)
+        acc = (r1 - r0) / h                   # the motion's angular acceleration (deg/s^2)
+        pole = complex(-zeta * wn, wn * math.sqrt(1.0 - zeta * zeta))
+        # e'' + 2 zeta wn e' + wn^2 e = -acc: 1/((s - p)(s - p*)) = Im(y)/Im(p)
+        # with y' = p y + u.
+        y = linear_mode(pole, (-acc).astype(complex), h, np.zeros(3, dtype=complex))
+        p["_compliance"] = (t_lo, h, y.imag / pole.imag, (pole * y).imag / pole.imag)
 
 
 # --------------------------------------------------------------------------
@@ -541,6 +752,11 @@ def resolve(params):
     p["bias_deg_h"] = [float(x) for x in _vec3(p["bias_deg_h"], "bias_deg_h")]
     p["bias_step_deg_h"] = [float(x) for x in _vec3(p["bias_step_deg_h"], "bias_step_deg_h")]
     p["fixed_angles_deg"] = [float(x) for x in _vec3(p["fixed_angles_deg"], "fixed_angles_deg")]
+    p["mount_rpy_arcsec"] = [float(x) for x in _vec3(p["mount_rpy_arcsec"], "mount_rpy_arcsec")]
+    if not np.isscalar(p["g_sens_deg_h_g"]):
+        p["g_sens_deg_h_g"] = [float(x) for x in _vec3(p["g_sens_deg_h_g"], "g_sens_deg_h_g")]
+    if any(ax not in AXES for ax in p["eccentricity_axes"]):
+        raise ValueError("eccentricity_axes takes letters of xyz")
     if sorted(p["axis_order"]) != ["x", "y", "z"]:
         raise ValueError("axis_order must be a permutation of xyz")
     if p["rate_output"] not in (None, "frame_average", "sample_at_stamp"):
@@ -614,12 +830,110 @@ def gauss_markov(p, start, end):
     return start + h * np.arange(n), x
 
 
+def ar1(phi, kicks, x0):
+    """x_k = phi x_{k-1} + kicks_k from x_0 = x0 (kicks[0] unused); phi may
+    be an array broadcast against kicks' trailing axes. Blocked sums."""
+    phi = np.asarray(phi, dtype=float)
+    x = np.empty_like(kicks)
+    x[0] = x0
+    L = max(1, int(30.0 / max(float(np.max(-np.log(phi))), 1e-12)))
+    prev = x[0].copy()
+    for b in range(1, kicks.shape[0], L):
+        kb = kicks[b:b + L]
+        k = np.arange(1, kb.shape[0] + 1).reshape((-1,) + (1,) * (kicks.ndim - 1)).astype(float)
+        x[b:b + kb.shape[0]] = phi ** k * (prev + np.cumsum(kb * phi ** (-k), axis=0))
+        prev = x[b + kb.shape[0] - 1].copy()
+    return x
+
+
+def flicker_taus(p):
+    """Correlation times of the flicker's Gauss-Markov processes (one per
+    decade from the range's low end) and each one's sigma (deg/h):
+    B sqrt(ln 10 / (2 pi)), which makes the sum's one-sided PSD
+    sum 4 sigma^2 tau / (1 + (2 pi f tau)^2) ~ B^2 / (2 pi f) inside the range."""
+    lo, hi = (float(v) for v in p["flicker_tau_range_s"])
+    if not 0 < lo <= hi:
+        raise ValueError("flicker_tau_range_s must be 0 < low <= high")
+    n = int(math.floor(math.log10(hi / lo) + 1e-9)) + 1
+    taus = lo * 10.0 ** np.arange(n)
+    return taus, p["flicker_deg_h"] * math.sqrt(math.log(10.0) / (2.0 * math.pi))
+
+
+def flicker_components(p, start, end):
+    """The flicker's processes on a grid from start to end: (times, deg/s
+    (n, 3 gyros, decades)), stationary at the start; own random stream."""
+    taus, sigma = flicker_taus(p)
+    h = min(0.1, float(taus[0]) / 50.0)
+    n = int(math.ceil((end - start) / h)) + 1
+    rng = np.random.default_rng([int(p["seed"]), 0xF11C])
+    phi = np.exp(-h / taus)
+    sig = sigma / 3600.0
+    kicks = rng.normal(0.0, 1.0, (n, 3, taus.size)) * (sig * np.sqrt(1.0 - phi * phi))
+    x0 = rng.normal(0.0, sig, (3, taus.size))
+    return start + h * np.arange(n), ar1(phi, kicks, x0)
+
+
+def bias_noise(p, start, end):
+    """Rate random walk plus flicker bias on one grid: (times, deg/s per
+    gyro), or None when both are off. The walk starts at 0 at `start`; each
+    has its own random stream."""
+    k, b = p["rrw_deg_h_sqrt_h"], p["flicker_deg_h"]
+    if k <= 0 and b <= 0:
+        return None
+    h = 0.1 if b <= 0 else min(0.1, float(flicker_taus(p)[0][0]) / 50.0)
+    n = int(math.ceil((end - start) / h)) + 1
+    grid = start + h * np.arange(n)
+    total = np.zeros((n, 3))
+    if k > 0:
+        # K deg/h/sqrt(h) = K / 3600 deg/s per sqrt(3600 s)
+        steps = np.random.default_rng([int(p["seed"]), 0x8A4D]).normal(0.0, k / 216000.0 * math.sqrt(h), (n, 3))
+        steps[0] = 0.0
+        total += np.cumsum(steps, axis=0)
+    if b > 0:
+        g, comps = flicker_components(p, start, end)
+        total += comps.sum(axis=2)[:n]
+    return grid, total
+
+
+def frame_latency(p, frame_t):
+    """Each frame's latency (s) from its end to its stamp beyond the fixed
+    delays: mode 2 (latency_delta_us) with probability latency_p2, white or
+    a two-state Markov chain with mean dwell latency_dwell_s in mode 2; plus
+    latency_sigma_us rms in either. None when off; own random stream."""
+    p2, sig = p["latency_p2"], p["latency_sigma_us"]
+    if p2 <= 0 and sig <= 0:
+        return None
+    if not 0 <= p2 < 1:
+        raise ValueError("latency_p2 must be in [0, 1)")
+    rng = np.random.default_rng([int(p["seed"]), 0x1A7E])
+    n = frame_t.size
+    if p["latency_dwell_s"] <= 0 or p2 <= 0:
+        mode = rng.uniform(size=n) < p2
+    else:
+        period = float(np.median(np.diff(frame_t))) if n > 1 else 1.0
+        leave2 = min(1.0, period / p["latency_dwell_s"])           # per frame, out of mode 2
+        leave1 = min(1.0, leave2 * p2 / (1.0 - p2))                  # out of mode 1
+        mode = np.zeros(n, dtype=bool)
+        state, i = bool(rng.uniform() < p2), 0
+        while i < n:
+            run = int(rng.geometric(leave2 if state else leave1))
+            mode[i:i + run] = state
+            i += run
+            state = not state
+    lat = mode * (p["latency_delta_us"] * 1e-6)
+    if sig > 0:
+        lat = lat + rng.normal(0.0, sig * 1e-6, n)
+    return lat
+
+
 def generate(params, chunk_frames=5000):
     """Runs the model; returns a dict of arrays (true and written values)."""
     p = resolve(params)
     rng = np.random.default_rng([int(p["seed"]), 1])
     swings, windows, t_end, gated = timeline(p)
     t0 = windows[0][0]   # stamp grids are anchored at the first test point's start
+    if (p["servo_unbalance_arcsec"] and p["servo_corner_hz"] > 0) or p["compliance_fn_hz"] > 0:
+        prepare_motion(p, swings, -2.0 - abs(p["imu_delay_ms"]) * 1e-3, t_end + 2.0)
 
     # ---------------- table stream ----------------
     Pt = p["_table_period_s"]
@@ -634,10 +948,26 @@ def generate(params, chunk_frames=5000):
     if es or ec:
         ph = 2.0 * math.pi * tab_true / 10.0
         tab_meas += es * np.sin(ph) + ec * np.cos(ph)
+    if p["eccentricity_um"]:
+        # (e / r) rad once per revolution: e in um, r in mm
+        ecc = p["eccentricity_um"] * 1e-3 / p["eccentricity_radius_mm"]
+        for ax in p["eccentricity_axes"]:
+            i = AXES.index(ax)
+            tab_meas[:, i] += math.degrees(ecc) * np.sin(
+                np.deg2rad(tab_true[:, i]) + math.radians(p["eccentricity_phase_deg"]))
     if p["encoder_noise_arcsec"] > 0:
         tab_meas += rng.normal(0, p["encoder_noise_arcsec"] * ARCSEC, tab_meas.shape)
     if q > 0:
         tab_meas = np.round(tab_meas / q) * q
+    tab_lost = 0
+    if p["table_drop_per_mille"] > 0:
+        # rows lost between the encoder and table.csv (the first is kept);
+        # their own random stream
+        keep = np.random.default_rng([int(p["seed"]), 0x7AB1E]).uniform(size=tab_t.size) >= \
+            p["table_drop_per_mille"] * 1e-3
+        keep[0] = True
+        tab_lost = int(tab_t.size - keep.sum())
+        tab_t, tab_true, tab_meas = tab_t[keep], tab_true[keep], tab_meas[keep]
 
     # ---------------- gyro: fine grid on the IMU crystal ----------------
     Pg = p["imu_period_ms"] * 1e-3 / (1 + p["_imu_clock_ppm_total"] * 1e-6)
@@ -657,6 +987,7 @@ def generate(params, chunk_frames=5000):
     bias = np.array(p["bias_deg_h"]) / 3600.0
     bstep = np.array(p["bias_step_deg_h"]) / 3600.0
     wander = gauss_markov(p, t0 - p["_gyro_offset_s"] - 1.0, t_end + 1.0)
+    walk = bias_noise(p, t0 - p["_gyro_offset_s"] - 1.0, t_end + 1.0)
     arw_step = p["arw_deg_sqrt_h"] / 60.0 * math.sqrt(dt)   # deg per fine step
     pe = p["pulse_arcsec"] * ARCSEC
 
@@ -670,14 +1001,26 @@ def generate(params, chunk_frames=5000):
         m[i, j] = v * 1e-6
     lag_s = p["lag_tau_ms"] * 1e-3
 
+    mount = None
+    if any(p["mount_rpy_arcsec"]):
+        r_, p_, y_ = (v * ARCSEC for v in p["mount_rpy_arcsec"])
+        mount = rot("x", r_) @ rot("y", p_) @ rot("z", y_)   # the IMU's axes in the table's inner frame
+    gsens = np.asarray(p["g_sens_deg_h_g"], dtype=float)
+
     def sensed_rate(tf):
-        """What the gyros sense before the lag: body rate through the
-        misalignment, plus the g-sensitive rate error."""
-        ang, r = table_state(tf - tau, swings, p)
+        """What the gyros sense before the lag: body rate (of the fixture)
+        through the mount's rotation and the misalignment, plus the
+        g-sensitive rate error."""
+        ang, r = table_state(tf - tau, swings, p, fixture=True)
         w = body_rates(ang, r, p)
+        if mount is not None:
+            w = w @ mount                                   # R_m^T omega, row-wise
         w = w + w @ m.T
-        if p["g_sens_deg_h_g"] != 0.0:
-            w = w + p["g_sens_deg_h_g"] / 3600.0 * specific_force(ang, p)
+        if np.any(gsens != 0.0):
+            f_b = specific_force(ang, p)
+            if mount is not None:
+                f_b = f_b @ mount
+            w = w + gsens / 3600.0 * f_b
         w = (w * (1.0 + p["scale_factor_ppm"] * 1e-6) + p["sf_asymmetry_ppm"] * 1e-6 * np.abs(w)
              + p["sf_nonlinearity_ppm_at_100"] * 1e-6 * w * (w / 100.0) ** 2)
         if p["bias_drift_deg_h_per_min"] != 0.0:
@@ -685,6 +1028,13 @@ def generate(params, chunk_frames=5000):
         return w
 
     lag_state = {}
+    box_state = {}
+    nbox = 0
+    if p["boxcar_ms"] > 0:
+        nb = p["boxcar_ms"] * 1e-3 * p["fine_hz"]
+        nbox = int(round(nb))
+        if nbox < 1 or abs(nbox - nb) > 1e-9 * nb:
+            raise ValueError("boxcar_ms * fine_hz must be a whole number of fine steps")
 
     def measured_rate(tf):
         w = sensed_rate(tf)
@@ -701,8 +1051,33 @@ def generate(params, chunk_frames=5000):
         if wander is not None:
             grid, values = wander
             out = out + np.stack([np.interp(tf, grid, values[:, a]) for a in range(3)], axis=1)
+        if walk is not None:
+            grid, values = walk
+            out = out + np.stack([np.interp(tf, grid, values[:, a]) for a in range(3)], axis=1)
+        if nbox:
+            # boxcar: y(t) = (Theta(t) - Theta(t - T)) / T, Theta the trapezoid
+            # integral of the rate on the fine grid, at rest before the start
+            if not box_state:
+                box_state["hist"] = -np.arange(nbox - 1, -1, -1)[:, None] * dt * out[0][None, :]
+                box_state["cum"], box_state["last"] = np.zeros(3), out[0].copy()
+                return out
+            cum = box_state["cum"] + np.cumsum(0.5 * dt * (np.vstack([box_state["last"][None, :], out[:-1]]) + out),
+                                               axis=0)
+            allc = np.vstack([box_state["hist"], cum])
+            y = (cum - allc[:cum.shape[0]]) / (nbox * dt)
+            box_state["hist"], box_state["cum"], box_state["last"] = allc[-nbox:], cum[-1].copy(), out[-1].copy()
+            return y
         return out
 
+    reg_period = 0.0
+    if p["register_period_ms"] > 0:
+        if p["register_period_ms"] > p["imu_period_ms"] or not 0 <= p["register_offset_ms"] < p["register_period_ms"]:
+            raise ValueError("register_period_ms must be at most imu_period_ms and 0 <= register_offset_ms < it")
+        if p["rate_output"] == "sample_at_stamp":
+            raise ValueError("the pulse register is modelled for increments and frame averages")
+        crystal = Pg / (p["imu_period_ms"] * 1e-3)          # true seconds per IMU-clock second
+        reg_period = p["register_period_ms"] * 1e-3 * crystal / (1.0 + p["register_clock_ppm"] * 1e-6)
+        reg_start = t_first - p["register_offset_ms"] * 1e-3 * crystal
     prev_rate = measured_rate(np.array([t_first]))[0]
     rate_at_end[0] = prev_rate
     prev_theta = theta[0].copy()
@@ -717,7 +1092,16 @@ def generate(params, chunk_frames=5000):
         noise = rng.normal(0.0, arw_step, inc.shape) if arw_step > 0 else np.zeros_like(inc)
         cum = prev_theta + np.cumsum(inc + noise, axis=0)
         ends = np.arange(M - 1, nf * M, M)
-        theta[f:f + nf] = cum[ends]
+        if reg_period > 0:
+            # the frame reads the register's value at its last update, u before the frame's end
+            x = frame_t[f:f + nf] - reg_start
+            u = x - reg_period * np.floor(x / reg_period + 1e-9)
+            q = (ends + 1) - u / dt
+            ql = np.minimum(np.floor(q).astype(np.int64), nf * M - 1)
+            ext = np.vstack([prev_theta[None, :], cum])
+            theta[f:f + nf] = ext[ql] + (q - ql)[:, None] * (ext[ql + 1] - ext[ql])
+        else:
+            theta[f:f + nf] = cum[ends]
         rate_at_end[f:f + nf] = r[ends] + noise[ends] / dt
         prev_rate = r[-1]
         prev_theta = cum[-1]
@@ -730,7 +1114,8 @@ def generate(params, chunk_frames=5000):
     rate_at_end = rate_at_end[1:]
 
     # stamps on the board clock
-    stamp = frame_t * (1 + p["clock_rate_ppm_gyro"] * 1e-6)
+    latency = frame_latency(p, frame_t)
+    stamp = (frame_t if latency is None else frame_t + latency) * (1 + p["clock_rate_ppm_gyro"] * 1e-6)
     if p["gyro_stamp_jitter_us"] > 0:
         stamp = stamp + rng.normal(0.0, p["gyro_stamp_jitter_us"] * 1e-6, stamp.shape)
     if p["stamp_quantum_us"] > 0:
@@ -792,6 +1177,8 @@ def generate(params, chunk_frames=5000):
         "gyro_val": gvals,
         "gyro_from_frame": held_from,
         "gyro_lost_before": lost_before,
+        "table_rows_lost": tab_lost,
+        "frame_latency": latency,         # None, or s per frame (true, before the board's clock)
         "pulse_deg": pe,
         "fine_dt_s": dt,
         "frame_period_true_s": Pg,
@@ -801,6 +1188,37 @@ def generate(params, chunk_frames=5000):
 # --------------------------------------------------------------------------
 # Truth
 # --------------------------------------------------------------------------
+
+def physical_effects(res):
+    """What the effects in their physical form amount to, in closed form
+    (README "Outside effects"); only those that are on."""
+    p, out = res["params"], {}
+    if p["register_period_ms"] > 0:
+        out["register_extra_delay_ms"] = p["register_offset_ms"] if not p["register_clock_ppm"] else \
+            "varies from 0 to %g ms" % p["register_period_ms"]
+    if p["boxcar_ms"] > 0:
+        out["boxcar_extra_delay_ms"] = p["boxcar_ms"] / 2.0
+        out["boxcar_equivalent_lag_ms"] = p["boxcar_ms"] / math.sqrt(12.0)   # same loss of gain to O(f^2)
+    if p["latency_p2"] > 0 or p["latency_sigma_us"] > 0:
+        d, q, sg = p["latency_delta_us"], p["latency_p2"], p["latency_sigma_us"]
+        out["latency_mean_us"] = q * d
+        out["latency_variance_us2"] = q * (1 - q) * d * d + sg * sg
+    if p["eccentricity_um"]:
+        out["eccentricity_rad"] = p["eccentricity_um"] * 1e-3 / p["eccentricity_radius_mm"]
+    if p["servo_unbalance_arcsec"]:
+        eps = math.radians(p["servo_unbalance_arcsec"] * ARCSEC)
+        phi = math.radians(p["servo_unbalance_phase_deg"])
+        ten = math.radians(10.0)
+        # eps sin(theta + phi) about 0: the library's 10 deg (c2 x^2 - c3 x^3) form (static servo)
+        out["servo_equivalent_table_poly_ppm"] = [-eps * math.sin(phi) * ten / 2.0 * 1e6,
+                                                  eps * math.cos(phi) * ten * ten / 6.0 * 1e6]
+    if any(p["mount_rpy_arcsec"]):
+        r_, q_, y_ = (math.radians(v * ARCSEC) * 1e6 for v in p["mount_rpy_arcsec"])
+        out["mount_equivalent_misalignment_urad"] = [y_, -q_, -y_, r_, q_, -r_]
+    if res.get("table_rows_lost"):
+        out["table_rows_lost"] = int(res["table_rows_lost"])
+    return out
+
 
 def truth(res):
     p = res["params"]
@@ -837,6 +1255,7 @@ def truth(res):
         })
     case = p.get("case")
     return {
+        "physical_effects": physical_effects(res),
         "generator": "tests/independent/refgen.py",
         "generator_version": GENERATOR_VERSION,
         "shares_code_with_core_model": False,
@@ -1042,6 +1461,23 @@ def build_parser():
     g.add_argument("--rekick-duration-s", type=float)
     g.add_argument("--fixed-angles-deg", type=_floats, help="x,y,z angles of the axes that do not swing")
     g.add_argument("--axis-order", help="table axes outer to inner (default zyx)")
+    g = ap.add_argument_group("table errors in their physical form (all off by default)")
+    g.add_argument("--base-tilt-deg", type=float, help="the table's base tilted by this much ...")
+    g.add_argument("--base-tilt-azimuth-deg", type=float, help="... about the horizontal axis at this azimuth")
+    g.add_argument("--nonorth-inner-arcsec", type=float, help="inner (x) axis tilted toward the middle (y) axis")
+    g.add_argument("--nonorth-middle-arcsec", type=float, help="middle (y) axis tilted toward the outer (z) axis")
+    g.add_argument("--eccentricity-um", type=float, help="encoder disk eccentricity (um) ...")
+    g.add_argument("--eccentricity-radius-mm", type=float, help="... at the read head's radius (mm)")
+    g.add_argument("--eccentricity-phase-deg", type=float)
+    g.add_argument("--eccentricity-axes", help="axes whose encoders are eccentric (default xyz)")
+    g.add_argument("--compliance-fn-hz", type=float, help="encoder-to-fixture spring-damper: natural frequency")
+    g.add_argument("--compliance-zeta", type=float, help="... and damping ratio (0 < zeta < 1)")
+    g.add_argument("--servo-unbalance-arcsec", type=float, help="servo deflection by an unbalance, eps sin(theta+phi)")
+    g.add_argument("--servo-unbalance-phase-deg", type=float)
+    g.add_argument("--servo-corner-hz", type=float, help="the loop's first-order disturbance response (0: static)")
+    g.add_argument("--table-drop-per-mille", type=float, help="table rows lost at random")
+    g.add_argument("--table-poly-ppm", type=_floats, help="c2,c3: theta + 10 (c2 x^2 - c3 x^3), x = theta / 10 deg")
+    g.add_argument("--encoder-cyclic-arcsec", type=_floats, help="s,c: s sin(2 pi theta / 10 deg) + c cos(..)")
     g = ap.add_argument_group("site")
     g.add_argument("--latitude-deg", type=float)
     g.add_argument("--heading-deg", type=float, help="azimuth of the table's x axis at zero")
@@ -1067,6 +1503,28 @@ def build_parser():
     g.add_argument("--rate-output", choices=["frame_average", "sample_at_stamp"])
     g.add_argument("--rate-lsb-deg-s", type=float)
     g.add_argument("--sample-hold-ms", type=float)
+    g.add_argument("--scale-factor-ppm", type=float)
+    g.add_argument("--sf-asymmetry-ppm", type=float)
+    g.add_argument("--sf-nonlinearity-ppm-at-100", type=float)
+    g.add_argument("--bias-drift-deg-h-per-min", type=float)
+    g.add_argument("--drop-per-mille", type=float, help="IMU frames lost at random (lost_before column)")
+    g.add_argument("--bias-instability-deg-h", type=float, help="Gauss-Markov bias, 1 sigma ...")
+    g.add_argument("--bias-correlation-s", type=float, help="... and its correlation time")
+    g.add_argument("--misalignment-urad", type=_floats, help="six: m_xy,m_xz,m_yx,m_yz,m_zx,m_zy")
+    g.add_argument("--mount-rpy-arcsec", type=_floats, help="IMU mount rotated by roll,pitch,yaw")
+    g.add_argument("--g-sens-deg-h-g", type=_floats, help="1 value, or 3 (each gyro its own)")
+    g.add_argument("--lag-tau-ms", type=float)
+    g.add_argument("--register-period-ms", type=float, help="pulse register updated every (0: continuous)")
+    g.add_argument("--register-offset-ms", type=float, help="time from its last update to a frame's end")
+    g.add_argument("--register-clock-ppm", type=float, help="its clock against the frame clock")
+    g.add_argument("--boxcar-ms", type=float, help="moving average of the rate before the frame")
+    g.add_argument("--latency-p2", type=float, help="probability of the latency's second mode")
+    g.add_argument("--latency-delta-us", type=float, help="second mode's extra latency")
+    g.add_argument("--latency-sigma-us", type=float, help="rms within either mode")
+    g.add_argument("--latency-dwell-s", type=float, help="mean dwell in mode 2 (0: white, drawn per frame)")
+    g.add_argument("--rrw", "--rrw-deg-h-sqrt-h", dest="rrw_deg_h_sqrt_h", type=float, help="rate random walk")
+    g.add_argument("--flicker-deg-h", type=float, help="flicker bias coefficient B")
+    g.add_argument("--flicker-tau-range-s", type=_floats, help="low,high correlation times of its processes")
     g = ap.add_argument_group("table")
     g.add_argument("--table-period-ms", type=float)
     g.add_argument("--encoder-arcsec", type=float)

@@ -294,6 +294,14 @@ class Defects(unittest.TestCase):
         # gyro period longer by 50 ppm
         self.assertAlmostEqual((1 / fg) / (1 / ft) - 1, 50e-6, delta=0.1e-6)
 
+    def test_imu_crystal_fast_means_shorter_frames(self):
+        # the one sign convention with fogbench (ImuBoardParams::clockErrorPpm):
+        # +ppm = the crystal runs fast = frames of imu_period_ms / (1 + ppm)
+        res = refgen.generate(quiet(imu_clock_ppm=40.0, timing="commensurate"))
+        mean = np.mean(np.diff(res["frame_stamp"]))
+        self.assertAlmostEqual((mean / 2e-3 - 1.0) * 1e6, 1.0 / (1.0 + 40e-6) * 1e6 - 1e6, delta=1e-3)
+        self.assertLess(mean, 2e-3)
+
     def test_table_frequency_error(self):
         p = quiet(table_freq_error_ppm=200.0)
         res = refgen.generate(p)
@@ -401,6 +409,280 @@ class Defects(unittest.TestCase):
         self.assertAlmostEqual(np.mean(counts[1:-1]), 2.0, delta=0.01)
         # every row's stamp is at or after the frame it holds
         self.assertTrue(np.all(res["gyro_t"] >= res["frame_stamp"][src]))
+
+
+
+def swing_fit(res, axis_i, f, use="gyro", h=1):
+    """Complex amplitude (sin + i cos coefficients) of harmonic h of the
+    true table angle or the continuous gyro angle on one axis, over the
+    window; times from the window's start."""
+    a, b = res["windows"][0]
+    if use == "table":
+        t, y = res["table_t"], res["table_true"][:, axis_i]
+    elif use == "table_read":
+        t, y = res["table_t"], res["table_deg"][:, axis_i]
+    else:
+        t, y = res["frame_stamp"], res["frame_theta"][:, axis_i]
+    sel = (t >= a) & (t <= b)
+    t, y = t[sel] - a, y[sel]
+    w = 2 * math.pi * f
+    cols = []
+    for k in (1, 2, 3):
+        cols += [np.sin(k * w * t), np.cos(k * w * t)]
+    cols += [np.ones_like(t), t]
+    c, *_ = np.linalg.lstsq(np.column_stack(cols), y, rcond=None)
+    return complex(c[2 * h - 2], c[2 * h - 1]), c
+
+
+def ratio_to_lag_gain(z_gyro, z_table, f):
+    r = z_gyro / z_table      # gyro = table delayed by tau: ratio g e^{-i w tau}
+    return -math.atan2(r.imag, r.real) / (2 * math.pi * f), abs(r)
+
+
+OFF = {"base_tilt_deg": 0.0, "nonorth_inner_arcsec": 0.0, "nonorth_middle_arcsec": 0.0, "eccentricity_um": 0.0,
+       "compliance_fn_hz": 0.0, "servo_unbalance_arcsec": 0.0, "mount_rpy_arcsec": [0.0, 0.0, 0.0],
+       "register_period_ms": 0.0, "boxcar_ms": 0.0, "latency_p2": 0.0, "latency_sigma_us": 0.0,
+       "rrw_deg_h_sqrt_h": 0.0, "flicker_deg_h": 0.0, "table_drop_per_mille": 0.0}
+
+
+class PhysicalForms(unittest.TestCase):
+    """Effects in their own physical parameterisation, each against a closed form."""
+
+    def test_off_leaves_every_output_as_before(self):
+        # every new parameter at its off value, other parameters changed
+        # beside it (they must not be read): the same arrays bit for bit
+        p = refgen.case_params("nominal")
+        p["segments"][0]["duration_s"] = 5.0
+        q = dict(p, **OFF, base_tilt_azimuth_deg=40.0, eccentricity_radius_mm=7.0, eccentricity_phase_deg=9.0,
+                 compliance_zeta=0.3, servo_corner_hz=5.0, register_offset_ms=0.3, latency_delta_us=50.0,
+                 latency_dwell_s=1.0, flicker_tau_range_s=[3.0, 30.0])
+        a, b = refgen.generate(p), refgen.generate(q)
+        for k in ("table_t", "table_deg", "gyro_t", "gyro_val", "frame_theta"):
+            self.assertTrue(np.array_equal(a[k], b[k]), k)
+        self.assertEqual(refgen.physical_effects(b), {})
+
+    def test_base_tilt_turns_earth_rate_and_gravity(self):
+        lat, beta = 40.0, 2.0
+        om, sl, cl = OMEGA_DEG_S, math.sin(math.radians(lat)), math.cos(math.radians(lat))
+        sb, cb = math.sin(math.radians(beta)), math.cos(math.radians(beta))
+        z = np.zeros((1, 3))
+        # about north (azimuth 0): R_x(beta)^T (a, 0, c) = (a, c sin b, c cos b)
+        p = quiet(latitude_deg=lat, base_tilt_deg=beta, base_tilt_azimuth_deg=0.0)
+        np.testing.assert_allclose(refgen.body_rates(z, z, p)[0], [om * cl, -om * sl * sb, -om * sl * cb],
+                                   atol=1e-15)
+        np.testing.assert_allclose(refgen.specific_force(z, p)[0], [0.0, -sb, -cb], atol=1e-15)
+        # about east (azimuth 90): R_y(beta)^T (a, 0, c) = (a cos b - c sin b, 0, a sin b + c cos b)
+        p = quiet(latitude_deg=lat, base_tilt_deg=beta, base_tilt_azimuth_deg=90.0)
+        np.testing.assert_allclose(refgen.body_rates(z, z, p)[0],
+                                   [om * cl * cb + om * sl * sb, 0.0, om * cl * sb - om * sl * cb], atol=1e-15)
+        np.testing.assert_allclose(refgen.specific_force(z, p)[0], [sb, 0.0, -cb], atol=1e-15)
+
+    def test_axis_nonorthogonality(self):
+        ei, em = 20.0, 30.0
+        si, ci = math.sin(math.radians(ei / 3600)), math.cos(math.radians(ei / 3600))
+        sm, cm = math.sin(math.radians(em / 3600)), math.cos(math.radians(em / 3600))
+        z = np.zeros((1, 3))
+        p = quiet(nonorth_inner_arcsec=ei, nonorth_middle_arcsec=em)
+        earth = refgen.body_rates(z, z, p)[0]
+        # the middle axis' rate in the body: R_z(ei)^T e_y = (sin ei, cos ei, 0)
+        np.testing.assert_allclose(refgen.body_rates(z, np.array([[0.0, 1.0, 0.0]]), p)[0] - earth,
+                                   [si, ci, 0.0], atol=1e-15)
+        # the outer axis': R_z(ei)^T R_x(em)^T e_z = R_z(-ei) (0, sin em, cos em)
+        np.testing.assert_allclose(refgen.body_rates(z, np.array([[0.0, 0.0, 1.0]]), p)[0] - earth,
+                                   [sm * si, sm * ci, cm], atol=1e-15)
+        # in the data: a Y swing puts sin(ei) of its angle into gyro x, in phase
+        res = refgen.generate(quiet(nonorth_inner_arcsec=ei, imu_delay_ms=0.0, table_read_delay_ms=0.0,
+                                    latitude_deg=0.0,
+                                    segments=[{"axis": "y", "freq_hz": 1.0, "amp_deg": 3.0, "duration_s": 6.0}]))
+        zt, _ = swing_fit(res, 1, 1.0, "table")
+        zx, _ = swing_fit(res, 0, 1.0)
+        self.assertAlmostEqual((zx / zt).real, si, delta=1e-9)
+        self.assertAlmostEqual((zx / zt).imag, 0.0, delta=1e-9)
+
+    def test_encoder_eccentricity_once_per_revolution(self):
+        e_um, r_mm, phi = 3.0, 60.0, 35.0
+        res = refgen.generate(quiet(eccentricity_um=e_um, eccentricity_radius_mm=r_mm, eccentricity_phase_deg=phi,
+                                    eccentricity_axes="x", fixed_angles_deg=[0.0, 0.0, 100.0]))
+        th = res["table_true"]
+        want = math.degrees(e_um * 1e-3 / r_mm) * np.sin(np.deg2rad(th[:, 0]) + math.radians(phi))
+        np.testing.assert_allclose(res["table_deg"][:, 0] - th[:, 0], want, atol=1e-15)
+        np.testing.assert_array_equal(res["table_deg"][:, 2], th[:, 2])   # z's encoder not eccentric
+        self.assertAlmostEqual(refgen.physical_effects(res)["eccentricity_rad"], 5e-5, places=15)
+
+    def test_compliance_is_a_spring_damper(self):
+        fn, zeta, f = 20.0, 0.1, 2.0
+        seg = [{"axis": "x", "freq_hz": f, "amp_deg": 3.0, "duration_s": 5.0}]
+        res = refgen.generate(quiet(compliance_fn_hz=fn, compliance_zeta=zeta, segments=seg))
+        rigid = refgen.generate(quiet(segments=seg))
+        lag, gain = ratio_to_lag_gain(swing_fit(res, 0, f)[0], swing_fit(res, 0, f, "table")[0], f)
+        lag0, gain0 = ratio_to_lag_gain(swing_fit(rigid, 0, f)[0], swing_fit(rigid, 0, f, "table")[0], f)
+        s = 2j * math.pi * f / (2 * math.pi * fn)
+        H = (2 * zeta * s + 1) / (s * s + 2 * zeta * s + 1)
+        # within 1e-5 of the 1 % effect (the 0.25-ms grid, inputs linear between its points)
+        self.assertAlmostEqual(gain / gain0, abs(H), delta=1e-7)
+        self.assertAlmostEqual(lag - lag0, -np.angle(H) / (2 * math.pi * f), delta=1e-10)
+        # the fixture's rate is the derivative of its angle (Hermite between grid points)
+        p = res["params"]
+        t = np.linspace(3.0, 3.01, 201)
+        a, r = refgen.table_state(t, res["swings"], p, fixture=True)
+        # (central differences of 50 us err by w^3 A h^2 / 6 = 2.5e-6 deg/s here)
+        np.testing.assert_allclose(np.gradient(a[:, 0], t)[1:-1], r[1:-1, 0], rtol=0, atol=1e-5)
+
+    def test_servo_unbalance(self):
+        eps, phi = 20.0, 50.0
+        # static: the motion is theta + eps sin(theta + phi), read and sensed alike
+        res = refgen.generate(quiet(servo_unbalance_arcsec=eps, servo_unbalance_phase_deg=phi))
+        p = res["params"]
+        t = res["table_t"][:500]
+        cmd, _ = refgen.commanded_state(t - p["table_read_delay_ms"] * 1e-3, res["swings"], p)
+        want = eps / 3600 * np.sin(np.deg2rad(cmd[:, 0]) + math.radians(phi))
+        np.testing.assert_allclose(res["table_true"][:500, 0] - cmd[:, 0], want, atol=1e-15)
+        # through a first-order disturbance response of corner fc: the 2nd
+        # harmonic eps sin(phi) A^2/4 (cos 2 psi) with gain 1/|1 + 2 i w tau|
+        fc, f, A = 3.0, 1.0, 2.0
+        res = refgen.generate(quiet(servo_unbalance_arcsec=eps, servo_unbalance_phase_deg=phi, servo_corner_hz=fc,
+                                    timing="commensurate", table_read_delay_ms=0.0,
+                                    segments=[{"axis": "x", "freq_hz": f, "amp_deg": A, "duration_s": 6.0,
+                                               "start_phase_deg": 0.0}]))
+        z2, _ = swing_fit(res, 0, f, "table", h=2)
+        epsr, a = math.radians(eps / 3600), math.radians(A)
+        want = -math.radians(0) + epsr * math.sin(math.radians(phi)) * a * a / 4 / (1 + 2j * f / fc)
+        # cos(2 psi) is the cos coefficient: complex(sin coeff, cos coeff) = i * want
+        got = complex(math.radians(z2.real), math.radians(z2.imag))
+        self.assertAlmostEqual(abs(got - 1j * want) / abs(want), 0.0, delta=2e-3)
+        # the rate is the angle's derivative
+        t = np.linspace(3.0, 3.01, 201)
+        a_, r_ = refgen.table_state(t, res["swings"], res["params"])
+        np.testing.assert_allclose(np.gradient(a_[:, 0], t)[1:-1], r_[1:-1, 0], rtol=0, atol=1e-6)
+
+    def test_mount_rotation_is_an_antisymmetric_misalignment(self):
+        rpy = [40.0, -60.0, 80.0]
+        seg = [{"axis": "x", "freq_hz": 1.0, "amp_deg": 3.0, "duration_s": 6.0}]
+        res = refgen.generate(quiet(mount_rpy_arcsec=rpy, segments=seg, latitude_deg=0.0, imu_delay_ms=0.0,
+                                    table_read_delay_ms=0.0))
+        rigid = refgen.generate(quiet(segments=seg, latitude_deg=0.0, imu_delay_ms=0.0, table_read_delay_ms=0.0))
+        # the trapezoid's own gain (1 - (w dt)^2 / 12) from the session without the rotation
+        zt = swing_fit(res, 0, 1.0, "table")[0] * swing_fit(rigid, 0, 1.0)[0] / swing_fit(rigid, 0, 1.0, "table")[0]
+        r_, p_, y_ = (math.radians(v / 3600) for v in rpy)
+        Rm = refgen.rot("x", rpy[0] / 3600) @ refgen.rot("y", rpy[1] / 3600) @ refgen.rot("z", rpy[2] / 3600)
+        for i in range(3):       # gyro i senses (R_m^T e_x)_i = R_m[0, i] of the X rate
+            zg, _ = swing_fit(res, i, 1.0)
+            self.assertAlmostEqual((zg / zt).real, Rm[0, i], delta=2e-9)
+        # small angles: m_yx = -yaw, m_zx = +pitch
+        self.assertAlmostEqual(Rm[0, 1], -y_, delta=1e-7)
+        self.assertAlmostEqual(Rm[0, 2], p_, delta=1e-7)
+        eq = refgen.physical_effects(res)["mount_equivalent_misalignment_urad"]
+        self.assertAlmostEqual(eq[2], -y_ * 1e6, places=9)
+        self.assertAlmostEqual(eq[4], p_ * 1e6, places=9)
+
+    def test_g_sensitivity_per_gyro(self):
+        k = [10.0, -20.0, 30.0]
+        pos = [30.0, -15.0, 0.0]
+        seg = [{"axis": "x", "freq_hz": 1.0, "amp_deg": 0.0, "duration_s": 6.0, "centre_deg": 0.0}]
+        res = refgen.generate(quiet(g_sens_deg_h_g=k, fixed_angles_deg=pos, segments=seg))
+        ang = np.array([pos])
+        want = refgen.body_rates(ang, np.zeros((1, 3)), res["params"])[0] * 3600 + \
+            np.array(k) * refgen.specific_force(ang, res["params"])[0]
+        t, th = res["frame_t_true"], res["frame_theta"]
+        for i in range(3):
+            self.assertAlmostEqual(np.polyfit(t, th[:, i], 1)[0] * 3600, want[i], delta=1e-6)
+
+    def test_register_update_is_a_pure_delay(self):
+        # the register on the IMU crystal, updated every 0.5 ms, last 0.3 ms
+        # before each frame's end: the frame reports the angle 0.3 ms old
+        for timing in ("commensurate", "incommensurate"):
+            res = refgen.generate(quiet(register_period_ms=0.5, register_offset_ms=0.3, timing=timing,
+                                        segments=[{"axis": "x", "freq_hz": 2.0, "amp_deg": 3.0, "duration_s": 6.0}]))
+            f = res["swings"][0].f
+            self.assertAlmostEqual(lag_from_fits(res, f), 0.45e-3 + 0.3e-3, delta=1e-8)
+            self.assertEqual(refgen.physical_effects(res)["register_extra_delay_ms"], 0.3)
+        # its own clock 100 ppm fast: the delay walks from 0 to 0.5 ms and back every 0.5 ms / 100 ppm = 5 s
+        res = refgen.generate(quiet(register_period_ms=0.5, register_offset_ms=0.0, register_clock_ppm=100.0,
+                                    segments=[{"axis": "x", "freq_hz": 0.0, "amp_deg": 0.0, "duration_s": 6.0}],
+                                    bias_deg_h=3600.0 * 10.0, latitude_deg=90.0))
+        # a constant 10 deg/s (+ Earth rate along -z only): the held angle lags by u
+        t, th = res["frame_t_true"], res["frame_theta"][:, 0]
+        u = t - th / 10.0
+        u = u - u[0]
+        self.assertGreater(np.ptp(u), 0.45e-3)
+        self.assertLess(np.ptp(u), 0.5e-3 + 1e-9)
+
+    def test_boxcar_is_a_delay_and_a_sinc(self):
+        T, f = 6e-3, 2.0
+        seg = [{"axis": "x", "freq_hz": f, "amp_deg": 3.0, "duration_s": 6.0}]
+        res = refgen.generate(quiet(boxcar_ms=T * 1e3, segments=seg))
+        plain = refgen.generate(quiet(segments=seg))
+        lag, gain = ratio_to_lag_gain(swing_fit(res, 0, f)[0], swing_fit(res, 0, f, "table")[0], f)
+        lag0, gain0 = ratio_to_lag_gain(swing_fit(plain, 0, f)[0], swing_fit(plain, 0, f, "table")[0], f)
+        x = math.pi * f * T
+        Tt = 60 * res["fine_dt_s"]       # 60 fine steps of the IMU crystal (off round by up to 30 ppm)
+        x = math.pi * f * Tt
+        self.assertAlmostEqual(lag - lag0, Tt / 2, delta=1e-10)
+        # (the boxcar's own trapezoid integral of the rate: (w dt)^2 / 12 = 1.3e-7 at 2 Hz)
+        self.assertAlmostEqual(gain / gain0, math.sin(x) / x, delta=3e-7)
+        # the same loss of gain as a first-order lag of T / sqrt(12), to O(f^2)
+        tau = refgen.physical_effects(res)["boxcar_equivalent_lag_ms"] * 1e-3
+        self.assertAlmostEqual(1 - gain / gain0, (2 * math.pi * f * tau) ** 2 / 2, delta=3e-7)  # O(f^4): 1e-7
+
+    def test_latency_mixture(self):
+        p = refgen.resolve(quiet(latency_p2=0.2, latency_delta_us=30.0, latency_sigma_us=2.0))
+        ft = 2e-3 * np.arange(300000)
+        lat = refgen.frame_latency(p, ft) * 1e6
+        self.assertAlmostEqual(np.mean(lat), 0.2 * 30.0, delta=0.1)
+        self.assertAlmostEqual(np.var(lat), 0.2 * 0.8 * 900 + 4.0, delta=3.0)
+        self.assertLess(abs(np.corrcoef(lat[:-1], lat[1:])[0, 1]), 0.01)       # white
+        # a two-state Markov chain: stationary share p2, mean dwell in mode 2
+        p = refgen.resolve(quiet(latency_p2=0.3, latency_delta_us=30.0, latency_dwell_s=0.1))
+        mode = refgen.frame_latency(p, ft) > 15.0e-6
+        self.assertAlmostEqual(mode.mean(), 0.3, delta=0.03)
+        edges = np.diff(mode.astype(int))
+        runs = np.diff(np.nonzero(edges)[0])[(mode[np.nonzero(edges)[0][:-1] + 1])]
+        self.assertAlmostEqual(np.mean(runs) * 2e-3, 0.1, delta=0.01)
+        # in the data: the stamps are late by it
+        res = refgen.generate(quiet(latency_p2=0.2, latency_delta_us=30.0))
+        d = (res["frame_stamp"] - res["frame_t_true"]) * 1e6
+        self.assertTrue(set(np.round(d, 6)) <= {0.0, 30.0})
+
+    def test_rate_random_walk(self):
+        K = 2.0     # deg/h/sqrt(h): var(b(T) - b(0)) = K^2 T (T in h), in deg/h
+        ends = []
+        for seed in range(200):
+            g, b = refgen.bias_noise(refgen.resolve(quiet(rrw_deg_h_sqrt_h=K, seed=seed)), 0.0, 360.0)
+            ends.append((b[-1] - b[0]) * 3600.0)
+        self.assertAlmostEqual(g[1] - g[0], 0.1, places=12)
+        self.assertAlmostEqual(np.var(np.array(ends)) / (K * K * 0.1), 1.0, delta=0.2)
+
+    def test_flicker_is_one_over_f(self):
+        B = 1.0
+        p = refgen.resolve(quiet(flicker_deg_h=B, flicker_tau_range_s=[1.0, 10000.0]))
+        taus, sigma = refgen.flicker_taus(p)
+        np.testing.assert_allclose(taus, [1, 10, 100, 1000, 10000])
+        # closed form: the sum's one-sided PSD is B^2 / (2 pi f) within 10 %
+        # inside the range's middle decades
+        for f in np.logspace(math.log10(1 / (2 * math.pi * 1000)), math.log10(1 / (2 * math.pi * 10)), 9):
+            S = np.sum(4 * sigma ** 2 * taus / (1 + (2 * math.pi * f * taus) ** 2))
+            self.assertAlmostEqual(S / (B * B / (2 * math.pi * f)), 1.0, delta=0.1)
+        # each process is the stationary Gauss-Markov one: sigma and exp(-h / tau)
+        g, x = refgen.flicker_components(p, 0.0, 4000.0)
+        h = g[1] - g[0]
+        self.assertAlmostEqual(h, 0.02, places=12)
+        c0 = x[:, :, 0] * 3600
+        self.assertAlmostEqual(np.std(c0) / sigma, 1.0, delta=0.03)
+        k = 50    # one correlation time of the 1-s process
+        r = np.mean([np.corrcoef(c0[:-k, a], c0[k:, a])[0, 1] for a in range(3)])
+        self.assertAlmostEqual(r, math.exp(-1.0), delta=0.03)
+
+    def test_lost_table_rows(self):
+        base = refgen.generate(quiet(segments=[{"axis": "x", "freq_hz": 1.0, "amp_deg": 3.0, "duration_s": 30.0}]))
+        res = refgen.generate(quiet(table_drop_per_mille=5.0,
+                                    segments=[{"axis": "x", "freq_hz": 1.0, "amp_deg": 3.0, "duration_s": 30.0}]))
+        lost = base["table_t"].size - res["table_t"].size
+        self.assertEqual(lost, res["table_rows_lost"])
+        self.assertAlmostEqual(lost / base["table_t"].size * 1e3, 5.0, delta=1.5)
+        kept = np.isin(base["table_t"], res["table_t"])
+        np.testing.assert_array_equal(base["table_deg"][kept], res["table_deg"])
+        np.testing.assert_array_equal(base["gyro_val"], res["gyro_val"])
+        self.assertEqual(res["table_t"][0], base["table_t"][0])
 
 
 class Output(unittest.TestCase):
