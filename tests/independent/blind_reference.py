@@ -7,7 +7,9 @@ blind with `fogbench-cli diagnose --json`. Every session varies what a real
 bench varies: IMU crystal +-50 ppm, table rate +-20 ppm, the non-swinging
 azimuth (z) at any angle, ARW and pulse / encoder quanta up to 2x off the
 defaults, latitude 20..60 deg and any heading, biases, the IMU delay, a
-bias instability of 0.01..0.2 deg/h over 100..600 s. The diagnosis is told
+bias instability of 0.01..0.2 deg/h over 100..600 s, and the lab's frame:
+the table's z axis down or up at zero angles (half each), stated to the
+diagnosis (--imu-frame FRD:F or RFU:F) in half the sessions. The diagnosis is told
 the bias instability as a static noise test would state it, each figure
 within a factor sqrt(2) of the truth (--bias-instability, --bias-correlation).
 
@@ -304,7 +306,8 @@ def diagnose(cli, params, work, name, stated):
     run([cli, "import", d, "--out", session])
     text = run([cli, "diagnose", session, "--json", "--threads", "1",
                 "--bias-instability", "%.6g" % stated["instability"],
-                "--bias-correlation", "%.6g" % stated["correlation"]])
+                "--bias-correlation", "%.6g" % stated["correlation"]] +
+               (["--imu-frame", stated["frame"]] if "frame" in stated else []))
     out = json.loads(text)
     if KEEP:
         with open(d + ".diagnosis.json", "w") as fh:
@@ -388,6 +391,15 @@ def trial(cli, plan, seed, t, th, work, forms="physical"):
         physical[which] = extra
         params.update(extra)
     stated = stated_noise(rng, params)
+    # The lab's frame, on its own random stream (the draws above are as
+    # before): z down or up at zero angles, half of the sessions stating it
+    # (FRD:F or RFU:F, F the forward axis' azimuth), half not. A frame the
+    # diagnosis gets wrong shows as a wrong answer, never as a skipped trial.
+    frame_rng = np.random.default_rng([seed, t, 91])
+    params["z_up"] = bool(frame_rng.integers(2))
+    if frame_rng.integers(2):
+        forward = params["heading_deg"] - (90.0 if params["z_up"] else 0.0)
+        stated["frame"] = "%s:%.6g" % ("RFU" if params["z_up"] else "FRD", forward)
     start = time.time()
     d = diagnose(cli, params, work, "trial-%d" % t, stated)
     ranked = [e["name"] for e in d["effects"]]
@@ -396,6 +408,7 @@ def trial(cli, plan, seed, t, th, work, forms="physical"):
             "right_answers": sorted(right) if right is not None else None, "verdict": d["verdict"],
             "verdict_effects": d["verdict_effects"], "top3": ranked[:3], "reason": d["verdict_reason"],
             "shrink": best["heldout_shrink"] if best else None, "heading_true": params["heading_deg"],
+            "z_up": params["z_up"], "frame_stated": stated.get("frame"),
             "fitted": {e["name"]: [[q["value"], q["std"]] for q in ordered_parameters(e)]
                        for e in d["effects"] if e["name"] in truth or e["name"] in d["verdict_effects"]},
             "heading": d["calibration"].get("heading_deg"), "seconds": time.time() - start}
