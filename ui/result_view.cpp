@@ -245,8 +245,9 @@ ResultView::ResultView(QWidget* parent) : QWidget(parent) {
                                  "to set cursors A and B and read Δt"));
   plotTabs_->setTabToolTip(1, tr("The lag of every test point against its swing frequency"));
   // A plot with its title, legend and axis titles needs ~100 px besides its
-  // canvas: below this a restored divider left the canvas a 30 px sliver.
-  plotTabs_->setMinimumHeight(230);
+  // canvas: a restored divider left the canvas a 30 px sliver. (185, not
+  // more: the Results view must still fit 1366x768 on Qt 5's fonts.)
+  plotTabs_->setMinimumHeight(185);
   auto* right = new QSplitter(Qt::Vertical);
   right->setObjectName("resultRightSplitter");
   right->addWidget(fitTable_);

@@ -172,6 +172,38 @@ TEST(EarthParams, ProjectionAtTheTablesZero) {
   EXPECT_NEAR(w[2], e.projectionDegPerH(Axis::kZ), 1e-9);
 }
 
+// A table whose z axis points up (east-north-up at heading 90): the Earth
+// rate reads (0, Omega cos(lat), +Omega sin(lat)) in its axes and the
+// specific force at rest is +1 g along z; the stated frame sets both
+// (applyImuFrame), and the projection agrees with the attitude.
+TEST(Attitude, AZUpTableSeesTheEarthRateAndGravityTurnedOver) {
+  EarthParams e;
+  e.latitudeDeg = 30.0;
+  applyImuFrame(*imuFrameFromText("ENU"), e);
+  EXPECT_TRUE(e.zUp);
+  EXPECT_EQ(e.headingDeg, 90.0);
+  const Attitude att(e, TurntableParams{});
+  const Eigen::Matrix3d level = att.bodyToTable({0.0, 0.0, 0.0});
+  const Eigen::Vector3d w = att.earthRateBodyDegPerH(level);
+  EXPECT_TRUE(w.isApprox(Eigen::Vector3d(0.0, kEarthRateDegPerH * std::sqrt(3.0) / 2.0, kEarthRateDegPerH * 0.5),
+                         1e-12))
+      << w.transpose();
+  EXPECT_TRUE(att.specificForceBodyG(level).isApprox(Eigen::Vector3d(0, 0, 1), 1e-12));
+  for (Axis a : {Axis::kX, Axis::kY, Axis::kZ})
+    EXPECT_NEAR(w[static_cast<int>(a)], e.projectionDegPerH(a), 1e-9) << axisName(a);
+  // RFU with forward at 300 deg: x (right) at 390 = 30 deg, within (-180, 180].
+  EarthParams r;
+  applyImuFrame(*imuFrameFromText("RFU:300"), r);
+  EXPECT_TRUE(r.zUp);
+  EXPECT_NEAR(r.headingDeg, 30.0, 1e-12);
+  // Unstated, or stating only the vertical, leaves the heading as it was.
+  EarthParams u;
+  u.headingDeg = 12.0;
+  applyImuFrame(*imuFrameFromText("FRD"), u);
+  EXPECT_FALSE(u.zUp);
+  EXPECT_EQ(u.headingDeg, 12.0);
+}
+
 // Outer z, middle y, inner x: the inner axis is always along gyro x; the
 // middle axis turns with the inner one; the outer with both.
 TEST(Attitude, TableAxesInTheBodyFrame) {
