@@ -84,6 +84,7 @@ struct SegmentSums {
   std::size_t gn = 0;
   Interval tableIntervalUs, imuIntervalUs;
   double lost = 0.0;
+  double tableLost = 0.0;  // table samples missing: the interval cells skip their gaps
 
   void operator+=(const SegmentSums& o) {
     tXtX += o.tXtX, tXty += o.tXty, tyty += o.tyty, tn += o.tn;
@@ -241,6 +242,7 @@ void emitSegment(Emitter& e, const SegmentFit& f, const SegmentSums& s, const Po
   e.add(Channel::kTiming, Quantity::kImuInterval, Unit::kPpm, -1, -1, (s.imuIntervalUs.mean() * 1e-6 / fr.imuPeriodS - 1.0) * 1e6);
   e.add(Channel::kTiming, Quantity::kImuIntervalVariance, Unit::kMicrosecondsSquared, -1, -1, s.imuIntervalUs.variance());
   e.add(Channel::kTiming, Quantity::kImuLost, Unit::kFrames, -1, -1, s.lost);
+  e.add(Channel::kTiming, Quantity::kTableLost, Unit::kFrames, -1, -1, s.tableLost);
 }
 
 double medianInterval(const std::vector<ImuSample>& imu) {
@@ -270,6 +272,7 @@ std::string quantityName(const FeatureKey& key) {
     case Quantity::kImuInterval: return "imu_interval";
     case Quantity::kImuIntervalVariance: return "imu_interval_var";
     case Quantity::kImuLost: return "imu_lost";
+    case Quantity::kTableLost: return "table_lost";
   }
   return "?";
 }
@@ -289,6 +292,7 @@ std::string quantityTitle(const FeatureKey& key) {
     case Quantity::kImuInterval: return "IMU stamp interval";
     case Quantity::kImuIntervalVariance: return "IMU stamp-interval variance";
     case Quantity::kImuLost: return "IMU frames lost";
+    case Quantity::kTableLost: return "table samples lost";
   }
   return "?";
 }
@@ -364,7 +368,9 @@ Result<FeatureSet> extractFeatures(const Recording& recording, const FeatureRefe
       ++s.tn;
       if (i > 0) {
         const double dUs = (tp.table[i].timeS - tp.table[i - 1].timeS) * 1e6;
-        if (dUs > 0.0 && dUs < 1.5 * reference.tablePeriodS * 1e6) s.tableIntervalUs.add(dUs);
+        const double periodUs = reference.tablePeriodS * 1e6;
+        if (dUs > 0.0 && dUs < 1.5 * periodUs) s.tableIntervalUs.add(dUs);
+        else if (dUs >= 1.5 * periodUs) s.tableLost += std::round(dUs / periodUs) - 1.0;
       }
     }
 

@@ -43,6 +43,7 @@ enum class Quantity {
   kImuInterval,         // mean IMU frame interval against nominal
   kImuIntervalVariance,
   kImuLost,             // IMU frames lost
+  kTableLost,           // table samples missing (stamp gaps of whole periods)
 };
 enum class Unit { kPpm, kMicroseconds, kDegPerHour, kMicroDegSquared, kMicrosecondsSquared, kFrames };
 
@@ -57,7 +58,7 @@ struct FeatureKey {
 };
 
 // The names the JSON output and the reports use: "h3_in_phase", "delay",
-// "residual_ms", "imu_lost", ...; "ppm", "us", "deg/h", "udeg^2", "us^2", "frames".
+// "residual_ms", "imu_lost", "table_lost", ...; "ppm", "us", "deg/h", "udeg^2", "us^2", "frames".
 std::string quantityName(const FeatureKey& key);
 const char* unitName(Unit unit);
 // The same quantity in words for people ("harmonic 2, quadrature",

@@ -2482,7 +2482,7 @@ File: %1</source>
 <context>
     <name>fog::ui::PlotInteraction</name>
     <message>
-        <location filename="../../ui/plots/plot_interaction.cpp" line="+97"/>
+        <location filename="../../ui/plots/plot_interaction.cpp" line="+148"/>
         <source>wheel: zoom time (Ctrl: both axes) · drag: pan · double-click: whole view</source>
         <translation>滚轮：缩放时间轴（Ctrl：两轴）· 拖动：平移 · 双击：全貌</translation>
     </message>
@@ -3923,7 +3923,7 @@ File: %1</source>
         <translation>各测试点的滞后随摆动频率的变化</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+27"/>
         <source>The delay report appears here after a run.</source>
         <translation>运行结束后，延迟报告显示在这里。</translation>
     </message>
@@ -4856,6 +4856,11 @@ The session itself is unchanged.</source>
     </message>
     <message>
         <location line="+1"/>
+        <source>table samples lost</source>
+        <translation>转台丢失样本数</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>h%1_in_phase</source>
         <translation>%1 次谐波同相</translation>
     </message>
@@ -4918,6 +4923,11 @@ The session itself is unchanged.</source>
         <location line="+1"/>
         <source>imu_lost</source>
         <translation>IMU 丢帧</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>table_lost</source>
+        <translation>转台丢样</translation>
     </message>
     <message>
         <location line="+1"/>

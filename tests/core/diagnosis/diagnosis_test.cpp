@@ -225,6 +225,29 @@ TEST(Diagnosis, TheImuFrameIsFoundCheckedAndAContradictedOneNamesNoEffect) {
   }
 }
 
+// Table samples lost at random (2 per mille) are not in the library (its
+// dropped frames are the IMU's): the timing cells of the lost table samples
+// carry the gap and the answer is "unexplained". They were skipped with
+// the stamp intervals' gaps, and a reference session with lost table rows
+// was answered "none".
+TEST(Diagnosis, LostTableSamplesAreAGapNoEffectCloses) {
+  model::SimConfig c;
+  c.seed = 33;
+  c.fog.setOwnDelayS(0.31e-3);
+  c.encoder.lostPerMille = 2.0;
+  const Diagnosis d = diagnoseSimulated(c, blindCheckPlan(), {});
+  EXPECT_EQ(d.verdict, "unexplained") << d.verdictReason;
+  double lost = 0.0;
+  for (const auto& cell : d.gapMap)
+    if (cell.key.quantity == Quantity::kTableLost) {
+      lost += cell.real;
+      EXPECT_EQ(cell.simMean, 0.0);
+    }
+  EXPECT_GT(lost, 100.0);  // ~2 per mille of the session's ~129 000 table samples
+  ASSERT_GE(d.gapBefore.size(), 4u);
+  EXPECT_GT(d.gapBefore[static_cast<std::size_t>(Channel::kTiming)].rmsZ, 5.0);
+}
+
 // A gyro bias step half-way through is not in the library: a ramp closes
 // ~90 % of its held-out gap but leaves a remainder of many sigma in the gyro
 // trends, so the answer is "unexplained" (with the ramp as a partial
