@@ -160,6 +160,8 @@ Result<GapModel> buildGapMap(const FeatureSet& realFeatures, const std::vector<S
   st.sigma.assign(n, 0.0);
   st.z.assign(n, 0.0);
   st.held.assign(n, false);
+  st.variance.assign(n, false);
+  for (std::size_t i = 0; i < n; ++i) st.variance[i] = keys[i].unit == Unit::kMicrosecondsSquared;
   for (int k = 0; k < K; ++k)
     for (std::size_t i = 0; i < n; ++i) st.mean[i] += outputs[static_cast<std::size_t>(k)].values[i] / K;
   std::map<GroupKey, std::pair<double, double>> pooled;  // sum of squares, dof

@@ -167,7 +167,8 @@ class ForwardCost final : public ceres::CostFunction {
     if (!f || f->values.size() != s_.base->size()) return false;
     std::vector<double> z(s_.real->size());
     for (std::size_t i = 0; i < z.size(); ++i)
-      z[i] = ((*s_.real)[i] - s_.stats->mean[i] - (f->values[i] - (*s_.base)[i])) / s_.stats->sigma[i];
+      z[i] = ((*s_.real)[i] - s_.stats->mean[i] - (f->values[i] - (*s_.base)[i])) /
+             spreadWith(*s_.stats, i, f->values[i] - (*s_.base)[i]);
     projectOut(*s_.nuisance, z, s_.stats->held, true);
     out.resize(s_.rows.size());
     for (std::size_t r = 0; r < s_.rows.size(); ++r) out[r] = z[s_.rows[r]];
@@ -335,7 +336,7 @@ class ExactEvaluator {
     if (!f || f->values.size() != n) return false;
     zOut.resize(n);
     for (std::size_t i = 0; i < n; ++i)
-      zOut[i] = (real_[i] - g_.st.mean[i] - (f->values[i] - g_.base[i])) / g_.st.sigma[i];
+      zOut[i] = (real_[i] - g_.st.mean[i] - (f->values[i] - g_.base[i])) / spreadWith(g_.st, i, f->values[i] - g_.base[i]);
     projectOut(g_.nuisance, zOut, g_.st.held, true);
     // A replay with non-finite features is no evaluation: the effect is
     // judged as if it had not been replayed (not kept).
