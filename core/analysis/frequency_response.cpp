@@ -197,7 +197,11 @@ Result<ResponseModelFit> fitModel(ResponseModelKind kind, const std::vector<Resp
     }
     if (!best || sol->chiSquare < best->chiSquare) best = std::move(*sol);
   }
-  if (!best) return Status(lastError.code(), std::string(responseModelName(kind)) + " model: " + lastError.message());
+  if (!best)
+    return Status(lastError.code(), std::string(responseModelName(kind)) + ": no fit from any of its " +
+                                        std::to_string(startingPoints(kind, points).size()) +
+                                        " starting points (" + lastError.message() +
+                                        "); the points may not hold such a filter");
 
   ResponseModelFit fit;
   fit.kind = kind;

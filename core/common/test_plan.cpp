@@ -249,7 +249,8 @@ Result<TestPlan> responsePlan(const TurntableLimits& limits, const ResponsePlanO
     TestPoint p;
     p.axis = o.axis;
     p.frequencyHz = f;
-    p.amplitudeDeg = std::floor(amplitude * 1000.0) / 1000.0;  // a round figure, never above the margin
+    // A round figure, never above the margin by more than rounding.
+    p.amplitudeDeg = std::floor(amplitude * 1000.0 + 1e-6) / 1000.0;
     p.settleS = std::ceil(std::max(1.0, f) - 1e-9) / f;
     p.durationS = std::ceil(std::max(o.minPeriods, o.minDurationS * f) - 1e-9) / f;
     plan.points.push_back(p);

@@ -146,7 +146,7 @@ std::string testPlanToJson(const TestPlan& plan);
 // amplitude is the largest the margin allows, at most maxAmplitudeDeg; the
 // dwell is whole periods: settle max(1 period, 1 s) rounded up to whole
 // periods, then max(minPeriods, minDurationS) rounded up likewise. For the
-// default limits: 0.05 .. 11.03 Hz, 10 deg down to 0.5 deg, 623 s in all.
+// default limits: 0.05 .. 11.03 Hz, 10 deg down to 0.5 deg, 670 s in all.
 // The phase resolution each point reaches (Cramer-Rao, the paper's gyro) is
 // checked in tests/core/analysis/frequency_response_test.cpp: <= 0.01 deg.
 struct ResponsePlanOptions {

@@ -16,6 +16,7 @@
 #include "core/common/units.h"
 #include "core/model/simulator.h"
 #include "core/protocol/recording_builder.h"
+#include "core/table/table_controller.h"
 
 namespace fog::analysis {
 namespace {
@@ -202,6 +203,88 @@ TEST(FrequencyResponse, StatedSigmaMatchesTheScatter) {
     EXPECT_GE(ratio, 0.8);
     EXPECT_LE(ratio, 1.25);
   }
+}
+
+// The preset: 20 frequencies from 0.05 Hz to where the table's limits
+// (80 %) still allow 0.5 deg, whole periods, within every limit, and each
+// point's Cramer-Rao phase sigma (the paper's gyro) within 0.01 deg.
+TEST(ResponsePlan, PresetSpansTheTablesRangeWithinItsLimits) {
+  const auto plan = presetPlan("response");
+  ASSERT_TRUE(plan.isOk()) << plan.status().message();
+  const TurntableLimits limits;
+  ASSERT_EQ(plan->points.size(), 20u);
+  EXPECT_TRUE(plan->validate(limits).isOk());
+  table::TableLimits tableLimits;
+  tableLimits.axes.fill(limits);
+  EXPECT_TRUE(table::checkPlanAgainstLimits(*plan, tableLimits).isOk());
+  const auto& first = plan->points.front();
+  const auto& last = plan->points.back();
+  EXPECT_DOUBLE_EQ(first.frequencyHz, 0.05);
+  EXPECT_DOUBLE_EQ(first.amplitudeDeg, 10.0);
+  // 0.8 * 3000 deg/s^2 at 0.5 deg: sqrt(4800) / (2 pi) Hz.
+  EXPECT_NEAR(last.frequencyHz, std::sqrt(4800.0) / kTwoPi, 1e-9);
+  EXPECT_NEAR(last.amplitudeDeg, 0.5, 1e-3);
+  double worstPhaseDeg = 0.0;
+  for (const auto& p : plan->points) {
+    EXPECT_EQ(p.axis, Axis::kX);
+    const double w = kTwoPi * p.frequencyHz;
+    EXPECT_LE(w * w * p.amplitudeDeg, 0.8 * limits.maxAccelDegPerS2 + 1e-9);
+    EXPECT_LE(w * p.amplitudeDeg, 0.8 * limits.maxRateDegPerS + 1e-9);
+    const double periods = p.durationS * p.frequencyHz, settle = p.settleS * p.frequencyHz;
+    EXPECT_NEAR(periods, std::round(periods), 1e-9);
+    EXPECT_NEAR(settle, std::round(settle), 1e-9);
+    EXPECT_GE(std::round(periods), 6.0);
+    EXPECT_GE(std::round(settle), 1.0);
+    PlannedTest t;
+    t.frequencyHz = p.frequencyHz;
+    t.amplitudeDeg = p.amplitudeDeg;
+    t.durationS = p.durationS;
+    worstPhaseDeg = std::max(worstPhaseDeg, w * predictedLagStdS(t) * kDegPerRad);
+  }
+  std::printf("  %.4f .. %.4f Hz, %.1f s in all, worst predicted phase sigma %.2e deg\n", first.frequencyHz,
+              last.frequencyHz, plan->totalDurationS(), worstPhaseDeg);
+  EXPECT_LE(worstPhaseDeg, 0.01);
+  EXPECT_LE(plan->totalDurationS(), 900.0);
+}
+
+// A table with lower limits: the same grid is refused before any motion,
+// naming the point; responsePlan() for those limits fits them.
+TEST(ResponsePlan, PointBeyondTheTablesLimitsIsRefused) {
+  const auto plan = *presetPlan("response");
+  TurntableLimits weak;
+  weak.maxAccelDegPerS2 = 1000.0;
+  const Status s = plan.validate(weak);
+  ASSERT_FALSE(s.isOk());
+  EXPECT_NE(s.message().find("peak acceleration"), std::string::npos) << s.message();
+  EXPECT_NE(s.message().find("test point"), std::string::npos) << s.message();
+  table::TableLimits tableLimits;
+  tableLimits.axes.fill(weak);
+  EXPECT_FALSE(table::checkPlanAgainstLimits(plan, tableLimits).isOk());
+  const auto fitted = responsePlan(weak);
+  ASSERT_TRUE(fitted.isOk()) << fitted.status().message();
+  EXPECT_TRUE(fitted->validate(weak).isOk());
+  EXPECT_NEAR(fitted->points.back().frequencyHz, std::sqrt(1600.0) / kTwoPi, 1e-9);
+  TurntableLimits crawling;
+  crawling.maxRateDegPerS = 0.1;  // 0.5 deg cannot swing at 0.05 Hz
+  EXPECT_FALSE(responsePlan(crawling).isOk());
+}
+
+TEST(FrequencyResponse, TooFewPointsSaySo) {
+  ResponsePoint p;
+  p.frequencyHz = 1.0, p.magnitude = 1.0, p.magnitudeStd = 1e-6, p.phaseDeg = -0.2, p.phaseStdDeg = 1e-4;
+  p.lagMs = 0.5, p.lagStdMs = 1e-3;
+  const auto one = analyzeResponse({p}, Axis::kX, 5.0);
+  ASSERT_FALSE(one.isOk());
+  EXPECT_EQ(one.status().code(), StatusCode::kInsufficientData);
+  EXPECT_NE(one.status().message().find("got 1"), std::string::npos) << one.status().message();
+  ResponsePoint q = p;
+  q.frequencyHz = 2.0, q.phaseDeg = -0.36;
+  const auto two = analyzeResponse({p, q}, Axis::kX, 5.0);
+  ASSERT_TRUE(two.isOk()) << two.status().message();
+  ASSERT_EQ(two->models.size(), 2u);  // delay and first order; second order needs 3 points
+  ASSERT_EQ(two->skipped.size(), 1u);
+  EXPECT_NE(two->skipped[0].find("second_order"), std::string::npos) << two->skipped[0];
+  EXPECT_FALSE(analyzeResponse({p, q}, Axis::kX, 0.0).isOk());
 }
 
 }  // namespace
