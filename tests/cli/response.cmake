@@ -66,6 +66,9 @@ if(pstd LESS_EQUAL 0 OR corr01 GREATER -0.9)
   message(FATAL_ERROR "response --json: phase sigma ${pstd}, corr(tau, T) ${corr01} (expected < -0.9 for a pure delay)")
 endif()
 
+run_expect(0 yrun run --preset response --axis y --seed 4)
+expect_match("${yrun}" "Frequency response, Y axis \\(gyro angle / table angle\\), 20 points" "run --preset response --axis y")
+
 run_expect(0 fast run --preset paper-fast --out ${dir}/fast.fbs)
 run_expect(1 one response ${dir}/fast.fbs)
 expect_match("${one_err}" "needs two or more test points of one axis that passed their checks; this recording has X 1" "one point")
