@@ -91,7 +91,8 @@ struct ResponseAnalysis {
 // Fits every model with enough points (2 x points > parameters: the delay and
 // the first-order model need 2 frequencies, the second-order model 3).
 // Errors: kInvalidArgument for a non-positive groupDelayAtHz; kInsufficientData
-// naming the count when fewer than two points passed their checks.
+// naming the count when fewer than two points are given; kInvalidArgument for
+// a point without a positive magnitude and positive uncertainties.
 // Uncertainties: the inverse of the weighted normal matrix, raised by
 // sqrt(chi^2/dof) when that exceeds 1 (the points scatter more than stated).
 Result<ResponseAnalysis> analyzeResponse(std::vector<ResponsePoint> points, Axis axis, double groupDelayAtHz);
