@@ -17,6 +17,7 @@
 #include "core/analysis/theory.h"
 #include "core/common/text.h"
 #include "core/common/version.h"
+#include "core/analysis/frequency_response.h"
 #include "core/diagnosis/accuracy_study.h"
 #include "core/diagnosis/effects.h"
 #include "core/model/simulator.h"
@@ -41,6 +42,13 @@ int printReport(const Result<analysis::DelayReport>& report, const analysis::Rep
   if (!report) return fail(report.status(), exitCodeFor(report.status()));
   std::cout << (json ? analysis::formatReportJson(*report, context) + "\n"
                      : forTerminal(analysis::formatReportText(*report, context)));
+  // A plan with three or more frequencies on an axis (run --preset response):
+  // its frequency response follows, as `response` prints it.
+  if (!json) {
+    auto responses = analysis::analyzeResponses(*report, 5.0);
+    std::erase_if(responses, [](const auto& r) { return r.points.size() < 3; });
+    if (!responses.empty()) std::cout << "\n" << analysis::formatResponseText(responses);
+  }
   return 0;
 }
 

@@ -11,6 +11,7 @@
 #include "core/common/version.h"
 #include "app/diagnose_command.h"
 #include "app/noise_command.h"
+#include "app/response_command.h"
 #include "app/session_commands.h"
 #ifdef FOG_HAVE_REPORT
 #include "app/report_command.h"
@@ -24,8 +25,9 @@ const char* kHelp = R"(fogbench-cli: measure how late a fiber-optic gyro IMU rep
 usage:
   fogbench-cli run [plan] [simulator options] [constants] [--save-raw FILE [--overwrite]] [--json]
       Run a test plan on the built-in simulator and print the delay report.
-      plan: --plan FILE.json | --preset paper|paper-slow|paper-fast|quick|noise (default paper:
-            0.1 Hz / 10 deg for 294 s and 1 Hz / 3 deg for 60 s on X)
+      plan: --plan FILE.json | --preset paper|paper-slow|paper-fast|quick|noise|response (default paper:
+            0.1 Hz / 10 deg for 294 s and 1 Hz / 3 deg for 60 s on X; response: 20 frequencies
+            0.05 .. 11 Hz on X, or on the axis --axis names)
             | --axis x --freq-hz 0.1 --amp-deg 10 --duration-s 294 [--settle-s 5]
       --source sim (default), --seed N, --speed X (X times real time; default 0:
       as fast as possible),
@@ -68,6 +70,12 @@ usage:
       to rest; the session keeps the table log. --table sim (default): the simulator.
   fogbench-cli ports
       List the serial ports.
+  fogbench-cli response FILE [constants] [--json] [--at-hz 5]
+      The gyro's frequency response (gyro angle / table angle) at every swing
+      point of an axis that passed its checks: magnitude and phase with their
+      sigma, then the pure-delay, first-order and second-order models fitted to
+      them (sigma, correlation, chi2, AIC, BIC; chosen by AIC), the -3 dB
+      bandwidth and the group delay at --at-hz. run --preset response records one.
   fogbench-cli analyze FILE [constants] [--limit-ms 0.8] [--json] [--no-store]
       The same report from a saved raw sampling-board byte stream, or from a
       session file (its own bench constants unless given; the result is stored
@@ -166,6 +174,7 @@ int main(int argc, char** argv) {
   if (command == "diagnose") return fog::app::diagnoseCommand(*parsed);
   if (command == "bench-diagnosis") return fog::app::benchDiagnosisCommand(*parsed);
   if (command == "noise") return fog::app::noiseCommand(*parsed);
+  if (command == "response") return fog::app::responseCommand(*parsed);
   if (command == "report") {
 #ifdef FOG_HAVE_REPORT
     return fog::app::reportCommand(*parsed);

@@ -24,7 +24,10 @@ Result<TestPlan> readPlan(CliArguments& args) {
   auto settle = args.number("settle-s", -1.0);
   for (const auto* r : {&freq, &amp, &duration, &settle})
     if (!*r) return r->status();
-  const bool single = axis || args.text("freq-hz") || args.text("amp-deg") || args.text("duration-s");
+  // --preset response --axis y: the response plan of that axis.
+  const bool responseAxis = axis && preset && *preset == "response";
+  const bool single =
+      (axis && !responseAxis) || args.text("freq-hz") || args.text("amp-deg") || args.text("duration-s");
   if ((file ? 1 : 0) + (preset ? 1 : 0) + (single ? 1 : 0) > 1)
     return invalidArgument("give one of --plan, --preset or --axis/--freq-hz/--amp-deg/--duration-s");
   if (file) {
@@ -45,6 +48,12 @@ Result<TestPlan> readPlan(CliArguments& args) {
     TestPlan plan;
     plan.points.push_back(p);
     return plan;
+  }
+  if (responseAxis) {
+    FOG_ASSIGN_OR_RETURN(auto a, parseAxis(*axis));
+    ResponsePlanOptions options;
+    options.axis = a;
+    return responsePlan(TurntableLimits{}, options);
   }
   return presetPlan(preset.value_or("paper"));
 }

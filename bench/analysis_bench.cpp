@@ -7,6 +7,7 @@
 
 #include "core/analysis/channels.h"
 #include "core/analysis/delay_analysis.h"
+#include "core/analysis/frequency_response.h"
 #include "core/analysis/joint_fit.h"
 #include "core/analysis/sine_fit.h"
 #include "core/common/units.h"
@@ -32,6 +33,33 @@ void BM_AnalyzeSlowSession(benchmark::State& state) {
   state.counters["imu_samples"] = static_cast<double>(rec.testPoints[0].imu.size());
 }
 BENCHMARK(BM_AnalyzeSlowSession)->Unit(benchmark::kMillisecond)->MinTime(3.0);
+
+// The user's path for a frequency response of one axis (issue 32): the
+// delay analysis of the 20-point `--preset response` session (0.05 .. 11 Hz,
+// 670 s: 670k table and 335k IMU samples), then the per-point gains and the
+// three models. Aim: <= 1 s.
+void BM_AnalyzeResponseSession(benchmark::State& state) {
+  const fog::Recording rec = decoded(*fog::presetPlan("response"));
+  std::size_t models = 0;
+  for (auto _ : state) {
+    auto report = fog::analysis::analyzeRecording(rec, fog::BenchConstants{});
+    auto responses = fog::analysis::analyzeResponses(*report, 5.0);
+    models = responses.empty() ? 0 : responses.front().models.size();
+    benchmark::DoNotOptimize(responses);
+  }
+  state.counters["points"] = static_cast<double>(rec.testPoints.size());
+  state.counters["models"] = static_cast<double>(models);
+}
+BENCHMARK(BM_AnalyzeResponseSession)->Unit(benchmark::kMillisecond)->MinTime(3.0);
+
+// The models alone, from the 20 points (what `response` adds to `analyze`).
+void BM_FitResponseModels(benchmark::State& state) {
+  const fog::Recording rec = decoded(*fog::presetPlan("response"));
+  const auto report = fog::analysis::analyzeRecording(rec, fog::BenchConstants{});
+  const auto points = fog::analysis::responsePoints(*report, fog::Axis::kX);
+  for (auto _ : state) benchmark::DoNotOptimize(fog::analysis::analyzeResponse(points, fog::Axis::kX, 5.0));
+}
+BENCHMARK(BM_FitResponseModels)->Unit(benchmark::kMillisecond)->MinTime(1.0);
 
 void BM_AnalyzeFastSession(benchmark::State& state) {
   const fog::Recording rec = decoded(fog::TestPlan::paperFast());

@@ -141,6 +141,7 @@ Result<JointFit> fitJoint(const Channels& ch, const SineFit& tableFit, const Sin
   f.gainStd = std::sqrt(cov(kG, kG));
   f.lagS = x[kLag];
   f.lagStdS = std::sqrt(cov(kLag, kLag));
+  if (f.gainStd > 0.0 && f.lagStdS > 0.0) f.gainLagCorrelation = cov(kG, kLag) / (f.gainStd * f.lagStdS);
   f.trendDegPerS = x[kD];
   f.trendStdDegPerS = std::sqrt(cov(kD, kD));
   f.chiSquarePerDof = sol->chiSquare / static_cast<double>(sol->residuals - kParams);

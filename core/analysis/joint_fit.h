@@ -18,6 +18,9 @@ struct JointFit {
   double frequencyHz = 0.0, frequencyStdHz = 0.0;
   double lagS = 0.0, lagStdS = 0.0;  // positive: gyro output behind the table
   double gain = 0.0, gainStd = 0.0;  // gyro amplitude / table amplitude
+  // Correlation of gain and lag in the fit's covariance (frequency_response.h
+  // turns it into the covariance of magnitude and phase).
+  double gainLagCorrelation = 0.0;
   double trendDegPerS = 0.0, trendStdDegPerS = 0.0;
   double chiSquarePerDof = 0.0;
   int iterations = 0;

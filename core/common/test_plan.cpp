@@ -195,7 +195,8 @@ TestPlan TestPlan::paperFast() {
 }
 
 const std::vector<std::string>& presetPlanNames() {
-  static const std::vector<std::string> names = {"paper", "paper-slow", "paper-fast", "quick", "noise"};
+  static const std::vector<std::string> names = {"paper", "paper-slow", "paper-fast", "quick", "noise",
+                                                    "response"};
   return names;
 }
 
@@ -220,9 +221,42 @@ Result<TestPlan> presetPlan(std::string_view name) {
     plan.points.push_back(TestPlan::paperFast().points.front());
     return plan;
   }
+  if (name == "response") return responsePlan(TurntableLimits{});
   std::string known;
   for (const auto& n : presetPlanNames()) known += (known.empty() ? "" : ", ") + n;
   return invalidArgument("unknown preset '" + std::string(name) + "' (" + known + ")");
+}
+
+Result<TestPlan> responsePlan(const TurntableLimits& limits, const ResponsePlanOptions& o) {
+  if (!(o.lowestHz > 0.0) || o.frequencies < 2 || o.frequencies > 200 || !(o.minAmplitudeDeg > 0.0) ||
+      !(o.maxAmplitudeDeg >= o.minAmplitudeDeg) || !(o.limitMargin > 0.0 && o.limitMargin <= 1.0) ||
+      !(o.minPeriods >= 2.0) || !(o.minDurationS >= 0.0))
+    return invalidArgument("response plan: needs a lowest frequency > 0, 2 .. 200 frequencies, amplitudes "
+                           "0 < min <= max, a limit margin in (0, 1] and at least 2 periods per point");
+  const double rate = o.limitMargin * limits.maxRateDegPerS, accel = o.limitMargin * limits.maxAccelDegPerS2;
+  // Highest frequency at which the margin still allows minAmplitudeDeg.
+  const double highest = std::min({limits.maxFrequencyHz, rate / (kTwoPi * o.minAmplitudeDeg),
+                                   std::sqrt(accel / o.minAmplitudeDeg) / kTwoPi});
+  if (!(highest > o.lowestHz))
+    return invalidArgument("response plan: the table's limits allow " + num(o.minAmplitudeDeg) + " deg only up to " +
+                           num(highest) + " Hz, not above the lowest frequency " + num(o.lowestHz) + " Hz");
+  TestPlan plan;
+  for (int i = 0; i < o.frequencies; ++i) {
+    const double f = o.lowestHz * std::pow(highest / o.lowestHz, static_cast<double>(i) / (o.frequencies - 1));
+    const double w = kTwoPi * f;
+    const double amplitude =
+        std::min({o.maxAmplitudeDeg, o.limitMargin * limits.maxAmplitudeDeg, rate / w, accel / (w * w)});
+    TestPoint p;
+    p.axis = o.axis;
+    p.frequencyHz = f;
+    // A round figure, never above the margin by more than rounding.
+    p.amplitudeDeg = std::floor(amplitude * 1000.0 + 1e-6) / 1000.0;
+    p.settleS = std::ceil(std::max(1.0, f) - 1e-9) / f;
+    p.durationS = std::ceil(std::max(o.minPeriods, o.minDurationS * f) - 1e-9) / f;
+    plan.points.push_back(p);
+  }
+  if (Status s = plan.validate(limits); !s.isOk()) return invalidArgument("response plan: " + s.message());
+  return plan;
 }
 
 Result<TestPlan> loadTestPlanFile(const std::string& path) {

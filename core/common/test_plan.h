@@ -133,9 +133,34 @@ Result<TestPlan> loadTestPlanFile(const std::string& path);
 //   paper-fast  1 Hz / 3 deg, 60 s
 //   quick       1 Hz / 3 deg, 20 s: a result in seconds
 //   noise       10 minutes at rest on X (gyro noise), then the paper-fast swing
+//   response    a frequency response of X: responsePlan() for the default limits
 const std::vector<std::string>& presetPlanNames();
 // kInvalidArgument naming the presets for an unknown name.
 Result<TestPlan> presetPlan(std::string_view name);
 std::string testPlanToJson(const TestPlan& plan);
+
+// A frequency-response plan (issue 32, docs/method.md "Frequency response"):
+// `frequencies` log-spaced frequencies from lowestHz up to the highest one at
+// which the table still swings minAmplitudeDeg within limitMargin of its rate
+// and acceleration limits (and its frequency limit). At each frequency the
+// amplitude is the largest the margin allows, at most maxAmplitudeDeg; the
+// dwell is whole periods: settle max(1 period, 1 s) rounded up to whole
+// periods, then max(minPeriods, minDurationS) rounded up likewise. For the
+// default limits: 0.05 .. 11.03 Hz, 10 deg down to 0.5 deg, 670 s in all.
+// The phase resolution each point reaches (Cramer-Rao, the paper's gyro) is
+// checked in tests/core/analysis/frequency_response_test.cpp: <= 0.01 deg.
+struct ResponsePlanOptions {
+  Axis axis = Axis::kX;
+  double lowestHz = 0.05;
+  int frequencies = 20;
+  double maxAmplitudeDeg = 10.0;
+  double minAmplitudeDeg = 0.5;
+  double limitMargin = 0.8;
+  double minPeriods = 6.0;  // the per-period track then has >= 5 periods (delay_analysis)
+  double minDurationS = 10.0;
+};
+// kInvalidArgument when the options are out of range or the table cannot
+// swing minAmplitudeDeg at lowestHz; the plan returned passes validate(limits).
+Result<TestPlan> responsePlan(const TurntableLimits& limits, const ResponsePlanOptions& options = {});
 
 }  // namespace fog

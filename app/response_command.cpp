@@ -1,0 +1,41 @@
+#include "app/response_command.h"
+
+#include <iostream>
+
+#include "app/cli_common.h"
+#include "app/session_input.h"
+#include "core/analysis/frequency_response.h"
+
+namespace fog::app {
+
+int responseCommand(CliArguments& args) {
+  const bool json = args.flag("json");
+  auto atHz = args.number("at-hz", 5.0);
+  if (!atHz) return fail(atHz.status(), 2);
+  if (!(*atHz > 0.0) || !std::isfinite(*atHz)) return fail(invalidArgument("--at-hz must be a frequency > 0 Hz"), 2);
+  int failed = 0;
+  auto opened = openFileArgument(args, "response needs exactly one SESSION.fbs or raw stream FILE", failed);
+  if (!opened) return failed;
+  auto constants = readConstants(args, opened->info.bench);
+  if (!constants) return fail(constants.status(), 2);
+  if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
+  auto report = analysis::analyzeRecording(opened->recording, *constants);
+  if (!report) return fail(report.status(), exitCodeFor(report.status()));
+  const auto responses = analysis::analyzeResponses(*report, *atHz);
+  if (responses.empty()) {
+    std::string counts;
+    for (int a = 0; a < kAxisCount; ++a) {
+      const auto n = analysis::responsePoints(*report, static_cast<Axis>(a)).size();
+      if (n > 0) counts += std::string(counts.empty() ? "" : ", ") + axisLabel(static_cast<Axis>(a)) + " " + std::to_string(n);
+    }
+    return fail(Status(StatusCode::kInsufficientData,
+                       "a frequency response needs two or more test points of one axis that passed their checks; "
+                       "this recording has " + (counts.empty() ? std::string("none") : counts) +
+                           " (run --preset response records 20)"),
+                1);
+  }
+  std::cout << (json ? analysis::formatResponseJson(responses) + "\n" : analysis::formatResponseText(responses));
+  return 0;
+}
+
+}  // namespace fog::app

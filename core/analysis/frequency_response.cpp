@@ -1,0 +1,443 @@
+#include "core/analysis/frequency_response.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "core/analysis/least_squares.h"
+#include "core/common/units.h"
+
+namespace fog::analysis {
+
+namespace {
+
+constexpr double kStrongCorrelation = 0.95;
+
+int parameterCount(ResponseModelKind kind) {
+  switch (kind) {
+    case ResponseModelKind::kDelay: return 2;
+    case ResponseModelKind::kFirstOrder: return 3;
+    case ResponseModelKind::kSecondOrder: return 4;
+  }
+  return 0;
+}
+
+std::vector<std::string> parameterNames(ResponseModelKind kind) {
+  switch (kind) {
+    case ResponseModelKind::kDelay: return {"K", "tau_ms"};
+    case ResponseModelKind::kFirstOrder: return {"K", "tau_ms", "T_ms"};
+    case ResponseModelKind::kSecondOrder: return {"K", "tau_ms", "fn_hz", "zeta"};
+  }
+  return {};
+}
+
+// Model magnitude and continuous phase (rad) at f for parameters x in the
+// units of parameterNames().
+double modelMagnitude(ResponseModelKind kind, const Eigen::VectorXd& x, double f) {
+  const double w = kTwoPi * f;
+  switch (kind) {
+    case ResponseModelKind::kDelay: return x[0];
+    case ResponseModelKind::kFirstOrder: {
+      const double wt = w * x[2] * 1e-3;
+      return x[0] / std::sqrt(1.0 + wt * wt);
+    }
+    case ResponseModelKind::kSecondOrder: {
+      const double r = f / x[2], z = x[3];
+      return x[0] / std::sqrt((1.0 - r * r) * (1.0 - r * r) + (2.0 * z * r) * (2.0 * z * r));
+    }
+  }
+  return 0.0;
+}
+
+double modelPhase(ResponseModelKind kind, const Eigen::VectorXd& x, double f) {
+  const double w = kTwoPi * f;
+  double phase = -w * x[1] * 1e-3;
+  if (kind == ResponseModelKind::kFirstOrder) phase -= std::atan(w * x[2] * 1e-3);
+  if (kind == ResponseModelKind::kSecondOrder) {
+    const double r = f / x[2];
+    phase -= std::atan2(2.0 * x[3] * r, 1.0 - r * r);
+  }
+  return phase;
+}
+
+double wrapPi(double a) {
+  a = std::remainder(a, kTwoPi);
+  return a;
+}
+
+// Group delay -d phase / d omega at f, s (central difference; at f = 0 one-sided from 0).
+double groupDelayS(ResponseModelKind kind, const Eigen::VectorXd& x, double f) {
+  const double h = std::max(1e-6, f * 1e-5);
+  const double lo = std::max(0.0, f - h), hi = f + h;
+  return -(modelPhase(kind, x, hi) - modelPhase(kind, x, lo)) / (kTwoPi * (hi - lo));
+}
+
+// -3 dB bandwidth in Hz relative to K; NaN when the model has none.
+double bandwidthHz(ResponseModelKind kind, const Eigen::VectorXd& x) {
+  if (kind == ResponseModelKind::kFirstOrder) {
+    const double t = std::abs(x[2]) * 1e-3;
+    return t > 0.0 ? 1.0 / (kTwoPi * t) : std::numeric_limits<double>::quiet_NaN();
+  }
+  if (kind == ResponseModelKind::kSecondOrder) {
+    const double a = 1.0 - 2.0 * x[3] * x[3];
+    return std::abs(x[2]) * std::sqrt(a + std::sqrt(a * a + 1.0));
+  }
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+// Whitened residuals (model - data) of every point: 2 per point.
+class ResponseProblem : public LeastSquaresProblem {
+ public:
+  ResponseProblem(ResponseModelKind kind, const std::vector<ResponsePoint>& points) : kind_(kind), points_(points) {
+    for (const auto& p : points) {
+      const double sm = p.magnitudeStd, sp = p.phaseStdDeg * kRadPerDeg;
+      const double c = p.magnitudePhaseCovDeg * kRadPerDeg;
+      // C = L L^T; whitening is L^-1.
+      const double l11 = sm, l21 = c / sm, l22 = std::sqrt(std::max(sp * sp - l21 * l21, 1e-30 * sp * sp));
+      Eigen::Matrix2d inv;
+      inv << 1.0 / l11, 0.0, -l21 / (l11 * l22), 1.0 / l22;
+      whiten_.push_back(inv);
+    }
+  }
+  std::size_t numResiduals() const override { return 2 * points_.size(); }
+  int numParameters() const override { return parameterCount(kind_); }
+  Eigen::VectorXd residuals(const Eigen::VectorXd& x) const {
+    Eigen::VectorXd r(numResiduals());
+    for (std::size_t i = 0; i < points_.size(); ++i) {
+      const auto& p = points_[i];
+      const Eigen::Vector2d d(modelMagnitude(kind_, x, p.frequencyHz) - p.magnitude,
+                              wrapPi(modelPhase(kind_, x, p.frequencyHz) - p.phaseDeg * kRadPerDeg));
+      r.segment<2>(2 * i) = whiten_[i] * d;
+    }
+    return r;
+  }
+  double accumulate(const double* xp, Eigen::MatrixXd* jtj, Eigen::VectorXd* jtr) const override {
+    const int n = numParameters();
+    const Eigen::VectorXd x = Eigen::Map<const Eigen::VectorXd>(xp, n);
+    const Eigen::VectorXd r = residuals(x);
+    if (jtj && jtr) {
+      Eigen::MatrixXd j(r.size(), n);
+      for (int k = 0; k < n; ++k) {
+        const double h = 1e-6 * std::max(1.0, std::abs(x[k]));
+        Eigen::VectorXd up = x, down = x;
+        up[k] += h;
+        down[k] -= h;
+        j.col(k) = (residuals(up) - residuals(down)) / (2.0 * h);
+      }
+      *jtj += j.transpose() * j;
+      *jtr += j.transpose() * r;
+    }
+    return r.squaredNorm();
+  }
+
+ private:
+  ResponseModelKind kind_;
+  const std::vector<ResponsePoint>& points_;
+  std::vector<Eigen::Matrix2d> whiten_;
+};
+
+// sigma of g(x) from the covariance, by a central-difference gradient.
+template <class G>
+double propagate(const G& g, const Eigen::VectorXd& x, const Eigen::MatrixXd& cov) {
+  Eigen::VectorXd grad(x.size());
+  for (int k = 0; k < x.size(); ++k) {
+    const double h = 1e-6 * std::max(1.0, std::abs(x[k]));
+    Eigen::VectorXd up = x, down = x;
+    up[k] += h;
+    down[k] -= h;
+    grad[k] = (g(up) - g(down)) / (2.0 * h);
+  }
+  return std::sqrt(std::max(0.0, grad.dot(cov * grad)));
+}
+
+std::string fmt(double v, int digits) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+  return buf;
+}
+
+std::vector<Eigen::VectorXd> startingPoints(ResponseModelKind kind, const std::vector<ResponsePoint>& points) {
+  double wk = 0.0, k = 0.0, wt = 0.0, tau = 0.0;
+  for (const auto& p : points) {
+    const double a = 1.0 / (p.magnitudeStd * p.magnitudeStd), b = 1.0 / (p.lagStdMs * p.lagStdMs);
+    wk += a, k += a * p.magnitude, wt += b, tau += b * p.lagMs;
+  }
+  k /= wk, tau /= wt;
+  const double fMax = points.back().frequencyHz;
+  std::vector<Eigen::VectorXd> starts;
+  switch (kind) {
+    case ResponseModelKind::kDelay: starts.push_back(Eigen::Vector2d(k, tau)); break;
+    case ResponseModelKind::kFirstOrder:
+      for (double share : {0.05, 0.5, 0.95}) starts.push_back(Eigen::Vector3d(k, tau * (1.0 - share), tau * share));
+      break;
+    case ResponseModelKind::kSecondOrder:
+      for (double fn : {2.0 * fMax, 5.0 * fMax, 20.0 * fMax})
+        for (double zeta : {0.15, 0.7, 1.5}) {
+          const double filter = 2.0 * zeta / (kTwoPi * fn) * 1e3;
+          starts.push_back(Eigen::Vector4d(k, tau - filter, fn, zeta));
+        }
+      break;
+  }
+  return starts;
+}
+
+Result<ResponseModelFit> fitModel(ResponseModelKind kind, const std::vector<ResponsePoint>& points,
+                                  double groupDelayAtHz) {
+  const ResponseProblem problem(kind, points);
+  std::optional<LeastSquaresSolution> best;
+  Status lastError = Status::ok();
+  for (const auto& x0 : startingPoints(kind, points)) {
+    auto sol = solveLeastSquares(problem, x0);
+    if (!sol) {
+      lastError = sol.status();
+      continue;
+    }
+    if (!best || sol->chiSquare < best->chiSquare) best = std::move(*sol);
+  }
+  if (!best)
+    return Status(lastError.code(), std::string(responseModelName(kind)) + ": no fit from any of its " +
+                                        std::to_string(startingPoints(kind, points).size()) +
+                                        " starting points (" + lastError.message() +
+                                        "); the points may not hold such a filter");
+
+  ResponseModelFit fit;
+  fit.kind = kind;
+  Eigen::VectorXd x = best->x;
+  if (kind == ResponseModelKind::kSecondOrder) x[2] = std::abs(x[2]), x[3] = std::abs(x[3]);
+  fit.values = x;
+  const int k = parameterCount(kind);
+  const int n = static_cast<int>(problem.numResiduals());
+  fit.chiSquare = best->chiSquare;
+  fit.dof = n - k;
+  fit.aic = fit.chiSquare + 2.0 * k;
+  fit.bic = fit.chiSquare + k * std::log(static_cast<double>(n));
+  // The solver scales its covariance by chi^2/dof; undo that, then raise it
+  // only when the points scatter more than their stated uncertainties.
+  const double birge = fit.chiSquare / fit.dof;
+  Eigen::MatrixXd cov = best->covariance;
+  if (birge > 0.0) cov /= birge;
+  if (birge > 1.0) cov *= birge;
+  const auto names = parameterNames(kind);
+  fit.correlation = Eigen::MatrixXd::Identity(k, k);
+  for (int i = 0; i < k; ++i) {
+    fit.parameters.push_back({names[i], x[i], std::sqrt(cov(i, i))});
+    for (int j = 0; j < k; ++j)
+      if (i != j) fit.correlation(i, j) = cov(i, j) / std::sqrt(cov(i, i) * cov(j, j));
+  }
+  auto lowDelay = [kind](const Eigen::VectorXd& p) { return groupDelayS(kind, p, 0.0) * 1e3; };
+  auto atDelay = [kind, groupDelayAtHz](const Eigen::VectorXd& p) {
+    return groupDelayS(kind, p, groupDelayAtHz) * 1e3;
+  };
+  fit.lowFrequencyDelayMs = {lowDelay(x), propagate(lowDelay, x, cov)};
+  fit.groupDelayMs = {atDelay(x), propagate(atDelay, x, cov)};
+  if (kind != ResponseModelKind::kDelay) {
+    auto bw = [kind](const Eigen::VectorXd& p) { return bandwidthHz(kind, p); };
+    const double value = bw(x);
+    if (std::isfinite(value)) {
+      fit.bandwidthHz = DerivedValue{value, propagate(bw, x, cov)};
+      if (value > points.back().frequencyHz)
+        fit.notes.push_back("the -3 dB bandwidth " + fmt(value, 4) + " Hz lies beyond the highest point (" +
+                            fmt(points.back().frequencyHz, 4) + " Hz): an extrapolation of the model");
+    }
+  }
+  for (int i = 0; i < k; ++i)
+    for (int j = i + 1; j < k; ++j)
+      if (std::abs(fit.correlation(i, j)) > kStrongCorrelation)
+        fit.notes.push_back(names[i] + " and " + names[j] + " correlate at " + fmt(fit.correlation(i, j), 3) +
+                            ": the points barely separate them (the low-frequency delay " +
+                            fmt(fit.lowFrequencyDelayMs.value, 5) + " ± " + fmt(fit.lowFrequencyDelayMs.stdDev, 2) +
+                            " ms is better determined than either)");
+  for (int i = 1; i < k; ++i)
+    if (names[i] != "tau_ms" && std::abs(x[i]) < 2.0 * fit.parameters[i].stdDev)
+      fit.notes.push_back(names[i] + " = " + fmt(x[i], 4) + " ± " + fmt(fit.parameters[i].stdDev, 2) +
+                          " is not distinguished from 0 by these points");
+  return fit;
+}
+
+}  // namespace
+
+const char* responseModelName(ResponseModelKind kind) {
+  switch (kind) {
+    case ResponseModelKind::kDelay: return "delay";
+    case ResponseModelKind::kFirstOrder: return "first_order";
+    case ResponseModelKind::kSecondOrder: return "second_order";
+  }
+  return "?";
+}
+
+double ResponseModelFit::magnitudeAt(double frequencyHz) const { return modelMagnitude(kind, values, frequencyHz); }
+double ResponseModelFit::phaseRadAt(double frequencyHz) const { return modelPhase(kind, values, frequencyHz); }
+
+std::vector<ResponsePoint> responsePoints(const DelayReport& report, Axis axis) {
+  std::vector<ResponsePoint> out;
+  for (const auto& r : report.points) {
+    if (r.axis != axis || !passedItsChecks(r)) continue;
+    ResponsePoint p;
+    p.index = r.index;
+    p.frequencyHz = r.joint.frequencyHz;
+    const double w = kTwoPi * p.frequencyHz;
+    p.magnitude = r.magnitudeRatio;
+    p.magnitudeStd = r.joint.gainStd;
+    p.magnitudeDb = 20.0 * std::log10(p.magnitude);
+    p.magnitudeDbStd = 20.0 / std::log(10.0) * p.magnitudeStd / p.magnitude;
+    p.lagMs = r.lagMs;
+    p.lagStdMs = r.lagStdMs;
+    p.phaseDeg = -w * r.lagMs * 1e-3 * kDegPerRad;
+    p.phaseStdDeg = w * r.lagStdMs * 1e-3 * kDegPerRad;
+    // phase = -omega lag: the correlation changes sign.
+    p.magnitudePhaseCovDeg = -r.joint.gainLagCorrelation * p.magnitudeStd * p.phaseStdDeg;
+    p.harmonicFraction = r.harmonicFraction;
+    out.push_back(p);
+  }
+  std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.frequencyHz < b.frequencyHz; });
+  return out;
+}
+
+Result<ResponseAnalysis> analyzeResponse(std::vector<ResponsePoint> points, Axis axis, double groupDelayAtHz) {
+  if (!(groupDelayAtHz > 0.0) || !std::isfinite(groupDelayAtHz))
+    return invalidArgument("the group delay's frequency must be > 0 Hz, got " + fmt(groupDelayAtHz, 6));
+  std::sort(points.begin(), points.end(), [](const auto& a, const auto& b) { return a.frequencyHz < b.frequencyHz; });
+  if (points.size() < 2)
+    return Status(StatusCode::kInsufficientData,
+                  std::string("a frequency response of axis ") + axisLabel(axis) +
+                      " needs at least two test points that passed their checks, got " +
+                      std::to_string(points.size()) + " (run --preset response gives 20)");
+  for (const auto& p : points)
+    if (!(p.magnitudeStd > 0.0) || !(p.phaseStdDeg > 0.0) || !std::isfinite(p.magnitude) || !(p.magnitude > 0.0))
+      return invalidArgument("test point " + std::to_string(p.index + 1) +
+                             " has no positive magnitude and uncertainties to weight it with");
+  ResponseAnalysis out;
+  out.axis = axis;
+  out.points = std::move(points);
+  out.groupDelayAtHz = groupDelayAtHz;
+  const int n = 2 * static_cast<int>(out.points.size());
+  for (auto kind : {ResponseModelKind::kDelay, ResponseModelKind::kFirstOrder, ResponseModelKind::kSecondOrder}) {
+    const int k = parameterCount(kind);
+    if (n <= k) {
+      out.skipped.push_back(std::string(responseModelName(kind)) + ": " + std::to_string(k) +
+                            " parameters need more than " + std::to_string(k) + " values, " +
+                            std::to_string(out.points.size()) + " points give " + std::to_string(n));
+      continue;
+    }
+    auto fit = fitModel(kind, out.points, groupDelayAtHz);
+    if (!fit) {
+      out.skipped.push_back(fit.status().message());
+      continue;
+    }
+    out.models.push_back(std::move(*fit));
+  }
+  for (std::size_t i = 0; i < out.models.size(); ++i)
+    if (out.chosen < 0 || out.models[i].aic < out.models[out.chosen].aic) out.chosen = static_cast<int>(i);
+  return out;
+}
+
+std::vector<ResponseAnalysis> analyzeResponses(const DelayReport& report, double groupDelayAtHz) {
+  std::vector<ResponseAnalysis> out;
+  for (int a = 0; a < kAxisCount; ++a) {
+    auto points = responsePoints(report, static_cast<Axis>(a));
+    if (points.size() < 2) continue;
+    auto r = analyzeResponse(std::move(points), static_cast<Axis>(a), groupDelayAtHz);
+    if (r) out.push_back(std::move(*r));
+  }
+  return out;
+}
+
+std::string formatResponseText(const std::vector<ResponseAnalysis>& responses) {
+  std::ostringstream o;
+  char line[256];
+  for (const auto& r : responses) {
+    o << "Frequency response, " << axisLabel(r.axis) << " axis (gyro angle / table angle), " << r.points.size()
+      << " points\n";
+    std::snprintf(line, sizeof line, "  %9s %10s %9s %9s %8s %10s %9s %9s %8s %6s\n", "f Hz", "|H|", "± ", "dB",
+                  "± ", "phase deg", "± ", "lag ms", "± ", "corr");
+    o << line;
+    for (const auto& p : r.points) {
+      const double corr = p.magnitudePhaseCovDeg / (p.magnitudeStd * p.phaseStdDeg);
+      std::snprintf(line, sizeof line, "  %9.4f %10.7f %9.2e %9.5f %8.1e %10.5f %9.2e %9.5f %8.1e %6.2f\n",
+                    p.frequencyHz, p.magnitude, p.magnitudeStd, p.magnitudeDb, p.magnitudeDbStd, p.phaseDeg,
+                    p.phaseStdDeg, p.lagMs, p.lagStdMs, corr);
+      o << line;
+    }
+    for (std::size_t i = 0; i < r.models.size(); ++i) {
+      const auto& m = r.models[i];
+      o << "  model " << responseModelName(m.kind) << (static_cast<int>(i) == r.chosen ? " (chosen: lowest AIC)" : "")
+        << ": chi2 " << fmt(m.chiSquare, 5) << " / " << m.dof << " dof, AIC " << fmt(m.aic, 6) << ", BIC "
+        << fmt(m.bic, 6) << "\n";
+      for (const auto& p : m.parameters) o << "    " << p.name << " = " << fmt(p.value, 7) << " ± " << fmt(p.stdDev, 2) << "\n";
+      for (int a = 0; a < m.correlation.rows(); ++a)
+        for (int b = a + 1; b < m.correlation.cols(); ++b)
+          o << "    corr(" << m.parameters[a].name << ", " << m.parameters[b].name << ") = "
+            << fmt(m.correlation(a, b), 3) << "\n";
+      o << "    low-frequency delay " << fmt(m.lowFrequencyDelayMs.value, 6) << " ± "
+        << fmt(m.lowFrequencyDelayMs.stdDev, 2) << " ms; group delay at " << fmt(r.groupDelayAtHz, 4) << " Hz "
+        << fmt(m.groupDelayMs.value, 6) << " ± " << fmt(m.groupDelayMs.stdDev, 2) << " ms\n";
+      if (m.bandwidthHz)
+        o << "    -3 dB bandwidth " << fmt(m.bandwidthHz->value, 5) << " ± " << fmt(m.bandwidthHz->stdDev, 2) << " Hz\n";
+      else
+        o << "    -3 dB bandwidth: none (a pure delay keeps its magnitude)\n";
+      for (const auto& n : m.notes) o << "    note: " << n << "\n";
+    }
+    for (const auto& s : r.skipped) o << "  model left out: " << s << "\n";
+  }
+  return o.str();
+}
+
+std::string formatResponseJson(const std::vector<ResponseAnalysis>& responses) {
+  using nlohmann::json;
+  json doc;
+  doc["responses"] = json::array();
+  for (const auto& r : responses) {
+    json axis;
+    axis["axis"] = axisName(r.axis);
+    axis["group_delay_at_hz"] = r.groupDelayAtHz;
+    axis["points"] = json::array();
+    for (const auto& p : r.points)
+      axis["points"].push_back({{"test_point", p.index + 1},
+                                {"frequency_hz", p.frequencyHz},
+                                {"magnitude", p.magnitude},
+                                {"magnitude_std", p.magnitudeStd},
+                                {"magnitude_db", p.magnitudeDb},
+                                {"magnitude_db_std", p.magnitudeDbStd},
+                                {"phase_deg", p.phaseDeg},
+                                {"phase_std_deg", p.phaseStdDeg},
+                                {"lag_ms", p.lagMs},
+                                {"lag_std_ms", p.lagStdMs},
+                                {"magnitude_phase_cov_deg", p.magnitudePhaseCovDeg},
+                                {"harmonic_fraction", p.harmonicFraction}});
+    axis["models"] = json::array();
+    for (const auto& m : r.models) {
+      json model{{"model", responseModelName(m.kind)},
+                 {"chi_square", m.chiSquare},
+                 {"dof", m.dof},
+                 {"aic", m.aic},
+                 {"bic", m.bic},
+                 {"low_frequency_delay_ms", m.lowFrequencyDelayMs.value},
+                 {"low_frequency_delay_std_ms", m.lowFrequencyDelayMs.stdDev},
+                 {"group_delay_ms", m.groupDelayMs.value},
+                 {"group_delay_std_ms", m.groupDelayMs.stdDev},
+                 {"notes", m.notes}};
+      model["bandwidth_hz"] = m.bandwidthHz ? json(m.bandwidthHz->value) : json(nullptr);
+      model["bandwidth_std_hz"] = m.bandwidthHz ? json(m.bandwidthHz->stdDev) : json(nullptr);
+      json params = json::object();
+      for (const auto& p : m.parameters) params[p.name] = {{"value", p.value}, {"std", p.stdDev}};
+      model["parameters"] = params;
+      json corr = json::array();
+      for (int a = 0; a < m.correlation.rows(); ++a) {
+        json row = json::array();
+        for (int b = 0; b < m.correlation.cols(); ++b) row.push_back(m.correlation(a, b));
+        corr.push_back(row);
+      }
+      model["correlation"] = corr;
+      axis["models"].push_back(model);
+    }
+    axis["chosen_model"] = r.chosen >= 0 ? json(responseModelName(r.models[r.chosen].kind)) : json(nullptr);
+    axis["skipped_models"] = r.skipped;
+    doc["responses"].push_back(axis);
+  }
+  return doc.dump(2);
+}
+
+}  // namespace fog::analysis

@@ -1,0 +1,106 @@
+#pragma once
+// Frequency response of the gyro (issue 32, docs/method.md "Frequency
+// response"): the complex gain gyro angle / table angle at each test point of
+// one axis, computed from the delay analysis' joint fits (nothing is fitted
+// to the samples again), and three transfer-function models fitted to all
+// points by weighted least squares on magnitude and phase:
+//
+//   delay         H(s) = K e^(-s tau)
+//   first_order   H(s) = K e^(-s tau) / (1 + s T)
+//   second_order  H(s) = K e^(-s tau) wn^2 / (s^2 + 2 zeta wn s + wn^2)
+//
+// Each with its parameters' standard uncertainties and correlations, chi^2,
+// AIC and BIC; the model with the lowest AIC is chosen. Its -3 dB bandwidth
+// and its group delay at a chosen frequency carry uncertainties propagated
+// from the parameters' covariance.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "core/analysis/delay_analysis.h"
+#include "core/common/status.h"
+
+namespace fog::analysis {
+
+// The complex gain at one test point. Phase > 0 would be a lead; a lagging
+// gyro has phase < 0 and lagMs = -phase / omega > 0.
+struct ResponsePoint {
+  int index = 0;  // the test point's index in the report
+  double frequencyHz = 0.0;  // the joint fit's frequency
+  double magnitude = 0.0, magnitudeStd = 0.0;      // gyro amplitude / table amplitude
+  double magnitudeDb = 0.0, magnitudeDbStd = 0.0;  // 20 log10(magnitude)
+  double phaseDeg = 0.0, phaseStdDeg = 0.0;
+  double lagMs = 0.0, lagStdMs = 0.0;              // the point's reported lag and its uncertainty
+  // Covariance of magnitude (ratio) and phase (deg): the joint fit's gain-lag
+  // correlation times magnitudeStd * phaseStdDeg, with the sign phase = -omega lag gives.
+  double magnitudePhaseCovDeg = 0.0;
+  double harmonicFraction = 0.0;  // harmonics 2..5 of the table / amplitude (the point's)
+};
+
+// The points of `axis` whose validity checks passed (passedItsChecks), in
+// order of frequency. The phase uncertainty is omega * lagStdMs (the point's
+// reported lag uncertainty, which may exceed the fit's), the magnitude's the
+// joint fit's gainStd.
+std::vector<ResponsePoint> responsePoints(const DelayReport& report, Axis axis);
+
+enum class ResponseModelKind { kDelay = 0, kFirstOrder = 1, kSecondOrder = 2 };
+const char* responseModelName(ResponseModelKind kind);  // "delay", "first_order", "second_order"
+
+struct ResponseParameter {
+  std::string name;  // "K", "tau_ms", "T_ms", "fn_hz", "zeta"
+  double value = 0.0, stdDev = 0.0;
+};
+
+// A derived quantity with its propagated standard uncertainty.
+struct DerivedValue {
+  double value = 0.0, stdDev = 0.0;
+};
+
+struct ResponseModelFit {
+  ResponseModelKind kind = ResponseModelKind::kDelay;
+  std::vector<ResponseParameter> parameters;
+  Eigen::MatrixXd correlation;  // of the parameters, in their order
+  double chiSquare = 0.0;
+  int dof = 0;
+  double aic = 0.0, bic = 0.0;  // chi^2 + 2k, chi^2 + k ln(n), n = 2 x points
+  // The -3 dB bandwidth (|H| / K = 1/sqrt(2)); none for the pure delay.
+  std::optional<DerivedValue> bandwidthHz;
+  DerivedValue lowFrequencyDelayMs;  // group delay at 0 Hz: tau, tau + T, tau + 2 zeta / wn
+  DerivedValue groupDelayMs;         // -d phase / d omega at ResponseAnalysis::groupDelayAtHz
+  // What the points cannot tell apart: parameter pairs correlated beyond 0.95.
+  std::vector<std::string> notes;
+
+  // Model value at f: magnitude (ratio) and phase (rad, continuous).
+  double magnitudeAt(double frequencyHz) const;
+  double phaseRadAt(double frequencyHz) const;
+  Eigen::VectorXd values;  // the parameters in the solver's units (K, tau s, T s | wn rad/s, zeta)
+};
+
+struct ResponseAnalysis {
+  Axis axis = Axis::kX;
+  std::vector<ResponsePoint> points;
+  std::vector<ResponseModelFit> models;  // those with enough points, in kind order
+  std::vector<std::string> skipped;      // models left out and why (too few points)
+  int chosen = -1;                       // index into models: lowest AIC
+  double groupDelayAtHz = 0.0;
+};
+
+// Fits every model with enough points (2 x points > parameters: the delay and
+// the first-order model need 2 frequencies, the second-order model 3).
+// Errors: kInvalidArgument for a non-positive groupDelayAtHz; kInsufficientData
+// naming the count when fewer than two points are given; kInvalidArgument for
+// a point without a positive magnitude and positive uncertainties.
+// Uncertainties: the inverse of the weighted normal matrix, raised by
+// sqrt(chi^2/dof) when that exceeds 1 (the points scatter more than stated).
+Result<ResponseAnalysis> analyzeResponse(std::vector<ResponsePoint> points, Axis axis, double groupDelayAtHz);
+
+// Every axis of the report with at least two passed points.
+std::vector<ResponseAnalysis> analyzeResponses(const DelayReport& report, double groupDelayAtHz);
+
+std::string formatResponseText(const std::vector<ResponseAnalysis>& responses);
+std::string formatResponseJson(const std::vector<ResponseAnalysis>& responses);
+
+}  // namespace fog::analysis
