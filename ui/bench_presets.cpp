@@ -13,7 +13,8 @@ const std::vector<BenchPreset>& benchPresets() {
         {"paper-slow", QT_TRANSLATE_NOOP("BenchPreset", "Paper slow: 0.1 Hz / 10°, 294 s")},
         {"paper-fast", QT_TRANSLATE_NOOP("BenchPreset", "Paper fast: 1 Hz / 3°, 60 s")},
         {"quick", QT_TRANSLATE_NOOP("BenchPreset", "Quick: 1 Hz / 3°, 20 s")},
-        {"noise", QT_TRANSLATE_NOOP("BenchPreset", "Gyro noise: 10 min at rest on X, then 1 Hz / 3°, 60 s")}};
+        {"noise", QT_TRANSLATE_NOOP("BenchPreset", "Gyro noise: 10 min at rest on X, then 1 Hz / 3°, 60 s")},
+        {"response", QT_TRANSLATE_NOOP("BenchPreset", "Frequency response: X, 20 frequencies 0.05 – 11 Hz, 11 min")}};
     std::vector<BenchPreset> all;
     for (const auto& name : presetPlanNames()) {
       QString label = QString::fromStdString(name);

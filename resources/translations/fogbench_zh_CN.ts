@@ -28,6 +28,11 @@
         <source>Gyro noise: 10 min at rest on X, then 1 Hz / 3°, 60 s</source>
         <translation>陀螺噪声：X 轴静止 10 分钟，然后 1 Hz / 3°，60 s</translation>
     </message>
+    <message>
+        <location line="+1"/>
+        <source>Frequency response: X, 20 frequencies 0.05 – 11 Hz, 11 min</source>
+        <translation>频率响应：X 轴，0.05 – 11 Hz 共 20 个频率，11 分钟</translation>
+    </message>
 </context>
 <context>
     <name>fog::ui::BenchSettingsDialog</name>

@@ -40,7 +40,9 @@ TEST(ParseSwingWindows, AnythingNotReadWholeIsRefused) {
   for (const char* bad : {"1e-5", "1e", "1-2x", "1-2,", "5-4", "1-3,2-4", "nan-2", "1-inf", "0-1e300", "1 - 2", ""}) {
     auto w = parseSwingWindows(bad);
     EXPECT_FALSE(w.isOk()) << "'" << bad << "' read as " << (w.isOk() && !w->empty() ? w->at(0).startS : 0.0);
-    if (!w.isOk()) EXPECT_NE(w.status().message().find("--segment takes"), std::string::npos);
+    if (!w.isOk()) {
+      EXPECT_NE(w.status().message().find("--segment takes"), std::string::npos);
+    }
   }
 }
 
