@@ -143,11 +143,14 @@ int runCommand(CliArguments& args) {
   // The simulated bench stands in the stated frame; a heading given beside
   // a frame that names another is a contradiction, not a choice.
   if (const auto h = constants->imuFrame.xHeadingDeg();
-      h && headingGiven && std::abs(std::remainder(*h - config->earth.headingDeg, 360.0)) > 1e-9)
+      h && headingGiven && std::abs(std::remainder(*h - config->earth.headingDeg, 360.0)) > 1e-9) {
+    char heading[32];
+    std::snprintf(heading, sizeof heading, "%g", *h);
     return fail(invalidArgument("--heading-deg " + *args.text("heading-deg") + " contradicts --imu-frame " +
-                                imuFrameToText(constants->imuFrame) + ", whose x axis points at " +
-                                std::to_string(*h) + " deg; give one of them"),
+                                imuFrameToText(constants->imuFrame) + ", whose x axis points at " + heading +
+                                " deg; give one of them"),
                 2);
+  }
   model::applyImuFrame(constants->imuFrame, config->earth);
   auto sessionOut = readSessionOutput(args);
   if (!sessionOut) return fail(sessionOut.status(), 2);

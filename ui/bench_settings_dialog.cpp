@@ -126,7 +126,9 @@ BenchSettingsDialog::BenchSettingsDialog(const BenchConstants& s, const Analysis
   imuFrame_->setToolTip(tr("Where the IMU's axes point with the table at zero. The Earth rate and gravity the "
                            "gyros see depend on it; the diagnosis replays the session in it and checks it "
                            "against the data."));
-  forwardHeading_ = spin(-361.0, 360.0, 2, tr(" °"), s.imuFrame.forwardHeadingDeg.value_or(-361.0));
+  // Headings within [-360, 360]; the one step below reads "not stated" (a
+  // heading below -360 would make a frame no session could read back).
+  forwardHeading_ = spin(-360.01, 360.0, 2, tr(" °"), s.imuFrame.forwardHeadingDeg.value_or(-360.01));
   forwardHeading_->setObjectName("forwardHeadingSpin");
   forwardHeading_->setSpecialValueText(tr("not stated"));
   forwardHeading_->setToolTip(tr("Azimuth of the IMU's forward axis, from north toward east"));

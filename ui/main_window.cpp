@@ -1176,10 +1176,10 @@ void MainWindow::diagnoseShown() {
     return !cancel->load();
   };
   // Several replays of the session in the simulator: off the GUI thread.
-  // The frame the session states; a session that states none is taken in
-  // the bench constants' (the diagnosis checks either against the data).
+  // The frame the session states, as the CLI's diagnose, the noise view and
+  // the report take it (the dialog's frame goes with new recordings).
   BenchConstants constants = outcome->report->constants;
-  constants.imuFrame = outcome->info.bench.imuFrame.stated() ? outcome->info.bench.imuFrame : bench_.imuFrame;
+  constants.imuFrame = outcome->info.bench.imuFrame;
   diagnosisFuture_ = inBackground(
       this, [outcome, options, constants]() -> Done {
         auto d = diagnosis::diagnose(outcome->recording, &outcome->info, constants, options);

@@ -81,6 +81,9 @@ Result<ImuFrame> imuFrameFromText(const std::string& text) {
     if (f.convention == ImuFrame::Convention::kNorthEastDown || f.convention == ImuFrame::Convention::kEastNorthUp)
       return refuse(std::string(n->code) + " names its own heading");
     const std::string h = t.substr(colon + 1);
+    // Decimal only: strtod would also read "0X1E" as hexadecimal.
+    if (h.find_first_not_of("0123456789+-.E") != std::string::npos)
+      return refuse("the heading must be a number within [-360, 360]");
     char* end = nullptr;
     const double v = std::strtod(h.c_str(), &end);
     if (h.empty() || end != h.c_str() + h.size() || !std::isfinite(v) || std::abs(v) > 360.0)

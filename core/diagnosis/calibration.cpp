@@ -253,10 +253,10 @@ Status calibrateEarthRateAndBias(Replay& replay, const std::vector<FeatureKey>& 
                       (stated.stated() ? "the stated frame is used" : "z down is assumed: state the IMU's frame"));
     else if (frame.contradicted)
       notes.push_back(shown + "; the bench constants state " + describeImuFrame(stated) +
-                      ": the replays use the frame the data show");
+                      ": the replays use the frame the data show; a latitude of the wrong sign looks the same");
     else if (!stated.stated())
       notes.push_back(shown + "; the bench constants do not state the IMU's frame, so the replays use the one found: "
-                              "state it in the bench constants");
+                              "state it in the bench constants (a latitude of the wrong sign looks the same)");
     else
       notes.push_back(shown + ", as the bench constants state");
   } else {
@@ -272,8 +272,11 @@ Status calibrateEarthRateAndBias(Replay& replay, const std::vector<FeatureKey>& 
   cal.config.earth.zUp = frame.zUp;
   // (When sin h is unseen, h and -h fit alike: the one with sin h >= 0.)
   double heading = useOther && sinSeen ? -chosen.headingDeg : chosen.headingDeg;
+  // The biases at the heading used, in the configured frame's terms (the
+  // other frame's heading is the configured one's negated).
+  const double configuredHeading = useOther ? -heading : heading;
   Eigen::VectorXd biases =
-      biasCols.empty() ? Eigen::VectorXd() : Eigen::VectorXd(qr.solve(rest(target, chosen.headingDeg).cwiseProduct(isTrend)));
+      biasCols.empty() ? Eigen::VectorXd() : Eigen::VectorXd(qr.solve(rest(target, configuredHeading).cwiseProduct(isTrend)));
   // From finite features the scan is finite; a replay's NaN would otherwise
   // surface as "heading must be within [-360, 360] deg".
   if (!std::isfinite(heading) || !biases.allFinite())

@@ -84,8 +84,9 @@ void reportContradictedFrame(const FrameCheck& frame, Diagnosis& d) {
   d.verdictReason = std::string("the data show the IMU's z axis ") + (frame.zUp ? "up" : "down") +
                     "; the bench constants state " + (frame.zUp ? "down" : "up") + " (" +
                     describeImuFrame(frame.stated) + "). Correct the IMU frame in the bench constants (or the "
-                    "IMU's mounting) and diagnose again; no effect is named. Replayed in the frame the data show, "
-                    "the verdict would be: " + inFoundFrame;
+                    "IMU's mounting) and diagnose again; a latitude of the wrong sign (the other hemisphere) looks "
+                    "the same: check it too; no effect is named. Replayed in the frame the data show, the verdict "
+                    "would be: " + inFoundFrame;
   d.verdictEffects.clear();
   for (auto& c : d.gapMap) c.zAfter = c.z;
   d.gapAfter = d.gapBefore;
@@ -132,7 +133,10 @@ Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, cons
   auto calibrated = calibrate(*session, info, options, progress, d.notes);
   if (!calibrated) return calibrated.status();
   FOG_RETURN_IF_ERROR(budgetReplays(input, calibrated->replay, options, d.notes));
-  calibrated->replay.cal.config.earth.zUp = constants.imuFrame.stated() && constants.imuFrame.zUp();
+  // The stated frame (its vertical, and its heading where it names one) until
+  // the Earth-rate calibration finds them from the data; where the plan
+  // cannot show them, the statement stays.
+  model::applyImuFrame(constants.imuFrame, calibrated->replay.cal.config.earth);
   FOG_RETURN_IF_ERROR(calibrateEarthRateAndBias(calibrated->replay, calibrated->real.keys, calibrated->real.values,
                                                 constants.imuFrame, options, d.notes));
   const Replay& replay = calibrated->replay;

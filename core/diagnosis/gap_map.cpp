@@ -186,7 +186,7 @@ Result<GapModel> buildGapMap(const FeatureSet& realFeatures, const std::vector<S
         dropJob = j;
     double total = 0.0, shares = 0.0;
     for (std::size_t i = 0; i < n; ++i)
-      if (keys[i].unit == Unit::kFrames) {
+      if (keys[i].quantity == Quantity::kImuLost) {
         total += std::max(0.0, real[i]);
         if (dropJob < jobs.size()) {
           const double perUnit = (outputs[dropJob].values[i] - outputs[0].values[i]) /
@@ -196,7 +196,7 @@ Result<GapModel> buildGapMap(const FeatureSet& realFeatures, const std::vector<S
         }
       }
     for (std::size_t i = 0; i < n; ++i)
-      if (keys[i].unit == Unit::kFrames && shares > 0.0) lostExpected[i] = total * lostPerUnit[i] / shares;
+      if (keys[i].quantity == Quantity::kImuLost && shares > 0.0) lostExpected[i] = total * lostPerUnit[i] / shares;
   }
   for (std::size_t i = 0; i < n; ++i) {
     const auto& pool = pooled[groupKey(keys[i])];

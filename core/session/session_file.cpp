@@ -571,6 +571,19 @@ Result<std::unique_ptr<SessionWriter>> SessionWriter::create(const std::string& 
   for (std::string* text : {&info.operatorName, &info.imuModel, &info.imuSerial, &info.source,
                             &info.softwareVersion, &info.createdUtc, &info.notes})
     *text = toValidUtf8(*text);
+  // A frame whose text does not read back (a heading beyond +-360) would
+  // make the file unreadable once recorded: refused before anything is written.
+  const std::string frameText = imuFrameToText(info.bench.imuFrame);
+  auto readsBack = [&](const ImuFrame& f) {
+    const auto& given = info.bench.imuFrame.forwardHeadingDeg;
+    return f.convention == info.bench.imuFrame.convention && f.forwardHeadingDeg.has_value() == given.has_value() &&
+           (!given || std::abs(*f.forwardHeadingDeg - *given) <= 1e-6);
+  };
+  if (auto frame = imuFrameFromText(frameText); !frame || !readsBack(*frame)) {
+    const std::string why = frame ? "it does not read back" : frame.status().message();
+    return invalidArgument("cannot create session '" + path + "': the bench constants' IMU frame \"" + frameText +
+                           "\" cannot be stored (" + why + "); correct it in the bench constants");
+  }
   if (info.createdUtc.empty()) info.createdUtc = utcNow();
   if (info.softwareVersion.empty()) info.softwareVersion = FOG_VERSION;
   // Bounded text: every reader holds it in memory and prints it.
@@ -663,7 +676,7 @@ Result<std::unique_ptr<SessionWriter>> SessionWriter::create(const std::string& 
     for (int a = 0; a < kAxisCount; ++a)
       s.bind(17 + a, std::int64_t{info.bench.gyroSign[static_cast<std::size_t>(a)] < 0 ? -1 : 1});
     s.bind(20, importSettingsToJson(info.imported));
-    s.bind(21, imuFrameToText(info.bench.imuFrame));
+    s.bind(21, frameText);
     if (s.step() != SQLITE_DONE) return abandon("metadata");
   }
   if (!updateMetadataChecksum(w->db_)) return abandon("metadata checksum");

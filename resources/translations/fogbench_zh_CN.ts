@@ -46,18 +46,18 @@
         <location line="+1"/>
         <location line="+1"/>
         <location line="+1"/>
-        <location line="+51"/>
+        <location line="+53"/>
         <source> ms</source>
         <translation> ms</translation>
     </message>
     <message>
-        <location line="-50"/>
-        <location line="+37"/>
+        <location line="-52"/>
+        <location line="+39"/>
         <source> °</source>
         <translation> °</translation>
     </message>
     <message>
-        <location line="-36"/>
+        <location line="-38"/>
         <source> °/pulse</source>
         <translation> °/脉冲</translation>
     </message>
@@ -153,7 +153,7 @@
         <translation>转台各轴为零时 IMU 各轴的指向。陀螺敏感到的地球自转角速度和重力取决于它；诊断在该坐标系中回放会话，并用数据检验它。</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+7"/>
         <source>not stated</source>
         <translation>未声明</translation>
     </message>
@@ -5931,8 +5931,18 @@ The session itself is unchanged.</source>
     </message>
     <message>
         <location line="+1"/>
-        <source>the bench constants do not state the IMU&apos;s frame, so the replays use the one found: state it in the bench constants</source>
-        <translation>台架常数未声明 IMU 坐标系，回放采用由数据判定的坐标系：请在台架常数中声明</translation>
+        <source>the bench constants do not state the IMU&apos;s frame, so the replays use the one found: state it in the bench constants (a latitude of the wrong sign looks the same)</source>
+        <translation>台架常数未声明 IMU 坐标系，回放采用由数据判定的坐标系：请在台架常数中声明（纬度符号错误时看起来相同）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a latitude of the wrong sign looks the same</source>
+        <translation>纬度符号错误时看起来相同</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a latitude of the wrong sign (the other hemisphere) looks the same: check it too</source>
+        <translation>纬度符号错误（另一半球）时看起来相同：也请检查纬度</translation>
     </message>
     <message>
         <location line="+1"/>

@@ -828,6 +828,14 @@ class BenchUiTest : public QObject {
       QCOMPARE(fog::imuFrameToText(dialog.settings().imuFrame), std::string("RFU"));
       forward->setValue(30.0);
       QCOMPARE(fog::imuFrameToText(dialog.settings().imuFrame), std::string("RFU:30"));
+      // Every heading it offers reads back: -360 is the lowest, one step
+      // below it reads "not stated".
+      forward->setValue(-360.0);
+      QCOMPARE(fog::imuFrameToText(dialog.settings().imuFrame), std::string("RFU:-360"));
+      forward->setValue(-1000.0);
+      QCOMPARE(forward->text(), forward->specialValueText());
+      QVERIFY(!dialog.settings().imuFrame.forwardHeadingDeg.has_value());
+      forward->setValue(30.0);
       // Kept in the settings and read back.
       fog::ui::saveBenchConstants(dialog.settings());
       QCOMPARE(fog::imuFrameToText(fog::ui::loadBenchConstants().imuFrame), std::string("RFU:30"));

@@ -225,6 +225,31 @@ TEST(Diagnosis, TheImuFrameIsFoundCheckedAndAContradictedOneNamesNoEffect) {
   }
 }
 
+// A plan that swings Y only shows cos h but not the sign of sin h; with z
+// up found from the data (unstated), the heading is taken with sin h >= 0
+// and the biases are fitted at that heading: the y bias came out off by
+// 2 Omega cos(lat) sin(h) (~20 deg/h) when they were fitted at the negated
+// one.
+TEST(Diagnosis, AYOnlyPlanWithZUpGivesTheBiasesAtTheHeadingReported) {
+  model::SimConfig c;
+  c.seed = 35;
+  c.earth.zUp = true;
+  c.earth.headingDeg = 60.0;
+  c.fog.biasDegPerH = {0.4, -0.7, 0.2};
+  TestPlan plan;
+  plan.restBetweenS = 3.0;
+  plan.points.push_back({Axis::kY, 1.0, 3.0, 30.0, 2.0, 0.0});
+  plan.points.push_back({Axis::kY, 0.1, 10.0, 60.0, 2.0, 0.0});
+  const Diagnosis d = diagnoseSimulated(c, plan, {});
+  const Calibration& cal = d.calibration;
+  EXPECT_TRUE(cal.frame.zUp);
+  EXPECT_NEAR(cal.headingDeg, 60.0, std::max(5.0, 3.0 * cal.headingStdDeg));
+  for (int a = 0; a < kAxisCount; ++a)
+    EXPECT_NEAR(cal.biasDegPerH[static_cast<std::size_t>(a)], c.fog.biasDegPerH[static_cast<std::size_t>(a)], 0.5)
+        << axisName(static_cast<Axis>(a));
+  EXPECT_EQ(d.verdict, "none") << d.verdictReason;
+}
+
 // Table samples lost at random (2 per mille) are not in the library (its
 // dropped frames are the IMU's): the timing cells of the lost table samples
 // carry the gap and the answer is "unexplained". They were skipped with

@@ -121,6 +121,22 @@ TEST(SessionFile, TheStatedImuFrameRoundTrips) {
   }
 }
 
+// A frame whose text would not read back (a heading beyond +-360, made in
+// code) is refused before a file exists: recorded, it made the session
+// unreadable.
+TEST(SessionFile, AFrameThatWouldNotReadBackIsRefusedBeforeAnythingIsWritten) {
+  ScratchDir dir;
+  SessionInfo info = fullInfo();
+  info.bench.imuFrame.convention = ImuFrame::Convention::kForwardRightDown;
+  info.bench.imuFrame.forwardHeadingDeg = -360.5;
+  const auto path = dir.file("bad-frame.fbs");
+  auto w = SessionWriter::create(path, info);
+  ASSERT_FALSE(w.isOk());
+  EXPECT_NE(w.status().message().find("IMU frame \"FRD:-360.5\" cannot be stored"), std::string::npos)
+      << w.status().message();
+  EXPECT_FALSE(fs::exists(path));
+}
+
 // The gyro signs are bench constants: stored with the session, read back.
 TEST(SessionFile, TheGyroSignsRoundTripWithTheBenchConstants) {
   ScratchDir dir;
