@@ -45,7 +45,7 @@ int printReport(const Result<analysis::DelayReport>& report, const analysis::Rep
   // A plan with three or more frequencies on an axis (run --preset response):
   // its frequency response follows, as `response` prints it.
   if (!json) {
-    auto responses = analysis::analyzeResponses(*report, 5.0);
+    auto responses = analysis::analyzeResponses(*report);
     std::erase_if(responses, [](const auto& r) { return r.points.size() < 3; });
     if (!responses.empty()) std::cout << "\n" << analysis::formatResponseText(responses);
   }

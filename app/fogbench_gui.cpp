@@ -5,7 +5,7 @@
 //            [--plan PLAN.json] [--port DEV [--table remote:ADDRESS|manual]]
 //            [--session-folder DIR] [--open SESSION.fbs] [--run]
 //            [--compare A.fbs --compare B.fbs ...]
-//            [--view configure|live|results|sessions|diagnosis|noise]
+//            [--view configure|live|results|response|sessions|diagnosis|noise]
 //            [--screenshot FILE [--screenshot-after S]] [--language system|en|zh_CN]
 //
 // --screenshot FILE saves an image of the view and quits once it shows what
@@ -51,7 +51,8 @@ int fail(const QString& message) {
 
 struct Options {
   QStringList presetNames;
-  QStringList views = {"configure", "live", "results", "sessions", "diagnosis", "noise"};
+  // response: Results (or Compare) with the frequency response shown.
+  QStringList views = {"configure", "live", "results", "response", "sessions", "diagnosis", "noise"};
   QCommandLineOption runOption{"run", "Start the run at once."};
   QCommandLineOption presetOption{"preset", "", "NAME"};
   QCommandLineOption seedOption{"seed", "Simulator seed (default 1).", "N"};
@@ -177,7 +178,8 @@ int main(int argc, char* argv[]) {
   window.showOnScreen();
   const std::map<QString, fog::ui::MainWindow::View> viewOf = {
       {"configure", fog::ui::MainWindow::kConfigure}, {"live", fog::ui::MainWindow::kLive},
-      {"results", fog::ui::MainWindow::kResults},     {"sessions", fog::ui::MainWindow::kSessions},
+      {"results", fog::ui::MainWindow::kResults},     {"response", fog::ui::MainWindow::kResults},
+      {"sessions", fog::ui::MainWindow::kSessions},
       {"diagnosis", fog::ui::MainWindow::kDiagnosis}, {"noise", fog::ui::MainWindow::kNoise}};
   const auto asked = viewOf.find(view);
   if (asked != viewOf.end()) {
@@ -195,9 +197,9 @@ int main(int argc, char* argv[]) {
   }
   if (!compared.isEmpty()) {
     const QString path = screenshot.path;
-    QTimer::singleShot(0, &window, [&window, compared, path] {
+    QTimer::singleShot(0, &window, [&window, compared, path, view] {
       QWidget* compareWindow = window.compareSessions(compared);
-      if (!path.isEmpty()) fog::app::armCompareScreenshot(compareWindow, path);
+      if (!path.isEmpty()) fog::app::armCompareScreenshot(compareWindow, path, view);
     });
   } else if (parser.isSet(openOption)) {
     const QString path = parser.value(openOption);

@@ -1,12 +1,15 @@
 #include "app/gui_screenshot.h"
 
 #include <QApplication>
+#include <QTabWidget>
 #include <QPixmap>
 #include <QTimer>
 #include <cstdio>
 
+#include "ui/bode_view.h"
 #include "ui/compare_view.h"
 #include "ui/main_window.h"
+#include "ui/result_view.h"
 
 namespace fog::app {
 namespace {
@@ -25,7 +28,7 @@ void saveAndQuit(QWidget& window, const QString& path, bool succeeded) {
 bool screenshotNeedsRun(const ScreenshotRequest& request) {
   const QString& view = request.view;
   return !request.path.isEmpty() && !request.opensSession &&
-         (view == "live" || view == "results" || view == "sessions" || view == "diagnosis" || view == "noise");
+         (view == "live" || view == "results" || view == "response" || view == "sessions" || view == "diagnosis" || view == "noise");
 }
 
 void armScreenshot(fog::ui::MainWindow& window, const ScreenshotRequest& request, bool run) {
@@ -66,6 +69,7 @@ void armScreenshot(fog::ui::MainWindow& window, const ScreenshotRequest& request
   } else {
     auto done = [&window, screenshot, view](bool succeeded) {
       if (view == "sessions") window.showView(MainWindow::kSessions);
+      if (view == "response") window.resultView()->leftTabs()->setCurrentWidget(window.resultView()->bodeView());
       saveAndQuit(window, screenshot, succeeded);
     };
     QObject::connect(&window, &MainWindow::runEnded, &window, done);
@@ -73,14 +77,17 @@ void armScreenshot(fog::ui::MainWindow& window, const ScreenshotRequest& request
   }
 }
 
-void armCompareScreenshot(QWidget* compareWindow, const QString& path) {
+void armCompareScreenshot(QWidget* compareWindow, const QString& path, const QString& viewName) {
   auto* view = compareWindow->findChild<fog::ui::CompareView*>();
   if (view == nullptr) {
     QApplication::exit(1);
     return;
   }
-  QObject::connect(view, &fog::ui::CompareView::loaded, compareWindow,
-                   [compareWindow, path] { saveAndQuit(*compareWindow, path, true); });
+  QObject::connect(view, &fog::ui::CompareView::loaded, compareWindow, [compareWindow, view, path, viewName] {
+    if (viewName == "response")
+      if (auto* tabs = view->findChild<QTabWidget*>("compareTabs")) tabs->setCurrentWidget(view->bodeView());
+    saveAndQuit(*compareWindow, path, true);
+  });
 }
 
 }  // namespace fog::app

@@ -40,6 +40,7 @@ void armScreenshot(fog::ui::MainWindow& window, const ScreenshotRequest& request
 
 // The image of a Compare window (MainWindow::compareSessions) once its
 // sessions arrived, then quit.
-void armCompareScreenshot(QWidget* compareWindow, const QString& path);
+// view "response": Compare's frequency-response tab is shown first.
+void armCompareScreenshot(QWidget* compareWindow, const QString& path, const QString& view);
 
 }  // namespace fog::app

@@ -10,7 +10,7 @@ namespace fog::app {
 
 int responseCommand(CliArguments& args) {
   const bool json = args.flag("json");
-  auto atHz = args.number("at-hz", 5.0);
+  auto atHz = args.number("at-hz", analysis::kDefaultGroupDelayAtHz);
   if (!atHz) return fail(atHz.status(), 2);
   if (!(*atHz > 0.0) || !std::isfinite(*atHz)) return fail(invalidArgument("--at-hz must be a frequency > 0 Hz"), 2);
   int failed = 0;

@@ -30,6 +30,7 @@
 #include <qwt_symbol.h>
 #include <qwt_text.h>
 
+#include "ui/bode_view.h"
 #include "ui/core_text.h"
 #include "ui/data_export.h"
 #include "ui/messages.h"
@@ -218,6 +219,9 @@ CompareView::CompareView(const QStringList& paths, QWidget* parent)
   tabs_->addTab(zeroCrossingPlot_, tr("Zero crossing"));
   tabs_->addTab(frequencyPlot_, tr("Lag vs frequency"));
   tabs_->addTab(trendPlot_, tr("Trend"));
+  bodeView_ = new BodeView();
+  bodeView_->setObjectName("compareBodeView");
+  tabs_->addTab(bodeView_, tr("Frequency response"));
 
   auto* top = new QWidget();
   auto* topLayout = new QVBoxLayout(top);
@@ -336,6 +340,7 @@ void CompareView::recompare() {
                              : tr("Session %1 or %2 has no delay result to compare.").arg(letter(a), letter(b)));
     showComparison(-1);
     showFrequencies();
+    showResponses();
     return;
   }
   comparisons_ = compareReports(*oa->report, *ob->report);
@@ -388,6 +393,7 @@ void CompareView::recompare() {
                                 : tr("The table read delays differ: σ combines the two IMU delays' uncertainties."));
   summary_->setText(text);
   showFrequencies();
+  showResponses();
   if (!comparisons_.empty()) {
     pointCombo_->setCurrentIndex(0);
     showComparison(0);
@@ -462,6 +468,21 @@ void CompareView::showFrequencies() {
   if (fMax > 0.0) frequencyPlot_->setAxisScale(QwtPlot::xBottom, 0.0, 1.15 * fMax);
   fitY(frequencyPlot_, lo, hi);
   frequencyPlot_->replot();
+}
+
+void CompareView::showResponses() {
+  const int a = chosenA(), b = chosenB();
+  const auto& oa = outcomes_[static_cast<std::size_t>(a)];
+  const auto& ob = outcomes_[static_cast<std::size_t>(b)];
+  if (a == b || !oa || !ob || !oa->report || !ob->report) {
+    bodeView_->showMessage(a == b ? tr("Choose two different sessions.")
+                                  : tr("Session %1 or %2 has no delay result to compare.").arg(letter(a), letter(b)));
+    return;
+  }
+  bodeView_->showComparison(oa->responses, ob->responses, letter(a), letter(b),
+                            tr("%1 and %2 have no axis with a frequency response in common. %1: %3 %2: %4")
+                                .arg(letter(a), letter(b), responseMissingText(*oa->report),
+                                     responseMissingText(*ob->report)));
 }
 
 void CompareView::showTrend() {

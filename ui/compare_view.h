@@ -12,7 +12,9 @@
 //                 the difference in lag; measurable by cursor), the lag
 //                 against frequency of both, and the trend of the IMU delay
 //                 against the recording date of every session (several
-//                 sessions of one IMU).
+//                 sessions of one IMU); the frequency response of both
+//                 (Bode plot, ui/bode_view.h) with B − A at the frequencies
+//                 both have.
 //   Export CSV…   the differences' rows as a CSV file.
 
 #include <QWidget>
@@ -31,6 +33,7 @@ class QwtPlot;
 
 namespace fog::ui {
 
+class BodeView;
 class SeriesPlot;
 
 class CompareView : public QWidget {
@@ -58,6 +61,7 @@ class CompareView : public QWidget {
   SeriesPlot* zeroCrossingPlot() const { return zeroCrossingPlot_; }
   QwtPlot* frequencyPlot() const { return frequencyPlot_; }
   QwtPlot* trendPlot() const { return trendPlot_; }
+  BodeView* bodeView() const { return bodeView_; }
   QString summary() const;
   // The comparison's rows (A and B as chosen) as CSV (ui/data_export.h):
   // empty, or why not (a file already at `path` is then as it was). The
@@ -74,6 +78,7 @@ class CompareView : public QWidget {
   void recompare();
   void showFrequencies();
   void showTrend();
+  void showResponses();
 
   QStringList paths_;
   std::vector<std::shared_ptr<const RunOutcome>> outcomes_;
@@ -90,6 +95,7 @@ class CompareView : public QWidget {
   SeriesPlot* zeroCrossingPlot_ = nullptr;
   QwtPlot* frequencyPlot_ = nullptr;
   QwtPlot* trendPlot_ = nullptr;
+  BodeView* bodeView_ = nullptr;
 };
 
 }  // namespace fog::ui

@@ -43,6 +43,7 @@
 #include "core/analysis/verdict.h"
 #include "core/common/version.h"
 #include "core/session/session_api.h"
+#include "ui/bode_view.h"
 #include "ui/core_text.h"
 #include "ui/language/language.h"
 #include "ui/plots/plot_export.h"
@@ -272,8 +273,18 @@ ResultView::ResultView(QWidget* parent) : QWidget(parent) {
   reportView_->setFont(mono);
   reportView_->setPlaceholderText(tr("The delay report appears here after a run."));
 
+  bodeView_ = new BodeView();
+  bodeView_->setObjectName("resultBodeView");
+  leftTabs_ = new QTabWidget();
+  leftTabs_->setObjectName("resultLeftTabs");
+  leftTabs_->addTab(left, tr("Fits"));
+  leftTabs_->addTab(bodeView_, tr("Frequency response"));
+  leftTabs_->setTabToolTip(0, tr("The chosen test point's angles with their fitted sinusoids, and the residuals"));
+  leftTabs_->setTabToolTip(1, tr("Magnitude and phase of gyro angle / table angle at every test frequency of an axis, "
+                                 "with the delay models fitted to them (Bode plot)"));
+
   auto* top = new QSplitter(Qt::Horizontal);
-  top->addWidget(left);
+  top->addWidget(leftTabs_);
   top->addWidget(right);
   top->setStretchFactor(0, 1);
   top->setStretchFactor(1, 1);
@@ -372,6 +383,7 @@ void ResultView::clear() {
   delayTable_->setRowCount(0);
   frequencyPlot_->detachItems();
   frequencyPlot_->replot();
+  bodeView_->showMessage(tr("No frequency response yet."));
   reportView_->clear();
   exportButton_->setEnabled(false);
   diagnoseButton_->setEnabled(false);
@@ -397,6 +409,11 @@ void ResultView::showOutcome(std::shared_ptr<const RunOutcome> outcome) {
     for (const auto& p : outcome_->report->points) testPointCombo_->addItem(pointLabel(p));
   }
   showFrequencyPlot();
+  bodeView_->showResponses(outcome_->responses, responseMissingText(*outcome_->report));
+  // A response plan's result is its Bode plot; any other opens on the fits.
+  std::size_t mostPoints = 0;
+  for (const auto& r : outcome_->responses) mostPoints = std::max(mostPoints, r.points.size());
+  leftTabs_->setCurrentIndex(mostPoints >= 5 ? 1 : 0);
   testPointCombo_->setCurrentIndex(0);
   showTestPoint(0);
 }

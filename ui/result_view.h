@@ -4,7 +4,8 @@
 // residuals, the fit table (period and phase in ms, amplitude), the delay
 // breakdown (measured lag, + table read delay = IMU delay, − board delay =
 // gyro's own delay) with uncertainties beside the paper's theory budget; the
-// delay against frequency across test points; and the text report. Every plot
+// delay against frequency across test points; the frequency response as a
+// Bode plot (ui/bode_view.h, a tab beside the fits); and the text report. Every plot
 // can be exported (PNG/SVG/PDF), and the calibration report written as PDF.
 
 #include <QWidget>
@@ -27,6 +28,7 @@ class QwtPlotMarker;
 
 namespace fog::ui {
 
+class BodeView;
 class PlotInteraction;
 class SeriesPlot;
 
@@ -60,6 +62,11 @@ class ResultView : public QWidget {
   SeriesPlot* anglePlot() const { return anglePlot_; }
   SeriesPlot* residualPlot() const { return residualPlot_; }
   QwtPlot* frequencyPlot() const { return frequencyPlot_; }
+  // The frequency response of the shown result (RunOutcome::responses), in
+  // the left tabs beside the fits; shown first for a recording with a
+  // response of 5 or more frequencies.
+  BodeView* bodeView() const { return bodeView_; }
+  QTabWidget* leftTabs() const { return leftTabs_; }
   // Table and gyro angle (each minus its offset, in degrees) around a rising
   // zero crossing of the table's fit near the middle of the test point, with
   // both fits; x is milliseconds from the table fit's crossing; markers at 0
@@ -140,6 +147,8 @@ class ResultView : public QWidget {
   double zeroCrossingS_ = std::numeric_limits<double>::quiet_NaN();
   double zeroCrossingLagMs_ = std::numeric_limits<double>::quiet_NaN();
   QTabWidget* plotTabs_ = nullptr;
+  QTabWidget* leftTabs_ = nullptr;
+  BodeView* bodeView_ = nullptr;
   PlotInteraction* frequencyInteraction_ = nullptr;
   QTableWidget* fitTable_ = nullptr;
   QTableWidget* delayTable_ = nullptr;

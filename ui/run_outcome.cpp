@@ -37,6 +37,7 @@ int RunOutcome::shownResultNumber() const {
 
 void completeOutcome(RunOutcome& outcome, const std::string& source) {
   outcome.traces.clear();
+  outcome.responses.clear();
   if (!outcome.report) {
     outcome.reportText = "No delay was reported.\n\n" + outcome.report.status().message() + "\n";
     if (!outcome.complete) outcome.reportText += "\nThe run is incomplete: " + outcome.incompleteReason + "\n";
@@ -57,6 +58,7 @@ void completeOutcome(RunOutcome& outcome, const std::string& source) {
       outcome.traces.push_back(std::move(empty));
     }
   }
+  outcome.responses = analysis::analyzeResponses(report);
   analysis::ReportContext context;
   context.source = source;
   const ResultRecord* shown = outcome.shownResult();

@@ -9,6 +9,7 @@
 
 #include "core/session/stored_result.h"
 #include "core/analysis/delay_analysis.h"
+#include "core/analysis/frequency_response.h"
 #include "core/common/recording.h"
 #include "core/common/session_info.h"
 #include "core/model/simulator.h"
@@ -33,6 +34,10 @@ struct RunOutcome {
   std::vector<TestPointTraces> traces;      // one per report point, same order (empty traces if none)
   std::vector<model::TestPointTruth> truth; // the simulator's, when it was the source
   std::string reportText;                   // formatReportText, or why there is no report
+  // The frequency response of every axis with two or more passed points,
+  // from `report` (analyzeResponses, the group delay at
+  // kDefaultGroupDelayAtHz): what `fogbench-cli response` prints.
+  std::vector<analysis::ResponseAnalysis> responses;
   // The limit a result not stored in a session is judged with (the run's
   // setting); a stored result's verdict and limit are its record's.
   double imuDelayLimitMs = analysis::kDefaultImuDelayLimitMs;

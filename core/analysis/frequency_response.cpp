@@ -345,6 +345,34 @@ std::vector<ResponseAnalysis> analyzeResponses(const DelayReport& report, double
   return out;
 }
 
+std::vector<ResponsePoint> responseDifference(const ResponseAnalysis& a, const ResponseAnalysis& b) {
+  constexpr double kSameFrequency = 0.005;
+  std::vector<ResponsePoint> out;
+  for (const auto& pb : b.points) {
+    const auto pa = std::find_if(a.points.begin(), a.points.end(), [&](const ResponsePoint& p) {
+      return std::abs(p.frequencyHz - pb.frequencyHz) <= kSameFrequency * pb.frequencyHz;
+    });
+    if (pa == a.points.end()) continue;
+    ResponsePoint d;
+    d.index = pb.index;
+    d.frequencyHz = pb.frequencyHz;
+    d.magnitude = pb.magnitude / pa->magnitude;
+    const double relA = pa->magnitudeStd / pa->magnitude, relB = pb.magnitudeStd / pb.magnitude;
+    d.magnitudeStd = d.magnitude * std::hypot(relA, relB);
+    d.magnitudeDb = pb.magnitudeDb - pa->magnitudeDb;
+    d.magnitudeDbStd = std::hypot(pa->magnitudeDbStd, pb.magnitudeDbStd);
+    d.phaseDeg = pb.phaseDeg - pa->phaseDeg;
+    d.phaseStdDeg = std::hypot(pa->phaseStdDeg, pb.phaseStdDeg);
+    d.lagMs = pb.lagMs - pa->lagMs;
+    d.lagStdMs = std::hypot(pa->lagStdMs, pb.lagStdMs);
+    // r = mB/mA, dr = r (dmB/mB - dmA/mA), dphi = dphiB - dphiA.
+    d.magnitudePhaseCovDeg = d.magnitude * (pb.magnitudePhaseCovDeg / pb.magnitude + pa->magnitudePhaseCovDeg / pa->magnitude);
+    d.harmonicFraction = std::max(pa->harmonicFraction, pb.harmonicFraction);
+    out.push_back(d);
+  }
+  return out;
+}
+
 std::string formatResponseText(const std::vector<ResponseAnalysis>& responses) {
   std::ostringstream o;
   char line[256];

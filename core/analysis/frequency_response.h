@@ -97,8 +97,20 @@ struct ResponseAnalysis {
 // sqrt(chi^2/dof) when that exceeds 1 (the points scatter more than stated).
 Result<ResponseAnalysis> analyzeResponse(std::vector<ResponsePoint> points, Axis axis, double groupDelayAtHz);
 
+// The frequency at which the views (CLI without --at-hz, GUI, report) give
+// the model's group delay.
+inline constexpr double kDefaultGroupDelayAtHz = 5.0;
+
 // Every axis of the report with at least two passed points.
-std::vector<ResponseAnalysis> analyzeResponses(const DelayReport& report, double groupDelayAtHz);
+std::vector<ResponseAnalysis> analyzeResponses(const DelayReport& report,
+                                               double groupDelayAtHz = kDefaultGroupDelayAtHz);
+
+// B - A of two responses of one axis (two sessions, Compare) at the
+// frequencies both have (within 0.5 % of each other), in frequency order:
+// magnitude as the ratio B/A (magnitudeDb the dB difference), phase and lag
+// as differences, index B's. The two sessions' fits share no noise, so the
+// uncertainties combine as independent (ratio: relative ones in quadrature).
+std::vector<ResponsePoint> responseDifference(const ResponseAnalysis& a, const ResponseAnalysis& b);
 
 std::string formatResponseText(const std::vector<ResponseAnalysis>& responses);
 std::string formatResponseJson(const std::vector<ResponseAnalysis>& responses);

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "core/analysis/delay_analysis.h"
+#include "core/analysis/frequency_response.h"
 #include "core/analysis/uncertainty_bound.h"
 #include "core/model/simulator.h"
 #include "core/protocol/recording_builder.h"
@@ -231,6 +232,44 @@ class ReportTest : public QObject {
     QVERIFY(text.contains("no raw stream (imported)"));
     QVERIFY(text.join('\n').contains("not recorded with the data"));
     for (const auto& page : *pages) QVERIFY(inkFraction(page) > 0.08);
+  }
+
+  // A frequency-response plan gets a page with its Bode plot, its points and
+  // its models, after the plan; a one-point session (above: four pages) none.
+  void aResponsePlanHasItsFrequencyResponsePage() {
+    fog::ResponsePlanOptions o;
+    o.lowestHz = 0.5;
+    o.frequencies = 6;
+    o.minDurationS = 3.0;
+    ReportInput response = session_;
+    response.info.plan = *fog::responsePlan(fog::TurntableLimits{}, o);
+    fog::model::SimConfig config;
+    config.fog.rateFilterTimeConstantS = 2e-3;
+    auto run = fog::model::simulate(config, response.info.plan);
+    QVERIFY2(run.isOk(), run.status().message().c_str());
+    auto recording = fog::protocol::decodeRecording(run->bytes);
+    QVERIFY(recording.isOk());
+    auto delays = fog::analysis::analyzeRecording(*recording, fog::BenchConstants{});
+    QVERIFY2(delays.isOk(), delays.status().message().c_str());
+    response.recording = std::move(*recording);
+    response.delays = std::move(*delays);
+    response.rawBytes = std::move(run->bytes);
+    QStringList text;
+    auto pages = fog::report::renderCalibrationPages(response, 40, &text);
+    QVERIFY2(pages.isOk(), pages.status().message().c_str());
+    const QString all = text.join('\n');
+    QVERIFY2(all.contains("Frequency response, X axis: gyro angle / table angle at 6 frequencies"), qPrintable(all));
+    QVERIFY(all.contains("Models fitted to all points"));
+    QVERIFY(all.contains("delay + first-order lag"));
+    QVERIFY(all.contains("group delay at 5 Hz"));
+    // Every point's frequency is in the table, as the analysis has it.
+    const auto responses = fog::analysis::analyzeResponses(response.delays);
+    QCOMPARE(responses.size(), std::size_t(1));
+    for (const auto& p : responses.front().points)
+      QVERIFY2(text.contains(QString::number(p.frequencyHz, 'f', 4)), qPrintable(QString::number(p.frequencyHz, 'f', 4)));
+    // At least two pages (plots and points; models) beyond the summary, the
+    // constants and plan, and 2 per point (the first two may run over).
+    QVERIFY(pages->size() >= std::size_t(2 + 2 + 2 * 6));
   }
 
   // Data missing for an analysed test point cannot be plotted: an error, not a crash.

@@ -275,7 +275,7 @@ QStringList PlotInteraction::valueLines(double x) const {
 
 QString PlotInteraction::trackerText(double x) const {
   QStringList lines;
-  lines << QString("%1 = %2").arg(options_.timeAxis ? QStringLiteral("t") : QStringLiteral("x"), xText(x));
+  lines << QString("%1 = %2").arg(options_.timeAxis ? QStringLiteral("t") : options_.xName, xText(x));
   lines << valueLines(x);
   if (link_)
     for (PlotInteraction* other : link_->members())
@@ -287,7 +287,7 @@ void PlotInteraction::updateReadout() {
   // First line: where A and B are and Δt; then a line per curve with its
   // value at A and B and the change (dropped when the canvas is too small
   // to leave the curves visible).
-  const QString xName = options_.timeAxis ? QStringLiteral("t") : QStringLiteral("x");
+  const QString xName = options_.timeAxis ? QStringLiteral("t") : options_.xName;
   QStringList head;
   Values at[2];
   for (int i = 0; i < 2; ++i) {
@@ -298,7 +298,7 @@ void PlotInteraction::updateReadout() {
   if (cursors_[0] && cursors_[1]) {
     const double dx = *cursors_[1] - *cursors_[0];
     head << (options_.timeAxis ? tr("B − A: Δt = %1").arg(formatDuration(dx * options_.secondsPerX))
-                               : tr("B − A: Δx = %1").arg(valueText(dx, options_.xUnit)));
+                               : tr("B − A: Δ%1 = %2").arg(options_.xName, valueText(dx, options_.xUnit)));
   }
   QStringList lines;
   if (!head.isEmpty()) lines << head.join(QStringLiteral(" · "));

@@ -52,6 +52,7 @@ class PlotInteraction : public QObject {
     bool timeAxis = true;     // x is a time: Δt reads as a duration
     double secondsPerX = 1.0; // a time axis's unit in seconds (1e-3: x in ms)
     QString xUnit;            // unit of x when it is not a time ("Hz")
+    QString xName = QStringLiteral("x");  // its symbol in the readout when it is not a time ("f")
     QString yUnit;            // unit appended to the curves' values ("″", "")
     bool zoomX = true, zoomY = true;  // which axes the wheel zooms and a drag pans
     // A time plot: the wheel and a drag act on x only unless Ctrl is held

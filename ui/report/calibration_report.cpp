@@ -9,6 +9,7 @@
 #include <QPdfWriter>
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 #include <qwt_plot.h>
 
 #include "core/analysis/theory.h"
@@ -18,6 +19,7 @@
 #include "core/noise/gyro_noise.h"
 #include "ui/core_text.h"
 #include "ui/plot_data/allan_curves.h"
+#include "ui/plot_data/bode_curves.h"
 #include "ui/report/page_flow.h"
 #include "ui/report/report_plots.h"
 #include "ui/plot_data/test_point_traces.h"
@@ -178,6 +180,7 @@ struct Content {
   std::vector<ui::TestPointTraces> traces;     // one per analysed test point
   QString producedUtc;
   std::vector<noise::GyroNoiseReport> noise;   // one per static segment
+  std::vector<analysis::ResponseAnalysis> responses;  // per axis with two or more passed points
 };
 
 // Data the bench's simulator made (a run on it, or an import or replay of
@@ -777,11 +780,84 @@ void noisePage(PageFlow& flow, const noise::GyroNoiseReport& r) {
   for (const auto& w : r.warnings) flow.paragraph("• " + coreText(w), PageFlow::font(8.5), kFailColour);
 }
 
+// An axis's frequency response (docs/method.md "Frequency response"): the
+// Bode plot, the points and every fitted model, as the GUI's Bode view and
+// `fogbench-cli response` give them.
+void responsePage(PageFlow& flow, const analysis::ResponseAnalysis& r) {
+  flow.newPage();
+  flow.heading(QObject::tr("Frequency response, %1 axis: gyro angle / table angle at %2 frequencies")
+                   .arg(axisUpper(r.axis))
+                   .arg(r.points.size()));
+  const analysis::ResponseModelFit* chosen =
+      r.chosen >= 0 && r.chosen < static_cast<int>(r.models.size()) ? &r.models[static_cast<std::size_t>(r.chosen)] : nullptr;
+  const std::vector<ui::BodeSeries> series = {
+      {QObject::tr("measured ±1σ"), kTableFit, r.points, chosen, QObject::tr("model (lowest AIC)")}};
+  for (const auto& [part, title, yTitle] :
+       {std::tuple{ui::BodePart::kMagnitudeDb, QObject::tr("Magnitude"), QObject::tr("|H| (dB)")},
+        std::tuple{ui::BodePart::kPhaseDeg, QObject::tr("Phase (negative: the gyro lags)"), QObject::tr("phase (°)")}}) {
+    flow.plot(62.0, [&, part = part, title = title, yTitle = yTitle](double, double) {
+      auto plot = detail::makeFramePlot(title);
+      ui::drawBodeCurves(plot.get(), part, series, {QObject::tr("frequency (Hz)"), yTitle});
+      detail::restyleAxisTitles(plot.get());
+      return plot;
+    });
+  }
+
+  Table points;
+  points.columns = {{QObject::tr("point"), 12, Qt::AlignRight},    {QObject::tr("f (Hz)"), 18, Qt::AlignRight},
+                    {QObject::tr("|H|"), 22, Qt::AlignRight},      {QObject::tr("σ"), 15, Qt::AlignRight},
+                    {QObject::tr("|H| (dB)"), 19, Qt::AlignRight}, {QObject::tr("σ (dB)"), 15, Qt::AlignRight},
+                    {QObject::tr("phase (°)"), 19, Qt::AlignRight}, {QObject::tr("σ (°)"), 15, Qt::AlignRight},
+                    {QObject::tr("lag (ms)"), 18, Qt::AlignRight}, {QObject::tr("σ (ms)"), 15, Qt::AlignRight}};
+  points.fontPt = 7.5;
+  auto sci = [](double v) { return QString::number(v, 'g', 2); };
+  for (const auto& p : r.points)
+    points.rows.push_back({QString::number(p.index + 1), fixed(p.frequencyHz, 4), fixed(p.magnitude, 7), sci(p.magnitudeStd),
+                           fixed(p.magnitudeDb, 6), sci(p.magnitudeDbStd), fixed(p.phaseDeg, 4), sci(p.phaseStdDeg),
+                           fixed(p.lagMs, 5), sci(p.lagStdMs)});
+  flow.table(points);
+  flow.paragraph(QObject::tr("Complex gain of each test point that passed its checks, from its joint fit: magnitude "
+                             "gyro/table amplitude, phase −2π f · lag; standard uncertainties (1σ)."),
+                 PageFlow::font(7.5), kMuted);
+
+  flow.heading(QObject::tr("Models fitted to all points (weighted least squares on magnitude and phase)"));
+  Table models;
+  models.columns = {{QObject::tr("model"), 44, Qt::AlignLeft},
+                    {QObject::tr("χ²/dof"), 16, Qt::AlignRight},
+                    {QObject::tr("AIC"), 17, Qt::AlignRight},
+                    {QObject::tr("BIC"), 17, Qt::AlignRight},
+                    {QObject::tr("parameters (± 1σ)"), 80, Qt::AlignLeft}};
+  models.fontPt = 7.5;
+  for (std::size_t i = 0; i < r.models.size(); ++i) {
+    const auto& m = r.models[i];
+    models.rows.push_back({ui::responseModelTitle(m.kind), m.dof > 0 ? fixed(m.chiSquare / m.dof, 2) : "—",
+                           fixed(m.aic, 1), fixed(m.bic, 1), ui::responseParametersText(m)});
+    models.boldRows.push_back(static_cast<int>(i) == r.chosen);
+  }
+  flow.table(models);
+  for (const auto& skipped : r.skipped)
+    flow.paragraph(QObject::tr("Model left out: %1").arg(coreText(skipped)), PageFlow::font(7.5), kMuted);
+  if (chosen) {
+    std::vector<std::pair<QString, QString>> rows = {
+        {QObject::tr("chosen (lowest AIC)"), ui::responseModelTitle(chosen->kind)},
+        {QObject::tr("low-frequency delay"),
+         ui::valueWithStdText(chosen->lowFrequencyDelayMs.value, chosen->lowFrequencyDelayMs.stdDev, QObject::tr("ms"))},
+        {QObject::tr("group delay at %1 Hz").arg(QString::number(r.groupDelayAtHz, 'g', 4)),
+         ui::valueWithStdText(chosen->groupDelayMs.value, chosen->groupDelayMs.stdDev, QObject::tr("ms"))},
+        {QObject::tr("−3 dB bandwidth"),
+         chosen->bandwidthHz ? ui::valueWithStdText(chosen->bandwidthHz->value, chosen->bandwidthHz->stdDev, QObject::tr("Hz"))
+                             : QObject::tr("none: a pure delay keeps its magnitude")}};
+    flow.keyValues(rows, 48.0);
+    for (const auto& n : chosen->notes) flow.paragraph("• " + coreText(n), PageFlow::font(8.0), kMuted);
+  }
+}
+
 void layOut(PageFlow& flow, const Content& c) {
   flow.newPage();
   firstPage(flow, c);
   flow.newPage();
   constantsAndPlanPage(flow, c);
+  for (const auto& r : c.responses) responsePage(flow, r);
   const auto& points = c.in.delays.points;
   for (std::size_t i = 0; i < points.size(); ++i) {
     plotsPage(flow, points[i], c.traces[i]);
@@ -796,7 +872,7 @@ Result<Content> prepare(const ReportInput& in) {
   if (!qobject_cast<QApplication*>(QCoreApplication::instance()))
     return Status(StatusCode::kInternal, "the report's plots need a QApplication");
   Content c{in, calibrationVerdict(in), rawDataSha256(in.rawBytes), {},
-            QDateTime::currentDateTimeUtc().toString(Qt::ISODate), {}};
+            QDateTime::currentDateTimeUtc().toString(Qt::ISODate), {}, {}};
   for (const auto& p : in.delays.points) {
     const auto& tps = in.recording.testPoints;
     const auto data = std::find_if(tps.begin(), tps.end(), [&](const TestPointData& d) { return d.index == p.index; });
@@ -806,6 +882,11 @@ Result<Content> prepare(const ReportInput& in) {
                     "test point " + std::to_string(p.index + 1) + " cannot be plotted: " + traces.status().message());
     c.traces.push_back(std::move(*traces));
   }
+  // A response plan's frequency response (RunOutcome::responses is the same
+  // analysis of the same report). Two frequencies (the paper's plan) are the
+  // delay table's business: the page is for three or more.
+  for (auto& r : analysis::analyzeResponses(in.delays))
+    if (r.points.size() >= 3) c.responses.push_back(std::move(r));
   // The static segments' noise, when the plan had any.
   if (std::any_of(in.recording.testPoints.begin(), in.recording.testPoints.end(),
                   [](const TestPointData& d) { return d.kind == TestPointKind::kStatic; })) {

@@ -269,6 +269,43 @@ TEST(ResponsePlan, PointBeyondTheTablesLimitsIsRefused) {
   EXPECT_FALSE(responsePlan(crawling).isOk());
 }
 
+// Compare's B - A: only the frequencies both have, the ratio and the
+// differences with independent uncertainties combined.
+TEST(FrequencyResponse, DifferenceOfTwoResponsesAtCommonFrequencies) {
+  auto point = [](int index, double f, double m, double phaseDeg) {
+    ResponsePoint p;
+    p.index = index;
+    p.frequencyHz = f;
+    p.magnitude = m;
+    p.magnitudeStd = 1e-4;
+    p.magnitudeDb = 20.0 * std::log10(m);
+    p.magnitudeDbStd = 20.0 / std::log(10.0) * 1e-4 / m;
+    p.phaseDeg = phaseDeg;
+    p.phaseStdDeg = 0.01;
+    p.lagMs = -phaseDeg / 360.0 / f * 1e3;
+    p.lagStdMs = 0.01 / 360.0 / f * 1e3;
+    p.magnitudePhaseCovDeg = 0.5e-6;
+    return p;
+  };
+  ResponseAnalysis a, b;
+  a.points = {point(0, 1.0, 1.0, -0.2), point(1, 2.0, 0.999, -0.4), point(2, 4.0, 0.998, -0.8)};
+  // 2.004 Hz is within 0.5 % of 2 Hz; 3 Hz is in B only, 4 Hz in A only.
+  b.points = {point(0, 1.0, 1.001, -0.25), point(1, 2.004, 0.998, -0.5), point(2, 3.0, 0.99, -0.7)};
+  const auto d = responseDifference(a, b);
+  ASSERT_EQ(d.size(), 2u);
+  EXPECT_DOUBLE_EQ(d[0].frequencyHz, 1.0);
+  EXPECT_NEAR(d[0].magnitude, 1.001, 1e-12);
+  EXPECT_NEAR(d[0].magnitudeDb, 20.0 * std::log10(1.001), 1e-12);
+  EXPECT_NEAR(d[0].phaseDeg, -0.05, 1e-12);
+  EXPECT_NEAR(d[0].phaseStdDeg, 0.01 * std::sqrt(2.0), 1e-12);
+  EXPECT_NEAR(d[0].magnitudeStd, 1.001 * std::hypot(1e-4, 1e-4 / 1.001), 1e-12);
+  EXPECT_NEAR(d[0].lagMs, b.points[0].lagMs - a.points[0].lagMs, 1e-12);
+  EXPECT_EQ(d[1].index, 1);
+  EXPECT_DOUBLE_EQ(d[1].frequencyHz, 2.004);
+  EXPECT_NEAR(d[1].phaseDeg, -0.1, 1e-12);
+  EXPECT_TRUE(responseDifference(a, ResponseAnalysis{}).empty());
+}
+
 TEST(FrequencyResponse, TooFewPointsSaySo) {
   ResponsePoint p;
   p.frequencyHz = 1.0, p.magnitude = 1.0, p.magnitudeStd = 1e-6, p.phaseDeg = -0.2, p.phaseStdDeg = 1e-4;

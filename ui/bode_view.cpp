@@ -1,0 +1,336 @@
+#include "ui/bode_view.h"
+
+#include <QComboBox>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QPen>
+#include <QScrollBar>
+#include <QSplitter>
+#include <QTableWidget>
+#include <QVBoxLayout>
+#include <algorithm>
+#include <cmath>
+#include <qwt_plot.h>
+#include <qwt_plot_grid.h>
+#include <qwt_global.h>
+#include <qwt_plot_legenditem.h>
+#include <qwt_scale_draw.h>
+#include <qwt_scale_widget.h>
+
+#include "ui/core_text.h"
+#include "ui/language/language.h"
+#include "ui/plots/plot_interaction.h"
+
+namespace fog::ui {
+
+namespace {
+
+constexpr int kNotesColumn = 8;
+const QColor kSingle(8, 48, 107);
+const QColor kA(31, 119, 180);
+const QColor kB(230, 110, 0);
+const QColor kDifference(90, 90, 90);
+
+QString axisText(Axis axis) { return BodeView::tr("%1 axis").arg(QString(axisName(axis)).toUpper()); }
+
+const analysis::ResponseAnalysis* forAxis(const std::vector<analysis::ResponseAnalysis>& responses, Axis axis) {
+  for (const auto& r : responses)
+    if (r.axis == axis) return &r;
+  return nullptr;
+}
+
+const analysis::ResponseModelFit* chosenModel(const analysis::ResponseAnalysis& r) {
+  return r.chosen >= 0 && r.chosen < static_cast<int>(r.models.size()) ? &r.models[static_cast<std::size_t>(r.chosen)]
+                                                                         : nullptr;
+}
+
+// No title: the axis titles say what each plot is, and a laptop's Results
+// view has no height to spare.
+QwtPlot* makeBodePlot(const QString& objectName, const QString& toolTip) {
+  auto* plot = new QwtPlot();
+  plot->setObjectName(objectName);
+  plot->setToolTip(toolTip);
+  plot->setCanvasBackground(Qt::white);
+  plot->setMinimumSize(200, 110);
+  auto* grid = new QwtPlotGrid();
+  grid->setMajorPen(QPen(QColor(215, 215, 215), 0, Qt::DotLine));
+  grid->enableXMin(true);
+  grid->setMinorPen(QPen(QColor(235, 235, 235), 0, Qt::DotLine));
+  grid->attach(plot);
+  useCompactTitles(plot);
+  return plot;
+}
+
+}  // namespace
+
+BodeView::BodeView(QWidget* parent) : QWidget(parent) {
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(2, 2, 2, 2);
+  message_ = new QLabel();
+  message_->setObjectName("bodeMessage");
+  message_->setWordWrap(true);
+  message_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
+  message_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  layout->addWidget(message_);
+
+  content_ = new QWidget();
+  auto* contentLayout = new QVBoxLayout(content_);
+  contentLayout->setContentsMargins(0, 0, 0, 0);
+  auto* top = new QHBoxLayout();
+  axisCombo_ = new QComboBox();
+  axisCombo_->setObjectName("bodeAxisCombo");
+  axisCombo_->setToolTip(tr("The axis whose response is shown"));
+  top->addWidget(axisCombo_);
+  summary_ = new QLabel();
+  summary_->setObjectName("bodeSummary");
+  summary_->setWordWrap(true);
+  summary_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  top->addWidget(summary_, 1);
+  contentLayout->addLayout(top);
+
+  magnitudePlot_ = makeBodePlot("bodeMagnitudePlot", tr("Magnitude of gyro angle / table angle at each test frequency, ±1σ, and the chosen model"));
+  phasePlot_ = makeBodePlot("bodePhasePlot", tr("Phase of gyro angle / table angle (negative: the gyro lags), ±1σ, and the chosen model"));
+  // One legend, inside the magnitude plot's canvas (where a lagging gyro's
+  // points are not: low frequencies, low values): the view's width goes to
+  // the plots.
+  auto* legend = new QwtPlotLegendItem();
+#if QWT_VERSION >= 0x060200
+  legend->setAlignmentInCanvas(Qt::AlignBottom | Qt::AlignLeft);
+#else
+  legend->setAlignment(Qt::AlignBottom | Qt::AlignLeft);
+#endif
+  legend->setMaxColumns(3);
+  legend->setBackgroundBrush(QColor(255, 255, 255, 215));
+  legend->setBorderPen(QPen(QColor(190, 190, 190)));
+  legend->setBorderRadius(2);
+  QFont legendFont = font();
+  legendFont.setPointSizeF(legendFont.pointSizeF() * 0.85);
+  legend->setFont(legendFont);
+  legend->attach(magnitudePlot_);
+  PlotInteraction::Options options;
+  options.cursors = true;
+  options.timeAxis = false;
+  options.xUnit = tr("Hz");
+  options.xName = QStringLiteral("f");
+  options.yUnit = tr("dB");
+  magnitudeInteraction_ = new PlotInteraction(magnitudePlot_, options);
+  options.yUnit = QStringLiteral("°");
+  phaseInteraction_ = new PlotInteraction(phasePlot_, options);
+  // One frequency axis: zoom or pan one plot, the other follows.
+  auto* link = new TimeAxisLink(this);
+  link->add(magnitudeInteraction_);
+  link->add(phaseInteraction_);
+  for (auto [interaction, part] : {std::pair{magnitudeInteraction_, BodePart::kMagnitudeDb},
+                                   std::pair{phaseInteraction_, BodePart::kPhaseDeg}}) {
+    interaction->setValuesAt([this, part = part](double f) {
+      PlotInteraction::Values values;
+      for (const auto& s : series_) {
+        if (const double v = bodePointsAt(s.points, part, f); std::isfinite(v)) values.push_back({s.name, v});
+        if (s.model) values.push_back({s.modelName, bodeModelValue(*s.model, part, f)});
+      }
+      return values;
+    });
+  }
+
+  modelTable_ = new QTableWidget(0, 9);
+  modelTable_->setObjectName("bodeModelTable");
+  modelTable_->setHorizontalHeaderLabels({tr("series"), tr("model"), tr("χ²/dof"), tr("AIC"), tr("BIC"),
+                                          tr("parameters (± 1σ)"), tr("−3 dB bandwidth"), tr("group delay"),
+                                          tr("what the points cannot tell")});
+  modelTable_->verticalHeader()->setVisible(false);
+  modelTable_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+  modelTable_->setSelectionBehavior(QAbstractItemView::SelectRows);
+  modelTable_->setWordWrap(false);
+  modelTable_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+  // Header and three models in view at least, as tall as its rows (Compare
+  // has six).
+  modelTable_->setSizeAdjustPolicy(QAbstractScrollArea::AdjustToContents);
+  modelTable_->setMinimumHeight(modelTable_->horizontalHeader()->sizeHint().height() +
+                                3 * modelTable_->verticalHeader()->defaultSectionSize() +
+                                modelTable_->horizontalScrollBar()->sizeHint().height() + 4);
+
+  auto* split = new QSplitter(Qt::Vertical);
+  split->setObjectName("bodeSplitter");
+  split->addWidget(magnitudePlot_);
+  split->addWidget(phasePlot_);
+  split->addWidget(modelTable_);
+  // The plots share what the table (as tall as its rows) leaves.
+  split->setStretchFactor(0, 1);
+  split->setStretchFactor(1, 1);
+  split->setStretchFactor(2, 0);
+  split->setChildrenCollapsible(false);
+  contentLayout->addWidget(split, 1);
+  layout->addWidget(content_, 1);
+  connect(axisCombo_, qOverload<int>(&QComboBox::currentIndexChanged), this, &BodeView::showAxis);
+  showMessage(tr("No frequency response yet."));
+}
+
+bool BodeView::plotShown() const { return !content_->isHidden(); }
+QString BodeView::summaryText() const { return summary_->text(); }
+QString BodeView::notesText() const {
+  QStringList notes;
+  for (int row = 0; row < modelTable_->rowCount(); ++row)
+    if (auto* item = modelTable_->item(row, kNotesColumn); item && !item->text().isEmpty()) notes << item->text();
+  return notes.join(QStringLiteral("\n"));
+}
+
+void BodeView::showMessage(const QString& message) {
+  a_.clear();
+  b_.clear();
+  series_.clear();
+  {
+    const QSignalBlocker block(axisCombo_);
+    axisCombo_->clear();
+  }
+  message_->setText(message);
+  message_->show();
+  content_->hide();
+}
+
+void BodeView::showResponses(std::vector<analysis::ResponseAnalysis> responses, const QString& emptyReason) {
+  if (responses.empty()) return showMessage(emptyReason);
+  a_ = std::move(responses);
+  b_.clear();
+  comparison_ = false;
+  message_->hide();
+  content_->show();
+  {
+    const QSignalBlocker block(axisCombo_);
+    axisCombo_->clear();
+    for (const auto& r : a_) axisCombo_->addItem(axisText(r.axis), static_cast<int>(r.axis));
+  }
+  axisCombo_->setVisible(a_.size() > 1);
+  axisCombo_->setCurrentIndex(0);
+  showAxis(0);
+}
+
+void BodeView::showComparison(std::vector<analysis::ResponseAnalysis> a, std::vector<analysis::ResponseAnalysis> b,
+                              const QString& aName, const QString& bName, const QString& emptyReason) {
+  std::vector<int> axes;
+  for (const auto& r : a)
+    if (forAxis(b, r.axis)) axes.push_back(static_cast<int>(r.axis));
+  if (axes.empty()) return showMessage(emptyReason);
+  a_ = std::move(a);
+  b_ = std::move(b);
+  comparison_ = true;
+  aName_ = aName;
+  bName_ = bName;
+  message_->hide();
+  content_->show();
+  {
+    const QSignalBlocker block(axisCombo_);
+    axisCombo_->clear();
+    for (int axis : axes) axisCombo_->addItem(axisText(static_cast<Axis>(axis)), axis);
+  }
+  axisCombo_->setVisible(axes.size() > 1);
+  axisCombo_->setCurrentIndex(0);
+  showAxis(0);
+}
+
+void BodeView::addModelRow(const QString& series, const analysis::ResponseModelFit& m, bool chosen, double atHz) {
+  QStringList noteList;
+  for (const auto& n : m.notes) noteList << coreText(n);
+  const QString notes = noteList.join(QStringLiteral("; "));
+  const int row = modelTable_->rowCount();
+  modelTable_->insertRow(row);
+  const QStringList cells = {
+      series,
+      responseModelTitle(m.kind),
+      m.dof > 0 ? localNumber(m.chiSquare / m.dof, 'f', 2) : tr("—"),
+      localNumber(m.aic, 'f', 1),
+      localNumber(m.bic, 'f', 1),
+      responseParametersText(m),
+      m.bandwidthHz ? valueWithStdText(m.bandwidthHz->value, m.bandwidthHz->stdDev, tr("Hz")) : tr("none (flat)"),
+      tr("%1 at %2 Hz").arg(valueWithStdText(m.groupDelayMs.value, m.groupDelayMs.stdDev, tr("ms")),
+                            localNumber(atHz, 'g', 4)),
+      notes};
+  for (int col = 0; col < cells.size(); ++col) {
+    auto* item = new QTableWidgetItem(cells[col]);
+    item->setToolTip(col == kNotesColumn ? QStringLiteral("<p>") + noteList.join(QStringLiteral("</p><p>")).toHtmlEscaped() + QStringLiteral("</p>")
+                                         : cells[col]);
+    if (chosen) {
+      if (col != kNotesColumn) item->setToolTip(tr("The model chosen: the lowest AIC"));
+      QFont bold = item->font();
+      bold.setBold(true);
+      item->setFont(bold);
+    }
+    modelTable_->setItem(row, col, item);
+  }
+}
+
+void BodeView::showAxis(int position) {
+  if (position < 0 || position >= axisCombo_->count()) return;
+  const auto axis = static_cast<Axis>(axisCombo_->itemData(position).toInt());
+  series_.clear();
+  modelTable_->setRowCount(0);
+  QStringList summary;
+  auto describe = [&](const QString& who, const analysis::ResponseAnalysis& r) {
+    const auto* m = chosenModel(r);
+    QString line = tr("%1%2 points, %3 – %4 Hz")
+                       .arg(who.isEmpty() ? QString() : who + QStringLiteral(": "))
+                       .arg(r.points.size())
+                       .arg(localNumber(r.points.front().frequencyHz, 'g', 3), localNumber(r.points.back().frequencyHz, 'g', 4));
+    if (m) {
+      line += tr("; <b>%1</b> (lowest AIC): group delay at %2 Hz <b>%3</b>")
+                  .arg(responseModelTitle(m->kind), localNumber(r.groupDelayAtHz, 'g', 4),
+                       valueWithStdText(m->groupDelayMs.value, m->groupDelayMs.stdDev, tr("ms")));
+      if (m->bandwidthHz)
+        line += tr(", −3 dB bandwidth %1").arg(valueWithStdText(m->bandwidthHz->value, m->bandwidthHz->stdDev, tr("Hz")));
+    }
+    summary << line;
+    for (std::size_t i = 0; i < r.models.size(); ++i)
+      addModelRow(who.isEmpty() ? axisText(r.axis) : who, r.models[i], static_cast<int>(i) == r.chosen, r.groupDelayAtHz);
+    for (const auto& s : r.skipped) summary << tr("model left out: %1").arg(coreText(s));
+  };
+  if (!comparison_) {
+    const auto* r = forAxis(a_, axis);
+    const auto* m = chosenModel(*r);
+    series_.push_back({tr("measured ±1σ"), kSingle, r->points, m, tr("model (lowest AIC)")});
+    describe(QString(), *r);
+  } else {
+    const auto* a = forAxis(a_, axis);
+    const auto* b = forAxis(b_, axis);
+    const auto* ma = chosenModel(*a);
+    const auto* mb = chosenModel(*b);
+    series_.push_back({aName_, kA, a->points, ma, tr("%1 model").arg(aName_)});
+    series_.push_back({bName_, kB, b->points, mb, tr("%1 model").arg(bName_)});
+    auto difference = analysis::responseDifference(*a, *b);
+    if (!difference.empty())
+      series_.push_back({tr("%1 − %2").arg(bName_, aName_), kDifference, std::move(difference), nullptr, QString()});
+    describe(aName_, *a);
+    describe(bName_, *b);
+    if (series_.size() < 3) summary << tr("%1 and %2 share no test frequency (within 0.5 %): no difference is drawn.").arg(aName_, bName_);
+  }
+  drawBodeCurves(magnitudePlot_, BodePart::kMagnitudeDb, series_, {QString(), tr("|H| (dB)")});
+  drawBodeCurves(phasePlot_, BodePart::kPhaseDeg, series_, {tr("frequency (Hz)"), tr("phase (°)")});
+  // The two canvases start at the same x: the value axes as wide as the
+  // wider one's labels.
+  for (QwtPlot* plot : {magnitudePlot_, phasePlot_}) {
+    plot->axisScaleDraw(QwtPlot::yLeft)->setMinimumExtent(0);
+    plot->updateAxes();
+  }
+  double extent = 0.0;
+  for (QwtPlot* plot : {magnitudePlot_, phasePlot_})
+    extent = std::max(extent, plot->axisScaleDraw(QwtPlot::yLeft)->extent(plot->axisWidget(QwtPlot::yLeft)->font()));
+  for (QwtPlot* plot : {magnitudePlot_, phasePlot_}) plot->axisScaleDraw(QwtPlot::yLeft)->setMinimumExtent(extent);
+  for (auto* interaction : {magnitudeInteraction_, phaseInteraction_}) {
+    interaction->plot()->replot();
+    interaction->setHome();
+    interaction->dataChanged();
+  }
+  summary_->setText(summary.join(QStringLiteral("<br>")));
+}
+
+QString responseMissingText(const analysis::DelayReport& report) {
+  QStringList counts;
+  for (int a = 0; a < kAxisCount; ++a)
+    if (const auto n = analysis::responsePoints(report, static_cast<Axis>(a)).size(); n > 0)
+      counts << BodeView::tr("%1 axis: %2").arg(QString(axisName(static_cast<Axis>(a))).toUpper()).arg(n);
+  return BodeView::tr("No frequency response: it needs two or more test points of one axis that passed their checks, "
+                      "and this result has %1. The plan preset \"Frequency response\" (run --preset response) records "
+                      "20 frequencies of the X axis.")
+      .arg(counts.isEmpty() ? BodeView::tr("none") : counts.join(QStringLiteral(", ")));
+}
+
+}  // namespace fog::ui
