@@ -403,6 +403,20 @@ const char* const kTemplates[] = {
     QT_TRANSLATE_NOOP("core_text", "fit"),
     QT_TRANSLATE_NOOP("core_text", "measured lag (gyro behind table) %1 ± %2 ms (CRLB %3 ms, std/CRLB %4: BELOW THE BOUND, the σ is understated (uncertainty_below_bound))"),
     QT_TRANSLATE_NOOP("core_text", "%1, fogbench %2"),
+    // The frequency response's notes (core/analysis/frequency_response.cpp).
+    QT_TRANSLATE_NOOP("core_text", "the -3 dB bandwidth %1 Hz lies beyond the highest point (%2 Hz): an extrapolation of the model"),
+    QT_TRANSLATE_NOOP("core_text", "%1 and %2 correlate at %3: the points barely separate them (the low-frequency delay %4 ± %5 ms is better determined than either)"),
+    QT_TRANSLATE_NOOP("core_text", "%1 = %2 ± %3 is not distinguished from 0 by these points"),
+    QT_TRANSLATE_NOOP("core_text", "%1: %2 parameters need more than %3 values, %4 points give %5"),
+    QT_TRANSLATE_NOOP("core_text", "%1: no fit from any of its %2 starting points (%3); the points may not hold such a filter"),
+    QT_TRANSLATE_NOOP("core_text", "the fit did not converge in %1 iterations"),
+    // The response models' names and parameters (the model "delay" is above).
+    QT_TRANSLATE_NOOP("core_text", "first_order"),
+    QT_TRANSLATE_NOOP("core_text", "second_order"),
+    QT_TRANSLATE_NOOP("core_text", "tau_ms"),
+    QT_TRANSLATE_NOOP("core_text", "T_ms"),
+    QT_TRANSLATE_NOOP("core_text", "fn_hz"),
+    QT_TRANSLATE_NOOP("core_text", "zeta"),
 };
 
 struct Template {

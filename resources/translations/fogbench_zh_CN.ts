@@ -184,6 +184,211 @@
     </message>
 </context>
 <context>
+    <name>fog::ui::BodeText</name>
+    <message>
+        <location filename="../../ui/plot_data/bode_curves.cpp" line="+125"/>
+        <source>pure delay</source>
+        <translation>纯延迟</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>delay + first-order lag</source>
+        <translation>延迟 + 一阶滞后</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>delay + second-order (resonant)</source>
+        <translation>延迟 + 二阶（谐振）</translation>
+    </message>
+</context>
+<context>
+    <name>fog::ui::BodeView</name>
+    <message>
+        <location filename="../../ui/bode_view.cpp" line="+35"/>
+        <source>%1 axis</source>
+        <translation>%1 轴</translation>
+    </message>
+    <message>
+        <location line="+48"/>
+        <source>The axis whose response is shown</source>
+        <translation>显示其频率响应的轴</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Magnitude of gyro angle / table angle at each test frequency, ±1σ, and the chosen model</source>
+        <translation>各测试频率下陀螺角度 / 转台角度的幅值（±1σ）及所选模型</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Phase of gyro angle / table angle (negative: the gyro lags), ±1σ, and the chosen model</source>
+        <translation>陀螺角度 / 转台角度的相位（负值：陀螺滞后，±1σ）及所选模型</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <location line="+130"/>
+        <location line="+35"/>
+        <source>Hz</source>
+        <translation>Hz</translation>
+    </message>
+    <message>
+        <location line="-163"/>
+        <source>dB</source>
+        <translation>dB</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>series</source>
+        <translation>序列</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>model</source>
+        <translation>模型</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>χ²/dof</source>
+        <translation>χ²/自由度</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>AIC</source>
+        <translation>AIC</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>BIC</source>
+        <translation>BIC</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>parameters (± 1σ)</source>
+        <translation>参数（± 1σ）</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>−3 dB bandwidth</source>
+        <translation>−3 dB 带宽</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>group delay</source>
+        <translation>群延迟</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>what the points cannot tell</source>
+        <translation>数据点无法区分的内容</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>No frequency response yet.</source>
+        <translation>尚无频率响应。</translation>
+    </message>
+    <message>
+        <location line="+74"/>
+        <source>—</source>
+        <translation>—</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>none (flat)</source>
+        <translation>无（平坦）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 at %2 Hz</source>
+        <translation>%1（%2 Hz 处）</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location line="+32"/>
+        <source>ms</source>
+        <translation>ms</translation>
+    </message>
+    <message>
+        <location line="-24"/>
+        <source>The model chosen: the lowest AIC</source>
+        <translation>所选模型：AIC 最低</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>%1%2 points, %3 – %4 Hz</source>
+        <translation>%1%2 个点，%3 – %4 Hz</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>; &lt;b&gt;%1&lt;/b&gt; (lowest AIC): group delay at %2 Hz &lt;b&gt;%3&lt;/b&gt;</source>
+        <translation>；&lt;b&gt;%1&lt;/b&gt;（AIC 最低）：%2 Hz 处群延迟 &lt;b&gt;%3&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>, −3 dB bandwidth %1</source>
+        <translation>，−3 dB 带宽 %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>model left out: %1</source>
+        <translation>未拟合的模型：%1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>measured ±1σ</source>
+        <translation>测量值 ±1σ</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>model (lowest AIC)</source>
+        <translation>模型（AIC 最低）</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <location line="+1"/>
+        <source>%1 model</source>
+        <translation>%1 模型</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 − %2</source>
+        <translation>%1 − %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 and %2 share no test frequency (within 0.5 %): no difference is drawn.</source>
+        <translation>%1 与 %2 没有共同的测试频率（相差 0.5 % 以内）：不绘制差值。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>|H| (dB)</source>
+        <translation>|H|（dB）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>frequency (Hz)</source>
+        <translation>频率（Hz）</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>phase (°)</source>
+        <translation>相位（°）</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>%1 axis: %2</source>
+        <translation>%1 轴：%2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>No frequency response: it needs two or more test points of one axis that passed their checks, and this result has %1. The plan preset &quot;Frequency response&quot; (run --preset response) records 20 frequencies of the X axis.</source>
+        <translation>无频率响应：需要同一轴上两个或以上通过检查的测试点，而此结果有 %1。计划预设“频率响应”（run --preset response）记录 X 轴的 20 个频率。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>none</source>
+        <translation>无</translation>
+    </message>
+</context>
+<context>
     <name>fog::ui::CommandedMotionTable</name>
     <message>
         <location filename="../../ui/commanded_motion.cpp" line="+28"/>
@@ -270,7 +475,7 @@
 <context>
     <name>fog::ui::CompareView</name>
     <message>
-        <location filename="../../ui/compare_view.cpp" line="+130"/>
+        <location filename="../../ui/compare_view.cpp" line="+131"/>
         <source>session</source>
         <translation>会话</translation>
     </message>
@@ -347,12 +552,12 @@
     </message>
     <message>
         <location line="+12"/>
-        <location line="+153"/>
+        <location line="+157"/>
         <source>test point</source>
         <translation>测试点</translation>
     </message>
     <message>
-        <location line="-147"/>
+        <location line="-151"/>
         <source>Zero crossing of A and B</source>
         <translation>A 与 B 的过零点</translation>
     </message>
@@ -412,6 +617,11 @@
         <translation>趋势</translation>
     </message>
     <message>
+        <location line="+3"/>
+        <source>Frequency response</source>
+        <translation>频率响应</translation>
+    </message>
+    <message>
         <location line="+23"/>
         <source>Loading the sessions …</source>
         <translation>正在加载会话 …</translation>
@@ -453,16 +663,18 @@
     </message>
     <message>
         <location line="+17"/>
+        <location line="+139"/>
         <source>Choose two different sessions.</source>
         <translation>请选择两个不同的会话。</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-138"/>
+        <location line="+139"/>
         <source>Session %1 or %2 has no delay result to compare.</source>
         <translation>会话 %1 或 %2 没有可比较的延迟结果。</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="-131"/>
         <location line="+1"/>
         <source>%1: IMU delay (ms)</source>
         <translation>%1：IMU 延迟 (ms)</translation>
@@ -518,7 +730,7 @@
         <translation>转台读数延迟不同：σ 由两个 IMU 延迟的不确定度合成。</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+44"/>
         <source>%1: table</source>
         <translation>%1：转台</translation>
     </message>
@@ -533,7 +745,12 @@
         <translation>%1：陀螺拟合</translation>
     </message>
     <message>
-        <location line="+74"/>
+        <location line="+44"/>
+        <source>%1 and %2 have no axis with a frequency response in common. %1: %3 %2: %4</source>
+        <translation>%1 与 %2 没有共同具有频率响应的轴。%1：%3 %2：%4</translation>
+    </message>
+    <message>
+        <location line="+45"/>
         <source>IMU delay against the recording date (IMU not named)</source>
         <translation>IMU 延迟随记录日期的变化（未填写 IMU）</translation>
     </message>
@@ -2518,8 +2735,8 @@ File: %1</source>
     </message>
     <message>
         <location line="+1"/>
-        <source>B − A: Δx = %1</source>
-        <translation>B − A：Δx = %1</translation>
+        <source>B − A: Δ%1 = %2</source>
+        <translation>B − A：Δ%1 = %2</translation>
     </message>
 </context>
 <context>
@@ -2562,13 +2779,13 @@ File: %1</source>
         <translation>PNG 图像 (*.png);;SVG 矢量图 (*.svg);;PDF 文档 (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../../ui/report/calibration_report.cpp" line="+68"/>
-        <location line="+250"/>
+        <location filename="../../ui/report/calibration_report.cpp" line="+70"/>
+        <location line="+251"/>
         <source>not recorded</source>
         <translation>未记录</translation>
     </message>
     <message>
-        <location line="-243"/>
+        <location line="-244"/>
         <source>%1 axis
 %2 Hz / %3°, %4 s</source>
         <translation>%1 轴
@@ -2580,7 +2797,7 @@ File: %1</source>
         <translation>%1 轴，%2 Hz / %3°，%4 s</translation>
     </message>
     <message>
-        <location line="+116"/>
+        <location line="+117"/>
         <source>IMU %1 · S/N %2</source>
         <translation>IMU %1 · 序列号 %2</translation>
     </message>
@@ -2909,11 +3126,12 @@ File: %1</source>
     </message>
     <message>
         <location line="-17"/>
+        <location line="+380"/>
         <source>frequency (Hz)</source>
         <translation>频率 (Hz)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-379"/>
         <source>amplitude (°)</source>
         <translation>幅值 (°)</translation>
     </message>
@@ -3268,11 +3486,12 @@ File: %1</source>
     </message>
     <message>
         <location line="+1"/>
+        <location line="+174"/>
         <source>χ²/dof</source>
         <translation>χ²/dof</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-173"/>
         <source>table, 3-parameter</source>
         <translation>转台，三参数</translation>
     </message>
@@ -3379,11 +3598,12 @@ File: %1</source>
     </message>
     <message>
         <location line="+2"/>
+        <location line="+108"/>
         <source>lag (ms)</source>
         <translation>滞后 (ms)</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="-98"/>
         <source>one period</source>
         <translation>单个周期</translation>
     </message>
@@ -3581,7 +3801,150 @@ File: %1</source>
         <translation>χ²/dof %1</translation>
     </message>
     <message>
-        <location line="+104"/>
+        <location line="+10"/>
+        <source>Frequency response, %1 axis: gyro angle / table angle at %2 frequencies</source>
+        <translation>频率响应，%1 轴：%2 个频率下的陀螺角度 / 转台角度</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>measured ±1σ</source>
+        <translation>测量值 ±1σ</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>model (lowest AIC)</source>
+        <translation>模型（AIC 最低）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Magnitude</source>
+        <translation>幅值</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location line="+13"/>
+        <source>|H| (dB)</source>
+        <translation>|H|（dB）</translation>
+    </message>
+    <message>
+        <location line="-12"/>
+        <source>Phase (negative: the gyro lags)</source>
+        <translation>相位（负值：陀螺滞后）</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location line="+13"/>
+        <source>phase (°)</source>
+        <translation>相位（°）</translation>
+    </message>
+    <message>
+        <location line="-3"/>
+        <source>point</source>
+        <translation>点</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>f (Hz)</source>
+        <translation>f（Hz）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>|H|</source>
+        <translation>|H|</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>σ</source>
+        <translation>σ</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>σ (dB)</source>
+        <translation>σ（dB）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>σ (°)</source>
+        <translation>σ（°）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>σ (ms)</source>
+        <translation>σ（ms）</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Complex gain of each test point that passed its checks, from its joint fit: magnitude gyro/table amplitude, phase −2π f · lag; standard uncertainties (1σ).</source>
+        <translation>每个通过检查的测试点的复增益，来自其联合拟合：幅值为陀螺/转台振幅之比，相位为 −2π f · 滞后；标准不确定度（1σ）。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Models fitted to all points (weighted least squares on magnitude and phase)</source>
+        <translation>对所有点拟合的模型（幅值与相位的加权最小二乘）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>model</source>
+        <translation>模型</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>AIC</source>
+        <translation>AIC</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>BIC</source>
+        <translation>BIC</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>parameters (± 1σ)</source>
+        <translation>参数（± 1σ）</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Model left out: %1</source>
+        <translation>未拟合的模型：%1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>chosen (lowest AIC)</source>
+        <translation>所选（AIC 最低）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>low-frequency delay</source>
+        <translation>低频延迟</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+2"/>
+        <source>ms</source>
+        <translation>ms</translation>
+    </message>
+    <message>
+        <location line="-1"/>
+        <source>group delay at %1 Hz</source>
+        <translation>%1 Hz 处群延迟</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>−3 dB bandwidth</source>
+        <translation>−3 dB 带宽</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Hz</source>
+        <translation>Hz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>none: a pure delay keeps its magnitude</source>
+        <translation>无：纯延迟不改变幅值</translation>
+    </message>
+    <message>
+        <location line="+111"/>
         <source>NO VERDICT</source>
         <translation>无判定</translation>
     </message>
@@ -3620,7 +3983,7 @@ File: %1</source>
         <translation>%1 个测试点未得到延迟</translation>
     </message>
     <message>
-        <location line="-337"/>
+        <location line="-415"/>
         <source>table angle (encoder, %1 ms)</source>
         <translation>转台角度（编码器，%1 ms）</translation>
     </message>
@@ -3630,7 +3993,7 @@ File: %1</source>
         <translation>陀螺角度（增量累加，%1 ms）</translation>
     </message>
     <message>
-        <location line="+338"/>
+        <location line="+416"/>
         <source>INCOMPLETE (the run stopped early); its data give %1</source>
         <translation>不完整（运行提前停止）；其数据给出 %1</translation>
     </message>
@@ -3685,7 +4048,7 @@ File: %1</source>
         <translation>IMU 延迟标定报告：%1 %2</translation>
     </message>
     <message>
-        <location filename="../../ui/result_view.cpp" line="+66"/>
+        <location filename="../../ui/result_view.cpp" line="+67"/>
         <source>%1: %2 axis, %3 Hz / %4°</source>
         <translation>%1：%2 轴，%3 Hz / %4°</translation>
     </message>
@@ -3933,7 +4296,7 @@ File: %1</source>
         <translation>运行结束后，延迟报告显示在这里。</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+27"/>
         <location line="+4"/>
         <source>Export plot</source>
         <translation>导出曲线</translation>
@@ -3970,17 +4333,37 @@ File: %1</source>
         <translation>标定报告</translation>
     </message>
     <message>
-        <location line="+105"/>
+        <location line="+111"/>
         <source>result %1 of %2: %7, stored %3 by %4 (%5), %6</source>
         <translation>结果 %1/%2：%7，%3 由 %4（%5）保存，%6</translation>
     </message>
     <message>
-        <location line="-108"/>
+        <location line="-114"/>
         <source>PDF document (*.pdf)</source>
         <translation>PDF 文档 (*.pdf)</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="-39"/>
+        <source>Fits</source>
+        <translation>拟合</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Frequency response</source>
+        <translation>频率响应</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The chosen test point&apos;s angles with their fitted sinusoids, and the residuals</source>
+        <translation>所选测试点的角度及其拟合正弦曲线，以及残差</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Magnitude and phase of gyro angle / table angle at every test frequency of an axis, with the delay models fitted to them (Bode plot)</source>
+        <translation>某轴各测试频率下陀螺角度 / 转台角度的幅值与相位，及对其拟合的延迟模型（伯德图）</translation>
+    </message>
+    <message>
+        <location line="+44"/>
         <source>Delay table (CSV)…</source>
         <translation>延迟表（CSV）…</translation>
     </message>
@@ -4043,7 +4426,12 @@ The session itself is unchanged.</source>
         <translation>尚无结果。</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+13"/>
+        <source>No frequency response yet.</source>
+        <translation>尚无频率响应。</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>Result shown: %1</source>
         <translation>显示的结果：%1</translation>
     </message>
@@ -4053,7 +4441,7 @@ The session itself is unchanged.</source>
         <translation>&lt;b&gt;无延迟结果：&lt;/b&gt;%1</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+24"/>
         <source>this run&apos;s, not recorded in a session; computed by fogbench %1 with %2</source>
         <translation>本次运行的结果，未记录到会话；由 fogbench %1 使用 %2 计算</translation>
     </message>
@@ -6523,6 +6911,66 @@ The session itself is unchanged.</source>
         <location line="+1"/>
         <source>%1, fogbench %2</source>
         <translation>%1，fogbench %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the -3 dB bandwidth %1 Hz lies beyond the highest point (%2 Hz): an extrapolation of the model</source>
+        <translation>−3 dB 带宽 %1 Hz 超出最高测试点（%2 Hz）：为模型的外推</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 and %2 correlate at %3: the points barely separate them (the low-frequency delay %4 ± %5 ms is better determined than either)</source>
+        <translation>%1 与 %2 的相关系数为 %3：这些点几乎无法将二者区分（低频延迟 %4 ± %5 ms 比二者中任何一个都确定得更好）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 = %2 ± %3 is not distinguished from 0 by these points</source>
+        <translation>%1 = %2 ± %3：这些点无法将其与 0 区分</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1: %2 parameters need more than %3 values, %4 points give %5</source>
+        <translation>%1：%2 个参数需要多于 %3 个数值，%4 个点只给出 %5 个</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1: no fit from any of its %2 starting points (%3); the points may not hold such a filter</source>
+        <translation>%1：%2 个初值均未得到拟合（%3）；这些点可能不含此类滤波器</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the fit did not converge in %1 iterations</source>
+        <translation>拟合在 %1 次迭代内未收敛</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>first_order</source>
+        <translation>一阶模型</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>second_order</source>
+        <translation>二阶模型</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>tau_ms</source>
+        <translation>τ</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>T_ms</source>
+        <translation>T</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>fn_hz</source>
+        <translation>fₙ</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>zeta</source>
+        <translation>ζ</translation>
     </message>
 </context>
 </TS>

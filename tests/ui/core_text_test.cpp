@@ -24,6 +24,7 @@
 #include "core/diagnosis/diagnosis.h"
 #include "core/diagnosis/effects.h"
 #include "core/model/simulator.h"
+#include "core/analysis/frequency_response.h"
 #include "core/noise/noise_terms.h"
 #include "core/protocol/recording_builder.h"
 #include "core/session/session_file.h"
@@ -316,6 +317,44 @@ class CoreTextTest : public QObject {
     plan.points.back().durationS = 4.0;
     plan.points.back().frequencyHz = 50.0;
     expectChinese(plan.validate(limits).message());
+  }
+
+  // What the Bode view and the report show of the frequency response: every
+  // model's notes (correlations, a bandwidth beyond the points, a parameter
+  // not told from 0) and why a model was left out.
+  void frequencyResponseNotes() {
+    ResponsePlanOptions o;
+    o.lowestHz = 0.5;
+    o.frequencies = 6;
+    o.minDurationS = 3.0;
+    const TestPlan plan = *responsePlan(TurntableLimits{}, o);
+    model::SimConfig c;
+    c.fog.rateFilterTimeConstantS = 2e-3;
+    auto run = model::simulate(c, plan);
+    QVERIFY(run.isOk());
+    auto rec = protocol::decodeRecording(run->bytes);
+    QVERIFY(rec.isOk());
+    auto report = analysis::analyzeRecording(*rec, BenchConstants{});
+    QVERIFY(report.isOk());
+    const auto responses = analysis::analyzeResponses(*report);
+    QCOMPARE(responses.size(), std::size_t(1));
+    int notes = 0;
+    for (const auto& m : responses.front().models)
+      for (const auto& n : m.notes) {
+        expectChinese(n);
+        ++notes;
+      }
+    QVERIFY(notes > 0);
+    for (const auto& s : responses.front().skipped) expectChinese(s);
+    // Two points leave the second-order model out; a fit that found nothing says so.
+    auto two = responses.front().points;
+    two.resize(2);
+    const auto few = analysis::analyzeResponse(two, Axis::kX, 5.0);
+    QVERIFY(few.isOk());
+    QCOMPARE(few->skipped.size(), std::size_t(1));
+    expectChinese(few->skipped.front());
+    expectChinese("second_order: no fit from any of its 9 starting points (the fit did not converge in 50 iterations); "
+                  "the points may not hold such a filter");
   }
 
   void noiseTermNames() {

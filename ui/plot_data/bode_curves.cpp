@@ -118,13 +118,17 @@ QString valueWithStdText(double value, double stdDev, const QString& unit) {
 }
 
 QString responseModelTitle(analysis::ResponseModelKind kind) {
+  // Marked for lupdate in the context "BodeText", which the translation
+  // script qualifies as the GUI's others ("fog::ui::BodeText").
+  const char* title = "";
   switch (kind) {
-    case analysis::ResponseModelKind::kDelay: return QCoreApplication::translate("BodeText", "pure delay");
-    case analysis::ResponseModelKind::kFirstOrder: return QCoreApplication::translate("BodeText", "delay + first-order lag");
+    case analysis::ResponseModelKind::kDelay: title = QT_TRANSLATE_NOOP("BodeText", "pure delay"); break;
+    case analysis::ResponseModelKind::kFirstOrder: title = QT_TRANSLATE_NOOP("BodeText", "delay + first-order lag"); break;
     case analysis::ResponseModelKind::kSecondOrder:
-      return QCoreApplication::translate("BodeText", "delay + second-order (resonant)");
+      title = QT_TRANSLATE_NOOP("BodeText", "delay + second-order (resonant)");
+      break;
   }
-  return QString();
+  return QCoreApplication::translate("fog::ui::BodeText", title);
 }
 
 QString responseParametersText(const analysis::ResponseModelFit& m) {

@@ -47,7 +47,7 @@ double bodeModelValue(const analysis::ResponseModelFit& m, BodePart part, double
 double bodePointsAt(const std::vector<analysis::ResponsePoint>& points, BodePart part, double frequencyHz);
 
 // A model's name and its parameters (± 1σ, with units) as the GUI and the
-// report write them (translated in the context "BodeText").
+// report write them (translated in the context "fog::ui::BodeText").
 QString responseModelTitle(analysis::ResponseModelKind kind);
 QString responseParametersText(const analysis::ResponseModelFit& m);
 // "0.2381 ± 0.0012 ms": the value to the σ's second significant digit.
