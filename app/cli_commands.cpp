@@ -40,15 +40,7 @@ namespace {
 
 int printReport(const Result<analysis::DelayReport>& report, const analysis::ReportContext& context, bool json) {
   if (!report) return fail(report.status(), exitCodeFor(report.status()));
-  std::cout << (json ? analysis::formatReportJson(*report, context) + "\n"
-                     : forTerminal(analysis::formatReportText(*report, context)));
-  // A plan with three or more frequencies on an axis (run --preset response):
-  // its frequency response follows, as `response` prints it.
-  if (!json) {
-    auto responses = analysis::analyzeResponses(*report);
-    std::erase_if(responses, [](const auto& r) { return r.points.size() < 3; });
-    if (!responses.empty()) std::cout << "\n" << analysis::formatResponseText(responses);
-  }
+  std::cout << reportOutput(*report, context, json);
   return 0;
 }
 

@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
+#include <nlohmann/json.hpp>
 
+#include "core/analysis/frequency_response.h"
+#include "core/analysis/report_writer.h"
 #include "core/common/text.h"
 #include "core/session/session_file.h"
 
@@ -105,6 +108,23 @@ Result<double> readDelayLimit(CliArguments& args) {
     return invalidArgument("--limit-ms must be within 0.001 .. 1000 milliseconds (the IMU delay limit), not " +
                            *args.text("limit-ms"));
   return limit;
+}
+
+std::string reportOutput(const analysis::DelayReport& report, const analysis::ReportContext& context, bool json) {
+  auto responses = analysis::analyzeResponses(report);
+  std::erase_if(responses, [](const auto& r) { return r.points.size() < 3; });
+  if (json) {
+    std::string text = analysis::formatReportJson(report, context);
+    if (!responses.empty()) {
+      auto doc = nlohmann::json::parse(text);
+      doc["responses"] = nlohmann::json::parse(analysis::formatResponseJson(responses))["responses"];
+      text = doc.dump(2);
+    }
+    return text + "\n";
+  }
+  std::string text = forTerminal(analysis::formatReportText(report, context));
+  if (!responses.empty()) text.append("\n").append(analysis::formatResponseText(responses));
+  return text;
 }
 
 }  // namespace fog::app

@@ -49,4 +49,10 @@ Result<double> readDelayLimit(CliArguments& args);
 // Writes the constants back into the settings a session stores.
 void storeConstants(const BenchConstants& constants, BenchConstants& bench);
 
+// The delay report as `run` and `analyze` print it: text for the terminal
+// or JSON; a plan with three or more passed frequencies on an axis (run
+// --preset response) has its frequency response after it, as `response`
+// prints it (JSON: the same entries under "responses").
+std::string reportOutput(const analysis::DelayReport& report, const analysis::ReportContext& context, bool json);
+
 }  // namespace fog::app

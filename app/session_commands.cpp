@@ -91,8 +91,7 @@ int analyzeCommand(CliArguments& args) {
   settings.imuDelayLimitMs = *limit;
   const auto result = session::analyseAndStore(*opened, settings, !noStore);
   if (!result.report) return fail(result.report.status(), exitCodeFor(result.report.status()));
-  std::cout << (json ? analysis::formatReportJson(*result.report, result.context) + "\n"
-                     : forTerminal(analysis::formatReportText(*result.report, result.context)));
+  std::cout << reportOutput(*result.report, result.context, json);
   if (!result.storeStatus.isOk()) return fail(result.storeStatus, 2);
   if (!result.notStored.empty())
     std::cerr << "fogbench-cli: note: the result was not stored: " << forTerminal(result.notStored) << "\n";

@@ -53,10 +53,24 @@ if(pstd LESS_EQUAL 0 OR corr01 GREATER -0.9)
   message(FATAL_ERROR "response --json: phase sigma ${pstd}, corr(tau, T) ${corr01} (expected < -0.9 for a pure delay)")
 endif()
 
+# analyze --json carries the same response under "responses"; a one-point
+# plan's report has none.
+run_expect(0 ajson analyze ${dir}/response.fbs --json)
+string(JSON atau GET "${ajson}" responses 0 models 0 parameters tau_ms value)
+string(JSON averdict GET "${ajson}" verdict)
+if(NOT atau STREQUAL tau OR averdict STREQUAL "")
+  message(FATAL_ERROR "analyze --json: responses' tau ${atau}, response --json ${tau}; verdict '${averdict}'")
+endif()
+
 run_expect(0 yrun run --preset response --axis y --seed 4)
 expect_match("${yrun}" "Frequency response, Y axis \\(gyro angle / table angle\\), 20 points" "run --preset response --axis y")
 
 run_expect(0 fast run --preset paper-fast --out ${dir}/fast.fbs)
+run_expect(0 fastjson analyze ${dir}/fast.fbs --json)
+string(JSON noresp ERROR_VARIABLE noresp_err GET "${fastjson}" responses)
+if(noresp_err STREQUAL "NOTFOUND")
+  message(FATAL_ERROR "analyze --json of a one-point plan has responses: ${noresp}")
+endif()
 run_expect(1 one response ${dir}/fast.fbs)
 expect_match("${one_err}" "needs two or more test points of one axis that passed their checks; this recording has X 1" "one point")
 run_expect(2 bad response ${dir}/response.fbs --at-hz 0)
