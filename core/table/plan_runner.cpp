@@ -79,6 +79,16 @@ Status PlanRunner::waitUntil(const std::function<bool(const TableState&)>& done,
   }
 }
 
+Status PlanRunner::notSwinging(const std::string& label, const char* during, AxisMode mode) {
+  // A controller that stopped the axis for an interlock, an emergency stop or
+  // its heartbeat says so; but the flags of the state read that saw the axis
+  // stopped may predate the stop (the remote driver reads them first), so
+  // read once more for the reason.
+  if (auto again = checkedState(); !again.isOk()) return again.status();
+  return Status(StatusCode::kIoError, label + ": the table stopped swinging while " + during + " (axis " +
+                                          axisModeName(mode) + ")");
+}
+
 Status PlanRunner::runPoint(int index, const TestPoint& p) {
   const std::string label = pointLabel(index, p);
   const Axis axis = p.axis;
@@ -132,9 +142,7 @@ Status PlanRunner::runPoint(int index, const TestPoint& p) {
   while (clock_.nowS() < settleUntil) {
     FOG_RETURN_IF_ERROR(tick());
     FOG_ASSIGN_OR_RETURN(auto state, checkedState());
-    if (!swinging(state))
-      return Status(StatusCode::kIoError, label + ": the table stopped swinging while settling (axis " +
-                                              axisModeName(state.axis(axis).mode) + ")");
+    if (!swinging(state)) return notSwinging(label, "settling", state.axis(axis).mode);
     clock_.sleepS(std::min(options_.pollIntervalS, settleUntil - clock_.nowS()));
   }
   // Record.
@@ -161,8 +169,7 @@ Status PlanRunner::runPoint(int index, const TestPoint& p) {
     if (!state.isOk() || !swinging(*state)) {
       recorder_.end(index);
       if (!state.isOk()) return state.status();
-      return Status(StatusCode::kIoError, label + ": the table stopped swinging while recording (axis " +
-                                              axisModeName(state->axis(axis).mode) + ")");
+      return notSwinging(label, "recording", state->axis(axis).mode);
     }
     if (clock_.nowS() >= recordBy) {
       recorder_.end(index);

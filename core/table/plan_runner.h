@@ -116,6 +116,9 @@ class PlanRunner {
   Status waitUntil(const std::function<bool(const TableState&)>& done, double timeoutS, const std::string& what);
   Status tick();  // heartbeat when due, stop flag
   Result<TableState> checkedState();
+  // The swing axis was seen in `mode` while `during` ("settling", "recording"):
+  // the controller's reason when it gives one, else "the table stopped swinging".
+  Status notSwinging(const std::string& label, const char* during, AxisMode mode);
   Status bringToRest(bool& atRest);
   void say(const std::string& line);
 
