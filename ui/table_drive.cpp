@@ -35,6 +35,7 @@ class TableDrive::Observed : public table::TableController {
   Status emergencyStop() override { return inner_.emergencyStop(); }
   Status keepAlive() override { return inner_.keepAlive(); }
   Status release() override { return inner_.release(); }
+  double swingRampS(const table::SwingSpec& swing) const override { return inner_.swingRampS(swing); }
 
  private:
   table::TableController& inner_;

@@ -129,13 +129,19 @@ Status PlanRunner::runPoint(int index, const TestPoint& p) {
   say(label + ": move " + where);
   FOG_RETURN_IF_ERROR(waitUntil(allInPlace, options_.moveTimeoutS, label + ": reaching the table position"));
   // Swing.
+  // The settle time is steady swing, as in the simulator: it starts once the
+  // controller's amplitude ramp is over.
+  double rampS = 0.0;
   if (!p.isStatic()) {
-    FOG_RETURN_IF_ERROR(controller_.configureSwing(
-        axis, SwingSpec{p.frequencyHz, p.amplitudeDeg, centre, std::remainder(p.startPhaseDeg, 360.0) + 0.0}));
+    const SwingSpec swing{p.frequencyHz, p.amplitudeDeg, centre, std::remainder(p.startPhaseDeg, 360.0) + 0.0};
+    FOG_RETURN_IF_ERROR(controller_.configureSwing(axis, swing));
     FOG_RETURN_IF_ERROR(controller_.startSwing(axis));
-    say(label + ": swing started");
+    const double ramp = controller_.swingRampS(swing);
+    rampS = std::isfinite(ramp) && ramp > 0.0 ? ramp : 0.0;
+    say(label + ": swing started" +
+        (rampS > 0.0 ? "; ramp " + num(rampS) + " s, then settle " + num(p.settleS) + " s" : std::string()));
   }
-  const double settleUntil = clock_.nowS() + p.settleS;
+  const double settleUntil = clock_.nowS() + rampS + p.settleS;
   auto swinging = [&](const TableState& s) {
     return !s.known || p.isStatic() || s.axis(axis).mode == AxisMode::kSwinging;
   };

@@ -7,7 +7,8 @@
 //     move the table to the point's position (TestPoint::positionDeg: the
 //     swing axis to its swing centre, the others to where they hold) and
 //     wait until it is there at rest
-//     configure the swing, start it, wait the point's settle time
+//     configure the swing, start it, wait the controller's amplitude ramp
+//     (TableController::swingRampS) and then the point's settle time
 //     record: the PointRecorder watches the board's table-angle stream, checks
 //       the swing is the one planned and records the point's duration
 //     stop (bounded deceleration), wait until at rest, rest restBetweenS
