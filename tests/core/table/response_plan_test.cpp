@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <sstream>
 
 #include "core/common/units.h"
@@ -29,14 +30,14 @@ constexpr double kLatencyS = 0.4;
 constexpr double kSampleS = 1e-3;
 
 // Plan time = table time = board time; sleeping delivers the board's table
-// samples up to now - kLatencyS to the recorder (and keeps them).
+// samples up to now - latencyS(now) to the recorder (and keeps them).
 class StreamingClock : public testing::FakeClock {
  public:
   StreamingClock(const EmulatedTable& table, StreamPointRecorder& recorder) : table_(table), recorder_(recorder) {}
   void sleepS(double s) override {
     FakeClock::sleepS(s);
     std::vector<TableSample> batch;
-    for (; next_ <= now - kLatencyS; next_ += kSampleS) {
+    for (; next_ <= now - latencyS(now); next_ += kSampleS) {
       TableSample x;
       x.timeS = next_;
       for (int a = 0; a < kAxisCount; ++a)
@@ -51,6 +52,7 @@ class StreamingClock : public testing::FakeClock {
     recorder_.addTableSamples(batch);
     samples.insert(samples.end(), batch.begin(), batch.end());
   }
+  std::function<double(double)> latencyS = [](double) { return kLatencyS; };  // at host time `now`
   std::vector<TableSample> samples;
   double peakRateDegPerS = 0.0, peakAccelDegPerS2 = 0.0;  // X, over the whole run (ramps and stops too)
 
@@ -125,6 +127,7 @@ struct EmulatorBench {
     EXPECT_TRUE(r.isOk()) << r.status().message();
     if (r) remote = std::move(*r);
     witness = std::make_unique<Witness>(*remote, clock);
+    recorder.setHostClock(&clock);  // as fogbench-cli and the window do
   }
   RunnerResult run(const TestPlan& plan) {
     PlanRunner runner(*witness, clock, recorder, RunnerOptions{}, [this](const std::string& l) { lines.push_back(l); });
@@ -214,6 +217,35 @@ TEST(ResponsePlanOnTheEmulator, RunsEndToEndAndEveryPointIsSwungAsPlanned) {
               "deg/s^2 (limit %g)\n",
               b.clock.now, b.clock.peakRateDegPerS, lim.maxRateDegPerS, b.clock.peakAccelDegPerS2,
               lim.maxAccelDegPerS2);
+}
+
+// The board's stream stalls (3 s late) from 1.5 s into the 2-s ramp until
+// after the settle time has ended (a busy host; an emulator at --speed 10 on
+// a loaded machine): at begin() the newest sample is from inside the ramp.
+// The check still starts after the ramp: the recorder maps the host's time
+// to board time by the least delay it has seen. (Without the host clock the
+// window starts in the ramp, as the 0.365 Hz point did once by hand.)
+TEST(ResponsePlanOnTheEmulator, AStreamLaterThanTheSettleTimeStillRecordsAfterTheRamp) {
+  TestPlan plan;
+  plan.points = {TestPoint{Axis::kX, 0.5, 5.0, 8.0, 2.0}};  // ramp 2 s, settle 2 s
+  EmulatorBench b;
+  ASSERT_TRUE(b.remote);
+  b.clock.latencyS = [](double now) { return now >= 1.5 && now < 4.5 ? 3.0 : kLatencyS; };
+  const auto r = b.run(plan);
+  ASSERT_TRUE(r.status.isOk()) << r.status.message();
+  ASSERT_EQ(b.witness->startedAtS.size(), 1u);
+  const double swingStartS = b.witness->startedAtS[0];
+  EXPECT_LT(swingStartS, 0.1) << "the stall is timed for a swing started at once";
+  const auto windows = b.recorder.windows();
+  ASSERT_EQ(windows.size(), 1u);
+  EXPECT_TRUE(windows[0].complete);
+  EXPECT_GE(windows[0].startS, swingStartS + 2.0 + b.table.params().servoLagS) << "the window holds part of the ramp";
+  std::vector<TableSample> in;
+  for (const auto& x : b.clock.samples)
+    if (x.timeS >= windows[0].startS && x.timeS < windows[0].endS) in.push_back(x);
+  const auto fit = fitSwing(in, Axis::kX, 0.5);
+  ASSERT_TRUE(fit.ok);
+  EXPECT_LT(std::abs(fit.amplitudeDriftDeg), 1e-6 * 5.0);
 }
 
 // A response plan (made for the bench's default limits) on a controller with
