@@ -75,12 +75,16 @@ Result<BenchConstants> readConstants(CliArguments& args, const BenchConstants& d
     FOG_ASSIGN_OR_RETURN(auto parsed, parseGyroSigns(*signs, c.gyroSign));
     c.gyroSign = parsed;
   }
-  if (auto frame = args.text("imu-frame")) {
-    auto parsed = imuFrameFromText(*frame);
-    if (!parsed) return invalidArgument("--imu-frame: " + parsed.status().message());
-    c.imuFrame = *parsed;
-  }
+  FOG_ASSIGN_OR_RETURN(c.imuFrame, readImuFrame(args, c.imuFrame));
   return c;
+}
+
+Result<ImuFrame> readImuFrame(CliArguments& args, const ImuFrame& defaults) {
+  const auto text = args.text("imu-frame");
+  if (!text) return defaults;
+  auto parsed = imuFrameFromText(*text);
+  if (!parsed) return invalidArgument("--imu-frame: " + parsed.status().message());
+  return *parsed;
 }
 
 Result<std::array<int, kAxisCount>> parseGyroSigns(const std::string& text, std::array<int, kAxisCount> signs) {

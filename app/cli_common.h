@@ -14,6 +14,7 @@
 #include "core/analysis/verdict.h"
 #include "app/cli_arguments.h"
 #include "core/common/session_info.h"
+#include "core/common/imu_frame.h"
 #include "core/common/status.h"
 #include "core/common/test_plan.h"
 
@@ -39,6 +40,10 @@ Status checkOutputFile(const std::string& path, bool overwrite, const std::strin
 // --gyro-sign x=-1[,y=-1...] for a gyro axis mounted the other way round;
 // --imu-frame NED|ENU|FRD[:H]|RFU[:H] for where the IMU's axes point at zero.
 Result<BenchConstants> readConstants(CliArguments& args, const BenchConstants& defaults = {});
+// --imu-frame NED|ENU|FRD[:H]|RFU[:H]: the frame given, or `defaults` (the
+// session's stored frame) without the option; "--imu-frame: ..." when it is
+// not one.
+Result<ImuFrame> readImuFrame(CliArguments& args, const ImuFrame& defaults);
 // --gyro-sign's text ("x=-1,z=-1") into per-axis signs (the rest +1).
 // The axes given ("x=-1,z=-1") set their signs; the others keep `signs`
 // (the session's stored ones, +1 without a session).

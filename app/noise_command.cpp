@@ -57,13 +57,9 @@ int noiseCommand(CliArguments& args) {
   if (!(std::abs(*latitude) <= 90.0)) return fail(invalidArgument("--latitude-deg must be within [-90, 90]"), 2);
   options.earth.latitudeDeg = *latitude;
   // The Earth rate a static gyro sees depends on where its axes point.
-  ImuFrame frame = bench.imuFrame;
-  if (auto text = args.text("imu-frame")) {
-    auto parsed = imuFrameFromText(*text);
-    if (!parsed) return fail(invalidArgument("--imu-frame: " + parsed.status().message()), 2);
-    frame = *parsed;
-  }
-  model::applyImuFrame(frame, options.earth);
+  auto frame = readImuFrame(args, bench.imuFrame);
+  if (!frame) return fail(frame.status(), 2);
+  model::applyImuFrame(*frame, options.earth);
   if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
 
   auto reports = noise::analyzeGyroNoise(recording, options);

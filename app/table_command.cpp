@@ -200,6 +200,7 @@ int runTableCommand(CliArguments& args, const std::string& tableSpec) {
   runnerOptions.heartbeatIntervalS = std::min(0.5, *heartbeatS / 4.0) * *speed;
   if (manual) runnerOptions.recordMarginS = *operatorS;
   auto clock = table::steadyClock(*speed);
+  recorder.setHostClock(clock.get());
   options.shouldEnd = [&]() -> std::optional<std::string> {
     if (!runnerDone) return std::nullopt;
     if (runnerResult.status.isOk()) return std::string();

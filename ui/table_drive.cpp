@@ -35,6 +35,7 @@ class TableDrive::Observed : public table::TableController {
   Status emergencyStop() override { return inner_.emergencyStop(); }
   Status keepAlive() override { return inner_.keepAlive(); }
   Status release() override { return inner_.release(); }
+  double swingRampS(const table::SwingSpec& swing) const override { return inner_.swingRampS(swing); }
 
  private:
   table::TableController& inner_;
@@ -185,6 +186,7 @@ void TableDrive::start(acquisition::ByteSource* source, const std::atomic<bool>*
   if (settings_.pulseEquivalentDeg) board_->setPulseEquivalent(*settings_.pulseEquivalentDeg);
   board_->startStreaming();
   clock_ = table::steadyClock(settings_.speed);
+  recorder_.setHostClock(clock_.get());
   table::RunnerOptions options;
   options.pollIntervalS = 0.1 * settings_.speed;
   options.heartbeatIntervalS = std::min(0.5, settings_.heartbeatS / 4.0) * settings_.speed;

@@ -233,6 +233,9 @@ Status calibrateEarthRateAndBias(Replay& replay, const std::vector<FeatureKey>& 
   const double information = v.squaredNorm();
   frame.checked = information > 0.0 && 1.0 / std::sqrt(information) <= 0.3;
   bool useOther = false;
+  // What the replays use when the data cannot decide the vertical.
+  const std::string fallback =
+      stated.stated() ? "the stated frame is used" : "z down is assumed: state the IMU's frame";
   if (frame.checked) {
     frame.verticalRatio = 1.0 + rest(y, configured.headingDeg).cwiseProduct(inFrameCheck).dot(v) / information;
     frame.verticalRatioStd = 1.0 / std::sqrt(information);
@@ -249,8 +252,7 @@ Status calibrateEarthRateAndBias(Replay& replay, const std::vector<FeatureKey>& 
     const std::string shown = std::string("the data show the IMU's z axis ") + (dataUp ? "up" : "down") + " (" +
                               ratio + ")";
     if (!frame.decisive)
-      notes.push_back("the data cannot tell the IMU's z axis up from down (" + ratio + "); " +
-                      (stated.stated() ? "the stated frame is used" : "z down is assumed: state the IMU's frame"));
+      notes.push_back("the data cannot tell the IMU's z axis up from down (" + ratio + "); " + fallback);
     else if (frame.contradicted)
       notes.push_back(shown + "; the bench constants state " + describeImuFrame(stated) +
                       ": the replays use the frame the data show; a latitude of the wrong sign looks the same");
@@ -260,9 +262,8 @@ Status calibrateEarthRateAndBias(Replay& replay, const std::vector<FeatureKey>& 
     else
       notes.push_back(shown + ", as the bench constants state");
   } else {
-    notes.push_back(std::string("the IMU's frame was not checked: the plan's swings do not turn the vertical Earth "
-                                "rate between the gyros; ") +
-                    (stated.stated() ? "the stated frame is used" : "z down is assumed: state the IMU's frame"));
+    notes.push_back("the IMU's frame was not checked: the plan's swings do not turn the vertical Earth rate between "
+                    "the gyros; " + fallback);
   }
   // The other vertical is the configured frame with y and z turned over:
   // its heading is the scan's, negated.

@@ -112,9 +112,10 @@ double EmulatedTable::rateDegPerS(Axis axis, double t) const {
 }
 
 AxisMode EmulatedTable::mode(Axis axis, double t) const {
-  const double tr = t - params_.servoLagS;
-  const Piece& p = pieceAt(axis, tr);
-  const bool moving = tr - p.t0 < p.duration();
+  // The commanded reference's mode, as a controller reports it: an axis told
+  // to swing reports SWING at once, not a servo lag later.
+  const Piece& p = pieceAt(axis, t);
+  const bool moving = t - p.t0 < p.duration();
   switch (p.kind) {
     case Piece::kHold: return emergency_[ix(axis)] ? AxisMode::kEmergencyStop : AxisMode::kRest;
     case Piece::kMove: return moving ? AxisMode::kPositioning : AxisMode::kRest;

@@ -51,7 +51,8 @@ class EmulatedTable {
   // Actual angle and rate (the servo's output) at table time t.
   double angleDeg(Axis axis, double t) const;
   double rateDegPerS(Axis axis, double t) const;
-  // Mode at table time t (of the reference: a swing is "swinging" once started).
+  // Mode at table time t, of the commanded reference (no servo lag): a swing is
+  // "swinging" from the instant it is started, a stop "stopping" from its command.
   AxisMode mode(Axis axis, double t) const;
 
   // Commands at table time t (t never decreases between calls). Ok, or why not

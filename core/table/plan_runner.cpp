@@ -79,6 +79,16 @@ Status PlanRunner::waitUntil(const std::function<bool(const TableState&)>& done,
   }
 }
 
+Status PlanRunner::notSwinging(const std::string& label, const char* during, AxisMode mode) {
+  // A controller that stopped the axis for an interlock, an emergency stop or
+  // its heartbeat says so; but the flags of the state read that saw the axis
+  // stopped may predate the stop (the remote driver reads them first), so
+  // read once more for the reason.
+  if (auto again = checkedState(); !again.isOk()) return again.status();
+  return Status(StatusCode::kIoError, label + ": the table stopped swinging while " + during + " (axis " +
+                                          axisModeName(mode) + ")");
+}
+
 Status PlanRunner::runPoint(int index, const TestPoint& p) {
   const std::string label = pointLabel(index, p);
   const Axis axis = p.axis;
@@ -119,22 +129,26 @@ Status PlanRunner::runPoint(int index, const TestPoint& p) {
   say(label + ": move " + where);
   FOG_RETURN_IF_ERROR(waitUntil(allInPlace, options_.moveTimeoutS, label + ": reaching the table position"));
   // Swing.
+  // The settle time is steady swing, as in the simulator: it starts once the
+  // controller's amplitude ramp is over.
+  double rampS = 0.0;
   if (!p.isStatic()) {
-    FOG_RETURN_IF_ERROR(controller_.configureSwing(
-        axis, SwingSpec{p.frequencyHz, p.amplitudeDeg, centre, std::remainder(p.startPhaseDeg, 360.0) + 0.0}));
+    const SwingSpec swing{p.frequencyHz, p.amplitudeDeg, centre, std::remainder(p.startPhaseDeg, 360.0) + 0.0};
+    FOG_RETURN_IF_ERROR(controller_.configureSwing(axis, swing));
     FOG_RETURN_IF_ERROR(controller_.startSwing(axis));
-    say(label + ": swing started");
+    const double ramp = controller_.swingRampS(swing);
+    rampS = std::isfinite(ramp) && ramp > 0.0 ? ramp : 0.0;
+    say(label + ": swing started" +
+        (rampS > 0.0 ? "; ramp " + num(rampS) + " s, then settle " + num(p.settleS) + " s" : std::string()));
   }
-  const double settleUntil = clock_.nowS() + p.settleS;
+  const double settleUntil = clock_.nowS() + rampS + p.settleS;
   auto swinging = [&](const TableState& s) {
     return !s.known || p.isStatic() || s.axis(axis).mode == AxisMode::kSwinging;
   };
   while (clock_.nowS() < settleUntil) {
     FOG_RETURN_IF_ERROR(tick());
     FOG_ASSIGN_OR_RETURN(auto state, checkedState());
-    if (!swinging(state))
-      return Status(StatusCode::kIoError, label + ": the table stopped swinging while settling (axis " +
-                                              axisModeName(state.axis(axis).mode) + ")");
+    if (!swinging(state)) return notSwinging(label, "settling", state.axis(axis).mode);
     clock_.sleepS(std::min(options_.pollIntervalS, settleUntil - clock_.nowS()));
   }
   // Record.
@@ -161,8 +175,7 @@ Status PlanRunner::runPoint(int index, const TestPoint& p) {
     if (!state.isOk() || !swinging(*state)) {
       recorder_.end(index);
       if (!state.isOk()) return state.status();
-      return Status(StatusCode::kIoError, label + ": the table stopped swinging while recording (axis " +
-                                              axisModeName(state->axis(axis).mode) + ")");
+      return notSwinging(label, "recording", state->axis(axis).mode);
     }
     if (clock_.nowS() >= recordBy) {
       recorder_.end(index);

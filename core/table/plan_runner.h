@@ -7,7 +7,8 @@
 //     move the table to the point's position (TestPoint::positionDeg: the
 //     swing axis to its swing centre, the others to where they hold) and
 //     wait until it is there at rest
-//     configure the swing, start it, wait the point's settle time
+//     configure the swing, start it, wait the controller's amplitude ramp
+//     (TableController::swingRampS) and then the point's settle time
 //     record: the PointRecorder watches the board's table-angle stream, checks
 //       the swing is the one planned and records the point's duration
 //     stop (bounded deceleration), wait until at rest, rest restBetweenS
@@ -116,6 +117,9 @@ class PlanRunner {
   Status waitUntil(const std::function<bool(const TableState&)>& done, double timeoutS, const std::string& what);
   Status tick();  // heartbeat when due, stop flag
   Result<TableState> checkedState();
+  // The swing axis was seen in `mode` while `during` ("settling", "recording"):
+  // the controller's reason when it gives one, else "the table stopped swinging".
+  Status notSwinging(const std::string& label, const char* during, AxisMode mode);
   Status bringToRest(bool& atRest);
   void say(const std::string& line);
 

@@ -40,7 +40,7 @@ class FdTransport : public ByteTransport {
         bytes.remove_prefix(static_cast<std::size_t>(n));
         continue;
       }
-      if (n < 0 && errno != EAGAIN && errno != EINTR) return lost(std::strerror(errno));
+      if (n < 0 && errno != EAGAIN && errno != EINTR) return lost(failed(errno));
       const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(giveUp - Clock::now());
       if (left.count() <= 0) return lost("no room to write for " + std::to_string(writeTimeout_.count()) + " ms");
       pollfd p{fd_, POLLOUT, 0};
@@ -67,10 +67,19 @@ class FdTransport : public ByteTransport {
     }
     if (n == 0) return lost(socket_ ? "connection closed by the controller" : "the device closed");
     if (errno == EAGAIN || errno == EINTR) return std::size_t{0};
+    if (socket_ && (errno == ECONNRESET || errno == EPIPE)) return lost(failed(errno));
     return lost(std::string("vanished: ") + std::strerror(errno));
   }
 
  private:
+  // A controller that closes its end shows as EOF on a read, or as EPIPE /
+  // ECONNRESET on whichever call comes next when a line was in flight: one
+  // reason either way.
+  std::string failed(int err) const {
+    if (socket_ && (err == EPIPE || err == ECONNRESET))
+      return std::string("connection closed by the controller (") + std::strerror(err) + ")";
+    return std::strerror(err);
+  }
   Status lost(const std::string& why) {
     broken_ = ioError("table link " + description_ + " lost: " + why);
     return broken_;

@@ -248,4 +248,8 @@ Status RemoteTable::keepAlive() { return command("SYST:HEART", true); }
 
 Status RemoteTable::release() { return command("SYST:HEART:TIM 0"); }
 
+double RemoteTable::swingRampS(const SwingSpec& swing) const {
+  return swing.frequencyHz > 0.0 && std::isfinite(swing.frequencyHz) ? 1.0 / swing.frequencyHz : 0.0;
+}
+
 }  // namespace fog::table

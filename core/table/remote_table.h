@@ -59,6 +59,9 @@ class RemoteTable : public TableController {
   Status emergencyStop() override;
   Status keepAlive() override;
   Status release() override;  // SYST:HEART:TIM 0
+  // The protocol's AXIS:a:START ramps the amplitude up over one whole period
+  // (docs/table-control.md): 1 / frequency.
+  double swingRampS(const SwingSpec& swing) const override;
 
   // One query / one command, for tests and tools.
   Result<std::string> query(const std::string& line, bool quiet = false);

@@ -164,6 +164,17 @@ void StreamPointRecorder::addTableSamples(std::span<const TableSample> samples) 
     while (!buffer_.empty() && buffer_.front().timeS < nowS_ - keep) buffer_.pop_front();
     check();  // at most every 0.1 s of board time while checking
   }
+  if (hostClock_ && !samples.empty()) {
+    const double offset = hostClock_->nowS() - nowS_;
+    if (!haveOffset_ || offset < leastOffsetS_) leastOffsetS_ = offset;
+    haveOffset_ = true;
+  }
+}
+
+void StreamPointRecorder::setHostClock(RunnerClock* clock) {
+  std::lock_guard lock(mutex_);
+  hostClock_ = clock;
+  haveOffset_ = false;
 }
 
 void StreamPointRecorder::check() {
@@ -218,6 +229,12 @@ Status StreamPointRecorder::begin(int index, const TestPoint& point) {
   index_ = index;
   point_ = point;
   beganS_ = nowS_;
+  // The board time of this instant, as if the stream came with its least
+  // delay; at most the settle time ahead of the newest sample, so a board
+  // clock running slower than the host's (or an emulator at another
+  // --speed) costs a point no more than that.
+  if (hostClock_ && haveOffset_)
+    beganS_ = std::clamp(hostClock_->nowS() - leastOffsetS_, nowS_, nowS_ + std::max(point.settleS, 0.0));
   lastCheckS_ = -1.0;
   lastMismatch_ = "checking the motion from board time " + num(beganS_, "%.3f") + " s";
   phase_ = Phase::kChecking;

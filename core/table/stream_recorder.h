@@ -73,6 +73,15 @@ class StreamPointRecorder : public PointRecorder {
  public:
   explicit StreamPointRecorder(SwingCheckOptions options = {}) : options_(options) {}
 
+  // The runner's clock (plan seconds, the board's time scale). With it, a
+  // point's check starts no earlier than the board time that matches
+  // begin(): the host's time less the smallest offset (host time minus the
+  // newest board time) seen so far, i.e. the stream as if it arrived with
+  // its least delay. Without it, at the newest sample received, which is as
+  // late as the stream (a burst delayed past the settle time then lets the
+  // check reach back into the swing's ramp). Thread-safe; may be null.
+  void setHostClock(RunnerClock* clock);
+
   // Acquisition side.
   void addFrames(std::span<const protocol::DecodedFrame> frames);
   void addTableSamples(std::span<const TableSample> samples);
@@ -98,6 +107,9 @@ class StreamPointRecorder : public PointRecorder {
   std::int64_t firstTicks_ = 0;
   double counterHz_ = 10e6;
   double nowS_ = 0.0;
+  RunnerClock* hostClock_ = nullptr;
+  double leastOffsetS_ = 0.0;  // host time - newest board time, smallest seen
+  bool haveOffset_ = false;
   std::string linkFailure_;
 
   enum class Phase { kIdle, kChecking, kRecording, kDone } phase_ = Phase::kIdle;

@@ -97,6 +97,14 @@ class TableController {
   // called after a failure, so a host that lost track of the table leaves
   // the watchdog armed.
   virtual Status release() { return Status::ok(); }
+  // Seconds from startSwing() until the swing runs at its full amplitude
+  // (the controller's ramp). The runner starts a point's settle time after
+  // it, so the plan's settleS is steady swing as in the simulator. 0 when
+  // the driver cannot tell (an operator-set table: the stream check decides).
+  virtual double swingRampS(const SwingSpec& swing) const {
+    (void)swing;
+    return 0.0;
+  }
 };
 
 // Checks every point of a plan against the limits (amplitude, frequency, peak

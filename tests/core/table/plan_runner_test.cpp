@@ -128,6 +128,32 @@ TEST(PlanRunner, AnInterlockStopsTheRunAndNothingElseStarts) {
                            [](const std::string& s) { return s.rfind("start", 0) == 0 || s.rfind("move", 0) == 0; }));
 }
 
+// The remote driver reads the controller's flags before the axes: an
+// interlock that trips between the two reads shows the axis at rest with no
+// reason. The runner reads the state once more and names the controller's.
+TEST(PlanRunner, AnAxisTheControllerStoppedIsReportedWithTheControllersReason) {
+  struct Tripping : FakeController {
+    using FakeController::FakeController;
+    double tripAtS = 4.0;  // mid-recording of point 1 (0.5 s move, 2 s settle, 4 s duration)
+    int readsSinceTrip = 0;
+    Result<TableState> state() override {
+      if (clock_.now < tripAtS) return FakeController::state();
+      for (auto& c : cmd) c = {AxisMode::kRest, c.target, c.since};  // the controller stopped the table
+      auto s = FakeController::state();
+      if (s) s->interlockOpen = readsSinceTrip++ > 0;  // the first read's flags predate the trip
+      return s;
+    }
+  };
+  FakeClock clock;
+  Tripping table(clock);
+  ScriptedRecorder recorder(clock);
+  PlanRunner runner(table, clock, recorder);
+  auto r = runner.run(threeAxisPlan(), nullptr);
+  EXPECT_EQ(r.status.message(), "point 1 (X 1 Hz / 3 deg): the table controller reports interlock open");
+  EXPECT_EQ(table.readsSinceTrip, 3) << "the read that saw the stop, the one after it, and the final rest check";
+  EXPECT_EQ(r.pointsDone, 0);
+}
+
 TEST(PlanRunner, ALostLinkTriesStopThenEmergencyStop) {
   Bench b;
   b.table.failStateAfter = 8;  // mid-swing
