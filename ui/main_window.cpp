@@ -282,22 +282,39 @@ void MainWindow::buildToolBar() {
     button->setStyleSheet("QToolButton { background: #c00000; color: white; font-weight: bold; padding: 3px 10px; }"
                           "QToolButton:disabled { background: #d8b0b0; color: #f4f4f4; }");
   }
-  auto follow = [this] {
-    emergencyStopAction_->setEnabled(tablePanel_->connected());
-    emergencyStopAction_->setToolTip(tablePanel_->connected()
-                                         ? tr("Stop every axis of the table at once (latched at the controller)")
-                                         : tablePanel_->disabledReason() + tr(" (View ▸ Table controls)"));
-  };
-  connect(tablePanel_, &TablePanel::availabilityChanged, this, follow);
-  follow();
+  connect(tablePanel_, &TablePanel::availabilityChanged, this, &MainWindow::updateEmergencyStop);
+  updateEmergencyStop();
+}
+
+void MainWindow::updateEmergencyStop() {
+  const bool runDrivesTable = table_ && runner_.isRunning();
+  const bool available = tablePanel_->connected() || runDrivesTable;
+  emergencyStopAction_->setEnabled(available);
+  emergencyStopAction_->setToolTip(available ? tr("Stop every axis of the table at once (latched at the controller)")
+                                             : tablePanel_->disabledReason() + tr(" (View ▸ Table controls)"));
 }
 
 void MainWindow::emergencyStop() {
-  const QString why = tablePanel_->emergencyStop();
+  // The run's own connection first: it is the one moving the table.
+  const bool throughRun = table_ && runner_.isRunning() && table_->requestEmergencyStop();
+  QString why;
+  bool throughPanel = false;
+  if (tablePanel_->connected()) {
+    why = tablePanel_->emergencyStop();
+    throughPanel = why.isEmpty();
+  }
   if (runner_.isRunning()) stopRun();
-  tableDock_->show();  // where the axes' state and the message are
-  if (!why.isEmpty()) reportError(tr("Emergency stop"), tr("The emergency stop failed"), why);
-  else tell(tr("Emergency stop sent to the table."));
+  if (tablePanel_->connected()) tableDock_->show();  // where the axes' state and the message are
+  if (!throughRun && !throughPanel)
+    reportError(tr("Emergency stop"), tr("The emergency stop failed"),
+                why.isEmpty() ? tr("No table connection is open: neither a run drives the table nor is the table "
+                                   "panel connected. Use the controller's own emergency stop.")
+                              : why);
+  else if (throughRun)
+    tell(tr("Emergency stop: the run's table driver sends it at its next step; the run stops.") +
+         (why.isEmpty() ? QString() : tr(" The table panel's connection failed: %1").arg(why)));
+  else
+    tell(tr("Emergency stop sent to the table."));
 }
 
 void MainWindow::buildMenus() {
@@ -837,6 +854,7 @@ void MainWindow::startRun() {
   }
   stopRequested_ = false;
   setRunning(true);
+  updateEmergencyStop();
   liveTimer_.start();
   showView(kLive);
   tell(tr("Running: %1 …").arg(sourceText));
@@ -926,6 +944,7 @@ void MainWindow::showOutcome(std::shared_ptr<const RunOutcome> outcome) {
   if (tableNotAtRest)
     message += tr(". WARNING: the table was not seen at rest at the end; check it");
   table_.reset();
+  updateEmergencyStop();
   tell(message);
   configureView_->setMessage(message.toHtmlEscaped());
   // A run the operator did not stop that ended early, or gave no delay, is
@@ -957,6 +976,7 @@ void MainWindow::showFailure(const QString& message) {
   // A run that failed before it recorded never moved the table (a refused
   // plan, an unreachable controller or board).
   table_.reset();
+  updateEmergencyStop();
   liveView_->endRun();
   setRunning(false);
   reportError(tr("Run failed"), tr("Run failed"), message);

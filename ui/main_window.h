@@ -73,10 +73,14 @@ class MainWindow : public QMainWindow {
   LiveView* liveView() const { return liveView_; }
   ResultView* resultView() const { return resultView_; }
   // The table's axis panel (a dock: View ▸ Table controls) and the tool
-  // bar's emergency stop, enabled while a table is connected.
+  // bar's emergency stop, enabled while the panel is connected or a run
+  // drives a table.
   TablePanel* tablePanel() const { return tablePanel_; }
   QAction* emergencyStopAction() const { return emergencyStopAction_; }
-  // The tool bar's emergency stop: the panel's, and stops a run.
+  // The tool bar's emergency stop: through the run's own controller
+  // connection when a run drives the table (TableDrive::requestEmergencyStop),
+  // through the panel's when it is connected (both when both), and the run
+  // is stopped.
   void emergencyStop();
   SessionBrowser* sessionBrowser() const { return sessionBrowser_; }
   DiagnosisView* diagnosisView() const { return diagnosisView_; }
@@ -257,6 +261,7 @@ class MainWindow : public QMainWindow {
   TablePanel* tablePanel_ = nullptr;
   QDockWidget* tableDock_ = nullptr;
   QAction* emergencyStopAction_ = nullptr;
+  void updateEmergencyStop();
   SessionBrowser* sessionBrowser_ = nullptr;
   DiagnosisView* diagnosisView_ = nullptr;
   NoiseView* noiseView_ = nullptr;

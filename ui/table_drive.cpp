@@ -193,9 +193,11 @@ void TableDrive::start(acquisition::ByteSource* source, const std::atomic<bool>*
   if (settings_.manual) options.recordMarginS = settings_.operatorTimeoutS;
   // `stop` (the Stop button, closing the window) ends the run; so does the
   // recording ending (finish()).
+  runnerStarted_ = true;
   runner_ = std::thread([this, stop, options] {
     table::PlanRunner r(*observed_, *clock_, *marking_, options,
                         [this](const std::string& line) { log("step", line); });
+    r.setEmergencyFlag(&emergency_);
     result_ = r.run(plan_, stop);
     if (result_.status.isOk()) board_->markDone();
     setSnapshot([&](TableSnapshot& s) {
@@ -206,6 +208,13 @@ void TableDrive::start(acquisition::ByteSource* source, const std::atomic<bool>*
     });
     runnerDone_ = true;
   });
+}
+
+bool TableDrive::requestEmergencyStop() {
+  if (!runnerStarted_ || runnerDone_) return false;
+  emergency_ = true;
+  log("step", "emergency stop asked by the operator");
+  return true;
 }
 
 void TableDrive::observe(const acquisition::AcquisitionBatch& batch) { recorder_.addFrames(batch.frames); }

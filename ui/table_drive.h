@@ -10,6 +10,7 @@
 //                   configure(opts)  the acquisition ends when the runner does; points cut from the stream
 //                   start(src, stop) the runner's thread drives the table; `stop` (the Stop button,
 //                                    closing the window) ends it and brings the table to rest
+//   any thread:     requestEmergencyStop()  the runner sends the emergency stop at its next step
 //                   observe(batch)   every decoded batch (the swing check reads the table angle)
 //                   finish(why)      after the acquisition: the runner ends (the recording is
 //                                    over), the table is brought to rest, the thread joined
@@ -96,6 +97,12 @@ class TableDrive {
 
   // Any thread.
   TableSnapshot snapshot() const;
+  // The tool bar's emergency stop while this run holds the controller: the
+  // runner's thread sends it at its next step (PlanRunner::setEmergencyFlag;
+  // within a poll interval, or after the controller call under way) and the
+  // run ends. False when no runner is driving the table (before start(), or
+  // after the plan ended).
+  bool requestEmergencyStop();
 
  private:
   class Observed;   // the controller, its state copied into the snapshot
@@ -112,7 +119,9 @@ class TableDrive {
   std::unique_ptr<Marking> marking_;
   std::unique_ptr<table::RunnerClock> clock_;
   std::thread runner_;
+  std::atomic<bool> runnerStarted_{false};
   std::atomic<bool> runnerDone_{false};
+  std::atomic<bool> emergency_{false};
   table::RunnerResult result_;  // written by the runner's thread before runnerDone_
 
   mutable std::mutex mutex_;  // guards snapshot_ and log_

@@ -49,6 +49,7 @@ void PlanRunner::say(const std::string& line) {
 }
 
 Status PlanRunner::tick() {
+  if (emergency_ && emergency_->load()) return Status(StatusCode::kInvalidArgument, "emergency stop by the operator");
   if (stop_ && stop_->load()) return Status(StatusCode::kInvalidArgument, "stopped by the operator");
   FOG_RETURN_IF_ERROR(recorder_.health());
   const double now = clock_.nowS();
@@ -202,11 +203,12 @@ Status PlanRunner::runPoint(int index, const TestPoint& p) {
   return Status::ok();
 }
 
-Status PlanRunner::bringToRest(bool& atRest) {
+Status PlanRunner::bringToRest(bool& atRest, bool emergency) {
   atRest = false;
-  Status stopped = controller_.stopAll();
+  Status stopped = emergency ? Status(StatusCode::kInvalidArgument, "the operator asked for it") : controller_.stopAll();
   if (!stopped.isOk()) {
-    say("stop failed (" + stopped.message() + "); emergency stop");
+    say((emergency ? "emergency stop (" : "stop failed (") + stopped.message() + ")" +
+        (emergency ? std::string() : std::string("; emergency stop")));
     Status e = controller_.emergencyStop();
     if (!e.isOk()) {
       say("emergency stop failed too (" + e.message() + "): the table controller is unreachable; its heartbeat "
@@ -244,7 +246,7 @@ RunnerResult PlanRunner::run(const TestPlan& plan, const std::atomic<bool>* stop
     result.status = std::move(why);
     say("run stopped: " + result.status.message() + "; bringing the table to rest");
     bool atRest = false;
-    Status rested = bringToRest(atRest);
+    Status rested = bringToRest(atRest, emergency_ && emergency_->load());
     result.tableAtRest = atRest;
     say(atRest ? "table at rest" : "the table was NOT seen at rest: " + rested.message());
     return result;
@@ -276,7 +278,8 @@ RunnerResult PlanRunner::run(const TestPlan& plan, const std::atomic<bool>* stop
     if (auto s = runPoint(static_cast<int>(i), plan.points[i]); !s.isOk()) {
       // Every reason names the point it stopped at.
       const std::string label = pointLabel(static_cast<int>(i), plan.points[i]);
-      if (s.message().rfind(label, 0) != 0 && s.message() != "stopped by the operator")
+      if (s.message().rfind(label, 0) != 0 && s.message() != "stopped by the operator" &&
+          s.message() != "emergency stop by the operator")
         s = Status(s.code(), label + ": " + s.message());
       return fail(s);
     }

@@ -110,17 +110,25 @@ class PlanRunner {
              RunnerOptions options = {}, std::function<void(const std::string&)> log = {});
   // Runs `plan`; `stop` (may be null) ends it early as "stopped by the operator".
   RunnerResult run(const TestPlan& plan, const std::atomic<bool>* stop);
+  // An emergency stop asked from another thread (the GUI's tool bar while a
+  // run holds the controller): once set, the runner's next step (within a
+  // poll interval, or the end of the controller call under way) ends the
+  // run as "emergency stop by the operator" and sends emergencyStop() — not
+  // the bounded-deceleration stop — before it waits for rest. Set before run().
+  void setEmergencyFlag(const std::atomic<bool>* emergency) { emergency_ = emergency; }
 
  private:
   Status runPoint(int index, const TestPoint& point);
   // Polls state (and sends heartbeats) until `done(state)` or timeoutS.
   Status waitUntil(const std::function<bool(const TableState&)>& done, double timeoutS, const std::string& what);
-  Status tick();  // heartbeat when due, stop flag
+  Status tick();  // heartbeat when due, stop and emergency flags
   Result<TableState> checkedState();
   // The swing axis was seen in `mode` while `during` ("settling", "recording"):
   // the controller's reason when it gives one, else "the table stopped swinging".
   Status notSwinging(const std::string& label, const char* during, AxisMode mode);
-  Status bringToRest(bool& atRest);
+  // stopAll() (emergencyStop() when it fails, or at once when `emergency`),
+  // then waits (bounded) for every axis at rest.
+  Status bringToRest(bool& atRest, bool emergency);
   void say(const std::string& line);
 
   TableController& controller_;
@@ -129,6 +137,7 @@ class PlanRunner {
   RunnerOptions options_;
   std::function<void(const std::string&)> log_;
   const std::atomic<bool>* stop_ = nullptr;
+  const std::atomic<bool>* emergency_ = nullptr;
   double lastHeartbeatS_ = -1e300;
   Axis activeAxis_ = Axis::kX;
   std::array<double, kAxisCount> lastTargetDeg_{};  // where the runner last put each axis

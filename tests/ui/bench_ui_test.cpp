@@ -80,6 +80,7 @@
 #include "ui/result_view.h"
 #include "ui/plots/series_plot.h"
 #include "ui/session_browser.h"
+#include "ui/table_panel.h"
 #include "ui/window_host.h"
 
 using fog::ui::MainWindow;
@@ -1410,6 +1411,60 @@ class BenchUiTest : public QObject {
     const auto& measured = outcome->report->points.front();
     QVERIFY2(std::abs(measured.lagMs - 0.4658) <= std::max(5.0 * measured.lagStdMs, 0.002),
              qPrintable(QString("lag %1 ± %2 ms").arg(measured.lagMs).arg(measured.lagStdMs)));
+    emu.waitForFinished(20000);
+  }
+
+  // The tool bar's emergency stop during a run that drives a remote table,
+  // the table panel not connected: it is enabled, goes through the run's own
+  // controller connection (SYST:ESTOP, not the decelerating STOP), and the
+  // run ends with what it recorded.
+  void theEmergencyStopDuringARemoteTableRunGoesThroughTheRunsConnection() {
+    QProcess emu;
+    QString table, board;
+    startTableEmu(emu, {"--speed", "5"}, &table, &board);
+    QVERIFY2(!table.isEmpty() && !board.isEmpty(), emu.readAllStandardError().constData());
+    QTemporaryDir folder;
+    auto w = window();
+    w->setSessionFolder(folder.path());
+    QSignalSpy ended(w.get(), &MainWindow::runEnded);
+    fog::TestPlan plan;
+    fog::TestPoint point;
+    point.axis = fog::Axis::kX;
+    point.frequencyHz = 2.0;
+    point.amplitudeDeg = 1.5;
+    point.durationS = 60.0;
+    point.settleS = 1.0;
+    plan.points = {point};
+    w->planEditor()->setPlan(plan);
+    w->useSerialBoard(board, fog::ui::ConfigureView::TableDriver::kRemote, table);
+    w->configureView()->setPace(5.0);
+    QVERIFY(!w->tablePanel()->connected());
+    QVERIFY(!w->emergencyStopAction()->isEnabled());  // no table connection yet
+    click(*w, "runButton");
+    QTRY_VERIFY_WITH_TIMEOUT(w->liveView()->traces().phase() == fog::protocol::TestPhase::kRecording, 30000);
+    QVERIFY2(w->emergencyStopAction()->isEnabled(), qPrintable(w->emergencyStopAction()->toolTip()));
+    w->emergencyStopAction()->trigger();
+    QTRY_VERIFY_WITH_TIMEOUT(!ended.isEmpty(), 30000);
+    QVERIFY(!w->emergencyStopAction()->isEnabled());  // the run's connection is closed
+    const auto* outcome = w->lastOutcome();
+    QVERIFY(outcome);
+    QVERIFY(!outcome->complete);
+    auto reader = fog::session::SessionReader::open(outcome->sessionPath);
+    QVERIFY(reader);
+    auto log = (*reader)->tableLog();
+    QVERIFY(log);
+    bool asked = false, estopSent = false, stopSent = false, ended_ = false;
+    for (const auto& e : *log) {
+      asked = asked || (e.kind == "step" && e.text == "emergency stop asked by the operator");
+      estopSent = estopSent || (e.kind == "command" && e.text == "SYST:ESTOP");
+      stopSent = stopSent || (e.kind == "command" && e.text == "STOP");
+      ended_ = ended_ || (e.kind == "step" && e.text.find("emergency stop by the operator") != std::string::npos);
+    }
+    QVERIFY(asked);
+    QVERIFY(estopSent);
+    QVERIFY(!stopSent);
+    QVERIFY(ended_);
+    emu.kill();
     emu.waitForFinished(20000);
   }
 

@@ -40,7 +40,7 @@ class FakeController : public TableController {
                     ? (settled ? AxisMode::kRest : c.mode)
                     : c.mode;
       ax.positionDeg = c.mode == AxisMode::kPositioning && !settled ? c.target + 1.0 : c.target;
-      ax.rateDegPerS = ax.mode == AxisMode::kRest ? 0.0 : 5.0;
+      ax.rateDegPerS = ax.mode == AxisMode::kRest || ax.mode == AxisMode::kEmergencyStop ? 0.0 : 5.0;
     }
     return s;
   }
@@ -73,8 +73,11 @@ class FakeController : public TableController {
       if (c.mode != AxisMode::kRest) c = {AxisMode::kStopping, 0.0, clock_.now};
     return Status::ok();
   }
+  // Every axis stops at once and latches (at rest in the runner's eyes).
   Status emergencyStop() override {
     log.push_back("estop");
+    for (auto& c : cmd) c = {AxisMode::kEmergencyStop, c.target, clock_.now};
+    base.emergencyStopped = true;
     return Status::ok();
   }
   Status keepAlive() override {

@@ -119,6 +119,36 @@ TEST(PlanRunner, TheStopFlagStopsTheTableMidSwing) {
   EXPECT_EQ(rec.ended, (std::vector<int>{0}));
 }
 
+// The GUI's emergency stop while the runner holds the controller: the next
+// step ends the run and sends the emergency stop, not the decelerating stop.
+TEST(PlanRunner, TheEmergencyFlagEmergencyStopsTheTableMidSwing) {
+  Bench b;
+  std::atomic<bool> emergency{false};
+  struct Raise : ScriptedRecorder {
+    using ScriptedRecorder::ScriptedRecorder;
+    std::atomic<bool>* flag = nullptr;
+    RecorderProgress poll() override {
+      if (clock_.now > beganAt.back() + 1.0) flag->store(true);
+      return {};
+    }
+  } rec(b.clock);
+  rec.flag = &emergency;
+  PlanRunner runner(b.table, b.clock, rec);
+  runner.setEmergencyFlag(&emergency);
+  auto r = runner.run(threeAxisPlan(), nullptr);
+  EXPECT_EQ(r.status.message(), "emergency stop by the operator");
+  EXPECT_TRUE(r.tableAtRest);
+  EXPECT_EQ(b.table.log.back(), "estop");
+  EXPECT_TRUE(std::find(b.table.log.begin(), b.table.log.end(), "stopAll") == b.table.log.end())
+      << "an emergency stop is not the decelerating stop";
+  EXPECT_EQ(std::count_if(b.table.log.begin(), b.table.log.end(), [](const std::string& s) { return s.rfind("start", 0) == 0; }),
+            1);  // the first point's swing only
+  // Raised 1 s into the recording (after a 0.5 s move and 2 s of settling),
+  // honoured at the next poll: long before the 4-s recording would end.
+  EXPECT_LT(b.clock.now, 0.5 + 2.0 + 1.0 + 2 * RunnerOptions{}.pollIntervalS + 1e-9);
+  EXPECT_EQ(rec.ended, (std::vector<int>{0}));
+}
+
 TEST(PlanRunner, AnInterlockStopsTheRunAndNothingElseStarts) {
   Bench b;
   b.table.base.interlockOpen = true;
