@@ -27,6 +27,7 @@
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QCoreApplication>
+#include <QTabWidget>
 #include <QTimer>
 #include <cstdio>
 #include <cstring>
@@ -38,7 +39,10 @@
 #include "ui/bench_presets.h"
 #include "core/common/memory.h"
 #include "ui/language/language.h"
+#include "ui/bode_view.h"
+#include "ui/compare_view.h"
 #include "ui/main_window.h"
+#include "ui/result_view.h"
 #include "ui/plan_editor.h"
 #include "ui/window_host.h"
 
@@ -171,6 +175,15 @@ int main(int argc, char* argv[]) {
   fog::app::ScreenshotRequest screenshot{parser.value(screenshotOption), view, after, parser.isSet(afterOption),
                                         parser.isSet(openOption)};
   const bool run = parser.isSet(runOption) || fog::app::screenshotNeedsRun(screenshot);
+  // --view response: Results on the frequency response once the result is
+  // there (connected before the screenshot, which must see it).
+  if (view == "response") {
+    auto showResponse = [&window] {
+      window.resultView()->leftTabs()->setCurrentWidget(window.resultView()->bodeView());
+    };
+    QObject::connect(&window, &fog::ui::MainWindow::sessionOpened, &window, showResponse);
+    QObject::connect(&window, &fog::ui::MainWindow::runEnded, &window, showResponse);
+  }
   if (!screenshot.path.isEmpty() && compared.isEmpty()) fog::app::armScreenshot(window, screenshot, run);
 
   window.setRemembering(true);
@@ -199,7 +212,12 @@ int main(int argc, char* argv[]) {
     const QString path = screenshot.path;
     QTimer::singleShot(0, &window, [&window, compared, path, view] {
       QWidget* compareWindow = window.compareSessions(compared);
-      if (!path.isEmpty()) fog::app::armCompareScreenshot(compareWindow, path, view);
+      auto* compareView = compareWindow->findChild<fog::ui::CompareView*>();
+      if (view == "response" && compareView)
+        QObject::connect(compareView, &fog::ui::CompareView::loaded, compareWindow, [compareView] {
+          if (auto* tabs = compareView->findChild<QTabWidget*>("compareTabs")) tabs->setCurrentWidget(compareView->bodeView());
+        });
+      if (!path.isEmpty()) fog::app::armCompareScreenshot(compareWindow, path);
     });
   } else if (parser.isSet(openOption)) {
     const QString path = parser.value(openOption);

@@ -1,15 +1,12 @@
 #include "app/gui_screenshot.h"
 
 #include <QApplication>
-#include <QTabWidget>
 #include <QPixmap>
 #include <QTimer>
 #include <cstdio>
 
-#include "ui/bode_view.h"
 #include "ui/compare_view.h"
 #include "ui/main_window.h"
-#include "ui/result_view.h"
 
 namespace fog::app {
 namespace {
@@ -69,7 +66,6 @@ void armScreenshot(fog::ui::MainWindow& window, const ScreenshotRequest& request
   } else {
     auto done = [&window, screenshot, view](bool succeeded) {
       if (view == "sessions") window.showView(MainWindow::kSessions);
-      if (view == "response") window.resultView()->leftTabs()->setCurrentWidget(window.resultView()->bodeView());
       saveAndQuit(window, screenshot, succeeded);
     };
     QObject::connect(&window, &MainWindow::runEnded, &window, done);
@@ -77,17 +73,14 @@ void armScreenshot(fog::ui::MainWindow& window, const ScreenshotRequest& request
   }
 }
 
-void armCompareScreenshot(QWidget* compareWindow, const QString& path, const QString& viewName) {
+void armCompareScreenshot(QWidget* compareWindow, const QString& path) {
   auto* view = compareWindow->findChild<fog::ui::CompareView*>();
   if (view == nullptr) {
     QApplication::exit(1);
     return;
   }
-  QObject::connect(view, &fog::ui::CompareView::loaded, compareWindow, [compareWindow, view, path, viewName] {
-    if (viewName == "response")
-      if (auto* tabs = view->findChild<QTabWidget*>("compareTabs")) tabs->setCurrentWidget(view->bodeView());
-    saveAndQuit(*compareWindow, path, true);
-  });
+  QObject::connect(view, &fog::ui::CompareView::loaded, compareWindow,
+                   [compareWindow, path] { saveAndQuit(*compareWindow, path, true); });
 }
 
 }  // namespace fog::app

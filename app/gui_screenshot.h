@@ -40,7 +40,6 @@ void armScreenshot(fog::ui::MainWindow& window, const ScreenshotRequest& request
 
 // The image of a Compare window (MainWindow::compareSessions) once its
 // sessions arrived, then quit.
-// view "response": Compare's frequency-response tab is shown first.
-void armCompareScreenshot(QWidget* compareWindow, const QString& path, const QString& view);
+void armCompareScreenshot(QWidget* compareWindow, const QString& path);
 
 }  // namespace fog::app

@@ -217,8 +217,7 @@ int replayCommand(CliArguments& args) {
   context.imuDelayLimitMs = *limit;
   const auto& report = replayed->report;
   if (!report) return fail(report.status(), exitCodeFor(report.status()));
-  std::cout << (json ? analysis::formatReportJson(*report, context) + "\n"
-                     : forTerminal(analysis::formatReportText(*report, context)));
+  std::cout << reportOutput(*report, context, json);
   return 0;
 }
 

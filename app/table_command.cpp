@@ -245,8 +245,7 @@ int runTableCommand(CliArguments& args, const std::string& tableSpec) {
   if (!run->recordingStatus.isOk()) return fail(run->recordingStatus, 1);
   if (!run->report) return fail(run->report.status(), exitCodeFor(run->report.status()));
   const auto context = acquisition::reportContextOf(*run, options);
-  std::cout << (json ? analysis::formatReportJson(*run->report, context) + "\n"
-                     : forTerminal(analysis::formatReportText(*run->report, context)));
+  std::cout << reportOutput(*run->report, context, json);
   return 0;
 }
 

@@ -53,6 +53,8 @@ QwtPlot* makeBodePlot(const QString& objectName, const QString& toolTip) {
   plot->setToolTip(toolTip);
   plot->setCanvasBackground(Qt::white);
   plot->setMinimumSize(200, 110);
+  // A short plot: few value labels, so that they never touch.
+  plot->setAxisMaxMajor(QwtPlot::yLeft, 4);
   auto* grid = new QwtPlotGrid();
   grid->setMajorPen(QPen(QColor(215, 215, 215), 0, Qt::DotLine));
   grid->enableXMin(true);
@@ -90,6 +92,8 @@ BodeView::BodeView(QWidget* parent) : QWidget(parent) {
   contentLayout->addLayout(top);
 
   magnitudePlot_ = makeBodePlot("bodeMagnitudePlot", tr("Magnitude of gyro angle / table angle at each test frequency, ±1σ, and the chosen model"));
+  // The phase plot below carries the frequency labels for both.
+  magnitudePlot_->axisScaleDraw(QwtPlot::xBottom)->enableComponent(QwtAbstractScaleDraw::Labels, false);
   phasePlot_ = makeBodePlot("bodePhasePlot", tr("Phase of gyro angle / table angle (negative: the gyro lags), ±1σ, and the chosen model"));
   // One legend, inside the magnitude plot's canvas (where a lagging gyro's
   // points are not: low frequencies, low values): the view's width goes to
@@ -176,9 +180,11 @@ QString BodeView::notesText() const {
 }
 
 void BodeView::showMessage(const QString& message) {
+  series_.clear();  // before what it points into
   a_.clear();
   b_.clear();
-  series_.clear();
+  magnitudeInteraction_->dataChanged();
+  phaseInteraction_->dataChanged();
   {
     const QSignalBlocker block(axisCombo_);
     axisCombo_->clear();
@@ -190,6 +196,7 @@ void BodeView::showMessage(const QString& message) {
 
 void BodeView::showResponses(std::vector<analysis::ResponseAnalysis> responses, const QString& emptyReason) {
   if (responses.empty()) return showMessage(emptyReason);
+  series_.clear();  // before what it points into
   a_ = std::move(responses);
   b_.clear();
   comparison_ = false;
@@ -211,6 +218,7 @@ void BodeView::showComparison(std::vector<analysis::ResponseAnalysis> a, std::ve
   for (const auto& r : a)
     if (forAxis(b, r.axis)) axes.push_back(static_cast<int>(r.axis));
   if (axes.empty()) return showMessage(emptyReason);
+  series_.clear();  // before what it points into
   a_ = std::move(a);
   b_ = std::move(b);
   comparison_ = true;
@@ -275,8 +283,11 @@ void BodeView::showAxis(int position) {
       line += tr("; <b>%1</b> (lowest AIC): group delay at %2 Hz <b>%3</b>")
                   .arg(responseModelTitle(m->kind), localNumber(r.groupDelayAtHz, 'g', 4),
                        valueWithStdText(m->groupDelayMs.value, m->groupDelayMs.stdDev, tr("ms")));
-      if (m->bandwidthHz)
+      if (m->bandwidthHz) {
         line += tr(", −3 dB bandwidth %1").arg(valueWithStdText(m->bandwidthHz->value, m->bandwidthHz->stdDev, tr("Hz")));
+        if (m->bandwidthHz->value > r.points.back().frequencyHz)
+          line += tr(" (extrapolated beyond the highest point, %1 Hz)").arg(localNumber(r.points.back().frequencyHz, 'g', 4));
+      }
     }
     summary << line;
     for (std::size_t i = 0; i < r.models.size(); ++i)
@@ -324,9 +335,17 @@ void BodeView::showAxis(int position) {
 
 QString responseMissingText(const analysis::DelayReport& report) {
   QStringList counts;
-  for (int a = 0; a < kAxisCount; ++a)
-    if (const auto n = analysis::responsePoints(report, static_cast<Axis>(a)).size(); n > 0)
-      counts << BodeView::tr("%1 axis: %2").arg(QString(axisName(static_cast<Axis>(a))).toUpper()).arg(n);
+  for (int a = 0; a < kAxisCount; ++a) {
+    const auto axis = static_cast<Axis>(a);
+    auto points = analysis::responsePoints(report, axis);
+    if (points.empty()) continue;
+    QString count = BodeView::tr("%1 axis: %2").arg(QString(axisName(axis)).toUpper()).arg(points.size());
+    // Two or more points whose analysis failed: why.
+    if (points.size() >= 2)
+      if (auto r = analysis::analyzeResponse(std::move(points), axis, analysis::kDefaultGroupDelayAtHz); !r)
+        count += BodeView::tr(" (no response: %1)").arg(coreText(r.status().message()));
+    counts << count;
+  }
   return BodeView::tr("No frequency response: it needs two or more test points of one axis that passed their checks, "
                       "and this result has %1. The plan preset \"Frequency response\" (run --preset response) records "
                       "20 frequencies of the X axis.")

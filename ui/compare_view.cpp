@@ -479,10 +479,16 @@ void CompareView::showResponses() {
                                   : tr("Session %1 or %2 has no delay result to compare.").arg(letter(a), letter(b)));
     return;
   }
+  // What each has: its axes with a response, else why none.
+  auto has = [this](const RunOutcome& o) {
+    QStringList axes;
+    for (const auto& r : o.responses) axes << QString(axisName(r.axis)).toUpper();
+    return axes.isEmpty() ? responseMissingText(*o.report)
+                          : tr("a frequency response of the %1 axis").arg(axes.join(QStringLiteral(", ")));
+  };
   bodeView_->showComparison(oa->responses, ob->responses, letter(a), letter(b),
                             tr("%1 and %2 have no axis with a frequency response in common. %1: %3 %2: %4")
-                                .arg(letter(a), letter(b), responseMissingText(*oa->report),
-                                     responseMissingText(*ob->report)));
+                                .arg(letter(a), letter(b), has(*oa), has(*ob)));
 }
 
 void CompareView::showTrend() {

@@ -361,12 +361,17 @@ std::vector<ResponsePoint> responseDifference(const ResponseAnalysis& a, const R
     d.magnitudeStd = d.magnitude * std::hypot(relA, relB);
     d.magnitudeDb = pb.magnitudeDb - pa->magnitudeDb;
     d.magnitudeDbStd = std::hypot(pa->magnitudeDbStd, pb.magnitudeDbStd);
-    d.phaseDeg = pb.phaseDeg - pa->phaseDeg;
-    d.phaseStdDeg = std::hypot(pa->phaseStdDeg, pb.phaseStdDeg);
+    // A's phase at B's frequency: the two points may be up to 0.5 % apart,
+    // and a delay's phase -omega tau scales with the frequency (at 11 Hz a
+    // 2.5-ms lag would otherwise give 0.05 deg of false difference, 500 sigma).
+    const double toB = pb.frequencyHz / pa->frequencyHz;
+    d.phaseDeg = pb.phaseDeg - pa->phaseDeg * toB;
+    d.phaseStdDeg = std::hypot(pa->phaseStdDeg * toB, pb.phaseStdDeg);
     d.lagMs = pb.lagMs - pa->lagMs;
     d.lagStdMs = std::hypot(pa->lagStdMs, pb.lagStdMs);
     // r = mB/mA, dr = r (dmB/mB - dmA/mA), dphi = dphiB - dphiA.
-    d.magnitudePhaseCovDeg = d.magnitude * (pb.magnitudePhaseCovDeg / pb.magnitude + pa->magnitudePhaseCovDeg / pa->magnitude);
+    d.magnitudePhaseCovDeg =
+        d.magnitude * (pb.magnitudePhaseCovDeg / pb.magnitude + toB * pa->magnitudePhaseCovDeg / pa->magnitude);
     d.harmonicFraction = std::max(pa->harmonicFraction, pb.harmonicFraction);
     out.push_back(d);
   }

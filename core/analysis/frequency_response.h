@@ -108,7 +108,8 @@ std::vector<ResponseAnalysis> analyzeResponses(const DelayReport& report,
 // B - A of two responses of one axis (two sessions, Compare) at the
 // frequencies both have (within 0.5 % of each other), in frequency order:
 // magnitude as the ratio B/A (magnitudeDb the dB difference), phase and lag
-// as differences, index B's. The two sessions' fits share no noise, so the
+// as differences, index B's. A's phase is taken to B's frequency (scaled by
+// f_B / f_A, exact for a delay) before the difference. The two sessions' fits share no noise, so the
 // uncertainties combine as independent (ratio: relative ones in quadrature).
 std::vector<ResponsePoint> responseDifference(const ResponseAnalysis& a, const ResponseAnalysis& b);
 

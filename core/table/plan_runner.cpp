@@ -243,10 +243,15 @@ RunnerResult PlanRunner::run(const TestPlan& plan, const std::atomic<bool>* stop
   RunnerResult result;
   lastHeartbeatS_ = -1e300;
   auto fail = [&](Status why) {
+    // The operator's emergency stop is the cause even when something it set
+    // off (the recording ending) was seen first.
+    const bool emergency = emergency_ && emergency_->load();
+    if (emergency && why.message().rfind("emergency stop by the operator", 0) != 0)
+      why = Status(why.code(), "emergency stop by the operator (then: " + why.message() + ")");
     result.status = std::move(why);
     say("run stopped: " + result.status.message() + "; bringing the table to rest");
     bool atRest = false;
-    Status rested = bringToRest(atRest, emergency_ && emergency_->load());
+    Status rested = bringToRest(atRest, emergency);
     result.tableAtRest = atRest;
     say(atRest ? "table at rest" : "the table was NOT seen at rest: " + rested.message());
     return result;

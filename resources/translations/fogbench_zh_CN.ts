@@ -209,7 +209,7 @@
         <translation>%1 轴</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+50"/>
         <source>The axis whose response is shown</source>
         <translation>显示其频率响应的轴</translation>
     </message>
@@ -219,19 +219,19 @@
         <translation>各测试频率下陀螺角度 / 转台角度的幅值（±1σ）及所选模型</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source>Phase of gyro angle / table angle (negative: the gyro lags), ±1σ, and the chosen model</source>
         <translation>陀螺角度 / 转台角度的相位（负值：陀螺滞后，±1σ）及所选模型</translation>
     </message>
     <message>
         <location line="+21"/>
-        <location line="+130"/>
+        <location line="+134"/>
         <location line="+35"/>
         <source>Hz</source>
         <translation>Hz</translation>
     </message>
     <message>
-        <location line="-163"/>
+        <location line="-167"/>
         <source>dB</source>
         <translation>dB</translation>
     </message>
@@ -286,7 +286,7 @@
         <translation>尚无频率响应。</translation>
     </message>
     <message>
-        <location line="+74"/>
+        <location line="+78"/>
         <source>—</source>
         <translation>—</translation>
     </message>
@@ -327,7 +327,12 @@
         <translation>，−3 dB 带宽 %1</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+2"/>
+        <source> (extrapolated beyond the highest point, %1 Hz)</source>
+        <translation>（外推至最高测试点 %1 Hz 之外）</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>model left out: %1</source>
         <translation>未拟合的模型：%1</translation>
     </message>
@@ -373,12 +378,17 @@
         <translation>相位（°）</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+25"/>
         <source>%1 axis: %2</source>
         <translation>%1 轴：%2</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+4"/>
+        <source> (no response: %1)</source>
+        <translation>（无频率响应：%1）</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>No frequency response: it needs two or more test points of one axis that passed their checks, and this result has %1. The plan preset &quot;Frequency response&quot; (run --preset response) records 20 frequencies of the X axis.</source>
         <translation>无频率响应：需要同一轴上两个或以上通过检查的测试点，而此结果有 %1。计划预设“频率响应”（run --preset response）记录 X 轴的 20 个频率。</translation>
     </message>
@@ -745,12 +755,17 @@
         <translation>%1：陀螺拟合</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+48"/>
+        <source>a frequency response of the %1 axis</source>
+        <translation>%1 轴的频率响应</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>%1 and %2 have no axis with a frequency response in common. %1: %3 %2: %4</source>
         <translation>%1 与 %2 没有共同具有频率响应的轴。%1：%3 %2：%4</translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+44"/>
         <source>IMU delay against the recording date (IMU not named)</source>
         <translation>IMU 延迟随记录日期的变化（未填写 IMU）</translation>
     </message>
@@ -1659,12 +1674,12 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+1027"/>
+        <location line="+1047"/>
         <source>Diagnosis</source>
         <translation>诊断</translation>
     </message>
     <message>
-        <location line="-1024"/>
+        <location line="-1044"/>
         <source>Noise</source>
         <translation>噪声</translation>
     </message>
@@ -1679,7 +1694,7 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>&lt;h3&gt;fogbench %1&lt;/h3&gt;&lt;p&gt;光纤陀螺 IMU 延迟测试台：转台带动 IMU 摆动，用同一计数器为转台角度和陀螺增量打时间戳，对两者拟合正弦，并将相位差换算为 IMU 延迟及其不确定度。&lt;/p&gt;&lt;p&gt;基于 Qt %2（运行于 %3）和 Qwt %4 构建。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location line="+139"/>
+        <location line="+156"/>
         <source>&amp;Bench constants…</source>
         <translation>测试台常数(&amp;B)…</translation>
     </message>
@@ -1709,7 +1724,7 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>关于 fogbench</translation>
     </message>
     <message>
-        <location line="-169"/>
+        <location line="-186"/>
         <location line="+3"/>
         <source>Run</source>
         <translation>运行</translation>
@@ -1721,7 +1736,7 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+93"/>
+        <location line="+110"/>
         <source>End the run now; everything received so far is kept and analysed</source>
         <translation>立即结束运行；已接收的全部数据都会保留并分析</translation>
     </message>
@@ -1737,12 +1752,12 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+742"/>
+        <location line="+745"/>
         <source>Open session</source>
         <translation>打开会话</translation>
     </message>
     <message>
-        <location line="-741"/>
+        <location line="-744"/>
         <source>fogbench sessions (*.fbs);;All files (*)</source>
         <translation>fogbench 会话 (*.fbs);;所有文件 (*)</translation>
     </message>
@@ -1950,7 +1965,7 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>停止运行并关闭</translation>
     </message>
     <message>
-        <location line="-422"/>
+        <location line="-439"/>
         <source>Table</source>
         <translation>转台</translation>
     </message>
@@ -1960,7 +1975,7 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>急停</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+17"/>
         <source>Stop every axis of the table at once (latched at the controller)</source>
         <translation>立即停止转台所有轴（在控制器处锁定）</translation>
     </message>
@@ -1970,7 +1985,7 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>（视图 ▸ 转台控制）</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+15"/>
         <source>Emergency stop</source>
         <translation>急停</translation>
     </message>
@@ -1981,6 +1996,21 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+1"/>
+        <source>No table connection is open: neither a run drives the table nor is the table panel connected. Use the controller&apos;s own emergency stop.</source>
+        <translation>没有打开的转台连接：既没有运行在驱动转台，转台面板也未连接。请使用控制器自身的急停。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Emergency stop: the run&apos;s table driver sends it at its next step; the run stops.</source>
+        <translation>急停：运行的转台驱动在其下一步发送急停；运行停止。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> The table panel&apos;s connection failed: %1</source>
+        <translation> 转台面板的连接失败：%1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Emergency stop sent to the table.</source>
         <translation>急停指令已发送至转台。</translation>
     </message>
@@ -2118,7 +2148,7 @@ Plots: wheel zooms, drag pans, double-click shows all, click sets cursors A/B</s
         <translation>仿真器（仿真转台）</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>Running: %1 …</source>
         <translation>运行中：%1 …</translation>
     </message>
@@ -2188,7 +2218,7 @@ Plots: wheel zooms, drag pans, double-click shows all, click sets cursors A/B</s
         <translation>。警告：结束时未确认转台静止，请检查</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>Check the turntable</source>
         <translation>检查转台</translation>
     </message>
@@ -2218,7 +2248,7 @@ Plots: wheel zooms, drag pans, double-click shows all, click sets cursors A/B</s
         <translation>本次运行未得到延迟结果。</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+21"/>
         <source>Run failed</source>
         <translation>运行失败</translation>
     </message>
@@ -2752,7 +2782,7 @@ File: %1</source>
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location filename="../../ui/main_window.cpp" line="-1170"/>
+        <location filename="../../ui/main_window.cpp" line="-1190"/>
         <location filename="../../ui/plan_editor.cpp" line="-323"/>
         <location filename="../../ui/plots/delta_picker.cpp" line="+1"/>
         <source>%1 s</source>
@@ -6941,6 +6971,21 @@ The session itself is unchanged.</source>
         <location line="+1"/>
         <source>the fit did not converge in %1 iterations</source>
         <translation>拟合在 %1 次迭代内未收敛</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the fit&apos;s sums are not finite numbers (a value in the data is far beyond its range)</source>
+        <translation>拟合的求和不是有限数（数据中有数值远超其范围）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the fit&apos;s parameters are not determined by the data</source>
+        <translation>拟合参数无法由数据确定</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the fit&apos;s covariance is not positive</source>
+        <translation>拟合的协方差不为正</translation>
     </message>
     <message>
         <location line="+2"/>

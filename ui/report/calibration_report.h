@@ -5,7 +5,7 @@
 //
 // Pages: (1) identity, verdict, results summary, signatures; (2) bench
 // constants, test plan, stream health, the paper's delay budget beside the
-// measurement; for an axis with two or more passed test points (a frequency
+// measurement; for an axis with three or more passed test points (a frequency
 // response plan) its frequency response: the Bode plot, the points and the
 // fitted models; then per analysed test point (3) the table and gyro angles with
 // their fitted sinusoids and the residuals of both fits, (4) the fit table,

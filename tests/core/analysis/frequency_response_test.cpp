@@ -300,9 +300,16 @@ TEST(FrequencyResponse, DifferenceOfTwoResponsesAtCommonFrequencies) {
   EXPECT_NEAR(d[0].phaseStdDeg, 0.01 * std::sqrt(2.0), 1e-12);
   EXPECT_NEAR(d[0].magnitudeStd, 1.001 * std::hypot(1e-4, 1e-4 / 1.001), 1e-12);
   EXPECT_NEAR(d[0].lagMs, b.points[0].lagMs - a.points[0].lagMs, 1e-12);
+  EXPECT_NEAR(d[0].magnitudeDbStd, std::hypot(a.points[0].magnitudeDbStd, b.points[0].magnitudeDbStd), 1e-15);
+  EXPECT_NEAR(d[0].lagStdMs, std::hypot(a.points[0].lagStdMs, b.points[0].lagStdMs), 1e-15);
+  // dr = r (dmB/mB - dmA/mA), dphi = dphiB - dphiA: cov = r (covB/mB + covA/mA).
+  EXPECT_NEAR(d[0].magnitudePhaseCovDeg, 1.001 * (0.5e-6 / 1.001 + 0.5e-6 / 1.0), 1e-15);
   EXPECT_EQ(d[1].index, 1);
   EXPECT_DOUBLE_EQ(d[1].frequencyHz, 2.004);
-  EXPECT_NEAR(d[1].phaseDeg, -0.1, 1e-12);
+  // A's -0.4 deg at 2 Hz is -0.4008 at 2.004 Hz (a delay's phase scales with f).
+  EXPECT_NEAR(d[1].phaseDeg, -0.5 - (-0.4 * 1.002), 1e-12);
+  EXPECT_NEAR(d[1].phaseStdDeg, std::hypot(0.01 * 1.002, 0.01), 1e-15);
+  EXPECT_NEAR(d[1].magnitudePhaseCovDeg, (0.998 / 0.999) * (0.5e-6 / 0.998 + 1.002 * 0.5e-6 / 0.999), 1e-15);
   EXPECT_TRUE(responseDifference(a, ResponseAnalysis{}).empty());
 }
 
