@@ -97,6 +97,7 @@ def default_params():
         "tail_s": 0.0,          # time after the last test point (single segment)
         "rest_s": 5.0,          # rest between test points (several segments)
         "ramp_s": 2.0,          # smooth amplitude ramp in and out (several segments)
+        "settle_s": 0.0,        # several segments: steady swing after the ramp before the window
         "continuous": False,    # one record of the whole timeline, no test_point markers
         # Swing imperfections (apply to every segment)
         "table_freq_error_ppm": 0.0,
@@ -795,9 +796,16 @@ def timeline(p):
         swings.append(Swing(s, p, t, False))
         windows.append((t, t + s["duration_s"]))
         return swings, windows, t + s["duration_s"] + p["tail_s"], gated
+    settle = p.get("settle_s", 0.0)
     for i, s in enumerate(segs):
         t_on = t + p["ramp_s"]
-        swings.append(Swing(s, p, t_on, True))
+        if settle > 0:
+            # the swing steady from t_on, its window settle_s later (a
+            # filter's ramp transient decays before it): phase at t_on
+            swings.append(Swing(dict(s, duration_s=s["duration_s"] + settle), p, t_on, True))
+            t_on += settle
+        else:
+            swings.append(Swing(s, p, t_on, True))
         windows.append((t_on, t_on + s["duration_s"]))
         t = t_on + s["duration_s"] + p["ramp_s"] + (p["rest_s"] if i + 1 < len(segs) else 0.0)
     return swings, windows, t + p["lead_s"], gated

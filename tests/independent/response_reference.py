@@ -110,7 +110,7 @@ def loguni(rng, lo, hi):
     return float(math.exp(rng.uniform(math.log(lo), math.log(hi))))
 
 
-def draw(case, i, seed, plan, fine_hz):
+def draw(case, i, seed, plan, fine_hz, settle_s=0.0):
     """One trial: (refgen parameters, what was drawn)."""
     rng = np.random.default_rng([seed, CASES.index(case), i])
     imu, read = float(rng.uniform(0.2, 1.5)), float(rng.uniform(0.0, 0.3))
@@ -119,7 +119,7 @@ def draw(case, i, seed, plan, fine_hz):
         "seed": seed * 100003 + CASES.index(case) * 1009 + i,
         "segments": [{"axis": "x", "freq_hz": f, "amp_deg": a, "duration_s": d, "start_phase_deg": None,
                       "centre_deg": 0.0} for f, a, _, d in plan_points(plan)],
-        "lead_s": 1.0, "ramp_s": 1.0, "rest_s": 0.5,
+        "lead_s": 1.0, "ramp_s": 1.0, "rest_s": 0.5, "settle_s": settle_s,
         "imu_delay_ms": imu, "table_read_delay_ms": read, "board_delay_ms": float(rng.uniform(0.0, 0.3)),
         "bias_deg_h": [float(x) for x in rng.uniform(-5.0, 5.0, 3)],
         "arw_deg_sqrt_h": loguni(rng, 0.002, 0.01), "pulse_arcsec": loguni(rng, 0.05, 0.5),
@@ -268,6 +268,9 @@ def main(argv=None):
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--plan", choices=["full", "short"], default="full")
     ap.add_argument("--fine-hz", type=float, default=100000.0, help="refgen's fine grid (default 100 kHz)")
+    ap.add_argument("--settle-s", type=float, default=0.0,
+                    help="steady swing between refgen's ramp and each window (default 0: the window starts "
+                    "at the ramp's end, where a filter's ringing has not yet decayed)")
     ap.add_argument("--cases", help="comma-separated subset of: " + ", ".join(CASES))
     ap.add_argument("--only", help="run only these trial indices (comma-separated)")
     ap.add_argument("--json", dest="json_out", help="write every trial and the summary to this JSON file")
@@ -301,7 +304,7 @@ def main(argv=None):
     for i in range(a.trials):
         for c in cases:
             if only is None or i in only:
-                p, drawn = draw(c, i, a.seed, a.plan, a.fine_hz)
+                p, drawn = draw(c, i, a.seed, a.plan, a.fine_hz, a.settle_s)
                 jobs.append((c, i, p, drawn, os.path.abspath(a.cli), workdir, bool(a.keep)))
     t0 = time.perf_counter()
     recs = []
