@@ -97,6 +97,7 @@ def default_params():
         "tail_s": 0.0,          # time after the last test point (single segment)
         "rest_s": 5.0,          # rest between test points (several segments)
         "ramp_s": 2.0,          # smooth amplitude ramp in and out (several segments)
+        "settle_s": 0.0,        # several segments: steady swing after the ramp before the window
         "continuous": False,    # one record of the whole timeline, no test_point markers
         # Swing imperfections (apply to every segment)
         "table_freq_error_ppm": 0.0,
@@ -199,6 +200,12 @@ def default_params():
         "register_clock_ppm": 0.0,
         # Moving average (boxcar) of the rate over boxcar_ms before the frame.
         "boxcar_ms": 0.0,
+        # A resonant (second-order) rate filter after the first-order lag:
+        # y'' + 2 zeta wn y' + wn^2 y = wn^2 x, wn = 2 pi second_order_fn_hz
+        # (0 Hz = off), 0 < second_order_zeta < 1; exact for the rate linear
+        # between fine points, at rest (steady) before the first instant.
+        "second_order_fn_hz": 0.0,
+        "second_order_zeta": 0.7,
         # Latency between a frame's end and its stamp, beyond the delays: 0
         # with probability 1 - latency_p2, latency_delta_us with latency_p2,
         # each mode with latency_sigma_us rms; latency_dwell_s > 0 makes the
@@ -789,9 +796,16 @@ def timeline(p):
         swings.append(Swing(s, p, t, False))
         windows.append((t, t + s["duration_s"]))
         return swings, windows, t + s["duration_s"] + p["tail_s"], gated
+    settle = p.get("settle_s", 0.0)
     for i, s in enumerate(segs):
         t_on = t + p["ramp_s"]
-        swings.append(Swing(s, p, t_on, True))
+        if settle > 0:
+            # the swing steady from t_on, its window settle_s later (a
+            # filter's ramp transient decays before it): phase at t_on
+            swings.append(Swing(dict(s, duration_s=s["duration_s"] + settle), p, t_on, True))
+            t_on += settle
+        else:
+            swings.append(Swing(s, p, t_on, True))
         windows.append((t_on, t_on + s["duration_s"]))
         t = t_on + s["duration_s"] + p["ramp_s"] + (p["rest_s"] if i + 1 < len(segs) else 0.0)
     return swings, windows, t + p["lead_s"], gated
@@ -1029,6 +1043,14 @@ def generate(params, chunk_frames=5000):
 
     lag_state = {}
     box_state = {}
+    res_state = {}
+    res_pole = None
+    if p["second_order_fn_hz"] > 0:
+        zeta = p["second_order_zeta"]
+        if not 0 < zeta < 1:
+            raise ValueError("second_order_zeta must be in (0, 1)")
+        wn = 2.0 * math.pi * p["second_order_fn_hz"]
+        res_pole = complex(-zeta * wn, wn * math.sqrt(1.0 - zeta * zeta))
     nbox = 0
     if p["boxcar_ms"] > 0:
         nb = p["boxcar_ms"] * 1e-3 * p["fine_hz"]
@@ -1045,6 +1067,16 @@ def generate(params, chunk_frames=5000):
             y = first_order_lag(w, dt, lag_s, lag_state["y"], lag_state["x"])
             lag_state["x"], lag_state["y"] = w[-1].copy(), y[-1].copy()
             w = y
+        if res_pole is not None:
+            # wn^2 / ((s - q)(s - q*)) = wn^2 Im(z) / Im(q) with z' = q z + x:
+            # the complex mode of the ODE, exact for x linear between samples
+            wn2 = abs(res_pole) ** 2
+            if not res_state:   # at rest before the first instant: z = -x / q, output = input
+                res_state["x"] = w[0].copy()
+                res_state["z"] = -w[0].astype(complex) / res_pole
+            z = linear_mode(res_pole, np.vstack([res_state["x"][None, :], w]).astype(complex), dt, res_state["z"])[1:]
+            res_state["x"], res_state["z"] = w[-1].copy(), z[-1].copy()
+            w = wn2 * z.imag / res_pole.imag
         out = w * sign + bias
         if np.any(bstep):
             out = out + np.where((tf >= p["bias_step_time_s"])[:, None], bstep, 0.0)
@@ -1196,6 +1228,10 @@ def physical_effects(res):
     if p["register_period_ms"] > 0:
         out["register_extra_delay_ms"] = p["register_offset_ms"] if not p["register_clock_ppm"] else \
             "varies from 0 to %g ms" % p["register_period_ms"]
+    if p["second_order_fn_hz"] > 0:
+        # its group delay at 0 Hz: 2 zeta / wn
+        out["second_order_low_frequency_delay_ms"] = \
+            2.0 * p["second_order_zeta"] / (2.0 * math.pi * p["second_order_fn_hz"]) * 1e3
     if p["boxcar_ms"] > 0:
         out["boxcar_extra_delay_ms"] = p["boxcar_ms"] / 2.0
         out["boxcar_equivalent_lag_ms"] = p["boxcar_ms"] / math.sqrt(12.0)   # same loss of gain to O(f^2)
@@ -1514,6 +1550,8 @@ def build_parser():
     g.add_argument("--mount-rpy-arcsec", type=_floats, help="IMU mount rotated by roll,pitch,yaw")
     g.add_argument("--g-sens-deg-h-g", type=_floats, help="1 value, or 3 (each gyro its own)")
     g.add_argument("--lag-tau-ms", type=float)
+    g.add_argument("--second-order-fn-hz", type=float, help="resonant rate filter: natural frequency (0: off)")
+    g.add_argument("--second-order-zeta", type=float, help="... and damping ratio (0 < zeta < 1)")
     g.add_argument("--register-period-ms", type=float, help="pulse register updated every (0: continuous)")
     g.add_argument("--register-offset-ms", type=float, help="time from its last update to a frame's end")
     g.add_argument("--register-clock-ppm", type=float, help="its clock against the frame clock")

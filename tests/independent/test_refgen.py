@@ -442,7 +442,7 @@ def ratio_to_lag_gain(z_gyro, z_table, f):
 OFF = {"base_tilt_deg": 0.0, "nonorth_inner_arcsec": 0.0, "nonorth_middle_arcsec": 0.0, "eccentricity_um": 0.0,
        "compliance_fn_hz": 0.0, "servo_unbalance_arcsec": 0.0, "mount_rpy_arcsec": [0.0, 0.0, 0.0],
        "register_period_ms": 0.0, "boxcar_ms": 0.0, "latency_p2": 0.0, "latency_sigma_us": 0.0,
-       "rrw_deg_h_sqrt_h": 0.0, "flicker_deg_h": 0.0, "table_drop_per_mille": 0.0}
+       "rrw_deg_h_sqrt_h": 0.0, "flicker_deg_h": 0.0, "table_drop_per_mille": 0.0, "second_order_fn_hz": 0.0}
 
 
 class PhysicalForms(unittest.TestCase):
@@ -455,7 +455,7 @@ class PhysicalForms(unittest.TestCase):
         p["segments"][0]["duration_s"] = 5.0
         q = dict(p, **OFF, base_tilt_azimuth_deg=40.0, eccentricity_radius_mm=7.0, eccentricity_phase_deg=9.0,
                  compliance_zeta=0.3, servo_corner_hz=5.0, register_offset_ms=0.3, latency_delta_us=50.0,
-                 latency_dwell_s=1.0, flicker_tau_range_s=[3.0, 30.0])
+                 latency_dwell_s=1.0, flicker_tau_range_s=[3.0, 30.0], second_order_zeta=0.2)
         a, b = refgen.generate(p), refgen.generate(q)
         for k in ("table_t", "table_deg", "gyro_t", "gyro_val", "frame_theta"):
             self.assertTrue(np.array_equal(a[k], b[k]), k)
@@ -623,6 +623,31 @@ class PhysicalForms(unittest.TestCase):
         # the same loss of gain as a first-order lag of T / sqrt(12), to O(f^2)
         tau = refgen.physical_effects(res)["boxcar_equivalent_lag_ms"] * 1e-3
         self.assertAlmostEqual(1 - gain / gain0, (2 * math.pi * f * tau) ** 2 / 2, delta=3e-7)  # O(f^4): 1e-7
+
+    def test_second_order_filter_gain_and_phase(self):
+        # a steady sinusoid through y'' + 2 zeta wn y' + wn^2 y = wn^2 x:
+        # gyro / (the same without the filter) = 1 / (1 - r^2 + 2 i zeta r), r = f / fn
+        fn = 40.0
+        for zeta in (0.15, 0.7):
+            for f in (2.0, 10.0, 30.0):
+                seg = [{"axis": "x", "freq_hz": f, "amp_deg": 1.0, "duration_s": 2.0}]
+                res = refgen.generate(quiet(second_order_fn_hz=fn, second_order_zeta=zeta, segments=seg))
+                plain = refgen.generate(quiet(segments=seg))
+                self.assertEqual(res["params"]["_gyro_offset_s"], plain["params"]["_gyro_offset_s"])
+                r = swing_fit(res, 0, f)[0] / swing_fit(plain, 0, f)[0]
+                q = f / fn            # the ODE runs in true time, like the swing
+                h = 1.0 / complex(1.0 - q * q, 2.0 * zeta * q)
+                # the rate linear between fine points: a gain of sinc^2(f dt) = 1 - (w dt)^2 / 12
+                # (3e-5 at 30 Hz, 10 kHz), and nothing else
+                x = math.pi * f * res["fine_dt_s"]
+                msg = "zeta %g, %g Hz: ratio %r, closed form %r" % (zeta, f, r, h)
+                self.assertAlmostEqual(abs(r) / abs(h), (math.sin(x) / x) ** 2, delta=1e-9, msg=msg)
+                self.assertAlmostEqual(math.atan2(r.imag, r.real), math.atan2(h.imag, h.real), delta=1e-8, msg=msg)
+                # its group delay at 0 Hz in physical_effects: 2 zeta / wn
+                self.assertAlmostEqual(refgen.physical_effects(res)["second_order_low_frequency_delay_ms"],
+                                       2 * zeta / (2 * math.pi * fn) * 1e3, delta=1e-15)
+        with self.assertRaises(ValueError):
+            refgen.generate(quiet(second_order_fn_hz=fn, second_order_zeta=1.0))
 
     def test_latency_mixture(self):
         p = refgen.resolve(quiet(latency_p2=0.2, latency_delta_us=30.0, latency_sigma_us=2.0))
