@@ -258,7 +258,7 @@ void BodeView::addModelRow(const QString& series, const analysis::ResponseModelF
     item->setToolTip(col == kNotesColumn ? QStringLiteral("<p>") + noteList.join(QStringLiteral("</p><p>")).toHtmlEscaped() + QStringLiteral("</p>")
                                          : cells[col]);
     if (chosen) {
-      if (col != kNotesColumn) item->setToolTip(tr("The model chosen: the lowest AIC"));
+      if (col != kNotesColumn) item->setToolTip(tr("The model chosen: the lowest AIC; a first-order lag over the pure delay only when it lowers χ² by 9 (3σ)"));
       QFont bold = item->font();
       bold.setBold(true);
       item->setFont(bold);
@@ -280,7 +280,7 @@ void BodeView::showAxis(int position) {
                        .arg(r.points.size())
                        .arg(localNumber(r.points.front().frequencyHz, 'g', 3), localNumber(r.points.back().frequencyHz, 'g', 4));
     if (m) {
-      line += tr("; <b>%1</b> (lowest AIC): group delay at %2 Hz <b>%3</b>")
+      line += tr("; <b>%1</b> (chosen): group delay at %2 Hz <b>%3</b>")
                   .arg(responseModelTitle(m->kind), localNumber(r.groupDelayAtHz, 'g', 4),
                        valueWithStdText(m->groupDelayMs.value, m->groupDelayMs.stdDev, tr("ms")));
       if (m->bandwidthHz) {
@@ -297,7 +297,7 @@ void BodeView::showAxis(int position) {
   if (!comparison_) {
     const auto* r = forAxis(a_, axis);
     const auto* m = chosenModel(*r);
-    series_.push_back({tr("measured ±1σ"), kSingle, r->points, m, tr("model (lowest AIC)")});
+    series_.push_back({tr("measured ±1σ"), kSingle, r->points, m, tr("model (chosen)")});
     describe(QString(), *r);
   } else {
     const auto* a = forAxis(a_, axis);

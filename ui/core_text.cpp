@@ -410,6 +410,7 @@ const char* const kTemplates[] = {
     QT_TRANSLATE_NOOP("core_text", "%1: %2 parameters need more than %3 values, %4 points give %5"),
     QT_TRANSLATE_NOOP("core_text", "%1: no fit from any of its %2 starting points (%3); the points may not hold such a filter"),
     QT_TRANSLATE_NOOP("core_text", "the fit did not converge in %1 iterations"),
+    QT_TRANSLATE_NOOP("core_text", "AIC prefers it to the pure delay by %1, but it lowers chi^2 by %2 only (a filter is claimed at 9, 3 sigma): the pure delay is chosen"),
     QT_TRANSLATE_NOOP("core_text", "the fit's sums are not finite numbers (a value in the data is far beyond its range)"),
     QT_TRANSLATE_NOOP("core_text", "the fit's parameters are not determined by the data"),
     QT_TRANSLATE_NOOP("core_text", "the fit's covariance is not positive"),

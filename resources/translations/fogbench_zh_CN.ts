@@ -307,22 +307,27 @@
         <translation>ms</translation>
     </message>
     <message>
-        <location line="-24"/>
-        <source>The model chosen: the lowest AIC</source>
-        <translation>所选模型：AIC 最低</translation>
+        <location line="-2"/>
+        <source>; &lt;b&gt;%1&lt;/b&gt; (chosen): group delay at %2 Hz &lt;b&gt;%3&lt;/b&gt;</source>
+        <translation>；&lt;b&gt;%1&lt;/b&gt;（所选）：%2 Hz 处群延迟 &lt;b&gt;%3&lt;/b&gt;</translation>
     </message>
     <message>
         <location line="+17"/>
+        <source>model (chosen)</source>
+        <translation>模型（所选）</translation>
+    </message>
+    <message>
+        <location line="-22"/>
         <source>%1%2 points, %3 – %4 Hz</source>
         <translation>%1%2 个点，%3 – %4 Hz</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>; &lt;b&gt;%1&lt;/b&gt; (lowest AIC): group delay at %2 Hz &lt;b&gt;%3&lt;/b&gt;</source>
-        <translation>；&lt;b&gt;%1&lt;/b&gt;（AIC 最低）：%2 Hz 处群延迟 &lt;b&gt;%3&lt;/b&gt;</translation>
+        <location line="-17"/>
+        <source>The model chosen: the lowest AIC; a first-order lag over the pure delay only when it lowers χ² by 9 (3σ)</source>
+        <translation>所选模型：AIC 最低；仅当一阶滞后使 χ² 比纯延迟降低 9（3σ）时才选它</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+26"/>
         <source>, −3 dB bandwidth %1</source>
         <translation>，−3 dB 带宽 %1</translation>
     </message>
@@ -340,11 +345,6 @@
         <location line="+5"/>
         <source>measured ±1σ</source>
         <translation>测量值 ±1σ</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>model (lowest AIC)</source>
-        <translation>模型（AIC 最低）</translation>
     </message>
     <message>
         <location line="+7"/>
@@ -3841,11 +3841,6 @@ File: %1</source>
         <translation>测量值 ±1σ</translation>
     </message>
     <message>
-        <location line="+0"/>
-        <source>model (lowest AIC)</source>
-        <translation>模型（AIC 最低）</translation>
-    </message>
-    <message>
         <location line="+2"/>
         <source>Magnitude</source>
         <translation>幅值</translation>
@@ -3938,12 +3933,7 @@ File: %1</source>
         <translation>未拟合的模型：%1</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>chosen (lowest AIC)</source>
-        <translation>所选（AIC 最低）</translation>
-    </message>
-    <message>
-        <location line="+1"/>
+        <location line="+4"/>
         <source>low-frequency delay</source>
         <translation>低频延迟</translation>
     </message>
@@ -4034,7 +4024,17 @@ File: %1</source>
         <translation>不完整</translation>
     </message>
     <message>
-        <location line="-3"/>
+        <location line="-165"/>
+        <source>model (chosen)</source>
+        <translation>模型（所选）</translation>
+    </message>
+    <message>
+        <location line="+48"/>
+        <source>chosen (lowest AIC; a filter at 3σ)</source>
+        <translation>所选（AIC 最低；滤波器须达 3σ）</translation>
+    </message>
+    <message>
+        <location line="+114"/>
         <location filename="../../ui/session_browser.cpp" line="-3"/>
         <source>PASS</source>
         <translation>通过</translation>
@@ -6971,6 +6971,11 @@ The session itself is unchanged.</source>
         <location line="+1"/>
         <source>the fit did not converge in %1 iterations</source>
         <translation>拟合在 %1 次迭代内未收敛</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>AIC prefers it to the pure delay by %1, but it lowers chi^2 by %2 only (a filter is claimed at 9, 3 sigma): the pure delay is chosen</source>
+        <translation>AIC 比纯延迟模型更倾向于它（差 %1），但它只使 χ² 降低 %2（滤波器须降低 9，即 3σ）：选择纯延迟</translation>
     </message>
     <message>
         <location line="+1"/>

@@ -791,7 +791,7 @@ void responsePage(PageFlow& flow, const analysis::ResponseAnalysis& r) {
   const analysis::ResponseModelFit* chosen =
       r.chosen >= 0 && r.chosen < static_cast<int>(r.models.size()) ? &r.models[static_cast<std::size_t>(r.chosen)] : nullptr;
   const std::vector<ui::BodeSeries> series = {
-      {QObject::tr("measured ±1σ"), kTableFit, r.points, chosen, QObject::tr("model (lowest AIC)")}};
+      {QObject::tr("measured ±1σ"), kTableFit, r.points, chosen, QObject::tr("model (chosen)")}};
   for (const auto& [part, title, yTitle] :
        {std::tuple{ui::BodePart::kMagnitudeDb, QObject::tr("Magnitude"), QObject::tr("|H| (dB)")},
         std::tuple{ui::BodePart::kPhaseDeg, QObject::tr("Phase (negative: the gyro lags)"), QObject::tr("phase (°)")}}) {
@@ -839,7 +839,7 @@ void responsePage(PageFlow& flow, const analysis::ResponseAnalysis& r) {
     flow.paragraph(QObject::tr("Model left out: %1").arg(coreText(skipped)), PageFlow::font(7.5), kMuted);
   if (chosen) {
     std::vector<std::pair<QString, QString>> rows = {
-        {QObject::tr("chosen (lowest AIC)"), ui::responseModelTitle(chosen->kind)},
+        {QObject::tr("chosen (lowest AIC; a filter at 3σ)"), ui::responseModelTitle(chosen->kind)},
         {QObject::tr("low-frequency delay"),
          ui::valueWithStdText(chosen->lowFrequencyDelayMs.value, chosen->lowFrequencyDelayMs.stdDev, QObject::tr("ms"))},
         {QObject::tr("group delay at %1 Hz").arg(QString::number(r.groupDelayAtHz, 'g', 4)),
