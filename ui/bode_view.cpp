@@ -200,16 +200,9 @@ void BodeView::showResponses(std::vector<analysis::ResponseAnalysis> responses, 
   a_ = std::move(responses);
   b_.clear();
   comparison_ = false;
-  message_->hide();
-  content_->show();
-  {
-    const QSignalBlocker block(axisCombo_);
-    axisCombo_->clear();
-    for (const auto& r : a_) axisCombo_->addItem(axisText(r.axis), static_cast<int>(r.axis));
-  }
-  axisCombo_->setVisible(a_.size() > 1);
-  axisCombo_->setCurrentIndex(0);
-  showAxis(0);
+  std::vector<int> axes;
+  for (const auto& r : a_) axes.push_back(static_cast<int>(r.axis));
+  showAxes(axes);
 }
 
 void BodeView::showComparison(std::vector<analysis::ResponseAnalysis> a, std::vector<analysis::ResponseAnalysis> b,
@@ -224,6 +217,10 @@ void BodeView::showComparison(std::vector<analysis::ResponseAnalysis> a, std::ve
   comparison_ = true;
   aName_ = aName;
   bName_ = bName;
+  showAxes(axes);
+}
+
+void BodeView::showAxes(const std::vector<int>& axes) {
   message_->hide();
   content_->show();
   {

@@ -58,6 +58,8 @@ class BodeView : public QWidget {
   const std::vector<BodeSeries>& series() const { return series_; }
 
  private:
+  // The content shown with these axes (Axis values) in the box, the first drawn.
+  void showAxes(const std::vector<int>& axes);
   void showAxis(int position);
   void addModelRow(const QString& series, const analysis::ResponseModelFit& m, bool chosen, double atHz);
 
