@@ -638,10 +638,11 @@ void honestUncertainty(PointWork& work) {
   const double quantTerm = 2.0 * ch.gyro.quantisationVarianceDeg2 * ch.gyro.framePeriodS /
                            (gyroAmp * gyroAmp * r.durationS * w * w);
   const double inflT =
-      periodicResidualInflation(work.tableResidual, periodS / tableInterval, r.periods, SampleStream::kTable);
+      periodicResidualInflation(work.tableResidual, periodS / tableInterval, r.periods,
+                                ch.table.noiseDeg * ch.table.noiseDeg, SampleStream::kTable);
   const double inflG =
       periodicResidualInflation(work.gyroAngleResidual, periodS / ch.gyro.framePeriodS, r.periods,
-                                SampleStream::kGyro);
+                                ch.gyro.quantisationVarianceDeg2, SampleStream::kGyro);
   const double addedMs2 = 1e6 * (tableTerm * inflT + quantTerm * inflG);
   r.periodicInflation = addedMs2 / (r.fitLagStdMs * r.fitLagStdMs);
   double baseMs = r.fitLagStdMs;

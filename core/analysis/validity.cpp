@@ -203,45 +203,50 @@ double harmonicAmplitude(const std::vector<double>& timeS, const std::vector<dou
 }
 
 double periodicResidualInflation(const std::vector<double>& r, double samplesPerPeriod, double periods,
-                                 SampleStream stream) {
+                                 double whiteVariance, SampleStream stream) {
   const std::size_t n = r.size();
-  if (n < 16 || !(samplesPerPeriod >= 2.0) || periods < 2.0) return 0.0;
-  countPass(stream, 2);  // the mean and the variance
-  double mean = 0.0;
-  for (double v : r) mean += v;
-  mean /= static_cast<double>(n);
-  double var = 0.0;
-  for (double v : r) var += (v - mean) * (v - mean);
-  var /= static_cast<double>(n);
-  if (!(var > 0.0)) return 0.0;
+  if (n < 16 || !(samplesPerPeriod >= 2.0) || periods < 2.0 || !(whiteVariance > 0.0)) return 0.0;
+  // The residual's second differences d_i = r_(i+1) - 2 r_i + r_(i-1). A
+  // white error of variance s2 gives d of variance 6 s2 whose covariance one
+  // period apart is 6 s2 rho when the error repeats with correlation rho;
+  // the residual's other parts drop out: an angle random walk (the gyro's
+  // cumulative angle) leaves d uncorrelated beyond one sample, where the
+  // residual itself is correlated near 1 one period apart in any record of
+  // many periods (which once inflated an incommensurate 11-Hz point's
+  // variance 3x), and a smooth misfit at harmonic m shrinks by (m w dt)^4.
+  // Their mean is the ends' slopes' difference over n - 2: it telescopes.
+  const double mean = (r[n - 1] - r[n - 2] - r[1] + r[0]) / static_cast<double>(n - 2);
   // The shifts of one, two, ... periods that fit in the record.
   constexpr int kMaxLags = 20;
   std::array<std::size_t, kMaxLags> shift{};
   std::size_t lags = 0;
   for (int k = 1; k <= std::min(kMaxLags, static_cast<int>(periods) - 1); ++k) {
     const auto s = static_cast<std::size_t>(std::llround(k * samplesPerPeriod));
-    if (s >= n) break;
+    if (s + 2 >= n) break;
     shift[lags++] = s;
   }
+  if (lags == 0) return 0.0;
   // Every lag's sum in one pass over the residual rather than one pass per
   // lag: the residual is walked in blocks that stay in the cache, and within
   // a block each lag's sum takes its products in turn. Each sum still runs
   // over i in order, so it is the same number as one loop per lag.
   constexpr std::size_t kBlock = 2048;
+  const std::size_t count = n - 2;  // second differences, centred on 1 .. n - 2
+  auto second = [](const double* x) { return x[2] - 2.0 * x[1] + x[0]; };
   std::array<double, kMaxLags> c{};
-  if (lags > 0) countPass(stream);
-  for (std::size_t from = 0; lags > 0 && from < n; from += kBlock) {
+  countPass(stream);
+  for (std::size_t from = 0; from < count; from += kBlock) {
     for (std::size_t k = 0; k < lags; ++k) {
-      const std::size_t to = std::min(from + kBlock, n - std::min(n, shift[k]));
+      const std::size_t to = std::min(from + kBlock, count - std::min(count, shift[k]));
       const double* ahead = r.data() + shift[k];
       double sum = c[k];
-      for (std::size_t i = from; i < to; ++i) sum += (r[i] - mean) * (ahead[i] - mean);
+      for (std::size_t i = from; i < to; ++i) sum += (second(r.data() + i) - mean) * (second(ahead + i) - mean);
       c[k] = sum;
     }
   }
   double inflation = 0.0;
   for (std::size_t k = 0; k < lags; ++k) {
-    const double rho = c[k] / (static_cast<double>(n - shift[k]) * var);
+    const double rho = std::min(1.0, c[k] / (static_cast<double>(count - shift[k]) * 6.0 * whiteVariance));
     if (rho > 0.0) inflation += 2.0 * (1.0 - static_cast<double>(k + 1) / periods) * rho;
   }
   return inflation;

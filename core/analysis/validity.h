@@ -58,15 +58,20 @@ double smoothResidualRms(const std::vector<double>& timeS, const std::vector<dou
 double harmonicAmplitude(const std::vector<double>& timeS, const std::vector<double>& residual, double omegaRadPerS,
                          SampleStream stream);
 
-// Correlation of the residuals one, two, ... swing periods apart (at the
-// nearest sample), summed as 2*sum_k (1 - k/n) rho_k over k = 1 .. K with
-// rho_k > 0. When stamps are commensurate with the swing (1 Hz at 1 kHz),
-// quantisation errors repeat every period and do not average down; the
-// variance of a phase estimate then grows by (1 + this sum). About 0 for
-// incommensurate stamps. Three passes: the mean, the variance, and all the
-// lags' sums together.
+// How much errors that repeat every swing period add to a phase estimate's
+// variance: 2*sum_k (1 - k/n) rho_k over k = 1 .. K (rho_k > 0), rho_k the
+// correlation one, two, ... periods apart (at the nearest sample) of the
+// white error of variance whiteVariance in the residual. When stamps are
+// commensurate with the swing (1 Hz at 1 kHz), quantisation errors repeat
+// every period and do not average down; the variance then grows by
+// (1 + this sum). About 0 for incommensurate stamps. rho_k is read from the
+// residual's second differences (whose covariance one period apart is
+// 6 * whiteVariance * rho_k), so neither an angle random walk (the gyro's
+// cumulative angle; its second differences are uncorrelated beyond one
+// sample) nor a smooth misfit (a table harmonic) counts as an error that
+// repeats. One pass, all the lags' sums together.
 double periodicResidualInflation(const std::vector<double>& residual, double samplesPerPeriod, double periods,
-                                 SampleStream stream);
+                                 double whiteVariance, SampleStream stream);
 
 // Straight-line fit y = a + b*x with the standard error of b from the
 // scatter about the line (needs 3 or more points).
