@@ -15,7 +15,19 @@ namespace fog::analysis {
 namespace {
 
 constexpr double kStrongCorrelation = 0.95;
+// The 3-sigma points (p = 0.27 %) of chi^2 with 1 and 2 degrees of freedom.
 constexpr double kFilterClaimChiSquareDrop = 9.0;
+constexpr double kTwoParameterClaimChiSquareDrop = 11.83;
+
+// How a note names a model.
+const char* modelTitle(ResponseModelKind kind) {
+  switch (kind) {
+    case ResponseModelKind::kDelay: return "the pure delay";
+    case ResponseModelKind::kFirstOrder: return "the first-order lag";
+    case ResponseModelKind::kSecondOrder: return "the second-order response";
+  }
+  return "";
+}
 
 int parameterCount(ResponseModelKind kind) {
   switch (kind) {
@@ -332,24 +344,37 @@ Result<ResponseAnalysis> analyzeResponse(std::vector<ResponsePoint> points, Axis
   }
   for (std::size_t i = 0; i < out.models.size(); ++i)
     if (out.chosen < 0 || out.models[i].aic < out.models[out.chosen].aic) out.chosen = static_cast<int>(i);
-  // A filter is claimed at 3 sigma, as everything the bench names. The first
-  // order nests the pure delay (T = 0), and on a pure delay AIC prefers it
-  // by chance 16 % of the time (chi^2 lower by more than 2). Its T's sigma
-  // cannot judge it there: T shows only through (omega T)^2 near 0 (its
-  // phase is tau's), so T / sigma(T) is about twice the likelihood ratio's
-  // square root. The chi^2 drop can: the first order is chosen over the
-  // delay only when it lowers chi^2 by 9 (3 sigma for the one parameter).
-  if (out.chosen >= 0 && out.models[out.chosen].kind == ResponseModelKind::kFirstOrder)
+  // A filter is claimed at 3 sigma, as everything the bench names. Each
+  // model nests the simpler ones (the first order is the delay at T = 0;
+  // the second order holds the delay as f_n -> infinity and the first order
+  // as its overdamped limit, one pole fast), and on data of the simpler one
+  // AIC prefers the larger model by chance whenever chi^2 drops by more than
+  // 2 per parameter (16 % for one). The parameters' sigma cannot judge it
+  // near the nesting point (T shows only through (omega T)^2 there: T /
+  // sigma(T) is about twice the likelihood ratio's square root); the chi^2
+  // drop can. A larger model is chosen over a simpler one only when it
+  // lowers chi^2 by the 3-sigma point of chi^2 with its extra parameters'
+  // degrees of freedom (9.0 for one, 11.8 for two); otherwise the simplest
+  // model it does not beat is chosen, and a note on it says why.
+  auto claimAt = [](int extra) { return extra == 1 ? kFilterClaimChiSquareDrop : kTwoParameterClaimChiSquareDrop; };
+  for (bool moved = true; moved && out.chosen >= 0;) {
+    moved = false;
+    const auto c = static_cast<std::size_t>(out.chosen);
     for (std::size_t i = 0; i < out.models.size(); ++i) {
-      auto& first = out.models[static_cast<std::size_t>(out.chosen)];
-      const double drop = out.models[i].chiSquare - first.chiSquare;
-      if (out.models[i].kind != ResponseModelKind::kDelay || drop >= kFilterClaimChiSquareDrop) continue;
-      first.notes.push_back("AIC prefers it to the pure delay by " + fmt(out.models[i].aic - first.aic, 3) +
-                            ", but it lowers chi^2 by " + fmt(drop, 3) +
-                            " only (a filter is claimed at 9, 3 sigma): the pure delay is chosen");
-      out.chosen = static_cast<int>(i);
+      const int extra = parameterCount(out.models[c].kind) - parameterCount(out.models[i].kind);
+      if (extra <= 0) continue;
+      const double drop = out.models[i].chiSquare - out.models[c].chiSquare;
+      if (drop >= claimAt(extra)) continue;
+      out.models[c].notes.push_back("AIC prefers it to " + std::string(modelTitle(out.models[i].kind)) + " by " +
+                                    fmt(out.models[i].aic - out.models[c].aic, 3) + ", but it lowers chi^2 by " +
+                                    fmt(drop, 3) + " only (" + std::to_string(extra) + " more parameter" +
+                                    (extra > 1 ? "s" : "") + " claimed at " + fmt(claimAt(extra), 3) +
+                                    ", 3 sigma): " + modelTitle(out.models[i].kind) + " is chosen");
+      out.chosen = static_cast<int>(i);  // the models are in order of size: the simplest first
+      moved = true;
       break;
     }
+  }
   return out;
 }
 
