@@ -2,10 +2,12 @@
 // the result (alias groups, per-point views, timing audits).
 #include "core/diagnosis/diagnosis.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 
+#include "core/common/units.h"
 #include "core/diagnosis/diagnosis_stages.h"
 
 namespace fog::diagnosis {
@@ -97,6 +99,32 @@ void reportContradictedFrame(const FrameCheck& frame, Diagnosis& d) {
   for (auto& e : d.effects) e.kept = false;
 }
 
+// A g-sensitivity named in the frame used has an alias in the other one:
+// the specific force at rest and the vertical Earth rate both point up, so
+// gyro i sees (Omega sin(lat) + k g) (up . e_i) and the frame turned over
+// with k' = -k - 2 Omega sin(lat) / g gives the same data. The frame check
+// keeps the frame whose k is smaller by a margin (alpha < -1/2); when the
+// other frame's k' is within 3x of k the verdict says so: a z-up IMU stated
+// z down with k = -1.13 Omega sin(lat) / g was named g-sensitivity -8.2
+// deg/h/g (k' -11.2, its truth) with the stated frame "confirmed".
+void noteFrameAlias(const Calibration& cal, Diagnosis& d) {
+  const auto named = std::find(d.verdictEffects.begin(), d.verdictEffects.end(), "g_sensitivity");
+  if (named == d.verdictEffects.end()) return;
+  const auto fit = std::find_if(d.effects.begin(), d.effects.end(),
+                                [](const EffectFit& e) { return e.name == "g_sensitivity"; });
+  if (fit == d.effects.end() || fit->values.empty()) return;
+  const double k = fit->values[0];
+  const double other = -k - 2.0 * kEarthRateDegPerH * std::sin(cal.config.earth.latitudeDeg * kRadPerDeg);
+  if (!(std::abs(other) <= 3.0 * std::abs(k))) return;
+  const std::string text = std::string("with the IMU's z axis ") + (cal.frame.zUp ? "down" : "up") +
+                           " instead, a g-sensitivity of " + fmt("%.2f", other) + " deg/h/g gives the same data as " +
+                           fmt("%.2f", k) + " deg/h/g in the frame used: an isotropic g-sensitivity adds to the "
+                           "vertical Earth rate and swing data cannot tell them apart; check the IMU's mounting "
+                           "(a static test with the IMU turned over separates them)";
+  d.verdictReason += "; " + text;
+  d.notes.push_back(text);
+}
+
 // The timing audits of the session and of the nominal replay.
 void auditTimings(const Recording& used, const Replay& replay, std::uint64_t seed, Diagnosis& d) {
   d.realTiming = auditTiming(used, replay.ref.tablePeriodS, replay.ref.imuPeriodS);
@@ -163,7 +191,10 @@ Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, cons
 
   progress.stage("verdict", expectedReplays);
   decideVerdict(model, candidates, gap.z0, options, d);
-  if (replay.cal.frame.contradicted && d.verdict != "undetermined") reportContradictedFrame(replay.cal.frame, d);
+  if (replay.cal.frame.contradicted && d.verdict != "undetermined")
+    reportContradictedFrame(replay.cal.frame, d);
+  else
+    noteFrameAlias(replay.cal, d);
   d.aliasGroups = aliasGroups(replay.cal);
   d.points = pointViews(*session, replay, real, *outputs, monteCarloReplays(options), gap.st);
   auditTimings(session->used, replay, options.seed, d);

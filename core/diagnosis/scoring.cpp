@@ -611,6 +611,18 @@ void decideVerdict(const VerdictModel& chosen, const std::vector<Candidate>& can
   }
   if (left.empty() && significantRemainder(total.after, total.cells))
     left = "held-out cells (" + describeRemainder(total.after, total.cells) + ")";
+  if (!model.empty() && !left.empty() && !(total.shrink >= options.partialExplanationShare)) {
+    // Kept by its delta chi2, but closing too little to be named.
+    d.verdict = "unexplained";
+    d.verdictReason = "the gap is significant and no effect in the library explains it: the best, " +
+                      effectTitle(cands[model[0]].fit.name) + ", closes only " + fmt("%.0f", 100.0 * total.shrink) +
+                      " % of the held-out gap and leaves a significant remainder in the " + left;
+    for (auto& cand : cands) d.effects.push_back(cand.fit);
+    for (std::size_t m : model)
+      d.effects[m].note = "kept by its held-out delta chi2, but it closes only " + fmt("%.0f", 100.0 * total.shrink) +
+                          " % of the held-out gap: not named as a partial explanation";
+    return;
+  }
   for (std::size_t m : model) d.verdictEffects.push_back(cands[m].fit.name);
   if (model.empty()) {
     d.verdict = d.gapSignificant ? "unexplained" : "none";

@@ -225,13 +225,13 @@
     </message>
     <message>
         <location line="+21"/>
-        <location line="+134"/>
+        <location line="+131"/>
         <location line="+35"/>
         <source>Hz</source>
         <translation>Hz</translation>
     </message>
     <message>
-        <location line="-167"/>
+        <location line="-164"/>
         <source>dB</source>
         <translation>dB</translation>
     </message>
@@ -286,7 +286,7 @@
         <translation>尚无频率响应。</translation>
     </message>
     <message>
-        <location line="+78"/>
+        <location line="+75"/>
         <source>—</source>
         <translation>—</translation>
     </message>
@@ -5619,6 +5619,21 @@ The session itself is unchanged.</source>
     </message>
     <message>
         <location line="+1"/>
+        <source>the gap is significant and no effect in the library explains it: the best, %1, closes only %2 % of the held-out gap and leaves a significant remainder in the %3</source>
+        <translation>差异显著，效应库中没有效应能解释它：最佳的 %1 只缩小了留出差异的 %2 %，且在%3中留下显著残差</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>with the IMU&apos;s z axis %1 instead, a g-sensitivity of %2 deg/h/g gives the same data as %3 deg/h/g in the frame used: an isotropic g-sensitivity adds to the vertical Earth rate and swing data cannot tell them apart</source>
+        <translation>若 IMU 的 z 轴改为%1，%2 °/h/g 的 g 敏感性给出与所用坐标系中 %3 °/h/g 相同的数据：各向同性的 g 敏感性叠加在垂直地球自转角速度上，摆动数据无法区分二者</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>check the IMU&apos;s mounting (a static test with the IMU turned over separates them)</source>
+        <translation>请检查 IMU 的安装（将 IMU 翻转后做静态测试可区分二者）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>%1 channel (%2)</source>
         <translation>%1 通道（%2）</translation>
     </message>
@@ -6974,8 +6989,28 @@ The session itself is unchanged.</source>
     </message>
     <message>
         <location line="+1"/>
-        <source>AIC prefers it to the pure delay by %1, but it lowers chi^2 by %2 only (a filter is claimed at 9, 3 sigma): the pure delay is chosen</source>
-        <translation>AIC 比纯延迟模型更倾向于它（差 %1），但它只使 χ² 降低 %2（滤波器须降低 9，即 3σ）：选择纯延迟</translation>
+        <source>AIC prefers it to %1 by %2, but it lowers chi^2 by %3 only (1 more parameter claimed at %4, 3 sigma): %5 is chosen</source>
+        <translation>AIC 比%1更倾向于它（差 %2），但它只使 χ² 降低 %3（多 1 个参数须降低 %4，即 3σ）：选择%5</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>AIC prefers it to %1 by %2, but it lowers chi^2 by %3 only (%4 more parameters claimed at %5, 3 sigma): %6 is chosen</source>
+        <translation>AIC 比%1更倾向于它（差 %2），但它只使 χ² 降低 %3（多 %4 个参数须降低 %5，即 3σ）：选择%6</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the pure delay</source>
+        <translation>纯延迟模型</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the first-order lag</source>
+        <translation>一阶滞后模型</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the second-order response</source>
+        <translation>二阶响应模型</translation>
     </message>
     <message>
         <location line="+1"/>

@@ -38,7 +38,7 @@ using namespace fog;
 // Words a Chinese operator reads as they are: units, acronyms, names.
 const QStringList kKept = {"IMU", "ARW", "chi", "ppm", "rms", "dof", "Hz", "ms", "fogbench", "SQLite", "Allan",
                            "IEEE", "printf", "dd", "COPY", "fbs", "conv", "notrunc", "of", "format", "urad",
-                           "udeg", "us", "sigma", "CRLB", "sin", "cos", "ioctl", "KiB", "MiB", "FIFO"};
+                           "udeg", "us", "sigma", "CRLB", "AIC", "BIC", "sin", "cos", "ioctl", "KiB", "MiB", "FIFO"};
 
 // English left in a translated text: runs of three or more Latin letters that
 // are not kept words, identifiers (with _ . or -), the given path or a
@@ -143,6 +143,18 @@ class CoreTextTest : public QObject {
     std::vector<std::unique_ptr<model::Effect>> e;
     e.push_back(diagnosis::makeEffect(diagnosis::EffectId::kFirstOrderLag, {3.0}));
     expectDiagnosisChinese(simulated(std::move(e), 22));
+  }
+
+  // The verdict's words when a kept effect closes little, and the frame's
+  // alias of a named g-sensitivity (core/diagnosis, as the core writes them).
+  void verdictWithoutAPartialExplanationAndTheFrameAlias() {
+    expectChinese("the gap is significant and no effect in the library explains it: the best, table harmonic "
+                  "distortion, closes only 5 % of the held-out gap and leaves a significant remainder in the gyro "
+                  "channel (excess chi2 1421 over 100 cells, 100.5 sigma)");
+    expectChinese("closes 100 % of the held-out gap; with the IMU's z axis up instead, a g-sensitivity of -59.34 "
+                  "deg/h/g gives the same data as 40.00 deg/h/g in the frame used: an isotropic g-sensitivity adds "
+                  "to the vertical Earth rate and swing data cannot tell them apart; check the IMU's mounting (a "
+                  "static test with the IMU turned over separates them)");
   }
 
   void effectNamesParametersAndUnits() {
@@ -353,6 +365,11 @@ class CoreTextTest : public QObject {
     QVERIFY(few.isOk());
     QCOMPARE(few->skipped.size(), std::size_t(1));
     expectChinese(few->skipped.front());
+    // The choice rule's notes, with one and with two more parameters.
+    expectChinese("AIC prefers it to the first-order lag by 0.742, but it lowers chi^2 by 2.74 only (1 more parameter "
+                  "claimed at 9, 3 sigma): the first-order lag is chosen");
+    expectChinese("AIC prefers it to the pure delay by 1.5, but it lowers chi^2 by 5.5 only (2 more parameters "
+                  "claimed at 11.8, 3 sigma): the pure delay is chosen");
     for (const char* why : {"the fit did not converge in 50 iterations",
                             "the fit's sums are not finite numbers (a value in the data is far beyond its range)",
                             "the fit's parameters are not determined by the data", "the fit's covariance is not positive"})

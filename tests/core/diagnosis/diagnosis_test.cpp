@@ -135,6 +135,10 @@ TEST(Diagnosis, GSensitivityIsNamedFromTheCrossAxes) {
   const Diagnosis d = diagnoseWith(EffectId::kGSensitivity, {40.0}, 24);
   EXPECT_EQ(d.verdict, "g_sensitivity") << d.verdictReason;
   EXPECT_NEAR(fitOf(d, "g_sensitivity").values[0], 40.0, 2.0);
+  // Its alias: the frame turned over with k' = -k - 2 Omega sin(40 deg) / g = -59.3 deg/h/g.
+  EXPECT_NE(d.verdictReason.find("with the IMU's z axis up instead, a g-sensitivity of -5"), std::string::npos)
+      << d.verdictReason;
+  EXPECT_NE(d.verdictReason.find("swing data cannot tell them apart"), std::string::npos);
 }
 
 TEST(Diagnosis, ClockDriftIsNamedAndRecovered) {
