@@ -65,6 +65,15 @@ double worstChannelWorsening(const std::vector<GapCell>& cells, const std::vecto
   return *std::max_element(delta.begin(), delta.end());
 }
 
+bool gapIsSignificant(double chiSquare, int cells, const std::vector<ChannelGap>& channels, double sigma) {
+  auto beyond = [sigma](double chi2, int n) {
+    return n > 0 && chi2 - n > sigma * std::sqrt(2.0 * static_cast<double>(n));
+  };
+  if (beyond(chiSquare, cells)) return true;
+  return std::any_of(channels.begin(), channels.end(),
+                     [&](const ChannelGap& c) { return beyond(c.chiSquare, c.cells); });
+}
+
 std::vector<ChannelGap> channelGaps(const std::vector<GapCell>& cells, bool after) {
   std::vector<ChannelGap> out;
   for (int c = 0; c < kChannelCount; ++c) {
@@ -225,9 +234,8 @@ Result<GapModel> buildGapMap(const FeatureSet& realFeatures, const std::vector<S
     if (informative) ++d.cells;
   }
   d.chiSquare = chi2(st.z, st.held, false) + chi2(st.z, st.held, true);
-  const double cells = static_cast<double>(d.cells);
-  d.gapSignificant = d.chiSquare - cells > options.gapSigma * std::sqrt(2.0 * cells);
   d.gapBefore = channelGaps(d.gapMap, false);
+  d.gapSignificant = gapIsSignificant(d.chiSquare, d.cells, d.gapBefore, options.gapSigma);
   g.base = outputs[0].values;
   // Nuisance directions the calibration already owns: one delay for the whole
   // session (the alias group) and one constant trend per gyro axis (bias).

@@ -79,5 +79,21 @@ TEST(Verdict, AKeptModelThatLeavesNoiseIsTheVerdict) {
   EXPECT_EQ(c.d.verdictReason, "closes 100 % of the held-out gap");
 }
 
+// Blind check 1/98 (a flicker bias): the gyro channel's excess chi2 is 110
+// over 80 cells (8.7 sigma), all 270 cells' only 91 (3.9 sigma: the table
+// channel under-dispersed, -33): the gap is significant, in the gyro channel.
+TEST(Verdict, AGapInOneChannelIsSignificantThoughTheOthersDiluteIt) {
+  std::vector<ChannelGap> channels(3);
+  channels[0].channel = Channel::kTable, channels[0].cells = 100, channels[0].chiSquare = 67.0;
+  channels[1].channel = Channel::kGyro, channels[1].cells = 80, channels[1].chiSquare = 190.0;
+  channels[2].channel = Channel::kGyroMinusTable, channels[2].cells = 90, channels[2].chiSquare = 104.0;
+  const double all = 67.0 + 190.0 + 104.0;  // 361 over 270: excess 91, 3.9 sigma
+  EXPECT_TRUE(gapIsSignificant(all, 270, channels, 5.0));
+  channels[1].chiSquare = 130.0;  // excess 50: 4.0 sigma in the channel, 1.3 over all
+  EXPECT_FALSE(gapIsSignificant(67.0 + 130.0 + 104.0, 270, channels, 5.0));
+  EXPECT_TRUE(gapIsSignificant(400.0, 270, {}, 5.0));  // 130 over 270: 5.6 sigma
+  EXPECT_FALSE(gapIsSignificant(0.0, 0, {}, 5.0));
+}
+
 }  // namespace
 }  // namespace fog::diagnosis::detail
