@@ -212,8 +212,9 @@ double periodicResidualInflation(const std::vector<double>& r, double samplesPer
   // the residual's other parts drop out: an angle random walk (the gyro's
   // cumulative angle) leaves d uncorrelated beyond one sample, where the
   // residual itself is correlated near 1 one period apart in any record of
-  // many periods (which once inflated an incommensurate 11-Hz point's
-  // variance 3x), and a smooth misfit at harmonic m shrinks by (m w dt)^4.
+  // many periods (read from it, an incommensurate 11-Hz point had 3x the
+  // fit's variance added), and a smooth misfit at harmonic m shrinks by
+  // (m w dt)^4.
   // Their mean is the ends' slopes' difference over n - 2: it telescopes.
   const double mean = (r[n - 1] - r[n - 2] - r[1] + r[0]) / static_cast<double>(n - 2);
   // The shifts of one, two, ... periods that fit in the record.
