@@ -255,7 +255,7 @@ void BodeView::addModelRow(const QString& series, const analysis::ResponseModelF
     item->setToolTip(col == kNotesColumn ? QStringLiteral("<p>") + noteList.join(QStringLiteral("</p><p>")).toHtmlEscaped() + QStringLiteral("</p>")
                                          : cells[col]);
     if (chosen) {
-      if (col != kNotesColumn) item->setToolTip(tr("The model chosen: the lowest AIC; a first-order lag over the pure delay only when it lowers χ² by 9 (3σ)"));
+      if (col != kNotesColumn) item->setToolTip(tr("The model chosen: the lowest AIC; a larger model over a simpler one it contains only when it lowers χ² by 3σ for its extra parameters (9 for one, 11.83 for two)"));
       QFont bold = item->font();
       bold.setBold(true);
       item->setFont(bold);

@@ -10,8 +10,9 @@
 //   second_order  H(s) = K e^(-s tau) wn^2 / (s^2 + 2 zeta wn s + wn^2)
 //
 // Each with its parameters' standard uncertainties and correlations, chi^2,
-// AIC and BIC; the model with the lowest AIC is chosen (a first-order lag
-// over the pure delay only when it lowers chi^2 by 9). Its -3 dB bandwidth
+// AIC and BIC; the model with the lowest AIC is chosen (a larger model over
+// a simpler one it nests only when it lowers chi^2 by 9 for one more
+// parameter, 11.83 for two: 3 sigma). Its -3 dB bandwidth
 // and its group delay at a chosen frequency carry uncertainties propagated
 // from the parameters' covariance.
 
@@ -85,9 +86,10 @@ struct ResponseAnalysis {
   std::vector<ResponsePoint> points;
   std::vector<ResponseModelFit> models;  // those with enough points, in kind order
   std::vector<std::string> skipped;      // models left out and why (too few points)
-  // Index into models: the lowest AIC, except that the first order is
-  // chosen over the pure delay it nests only when it lowers chi^2 by 9 (3
-  // sigma for its one more parameter; a note on it says so otherwise).
+  // Index into models: the lowest AIC, except that a larger model is chosen
+  // over a simpler one it nests only when it lowers chi^2 by the 3-sigma
+  // point for its extra parameters (9 for one, 11.83 for two; a note on it
+  // says so otherwise).
   int chosen = -1;
   double groupDelayAtHz = 0.0;
 };

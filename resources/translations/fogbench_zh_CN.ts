@@ -307,7 +307,12 @@
         <translation>ms</translation>
     </message>
     <message>
-        <location line="-2"/>
+        <location line="-24"/>
+        <source>The model chosen: the lowest AIC; a larger model over a simpler one it contains only when it lowers χ² by 3σ for its extra parameters (9 for one, 11.83 for two)</source>
+        <translation>所选模型：AIC 最低；较大的模型仅当其使 χ² 比它所包含的较简单模型降低 3σ（多 1 个参数为 9，多 2 个为 11.83）时才选它</translation>
+    </message>
+    <message>
+        <location line="+22"/>
         <source>; &lt;b&gt;%1&lt;/b&gt; (chosen): group delay at %2 Hz &lt;b&gt;%3&lt;/b&gt;</source>
         <translation>；&lt;b&gt;%1&lt;/b&gt;（所选）：%2 Hz 处群延迟 &lt;b&gt;%3&lt;/b&gt;</translation>
     </message>
@@ -322,12 +327,7 @@
         <translation>%1%2 个点，%3 – %4 Hz</translation>
     </message>
     <message>
-        <location line="-17"/>
-        <source>The model chosen: the lowest AIC; a first-order lag over the pure delay only when it lowers χ² by 9 (3σ)</source>
-        <translation>所选模型：AIC 最低；仅当一阶滞后使 χ² 比纯延迟降低 9（3σ）时才选它</translation>
-    </message>
-    <message>
-        <location line="+26"/>
+        <location line="+9"/>
         <source>, −3 dB bandwidth %1</source>
         <translation>，−3 dB 带宽 %1</translation>
     </message>
