@@ -5634,6 +5634,31 @@ The session itself is unchanged.</source>
     </message>
     <message>
         <location line="+1"/>
+        <source>the table channel&apos;s harmonics are in the encoder&apos;s reading only: the share of the table&apos;s harmonics the gyros do not see is %1 +- %2 (0 for a motion of the table, 1 for an encoder reading error), %3 sigma from a motion</source>
+        <translation>转台通道的谐波只存在于编码器读数中：陀螺未看到的转台谐波份额为 %1 ± %2（转台运动为 0，编码器读数误差为 1），与运动相差 %3 σ</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>an encoder reading error (an eccentric grating, a read-head error) is not in the library, whose table harmonic distortion is a motion and is kept as the table channel&apos;s partial explanation</source>
+        <translation>编码器读数误差（光栅偏心、读数头误差）不在效应库中；库中的转台谐波畸变是一种运动，作为转台通道的部分解释保留</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>fits the table channel, but the gyros do not see its harmonics: a reading error, not a motion</source>
+        <translation>拟合了转台通道，但陀螺未看到其谐波：是读数误差，而不是运动</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>an encoder reading error with the same harmonics is not excluded: the share of the table&apos;s harmonics the gyros do not see is %1 +- %2 (0 for a motion of the table, 1 for an encoder reading error)</source>
+        <translation>不能排除具有相同谐波的编码器读数误差：陀螺未看到的转台谐波份额为 %1 ± %2（转台运动为 0，编码器读数误差为 1）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a second read head opposite the first, or an autocollimator on the table, separates a reading error from a motion</source>
+        <translation>在第一个读数头对面加装第二个读数头，或在转台上使用自准直仪，可区分读数误差与运动</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>%1 channel (%2)</source>
         <translation>%1 通道（%2）</translation>
     </message>
