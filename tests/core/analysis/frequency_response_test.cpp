@@ -347,79 +347,71 @@ bool hasModel(const ResponseAnalysis& r, ResponseModelKind kind) {
   return std::any_of(r.models.begin(), r.models.end(), [kind](const auto& m) { return m.kind == kind; });
 }
 
+// Over 200 trials of noisyPoints(tMs): how often `larger` is fitted beside
+// the `simpler` model it nests, preferred to it by AIC, and claimed. Every
+// claim must lower chi^2 by 9 (3 sigma for its one more parameter); every
+// AIC preference short of that must leave `simpler` chosen, with a note on
+// `larger` saying so. `never` must never be chosen.
+struct ClaimCount {
+  int fitted = 0, preferredByAic = 0, claimed = 0;
+};
+ClaimCount countClaims(std::uint64_t seed, double tMs, ResponseModelKind simpler, ResponseModelKind larger,
+                       ResponseModelKind never, const std::string& simplerTitle) {
+  std::mt19937_64 rng(seed);
+  ClaimCount n;
+  for (int trial = 0; trial < 200; ++trial) {
+    auto r = analyzeResponse(noisyPoints(rng, tMs), Axis::kX, 5.0);
+    EXPECT_TRUE(r.isOk()) << r.status().message();
+    if (!r.isOk()) return n;
+    if (!hasModel(*r, simpler) || !hasModel(*r, larger)) continue;  // e.g. no first-order fit at all (T at its bound)
+    ++n.fitted;
+    const auto& small = model(*r, simpler);
+    const auto& big = model(*r, larger);
+    const auto& chosen = r->models[static_cast<std::size_t>(r->chosen)];
+    const double drop = small.chiSquare - big.chiSquare;
+    EXPECT_NE(chosen.kind, never) << "trial " << trial;
+    if (chosen.kind == larger) {
+      ++n.claimed;
+      EXPECT_GE(drop, 9.0) << "trial " << trial;
+    }
+    if (big.aic < small.aic) {
+      ++n.preferredByAic;
+      if (drop < 9.0) {
+        EXPECT_EQ(chosen.kind, simpler) << "trial " << trial;
+        EXPECT_TRUE(std::any_of(big.notes.begin(), big.notes.end(), [&](const std::string& note) {
+          return note.rfind("AIC prefers it to " + simplerTitle + " by", 0) == 0 &&
+                 note.find("(1 more parameter claimed at 9, 3 sigma): " + simplerTitle + " is chosen") !=
+                     std::string::npos;
+        })) << "trial " << trial;
+      }
+    }
+  }
+  return n;
+}
+
 // On a pure delay AIC prefers the first order (which nests it) whenever
 // chance lowers chi^2 by more than 2, about 16 % of the time; a filter is
 // claimed only when chi^2 drops by 9 (3 sigma), expected 0.27 % of the time.
 TEST(FrequencyResponse, AFirstOrderLagIsClaimedOnlyAtThreeSigma) {
-  std::mt19937_64 rng(7);
-  int fitted = 0, preferredByAic = 0, claimed = 0;
-  const int trials = 200;
-  for (int trial = 0; trial < trials; ++trial) {
-    auto r = analyzeResponse(noisyPoints(rng, 0.0), Axis::kX, 5.0);
-    ASSERT_TRUE(r.isOk()) << r.status().message();
-    if (!hasModel(*r, ResponseModelKind::kFirstOrder)) continue;  // no first-order fit at all (T at its bound)
-    ++fitted;
-    const auto& delay = model(*r, ResponseModelKind::kDelay);
-    const auto& first = model(*r, ResponseModelKind::kFirstOrder);
-    const auto& chosen = r->models[static_cast<std::size_t>(r->chosen)];
-    const double drop = delay.chiSquare - first.chiSquare;
-    EXPECT_NE(chosen.kind, ResponseModelKind::kSecondOrder) << "trial " << trial;
-    if (chosen.kind == ResponseModelKind::kFirstOrder) {
-      ++claimed;
-      EXPECT_GE(drop, 9.0) << "trial " << trial;
-    }
-    if (first.aic < delay.aic) {
-      ++preferredByAic;
-      if (drop < 9.0) {
-        EXPECT_EQ(chosen.kind, ResponseModelKind::kDelay) << "trial " << trial;
-        EXPECT_TRUE(std::any_of(first.notes.begin(), first.notes.end(),
-                                [](const std::string& n) { return n.rfind("AIC prefers it to the pure delay", 0) == 0; }));
-      }
-    }
-  }
-  std::printf("  first order fitted in %d of %d pure delays, preferred by AIC in %d, claimed in %d\n", fitted, trials,
-              preferredByAic, claimed);
-  EXPECT_GT(preferredByAic, 0) << "the rule was never exercised";
+  const ClaimCount n = countClaims(7, 0.0, ResponseModelKind::kDelay, ResponseModelKind::kFirstOrder,
+                                   ResponseModelKind::kSecondOrder, "the pure delay");
+  std::printf("  first order fitted in %d of 200 pure delays, preferred by AIC in %d, claimed in %d\n", n.fitted,
+              n.preferredByAic, n.claimed);
+  EXPECT_GT(n.preferredByAic, 0) << "the rule was never exercised";
   // Expected 0.5 of 191 at 0.27 %; 3 or more has a probability of 1.4 %.
-  EXPECT_LE(claimed, 2);
+  EXPECT_LE(n.claimed, 2);
 }
 
 // The same for the second order over the first-order lag it holds as its
 // overdamped limit: on the independent generator AIC chose it for 6 of 50
 // 2-ms lags (chi^2 lower by 2.1-2.9) once the points' sigma were right.
 TEST(FrequencyResponse, ASecondOrderResponseIsClaimedOverAFirstOrderLagOnlyAtThreeSigma) {
-  std::mt19937_64 rng(11);
-  int both = 0, preferredByAic = 0, claimed = 0;
-  const int trials = 200;
-  for (int trial = 0; trial < trials; ++trial) {
-    auto r = analyzeResponse(noisyPoints(rng, 2.0), Axis::kX, 5.0);
-    ASSERT_TRUE(r.isOk()) << r.status().message();
-    if (!hasModel(*r, ResponseModelKind::kSecondOrder) || !hasModel(*r, ResponseModelKind::kFirstOrder)) continue;
-    ++both;
-    const auto& first = model(*r, ResponseModelKind::kFirstOrder);
-    const auto& second = model(*r, ResponseModelKind::kSecondOrder);
-    const auto& chosen = r->models[static_cast<std::size_t>(r->chosen)];
-    const double drop = first.chiSquare - second.chiSquare;
-    EXPECT_NE(chosen.kind, ResponseModelKind::kDelay) << "trial " << trial;
-    if (chosen.kind == ResponseModelKind::kSecondOrder) {
-      ++claimed;
-      EXPECT_GE(drop, 9.0) << "trial " << trial;
-    }
-    if (second.aic < first.aic) {
-      ++preferredByAic;
-      if (drop < 9.0) {
-        EXPECT_EQ(chosen.kind, ResponseModelKind::kFirstOrder) << "trial " << trial;
-        EXPECT_TRUE(std::any_of(second.notes.begin(), second.notes.end(), [](const std::string& n) {
-          return n.rfind("AIC prefers it to the first-order lag by", 0) == 0 &&
-                 n.find("(1 more parameter claimed at 9, 3 sigma): the first-order lag is chosen") != std::string::npos;
-        }));
-      }
-    }
-  }
-  std::printf("  both fitted in %d of %d first-order lags, second order preferred by AIC in %d, claimed in %d\n",
-              both, trials, preferredByAic, claimed);
-  EXPECT_GT(preferredByAic, 0) << "the rule was never exercised";
-  EXPECT_LE(claimed, 2);
+  const ClaimCount n = countClaims(11, 2.0, ResponseModelKind::kFirstOrder, ResponseModelKind::kSecondOrder,
+                                   ResponseModelKind::kDelay, "the first-order lag");
+  std::printf("  both fitted in %d of 200 first-order lags, second order preferred by AIC in %d, claimed in %d\n",
+              n.fitted, n.preferredByAic, n.claimed);
+  EXPECT_GT(n.preferredByAic, 0) << "the rule was never exercised";
+  EXPECT_LE(n.claimed, 2);
 }
 
 TEST(FrequencyResponse, TooFewPointsSaySo) {
