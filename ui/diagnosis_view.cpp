@@ -3,7 +3,9 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QEvent>
 #include <QFontDatabase>
+#include <QFontMetrics>
 #include <QGridLayout>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -16,6 +18,7 @@
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <qwt_color_map.h>
 #include <qwt_column_symbol.h>
@@ -89,6 +92,21 @@ QwtPlot* makePlot(const QString& title, const QString& x, const QString& y) {
 
 QString axisLetter(int a) { return a < 0 ? QString() : QString(QChar('X' + a)); }
 
+// Calls `onResize` whenever the watched widget is resized.
+class ResizeHook : public QObject {
+ public:
+  ResizeHook(QObject* watched, std::function<void()> onResize) : QObject(watched), onResize_(std::move(onResize)) {
+    watched->installEventFilter(this);
+  }
+  bool eventFilter(QObject*, QEvent* event) override {
+    if (event->type() == QEvent::Resize) onResize_();
+    return false;
+  }
+
+ private:
+  std::function<void()> onResize_;
+};
+
 }  // namespace
 
 DiagnosisView::DiagnosisView(QWidget* parent) : QWidget(parent) {
@@ -98,6 +116,7 @@ DiagnosisView::DiagnosisView(QWidget* parent) : QWidget(parent) {
   verdict_->setObjectName("diagnosisVerdict");
   verdict_->setWordWrap(true);
   verdict_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  new ResizeHook(verdict_, [this] { fitVerdictHeight(); });
   top->addWidget(verdict_, 1);
   pointLabel_ = new QLabel(tr("Test point"));
   top->addWidget(pointLabel_);
@@ -221,6 +240,7 @@ DiagnosisView::DiagnosisView(QWidget* parent) : QWidget(parent) {
   PlotInteraction::Options plain;
   plain.timeAxis = false;
   gapMapInteraction_ = new PlotInteraction(gapMapPlot_, plain);
+  new ResizeHook(gapMapPlot_->canvas(), [this] { fitGapMapColumns(); });
   spectrumInteraction_ = new PlotInteraction(spectrumPlot_, plain);
   shrinkInteraction_ = new PlotInteraction(shrinkPlot_, plain);
 
@@ -287,6 +307,34 @@ QString DiagnosisView::stageText(const std::string& stage) {
   return coreText(stage);
 }
 
+void DiagnosisView::setVerdict(const QString& text) {
+  verdict_->setText(text);
+  fitVerdictHeight();
+}
+
+// The scroll area around the view sizes it from its minimum size hint,
+// which takes the wrapped verdict at its preferred width (fewer lines): at
+// 1024x700 a 4-line verdict squeezed the plots 56 px below their minimum
+// and each row of plots overlapped the next. Its height for its width now
+// is its minimum.
+void DiagnosisView::fitVerdictHeight() { verdict_->setMinimumHeight(verdict_->heightForWidth(verdict_->width())); }
+
+// Every n-th segment named, n as small as the canvas allows with a gap
+// between labels ("P1 S1 P1 S2" ran together on a 155-px canvas).
+void DiagnosisView::fitGapMapColumns() {
+  const int nCols = static_cast<int>(columnNames_.size());
+  if (nCols == 0) return;
+  const QFontMetrics metrics(gapMapPlot_->axisWidget(QwtPlot::xBottom)->font());
+  int widest = 0;
+  for (const QString& name : columnNames_) widest = std::max(widest, metrics.horizontalAdvance(name + QLatin1Char(' ')));
+  const QwtInterval shown = gapMapPlot_->axisInterval(QwtPlot::xBottom);  // as zoomed
+  const int width = std::max(1, gapMapPlot_->canvas()->width());
+  const double step = std::max(1.0, std::ceil(shown.width() * widest / width));
+  if (gapMapPlot_->axisStepSize(QwtPlot::xBottom) == step) return;
+  gapMapPlot_->setAxisScale(QwtPlot::xBottom, shown.minValue(), shown.maxValue(), step);
+  gapMapPlot_->replot();
+}
+
 void DiagnosisView::showPlaceholder(const QString& text) {
   placeholder_->setText(text);
   stack_->setCurrentIndex(0);
@@ -312,7 +360,7 @@ void DiagnosisView::startDiagnosis(const QString& title) {
   stage_->setText(tr("starting …"));
   cancel_->setEnabled(true);
   progressRow_->show();
-  verdict_->setText(tr("<b>Diagnosing %1</b>: replaying it in the simulator and comparing.").arg(title.toHtmlEscaped()));
+  setVerdict(tr("<b>Diagnosing %1</b>: replaying it in the simulator and comparing.").arg(title.toHtmlEscaped()));
   text_->clear();
   showPlaceholder(tr("Diagnosing %1 …\nThe plots appear when the diagnosis is done.").arg(title));
 }
@@ -327,14 +375,14 @@ void DiagnosisView::showCancelled(const QString& title) {
   state_ = State::kCancelled;
   diagnosis_.reset();
   progressRow_->hide();
-  verdict_->setText(tr("<b>Diagnosis cancelled</b>: %1 has no diagnosis.").arg(title.toHtmlEscaped()));
+  setVerdict(tr("<b>Diagnosis cancelled</b>: %1 has no diagnosis.").arg(title.toHtmlEscaped()));
   showPlaceholder(tr("Diagnosis cancelled.\nPress Diagnose in the Results view to start it again."));
 }
 
 void DiagnosisView::showMessage(const QString& message) {
   if (state_ == State::kRunning) state_ = State::kFailed;
   progressRow_->hide();
-  verdict_->setText(message);
+  setVerdict(message);
   if (!diagnosis_) showPlaceholder(message);
 }
 
@@ -352,7 +400,7 @@ void DiagnosisView::showDiagnosis(std::shared_ptr<const diagnosis::Diagnosis> d,
                 .arg(coreText(diagnosis::channelName(diagnosis_->gapBefore[i].channel)))
                 .arg(localNumber(diagnosis_->gapBefore[i].rmsZ, 'f', 2))
                 .arg(localNumber(diagnosis_->gapAfter[i].rmsZ, 'f', 2));
-  verdict_->setText(tr("<b>%1 — verdict: %2</b><br>%3<br>gap per channel (rms z, 1 = within the simulator's "
+  setVerdict(tr("<b>%1 — verdict: %2</b><br>%3<br>gap per channel (rms z, 1 = within the simulator's "
                        "spread), before → after: %4")
                         .arg(title.toHtmlEscaped(), coreText(diagnosis::effectTitle(diagnosis_->verdict)).toHtmlEscaped(),
                              coreText(diagnosis_->verdictReason).toHtmlEscaped(), gaps));
@@ -480,8 +528,7 @@ void DiagnosisView::showGapMap() {
   // rather than all of them shrunk to a few pixels.
   const double kLabelsShown = 8.0;
   const double rowStep = std::max(1.0, std::ceil(nRows / kLabelsShown));
-  const double columnStep = std::max(1.0, std::ceil(nCols / kLabelsShown));
-  gapMapPlot_->setAxisScale(QwtPlot::xBottom, -0.5, nCols - 0.5, columnStep);
+  gapMapPlot_->setAxisScale(QwtPlot::xBottom, -0.5, nCols - 0.5, std::max(1.0, std::ceil(nCols / kLabelsShown)));
   gapMapPlot_->setAxisScale(QwtPlot::yLeft, -0.5, nRows - 0.5, rowStep);
   gapMapPlot_->setAxisMaxMinor(QwtPlot::xBottom, 0);
   gapMapPlot_->setAxisMaxMinor(QwtPlot::yLeft, 0);
@@ -490,6 +537,7 @@ void DiagnosisView::showGapMap() {
     if (font.pointSizeF() < kMinLabelPt) font.setPointSizeF(kMinLabelPt);
     gapMapPlot_->axisWidget(axis)->setFont(font);
   }
+  fitGapMapColumns();
   // "P1 S2" explained where it is read.
   QwtText columnsTitle(tr("P test point, S segment"));
   QFont titleFont = gapMapPlot_->axisWidget(QwtPlot::xBottom)->font();

@@ -87,6 +87,9 @@ class DiagnosisView : public QWidget {
   void showShrink();
 
   void showPlaceholder(const QString& text);
+  void setVerdict(const QString& text);  // and the label's height for its lines
+  void fitVerdictHeight();
+  void fitGapMapColumns();
 
   std::shared_ptr<const diagnosis::Diagnosis> diagnosis_;
   State state_ = State::kIdle;

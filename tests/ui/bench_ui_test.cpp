@@ -46,8 +46,10 @@
 #include <qwt_plot.h>
 #include <qwt_plot_barchart.h>
 #include <qwt_scale_div.h>
+#include <qwt_scale_draw.h>
 #include <qwt_scale_map.h>
 #include <qwt_scale_widget.h>
+#include <qwt_text.h>
 #include <vector>
 
 #include "core/common/version.h"
@@ -1253,6 +1255,47 @@ class BenchUiTest : public QObject {
              QString::fromStdString(fog::diagnosis::effectTitle(d->effects.front().name)));
     QVERIFY(!w->diagnosisView()->shrinkPlot()->axisScaleDraw(QwtPlot::yLeft)->label(0.0).text().contains('_'));
     QCOMPARE(w->diagnosisView()->curvePlot()->itemList(QwtPlotItem::Rtti_PlotCurve).size(), 2);
+    {
+      // At 1024x700 (and narrower) a reason of several lines keeps every plot
+      // its room (the view scrolls): the wrapped verdict's lines were not
+      // counted, so the rows of plots were squeezed over each other; and the
+      // gap map's segment names do not run together on its narrow canvas.
+      auto longer = std::make_shared<fog::diagnosis::Diagnosis>(*d);
+      for (int i = 0; i < 8; ++i) longer->verdictReason += "; " + d->verdictReason + ", a clause long enough to wrap";
+      // Three times the segments (the paper's plan has 8): 12 names on a
+      // canvas of ~170 px.
+      const auto cells = longer->gapMap;
+      for (int copy = 1; copy <= 2; ++copy)
+        for (auto cell : cells) {
+          cell.key.point += copy * static_cast<int>(d->points.size());
+          longer->gapMap.push_back(cell);
+        }
+      const int columns = view->gapMapColumns();
+      view->showDiagnosis(longer, "long.fbs");
+      QCOMPARE(view->gapMapColumns(), 3 * columns);
+      for (const QSize size : {QSize(1366, 768), QSize(1024, 700)}) {
+        w->resize(size);
+        QTest::qWait(100);
+        const QString at = QString("%1x%2: ").arg(size.width()).arg(size.height());
+        auto* verdict = view->findChild<QLabel*>("diagnosisVerdict");
+        QVERIFY2(verdict->heightForWidth(verdict->width()) > 4 * verdict->fontMetrics().height(),
+                 qPrintable(at + "the reason does not wrap: the check below would not be exercised"));
+        const int firstRowBottom = view->curvePlot()->mapTo(view, QPoint(0, view->curvePlot()->height())).y();
+        const int secondRowTop = view->spectrumPlot()->mapTo(view, QPoint(0, 0)).y();
+        QVERIFY2(firstRowBottom <= secondRowTop, qPrintable(at + QString("%1 > %2").arg(firstRowBottom).arg(secondRowTop)));
+        auto* gap = view->gapMapPlot();
+        const QwtScaleMap map = gap->canvasMap(QwtPlot::xBottom);
+        const QList<double> ticks = gap->axisScaleDiv(QwtPlot::xBottom).ticks(QwtScaleDiv::MajorTick);
+        const QFontMetrics metrics(gap->axisWidget(QwtPlot::xBottom)->font());
+        auto halfWidth = [&](double tick) {
+          return 0.5 * metrics.horizontalAdvance(gap->axisScaleDraw(QwtPlot::xBottom)->label(tick).text());
+        };
+        QVERIFY(!ticks.isEmpty());
+        for (int i = 1; i < ticks.size(); ++i)
+          QVERIFY2(map.transform(ticks[i]) - map.transform(ticks[i - 1]) > halfWidth(ticks[i]) + halfWidth(ticks[i - 1]),
+                   qPrintable(at + QString("segment names at %1 and %2 overlap").arg(ticks[i - 1]).arg(ticks[i])));
+      }
+    }
   }
 
   // Cancel ends a running diagnosis: no result, the view says so and shows
