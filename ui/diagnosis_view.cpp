@@ -401,9 +401,9 @@ void DiagnosisView::showDiagnosis(std::shared_ptr<const diagnosis::Diagnosis> d,
                 .arg(localNumber(diagnosis_->gapBefore[i].rmsZ, 'f', 2))
                 .arg(localNumber(diagnosis_->gapAfter[i].rmsZ, 'f', 2));
   setVerdict(tr("<b>%1 — verdict: %2</b><br>%3<br>gap per channel (rms z, 1 = within the simulator's "
-                       "spread), before → after: %4")
-                        .arg(title.toHtmlEscaped(), coreText(diagnosis::effectTitle(diagnosis_->verdict)).toHtmlEscaped(),
-                             coreText(diagnosis_->verdictReason).toHtmlEscaped(), gaps));
+                "spread), before → after: %4")
+                 .arg(title.toHtmlEscaped(), coreText(diagnosis::effectTitle(diagnosis_->verdict)).toHtmlEscaped(),
+                      coreText(diagnosis_->verdictReason).toHtmlEscaped(), gaps));
   // The identifier the JSON and the CLI's options use, for whoever needs it.
   verdict_->setToolTip(tr("verdict: %1 (the JSON's \"verdict\")").arg(QString::fromStdString(diagnosis_->verdict)));
   text_->setPlainText(coreText(diagnosis::formatDiagnosisText(*diagnosis_)));

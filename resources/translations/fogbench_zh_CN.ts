@@ -1021,7 +1021,7 @@ counter %5 MHz / %6 bit</source>
 <context>
     <name>fog::ui::DiagnosisView</name>
     <message>
-        <location filename="../../ui/diagnosis_view.cpp" line="+102"/>
+        <location filename="../../ui/diagnosis_view.cpp" line="+121"/>
         <source>Test point</source>
         <translation>测试点</translation>
     </message>
@@ -1102,12 +1102,12 @@ counter %5 MHz / %6 bit</source>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+332"/>
+        <location line="+361"/>
         <source>Held-out shrink per candidate effect</source>
         <translation>各候选效应在留出数据上的差异缩减</translation>
     </message>
     <message>
-        <location line="-332"/>
+        <location line="-361"/>
         <source>held-out gap closed (%)</source>
         <translation>留出数据差异缩减 (%)</translation>
     </message>
@@ -1117,7 +1117,7 @@ counter %5 MHz / %6 bit</source>
         <translation>″</translation>
     </message>
     <message>
-        <location line="+66"/>
+        <location line="+67"/>
         <source>Run or open a session, then press Diagnose in the Results view.</source>
         <translation>请运行或打开一个会话，然后在“结果”视图中按“诊断”。</translation>
     </message>
@@ -1157,7 +1157,7 @@ counter %5 MHz / %6 bit</source>
         <translation>得出结论</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+54"/>
         <source>starting …</source>
         <translation>正在开始 …</translation>
     </message>
