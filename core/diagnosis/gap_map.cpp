@@ -74,6 +74,21 @@ bool gapIsSignificant(double chiSquare, int cells, const std::vector<ChannelGap>
                      [&](const ChannelGap& c) { return beyond(c.chiSquare, c.cells); });
 }
 
+std::vector<ChannelGap> significanceGroups(const std::vector<GapCell>& cells, const std::vector<ChannelGap>& channels) {
+  std::vector<ChannelGap> groups = channels;
+  ChannelGap trends;
+  trends.channel = Channel::kGyro;
+  for (const auto& cell : cells)
+    if (cell.informative && cell.key.quantity == Quantity::kTrend) {
+      ++trends.cells;
+      trends.chiSquare += cell.z * cell.z;
+      trends.maxAbsZ = std::max(trends.maxAbsZ, std::abs(cell.z));
+    }
+  trends.rmsZ = trends.cells ? std::sqrt(trends.chiSquare / trends.cells) : 0.0;
+  groups.push_back(trends);
+  return groups;
+}
+
 std::vector<ChannelGap> channelGaps(const std::vector<GapCell>& cells, bool after) {
   std::vector<ChannelGap> out;
   for (int c = 0; c < kChannelCount; ++c) {
@@ -235,7 +250,7 @@ Result<GapModel> buildGapMap(const FeatureSet& realFeatures, const std::vector<S
   }
   d.chiSquare = chi2(st.z, st.held, false) + chi2(st.z, st.held, true);
   d.gapBefore = channelGaps(d.gapMap, false);
-  d.gapSignificant = gapIsSignificant(d.chiSquare, d.cells, d.gapBefore, options.gapSigma);
+  d.gapSignificant = gapIsSignificant(d.chiSquare, d.cells, significanceGroups(d.gapMap, d.gapBefore), options.gapSigma);
   g.base = outputs[0].values;
   // Nuisance directions the calibration already owns: one delay for the whole
   // session (the alias group) and one constant trend per gyro axis (bias).

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -93,6 +94,40 @@ TEST(Verdict, AGapInOneChannelIsSignificantThoughTheOthersDiluteIt) {
   EXPECT_FALSE(gapIsSignificant(67.0 + 130.0 + 104.0, 270, channels, 5.0));
   EXPECT_TRUE(gapIsSignificant(400.0, 270, {}, 5.0));  // 130 over 270: 5.6 sigma
   EXPECT_FALSE(gapIsSignificant(0.0, 0, {}, 5.0));
+}
+
+// Paper 1/98 (a flicker bias): its 24 gyro trend cells carry an excess
+// chi2 of 36 (5.2 sigma), the gyro channel's 40 other cells none, so the
+// channel's 64 read 2.9 sigma and all cells less: significant only in the
+// trend cells on their own.
+TEST(Verdict, AWanderInTheGyroTrendsIsSignificantThoughTheChannelDilutesIt) {
+  std::vector<GapCell> cells;
+  auto add = [&](Channel channel, Quantity quantity, int n, double z) {
+    for (int i = 0; i < n; ++i) {
+      GapCell cell;
+      cell.key.channel = channel;
+      cell.key.quantity = quantity;
+      cell.z = z;
+      cells.push_back(cell);
+    }
+  };
+  add(Channel::kGyro, Quantity::kTrend, 24, std::sqrt(60.0 / 24.0));
+  add(Channel::kGyro, Quantity::kCrossInPhase, 40, std::sqrt(37.0 / 40.0));
+  add(Channel::kTable, Quantity::kInPhase, 72, 1.0);
+  const std::vector<ChannelGap> channels = channelGaps(cells, false);
+  double all = 0.0;
+  for (const auto& c : cells) all += c.z * c.z;
+  const int n = static_cast<int>(cells.size());
+  EXPECT_FALSE(gapIsSignificant(all, n, channels, 5.0));  // gyro channel: excess 33 over 64, 2.9 sigma
+  const std::vector<ChannelGap> groups = significanceGroups(cells, channels);
+  ASSERT_EQ(groups.size(), channels.size() + 1);
+  EXPECT_EQ(groups.back().cells, 24);
+  EXPECT_NEAR(groups.back().chiSquare, 60.0, 1e-9);
+  EXPECT_TRUE(gapIsSignificant(all, n, groups, 5.0));
+  // At 4 sigma in the trends (excess 28) it stays quiet.
+  for (auto& c : cells)
+    if (c.key.quantity == Quantity::kTrend) c.z = std::sqrt(52.0 / 24.0);
+  EXPECT_FALSE(gapIsSignificant(all - 8.0, n, significanceGroups(cells, channelGaps(cells, false)), 5.0));
 }
 
 }  // namespace
