@@ -74,36 +74,33 @@ bool gapIsSignificant(double chiSquare, int cells, const std::vector<ChannelGap>
                      [&](const ChannelGap& c) { return beyond(c.chiSquare, c.cells); });
 }
 
+// The headline gap of the informative cells of `channel` that `include` takes.
+template <typename Include>
+ChannelGap gapOver(const std::vector<GapCell>& cells, Channel channel, Include include, bool after) {
+  ChannelGap g;
+  g.channel = channel;
+  for (const auto& cell : cells) {
+    if (cell.key.channel != channel || !cell.informative || !include(cell.key)) continue;
+    const double z = after ? cell.zAfter : cell.z;
+    ++g.cells;
+    g.chiSquare += z * z;
+    g.maxAbsZ = std::max(g.maxAbsZ, std::abs(z));
+  }
+  g.rmsZ = g.cells ? std::sqrt(g.chiSquare / g.cells) : 0.0;
+  return g;
+}
+
 std::vector<ChannelGap> significanceGroups(const std::vector<GapCell>& cells, const std::vector<ChannelGap>& channels) {
   std::vector<ChannelGap> groups = channels;
-  ChannelGap trends;
-  trends.channel = Channel::kGyro;
-  for (const auto& cell : cells)
-    if (cell.informative && cell.key.quantity == Quantity::kTrend) {
-      ++trends.cells;
-      trends.chiSquare += cell.z * cell.z;
-      trends.maxAbsZ = std::max(trends.maxAbsZ, std::abs(cell.z));
-    }
-  trends.rmsZ = trends.cells ? std::sqrt(trends.chiSquare / trends.cells) : 0.0;
-  groups.push_back(trends);
+  groups.push_back(gapOver(
+      cells, Channel::kGyro, [](const FeatureKey& k) { return k.quantity == Quantity::kTrend; }, false));
   return groups;
 }
 
 std::vector<ChannelGap> channelGaps(const std::vector<GapCell>& cells, bool after) {
   std::vector<ChannelGap> out;
-  for (int c = 0; c < kChannelCount; ++c) {
-    ChannelGap g;
-    g.channel = static_cast<Channel>(c);
-    for (const auto& cell : cells) {
-      if (static_cast<int>(cell.key.channel) != c || !cell.informative) continue;
-      const double z = after ? cell.zAfter : cell.z;
-      ++g.cells;
-      g.chiSquare += z * z;
-      g.maxAbsZ = std::max(g.maxAbsZ, std::abs(z));
-    }
-    g.rmsZ = g.cells ? std::sqrt(g.chiSquare / g.cells) : 0.0;
-    out.push_back(g);
-  }
+  for (int c = 0; c < kChannelCount; ++c)
+    out.push_back(gapOver(cells, static_cast<Channel>(c), [](const FeatureKey&) { return true; }, after));
   return out;
 }
 
