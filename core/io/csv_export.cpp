@@ -63,7 +63,7 @@ Status writeFile(const fs::path& path, const std::string& text) {
 
 bool isExportFile(const std::string& name) {
   if (name == "metadata.json" || name == "table.csv" || name == "gyro.csv" || name == "fits.csv" ||
-      name == "report.json")
+      name == "report.json" || name == "delays.csv")
     return true;
   const std::string prefix = "residuals_", suffix = ".csv";
   if (name.size() <= prefix.size() + suffix.size() || name.compare(0, prefix.size(), prefix) != 0 ||
@@ -210,7 +210,7 @@ std::string formatDouble(double v) {
 }
 
 Status exportCsv(const std::string& dirText, const SessionInfo& info, const Recording& rec,
-                 const analysis::DelayReport* report, bool overwrite) {
+                 const analysis::DelayReport* report, bool overwrite, const std::string& delaysCsv) {
   // The increments are in degrees (protocol::RecordingBuilder); the metadata
   // states the pulse equivalent they were made with.
   if (!(rec.pulseEquivalentDeg > 0.0))
@@ -257,6 +257,8 @@ Status exportCsv(const std::string& dirText, const SessionInfo& info, const Reco
   if (!report) return Status::ok();
 
   if (Status s = writeFile(dir / "fits.csv", fitsCsv(*report)); !s.isOk()) return s;
+  if (!delaysCsv.empty())
+    if (Status s = writeFile(dir / "delays.csv", delaysCsv); !s.isOk()) return s;
   for (const auto& p : report->points) {
     const TestPointData* data = nullptr;
     for (const auto& tp : rec.testPoints)

@@ -33,8 +33,11 @@
 
 namespace fog::io {
 
+// `delaysCsv`, when not empty, is written as delays.csv: the delay breakdown
+// with the shown result's verdicts (session::delayBreakdownCsv), which this
+// module cannot judge.
 Status exportCsv(const std::string& dir, const SessionInfo& info, const Recording& rec,
-                 const analysis::DelayReport* report, bool overwrite = false);
+                 const analysis::DelayReport* report, bool overwrite = false, const std::string& delaysCsv = {});
 
 // The text the exporter writes for a double (std::to_chars, shortest
 // round-trip form). Exposed so that converters and tests use the same rule.

@@ -54,6 +54,10 @@ Result<OpenedSession> openSessionFile(const std::string& path, const OpenOptions
     }
     if (!recording) return recording.status();
     s.recording = std::move(*recording);
+    // Analysed from the stored samples: the raw stream they were decoded
+    // from must still vouch for them (a damaged one is said first).
+    if (s.damage.empty())
+      if (Status raw = reader->checkRawStream(); !raw.isOk()) s.rawDamage = damageOf(raw.message(), path);
   }
   if (options.rawBytes && s.rawBytes.empty()) {
     FOG_ASSIGN_OR_RETURN(s.rawBytes, reader->rawBytes());
@@ -96,10 +100,15 @@ std::string OpenedSession::sourceLine(const std::string& what) const {
   if (!info.source.empty()) s += " (" + info.source + ")";
   if (!complete) s += " [incomplete: " + incompleteReason + "]";
   if (!damage.empty()) s += " [damaged session, analysed from the raw stream it holds]";
+  if (!rawDamage.empty()) s += " [damaged session: its raw stream fails its checksum]";
   return s;
 }
 
 std::string OpenedSession::damageNote() const {
+  if (!rawDamage.empty())
+    return toValidUtf8(path) + " is a damaged session: its raw board stream, the session's source of truth, is "
+           "damaged (" + rawDamage + "); its stored decoded samples are analysed, but nothing vouches for them. "
+           "Restore the file from a backup";
   if (damage.empty()) return {};
   return toValidUtf8(path) + " is a damaged session (" + damage +
          "); analysed from the raw board stream it holds, which is intact (every chunk passes its checksum) and is "
@@ -190,6 +199,8 @@ ShownResult showResult(const OpenedSession& session, std::int64_t resultId, cons
   }
   shown.report = analysis::analyzeRecording(session.recording, shown.constants);
   if (shown.record && shown.report) shown.differences = differencesFromRecord(*shown.record, *shown.report);
+  shown.verdict = judgeShown(shown.record ? &*shown.record : nullptr, shown.report ? &*shown.report : nullptr,
+                             session.complete, session.incompleteReason, shown.context.imuDelayLimitMs);
   return shown;
 }
 

@@ -33,6 +33,7 @@
 #include "core/common/session_info.h"
 #include "core/common/status.h"
 #include "core/session/session_file.h"
+#include "core/session/shown_verdict.h"
 #include "core/session/stored_result.h"
 
 namespace fog::session {
@@ -83,14 +84,19 @@ struct OpenedSession {
   // Non-empty: the session is damaged and `recording` was decoded from the
   // raw board stream it holds; what was damaged (the reader's words).
   std::string damage;
+  // Non-empty: the recording was read from the stored decoded samples, but
+  // the raw board stream they came from is damaged (SessionReader::
+  // checkRawStream's words): nothing vouches for the samples.
+  std::string rawDamage;
 
   // The report's source line: "session S.fbs (simulator, seed 1)", with
   // " [incomplete: why]" and " [damaged: ...]" when so; "raw stream S.bin".
   // `what` names a session ("session", "replay of session").
   std::string sourceLine(const std::string& what = "session") const;
-  // The line to print before anything else when `damage` is set, else "":
-  // "S.fbs is a damaged session (...); analysed from the raw board stream it
-  // holds ...".
+  // The line to print before anything else when `damage` or `rawDamage` is
+  // set, else "": "S.fbs is a damaged session (...); analysed from the raw
+  // board stream it holds ...", "S.fbs is a damaged session: its raw board
+  // stream ... is damaged (...)".
   std::string damageNote() const;
 };
 
@@ -142,6 +148,10 @@ struct ShownResult {
   std::vector<std::string> differences;  // differencesFromRecord; empty without a record
   // "result 2 of 3, stored T by X (fogbench V)"; "" when none is shown.
   std::string description;
+  // The verdict shown and each point's numbers with theirs (judgeShown: the
+  // record's, else `report` judged with the limit; INCOMPLETE for a run that
+  // stopped early). Every view and command formats this, never re-judges.
+  ShownVerdict verdict;
 };
 
 // The stored result `resultId` when it is usable, else the newest usable one,

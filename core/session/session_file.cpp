@@ -1042,6 +1042,27 @@ Result<std::vector<std::uint8_t>> SessionReader::rawBytes() const {
   return out;
 }
 
+Status SessionReader::checkRawStream() const {
+  Stmt s(db_, "SELECT seq, byte_offset, data, data_fnv1a FROM raw_chunk ORDER BY seq");
+  if (!s.ok()) return readError("reading the raw stream");
+  int rc;
+  std::int64_t expectSeq = 0, at = 0;
+  while ((rc = s.step()) == SQLITE_ROW) {
+    if (s.integer(0) != expectSeq || s.integer(1) != at)
+      return corruptData("session '" + path_ + "': the raw stream has a gap at byte " + std::to_string(at) +
+                         " (chunk " + std::to_string(expectSeq) + "); the file is damaged");
+    auto data = s.blob(2);
+    if (fnv1a(data) != s.integer(3))
+      return corruptData("session '" + path_ + "': raw stream chunk " + std::to_string(expectSeq) + " (bytes " +
+                         std::to_string(at) + ".." + std::to_string(at + static_cast<std::int64_t>(data.size())) +
+                         ") fails its checksum; the file is damaged, restore it from a backup");
+    at += static_cast<std::int64_t>(data.size());
+    ++expectSeq;
+  }
+  if (rc != SQLITE_DONE) return readError("reading the raw stream");
+  return Status::ok();
+}
+
 bool SessionReader::hasStoredRecording() const {
   Stmt s(db_, "SELECT count(*) FROM decoded");
   return s.ok() && s.step() == SQLITE_ROW && s.integer(0) > 0;

@@ -154,6 +154,10 @@ class SessionReader {
 
   // The whole raw stream, in order.
   Result<std::vector<std::uint8_t>> rawBytes() const;
+  // Checks every raw chunk (order, offsets, checksums) as rawBytes() does,
+  // keeping none of them (memory: one chunk). kCorruptData names the first
+  // damaged chunk.
+  Status checkRawStream() const;
   std::uint64_t rawByteCount() const;
   // Whether decoded samples were stored (false after a crash).
   bool hasStoredRecording() const;

@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <nlohmann/json.hpp>
 
 #include "core/common/text.h"
 #include "core/session/session_file.h"
+#include "core/session/stored_result.h"
 
 namespace fog::session {
 
@@ -64,27 +64,15 @@ Result<SessionListing> listSessions(const std::string& dirText) {
     s.complete = (*r)->complete();
     s.incompleteReason = (*r)->incompleteReason();
     auto results = (*r)->results();
-    if (results) s.results = results->size();
-    // The latest result that passes its checksum and parses as a report.
-    nlohmann::json latest;
-    if (results)
-      for (std::size_t i = 0; i < results->size(); ++i) {
-        const auto& res = (*results)[i];
-        auto doc = res.intact ? nlohmann::json::parse(res.reportJson, nullptr, false) : nlohmann::json();
-        if (!doc.is_object()) {
-          ++s.damagedResults;
-          continue;
-        }
-        latest = std::move(doc);
-        s.shownResult = i + 1;
-      }
-    if (s.shownResult > 0) {
-      if (latest.contains("verdict") && latest["verdict"].is_string()) s.verdict = latest["verdict"];
-      if (latest.contains("test_points") && latest["test_points"].is_array()) {
-        for (const auto& tp : latest["test_points"]) {
-          if (tp.contains("lag_ms") && tp["lag_ms"].is_number()) s.lagMs.push_back(tp["lag_ms"]);
-          if (tp.contains("imu_delay_ms") && tp["imu_delay_ms"].is_number()) s.imuDelayMs.push_back(tp["imu_delay_ms"]);
-        }
+    if (results) {
+      s.results = results->size();
+      const auto records = readStoredResults(*results, s.info.bench);
+      for (const auto& rec : records) s.damagedResults += rec.usable ? 0 : 1;
+      // The latest usable result, judged by the one rule (shown_verdict.h).
+      if (const StoredResultRecord* latest = newestUsable(records)) {
+        for (std::size_t i = 0; i < records.size(); ++i)
+          if (records[i].id == latest->id) s.shownResult = i + 1;
+        s.shown = judgeShown(latest, nullptr, s.complete, s.incompleteReason, latest->imuDelayLimitMs);
       }
     }
     listing.sessions.push_back(std::move(s));

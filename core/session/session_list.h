@@ -8,6 +8,7 @@
 
 #include "core/common/session_info.h"
 #include "core/common/status.h"
+#include "core/session/shown_verdict.h"
 
 namespace fog::session {
 
@@ -22,12 +23,11 @@ struct SessionSummary {
   // Stored results that fail their checksum or do not parse: never shown,
   // always counted, so a listing says a result is damaged instead of "-".
   std::size_t damagedResults = 0;
-  // The result shown: the latest intact one (1-based; 0: none), its verdict
-  // as stored ("pass", "fail", "invalid"; empty when it states none) and,
-  // per test point, its lag and IMU delay.
+  // The result shown: the latest usable one (1-based; 0: none), and its
+  // verdict with its points' numbers and their verdicts, as stored
+  // (judgeShown: a refused point's delay is never listed bare).
   std::size_t shownResult = 0;
-  std::string verdict;
-  std::vector<double> lagMs, imuDelayMs;
+  ShownVerdict shown;
 };
 
 struct SessionListing {

@@ -122,6 +122,7 @@ StoredResultRecord readStoredResult(const session::StoredResult& stored, const B
       p.verdict = textOr(tp, "verdict");
       p.reasons = texts(tp, "verdict_reasons");
       p.lagMs = numberOr(tp, "lag_ms", NAN);
+      p.lagStdMs = numberOr(tp, "lag_std_ms", NAN);
       p.imuDelayMs = numberOr(tp, "imu_delay_ms", NAN);
       p.imuDelayStdMs = numberOr(tp, "imu_delay_std_ms", NAN);
       r.points.push_back(std::move(p));

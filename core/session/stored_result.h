@@ -28,7 +28,7 @@ struct StoredPointVerdict {
   int index = 0;                     // test point index (0-based)
   std::string verdict;               // "pass", "fail", "invalid"
   std::vector<std::string> reasons;  // as stored (English, core wording)
-  double lagMs = 0.0;
+  double lagMs = 0.0, lagStdMs = 0.0;
   double imuDelayMs = 0.0, imuDelayStdMs = 0.0;
 };
 

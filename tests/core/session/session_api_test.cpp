@@ -136,6 +136,45 @@ TEST(SessionApi, ADamagedRawStreamChunkIsNotPapedOver) {
   EXPECT_NE(s.status().message().find("decoded samples are damaged"), std::string::npos) << s.status().message();
 }
 
+TEST(SessionApi, ADamagedRawStreamUnderIntactSamplesIsSaidFirst) {
+  ScratchDir dir;
+  const auto path = simulatedSession(dir, "raw.fbs");
+  runSql(path, "UPDATE raw_chunk SET data_fnv1a = data_fnv1a + 1 WHERE seq = 0");
+  auto s = openSessionOrStream(path);
+  ASSERT_TRUE(s.isOk()) << s.status().message();
+  EXPECT_TRUE(s->damage.empty());
+  EXPECT_NE(s->rawDamage.find("raw stream chunk 0"), std::string::npos) << s->rawDamage;
+  const std::string note = s->damageNote();
+  EXPECT_EQ(note.rfind(path + " is a damaged session: its raw board stream", 0), 0u) << note;
+  EXPECT_NE(note.find("nothing vouches for them"), std::string::npos) << note;
+  EXPECT_NE(s->sourceLine().find("[damaged session: its raw stream fails its checksum]"), std::string::npos);
+  // An intact one says nothing.
+  auto clean = openSessionOrStream(simulatedSession(dir, "clean.fbs"));
+  ASSERT_TRUE(clean.isOk());
+  EXPECT_TRUE(clean->rawDamage.empty());
+  EXPECT_TRUE(clean->damageNote().empty());
+}
+
+TEST(SessionApi, TheShownResultCarriesTheVerdictShown) {
+  ScratchDir dir;
+  auto s = openSimulated(dir, "shown.fbs");
+  ASSERT_TRUE(s.isOk());
+  // Nothing stored: judged now with the fallback limit, not stored.
+  auto none = showResult(*s, 0, BenchConstants{}, 0.8);
+  EXPECT_FALSE(none.verdict.stored);
+  ASSERT_TRUE(none.report.isOk());
+  EXPECT_EQ(none.verdict.points.size(), none.report->points.size());
+  // A stored result with a tight limit: its FAIL is shown whatever the fallback.
+  auto stored = analyseAndStore(*s, settingsWithLimit(0.01));
+  ASSERT_TRUE(stored.stored) << stored.storeStatus.message();
+  auto reopened = openSessionOrStream(s->path);
+  ASSERT_TRUE(reopened.isOk());
+  auto shown = showResult(*reopened, 0, BenchConstants{}, 100.0);
+  EXPECT_TRUE(shown.verdict.stored);
+  EXPECT_EQ(shown.verdict.verdict, ShownVerdictKind::kFail);
+  EXPECT_DOUBLE_EQ(shown.verdict.limitMs, 0.01);
+}
+
 TEST(SessionApi, AnalyseAndStoreAddsTheResultWithItsSettings) {
   ScratchDir dir;
   auto s = openSimulated(dir, "store.fbs");
