@@ -9,6 +9,7 @@
 #include "core/diagnosis/blind_check.h"
 #include "core/diagnosis/diagnosis.h"
 #include "app/session_input.h"
+#include "core/common/text.h"
 
 namespace fog::app {
 
@@ -57,11 +58,13 @@ int diagnoseCommand(CliArguments& args) {
   int failed = 0;
   auto opened = openFileArgument(args, "diagnose needs exactly one SESSION.fbs or raw stream FILE", failed);
   if (!opened) return failed;
-  // A session's constants (a raw stream's pulse equivalent only from the
-  // command line), unless the command line gives others.
-  auto constants = readConstants(args, opened->info.bench);
-  if (!constants) return fail(constants.status(), 2);
+  // The shown result's constants (a raw stream's pulse equivalent only from
+  // the command line), unless the command line gives others; said on stderr.
+  auto settings = shownResultSettings(args, *opened);
+  if (!settings) return fail(settings.status(), 2);
+  const BenchConstants* constants = &settings->constants;
   if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
+  if (!settings->note.empty()) std::cerr << "fogbench-cli: note: " << forTerminal(settings->note) << "\n";
   options.monteCarloSeeds = *seeds;
   options.threads = *threads;
   auto d = diagnosis::diagnose(opened->recording, opened->isSession ? &opened->info : nullptr, *constants, options);

@@ -5,6 +5,7 @@
 #include "app/cli_common.h"
 #include "app/session_input.h"
 #include "core/analysis/frequency_response.h"
+#include "core/common/text.h"
 
 namespace fog::app {
 
@@ -16,10 +17,13 @@ int responseCommand(CliArguments& args) {
   int failed = 0;
   auto opened = openFileArgument(args, "response needs exactly one SESSION.fbs or raw stream FILE", failed);
   if (!opened) return failed;
-  auto constants = readConstants(args, opened->info.bench);
-  if (!constants) return fail(constants.status(), 2);
+  // The shown result's constants (the IMU delay `report` shows), unless the
+  // command line gives others; said on stderr.
+  auto settings = shownResultSettings(args, *opened);
+  if (!settings) return fail(settings.status(), 2);
   if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
-  auto report = analysis::analyzeRecording(opened->recording, *constants);
+  if (!settings->note.empty()) std::cerr << "fogbench-cli: note: " << forTerminal(settings->note) << "\n";
+  auto report = analysis::analyzeRecording(opened->recording, settings->constants);
   if (!report) return fail(report.status(), exitCodeFor(report.status()));
   const auto responses = analysis::analyzeResponses(*report, *atHz);
   if (responses.empty()) {

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli_common.h"
+#include "core/session/shown_csv.h"
 #include "core/acquisition/acquisition.h"
 #include "core/acquisition/replay_source.h"
 #include "core/common/text.h"
@@ -122,12 +123,21 @@ int sessionsCommand(CliArguments& args) {
     e["axes"] = session::axesOf(s.info.plan);
     e["complete"] = s.complete;
     if (!s.complete) e["incomplete_reason"] = s.incompleteReason;
-    e["lag_ms"] = s.lagMs;
-    e["imu_delay_ms"] = s.imuDelayMs;
     e["results"] = s.results;
     e["damaged_results"] = s.damagedResults;
     e["shown_result"] = s.shownResult;  // 1-based; 0: none intact
-    e["verdict"] = s.verdict;
+    e["verdict"] = session::shownVerdictName(s.shown.verdict);
+    // Each point's numbers with their verdict: a refused delay is marked
+    // (vouched false, with why), never a bare number in a list.
+    e["test_points"] = json::array();
+    for (const auto& p : s.shown.points)
+      e["test_points"].push_back({{"index", p.index},
+                                  {"verdict", session::shownVerdictName(p.verdict)},
+                                  {"vouched", p.vouched()},
+                                  {"refusal", p.refusal()},
+                                  {"lag_ms", p.lagMs},
+                                  {"imu_delay_ms", p.imuDelayMs},
+                                  {"imu_delay_std_ms", p.imuDelayStdMs}});
     list.push_back(e);
   }
   if (asJson) {
@@ -136,12 +146,20 @@ int sessionsCommand(CliArguments& args) {
               << "\n";
     return 0;
   }
-  auto joinMs = [](const json& values) {
+  // "0.4655 / refused (0.5155, INVALID)": a refused number keeps its mark.
+  auto joinMs = [](const json& points, const char* key) {
     std::string s;
     char buf[32];
-    for (const auto& v : values) {
-      std::snprintf(buf, sizeof buf, "%.4f", v.get<double>());
-      s += (s.empty() ? "" : " / ") + std::string(buf);
+    for (const auto& p : points) {
+      const double v = p[key].is_number() ? p[key].get<double>() : NAN;
+      std::snprintf(buf, sizeof buf, "%.4f", v);
+      std::string item = buf;
+      if (!p["vouched"].get<bool>()) {
+        std::string word = p["verdict"].get<std::string>();
+        for (auto& c : word) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+        item = "refused (" + item + ", " + (word.empty() ? std::string("NO VERDICT") : word) + ")";
+      }
+      s += (s.empty() ? "" : " / ") + item;
     }
     return s.empty() ? std::string("-") : s;
   };
@@ -166,7 +184,7 @@ int sessionsCommand(CliArguments& args) {
     if (!e["imu_serial"].get<std::string>().empty()) imu += (imu.empty() ? "" : " ") + e["imu_serial"].get<std::string>();
     rows.push_back({e["file"], e["created_utc"], e["operator"].get<std::string>().empty() ? "-" : e["operator"],
                     imu.empty() ? "-" : imu, e["axes"], e["complete"].get<bool>() ? "complete" : "incomplete",
-                    resultColumn(e), joinMs(e["lag_ms"]), joinMs(e["imu_delay_ms"])});
+                    resultColumn(e), joinMs(e["test_points"], "lag_ms"), joinMs(e["test_points"], "imu_delay_ms")});
   }
   std::vector<std::size_t> width(rows[0].size(), 0);
   for (const auto& row : rows)
@@ -281,10 +299,12 @@ int exportCommand(CliArguments& args) {
   auto opened = openFileArgument(args, "export needs exactly one SESSION.fbs", failed, session::OpenOptions::session());
   if (!opened) return failed;
   const std::string& path = opened->path;
-  auto constants = readConstants(args, opened->info.bench);
-  if (!constants) return fail(constants.status(), 2);
-  auto limit = readDelayLimit(args);
-  if (!limit) return fail(limit.status(), 2);
+  // The shown result's constants and limit, as `report` shows them, unless
+  // the command line gives others (said on stderr).
+  auto settings = shownResultSettings(args, *opened, true);
+  if (!settings) return fail(settings.status(), 2);
+  const BenchConstants* constants = &settings->constants;
+  const double* limit = &settings->imuDelayLimitMs;
   if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
   if (!csvDir && !jsonPath) return fail(invalidArgument("export needs --csv DIR and/or --results-json FILE.json"), 2);
   std::error_code ec;
@@ -292,7 +312,7 @@ int exportCommand(CliArguments& args) {
     if (auto s = checkOutputFile(*jsonPath, overwrite, "--results-json"); !s.isOk()) return fail(s, 2);
 
   const Recording& recording = opened->recording;
-  // The fits and residuals come from an analysis with the session's
+  // The fits and residuals come from an analysis with the shown result's
   // constants (or those given); data that supports no delay is still
   // exported, only without fits.
   auto report = analysis::analyzeRecording(recording, *constants);
@@ -307,9 +327,15 @@ int exportCommand(CliArguments& args) {
   if (csvDir) {
     SessionInfo info = opened->info;
     storeConstants(*constants, info.bench);
-    if (auto s = io::exportCsv(*csvDir, info, recording, report ? &*report : nullptr, overwrite); !s.isOk())
+    // delays.csv: the numbers with the verdict shown with them (the stored
+    // result's when these are its settings, else judged now).
+    const auto verdict = session::judgeShown(settings->shownResult, report ? &*report : nullptr, opened->complete,
+                                             opened->incompleteReason, *limit);
+    const std::string delays = report ? session::delayBreakdownCsv(*report, verdict, opened->sourceLine()) : "";
+    if (auto s = io::exportCsv(*csvDir, info, recording, report ? &*report : nullptr, overwrite, delays); !s.isOk())
       return fail(overwrite || s.code() != StatusCode::kInvalidArgument ? s : Status(s.code(), s.message() + " (--overwrite)"), 2);
     std::cout << "CSV export of " << path << ": " << *csvDir << "\n";
+    if (!settings->note.empty()) std::cerr << "fogbench-cli: note: " << forTerminal(settings->note) << "\n";
   }
   if (jsonPath) {
     const SessionInfo& info = opened->info;

@@ -26,4 +26,24 @@ Result<session::OpenedSession> openInput(const std::string& path, const session:
 std::optional<session::OpenedSession> openFileArgument(CliArguments& args, const std::string& needs, int& exitCode,
                                                        const session::OpenOptions& options = {});
 
+// The constants and limit a command (export, response, diagnose, noise)
+// analyses `opened` with, so that it shows the numbers of the result the
+// report shows: the shown stored result's (the newest usable one), unless the
+// command line gives a constant (--read-delay-ms, --gyro-sign, ...; then
+// those, over the session's own) or, when `withLimit`, a limit (--limit-ms;
+// without it the limit is the shown result's or the default). `note` says which,
+// in one line for stderr; "" for a raw stream or a session with no usable
+// stored result and nothing given.
+struct CommandSettings {
+  BenchConstants constants;
+  double imuDelayLimitMs = 0.0;
+  std::string note;
+  // The shown stored result whose settings these are exactly (null when the
+  // command line gave others, or none is stored): its verdict is the one
+  // shown with the numbers.
+  const session::StoredResultRecord* shownResult = nullptr;
+};
+Result<CommandSettings> shownResultSettings(CliArguments& args, const session::OpenedSession& opened,
+                                            bool withLimit = false);
+
 }  // namespace fog::app
