@@ -1,6 +1,7 @@
 #include "ui/report/page_flow.h"
 
 #include <QFontMetricsF>
+#include <QRegularExpression>
 #include <algorithm>
 #include <qwt_plot.h>
 #include <qwt_plot_renderer.h>
@@ -25,6 +26,10 @@ QFont PageFlow::font(double pt, bool bold, bool mono) {
   f.setStyleHint(mono ? QFont::TypeWriter : QFont::SansSerif);
   f.setPointSizeF(pt);
   f.setBold(bold);
+  // No ligatures: text copied from the PDF must be the text drawn (an "ff"
+  // ligature made a copied SHA-256 unverifiable). The report's scripts,
+  // Latin and Chinese, need no shaping.
+  f.setStyleStrategy(QFont::PreferNoShaping);
   return f;
 }
 
@@ -105,12 +110,28 @@ void PageFlow::paragraph(const QString& s, const QFont& f, const QColor& c) {
   y_ += h + 1.5;
 }
 
+QFont PageFlow::fitting(const QString& cell, const QFont& f, double widthMm) const {
+  // Every digit stays on the page: a word (a number, a hash) wider than its
+  // column is set smaller until it fits, never cut at the column's edge.
+  double widest = 0.0;
+  for (const QString& word : cell.split(QRegularExpression(QStringLiteral("\\s+")), Qt::SkipEmptyParts))
+    widest = std::max(widest, textWidthMm(word, f));
+  if (widest <= widthMm || widest <= 0.0) return f;
+  QFont smaller = f;
+  smaller.setPointSizeF(std::max(4.0, f.pointSizeF() * widthMm / widest * 0.98));
+  return smaller;
+}
+
 void PageFlow::table(const Table& t) {
   const QFont normal = font(t.fontPt), bold = font(t.fontPt, true);
+  auto cellFont = [&](const QStringList& cells, int i, const QFont& f) {
+    return fitting(cells[i], f, t.columns[static_cast<std::size_t>(i)].widthMm - 2 * kCellPadMm);
+  };
   auto rowHeight = [&](const QStringList& cells, const QFont& f) {
     double h = 0.0;
     for (int i = 0; i < static_cast<int>(t.columns.size()) && i < cells.size(); ++i)
-      h = std::max(h, textHeightMm(cells[i], f, t.columns[static_cast<std::size_t>(i)].widthMm - 2 * kCellPadMm));
+      h = std::max(h, textHeightMm(cells[i], cellFont(cells, i, f),
+                                   t.columns[static_cast<std::size_t>(i)].widthMm - 2 * kCellPadMm));
     return h + 2 * kCellPadMm * 0.6;
   };
   auto drawRow = [&](const QStringList& cells, const QFont& f, double h, bool header) {
@@ -121,7 +142,7 @@ void PageFlow::table(const Table& t) {
     for (int i = 0; i < static_cast<int>(t.columns.size()) && i < cells.size(); ++i) {
       const auto& col = t.columns[static_cast<std::size_t>(i)];
       text(QRectF(x + kCellPadMm, y_ + kCellPadMm * 0.6, col.widthMm - 2 * kCellPadMm, h),
-           static_cast<int>(col.align | Qt::AlignTop) | kWrap, cells[i], f);
+           static_cast<int>(col.align | Qt::AlignTop) | kWrap, cells[i], cellFont(cells, i, f));
       x += col.widthMm;
     }
     y_ += h;
@@ -146,10 +167,13 @@ void PageFlow::table(const Table& t) {
   y_ += 2.5;
 }
 
-void PageFlow::keyValues(const std::vector<std::pair<QString, QString>>& rows, double keyWidthMm) {
-  const QFont key = font(9.0, true), value = font(9.0);
+void PageFlow::keyValues(const std::vector<std::pair<QString, QString>>& rows, double keyWidthMm,
+                         const std::vector<std::size_t>& monoRows) {
+  const QFont key = font(9.0, true), plain = font(9.0), mono = font(8.5, false, true);
   const double valueWidth = kContentWidthMm - keyWidthMm;
-  for (const auto& [k, v] : rows) {
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const auto& [k, v] = rows[i];
+    const QFont& value = std::find(monoRows.begin(), monoRows.end(), i) != monoRows.end() ? mono : plain;
     const double h = std::max(textHeightMm(k, key, keyWidthMm - 2.0), textHeightMm(v, value, valueWidth)) + 0.9;
     ensureSpace(h);
     text(QRectF(kLeftMm, y_, keyWidthMm - 2.0, h), Qt::AlignLeft | kWrap, k, key, QColor(60, 60, 60));

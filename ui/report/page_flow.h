@@ -78,6 +78,8 @@ class PageFlow {
   // Text in a rectangle (mm), wrapped at word boundaries when the flags say
   // Qt::TextWordWrap. Recorded in the drawn list.
   void text(const QRectF& mm, int flags, const QString& s, const QFont& f, const QColor& c = Qt::black);
+  // `f`, or smaller so that the widest word of `cell` fits `widthMm`.
+  QFont fitting(const QString& cell, const QFont& f, double widthMm) const;
   double textHeightMm(const QString& s, const QFont& f, double widthMm) const;
   double textWidthMm(const QString& s, const QFont& f) const;
   void line(double x0, double y0, double x1, double y1, const QColor& c = Qt::black, double widthMm = 0.2);
@@ -89,7 +91,10 @@ class PageFlow {
   // Rows split across pages, the header repeated on each.
   void table(const Table& t);
   // Label/value pairs in two columns (a borderless table).
-  void keyValues(const std::vector<std::pair<QString, QString>>& rows, double keyWidthMm);
+  // Rows of a bold key and its value; the values of `monoRows` (hashes,
+  // identifiers) in a monospace face.
+  void keyValues(const std::vector<std::pair<QString, QString>>& rows, double keyWidthMm,
+                 const std::vector<std::size_t>& monoRows = {});
   // A Qwt plot rendered into the full content width; make() is called only
   // when drawing, with the size of the plot in mm.
   void plot(double heightMm, const std::function<std::unique_ptr<QwtPlot>(double widthMm, double heightMm)>& make);
