@@ -32,6 +32,7 @@
 
 #include "ui/bode_view.h"
 #include "ui/core_text.h"
+#include "ui/verdict_text.h"
 #include "ui/data_export.h"
 #include "ui/messages.h"
 #include "ui/language/language.h"
@@ -297,21 +298,17 @@ void CompareView::fillSessionRow(int position) {
                  .arg(o.results.size())
                  .arg(num(c.tableReadDelayMs, 4), num(c.tableReadDelayStdMs, 4), num(c.boardDelayMs, 4));
   }
-  // The stored verdict leads: Compare sets delays side by side, it never
-  // re-judges them (a result stored INVALID stays INVALID here).
-  if (const ResultRecord* r = o.shownResult()) {
-    result = tr("%1 (stored, limit %2 ms) · %3")
-                 .arg(ResultView::verdictWord(r->verdict), num(r->imuDelayLimitMs, 3), result);
+  // The shown verdict leads (core's rule): Compare sets delays side by side,
+  // it never re-judges them (a result stored INVALID stays INVALID here).
+  const session::ShownVerdict v = o.shownVerdict();
+  if (o.report || o.shownResult()) {
+    result = (v.stored ? tr("%1 (stored, limit %2 ms) · %3") : tr("%1 (not stored, limit %2 ms) · %3"))
+                 .arg(verdictWord(v.verdict), num(v.limitMs, 3), result);
     if (!o.differences.empty())
       result += tr(" · this version's analysis differs from the stored result; re-analyse to store it");
-  } else if (!o.complete) {
-    result = tr("%1 (not stored) · %2").arg(ResultView::verdictWord("incomplete"), result);
   }
   setCell(sessionTable_, position, 5, result);
-  if (const ResultRecord* r = o.shownResult())
-    sessionTable_->item(position, 5)->setForeground(r->verdict == "pass"      ? QColor(20, 110, 40)
-                                                    : r->verdict == "invalid" ? QColor(160, 80, 0)
-                                                                              : QColor(176, 0, 0));
+  sessionTable_->item(position, 5)->setForeground(QColor(verdictColour(v.verdict)));
 }
 
 QString CompareView::exportTo(const QString& path) {
@@ -343,33 +340,31 @@ void CompareView::recompare() {
     showResponses();
     return;
   }
-  comparisons_ = compareReports(*oa->report, *ob->report);
+  comparisons_ = compareReports(*oa->report, oa->shownVerdict(), *ob->report, ob->shownVerdict());
   exportButton_->setEnabled(!comparisons_.empty());
   differenceTable_->setHorizontalHeaderLabels({tr("test point"), tr("%1: IMU delay (ms)").arg(letter(a)),
                                                tr("%1: IMU delay (ms)").arg(letter(b)),
                                                tr("%1 − %2 (ms)").arg(letter(b), letter(a)), tr("±σ (ms)"),
                                                tr("|%1 − %2|/σ").arg(letter(b), letter(a)), QString()});
   differenceTable_->setRowCount(static_cast<int>(comparisons_.size()));
-  int significant = 0, both = 0;
-  bool commonConstant = false;
+  int significant = 0, both = 0, refused = 0;
+  const bool commonConstant = !comparisons_.empty() && comparisons_.front().commonTableConstant;
   for (int r = 0; r < static_cast<int>(comparisons_.size()); ++r) {
     const auto& c = comparisons_[static_cast<std::size_t>(r)];
     setCell(differenceTable_, r, 0, c.label);
-    // A delay whose stored verdict is not a pass carries that verdict.
-    auto delayCell = [&](const std::shared_ptr<const RunOutcome>& o, std::optional<std::size_t> at, double ms,
-                         double stdMs) {
+    // A delay carries its verdict when it is not a pass; a refused one is
+    // marked refused, and no difference is taken with it.
+    auto delayCell = [&](std::optional<std::size_t> at, const session::ShownPoint& shown, double ms, double stdMs) {
       if (!at) return QString("—");
+      if (!shown.vouched()) return shownNumber(shown, ms, 4);
       QString text = tr("%1 ± %2").arg(num(ms, 4), num(stdMs, 4));
-      if (const ResultRecord* rec = o->shownResult())
-        if (const auto* sp = rec->point(o->report->points[*at].index); sp && sp->verdict != "pass")
-          text += " " + ResultView::verdictWord(sp->verdict);
+      if (shown.verdict != session::ShownVerdictKind::kPass) text += " " + verdictWord(shown.verdict);
       return text;
     };
-    setCell(differenceTable_, r, 1, delayCell(oa, c.a, c.aMs, c.aStdMs), true);
-    setCell(differenceTable_, r, 2, delayCell(ob, c.b, c.bMs, c.bStdMs), true);
-    if (c.both()) {
+    setCell(differenceTable_, r, 1, delayCell(c.a, c.aShown, c.aMs, c.aStdMs), true);
+    setCell(differenceTable_, r, 2, delayCell(c.b, c.bShown, c.bMs, c.bStdMs), true);
+    if (c.comparable()) {
       ++both;
-      commonConstant = c.commonTableConstant;
       setCell(differenceTable_, r, 3, (c.differenceMs >= 0 ? "+" : "") + num(c.differenceMs, 4), true);
       setCell(differenceTable_, r, 4, num(c.differenceStdMs, 4), true);
       setCell(differenceTable_, r, 5, num(c.significance, 1), true);
@@ -378,19 +373,31 @@ void CompareView::recompare() {
               c.significant() ? tr("differs (more than 2σ)") : tr("consistent (within 2σ)"));
       if (c.significant())
         for (int col = 3; col <= 6; ++col) differenceTable_->item(r, col)->setForeground(QColor(176, 0, 0));
+    } else if (c.both()) {
+      ++refused;
+      const bool aRefused = !c.aShown.vouched();
+      setCell(differenceTable_, r, 6,
+              tr("not compared: %1's delay is refused (%2)")
+                  .arg(aRefused ? letter(a) : letter(b), refusalText(aRefused ? c.aShown : c.bShown)));
+      differenceTable_->item(r, 6)->setForeground(QColor(verdictColour(aRefused ? c.aShown.verdict : c.bShown.verdict)));
     } else {
       setCell(differenceTable_, r, 6, c.a ? tr("only in %1").arg(letter(a)) : tr("only in %1").arg(letter(b)));
     }
     const QSignalBlocker block(pointCombo_);
     pointCombo_->addItem(c.label);
   }
-  QString text = tr("%1 against %2: %3 test point(s) in both, %4 differ by more than 2σ.")
+  QString text = tr("%1 against %2: %3 test point(s) compared, %4 differ by more than 2σ.")
                      .arg(letter(b), letter(a))
                      .arg(both)
                      .arg(significant);
-  text += " " + (commonConstant ? tr("Both used the same table read delay: its uncertainty cancels in the "
-                                     "difference, σ combines the two lags' uncertainties.")
-                                : tr("The table read delays differ: σ combines the two IMU delays' uncertainties."));
+  if (refused > 0)
+    text += " " + tr("%1 test point(s) in both are not compared: a delay not vouched for (INVALID, INCOMPLETE) is "
+                     "never subtracted.")
+                      .arg(refused);
+  if (both > 0)
+    text += " " + (commonConstant ? tr("Both used the same table read delay: its uncertainty cancels in the "
+                                       "difference, σ combines the two lags' uncertainties.")
+                                  : tr("The table read delays differ: σ combines the two IMU delays' uncertainties."));
   summary_->setText(text);
   showFrequencies();
   showResponses();
@@ -494,8 +501,14 @@ void CompareView::showResponses() {
 void CompareView::showTrend() {
   trendPlot_->detachItems();
   addGrid(trendPlot_);
-  // One series per test point kind, over every session with a result.
-  std::map<QString, std::pair<QVector<QPointF>, QVector<QwtIntervalSample>>> series;
+  // One series per test point kind, over every session with a result; a
+  // delay not vouched for (INVALID, INCOMPLETE, no verdict) goes into a
+  // series of its own, marked with a cross and never joined to the others.
+  struct Series {
+    QVector<QPointF> points;
+    QVector<QwtIntervalSample> bars;
+  };
+  std::map<QString, Series> series, refusedSeries;
   QStringList imus;
   double lo = 1e300, hi = -1e300, t0 = 1e300, t1 = -1e300;
   for (const auto& o : outcomes_) {
@@ -508,28 +521,36 @@ void CompareView::showTrend() {
     const QString imu =
         QString("%1 %2").arg(QString::fromStdString(o->info.imuModel), QString::fromStdString(o->info.imuSerial)).trimmed();
     if (!imus.contains(imu)) imus << imu;
+    const session::ShownVerdict shown = o->shownVerdict();
     for (const auto& p : o->report->points) {
-      auto& [points, bars] = series[comparisonLabel(p)];
-      points.push_back({x, p.imuDelayMs});
-      bars.push_back(QwtIntervalSample(x, p.imuDelayMs - p.imuDelayStdMs, p.imuDelayMs + p.imuDelayStdMs));
+      const auto* sp = shown.point(p.index);
+      auto& into = (sp && sp->vouched() ? series : refusedSeries)[comparisonLabel(p)];
+      into.points.push_back({x, p.imuDelayMs});
+      into.bars.push_back(QwtIntervalSample(x, p.imuDelayMs - p.imuDelayStdMs, p.imuDelayMs + p.imuDelayStdMs));
       lo = std::min(lo, p.imuDelayMs - p.imuDelayStdMs);
       hi = std::max(hi, p.imuDelayMs + p.imuDelayStdMs);
     }
   }
   int k = 0;
-  for (auto& [label, pointsAndBars] : series) {
-    auto& [points, bars] = pointsAndBars;
+  std::map<QString, int> colourOf;
+  for (auto& [label, one] : series) {
     // In date order, joined by a dotted line.
-    std::vector<int> order(static_cast<std::size_t>(points.size()));
-    for (int i = 0; i < points.size(); ++i) order[static_cast<std::size_t>(i)] = i;
-    std::sort(order.begin(), order.end(), [&](int x, int y) { return points[x].x() < points[y].x(); });
+    std::vector<int> order(static_cast<std::size_t>(one.points.size()));
+    for (int i = 0; i < one.points.size(); ++i) order[static_cast<std::size_t>(i)] = i;
+    std::sort(order.begin(), order.end(), [&](int x, int y) { return one.points[x].x() < one.points[y].x(); });
     QVector<QPointF> p;
     QVector<QwtIntervalSample> b;
     for (int i : order) {
-      p.push_back(points[i]);
-      b.push_back(bars[i]);
+      p.push_back(one.points[i]);
+      b.push_back(one.bars[i]);
     }
+    colourOf[label] = k;
     addPoints(trendPlot_, label, kSeries[k++ % 6], p, b, QwtSymbol::Ellipse, true);
+  }
+  for (auto& [label, one] : refusedSeries) {
+    const int colour = colourOf.count(label) ? colourOf[label] : k++;
+    addPoints(trendPlot_, tr("%1: refused (INVALID or INCOMPLETE)").arg(label), kSeries[colour % 6], one.points,
+              one.bars, QwtSymbol::XCross, false);
   }
   QwtText title(imus.size() == 1 && imus.front().isEmpty() ? tr("IMU delay against the recording date (IMU not named)")
                 : imus.size() == 1 ? tr("IMU delay of %1 against the recording date").arg(imus.front())

@@ -218,6 +218,8 @@ const char* const kTemplates[] = {
     QT_TRANSLATE_NOOP("core_text", "fail"),
     QT_TRANSLATE_NOOP("core_text", "invalid"),
     QT_TRANSLATE_NOOP("core_text", "test point %1: the stored result has no delay for it; this version's analysis gives one"),
+    // session::judgeShown: a point the shown record does not state
+    QT_TRANSLATE_NOOP("core_text", "the stored result has no delay for this test point"),
     QT_TRANSLATE_NOOP("core_text", "test point %1: the stored result has a delay; this version's analysis gives none"),
     QT_TRANSLATE_NOOP("core_text", "the gyro's %1 axis turns against the table (gyro/table ratio %2 after the stated sign -1): the axis is mounted the other way round or its sign convention differs from the table's; the delay is refused (read as a normal axis it would be a half-period lag). Check the stated sign: without it the gyro turns with the table"),
     QT_TRANSLATE_NOOP("core_text", "a steady sinusoid: smooth table residual %1, harmonics %2, amplitude change %3, smooth gyro residual %4 of the amplitude"),

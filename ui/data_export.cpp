@@ -5,6 +5,7 @@
 #include <QSaveFile>
 
 #include "core/io/csv_export.h"
+#include "core/session/shown_csv.h"
 
 namespace fog::ui {
 
@@ -25,44 +26,33 @@ Status exportSessionData(const RunOutcome& outcome, const QString& dir) {
   return io::exportCsv(QDir::toNativeSeparators(dir).toStdString(), outcome.info, outcome.recording, report, false);
 }
 
-std::string delayRowsCsv(const analysis::DelayReport& report, const std::string& source) {
-  std::string t = "# fogbench delay breakdown: measured lag + table read delay = IMU delay; "
-                  "IMU delay - processing board delay = gyro's own delay; 1 sigma; ms\n";
-  t += "# source: " + oneLine(source) + "\n";
-  t += "test_point,axis,frequency_hz,quantity,value_ms,std_ms\n";
-  const auto& c = report.constants;
-  for (const auto& p : report.points) {
-    const std::string head = std::to_string(p.index + 1) + "," + axisLabel(p.axis) + "," + num(p.nominalFrequencyHz) + ",";
-    auto row = [&](const char* quantity, double value, double std) {
-      t += head + quantity + "," + num(value) + "," + num(std) + "\n";
-    };
-    row("measured_lag", p.lagMs, p.lagStdMs);
-    row("table_read_delay", c.tableReadDelayMs, c.tableReadDelayStdMs);
-    row("imu_delay", p.imuDelayMs, p.imuDelayStdMs);
-    row("processing_board_delay", c.boardDelayMs, c.boardDelayStdMs);
-    row("gyro_delay", p.gyroDelayMs, p.gyroDelayStdMs);
-  }
-  return t;
-}
-
 std::string comparisonCsv(const std::vector<PointComparison>& rows, const analysis::DelayReport& a,
                           const analysis::DelayReport& b, const std::string& aName, const std::string& bName) {
   std::string t = "# fogbench comparison of the IMU delay (ms, 1 sigma): B - A\n";
   t += "# A: " + oneLine(aName) + "\n# B: " + oneLine(bName) + "\n";
-  t += "test_point,axis,frequency_hz,amplitude_deg,a_imu_delay_ms,a_std_ms,b_imu_delay_ms,b_std_ms,difference_ms,"
-       "difference_std_ms,significance\n";
+  t += "# a delay whose verdict is not pass or fail is refused: no difference is taken with it\n";
+  t += "test_point,axis,frequency_hz,amplitude_deg,a_imu_delay_ms,a_std_ms,a_verdict,b_imu_delay_ms,b_std_ms,"
+       "b_verdict,difference_ms,difference_std_ms,significance,note\n";
   int n = 0;
   for (const auto& r : rows) {
     const analysis::TestPointResult& p = r.a ? a.points[*r.a] : b.points[*r.b];
     // The amplitude as Compare matches points by: the table's fitted one.
     t += std::to_string(++n) + "," + axisLabel(p.axis) + "," + num(p.nominalFrequencyHz) + "," +
          num(p.tableFit.amplitudeDeg) + ",";
-    t += r.a ? num(r.aMs) + "," + num(r.aStdMs) : std::string(",");
+    t += r.a ? num(r.aMs) + "," + num(r.aStdMs) + "," + session::shownVerdictName(r.aShown.verdict) : std::string(",,");
     t += ",";
-    t += r.b ? num(r.bMs) + "," + num(r.bStdMs) : std::string(",");
+    t += r.b ? num(r.bMs) + "," + num(r.bStdMs) + "," + session::shownVerdictName(r.bShown.verdict) : std::string(",,");
     t += ",";
-    t += r.both() ? num(r.differenceMs) + "," + num(r.differenceStdMs) + "," + num(r.significance) : std::string(",,");
-    t += "\n";
+    std::string note;
+    if (r.comparable()) {
+      t += num(r.differenceMs) + "," + num(r.differenceStdMs) + "," + num(r.significance);
+    } else {
+      t += ",,";
+      note = !r.both()              ? std::string("tested in one session only")
+             : !r.aShown.vouched() ? "not compared: A's delay is refused (" + r.aShown.refusal() + ")"
+                                   : "not compared: B's delay is refused (" + r.bShown.refusal() + ")";
+    }
+    t += "," + session::csvField(note) + "\n";
   }
   return t;
 }

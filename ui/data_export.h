@@ -5,12 +5,10 @@
 //                       residuals and report, exactly as `fogbench-cli export
 //                       --csv DIR` writes them (io::exportCsv, docs/formats.md):
 //                       into a new or empty folder, never over other files
-//   delayRowsCsv        the delay breakdown of every test point (the Results
-//                       delay table's rows: measured lag, table read delay,
-//                       IMU delay, processing-board delay, gyro's own delay,
-//                       each with 1σ)
-//   comparisonCsv       Compare's rows: per test point A's and B's IMU delay,
-//                       B − A, its σ and |B − A|/σ
+//   (the delay table: session::delayBreakdownCsv, the core's, which the
+//   CLI's export writes too)
+//   comparisonCsv       Compare's rows: per test point A's and B's IMU delay
+//                       with their verdicts, B − A, its σ and |B − A|/σ
 //   writeTextFile       writes a file whole or not at all
 //
 // Numbers are written as the core's exporter writes them (io::formatDouble:
@@ -33,17 +31,13 @@ namespace fog::ui {
 // replaced; the core's refusal says so).
 Status exportSessionData(const RunOutcome& outcome, const QString& dir);
 
-// Columns: test_point,axis,frequency_hz,quantity,value_ms,std_ms with
-// quantity one of measured_lag, table_read_delay, imu_delay,
-// processing_board_delay, gyro_delay (five rows a test point, in the
-// Results table's order).
-std::string delayRowsCsv(const analysis::DelayReport& report, const std::string& source);
-
 // Columns (test_point: the row's number, 1-based; amplitude_deg: the table's
 // fitted amplitude, as Compare matches points): test_point,axis,frequency_hz,amplitude_deg,a_imu_delay_ms,
-// a_std_ms,b_imu_delay_ms,b_std_ms,difference_ms,difference_std_ms,
-// significance; a test point tested in one session only has the other's
-// cells empty. aName/bName (the session files) go into the comment lines.
+// a_std_ms,a_verdict,b_imu_delay_ms,b_std_ms,b_verdict,difference_ms,
+// difference_std_ms,significance,note; a test point tested in one session
+// only has the other's cells empty; a row with a refused delay has no
+// difference and a note saying why. aName/bName (the session files) go into
+// the comment lines.
 std::string comparisonCsv(const std::vector<PointComparison>& rows, const analysis::DelayReport& a,
                           const analysis::DelayReport& b, const std::string& aName, const std::string& bName);
 

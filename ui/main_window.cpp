@@ -52,6 +52,7 @@
 #include "ui/compare_view.h"
 #include "ui/table_panel.h"
 #include "ui/core_text.h"
+#include "ui/verdict_text.h"
 #include "ui/import_dialog.h"
 #include "ui/diagnosis_view.h"
 #include "ui/language/language.h"
@@ -925,6 +926,7 @@ void MainWindow::showOutcome(std::shared_ptr<const RunOutcome> outcome) {
   shown_ = outcome;
   showHealth(outcome->recording.health, runner_.droppedFrames());
   resultView_->showOutcome(outcome);
+  nameShownInTitle();
   analyseNoise(outcome);
   const bool delay = outcome->report.isOk();
   QString message;
@@ -987,9 +989,9 @@ void MainWindow::showFailure(const QString& message) {
 }
 
 void MainWindow::loadSession(const QString& path, bool reanalyse, std::int64_t resultId,
-                             std::function<void(std::shared_ptr<const RunOutcome>)> done) {
+                             std::function<void(std::shared_ptr<const RunOutcome>)> done, bool announce) {
   const QString name = QFileInfo(path).fileName();
-  tell(reanalyse ? tr("Re-analysing %1 …").arg(name) : tr("Opening %1 …").arg(name));
+  if (announce) tell(reanalyse ? tr("Re-analysing %1 …").arg(name) : tr("Opening %1 …").arg(name));
   const BenchConstants bench = bench_;
   const AnalysisChoices choices = analysis_;
   // QFuture needs a default-constructible value: the outcome, or why not.
@@ -1063,7 +1065,7 @@ void MainWindow::loadSession(const QString& path, bool reanalyse, std::int64_t r
         completeOutcome(*outcome, source);
         return {outcome, Status::ok()};
       },
-      [this, path, name, reanalyse, resultId, done](Loaded result) {
+      [this, path, name, reanalyse, resultId, done, announce](Loaded result) {
         if (!result.outcome) {
           reportError(reanalyse ? tr("Re-analyse") : tr("Open session"),
                       reanalyse ? tr("Cannot re-analyse %1").arg(name) : tr("Cannot open %1").arg(name),
@@ -1071,7 +1073,9 @@ void MainWindow::loadSession(const QString& path, bool reanalyse, std::int64_t r
           done(nullptr);
           return;
         }
-        if (reanalyse) {
+        if (!announce) {
+          // Compare's: Results and the status bar go on naming their session.
+        } else if (reanalyse) {
           tell(tr("%1: re-analysed with the bench constants; the result was added to the session and is shown").arg(name));
           showMessage(this, MessageKind::kInformation, tr("Re-analyse"), tr("%1 re-analysed").arg(name),
                       tr("The session was analysed with the current bench constants and the result was added to it; "
@@ -1124,8 +1128,27 @@ void MainWindow::showLoaded(std::shared_ptr<const RunOutcome> outcome) {
   shown_ = outcome;
   showHealth(outcome->recording.health, 0);
   resultView_->showOutcome(outcome);
+  nameShownInTitle();
   analyseNoise(outcome);
   showView(kResults);
+}
+
+void MainWindow::nameShownInTitle() {
+  QString what;
+  if (shown_) {
+    const session::ShownVerdict v = shown_->shownVerdict();
+    const QString name = shown_->sessionPath.empty()
+                             ? tr("run not recorded")
+                             : QFileInfo(QString::fromStdString(shown_->sessionPath)).fileName();
+    what = shown_->shownResult() ? tr("%1, result %2 of %3: %4")
+                                       .arg(name)
+                                       .arg(shown_->shownResultNumber())
+                                       .arg(shown_->results.size())
+                                       .arg(verdictWord(v.verdict))
+                                 : tr("%1: %2 (not stored)").arg(name, verdictWord(v.verdict));
+  }
+  setWindowTitle(what.isEmpty() ? tr("fogbench %1 — FOG IMU delay bench").arg(FOG_VERSION)
+                                : tr("%1 — fogbench %2").arg(what, QStringLiteral(FOG_VERSION)));
 }
 
 void MainWindow::chooseImportOptions(const QString& csvFolder) {
@@ -1280,9 +1303,12 @@ QWidget* MainWindow::compareSessions(const QStringList& paths) {
   layout->addWidget(view);
   QPointer<CompareView> guard(view);
   for (int i = 0; i < paths.size(); ++i)
-    loadSession(paths[i], false, 0, [guard, i](std::shared_ptr<const RunOutcome> o) {
-      if (guard) guard->setOutcome(i, o, o ? QString() : tr("the session could not be read (see the message)"));
-    });
+    loadSession(
+        paths[i], false, 0,
+        [guard, i](std::shared_ptr<const RunOutcome> o) {
+          if (guard) guard->setOutcome(i, o, o ? QString() : tr("the session could not be read (see the message)"));
+        },
+        false);
   // As large as the screen allows, up to 1600 x 900.
   QSize size(1600, 900);
   if (const QScreen* screen = this->screen()) size = size.boundedTo(screen->availableGeometry().size() * 0.95);

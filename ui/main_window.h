@@ -215,10 +215,14 @@ class MainWindow : public QMainWindow {
   // Reads a session and analyses it in the background: with the bench's
   // constants when `reanalyse` (the result is added to the session), else
   // with the constants of its stored result `resultId` (0: the newest).
+  // `announce` false (Compare's sessions): the status bar keeps naming the
+  // session Results shows; errors are still reported.
   void loadSession(const QString& path, bool reanalyse, std::int64_t resultId,
-                   std::function<void(std::shared_ptr<const RunOutcome>)> done);
+                   std::function<void(std::shared_ptr<const RunOutcome>)> done, bool announce = true);
   // Shows a loaded session's outcome in Results (and its noise analysis).
   void showLoaded(std::shared_ptr<const RunOutcome> outcome);
+  // The window title names the session shown, its result and verdict.
+  void nameShownInTitle();
   // The Allan deviation of the outcome's static segments, in the background.
   void analyseNoise(std::shared_ptr<const RunOutcome> outcome);
   void updateRunButton();

@@ -39,12 +39,14 @@
 
 #include "core/analysis/theory.h"
 #include "ui/data_export.h"
+#include "core/session/shown_csv.h"
 #include "core/analysis/uncertainty_bound.h"
 #include "core/analysis/verdict.h"
 #include "core/common/version.h"
 #include "core/session/session_api.h"
 #include "ui/bode_view.h"
 #include "ui/core_text.h"
+#include "ui/verdict_text.h"
 #include "ui/language/language.h"
 #include "ui/plots/plot_export.h"
 #include "ui/plots/plot_interaction.h"
@@ -141,6 +143,20 @@ void setRow(QTableWidget* t, int row, const QStringList& cells, bool bold = fals
 
 ResultView::ResultView(QWidget* parent) : QWidget(parent) {
   auto* layout = new QVBoxLayout(this);
+  buildHeader(layout);
+  auto* all = new QSplitter(Qt::Vertical);
+  all->addWidget(buildPlotsAndTables());
+  all->addWidget(buildReportView());
+  all->setStretchFactor(0, 4);
+  all->setStretchFactor(1, 1);
+  layout->addWidget(all, 1);
+  buildExportMenu();
+  clear();
+}
+
+// The test point and result choosers, the buttons, the headline and the
+// verdict line.
+void ResultView::buildHeader(QVBoxLayout* layout) {
   auto* row = new QHBoxLayout();
   row->addWidget(new QLabel(tr("Test point")));
   testPointCombo_ = new QComboBox();
@@ -199,7 +215,11 @@ ResultView::ResultView(QWidget* parent) : QWidget(parent) {
   verdictLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   layout->addWidget(verdictLabel_);
   connect(testPointCombo_, qOverload<int>(&QComboBox::currentIndexChanged), this, &ResultView::showTestPoint);
+}
 
+// The fits (left, with the Bode plot in a second tab) beside the tables and
+// the zero-crossing and frequency plots (right).
+QWidget* ResultView::buildPlotsAndTables() {
   anglePlot_ = new SeriesPlot(tr("Normalised angles and fits"), tr("(angle − offset) / amplitude"));
   anglePlot_->setObjectName("anglePlot");
   residualPlot_ = new SeriesPlot(tr("Residuals (data − fit)"), tr("residual (arcsec)"), tr("″"));
@@ -259,20 +279,6 @@ ResultView::ResultView(QWidget* parent) : QWidget(parent) {
   right->setStretchFactor(1, 0);
   right->setStretchFactor(2, 1);
 
-  reportView_ = new QPlainTextEdit();
-  reportView_->setObjectName("reportView");
-  reportView_->setReadOnly(true);
-  reportView_->setLineWrapMode(QPlainTextEdit::NoWrap);
-  // Some platforms (offscreen) answer the fixed-font query with a
-  // proportional font; ask fontconfig's alias then.
-  QFont mono = QFontDatabase::systemFont(QFontDatabase::FixedFont);
-  if (!QFontInfo(mono).fixedPitch()) {
-    mono.setFamily("monospace");
-    mono.setStyleHint(QFont::TypeWriter);
-  }
-  reportView_->setFont(mono);
-  reportView_->setPlaceholderText(tr("The delay report appears here after a run."));
-
   bodeView_ = new BodeView();
   bodeView_->setObjectName("resultBodeView");
   leftTabs_ = new QTabWidget();
@@ -288,13 +294,28 @@ ResultView::ResultView(QWidget* parent) : QWidget(parent) {
   top->addWidget(right);
   top->setStretchFactor(0, 1);
   top->setStretchFactor(1, 1);
-  auto* all = new QSplitter(Qt::Vertical);
-  all->addWidget(top);
-  all->addWidget(reportView_);
-  all->setStretchFactor(0, 4);
-  all->setStretchFactor(1, 1);
-  layout->addWidget(all, 1);
+  return top;
+}
 
+QWidget* ResultView::buildReportView() {
+  reportView_ = new QPlainTextEdit();
+  reportView_->setObjectName("reportView");
+  reportView_->setReadOnly(true);
+  reportView_->setLineWrapMode(QPlainTextEdit::NoWrap);
+  // Some platforms (offscreen) answer the fixed-font query with a
+  // proportional font; ask fontconfig's alias then.
+  QFont mono = QFontDatabase::systemFont(QFontDatabase::FixedFont);
+  if (!QFontInfo(mono).fixedPitch()) {
+    mono.setFamily("monospace");
+    mono.setStyleHint(QFont::TypeWriter);
+  }
+  reportView_->setFont(mono);
+  reportView_->setPlaceholderText(tr("The delay report appears here after a run."));
+
+  return reportView_;
+}
+
+void ResultView::buildExportMenu() {
   auto* menu = new QMenu(exportButton_);
   auto addPlotExport = [this, menu](const QString& label, QwtPlot* plot) {
     menu->addAction(label, this, [this, plot] {
@@ -346,7 +367,6 @@ ResultView::ResultView(QWidget* parent) : QWidget(parent) {
   menu->addSeparator();
   menu->addAction(tr("Open the export folder"), this, &ResultView::openExportFolderRequested);
   exportButton_->setMenu(menu);
-  clear();
 }
 
 void ResultView::buildFrequencyPlot() {
@@ -500,10 +520,15 @@ void ResultView::fillTables(std::size_t i) {
 
   const auto& c = outcome_->report->constants;
   const auto budget = analysis::delayBudget(analysis::TheoryInputs{});
+  // A refused point's delays keep their mark in the table too.
+  const session::ShownVerdict shown = outcome_->shownVerdict();
+  session::ShownPoint refusedOrNot;
+  if (const auto* sp = shown.point(p.index)) refusedOrNot = *sp;
+  auto delay = [&](double v) { return shownNumber(refusedOrNot, v, 5); };
   auto range = [](double lo, double hi) { return QString("%1 – %2").arg(num(lo, 4), num(hi, 4)); };
   delayTable_->setRowCount(5);
   setRow(delayTable_, 0,
-         {tr("measured lag (gyro behind table)"), num(p.lagMs, 5),
+         {tr("measured lag (gyro behind table)"), delay(p.lagMs),
           // A σ below its bound is marked on the number itself, not only in
           // the basis column a narrow window may cut.
           num(p.lagStdMs, 5) + (analysis::sigmaBelowBound(p) ? QStringLiteral(" ⚠") : QString()), QString(),
@@ -515,14 +540,14 @@ void ResultView::fillTables(std::size_t i) {
          {tr("+ table read delay"), num(c.tableReadDelayMs, 5), num(c.tableReadDelayStdMs, 5), QString(),
           tr("bench constant")});
   setRow(delayTable_, 2,
-         {tr("= IMU delay"), num(p.imuDelayMs, 5), num(p.imuDelayStdMs, 5),
+         {tr("= IMU delay"), delay(p.imuDelayMs), num(p.imuDelayStdMs, 5),
           range(budget.totalMinMs, budget.totalMaxMs), tr("the paper: < 0.8 ms")},
          true);
   setRow(delayTable_, 3,
          {tr("− processing-board delay"), num(c.boardDelayMs, 5), num(c.boardDelayStdMs, 5),
           num(budget.boardMaxMs, 4), tr("bench constant; theory: sampling, compensation, serial frame")});
   setRow(delayTable_, 4,
-         {tr("= gyro's own delay"), num(p.gyroDelayMs, 5), num(p.gyroDelayStdMs, 5),
+         {tr("= gyro's own delay"), delay(p.gyroDelayMs), num(p.gyroDelayStdMs, 5),
           range(std::max(0.0, budget.totalMinMs - budget.boardMaxMs), budget.totalMaxMs - budget.boardMaxMs),
           tr("sensing, loop and pulse update")},
          true);
@@ -566,62 +591,31 @@ bool ResultView::eventFilter(QObject* watched, QEvent* event) {
   return QWidget::eventFilter(watched, event);
 }
 
-QString ResultView::verdictWord(const std::string& verdict) {
-  if (verdict == "pass") return tr("PASS");
-  if (verdict == "fail") return tr("FAIL");
-  if (verdict == "invalid") return tr("INVALID");
-  if (verdict == "incomplete") return tr("INCOMPLETE");
-  return tr("no verdict stored");
-}
-
 QString ResultView::verdictHtml(const analysis::TestPointResult& p) const {
-  auto colourOf = [](const std::string& v) {
-    return v == "pass" ? "#146e28" : v == "invalid" ? "#a05000" : "#b00000";  // fail, incomplete, none: red
-  };
-  std::string pointVerdict, reportVerdict, dataVerdict;
+  // Core's one rule (session::judgeShown): the record's verdict, reasons and
+  // limit, never re-judged here; a result not stored is judged there once.
+  using K = session::ShownVerdictKind;
+  const session::ShownVerdict v = outcome_->shownVerdict();
+  const session::ShownPoint* sp = v.point(p.index);
   QStringList reasons;
-  double limit = outcome_->imuDelayLimitMs;
-  QString whose;
-  if (const ResultRecord* r = outcome_->shownResult()) {
-    // The record: its verdict, its reasons, its limit; never re-judged here.
-    limit = r->imuDelayLimitMs;
-    reportVerdict = r->verdict;
-    dataVerdict = r->dataVerdict;
-    if (const auto* sp = r->point(p.index)) {
-      pointVerdict = sp->verdict;
-      for (const auto& why : sp->reasons) reasons << coreText(why).toHtmlEscaped();
-    } else {
-      reasons << tr("the stored result has no delay for this test point").toHtmlEscaped();
-    }
-    whose = tr("stored verdict");
-  } else {
-    // Not stored (a run without a session, or a session without a result):
-    // judged once, here, with the run's own limit.
-    const analysis::PointVerdict v = analysis::judgePoint(p, limit);
-    pointVerdict = analysis::verdictName(v.verdict);
-    const analysis::ReportVerdict all = analysis::judgeReport(*outcome_->report, limit);
-    reportVerdict = analysis::verdictName(all.verdict);
-    if (!outcome_->complete) {
-      dataVerdict = reportVerdict;
-      reportVerdict = "incomplete";
-    }
-    for (const auto& why : v.reasons) reasons << coreText(why).toHtmlEscaped();
-    whose = tr("verdict, not stored");
-  }
+  if (sp)
+    for (const auto& why : sp->reasons) reasons << coreText(why).toHtmlEscaped();
+  const QString whose = v.stored ? tr("stored verdict") : tr("verdict, not stored");
   QString html = tr("Result: <span style='color:%1'><b>%2</b></span>")
-                     .arg(colourOf(reportVerdict), verdictWord(reportVerdict));
-  if (reportVerdict == "incomplete") {
+                     .arg(verdictColour(v.verdict), verdictWord(v.verdict));
+  if (v.verdict == K::kIncomplete) {
     html += tr(" (incomplete run: %1; the data recorded give %2)")
-                .arg(coreText(outcome_->incompleteReason).toHtmlEscaped(), verdictWord(dataVerdict));
+                .arg(coreText(v.incompleteReason).toHtmlEscaped(), verdictWord(v.dataVerdict));
   }
-  html += tr("  ·  %1 (limit %2 ms)").arg(whose, num(limit, 3));
-  if (reportVerdict == "incomplete")  // no point of an incomplete run passes
+  html += tr("  ·  %1 (limit %2 ms)").arg(whose, num(v.limitMs, 3));
+  const K pointVerdict = sp ? sp->verdict : K::kNone;
+  if (pointVerdict == K::kIncomplete)  // no point of an incomplete run passes
     html += tr("<br>Test point: <span style='color:%1'><b>%2</b></span> (its data give %3): %4")
-                .arg(colourOf(reportVerdict), verdictWord(reportVerdict), verdictWord(pointVerdict),
+                .arg(verdictColour(pointVerdict), verdictWord(pointVerdict), verdictWord(sp->dataVerdict),
                      reasons.join("<br>"));
   else
     html += tr("<br>Test point: <span style='color:%1'><b>%2</b></span>: %3")
-                .arg(colourOf(pointVerdict), verdictWord(pointVerdict), reasons.join("<br>"));
+                .arg(verdictColour(pointVerdict), verdictWord(pointVerdict), reasons.join("<br>"));
   if (!outcome_->differences.empty()) {
     QStringList diffs;
     for (const auto& d : outcome_->differences) diffs << coreText(d).toHtmlEscaped();
@@ -631,6 +625,28 @@ QString ResultView::verdictHtml(const analysis::TestPointResult& p) const {
                 .arg(diffs.join("; "));
   }
   return html;
+}
+
+// The headline: the shown point's delays with their σ when they are vouched
+// for; a refused delay is marked as refused, its number only in brackets.
+QString ResultView::headlineHtml(const analysis::TestPointResult& p) const {
+  const session::ShownVerdict v = outcome_->shownVerdict();
+  const session::ShownPoint* sp = v.point(p.index);
+  QString lag;
+  if (sp && sp->vouched()) {
+    lag = tr("<b>lag %1 ± %2 ms</b>  ·  IMU delay %3 ms  ·  gyro's own delay %4 ms")
+              .arg(num(p.lagMs, 4), num(p.lagStdMs, 4), num(p.imuDelayMs, 4), num(p.gyroDelayMs, 4));
+  } else {
+    const QString word = verdictWord(sp ? sp->verdict : session::ShownVerdictKind::kNone);
+    lag = tr("<span style='color:%1'><b>delay refused (%2)</b></span>  ·  not vouched for: lag (%3 ms), IMU delay "
+             "(%4 ms)")
+              .arg(verdictColour(sp ? sp->verdict : session::ShownVerdictKind::kNone), word, num(p.lagMs, 4),
+                   num(p.imuDelayMs, 4));
+  }
+  for (const auto& t : outcome_->truth)
+    if (t.index == p.index) lag += tr("  ·  simulator truth: lag %1 ms").arg(num(t.lagS * 1e3, 4));
+  if (!outcome_->complete) lag += tr("  ·  <span style='color:#b00000'>incomplete run</span>");
+  return lag;
 }
 
 void ResultView::showTestPoint(int position) {
@@ -645,12 +661,7 @@ void ResultView::showTestPoint(int position) {
   }
   const auto i = static_cast<std::size_t>(position);
   const auto& p = outcome_->report->points[i];
-  QString lag = tr("<b>lag %1 ± %2 ms</b>  ·  IMU delay %3 ms  ·  gyro's own delay %4 ms")
-                    .arg(num(p.lagMs, 4), num(p.lagStdMs, 4), num(p.imuDelayMs, 4), num(p.gyroDelayMs, 4));
-  for (const auto& t : outcome_->truth)
-    if (t.index == p.index) lag += tr("  ·  simulator truth: lag %1 ms").arg(num(t.lagS * 1e3, 4));
-  if (!outcome_->complete) lag += tr("  ·  <span style='color:#b00000'>incomplete run</span>");
-  lagLabel_->setText(lag);
+  lagLabel_->setText(headlineHtml(p));
   verdictLabel_->setText(verdictHtml(p));
   fillTables(i);
 
@@ -837,7 +848,7 @@ QString ResultView::exportDelayRowsTo(const QString& path) {
   if (!outcome_ || !outcome_->report) return tr("There is no delay result to export.");
   const QString source = outcome_->sessionPath.empty() ? QString::fromStdString(outcome_->info.source)
                                                        : QString::fromStdString(outcome_->sessionPath);
-  const QString why = writeTextFile(path, delayRowsCsv(*outcome_->report, source.toStdString()));
+  const QString why = writeTextFile(path, session::delayBreakdownCsv(*outcome_->report, outcome_->shownVerdict(), source.toStdString()));
   if (why.isEmpty()) emit exported(path);
   return why;
 }

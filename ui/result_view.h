@@ -21,6 +21,7 @@ class QLabel;
 class QPlainTextEdit;
 class QPushButton;
 class QTabWidget;
+class QVBoxLayout;
 class QTableWidget;
 class QToolButton;
 class QwtPlot;
@@ -57,7 +58,7 @@ class ResultView : public QWidget {
   // result not stored, the run's own judgement; an incomplete run's verdict
   // is INCOMPLETE. Says when this version's analysis differs from the record.
   QString verdictHtml(const analysis::TestPointResult& point) const;
-  static QString verdictWord(const std::string& verdict);
+  QString headlineHtml(const analysis::TestPointResult& point) const;
 
   SeriesPlot* anglePlot() const { return anglePlot_; }
   SeriesPlot* residualPlot() const { return residualPlot_; }
@@ -125,6 +126,10 @@ class ResultView : public QWidget {
 
  private:
   void fitDelayTableHeight();
+  void buildHeader(QVBoxLayout* layout);
+  QWidget* buildPlotsAndTables();
+  QWidget* buildReportView();
+  void buildExportMenu();
   void buildFrequencyPlot();
   void showFrequencyPlot();
   void fillTables(std::size_t i);

@@ -10,11 +10,6 @@ namespace fog::ui {
 
 namespace {
 
-std::string upperCase(std::string s) {
-  for (auto& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  return s;
-}
-
 std::string limitText(double v) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%g", v);
@@ -33,6 +28,10 @@ int RunOutcome::shownResultNumber() const {
   for (std::size_t i = 0; i < results.size(); ++i)
     if (results[i].id == shownResultId && shownResultId != 0) return static_cast<int>(i) + 1;
   return 0;
+}
+
+session::ShownVerdict RunOutcome::shownVerdict() const {
+  return session::judgeShown(shownResult(), report ? &*report : nullptr, complete, incompleteReason, imuDelayLimitMs);
 }
 
 void completeOutcome(RunOutcome& outcome, const std::string& source) {
@@ -77,10 +76,12 @@ void completeOutcome(RunOutcome& outcome, const std::string& source) {
   if (shown) {
     // The record first: its verdict is the one that counts; the text below
     // is this version's analysis with the record's settings (for the plots).
-    std::string head = "Stored verdict: " + upperCase(shown->verdict.empty() ? "not stated" : shown->verdict);
-    if (!shown->dataVerdict.empty()) head += " (the data recorded give " + upperCase(shown->dataVerdict) + ")";
-    head += ", against the stored limit of " + limitText(shown->imuDelayLimitMs) + " ms\n";
-    for (const auto& why : shown->verdictReasons) head += "  " + why + "\n";
+    const session::ShownVerdict v = outcome.shownVerdict();
+    std::string head = std::string("Stored verdict: ") + session::shownVerdictWord(v.verdict);
+    if (v.verdict == session::ShownVerdictKind::kIncomplete)
+      head += std::string(" (the data recorded give ") + session::shownVerdictWord(v.dataVerdict) + ")";
+    head += ", against the stored limit of " + limitText(v.limitMs) + " ms\n";
+    for (const auto& why : v.reasons) head += "  " + why + "\n";
     if (!outcome.differences.empty()) {
       head += "This version's analysis of the same data with the same settings differs from the stored result:\n";
       for (const auto& d : outcome.differences) head += "  " + d + "\n";

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/session/shown_verdict.h"
 #include "core/session/stored_result.h"
 #include "core/analysis/delay_analysis.h"
 #include "core/analysis/frequency_response.h"
@@ -54,6 +55,10 @@ struct RunOutcome {
   std::vector<std::string> differences;
   // 1-based position of the shown result among `results` (0: none).
   int shownResultNumber() const;
+  // The verdict shown and each point's numbers with theirs (core's one rule,
+  // session::judgeShown): the shown record's, else `report` judged with
+  // `imuDelayLimitMs`; INCOMPLETE when the run stopped early.
+  session::ShownVerdict shownVerdict() const;
 };
 
 // Analyses nothing: fills traces and report text for a recording whose report

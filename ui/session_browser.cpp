@@ -13,6 +13,7 @@
 
 #include "core/session/session_list.h"
 #include "ui/core_text.h"
+#include "ui/verdict_text.h"
 #include "ui/language/language.h"
 #include "ui/messages.h"
 
@@ -29,23 +30,13 @@ QString verdictText(const session::SessionSummary& s) {
   if (s.results == 0) return QStringLiteral("-");
   const QString damaged = s.damagedResults > 0 ? QObject::tr("; %1 damaged").arg(s.damagedResults) : QString();
   if (s.shownResult == 0) return QObject::tr("damaged (%1 of %2)").arg(s.damagedResults).arg(s.results);
-  const QString word = s.verdict == "pass"         ? QObject::tr("PASS")
-                       : s.verdict == "fail"       ? QObject::tr("FAIL")
-                       : s.verdict == "invalid"    ? QObject::tr("INVALID")
-                       : s.verdict == "incomplete" ? QObject::tr("INCOMPLETE")
-                                                   : QObject::tr("stored");
-  return QObject::tr("%1 (%2 of %3%4)").arg(word).arg(s.shownResult).arg(s.results).arg(damaged);
+  return QObject::tr("%1 (%2 of %3%4)").arg(verdictWord(s.shown.verdict)).arg(s.shownResult).arg(s.results).arg(damaged);
 }
 
-QColor verdictColour(const session::SessionSummary& s) {
-  if (s.verdict == "pass") return QColor(20, 110, 40);
-  if (s.verdict == "invalid") return QColor(160, 80, 0);
-  return QColor(176, 0, 0);  // fail, incomplete, damaged
-}
-
-QString joinMs(const std::vector<double>& values) {
+// Each point's number with its mark: "0.4655 / refused (0.5155, INVALID)".
+QString joinMs(const session::ShownVerdict& shown, double session::ShownPoint::*value) {
   QStringList parts;
-  for (double v : values) parts << localNumber(v, 'f', 4);
+  for (const auto& p : shown.points) parts << shownNumber(p, p.*value, 4);
   return parts.isEmpty() ? QStringLiteral("-") : parts.join(" / ");
 }
 
@@ -188,9 +179,9 @@ void SessionBrowser::refresh() {
     if (!s.complete) table_->item(row, kState)->setForeground(QColor(170, 90, 0));
     // The stored verdict, never a re-judgement (docs/sessions.md).
     set(kVerdict, verdictText(s));
-    if (s.results > 0) table_->item(row, kVerdict)->setForeground(verdictColour(s));
-    set(kLag, joinMs(s.lagMs));
-    set(kImuDelay, joinMs(s.imuDelayMs));
+    if (s.results > 0) table_->item(row, kVerdict)->setForeground(QColor(verdictColour(s.shown.verdict)));
+    set(kLag, joinMs(s.shown, &session::ShownPoint::lagMs));
+    set(kImuDelay, joinMs(s.shown, &session::ShownPoint::imuDelayMs));
   }
   const int sessions = static_cast<int>(listing->sessions.size()) - unreadable;
   QString summary = tr("%n session(s)", nullptr, sessions);

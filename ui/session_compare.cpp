@@ -23,7 +23,17 @@ QString comparisonLabel(const analysis::TestPointResult& p) {
            localNumber(p.tableFit.amplitudeDeg, 'f', 2));
 }
 
-std::vector<PointComparison> compareReports(const analysis::DelayReport& a, const analysis::DelayReport& b) {
+namespace {
+session::ShownPoint shownOf(const session::ShownVerdict& v, const analysis::TestPointResult& p) {
+  if (const auto* sp = v.point(p.index)) return *sp;
+  session::ShownPoint none;  // kNone: refused
+  none.index = p.index;
+  return none;
+}
+}  // namespace
+
+std::vector<PointComparison> compareReports(const analysis::DelayReport& a, const session::ShownVerdict& aVerdict,
+                                            const analysis::DelayReport& b, const session::ShownVerdict& bVerdict) {
   std::vector<PointComparison> out;
   std::vector<bool> usedB(b.points.size(), false);
   const bool commonTable = a.constants.tableReadDelayMs == b.constants.tableReadDelayMs &&
@@ -35,6 +45,8 @@ std::vector<PointComparison> compareReports(const analysis::DelayReport& a, cons
     c.a = i;
     c.aMs = pa.imuDelayMs;
     c.aStdMs = pa.imuDelayStdMs;
+    c.aShown = shownOf(aVerdict, pa);
+    c.commonTableConstant = commonTable;
     for (std::size_t j = 0; j < b.points.size(); ++j) {
       if (usedB[j] || !sameTest(pa, b.points[j])) continue;
       usedB[j] = true;
@@ -42,8 +54,9 @@ std::vector<PointComparison> compareReports(const analysis::DelayReport& a, cons
       c.b = j;
       c.bMs = pb.imuDelayMs;
       c.bStdMs = pb.imuDelayStdMs;
+      c.bShown = shownOf(bVerdict, pb);
+      if (!c.comparable()) break;
       c.differenceMs = pb.imuDelayMs - pa.imuDelayMs;
-      c.commonTableConstant = commonTable;
       c.differenceStdMs = commonTable ? std::hypot(pa.lagStdMs, pb.lagStdMs)
                                       : std::hypot(pa.imuDelayStdMs, pb.imuDelayStdMs);
       c.significance = c.differenceStdMs > 0.0 ? std::abs(c.differenceMs) / c.differenceStdMs : 0.0;
@@ -58,6 +71,8 @@ std::vector<PointComparison> compareReports(const analysis::DelayReport& a, cons
     c.b = j;
     c.bMs = b.points[j].imuDelayMs;
     c.bStdMs = b.points[j].imuDelayStdMs;
+    c.bShown = shownOf(bVerdict, b.points[j]);
+    c.commonTableConstant = commonTable;
     out.push_back(c);
   }
   return out;

@@ -485,7 +485,7 @@
 <context>
     <name>fog::ui::CompareView</name>
     <message>
-        <location filename="../../ui/compare_view.cpp" line="+131"/>
+        <location filename="../../ui/compare_view.cpp" line="+132"/>
         <source>session</source>
         <translation>会话</translation>
     </message>
@@ -562,12 +562,12 @@
     </message>
     <message>
         <location line="+12"/>
-        <location line="+157"/>
+        <location line="+153"/>
         <source>test point</source>
         <translation>测试点</translation>
     </message>
     <message>
-        <location line="-151"/>
+        <location line="-147"/>
         <source>Zero crossing of A and B</source>
         <translation>A 与 B 的过零点</translation>
     </message>
@@ -652,9 +652,14 @@
         <translation>结果 %1/%2；转台读数延迟 %3 ± %4 ms，板卡 %5 ms</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>%1 (stored, limit %2 ms) · %3</source>
         <translation>%1（已保存，限值 %2 ms）· %3</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1 (not stored, limit %2 ms) · %3</source>
+        <translation>%1（未保存，限值 %2 ms）· %3</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -662,29 +667,34 @@
         <translation> · 本版本的分析与已保存结果不同；重新分析即可保存</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>%1 (not stored) · %2</source>
-        <translation>%1（未保存）· %2</translation>
+        <location line="+81"/>
+        <source>%1 against %2: %3 test point(s) compared, %4 differ by more than 2σ.</source>
+        <translation>%1 对比 %2：比较了 %3 个测试点，其中 %4 个相差超过 2σ。</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+5"/>
+        <source>%1 test point(s) in both are not compared: a delay not vouched for (INVALID, INCOMPLETE) is never subtracted.</source>
+        <translation>两者共有的 %1 个测试点未比较：不可担保的延迟（无效、不完整）从不参与相减。</translation>
+    </message>
+    <message>
+        <location line="-75"/>
         <source>There is no comparison to export.</source>
         <translation>没有可导出的比较结果。</translation>
     </message>
     <message>
         <location line="+17"/>
-        <location line="+139"/>
+        <location line="+149"/>
         <source>Choose two different sessions.</source>
         <translation>请选择两个不同的会话。</translation>
     </message>
     <message>
-        <location line="-138"/>
-        <location line="+139"/>
+        <location line="-148"/>
+        <location line="+149"/>
         <source>Session %1 or %2 has no delay result to compare.</source>
         <translation>会话 %1 或 %2 没有可比较的延迟结果。</translation>
     </message>
     <message>
-        <location line="-131"/>
+        <location line="-141"/>
         <location line="+1"/>
         <source>%1: IMU delay (ms)</source>
         <translation>%1：IMU 延迟 (ms)</translation>
@@ -705,12 +715,12 @@
         <translation>|%1 − %2|/σ</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>%1 ± %2</source>
         <translation>%1 ± %2</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+13"/>
         <source>differs (more than 2σ)</source>
         <translation>有差异（超过 2σ）</translation>
     </message>
@@ -720,17 +730,17 @@
         <translation>一致（2σ 以内）</translation>
     </message>
     <message>
+        <location line="+7"/>
+        <source>not compared: %1&apos;s delay is refused (%2)</source>
+        <translation>未比较：%1 的延迟被拒绝（%2）</translation>
+    </message>
+    <message>
         <location line="+4"/>
         <source>only in %1</source>
         <translation>仅在 %1 中</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>%1 against %2: %3 test point(s) in both, %4 differ by more than 2σ.</source>
-        <translation>%1 相对于 %2：两者共有 %3 个测试点，其中 %4 个差异超过 2σ。</translation>
-    </message>
-    <message>
-        <location line="+4"/>
+        <location line="+14"/>
         <source>Both used the same table read delay: its uncertainty cancels in the difference, σ combines the two lags&apos; uncertainties.</source>
         <translation>两者使用相同的转台读数延迟：其不确定度在差值中抵消，σ 由两个滞后的不确定度合成。</translation>
     </message>
@@ -765,7 +775,12 @@
         <translation>%1 与 %2 没有共同具有频率响应的轴。%1：%3 %2：%4</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+55"/>
+        <source>%1: refused (INVALID or INCOMPLETE)</source>
+        <translation>%1：被拒绝（无效或不完整）</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>IMU delay against the recording date (IMU not named)</source>
         <translation>IMU 延迟随记录日期的变化（未填写 IMU）</translation>
     </message>
@@ -1648,12 +1663,13 @@ Press Diagnose in the Results view to start it again.</source>
 <context>
     <name>fog::ui::MainWindow</name>
     <message>
-        <location filename="../../ui/main_window.cpp" line="+152"/>
+        <location filename="../../ui/main_window.cpp" line="+153"/>
+        <location line="+997"/>
         <source>fogbench %1 — FOG IMU delay bench</source>
         <translation>fogbench %1 —— 光纤陀螺 IMU 延迟测试台</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="-989"/>
         <source>Configure</source>
         <translation>配置</translation>
     </message>
@@ -1674,12 +1690,12 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+1047"/>
+        <location line="+1069"/>
         <source>Diagnosis</source>
         <translation>诊断</translation>
     </message>
     <message>
-        <location line="-1044"/>
+        <location line="-1066"/>
         <source>Noise</source>
         <translation>噪声</translation>
     </message>
@@ -1752,12 +1768,12 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+745"/>
+        <location line="+746"/>
         <source>Open session</source>
         <translation>打开会话</translation>
     </message>
     <message>
-        <location line="-744"/>
+        <location line="-745"/>
         <source>fogbench sessions (*.fbs);;All files (*)</source>
         <translation>fogbench 会话 (*.fbs);;所有文件 (*)</translation>
     </message>
@@ -2188,7 +2204,7 @@ Plots: wheel zooms, drag pans, double-click shows all, click sets cursors A/B</s
         <translation>  ·  显示跳过 %1 帧（全部已记录）</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>Run incomplete (%1); </source>
         <translation>运行未完成（%1）；</translation>
     </message>
@@ -2274,12 +2290,12 @@ Plots: wheel zooms, drag pans, double-click shows all, click sets cursors A/B</s
     </message>
     <message>
         <location line="+76"/>
-        <location line="+8"/>
+        <location line="+10"/>
         <source>Re-analyse</source>
         <translation>重新分析</translation>
     </message>
     <message>
-        <location line="-7"/>
+        <location line="-9"/>
         <source>Cannot re-analyse %1</source>
         <translation>无法重新分析 %1</translation>
     </message>
@@ -2298,7 +2314,7 @@ File: %2</source>
 文件：%2</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+7"/>
         <source>%1: re-analysed with the bench constants; the result was added to the session and is shown</source>
         <translation>%1：已用台架常数重新分析；结果已添加到会话并显示</translation>
     </message>
@@ -2317,17 +2333,37 @@ File: %1</source>
         <translation>%1：显示第 %2 个结果（共 %3 个）</translation>
     </message>
     <message>
-        <location line="+196"/>
+        <location line="+56"/>
+        <source>run not recorded</source>
+        <translation>未记录的运行</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1, result %2 of %3: %4</source>
+        <translation>%1，结果 %2/%3：%4</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1: %2 (not stored)</source>
+        <translation>%1：%2（未保存）</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 — fogbench %2</source>
+        <translation>%1 — fogbench %2</translation>
+    </message>
+    <message>
+        <location line="+149"/>
         <source>Compare %1</source>
         <translation>比较 %1</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+9"/>
         <source>the session could not be read (see the message)</source>
         <translation>无法读取该会话（见消息）</translation>
     </message>
     <message>
-        <location line="-208"/>
+        <location line="-229"/>
         <source>%1 re-analysed</source>
         <translation>%1 已重新分析</translation>
     </message>
@@ -2337,7 +2373,7 @@ File: %1</source>
         <translation>%1：只读查看</translation>
     </message>
     <message>
-        <location line="+54"/>
+        <location line="+73"/>
         <source>Choose a session folder to import into first.</source>
         <translation>请先选择导入目标会话文件夹。</translation>
     </message>
@@ -2782,7 +2818,7 @@ File: %1</source>
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location filename="../../ui/main_window.cpp" line="-1190"/>
+        <location filename="../../ui/main_window.cpp" line="-1212"/>
         <location filename="../../ui/plan_editor.cpp" line="-323"/>
         <location filename="../../ui/plots/delta_picker.cpp" line="+1"/>
         <source>%1 s</source>
@@ -2809,7 +2845,7 @@ File: %1</source>
         <translation>PNG 图像 (*.png);;SVG 矢量图 (*.svg);;PDF 文档 (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../../ui/report/calibration_report.cpp" line="+70"/>
+        <location filename="../../ui/report/calibration_report.cpp" line="+71"/>
         <location line="+251"/>
         <source>not recorded</source>
         <translation>未记录</translation>
@@ -3053,18 +3089,18 @@ File: %1</source>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+284"/>
+        <location line="+293"/>
         <source>quantity</source>
         <translation>量</translation>
     </message>
     <message>
-        <location line="-283"/>
-        <location line="+368"/>
+        <location line="-292"/>
+        <location line="+377"/>
         <source>value</source>
         <translation>数值</translation>
     </message>
     <message>
-        <location line="-367"/>
+        <location line="-376"/>
         <source>std. uncertainty</source>
         <translation>标准不确定度</translation>
     </message>
@@ -3156,12 +3192,12 @@ File: %1</source>
     </message>
     <message>
         <location line="-17"/>
-        <location line="+380"/>
+        <location line="+389"/>
         <source>frequency (Hz)</source>
         <translation>频率 (Hz)</translation>
     </message>
     <message>
-        <location line="-379"/>
+        <location line="-388"/>
         <source>amplitude (°)</source>
         <translation>幅值 (°)</translation>
     </message>
@@ -3307,13 +3343,18 @@ File: %1</source>
         <translation>延迟预算：论文理论值与测量值对照</translation>
     </message>
     <message>
-        <location line="+7"/>
-        <location line="+50"/>
+        <location line="+12"/>
+        <location line="+54"/>
         <source>#%1: %2</source>
         <translation>#%1：%2</translation>
     </message>
     <message>
-        <location line="-46"/>
+        <location line="-53"/>
+        <source>#%1: refused (%2, %3)</source>
+        <translation>#%1：被拒绝（%2，%3）</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>stage</source>
         <translation>环节</translation>
     </message>
@@ -3964,46 +4005,42 @@ File: %1</source>
         <translation>无：纯延迟不改变幅值</translation>
     </message>
     <message>
-        <location line="+111"/>
+        <location filename="../../ui/verdict_text.cpp" line="+21"/>
         <source>NO VERDICT</source>
         <translation>无判定</translation>
     </message>
     <message>
-        <location line="+28"/>
-        <location line="+69"/>
+        <location filename="../../ui/report/calibration_report.cpp" line="+133"/>
         <source>PASS: every test point passed its validity checks and its IMU delay + 2σ is below the %1 ms limit.</source>
         <translation>合格：每个测试点都通过有效性检查，且其 IMU 延迟 + 2σ 低于 %1 ms 限值。</translation>
     </message>
     <message>
-        <location line="-64"/>
-        <location line="+76"/>
+        <location line="+12"/>
         <source>%1 of %2 test points failed a validity check</source>
         <translation>%2 个测试点中有 %1 个未通过有效性检查</translation>
     </message>
     <message>
-        <location line="-74"/>
+        <location line="+2"/>
         <source>no test point gave a delay</source>
         <translation>没有测试点给出延迟</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <location line="+72"/>
+        <location line="+3"/>
         <source>INVALID: the result cannot be vouched for: %1.</source>
         <translation>无效：结果无法保证：%1。</translation>
     </message>
     <message>
-        <location line="-70"/>
-        <location line="+63"/>
+        <location line="-12"/>
         <source>FAIL against the %1 ms limit: %2 of %3 test points exceed the limit.</source>
         <translation>对 %1 ms 限值不合格：%3 个测试点中有 %2 个超限。</translation>
     </message>
     <message>
-        <location line="-67"/>
+        <location line="+8"/>
         <source>%1 test point(s) gave no delay</source>
         <translation>%1 个测试点未得到延迟</translation>
     </message>
     <message>
-        <location line="-415"/>
+        <location line="-416"/>
         <source>table angle (encoder, %1 ms)</source>
         <translation>转台角度（编码器，%1 ms）</translation>
     </message>
@@ -4013,18 +4050,17 @@ File: %1</source>
         <translation>陀螺角度（增量累加，%1 ms）</translation>
     </message>
     <message>
-        <location line="+416"/>
+        <location line="+377"/>
         <source>INCOMPLETE (the run stopped early); its data give %1</source>
         <translation>不完整（运行提前停止）；其数据给出 %1</translation>
     </message>
     <message>
-        <location line="-52"/>
-        <location filename="../../ui/session_browser.cpp" line="+35"/>
+        <location filename="../../ui/verdict_text.cpp" line="-3"/>
         <source>INCOMPLETE</source>
         <translation>不完整</translation>
     </message>
     <message>
-        <location line="-165"/>
+        <location filename="../../ui/report/calibration_report.cpp" line="-178"/>
         <source>model (chosen)</source>
         <translation>模型（所选）</translation>
     </message>
@@ -4034,41 +4070,67 @@ File: %1</source>
         <translation>所选（AIC 最低；滤波器须达 3σ）</translation>
     </message>
     <message>
-        <location line="+114"/>
-        <location filename="../../ui/session_browser.cpp" line="-3"/>
+        <location filename="../../ui/verdict_text.cpp" line="-3"/>
         <source>PASS</source>
         <translation>通过</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../../ui/session_browser.cpp" line="+1"/>
         <source>FAIL</source>
         <translation>不通过</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../../ui/session_browser.cpp" line="+1"/>
         <source>INVALID</source>
         <translation>无效</translation>
     </message>
     <message>
-        <location line="+67"/>
-        <location line="+49"/>
+        <location line="+22"/>
+        <source>INVALID: %1</source>
+        <translation>无效：%1</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>a validity check failed</source>
+        <translation>一项有效性检查未通过</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>INCOMPLETE: the run stopped before its plan ended (its data give %1)</source>
+        <translation>不完整：运行在计划结束前停止（其数据给出 %1）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>NO VERDICT: %1</source>
+        <translation>无判定：%1</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>the stored result states none for this test point</source>
+        <translation>已保存的结果未给出此测试点的判定</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>refused (%1)</source>
+        <translation>被拒绝（%1）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>refused (%1, %2)</source>
+        <translation>被拒绝（%1，%2）</translation>
+    </message>
+    <message>
+        <location filename="../../ui/report/calibration_report.cpp" line="+161"/>
         <source>INCOMPLETE: the run stopped before its plan ended (%1); no calibration verdict. The data recorded give %2.</source>
         <translation>不完整：运行在计划结束前停止（%1）；没有校准判定。已记录的数据给出 %2。</translation>
     </message>
     <message>
-        <location line="-26"/>
-        <source>the stored result has no delay for this test point</source>
-        <translation>已保存的结果中没有此测试点的延迟</translation>
-    </message>
-    <message>
-        <location line="+30"/>
+        <location line="+5"/>
         <source>NO VERDICT: the stored result states none; re-analyse the session to store one.</source>
         <translation>无判定：已保存的结果未给出判定；请重新分析会话以保存判定。</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+21"/>
         <source>This version&apos;s analysis of the same data with the stored settings differs from the stored result (%1); the verdict is the stored one.</source>
         <translation>本版本用已保存的设置对同一数据的分析与已保存结果不同（%1）；判定以已保存的为准。</translation>
     </message>
@@ -4078,7 +4140,7 @@ File: %1</source>
         <translation>IMU 延迟标定报告：%1 %2</translation>
     </message>
     <message>
-        <location filename="../../ui/result_view.cpp" line="+67"/>
+        <location filename="../../ui/result_view.cpp" line="+69"/>
         <source>%1: %2 axis, %3 Hz / %4°</source>
         <translation>%1：%2 轴，%3 Hz / %4°</translation>
     </message>
@@ -4138,7 +4200,7 @@ File: %1</source>
         <translation>%1 轴，%2 Hz / %3°</translation>
     </message>
     <message>
-        <location filename="../../ui/session_browser.cpp" line="-4"/>
+        <location filename="../../ui/session_browser.cpp" line="+31"/>
         <source>; %1 damaged</source>
         <translation>；%1 个损坏</translation>
     </message>
@@ -4148,17 +4210,12 @@ File: %1</source>
         <translation>损坏（%2 个中的 %1 个）</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>stored</source>
-        <translation>已保存</translation>
-    </message>
-    <message>
         <location line="+1"/>
         <source>%1 (%2 of %3%4)</source>
         <translation>%1（%3 个中的第 %2 个%4）</translation>
     </message>
     <message>
-        <location filename="../../ui/data_export.cpp" line="+73"/>
+        <location filename="../../ui/data_export.cpp" line="+63"/>
         <source>Cannot create %1: %2. Nothing was written; choose another folder.</source>
         <translation>无法创建 %1：%2。未写入任何内容；请选择其他文件夹。</translation>
     </message>
@@ -4541,7 +4598,7 @@ The session itself is unchanged.</source>
         <translation>增益 %1</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+13"/>
         <source>measured lag (gyro behind table)</source>
         <translation>测得滞后（陀螺落后于转台）</translation>
     </message>
@@ -4596,32 +4653,17 @@ The session itself is unchanged.</source>
         <translation>敏感、闭环与脉冲更新</translation>
     </message>
     <message>
-        <location line="+46"/>
-        <source>INCOMPLETE</source>
-        <translation>不完整</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>no verdict stored</source>
-        <translation>未保存判定</translation>
-    </message>
-    <message>
-        <location line="+20"/>
-        <source>the stored result has no delay for this test point</source>
-        <translation>已保存的结果中没有此测试点的延迟</translation>
-    </message>
-    <message>
-        <location line="+2"/>
+        <location line="+51"/>
         <source>stored verdict</source>
         <translation>已保存的判定</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+0"/>
         <source>verdict, not stored</source>
         <translation>判定（未保存）</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+1"/>
         <source>Result: &lt;span style=&apos;color:%1&apos;&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/span&gt;</source>
         <translation>结果：&lt;span style=&apos;color:%1&apos;&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/span&gt;</translation>
     </message>
@@ -4636,7 +4678,7 @@ The session itself is unchanged.</source>
         <translation>  ·  %1（限值 %2 ms）</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>&lt;br&gt;Test point: &lt;span style=&apos;color:%1&apos;&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/span&gt; (its data give %3): %4</source>
         <translation>&lt;br&gt;测试点：&lt;span style=&apos;color:%1&apos;&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/span&gt;（其数据给出 %3）：%4</translation>
     </message>
@@ -4651,12 +4693,17 @@ The session itself is unchanged.</source>
         <translation>&lt;br&gt;&lt;span style=&apos;color:#a05000&apos;&gt;本版本用已保存的设置对同一数据的分析与已保存结果不同（%1）；显示的判定以已保存的为准。在“会话”中重新分析即可保存本版本的结果。&lt;/span&gt;</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+15"/>
         <source>&lt;b&gt;lag %1 ± %2 ms&lt;/b&gt;  ·  IMU delay %3 ms  ·  gyro&apos;s own delay %4 ms</source>
         <translation>&lt;b&gt;滞后 %1 ± %2 ms&lt;/b&gt;  ·  IMU 延迟 %3 ms  ·  陀螺自身延迟 %4 ms</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
+        <source>&lt;span style=&apos;color:%1&apos;&gt;&lt;b&gt;delay refused (%2)&lt;/b&gt;&lt;/span&gt;  ·  not vouched for: lag (%3 ms), IMU delay (%4 ms)</source>
+        <translation>&lt;span style=&apos;color:%1&apos;&gt;&lt;b&gt;延迟被拒绝（%2）&lt;/b&gt;&lt;/span&gt;  ·  不可担保：滞后（%3 ms），IMU 延迟（%4 ms）</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>  ·  simulator truth: lag %1 ms</source>
         <translation>  ·  仿真真值：滞后 %1 ms</translation>
     </message>
@@ -4666,27 +4713,12 @@ The session itself is unchanged.</source>
         <translation>  ·  &lt;span style=&apos;color:#b00000&apos;&gt;运行未完成&lt;/span&gt;</translation>
     </message>
     <message>
-        <location line="+185"/>
+        <location line="+200"/>
         <source>There is no delay result to export.</source>
         <translation>没有可导出的延迟结果。</translation>
     </message>
     <message>
-        <location line="-267"/>
-        <source>PASS</source>
-        <translation>通过</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>FAIL</source>
-        <translation>不通过</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>INVALID</source>
-        <translation>无效</translation>
-    </message>
-    <message>
-        <location line="+88"/>
+        <location line="-177"/>
         <location line="+8"/>
         <location line="+48"/>
         <source>table</source>
@@ -4762,7 +4794,7 @@ The session itself is unchanged.</source>
 <context>
     <name>fog::ui::SessionBrowser</name>
     <message>
-        <location filename="../../ui/session_browser.cpp" line="+20"/>
+        <location filename="../../ui/session_browser.cpp" line="+15"/>
         <source>Folder</source>
         <translation>文件夹</translation>
     </message>
@@ -6046,6 +6078,11 @@ The session itself is unchanged.</source>
         <location line="+1"/>
         <source>test point %1: the stored result has no delay for it; this version&apos;s analysis gives one</source>
         <translation>测试点 %1：已保存的结果中没有其延迟；本版本的分析给出了延迟</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the stored result has no delay for this test point</source>
+        <translation>已保存的结果没有此测试点的延迟</translation>
     </message>
     <message>
         <location line="+1"/>

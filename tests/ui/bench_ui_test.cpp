@@ -704,6 +704,10 @@ class BenchUiTest : public QObject {
     QVERIFY2(results->resultDescription().startsWith("result 2 of 2: INVALID") &&
                  results->resultDescription().contains("gyro sign −1 on X"),
              qPrintable(results->resultDescription()));
+    // The headline never shows the refused delay bare; the title names it all.
+    const QString headline = w->findChild<QLabel*>("lagLabel")->text();
+    QVERIFY2(headline.contains("delay refused (INVALID)") && !headline.contains("<b>lag"), qPrintable(headline));
+    QVERIFY2(w->windowTitle().startsWith("reversed.fbs, result 2 of 2: INVALID"), qPrintable(w->windowTitle()));
     // Re-analysed with exactly the stored settings (the gyro sign -1) for the
     // plots: it agrees with the record, so no note.
     QVERIFY(w->lastOutcome()->differences.empty());
@@ -749,6 +753,10 @@ class BenchUiTest : public QObject {
     for (int r = 0; r < table->rowCount(); ++r) shown[table->item(r, 0)->text()] = table->item(r, 6)->text();
     QCOMPARE(shown.value("reversed.fbs"), QString("INVALID (2 of 2)"));
     QCOMPARE(shown.value("stopped.fbs"), QString("INCOMPLETE (1 of 1)"));
+    // Their delays: refused, with the mark, never bare.
+    for (int r = 0; r < table->rowCount(); ++r)
+      for (int column : {7, 8})
+        QVERIFY2(table->item(r, column)->text().startsWith("refused ("), qPrintable(table->item(r, column)->text()));
 
     // Compare: each session's stored verdict.
     browser->table()->clearSelection();
@@ -766,7 +774,15 @@ class BenchUiTest : public QObject {
     QVERIFY2(rows.size() == 2 && rows[0].startsWith("INVALID (stored, limit 0.800 ms)") &&
                  rows[1].startsWith("INCOMPLETE (stored"),
              qPrintable(rows.join("\n")));
-    QVERIFY(compareView->differenceTable()->item(0, 1)->text().endsWith("INVALID"));
+    QVERIFY2(compareView->differenceTable()->item(0, 1)->text().startsWith("refused (") &&
+                 compareView->differenceTable()->item(0, 1)->text().endsWith("INVALID)"),
+             qPrintable(compareView->differenceTable()->item(0, 1)->text()));
+    // Neither delay is vouched for: no B − A, no "consistent".
+    QVERIFY2(compareView->differenceTable()->item(0, 6)->text().startsWith("not compared"),
+             qPrintable(compareView->differenceTable()->item(0, 6)->text()));
+    // Results still shows the stopped session, and the status bar and title say so.
+    QVERIFY2(w->windowTitle().startsWith("stopped.fbs"), qPrintable(w->windowTitle()));
+    QVERIFY2(w->statusBar()->currentMessage().startsWith("stopped.fbs"), qPrintable(w->statusBar()->currentMessage()));
     w->findChild<QWidget*>("compareWindow")->close();
 
     // A record this version's analysis does not reproduce (its IMU delay
@@ -2082,12 +2098,16 @@ class BenchUiTest : public QObject {
     QStringList rows;
     for (const QString& line : QString::fromUtf8(file.readAll()).split('\n', Qt::SkipEmptyParts))
       if (!line.startsWith('#')) rows << line;
-    QCOMPARE(rows.front(), QString("test_point,axis,frequency_hz,quantity,value_ms,std_ms"));
+    QCOMPARE(rows.front(), QString("test_point,axis,frequency_hz,quantity,value_ms,std_ms,verdict,vouched,reason"));
     QCOMPARE(rows.size(), 1 + 5 * 2);
     int imuRows = 0;
     for (const QString& row : rows.mid(1)) {
       const QStringList f = row.split(',');
-      QCOMPARE(f.size(), 6);
+      QCOMPARE(f.size(), 9);
+      // Every row carries its point's shown (stored) verdict.
+      QCOMPARE(f[6], QString("pass"));
+      QCOMPARE(f[7], QString("true"));
+      QVERIFY2(f[8].startsWith("IMU delay "), qPrintable(row));
       const int index = f[0].toInt() - 1;
       QVERIFY(index >= 0 && index < 2);
       const auto& p = report.points[static_cast<std::size_t>(index)];

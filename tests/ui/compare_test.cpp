@@ -12,6 +12,7 @@
 #include <memory>
 #include <qwt_plot.h>
 #include <qwt_plot_curve.h>
+#include <qwt_symbol.h>
 #include <qwt_text.h>
 
 #include "ui/compare_view.h"
@@ -57,6 +58,16 @@ DelayReport reportB(double tableMs) {
                                 point(2, Axis::kX, 0.1, 9.99990, 0.4710, 0.0024, tableMs, 0.01)});
 }
 
+// A result not stored, judged against 0.8 ms as a run's would be.
+fog::session::ShownVerdict judged(const DelayReport& r) { return fog::session::judgeShown(nullptr, &r, true, {}, 0.8); }
+
+// B with its 0.1 Hz point refused: a validity check failed.
+DelayReport reportBRefused() {
+  DelayReport b = reportB(0.05);
+  b.points[2].checks.push_back({"axis_sign", false, "the gyro turns against the table"});
+  return b;
+}
+
 }  // namespace
 
 class CompareTest : public QObject {
@@ -64,7 +75,7 @@ class CompareTest : public QObject {
 
  private slots:
   void differencesWithTheirCombinedSigma() {
-    const auto rows = fog::ui::compareReports(reportA(), reportB(0.05));
+    const auto rows = fog::ui::compareReports(reportA(), judged(reportA()), reportB(0.05), judged(reportB(0.05)));
     QCOMPARE(rows.size(), std::size_t(3));
     // 0.1 Hz: d = 0.5210 − 0.5180 = 0.0030; same table constant, so
     // σ = √(0.0018² + 0.0024²) = 0.0030; |d|/σ = 1.0: consistent.
@@ -90,7 +101,7 @@ class CompareTest : public QObject {
   void otherTableConstantsCombineTheImuDelays() {
     // B's table read delay 0.06 ms: d = (0.4710 + 0.06) − (0.4680 + 0.05) =
     // 0.0130; σ = √(0.0018² + 0.01² + 0.0024² + 0.01²) = 0.014457.
-    const auto rows = fog::ui::compareReports(reportA(), reportB(0.06));
+    const auto rows = fog::ui::compareReports(reportA(), judged(reportA()), reportB(0.06), judged(reportB(0.06)));
     QVERIFY(!rows[0].commonTableConstant);
     QVERIFY(std::abs(rows[0].differenceMs - 0.0130) < 1e-12);
     QVERIFY(std::abs(rows[0].differenceStdMs - 0.014457) < 1e-6);
@@ -140,6 +151,76 @@ class CompareTest : public QObject {
     }
     QCOMPARE(curves, 3);  // X 0.1 Hz, X 1 Hz, Y 1 Hz
     QVERIFY(view.trendPlot()->title().text().contains("FOG-3 SN7"));
+  }
+
+  // A refused delay (INVALID) is never subtracted: no B − A, no
+  // "consistent", the row and the CSV say why; the trend marks it apart.
+  void aRefusedDelayIsNotCompared() {
+    const DelayReport b = reportBRefused();
+    const auto rows = fog::ui::compareReports(reportA(), judged(reportA()), b, judged(b));
+    QVERIFY(rows[0].both());
+    QVERIFY(!rows[0].comparable());
+    QVERIFY(!rows[0].significant());
+    QCOMPARE(rows[0].differenceMs, 0.0);
+    QVERIFY(rows[1].comparable());
+
+    fog::ui::CompareView view({"/x/a.fbs", "/x/b.fbs"});
+    view.resize(1000, 700);
+    auto outcome = [](DelayReport r, const char* when) {
+      auto o = std::make_shared<fog::ui::RunOutcome>();
+      o->info.createdUtc = when;
+      o->report = std::move(r);
+      return std::shared_ptr<const fog::ui::RunOutcome>(o);
+    };
+    view.setOutcome(0, outcome(reportA(), "2026-11-22T10:00:00Z"));
+    view.setOutcome(1, outcome(b, "2026-11-23T10:00:00Z"));
+    auto* table = view.differenceTable();
+    QVERIFY(table->item(0, 3) == nullptr || table->item(0, 3)->text().isEmpty());
+    QVERIFY2(table->item(0, 6)->text().contains("not compared: B's delay is refused (INVALID"),
+             qPrintable(table->item(0, 6)->text()));
+    QVERIFY(!table->item(0, 6)->text().contains("consistent"));
+    QVERIFY2(table->item(0, 2)->text().startsWith("refused ("), qPrintable(table->item(0, 2)->text()));
+    QVERIFY2(view.summary().contains("1 test point(s) in both are not compared"), qPrintable(view.summary()));
+    // The trend: the refused delay is a cross in a series of its own, not joined.
+    int refusedCurves = 0;
+    for (const auto* item : view.trendPlot()->itemList(QwtPlotItem::Rtti_PlotCurve)) {
+      const auto* curve = static_cast<const QwtPlotCurve*>(item);
+      if (!curve->title().text().contains("refused")) continue;
+      ++refusedCurves;
+      QCOMPARE(curve->style(), QwtPlotCurve::NoCurve);
+      QCOMPARE(curve->symbol()->style(), QwtSymbol::XCross);
+      QCOMPARE(curve->dataSize(), std::size_t(1));
+    }
+    QCOMPARE(refusedCurves, 1);
+    // The CSV: verdict columns, no difference, the reason.
+    QTemporaryDir dir;
+    const QString path = dir.filePath("c.csv");
+    QVERIFY(view.exportTo(path).isEmpty());
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QStringList lines = QString::fromUtf8(file.readAll()).split('\n', Qt::SkipEmptyParts);
+    QStringList rowsText;
+    for (const QString& l : lines)
+      if (!l.startsWith('#')) rowsText << l;
+    QVERIFY(rowsText.front().contains("a_verdict") && rowsText.front().contains("b_verdict"));
+    QVERIFY2(rowsText[1].contains(",pass,") && rowsText[1].contains(",invalid,,,,") &&
+                 rowsText[1].contains("not compared: B's delay is refused"),
+             qPrintable(rowsText[1]));
+  }
+
+  // Two sessions with no test point in common: nothing is said of table
+  // read delays (both 0.05 ms here).
+  void noPointInCommonSaysNothingOfTheConstants() {
+    fog::ui::CompareView view({"/x/a.fbs", "/x/b.fbs"});
+    auto outcome = [](DelayReport r) {
+      auto o = std::make_shared<fog::ui::RunOutcome>();
+      o->report = std::move(r);
+      return std::shared_ptr<const fog::ui::RunOutcome>(o);
+    };
+    view.setOutcome(0, outcome(report(0.05, 0.01, {point(0, Axis::kZ, 2.0, 1.0, 0.47, 0.001, 0.05, 0.01)})));
+    view.setOutcome(1, outcome(reportB(0.05)));
+    QVERIFY2(view.summary().contains("0 test point(s) compared"), qPrintable(view.summary()));
+    QVERIFY2(!view.summary().contains("table read delays differ"), qPrintable(view.summary()));
   }
 
   // The comparison's rows as CSV, read back: A's and B's IMU delays and

@@ -18,6 +18,7 @@
 #include "core/common/version.h"
 #include "core/noise/gyro_noise.h"
 #include "ui/core_text.h"
+#include "ui/verdict_text.h"
 #include "ui/plot_data/allan_curves.h"
 #include "ui/plot_data/bode_curves.h"
 #include "ui/report/page_flow.h"
@@ -329,7 +330,7 @@ void firstPage(PageFlow& flow, const Content& c) {
           {QObject::tr("Raw data SHA-256"), c.hash.isEmpty() ? QObject::tr("none: no raw stream (imported)") : c.hash},
           {QObject::tr("Notes"), info.notes.empty() ? QObject::tr("none") : QString::fromStdString(info.notes)},
       },
-      38.0);
+      38.0, {9});  // the SHA-256 in a monospace face, to be copied and checked
 
   flow.heading(QObject::tr("Results"));
   Table t;
@@ -376,6 +377,80 @@ void firstPage(PageFlow& flow, const Content& c) {
 
   flow.heading(QObject::tr("Sign-off"));
   signatureBlock(flow);
+}
+
+// The paper's theoretical delay budget beside the measured delays (each
+// marked refused where the verdict does not vouch for it); not for an
+// imported recording, made on another bench.
+void budgetSection(PageFlow& flow, const Content& c, bool imported) {
+  const auto& d = c.in.delays;
+  const auto& k = d.constants;
+  if (imported) {
+    // The paper's budget describes its FOG and board; an imported recording's
+    // IMU and bench are other ones, so the budget is not set beside it.
+    flow.heading(QObject::tr("Delay budget"));
+    flow.paragraph(QObject::tr("Not shown: the paper's theoretical budget describes its own gyro and processing "
+                               "board, and this recording was made on another bench (imported)."),
+                   PageFlow::font(8.5), kMuted);
+  } else {
+    flow.heading(QObject::tr("Delay budget: the paper's theory beside the measurement"));
+    const analysis::TheoryInputs theoryIn;
+    const auto budget = analysis::delayBudget(theoryIn);
+    auto range = [](double lo, double hi) { return lo == hi ? fixed(lo, 4) : fixed(lo, 4) + " – " + fixed(hi, 4); };
+    // A delay the verdict does not vouch for keeps its mark here too.
+    auto measured = [&](auto value, auto sd) {
+      QStringList s;
+      for (const auto& p : d.points) {
+        const auto pv = std::find_if(c.verdict.points.begin(), c.verdict.points.end(),
+                                     [&](const PointVerdict& x) { return x.index == p.index; });
+        const QString number = valueWithStd(value(p), sd(p), decimalsFor(sd(p)));
+        s << (pv != c.verdict.points.end() && pv->vouched
+                  ? QObject::tr("#%1: %2").arg(p.index + 1).arg(number)
+                  : QObject::tr("#%1: refused (%2, %3)")
+                        .arg(p.index + 1)
+                        .arg(number, pv != c.verdict.points.end() ? pv->word : ui::verdictWord(session::ShownVerdictKind::kNone)));
+      }
+      return s.join("\n");
+    };
+    Table theory;
+    theory.columns = {{QObject::tr("stage"), 50, Qt::AlignLeft},
+                      {QObject::tr("theory (ms)"), 30, Qt::AlignRight},
+                      {QObject::tr("basis"), 48, Qt::AlignLeft},
+                      {QObject::tr("measured (ms)"), 46, Qt::AlignRight}};
+    double gyroMin = 0.0, gyroMax = 0.0;
+    for (const auto& l : budget.lines) {
+      theory.rows.push_back({coreText(l.stage), range(l.minMs, l.maxMs), coreText(l.basis), ""});
+      theory.boldRows.push_back(false);
+      if (l.stage.rfind("board:", 0) != 0) {
+        gyroMin += l.minMs;
+        gyroMax += l.maxMs;
+      }
+    }
+    theory.rows.push_back({QObject::tr("gyro's own delay"), range(gyroMin, gyroMax),
+                           QObject::tr("sensing, loop and pulse update"),
+                           measured([](const TestPointResult& p) { return p.gyroDelayMs; },
+                                    [](const TestPointResult& p) { return p.gyroDelayStdMs; })});
+    theory.rows.push_back({QObject::tr("processing board"), range(budget.totalMinMs - gyroMin, budget.boardMaxMs),
+                           QObject::tr("sampling, compensation, serial"),
+                           QObject::tr("%1 (bench constant)").arg(fixed(k.boardDelayMs, 4))});
+    theory.rows.push_back({QObject::tr("IMU delay (total)"), range(budget.totalMinMs, budget.totalMaxMs),
+                           QObject::tr("the paper: < 0.8 ms"),
+                           measured([](const TestPointResult& p) { return p.imuDelayMs; },
+                                    [](const TestPointResult& p) { return p.imuDelayStdMs; })});
+    theory.boldRows.insert(theory.boldRows.end(), {true, true, true});
+    flow.table(theory);
+    flow.paragraph(QObject::tr("Theory with the paper's figures: %1 m of fibre (eigen period %2 µs), loop delay ≤ %3 "
+                               "eigen periods, pulse output updated every %4 ms, %5 MHz board clock, %6-byte frames at "
+                               "%7 Mbaud.")
+                       .arg(theoryIn.fibreLengthM)
+                       .arg(fixed(budget.eigenPeriodUs, 2))
+                       .arg(theoryIn.loopDelayEigenPeriods)
+                       .arg(theoryIn.pulseUpdatePeriodS * 1e3)
+                       .arg(theoryIn.boardClockHz / 1e6)
+                       .arg(theoryIn.frameBytes)
+                       .arg(theoryIn.baud / 1e6),
+                   PageFlow::font(7.5), kMuted);
+  }
 }
 
 void constantsAndPlanPage(PageFlow& flow, const Content& c) {
@@ -461,63 +536,7 @@ void constantsAndPlanPage(PageFlow& flow, const Content& c) {
                  {QObject::tr("counter wraps"), n(h.counterWraps), QObject::tr("bytes skipped"), n(h.bytesSkipped)}};
   flow.table(health);
 
-  if (imported) {
-    // The paper's budget describes its FOG and board; an imported recording's
-    // IMU and bench are other ones, so the budget is not set beside it.
-    flow.heading(QObject::tr("Delay budget"));
-    flow.paragraph(QObject::tr("Not shown: the paper's theoretical budget describes its own gyro and processing "
-                               "board, and this recording was made on another bench (imported)."),
-                   PageFlow::font(8.5), kMuted);
-  } else {
-    flow.heading(QObject::tr("Delay budget: the paper's theory beside the measurement"));
-    const analysis::TheoryInputs theoryIn;
-    const auto budget = analysis::delayBudget(theoryIn);
-    auto range = [](double lo, double hi) { return lo == hi ? fixed(lo, 4) : fixed(lo, 4) + " – " + fixed(hi, 4); };
-    auto measured = [&](auto value, auto sd) {
-      QStringList s;
-      for (const auto& p : d.points)
-        s << QObject::tr("#%1: %2").arg(p.index + 1).arg(valueWithStd(value(p), sd(p), decimalsFor(sd(p))));
-      return s.join("\n");
-    };
-    Table theory;
-    theory.columns = {{QObject::tr("stage"), 50, Qt::AlignLeft},
-                      {QObject::tr("theory (ms)"), 30, Qt::AlignRight},
-                      {QObject::tr("basis"), 48, Qt::AlignLeft},
-                      {QObject::tr("measured (ms)"), 46, Qt::AlignRight}};
-    double gyroMin = 0.0, gyroMax = 0.0;
-    for (const auto& l : budget.lines) {
-      theory.rows.push_back({coreText(l.stage), range(l.minMs, l.maxMs), coreText(l.basis), ""});
-      theory.boldRows.push_back(false);
-      if (l.stage.rfind("board:", 0) != 0) {
-        gyroMin += l.minMs;
-        gyroMax += l.maxMs;
-      }
-    }
-    theory.rows.push_back({QObject::tr("gyro's own delay"), range(gyroMin, gyroMax),
-                           QObject::tr("sensing, loop and pulse update"),
-                           measured([](const TestPointResult& p) { return p.gyroDelayMs; },
-                                    [](const TestPointResult& p) { return p.gyroDelayStdMs; })});
-    theory.rows.push_back({QObject::tr("processing board"), range(budget.totalMinMs - gyroMin, budget.boardMaxMs),
-                           QObject::tr("sampling, compensation, serial"),
-                           QObject::tr("%1 (bench constant)").arg(fixed(k.boardDelayMs, 4))});
-    theory.rows.push_back({QObject::tr("IMU delay (total)"), range(budget.totalMinMs, budget.totalMaxMs),
-                           QObject::tr("the paper: < 0.8 ms"),
-                           measured([](const TestPointResult& p) { return p.imuDelayMs; },
-                                    [](const TestPointResult& p) { return p.imuDelayStdMs; })});
-    theory.boldRows.insert(theory.boldRows.end(), {true, true, true});
-    flow.table(theory);
-    flow.paragraph(QObject::tr("Theory with the paper's figures: %1 m of fibre (eigen period %2 µs), loop delay ≤ %3 "
-                               "eigen periods, pulse output updated every %4 ms, %5 MHz board clock, %6-byte frames at "
-                               "%7 Mbaud.")
-                       .arg(theoryIn.fibreLengthM)
-                       .arg(fixed(budget.eigenPeriodUs, 2))
-                       .arg(theoryIn.loopDelayEigenPeriods)
-                       .arg(theoryIn.pulseUpdatePeriodS * 1e3)
-                       .arg(theoryIn.boardClockHz / 1e6)
-                       .arg(theoryIn.frameBytes)
-                       .arg(theoryIn.baud / 1e6),
-                   PageFlow::font(7.5), kMuted);
-  }
+  budgetSection(flow, c, imported);
 
   Table resolution;
   resolution.columns = {{QObject::tr("test point"), 64, Qt::AlignLeft},
@@ -950,134 +969,79 @@ QString rawDataSha256(const std::vector<std::uint8_t>& bytes) {
 }
 
 namespace {
-// The verdict's word on the page, in the report's language (the JSON and
-// the session keep the rule's English name).
-QString verdictWordText(const std::string& verdict) {
-  if (verdict == "pass") return QObject::tr("PASS");
-  if (verdict == "fail") return QObject::tr("FAIL");
-  if (verdict == "invalid") return QObject::tr("INVALID");
-  if (verdict == "incomplete") return QObject::tr("INCOMPLETE");
-  if (verdict.empty()) return QObject::tr("NO VERDICT");
-  return QString::fromStdString(verdict).toUpper();
-}
 
-QString verdictWord(analysis::Verdict v) { return verdictWordText(analysis::verdictName(v)); }
-}  // namespace
-
-Verdict calibrationVerdict(const DelayReport& delays, double limitMs) {
-  const analysis::ReportVerdict judged = analysis::judgeReport(delays, limitMs);
+// The verdict of the page: core's shown verdict (session::judgeShown) in the
+// report's words. Nothing is judged here.
+Verdict formatVerdict(const session::ShownVerdict& shown, const DelayReport& delays) {
+  using K = session::ShownVerdictKind;
   Verdict v;
-  v.pass = judged.verdict == analysis::Verdict::kPass;
-  v.word = verdictWord(judged.verdict);
+  v.pass = shown.verdict == K::kPass;
+  v.word = ui::verdictWord(shown.verdict);
   int failed = 0, invalid = 0;
-  for (const auto& p : judged.points) {
+  for (const auto& p : shown.points) {
     PointVerdict pv;
     pv.index = p.index;
-    pv.pass = p.verdict == analysis::Verdict::kPass;
-    pv.word = verdictWord(p.verdict);
+    pv.pass = p.verdict == K::kPass;
+    pv.vouched = p.vouched();
+    pv.word = ui::verdictWord(p.verdict);
     QStringList why;
-    for (const auto& r : p.reasons) why << coreText(r);
-    pv.line = pv.word + ": " + why.join("; ");
-    failed += p.verdict == analysis::Verdict::kFail;
-    invalid += p.verdict == analysis::Verdict::kInvalid;
+    for (const auto& reason : p.reasons) why << coreText(reason);
+    pv.line = ui::verdictWord(p.dataVerdict) + ": " + why.join("; ");
+    if (p.verdict == K::kIncomplete)
+      pv.line = QObject::tr("INCOMPLETE (the run stopped early); its data give %1").arg(pv.line);
+    failed += p.dataVerdict == K::kFail;
+    invalid += p.dataVerdict == K::kInvalid;
     v.points.push_back(pv);
   }
+  const auto total = static_cast<int>(shown.points.size());
   const auto missing = static_cast<int>(delays.failedPoints.size());
-  const auto total = static_cast<int>(delays.points.size());
-  if (v.pass) {
-    v.headline = QObject::tr("PASS: every test point passed its validity checks and its IMU delay + 2σ is below the "
-                             "%1 ms limit.")
-                     .arg(limitText(limitMs));
-  } else if (judged.verdict == analysis::Verdict::kInvalid) {
-    QStringList why;
-    if (invalid > 0) why << QObject::tr("%1 of %2 test points failed a validity check").arg(invalid).arg(total);
-    if (missing > 0) why << QObject::tr("%1 test point(s) gave no delay").arg(missing);
-    if (total == 0) why << QObject::tr("no test point gave a delay");
-    v.headline = QObject::tr("INVALID: the result cannot be vouched for: %1.").arg(why.join("; "));
-  } else {
-    v.headline = QObject::tr("FAIL against the %1 ms limit: %2 of %3 test points exceed the limit.")
-                     .arg(limitText(limitMs))
-                     .arg(failed)
-                     .arg(total);
+  const QString limit = limitText(shown.limitMs);
+  switch (shown.verdict) {
+    case K::kPass:
+      v.headline = QObject::tr("PASS: every test point passed its validity checks and its IMU delay + 2σ is below "
+                               "the %1 ms limit.")
+                       .arg(limit);
+      break;
+    case K::kFail:
+      v.headline = QObject::tr("FAIL against the %1 ms limit: %2 of %3 test points exceed the limit.")
+                       .arg(limit)
+                       .arg(failed)
+                       .arg(total);
+      break;
+    case K::kInvalid: {
+      QStringList why;
+      if (invalid > 0) why << QObject::tr("%1 of %2 test points failed a validity check").arg(invalid).arg(total);
+      if (missing > 0) why << QObject::tr("%1 test point(s) gave no delay").arg(missing);
+      if (total == 0) why << QObject::tr("no test point gave a delay");
+      if (why.isEmpty())
+        for (const auto& reason : shown.reasons) why << coreText(reason);
+      v.headline = QObject::tr("INVALID: the result cannot be vouched for: %1.").arg(why.join("; "));
+      break;
+    }
+    case K::kIncomplete:
+      v.headline = QObject::tr("INCOMPLETE: the run stopped before its plan ended (%1); no calibration verdict. The "
+                               "data recorded give %2.")
+                       .arg(coreText(shown.incompleteReason), ui::verdictWord(shown.dataVerdict));
+      break;
+    case K::kNone:
+      v.headline = QObject::tr("NO VERDICT: the stored result states none; re-analyse the session to store one.");
+      break;
   }
   return v;
 }
 
-namespace {
-// A test point of an incomplete run has no verdict of its own: INCOMPLETE,
-// with what its data give.
-void markIncomplete(PointVerdict& p) {
-  p.pass = false;
-  p.line = QObject::tr("INCOMPLETE (the run stopped early); its data give %1").arg(p.line);
-  p.word = verdictWordText("incomplete");
-}
 }  // namespace
 
+Verdict calibrationVerdict(const DelayReport& delays, double limitMs) {
+  return formatVerdict(session::judgeShown(nullptr, &delays, true, {}, limitMs), delays);
+}
+
 Verdict calibrationVerdict(const ReportInput& in) {
-  const auto word = verdictWordText;
-  if (!in.stored) {
-    Verdict v = calibrationVerdict(in.delays, in.imuDelayLimitMs);
-    if (in.incompleteReason.empty()) return v;
-    const QString data = v.word;
-    v.pass = false;
-    v.word = word("incomplete");
-    for (auto& p : v.points) markIncomplete(p);
-    v.headline = QObject::tr("INCOMPLETE: the run stopped before its plan ended (%1); no calibration verdict. The "
-                             "data recorded give %2.")
-                     .arg(coreText(in.incompleteReason), data);
-    return v;
-  }
-  // The record, as stored.
-  const session::StoredResultRecord& r = *in.stored;
-  Verdict v;
-  v.pass = r.verdict == "pass";
-  v.word = word(r.verdict);
-  int failed = 0, invalid = 0;
-  for (const auto& p : in.delays.points) {
-    PointVerdict pv;
-    pv.index = p.index;
-    QStringList why;
-    if (const auto* sp = r.point(p.index)) {
-      pv.pass = sp->verdict == "pass";
-      pv.word = word(sp->verdict);
-      for (const auto& reason : sp->reasons) why << coreText(reason);
-      failed += sp->verdict == "fail";
-      invalid += sp->verdict == "invalid";
-    } else {
-      pv.word = word("");
-      why << QObject::tr("the stored result has no delay for this test point");
-    }
-    pv.line = pv.word + ": " + why.join("; ");
-    if (r.verdict == "incomplete") markIncomplete(pv);
-    v.points.push_back(pv);
-  }
-  const auto total = static_cast<int>(r.points.size());
-  const QString limit = limitText(r.imuDelayLimitMs);
-  if (r.verdict == "pass") {
-    v.headline = QObject::tr("PASS: every test point passed its validity checks and its IMU delay + 2σ is below the "
-                             "%1 ms limit.")
-                     .arg(limit);
-  } else if (r.verdict == "fail") {
-    v.headline = QObject::tr("FAIL against the %1 ms limit: %2 of %3 test points exceed the limit.")
-                     .arg(limit)
-                     .arg(failed)
-                     .arg(total);
-  } else if (r.verdict == "invalid") {
-    QStringList why;
-    for (const auto& reason : r.verdictReasons) why << coreText(reason);
-    v.headline = QObject::tr("INVALID: the result cannot be vouched for: %1.")
-                     .arg(why.isEmpty() ? QObject::tr("%1 of %2 test points failed a validity check")
-                                              .arg(invalid)
-                                              .arg(total)
-                                        : why.join("; "));
-  } else if (r.verdict == "incomplete") {
-    v.headline = QObject::tr("INCOMPLETE: the run stopped before its plan ended (%1); no calibration verdict. The "
-                             "data recorded give %2.")
-                     .arg(coreText(r.incompleteReason), word(r.dataVerdict));
-  } else {
-    v.headline = QObject::tr("NO VERDICT: the stored result states none; re-analyse the session to store one.");
-  }
-  const auto differences = session::differencesFromRecord(r, in.delays);
+  Verdict v = formatVerdict(session::judgeShown(in.stored ? &*in.stored : nullptr, &in.delays,
+                                                in.incompleteReason.empty(), in.incompleteReason, in.imuDelayLimitMs),
+                            in.delays);
+  if (!in.stored) return v;
+  const auto differences = session::differencesFromRecord(*in.stored, in.delays);
   if (!differences.empty()) {
     QStringList d;
     for (const auto& s : differences) d << coreText(s);

@@ -85,7 +85,8 @@ QString rawDataSha256(const std::vector<std::uint8_t>& bytes);
 struct PointVerdict {
   int index = 0;  // test point index (0-based)
   bool pass = false;
-  QString word;  // "PASS", "FAIL" or "INVALID"
+  bool vouched = false;  // its delay may be printed bare (PASS or FAIL)
+  QString word;  // "PASS", "FAIL", "INVALID", "INCOMPLETE" or "NO VERDICT"
   QString line;
 };
 struct Verdict {
