@@ -190,6 +190,217 @@ Result<Options> readOptions(app::CliArguments& args) {
   return o;
 }
 
+// --wrap-after-s: the board counter starts that long before it wraps.
+void startCounterBeforeWrap(model::SimConfig& config, double wrapAfterS) {
+  if (wrapAfterS < 0.0) return;
+  const double span = std::ldexp(1.0, config.samplingBoard.counterBits);
+  const double ticks = std::fmod(std::round(wrapAfterS * config.samplingBoard.counterHz), span);
+  config.samplingBoard.counterStart = static_cast<std::uint32_t>(std::fmod(span - ticks, span));
+}
+
+// The port the board writes to, and the line its host has set.
+struct Port {
+  int fd = -1;
+  HostLine host;
+};
+
+// "truth: ..." a test point: what the chain really does, for tests to check.
+void sayTruth(const model::Simulator& sim) {
+  for (const auto& t : sim.truth())
+    say("truth: point " + std::to_string(t.index + 1) + " axis " + axisName(t.axis) + " frequency_hz " +
+        fmt("%.9f", t.frequencyHz) + " amplitude_deg " + fmt("%.6f", t.amplitudeDeg) + " lag_ms " +
+        fmt("%.6f", t.lagS * 1e3) + " imu_delay_ms " + fmt("%.6f", t.imuDelayS * 1e3) + " gyro_delay_ms " +
+        fmt("%.6f", t.gyroDelayS * 1e3));
+}
+
+// A new pseudo-terminal, once a host has opened its slave and set its line.
+Result<Port> openPtyForHost(const Options& o, termios board, const model::Simulator& sim) {
+  int fd = -1, slave = -1;
+  char name[256] = {};
+  // A sentinel rate on the slave tells when the host has configured it.
+  cfsetspeed(&board, B50);
+  if (::openpty(&fd, &slave, name, &board, nullptr) != 0)
+    return ioError(std::string("cannot create a pseudo-terminal: ") + std::strerror(errno));
+  ::close(slave);
+  ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) | O_NONBLOCK);
+  ::fcntl(fd, F_SETFD, FD_CLOEXEC);
+  say(std::string("pty: ") + name);
+  sayTruth(sim);
+  // Wait for the host: the master reports a hang-up while no slave is open.
+  const auto giveUp = Clock::now() + std::chrono::duration<double>(o.waitOpenS);
+  for (;;) {
+    pollfd p{fd, POLLOUT, 0};
+    ::poll(&p, 1, 0);
+    if (!(p.revents & POLLHUP)) break;
+    if (Clock::now() > giveUp)
+      return ioError("no host opened " + std::string(name) + " within " + fmt("%g", o.waitOpenS) + " s");
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  // ... and for it to set its line (the serial source does so while opening). On
+  // Linux a pty master's tcgetattr reports the slave's settings.
+  termios t{};
+  const auto configured = Clock::now() + std::chrono::seconds(2);
+  while (::tcgetattr(fd, &t) == 0 && cfgetospeed(&t) == B50 && Clock::now() < configured)
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  HostLine host{o.baud, 8, 0};
+  if (cfgetospeed(&t) != B50) host = hostLineOf(t);
+  say("host: opened at " + std::to_string(host.baud) + " " + std::to_string(host.dataBits) +
+      (host.parity == 0 ? "N" : host.parity == 1 ? "E" : "O") + "1 (board " + std::to_string(o.baud) + " 8N1)");
+  return Port{fd, host};
+}
+
+// --device: the serial device, set to the board's line.
+Result<Port> openDevice(const Options& o, termios board) {
+  const int fd = ::open(o.device.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) return ioError("cannot open " + o.device + ": " + std::strerror(errno));
+  cfsetspeed(&board, codeOf(o.baud));
+  if (::tcsetattr(fd, TCSANOW, &board) != 0)
+    return ioError("cannot set " + o.device + " to " + std::to_string(o.baud) + " 8N1: " + std::strerror(errno));
+  say("device: " + o.device + " at " + std::to_string(o.baud) + " 8N1");
+  return Port{fd, {o.baud, 8, 0}};
+}
+
+// The port: a new pseudo-terminal (the host opens its slave) or a device.
+Result<Port> openPort(const Options& o, const model::Simulator& sim) {
+  termios board{};
+  cfmakeraw(&board);
+  board.c_cflag |= CLOCAL | CREAD;
+  return o.device.empty() ? openPtyForHost(o, board, sim) : openDevice(o, board);
+}
+
+// The board on its port: streams the plan with the faults asked for, says
+// "done: ..." and, on a pty, lingers until the host lets go.
+class Board {
+ public:
+  Board(const Options& o, model::Simulator& sim, Port port, std::ofstream raw)
+      : o_(o), sim_(sim), fd_(port.fd), host_(port.host), raw_(std::move(raw)), faults_(o.faults) {}
+
+  void run() {
+    stream();
+    raw_.flush();
+    report();
+    if (fd_ >= 0 && o_.device.empty()) linger();
+    if (fd_ >= 0) ::close(fd_);
+  }
+
+ private:
+  void stream();
+  bool send();
+  void readHostCommands();
+  void report() const;
+  void linger();
+
+  const Options& o_;
+  model::Simulator& sim_;
+  int fd_;
+  HostLine host_;
+  std::ofstream raw_;
+  app::BoardFaults faults_;
+  // The host-to-board direction (docs/protocol.md): commands read from the
+  // port, applied to the clean stream before the faults.
+  app::BoardHostControl hostControl_;
+  protocol::HostCommandDecoder commandDecoder_;
+  std::vector<protocol::HostCommand> commands_;
+  std::vector<std::uint8_t> clean_, configured_, damaged_;
+  std::uint64_t sent_ = 0;
+  bool hostGone_ = false;
+};
+
+// Until the plan ends, the host closes the port or --disconnect-at-s.
+void Board::stream() {
+  const auto start = Clock::now();
+  Clock::duration paused{};
+  bool stalled = false, more = true;
+  constexpr double kStepS = 0.005;
+  while (more) {
+    // Stream time released so far; the next event (stall, disconnect) caps it.
+    const double wallS = std::chrono::duration<double>(Clock::now() - start - paused).count();
+    double until = o_.speed > 0.0 ? wallS * o_.speed : sim_.timeS() + 0.05;
+    const bool stallDue = !stalled && o_.stallAtS >= 0.0 && until >= o_.stallAtS;
+    const bool disconnectDue = o_.disconnectAtS >= 0.0 && until >= o_.disconnectAtS;
+    if (stallDue) until = o_.stallAtS;
+    if (disconnectDue) until = std::min(until, o_.disconnectAtS);
+    // What the host sent (a board that only streams would ignore it).
+    readHostCommands();
+    clean_.clear();
+    configured_.clear();
+    damaged_.clear();
+    more = sim_.advance(until, clean_);
+    hostControl_.process(clean_, configured_);
+    faults_.apply(configured_, sim_.timeS(), damaged_);
+    if (!damaged_.empty() && !send()) {
+      hostGone_ = true;
+      break;
+    }
+    if (disconnectDue) {
+      raw_.flush();
+      ::close(fd_);
+      fd_ = -1;
+      say("disconnect: closed the port at stream time " + fmt("%.3f", o_.disconnectAtS) + " s after " +
+          std::to_string(sent_) + " bytes");
+      break;
+    }
+    if (stallDue) {
+      stalled = true;
+      raw_.flush();
+      say("stall: nothing sent for " + fmt("%.1f", o_.stallS) + " s from stream time " + fmt("%.3f", o_.stallAtS) +
+          " s");
+      const auto pauseStart = Clock::now();
+      std::this_thread::sleep_for(std::chrono::duration<double>(o_.stallS));
+      paused += Clock::now() - pauseStart;
+      say("stall: sending again");
+      continue;
+    }
+    if (o_.speed > 0.0) std::this_thread::sleep_for(std::chrono::duration<double>(kStepS / std::max(o_.speed, 1.0)));
+  }
+}
+
+// The damaged bytes as the host's line receives them; false when the host
+// has closed the port (or it failed).
+bool Board::send() {
+  // The line as the host has it set now (it may change it at any time).
+  if (termios t{}; o_.device.empty() && ::tcgetattr(fd_, &t) == 0 && cfgetospeed(&t) != B50) host_ = hostLineOf(t);
+  const auto line = app::uartReceive(damaged_, o_.baud, host_.baud, host_.dataBits, host_.parity);
+  if (raw_.is_open())
+    raw_.write(reinterpret_cast<const char*>(damaged_.data()), static_cast<std::streamsize>(damaged_.size()));
+  if (!writeAll(fd_, line.data(), line.size())) return false;
+  sent_ += damaged_.size();
+  return true;
+}
+
+void Board::readHostCommands() {
+  std::uint8_t in[512];
+  for (ssize_t n; (n = ::read(fd_, in, sizeof in)) > 0;) {
+    commands_.clear();
+    commandDecoder_.push(std::span<const std::uint8_t>(in, static_cast<std::size_t>(n)), commands_);
+    for (const auto& c : commands_)
+      say("host command: " + hostControl_.apply(c) + " at stream time " + fmt("%.3f", sim_.timeS()) + " s");
+  }
+}
+
+void Board::report() const {
+  const auto& c = faults_.counts();
+  say("done: " + std::to_string(sent_) + " bytes, " + std::to_string(c.frames) + " frames of " +
+      fmt("%.3f", sim_.timeS()) + " s; faults: " + std::to_string(c.corruptedBytes) + " corrupted bytes, " +
+      std::to_string(c.droppedFrames) + " dropped frames, " + std::to_string(c.gapFrames) + " gap frames, " +
+      std::to_string(c.duplicatedFrames) + " duplicated frames, " + std::to_string(c.garbageBytes) +
+      " garbage bytes" + (hostGone_ ? "; the host closed the port" : ""));
+}
+
+// Like a board after its plan: the port stays until the host lets go.
+void Board::linger() {
+  const auto giveUp = Clock::now() + std::chrono::duration<double>(o_.lingerS);
+  for (;;) {
+    pollfd p{fd_, POLLOUT, 0};
+    ::poll(&p, 1, 0);
+    // Commands still count (a host stops the stream when its run is over),
+    // read after the poll so that what a host wrote before closing is seen.
+    readHostCommands();
+    if ((p.revents & POLLHUP) || Clock::now() > giveUp) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -197,7 +408,7 @@ int main(int argc, char** argv) {
   if (!started) return failWith(started.status().message());
   if (!*started) return 0;  // --help
   auto& args = (*started)->args;
-  auto* config = &(*started)->config;
+  model::SimConfig& config = (*started)->config;
   auto plan = app::readPlan(args);
   if (!plan) return failWith(plan.status().message());
   auto options = readOptions(args);
@@ -205,12 +416,8 @@ int main(int argc, char** argv) {
   if (auto s = args.checkAllUsed(); !s.isOk()) return failWith(s.message());
   if (!args.positionals().empty()) return failWith("unexpected argument '" + args.positionals()[0] + "'");
   const Options& o = *options;
-  if (o.wrapAfterS >= 0.0) {
-    const double span = std::ldexp(1.0, config->samplingBoard.counterBits);
-    const double ticks = std::fmod(std::round(o.wrapAfterS * config->samplingBoard.counterHz), span);
-    config->samplingBoard.counterStart = static_cast<std::uint32_t>(std::fmod(span - ticks, span));
-  }
-  auto sim = model::Simulator::create(*config, *plan);
+  startCounterBeforeWrap(config, o.wrapAfterS);
+  auto sim = model::Simulator::create(config, *plan);
   if (!sim) return failWith(sim.status().message());
 
   std::ofstream raw;
@@ -218,149 +425,8 @@ int main(int argc, char** argv) {
     raw.open(o.saveRaw, std::ios::binary | std::ios::trunc);
     if (!raw) return failWith("cannot write '" + o.saveRaw + "'");
   }
-
-  // The port: a new pseudo-terminal (the host opens its slave) or a device.
-  int fd = -1;
-  termios board{};
-  cfmakeraw(&board);
-  board.c_cflag |= CLOCAL | CREAD;
-  HostLine host{o.baud, 8, 0};
-  if (o.device.empty()) {
-    int slave = -1;
-    char name[256] = {};
-    // A sentinel rate on the slave tells when the host has configured it.
-    cfsetspeed(&board, B50);
-    if (::openpty(&fd, &slave, name, &board, nullptr) != 0)
-      return failWith(std::string("cannot create a pseudo-terminal: ") + std::strerror(errno));
-    ::close(slave);
-    ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) | O_NONBLOCK);
-    ::fcntl(fd, F_SETFD, FD_CLOEXEC);
-    say(std::string("pty: ") + name);
-    for (const auto& t : sim->get()->truth())
-      say("truth: point " + std::to_string(t.index + 1) + " axis " + axisName(t.axis) + " frequency_hz " +
-          fmt("%.9f", t.frequencyHz) + " amplitude_deg " + fmt("%.6f", t.amplitudeDeg) + " lag_ms " +
-          fmt("%.6f", t.lagS * 1e3) + " imu_delay_ms " + fmt("%.6f", t.imuDelayS * 1e3) + " gyro_delay_ms " +
-          fmt("%.6f", t.gyroDelayS * 1e3));
-    // Wait for the host: the master reports a hang-up while no slave is open.
-    const auto giveUp = Clock::now() + std::chrono::duration<double>(o.waitOpenS);
-    for (;;) {
-      pollfd p{fd, POLLOUT, 0};
-      ::poll(&p, 1, 0);
-      if (!(p.revents & POLLHUP)) break;
-      if (Clock::now() > giveUp) return failWith("no host opened " + std::string(name) + " within " + fmt("%g", o.waitOpenS) + " s");
-      std::this_thread::sleep_for(std::chrono::milliseconds(5));
-    }
-    // ... and for it to set its line (the serial source does so while opening). On
-    // Linux a pty master's tcgetattr reports the slave's settings.
-    termios t{};
-    const auto configured = Clock::now() + std::chrono::seconds(2);
-    while (::tcgetattr(fd, &t) == 0 && cfgetospeed(&t) == B50 && Clock::now() < configured)
-      std::this_thread::sleep_for(std::chrono::milliseconds(2));
-    if (cfgetospeed(&t) != B50) host = hostLineOf(t);
-    say("host: opened at " + std::to_string(host.baud) + " " + std::to_string(host.dataBits) +
-        (host.parity == 0 ? "N" : host.parity == 1 ? "E" : "O") + "1 (board " + std::to_string(o.baud) + " 8N1)");
-  } else {
-    fd = ::open(o.device.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
-    if (fd < 0) return failWith("cannot open " + o.device + ": " + std::strerror(errno));
-    cfsetspeed(&board, codeOf(o.baud));
-    if (::tcsetattr(fd, TCSANOW, &board) != 0)
-      return failWith("cannot set " + o.device + " to " + std::to_string(o.baud) + " 8N1: " + std::strerror(errno));
-    say("device: " + o.device + " at " + std::to_string(o.baud) + " 8N1");
-  }
-
-  app::BoardFaults faults(o.faults);
-  // The host-to-board direction (docs/protocol.md): commands read from the
-  // port, applied to the clean stream before the faults.
-  app::BoardHostControl hostControl;
-  protocol::HostCommandDecoder commandDecoder;
-  std::vector<protocol::HostCommand> commands;
-  std::vector<std::uint8_t> clean, configured, damaged;
-  std::uint64_t sent = 0;
-  const auto start = Clock::now();
-  Clock::duration paused{};
-  bool stalled = false, more = true, hostGone = false;
-  constexpr double kStepS = 0.005;
-  while (more) {
-    // Stream time released so far; the next event (stall, disconnect) caps it.
-    const double wallS = std::chrono::duration<double>(Clock::now() - start - paused).count();
-    double until = o.speed > 0.0 ? wallS * o.speed : sim->get()->timeS() + 0.05;
-    const bool stallDue = !stalled && o.stallAtS >= 0.0 && until >= o.stallAtS;
-    const bool disconnectDue = o.disconnectAtS >= 0.0 && until >= o.disconnectAtS;
-    if (stallDue) until = o.stallAtS;
-    if (disconnectDue) until = std::min(until, o.disconnectAtS);
-    // What the host sent (a board that only streams would ignore it).
-    for (;;) {
-      std::uint8_t in[512];
-      const ssize_t n = ::read(fd, in, sizeof in);
-      if (n <= 0) break;
-      commands.clear();
-      commandDecoder.push(std::span<const std::uint8_t>(in, static_cast<std::size_t>(n)), commands);
-      for (const auto& c : commands)
-        say("host command: " + hostControl.apply(c) + " at stream time " + fmt("%.3f", sim->get()->timeS()) + " s");
-    }
-    clean.clear();
-    configured.clear();
-    damaged.clear();
-    more = sim->get()->advance(until, clean);
-    hostControl.process(clean, configured);
-    faults.apply(configured, sim->get()->timeS(), damaged);
-    if (!damaged.empty()) {
-      // The line as the host has it set now (it may change it at any time).
-      if (termios t{}; o.device.empty() && ::tcgetattr(fd, &t) == 0 && cfgetospeed(&t) != B50) host = hostLineOf(t);
-      const auto line = app::uartReceive(damaged, o.baud, host.baud, host.dataBits, host.parity);
-      if (raw.is_open()) raw.write(reinterpret_cast<const char*>(damaged.data()), static_cast<std::streamsize>(damaged.size()));
-      if (!writeAll(fd, line.data(), line.size())) {
-        hostGone = true;
-        break;
-      }
-      sent += damaged.size();
-    }
-    if (disconnectDue) {
-      raw.flush();
-      ::close(fd);
-      fd = -1;
-      say("disconnect: closed the port at stream time " + fmt("%.3f", o.disconnectAtS) + " s after " +
-          std::to_string(sent) + " bytes");
-      break;
-    }
-    if (stallDue) {
-      stalled = true;
-      raw.flush();
-      say("stall: nothing sent for " + fmt("%.1f", o.stallS) + " s from stream time " + fmt("%.3f", o.stallAtS) + " s");
-      const auto pauseStart = Clock::now();
-      std::this_thread::sleep_for(std::chrono::duration<double>(o.stallS));
-      paused += Clock::now() - pauseStart;
-      say("stall: sending again");
-      continue;
-    }
-    if (o.speed > 0.0) std::this_thread::sleep_for(std::chrono::duration<double>(kStepS / std::max(o.speed, 1.0)));
-  }
-  raw.flush();
-  const auto& c = faults.counts();
-  say("done: " + std::to_string(sent) + " bytes, " + std::to_string(c.frames) + " frames of " +
-      fmt("%.3f", sim->get()->timeS()) + " s; faults: " + std::to_string(c.corruptedBytes) + " corrupted bytes, " +
-      std::to_string(c.droppedFrames) + " dropped frames, " + std::to_string(c.gapFrames) + " gap frames, " +
-      std::to_string(c.duplicatedFrames) + " duplicated frames, " + std::to_string(c.garbageBytes) +
-      " garbage bytes" + (hostGone ? "; the host closed the port" : ""));
-  if (fd >= 0 && o.device.empty()) {
-    // Like a board after its plan: the port stays until the host lets go.
-    const auto giveUp = Clock::now() + std::chrono::duration<double>(o.lingerS);
-    for (;;) {
-      pollfd p{fd, POLLOUT, 0};
-      ::poll(&p, 1, 0);
-      // Commands still count (a host stops the stream when its run is over),
-      // read after the poll so that what a host wrote before closing is seen.
-      std::uint8_t in[512];
-      for (ssize_t n; (n = ::read(fd, in, sizeof in)) > 0;) {
-        commands.clear();
-        commandDecoder.push(std::span<const std::uint8_t>(in, static_cast<std::size_t>(n)), commands);
-        for (const auto& cmd : commands)
-          say("host command: " + hostControl.apply(cmd) + " at stream time " + fmt("%.3f", sim->get()->timeS()) + " s");
-      }
-      if ((p.revents & POLLHUP) || Clock::now() > giveUp) break;
-      std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    }
-  }
-  if (fd >= 0) ::close(fd);
+  auto port = openPort(o, **sim);
+  if (!port) return failWith(port.status().message());
+  Board(o, **sim, *port, std::move(raw)).run();
   return 0;
 }

@@ -117,44 +117,50 @@ bool slaveOpen(int master) {
   return !(p.revents & POLLHUP);
 }
 
-}  // namespace
+// The command line (kHelp), as readOptions() checked it.
+struct Options {
+  std::string link, boardMode;
+  double speed = 1.0, heartbeatS = 0.0, exitAfterS = 600.0;
+  // Table seconds after the first swing starts; < 0: never.
+  double dropAfterS = -1.0, boardVanishAfterS = -1.0;
+  int tcpPort = 0;
+  table::EmulatedTableParams params;
+  table::ServerFaults faults;
+};
 
-int main(int argc, char** argv) {
-  auto started = app::startEmulator(argc, argv, kHelp);
-  if (!started) return failWith(started.status().message());
-  if (!*started) return 0;  // --help
-  auto& args = (*started)->args;
-  auto* config = &(*started)->config;
-  const std::string link = args.text("link").value_or("tcp");
-  const std::string boardMode = args.text("board").value_or("pty");
+Result<Options> readOptions(app::CliArguments& args) {
+  Options o;
+  o.link = args.text("link").value_or("tcp");
+  o.boardMode = args.text("board").value_or("pty");
   struct Num {
     const char* name;
     double value;
   };
-  table::EmulatedTableParams params;
+  table::EmulatedTableParams& params = o.params;
   auto& lim = params.limits.axes;
-  Num nums[] = {{"speed", 1.0},
-                {"tcp-port", 0.0},
-                {"heartbeat-s", 0.0},
+  Num nums[] = {{"speed", o.speed},
+                {"tcp-port", static_cast<double>(o.tcpPort)},
+                {"heartbeat-s", o.heartbeatS},
                 {"max-amplitude-deg", lim[0].maxAmplitudeDeg},
                 {"max-frequency-hz", lim[0].maxFrequencyHz},
                 {"max-rate-deg-s", lim[0].maxRateDegPerS},
                 {"max-accel-deg-s2", lim[0].maxAccelDegPerS2},
                 {"servo-lag-ms", params.servoLagS * 1e3},
                 {"stop-accel-deg-s2", params.stopAccelDegPerS2},
-                {"exit-after-s", 600.0},
-                {"drop-link-after-start-s", -1.0},
+                {"exit-after-s", o.exitAfterS},
+                {"drop-link-after-start-s", o.dropAfterS},
                 {"interlock-after-start-s", -1.0},
                 {"interlock-s", 1e9},
-                {"board-vanish-after-start-s", -1.0}};
+                {"board-vanish-after-start-s", o.boardVanishAfterS}};
   for (auto& n : nums) {
-    auto v = args.number(n.name, n.value);
-    if (!v) return failWith(v.status().message());
-    n.value = *v;
+    FOG_ASSIGN_OR_RETURN(n.value, args.number(n.name, n.value));
   }
-  const double speed = nums[0].value, heartbeatS = nums[2].value, exitAfterS = nums[9].value;
-  const double dropAfterS = nums[10].value, boardVanishAfterS = nums[13].value;
-  const int tcpPort = static_cast<int>(nums[1].value);
+  o.speed = nums[0].value;
+  o.heartbeatS = nums[2].value;
+  o.exitAfterS = nums[9].value;
+  o.dropAfterS = nums[10].value;
+  o.boardVanishAfterS = nums[13].value;
+  o.tcpPort = static_cast<int>(nums[1].value);
   for (auto& l : lim) {
     l.maxAmplitudeDeg = nums[3].value;
     l.maxFrequencyHz = nums[4].value;
@@ -163,219 +169,298 @@ int main(int argc, char** argv) {
   }
   params.servoLagS = nums[7].value * 1e-3;
   params.stopAccelDegPerS2 = nums[8].value;
-  table::ServerFaults faults;
-  faults.refuseHeader = args.text("refuse").value_or("");
-  faults.interlockAfterStartS = nums[11].value;
-  faults.interlockForS = nums[12].value;
-  if (auto s = args.checkAllUsed(); !s.isOk()) return failWith(s.message());
-  if (!args.positionals().empty()) return failWith("unexpected argument '" + args.positionals()[0] + "'");
-  if (!(speed > 0.0) || speed > 1000.0) return failWith("--speed must be in (0, 1000]");
-  if (link != "tcp" && link != "pty") return failWith("--link must be tcp or pty");
-  if (boardMode != "pty" && boardMode != "none") return failWith("--board must be pty or none");
-  if (tcpPort < 0 || tcpPort > 65535) return failWith("--tcp-port must be 0 .. 65535");
-  if (!(params.servoLagS >= 0.0 && params.servoLagS < 0.5)) return failWith("--servo-lag-ms must be 0 .. 500");
-  if (!(params.stopAccelDegPerS2 > 0.0)) return failWith("--stop-accel-deg-s2 must be > 0");
+  o.faults.refuseHeader = args.text("refuse").value_or("");
+  o.faults.interlockAfterStartS = nums[11].value;
+  o.faults.interlockForS = nums[12].value;
+  FOG_RETURN_IF_ERROR(args.checkAllUsed());
+  if (!args.positionals().empty()) return invalidArgument("unexpected argument '" + args.positionals()[0] + "'");
+  if (!(o.speed > 0.0) || o.speed > 1000.0) return invalidArgument("--speed must be in (0, 1000]");
+  if (o.link != "tcp" && o.link != "pty") return invalidArgument("--link must be tcp or pty");
+  if (o.boardMode != "pty" && o.boardMode != "none") return invalidArgument("--board must be pty or none");
+  if (o.tcpPort < 0 || o.tcpPort > 65535) return invalidArgument("--tcp-port must be 0 .. 65535");
+  if (!(params.servoLagS >= 0.0 && params.servoLagS < 0.5)) return invalidArgument("--servo-lag-ms must be 0 .. 500");
+  if (!(params.stopAccelDegPerS2 > 0.0)) return invalidArgument("--stop-accel-deg-s2 must be > 0");
+  return o;
+}
 
-  table::EmulatedTable emulated(params);
-  table::TableServer server(emulated, faults);
-  server.setEventSink(say);
-  if (heartbeatS > 0.0) (void)server.handleLine("SYST:HEART:TIM " + std::to_string(heartbeatS), 0.0, 0.0);
+// The board: the simulator's chain with the table's motion, no test-point
+// markers (the host segments the stream from the table angle). None with
+// --board none.
+Result<std::unique_ptr<model::Simulator>> createBoard(const Options& o, model::SimConfig& config,
+                                                      const table::EmulatedTable& emulated) {
+  if (o.boardMode != "pty") return std::unique_ptr<model::Simulator>();
+  config.samplingBoard.markTestPoints = false;
+  TestPlan idle;
+  idle.restBetweenS = 0.0;
+  idle.points = {TestPoint::staticSegment(Axis::kX, kMaxPlanDurationS)};  // as long as a plan may last
+  FOG_ASSIGN_OR_RETURN(std::unique_ptr<model::Simulator> sim, model::Simulator::create(config, idle));
+  sim->addEffect(std::make_unique<TableMotion>(emulated));
+  return sim;
+}
 
-  // The board: the simulator's chain with the table's motion, no test-point
-  // markers (the host segments the stream from the table angle).
-  std::unique_ptr<model::Simulator> sim;
-  int boardFd = -1;
-  if (boardMode == "pty") {
-    config->samplingBoard.markTestPoints = false;
-    TestPlan idle;
-    idle.restBetweenS = 0.0;
-    idle.points = {TestPoint::staticSegment(Axis::kX, kMaxPlanDurationS)};  // as long as a plan may last
-    auto created = model::Simulator::create(*config, idle);
-    if (!created) return failWith(created.status().message());
-    sim = std::move(*created);
-    sim->addEffect(std::make_unique<TableMotion>(emulated));
-  }
+// The emulator once its table, server and board exist: opens the
+// controller's link and the board's port, then runs (every 2 ms: the link,
+// the faults on request, the board's stream) until every host that came has
+// gone, a signal or --exit-after-s, and says "done: ...".
+class Emulator {
+ public:
+  Emulator(const Options& o, const table::EmulatedTable& emulated, table::TableServer& server,
+           std::unique_ptr<model::Simulator> sim)
+      : o_(o), emulated_(emulated), server_(server), sim_(std::move(sim)) {}
 
-  // The controller's link.
-  int listenFd = -1, clientFd = -1, tablePty = -1;
-  if (link == "tcp") {
-    listenFd = ::socket(AF_INET, SOCK_STREAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
+  Status openTableLink();
+  Status openBoardPort(const model::SimConfig& config);
+  void run();
+
+ private:
+  void closeClient(const std::string& why);
+  void serviceTableLink(double tableS, double wallS);
+  void dropLinkIfDue(double tableS);
+  void vanishBoardIfDue(double tableS);
+  void streamBoard(double tableS);
+  bool everyHostGone(double tableS, double wallS) const;
+  void finish(double wallS);
+
+  const Options& o_;
+  const table::EmulatedTable& emulated_;
+  table::TableServer& server_;
+  std::unique_ptr<model::Simulator> sim_;
+  int listenFd_ = -1, clientFd_ = -1, tablePty_ = -1, boardFd_ = -1;
+  std::string inbox_, outbox_;
+  std::vector<std::uint8_t> boardClean_, boardBytes_, boardPending_;
+  app::BoardHostControl hostControl_;
+  protocol::HostCommandDecoder commandDecoder_;
+  std::vector<protocol::HostCommand> commands_;
+  bool dropped_ = false, hostSeen_ = false, ptyHostOpen_ = false, boardHostSeen_ = false, boardOpen_ = false;
+  std::uint64_t boardSent_ = 0, linesHandled_ = 0;
+};
+
+// The controller's link.
+Status Emulator::openTableLink() {
+  if (o_.link == "tcp") {
+    listenFd_ = ::socket(AF_INET, SOCK_STREAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
     const int one = 1;
-    ::setsockopt(listenFd, SOL_SOCKET, SO_REUSEADDR, &one, sizeof one);
+    ::setsockopt(listenFd_, SOL_SOCKET, SO_REUSEADDR, &one, sizeof one);
     sockaddr_in sa{};
     sa.sin_family = AF_INET;
     sa.sin_addr.s_addr = htonl(INADDR_LOOPBACK);  // localhost only
-    sa.sin_port = htons(static_cast<std::uint16_t>(tcpPort));
+    sa.sin_port = htons(static_cast<std::uint16_t>(o_.tcpPort));
     socklen_t len = sizeof sa;
-    if (listenFd < 0 || ::bind(listenFd, reinterpret_cast<sockaddr*>(&sa), sizeof sa) != 0 ||
-        ::listen(listenFd, 1) != 0 || ::getsockname(listenFd, reinterpret_cast<sockaddr*>(&sa), &len) != 0)
-      return failWith(std::string("cannot listen on 127.0.0.1:") + std::to_string(tcpPort) + ": " + std::strerror(errno));
+    if (listenFd_ < 0 || ::bind(listenFd_, reinterpret_cast<sockaddr*>(&sa), sizeof sa) != 0 ||
+        ::listen(listenFd_, 1) != 0 || ::getsockname(listenFd_, reinterpret_cast<sockaddr*>(&sa), &len) != 0)
+      return ioError(std::string("cannot listen on 127.0.0.1:") + std::to_string(o_.tcpPort) + ": " +
+                     std::strerror(errno));
     say("table: tcp:127.0.0.1:" + std::to_string(ntohs(sa.sin_port)));
   } else {
     std::string name;
-    tablePty = openPtyMaster(name);
-    if (tablePty < 0) return failWith(std::string("cannot create a pseudo-terminal: ") + std::strerror(errno));
+    tablePty_ = openPtyMaster(name);
+    if (tablePty_ < 0) return ioError(std::string("cannot create a pseudo-terminal: ") + std::strerror(errno));
     say("table: " + name);
   }
-  if (sim) {
-    std::string name;
-    boardFd = openPtyMaster(name);
-    if (boardFd < 0) return failWith(std::string("cannot create a pseudo-terminal: ") + std::strerror(errno));
-    say("board: " + name);
-    char b[200];
-    std::snprintf(b, sizeof b, "truth: lag_ms %.6f imu_delay_ms %.6f gyro_delay_ms %.6f", config->trueLagS() * 1e3,
-                  config->trueImuDelayS() * 1e3, config->trueGyroDelayS() * 1e3);
+  return Status::ok();
+}
+
+// The board's pty and the chain's true delays, when there is a board.
+Status Emulator::openBoardPort(const model::SimConfig& config) {
+  if (!sim_) return Status::ok();
+  std::string name;
+  boardFd_ = openPtyMaster(name);
+  if (boardFd_ < 0) return ioError(std::string("cannot create a pseudo-terminal: ") + std::strerror(errno));
+  say("board: " + name);
+  char b[200];
+  std::snprintf(b, sizeof b, "truth: lag_ms %.6f imu_delay_ms %.6f gyro_delay_ms %.6f", config.trueLagS() * 1e3,
+                config.trueImuDelayS() * 1e3, config.trueGyroDelayS() * 1e3);
+  say(b);
+  return Status::ok();
+}
+
+void Emulator::run() {
+  const auto start = Clock::now();
+  for (;;) {
+    const double wallS = std::chrono::duration<double>(Clock::now() - start).count();
+    const double tableS = wallS * o_.speed;
+    if (gQuit || wallS > o_.exitAfterS) break;
+    serviceTableLink(tableS, wallS);
+    server_.tick(tableS, wallS);
+    dropLinkIfDue(tableS);
+    vanishBoardIfDue(tableS);
+    // The board's stream, up to now, as the host has configured it
+    // (docs/protocol.md, "Host to board": commands read from the board's pty).
+    if (sim_) streamBoard(tableS);
+    if (everyHostGone(tableS, wallS)) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  finish(std::chrono::duration<double>(Clock::now() - start).count());
+}
+
+void Emulator::closeClient(const std::string& why) {
+  if (clientFd_ >= 0) {
+    ::close(clientFd_);
+    clientFd_ = -1;
+    say("host: table link closed (" + why + ")");
+  }
+}
+
+// Link I/O: a host connecting or opening the pty, its lines handled, the
+// replies written.
+void Emulator::serviceTableLink(double tableS, double wallS) {
+  if (listenFd_ >= 0 && clientFd_ < 0 && !dropped_) {
+    const int fd = ::accept4(listenFd_, nullptr, nullptr, SOCK_NONBLOCK | SOCK_CLOEXEC);
+    if (fd >= 0) {
+      clientFd_ = fd;
+      hostSeen_ = true;
+      inbox_.clear();
+      say("host: table link connected");
+    }
+  }
+  int ioFd = clientFd_ >= 0 ? clientFd_ : -1;
+  if (tablePty_ >= 0) {
+    const bool open = slaveOpen(tablePty_);
+    if (open && !ptyHostOpen_) say("host: table link opened");
+    if (!open && ptyHostOpen_) say("host: table link closed");
+    ptyHostOpen_ = open;
+    hostSeen_ = hostSeen_ || open;
+    ioFd = open ? tablePty_ : -1;
+  }
+  if (ioFd < 0) return;
+  char buf[4096];
+  for (;;) {
+    const ssize_t n = ::read(ioFd, buf, sizeof buf);
+    if (n > 0) {
+      inbox_.append(buf, static_cast<std::size_t>(n));
+      continue;
+    }
+    if (n == 0 && ioFd == clientFd_) closeClient("by the host");
+    break;
+  }
+  for (auto nl = inbox_.find('\n'); nl != std::string::npos; nl = inbox_.find('\n')) {
+    const std::string line = inbox_.substr(0, nl);
+    inbox_.erase(0, nl + 1);
+    ++linesHandled_;
+    if (auto reply = server_.handleLine(line, tableS, wallS)) outbox_ += *reply + "\n";
+  }
+  if (inbox_.size() > 4096) {  // a host that never ends its line
+    (void)server_.handleLine(std::string(300, 'X'), tableS, wallS);
+    inbox_.clear();
+  }
+  const int outFd = clientFd_ >= 0 ? clientFd_ : (ptyHostOpen_ ? tablePty_ : -1);
+  while (!outbox_.empty() && outFd >= 0) {
+    const ssize_t n = outFd == clientFd_ ? ::send(outFd, outbox_.data(), outbox_.size(), MSG_NOSIGNAL)
+                                         : ::write(outFd, outbox_.data(), outbox_.size());
+    if (n <= 0) break;
+    outbox_.erase(0, static_cast<std::size_t>(n));
+  }
+}
+
+void Emulator::dropLinkIfDue(double tableS) {
+  if (o_.dropAfterS >= 0.0 && !dropped_ && server_.firstSwingStartS() >= 0.0 &&
+      tableS >= server_.firstSwingStartS() + o_.dropAfterS) {
+    dropped_ = true;
+    closeClient("link dropped on request");
+    if (listenFd_ >= 0) ::close(listenFd_), listenFd_ = -1;
+    if (tablePty_ >= 0) ::close(tablePty_), tablePty_ = -1;
+    char b[160];
+    std::snprintf(b, sizeof b, "link: dropped at table time %.3f s (%.3f s after the first swing started)", tableS,
+                  tableS - server_.firstSwingStartS());
     say(b);
   }
+}
+
+void Emulator::vanishBoardIfDue(double tableS) {
+  if (sim_ && o_.boardVanishAfterS >= 0.0 && server_.firstSwingStartS() >= 0.0 &&
+      tableS >= server_.firstSwingStartS() + o_.boardVanishAfterS) {
+    ::close(boardFd_);
+    boardFd_ = -1;
+    sim_.reset();
+    char b[160];
+    std::snprintf(b, sizeof b, "board: vanished at table time %.3f s (%.3f s after the first swing started)", tableS,
+                  tableS - server_.firstSwingStartS());
+    say(b);
+  }
+}
+
+void Emulator::streamBoard(double tableS) {
+  boardClean_.clear();
+  sim_->advance(tableS, boardClean_);
+  const bool open = slaveOpen(boardFd_);
+  {  // also once the host has closed: what it wrote just before is still there
+    std::uint8_t in[512];
+    for (ssize_t n; (n = ::read(boardFd_, in, sizeof in)) > 0;) {
+      commands_.clear();
+      commandDecoder_.push(std::span<const std::uint8_t>(in, static_cast<std::size_t>(n)), commands_);
+      for (const auto& c : commands_) {
+        char at[64];
+        std::snprintf(at, sizeof at, " at table time %.3f s", tableS);
+        say("host command: " + hostControl_.apply(c) + at);
+      }
+    }
+  }
+  boardBytes_.clear();
+  hostControl_.process(boardClean_, boardBytes_);
+  if (open && !boardOpen_) say("host: board port opened");
+  if (!open && boardOpen_) say("host: board port closed");
+  boardOpen_ = open;
+  boardHostSeen_ = boardHostSeen_ || open;
+  if (open) {
+    boardPending_.insert(boardPending_.end(), boardBytes_.begin(), boardBytes_.end());
+    while (!boardPending_.empty()) {
+      const ssize_t n = ::write(boardFd_, boardPending_.data(), boardPending_.size());
+      if (n <= 0) break;
+      boardPending_.erase(boardPending_.begin(), boardPending_.begin() + n);
+      boardSent_ += static_cast<std::uint64_t>(n);
+    }
+    if (boardPending_.size() > (8u << 20)) boardPending_.clear();  // a host that stopped reading
+  } else {
+    boardPending_.clear();  // a board streams whether or not anyone listens
+  }
+}
+
+// Done: every host that came has gone.
+bool Emulator::everyHostGone(double tableS, double wallS) const {
+  const bool tableGone = hostSeen_ && clientFd_ < 0 && !ptyHostOpen_;
+  const bool boardGone = !sim_ || (boardHostSeen_ && !boardOpen_);  // vanished on request counts as gone
+  if (!(tableGone && boardGone)) return false;
+  bool rest = true;
+  for (int a = 0; a < kAxisCount; ++a) rest = rest && emulated_.mode(static_cast<Axis>(a), tableS) != table::AxisMode::kSwinging;
+  return rest || wallS > o_.exitAfterS;  // a swinging table waits for its heartbeat
+}
+
+void Emulator::finish(double wallS) {
+  char b[200];
+  std::snprintf(b, sizeof b, "done: %.3f table s, %llu lines handled, %llu board bytes, %d swings started",
+                wallS * o_.speed, static_cast<unsigned long long>(linesHandled_),
+                static_cast<unsigned long long>(boardSent_), server_.swingsStarted());
+  say(b);
+  if (clientFd_ >= 0) ::close(clientFd_);
+  if (listenFd_ >= 0) ::close(listenFd_);
+  if (tablePty_ >= 0) ::close(tablePty_);
+  if (boardFd_ >= 0) ::close(boardFd_);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  auto started = app::startEmulator(argc, argv, kHelp);
+  if (!started) return failWith(started.status().message());
+  if (!*started) return 0;  // --help
+  model::SimConfig& config = (*started)->config;
+  const auto options = readOptions((*started)->args);
+  if (!options) return failWith(options.status().message());
+
+  table::EmulatedTable emulated(options->params);
+  table::TableServer server(emulated, options->faults);
+  server.setEventSink(say);
+  if (options->heartbeatS > 0.0)
+    (void)server.handleLine("SYST:HEART:TIM " + std::to_string(options->heartbeatS), 0.0, 0.0);
+  auto board = createBoard(*options, config, emulated);
+  if (!board) return failWith(board.status().message());
+
+  Emulator emulator(*options, emulated, server, std::move(*board));
+  if (auto s = emulator.openTableLink(); !s.isOk()) return failWith(s.message());
+  if (auto s = emulator.openBoardPort(config); !s.isOk()) return failWith(s.message());
   std::signal(SIGINT, onQuit);
   std::signal(SIGTERM, onQuit);
   std::signal(SIGPIPE, SIG_IGN);
-
-  const auto start = Clock::now();
-  std::string inbox, outbox;
-  std::vector<std::uint8_t> boardClean, boardBytes, boardPending;
-  app::BoardHostControl hostControl;
-  protocol::HostCommandDecoder commandDecoder;
-  std::vector<protocol::HostCommand> commands;
-  bool dropped = false, hostSeen = false, ptyHostOpen = false, boardHostSeen = false, boardOpen = false;
-  std::uint64_t boardSent = 0, linesHandled = 0;
-  auto closeClient = [&](const std::string& why) {
-    if (clientFd >= 0) {
-      ::close(clientFd);
-      clientFd = -1;
-      say("host: table link closed (" + why + ")");
-    }
-  };
-  for (;;) {
-    const double wallS = std::chrono::duration<double>(Clock::now() - start).count();
-    const double tableS = wallS * speed;
-    if (gQuit || wallS > exitAfterS) break;
-    // Link I/O.
-    if (listenFd >= 0 && clientFd < 0 && !dropped) {
-      const int fd = ::accept4(listenFd, nullptr, nullptr, SOCK_NONBLOCK | SOCK_CLOEXEC);
-      if (fd >= 0) {
-        clientFd = fd;
-        hostSeen = true;
-        inbox.clear();
-        say("host: table link connected");
-      }
-    }
-    int ioFd = clientFd >= 0 ? clientFd : -1;
-    if (tablePty >= 0) {
-      const bool open = slaveOpen(tablePty);
-      if (open && !ptyHostOpen) say("host: table link opened");
-      if (!open && ptyHostOpen) say("host: table link closed");
-      ptyHostOpen = open;
-      hostSeen = hostSeen || open;
-      ioFd = open ? tablePty : -1;
-    }
-    if (ioFd >= 0) {
-      char buf[4096];
-      for (;;) {
-        const ssize_t n = ::read(ioFd, buf, sizeof buf);
-        if (n > 0) {
-          inbox.append(buf, static_cast<std::size_t>(n));
-          continue;
-        }
-        if (n == 0 && ioFd == clientFd) closeClient("by the host");
-        break;
-      }
-      for (auto nl = inbox.find('\n'); nl != std::string::npos; nl = inbox.find('\n')) {
-        const std::string line = inbox.substr(0, nl);
-        inbox.erase(0, nl + 1);
-        ++linesHandled;
-        if (auto reply = server.handleLine(line, tableS, wallS)) outbox += *reply + "\n";
-      }
-      if (inbox.size() > 4096) {  // a host that never ends its line
-        (void)server.handleLine(std::string(300, 'X'), tableS, wallS);
-        inbox.clear();
-      }
-      const int outFd = clientFd >= 0 ? clientFd : (ptyHostOpen ? tablePty : -1);
-      while (!outbox.empty() && outFd >= 0) {
-        const ssize_t n = outFd == clientFd ? ::send(outFd, outbox.data(), outbox.size(), MSG_NOSIGNAL)
-                                            : ::write(outFd, outbox.data(), outbox.size());
-        if (n <= 0) break;
-        outbox.erase(0, static_cast<std::size_t>(n));
-      }
-    }
-    server.tick(tableS, wallS);
-    if (dropAfterS >= 0.0 && !dropped && server.firstSwingStartS() >= 0.0 &&
-        tableS >= server.firstSwingStartS() + dropAfterS) {
-      dropped = true;
-      closeClient("link dropped on request");
-      if (listenFd >= 0) ::close(listenFd), listenFd = -1;
-      if (tablePty >= 0) ::close(tablePty), tablePty = -1;
-      char b[160];
-      std::snprintf(b, sizeof b, "link: dropped at table time %.3f s (%.3f s after the first swing started)", tableS,
-                    tableS - server.firstSwingStartS());
-      say(b);
-    }
-    if (sim && boardVanishAfterS >= 0.0 && server.firstSwingStartS() >= 0.0 &&
-        tableS >= server.firstSwingStartS() + boardVanishAfterS) {
-      ::close(boardFd);
-      boardFd = -1;
-      sim.reset();
-      char b[160];
-      std::snprintf(b, sizeof b, "board: vanished at table time %.3f s (%.3f s after the first swing started)", tableS,
-                    tableS - server.firstSwingStartS());
-      say(b);
-    }
-    // The board's stream, up to now, as the host has configured it
-    // (docs/protocol.md, "Host to board": commands read from the board's pty).
-    if (sim) {
-      boardClean.clear();
-      sim->advance(tableS, boardClean);
-      const bool open = slaveOpen(boardFd);
-      {  // also once the host has closed: what it wrote just before is still there
-        std::uint8_t in[512];
-        for (ssize_t n; (n = ::read(boardFd, in, sizeof in)) > 0;) {
-          commands.clear();
-          commandDecoder.push(std::span<const std::uint8_t>(in, static_cast<std::size_t>(n)), commands);
-          for (const auto& c : commands) {
-            char at[64];
-            std::snprintf(at, sizeof at, " at table time %.3f s", tableS);
-            say("host command: " + hostControl.apply(c) + at);
-          }
-        }
-      }
-      boardBytes.clear();
-      hostControl.process(boardClean, boardBytes);
-      if (open && !boardOpen) say("host: board port opened");
-      if (!open && boardOpen) say("host: board port closed");
-      boardOpen = open;
-      boardHostSeen = boardHostSeen || open;
-      if (open) {
-        boardPending.insert(boardPending.end(), boardBytes.begin(), boardBytes.end());
-        while (!boardPending.empty()) {
-          const ssize_t n = ::write(boardFd, boardPending.data(), boardPending.size());
-          if (n <= 0) break;
-          boardPending.erase(boardPending.begin(), boardPending.begin() + n);
-          boardSent += static_cast<std::uint64_t>(n);
-        }
-        if (boardPending.size() > (8u << 20)) boardPending.clear();  // a host that stopped reading
-      } else {
-        boardPending.clear();  // a board streams whether or not anyone listens
-      }
-    }
-    // Done: every host that came has gone.
-    const bool tableGone = hostSeen && clientFd < 0 && !ptyHostOpen;
-    const bool boardGone = !sim || (boardHostSeen && !boardOpen);  // vanished on request counts as gone
-    if (tableGone && boardGone) {
-      bool rest = true;
-      for (int a = 0; a < kAxisCount; ++a) rest = rest && emulated.mode(static_cast<Axis>(a), tableS) != table::AxisMode::kSwinging;
-      if (rest || wallS > exitAfterS) break;  // a swinging table waits for its heartbeat
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(2));
-  }
-  const double wallS = std::chrono::duration<double>(Clock::now() - start).count();
-  char b[200];
-  std::snprintf(b, sizeof b, "done: %.3f table s, %llu lines handled, %llu board bytes, %d swings started", wallS * speed,
-                static_cast<unsigned long long>(linesHandled), static_cast<unsigned long long>(boardSent),
-                server.swingsStarted());
-  say(b);
-  if (clientFd >= 0) ::close(clientFd);
-  if (listenFd >= 0) ::close(listenFd);
-  if (tablePty >= 0) ::close(tablePty);
-  if (boardFd >= 0) ::close(boardFd);
+  emulator.run();
   return 0;
 }

@@ -27,7 +27,26 @@ ConfigureView::ConfigureView(QWidget* parent) : QWidget(parent) {
   split->setObjectName("configureSplitter");
   split->setChildrenCollapsible(false);
   layout->addWidget(split);
+  split->addWidget(buildPlanGroup());
 
+  auto* sideWidget = new QWidget();
+  auto* side = new QVBoxLayout(sideWidget);
+  side->setContentsMargins(0, 0, 0, 0);
+  side->addWidget(buildSourceGroup());
+  side->addWidget(buildSessionGroup());
+  side->addWidget(buildConstantsGroup());
+
+  message_ = new QLabel();
+  message_->setObjectName("configureMessage");
+  message_->setWordWrap(true);
+  side->addWidget(message_);
+  side->addStretch(1);
+  split->addWidget(sideWidget);
+  split->setStretchFactor(0, 3);
+  split->setStretchFactor(1, 2);
+}
+
+QGroupBox* ConfigureView::buildPlanGroup() {
   auto* planBox = new QGroupBox(tr("Test plan"));
   auto* planLayout = new QVBoxLayout(planBox);
   planEditor_ = new PlanEditor();
@@ -42,11 +61,10 @@ ConfigureView::ConfigureView(QWidget* parent) : QWidget(parent) {
   planLayout->addWidget(motionBox, 2);
   commandedMotion_->setPlan(planEditor_->plan());
   connect(planEditor_, &PlanEditor::planChanged, this, [this] { commandedMotion_->setPlan(planEditor_->plan()); });
-  split->addWidget(planBox);
+  return planBox;
+}
 
-  auto* sideWidget = new QWidget();
-  auto* side = new QVBoxLayout(sideWidget);
-  side->setContentsMargins(0, 0, 0, 0);
+QGroupBox* ConfigureView::buildSourceGroup() {
   auto* sourceBox = new QGroupBox(tr("Source"));
   auto* sourceForm = new QFormLayout(sourceBox);
   sourceCombo_ = new QComboBox();
@@ -83,6 +101,22 @@ ConfigureView::ConfigureView(QWidget* parent) : QWidget(parent) {
   paceRow->addWidget(seedSpin_);
   sourceForm->addRow(tr("Pace"), paceRow);
   sourceForm->addRow(tr("Replay"), replayRow);
+  addSerialRows(sourceForm);
+
+  connect(sourceCombo_, qOverload<int>(&QComboBox::currentIndexChanged), this, &ConfigureView::sourceChanged);
+  connect(speedCombo_, qOverload<int>(&QComboBox::currentIndexChanged), this, &ConfigureView::paceChanged);
+  connect(replayEdit_, &QLineEdit::textChanged, this, &ConfigureView::runnabilityChanged);
+  connect(browse, &QPushButton::clicked, this, [this] {
+    const QString path = QFileDialog::getOpenFileName(this, tr("Session to replay"), sessionFolder(),
+                                                      tr("fogbench sessions (*.fbs)"));
+    if (!path.isEmpty()) replayEdit_->setText(path);
+  });
+  return sourceBox;
+}
+
+// The serial board's rows of the source: its port and baud rate, and the
+// turntable.
+void ConfigureView::addSerialRows(QFormLayout* sourceForm) {
   auto* serialRow = new QHBoxLayout();
   portCombo_ = new QComboBox();
   portCombo_->setObjectName("portCombo");
@@ -128,8 +162,14 @@ ConfigureView::ConfigureView(QWidget* parent) : QWidget(parent) {
   };
   connect(rescan, &QPushButton::clicked, this, listPorts);
   listPorts();
-  side->addWidget(sourceBox);
 
+  connect(portCombo_, &QComboBox::currentTextChanged, this, &ConfigureView::runnabilityChanged);
+  connect(tableCombo_, qOverload<int>(&QComboBox::currentIndexChanged), this, &ConfigureView::sourceChanged);
+  connect(tableCombo_, qOverload<int>(&QComboBox::currentIndexChanged), this, &ConfigureView::runnabilityChanged);
+  connect(tableAddressEdit_, &QLineEdit::textChanged, this, &ConfigureView::runnabilityChanged);
+}
+
+QGroupBox* ConfigureView::buildSessionGroup() {
   auto* sessionBox = new QGroupBox(tr("Session"));
   auto* sessionForm = new QFormLayout(sessionBox);
   recordCheck_ = new QCheckBox(tr("Record a session file (crash-safe)"));
@@ -159,44 +199,9 @@ ConfigureView::ConfigureView(QWidget* parent) : QWidget(parent) {
   imuRow->addWidget(imuSerialEdit_, 1);
   sessionForm->addRow(tr("IMU model"), imuRow);
   sessionForm->addRow(tr("Notes"), notesEdit_);
-  side->addWidget(sessionBox);
 
-  auto* constantsBox = new QGroupBox(tr("Bench constants"));
-  auto* constantsLayout = new QHBoxLayout(constantsBox);  // side by side: saves height on a laptop
-  constantsLabel_ = new QLabel();
-  constantsLabel_->setObjectName("constantsLabel");
-
-  auto* edit = new QPushButton(tr("Edit…"));
-  edit->setToolTip(tr("Edit the bench constants"));
-  edit->setObjectName("editConstantsButton");
-  constantsLayout->addWidget(constantsLabel_, 1);
-  constantsLayout->addWidget(edit, 0, Qt::AlignTop);
-  side->addWidget(constantsBox);
-
-  message_ = new QLabel();
-  message_->setObjectName("configureMessage");
-  message_->setWordWrap(true);
-  side->addWidget(message_);
-  side->addStretch(1);
-  split->addWidget(sideWidget);
-  split->setStretchFactor(0, 3);
-  split->setStretchFactor(1, 2);
-
-
-  connect(sourceCombo_, qOverload<int>(&QComboBox::currentIndexChanged), this, &ConfigureView::sourceChanged);
-  connect(speedCombo_, qOverload<int>(&QComboBox::currentIndexChanged), this, &ConfigureView::paceChanged);
-  connect(replayEdit_, &QLineEdit::textChanged, this, &ConfigureView::runnabilityChanged);
-  connect(portCombo_, &QComboBox::currentTextChanged, this, &ConfigureView::runnabilityChanged);
-  connect(tableCombo_, qOverload<int>(&QComboBox::currentIndexChanged), this, &ConfigureView::sourceChanged);
-  connect(tableCombo_, qOverload<int>(&QComboBox::currentIndexChanged), this, &ConfigureView::runnabilityChanged);
-  connect(tableAddressEdit_, &QLineEdit::textChanged, this, &ConfigureView::runnabilityChanged);
   for (QLineEdit* e : {operatorEdit_, imuModelEdit_, imuSerialEdit_})
     connect(e, &QLineEdit::textChanged, this, &ConfigureView::identityChanged);
-  connect(browse, &QPushButton::clicked, this, [this] {
-    const QString path = QFileDialog::getOpenFileName(this, tr("Session to replay"), sessionFolder(),
-                                                      tr("fogbench sessions (*.fbs)"));
-    if (!path.isEmpty()) replayEdit_->setText(path);
-  });
   connect(chooseFolder, &QPushButton::clicked, this, [this] {
     const QString dir = QFileDialog::getExistingDirectory(this, tr("Session folder"), sessionFolder());
     if (!dir.isEmpty()) emit folderChosen(dir);
@@ -210,7 +215,22 @@ ConfigureView::ConfigureView(QWidget* parent) : QWidget(parent) {
     emit folderChosen(folderEdit_->text());
   });
   connect(recordCheck_, &QCheckBox::toggled, folderEdit_, &QWidget::setEnabled);
+  return sessionBox;
+}
+
+QGroupBox* ConfigureView::buildConstantsGroup() {
+  auto* constantsBox = new QGroupBox(tr("Bench constants"));
+  auto* constantsLayout = new QHBoxLayout(constantsBox);  // side by side: saves height on a laptop
+  constantsLabel_ = new QLabel();
+  constantsLabel_->setObjectName("constantsLabel");
+
+  auto* edit = new QPushButton(tr("Edit…"));
+  edit->setToolTip(tr("Edit the bench constants"));
+  edit->setObjectName("editConstantsButton");
+  constantsLayout->addWidget(constantsLabel_, 1);
+  constantsLayout->addWidget(edit, 0, Qt::AlignTop);
   connect(edit, &QPushButton::clicked, this, &ConfigureView::editBenchSettingsRequested);
+  return constantsBox;
 }
 
 ConfigureView::SourceKind ConfigureView::sourceKind() const {

@@ -14,6 +14,8 @@
 
 class QCheckBox;
 class QComboBox;
+class QFormLayout;
+class QGroupBox;
 class QLabel;
 class QLineEdit;
 class QSpinBox;
@@ -90,6 +92,13 @@ class ConfigureView : public QWidget {
   void editBenchSettingsRequested();
 
  private:
+  // The constructor's sections, in the order they are shown.
+  QGroupBox* buildPlanGroup();
+  QGroupBox* buildSourceGroup();
+  void addSerialRows(QFormLayout* sourceForm);
+  QGroupBox* buildSessionGroup();
+  QGroupBox* buildConstantsGroup();
+
   PlanEditor* planEditor_ = nullptr;
   CommandedMotionTable* commandedMotion_ = nullptr;
   QComboBox* sourceCombo_ = nullptr;

@@ -111,6 +111,21 @@ class ResizeHook : public QObject {
 
 DiagnosisView::DiagnosisView(QWidget* parent) : QWidget(parent) {
   auto* layout = new QVBoxLayout(this);
+  layout->addLayout(buildVerdictRow());
+  layout->addLayout(buildNoiseRow());
+  layout->addWidget(buildProgressRow());
+  progressRow_->hide();
+  layout->addWidget(buildResultStack(buildPlots()), 1);
+
+  gapMap_ = new QwtPlotSpectrogram();
+  gapMap_->setRenderThreadCount(1);
+  gapMap_->attach(gapMapPlot_);
+  connect(pointCombo_, qOverload<int>(&QComboBox::currentIndexChanged), this, &DiagnosisView::showPoint);
+  showMessage(tr("Run or open a session, then press Diagnose in the Results view."));
+}
+
+// The verdict, and the test point the curves and the spectrum show.
+QHBoxLayout* DiagnosisView::buildVerdictRow() {
   auto* top = new QHBoxLayout();
   verdict_ = new QLabel();
   verdict_->setObjectName("diagnosisVerdict");
@@ -124,11 +139,13 @@ DiagnosisView::DiagnosisView(QWidget* parent) : QWidget(parent) {
   pointCombo_->setObjectName("diagnosisPointCombo");
   pointCombo_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
   top->addWidget(pointCombo_);
-  layout->addLayout(top);
+  return top;
+}
 
-  // What the replays take for the IMU's bias instability: one recording
-  // cannot tell a wander of the bias from a drift or step, so the operator
-  // states it from the IMU's static noise test (Noise view).
+// What the replays take for the IMU's bias instability: one recording
+// cannot tell a wander of the bias from a drift or step, so the operator
+// states it from the IMU's static noise test (Noise view).
+QHBoxLayout* DiagnosisView::buildNoiseRow() {
   auto* noiseRow = new QHBoxLayout();
   const model::FogParams nominal;
   QSettings settings;
@@ -174,9 +191,11 @@ DiagnosisView::DiagnosisView(QWidget* parent) : QWidget(parent) {
   noiseRow->addWidget(instability_);
   noiseRow->addWidget(correlation_);
   noiseRow->addStretch(1);
-  layout->addLayout(noiseRow);
+  return noiseRow;
+}
 
-  // Progress of a running diagnosis, with Cancel.
+// Progress of a running diagnosis, with Cancel.
+QWidget* DiagnosisView::buildProgressRow() {
   progressRow_ = new QWidget();
   progressRow_->setObjectName("diagnosisProgressRow");
   auto* progressLayout = new QHBoxLayout(progressRow_);
@@ -201,9 +220,11 @@ DiagnosisView::DiagnosisView(QWidget* parent) : QWidget(parent) {
     stage_->setText(tr("cancelling …"));
     emit cancelRequested();
   });
-  layout->addWidget(progressRow_);
-  progressRow_->hide();
+  return progressRow_;
+}
 
+// The four plots in a grid, each with its interaction.
+QWidget* DiagnosisView::buildPlots() {
   curvePlot_ = makePlot(tr("Gyro residual: real and simulated"), tr("time from the record's middle (s)"),
                         tr("residual (arcsec)"));
   curvePlot_->setObjectName("diagnosisCurvePlot");
@@ -256,7 +277,11 @@ DiagnosisView::DiagnosisView(QWidget* parent) : QWidget(parent) {
   grid->addWidget(shrinkPlot_, 1, 1);
   auto* plots = new QWidget();
   plots->setLayout(grid);
+  return plots;
+}
 
+// The plots above the diagnosis' text, or the placeholder in their stead.
+QStackedWidget* DiagnosisView::buildResultStack(QWidget* plots) {
   text_ = new QPlainTextEdit();
   text_->setObjectName("diagnosisText");
   text_->setReadOnly(true);
@@ -282,13 +307,7 @@ DiagnosisView::DiagnosisView(QWidget* parent) : QWidget(parent) {
   stack_ = new QStackedWidget();
   stack_->addWidget(placeholder_);
   stack_->addWidget(split);
-  layout->addWidget(stack_, 1);
-
-  gapMap_ = new QwtPlotSpectrogram();
-  gapMap_->setRenderThreadCount(1);
-  gapMap_->attach(gapMapPlot_);
-  connect(pointCombo_, qOverload<int>(&QComboBox::currentIndexChanged), this, &DiagnosisView::showPoint);
-  showMessage(tr("Run or open a session, then press Diagnose in the Results view."));
+  return stack_;
 }
 
 QString DiagnosisView::verdictText() const { return verdict_->text(); }

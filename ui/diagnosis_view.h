@@ -18,6 +18,7 @@
 class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
+class QHBoxLayout;
 class QLabel;
 class QPlainTextEdit;
 class QProgressBar;
@@ -82,6 +83,13 @@ class DiagnosisView : public QWidget {
   void cancelRequested();
 
  private:
+  // The constructor's sections, top to bottom.
+  QHBoxLayout* buildVerdictRow();
+  QHBoxLayout* buildNoiseRow();
+  QWidget* buildProgressRow();
+  QWidget* buildPlots();
+  QStackedWidget* buildResultStack(QWidget* plots);
+
   void showPoint(int position);
   void showGapMap();
   void showShrink();

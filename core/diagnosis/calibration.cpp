@@ -99,6 +99,287 @@ double readingQuantumDeg(const Recording& used) {
   return steps / quanta;
 }
 
+// ---- The stages of calibrateEarthRateAndBias() (its method is described
+// there, below) --------------------------------------------------------------
+
+// The features of the kCalibrationReplays replays, all with zero bias:
+// headings 0, 90 and 180 deg (common random numbers), heading 0 with a
+// second seed (the cells' spread) and heading 0 at the opposite latitude
+// (the vertical's column).
+struct EarthRateReplays {
+  std::vector<double> f0, f0b, f90, f180, otherLatitude;
+};
+
+Result<EarthRateReplays> runEarthRateReplays(const Replay& replay, std::size_t cells, const DiagnosisOptions& options) {
+  Replay base = replay;
+  base.cal.config.fog.biasDegPerH = {0.0, 0.0, 0.0};
+  const std::uint64_t seedA = options.seed + 1000, seedB = options.seed + 1001;
+  const double latitude = base.cal.config.earth.latitudeDeg;
+  struct Run {
+    double headingDeg, latitudeDeg;
+    std::uint64_t seed;
+  };
+  const std::vector<Run> runs = {
+      {0.0, latitude, seedA}, {0.0, latitude, seedB}, {90.0, latitude, seedA}, {180.0, latitude, seedA},
+      {0.0, -latitude, seedA}};
+  static_assert(kCalibrationReplays == 5);
+  std::vector<Result<FeatureSet>> out(runs.size(), Status(StatusCode::kInternal, "not run"));
+  parallelFor(runs.size(), options.threads, [&](std::size_t i) {
+    Replay r = base;
+    r.cal.config.earth.headingDeg = runs[i].headingDeg;
+    r.cal.config.earth.latitudeDeg = runs[i].latitudeDeg;
+    out[i] = r.run(runs[i].seed, {});
+  });
+  if (replay.progress && replay.progress->cancelled()) return cancelledByCaller();
+  for (auto& o : out) {
+    if (!o) return Status(o.status().code(), "replay (Earth-rate calibration): " + o.status().message());
+    if (o->values.size() != cells)
+      return Status(StatusCode::kInternal, "the replay's features do not line up with the session's");
+  }
+  return EarthRateReplays{std::move(out[0]->values), std::move(out[1]->values), std::move(out[2]->values),
+                          std::move(out[3]->values), std::move(out[4]->values)};
+}
+
+// The weighted least-squares problem on the gyro cells the Earth rate
+// reaches, one row a cell, each over the cell's spread: columns 0 and 1 are
+// the horizontal Earth rate's parts times cos h and times -sin h, columns 2
+// to 4 each gyro's bias (deg/h; trend cells only); y is the session's
+// features less the replays' mean, vertical the configured vertical's part.
+struct EarthRateDesign {
+  std::vector<std::size_t> rows;  // the cells (indices into the features)
+  Eigen::MatrixXd a;
+  Eigen::VectorXd y, vertical;
+  Eigen::VectorXd isTrend, inScan, inFrameCheck;  // 1 or 0 a row
+  std::vector<Eigen::Index> biasCols;              // the bias columns some row sees
+
+  // What of `target` is left once the horizontal Earth rate at hDeg is taken out.
+  Eigen::VectorXd rest(const Eigen::VectorXd& target, double hDeg) const {
+    const double h = hDeg * kRadPerDeg;
+    return target - std::cos(h) * a.col(0) + std::sin(h) * a.col(1);
+  }
+};
+
+// Nothing (with a note) when the plan gives too few cells to check the frame.
+std::optional<EarthRateDesign> earthRateDesign(const std::vector<FeatureKey>& keys, const std::vector<double>& real,
+                                               const EarthRateReplays& f, std::vector<std::string>& notes) {
+  std::map<GroupKey, std::pair<double, double>> spread;  // sum of squares, count
+  for (std::size_t i = 0; i < keys.size(); ++i) {
+    auto& g = spread[groupKey(keys[i])];
+    g.first += 0.5 * (f.f0[i] - f.f0b[i]) * (f.f0[i] - f.f0b[i]);
+    g.second += 1.0;
+  }
+  EarthRateDesign d;
+  for (std::size_t i = 0; i < keys.size(); ++i)
+    // The Earth rate a swing modulates is a rate in phase with the angle, an
+    // angle in quadrature with it (and a trend); the in-phase cross cells are
+    // where misalignment shows, so they are left to the effect fit.
+    if (keys[i].channel == Channel::kGyro && (keys[i].quantity == Quantity::kTrend || keys[i].quantity == Quantity::kCrossQuadrature))
+      d.rows.push_back(i);
+  if (d.rows.size() < 6) {
+    notes.push_back("the IMU's frame was not checked: the plan gives too few gyro trend and cross-axis cells");
+    return std::nullopt;
+  }
+  const auto m = static_cast<Eigen::Index>(d.rows.size());
+  d.a = Eigen::MatrixXd::Zero(m, 5);
+  d.y.resize(m);
+  d.vertical.resize(m);
+  for (Eigen::Index r = 0; r < m; ++r) {
+    const std::size_t i = d.rows[static_cast<std::size_t>(r)];
+    const auto& g = spread[groupKey(keys[i])];
+    const double b = 0.5 * (f.f0[i] + f.f180[i]);
+    const double sigma = std::sqrt(g.first / std::max(1.0, g.second) + 1e-6 + 1e-6 * b * b);
+    d.a(r, 0) = 0.5 * (f.f0[i] - f.f180[i]) / sigma;  // times cos h
+    d.a(r, 1) = (b - f.f90[i]) / sigma;               // times -sin h
+    if (keys[i].quantity == Quantity::kTrend) d.a(r, 2 + keys[i].axis) = 1.0 / sigma;  // bias, deg/h
+    d.y(r) = (real[i] - b) / sigma;
+    d.vertical(r) = 0.5 * (f.f0[i] - f.otherLatitude[i]) / sigma;  // the configured vertical's part
+  }
+  for (Eigen::Index j = 2; j < 5; ++j)
+    if (d.a.col(j).squaredNorm() > 0.0) d.biasCols.push_back(j);
+  // Only cells the heading moves by more than their spread take part: where
+  // it does not (gyro y in a swing about X), its columns hold only the
+  // replays' re-drawn quantisation, which a large unmodelled signal there
+  // (g-sensitivity) would turn into a heading. The frame check takes those
+  // cells and the ones turning the vertical over moves by more than theirs.
+  d.isTrend.resize(m);
+  d.inScan.resize(m);
+  d.inFrameCheck.resize(m);
+  for (Eigen::Index r = 0; r < m; ++r) {
+    d.isTrend(r) = keys[d.rows[static_cast<std::size_t>(r)]].quantity == Quantity::kTrend ? 1.0 : 0.0;
+    d.inScan(r) = d.isTrend(r) == 0.0 && std::hypot(d.a(r, 0), d.a(r, 1)) > 2.0 ? 1.0 : 0.0;
+    d.inFrameCheck(r) = d.isTrend(r) == 0.0 && (d.inScan(r) > 0.0 || 2.0 * std::abs(d.vertical(r)) > 2.0) ? 1.0 : 0.0;
+  }
+  if (d.inScan.sum() < 2.0 || d.a.col(0).squaredNorm() + d.a.col(1).squaredNorm() <= 0.0) {
+    notes.push_back("the IMU's frame was not checked: the plan's swings do not turn the Earth rate between the gyros");
+    return std::nullopt;
+  }
+  return d;
+}
+
+// One vertical's heading: the best on the scanned cells, its chi^2's
+// curvature there (per deg^2) and the frame check's cells' chi^2 there.
+struct HeadingScan {
+  double headingDeg = 0.0, curvature = 0.0, frameChiSquare = 0.0;
+};
+
+// Both verticals' headings, and whether the scanned cells see cos h and sin h.
+struct HeadingScans {
+  bool cosSeen = false, sinSeen = false;
+  Eigen::VectorXd yOther;  // y for the other vertical
+  HeadingScan configured, other;
+};
+
+HeadingScan scanHeading(const EarthRateDesign& d, const Eigen::VectorXd& target, bool cosSeen, bool sinSeen) {
+  auto allowed = [&](int k) {
+    const double h = k * kRadPerDeg;
+    return (cosSeen || std::cos(h) >= -1e-12) && (sinSeen || std::sin(h) >= -1e-12);
+  };
+  std::vector<double> chi(360);
+  for (int k = 0; k < 360; ++k)
+    chi[static_cast<std::size_t>(k)] = d.rest(target, k).cwiseProduct(d.inScan).squaredNorm();
+  int best = -1;
+  for (int k = 0; k < 360; ++k)
+    if (allowed(k) && (best < 0 || chi[static_cast<std::size_t>(k)] < chi[static_cast<std::size_t>(best)])) best = k;
+  const double cm = chi[static_cast<std::size_t>((best + 359) % 360)], c0 = chi[static_cast<std::size_t>(best)],
+               cp = chi[static_cast<std::size_t>((best + 1) % 360)];
+  HeadingScan s;
+  s.curvature = cm - 2.0 * c0 + cp;  // per deg^2
+  const double offset = s.curvature > 0.0 ? std::clamp(0.5 * (cm - cp) / s.curvature, -0.5, 0.5) : 0.0;
+  s.headingDeg = best + offset;
+  if (s.headingDeg > 180.0) s.headingDeg -= 360.0;
+  s.frameChiSquare = d.rest(target, s.headingDeg).cwiseProduct(d.inFrameCheck).squaredNorm();
+  return s;
+}
+
+// The horizontal Earth rate's size is the stated latitude's; its
+// direction is searched (1-deg grid, then a parabola through the best
+// three) on the quadrature cross cells alone, where the biases do not
+// reach; then the biases are the trend cells' least-squares part at that
+// heading (setHeadingAndBiases()). (Fitting both on all cells let an
+// effect's trend pattern, e.g. g-sensitivity's -k cos(angle) on the
+// vertical gyro, pull the heading.)
+HeadingScans scanHeadings(const EarthRateDesign& d) {
+  HeadingScans s;
+  // A component the scanned cells do not see (less than 1 chi^2 between
+  // none and all of the horizontal Earth rate along it) leaves the heading
+  // two-fold: only X swings see sin h alone, so h and 180 - h fit alike,
+  // and the tie used to go to whichever rounded lower (180 deg for a table
+  // at 0). The convention is then cos h >= 0 (or sin h >= 0), and the note
+  // says so.
+  s.cosSeen = d.a.col(0).cwiseProduct(d.inScan).squaredNorm() >= 1.0;
+  s.sinSeen = d.a.col(1).cwiseProduct(d.inScan).squaredNorm() >= 1.0;
+  s.yOther = d.y + 2.0 * d.vertical;
+  s.configured = scanHeading(d, d.y, s.cosSeen, s.sinSeen);
+  s.other = scanHeading(d, s.yOther, s.cosSeen, s.sinSeen);
+  return s;
+}
+
+// The frame check. The vertical Earth rate the data show, as a multiple
+// alpha of the configured vertical's (+1: as configured, -1: turned over),
+// at the configured vertical's best heading (the heading scan's cells do
+// not see the vertical). An isotropic g-sensitivity k shifts alpha by
+// k g / (Omega sin lat) and cannot be told from it, so the frame is turned
+// over only when the data need alpha < -1/2 (a k beyond 1.5 Omega sin(lat)
+// / g in the configured frame, 14.5 deg/h/g at 40 deg), 5 sigma clear of
+// that boundary; a decision needs sigma(alpha) <= 0.3. Sets `frame` but its
+// zUp, with a note; true when the replays are to use the other vertical.
+bool checkFrame(FrameCheck& frame, bool configuredUp, const ImuFrame& stated, const EarthRateDesign& d,
+                const HeadingScans& s, std::vector<std::string>& notes) {
+  const Eigen::VectorXd v = d.vertical.cwiseProduct(d.inFrameCheck);
+  const double information = v.squaredNorm();
+  frame.checked = information > 0.0 && 1.0 / std::sqrt(information) <= 0.3;
+  bool useOther = false;
+  // What the replays use when the data cannot decide the vertical.
+  const std::string fallback =
+      stated.stated() ? "the stated frame is used" : "z down is assumed: state the IMU's frame";
+  if (frame.checked) {
+    frame.verticalRatio = 1.0 + d.rest(d.y, s.configured.headingDeg).cwiseProduct(d.inFrameCheck).dot(v) / information;
+    frame.verticalRatioStd = 1.0 / std::sqrt(information);
+    frame.chiSquareDown = configuredUp ? s.other.frameChiSquare : s.configured.frameChiSquare;
+    frame.chiSquareUp = configuredUp ? s.configured.frameChiSquare : s.other.frameChiSquare;
+    constexpr double kBoundary = -0.5;
+    frame.decisive = std::abs(frame.verticalRatio - kBoundary) > 5.0 * frame.verticalRatioStd;
+    useOther = frame.decisive && frame.verticalRatio < kBoundary;
+    const bool dataUp = useOther != configuredUp;
+    frame.contradicted = stated.stated() && frame.decisive && dataUp != stated.zUp();
+    const std::string ratio = "vertical Earth rate " + fmt("%+.2f", frame.verticalRatio) + " +- " +
+                              fmt("%.2f", frame.verticalRatioStd) + " of the z-" + (configuredUp ? "up" : "down") +
+                              " frame's";
+    const std::string shown = std::string("the data show the IMU's z axis ") + (dataUp ? "up" : "down") + " (" +
+                              ratio + ")";
+    if (!frame.decisive)
+      notes.push_back("the data cannot tell the IMU's z axis up from down (" + ratio + "); " + fallback);
+    else if (frame.contradicted)
+      notes.push_back(shown + "; the bench constants state " + describeImuFrame(stated) +
+                      ": the replays use the frame the data show; a latitude of the wrong sign looks the same");
+    else if (!stated.stated())
+      notes.push_back(shown + "; the bench constants do not state the IMU's frame, so the replays use the one found: "
+                              "state it in the bench constants (a latitude of the wrong sign looks the same)");
+    else
+      notes.push_back(shown + ", as the bench constants state");
+  } else {
+    notes.push_back("the IMU's frame was not checked: the plan's swings do not turn the vertical Earth rate between "
+                    "the gyros; " + fallback);
+  }
+  return useOther;
+}
+
+// Sets the replays' vertical (the other one when useOther), the heading
+// (and its spread) and the biases fitted at it, with notes; then validates
+// the calibrated chain. Refuses (kInternal) a heading or bias that is not
+// finite.
+Status setHeadingAndBiases(Calibration& cal, const ImuFrame& stated, const EarthRateDesign& d, const HeadingScans& s,
+                           bool useOther, std::vector<std::string>& notes) {
+  const bool configuredUp = cal.config.earth.zUp;
+  // The other vertical is the configured frame with y and z turned over:
+  // its heading is the scan's, negated.
+  const HeadingScan& chosen = useOther ? s.other : s.configured;
+  const Eigen::VectorXd& target = useOther ? s.yOther : d.y;
+  cal.frame.zUp = useOther ? !configuredUp : configuredUp;
+  cal.config.earth.zUp = cal.frame.zUp;
+  // (When sin h is unseen, h and -h fit alike: the one with sin h >= 0.)
+  double heading = useOther && s.sinSeen ? -chosen.headingDeg : chosen.headingDeg;
+  // The biases at the heading used, in the configured frame's terms (the
+  // other frame's heading is the configured one's negated).
+  const double configuredHeading = useOther ? -heading : heading;
+  Eigen::MatrixXd t(d.a.rows(), static_cast<Eigen::Index>(d.biasCols.size()));
+  for (std::size_t j = 0; j < d.biasCols.size(); ++j) t.col(static_cast<Eigen::Index>(j)) = d.a.col(d.biasCols[j]);
+  const auto qr = t.colPivHouseholderQr();
+  Eigen::VectorXd biases = d.biasCols.empty()
+                               ? Eigen::VectorXd()
+                               : Eigen::VectorXd(qr.solve(d.rest(target, configuredHeading).cwiseProduct(d.isTrend)));
+  // From finite features the scan is finite; a replay's NaN would otherwise
+  // surface as "heading must be within [-360, 360] deg".
+  if (!std::isfinite(heading) || !biases.allFinite())
+    return Status(StatusCode::kInternal, "the Earth-rate calibration gave a heading of " + fmt("%g", heading) +
+                                             " deg or biases that are not finite numbers; nothing was concluded");
+  cal.headingDeg = heading;
+  cal.headingStdDeg = chosen.curvature > 0.0 ? std::sqrt(2.0 / chosen.curvature) : 180.0;
+  cal.config.earth.headingDeg = heading;
+  notes.push_back("heading " + fmt("%.1f", heading) + " +- " + fmt("%.1f", cal.headingStdDeg) +
+                  " deg, from the Earth rate the gyros see as the table turns" +
+                  (s.cosSeen && s.sinSeen ? std::string()
+                                          : std::string("; ") + (s.cosSeen ? "sin h" : "cos h") +
+                                                " is taken >= 0: the plan's swings do not show its sign"));
+  if (const auto statedHeading = stated.xHeadingDeg();
+      statedHeading && s.cosSeen && s.sinSeen && !cal.frame.contradicted) {
+    const double off = std::remainder(heading - *statedHeading, 360.0);
+    if (std::abs(off) > std::max(10.0, 3.0 * cal.headingStdDeg))
+      notes.push_back("the heading the data show, " + fmt("%.1f", heading) + " deg, is " + fmt("%.1f", off) +
+                      " deg from the stated frame's (" + fmt("%.1f", *statedHeading) +
+                      " deg for x): check the bench's heading; the replays use the one found");
+  }
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(5);
+  for (std::size_t j = 0; j < d.biasCols.size(); ++j) x(d.biasCols[j]) = biases(static_cast<Eigen::Index>(j));
+  // The biases were fitted at the heading the columns describe; the trend
+  // cells of the calibrated replay then match on average.
+  for (int ax = 0; ax < kAxisCount; ++ax) {
+    cal.biasDegPerH[static_cast<std::size_t>(ax)] = x(2 + ax);
+    cal.config.fog.biasDegPerH[static_cast<std::size_t>(ax)] = std::clamp(x(2 + ax), -3000.0, 3000.0);
+  }
+  return cal.config.validate();
+}
+
 }  // namespace
 
 // The table's heading is not in a session, and the Earth rate it turns into
@@ -125,219 +406,12 @@ Status calibrateEarthRateAndBias(Replay& replay, const std::vector<FeatureKey>& 
   cal.frame = FrameCheck{};
   cal.frame.stated = stated;
   cal.frame.zUp = cal.config.earth.zUp;
-  Replay base = replay;
-  base.cal.config.fog.biasDegPerH = {0.0, 0.0, 0.0};
-  const std::uint64_t seedA = options.seed + 1000, seedB = options.seed + 1001;
-  const double latitude = base.cal.config.earth.latitudeDeg;
-  struct Run {
-    double headingDeg, latitudeDeg;
-    std::uint64_t seed;
-  };
-  const std::vector<Run> runs = {
-      {0.0, latitude, seedA}, {0.0, latitude, seedB}, {90.0, latitude, seedA}, {180.0, latitude, seedA},
-      {0.0, -latitude, seedA}};
-  static_assert(kCalibrationReplays == 5);
-  std::vector<Result<FeatureSet>> out(runs.size(), Status(StatusCode::kInternal, "not run"));
-  parallelFor(runs.size(), options.threads, [&](std::size_t i) {
-    Replay r = base;
-    r.cal.config.earth.headingDeg = runs[i].headingDeg;
-    r.cal.config.earth.latitudeDeg = runs[i].latitudeDeg;
-    out[i] = r.run(runs[i].seed, {});
-  });
-  if (replay.progress && replay.progress->cancelled()) return cancelledByCaller();
-  for (auto& o : out) {
-    if (!o) return Status(o.status().code(), "replay (Earth-rate calibration): " + o.status().message());
-    if (o->values.size() != real.size())
-      return Status(StatusCode::kInternal, "the replay's features do not line up with the session's");
-  }
-  const auto& f0 = out[0]->values;
-  const auto& f0b = out[1]->values;
-  const auto& f90 = out[2]->values;
-  const auto& f180 = out[3]->values;
-  const auto& fOtherLatitude = out[4]->values;
-  std::map<GroupKey, std::pair<double, double>> spread;  // sum of squares, count
-  for (std::size_t i = 0; i < keys.size(); ++i) {
-    auto& g = spread[groupKey(keys[i])];
-    g.first += 0.5 * (f0[i] - f0b[i]) * (f0[i] - f0b[i]);
-    g.second += 1.0;
-  }
-  std::vector<std::size_t> rows;
-  for (std::size_t i = 0; i < keys.size(); ++i)
-    // The Earth rate a swing modulates is a rate in phase with the angle, an
-    // angle in quadrature with it (and a trend); the in-phase cross cells are
-    // where misalignment shows, so they are left to the effect fit.
-    if (keys[i].channel == Channel::kGyro && (keys[i].quantity == Quantity::kTrend || keys[i].quantity == Quantity::kCrossQuadrature))
-      rows.push_back(i);
-  if (rows.size() < 6) {
-    notes.push_back("the IMU's frame was not checked: the plan gives too few gyro trend and cross-axis cells");
-    return Status::ok();
-  }
-  const auto m = static_cast<Eigen::Index>(rows.size());
-  Eigen::MatrixXd a = Eigen::MatrixXd::Zero(m, 5);
-  Eigen::VectorXd y(m), vertical(m);
-  for (Eigen::Index r = 0; r < m; ++r) {
-    const std::size_t i = rows[static_cast<std::size_t>(r)];
-    const auto& g = spread[groupKey(keys[i])];
-    const double b = 0.5 * (f0[i] + f180[i]);
-    const double sigma = std::sqrt(g.first / std::max(1.0, g.second) + 1e-6 + 1e-6 * b * b);
-    a(r, 0) = 0.5 * (f0[i] - f180[i]) / sigma;  // times cos h
-    a(r, 1) = (b - f90[i]) / sigma;             // times -sin h
-    if (keys[i].quantity == Quantity::kTrend) a(r, 2 + keys[i].axis) = 1.0 / sigma;  // bias, deg/h
-    y(r) = (real[i] - b) / sigma;
-    vertical(r) = 0.5 * (f0[i] - fOtherLatitude[i]) / sigma;  // the configured vertical's part
-  }
-  // The horizontal Earth rate's size is the stated latitude's; its
-  // direction is searched (1-deg grid, then a parabola through the best
-  // three) on the quadrature cross cells alone, where the biases do not
-  // reach; then the biases are the trend cells' least-squares part at that
-  // heading. (Fitting both on all cells let an effect's trend pattern, e.g.
-  // g-sensitivity's -k cos(angle) on the vertical gyro, pull the heading.)
-  std::vector<Eigen::Index> biasCols;
-  for (Eigen::Index j = 2; j < 5; ++j)
-    if (a.col(j).squaredNorm() > 0.0) biasCols.push_back(j);
-  // Only cells the heading moves by more than their spread take part: where
-  // it does not (gyro y in a swing about X), its columns hold only the
-  // replays' re-drawn quantisation, which a large unmodelled signal there
-  // (g-sensitivity) would turn into a heading. The frame check takes those
-  // cells and the ones turning the vertical over moves by more than theirs.
-  Eigen::VectorXd isTrend(m), inScan(m), inFrameCheck(m);
-  for (Eigen::Index r = 0; r < m; ++r) {
-    isTrend(r) = keys[rows[static_cast<std::size_t>(r)]].quantity == Quantity::kTrend ? 1.0 : 0.0;
-    inScan(r) = isTrend(r) == 0.0 && std::hypot(a(r, 0), a(r, 1)) > 2.0 ? 1.0 : 0.0;
-    inFrameCheck(r) = isTrend(r) == 0.0 && (inScan(r) > 0.0 || 2.0 * std::abs(vertical(r)) > 2.0) ? 1.0 : 0.0;
-  }
-  Eigen::MatrixXd t(m, static_cast<Eigen::Index>(biasCols.size()));
-  for (std::size_t j = 0; j < biasCols.size(); ++j) t.col(static_cast<Eigen::Index>(j)) = a.col(biasCols[j]);
-  const auto qr = t.colPivHouseholderQr();
-  auto rest = [&](const Eigen::VectorXd& target, double hDeg) -> Eigen::VectorXd {
-    const double h = hDeg * kRadPerDeg;
-    return target - std::cos(h) * a.col(0) + std::sin(h) * a.col(1);
-  };
-  if (inScan.sum() < 2.0 || a.col(0).squaredNorm() + a.col(1).squaredNorm() <= 0.0) {
-    notes.push_back("the IMU's frame was not checked: the plan's swings do not turn the Earth rate between the gyros");
-    return Status::ok();
-  }
-  // A component the scanned cells do not see (less than 1 chi^2 between
-  // none and all of the horizontal Earth rate along it) leaves the heading
-  // two-fold: only X swings see sin h alone, so h and 180 - h fit alike,
-  // and the tie used to go to whichever rounded lower (180 deg for a table
-  // at 0). The convention is then cos h >= 0 (or sin h >= 0), and the note
-  // says so.
-  const bool cosSeen = a.col(0).cwiseProduct(inScan).squaredNorm() >= 1.0;
-  const bool sinSeen = a.col(1).cwiseProduct(inScan).squaredNorm() >= 1.0;
-  auto allowed = [&](int k) {
-    const double h = k * kRadPerDeg;
-    return (cosSeen || std::cos(h) >= -1e-12) && (sinSeen || std::sin(h) >= -1e-12);
-  };
-  struct Scan {
-    double headingDeg = 0.0, curvature = 0.0, frameChiSquare = 0.0;
-  };
-  auto scan = [&](const Eigen::VectorXd& target) {
-    std::vector<double> chi(360);
-    for (int k = 0; k < 360; ++k) chi[static_cast<std::size_t>(k)] = rest(target, k).cwiseProduct(inScan).squaredNorm();
-    int best = -1;
-    for (int k = 0; k < 360; ++k)
-      if (allowed(k) && (best < 0 || chi[static_cast<std::size_t>(k)] < chi[static_cast<std::size_t>(best)])) best = k;
-    const double cm = chi[static_cast<std::size_t>((best + 359) % 360)], c0 = chi[static_cast<std::size_t>(best)],
-                 cp = chi[static_cast<std::size_t>((best + 1) % 360)];
-    Scan s;
-    s.curvature = cm - 2.0 * c0 + cp;  // per deg^2
-    const double offset = s.curvature > 0.0 ? std::clamp(0.5 * (cm - cp) / s.curvature, -0.5, 0.5) : 0.0;
-    s.headingDeg = best + offset;
-    if (s.headingDeg > 180.0) s.headingDeg -= 360.0;
-    s.frameChiSquare = rest(target, s.headingDeg).cwiseProduct(inFrameCheck).squaredNorm();
-    return s;
-  };
-  const Eigen::VectorXd yOther = y + 2.0 * vertical;
-  const Scan configured = scan(y), other = scan(yOther);
-  // The frame check. The vertical Earth rate the data show, as a multiple
-  // alpha of the configured vertical's (+1: as configured, -1: turned over),
-  // at the configured vertical's best heading (the heading scan's cells do
-  // not see the vertical). An isotropic g-sensitivity k shifts alpha by
-  // k g / (Omega sin lat) and cannot be told from it, so the frame is turned
-  // over only when the data need alpha < -1/2 (a k beyond 1.5 Omega sin(lat)
-  // / g in the configured frame, 14.5 deg/h/g at 40 deg), 5 sigma clear of
-  // that boundary; a decision needs sigma(alpha) <= 0.3.
-  FrameCheck& frame = cal.frame;
-  const bool configuredUp = cal.config.earth.zUp;
-  const Eigen::VectorXd v = vertical.cwiseProduct(inFrameCheck);
-  const double information = v.squaredNorm();
-  frame.checked = information > 0.0 && 1.0 / std::sqrt(information) <= 0.3;
-  bool useOther = false;
-  // What the replays use when the data cannot decide the vertical.
-  const std::string fallback =
-      stated.stated() ? "the stated frame is used" : "z down is assumed: state the IMU's frame";
-  if (frame.checked) {
-    frame.verticalRatio = 1.0 + rest(y, configured.headingDeg).cwiseProduct(inFrameCheck).dot(v) / information;
-    frame.verticalRatioStd = 1.0 / std::sqrt(information);
-    frame.chiSquareDown = configuredUp ? other.frameChiSquare : configured.frameChiSquare;
-    frame.chiSquareUp = configuredUp ? configured.frameChiSquare : other.frameChiSquare;
-    constexpr double kBoundary = -0.5;
-    frame.decisive = std::abs(frame.verticalRatio - kBoundary) > 5.0 * frame.verticalRatioStd;
-    useOther = frame.decisive && frame.verticalRatio < kBoundary;
-    const bool dataUp = useOther != configuredUp;
-    frame.contradicted = stated.stated() && frame.decisive && dataUp != stated.zUp();
-    const std::string ratio = "vertical Earth rate " + fmt("%+.2f", frame.verticalRatio) + " +- " +
-                              fmt("%.2f", frame.verticalRatioStd) + " of the z-" + (configuredUp ? "up" : "down") +
-                              " frame's";
-    const std::string shown = std::string("the data show the IMU's z axis ") + (dataUp ? "up" : "down") + " (" +
-                              ratio + ")";
-    if (!frame.decisive)
-      notes.push_back("the data cannot tell the IMU's z axis up from down (" + ratio + "); " + fallback);
-    else if (frame.contradicted)
-      notes.push_back(shown + "; the bench constants state " + describeImuFrame(stated) +
-                      ": the replays use the frame the data show; a latitude of the wrong sign looks the same");
-    else if (!stated.stated())
-      notes.push_back(shown + "; the bench constants do not state the IMU's frame, so the replays use the one found: "
-                              "state it in the bench constants (a latitude of the wrong sign looks the same)");
-    else
-      notes.push_back(shown + ", as the bench constants state");
-  } else {
-    notes.push_back("the IMU's frame was not checked: the plan's swings do not turn the vertical Earth rate between "
-                    "the gyros; " + fallback);
-  }
-  // The other vertical is the configured frame with y and z turned over:
-  // its heading is the scan's, negated.
-  const Scan& chosen = useOther ? other : configured;
-  const Eigen::VectorXd& target = useOther ? yOther : y;
-  frame.zUp = useOther ? !configuredUp : configuredUp;
-  cal.config.earth.zUp = frame.zUp;
-  // (When sin h is unseen, h and -h fit alike: the one with sin h >= 0.)
-  double heading = useOther && sinSeen ? -chosen.headingDeg : chosen.headingDeg;
-  // The biases at the heading used, in the configured frame's terms (the
-  // other frame's heading is the configured one's negated).
-  const double configuredHeading = useOther ? -heading : heading;
-  Eigen::VectorXd biases =
-      biasCols.empty() ? Eigen::VectorXd() : Eigen::VectorXd(qr.solve(rest(target, configuredHeading).cwiseProduct(isTrend)));
-  // From finite features the scan is finite; a replay's NaN would otherwise
-  // surface as "heading must be within [-360, 360] deg".
-  if (!std::isfinite(heading) || !biases.allFinite())
-    return Status(StatusCode::kInternal, "the Earth-rate calibration gave a heading of " + fmt("%g", heading) +
-                                             " deg or biases that are not finite numbers; nothing was concluded");
-  cal.headingDeg = heading;
-  cal.headingStdDeg = chosen.curvature > 0.0 ? std::sqrt(2.0 / chosen.curvature) : 180.0;
-  cal.config.earth.headingDeg = heading;
-  notes.push_back("heading " + fmt("%.1f", heading) + " +- " + fmt("%.1f", cal.headingStdDeg) +
-                  " deg, from the Earth rate the gyros see as the table turns" +
-                  (cosSeen && sinSeen ? std::string()
-                                      : std::string("; ") + (cosSeen ? "sin h" : "cos h") +
-                                            " is taken >= 0: the plan's swings do not show its sign"));
-  if (const auto statedHeading = stated.xHeadingDeg(); statedHeading && cosSeen && sinSeen && !frame.contradicted) {
-    const double off = std::remainder(heading - *statedHeading, 360.0);
-    if (std::abs(off) > std::max(10.0, 3.0 * cal.headingStdDeg))
-      notes.push_back("the heading the data show, " + fmt("%.1f", heading) + " deg, is " + fmt("%.1f", off) +
-                      " deg from the stated frame's (" + fmt("%.1f", *statedHeading) +
-                      " deg for x): check the bench's heading; the replays use the one found");
-  }
-  Eigen::VectorXd x = Eigen::VectorXd::Zero(5);
-  for (std::size_t j = 0; j < biasCols.size(); ++j) x(biasCols[j]) = biases(static_cast<Eigen::Index>(j));
-  // The biases were fitted at the heading the columns describe; the trend
-  // cells of the calibrated replay then match on average.
-  for (int ax = 0; ax < kAxisCount; ++ax) {
-    cal.biasDegPerH[static_cast<std::size_t>(ax)] = x(2 + ax);
-    cal.config.fog.biasDegPerH[static_cast<std::size_t>(ax)] = std::clamp(x(2 + ax), -3000.0, 3000.0);
-  }
-  return cal.config.validate();
+  FOG_ASSIGN_OR_RETURN(const EarthRateReplays replays, runEarthRateReplays(replay, real.size(), options));
+  const std::optional<EarthRateDesign> design = earthRateDesign(keys, real, replays, notes);
+  if (!design) return Status::ok();
+  const HeadingScans scans = scanHeadings(*design);
+  const bool useOther = checkFrame(cal.frame, cal.config.earth.zUp, stated, *design, scans, notes);
+  return setHeadingAndBiases(cal, stated, *design, scans, useOther, notes);
 }
 
 Result<AnalysedSession> analyseSession(const Recording& recording, const BenchConstants& constants,
