@@ -749,7 +749,14 @@ void ResultView::showZeroCrossing(std::size_t i) {
     zeroMarkers_.push_back(m);
   };
   marker(0.0, tr("table crosses zero"), Qt::AlignLeft | Qt::AlignTop, Qt::DotLine);
-  marker(lagMs, tr("+ fitted lag %1 ms").arg(num(lagMs, 4)), Qt::AlignRight | Qt::AlignTop, Qt::SolidLine);
+  // A refused lag is marked refused on the plot too.
+  const session::ShownVerdict shown = outcome_->shownVerdict();
+  const session::ShownPoint* sp = shown.point(p.index);
+  marker(lagMs,
+         sp && sp->vouched() ? tr("+ fitted lag %1 ms").arg(num(lagMs, 4))
+                             : tr("+ fitted lag %1 ms, refused (%2)")
+                                   .arg(num(lagMs, 4), verdictWord(sp ? sp->verdict : session::ShownVerdictKind::kNone)),
+         Qt::AlignRight | Qt::AlignTop, Qt::SolidLine);
   auto* zero = new QwtPlotMarker();
   zero->setLineStyle(QwtPlotMarker::HLine);
   zero->setLinePen(QPen(QColor(160, 160, 160), 1, Qt::DotLine));

@@ -798,7 +798,7 @@
 <context>
     <name>fog::ui::ConfigureView</name>
     <message>
-        <location filename="../../ui/configure_view.cpp" line="+31"/>
+        <location filename="../../ui/configure_view.cpp" line="+50"/>
         <source>Test plan</source>
         <translation>测试计划</translation>
     </message>
@@ -808,7 +808,7 @@
         <translation>转台指令运动</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+12"/>
         <location line="+28"/>
         <source>Source</source>
         <translation>数据源</translation>
@@ -879,7 +879,7 @@
         <translation>回放</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+21"/>
         <source>The sampling board&apos;s serial port</source>
         <translation>采样板的串口</translation>
     </message>
@@ -934,7 +934,7 @@
         <translation>转台</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+19"/>
         <source>Session</source>
         <translation>会话</translation>
     </message>
@@ -974,7 +974,7 @@
         <translation>备注</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+21"/>
         <source>Bench constants</source>
         <translation>测试台常数</translation>
     </message>
@@ -989,7 +989,7 @@
         <translation>编辑测试台常数</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="-118"/>
         <source>Session to replay</source>
         <translation>要回放的会话</translation>
     </message>
@@ -999,12 +999,12 @@
         <translation>fogbench 会话 (*.fbs)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+95"/>
         <source>Session folder</source>
         <translation>会话文件夹</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+46"/>
         <source>%1× real time</source>
         <translation>%1 倍实时</translation>
     </message>
@@ -1036,12 +1036,12 @@ counter %5 MHz / %6 bit</source>
 <context>
     <name>fog::ui::DiagnosisView</name>
     <message>
-        <location filename="../../ui/diagnosis_view.cpp" line="+121"/>
+        <location filename="../../ui/diagnosis_view.cpp" line="+136"/>
         <source>Test point</source>
         <translation>测试点</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+17"/>
         <source>IMU bias instability known:</source>
         <translation>已知 IMU 零偏不稳定性：</translation>
     </message>
@@ -1066,7 +1066,7 @@ counter %5 MHz / %6 bit</source>
         <translation> s</translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+41"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
@@ -1081,7 +1081,7 @@ counter %5 MHz / %6 bit</source>
         <translation>正在取消 …</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
         <source>Gyro residual: real and simulated</source>
         <translation>陀螺残差：实测与仿真</translation>
     </message>
@@ -1117,12 +1117,12 @@ counter %5 MHz / %6 bit</source>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+361"/>
+        <location line="+359"/>
         <source>Held-out shrink per candidate effect</source>
         <translation>各候选效应在留出数据上的差异缩减</translation>
     </message>
     <message>
-        <location line="-361"/>
+        <location line="-359"/>
         <source>held-out gap closed (%)</source>
         <translation>留出数据差异缩减 (%)</translation>
     </message>
@@ -1132,12 +1132,12 @@ counter %5 MHz / %6 bit</source>
         <translation>″</translation>
     </message>
     <message>
-        <location line="+67"/>
+        <location line="-121"/>
         <source>Run or open a session, then press Diagnose in the Results view.</source>
         <translation>请运行或打开一个会话，然后在“结果”视图中按“诊断”。</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+195"/>
         <source>calibrating the replay to the session</source>
         <translation>按会话标定回放</translation>
     </message>
@@ -3083,24 +3083,24 @@ File: %1</source>
         <translation>签署</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+85"/>
         <source>Bench constants</source>
         <translation>测试台常数</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+293"/>
+        <location line="+228"/>
         <source>quantity</source>
         <translation>量</translation>
     </message>
     <message>
-        <location line="-292"/>
-        <location line="+377"/>
+        <location line="-227"/>
+        <location line="+312"/>
         <source>value</source>
         <translation>数值</translation>
     </message>
     <message>
-        <location line="-376"/>
+        <location line="-311"/>
         <source>std. uncertainty</source>
         <translation>标准不确定度</translation>
     </message>
@@ -3192,12 +3192,12 @@ File: %1</source>
     </message>
     <message>
         <location line="-17"/>
-        <location line="+389"/>
+        <location line="+324"/>
         <source>frequency (Hz)</source>
         <translation>频率 (Hz)</translation>
     </message>
     <message>
-        <location line="-388"/>
+        <location line="-323"/>
         <source>amplitude (°)</source>
         <translation>幅值 (°)</translation>
     </message>
@@ -3243,7 +3243,7 @@ File: %1</source>
         <translation>未给出</translation>
     </message>
     <message>
-        <location line="-250"/>
+        <location line="-324"/>
         <source>SIMULATED DATA — not a measurement of a real IMU</source>
         <translation>仿真数据 —— 并非对真实 IMU 的测量</translation>
     </message>
@@ -3263,7 +3263,7 @@ File: %1</source>
         <translation>未计入 %1 个被拒绝的测试点：其有效性检查未通过。</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+108"/>
         <source>the stream&apos;s statement, else the bench constant: turns pulses into degrees</source>
         <translation>数据流给出的值，否则为测试台常数：把脉冲换算为度</translation>
     </message>
@@ -3328,7 +3328,7 @@ File: %1</source>
         <translation>跳过字节</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="-145"/>
         <source>Delay budget</source>
         <translation>延迟预算</translation>
     </message>
@@ -3344,12 +3344,12 @@ File: %1</source>
     </message>
     <message>
         <location line="+12"/>
-        <location line="+54"/>
+        <location line="+140"/>
         <source>#%1: %2</source>
         <translation>#%1：%2</translation>
     </message>
     <message>
-        <location line="-53"/>
+        <location line="-139"/>
         <source>#%1: refused (%2, %3)</source>
         <translation>#%1：被拒绝（%2，%3）</translation>
     </message>
@@ -3365,12 +3365,12 @@ File: %1</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+192"/>
+        <location line="+278"/>
         <source>basis</source>
         <translation>依据</translation>
     </message>
     <message>
-        <location line="-191"/>
+        <location line="-277"/>
         <source>measured (ms)</source>
         <translation>测量值 (ms)</translation>
     </message>
@@ -3415,7 +3415,7 @@ File: %1</source>
         <translation>按论文参数的理论值：光纤 %1 m（本征周期 %2 µs），回路延迟 ≤ %3 个本征周期，脉冲输出每 %4 ms 更新，处理板时钟 %5 MHz，%6 字节帧、%7 Mbaud。</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+100"/>
         <source>test point</source>
         <translation>测试点</translation>
     </message>
@@ -4228,7 +4228,7 @@ File: %1</source>
 <context>
     <name>fog::ui::ResultView</name>
     <message>
-        <location filename="../../ui/result_view.cpp" line="+41"/>
+        <location filename="../../ui/result_view.cpp" line="+55"/>
         <source>Test point</source>
         <translation>测试点</translation>
     </message>
@@ -4258,7 +4258,7 @@ File: %1</source>
         <translation>会话保存对它的每次分析（记录时的、每次重新分析的）及其所用常数和软件版本；所选的一个用于显示、报告和导出</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+25"/>
         <source>Normalised angles and fits</source>
         <translation>归一化角度及拟合</translation>
     </message>
@@ -4378,12 +4378,12 @@ File: %1</source>
         <translation>各测试点的滞后随摆动频率的变化</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+46"/>
         <source>The delay report appears here after a run.</source>
         <translation>运行结束后，延迟报告显示在这里。</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+9"/>
         <location line="+4"/>
         <source>Export plot</source>
         <translation>导出曲线</translation>
@@ -4420,17 +4420,17 @@ File: %1</source>
         <translation>标定报告</translation>
     </message>
     <message>
-        <location line="+111"/>
+        <location line="+110"/>
         <source>result %1 of %2: %7, stored %3 by %4 (%5), %6</source>
         <translation>结果 %1/%2：%7，%3 由 %4（%5）保存，%6</translation>
     </message>
     <message>
-        <location line="-114"/>
+        <location line="-113"/>
         <source>PDF document (*.pdf)</source>
         <translation>PDF 文档 (*.pdf)</translation>
     </message>
     <message>
-        <location line="-39"/>
+        <location line="-54"/>
         <source>Fits</source>
         <translation>拟合</translation>
     </message>
@@ -4450,7 +4450,7 @@ File: %1</source>
         <translation>某轴各测试频率下陀螺角度 / 转台角度的幅值与相位，及对其拟合的延迟模型（伯德图）</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+59"/>
         <source>Delay table (CSV)…</source>
         <translation>延迟表（CSV）…</translation>
     </message>
@@ -4493,7 +4493,7 @@ The session itself is unchanged.</source>
         <translation>打开导出文件夹</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+7"/>
         <source>Lag against swing frequency</source>
         <translation>滞后随摆动频率的变化</translation>
     </message>
@@ -4713,12 +4713,17 @@ The session itself is unchanged.</source>
         <translation>  ·  &lt;span style=&apos;color:#b00000&apos;&gt;运行未完成&lt;/span&gt;</translation>
     </message>
     <message>
-        <location line="+200"/>
+        <location line="+109"/>
+        <source>+ fitted lag %1 ms, refused (%2)</source>
+        <translation>+ 拟合滞后 %1 ms，被拒绝（%2）</translation>
+    </message>
+    <message>
+        <location line="+98"/>
         <source>There is no delay result to export.</source>
         <translation>没有可导出的延迟结果。</translation>
     </message>
     <message>
-        <location line="-177"/>
+        <location line="-184"/>
         <location line="+8"/>
         <location line="+48"/>
         <source>table</source>
@@ -4753,12 +4758,12 @@ The session itself is unchanged.</source>
         <translation>转台过零</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+5"/>
         <source>+ fitted lag %1 ms</source>
         <translation>+ 拟合滞后 %1 ms</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+37"/>
         <source>%1 axis</source>
         <translation>%1 轴</translation>
     </message>
