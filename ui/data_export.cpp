@@ -13,11 +13,7 @@ namespace {
 
 std::string num(double v) { return io::formatDouble(v); }
 
-std::string oneLine(std::string s) {
-  for (char& c : s)
-    if (c == '\n' || c == '\r') c = ' ';
-  return s;
-}
+using session::oneLine;
 
 }  // namespace
 

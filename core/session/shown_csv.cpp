@@ -8,13 +8,13 @@ namespace {
 
 std::string num(double v) { return io::formatDouble(v); }
 
-std::string oneLine(std::string s) {
-  for (char& c : s)
-    if (c == '\n' || c == '\r') c = ' ';
-  return s;
-}
-
 }  // namespace
+
+std::string oneLine(std::string text) {
+  for (char& c : text)
+    if (c == '\n' || c == '\r') c = ' ';
+  return text;
+}
 
 std::string csvField(const std::string& text) {
   const std::string s = oneLine(text);

@@ -22,6 +22,9 @@ namespace fog::session {
 std::string delayBreakdownCsv(const analysis::DelayReport& report, const ShownVerdict& verdict,
                               const std::string& source);
 
+// `text` on one line (a line break becomes a space), for a '#' comment line.
+std::string oneLine(std::string text);
+
 // One CSV field (RFC 4180): quoted when it holds a comma, quote or line break
 // (a line break becomes a space).
 std::string csvField(const std::string& text);

@@ -18,6 +18,17 @@ ShownVerdictKind kindOf(analysis::Verdict v) {
   return ShownVerdictKind::kNone;
 }
 
+// A point with this analysis' numbers (a record's are its own).
+ShownPoint withNumbersOf(const analysis::TestPointResult& a) {
+  ShownPoint p;
+  p.index = a.index;
+  p.lagMs = a.lagMs;
+  p.lagStdMs = a.lagStdMs;
+  p.imuDelayMs = a.imuDelayMs;
+  p.imuDelayStdMs = a.imuDelayStdMs;
+  return p;
+}
+
 // An INCOMPLETE result: no point of it passes; each keeps its data's verdict.
 void markIncomplete(ShownVerdict& v, const std::string& why) {
   v.dataVerdict = v.verdict;
@@ -57,13 +68,8 @@ ShownVerdict fromRecord(const StoredResultRecord& r, const analysis::DelayReport
       v.points.push_back(fromStored(*s));
       continue;
     }
-    ShownPoint p;
-    p.index = a.index;
+    ShownPoint p = withNumbersOf(a);
     p.reasons = {"the stored result has no delay for this test point"};
-    p.lagMs = a.lagMs;
-    p.lagStdMs = a.lagStdMs;
-    p.imuDelayMs = a.imuDelayMs;
-    p.imuDelayStdMs = a.imuDelayStdMs;
     v.points.push_back(std::move(p));
   }
   return v;
@@ -76,15 +82,9 @@ ShownVerdict judgedNow(const analysis::DelayReport& report, double limitMs) {
   v.verdict = v.dataVerdict = kindOf(judged.verdict);
   v.reasons = judged.reasons;
   for (std::size_t i = 0; i < report.points.size() && i < judged.points.size(); ++i) {
-    const auto& a = report.points[i];
-    ShownPoint p;
-    p.index = a.index;
+    ShownPoint p = withNumbersOf(report.points[i]);
     p.verdict = p.dataVerdict = kindOf(judged.points[i].verdict);
     p.reasons = judged.points[i].reasons;
-    p.lagMs = a.lagMs;
-    p.lagStdMs = a.lagStdMs;
-    p.imuDelayMs = a.imuDelayMs;
-    p.imuDelayStdMs = a.imuDelayStdMs;
     v.points.push_back(std::move(p));
   }
   return v;

@@ -15,12 +15,7 @@ file(MAKE_DIRECTORY ${dir})
 if(NOT PDFTOTEXT OR NOT EXISTS "${PDFTOTEXT}")
   message(FATAL_ERROR "pdftotext (poppler-utils) is missing: install it (scripts/setup.sh)")
 endif()
-
-function(cli out_var code_var)
-  execute_process(COMMAND ${CLI} ${ARGN} RESULT_VARIABLE c OUTPUT_VARIABLE o ERROR_VARIABLE e TIMEOUT 300)
-  set(${out_var} "${o}${e}" PARENT_SCOPE)
-  set(${code_var} ${c} PARENT_SCOPE)
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/expect.cmake)
 
 # The value of `quantity` of test point 1 in a delays.csv, and its verdict columns.
 function(delays_row file quantity out_var)
@@ -89,10 +84,7 @@ if(NOT c EQUAL 0 OR NOT o MATCHES "constants given on the command line over the 
 endif()
 
 # 3. The PDF's SHA-256 reads back whole.
-execute_process(COMMAND ${PDFTOTEXT} -layout ${dir}/q.pdf - RESULT_VARIABLE c OUTPUT_VARIABLE text ERROR_VARIABLE e)
-if(NOT c EQUAL 0)
-  message(FATAL_ERROR "pdftotext failed (${c}): ${e}")
-endif()
+pdf_text(${dir}/q.pdf text)
 if(NOT text MATCHES "SHA-256 +[0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f]")
   message(FATAL_ERROR "the PDF's text has no whole 64-digit SHA-256 (ligatures?):\n${text}")
 endif()

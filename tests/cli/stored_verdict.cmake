@@ -15,20 +15,7 @@ file(MAKE_DIRECTORY ${dir})
 if(NOT PDFTOTEXT OR NOT EXISTS "${PDFTOTEXT}")
   message(FATAL_ERROR "pdftotext (poppler-utils) is missing: install it (scripts/setup.sh)")
 endif()
-
-function(cli out_var code_var)
-  execute_process(COMMAND ${CLI} ${ARGN} RESULT_VARIABLE c OUTPUT_VARIABLE o ERROR_VARIABLE e TIMEOUT 300)
-  set(${out_var} "${o}${e}" PARENT_SCOPE)
-  set(${code_var} ${c} PARENT_SCOPE)
-endfunction()
-
-function(pdf_text pdf out_var)
-  execute_process(COMMAND ${PDFTOTEXT} -layout ${pdf} - RESULT_VARIABLE c OUTPUT_VARIABLE o ERROR_VARIABLE e)
-  if(NOT c EQUAL 0)
-    message(FATAL_ERROR "pdftotext ${pdf} failed (${c}): ${e}")
-  endif()
-  set(${out_var} "${o}" PARENT_SCOPE)
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/expect.cmake)
 
 # 1. The invalid stored result.
 set(s ${dir}/reversed.fbs)
