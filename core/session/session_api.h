@@ -4,7 +4,9 @@
 // stream, analyse it again and store the result, and choose the result a view
 // or a report shows. fogbench-cli (analyze, diagnose, noise, report, export,
 // replay) and the desktop bench (open, review, re-analyse, replay, the PDF)
-// call only these, so a session reads, judges and reports the same in both.
+// call only these, so a session reads, judges and reports the same in both
+// (the test source.views_and_commands_judge_no_verdict_and_reach_results_through_the_session_api
+// fails on a view or command that reads or stores a result row itself).
 // Qt-free; docs/sessions.md ("Reading a session: the session API").
 //
 // Contracts:
