@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "core/analysis/least_squares.h"
+#include "core/analysis/statistics.h"
 #include "core/common/units.h"
 
 namespace fog::analysis {
@@ -197,6 +198,31 @@ std::vector<Eigen::VectorXd> startingPoints(ResponseModelKind kind, const std::v
   return starts;
 }
 
+// The model's goodness of fit and physical admissibility (docs/method.md
+// "Frequency response"): adequate when P(chi^2_dof >= chi^2) >= kModelAdequacyP;
+// not admissible, with the reason, when a delay or time constant is negative
+// beyond 3 sigma, or a second order's zeta or f_n sits at its bound 0 (within
+// 3 sigma of it, or the fit ran past it: `unstable`).
+void judgeModel(ResponseModelFit& fit, bool unstable) {
+  fit.pValue = fit.dof > 0 ? chiSquareSurvival(fit.chiSquare, fit.dof) : 1.0;
+  fit.adequate = fit.pValue >= kModelAdequacyP;
+  auto valueText = [](const ResponseParameter& p, const char* unit) {
+    return p.name + " = " + fmt(p.value, 4) + " ± " + fmt(p.stdDev, 2) + unit;
+  };
+  for (const auto& p : fit.parameters) {
+    if (p.name == "tau_ms" && p.value + 3.0 * p.stdDev < 0.0)
+      fit.inadmissible.push_back(valueText(p, " ms") +
+                                 " is negative beyond 3 sigma: the gyro would answer before the table moves");
+    if (p.name == "T_ms" && p.value + 3.0 * p.stdDev < 0.0)
+      fit.inadmissible.push_back(valueText(p, " ms") + " is negative beyond 3 sigma: a lead, not a lag");
+    if ((p.name == "zeta" || p.name == "fn_hz") && !(p.value - 3.0 * p.stdDev > 0.0))
+      fit.inadmissible.push_back(valueText(p, p.name == "fn_hz" ? " Hz" : "") +
+                                 " sits at its bound 0 within 3 sigma: the points do not place the resonance");
+  }
+  if (unstable)
+    fit.inadmissible.push_back("the fit ran past zeta = 0: its poles are unstable (a lead that grows to the resonance)");
+}
+
 Result<ResponseModelFit> fitModel(ResponseModelKind kind, const std::vector<ResponsePoint>& points,
                                   double groupDelayAtHz) {
   const ResponseProblem problem(kind, points);
@@ -219,6 +245,9 @@ Result<ResponseModelFit> fitModel(ResponseModelKind kind, const std::vector<Resp
   ResponseModelFit fit;
   fit.kind = kind;
   Eigen::VectorXd x = best->x;
+  // The second order depends on zeta / f_n only through zeta * f / f_n: both
+  // negative is the stable model, one negative an unstable one (judged below).
+  const bool unstable = kind == ResponseModelKind::kSecondOrder && x[2] * x[3] < 0.0;
   if (kind == ResponseModelKind::kSecondOrder) x[2] = std::abs(x[2]), x[3] = std::abs(x[3]);
   fit.values = x;
   const int k = parameterCount(kind);
@@ -267,7 +296,65 @@ Result<ResponseModelFit> fitModel(ResponseModelKind kind, const std::vector<Resp
     if (names[i] != "tau_ms" && std::abs(x[i]) < 2.0 * fit.parameters[i].stdDev)
       fit.notes.push_back(names[i] + " = " + fmt(x[i], 4) + " ± " + fmt(fit.parameters[i].stdDev, 2) +
                           " is not distinguished from 0 by these points");
+  judgeModel(fit, unstable);
   return fit;
+}
+
+// Why no model is chosen: each model's inadequacy (its p-value) and
+// inadmissibility, as "; "-separated messages after "no model fits: ".
+std::string noModelReason(const std::vector<ResponseModelFit>& models) {
+  if (models.empty()) return "no model fits: none could be fitted";
+  std::string why;
+  auto add = [&why](const std::string& reason) { why += (why.empty() ? "" : "; ") + reason; };
+  for (const auto& m : models) {
+    if (!m.adequate)
+      add(std::string(modelTitle(m.kind)) + " is not adequate: chi^2 " + fmt(m.chiSquare, 5) + " on " +
+          std::to_string(m.dof) + " dof, p = " + fmt(m.pValue, 2) + " below " + fmt(kModelAdequacyP, 3));
+    for (const auto& reason : m.inadmissible) add(std::string(modelTitle(m.kind)) + " is not admissible: " + reason);
+  }
+  return "no model fits: " + why;
+}
+
+// Chooses among the eligible (adequate, admissible) models of `out`.
+void chooseModel(ResponseAnalysis& out) {
+  for (std::size_t i = 0; i < out.models.size(); ++i)
+    if (out.models[i].eligible() && (out.chosen < 0 || out.models[i].aic < out.models[out.chosen].aic))
+      out.chosen = static_cast<int>(i);
+  if (out.chosen < 0) {
+    out.noModelReason = noModelReason(out.models);
+    return;
+  }
+  // A filter is claimed at 3 sigma, as everything the bench names. Each
+  // model nests the simpler ones (the first order is the delay at T = 0;
+  // the second order holds the delay as f_n -> infinity and the first order
+  // as its overdamped limit, one pole fast), and on data of the simpler one
+  // AIC prefers the larger model by chance whenever chi^2 drops by more than
+  // 2 per parameter (16 % for one). The parameters' sigma cannot judge it
+  // near the nesting point (T shows only through (omega T)^2 there: T /
+  // sigma(T) is about twice the likelihood ratio's square root); the chi^2
+  // drop can. A larger model is chosen over a simpler one only when it
+  // lowers chi^2 by the 3-sigma point of chi^2 with its extra parameters'
+  // degrees of freedom (9.0 for one, 11.8 for two); otherwise the simplest
+  // model it does not beat is chosen, and a note on it says why.
+  auto claimAt = [](int extra) { return extra == 1 ? kFilterClaimChiSquareDrop : kTwoParameterClaimChiSquareDrop; };
+  for (bool moved = true; moved && out.chosen >= 0;) {
+    moved = false;
+    const auto c = static_cast<std::size_t>(out.chosen);
+    for (std::size_t i = 0; i < out.models.size(); ++i) {
+      const int extra = parameterCount(out.models[c].kind) - parameterCount(out.models[i].kind);
+      if (extra <= 0 || !out.models[i].eligible()) continue;
+      const double drop = out.models[i].chiSquare - out.models[c].chiSquare;
+      if (drop >= claimAt(extra)) continue;
+      out.models[c].notes.push_back("AIC prefers it to " + std::string(modelTitle(out.models[i].kind)) + " by " +
+                                    fmt(out.models[i].aic - out.models[c].aic, 3) + ", but it lowers chi^2 by " +
+                                    fmt(drop, 3) + " only (" + std::to_string(extra) + " more parameter" +
+                                    (extra > 1 ? "s" : "") + " claimed at " + fmt(claimAt(extra), 3) +
+                                    ", 3 sigma): " + modelTitle(out.models[i].kind) + " is chosen");
+      out.chosen = static_cast<int>(i);  // the models are in order of size: the simplest first
+      moved = true;
+      break;
+    }
+  }
 }
 
 }  // namespace
@@ -342,39 +429,7 @@ Result<ResponseAnalysis> analyzeResponse(std::vector<ResponsePoint> points, Axis
     }
     out.models.push_back(std::move(*fit));
   }
-  for (std::size_t i = 0; i < out.models.size(); ++i)
-    if (out.chosen < 0 || out.models[i].aic < out.models[out.chosen].aic) out.chosen = static_cast<int>(i);
-  // A filter is claimed at 3 sigma, as everything the bench names. Each
-  // model nests the simpler ones (the first order is the delay at T = 0;
-  // the second order holds the delay as f_n -> infinity and the first order
-  // as its overdamped limit, one pole fast), and on data of the simpler one
-  // AIC prefers the larger model by chance whenever chi^2 drops by more than
-  // 2 per parameter (16 % for one). The parameters' sigma cannot judge it
-  // near the nesting point (T shows only through (omega T)^2 there: T /
-  // sigma(T) is about twice the likelihood ratio's square root); the chi^2
-  // drop can. A larger model is chosen over a simpler one only when it
-  // lowers chi^2 by the 3-sigma point of chi^2 with its extra parameters'
-  // degrees of freedom (9.0 for one, 11.8 for two); otherwise the simplest
-  // model it does not beat is chosen, and a note on it says why.
-  auto claimAt = [](int extra) { return extra == 1 ? kFilterClaimChiSquareDrop : kTwoParameterClaimChiSquareDrop; };
-  for (bool moved = true; moved && out.chosen >= 0;) {
-    moved = false;
-    const auto c = static_cast<std::size_t>(out.chosen);
-    for (std::size_t i = 0; i < out.models.size(); ++i) {
-      const int extra = parameterCount(out.models[c].kind) - parameterCount(out.models[i].kind);
-      if (extra <= 0) continue;
-      const double drop = out.models[i].chiSquare - out.models[c].chiSquare;
-      if (drop >= claimAt(extra)) continue;
-      out.models[c].notes.push_back("AIC prefers it to " + std::string(modelTitle(out.models[i].kind)) + " by " +
-                                    fmt(out.models[i].aic - out.models[c].aic, 3) + ", but it lowers chi^2 by " +
-                                    fmt(drop, 3) + " only (" + std::to_string(extra) + " more parameter" +
-                                    (extra > 1 ? "s" : "") + " claimed at " + fmt(claimAt(extra), 3) +
-                                    ", 3 sigma): " + modelTitle(out.models[i].kind) + " is chosen");
-      out.chosen = static_cast<int>(i);  // the models are in order of size: the simplest first
-      moved = true;
-      break;
-    }
-  }
+  chooseModel(out);
   return out;
 }
 
@@ -443,6 +498,9 @@ std::string formatResponseText(const std::vector<ResponseAnalysis>& responses) {
       o << "  model " << responseModelName(m.kind) << (static_cast<int>(i) == r.chosen ? " (chosen)" : "")
         << ": chi2 " << fmt(m.chiSquare, 5) << " / " << m.dof << " dof, AIC " << fmt(m.aic, 6) << ", BIC "
         << fmt(m.bic, 6) << "\n";
+      o << "    fit: p = " << fmt(m.pValue, 3) << (m.adequate ? " (adequate: p >= " : " (NOT ADEQUATE: p below ")
+        << fmt(kModelAdequacyP, 3) << ")\n";
+      for (const auto& why : m.inadmissible) o << "    NOT ADMISSIBLE: " << why << "\n";
       for (const auto& p : m.parameters) o << "    " << p.name << " = " << fmt(p.value, 7) << " ± " << fmt(p.stdDev, 2) << "\n";
       for (int a = 0; a < m.correlation.rows(); ++a)
         for (int b = a + 1; b < m.correlation.cols(); ++b)
@@ -458,6 +516,7 @@ std::string formatResponseText(const std::vector<ResponseAnalysis>& responses) {
       for (const auto& n : m.notes) o << "    note: " << n << "\n";
     }
     for (const auto& s : r.skipped) o << "  model left out: " << s << "\n";
+    if (r.chosen < 0) o << "  " << r.noModelReason << "\n  (no model is chosen: the points above are the response)\n";
   }
   return o.str();
 }
@@ -495,7 +554,11 @@ std::string formatResponseJson(const std::vector<ResponseAnalysis>& responses) {
                  {"low_frequency_delay_std_ms", m.lowFrequencyDelayMs.stdDev},
                  {"group_delay_ms", m.groupDelayMs.value},
                  {"group_delay_std_ms", m.groupDelayMs.stdDev},
-                 {"notes", m.notes}};
+                 {"notes", m.notes},
+                 {"p_value", m.pValue},
+                 {"adequate", m.adequate},
+                 {"admissible", m.admissible()},
+                 {"inadmissible", m.inadmissible}};
       model["bandwidth_hz"] = m.bandwidthHz ? json(m.bandwidthHz->value) : json(nullptr);
       model["bandwidth_std_hz"] = m.bandwidthHz ? json(m.bandwidthHz->stdDev) : json(nullptr);
       json params = json::object();
@@ -511,6 +574,8 @@ std::string formatResponseJson(const std::vector<ResponseAnalysis>& responses) {
       axis["models"].push_back(model);
     }
     axis["chosen_model"] = r.chosen >= 0 ? json(responseModelName(r.models[r.chosen].kind)) : json(nullptr);
+    axis["no_model_reason"] = r.chosen >= 0 ? json(nullptr) : json(r.noModelReason);
+    axis["adequacy_p_threshold"] = kModelAdequacyP;
     axis["skipped_models"] = r.skipped;
     doc["responses"].push_back(axis);
   }

@@ -10,9 +10,14 @@
 //   second_order  H(s) = K e^(-s tau) wn^2 / (s^2 + 2 zeta wn s + wn^2)
 //
 // Each with its parameters' standard uncertainties and correlations, chi^2,
-// AIC and BIC; the model with the lowest AIC is chosen (a larger model over
-// a simpler one it nests only when it lowers chi^2 by 9 for one more
-// parameter, 11.83 for two: 3 sigma). Its -3 dB bandwidth
+// AIC and BIC. Each model is judged before any is chosen (issue 40): it is
+// adequate when its chi^2 p-value is at least kModelAdequacyP, admissible
+// when its parameters are physical (no delay or time constant negative beyond
+// 3 sigma, no damping or natural frequency at its bound 0). Among the
+// adequate, admissible models the one with the lowest AIC is chosen (a larger
+// model over a simpler one it nests only when it lowers chi^2 by 9 for one
+// more parameter, 11.83 for two: 3 sigma); when there is none, none is
+// chosen and noModelReason says why. The chosen model's -3 dB bandwidth
 // and its group delay at a chosen frequency carry uncertainties propagated
 // from the parameters' covariance.
 
@@ -74,6 +79,17 @@ struct ResponseModelFit {
   DerivedValue groupDelayMs;         // -d phase / d omega at ResponseAnalysis::groupDelayAtHz
   // What the points cannot tell apart: parameter pairs correlated beyond 0.95.
   std::vector<std::string> notes;
+  // The goodness of fit: P(chi^2_dof >= chiSquare), the probability of a fit
+  // this poor or poorer were the model true and the points' sigma right.
+  // adequate: pValue >= kModelAdequacyP.
+  double pValue = 1.0;
+  bool adequate = true;
+  // Why the parameters are outside physics, one reason each; empty when the
+  // model is admissible.
+  std::vector<std::string> inadmissible;
+  bool admissible() const { return inadmissible.empty(); }
+  // Adequate and admissible: only such a model may be chosen.
+  bool eligible() const { return adequate && admissible(); }
 
   // Model value at f: magnitude (ratio) and phase (rad, continuous).
   double magnitudeAt(double frequencyHz) const;
@@ -86,13 +102,24 @@ struct ResponseAnalysis {
   std::vector<ResponsePoint> points;
   std::vector<ResponseModelFit> models;  // those with enough points, in kind order
   std::vector<std::string> skipped;      // models left out and why (too few points)
-  // Index into models: the lowest AIC, except that a larger model is chosen
-  // over a simpler one it nests only when it lowers chi^2 by the 3-sigma
+  // Index into models, among the eligible ones only (adequate and
+  // admissible): the lowest AIC, except that a larger model is chosen over a
+  // simpler eligible one it nests only when it lowers chi^2 by the 3-sigma
   // point for its extra parameters (9 for one, 11.83 for two; a note on it
-  // says so otherwise).
+  // says so otherwise). -1 when no model is eligible ("no model fits": the
+  // views show the points alone) or none could be fitted.
   int chosen = -1;
+  // When chosen is -1: why, naming each model's p-value or inadmissibility
+  // (one line, "no model fits: ..."); empty when a model is chosen.
+  std::string noModelReason;
   double groupDelayAtHz = 0.0;
 };
+
+// A model whose chi^2 p-value is below this is rejected as inadequate
+// (docs/method.md "Frequency response"): about 3.1 sigma one-sided, the
+// bench's 3-sigma claim level, so that a true model with honest sigma is
+// refused in 1 analysis of 1000.
+inline constexpr double kModelAdequacyP = 1e-3;
 
 // Fits every model with enough points (2 x points > parameters: the delay and
 // the first-order model need 2 frequencies, the second-order model 3).

@@ -14,6 +14,7 @@
 #include <random>
 #include <algorithm>
 
+#include "core/analysis/statistics.h"
 #include "core/analysis/theory.h"
 #include "core/common/units.h"
 #include "core/model/simulator.h"
@@ -77,9 +78,24 @@ void expectWithin3Sigma(const ResponseModelFit& m, const std::string& name, doub
 }
 
 void print(const ResponseAnalysis& r) {
-  for (const auto& m : r.models)
-    std::printf("  %-13s chi2 %8.2f / %d  AIC %9.2f  BIC %9.2f%s\n", responseModelName(m.kind), m.chiSquare, m.dof,
-                m.aic, m.bic, &m == &r.models[r.chosen] ? "  <- chosen" : "");
+  for (std::size_t i = 0; i < r.models.size(); ++i) {
+    const auto& m = r.models[i];
+    std::printf("  %-13s chi2 %8.2f / %d  p %.3g  AIC %9.2f  BIC %9.2f%s%s\n", responseModelName(m.kind), m.chiSquare,
+                m.dof, m.pValue, m.aic, m.bic, m.admissible() ? "" : "  (not admissible)",
+                static_cast<int>(i) == r.chosen ? "  <- chosen" : "");
+    for (const auto& why : m.inadmissible) std::printf("    not admissible: %s\n", why.c_str());
+  }
+  if (r.chosen < 0) std::printf("  %s\n", r.noModelReason.c_str());
+}
+
+// The chosen model; a failure (naming why none was) when there is none.
+const ResponseModelFit& chosenModel(const ResponseAnalysis& r) {
+  if (r.chosen < 0 || r.chosen >= static_cast<int>(r.models.size())) {
+    ADD_FAILURE() << "no model chosen: " << r.noModelReason;
+    static const ResponseModelFit none;
+    return none;
+  }
+  return r.models[static_cast<std::size_t>(r.chosen)];
 }
 
 // The chain's delays with every filter off: what the pure-delay part is.
@@ -95,7 +111,7 @@ TEST(FrequencyResponse, PureDelayIsChosenAndRecovered) {
   const model::SimConfig config;
   const auto r = respond(config, testPlan());
   print(r);
-  EXPECT_EQ(r.models[r.chosen].kind, ResponseModelKind::kDelay);
+  EXPECT_EQ(chosenModel(r).kind, ResponseModelKind::kDelay);
   const auto& m = model(r, ResponseModelKind::kDelay);
   expectWithin3Sigma(m, "K", 1.0);
   expectWithin3Sigma(m, "tau_ms", baseLagMs(config));
@@ -107,7 +123,7 @@ TEST(FrequencyResponse, FirstOrderTwoMilliseconds) {
   config.fog.rateFilterTimeConstantS = 2e-3;
   const auto r = respond(config, testPlan());
   print(r);
-  EXPECT_EQ(r.models[r.chosen].kind, ResponseModelKind::kFirstOrder);
+  EXPECT_EQ(chosenModel(r).kind, ResponseModelKind::kFirstOrder);
   const auto& m = model(r, ResponseModelKind::kFirstOrder);
   for (const auto& p : r.points) {
     const double w = kTwoPi * p.frequencyHz, mag = 1.0 / std::sqrt(1.0 + w * w * 4e-6);
@@ -134,7 +150,7 @@ void secondOrderCase(double zeta) {
   config.fog.rateFilterDamping = zeta;
   const auto r = respond(config, testPlan());
   print(r);
-  EXPECT_EQ(r.models[r.chosen].kind, ResponseModelKind::kSecondOrder);
+  EXPECT_EQ(chosenModel(r).kind, ResponseModelKind::kSecondOrder);
   const auto& m = model(r, ResponseModelKind::kSecondOrder);
   expectWithin3Sigma(m, "K", 1.0);
   expectWithin3Sigma(m, "tau_ms", baseLagMs(config));
@@ -150,7 +166,7 @@ TEST(FrequencyResponse, BoxcarTwoMilliseconds) {
   config.fog.boxcarS = 2e-3;
   const auto r = respond(config, testPlan());
   print(r);
-  const auto& chosen = r.models[r.chosen];
+  const auto& chosen = chosenModel(r);
   for (const auto& p : chosen.parameters) std::printf("    %s %.6g ± %.2g\n", p.name.c_str(), p.value, p.stdDev);
   // A boxcar is linear-phase: its phase is a pure delay T / 2 at every
   // frequency, its magnitude sinc(pi f T). None of the three models is it:
@@ -175,7 +191,7 @@ TEST(FrequencyResponse, RegisterUpdateHalfMillisecond) {
   // A register updated every P and read at instants not locked to it holds
   // the angle on average P / 2: a pure delay (its magnitude droop
   // sinc(pi f P), 5e-5 at 11 Hz, is below the points' sigma).
-  EXPECT_EQ(r.models[r.chosen].kind, ResponseModelKind::kDelay);
+  EXPECT_EQ(chosenModel(r).kind, ResponseModelKind::kDelay);
   const auto& m = model(r, ResponseModelKind::kDelay);
   expectWithin3Sigma(m, "K", 1.0);
   expectWithin3Sigma(m, "tau_ms", config.trueLagS() * 1e3);  // includes P / 2
@@ -318,7 +334,7 @@ TEST(FrequencyResponse, DifferenceOfTwoResponsesAtCommonFrequencies) {
 // Twelve points from 0.5 to 11 Hz of a 0.5-ms delay behind a first-order lag
 // of T ms (none at T = 0), with white errors at their stated sigma
 // (Box-Muller on the caller's generator).
-std::vector<ResponsePoint> noisyPoints(std::mt19937_64& rng, double tMs) {
+std::vector<ResponsePoint> noisyPoints(std::mt19937_64& rng, double tMs, double tauMs = 0.5) {
   auto gauss = [&rng] {
     const double u1 = (static_cast<double>(rng() >> 11) + 0.5) * 0x1.0p-53, u2 = static_cast<double>(rng() >> 11) * 0x1.0p-53;
     return std::sqrt(-2.0 * std::log(u1)) * std::cos(kTwoPi * u2);
@@ -335,7 +351,7 @@ std::vector<ResponsePoint> noisyPoints(std::mt19937_64& rng, double tMs) {
     p.magnitudeDbStd = 20.0 / std::log(10.0) * p.magnitudeStd;
     p.lagStdMs = 1e-5;
     const double filterLagMs = tMs > 0.0 ? std::atan(wt) / (kTwoPi * p.frequencyHz) * 1e3 : 0.0;
-    p.lagMs = 0.5 + filterLagMs + p.lagStdMs * gauss();
+    p.lagMs = tauMs + filterLagMs + p.lagStdMs * gauss();
     p.phaseDeg = -360.0 * p.frequencyHz * p.lagMs * 1e-3;
     p.phaseStdDeg = 360.0 * p.frequencyHz * p.lagStdMs * 1e-3;
     points.push_back(p);
@@ -367,7 +383,10 @@ ClaimCount countClaims(std::uint64_t seed, double tMs, ResponseModelKind simpler
     ++n.fitted;
     const auto& small = model(*r, simpler);
     const auto& big = model(*r, larger);
-    const auto& chosen = r->models[static_cast<std::size_t>(r->chosen)];
+    const auto& chosen = chosenModel(*r);
+    EXPECT_TRUE(chosen.eligible()) << "trial " << trial;  // never a rejected or unphysical model
+    for (const auto& m : r->models)
+      if (m.eligible() && m.pValue < kModelAdequacyP) ADD_FAILURE() << "p " << m.pValue << " judged adequate";
     const double drop = small.chiSquare - big.chiSquare;
     EXPECT_NE(chosen.kind, never) << "trial " << trial;
     if (chosen.kind == larger) {
@@ -430,6 +449,125 @@ TEST(FrequencyResponse, TooFewPointsSaySo) {
   ASSERT_EQ(two->skipped.size(), 1u);
   EXPECT_NE(two->skipped[0].find("second_order"), std::string::npos) << two->skipped[0];
   EXPECT_FALSE(analyzeResponse({p, q}, Axis::kX, 0.0).isOk());
+}
+
+// Issue 40: every model is judged before one is chosen.
+
+// The chi^2 p-value against values computed independently: the closed form
+// for even dof, Q(x | 2k) = e^(-x/2) sum_{j<k} (x/2)^j / j!, and for odd dof
+// mpmath's gammainc(dof/2, x/2, inf, regularized=True) at 30 digits.
+double evenDofSurvival(double x, int dof) {
+  double term = 1.0, sum = 0.0;
+  for (int j = 0; j < dof / 2; ++j) {
+    sum += term;
+    term *= (x / 2.0) / (j + 1);
+  }
+  return std::exp(-x / 2.0) * sum;
+}
+
+TEST(ResponseModelJudgement, ChiSquarePValueAgainstIndependentValues) {
+  EXPECT_NEAR(chiSquareSurvival(37.0, 37), 0.469074445820579, 1e-9);
+  EXPECT_NEAR(chiSquareSurvival(60.0, 41), 0.0279409524321542, 1e-10);
+  EXPECT_NEAR(chiSquareSurvival(1.0, 1), 0.317310507862914, 1e-10);
+  EXPECT_NEAR(chiSquareSurvival(100.0, 80), 0.064570368921133, 1e-10);
+  // 5.7e-1163 in mpmath: zero in double.
+  EXPECT_LT(chiSquareSurvival(5560.0, 37), 1e-300);
+  for (auto [x, dof] : {std::pair{38.92, 36}, std::pair{38.0, 38}, std::pair{2.0, 2}, std::pair{80.0, 40},
+                        std::pair{20.0, 40}}) {
+    const double closed = evenDofSurvival(x, dof);
+    std::printf("  chi2 %.2f on %d dof: p %.15g (closed form %.15g)\n", x, dof, chiSquareSurvival(x, dof), closed);
+    EXPECT_NEAR(chiSquareSurvival(x, dof), closed, 1e-12 + 1e-9 * closed) << x << " on " << dof;
+  }
+  EXPECT_NEAR(evenDofSurvival(38.92, 36), 0.339659454293482, 1e-12);  // the closed form against mpmath
+}
+
+bool mentions(const std::string& text, const std::string& what) { return text.find(what) != std::string::npos; }
+
+// A 2-ms lag: the pure delay is rejected by its fit and the first order
+// chosen; one point 50 sigma off makes every model inadequate, and then none
+// is chosen, the text and the JSON say so and why.
+TEST(ResponseModelJudgement, AnInadequateModelIsNeverChosen) {
+  std::mt19937_64 rng(5);
+  auto points = noisyPoints(rng, 2.0);
+  auto r = analyzeResponse(points, Axis::kX, 5.0);
+  ASSERT_TRUE(r.isOk()) << r.status().message();
+  print(*r);
+  EXPECT_FALSE(model(*r, ResponseModelKind::kDelay).adequate);
+  EXPECT_LT(model(*r, ResponseModelKind::kDelay).pValue, kModelAdequacyP);
+  EXPECT_EQ(chosenModel(*r).kind, ResponseModelKind::kFirstOrder);
+  EXPECT_TRUE(chosenModel(*r).eligible());
+  EXPECT_TRUE(r->noModelReason.empty());
+  EXPECT_TRUE(mentions(formatResponseText({*r}), "fit: p = ")) << formatResponseText({*r});
+
+  points[6].magnitude += 50.0 * points[6].magnitudeStd;
+  r = analyzeResponse(points, Axis::kX, 5.0);
+  ASSERT_TRUE(r.isOk()) << r.status().message();
+  print(*r);
+  EXPECT_EQ(r->chosen, -1);
+  for (const auto& m : r->models) EXPECT_FALSE(m.adequate) << responseModelName(m.kind) << " p " << m.pValue;
+  EXPECT_EQ(r->noModelReason.rfind("no model fits: ", 0), 0u) << r->noModelReason;
+  EXPECT_TRUE(mentions(r->noModelReason, "the first-order lag is not adequate: chi^2 ")) << r->noModelReason;
+  const std::string text = formatResponseText({*r});
+  EXPECT_TRUE(mentions(text, "no model fits: ")) << text;
+  EXPECT_TRUE(mentions(text, "NOT ADEQUATE")) << text;
+  EXPECT_FALSE(mentions(text, "(chosen)")) << text;
+  const auto json = nlohmann::json::parse(formatResponseJson({*r}));
+  EXPECT_TRUE(json["responses"][0]["chosen_model"].is_null());
+  EXPECT_EQ(json["responses"][0]["no_model_reason"], r->noModelReason);
+  EXPECT_FALSE(json["responses"][0]["models"][1]["adequate"].get<bool>());
+  EXPECT_GE(json["responses"][0]["models"][1]["p_value"].get<double>(), 0.0);
+}
+
+// A delay of -0.05 ms (the gyro ahead of the table): every model fits it,
+// every model states the negative delay beyond 3 sigma, none is admissible,
+// none is chosen.
+TEST(ResponseModelJudgement, ANegativeDelayIsNotAdmissible) {
+  std::mt19937_64 rng(9);
+  const auto r = analyzeResponse(noisyPoints(rng, 0.0, -0.05), Axis::kX, 5.0);
+  ASSERT_TRUE(r.isOk()) << r.status().message();
+  print(*r);
+  const auto& delay = model(*r, ResponseModelKind::kDelay);
+  EXPECT_TRUE(delay.adequate);
+  ASSERT_FALSE(delay.admissible());
+  EXPECT_TRUE(mentions(delay.inadmissible.front(), "tau_ms = -0.05")) << delay.inadmissible.front();
+  EXPECT_TRUE(mentions(delay.inadmissible.front(), "is negative beyond 3 sigma: the gyro would answer before the table moves"));
+  for (const auto& m : r->models) EXPECT_FALSE(m.eligible()) << responseModelName(m.kind);
+  EXPECT_EQ(r->chosen, -1);
+  EXPECT_TRUE(mentions(r->noModelReason, "the pure delay is not admissible: tau_ms = ")) << r->noModelReason;
+  EXPECT_TRUE(mentions(formatResponseText({*r}), "NOT ADMISSIBLE: tau_ms = "));
+  // The same points with a delay of +0.5 ms: admissible and chosen.
+  std::mt19937_64 again(9);
+  const auto good = analyzeResponse(noisyPoints(again, 0.0, 0.5), Axis::kX, 5.0);
+  ASSERT_TRUE(good.isOk());
+  EXPECT_TRUE(model(*good, ResponseModelKind::kDelay).admissible());
+  EXPECT_EQ(chosenModel(*good).kind, ResponseModelKind::kDelay);
+}
+
+// An undamped 40-Hz resonance (zeta = 0) behind a 0.5-ms delay, twelve points
+// 0.5-11 Hz: the delay and the first order miss the magnitude rise (8 % at
+// 11 Hz, 10^4 sigma); the second order fits it with zeta at its bound 0, is
+// not admissible, and none is chosen.
+TEST(ResponseModelJudgement, DampingAtItsBoundIsNotAdmissible) {
+  std::mt19937_64 rng(13);
+  auto points = noisyPoints(rng, 0.0);
+  for (auto& p : points) {
+    const double r2 = (p.frequencyHz / 40.0) * (p.frequencyHz / 40.0);
+    p.magnitude = p.magnitude / (1.0 - r2);  // the delay's magnitude 1 (and its noise) times the resonance's
+    p.magnitudeDb = 20.0 * std::log10(p.magnitude);
+  }
+  const auto r = analyzeResponse(points, Axis::kX, 5.0);
+  ASSERT_TRUE(r.isOk()) << r.status().message();
+  print(*r);
+  EXPECT_FALSE(model(*r, ResponseModelKind::kDelay).adequate);
+  if (hasModel(*r, ResponseModelKind::kSecondOrder)) {
+    const auto& second = model(*r, ResponseModelKind::kSecondOrder);
+    EXPECT_FALSE(second.admissible());
+    EXPECT_TRUE(std::any_of(second.inadmissible.begin(), second.inadmissible.end(), [](const std::string& why) {
+      return mentions(why, "zeta = ") || mentions(why, "the fit ran past zeta = 0");
+    }));
+  }
+  EXPECT_EQ(r->chosen, -1) << (r->chosen >= 0 ? responseModelName(chosenModel(*r).kind) : "");
+  EXPECT_TRUE(mentions(formatResponseText({*r}), "no model fits: "));
 }
 
 }  // namespace
