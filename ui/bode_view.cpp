@@ -26,7 +26,8 @@ namespace fog::ui {
 
 namespace {
 
-constexpr int kNotesColumn = 8;
+constexpr int kPColumn = 3;
+constexpr int kNotesColumn = 9;
 const QColor kSingle(8, 48, 107);
 const QColor kA(31, 119, 180);
 const QColor kB(230, 110, 0);
@@ -137,9 +138,9 @@ BodeView::BodeView(QWidget* parent) : QWidget(parent) {
     });
   }
 
-  modelTable_ = new QTableWidget(0, 9);
+  modelTable_ = new QTableWidget(0, 10);
   modelTable_->setObjectName("bodeModelTable");
-  modelTable_->setHorizontalHeaderLabels({tr("series"), tr("model"), tr("χ²/dof"), tr("AIC"), tr("BIC"),
+  modelTable_->setHorizontalHeaderLabels({tr("series"), tr("model"), tr("χ²/dof"), tr("p (fit)"), tr("AIC"), tr("BIC"),
                                           tr("parameters (± 1σ)"), tr("−3 dB bandwidth"), tr("group delay"),
                                           tr("what the points cannot tell")});
   modelTable_->verticalHeader()->setVisible(false);
@@ -235,6 +236,7 @@ void BodeView::showAxes(const std::vector<int>& axes) {
 
 void BodeView::addModelRow(const QString& series, const analysis::ResponseModelFit& m, bool chosen, double atHz) {
   QStringList noteList;
+  for (const auto& why : m.inadmissible) noteList << tr("not admissible: %1").arg(coreText(why));
   for (const auto& n : m.notes) noteList << coreText(n);
   const QString notes = noteList.join(QStringLiteral("; "));
   const int row = modelTable_->rowCount();
@@ -243,6 +245,7 @@ void BodeView::addModelRow(const QString& series, const analysis::ResponseModelF
       series,
       responseModelTitle(m.kind),
       m.dof > 0 ? localNumber(m.chiSquare / m.dof, 'f', 2) : tr("—"),
+      m.adequate ? localNumber(m.pValue, 'g', 2) : tr("%1 (rejected)").arg(localNumber(m.pValue, 'g', 2)),
       localNumber(m.aic, 'f', 1),
       localNumber(m.bic, 'f', 1),
       responseParametersText(m),
@@ -254,6 +257,10 @@ void BodeView::addModelRow(const QString& series, const analysis::ResponseModelF
     auto* item = new QTableWidgetItem(cells[col]);
     item->setToolTip(col == kNotesColumn ? QStringLiteral("<p>") + noteList.join(QStringLiteral("</p><p>")).toHtmlEscaped() + QStringLiteral("</p>")
                                          : cells[col]);
+    if (col == kPColumn)
+      item->setToolTip(tr("The probability of a χ² this large were the model true: below %1 the model is rejected "
+                          "and never chosen").arg(localNumber(analysis::kModelAdequacyP, 'g', 2)));
+    if (!m.eligible()) item->setForeground(QColor(150, 150, 150));
     if (chosen) {
       if (col != kNotesColumn) item->setToolTip(tr("The model chosen: the lowest AIC; a larger model over a simpler one it contains only when it lowers χ² by 3σ for its extra parameters (9 for one, 11.83 for two)"));
       QFont bold = item->font();
@@ -285,8 +292,11 @@ void BodeView::showAxis(int position) {
         if (m->bandwidthHz->value > r.points.back().frequencyHz)
           line += tr(" (extrapolated beyond the highest point, %1 Hz)").arg(localNumber(r.points.back().frequencyHz, 'g', 4));
       }
+    } else {
+      line += tr("; <b>no model fits</b>: the points alone are the response");
     }
     summary << line;
+    if (!m) summary << coreText(r.noModelReason).toHtmlEscaped();
     for (std::size_t i = 0; i < r.models.size(); ++i)
       addModelRow(who.isEmpty() ? axisText(r.axis) : who, r.models[i], static_cast<int>(i) == r.chosen, r.groupDelayAtHz);
     for (const auto& s : r.skipped) summary << tr("model left out: %1").arg(coreText(s));

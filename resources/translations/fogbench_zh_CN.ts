@@ -204,7 +204,7 @@
 <context>
     <name>fog::ui::BodeView</name>
     <message>
-        <location filename="../../ui/bode_view.cpp" line="+35"/>
+        <location filename="../../ui/bode_view.cpp" line="+36"/>
         <source>%1 axis</source>
         <translation>%1 轴</translation>
     </message>
@@ -225,13 +225,13 @@
     </message>
     <message>
         <location line="+21"/>
-        <location line="+131"/>
-        <location line="+35"/>
+        <location line="+133"/>
+        <location line="+39"/>
         <source>Hz</source>
         <translation>Hz</translation>
     </message>
     <message>
-        <location line="-164"/>
+        <location line="-170"/>
         <source>dB</source>
         <translation>dB</translation>
     </message>
@@ -261,6 +261,11 @@
         <translation>BIC</translation>
     </message>
     <message>
+        <location line="+0"/>
+        <source>p (fit)</source>
+        <translation>p（拟合）</translation>
+    </message>
+    <message>
         <location line="+1"/>
         <source>parameters (± 1σ)</source>
         <translation>参数（± 1σ）</translation>
@@ -286,9 +291,19 @@
         <translation>尚无频率响应。</translation>
     </message>
     <message>
-        <location line="+75"/>
+        <location line="+68"/>
+        <source>not admissible: %1</source>
+        <translation>不可接受：%1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>—</source>
         <translation>—</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 (rejected)</source>
+        <translation>%1（拒绝）</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -302,12 +317,17 @@
     </message>
     <message>
         <location line="+0"/>
-        <location line="+32"/>
+        <location line="+36"/>
         <source>ms</source>
         <translation>ms</translation>
     </message>
     <message>
-        <location line="-24"/>
+        <location line="-28"/>
+        <source>The probability of a χ² this large were the model true: below %1 the model is rejected and never chosen</source>
+        <translation>若模型成立，χ² 不小于此值的概率：低于 %1 时模型被拒绝，绝不被选中</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>The model chosen: the lowest AIC; a larger model over a simpler one it contains only when it lowers χ² by 3σ for its extra parameters (9 for one, 11.83 for two)</source>
         <translation>所选模型：AIC 最低；较大的模型仅当其使 χ² 比它所包含的较简单模型降低 3σ（多 1 个参数为 9，多 2 个为 11.83）时才选它</translation>
     </message>
@@ -317,12 +337,17 @@
         <translation>；&lt;b&gt;%1&lt;/b&gt;（所选）：%2 Hz 处群延迟 &lt;b&gt;%3&lt;/b&gt;</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+9"/>
+        <source>; &lt;b&gt;no model fits&lt;/b&gt;: the points alone are the response</source>
+        <translation>；&lt;b&gt;没有模型拟合&lt;/b&gt;：响应仅由测量点给出</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>model (chosen)</source>
         <translation>模型（所选）</translation>
     </message>
     <message>
-        <location line="-22"/>
+        <location line="-25"/>
         <source>%1%2 points, %3 – %4 Hz</source>
         <translation>%1%2 个点，%3 – %4 Hz</translation>
     </message>
@@ -337,7 +362,7 @@
         <translation>（外推至最高测试点 %1 Hz 之外）</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+9"/>
         <source>model left out: %1</source>
         <translation>未拟合的模型：%1</translation>
     </message>
@@ -3955,6 +3980,11 @@ File: %1</source>
     </message>
     <message>
         <location line="+2"/>
+        <source>p (fit)</source>
+        <translation>p（拟合）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>AIC</source>
         <translation>AIC</translation>
     </message>
@@ -3969,12 +3999,27 @@ File: %1</source>
         <translation>参数（± 1σ）</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>Model left out: %1</source>
         <translation>未拟合的模型：%1</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+1"/>
+        <source>p (fit): the probability of a χ² this large were the model true. A model is chosen only when its fit is adequate (p ≥ %1) and its parameters are physical (docs/method.md).</source>
+        <translation>p（拟合）：若模型成立，χ² 不小于此值的概率。仅当模型拟合充分（p ≥ %1）且参数符合物理时才被选中（docs/method.md）。</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 is not admissible: %2</source>
+        <translation>%1 不可接受：%2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>No model fits: the measured points alone are the response. %1</source>
+        <translation>没有模型拟合：响应仅由测量点给出。%1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>low-frequency delay</source>
         <translation>低频延迟</translation>
     </message>
@@ -4040,7 +4085,7 @@ File: %1</source>
         <translation>%1 个测试点未得到延迟</translation>
     </message>
     <message>
-        <location line="-416"/>
+        <location line="-430"/>
         <source>table angle (encoder, %1 ms)</source>
         <translation>转台角度（编码器，%1 ms）</translation>
     </message>
@@ -4050,7 +4095,7 @@ File: %1</source>
         <translation>陀螺角度（增量累加，%1 ms）</translation>
     </message>
     <message>
-        <location line="+377"/>
+        <location line="+391"/>
         <source>INCOMPLETE (the run stopped early); its data give %1</source>
         <translation>不完整（运行提前停止）；其数据给出 %1</translation>
     </message>
@@ -4060,12 +4105,12 @@ File: %1</source>
         <translation>不完整</translation>
     </message>
     <message>
-        <location filename="../../ui/report/calibration_report.cpp" line="-178"/>
+        <location filename="../../ui/report/calibration_report.cpp" line="-192"/>
         <source>model (chosen)</source>
         <translation>模型（所选）</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+62"/>
         <source>chosen (lowest AIC; a filter at 3σ)</source>
         <translation>所选（AIC 最低；滤波器须达 3σ）</translation>
     </message>
@@ -4215,7 +4260,7 @@ File: %1</source>
         <translation>%1（%3 个中的第 %2 个%4）</translation>
     </message>
     <message>
-        <location filename="../../ui/data_export.cpp" line="+63"/>
+        <location filename="../../ui/data_export.cpp" line="+59"/>
         <source>Cannot create %1: %2. Nothing was written; choose another folder.</source>
         <translation>无法创建 %1：%2。未写入任何内容；请选择其他文件夹。</translation>
     </message>
@@ -7063,6 +7108,46 @@ The session itself is unchanged.</source>
         <location line="+1"/>
         <source>AIC prefers it to %1 by %2, but it lowers chi^2 by %3 only (%4 more parameters claimed at %5, 3 sigma): %6 is chosen</source>
         <translation>AIC 比%1更倾向于它（差 %2），但它只使 χ² 降低 %3（多 %4 个参数须降低 %5，即 3σ）：选择%6</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>no model fits: %1</source>
+        <translation>没有模型拟合：%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no model fits: none could be fitted</source>
+        <translation>没有模型拟合：没有任何模型能够拟合</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 is not adequate: chi^2 %2 on %3 dof, p = %4 below %5</source>
+        <translation>%1 拟合不充分：χ² %2，自由度 %3，p = %4 低于 %5</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 is not admissible: %2</source>
+        <translation>%1 不可接受：%2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 = %2 ± %3 ms is negative beyond 3 sigma: the gyro would answer before the table moves</source>
+        <translation>%1 = %2 ± %3 ms 为负且超出 3σ：陀螺将在转台运动之前响应</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 = %2 ± %3 ms is negative beyond 3 sigma: a lead, not a lag</source>
+        <translation>%1 = %2 ± %3 ms 为负且超出 3σ：是超前而非滞后</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 = %2 ± %3 sits at its bound 0 within 3 sigma: the points do not place the resonance</source>
+        <translation>%1 = %2 ± %3 在 3σ 内处于其边界 0：这些点无法确定谐振</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the fit ran past zeta = 0: its poles are unstable (a lead that grows to the resonance)</source>
+        <translation>拟合越过了 ζ = 0：其极点不稳定（超前随频率增大直至谐振）</translation>
     </message>
     <message>
         <location line="+1"/>

@@ -841,21 +841,35 @@ void responsePage(PageFlow& flow, const analysis::ResponseAnalysis& r) {
 
   flow.heading(QObject::tr("Models fitted to all points (weighted least squares on magnitude and phase)"));
   Table models;
-  models.columns = {{QObject::tr("model"), 44, Qt::AlignLeft},
-                    {QObject::tr("χ²/dof"), 16, Qt::AlignRight},
+  models.columns = {{QObject::tr("model"), 40, Qt::AlignLeft},
+                    {QObject::tr("χ²/dof"), 14, Qt::AlignRight},
+                    {QObject::tr("p (fit)"), 14, Qt::AlignRight},
                     {QObject::tr("AIC"), 17, Qt::AlignRight},
                     {QObject::tr("BIC"), 17, Qt::AlignRight},
-                    {QObject::tr("parameters (± 1σ)"), 80, Qt::AlignLeft}};
+                    {QObject::tr("parameters (± 1σ)"), 72, Qt::AlignLeft}};
   models.fontPt = 7.5;
   for (std::size_t i = 0; i < r.models.size(); ++i) {
     const auto& m = r.models[i];
     models.rows.push_back({ui::responseModelTitle(m.kind), m.dof > 0 ? fixed(m.chiSquare / m.dof, 2) : "—",
+                           QString::number(m.pValue, 'g', 2),
                            fixed(m.aic, 1), fixed(m.bic, 1), ui::responseParametersText(m)});
     models.boldRows.push_back(static_cast<int>(i) == r.chosen);
   }
   flow.table(models);
   for (const auto& skipped : r.skipped)
     flow.paragraph(QObject::tr("Model left out: %1").arg(coreText(skipped)), PageFlow::font(7.5), kMuted);
+  flow.paragraph(QObject::tr("p (fit): the probability of a χ² this large were the model true. A model is chosen only "
+                             "when its fit is adequate (p ≥ %1) and its parameters are physical (docs/method.md).")
+                     .arg(QString::number(analysis::kModelAdequacyP, 'g', 2)),
+                 PageFlow::font(7.5), kMuted);
+  for (const auto& m : r.models)
+    for (const auto& why : m.inadmissible)
+      flow.paragraph(QObject::tr("%1 is not admissible: %2").arg(ui::responseModelTitle(m.kind), coreText(why)),
+                     PageFlow::font(7.5), kMuted);
+  if (!chosen && !r.models.empty())
+    flow.paragraph(QObject::tr("No model fits: the measured points alone are the response. %1")
+                       .arg(coreText(r.noModelReason)),
+                   PageFlow::font(8.5), kFailColour);
   if (chosen) {
     std::vector<std::pair<QString, QString>> rows = {
         {QObject::tr("chosen (lowest AIC; a filter at 3σ)"), ui::responseModelTitle(chosen->kind)},
