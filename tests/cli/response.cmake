@@ -53,6 +53,40 @@ if(pstd LESS_EQUAL 0 OR corr01 GREATER -0.9)
   message(FATAL_ERROR "response --json: phase sigma ${pstd}, corr(tau, T) ${corr01} (expected < -0.9 for a pure delay)")
 endif()
 
+# Issue 40: every model judged before one is chosen. The simulator's 2-ms
+# lag at seed 3 (docs/gui.md's case) once chose a second order with a delay
+# of -0.088 ms; no chosen model now has a negative delay, each model states
+# its p-value, and when none is adequate and admissible the response says
+# "no model fits" and chooses none.
+expect_match("${text}" "fit: p = " "response text: each model's p-value")
+run_expect(0 lagrun run --preset response --effect first_order_lag=2 --seed 3 --out ${dir}/lag.fbs)
+run_expect(0 lagtext response ${dir}/lag.fbs)
+run_expect(0 lagjson response ${dir}/lag.fbs --json)
+string(JSON lagchosen_type TYPE "${lagjson}" responses 0 chosen_model)
+if(lagchosen_type STREQUAL "NULL")
+  expect_match("${lagtext}" "no model fits: " "response of a 2-ms lag, seed 3: none chosen")
+  string(JSON lagwhy GET "${lagjson}" responses 0 no_model_reason)
+  expect_match("${lagwhy}" "^no model fits: " "response --json no_model_reason")
+  if(lagtext MATCHES "\\(chosen\\)")
+    message(FATAL_ERROR "response of a 2-ms lag: no model fits, yet one is marked chosen:\n${lagtext}")
+  endif()
+else()
+  string(JSON lagchosen GET "${lagjson}" responses 0 chosen_model)
+  string(JSON nmodels LENGTH "${lagjson}" responses 0 models)
+  math(EXPR last "${nmodels} - 1")
+  foreach(i RANGE ${last})
+    string(JSON name GET "${lagjson}" responses 0 models ${i} model)
+    if(name STREQUAL lagchosen)
+      string(JSON lagtau GET "${lagjson}" responses 0 models ${i} parameters tau_ms value)
+      string(JSON lagok GET "${lagjson}" responses 0 models ${i} admissible)
+      string(JSON lagfit GET "${lagjson}" responses 0 models ${i} adequate)
+      if(lagtau LESS 0 OR NOT lagok OR NOT lagfit)
+        message(FATAL_ERROR "response of a 2-ms lag chose ${name}: tau ${lagtau} ms, admissible ${lagok}, adequate ${lagfit}")
+      endif()
+    endif()
+  endforeach()
+endif()
+
 # analyze --json carries the same response under "responses"; a one-point
 # plan's report has none.
 run_expect(0 ajson analyze ${dir}/response.fbs --json)

@@ -146,6 +146,35 @@ class BodeViewTest : public QObject {
     QCOMPARE(view.phasePlot()->axisScaleDiv(QwtPlot::xBottom).upperBound(), 3.0);
   }
 
+  // Issue 40: when no model is adequate and admissible none is chosen; the
+  // view draws the points alone, says "no model fits" and why, and shows
+  // each model's p-value (rejected ones marked) with none bold.
+  void whenNoModelFitsThePointsShowAlone() {
+    auto points = rb_.front().points;
+    points[3].magnitude += 50.0 * points[3].magnitudeStd;
+    auto r = fog::analysis::analyzeResponse(points, fog::Axis::kX, 5.0);
+    QVERIFY(r.isOk());
+    QCOMPARE(r->chosen, -1);
+    QVERIFY(!r->models.empty());
+    fog::ui::BodeView view;
+    view.resize(700, 600);
+    view.show();
+    view.showResponses({*r}, "none");
+    QVERIFY(view.plotShown());
+    for (QwtPlot* plot : {view.magnitudePlot(), view.phasePlot()})
+      QCOMPARE(items<QwtPlotCurve>(plot, QwtPlotItem::Rtti_PlotCurve).size(), std::size_t(1));  // the points only
+    QVERIFY2(view.summaryText().contains("no model fits"), qPrintable(view.summaryText()));
+    QVERIFY2(view.summaryText().contains("is not adequate: chi^2"), qPrintable(view.summaryText()));
+    QVERIFY2(!view.summaryText().contains("(chosen)"), qPrintable(view.summaryText()));
+    QCOMPARE(view.modelTable()->rowCount(), static_cast<int>(r->models.size()));
+    for (int row = 0; row < view.modelTable()->rowCount(); ++row) {
+      QVERIFY(!view.modelTable()->item(row, 1)->font().bold());
+      QVERIFY2(view.modelTable()->item(row, 3)->text().contains("rejected"), qPrintable(view.modelTable()->item(row, 3)->text()));
+    }
+    // The cursors' readout has the points and no model.
+    for (const auto& [name, value] : view.magnitudeInteraction()->valuesAt(4.0)) QVERIFY(!name.startsWith("model"));
+  }
+
   void withoutAResponseOnlyTheReasonShows() {
     fog::ui::BodeView view;
     view.showResponses({}, fog::ui::responseMissingText(a_.report));

@@ -380,6 +380,22 @@ class CoreTextTest : public QObject {
                   "claimed at 9, 3 sigma): the first-order lag is chosen");
     expectChinese("AIC prefers it to the pure delay by 1.5, but it lowers chi^2 by 5.5 only (2 more parameters "
                   "claimed at 11.8, 3 sigma): the pure delay is chosen");
+    // Each model judged (issue 40): why none fits, each reason in Chinese.
+    auto bad = responses.front().points;
+    bad[2].magnitude += 50.0 * bad[2].magnitudeStd;
+    const auto none = analysis::analyzeResponse(bad, Axis::kX, 5.0);
+    QVERIFY(none.isOk());
+    QCOMPARE(none->chosen, -1);
+    expectChinese(none->noModelReason);
+    expectChinese("no model fits: none could be fitted");
+    expectChinese("no model fits: the pure delay is not adequate: chi^2 1.1859e+08 on 38 dof, p = 0 below 0.001; "
+                  "the second-order response is not admissible: tau_ms = -0.08786 ± 0.0037 ms is negative beyond 3 "
+                  "sigma: the gyro would answer before the table moves");
+    for (const char* why : {"T_ms = -0.5 ± 0.01 ms is negative beyond 3 sigma: a lead, not a lag",
+                            "zeta = 0.0001 ± 0.002 sits at its bound 0 within 3 sigma: the points do not place the resonance",
+                            "fn_hz = 300 ± 400 Hz sits at its bound 0 within 3 sigma: the points do not place the resonance",
+                            "the fit ran past zeta = 0: its poles are unstable (a lead that grows to the resonance)"})
+      expectChinese(std::string("the second-order response is not admissible: ") + why);
     for (const char* why : {"the fit did not converge in 50 iterations",
                             "the fit's sums are not finite numbers (a value in the data is far beyond its range)",
                             "the fit's parameters are not determined by the data", "the fit's covariance is not positive"})
