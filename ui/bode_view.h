@@ -36,6 +36,9 @@ class BodeView : public QWidget {
   explicit BodeView(QWidget* parent = nullptr);
 
   // One recording's responses; `emptyReason` is shown when there are none.
+  // Each model's row states its χ² p-value (marked when rejected) and why it
+  // is not admissible; an axis with no chosen model (chosen = -1) shows its
+  // points alone and "no model fits" with the response's noModelReason.
   void showResponses(std::vector<analysis::ResponseAnalysis> responses, const QString& emptyReason);
   // Two sessions' responses, named aName and bName (their letters in
   // Compare): per axis that both have, A, B and B − A.

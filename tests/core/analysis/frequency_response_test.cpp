@@ -92,7 +92,7 @@ void print(const ResponseAnalysis& r) {
 const ResponseModelFit& chosenModel(const ResponseAnalysis& r) {
   if (r.chosen < 0 || r.chosen >= static_cast<int>(r.models.size())) {
     ADD_FAILURE() << "no model chosen: " << r.noModelReason;
-    static const ResponseModelFit none;
+    static const ResponseModelFit none{};
     return none;
   }
   return r.models[static_cast<std::size_t>(r.chosen)];
