@@ -200,8 +200,8 @@ std::vector<Eigen::VectorXd> startingPoints(ResponseModelKind kind, const std::v
 
 // The model's goodness of fit and physical admissibility (docs/method.md
 // "Frequency response"): adequate when P(chi^2_dof >= chi^2) >= kModelAdequacyP;
-// not admissible, with the reason, when a delay or time constant is negative
-// beyond 3 sigma, or a second order's zeta or f_n sits at its bound 0 (within
+// not admissible, with the reason, when a delay, a time constant or the
+// low-frequency delay is negative beyond 3 sigma, or a second order's zeta or f_n sits at its bound 0 (within
 // 3 sigma of it, or the fit ran past it: `unstable`).
 void judgeModel(ResponseModelFit& fit, bool unstable) {
   fit.pValue = fit.dof > 0 ? chiSquareSurvival(fit.chiSquare, fit.dof) : 1.0;
@@ -219,6 +219,13 @@ void judgeModel(ResponseModelFit& fit, bool unstable) {
       fit.inadmissible.push_back(valueText(p, p.name == "fn_hz" ? " Hz" : "") +
                                  " sits at its bound 0 within 3 sigma: the points do not place the resonance");
   }
+  // tau and T (or 2 zeta / wn) are nearly degenerate when the filter is
+  // short: each alone may be vague while their sum, the low-frequency delay,
+  // is sharp. A negative sum is the gyro ahead of the table as much.
+  const DerivedValue& low = fit.lowFrequencyDelayMs;
+  if (fit.kind != ResponseModelKind::kDelay && low.value + 3.0 * low.stdDev < 0.0)
+    fit.inadmissible.push_back("the low-frequency delay " + fmt(low.value, 4) + " ± " + fmt(low.stdDev, 2) +
+                               " ms is negative beyond 3 sigma: the gyro would answer before the table moves");
   if (unstable)
     fit.inadmissible.push_back("the fit ran past zeta = 0: its poles are unstable (a lead that grows to the resonance)");
 }

@@ -7141,6 +7141,11 @@ The session itself is unchanged.</source>
     </message>
     <message>
         <location line="+1"/>
+        <source>the low-frequency delay %1 ± %2 ms is negative beyond 3 sigma: the gyro would answer before the table moves</source>
+        <translation>低频延迟 %1 ± %2 ms 为负且超出 3σ：陀螺将在转台运动之前响应</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>%1 = %2 ± %3 sits at its bound 0 within 3 sigma: the points do not place the resonance</source>
         <translation>%1 = %2 ± %3 在 3σ 内处于其边界 0：这些点无法确定谐振</translation>
     </message>

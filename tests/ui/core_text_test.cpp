@@ -392,6 +392,7 @@ class CoreTextTest : public QObject {
                   "the second-order response is not admissible: tau_ms = -0.08786 ± 0.0037 ms is negative beyond 3 "
                   "sigma: the gyro would answer before the table moves");
     for (const char* why : {"T_ms = -0.5 ± 0.01 ms is negative beyond 3 sigma: a lead, not a lag",
+                            "the low-frequency delay -0.05 ± 3.2e-06 ms is negative beyond 3 sigma: the gyro would answer before the table moves",
                             "zeta = 0.0001 ± 0.002 sits at its bound 0 within 3 sigma: the points do not place the resonance",
                             "fn_hz = 300 ± 400 Hz sits at its bound 0 within 3 sigma: the points do not place the resonance",
                             "the fit ran past zeta = 0: its poles are unstable (a lead that grows to the resonance)"})

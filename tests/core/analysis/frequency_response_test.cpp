@@ -531,6 +531,15 @@ TEST(ResponseModelJudgement, ANegativeDelayIsNotAdmissible) {
   ASSERT_FALSE(delay.admissible());
   EXPECT_TRUE(mentions(delay.inadmissible.front(), "tau_ms = -0.05")) << delay.inadmissible.front();
   EXPECT_TRUE(mentions(delay.inadmissible.front(), "is negative beyond 3 sigma: the gyro would answer before the table moves"));
+  // The first order's tau and T are degenerate here (sigma of hundreds of ms
+  // each); their sum, the low-frequency delay, is -0.05 ms sharp.
+  if (hasModel(*r, ResponseModelKind::kFirstOrder)) {
+    const auto& first = model(*r, ResponseModelKind::kFirstOrder);
+    EXPECT_FALSE(first.admissible());
+    EXPECT_TRUE(std::any_of(first.inadmissible.begin(), first.inadmissible.end(), [](const std::string& why) {
+      return mentions(why, "the low-frequency delay -0.05");
+    }));
+  }
   for (const auto& m : r->models) EXPECT_FALSE(m.eligible()) << responseModelName(m.kind);
   EXPECT_EQ(r->chosen, -1);
   EXPECT_TRUE(mentions(r->noModelReason, "the pure delay is not admissible: tau_ms = ")) << r->noModelReason;
