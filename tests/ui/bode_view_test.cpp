@@ -54,6 +54,25 @@ Simulated simulate(double filterMs, std::uint64_t seed) {
   return {std::move(*recording), std::move(*report)};
 }
 
+// The response of an exact delay + first-order lag (tau, T) at the points'
+// frequencies, with their uncertainties: one the models describe to the
+// last digit, so that its first order is adequate and chosen. (The
+// simulator's own 2-ms filter is not yet a first order at its noise level:
+// issue 40; the view is tested on a response whose model is known.)
+ResponseAnalysis exactFirstOrder(std::vector<fog::analysis::ResponsePoint> points, double tauMs, double tMs) {
+  for (auto& p : points) {
+    const double w = 2.0 * M_PI * p.frequencyHz;
+    p.magnitude = 1.0 / std::sqrt(1.0 + std::pow(w * tMs * 1e-3, 2));
+    p.magnitudeDb = 20.0 * std::log10(p.magnitude);
+    p.phaseDeg = -(w * tauMs * 1e-3 + std::atan(w * tMs * 1e-3)) * 180.0 / M_PI;
+    p.lagMs = -p.phaseDeg / 360.0 / p.frequencyHz * 1e3;
+    p.magnitudePhaseCovDeg = 0.0;
+  }
+  auto r = fog::analysis::analyzeResponse(points, fog::Axis::kX, 5.0);
+  if (!r) qFatal("analyzeResponse: %s", r.status().message().c_str());
+  return std::move(*r);
+}
+
 template <typename Item>
 std::vector<const Item*> items(QwtPlot* plot, int rtti) {
   std::vector<const Item*> out;
@@ -75,9 +94,12 @@ class BodeViewTest : public QObject {
     a_ = simulate(0.0, 1);
     b_ = simulate(2.0, 2);
     ra_ = fog::analysis::analyzeResponses(a_.report);
-    rb_ = fog::analysis::analyzeResponses(b_.report);
     QCOMPARE(ra_.size(), std::size_t(1));
-    QCOMPARE(rb_.size(), std::size_t(1));
+    QVERIFY(ra_.front().chosen >= 0);  // the simulator's pure delay: a delay model fits
+    const auto measured = fog::analysis::analyzeResponses(b_.report);
+    QCOMPARE(measured.size(), std::size_t(1));
+    rb_ = {exactFirstOrder(measured.front().points, 0.466, 2.0)};
+    QVERIFY(rb_.front().chosen >= 0);
     QCOMPARE(ra_.front().points.size(), std::size_t(8));
   }
 
@@ -111,9 +133,9 @@ class BodeViewTest : public QObject {
       QCOMPARE(magnitude->sample(static_cast<int>(i)).y(), r.points[i].magnitudeDb);
       QCOMPARE(phase->sample(static_cast<int>(i)).y(), r.points[i].phaseDeg);
     }
-    // A 2-ms first-order filter: the chosen model is not the pure delay, and
+    // A 2-ms first-order lag: the chosen model is the first order, and
     // the high end of the magnitude has dropped (20 log10 of 1/sqrt(1 + (wT)^2)).
-    QVERIFY(r.models[static_cast<std::size_t>(r.chosen)].kind != fog::analysis::ResponseModelKind::kDelay);
+    QCOMPARE(r.models[static_cast<std::size_t>(r.chosen)].kind, fog::analysis::ResponseModelKind::kFirstOrder);
     QVERIFY(r.points.back().magnitudeDb < -0.01);
     QCOMPARE(view.modelTable()->rowCount(), static_cast<int>(r.models.size()));
     for (int row = 0; row < view.modelTable()->rowCount(); ++row)

@@ -243,8 +243,9 @@ class ReportTest : public QObject {
     o.minDurationS = 3.0;
     ReportInput response = session_;
     response.info.plan = *fog::responsePlan(fog::TurntableLimits{}, o);
+    // The simulator's pure delay, which its delay model fits (its 2-ms
+    // filter is not yet a first order at its noise level: issue 40).
     fog::model::SimConfig config;
-    config.fog.rateFilterTimeConstantS = 2e-3;
     auto run = fog::model::simulate(config, response.info.plan);
     QVERIFY2(run.isOk(), run.status().message().c_str());
     auto recording = fog::protocol::decodeRecording(run->bytes);
