@@ -123,6 +123,7 @@ int sessionsCommand(CliArguments& args) {
     e["axes"] = session::axesOf(s.info.plan);
     e["complete"] = s.complete;
     if (!s.complete) e["incomplete_reason"] = s.incompleteReason;
+    if (!s.rawDamage.empty()) e["raw_stream_damaged"] = s.rawDamage;
     e["results"] = s.results;
     e["damaged_results"] = s.damagedResults;
     e["shown_result"] = s.shownResult;  // 1-based; 0: none intact
@@ -183,7 +184,9 @@ int sessionsCommand(CliArguments& args) {
     std::string imu = e["imu_model"].get<std::string>();
     if (!e["imu_serial"].get<std::string>().empty()) imu += (imu.empty() ? "" : " ") + e["imu_serial"].get<std::string>();
     rows.push_back({e["file"], e["created_utc"], e["operator"].get<std::string>().empty() ? "-" : e["operator"],
-                    imu.empty() ? "-" : imu, e["axes"], e["complete"].get<bool>() ? "complete" : "incomplete",
+                    imu.empty() ? "-" : imu, e["axes"],
+                    std::string(e["complete"].get<bool>() ? "complete" : "incomplete") +
+                        (e.contains("raw_stream_damaged") ? ", raw stream damaged" : ""),
                     resultColumn(e), joinMs(e["test_points"], "lag_ms"), joinMs(e["test_points"], "imu_delay_ms")});
   }
   std::vector<std::size_t> width(rows[0].size(), 0);

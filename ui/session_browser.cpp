@@ -177,6 +177,12 @@ void SessionBrowser::refresh() {
     set(kAxes, QString::fromStdString(session::axesOf(s.info.plan)).toUpper());
     set(kState, s.complete ? tr("complete") : tr("incomplete: %1").arg(coreText(s.incompleteReason)));
     if (!s.complete) table_->item(row, kState)->setForeground(QColor(170, 90, 0));
+    if (!s.rawDamage.empty()) {
+      // The source of truth is damaged: said in the list, whole in the tooltip.
+      set(kState, tr("%1; raw stream damaged: restore the file from a backup").arg(table_->item(row, kState)->text()));
+      table_->item(row, kState)->setForeground(QColor(190, 0, 0));
+      table_->item(row, kState)->setToolTip(coreText(s.rawDamage));
+    }
     // The stored verdict, never a re-judgement (docs/sessions.md).
     set(kVerdict, verdictText(s));
     if (s.results > 0) table_->item(row, kVerdict)->setForeground(QColor(verdictColour(s.shown.verdict)));

@@ -63,6 +63,7 @@ Result<SessionListing> listSessions(const std::string& dirText) {
     s.info = (*r)->info();
     s.complete = (*r)->complete();
     s.incompleteReason = (*r)->incompleteReason();
+    if (Status raw = (*r)->checkRawStream(); !raw.isOk()) s.rawDamage = toValidUtf8(raw.message());
     auto results = (*r)->results();
     if (results) {
       s.results = results->size();

@@ -19,6 +19,9 @@ struct SessionSummary {
   SessionInfo info;
   bool complete = false;
   std::string incompleteReason;
+  // Non-empty: the raw board stream, the session's source of truth, fails
+  // its checks (SessionReader::checkRawStream's words).
+  std::string rawDamage;
   std::size_t results = 0;
   // Stored results that fail their checksum or do not parse: never shown,
   // always counted, so a listing says a result is damaged instead of "-".

@@ -4968,8 +4968,13 @@ The session itself is unchanged.</source>
         <source>incomplete: %1</source>
         <translation>未完成：%1</translation>
     </message>
+    <message>
+        <location line="+4"/>
+        <source>%1; raw stream damaged: restore the file from a backup</source>
+        <translation>%1；原始数据流已损坏：请从备份恢复文件</translation>
+    </message>
     <message numerus="yes">
-        <location line="+9"/>
+        <location line="+11"/>
         <source>%n session(s)</source>
         <translation>
             <numerusform>%n 个会话</numerusform>

@@ -7,8 +7,10 @@
 #  2. `analyze --gyro-sign x=-1` (result 3, INVALID): `sessions` lists the
 #     delays as refused, `sessions --json` says vouched false with why,
 #     `export`'s delays.csv marks every row invalid/false;
-#  3. the PDF's SHA-256 reads back whole (64 hex digits) through pdftotext.
-#   -DCLI=path -DDIR=scratch folder -DPDFTOTEXT=path
+#  3. the PDF's SHA-256 reads back whole (64 hex digits) through pdftotext;
+#  4. a copy whose raw stream fails its checksum (its decoded samples intact)
+#     says so first in export and report, and in `sessions`.
+#   -DCLI=path -DDIR=scratch folder -DPDFTOTEXT=path -DSQLITE3=path
 set(dir ${DIR}/shown_result_test)
 file(REMOVE_RECURSE ${dir})
 file(MAKE_DIRECTORY ${dir})
@@ -109,5 +111,29 @@ delays_row(${dir}/invalid/delays.csv imu_delay row)
 if(NOT row MATCHES ",invalid,false,")
   message(FATAL_ERROR "delays.csv does not mark the INVALID delay: ${row}")
 endif()
+# 4. A damaged raw stream under intact decoded samples.
+set(raw ${dir}/raw.fbs)
+file(COPY_FILE ${s} ${raw})
+execute_process(COMMAND ${SQLITE3} ${raw} "UPDATE raw_chunk SET data_fnv1a = data_fnv1a + 1 WHERE seq = 0"
+                RESULT_VARIABLE c ERROR_VARIABLE e)
+if(NOT c EQUAL 0)
+  message(FATAL_ERROR "sqlite3 could not damage the copy (${c}): ${e}")
+endif()
+foreach(command "export;${raw};--csv;${dir}/raw-export" "response;${raw}" "analyze;${raw};--no-store")
+  execute_process(COMMAND ${CLI} ${command} RESULT_VARIABLE c OUTPUT_VARIABLE o ERROR_VARIABLE e TIMEOUT 300)
+  if(NOT e MATCHES "^fogbench-cli: note: [^\n]*raw\\.fbs is a damaged session: its raw board stream")
+    message(FATAL_ERROR "'${command}' does not say first that the raw stream is damaged (${c}):\n${e}\n${o}")
+  endif()
+endforeach()
+# The report hashes the raw stream onto the page: it refuses, naming the chunk.
+cli(o c report ${raw} --pdf ${dir}/raw.pdf)
+if(c EQUAL 0 OR NOT o MATCHES "raw stream chunk 0 [^\n]*fails its checksum")
+  message(FATAL_ERROR "report of a damaged raw stream did not refuse it (${c}):\n${o}")
+endif()
+cli(o c sessions ${dir})
+if(NOT o MATCHES "raw\\.fbs[^\n]*complete, raw stream damaged")
+  message(FATAL_ERROR "sessions does not say the raw stream is damaged:\n${o}")
+endif()
+
 message(STATUS "one shown result: result 2's IMU delay ${stored} ms in report, export and delays.csv; "
                "result 3's INVALID refused in sessions and delays.csv; the PDF's SHA-256 whole")
