@@ -37,7 +37,7 @@
 <context>
     <name>fog::ui::BenchSettingsDialog</name>
     <message>
-        <location filename="../../ui/bench_settings_dialog.cpp" line="+85"/>
+        <location filename="../../ui/bench_settings_dialog.cpp" line="+107"/>
         <source>Bench constants</source>
         <translation>测试台常数</translation>
     </message>
@@ -46,18 +46,18 @@
         <location line="+1"/>
         <location line="+1"/>
         <location line="+1"/>
-        <location line="+53"/>
+        <location line="+60"/>
         <source> ms</source>
         <translation> ms</translation>
     </message>
     <message>
-        <location line="-52"/>
-        <location line="+39"/>
+        <location line="-59"/>
+        <location line="+46"/>
         <source> °</source>
         <translation> °</translation>
     </message>
     <message>
-        <location line="-38"/>
+        <location line="-45"/>
         <source> °/pulse</source>
         <translation> °/脉冲</translation>
     </message>
@@ -106,6 +106,21 @@
         <location line="+1"/>
         <source>Counter width</source>
         <translation>计数器位宽</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> %</source>
+        <translation> %</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The gyro&apos;s stated scale tolerance: each test point&apos;s gyro/table amplitude ratio, with the gyro&apos;s fitted dynamics taken out, must lie within 1 ± this, or the point is invalid (a wrong pulse equivalent or frame period scales the gyro, not the delay)</source>
+        <translation>陀螺声明的标度容差：每个测试点的陀螺/转台幅值比在扣除陀螺拟合出的动态特性后，必须落在 1 ± 此值以内，否则该测试点无效（错误的脉冲当量或帧周期会缩放陀螺读数，而不会改变延迟）</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Gyro scale tolerance</source>
+        <translation>陀螺标度容差</translation>
     </message>
     <message>
         <location line="+3"/>

@@ -379,7 +379,20 @@ TEST(CsvImportErrors, ADuplicateKeyOrADelayBeyondASecondIsRefused) {
   auto huge = importCsvDirectory(goodDir(R"({"bench": {"table_read_delay_ms": 0.05, "board_delay_ms": 1e308,
     "pulse_equivalent_deg": 5e-5}, "test_points": [{"axis": "x"}]})"));
   ASSERT_FALSE(huge.isOk());
-  EXPECT_NE(huge.status().message().find("beyond a second"), std::string::npos) << huge.status().message();
+  // The ranges are the command line's and the GUI's (checkBenchConstants).
+  EXPECT_NE(huge.status().message().find("\"bench.board_delay_ms\": the processing-board delay must be within 0 .. "
+                                         "1000 ms, not 1e+308: bench delays are a fraction of a frame or a few "
+                                         "frames; check the value and that it is in milliseconds"),
+            std::string::npos)
+      << huge.status().message();
+  auto negative = importCsvDirectory(goodDir(R"({"bench": {"table_read_delay_ms": -0.2, "board_delay_ms": 0.28,
+    "pulse_equivalent_deg": 5e-5}, "test_points": [{"axis": "x"}]})"));
+  ASSERT_FALSE(negative.isOk());
+  EXPECT_EQ(negative.status().code(), StatusCode::kCorruptData);
+  EXPECT_NE(negative.status().message().find("\"bench.table_read_delay_ms\": the table read delay must be within 0 "
+                                             ".. 1000 ms, not -0.2: a delay is never negative"),
+            std::string::npos)
+      << negative.status().message();
 }
 
 // Metadata listing more test points than a plan may have (kMaxPlanPoints)
@@ -466,11 +479,18 @@ TEST(CsvImportErrors, BenchConstantsBeyondTheirPhysicalRangeAreRefused) {
        "\"bench.gyro_frame_period_ms\" = 1e+300 must be within 0.001 .. 1000"},
       {R"("gyro_rate_convention": "frame_average", "gyro_frame_period_ms": 1e-300)",
        "\"bench.gyro_frame_period_ms\" = 1e-300 must be within 0.001 .. 1000"},
-      {R"("counter_hz": 1e300)", "\"bench.counter_hz\" = 1e+300 is out of range (must be <= 1000000000000.0)"},
+      {R"("counter_hz": 1e300)",
+       "\"bench.counter_hz\": the sampling board's counter frequency must be above 0 and at most 1e12 Hz, not 1e+300"},
+      {R"("counter_bits": 4000000000000)",
+       "\"bench.counter_bits\": the sampling board's counter width must be 1 .. 64 bits, not 4000000000000"},
+      {R"("gain_tolerance": 5)", "\"bench.gain_tolerance\": the gain tolerance must be a fraction"},
+      {R"("pulse_equivalent_deg": 0.0)", "\"bench.pulse_equivalent_deg\" must be > 0 (degrees per gyro pulse)"},
   };
   for (const auto& c : cases) {
-    const std::string meta = std::string(R"({"bench": {"table_read_delay_ms": 0.05, "board_delay_ms": 0.28,
-      "pulse_equivalent_deg": 5e-5, )") + c.bench + R"(}, "test_points": [{"axis": "x"}]})";
+    const bool pulse = std::string(c.bench).find("pulse_equivalent_deg") != std::string::npos;
+    const std::string meta = std::string(R"({"bench": {"table_read_delay_ms": 0.05, "board_delay_ms": 0.28, )") +
+                             (pulse ? "" : R"("pulse_equivalent_deg": 5e-5, )") + c.bench +
+                             R"(}, "test_points": [{"axis": "x"}]})";
     auto s = importCsvDirectory(goodDir(meta.c_str(), kTable, "time_s,x_rate_deg_s\n0.002,1\n0.004,1\n"));
     ASSERT_FALSE(s.isOk()) << c.bench;
     EXPECT_NE(s.status().message().find(c.message), std::string::npos) << s.status().message();
@@ -732,7 +752,7 @@ TEST(CsvExport, CreatesNestedDirectories) {
 // A recording is in degrees (protocol::RecordingBuilder): they are written
 // untouched, with the pulse equivalent the recording states (not the bench
 // constant, which only stands in for a stream that states none) and the
-// session's gyro signs; all of it reads back.
+// session's gyro signs and gain tolerance; all of it reads back.
 TEST(CsvExport, TheRecordingsPulseEquivalentAndTheGyroSignsRoundTrip) {
   auto s = importCsvDirectory(goodDir());
   ASSERT_TRUE(s.isOk());
@@ -742,6 +762,7 @@ TEST(CsvExport, TheRecordingsPulseEquivalentAndTheGyroSignsRoundTrip) {
   SessionInfo info = s->info;
   info.bench.pulseEquivalentDeg = 7e-5;
   info.bench.gyroSign = {1, -1, -1};
+  info.bench.gainToleranceFraction = 0.025;
   const std::string dir = freshDir("-out");
   ASSERT_TRUE(exportCsv(dir, info, rec, nullptr).isOk());
   auto back = importCsvDirectory(dir);
@@ -751,6 +772,7 @@ TEST(CsvExport, TheRecordingsPulseEquivalentAndTheGyroSignsRoundTrip) {
   EXPECT_EQ(back->recording.testPoints[0].imu[0].incrementDeg[0], 20.0 * 1e-4);
   EXPECT_EQ(back->recording.testPoints[0].imu[0].incrementDeg[1], -3.0 * 1e-4);
   EXPECT_EQ(back->info.bench.gyroSign, (std::array<int, kAxisCount>{1, -1, -1}));
+  EXPECT_EQ(back->info.bench.gainToleranceFraction, 0.025);
 
   // A recording without gyro samples states no pulse equivalent: the
   // metadata could not say what the (absent) increments were.
