@@ -210,6 +210,18 @@ const char* const kTemplates[] = {
     QT_TRANSLATE_NOOP("core_text", "the gyro turns with the table (gyro/table ratio %1)"),
     QT_TRANSLATE_NOOP("core_text", "the gyro turns with the table (gyro/table ratio %1, after the stated sign -1)"),
     QT_TRANSLATE_NOOP("core_text", "the gyro's %1 axis turns against the table (gyro/table ratio %2): the axis is mounted the other way round or its sign convention differs from the table's; the delay is refused (read as a normal axis it would be a half-period lag). If the IMU is mounted so, state it (metadata bench.gyro_sign {\"%3\": -1}, or --gyro-sign %4=-1) and analyse again"),
+    // The gain check (core/analysis/gain_check.cpp): the gyro's scale against the bench's tolerance.
+    QT_TRANSLATE_NOOP("core_text", "the gyro's amplitude matches the table's (%1, within %2)"),
+    QT_TRANSLATE_NOOP("core_text", "gyro/table ratio %1"),
+    QT_TRANSLATE_NOOP("core_text", "gyro/table ratio %1 at %2 Hz, where the fitted %3 response's own gain is %4: scale %5"),
+    QT_TRANSLATE_NOOP("core_text", "the gyro reads %1 (%2, outside %3): the pulse equivalent or the frame period is wrong. An increment is its pulse count times the pulse equivalent, or its rate times the IMU's frame period: check both (bench.pulse_equivalent_deg; for imported rates bench.gyro_frame_period_ms or import --frame-period-ms) and analyse again; the delay is refused"),
+    QT_TRANSLATE_NOOP("core_text", "the gyro reads %1 (%2, outside %3): its scale is not the one the bench states. A pulse equivalent or frame period slightly off (rounded, or for another gyro) or a gyro outside its scale tolerance: check them and analyse again; the delay is refused. If the gyro's scale is known to be off by this much, state its tolerance (--gain-tolerance)"),
+    QT_TRANSLATE_NOOP("core_text", "the gyro reads %1 (%2, outside %3): its scale is not the one the bench states. A pulse equivalent or frame period slightly off (rounded, or for another gyro) or a gyro outside its scale tolerance: check them and analyse again; the delay is refused. If the gyro's own dynamics lower its gain at %4 Hz, measure its frequency response (run --preset response): the check takes out the dynamics fitted there. If the gyro's scale is known to be off by this much, state its tolerance (--gain-tolerance)"),
+    QT_TRANSLATE_NOOP("core_text", "%1× the table"),
+    QT_TRANSLATE_NOOP("core_text", "1/%1 of the table"),
+    QT_TRANSLATE_NOOP("core_text", "%1 % more than the table"),
+    QT_TRANSLATE_NOOP("core_text", "%1 % less than the table"),
+    QT_TRANSLATE_NOOP("core_text", "not judged: the gyro/table ratio is not a finite number"),
     // session::differencesFromRecord: this version's analysis against a stored result
     QT_TRANSLATE_NOOP("core_text", "test point %1: IMU delay %2 ms stored, %3 ms by this version's analysis"),
     QT_TRANSLATE_NOOP("core_text", "test point %1: %2 stored, %3 by this version's analysis"),

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "core/analysis/data_coverage.h"
+#include "core/analysis/gain_check.h"
 #include "core/analysis/least_squares.h"
 #include "core/analysis/sample_passes.h"
 #include "core/analysis/sin_cos_series.h"
@@ -858,6 +859,10 @@ Result<DelayReport> analyzeRecording(const Recording& recording, const BenchCons
     std::string why = report.failedPoints.front();
     return insufficientData("no test point gave a delay; " + why);
   }
+  // The gyro's scale against the bench's tolerance, with the dynamics of
+  // the axis' frequency response taken out (gain_check.h): before the
+  // frequency test, which pools only points that pass it.
+  addGainChecks(report, constants.gainToleranceFraction);
   report.consistency = frequencyConsistency(report.points);
   return report;
 }

@@ -6034,6 +6034,61 @@ The session itself is unchanged.</source>
     </message>
     <message>
         <location line="+2"/>
+        <source>the gyro&apos;s amplitude matches the table&apos;s (%1, within %2)</source>
+        <translation>陀螺幅值与转台一致（%1，在 %2 以内）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>gyro/table ratio %1</source>
+        <translation>陀螺/转台比 %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>gyro/table ratio %1 at %2 Hz, where the fitted %3 response&apos;s own gain is %4: scale %5</source>
+        <translation>%2 Hz 处陀螺/转台比 %1，拟合的%3响应在该频率自身的增益为 %4：标度 %5</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the gyro reads %1 (%2, outside %3): the pulse equivalent or the frame period is wrong. An increment is its pulse count times the pulse equivalent, or its rate times the IMU&apos;s frame period: check both (bench.pulse_equivalent_deg; for imported rates bench.gyro_frame_period_ms or import --frame-period-ms) and analyse again; the delay is refused</source>
+        <translation>陀螺读数%1（%2，超出 %3）：脉冲当量或帧周期有误。增量等于脉冲数乘以脉冲当量，或速率乘以 IMU 的帧周期：请检查两者（bench.pulse_equivalent_deg；导入的速率还有 bench.gyro_frame_period_ms 或 import --frame-period-ms）后重新分析；延迟被拒绝</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the gyro reads %1 (%2, outside %3): its scale is not the one the bench states. A pulse equivalent or frame period slightly off (rounded, or for another gyro) or a gyro outside its scale tolerance: check them and analyse again; the delay is refused. If the gyro&apos;s scale is known to be off by this much, state its tolerance (--gain-tolerance)</source>
+        <translation>陀螺读数%1（%2，超出 %3）：其标度与台架声明的不符。可能是脉冲当量或帧周期略有偏差（经过舍入，或属于另一只陀螺），或陀螺超出了其标度容差：请检查后重新分析；延迟被拒绝。如果已知陀螺标度确实偏差这么大，请声明其容差（--gain-tolerance）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the gyro reads %1 (%2, outside %3): its scale is not the one the bench states. A pulse equivalent or frame period slightly off (rounded, or for another gyro) or a gyro outside its scale tolerance: check them and analyse again; the delay is refused. If the gyro&apos;s own dynamics lower its gain at %4 Hz, measure its frequency response (run --preset response): the check takes out the dynamics fitted there. If the gyro&apos;s scale is known to be off by this much, state its tolerance (--gain-tolerance)</source>
+        <translation>陀螺读数%1（%2，超出 %3）：其标度与台架声明的不符。可能是脉冲当量或帧周期略有偏差（经过舍入，或属于另一只陀螺），或陀螺超出了其标度容差：请检查后重新分析；延迟被拒绝。如果陀螺自身的动态特性在 %4 Hz 处降低了其增益，请测量其频率响应（run --preset response）：本检查会扣除在那里拟合出的动态特性。如果已知陀螺标度确实偏差这么大，请声明其容差（--gain-tolerance）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1× the table</source>
+        <translation>为转台的 %1 倍</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>1/%1 of the table</source>
+        <translation>为转台的 1/%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 % more than the table</source>
+        <translation>比转台多 %1 %</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 % less than the table</source>
+        <translation>比转台少 %1 %</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not judged: the gyro/table ratio is not a finite number</source>
+        <translation>未判定：陀螺/转台比不是有限数</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>test point %1: IMU delay %2 ms stored, %3 ms by this version&apos;s analysis</source>
         <translation>测试点 %1：已保存的 IMU 延迟为 %2 ms，本版本的分析为 %3 ms</translation>
     </message>

@@ -11,6 +11,7 @@
 
 #include "core/analysis/data_coverage.h"
 #include "core/analysis/delay_analysis.h"
+#include "core/analysis/verdict.h"
 #include "core/common/units.h"
 #include "core/io/csv_export.h"
 #include "core/io/csv_import.h"
@@ -293,6 +294,52 @@ TEST(CsvImportRates, AConventionGivenBesideTheFilesIsAppliedAndRecorded) {
   auto increments = importCsvDirectory(goodDir(kMetadata, kTable, kGyro));
   ASSERT_TRUE(increments.isOk());
   EXPECT_TRUE(increments->info.imported.empty());
+}
+
+// Issue 39: 2-ms rate rows imported with --frame-period-ms 1000 read 500x
+// the table and passed ("ok axis_sign (gyro/table ratio 499.9995)", PASS):
+// the gain check makes the point invalid and says what is wrong. A frame
+// period 0.5 % off (2.01 ms) is within the default 1 % tolerance; 2 % off
+// (2.04 ms) is not.
+TEST(CsvImportRates, AWrongFramePeriodMakesThePointInvalid) {
+  const auto r = rateFiles();
+  const std::string meta = R"({"bench": {"table_read_delay_ms": 0, "board_delay_ms": 0, "pulse_equivalent_deg": 1e-6},
+                              "test_points": [{"axis": "x", "frequency_hz": 1}]})";
+  const auto dir = goodDir(meta.c_str(), r.table.c_str(), r.frameAverage.c_str());
+  struct Case {
+    double periodMs;
+    bool passes;
+    const char* words;
+  } cases[] = {
+      {2.0, true, "the gyro's amplitude matches the table's (gyro/table ratio 1.0000, within 1 ± 1 %)"},
+      {2.01, true, "(gyro/table ratio 1.0050, within 1 ± 1 %)"},
+      {2.04, false, "the gyro reads 2.00 % more than the table (gyro/table ratio 1.0200, outside 1 ± 1 %)"},
+      {1000.0, false,
+       "the gyro reads 500× the table (gyro/table ratio 500.0000, outside 1 ± 1 %): the pulse equivalent or the "
+       "frame period is wrong"},
+  };
+  for (const auto& c : cases) {
+    ImportOptions options;
+    options.gyroRateConvention = "frame_average";
+    options.gyroFramePeriodMs = c.periodMs;
+    auto s = importCsvDirectory(dir, options);
+    ASSERT_TRUE(s.isOk()) << s.status().message();
+    auto report = analysis::analyzeRecording(s->recording, s->info.bench);
+    ASSERT_TRUE(report.isOk()) << report.status().message();
+    const auto& point = report->points.at(0);
+    ASSERT_GE(point.checks.size(), 2u);
+    const auto& gain = point.checks[1];
+    EXPECT_EQ(gain.id, "gain");
+    EXPECT_EQ(gain.passed, c.passes) << c.periodMs << " ms: " << gain.detail;
+    EXPECT_NE(gain.detail.find(c.words), std::string::npos) << gain.detail;
+    EXPECT_NEAR(point.lagMs, 0.5, 1e-3);  // the delay itself is untouched: only the check can tell
+    if (!c.passes) {
+      const auto verdict = analysis::judgeReport(*report, analysis::kDefaultImuDelayLimitMs);
+      EXPECT_EQ(verdict.verdict, analysis::Verdict::kInvalid);
+      ASSERT_FALSE(verdict.reasons.empty());
+      EXPECT_NE(verdict.reasons.front().find(c.words), std::string::npos) << verdict.reasons.front();
+    }
+  }
 }
 
 // One continuous recording cut at the windows given: one test point each,
