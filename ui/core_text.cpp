@@ -189,7 +189,11 @@ const char* const kTemplates[] = {
     QT_TRANSLATE_NOOP("core_text", "amplitude %1 deg is beyond the table limit of %2 deg"),
     QT_TRANSLATE_NOOP("core_text", "peak rate %1 deg/s exceeds the table limit of %2 deg/s; lower the frequency or amplitude"),
     QT_TRANSLATE_NOOP("core_text", "peak acceleration %1 deg/s^2 exceeds the table limit of %2 deg/s^2; lower the frequency or amplitude"),
-    QT_TRANSLATE_NOOP("core_text", "duration %1 s is under two swing periods (%2 s); a delay needs at least two whole periods"),
+    // One rule for the fewest periods (test_plan.h kMinSwingPeriods): the plan's and the analysis' words.
+    QT_TRANSLATE_NOOP("core_text", "duration %1 s covers %2 swing periods, under two swing periods: a delay needs at least two whole periods (%3 s)"),
+    QT_TRANSLATE_NOOP("core_text", "the record covers %1 swing periods, under two swing periods: a delay needs at least two whole periods"),
+    QT_TRANSLATE_NOOP("core_text", "the table angle covers %1 swing periods, under two swing periods: a delay needs at least two whole periods (at %2 Hz)"),
+    QT_TRANSLATE_NOOP("core_text", "duration must be a finite number of seconds, got %1"),
     QT_TRANSLATE_NOOP("core_text", "duration %1 s is over 24 h; split the test into points"),
     QT_TRANSLATE_NOOP("core_text", "settle time must be >= 0 s, got %1"),
     QT_TRANSLATE_NOOP("core_text", "start phase must be finite"),

@@ -71,6 +71,21 @@ struct TestPoint {
   Status validate(const TurntableLimits& limits) const;
 };
 
+// The fewest swing periods a delay rests on, one rule for the plan and the
+// analysis: the plan refuses a point shorter (TestPoint::problems) and the
+// analysis a record that covers fewer (delay_analysis, validity), in the
+// same words (tooFewSwingPeriods). The plan counts a point's duration; the
+// analysis the span of its samples plus one sample interval of each stream
+// (N samples every dt span (N - 1) dt, and the first IMU frame only marks
+// where the increments start), so that a point of exactly two planned
+// periods is analysed.
+inline constexpr double kMinSwingPeriods = 2.0;
+// "" when `periods` reach kMinSwingPeriods (to rounding: 1e-9 of a period);
+// otherwise why not, the words after the subject: "covers 1.99 swing
+// periods, under two swing periods: a delay needs at least two whole
+// periods" (the count rounded down to hundredths, never up to 2.00).
+std::string tooFewSwingPeriods(double periods);
+
 // Largest table position, deg: the table's axes turn a full circle at most.
 inline constexpr double kMaxPositionDeg = 360.0;
 

@@ -5928,12 +5928,27 @@ The session itself is unchanged.</source>
         <translation>峰值角加速度 %1 °/s² 超出转台限值 %2 °/s²；请降低频率或幅值</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>duration %1 s is under two swing periods (%2 s); a delay needs at least two whole periods</source>
-        <translation>时长 %1 s 不足两个摆动周期（%2 s）；测量延迟至少需要两个完整周期</translation>
+        <location line="+5"/>
+        <source>duration must be a finite number of seconds, got %1</source>
+        <translation>时长必须是有限的秒数，当前为 %1</translation>
+    </message>
+    <message>
+        <location line="-3"/>
+        <source>duration %1 s covers %2 swing periods, under two swing periods: a delay needs at least two whole periods (%3 s)</source>
+        <translation>时长 %1 s 覆盖 %2 个摆动周期，不足两个摆动周期：测量延迟至少需要两个完整周期（%3 s）</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>the record covers %1 swing periods, under two swing periods: a delay needs at least two whole periods</source>
+        <translation>记录覆盖 %1 个摆动周期，不足两个摆动周期：测量延迟至少需要两个完整周期</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the table angle covers %1 swing periods, under two swing periods: a delay needs at least two whole periods (at %2 Hz)</source>
+        <translation>转台角度覆盖 %1 个摆动周期，不足两个摆动周期：测量延迟至少需要两个完整周期（频率 %2 Hz）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>duration %1 s is over 24 h; split the test into points</source>
         <translation>时长 %1 s 超过 24 h；请将测试拆分为多个测试点</translation>
     </message>

@@ -2,7 +2,10 @@
 // -> bytes -> decoder -> analysis), issue 39:
 //  - the gyro's scale against the bench's tolerance (the "gain" check): a
 //    scale 0.5 % off passes, 2 % off is invalid; a gyro whose resonance
-//    raises its gain 43 % at 11 Hz is not (its fitted dynamics are out).
+//    raises its gain 43 % at 11 Hz is not (its fitted dynamics are out);
+//  - one rule for a point's minimum periods: a point the plan accepts
+//    (exactly two periods, any start phase) is analysed, one below is
+//    refused by both in the same words.
 
 #include <gtest/gtest.h>
 
@@ -157,6 +160,56 @@ TEST(GainCheck, ItsWordsSayWhatIsWrongAndWhatToDo) {
   // A reversed axis' ratio is judged by its magnitude (axis_sign says the sign).
   p.magnitudeRatio = -1.0;
   EXPECT_TRUE(analysis::gainCheck(p, {}, 0.01).passed);
+}
+
+// ---- one rule for the minimum periods ---------------------------------------
+
+// A point of exactly two periods passes the plan and is analysed, whatever
+// its start phase (at 60, 90, 120 deg ... the analysis refused it: its
+// samples span 1.998 periods).
+TEST(MinimumPeriods, APointThePlanAcceptsIsAnalysed) {
+  for (double phase = 0.0; phase < 360.0; phase += 30.0) {
+    TestPlan plan;
+    plan.points.push_back({Axis::kX, 1.0, 3.0, 2.0, 1.0, phase});
+    ASSERT_TRUE(plan.validate(TurntableLimits{}).isOk()) << plan.validate(TurntableLimits{}).message();
+    auto rec = simulated(model::SimConfig{}, plan);
+    ASSERT_TRUE(rec.isOk()) << rec.status().toString();
+    auto report = analysis::analyzeRecording(*rec, BenchConstants{});
+    ASSERT_TRUE(report.isOk()) << phase << " deg: " << report.status().message();
+    EXPECT_EQ(report->points.size(), 1u) << phase << " deg";
+  }
+}
+
+// One below: the plan refuses it, and a recording cut to it (the plan's
+// point would not run) is refused by the analysis, in the same words.
+TEST(MinimumPeriods, OneBelowIsRefusedByBothInTheSameWords) {
+  const std::string words = "swing periods, under two swing periods: a delay needs at least two whole periods";
+  EXPECT_EQ(tooFewSwingPeriods(2.0), "");
+  EXPECT_EQ(tooFewSwingPeriods(2.0 - 1e-12), "");  // rounding
+  EXPECT_EQ(tooFewSwingPeriods(1.9989), "covers 1.99 " + words);  // rounded down, never "2.00"
+  TestPlan plan;
+  plan.points.push_back({Axis::kX, 1.0, 3.0, 1.9, 1.0, 90.0});
+  const Status refused = plan.validate(TurntableLimits{});
+  ASSERT_FALSE(refused.isOk());
+  EXPECT_EQ(refused.message(), "test point 1: duration 1.9 s covers 1.90 " + words + " (2 s)");
+
+  plan.points[0].durationS = 2.0;
+  auto rec = simulated(model::SimConfig{}, plan);
+  ASSERT_TRUE(rec.isOk());
+  auto& point = rec->testPoints.at(0);
+  const double end = point.table.front().timeS + 1.9;
+  std::erase_if(point.table, [end](const TableSample& s) { return s.timeS >= end; });
+  std::erase_if(point.imu, [end](const ImuSample& s) { return s.timeS >= end; });
+  auto report = analysis::analyzeRecording(*rec, BenchConstants{});
+  ASSERT_FALSE(report.isOk());
+  EXPECT_EQ(report.status().code(), StatusCode::kInsufficientData);
+  std::printf("  the plan: %s\n  the analysis: %s\n", refused.message().c_str(), report.status().message().c_str());
+  // (The table's own frequency estimate finds it first when the record
+  // is short of the planned periods: "the table angle covers ...".)
+  EXPECT_NE(report.status().message().find("test point 1: the "), std::string::npos) << report.status().message();
+  const std::string& why = report.status().message();
+  EXPECT_TRUE(why.find(" covers 1.90 ") != std::string::npos || why.find(" covers 1.89 ") != std::string::npos) << why;
+  EXPECT_NE(report.status().message().find(words), std::string::npos) << report.status().message();
 }
 
 }  // namespace
