@@ -147,7 +147,7 @@ Status TestPlan::validate(const TurntableLimits& limits) const {
     int moving = 0;
     double largest = 0.0;
     for (int a = 0; a < kAxisCount; ++a)
-      if (to[a] != from[a]) ++moving, largest = std::max(largest, std::abs(to[a] - from[a]));
+      if (std::abs(to[a] - from[a]) > kMotionToleranceDeg) ++moving, largest = std::max(largest, std::abs(to[a] - from[a]));
     if (moving == 0) continue;
     const std::string where = i == points.size() ? std::string("the return to zero after the last point")
                                                  : "the move to test point " + std::to_string(i + 1);

@@ -5,7 +5,10 @@
 //    raises its gain 43 % at 11 Hz is not (its fitted dynamics are out);
 //  - one rule for a point's minimum periods: a point the plan accepts
 //    (exactly two periods, any start phase) is analysed, one below is
-//    refused by both in the same words.
+//    refused by both in the same words;
+//  - moves compared with a tolerance: a plan with rest_between_s 0 whose
+//    points start and end where the next begins, to rounding, is accepted
+//    and runs.
 
 #include <gtest/gtest.h>
 
@@ -210,6 +213,36 @@ TEST(MinimumPeriods, OneBelowIsRefusedByBothInTheSameWords) {
   const std::string& why = report.status().message();
   EXPECT_TRUE(why.find(" covers 1.90 ") != std::string::npos || why.find(" covers 1.89 ") != std::string::npos) << why;
   EXPECT_NE(report.status().message().find(words), std::string::npos) << report.status().message();
+}
+
+// ---- moves with a tolerance -----------------------------------------------
+
+// Whole periods end where they start (to 7e-15 deg of rounding): with
+// rest_between_s 0 the plan is accepted, and it runs.
+TEST(PlanMotion, RestZeroBetweenPointsThatMeetToRoundingRuns) {
+  TestPlan plan;
+  plan.restBetweenS = 0.0;
+  plan.points.push_back({Axis::kX, 1.0, 3.0, 10.0, 1.0, 0.0});
+  plan.points.push_back({Axis::kX, 2.0, 1.5, 5.0, 0.5, 0.0});
+  const double end = plan.endAnglesDeg(0)[0];
+  std::printf("  the first point ends %.3g deg from where the second starts\n", end - plan.startAnglesDeg(1)[0]);
+  EXPECT_NE(end, 0.0);  // rounding: what the plan once refused
+  ASSERT_TRUE(plan.validate(TurntableLimits{}).isOk()) << plan.validate(TurntableLimits{}).message();
+  auto rec = simulated(model::SimConfig{}, plan);
+  ASSERT_TRUE(rec.isOk()) << rec.status().toString();
+  auto report = analysis::analyzeRecording(*rec, BenchConstants{});
+  ASSERT_TRUE(report.isOk()) << report.status().toString();
+  ASSERT_EQ(report->points.size(), 2u);
+  const auto verdict = analysis::judgeReport(*report, analysis::kDefaultImuDelayLimitMs);
+  EXPECT_EQ(verdict.verdict, analysis::Verdict::kPass) << (verdict.reasons.empty() ? "" : verdict.reasons.front());
+
+  // A real move still needs its rest.
+  plan.points[1].positionDeg[2] = 1e-3;
+  const Status s = plan.validate(TurntableLimits{});
+  ASSERT_FALSE(s.isOk());
+  EXPECT_NE(s.message().find("the move to test point 2 turns the table by 0.001 deg with no rest time"),
+            std::string::npos)
+      << s.message();
 }
 
 }  // namespace
