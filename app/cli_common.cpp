@@ -52,6 +52,7 @@ void storeConstants(const BenchConstants& c, BenchConstants& bench) {
   if (c.pulseEquivalentDeg > 0) bench.pulseEquivalentDeg = c.pulseEquivalentDeg;
   bench.gyroSign = c.gyroSign;
   bench.imuFrame = c.imuFrame;
+  bench.gainToleranceFraction = c.gainToleranceFraction;
 }
 
 Result<BenchConstants> readConstants(CliArguments& args, const BenchConstants& defaults) {
@@ -63,20 +64,28 @@ Result<BenchConstants> readConstants(CliArguments& args, const BenchConstants& d
                 {"read-delay-std-ms", &c.tableReadDelayStdMs},
                 {"board-delay-ms", &c.boardDelayMs},
                 {"board-delay-std-ms", &c.boardDelayStdMs},
-                {"pulse-equivalent-deg", &c.pulseEquivalentDeg}};
+                {"pulse-equivalent-deg", &c.pulseEquivalentDeg},
+                {"gain-tolerance", &c.gainToleranceFraction}};
   for (auto& f : fields) {
     FOG_ASSIGN_OR_RETURN(auto v, args.number(f.name, *f.target));
     *f.target = v;
   }
-  if (c.tableReadDelayStdMs < 0 || c.boardDelayStdMs < 0)
-    return invalidArgument("uncertainties of bench constants must be >= 0");
-  if (c.pulseEquivalentDeg < 0) return invalidArgument("--pulse-equivalent-deg must be >= 0");
   if (auto signs = args.text("gyro-sign")) {
     FOG_ASSIGN_OR_RETURN(auto parsed, parseGyroSigns(*signs, c.gyroSign));
     c.gyroSign = parsed;
   }
   FOG_ASSIGN_OR_RETURN(c.imuFrame, readImuFrame(args, c.imuFrame));
-  return c;
+  // The ranges of every constant, as the GUI's dialog and the importer check
+  // them (checkBenchConstants): an option given names itself; a value the
+  // session stored (never the built-in defaults, which are in range) says
+  // where it came from and how to override it.
+  const auto problems = benchConstantProblems(c);
+  if (problems.empty()) return c;
+  const auto& first = problems.front();
+  const std::string option = benchConstantOption(first.field);
+  if (!option.empty() && args.has(option.substr(2))) return invalidArgument(option + ": " + first.message);
+  return invalidArgument("the session's stored bench constants: " + first.message +
+                         (option.empty() ? std::string() : "; give " + option + " to analyse with another value"));
 }
 
 Result<ImuFrame> readImuFrame(CliArguments& args, const ImuFrame& defaults) {

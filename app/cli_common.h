@@ -36,9 +36,13 @@ Status checkOutputFile(const std::string& path, bool overwrite, const std::strin
 
 // The bench constants as the session (or the defaults) has them, each
 // overridable on the command line: --read-delay-ms, --read-delay-std-ms,
-// --board-delay-ms, --board-delay-std-ms, --pulse-equivalent-deg; and
+// --board-delay-ms, --board-delay-std-ms, --pulse-equivalent-deg,
+// --gain-tolerance (a fraction: the gain check's scale tolerance); and
 // --gyro-sign x=-1[,y=-1...] for a gyro axis mounted the other way round;
 // --imu-frame NED|ENU|FRD[:H]|RFU[:H] for where the IMU's axes point at zero.
+// Every constant is then range-checked (checkBenchConstants,
+// core/common/bench_constants.h): "--board-delay-ms: the processing-board
+// delay (1e+308 ms) must be within 0 .. 1000 ms: ...".
 Result<BenchConstants> readConstants(CliArguments& args, const BenchConstants& defaults = {});
 // --imu-frame NED|ENU|FRD[:H]|RFU[:H]: the frame given, or `defaults` (the
 // session's stored frame) without the option; "--imu-frame: ..." when it is

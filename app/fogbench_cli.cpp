@@ -131,6 +131,8 @@ constants: --read-delay-ms (0.05) --read-delay-std-ms (0) --board-delay-ms (0.28
            --gyro-sign x=-1[,y=-1,z=-1] (a gyro axis mounted the other way round)
            --imu-frame NED|ENU|FRD[:H]|RFU[:H] (the IMU's axes at zero table angles; H: azimuth
              of its forward axis; unstated, the diagnosis finds z's direction from the data)
+           --gain-tolerance F (0.01: the gyro/table ratio, its fitted dynamics out, within 1 +- F)
+           delays and their uncertainties within 0 .. 1000 ms, a pulse equivalent within 1e-9 .. 1 deg
 exit codes: 0 ok, 1 the data gave no result, 2 bad command line or input.
 )";
 

@@ -12,6 +12,8 @@
 
 #include <algorithm>
 
+#include "ui/core_text.h"
+
 namespace fog::ui {
 
 namespace {
@@ -43,6 +45,25 @@ BenchConstants loadBenchConstants() {
   // A frame that does not read (edited by hand) is not stated: the diagnosis
   // then finds it from the data, never uses a half-read one.
   if (auto frame = imuFrameFromText(q.value("imu_frame", QString()).toString().toStdString())) s.imuFrame = *frame;
+  s.gainToleranceFraction = q.value("gain_tolerance", d.gainToleranceFraction).toDouble();
+  // A remembered value out of its range (settings edited by hand) is not
+  // used: that constant reads its default (checkBenchConstants, the ranges
+  // of the command line and the importer).
+  for (const auto& problem : benchConstantProblems(s)) {
+    using Field = BenchConstantProblem::Field;
+    switch (problem.field) {
+      case Field::kTableReadDelay: s.tableReadDelayMs = d.tableReadDelayMs; break;
+      case Field::kTableReadDelayStd: s.tableReadDelayStdMs = d.tableReadDelayStdMs; break;
+      case Field::kBoardDelay: s.boardDelayMs = d.boardDelayMs; break;
+      case Field::kBoardDelayStd: s.boardDelayStdMs = d.boardDelayStdMs; break;
+      case Field::kLatitude: s.latitudeDeg = d.latitudeDeg; break;
+      case Field::kPulseEquivalent: s.pulseEquivalentDeg = d.pulseEquivalentDeg; break;
+      case Field::kCounterHz: s.counterHz = d.counterHz; break;
+      case Field::kCounterBits: s.counterBits = d.counterBits; break;
+      case Field::kGyroSign: s.gyroSign = d.gyroSign; break;
+      case Field::kGainTolerance: s.gainToleranceFraction = d.gainToleranceFraction; break;
+    }
+  }
   return s;
 }
 
@@ -58,6 +79,7 @@ void saveBenchConstants(const BenchConstants& s) {
   q.setValue("counter_hz", s.counterHz);
   q.setValue("counter_bits", s.counterBits);
   q.setValue("imu_frame", QString::fromStdString(imuFrameToText(s.imuFrame)));
+  q.setValue("gain_tolerance", s.gainToleranceFraction);
 }
 
 AnalysisChoices loadAnalysisChoices() {
@@ -106,6 +128,13 @@ BenchSettingsDialog::BenchSettingsDialog(const BenchConstants& s, const Analysis
   form->addRow(tr("Gyro pulse equivalent"), pulseEquivalent_);
   form->addRow(tr("Sampling-board counter"), counterMHz_);
   form->addRow(tr("Counter width"), counterBits_);
+  gainTolerance_ = spin(0.0001, 99.9999, 4, tr(" %"), s.gainToleranceFraction * 100.0);
+  gainTolerance_->setObjectName("gainToleranceSpin");
+  gainTolerance_->setToolTip(tr("The gyro's stated scale tolerance: each test point's gyro/table amplitude ratio, "
+                                "with the gyro's fitted dynamics taken out, must lie within 1 ± this, or the point "
+                                "is invalid (a wrong pulse equivalent or frame period scales the gyro, not the "
+                                "delay)"));
+  form->addRow(tr("Gyro scale tolerance"), gainTolerance_);
   for (int a = 0; a < kAxisCount; ++a) {
     auto* sign = new QComboBox();
     sign->addItem(tr("+1 (turns with the table)"), 1);
@@ -151,6 +180,13 @@ BenchSettingsDialog::BenchSettingsDialog(const BenchConstants& s, const Analysis
                              "The gyro signs and the limit are stored with every result: changing them changes "
                              "no stored verdict; re-analyse a session to store a new result with them."));
   note->setWordWrap(true);
+  // What checkBenchConstants refuses, shown here when OK is pressed (the
+  // dialog then stays open).
+  problem_ = new QLabel();
+  problem_->setObjectName("benchConstantsProblem");
+  problem_->setWordWrap(true);
+  problem_->setStyleSheet("color: #b00020;");
+  problem_->hide();
   auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel |
                                        QDialogButtonBox::RestoreDefaults);
   connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
@@ -165,6 +201,7 @@ BenchSettingsDialog::BenchSettingsDialog(const BenchConstants& s, const Analysis
     pulseEquivalent_->setValue(d.pulseEquivalentDeg);
     counterMHz_->setValue(d.counterHz / 1e6);
     counterBits_->setValue(d.counterBits);
+    gainTolerance_->setValue(d.gainToleranceFraction * 100.0);
     for (auto* sign : gyroSign_) sign->setCurrentIndex(0);
     imuFrame_->setCurrentIndex(0);
     forwardHeading_->setValue(forwardHeading_->minimum());
@@ -173,7 +210,23 @@ BenchSettingsDialog::BenchSettingsDialog(const BenchConstants& s, const Analysis
   auto* layout = new QVBoxLayout(this);
   layout->addLayout(form);
   layout->addWidget(note);
+  layout->addWidget(problem_);
   layout->addWidget(buttons);
+}
+
+void BenchSettingsDialog::accept() {
+  // The ranges the command line and the importer check (checkBenchConstants):
+  // the spin boxes keep most values within them; what is still out is said
+  // and the dialog stays open.
+  BenchConstants s = settings();
+  s.gyroSign = analysisChoices().gyroSign;
+  if (const Status status = checkBenchConstants(s); !status.isOk()) {
+    problem_->setText(coreText(status.message()));
+    problem_->show();
+    return;
+  }
+  problem_->hide();
+  QDialog::accept();
 }
 
 BenchConstants BenchSettingsDialog::settings() const {
@@ -186,6 +239,7 @@ BenchConstants BenchSettingsDialog::settings() const {
   s.pulseEquivalentDeg = pulseEquivalent_->value();
   s.counterHz = counterMHz_->value() * 1e6;
   s.counterBits = counterBits_->value();
+  s.gainToleranceFraction = gainTolerance_->value() / 100.0;
   s.imuFrame.convention = ImuFrame::Convention(imuFrame_->currentData().toInt());
   if (forwardHeading_->isEnabled() && forwardHeading_->value() > forwardHeading_->minimum())
     s.imuFrame.forwardHeadingDeg = forwardHeading_->value();

@@ -1,7 +1,7 @@
 #pragma once
 // The bench constants dialog: table read delay, processing-board delay (each
-// with its standard uncertainty), latitude, pulse equivalent and the sampling
-// board's counter frequency; and the analysis settings the CLI takes as
+// with its standard uncertainty), latitude, pulse equivalent, the sampling
+// board's counter frequency and the gyro's scale tolerance (the gain check); and the analysis settings the CLI takes as
 // --gyro-sign and --limit-ms (the sense of each gyro axis, the acceptance
 // limit). What the operator sets is remembered between runs (QSettings,
 // groups "bench" and "analysis"); every run and re-analysis stores them with
@@ -39,6 +39,9 @@ class BenchSettingsDialog : public QDialog {
   BenchSettingsDialog(const BenchConstants& settings, const AnalysisChoices& choices, QWidget* parent = nullptr);
   BenchConstants settings() const;
   AnalysisChoices analysisChoices() const;
+  // OK: accepted only when checkBenchConstants passes; otherwise its message
+  // is shown in the dialog (objectName "benchConstantsProblem") and it stays open.
+  void accept() override;
 
  private:
   QDoubleSpinBox* readDelay_ = nullptr;
@@ -49,10 +52,12 @@ class BenchSettingsDialog : public QDialog {
   QDoubleSpinBox* pulseEquivalent_ = nullptr;
   QDoubleSpinBox* counterMHz_ = nullptr;
   QSpinBox* counterBits_ = nullptr;
+  QDoubleSpinBox* gainTolerance_ = nullptr;  // percent: BenchConstants::gainToleranceFraction x 100
   std::array<QComboBox*, kAxisCount> gyroSign_{};
   QComboBox* imuFrame_ = nullptr;            // convention, or not stated
   QDoubleSpinBox* forwardHeading_ = nullptr;  // FRD / RFU; its minimum reads "not stated"
   QDoubleSpinBox* limit_ = nullptr;
+  QLabel* problem_ = nullptr;  // what checkBenchConstants refused, when OK was pressed
 };
 
 }  // namespace fog::ui

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/analysis/sample_passes.h"
+#include "core/common/test_plan.h"
 
 namespace fog::analysis {
 
@@ -82,7 +83,7 @@ std::string coverageRefusal(const DataCoverage& c, double frequencyHz) {
   if (c.largestGapS > period)
     return "a gap of " + fmt("%.2f", c.largestGapS) + " s without data is longer than one swing period (" +
            fmt("%.2f", period) + " s)" + lost + "; no delay is fitted across it: record the point again";
-  if (c.missingS > 0.0 && c.coveredS() * frequencyHz < 2.0)
+  if (c.missingS > 0.0 && c.coveredS() * frequencyHz < kMinSwingPeriods)
     return "the data cover " + fmt("%.2f", c.coveredS() * frequencyHz) +
            " swing periods once gaps are removed" + lost + "; a delay needs at least two whole periods";
   if (c.missingS > kMaxMissingFraction * c.spanS)

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "core/analysis/data_coverage.h"
+#include "core/analysis/gain_check.h"
 #include "core/analysis/least_squares.h"
 #include "core/analysis/sample_passes.h"
 #include "core/analysis/sin_cos_series.h"
@@ -443,6 +444,17 @@ Status prepare(PointWork& work) {
   return Status::ok();
 }
 
+// The swing periods a point's samples cover at f, counted as the plan counts
+// its duration (kMinSwingPeriods, test_plan.h): their span plus one sample
+// interval of each stream (N samples every dt span (N - 1) dt; the first
+// IMU frame only marks where the increments start). A point of exactly two
+// planned periods spans 1.998 at 1 Hz and is analysed.
+double coveredPeriods(const PointWork& work, double f) {
+  const auto& t = work.ch.table.timeS;
+  const double tableInterval = t.size() > 1 ? (t.back() - t.front()) / static_cast<double>(t.size() - 1) : 0.0;
+  return (work.r.durationS + tableInterval + work.ch.gyro.framePeriodS) * f;
+}
+
 // Nominal frequency: what the plan said, checked against the data
 // (measuredHz: estimateSwingFrequencyHz of the table channel).
 Status chooseFrequency(PointWork& work, const Result<double>& measuredHz) {
@@ -461,9 +473,8 @@ Status chooseFrequency(PointWork& work, const Result<double>& measuredHz) {
   r.periods = r.durationS * f0;
   if (!(data.nominalFrequencyHz > 0.0))
     if (auto why = coverageRefusal(coverage, f0); !why.empty()) return insufficientData(why);
-  if (r.periods < 2.0)
-    return insufficientData("test point " + std::to_string(data.index + 1) + " covers " + fmt(r.periods, 2) +
-                            " swing periods; a delay needs at least two whole periods");
+  if (const std::string few = tooFewSwingPeriods(coveredPeriods(work, f0)); !few.empty())
+    return insufficientData("the record " + few);  // analyzeRecording names the point
   const double w0 = kTwoPi * f0;
   work.f0 = f0;
   work.w0 = w0;
@@ -760,7 +771,7 @@ Result<TestPointResult> analyzeTestPoint(const TestPointData& data, const BenchC
   PointWork work(data, constants);
   FOG_RETURN_IF_ERROR(prepare(work));
   const double planned = data.nominalFrequencyHz;
-  if (!(planned > 0.0 && work.r.durationS * planned >= 2.0)) {
+  if (!(planned > 0.0 && tooFewSwingPeriods(coveredPeriods(work, planned)).empty())) {
     FOG_RETURN_IF_ERROR(chooseFrequency(work, estimateSwingFrequencyHz(work.ch.table)));
     return fitAndCheck(work);
   }
@@ -858,6 +869,10 @@ Result<DelayReport> analyzeRecording(const Recording& recording, const BenchCons
     std::string why = report.failedPoints.front();
     return insufficientData("no test point gave a delay; " + why);
   }
+  // The gyro's scale against the bench's tolerance, with the dynamics of
+  // the axis' frequency response taken out (gain_check.h): before the
+  // frequency test, which pools only points that pass it.
+  addGainChecks(report, constants.gainToleranceFraction);
   report.consistency = frequencyConsistency(report.points);
   return report;
 }

@@ -147,7 +147,10 @@ Result<TestPointResult> analyzeTestPoint(const TestPointData& data, const BenchC
 
 // Analyses every swing test point; static segments are listed in
 // staticSegments and not analysed. Fails only when no test point gives a
-// delay (a recording of static segments only says so).
+// delay (a recording of static segments only says so). Each point's checks
+// are analyzeTestPoint's and the "gain" check (gain_check.h), which needs
+// the axis' other points: the gyro's scale against
+// constants.gainToleranceFraction once the axis' fitted dynamics are out.
 Result<DelayReport> analyzeRecording(const Recording& recording, const BenchConstants& constants);
 
 // True when no judged validity check of the point failed: its delay stands.

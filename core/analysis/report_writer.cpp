@@ -178,7 +178,8 @@ std::string formatReportJson(const DelayReport& report, const ReportContext& con
   doc["constants"] = {{"table_read_delay_ms", c.tableReadDelayMs},
                       {"table_read_delay_std_ms", c.tableReadDelayStdMs},
                       {"board_delay_ms", c.boardDelayMs},
-                      {"board_delay_std_ms", c.boardDelayStdMs}};
+                      {"board_delay_std_ms", c.boardDelayStdMs},
+                      {"gain_tolerance", c.gainToleranceFraction}};
   const auto& h = report.health;
   doc["stream"] = {{"table_frames", h.tableFrames},         {"imu_frames", h.imuFrames},
                    {"status_frames", h.statusFrames},       {"checksum_failures", h.checksumFailures},

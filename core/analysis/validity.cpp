@@ -141,10 +141,11 @@ Result<double> estimateSwingFrequencyHz(const TableChannel& table) {
     }
   }
   const double f = 0.5 * (a + b) / kTwoPi;
-  if (f * spanS < 2.0)
-    return insufficientData("the table angle shows fewer than two whole swing periods (" +
-                            std::to_string(f * spanS).substr(0, 4) + " at " + std::to_string(f).substr(0, 6) +
-                            " Hz)");
+  // Counted as the plan counts a point's duration: the span and one sample
+  // interval (kMinSwingPeriods, test_plan.h).
+  const double interval = spanS / static_cast<double>(t.size() - 1);
+  if (const std::string few = tooFewSwingPeriods(f * (spanS + interval)); !few.empty())
+    return insufficientData("the table angle " + few + " (at " + std::to_string(f).substr(0, 6) + " Hz)");
   return f;
 }
 

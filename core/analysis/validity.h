@@ -22,7 +22,8 @@
 namespace fog::analysis {
 
 // One check of a test point. Ids are stable (the JSON report's "checks"):
-// "axis_sign", "clock_rate", "steady_sine", "causal".
+// "axis_sign", "gain" (added by analyzeRecording, gain_check.h),
+// "steady_sine", "clock_rate", "causal", "uncertainty_below_bound".
 struct ValidityCheck {
   std::string id;
   bool passed = true;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -58,6 +59,15 @@ std::string num(double v) {
 }
 }  // namespace
 
+std::string tooFewSwingPeriods(double periods) {
+  if (periods >= kMinSwingPeriods * (1.0 - 1e-9)) return {};
+  // Rounded down: 1.998 periods read "1.99", never "2.00 ... under two".
+  const double shown = std::isfinite(periods) ? std::floor(std::max(periods, 0.0) * 100.0) / 100.0 : 0.0;
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2f", shown);
+  return "covers " + std::string(text) + " swing periods, under two swing periods: a delay needs at least two whole periods";
+}
+
 std::vector<TestPoint::Problem> TestPoint::problems(const TurntableLimits& limits) const {
   using Field = Problem::Field;
   std::vector<Problem> out;
@@ -98,9 +108,12 @@ std::vector<TestPoint::Problem> TestPoint::problems(const TurntableLimits& limit
         add(Field::kFrequency, "peak acceleration " + num(peakAccel) + " deg/s^2 exceeds the table limit of " +
                                    num(limits.maxAccelDegPerS2) + " deg/s^2; lower the frequency or amplitude");
     }
-    if (!durationOk || (frequencyOk && durationS < 2.0 * periodS()))
-      add(Field::kDuration, "duration " + num(durationS) + " s is under two swing periods (" +
-                                num(frequencyOk ? 2.0 * periodS() : 0.0) + " s); a delay needs at least two whole periods");
+    if (!durationOk)
+      add(Field::kDuration, "duration must be a finite number of seconds, got " + num(durationS));
+    else if (const std::string few = frequencyOk ? tooFewSwingPeriods(durationS * frequencyHz) : std::string();
+             !few.empty())
+      add(Field::kDuration, "duration " + num(durationS) + " s " + few + " (" +
+                                num(kMinSwingPeriods * periodS()) + " s)");
   }
   if (durationOk && durationS > 24.0 * 3600.0)
     add(Field::kDuration, "duration " + num(durationS) + " s is over 24 h; split the test into points");
@@ -134,7 +147,7 @@ Status TestPlan::validate(const TurntableLimits& limits) const {
     int moving = 0;
     double largest = 0.0;
     for (int a = 0; a < kAxisCount; ++a)
-      if (to[a] != from[a]) ++moving, largest = std::max(largest, std::abs(to[a] - from[a]));
+      if (std::abs(to[a] - from[a]) > kMotionToleranceDeg) ++moving, largest = std::max(largest, std::abs(to[a] - from[a]));
     if (moving == 0) continue;
     const std::string where = i == points.size() ? std::string("the return to zero after the last point")
                                                  : "the move to test point " + std::to_string(i + 1);

@@ -71,6 +71,30 @@ struct TestPoint {
   Status validate(const TurntableLimits& limits) const;
 };
 
+// The fewest swing periods a delay rests on, one rule for the plan and the
+// analysis: the plan refuses a point shorter (TestPoint::problems) and the
+// analysis a record that covers fewer (delay_analysis, validity), in the
+// same words (tooFewSwingPeriods). The plan counts a point's duration; the
+// analysis the span of its samples plus one sample interval of each stream
+// (N samples every dt span (N - 1) dt, and the first IMU frame only marks
+// where the increments start), so that a point of exactly two planned
+// periods is analysed.
+inline constexpr double kMinSwingPeriods = 2.0;
+// "" when `periods` reach kMinSwingPeriods (to rounding: 1e-9 of a period);
+// otherwise why not, the words after the subject: "covers 1.99 swing
+// periods, under two swing periods: a delay needs at least two whole
+// periods" (the count rounded down to hundredths, never up to 2.00).
+std::string tooFewSwingPeriods(double periods);
+
+// Moves between test points are compared to within this (deg): the planned
+// end of one point and the start of the next (or zero) that agree to it are
+// the same place, and no rest is needed to move between them. Far below any
+// table encoder's resolution (3.6e-3 arcsec), far above the rounding of
+// position + amplitude * sin(2 pi f t + phase) over a 1-h plan at 20 Hz (an
+// argument of 4.5e5 rad: a few 1e-9 deg; a whole-period swing's end read
+// 7e-15 deg and refused a plan with rest_between_s 0).
+inline constexpr double kMotionToleranceDeg = 1e-6;
+
 // Largest table position, deg: the table's axes turn a full circle at most.
 inline constexpr double kMaxPositionDeg = 360.0;
 
@@ -98,7 +122,8 @@ struct TestPlan {
 
   // Ok, or the first problem ("test point 3: ...") and what to do. Also
   // checks the moves between points against the limits (each axis moves in
-  // restBetweenS / (number of axes that move), with a raised-cosine profile).
+  // restBetweenS / (number of axes that move), with a raised-cosine profile;
+  // an axis moves when its angles differ by more than kMotionToleranceDeg).
   Status validate(const TurntableLimits& limits) const;
   // Where the table starts point `index`: its position, with the swing axis
   // at position + amplitude * sin(startPhase) (index == points.size(): zero).

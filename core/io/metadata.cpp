@@ -16,8 +16,7 @@ using Json = nlohmann::ordered_json;
 
 // Physical bounds of the metadata's numbers (docs/formats.md): beyond them a
 // value is a unit or typing error, and near a double's range it overflows.
-constexpr double kMaxPulseEquivalentDeg = 1.0;     // degrees per gyro pulse
-constexpr double kMaxCounterHz = 1e12;             // the board's time-stamp counter
+// (The bench constants' ranges: checkBenchConstants, core/common/bench_constants.h.)
 constexpr double kMaxSwingFrequencyHz = 1000.0;
 constexpr double kMaxSwingAmplitudeDeg = 3600.0;   // ten turns each way
 
@@ -128,7 +127,8 @@ std::string metadataToJson(const Metadata& meta) {
   j["bench"] = {{"table_read_delay_ms", b.tableReadDelayMs}, {"table_read_delay_std_ms", b.tableReadDelayStdMs},
                 {"board_delay_ms", b.boardDelayMs},          {"board_delay_std_ms", b.boardDelayStdMs},
                 {"latitude_deg", b.latitudeDeg},             {"pulse_equivalent_deg", b.pulseEquivalentDeg},
-                {"counter_hz", b.counterHz},                 {"counter_bits", b.counterBits}};
+                {"counter_hz", b.counterHz},                 {"counter_bits", b.counterBits},
+                {"gain_tolerance", b.gainToleranceFraction}};
   // Only the axes mounted the other way round: a file without the key reads +1.
   Json signs = Json::object();
   for (int a = 0; a < kAxisCount; ++a)
@@ -254,31 +254,31 @@ Status readBench(const std::string& path, const Json& j, Metadata& meta) {
   FOG_RETURN_IF_ERROR(bench.checkKeys({"table_read_delay_ms", "table_read_delay_std_ms", "board_delay_ms",
                                        "board_delay_std_ms", "latitude_deg", "pulse_equivalent_deg", "counter_hz",
                                        "counter_bits", "gyro_rate_convention", "gyro_frame_period_ms",
-                                       "gyro_sign", "imu_frame"}));
+                                       "gyro_sign", "imu_frame", "gain_tolerance"}));
   FOG_RETURN_IF_ERROR(bench.number("table_read_delay_ms", b.tableReadDelayMs, true));
-  FOG_RETURN_IF_ERROR(bench.number("table_read_delay_std_ms", b.tableReadDelayStdMs, false, 0.0));
+  FOG_RETURN_IF_ERROR(bench.number("table_read_delay_std_ms", b.tableReadDelayStdMs, false));
   FOG_RETURN_IF_ERROR(bench.number("board_delay_ms", b.boardDelayMs, true));
-  FOG_RETURN_IF_ERROR(bench.number("board_delay_std_ms", b.boardDelayStdMs, false, 0.0));
-  // A delay constant is a fraction of a frame or a few: beyond a second it is a
-  // typo or a unit error (1e308 went through into the breakdown).
-  for (const auto& [key, value] : {std::pair{"table_read_delay_ms", b.tableReadDelayMs},
-                                   {"table_read_delay_std_ms", b.tableReadDelayStdMs},
-                                   {"board_delay_ms", b.boardDelayMs},
-                                   {"board_delay_std_ms", b.boardDelayStdMs}})
-    if (std::abs(value) > 1000.0)
-      return corruptData(path + ": \"bench." + key + "\" = " + Json(value).dump() +
-                         " ms is beyond a second; bench delays are in milliseconds (docs/formats.md)");
-  FOG_RETURN_IF_ERROR(bench.number("latitude_deg", b.latitudeDeg, false, -90.0));
-  if (b.latitudeDeg > 90.0) return corruptData(path + ": \"bench.latitude_deg\" must be within [-90, 90]");
-  FOG_RETURN_IF_ERROR(bench.number("pulse_equivalent_deg", b.pulseEquivalentDeg, true, -HUGE_VAL, kMaxPulseEquivalentDeg));
-  if (!(b.pulseEquivalentDeg > 0.0))
-    return corruptData(path + ": \"bench.pulse_equivalent_deg\" must be > 0 (degrees per gyro pulse)");
-  FOG_RETURN_IF_ERROR(bench.number("counter_hz", b.counterHz, false, -HUGE_VAL, kMaxCounterHz));
-  if (!(b.counterHz > 0.0)) return corruptData(path + ": \"bench.counter_hz\" must be > 0");
+  FOG_RETURN_IF_ERROR(bench.number("board_delay_std_ms", b.boardDelayStdMs, false));
+  FOG_RETURN_IF_ERROR(bench.number("latitude_deg", b.latitudeDeg, false));
+  FOG_RETURN_IF_ERROR(bench.number("pulse_equivalent_deg", b.pulseEquivalentDeg, true));
+  FOG_RETURN_IF_ERROR(bench.number("counter_hz", b.counterHz, false));
+  FOG_RETURN_IF_ERROR(bench.number("gain_tolerance", b.gainToleranceFraction, false));
   std::uint64_t bits = static_cast<std::uint64_t>(b.counterBits);
   FOG_RETURN_IF_ERROR(bench.integer("counter_bits", bits));
-  if (bits < 1 || bits > 64) return corruptData(path + ": \"bench.counter_bits\" must be 1 .. 64");
-  b.counterBits = static_cast<int>(bits);
+  // Held as an int: beyond 64 it is out of range whatever the cast would make of it.
+  b.counterBits = bits > 64 ? 65 : static_cast<int>(bits);
+  // The ranges the command line and the GUI's dialog check too
+  // (checkBenchConstants): a delay of 1e308 ms is a typo or a unit error.
+  if (const auto problems = benchConstantProblems(b); !problems.empty())
+    return corruptData(path + ": \"bench." + benchConstantKey(problems.front().field) + "\": " +
+                       (bits > 64 && problems.front().field == BenchConstantProblem::Field::kCounterBits
+                            ? "the sampling board's counter width must be 1 .. 64 bits, not " + std::to_string(bits)
+                            : problems.front().message) +
+                       " (docs/formats.md)");
+  // An import must state its pulse equivalent: 0 ("not set") is for a
+  // stream that states its own.
+  if (!(b.pulseEquivalentDeg > 0.0))
+    return corruptData(path + ": \"bench.pulse_equivalent_deg\" must be > 0 (degrees per gyro pulse)");
   std::string convention;
   FOG_RETURN_IF_ERROR(bench.string("gyro_rate_convention", convention));
   meta.rateConvention = rateConventionFromName(convention);

@@ -37,7 +37,7 @@
 <context>
     <name>fog::ui::BenchSettingsDialog</name>
     <message>
-        <location filename="../../ui/bench_settings_dialog.cpp" line="+85"/>
+        <location filename="../../ui/bench_settings_dialog.cpp" line="+107"/>
         <source>Bench constants</source>
         <translation>测试台常数</translation>
     </message>
@@ -46,18 +46,18 @@
         <location line="+1"/>
         <location line="+1"/>
         <location line="+1"/>
-        <location line="+53"/>
+        <location line="+60"/>
         <source> ms</source>
         <translation> ms</translation>
     </message>
     <message>
-        <location line="-52"/>
-        <location line="+39"/>
+        <location line="-59"/>
+        <location line="+46"/>
         <source> °</source>
         <translation> °</translation>
     </message>
     <message>
-        <location line="-38"/>
+        <location line="-45"/>
         <source> °/pulse</source>
         <translation> °/脉冲</translation>
     </message>
@@ -106,6 +106,21 @@
         <location line="+1"/>
         <source>Counter width</source>
         <translation>计数器位宽</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> %</source>
+        <translation> %</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The gyro&apos;s stated scale tolerance: each test point&apos;s gyro/table amplitude ratio, with the gyro&apos;s fitted dynamics taken out, must lie within 1 ± this, or the point is invalid (a wrong pulse equivalent or frame period scales the gyro, not the delay)</source>
+        <translation>陀螺声明的标度容差：每个测试点的陀螺/转台幅值比在扣除陀螺拟合出的动态特性后，必须落在 1 ± 此值以内，否则该测试点无效（错误的脉冲当量或帧周期会缩放陀螺读数，而不会改变延迟）</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Gyro scale tolerance</source>
+        <translation>陀螺标度容差</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -6000,12 +6015,27 @@ The session itself is unchanged.</source>
         <translation>峰值角加速度 %1 °/s² 超出转台限值 %2 °/s²；请降低频率或幅值</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>duration %1 s is under two swing periods (%2 s); a delay needs at least two whole periods</source>
-        <translation>时长 %1 s 不足两个摆动周期（%2 s）；测量延迟至少需要两个完整周期</translation>
+        <location line="+5"/>
+        <source>duration must be a finite number of seconds, got %1</source>
+        <translation>时长必须是有限的秒数，当前为 %1</translation>
+    </message>
+    <message>
+        <location line="-3"/>
+        <source>duration %1 s covers %2 swing periods, under two swing periods: a delay needs at least two whole periods (%3 s)</source>
+        <translation>时长 %1 s 覆盖 %2 个摆动周期，不足两个摆动周期：测量延迟至少需要两个完整周期（%3 s）</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>the record covers %1 swing periods, under two swing periods: a delay needs at least two whole periods</source>
+        <translation>记录覆盖 %1 个摆动周期，不足两个摆动周期：测量延迟至少需要两个完整周期</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the table angle covers %1 swing periods, under two swing periods: a delay needs at least two whole periods (at %2 Hz)</source>
+        <translation>转台角度覆盖 %1 个摆动周期，不足两个摆动周期：测量延迟至少需要两个完整周期（频率 %2 Hz）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>duration %1 s is over 24 h; split the test into points</source>
         <translation>时长 %1 s 超过 24 h；请将测试拆分为多个测试点</translation>
     </message>
@@ -6103,6 +6133,61 @@ The session itself is unchanged.</source>
         <location line="+1"/>
         <source>the gyro&apos;s %1 axis turns against the table (gyro/table ratio %2): the axis is mounted the other way round or its sign convention differs from the table&apos;s; the delay is refused (read as a normal axis it would be a half-period lag). If the IMU is mounted so, state it (metadata bench.gyro_sign {&quot;%3&quot;: -1}, or --gyro-sign %4=-1) and analyse again</source>
         <translation>陀螺的 %1 轴与转台反向转动（陀螺/转台比 %2）：该轴装反了，或其符号约定与转台不同；延迟被拒绝（按正常轴读取会是半个周期的滞后）。如果 IMU 就是这样安装的，请声明（元数据 bench.gyro_sign {&quot;%3&quot;: -1}，或 --gyro-sign %4=-1）后重新分析</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the gyro&apos;s amplitude matches the table&apos;s (%1, within %2)</source>
+        <translation>陀螺幅值与转台一致（%1，在 %2 以内）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>gyro/table ratio %1</source>
+        <translation>陀螺/转台比 %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>gyro/table ratio %1 at %2 Hz, where the fitted %3 response&apos;s own gain is %4: scale %5</source>
+        <translation>%2 Hz 处陀螺/转台比 %1，拟合的%3响应在该频率自身的增益为 %4：标度 %5</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the gyro reads %1 (%2, outside %3): the pulse equivalent or the frame period is wrong. An increment is its pulse count times the pulse equivalent, or its rate times the IMU&apos;s frame period: check both (bench.pulse_equivalent_deg; for imported rates bench.gyro_frame_period_ms or import --frame-period-ms) and analyse again; the delay is refused</source>
+        <translation>陀螺读数%1（%2，超出 %3）：脉冲当量或帧周期有误。增量等于脉冲数乘以脉冲当量，或速率乘以 IMU 的帧周期：请检查两者（bench.pulse_equivalent_deg；导入的速率还有 bench.gyro_frame_period_ms 或 import --frame-period-ms）后重新分析；延迟被拒绝</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the gyro reads %1 (%2, outside %3): its scale is not the one the bench states. A pulse equivalent or frame period slightly off (rounded, or for another gyro) or a gyro outside its scale tolerance: check them and analyse again; the delay is refused. If the gyro&apos;s scale is known to be off by this much, state its tolerance (--gain-tolerance)</source>
+        <translation>陀螺读数%1（%2，超出 %3）：其标度与台架声明的不符。可能是脉冲当量或帧周期略有偏差（经过舍入，或属于另一只陀螺），或陀螺超出了其标度容差：请检查后重新分析；延迟被拒绝。如果已知陀螺标度确实偏差这么大，请声明其容差（--gain-tolerance）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the gyro reads %1 (%2, outside %3): its scale is not the one the bench states. A pulse equivalent or frame period slightly off (rounded, or for another gyro) or a gyro outside its scale tolerance: check them and analyse again; the delay is refused. If the gyro&apos;s own dynamics lower its gain at %4 Hz, measure its frequency response (run --preset response): the check takes out the dynamics fitted there. If the gyro&apos;s scale is known to be off by this much, state its tolerance (--gain-tolerance)</source>
+        <translation>陀螺读数%1（%2，超出 %3）：其标度与台架声明的不符。可能是脉冲当量或帧周期略有偏差（经过舍入，或属于另一只陀螺），或陀螺超出了其标度容差：请检查后重新分析；延迟被拒绝。如果陀螺自身的动态特性在 %4 Hz 处降低了其增益，请测量其频率响应（run --preset response）：本检查会扣除在那里拟合出的动态特性。如果已知陀螺标度确实偏差这么大，请声明其容差（--gain-tolerance）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1× the table</source>
+        <translation>为转台的 %1 倍</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>1/%1 of the table</source>
+        <translation>为转台的 1/%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 % more than the table</source>
+        <translation>比转台多 %1 %</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 % less than the table</source>
+        <translation>比转台少 %1 %</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not judged: the gyro/table ratio is not a finite number</source>
+        <translation>未判定：陀螺/转台比不是有限数</translation>
     </message>
     <message>
         <location line="+2"/>

@@ -25,6 +25,7 @@
 #include "core/diagnosis/effects.h"
 #include "core/model/simulator.h"
 #include "core/analysis/frequency_response.h"
+#include "core/analysis/gain_check.h"
 #include "core/noise/noise_terms.h"
 #include "core/protocol/recording_builder.h"
 #include "core/session/session_file.h"
@@ -239,6 +240,25 @@ class CoreTextTest : public QObject {
     QVERIFY(reader.isOk());
     QVERIFY(!(*reader)->complete());
     expectChinese((*reader)->incompleteReason());
+  }
+
+  // The gain check's words (issue 39), every kind: within the tolerance,
+  // with the axis' fitted dynamics out, a gross factor (500x, 1/500, 0.25x),
+  // a few percent with and without the hint on dynamics; and the one rule
+  // for the fewest periods, as the plan and the analysis say it.
+  void gainCheckAndMinimumPeriods() {
+    analysis::TestPointResult p;
+    p.joint.frequencyHz = 2.0;
+    for (double ratio : {1.0, 499.9995, 0.002, 0.25, 1.02, 0.97}) {
+      p.magnitudeRatio = ratio;
+      expectChinese(analysis::gainCheck(p, {}, 0.01).detail);
+      expectChinese(analysis::gainCheck(p, {0.97, "first_order"}, 0.01).detail);
+    }
+    TestPlan plan;
+    plan.points.push_back({Axis::kX, 1.0, 3.0, 1.9, 1.0, 0.0});
+    expectChinese(plan.validate(TurntableLimits{}).message());
+    expectChinese("no test point gave a delay; test point 1: the record " + tooFewSwingPeriods(1.9));
+    expectChinese("the table angle " + tooFewSwingPeriods(1.9) + " (at 1.0004 Hz)");
   }
 
   void unreadableSessionFiles() {

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace fog {
 namespace {
 
@@ -49,6 +51,30 @@ TEST(TestPlan, RefusesMotionBeyondTableLimits) {
   why = p.validate(TurntableLimits{}).message();
   EXPECT_FALSE(why.empty());
   EXPECT_NE(why.find("peak rate"), std::string::npos) << why;
+}
+
+// Issue 39: a whole-period swing ends where it started only to rounding
+// (7e-15 deg), and rest_between_s 0 was refused over that "move". Angles
+// are compared to within kMotionToleranceDeg; a real move still needs rest.
+TEST(TestPlan, MovesAreComparedWithATolerance) {
+  TestPlan plan = *testPlanFromJson(R"({"rest_between_s": 0, "points": [
+      {"axis": "x", "frequency_hz": 1, "amplitude_deg": 3, "duration_s": 10, "settle_s": 1},
+      {"axis": "x", "frequency_hz": 2, "amplitude_deg": 1.5, "duration_s": 5, "settle_s": 0.5}]})");
+  EXPECT_NE(plan.endAnglesDeg(1)[0], 0.0);  // rounding: what was refused
+  EXPECT_LT(std::abs(plan.endAnglesDeg(1)[0]), 1e-12);
+  EXPECT_TRUE(plan.validate(TurntableLimits{}).isOk()) << plan.validate(TurntableLimits{}).message();
+  // A quarter period more ends at 1.5 deg: the return to zero needs its rest.
+  plan.points[1].durationS = 5.125;
+  const std::string why = plan.validate(TurntableLimits{}).message();
+  EXPECT_NE(why.find("the return to zero after the last point turns the table by 1.5 deg with no rest time"),
+            std::string::npos)
+      << why;
+  // A position 2e-6 deg away is a move, 5e-7 deg is not.
+  plan.points[1].durationS = 5.0;
+  plan.points[1].positionDeg[1] = 2e-6;
+  EXPECT_FALSE(plan.validate(TurntableLimits{}).isOk());
+  plan.points[1].positionDeg[1] = 5e-7;
+  EXPECT_TRUE(plan.validate(TurntableLimits{}).isOk()) << plan.validate(TurntableLimits{}).message();
 }
 
 TEST(TestPlan, JsonRoundTrip) {

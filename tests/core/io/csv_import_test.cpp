@@ -11,6 +11,7 @@
 
 #include "core/analysis/data_coverage.h"
 #include "core/analysis/delay_analysis.h"
+#include "core/analysis/verdict.h"
 #include "core/common/units.h"
 #include "core/io/csv_export.h"
 #include "core/io/csv_import.h"
@@ -295,6 +296,52 @@ TEST(CsvImportRates, AConventionGivenBesideTheFilesIsAppliedAndRecorded) {
   EXPECT_TRUE(increments->info.imported.empty());
 }
 
+// Issue 39: 2-ms rate rows imported with --frame-period-ms 1000 read 500x
+// the table and passed ("ok axis_sign (gyro/table ratio 499.9995)", PASS):
+// the gain check makes the point invalid and says what is wrong. A frame
+// period 0.5 % off (2.01 ms) is within the default 1 % tolerance; 2 % off
+// (2.04 ms) is not.
+TEST(CsvImportRates, AWrongFramePeriodMakesThePointInvalid) {
+  const auto r = rateFiles();
+  const std::string meta = R"({"bench": {"table_read_delay_ms": 0, "board_delay_ms": 0, "pulse_equivalent_deg": 1e-6},
+                              "test_points": [{"axis": "x", "frequency_hz": 1}]})";
+  const auto dir = goodDir(meta.c_str(), r.table.c_str(), r.frameAverage.c_str());
+  struct Case {
+    double periodMs;
+    bool passes;
+    const char* words;
+  } cases[] = {
+      {2.0, true, "the gyro's amplitude matches the table's (gyro/table ratio 1.0000, within 1 ± 1 %)"},
+      {2.01, true, "(gyro/table ratio 1.0050, within 1 ± 1 %)"},
+      {2.04, false, "the gyro reads 2.00 % more than the table (gyro/table ratio 1.0200, outside 1 ± 1 %)"},
+      {1000.0, false,
+       "the gyro reads 500× the table (gyro/table ratio 500.0000, outside 1 ± 1 %): the pulse equivalent or the "
+       "frame period is wrong"},
+  };
+  for (const auto& c : cases) {
+    ImportOptions options;
+    options.gyroRateConvention = "frame_average";
+    options.gyroFramePeriodMs = c.periodMs;
+    auto s = importCsvDirectory(dir, options);
+    ASSERT_TRUE(s.isOk()) << s.status().message();
+    auto report = analysis::analyzeRecording(s->recording, s->info.bench);
+    ASSERT_TRUE(report.isOk()) << report.status().message();
+    const auto& point = report->points.at(0);
+    ASSERT_GE(point.checks.size(), 2u);
+    const auto& gain = point.checks[1];
+    EXPECT_EQ(gain.id, "gain");
+    EXPECT_EQ(gain.passed, c.passes) << c.periodMs << " ms: " << gain.detail;
+    EXPECT_NE(gain.detail.find(c.words), std::string::npos) << gain.detail;
+    EXPECT_NEAR(point.lagMs, 0.5, 1e-3);  // the delay itself is untouched: only the check can tell
+    if (!c.passes) {
+      const auto verdict = analysis::judgeReport(*report, analysis::kDefaultImuDelayLimitMs);
+      EXPECT_EQ(verdict.verdict, analysis::Verdict::kInvalid);
+      ASSERT_FALSE(verdict.reasons.empty());
+      EXPECT_NE(verdict.reasons.front().find(c.words), std::string::npos) << verdict.reasons.front();
+    }
+  }
+}
+
 // One continuous recording cut at the windows given: one test point each,
 // and the windows applied are recorded with the session.
 TEST(CsvImportSegmentation, WindowsGivenAreCutAndRecorded) {
@@ -379,7 +426,20 @@ TEST(CsvImportErrors, ADuplicateKeyOrADelayBeyondASecondIsRefused) {
   auto huge = importCsvDirectory(goodDir(R"({"bench": {"table_read_delay_ms": 0.05, "board_delay_ms": 1e308,
     "pulse_equivalent_deg": 5e-5}, "test_points": [{"axis": "x"}]})"));
   ASSERT_FALSE(huge.isOk());
-  EXPECT_NE(huge.status().message().find("beyond a second"), std::string::npos) << huge.status().message();
+  // The ranges are the command line's and the GUI's (checkBenchConstants).
+  EXPECT_NE(huge.status().message().find("\"bench.board_delay_ms\": the processing-board delay must be within 0 .. "
+                                         "1000 ms, not 1e+308: bench delays are a fraction of a frame or a few "
+                                         "frames; check the value and that it is in milliseconds"),
+            std::string::npos)
+      << huge.status().message();
+  auto negative = importCsvDirectory(goodDir(R"({"bench": {"table_read_delay_ms": -0.2, "board_delay_ms": 0.28,
+    "pulse_equivalent_deg": 5e-5}, "test_points": [{"axis": "x"}]})"));
+  ASSERT_FALSE(negative.isOk());
+  EXPECT_EQ(negative.status().code(), StatusCode::kCorruptData);
+  EXPECT_NE(negative.status().message().find("\"bench.table_read_delay_ms\": the table read delay must be within 0 "
+                                             ".. 1000 ms, not -0.2: a delay is never negative"),
+            std::string::npos)
+      << negative.status().message();
 }
 
 // Metadata listing more test points than a plan may have (kMaxPlanPoints)
@@ -466,11 +526,18 @@ TEST(CsvImportErrors, BenchConstantsBeyondTheirPhysicalRangeAreRefused) {
        "\"bench.gyro_frame_period_ms\" = 1e+300 must be within 0.001 .. 1000"},
       {R"("gyro_rate_convention": "frame_average", "gyro_frame_period_ms": 1e-300)",
        "\"bench.gyro_frame_period_ms\" = 1e-300 must be within 0.001 .. 1000"},
-      {R"("counter_hz": 1e300)", "\"bench.counter_hz\" = 1e+300 is out of range (must be <= 1000000000000.0)"},
+      {R"("counter_hz": 1e300)",
+       "\"bench.counter_hz\": the sampling board's counter frequency must be above 0 and at most 1e12 Hz, not 1e+300"},
+      {R"("counter_bits": 4000000000000)",
+       "\"bench.counter_bits\": the sampling board's counter width must be 1 .. 64 bits, not 4000000000000"},
+      {R"("gain_tolerance": 5)", "\"bench.gain_tolerance\": the gain tolerance must be a fraction"},
+      {R"("pulse_equivalent_deg": 0.0)", "\"bench.pulse_equivalent_deg\" must be > 0 (degrees per gyro pulse)"},
   };
   for (const auto& c : cases) {
-    const std::string meta = std::string(R"({"bench": {"table_read_delay_ms": 0.05, "board_delay_ms": 0.28,
-      "pulse_equivalent_deg": 5e-5, )") + c.bench + R"(}, "test_points": [{"axis": "x"}]})";
+    const bool pulse = std::string(c.bench).find("pulse_equivalent_deg") != std::string::npos;
+    const std::string meta = std::string(R"({"bench": {"table_read_delay_ms": 0.05, "board_delay_ms": 0.28, )") +
+                             (pulse ? "" : R"("pulse_equivalent_deg": 5e-5, )") + c.bench +
+                             R"(}, "test_points": [{"axis": "x"}]})";
     auto s = importCsvDirectory(goodDir(meta.c_str(), kTable, "time_s,x_rate_deg_s\n0.002,1\n0.004,1\n"));
     ASSERT_FALSE(s.isOk()) << c.bench;
     EXPECT_NE(s.status().message().find(c.message), std::string::npos) << s.status().message();
@@ -732,7 +799,7 @@ TEST(CsvExport, CreatesNestedDirectories) {
 // A recording is in degrees (protocol::RecordingBuilder): they are written
 // untouched, with the pulse equivalent the recording states (not the bench
 // constant, which only stands in for a stream that states none) and the
-// session's gyro signs; all of it reads back.
+// session's gyro signs and gain tolerance; all of it reads back.
 TEST(CsvExport, TheRecordingsPulseEquivalentAndTheGyroSignsRoundTrip) {
   auto s = importCsvDirectory(goodDir());
   ASSERT_TRUE(s.isOk());
@@ -742,6 +809,7 @@ TEST(CsvExport, TheRecordingsPulseEquivalentAndTheGyroSignsRoundTrip) {
   SessionInfo info = s->info;
   info.bench.pulseEquivalentDeg = 7e-5;
   info.bench.gyroSign = {1, -1, -1};
+  info.bench.gainToleranceFraction = 0.025;
   const std::string dir = freshDir("-out");
   ASSERT_TRUE(exportCsv(dir, info, rec, nullptr).isOk());
   auto back = importCsvDirectory(dir);
@@ -751,6 +819,7 @@ TEST(CsvExport, TheRecordingsPulseEquivalentAndTheGyroSignsRoundTrip) {
   EXPECT_EQ(back->recording.testPoints[0].imu[0].incrementDeg[0], 20.0 * 1e-4);
   EXPECT_EQ(back->recording.testPoints[0].imu[0].incrementDeg[1], -3.0 * 1e-4);
   EXPECT_EQ(back->info.bench.gyroSign, (std::array<int, kAxisCount>{1, -1, -1}));
+  EXPECT_EQ(back->info.bench.gainToleranceFraction, 0.025);
 
   // A recording without gyro samples states no pulse equivalent: the
   // metadata could not say what the (absent) increments were.
