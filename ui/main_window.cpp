@@ -1062,6 +1062,7 @@ void MainWindow::loadSession(const QString& path, bool reanalyse, std::int64_t r
         outcome->info.bench.boardDelayStdMs = constants.boardDelayStdMs;
         if (constants.pulseEquivalentDeg > 0.0) outcome->info.bench.pulseEquivalentDeg = constants.pulseEquivalentDeg;
         outcome->info.bench.gyroSign = constants.gyroSign;
+        outcome->info.bench.gainToleranceFraction = constants.gainToleranceFraction;
         completeOutcome(*outcome, source);
         return {outcome, Status::ok()};
       },

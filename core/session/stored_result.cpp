@@ -76,6 +76,9 @@ StoredResultRecord readStoredResult(const session::StoredResult& stored, const B
   c.boardDelayMs = constant("board_delay_ms", fallback.boardDelayMs);
   c.boardDelayStdMs = constant("board_delay_std_ms", fallback.boardDelayStdMs);
   c.pulseEquivalentDeg = constant("pulse_equivalent_deg", fallback.pulseEquivalentDeg);
+  // The scale tolerance the gain check judged with (rows stored before it
+  // was kept: the report's, else the session's).
+  c.gainToleranceFraction = constant("gain_tolerance", fallback.gainToleranceFraction);
   if (settings.contains("gyro_sign") && settings["gyro_sign"].is_object()) {
     r.gyroSignStated = true;
     for (int a = 0; a < kAxisCount; ++a) {
@@ -181,6 +184,7 @@ std::string analysisSettingsJson(const BenchConstants& c, double imuDelayLimitMs
               {"board_delay_ms", c.boardDelayMs},
               {"board_delay_std_ms", c.boardDelayStdMs},
               {"pulse_equivalent_deg", c.pulseEquivalentDeg},
+              {"gain_tolerance", c.gainToleranceFraction},
               {"gyro_sign", {{"x", c.gyroSign[0]}, {"y", c.gyroSign[1]}, {"z", c.gyroSign[2]}}},
               {"imu_delay_limit_ms", imuDelayLimitMs},
               {"software_version", FOG_VERSION},
