@@ -82,10 +82,21 @@ void addGainChecks(DelayReport& report, double toleranceFraction) {
     auto points = responsePoints(report, axis);
     const bool spans = points.size() >= 2 &&
                        points.back().frequencyHz > points.front().frequencyHz * (1.0 + 1e-3);
+    // The shape of the gain only (its scale K is divided out): the chosen
+    // model's, else, when no model is adequate and admissible, the one that
+    // fits the points best (lowest chi^2) — a model too rough to report a
+    // delay still describes how the gain falls or rises to well within the
+    // tolerance, and a scale error is K, which is taken out either way.
     if (spans)
-      if (auto response = analyzeResponse(std::move(points), axis, kDefaultGroupDelayAtHz);
-          response && response->chosen >= 0)
-        chosen = response->models[static_cast<std::size_t>(response->chosen)];
+      if (auto response = analyzeResponse(std::move(points), axis, kDefaultGroupDelayAtHz); response) {
+        if (response->chosen >= 0) {
+          chosen = response->models[static_cast<std::size_t>(response->chosen)];
+        } else {
+          for (const auto& m : response->models)
+            if (m.values.size() > 0 && std::isfinite(m.chiSquare) && (!chosen || m.chiSquare < chosen->chiSquare))
+              chosen = m;
+        }
+      }
     for (auto& p : report.points) {
       if (p.axis != axis) continue;
       PointDynamics dynamics;

@@ -42,13 +42,13 @@ const QStringList kKept = {"IMU", "ARW", "chi", "ppm", "rms", "dof", "Hz", "ms",
                            "udeg", "us", "sigma", "CRLB", "AIC", "BIC", "sin", "cos", "ioctl", "KiB", "MiB", "FIFO"};
 
 // English left in a translated text: runs of three or more Latin letters that
-// are not kept words, identifiers (with _ . or -), the given path or a
-// device's path (/dev/...).
+// are not kept words, identifiers (with _ . or -), a command with its option
+// and its value ("import --frame-period-ms", "run --preset response"), the given path or a device's path (/dev/...).
 QStringList englishIn(QString text, const QString& path = {}) {
   if (!path.isEmpty()) text.replace(path, "");
   static const QRegularExpression device(R"(/dev/[A-Za-z0-9/]+)");
   text.replace(device, " ");
-  static const QRegularExpression identifier(R"([A-Za-z0-9]*[_.][A-Za-z0-9_.]*|--[a-z-]+)");
+  static const QRegularExpression identifier(R"([A-Za-z0-9]*[_.][A-Za-z0-9_.]*|(?:[a-z]+ )?--[a-z-]+(?: [a-z][a-z0-9-]*)?)");
   text.replace(identifier, " ");
   static const QRegularExpression word(R"([A-Za-z]{3,})");
   QStringList left;

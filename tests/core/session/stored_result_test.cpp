@@ -48,6 +48,18 @@ TEST(StoredResult, SettingsCarryTheGyroSignsAndTheLimit) {
   EXPECT_EQ(r.point(1), nullptr);
 }
 
+TEST(StoredResult, TheGainToleranceIsStoredAndReadBack) {
+  BenchConstants c;
+  c.gainToleranceFraction = 0.025;
+  const session::StoredResult row{2, "", analysisSettingsJson(c, 0.8, "test"), reportWith("pass", 0.51, "pass").dump(),
+                                  true};
+  BenchConstants fallback;
+  fallback.gainToleranceFraction = 0.5;  // the session's: the row's own wins
+  const auto r = readStoredResult(row, fallback);
+  ASSERT_TRUE(r.usable);
+  EXPECT_DOUBLE_EQ(r.constants.gainToleranceFraction, 0.025);
+}
+
 TEST(StoredResult, AnOlderRowReadsAsGyroSignPlusOneAndItsReportsLimit) {
   BenchConstants fallback;
   fallback.gyroSign = {-1, -1, -1};  // the session's or the GUI's: never an older row's
