@@ -6,15 +6,26 @@
 // table, and everything disabled with the reason when no table is connected.
 // The panel's link runs on a thread of its own, so what it shows arrives
 // after the call that asked for it (QTRY_*).
+//
+// The desk tests of issue 41 ("a safety path never waits"): a controller
+// that hangs — fogbench-table-emu stopped with SIGSTOP mid-session, a fake
+// controller that stops answering mid-session, one that accepts the
+// connection and never answers — does not freeze the window (a 20-ms timer
+// on the GUI thread records no gap over 200 ms), and an emergency stop
+// clicked meanwhile reaches the controller within 50 ms.
 
 #include <QAction>
 #include <QDoubleSpinBox>
+#include <QProcess>
 #include <QPushButton>
 #include <QtTest>
+#include <csignal>
 #include <cmath>
 #include <memory>
+#include <thread>
 
 #include "core/table/emulator_link.h"
+#include "tests/core/table/fake_tcp_controller.h"
 #include "ui/main_window.h"
 #include "ui/table_panel.h"
 
@@ -23,6 +34,12 @@ using fog::ui::TablePanel;
 namespace table = fog::table;
 
 namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double msBetween(Clock::time_point from, Clock::time_point to) {
+  return std::chrono::duration<double, std::milli>(to - from).count();
+}
 
 // speed 20: moves of a few degrees end within a fraction of a second; 1: a
 // 40-degree move takes some 2 s (time to stop it or to refuse a second one).
@@ -33,12 +50,59 @@ std::unique_ptr<table::TableController> emulated(double speed = 20.0) {
   return c ? std::move(*c) : nullptr;
 }
 
+// The GUI thread's heartbeat: a 20-ms timer whose largest gap between two
+// ticks is how long the window was frozen.
+class GuiTicks {
+ public:
+  GuiTicks() {
+    timer_.setInterval(20);
+    QObject::connect(&timer_, &QTimer::timeout, [this] {
+      const auto now = Clock::now();
+      maxGapMs_ = std::max(maxGapMs_, msBetween(last_, now));
+      last_ = now;
+    });
+    last_ = Clock::now();
+    timer_.start();
+  }
+  double maxGapMs() const { return maxGapMs_; }
+
+ private:
+  QTimer timer_;
+  Clock::time_point last_;
+  double maxGapMs_ = 0.0;
+};
+
 // Runs the GUI's event loop for `ms`.
 void spin(int ms) {
   QElapsedTimer t;
   t.start();
   while (t.elapsed() < ms) QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
 }
+
+// The operator's click, `afterMs` from now, as a window system delivers it:
+// queued to the GUI thread from outside it (here, another thread), whatever
+// the GUI thread is doing. Returns when the click was queued.
+class LaterClick {
+ public:
+  LaterClick(QPushButton* button, int afterMs)
+      : thread_([this, button, afterMs] {
+          std::this_thread::sleep_for(std::chrono::milliseconds(afterMs));
+          at_ = Clock::now();
+          QMetaObject::invokeMethod(button, "click", Qt::QueuedConnection);
+        }) {}
+  ~LaterClick() { join(); }
+  Clock::time_point at() {
+    join();
+    return at_;
+  }
+
+ private:
+  void join() {
+    if (thread_.joinable()) thread_.join();
+  }
+  Clock::time_point at_;
+  std::thread thread_;
+};
 
 // A controller whose every call fails as a lost link does.
 class LostController : public table::TableController {
@@ -234,6 +298,145 @@ class TablePanelTest : public QObject {
     QTRY_COMPARE_WITH_TIMEOUT(w.tablePanel()->stateText(Axis::kX), QString("emergency stop"), 5000);
     w.tablePanel()->setController(nullptr);
     QVERIFY(!estop->isEnabled());
+  }
+
+  // fogbench-table-emu stopped (SIGSTOP) mid-session: the window keeps
+  // running, and an emergency stop clicked meanwhile is written to the
+  // emulator's socket within 50 ms (on the emergency line's own connection;
+  // a stopped process cannot read it, the kernel holds it); once the
+  // emulator runs again it takes it ("estop: engaged") and the panel,
+  // reconnected, shows every axis in emergency stop.
+  void aStoppedEmulatorNeitherFreezesTheWindowNorDelaysTheEmergencyStop() {
+    QProcess emu;
+    const QString address = startEmulator(emu);
+    QVERIFY2(!address.isEmpty(), emu.readAllStandardError().constData());
+    TablePanel panel;
+    panel.show();
+    panel.setAddressSource([&] { return address; });
+    panel.connectButton()->click();
+    QTRY_VERIFY_WITH_TIMEOUT(ready(panel), 10000);
+    QVERIFY(panel.goTo(Axis::kY, 30.0).isEmpty());  // 1.5 s at 20 deg/s: stopped mid-move
+    QTRY_COMPARE_WITH_TIMEOUT(panel.stateText(Axis::kY), QString("moving"), 5000);
+
+    GuiTicks ticks;
+    QCOMPARE(::kill(static_cast<pid_t>(emu.processId()), SIGSTOP), 0);
+    LaterClick click(panel.emergencyStopButton(), 500);
+    spin(3500);  // past the link's 2-s reply timeout and a reconnect attempt
+    const auto clickedAt = click.at();
+    const double gap = ticks.maxGapMs();
+    const auto line = panel.lastEmergencyLine();
+    const QString status = panel.statusText();
+    const QString yState = panel.stateText(Axis::kY);
+    ::kill(static_cast<pid_t>(emu.processId()), SIGCONT);
+    qInfo("emulator stopped 3.5 s: GUI max gap %.1f ms; emergency stop written %.1f ms after the click",
+          gap, line ? msBetween(clickedAt, line->sentAt) : -1.0);
+    QVERIFY2(gap < 200.0, qPrintable(QString("the GUI thread stalled %1 ms").arg(gap)));
+    QVERIFY(line.has_value());
+    QVERIFY2(line->sent, line->why.c_str());
+    QVERIFY2(msBetween(clickedAt, line->sentAt) < 50.0,
+             qPrintable(QString("written %1 ms after the click").arg(msBetween(clickedAt, line->sentAt))));
+    QVERIFY2(status.contains("reconnecting") || status.contains("no answer"), qPrintable(status));
+    QVERIFY2(yState == "unreachable" || yState == "no answer", qPrintable(yState));
+
+    // Running again: the emulator takes the emergency stop it was sent.
+    QString out;
+    QTRY_VERIFY_WITH_TIMEOUT((out += QString::fromUtf8(emu.readAllStandardOutput())).contains("estop: engaged"),
+                             10000);
+    for (int a = 0; a < fog::kAxisCount; ++a)
+      QTRY_COMPARE_WITH_TIMEOUT(panel.stateText(static_cast<Axis>(a)), QString("emergency stop"), 15000);
+    emu.terminate();
+    QVERIFY(emu.waitForFinished(10000));
+  }
+
+  // A controller that stops answering mid-session (a fake that keeps
+  // reading, and records when each line arrives): no freeze, and the
+  // emergency stop clicked meanwhile arrives within 50 ms on a connection of
+  // its own; the panel says the controller has not confirmed it.
+  void aControllerThatHangsMidSessionNeitherFreezesTheWindowNorDelaysTheEmergencyStop() {
+    fogtest::FakeTableController fake;
+    QVERIFY(fake.listening());
+    TablePanel panel;
+    panel.show();
+    panel.setAddressSource([&] { return QString::fromStdString(fake.address()); });
+    panel.connectButton()->click();
+    QTRY_VERIFY_WITH_TIMEOUT(ready(panel), 10000);
+    // The panel's link, and the emergency line's own connection, armed once the controller answered.
+    QTRY_COMPARE_WITH_TIMEOUT(fake.connections(), 2, 5000);
+
+    GuiTicks ticks;
+    fake.hang();
+    LaterClick click(panel.emergencyStopButton(), 500);
+    spin(3500);
+    const auto clickedAt = click.at();
+    const double gap = ticks.maxGapMs();
+    const auto arrived = fake.firstLine("SYST:ESTOP", clickedAt);
+    const double latency = arrived.text.empty() ? -1.0 : msBetween(clickedAt, arrived.at);
+    qInfo("controller hung 3.5 s: GUI max gap %.1f ms; emergency stop arrived %.1f ms after the click", gap, latency);
+    QVERIFY2(gap < 200.0, qPrintable(QString("the GUI thread stalled %1 ms").arg(gap)));
+    QVERIFY2(!arrived.text.empty(), "the emergency stop never arrived");
+    QVERIFY2(arrived.connection == 2, "it came on the panel's hung connection, not on the line's own");
+    QVERIFY(panel.lastEmergencyLine().has_value() && panel.lastEmergencyLine()->armedLink);
+    QVERIFY2(latency < 50.0, qPrintable(QString("arrived %1 ms after the click").arg(latency)));
+    QTRY_VERIFY_WITH_TIMEOUT(panel.message().contains("has not confirmed"), 5000);
+    QVERIFY2(panel.statusText().contains("reconnecting"), qPrintable(panel.statusText()));
+    QVERIFY(!panel.jogButton(Axis::kX, 1)->isEnabled());
+  }
+
+  // A controller that accepts the connection and never answers: Connect
+  // returns at once, the panel says it is connecting and for how long, the
+  // emergency stop is offered and arrives within 50 ms; after the reply
+  // timeout the panel says it cannot connect.
+  void aControllerThatNeverAnswersNeitherFreezesTheWindowNorDelaysTheEmergencyStop() {
+    fogtest::FakeTableController fake(/*hangFromStart=*/true);
+    QVERIFY(fake.listening());
+    TablePanel panel;
+    panel.show();
+    panel.setAddressSource([&] { return QString::fromStdString(fake.address()); });
+    GuiTicks ticks;
+    QElapsedTimer clickTook;
+    clickTook.start();
+    panel.connectButton()->click();
+    QVERIFY2(clickTook.elapsed() < 50, qPrintable(QString("Connect took %1 ms").arg(clickTook.elapsed())));
+    QCOMPARE(panel.link(), TablePanel::Link::kConnecting);
+    QVERIFY(panel.emergencyStopButton()->isEnabled());
+    QVERIFY(!panel.goButton()->isEnabled());
+    LaterClick click(panel.emergencyStopButton(), 500);
+    spin(1600);  // (not QTRY: its qWait sleeps 10 ms at a time, which would delay the click)
+    QVERIFY2(panel.statusText().contains("no answer for 1 s"), qPrintable(panel.statusText()));
+    QTRY_VERIFY_WITH_TIMEOUT(panel.message().contains("Cannot connect"), 5000);
+    const auto clickedAt = click.at();
+    const double gap = ticks.maxGapMs();
+    const auto arrived = fake.firstLine("SYST:ESTOP", clickedAt);
+    const double latency = arrived.text.empty() ? -1.0 : msBetween(clickedAt, arrived.at);
+    const auto line = panel.lastEmergencyLine();
+    qInfo("controller silent from the start: GUI max gap %.1f ms; emergency stop arrived %.1f ms after the click "
+          "(connect and write on the line's thread: %.1f ms)", gap, latency, line ? line->sentAfterMs : -1.0);
+    QVERIFY2(gap < 200.0, qPrintable(QString("the GUI thread stalled %1 ms").arg(gap)));
+    QVERIFY2(!arrived.text.empty(), "the emergency stop never arrived");
+    QVERIFY2(latency < 50.0, qPrintable(QString("arrived %1 ms after the click").arg(latency)));
+    QVERIFY2(panel.message().contains("no reply"), qPrintable(panel.message()));
+    QCOMPARE(panel.link(), TablePanel::Link::kNone);
+    QVERIFY(!panel.emergencyStopButton()->isEnabled());
+  }
+
+ private:
+  // fogbench-table-emu on a free TCP port, no board; it stays up while the
+  // panel reconnects (--linger-s). Its address, or empty.
+  static QString startEmulator(QProcess& emu) {
+    emu.setProgram(FOG_TABLE_EMU);
+    emu.setArguments({"--board", "none", "--linger-s", "60", "--exit-after-s", "120"});
+    emu.start();
+    if (!emu.waitForStarted(10000)) return {};
+    QElapsedTimer waited;
+    waited.start();
+    while (waited.elapsed() < 10000) {
+      emu.waitForReadyRead(100);
+      while (emu.canReadLine()) {
+        const QString line = QString::fromUtf8(emu.readLine()).trimmed();
+        if (line.startsWith("table: ")) return line.mid(7);
+      }
+    }
+    return {};
   }
 };
 
