@@ -141,28 +141,25 @@ class TableLinkWorker : public QObject {
   void commandDone(const fog::ui::TableCommand& command, const fog::ui::TableCommandResult& result);
 
  private:
-  // Connect, identify, set the heartbeat, read the limits. False when any failed.
+  // Connect, identify, set the heartbeat, read the limits. False when any
+  // failed; the next attempt is kReconnectMs after this one ended (each one
+  // to a hung controller leaves a connection in its queue to accept).
   bool tryOpen(bool again) {
-    lastAttempt_ = Clock::now();
     const QString address = QString::fromStdString(address_);
     emit opening(address, again);
+    const auto failed = [&](const Status& why) {
+      lastAttempt_ = Clock::now();
+      emit lost(QString::fromStdString(why.message()), again);
+      return false;
+    };
     const auto timeout = options_.remote.replyTimeout;
     auto link = table::openTransport(address_, options_.baud, timeout, timeout);
-    if (!link) {
-      emit lost(QString::fromStdString(link.status().message()), again);
-      return false;
-    }
+    if (!link) return failed(link.status());
     auto cancellable = std::make_unique<CancellableTransport>(std::move(*link), cancelFlag());
     auto remote = table::RemoteTable::connect(std::move(cancellable), options_.remote);
-    if (!remote) {
-      emit lost(QString::fromStdString(remote.status().message()), again);
-      return false;
-    }
+    if (!remote) return failed(remote.status());
     auto limits = (*remote)->limits();
-    if (!limits) {
-      emit lost(QString::fromStdString(limits.status().message()), again);
-      return false;
-    }
+    if (!limits) return failed(limits.status());
     controller_ = std::move(*remote);
     emit opened(QString::fromStdString(controller_->description()), *limits);
     poll();

@@ -18,9 +18,10 @@
 // panel fires beside this one.
 //
 // A remote link that fails (no reply within the reply timeout, the
-// connection lost, a reply out of step) is dropped and reopened every
-// kReconnectMs until retire(), each attempt announced by opening(again =
-// true): reconnecting is the only way back in step with a controller that
+// connection lost, a reply out of step) is dropped and reopened
+// kReconnectMs after it failed, and again kReconnectMs after each attempt
+// that fails, until retire(); each attempt is announced by opening(again =
+// true). Reconnecting is the only way back in step with a controller that
 // resumes after hanging. A controller handed over by adopt() (tests, an
 // in-process emulator) is kept and polled however it fails.
 //
