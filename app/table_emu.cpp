@@ -14,6 +14,12 @@
 // "board: /dev/pts/N", "truth: ...", then events as they happen ("host: ...",
 // "swing: ...", "heartbeat: ...", "interlock: ...", "link: ...",
 // "refused: ...") and "done: ..." at the end.
+//
+// Over TCP it serves up to kMaxTcpHosts connections at once, one protocol
+// state (table, error queue, heartbeat) for all: the host's driver holds one
+// and an emergency stop may arrive on a connection of its own
+// (core/table/emergency_line.h), as a real controller with several
+// sessions would take it.
 
 #include <arpa/inet.h>
 #include <fcntl.h>
@@ -60,6 +66,8 @@ usage: fogbench-table-emu [--link tcp|pty] [--tcp-port N] [--board pty|none] [--
   --servo-lag-ms L    actual angle behind the commanded one (default 2)
   --stop-accel-deg-s2 A  deceleration of a stop (default 100)
   --exit-after-s S    give up after S wall seconds (default 600)
+  --linger-s S        once every host has gone, wait S wall seconds for another before ending (default 0;
+                      a host that reconnects, as the window's table panel does, keeps it going)
   simulator options for the board: --seed, --gyro-delay-ms, ... as fogbench-cli run
 faults:
   --refuse HEADER     refuse the first command with this header (e.g. AXIS:Y:START): error 204
@@ -120,7 +128,7 @@ bool slaveOpen(int master) {
 // The command line (kHelp), as readOptions() checked it.
 struct Options {
   std::string link, boardMode;
-  double speed = 1.0, heartbeatS = 0.0, exitAfterS = 600.0;
+  double speed = 1.0, heartbeatS = 0.0, exitAfterS = 600.0, lingerS = 0.0;
   // Table seconds after the first swing starts; < 0: never.
   double dropAfterS = -1.0, boardVanishAfterS = -1.0;
   int tcpPort = 0;
@@ -151,7 +159,8 @@ Result<Options> readOptions(app::CliArguments& args) {
                 {"drop-link-after-start-s", o.dropAfterS},
                 {"interlock-after-start-s", -1.0},
                 {"interlock-s", 1e9},
-                {"board-vanish-after-start-s", o.boardVanishAfterS}};
+                {"board-vanish-after-start-s", o.boardVanishAfterS},
+                {"linger-s", o.lingerS}};
   for (auto& n : nums) {
     FOG_ASSIGN_OR_RETURN(n.value, args.number(n.name, n.value));
   }
@@ -160,6 +169,7 @@ Result<Options> readOptions(app::CliArguments& args) {
   o.exitAfterS = nums[9].value;
   o.dropAfterS = nums[10].value;
   o.boardVanishAfterS = nums[13].value;
+  o.lingerS = nums[14].value;
   o.tcpPort = static_cast<int>(nums[1].value);
   for (auto& l : lim) {
     l.maxAmplitudeDeg = nums[3].value;
@@ -180,6 +190,7 @@ Result<Options> readOptions(app::CliArguments& args) {
   if (o.tcpPort < 0 || o.tcpPort > 65535) return invalidArgument("--tcp-port must be 0 .. 65535");
   if (!(params.servoLagS >= 0.0 && params.servoLagS < 0.5)) return invalidArgument("--servo-lag-ms must be 0 .. 500");
   if (!(params.stopAccelDegPerS2 > 0.0)) return invalidArgument("--stop-accel-deg-s2 must be > 0");
+  if (!(o.lingerS >= 0.0)) return invalidArgument("--linger-s must be >= 0");
   return o;
 }
 
@@ -213,8 +224,18 @@ class Emulator {
   void run();
 
  private:
-  void closeClient(const std::string& why);
+  // One host's TCP connection (or, with fd -1 unused, the pty's lines).
+  struct Host {
+    int fd = -1;
+    int number = 0;
+    std::string inbox, outbox;
+  };
+  static constexpr std::size_t kMaxTcpHosts = 8;
+
+  void closeHost(Host& host, const std::string& why);
+  void acceptHosts();
   void serviceTableLink(double tableS, double wallS);
+  void handleLines(Host& host, int fd, double tableS, double wallS);
   void dropLinkIfDue(double tableS);
   void vanishBoardIfDue(double tableS);
   void streamBoard(double tableS);
@@ -225,8 +246,11 @@ class Emulator {
   const table::EmulatedTable& emulated_;
   table::TableServer& server_;
   std::unique_ptr<model::Simulator> sim_;
-  int listenFd_ = -1, clientFd_ = -1, tablePty_ = -1, boardFd_ = -1;
-  std::string inbox_, outbox_;
+  int listenFd_ = -1, tablePty_ = -1, boardFd_ = -1;
+  std::vector<Host> hosts_;  // TCP connections open now
+  Host ptyHost_;             // the pty's lines (fd unused)
+  int hostsAccepted_ = 0;
+  double lastHostWallS_ = 0.0;  // when a host was last connected (--linger-s counts from it)
   std::vector<std::uint8_t> boardClean_, boardBytes_, boardPending_;
   app::BoardHostControl hostControl_;
   protocol::HostCommandDecoder commandDecoder_;
@@ -247,7 +271,8 @@ Status Emulator::openTableLink() {
     sa.sin_port = htons(static_cast<std::uint16_t>(o_.tcpPort));
     socklen_t len = sizeof sa;
     if (listenFd_ < 0 || ::bind(listenFd_, reinterpret_cast<sockaddr*>(&sa), sizeof sa) != 0 ||
-        ::listen(listenFd_, 1) != 0 || ::getsockname(listenFd_, reinterpret_cast<sockaddr*>(&sa), &len) != 0)
+        ::listen(listenFd_, static_cast<int>(kMaxTcpHosts)) != 0 ||
+        ::getsockname(listenFd_, reinterpret_cast<sockaddr*>(&sa), &len) != 0)
       return ioError(std::string("cannot listen on 127.0.0.1:") + std::to_string(o_.tcpPort) + ": " +
                      std::strerror(errno));
     say("table: tcp:127.0.0.1:" + std::to_string(ntohs(sa.sin_port)));
@@ -293,62 +318,77 @@ void Emulator::run() {
   finish(std::chrono::duration<double>(Clock::now() - start).count());
 }
 
-void Emulator::closeClient(const std::string& why) {
-  if (clientFd_ >= 0) {
-    ::close(clientFd_);
-    clientFd_ = -1;
-    say("host: table link closed (" + why + ")");
+void Emulator::closeHost(Host& host, const std::string& why) {
+  if (host.fd >= 0) {
+    ::close(host.fd);
+    host.fd = -1;
+    say("host: table link closed (connection " + std::to_string(host.number) + ", " + why + ")");
   }
 }
 
-// Link I/O: a host connecting or opening the pty, its lines handled, the
+// New TCP hosts, up to kMaxTcpHosts at once (more wait in the listen queue).
+void Emulator::acceptHosts() {
+  while (listenFd_ >= 0 && !dropped_ && hosts_.size() < kMaxTcpHosts) {
+    const int fd = ::accept4(listenFd_, nullptr, nullptr, SOCK_NONBLOCK | SOCK_CLOEXEC);
+    if (fd < 0) break;
+    hosts_.push_back(Host{fd, ++hostsAccepted_, {}, {}});
+    hostSeen_ = true;
+    say("host: table link connected (connection " + std::to_string(hostsAccepted_) + ", " +
+        std::to_string(hosts_.size()) + " open)");
+  }
+}
+
+// One host's link: what it sent handled line by line (also when it has just
+// closed: what it wrote before is still read), the replies written.
+void Emulator::handleLines(Host& host, int fd, double tableS, double wallS) {
+  char buf[4096];
+  for (;;) {
+    const ssize_t n = ::read(fd, buf, sizeof buf);
+    if (n > 0) {
+      host.inbox.append(buf, static_cast<std::size_t>(n));
+      continue;
+    }
+    if (n == 0 && fd == host.fd) closeHost(host, "by the host");
+    break;
+  }
+  for (auto nl = host.inbox.find('\n'); nl != std::string::npos; nl = host.inbox.find('\n')) {
+    const std::string line = host.inbox.substr(0, nl);
+    host.inbox.erase(0, nl + 1);
+    ++linesHandled_;
+    if (auto reply = server_.handleLine(line, tableS, wallS)) host.outbox += *reply + "\n";
+  }
+  if (host.inbox.size() > 4096) {  // a host that never ends its line
+    (void)server_.handleLine(std::string(300, 'X'), tableS, wallS);
+    host.inbox.clear();
+  }
+  const bool socket = fd == host.fd;
+  const int outFd = socket ? host.fd : fd;
+  while (!host.outbox.empty() && outFd >= 0) {
+    const ssize_t n = socket ? ::send(outFd, host.outbox.data(), host.outbox.size(), MSG_NOSIGNAL)
+                             : ::write(outFd, host.outbox.data(), host.outbox.size());
+    if (n <= 0) break;
+    host.outbox.erase(0, static_cast<std::size_t>(n));
+  }
+}
+
+// Link I/O: hosts connecting or opening the pty, their lines handled, the
 // replies written.
 void Emulator::serviceTableLink(double tableS, double wallS) {
-  if (listenFd_ >= 0 && clientFd_ < 0 && !dropped_) {
-    const int fd = ::accept4(listenFd_, nullptr, nullptr, SOCK_NONBLOCK | SOCK_CLOEXEC);
-    if (fd >= 0) {
-      clientFd_ = fd;
-      hostSeen_ = true;
-      inbox_.clear();
-      say("host: table link connected");
-    }
-  }
-  int ioFd = clientFd_ >= 0 ? clientFd_ : -1;
+  acceptHosts();
+  for (auto& host : hosts_)
+    if (host.fd >= 0) handleLines(host, host.fd, tableS, wallS);
+  std::erase_if(hosts_, [](const Host& h) { return h.fd < 0; });
+  if (!hosts_.empty()) lastHostWallS_ = wallS;
   if (tablePty_ >= 0) {
     const bool open = slaveOpen(tablePty_);
     if (open && !ptyHostOpen_) say("host: table link opened");
     if (!open && ptyHostOpen_) say("host: table link closed");
     ptyHostOpen_ = open;
     hostSeen_ = hostSeen_ || open;
-    ioFd = open ? tablePty_ : -1;
-  }
-  if (ioFd < 0) return;
-  char buf[4096];
-  for (;;) {
-    const ssize_t n = ::read(ioFd, buf, sizeof buf);
-    if (n > 0) {
-      inbox_.append(buf, static_cast<std::size_t>(n));
-      continue;
+    if (open) {
+      lastHostWallS_ = wallS;
+      handleLines(ptyHost_, tablePty_, tableS, wallS);
     }
-    if (n == 0 && ioFd == clientFd_) closeClient("by the host");
-    break;
-  }
-  for (auto nl = inbox_.find('\n'); nl != std::string::npos; nl = inbox_.find('\n')) {
-    const std::string line = inbox_.substr(0, nl);
-    inbox_.erase(0, nl + 1);
-    ++linesHandled_;
-    if (auto reply = server_.handleLine(line, tableS, wallS)) outbox_ += *reply + "\n";
-  }
-  if (inbox_.size() > 4096) {  // a host that never ends its line
-    (void)server_.handleLine(std::string(300, 'X'), tableS, wallS);
-    inbox_.clear();
-  }
-  const int outFd = clientFd_ >= 0 ? clientFd_ : (ptyHostOpen_ ? tablePty_ : -1);
-  while (!outbox_.empty() && outFd >= 0) {
-    const ssize_t n = outFd == clientFd_ ? ::send(outFd, outbox_.data(), outbox_.size(), MSG_NOSIGNAL)
-                                         : ::write(outFd, outbox_.data(), outbox_.size());
-    if (n <= 0) break;
-    outbox_.erase(0, static_cast<std::size_t>(n));
   }
 }
 
@@ -356,7 +396,8 @@ void Emulator::dropLinkIfDue(double tableS) {
   if (o_.dropAfterS >= 0.0 && !dropped_ && server_.firstSwingStartS() >= 0.0 &&
       tableS >= server_.firstSwingStartS() + o_.dropAfterS) {
     dropped_ = true;
-    closeClient("link dropped on request");
+    for (auto& host : hosts_) closeHost(host, "link dropped on request");
+    hosts_.clear();
     if (listenFd_ >= 0) ::close(listenFd_), listenFd_ = -1;
     if (tablePty_ >= 0) ::close(tablePty_), tablePty_ = -1;
     char b[160];
@@ -417,9 +458,9 @@ void Emulator::streamBoard(double tableS) {
 
 // Done: every host that came has gone.
 bool Emulator::everyHostGone(double tableS, double wallS) const {
-  const bool tableGone = hostSeen_ && clientFd_ < 0 && !ptyHostOpen_;
+  const bool tableGone = hostSeen_ && hosts_.empty() && !ptyHostOpen_;
   const bool boardGone = !sim_ || (boardHostSeen_ && !boardOpen_);  // vanished on request counts as gone
-  if (!(tableGone && boardGone)) return false;
+  if (!(tableGone && boardGone) || wallS - lastHostWallS_ < o_.lingerS) return false;
   bool rest = true;
   for (int a = 0; a < kAxisCount; ++a) rest = rest && emulated_.mode(static_cast<Axis>(a), tableS) != table::AxisMode::kSwinging;
   return rest || wallS > o_.exitAfterS;  // a swinging table waits for its heartbeat
@@ -431,7 +472,7 @@ void Emulator::finish(double wallS) {
                 wallS * o_.speed, static_cast<unsigned long long>(linesHandled_),
                 static_cast<unsigned long long>(boardSent_), server_.swingsStarted());
   say(b);
-  if (clientFd_ >= 0) ::close(clientFd_);
+  for (auto& host : hosts_) ::close(host.fd);
   if (listenFd_ >= 0) ::close(listenFd_);
   if (tablePty_ >= 0) ::close(tablePty_);
   if (boardFd_ >= 0) ::close(boardFd_);

@@ -284,12 +284,17 @@ void MainWindow::buildToolBar() {
                           "QToolButton:disabled { background: #d8b0b0; color: #f4f4f4; }");
   }
   connect(tablePanel_, &TablePanel::availabilityChanged, this, &MainWindow::updateEmergencyStop);
+  // The emergency stop's outcome comes later (it never waits): a failure is
+  // for the operator to read whole.
+  connect(tablePanel_, &TablePanel::emergencyStopReport, this, [this](const QString& text, bool failed) {
+    if (failed) reportError(tr("Emergency stop"), tr("The emergency stop failed"), text);
+  });
   updateEmergencyStop();
 }
 
 void MainWindow::updateEmergencyStop() {
   const bool runDrivesTable = table_ && runner_.isRunning();
-  const bool available = tablePanel_->connected() || runDrivesTable;
+  const bool available = tablePanel_->emergencyStopAvailable() || runDrivesTable;
   emergencyStopAction_->setEnabled(available);
   emergencyStopAction_->setToolTip(available ? tr("Stop every axis of the table at once (latched at the controller)")
                                              : tablePanel_->disabledReason() + tr(" (View ▸ Table controls)"));
@@ -298,24 +303,32 @@ void MainWindow::updateEmergencyStop() {
 void MainWindow::emergencyStop() {
   // The run's own connection first: it is the one moving the table.
   const bool throughRun = table_ && runner_.isRunning() && table_->requestEmergencyStop();
+  // ... and, as the runner may be waiting on its controller, on the
+  // emergency line too: a connection of its own that nothing holds up.
+  const bool runManual = throughRun && table_->settings().manual;
+  if (throughRun && !runManual)
+    tablePanel_->emergencyStopAt(QString::fromStdString(table_->settings().address));
   QString why;
   bool throughPanel = false;
-  if (tablePanel_->connected()) {
+  if (tablePanel_->emergencyStopAvailable()) {
     why = tablePanel_->emergencyStop();
     throughPanel = why.isEmpty();
   }
   if (runner_.isRunning()) stopRun();
-  if (tablePanel_->connected()) tableDock_->show();  // where the axes' state and the message are
+  if (tablePanel_->emergencyStopAvailable()) tableDock_->show();  // where the axes' state and the message are
   if (!throughRun && !throughPanel)
     reportError(tr("Emergency stop"), tr("The emergency stop failed"),
                 why.isEmpty() ? tr("No table connection is open: neither a run drives the table nor is the table "
                                    "panel connected. Use the controller's own emergency stop.")
                               : why);
   else if (throughRun)
-    tell(tr("Emergency stop: the run's table driver sends it at its next step; the run stops.") +
+    tell((runManual
+              ? tr("Emergency stop: the run's table driver sends it at its next step; the run stops.")
+              : tr("Emergency stop: sent on a connection of its own, and by the run's table driver at its next "
+                   "step; the run stops.")) +
          (why.isEmpty() ? QString() : tr(" The table panel's connection failed: %1").arg(why)));
   else
-    tell(tr("Emergency stop sent to the table."));
+    tell(tr("Emergency stop sent to the table; the table panel says what came of it."));
 }
 
 void MainWindow::buildMenus() {

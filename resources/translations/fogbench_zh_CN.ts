@@ -1704,12 +1704,12 @@ Press Diagnose in the Results view to start it again.</source>
     <name>fog::ui::MainWindow</name>
     <message>
         <location filename="../../ui/main_window.cpp" line="+153"/>
-        <location line="+997"/>
+        <location line="+1010"/>
         <source>fogbench %1 — FOG IMU delay bench</source>
         <translation>fogbench %1 —— 光纤陀螺 IMU 延迟测试台</translation>
     </message>
     <message>
-        <location line="-989"/>
+        <location line="-1002"/>
         <source>Configure</source>
         <translation>配置</translation>
     </message>
@@ -1730,12 +1730,12 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+1069"/>
+        <location line="+1082"/>
         <source>Diagnosis</source>
         <translation>诊断</translation>
     </message>
     <message>
-        <location line="-1066"/>
+        <location line="-1079"/>
         <source>Noise</source>
         <translation>噪声</translation>
     </message>
@@ -1750,7 +1750,7 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>&lt;h3&gt;fogbench %1&lt;/h3&gt;&lt;p&gt;光纤陀螺 IMU 延迟测试台：转台带动 IMU 摆动，用同一计数器为转台角度和陀螺增量打时间戳，对两者拟合正弦，并将相位差换算为 IMU 延迟及其不确定度。&lt;/p&gt;&lt;p&gt;基于 Qt %2（运行于 %3）和 Qwt %4 构建。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location line="+156"/>
+        <location line="+169"/>
         <source>&amp;Bench constants…</source>
         <translation>测试台常数(&amp;B)…</translation>
     </message>
@@ -1780,7 +1780,7 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>关于 fogbench</translation>
     </message>
     <message>
-        <location line="-186"/>
+        <location line="-199"/>
         <location line="+3"/>
         <source>Run</source>
         <translation>运行</translation>
@@ -1792,12 +1792,22 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+110"/>
+        <location line="+123"/>
         <source>End the run now; everything received so far is kept and analysed</source>
         <translation>立即结束运行；已接收的全部数据都会保留并分析</translation>
     </message>
     <message>
-        <location line="-56"/>
+        <location line="-64"/>
+        <source>Emergency stop: sent on a connection of its own, and by the run&apos;s table driver at its next step; the run stops.</source>
+        <translation>急停：已通过独立连接发送，运行的转台驱动也会在其下一步发送；运行停止。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Emergency stop sent to the table; the table panel says what came of it.</source>
+        <translation>急停指令已发送至转台；结果见转台面板。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>&amp;File</source>
         <translation>文件(&amp;F)</translation>
     </message>
@@ -2021,7 +2031,7 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>停止运行并关闭</translation>
     </message>
     <message>
-        <location line="-439"/>
+        <location line="-452"/>
         <source>Table</source>
         <translation>转台</translation>
     </message>
@@ -2031,7 +2041,7 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>急停</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+22"/>
         <source>Stop every axis of the table at once (latched at the controller)</source>
         <translation>立即停止转台所有轴（在控制器处锁定）</translation>
     </message>
@@ -2041,12 +2051,14 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>（视图 ▸ 转台控制）</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="-10"/>
+        <location line="+30"/>
         <source>Emergency stop</source>
         <translation>急停</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="-30"/>
+        <location line="+30"/>
         <source>The emergency stop failed</source>
         <translation>急停失败</translation>
     </message>
@@ -2056,22 +2068,17 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>没有打开的转台连接：既没有运行在驱动转台，转台面板也未连接。请使用控制器自身的急停。</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>Emergency stop: the run&apos;s table driver sends it at its next step; the run stops.</source>
         <translation>急停：运行的转台驱动在其下一步发送急停；运行停止。</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source> The table panel&apos;s connection failed: %1</source>
         <translation> 转台面板的连接失败：%1</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>Emergency stop sent to the table.</source>
-        <translation>急停指令已发送至转台。</translation>
-    </message>
-    <message>
-        <location line="+65"/>
+        <location line="+67"/>
         <source>Re-&amp;analyse the shown session</source>
         <translation>重新分析所显示的会话(&amp;A)</translation>
     </message>
@@ -2858,7 +2865,7 @@ File: %1</source>
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location filename="../../ui/main_window.cpp" line="-1212"/>
+        <location filename="../../ui/main_window.cpp" line="-1225"/>
         <location filename="../../ui/plan_editor.cpp" line="-323"/>
         <location filename="../../ui/plots/delta_picker.cpp" line="+1"/>
         <source>%1 s</source>
@@ -5013,7 +5020,7 @@ The session itself is unchanged.</source>
 <context>
     <name>fog::ui::TablePanel</name>
     <message>
-        <location filename="../../ui/table_panel.cpp" line="+23"/>
+        <location filename="../../ui/table_panel.cpp" line="+22"/>
         <source>idle</source>
         <translation>空闲</translation>
     </message>
@@ -5024,24 +5031,74 @@ The session itself is unchanged.</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+261"/>
+        <location line="+525"/>
         <source>emergency stop</source>
         <translation>急停</translation>
     </message>
     <message>
-        <location line="-260"/>
+        <location line="-524"/>
         <location line="+2"/>
         <source>unknown</source>
         <translation>未知</translation>
     </message>
     <message>
-        <location line="+13"/>
-        <location line="+133"/>
+        <location line="+15"/>
+        <source>moving %1 to %2°</source>
+        <translation>将 %1 轴转到 %2°</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the stop</source>
+        <translation>停止指令</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the emergency stop</source>
+        <translation>急停指令</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>The controller refuses %1: the table is moving (settings conflict); wait for the move to end or press Stop.</source>
+        <translation>控制器拒绝%1：转台正在运动（设置冲突）；请等待运动结束，或按“停止”。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The controller refuses %1: the position is beyond what it accepts (data out of range: %2).</source>
+        <translation>控制器拒绝%1：位置超出其允许范围（数据超出范围：%2）。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The controller refuses %1: its interlock is open (a door or a guard); close it, then try again.</source>
+        <translation>控制器拒绝%1：其联锁已断开（门或防护装置）；请关闭后重试。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The controller refuses %1: its emergency stop is engaged; reset it at the controller first.</source>
+        <translation>控制器拒绝%1：其急停已生效；请先在控制器处复位。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The controller refuses %1: it missed the bench&apos;s heartbeat and stopped the table; disconnect and connect again.</source>
+        <translation>控制器拒绝%1：它未收到测试台的心跳，已停止转台；请断开后重新连接。</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The controller does not understand %1 (%2); does it speak the bench&apos;s table protocol (docs/table-control.md)?</source>
+        <translation>控制器无法理解%1（%2）；它是否使用测试台的转台协议（docs/table-control.md）？</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The controller refuses %1 (%2).</source>
+        <translation>控制器拒绝%1（%2）。</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <location line="+191"/>
         <source>Connect</source>
         <translation>连接</translation>
     </message>
     <message>
-        <location line="-123"/>
+        <location line="-149"/>
         <source>axis</source>
         <translation>轴</translation>
     </message>
@@ -5061,7 +5118,7 @@ The session itself is unchanged.</source>
         <translation>回零</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+18"/>
         <source>Jog step</source>
         <translation>点动步长</translation>
     </message>
@@ -5082,29 +5139,59 @@ The session itself is unchanged.</source>
         <translation>执行</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+9"/>
+        <source>Stop</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>EMERGENCY STOP</source>
         <translation>急停</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+12"/>
         <source>No table address: choose Table ▸ Remote controller in Configure and give its address (tcp:HOST:PORT or a serial device).</source>
         <translation>没有转台地址：请在“配置”中选择 转台 ▸ 远程控制器 并填写其地址（tcp:主机:端口 或串口设备）。</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+44"/>
         <source>Disconnect</source>
         <translation>断开</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+47"/>
+        <source>Cannot connect to the table: %1</source>
+        <translation>无法连接转台：%1</translation>
+    </message>
+    <message>
+        <location line="+38"/>
+        <source>Stop sent: every axis decelerates to rest.</source>
+        <translation>停止指令已发送：所有轴减速至静止。</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1 did not reach the controller: %2</source>
+        <translation>%1未到达控制器：%2</translation>
+    </message>
+    <message>
+        <location line="+29"/>
         <source>A run drives the table; stop it first.</source>
         <translation>运行正在驱动转台；请先停止运行。</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>The table is not connected yet; the table was not moved.</source>
+        <translation>转台尚未连接；转台未运动。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>The table does not answer (%1); the table was not moved.</source>
         <translation>转台无应答（%1）；转台未运动。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The table has not answered for %1 s; the table was not moved.</source>
+        <translation>转台已 %1 s 无应答；转台未运动。</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -5117,17 +5204,77 @@ The session itself is unchanged.</source>
         <translation>%1 轴转到 %2°</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+7"/>
+        <source>A run drives the table; stop the run (tool bar) instead.</source>
+        <translation>运行正在驱动转台；请改为停止运行（工具栏）。</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Stopping every axis…</source>
+        <translation>正在停止所有轴…</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>EMERGENCY STOP: sending…</source>
+        <translation>急停：正在发送…</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>Reset it at the controller before the table moves again.</source>
+        <translation>转台再次运动前，请在控制器处复位。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Emergency stop sent: every axis stops.</source>
+        <translation>急停指令已发送：所有轴停止。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>The emergency stop did not reach the controller: %1. Use the table&apos;s own stop button.</source>
         <translation>急停指令未到达控制器：%1。请使用转台自身的停止按钮。</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>Emergency stop sent: every axis stops. Reset it at the controller before the table moves again.</source>
-        <translation>急停指令已发送：所有轴停止。转台再次运动前，请在控制器处复位。</translation>
+        <location line="+7"/>
+        <source>Emergency stop sent %1 ms after the click on a connection of its own; the controller reports it engaged: every axis stops.</source>
+        <translation>急停指令已在点击后 %1 ms 通过独立连接发送；控制器报告急停已生效：所有轴停止。</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+3"/>
+        <source>Emergency stop sent %1 ms after the click on a connection of its own, but the controller has not confirmed it (%2). Watch the table; if it still moves, use its own stop button.</source>
+        <translation>急停指令已在点击后 %1 ms 通过独立连接发送，但控制器尚未确认（%2）。请注意观察转台；若仍在运动，请使用转台自身的停止按钮。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The emergency stop&apos;s own connection failed (%1), but it reached the controller through the panel&apos;s connection: every axis stops.</source>
+        <translation>急停的独立连接失败（%1），但急停指令已通过面板的连接到达控制器：所有轴停止。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The emergency stop did not reach the controller: its own connection failed (%1) and so did the panel&apos;s (%2). Use the table&apos;s own stop button.</source>
+        <translation>急停指令未到达控制器：其独立连接失败（%1），面板的连接也失败（%2）。请使用转台自身的停止按钮。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The emergency stop&apos;s own connection failed (%1); it waits in the panel&apos;s connection until the controller answers. If the table still moves, use its own stop button.</source>
+        <translation>急停的独立连接失败（%1）；急停指令在面板的连接中等待控制器应答。若转台仍在运动，请使用转台自身的停止按钮。</translation>
+    </message>
+    <message>
+        <location line="+68"/>
+        <source>no answer</source>
+        <translation>无应答</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>Every axis decelerates to rest (not latched); a move still queued is dropped</source>
+        <translation>所有轴减速至静止（不锁定）；仍在排队的运动指令将被丢弃</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Stop every axis at once, on a connection of its own and through the panel&apos;s (latched at the controller)</source>
+        <translation>通过独立连接并经面板的连接立即停止所有轴（在控制器处锁定）</translation>
+    </message>
+    <message>
+        <location line="-71"/>
         <source>No table is connected: press Connect (the address is the Configure view&apos;s remote table).</source>
         <translation>未连接转台：请按“连接”（地址取自“配置”视图中的远程转台）。</translation>
     </message>
@@ -5137,24 +5284,54 @@ The session itself is unchanged.</source>
         <translation>运行正在驱动转台；只有急停可用。</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+1"/>
+        <source>Connecting to the table…</source>
+        <translation>正在连接转台…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The table does not answer; only the emergency stop is available.</source>
+        <translation>转台无应答；只有急停可用。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The table has not answered for %1 s; only the emergency stop is available.</source>
+        <translation>转台已 %1 s 无应答；只有急停可用。</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>No table connected.</source>
         <translation>未连接转台。</translation>
     </message>
     <message>
         <location line="+3"/>
+        <source>Connecting to %1…</source>
+        <translation>正在连接 %1…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Connecting to %1: no answer for %2 s…</source>
+        <translation>正在连接 %1：已 %2 s 无应答…</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1: no answer for %2 s</source>
+        <translation>%1：已 %2 s 无应答</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>Unreachable: %1</source>
         <translation>无法访问：%1</translation>
     </message>
     <message>
-        <location line="+8"/>
-        <source>unreachable</source>
-        <translation>无法访问</translation>
+        <location line="+1"/>
+        <source>No answer for %1 s (%2); reconnecting to %3…</source>
+        <translation>已 %1 s 无应答（%2）；正在重新连接 %3…</translation>
     </message>
     <message>
-        <location line="+21"/>
-        <source>Stop every axis at once through the controller</source>
-        <translation>通过控制器立即停止所有轴</translation>
+        <location line="+11"/>
+        <source>unreachable</source>
+        <translation>无法访问</translation>
     </message>
 </context>
 <context>
