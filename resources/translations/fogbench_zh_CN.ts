@@ -1704,12 +1704,12 @@ Press Diagnose in the Results view to start it again.</source>
     <name>fog::ui::MainWindow</name>
     <message>
         <location filename="../../ui/main_window.cpp" line="+153"/>
-        <location line="+1010"/>
+        <location line="+1011"/>
         <source>fogbench %1 — FOG IMU delay bench</source>
         <translation>fogbench %1 —— 光纤陀螺 IMU 延迟测试台</translation>
     </message>
     <message>
-        <location line="-1002"/>
+        <location line="-1003"/>
         <source>Configure</source>
         <translation>配置</translation>
     </message>
@@ -1730,12 +1730,12 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+1082"/>
+        <location line="+1083"/>
         <source>Diagnosis</source>
         <translation>诊断</translation>
     </message>
     <message>
-        <location line="-1079"/>
+        <location line="-1080"/>
         <source>Noise</source>
         <translation>噪声</translation>
     </message>
@@ -1818,12 +1818,12 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+746"/>
+        <location line="+747"/>
         <source>Open session</source>
         <translation>打开会话</translation>
     </message>
     <message>
-        <location line="-745"/>
+        <location line="-746"/>
         <source>fogbench sessions (*.fbs);;All files (*)</source>
         <translation>fogbench 会话 (*.fbs);;所有文件 (*)</translation>
     </message>
@@ -2336,7 +2336,7 @@ Plots: wheel zooms, drag pans, double-click shows all, click sets cursors A/B</s
         <translation>正在打开 %1 …</translation>
     </message>
     <message>
-        <location line="+76"/>
+        <location line="+77"/>
         <location line="+10"/>
         <source>Re-analyse</source>
         <translation>重新分析</translation>
@@ -2865,7 +2865,7 @@ File: %1</source>
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location filename="../../ui/main_window.cpp" line="-1225"/>
+        <location filename="../../ui/main_window.cpp" line="-1226"/>
         <location filename="../../ui/plan_editor.cpp" line="-323"/>
         <location filename="../../ui/plots/delta_picker.cpp" line="+1"/>
         <source>%1 s</source>
@@ -5020,7 +5020,7 @@ The session itself is unchanged.</source>
 <context>
     <name>fog::ui::TablePanel</name>
     <message>
-        <location filename="../../ui/table_panel.cpp" line="+22"/>
+        <location filename="../../ui/table_panel.cpp" line="+23"/>
         <source>idle</source>
         <translation>空闲</translation>
     </message>
@@ -5031,12 +5031,12 @@ The session itself is unchanged.</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+525"/>
+        <location line="+530"/>
         <source>emergency stop</source>
         <translation>急停</translation>
     </message>
     <message>
-        <location line="-524"/>
+        <location line="-529"/>
         <location line="+2"/>
         <source>unknown</source>
         <translation>未知</translation>
@@ -5093,7 +5093,7 @@ The session itself is unchanged.</source>
     </message>
     <message>
         <location line="+16"/>
-        <location line="+191"/>
+        <location line="+195"/>
         <source>Connect</source>
         <translation>连接</translation>
     </message>
@@ -5259,7 +5259,7 @@ The session itself is unchanged.</source>
         <translation>急停的独立连接失败（%1）；急停指令在面板的连接中等待控制器应答。若转台仍在运动，请使用转台自身的停止按钮。</translation>
     </message>
     <message>
-        <location line="+68"/>
+        <location line="+69"/>
         <source>no answer</source>
         <translation>无应答</translation>
     </message>
@@ -5274,7 +5274,7 @@ The session itself is unchanged.</source>
         <translation>通过独立连接并经面板的连接立即停止所有轴（在控制器处锁定）</translation>
     </message>
     <message>
-        <location line="-71"/>
+        <location line="-72"/>
         <source>No table is connected: press Connect (the address is the Configure view&apos;s remote table).</source>
         <translation>未连接转台：请按“连接”（地址取自“配置”视图中的远程转台）。</translation>
     </message>
@@ -5304,7 +5304,7 @@ The session itself is unchanged.</source>
         <translation>未连接转台。</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>Connecting to %1…</source>
         <translation>正在连接 %1…</translation>
     </message>
