@@ -1,21 +1,52 @@
 #!/usr/bin/env bash
-# Set up, build and run every test: the full build (core, CLI, GUI on Qt 6 +
-# Qwt 6.3) through CTest; the GUI and its UI tests again on Qt 5.15 + Qwt 6.1
-# (the `qt5` preset: only the GUI's targets, only the `ui` and `translations`
-# tests), so both Qt majors keep building and passing; a headless build
-# without Qt, which proves core/ and the CLI need no Qt, and runs its core
-# and CLI tests again (not the independent suite: the release leg ran it); a build with AddressSanitizer + UndefinedBehaviorSanitizer (the
-# `asan` preset) runs every test but the label `independent` again, and any
-# sanitizer report fails the run; last, the libFuzzer targets run for a
-# bounded time each (FUZZ_SECONDS, default 60). ccache, when installed, is the compiler
-# launcher, so the Qt 5 and headless legs reuse the release leg's Qt-free
-# objects.
+# Set up, build and run every test, each test once per build flavour that it
+# proves something in (docs/benchmarks.md "CI" has the stage times):
+#   release   the full build (core, CLI, GUI on Qt 6 + Qwt 6.3) and every test;
+#   qt5       the GUI and its UI tests on Qt 5.15 + Qwt 6.1 (only the GUI's
+#             targets, only the `ui` and `translations` tests), so both Qt
+#             majors keep building and passing;
+#   headless  core and the CLI built without Qt, and the CLI's tests on that
+#             build (core's own suites test the same code and ran in release);
+#   asan      AddressSanitizer + UndefinedBehaviorSanitizer (-O1 -g1): every
+#             test but the labels independent, memory_budget and desk, and
+#             any sanitizer report fails the run;
+#   fuzz      the libFuzzer targets for a bounded time each (FUZZ_SECONDS,
+#             default 60), two at a time on the two cores.
+# ccache, when installed, is the compiler launcher, so later legs reuse the
+# objects earlier ones (and earlier runs) made. At the end (or at a failure)
+# the time of each stage is printed beside its budget: 30 min in all on two
+# cores with a warm ccache.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-# Each stage's heading says how long the run has taken so far.
-stage() { echo "== $* [$((SECONDS / 60)) min $((SECONDS % 60)) s] =="; }
+# Each stage's heading says how long the run has taken so far; the summary
+# at exit gives each stage's time against its budget (minutes).
+stage_names=() stage_starts=() stage_budgets=()
+stage() {
+  local budget=$1; shift
+  stage_names+=("$*") stage_starts+=("$SECONDS") stage_budgets+=("$budget")
+  echo "== $* [$((SECONDS / 60)) min $((SECONDS % 60)) s] =="
+}
+summary() {
+  local status=$? i end took over=""
+  echo "== stage times (budget) =="
+  for i in "${!stage_names[@]}"; do
+    (( stage_budgets[i] > 0 )) || continue
+    end=$SECONDS
+    (( i + 1 < ${#stage_starts[@]} )) && end=${stage_starts[i + 1]}
+    took=$(( end - stage_starts[i] ))
+    over=""
+    (( took > stage_budgets[i] * 60 )) && over="  over budget"
+    printf '  %-10s %3d min %02d s  (budget %2d min)%s\n' "${stage_names[i]%%:*}" $((took / 60)) $((took % 60)) \
+      "${stage_budgets[i]}" "$over"
+  done
+  printf '  %-10s %3d min %02d s  (budget 30 min)%s\n' "all" $((SECONDS / 60)) $((SECONDS % 60)) \
+    "$( (( SECONDS > 1800 )) && echo "  over budget")"
+  [[ $status == 0 ]] || echo "!! the run failed (exit $status) in stage: ${stage_names[-1]:-setup}" >&2
+}
+trap summary EXIT
 
+stage 2 "setup: Debian packages and Qwt for Qt 6 (scripts/setup.sh)"
 ./scripts/setup.sh
 
 launcher=()
@@ -28,7 +59,7 @@ fi
 qt_of() { sed -n 's/^-- fogbench: GUI uses //p' "$1"; }
 mkdir -p build
 
-stage "full build (release): Qt 6 + Qwt >= 6.2 by default"
+stage 11 "release: the full build, Qt 6 + Qwt >= 6.2 by default, every test"
 cmake --preset release "${launcher[@]}" | tee build/.configure-release.log
 echo "== release build's GUI: $(qt_of build/.configure-release.log) =="
 if ! qt_of build/.configure-release.log | grep -q '^Qt 6'; then
@@ -37,22 +68,22 @@ fi
 cmake --build --preset release
 ctest --preset release --output-on-failure -j2
 
-stage "Qt 5 build: GUI and UI tests on Qt 5.15 + Qwt 6.1 (preset qt5)"
+stage 3 "qt5: the GUI and its UI tests on Qt 5.15 + Qwt 6.1"
 cmake --preset qt5 "${launcher[@]}" | tee build/.configure-qt5.log
 echo "== Qt 5 build's GUI: $(qt_of build/.configure-qt5.log) =="
 cmake --build --preset qt5
 ctest --preset qt5 --output-on-failure -j2
 
-stage "headless build: core and CLI only, no Qt"
+stage 2 "headless: core and the CLI without Qt, the CLI's tests"
 # What only this leg shows: core and the command line build and pass their
-# tests without Qt. The independent suite (label `independent`) checks the
-# same core code against an independent generator and already ran in the
-# release leg: it is not run twice.
+# tests without Qt. Core's GoogleTest suites are not built here (the preset's
+# FOG_BUILD_CORE_TESTS=OFF): the same code ran them in the release leg; nor
+# does the test preset run the labels independent and memory_budget.
 cmake --preset headless "${launcher[@]}"
 cmake --build --preset headless
-ctest --preset headless --output-on-failure -j2 -LE independent
+ctest --preset headless --output-on-failure -j2
 
-stage "sanitizers: every test but the label independent under ASan + UBSan (preset asan)"
+stage 10 "asan: every test but the labels independent, memory_budget and desk under ASan + UBSan"
 # The preset's environment sets the sanitizer options and tests/lsan.supp
 # (Qt 5's offscreen leaks; nothing is suppressed on Qt 6). A report must fail
 # the run even from a process whose failure a test expects (a CLI error path
@@ -83,11 +114,13 @@ if [ "$asan_failed" != 0 ]; then
   exit 1
 fi
 
-stage "fuzzing: sampling-board decoder, session reader, CSV import and plan JSON, analysis with numeric extremes, table SCPI (libFuzzer + ASan/UBSan, clang)"
-# Bounded: FUZZ_SECONDS each (default 60). Seeds: the committed decoder corpus
+stage 3 "fuzz: sampling-board decoder, session reader, CSV import and plan JSON, analysis with numeric extremes, table SCPI (libFuzzer + ASan/UBSan, clang)"
+# Bounded: FUZZ_SECONDS each (default 60), two targets at a time (each
+# fuzzer is one process on one core). Seeds: the committed decoder corpus
 # and small simulated streams and sessions written by fog_fuzz_seed_corpus.
 # A crash fails the run and leaves its input in the scratch folder printed
-# below (docs/reliability.md).
+# below (docs/reliability.md); each fuzzer's output goes to a log there,
+# printed when it ends.
 fuzz_seconds="${FUZZ_SECONDS:-60}"
 cmake --preset fuzz
 cmake --build --preset fuzz --target fog_fuzz_decoder fog_fuzz_session fog_fuzz_import fog_fuzz_analysis fog_fuzz_scpi fog_fuzz_seed_corpus
@@ -101,17 +134,41 @@ printf '%s\0%s\0%s\0%s' \
   "$(printf 'time_s,x_deg\n0.001,0.1\n0.002,0.2\n0.003,0.3\n')" \
   "$(printf 'test_point,time_s,x_inc_deg,lost_before\n1,0.002,0.001,0\n1,0.004,0.002,1\n')" > "$fuzz_dir/seed-import/one"
 build/fuzz/fuzz/fog_fuzz_seed_corpus "$fuzz_dir/seed-decoder" "$fuzz_dir/seed-session"
-build/fuzz/fuzz/fog_fuzz_decoder -max_total_time="$fuzz_seconds" -print_final_stats=1 \
-  -artifact_prefix="$fuzz_dir/decoder-" "$fuzz_dir/decoder" fuzz/corpus/decoder "$fuzz_dir/seed-decoder"
-build/fuzz/fuzz/fog_fuzz_session -max_total_time="$fuzz_seconds" -print_final_stats=1 \
-  -artifact_prefix="$fuzz_dir/session-" "$fuzz_dir/session" "$fuzz_dir/seed-session"
-build/fuzz/fuzz/fog_fuzz_import -max_total_time="$fuzz_seconds" -print_final_stats=1 -max_len=65536 \
-  -artifact_prefix="$fuzz_dir/import-" "$fuzz_dir/import" "$fuzz_dir/seed-import" fuzz/corpus/import
+# fuzz NAME SECONDS [libFuzzer options and corpus folders...]: runs in the
+# background, its output in $fuzz_dir/NAME.log.
+fuzz_pids=() fuzz_logs=()
+fuzz() {
+  local name=$1 seconds=$2; shift 2
+  build/fuzz/fuzz/fog_fuzz_"$name" -max_total_time="$seconds" -print_final_stats=1 \
+    -artifact_prefix="$fuzz_dir/$name-" "$@" >"$fuzz_dir/$name.log" 2>&1 &
+  fuzz_pids+=("$!") fuzz_logs+=("$fuzz_dir/$name.log")
+}
+# Waits for the fuzzers started since the last call; prints their logs'
+# final statistics (all of a log when its fuzzer failed); fails on a failure.
+fuzz_wait() {
+  local i failed=0
+  for i in "${!fuzz_pids[@]}"; do
+    if wait "${fuzz_pids[i]}"; then
+      echo "-- ${fuzz_logs[i]##*/}:"; grep -E '^(stat::|Done|INFO: Seed)' "${fuzz_logs[i]}" || true
+    else
+      echo "!! fuzzer failed: ${fuzz_logs[i]}" >&2; cat "${fuzz_logs[i]}" >&2; failed=1
+    fi
+  done
+  fuzz_pids=() fuzz_logs=()
+  return "$failed"
+}
+half=$(( (fuzz_seconds + 1) / 2 ))
+fuzz decoder "$fuzz_seconds" "$fuzz_dir/decoder" fuzz/corpus/decoder "$fuzz_dir/seed-decoder"
+fuzz session "$fuzz_seconds" "$fuzz_dir/session" "$fuzz_dir/seed-session"
+fuzz_wait
+fuzz import "$fuzz_seconds" -max_len=65536 "$fuzz_dir/import" "$fuzz_dir/seed-import" fuzz/corpus/import
 # The analysis over recordings with numeric extremes (committed seeds: ±1e±300,
-# subnormals, NaN, inf, huge counts): half the time (each input is a whole analysis).
-build/fuzz/fuzz/fog_fuzz_analysis -max_total_time="$(( (fuzz_seconds + 1) / 2 ))" -print_final_stats=1 -max_len=512 \
-  -artifact_prefix="$fuzz_dir/analysis-" "$fuzz_dir/analysis" fuzz/corpus/analysis
-# The table's SCPI parser and emulated controller: half the time (a small parser).
-build/fuzz/fuzz/fog_fuzz_scpi -max_total_time="$(( (fuzz_seconds + 1) / 2 ))" -print_final_stats=1 -max_len=4096 \
-  -artifact_prefix="$fuzz_dir/scpi-" "$fuzz_dir/scpi" fuzz/corpus/scpi
-stage "done: release (Qt 6), Qt 5, headless, asan and fuzzing all passed"
+# subnormals, NaN, inf, huge counts), then the table's SCPI parser and
+# emulated controller (a small parser): half the time each, one after the other.
+( build/fuzz/fuzz/fog_fuzz_analysis -max_total_time="$half" -print_final_stats=1 -max_len=512 \
+    -artifact_prefix="$fuzz_dir/analysis-" "$fuzz_dir/analysis" fuzz/corpus/analysis &&
+  build/fuzz/fuzz/fog_fuzz_scpi -max_total_time="$half" -print_final_stats=1 -max_len=4096 \
+    -artifact_prefix="$fuzz_dir/scpi-" "$fuzz_dir/scpi" fuzz/corpus/scpi ) >"$fuzz_dir/analysis-scpi.log" 2>&1 &
+fuzz_pids+=("$!") fuzz_logs+=("$fuzz_dir/analysis-scpi.log")
+fuzz_wait
+stage 0 "done: release (Qt 6), Qt 5, headless, asan and fuzzing all passed"

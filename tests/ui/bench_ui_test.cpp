@@ -97,7 +97,7 @@ class BenchUiTest : public QObject {
   // private: it puts every test process's settings in one file,
   // ~/.qttest/config/<organisation>/<program>.conf, whatever XDG_CONFIG_HOME
   // says, so UI tests running at once (ctest -j2 runs fog_ui_tests beside
-  // fog_ui_table_tests; other checkouts run theirs) overwrote each other's
+  // the other UI tests; other checkouts run theirs) overwrote each other's
   // remembered session folder between a test's two windows.
   QTemporaryDir settings_;
 
