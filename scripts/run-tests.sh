@@ -122,7 +122,7 @@ stage 3 "fuzz: sampling-board decoder, session reader, CSV import and plan JSON,
 # below (docs/reliability.md); each fuzzer's output goes to a log there,
 # printed when it ends.
 fuzz_seconds="${FUZZ_SECONDS:-60}"
-cmake --preset fuzz
+cmake --preset fuzz "${launcher[@]}"
 cmake --build --preset fuzz --target fog_fuzz_decoder fog_fuzz_session fog_fuzz_import fog_fuzz_analysis fog_fuzz_scpi fog_fuzz_seed_corpus
 fuzz_dir="$(mktemp -d /tmp/fogbench-fuzz.XXXXXX)"
 echo "fuzz scratch: $fuzz_dir"
