@@ -19,7 +19,7 @@ std::string BoardHostControl::apply(const protocol::HostCommand& c) {
       statusDue_ = true;
       std::snprintf(b, sizeof b, "mark test point %u axis %u phase %u %.6f Hz %.6f deg flags %u",
                     static_cast<unsigned>(c.testPoint), static_cast<unsigned>(c.axis), static_cast<unsigned>(c.phase),
-                    c.nominalFrequencyMicroHz * 1e-6, c.nominalAmplitudeMicroDeg * 1e-6, static_cast<unsigned>(c.flags));
+                    c.nominalFrequencyMicroHz / 1e6, c.nominalAmplitudeMicroDeg / 1e6, static_cast<unsigned>(c.flags));
       return b;
   }
   return "unknown";

@@ -224,6 +224,9 @@ QWidget* ResultView::buildPlotsAndTables() {
   anglePlot_->setObjectName("anglePlot");
   residualPlot_ = new SeriesPlot(tr("Residuals (data − fit)"), tr("residual (arcsec)"), tr("″"));
   residualPlot_->setObjectName("residualPlot");
+  // Empty (a first start): say how to fill the view rather than show bare axes.
+  anglePlot_->setEmptyText(tr("No result yet.\nRun a test plan (Run), or open a session (Sessions)."));
+  residualPlot_->setEmptyText(tr("The fits' residuals appear here."));
   // Explicit minimum sizes below the plots' own hints: the view fits a
   // laptop screen and the Compare window's two columns fit side by side.
   for (QwtPlot* plot : {static_cast<QwtPlot*>(anglePlot_), static_cast<QwtPlot*>(residualPlot_)})
@@ -390,7 +393,7 @@ void ResultView::clear() {
     const QSignalBlocker block(testPointCombo_);
     testPointCombo_->clear();
   }
-  lagLabel_->setText(tr("No result yet."));
+  lagLabel_->setText(tr("No result yet: run a test plan (Run) or open a session (Sessions)."));
   verdictLabel_->clear();
   resultCombo_->clear();
   resultCombo_->setEnabled(false);

@@ -3,8 +3,10 @@
 #include <QColor>
 #include <QDir>
 #include <QFileDialog>
+#include <QFileInfo>
 #include <QHBoxLayout>
 #include <QHeaderView>
+#include <QItemSelectionModel>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
@@ -85,8 +87,9 @@ SessionBrowser::SessionBrowser(QWidget* parent) : QWidget(parent) {
                                   "and limit (Tools → Bench constants); its raw data and earlier results never change"));
   compareButton_ = new QPushButton(tr("Compare the selected"));
   compareButton_->setObjectName("compareButton");
-  compareButton_->setToolTip(tr("Two sessions: their delays per test point and the difference with its significance; "
-                                "more sessions of one IMU: the delay against the date as well"));
+  compareButton_->setToolTip(tr("Two sessions: their delays per test point and the difference with its significance "
+                                "(A is the session chosen first, B the second); more sessions of one IMU: the delay "
+                                "against the date as well"));
   importButton_ = new QPushButton(tr("Import CSV data…"));
   importButton_->setObjectName("importButton");
   importButton_->setToolTip(tr("Data from another bench (metadata.json, table.csv, gyro.csv) becomes a session here"));
@@ -107,6 +110,16 @@ SessionBrowser::SessionBrowser(QWidget* parent) : QWidget(parent) {
     refresh();
     emit folderChanged(folder());
   });
+  // The order the rows were chosen in (Compare takes the first chosen as A):
+  // rows newly selected are appended in the order the selection model gives
+  // them, rows deselected leave the list.
+  connect(table_->selectionModel(), &QItemSelectionModel::selectionChanged, this,
+          [this](const QItemSelection& selected, const QItemSelection& deselected) {
+            for (const QModelIndex& index : deselected.indexes())
+              if (index.column() == kFile) chosenRows_.removeAll(index.row());
+            for (const QModelIndex& index : selected.indexes())
+              if (index.column() == kFile && !chosenRows_.contains(index.row())) chosenRows_.append(index.row());
+          });
   connect(table_, &QTableWidget::itemSelectionChanged, this, &SessionBrowser::updateButtons);
   connect(table_, &QTableWidget::cellDoubleClicked, this, [this](int row, int) {
     emit openRequested(table_->item(row, kFile)->data(Qt::UserRole).toString());
@@ -140,9 +153,19 @@ QString SessionBrowser::folder() const { return QDir::fromNativeSeparators(folde
 
 void SessionBrowser::refresh() {
   table_->setRowCount(0);
+  chosenRows_.clear();
   const QString dir = folder();
   if (dir.isEmpty()) {
     summary_->setText(tr("Choose the folder that holds the session files (.fbs)."));
+    updateButtons();
+    return;
+  }
+  if (!QFileInfo::exists(dir)) {
+    // A first start: the default folder is made when the first session is
+    // recorded, so a folder not made yet is no error.
+    summary_->setText(tr("No sessions yet: %1 is made when the first session is recorded. "
+                         "Run a test plan (Run), or choose a folder that holds session files.")
+                          .arg(QDir::toNativeSeparators(dir)));
     updateButtons();
     return;
   }
@@ -198,8 +221,13 @@ void SessionBrowser::refresh() {
 
 QStringList SessionBrowser::selectedPaths() const {
   QStringList paths;
+  for (int row : chosenRows_)
+    if (row < table_->rowCount() && table_->item(row, kFile)->isSelected())
+      paths << table_->item(row, kFile)->data(Qt::UserRole).toString();
+  // Rows selected without a selection signal (none known): in row order, last.
   for (int row = 0; row < table_->rowCount(); ++row)
-    if (table_->item(row, kFile)->isSelected()) paths << table_->item(row, kFile)->data(Qt::UserRole).toString();
+    if (!chosenRows_.contains(row) && table_->item(row, kFile)->isSelected())
+      paths << table_->item(row, kFile)->data(Qt::UserRole).toString();
   return paths;
 }
 

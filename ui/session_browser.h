@@ -4,6 +4,7 @@
 // and comparing are requested through signals; the window that owns the
 // browser does the (background) work, so the browser never blocks.
 
+#include <QList>
 #include <QString>
 #include <QWidget>
 
@@ -25,7 +26,8 @@ class SessionBrowser : public QWidget {
   // Reads the folder again.
   void refresh();
   QTableWidget* table() const { return table_; }
-  // The paths of the selected rows, in table order.
+  // The paths of the selected rows, in the order they were chosen (Compare's
+  // A is the first).
   QStringList selectedPaths() const;
   // Selects the row of `path`; false when it is not listed.
   bool selectPath(const QString& path);
@@ -49,6 +51,7 @@ class SessionBrowser : public QWidget {
   QPushButton* reanalyseButton_ = nullptr;
   QPushButton* compareButton_ = nullptr;
   QPushButton* importButton_ = nullptr;
+  QList<int> chosenRows_;  // selected rows in the order they were chosen
 };
 
 }  // namespace fog::ui

@@ -58,7 +58,7 @@ void LiveTraces::add(std::span<const protocol::DecodedFrame> frames) {
     if (const auto* s = std::get_if<protocol::StatusPayload>(&f.frame.payload)) {
       const int index = s->testPoint == protocol::kNoTestPoint ? -1 : s->testPoint;
       if (index >= 0 && (index != testPoint_ || s->axis != static_cast<int>(axis_)) && s->axis < kAxisCount)
-        startTestPoint(index, static_cast<Axis>(s->axis), s->nominalFrequencyMicroHz * 1e-6);
+        startTestPoint(index, static_cast<Axis>(s->axis), s->nominalFrequencyMicroHz / 1e6);
       if (s->phase == protocol::TestPhase::kRecording && phase_ != protocol::TestPhase::kRecording)
         recordingStartS_ = streamTimeS_;
       phase_ = s->phase;

@@ -27,8 +27,8 @@ void RecordingBuilder::onStatus(const StatusPayload& s) {
     Segment seg;
     seg.testPoint = s.testPoint;
     seg.axis = s.axis < kAxisCount ? static_cast<Axis>(s.axis) : Axis::kX;
-    seg.nominalFrequencyHz = s.nominalFrequencyMicroHz * 1e-6;
-    seg.nominalAmplitudeDeg = s.nominalAmplitudeMicroDeg * 1e-6;
+    seg.nominalFrequencyHz = s.nominalFrequencyMicroHz / 1e6;  // / 1e6, not * 1e-6: 100000 µHz is 0.1 Hz, not 0.09999999999999999
+    seg.nominalAmplitudeDeg = s.nominalAmplitudeMicroDeg / 1e6;
     seg.kind = (s.flags & kStatusFlagStatic) != 0 ? TestPointKind::kStatic : TestPointKind::kSwing;
     segments_.push_back(std::move(seg));
   }

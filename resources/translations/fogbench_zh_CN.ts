@@ -4267,7 +4267,7 @@ File: %1</source>
         <translation>%1 轴，%2 Hz / %3°</translation>
     </message>
     <message>
-        <location filename="../../ui/session_browser.cpp" line="+31"/>
+        <location filename="../../ui/session_browser.cpp" line="+33"/>
         <source>; %1 damaged</source>
         <translation>；%1 个损坏</translation>
     </message>
@@ -4350,7 +4350,19 @@ File: %1</source>
         <translation>″</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+3"/>
+        <source>No result yet.
+Run a test plan (Run), or open a session (Sessions).</source>
+        <translation>尚无结果。
+请运行测试计划（运行），或打开会话（会话）。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The fits&apos; residuals appear here.</source>
+        <translation>拟合残差将显示在此处。</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>fit</source>
         <translation>拟合</translation>
     </message>
@@ -4487,7 +4499,12 @@ File: %1</source>
         <translation>标定报告</translation>
     </message>
     <message>
-        <location line="+110"/>
+        <location line="+50"/>
+        <source>No result yet: run a test plan (Run) or open a session (Sessions).</source>
+        <translation>尚无结果：请运行测试计划（运行）或打开会话（会话）。</translation>
+    </message>
+    <message>
+        <location line="+60"/>
         <source>result %1 of %2: %7, stored %3 by %4 (%5), %6</source>
         <translation>结果 %1/%2：%7，%3 由 %4（%5）保存，%6</translation>
     </message>
@@ -4575,12 +4592,7 @@ The session itself is unchanged.</source>
         <translation>滞后 (ms)，±1σ</translation>
     </message>
     <message>
-        <location line="+16"/>
-        <source>No result yet.</source>
-        <translation>尚无结果。</translation>
-    </message>
-    <message>
-        <location line="+13"/>
+        <location line="+29"/>
         <source>No frequency response yet.</source>
         <translation>尚无频率响应。</translation>
     </message>
@@ -4858,7 +4870,7 @@ The session itself is unchanged.</source>
 <context>
     <name>fog::ui::SeriesPlot</name>
     <message>
-        <location filename="../../ui/plots/series_plot.cpp" line="+40"/>
+        <location filename="../../ui/plots/series_plot.cpp" line="+41"/>
         <source>time (s)</source>
         <translation>时间 (s)</translation>
     </message>
@@ -4947,11 +4959,11 @@ The session itself is unchanged.</source>
     </message>
     <message>
         <location line="+2"/>
-        <source>Two sessions: their delays per test point and the difference with its significance; more sessions of one IMU: the delay against the date as well</source>
-        <translation>两个会话：逐测试点的延迟及其差值和显著性；同一 IMU 的多个会话：另给出延迟随日期的变化</translation>
+        <source>Two sessions: their delays per test point and the difference with its significance (A is the session chosen first, B the second); more sessions of one IMU: the delay against the date as well</source>
+        <translation>两个会话：各测试点的延迟及其差值和显著性（A 为先选的会话，B 为后选的）；同一 IMU 的多个会话：另给出延迟随日期的变化</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Import CSV data…</source>
         <translation>导入 CSV 数据…</translation>
     </message>
@@ -4966,17 +4978,22 @@ The session itself is unchanged.</source>
         <translation>会话文件夹</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+35"/>
         <source>Folder with metadata.json, table.csv, gyro.csv</source>
         <translation>包含 metadata.json、table.csv、gyro.csv 的文件夹</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>Choose the folder that holds the session files (.fbs).</source>
         <translation>请选择存放会话文件（.fbs）的文件夹。</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+7"/>
+        <source>No sessions yet: %1 is made when the first session is recorded. Run a test plan (Run), or choose a folder that holds session files.</source>
+        <translation>尚无会话：记录第一个会话时将创建 %1。请运行测试计划（运行），或选择存有会话文件的文件夹。</translation>
+    </message>
+    <message>
+        <location line="+25"/>
         <source>unreadable: %1</source>
         <translation>无法读取：%1</translation>
     </message>

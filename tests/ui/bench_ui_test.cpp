@@ -24,6 +24,7 @@
 #include <QCryptographicHash>
 #include <QDoubleSpinBox>
 #include <QFile>
+#include <QFileInfo>
 #include <QGroupBox>
 #include <QLabel>
 #include <QJsonObject>
@@ -457,6 +458,10 @@ class BenchUiTest : public QObject {
   // result with the paper's lag, its tables and plots, and a session file.
   void quickRunShowsItLiveThenTheResult() {
     auto w = window();
+    // Before any result, Results says what to do instead of showing bare axes.
+    QVERIFY2(w->resultView()->findChild<QLabel*>("lagLabel")->text().contains("run a test plan"),
+             qPrintable(w->resultView()->findChild<QLabel*>("lagLabel")->text()));
+    QVERIFY(w->resultView()->anglePlot()->showsEmptyText());
     QSignalSpy ended(w.get(), &MainWindow::runEnded);
     QVERIFY(w->planEditor()->loadPreset("quick"));
     w->useSimulator(20.0, 1);
@@ -507,6 +512,7 @@ class BenchUiTest : public QObject {
     QVERIFY(std::abs(imu - (lag + 0.05)) < 1e-4);
     auto* angles = w->resultView()->anglePlot();
     QCOMPARE(angles->curveCount(), 4);
+    QVERIFY(!angles->showsEmptyText());
     QVERIFY(angles->dataPoints(0) > 15000);
     QVERIFY(angles->shownPoints(0) < angles->dataPoints(0));  // thinned
     QVERIFY(!w->resultView()->frequencyPlot()->itemList().isEmpty());
@@ -982,8 +988,14 @@ class BenchUiTest : public QObject {
     browser->refresh();
     browser->table()->clearSelection();
     browser->table()->setSelectionMode(QAbstractItemView::MultiSelection);
+    // A and B in the order chosen, whichever row comes first.
+    QVERIFY(browser->selectPath(copy));
+    QVERIFY(browser->selectPath(complete));
+    QCOMPARE(browser->selectedPaths(), QStringList({copy, complete}));
+    browser->table()->clearSelection();
     QVERIFY(browser->selectPath(complete));
     QVERIFY(browser->selectPath(copy));
+    QCOMPARE(browser->selectedPaths(), QStringList({complete, copy}));
     click(*w, "compareButton");
     QWidget* compare = w->findChild<QWidget*>("compareWindow");
     QVERIFY(compare);
@@ -1746,6 +1758,23 @@ class BenchUiTest : public QObject {
   // A damaged session file is listed as unreadable with its reason (not
   // counted among other files); the long reason is elided in the State
   // column, whole in the tooltip, and lag and IMU delay stay in view.
+  // A first start: the sessions folder is made by the first recording, so a
+  // folder not made yet is an invitation to run, not an error.
+  void aSessionsFolderNotMadeYetInvitesARun() {
+    QTemporaryDir parent;
+    const QString notYet = QDir(parent.path()).filePath("fogbench-sessions");
+    auto w = window();
+    w->showView(MainWindow::kSessions);
+    w->sessionBrowser()->setFolder(notYet);
+    settle();
+    const QString summary = w->findChild<QLabel*>("sessionSummary")->text();
+    QVERIFY2(summary.startsWith("No sessions yet") && summary.contains("Run a test plan"), qPrintable(summary));
+    QVERIFY2(!summary.contains("not a folder"), qPrintable(summary));
+    QCOMPARE(w->sessionBrowser()->table()->rowCount(), 0);
+    QVERIFY(!QFileInfo::exists(notYet));  // looking makes nothing
+    w->sessionBrowser()->setFolder(sessions_.path());
+  }
+
   void sessionsBrowserListsDamagedFilesWithoutLosingTheDelays() {
     QString good;
     {

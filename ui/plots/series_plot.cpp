@@ -8,6 +8,7 @@
 #include <qwt_plot_canvas.h>
 #include <qwt_plot_curve.h>
 #include <qwt_plot_grid.h>
+#include <qwt_plot_textlabel.h>
 #include <qwt_scale_div.h>
 #include <qwt_scale_widget.h>
 #include <qwt_symbol.h>
@@ -66,7 +67,27 @@ SeriesPlot::SeriesPlot(const QString& title, const QString& yTitle, const QStrin
   thinTimer_.setInterval(kThinningDelayMs);
   connect(&thinTimer_, &QTimer::timeout, this, &SeriesPlot::thin);
   connect(axisWidget(kTimeAxis), &QwtScaleWidget::scaleDivChanged, this, &SeriesPlot::scheduleThinning);
+
+  emptyLabel_ = new QwtPlotTextLabel();
+  emptyLabel_->attach(this);
+  emptyLabel_->setVisible(false);
   showAll();
+}
+
+void SeriesPlot::setEmptyText(const QString& text) {
+  QwtText label(text);
+  label.setRenderFlags(Qt::AlignCenter | Qt::TextWordWrap);
+  label.setColor(QColor(90, 90, 90));
+  label.setBackgroundBrush(QBrush(QColor(255, 255, 255, 230)));
+  emptyLabel_->setText(label);
+  updateEmptyLabel();
+}
+
+bool SeriesPlot::showsEmptyText() const { return emptyLabel_->isVisible(); }
+
+void SeriesPlot::updateEmptyLabel() {
+  emptyLabel_->setVisible(curves_.empty() && !emptyLabel_->text().isEmpty());
+  replot();
 }
 
 SeriesPlot::~SeriesPlot() = default;
@@ -78,6 +99,7 @@ void SeriesPlot::clearCurves() {
   }
   curves_.clear();
   interaction_->dataChanged();
+  updateEmptyLabel();
 }
 
 void SeriesPlot::setTimeAxis(const QString& title, double secondsPerUnit) {
@@ -96,6 +118,7 @@ void SeriesPlot::addData(const QString& title, const QPen& pen, std::shared_ptr<
   item->setPaintAttribute(QwtPlotCurve::ClipPolygons, true);
   item->attach(this);
   curves_.push_back({item, std::move(trace), {}});
+  emptyLabel_->setVisible(false);
 }
 
 void SeriesPlot::addFunction(const QString& title, const QPen& pen, std::function<double(double)> function) {
@@ -104,6 +127,7 @@ void SeriesPlot::addFunction(const QString& title, const QPen& pen, std::functio
   item->setRenderHint(QwtPlotItem::RenderAntialiased, true);  // smooth and sparse: cheap
   item->attach(this);
   curves_.push_back({item, nullptr, std::move(function)});
+  emptyLabel_->setVisible(false);
 }
 
 void SeriesPlot::showAll() {

@@ -23,6 +23,7 @@
 #include "ui/plot_data/test_point_traces.h"
 
 class QwtPlotCurve;
+class QwtPlotTextLabel;
 
 namespace fog::ui {
 
@@ -43,6 +44,11 @@ class SeriesPlot : public QwtPlot {
   void addFunction(const QString& title, const QPen& pen, std::function<double(double)> function);
   // Scales to the data's full extent and makes it the zoom base; call after adding curves.
   void showAll();
+
+  // A line shown in the middle of the plot while it has no curve (what to
+  // do to fill it); "" for none.
+  void setEmptyText(const QString& text);
+  bool showsEmptyText() const;
 
   int curveCount() const { return static_cast<int>(curves_.size()); }
   // Points of curve `i` in the full data (0 for a function) and as drawn now.
@@ -66,10 +72,12 @@ class SeriesPlot : public QwtPlot {
   };
   void scheduleThinning();
   void thin();
+  void updateEmptyLabel();
 
   std::vector<Curve> curves_;
   PlotInteraction* interaction_ = nullptr;
   QTimer thinTimer_;
+  QwtPlotTextLabel* emptyLabel_ = nullptr;  // owned by the plot
 };
 
 }  // namespace fog::ui

@@ -94,8 +94,11 @@ TEST(RecordingBuilder, StatusFramesSplitTheStreamIntoTestPoints) {
   const auto& p1 = rec->testPoints[1];
   EXPECT_EQ(p1.index, 1);
   EXPECT_EQ(p1.axis, Axis::kZ);
-  EXPECT_DOUBLE_EQ(p1.nominalFrequencyHz, 0.1);
-  EXPECT_DOUBLE_EQ(p1.nominalAmplitudeDeg, 10.0);
+  // Exactly the decimal the board sent (µHz / 1e6), not within 4 ulp: a
+  // CSV or report prints the nominal frequency as 0.1, never
+  // 0.09999999999999999 (100000 * 1e-6).
+  EXPECT_EQ(p1.nominalFrequencyHz, 0.1);
+  EXPECT_EQ(p1.nominalAmplitudeDeg, 10.0);
   ASSERT_EQ(p1.table.size(), 1u);
   EXPECT_DOUBLE_EQ(p1.table[0].angleDeg[2], 4.0);
   ASSERT_EQ(p1.imu.size(), 1u);
