@@ -1,6 +1,7 @@
 #include "app/response_command.h"
 
 #include <iostream>
+#include <string>
 
 #include "app/cli_common.h"
 #include "app/session_input.h"
@@ -13,7 +14,12 @@ int responseCommand(CliArguments& args) {
   const bool json = args.flag("json");
   auto atHz = args.number("at-hz", analysis::kDefaultGroupDelayAtHz);
   if (!atHz) return fail(atHz.status(), 2);
-  if (!(*atHz > 0.0) || !std::isfinite(*atHz)) return fail(invalidArgument("--at-hz must be a frequency > 0 Hz"), 2);
+  if (!(*atHz > 0.0 && *atHz <= analysis::kMaxGroupDelayAtHz))
+    return fail(invalidArgument("--at-hz must be a frequency in (0, " +
+                                std::to_string(static_cast<int>(analysis::kMaxGroupDelayAtHz)) +
+                                "] Hz: the group delay is the fitted model's, which says nothing beyond the gyro's "
+                                "output band"),
+                2);
   int failed = 0;
   auto opened = openFileArgument(args, "response needs exactly one SESSION.fbs or raw stream FILE", failed);
   if (!opened) return failed;

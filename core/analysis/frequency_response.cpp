@@ -404,8 +404,10 @@ std::vector<ResponsePoint> responsePoints(const DelayReport& report, Axis axis) 
 }
 
 Result<ResponseAnalysis> analyzeResponse(std::vector<ResponsePoint> points, Axis axis, double groupDelayAtHz) {
-  if (!(groupDelayAtHz > 0.0) || !std::isfinite(groupDelayAtHz))
-    return invalidArgument("the group delay's frequency must be > 0 Hz, got " + fmt(groupDelayAtHz, 6));
+  if (!(groupDelayAtHz > 0.0 && groupDelayAtHz <= kMaxGroupDelayAtHz))
+    return invalidArgument("the group delay's frequency must be in (0, " +
+                           std::to_string(static_cast<int>(kMaxGroupDelayAtHz)) + "] Hz, got " +
+                           fmt(groupDelayAtHz, 6));
   std::sort(points.begin(), points.end(), [](const auto& a, const auto& b) { return a.frequencyHz < b.frequencyHz; });
   if (points.size() < 2)
     return Status(StatusCode::kInsufficientData,

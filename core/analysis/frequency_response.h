@@ -123,7 +123,7 @@ inline constexpr double kModelAdequacyP = 1e-3;
 
 // Fits every model with enough points (2 x points > parameters: the delay and
 // the first-order model need 2 frequencies, the second-order model 3).
-// Errors: kInvalidArgument for a non-positive groupDelayAtHz; kInsufficientData
+// Errors: kInvalidArgument for a groupDelayAtHz outside (0, kMaxGroupDelayAtHz]; kInsufficientData
 // naming the count when fewer than two points are given; kInvalidArgument for
 // a point without a positive magnitude and positive uncertainties.
 // Uncertainties: the inverse of the weighted normal matrix, raised by
@@ -133,6 +133,11 @@ Result<ResponseAnalysis> analyzeResponse(std::vector<ResponsePoint> points, Axis
 // The frequency at which the views (CLI without --at-hz, GUI, report) give
 // the model's group delay.
 inline constexpr double kDefaultGroupDelayAtHz = 5.0;
+// The highest frequency the group delay is given at: a model's delay is an
+// extrapolation beyond the measured band, and a gyro's output rate puts its
+// Nyquist frequency below 1 kHz on every bench this serves (500 Hz output:
+// 250 Hz); beyond it the model's phase is not a property of the gyro.
+inline constexpr double kMaxGroupDelayAtHz = 1000.0;
 
 // Every axis of the report with at least two passed points.
 std::vector<ResponseAnalysis> analyzeResponses(const DelayReport& report,

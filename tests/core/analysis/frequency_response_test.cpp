@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <random>
@@ -449,6 +450,13 @@ TEST(FrequencyResponse, TooFewPointsSaySo) {
   ASSERT_EQ(two->skipped.size(), 1u);
   EXPECT_NE(two->skipped[0].find("second_order"), std::string::npos) << two->skipped[0];
   EXPECT_FALSE(analyzeResponse({p, q}, Axis::kX, 0.0).isOk());
+  // Beyond any gyro's band (and 1e308, where the model's phase is NaN): refused.
+  EXPECT_TRUE(analyzeResponse({p, q}, Axis::kX, kMaxGroupDelayAtHz).isOk());
+  for (double hz : {1001.0, 1e308, std::numeric_limits<double>::infinity()}) {
+    const auto far = analyzeResponse({p, q}, Axis::kX, hz);
+    ASSERT_FALSE(far.isOk()) << hz;
+    EXPECT_NE(far.status().message().find("(0, 1000] Hz"), std::string::npos) << far.status().message();
+  }
 }
 
 // Issue 40: every model is judged before one is chosen.
