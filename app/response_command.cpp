@@ -1,6 +1,7 @@
 #include "app/response_command.h"
 
 #include <iostream>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "app/cli_common.h"
@@ -44,7 +45,16 @@ int responseCommand(CliArguments& args) {
                            " (run --preset response records 20)"),
                 1);
   }
-  std::cout << (json ? analysis::formatResponseJson(responses) + "\n" : analysis::formatResponseText(responses));
+  // Test points that gave no delay at all are in no axis's response: said
+  // after the responses (the text) or as "no_delay" (the JSON).
+  if (json) {
+    auto doc = nlohmann::json::parse(analysis::formatResponseJson(responses));
+    doc["no_delay"] = report->failedPoints;
+    std::cout << doc.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
+  } else {
+    std::cout << analysis::formatResponseText(responses);
+    for (const auto& line : report->failedPoints) std::cout << "left out (no delay): " << forTerminal(line) << "\n";
+  }
   return 0;
 }
 

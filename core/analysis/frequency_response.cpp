@@ -448,7 +448,16 @@ std::vector<ResponseAnalysis> analyzeResponses(const DelayReport& report, double
     auto points = responsePoints(report, static_cast<Axis>(a));
     if (points.size() < 2) continue;
     auto r = analyzeResponse(std::move(points), static_cast<Axis>(a), groupDelayAtHz);
-    if (r) out.push_back(std::move(*r));
+    if (!r) continue;
+    for (const auto& tp : report.points) {
+      if (tp.axis != static_cast<Axis>(a) || passedItsChecks(tp)) continue;
+      LeftOutPoint left{tp.index, tp.joint.frequencyHz, {}};
+      for (const auto& c : tp.checks)
+        if (c.judged && !c.passed)
+          left.reason += (left.reason.empty() ? "" : "; ") + ("failed " + c.id + ": " + c.detail);
+      r->leftOut.push_back(std::move(left));
+    }
+    out.push_back(std::move(*r));
   }
   return out;
 }
@@ -502,6 +511,9 @@ std::string formatResponseText(const std::vector<ResponseAnalysis>& responses) {
                     p.phaseStdDeg, p.lagMs, p.lagStdMs, corr);
       o << line;
     }
+    for (const auto& left : r.leftOut)
+      o << "  left out: test point " << left.index + 1 << " (" << fmt(left.frequencyHz, 5) << " Hz): " << left.reason
+        << "\n";
     for (std::size_t i = 0; i < r.models.size(); ++i) {
       const auto& m = r.models[i];
       o << "  model " << responseModelName(m.kind) << (static_cast<int>(i) == r.chosen ? " (chosen)" : "")
@@ -552,6 +564,10 @@ std::string formatResponseJson(const std::vector<ResponseAnalysis>& responses) {
                                 {"lag_std_ms", p.lagStdMs},
                                 {"magnitude_phase_cov_deg", p.magnitudePhaseCovDeg},
                                 {"harmonic_fraction", p.harmonicFraction}});
+    axis["left_out"] = json::array();
+    for (const auto& left : r.leftOut)
+      axis["left_out"].push_back(
+          {{"test_point", left.index + 1}, {"frequency_hz", left.frequencyHz}, {"reason", left.reason}});
     axis["models"] = json::array();
     for (const auto& m : r.models) {
       json model{{"model", responseModelName(m.kind)},

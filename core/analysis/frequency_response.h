@@ -97,9 +97,19 @@ struct ResponseModelFit {
   Eigen::VectorXd values;  // the parameters in the solver's units (K, tau s, T s | wn rad/s, zeta)
 };
 
+// A test point of the axis that has a delay but is not in the response: its
+// validity checks failed (the response stands only on points the analysis
+// vouches for).
+struct LeftOutPoint {
+  int index = 0;  // the test point's index in the report
+  double frequencyHz = 0.0;
+  std::string reason;  // "failed <check>: <its detail>", one per failed check, "; "-joined
+};
+
 struct ResponseAnalysis {
   Axis axis = Axis::kX;
   std::vector<ResponsePoint> points;
+  std::vector<LeftOutPoint> leftOut;  // set by analyzeResponses; the text and JSON list them
   std::vector<ResponseModelFit> models;  // those with enough points, in kind order
   std::vector<std::string> skipped;      // models left out and why (too few points)
   // Index into models, among the eligible ones only (adequate and
@@ -139,7 +149,8 @@ inline constexpr double kDefaultGroupDelayAtHz = 5.0;
 // 250 Hz); beyond it the model's phase is not a property of the gyro.
 inline constexpr double kMaxGroupDelayAtHz = 1000.0;
 
-// Every axis of the report with at least two passed points.
+// Every axis of the report with at least two passed points, each with the
+// axis's points left out and why (leftOut).
 std::vector<ResponseAnalysis> analyzeResponses(const DelayReport& report,
                                                double groupDelayAtHz = kDefaultGroupDelayAtHz);
 

@@ -434,6 +434,39 @@ TEST(FrequencyResponse, ASecondOrderResponseIsClaimedOverAFirstOrderLagOnlyAtThr
   EXPECT_LE(n.claimed, 2);
 }
 
+// Issue 40: a point whose checks failed is left out of the response, and
+// the response says which and why (text and JSON).
+TEST(FrequencyResponse, PointsLeftOutAreListedWithTheirReason) {
+  auto run = model::simulate(model::SimConfig{}, testPlan());
+  ASSERT_TRUE(run.isOk()) << run.status().message();
+  auto recording = protocol::decodeRecording(run->bytes);
+  ASSERT_TRUE(recording.isOk());
+  auto report = analyzeRecording(*recording, BenchConstants{});
+  ASSERT_TRUE(report.isOk()) << report.status().message();
+  const auto all = analyzeResponses(*report);
+  ASSERT_EQ(all.size(), 1u);
+  EXPECT_TRUE(all[0].leftOut.empty());
+  const std::size_t n = all[0].points.size();
+
+  auto& failing = report->points[3];
+  failing.checks.push_back({"steady_sine", false, "the swing is not a steady sinusoid", true});
+  failing.checks.push_back({"clock_rate", false, "not judged here", false});  // not judged: not a reason
+  const auto responses = analyzeResponses(*report);
+  ASSERT_EQ(responses.size(), 1u);
+  const auto& r = responses[0];
+  EXPECT_EQ(r.points.size(), n - 1);
+  ASSERT_EQ(r.leftOut.size(), 1u);
+  EXPECT_EQ(r.leftOut[0].index, failing.index);
+  EXPECT_DOUBLE_EQ(r.leftOut[0].frequencyHz, failing.joint.frequencyHz);
+  EXPECT_EQ(r.leftOut[0].reason, "failed steady_sine: the swing is not a steady sinusoid");
+  const std::string text = formatResponseText(responses);
+  EXPECT_NE(text.find("left out: test point " + std::to_string(failing.index + 1) + " ("), std::string::npos) << text;
+  const auto json = nlohmann::json::parse(formatResponseJson(responses));
+  ASSERT_EQ(json["responses"][0]["left_out"].size(), 1u);
+  EXPECT_EQ(json["responses"][0]["left_out"][0]["test_point"].get<int>(), failing.index + 1);
+  EXPECT_EQ(json["responses"][0]["left_out"][0]["reason"].get<std::string>(), r.leftOut[0].reason);
+}
+
 TEST(FrequencyResponse, TooFewPointsSaySo) {
   ResponsePoint p;
   p.frequencyHz = 1.0, p.magnitude = 1.0, p.magnitudeStd = 1e-6, p.phaseDeg = -0.2, p.phaseStdDeg = 1e-4;
