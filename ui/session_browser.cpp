@@ -12,6 +12,9 @@
 #include <QPushButton>
 #include <QTableWidget>
 #include <QVBoxLayout>
+#include <algorithm>
+#include <limits>
+#include <utility>
 
 #include "core/session/session_list.h"
 #include "ui/core_text.h"
@@ -36,10 +39,36 @@ QString verdictText(const session::SessionSummary& s) {
 }
 
 // Each point's number with its mark: "0.4655 / refused (0.5155, INVALID)".
-QString joinMs(const session::ShownVerdict& shown, double session::ShownPoint::*value) {
+// Up to this many points a delay column lists them all; beyond, it gives the
+// count and the range of those vouched for (a 20-point response session
+// would otherwise push the columns off screen), the list in the tooltip.
+constexpr int kListedPoints = 3;
+
+// The column's text and tooltip for one delay quantity of every point.
+std::pair<QString, QString> delaysMs(const session::ShownVerdict& shown, double session::ShownPoint::*value) {
   QStringList parts;
   for (const auto& p : shown.points) parts << shownNumber(p, p.*value, 4);
-  return parts.isEmpty() ? QStringLiteral("-") : parts.join(" / ");
+  if (parts.isEmpty()) return {QStringLiteral("-"), QString()};
+  const QString all = parts.join(" / ");
+  if (parts.size() <= kListedPoints) return {all, all};
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  int refused = 0;
+  for (const auto& p : shown.points) {
+    if (!p.vouched()) {
+      ++refused;
+      continue;
+    }
+    lo = std::min(lo, p.*value);
+    hi = std::max(hi, p.*value);
+  }
+  const int n = static_cast<int>(parts.size());
+  // n > kListedPoints: always a plural.
+  QString text = refused == n ? SessionBrowser::tr("%1 points, all refused").arg(n)
+                              : SessionBrowser::tr("%1 points: %2 to %3")
+                                    .arg(n)
+                                    .arg(QString::number(lo, 'f', 4), QString::number(hi, 'f', 4));
+  if (refused > 0 && refused < n) text += " " + SessionBrowser::tr("(%1 refused)").arg(refused);
+  return {text, parts.join("\n")};
 }
 
 }  // namespace
@@ -209,8 +238,12 @@ void SessionBrowser::refresh() {
     // The stored verdict, never a re-judgement (docs/sessions.md).
     set(kVerdict, verdictText(s));
     if (s.results > 0) table_->item(row, kVerdict)->setForeground(QColor(verdictColour(s.shown.verdict)));
-    set(kLag, joinMs(s.shown, &session::ShownPoint::lagMs));
-    set(kImuDelay, joinMs(s.shown, &session::ShownPoint::imuDelayMs));
+    for (const auto& [column, value] : {std::pair{kLag, &session::ShownPoint::lagMs},
+                                        std::pair{kImuDelay, &session::ShownPoint::imuDelayMs}}) {
+      const auto [text, tooltip] = delaysMs(s.shown, value);
+      set(column, text);
+      table_->item(row, column)->setToolTip(tooltip);
+    }
   }
   const int sessions = static_cast<int>(listing->sessions.size()) - unreadable;
   QString summary = tr("%n session(s)", nullptr, sessions);

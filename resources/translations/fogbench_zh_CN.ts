@@ -4267,7 +4267,7 @@ File: %1</source>
         <translation>%1 轴，%2 Hz / %3°</translation>
     </message>
     <message>
-        <location filename="../../ui/session_browser.cpp" line="+33"/>
+        <location filename="../../ui/session_browser.cpp" line="+36"/>
         <source>; %1 damaged</source>
         <translation>；%1 个损坏</translation>
     </message>
@@ -4878,7 +4878,22 @@ The session itself is unchanged.</source>
 <context>
     <name>fog::ui::SessionBrowser</name>
     <message>
-        <location filename="../../ui/session_browser.cpp" line="+15"/>
+        <location filename="../../ui/session_browser.cpp" line="+28"/>
+        <source>%1 points, all refused</source>
+        <translation>%1 个测试点，全部被拒绝</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 points: %2 to %3</source>
+        <translation>%1 个测试点：%2 至 %3</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>(%1 refused)</source>
+        <translation>（%1 个被拒绝）</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>Folder</source>
         <translation>文件夹</translation>
     </message>
@@ -5013,7 +5028,7 @@ The session itself is unchanged.</source>
         <translation>%1；原始数据流已损坏：请从备份恢复文件</translation>
     </message>
     <message numerus="yes">
-        <location line="+11"/>
+        <location line="+15"/>
         <source>%n session(s)</source>
         <translation>
             <numerusform>%n 个会话</numerusform>

@@ -1758,6 +1758,40 @@ class BenchUiTest : public QObject {
   // A damaged session file is listed as unreadable with its reason (not
   // counted among other files); the long reason is elided in the State
   // column, whole in the tooltip, and lag and IMU delay stay in view.
+  // A many-point session (a frequency response has 20) is summarised in the
+  // delay columns, count and range, with every point in the tooltip, so the
+  // IMU-delay column stays on screen.
+  void aManyPointSessionIsSummarisedInSessions() {
+    QTemporaryDir dir;
+    fog::TestPlan plan;
+    for (double hz : {1.0, 1.5, 2.0, 3.0, 4.0}) plan.points.push_back(fog::TestPoint{fog::Axis::kX, hz, 2.0, 3.0, 0.3});
+    auto source = fog::acquisition::SimulatorSource::create(fog::model::SimConfig{}, plan, 0.0);
+    QVERIFY(source.isOk());
+    fog::acquisition::AcquisitionOptions options;
+    options.sessionPath = dir.filePath("many.fbs").toStdString();
+    options.info.plan = plan;
+    options.constants = options.info.bench;
+    QVERIFY(fog::acquisition::acquire(**source, options, nullptr).isOk());
+    auto w = window();
+    w->resize(1024, 700);
+    w->showView(MainWindow::kSessions);
+    w->sessionBrowser()->setFolder(dir.path());
+    settle();
+    auto* table = w->sessionBrowser()->table();
+    QCOMPARE(table->rowCount(), 1);
+    for (int column : {7, 8}) {
+      const auto* item = table->item(0, column);
+      QVERIFY2(item->text().startsWith("5 points: ") && !item->text().contains(" / "), qPrintable(item->text()));
+      QCOMPARE(item->toolTip().split('\n').size(), 5);
+    }
+    auto* header = table->horizontalHeader();
+    QVERIFY2(header->sectionViewportPosition(8) + header->sectionSize(8) <= table->viewport()->width(),
+             qPrintable(QString("the IMU delay column ends at %1 of %2")
+                            .arg(header->sectionViewportPosition(8) + header->sectionSize(8))
+                            .arg(table->viewport()->width())));
+    w->sessionBrowser()->setFolder(sessions_.path());
+  }
+
   // A first start: the sessions folder is made by the first recording, so a
   // folder not made yet is an invitation to run, not an error.
   void aSessionsFolderNotMadeYetInvitesARun() {
