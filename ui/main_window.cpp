@@ -224,6 +224,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   // A driven table needs a pace (not "as fast as possible").
   connect(configureView_, &ConfigureView::paceChanged, this, &MainWindow::updateRunButton);
   connect(configureView_, &ConfigureView::identityChanged, this, &MainWindow::rememberState);
+  connect(configureView_, &ConfigureView::sourceChanged, this, &MainWindow::rememberState);
+  connect(configureView_, &ConfigureView::runnabilityChanged, this, &MainWindow::rememberState);
   connect(configureView_, &ConfigureView::sourceChanged, this, [this] { setRunning(runner_.isRunning()); });
   connect(configureView_, &ConfigureView::runnabilityChanged, this, &MainWindow::updateRunButton);
   connect(configureView_, &ConfigureView::folderChosen, this, [this](const QString& folder) { setSessionFolder(folder); });
@@ -511,6 +513,12 @@ void MainWindow::rememberState() {
   s.setValue("operator", configureView_->operatorName());
   s.setValue("imuModel", configureView_->imuModel());
   s.setValue("imuSerial", configureView_->imuSerial());
+  // Where the data come from and who drives the table: a lab bench is set up
+  // once, not at every start.
+  s.setValue("source", static_cast<int>(configureView_->sourceKind()));
+  s.setValue("serialPort", configureView_->serialPort());
+  s.setValue("tableDriver", static_cast<int>(configureView_->tableDriver()));
+  s.setValue("tableAddress", configureView_->tableAddress());
 }
 
 void MainWindow::restoreState() {
@@ -522,6 +530,12 @@ void MainWindow::restoreState() {
   if (s.contains("pace") && s.value("pace").toDouble() >= 0.0) configureView_->setPace(s.value("pace").toDouble());
   configureView_->setIdentity(s.value("operator").toString(), s.value("imuModel").toString(),
                               s.value("imuSerial").toString());
+  if (const int source = s.value("source", -1).toInt(); source >= 0 && source <= 2)
+    configureView_->setSourceKind(static_cast<ConfigureView::SourceKind>(source));
+  if (s.contains("serialPort")) configureView_->setSerialPort(s.value("serialPort").toString());
+  if (const int driver = s.value("tableDriver", -1).toInt(); driver >= 0 && driver <= 2)
+    configureView_->setTableDriver(static_cast<ConfigureView::TableDriver>(driver),
+                                   s.value("tableAddress").toString());
   restoring_ = false;
 }
 

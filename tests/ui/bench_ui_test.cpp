@@ -2044,6 +2044,31 @@ class BenchUiTest : public QObject {
     QCOMPARE(second.sessionFolder(), sessions_.path());
   }
 
+  // The source, the serial port and who drives the table (with the remote
+  // controller's address) are remembered: a bench is set up once.
+  void theSourceAndTheTableAreRememberedAcrossStarts() {
+    using fog::ui::ConfigureView;
+    QSettings().remove("state");
+    {
+      MainWindow first;
+      first.configureView()->setSourceKind(ConfigureView::SourceKind::kSerial);
+      first.configureView()->setSerialPort("/dev/pts/77");
+      first.configureView()->setTableDriver(ConfigureView::TableDriver::kRemote, "tcp:192.0.2.7:5025");
+    }
+    {
+      MainWindow second;
+      QCOMPARE(second.configureView()->sourceKind(), ConfigureView::SourceKind::kSerial);
+      QCOMPARE(second.configureView()->serialPort(), QString("/dev/pts/77"));
+      QCOMPARE(second.configureView()->tableDriver(), ConfigureView::TableDriver::kRemote);
+      QCOMPARE(second.configureView()->tableAddress(), QString("tcp:192.0.2.7:5025"));
+      second.configureView()->setTableDriver(ConfigureView::TableDriver::kNone);
+      second.configureView()->setSourceKind(ConfigureView::SourceKind::kSimulator);
+    }
+    MainWindow third;
+    QCOMPARE(third.configureView()->sourceKind(), ConfigureView::SourceKind::kSimulator);
+    QCOMPARE(third.configureView()->tableDriver(), ConfigureView::TableDriver::kNone);
+  }
+
   // A folder the operator types (and confirms with Enter) is remembered.
   void aTypedFolderIsRemembered() {
     QTemporaryDir typed;
