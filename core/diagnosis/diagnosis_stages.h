@@ -98,6 +98,17 @@ class Progress {
 Result<Recording> simulateRecording(const model::SimConfig& config, const TestPlan& plan, double maxFrames,
                                     std::vector<std::unique_ptr<model::Effect>> effects = {});
 
+// What a replay gives besides its features, taken from the same recording
+// (simulating the chain again for them would cost a whole replay).
+struct ReplayExtras {
+  // The features' cumulative gyro residual, a pass over the IMU samples that
+  // only the views of the first replay draw.
+  ResidualView residual = ResidualView::kSkip;
+  // When set, receives the replay's timing audit (auditTiming() against
+  // ref's periods).
+  TimingAudit* timing = nullptr;
+};
+
 // The simulated chain calibrated to a session (cal), the reference its
 // features are taken against (ref) and the effects' context: run() replays
 // it with a seed and effects and gives the replay's features.
@@ -115,10 +126,12 @@ struct Replay {
   // once (nothing run) after a cancel, an effect whose parameters are
   // outside its modelled range (checkParameters(); never replayed), a
   // stream over maxFrames (kOutOfRange), and the features' own refusals.
-  Result<FeatureSet> run(std::uint64_t seed, const EffectList& effects) const;
+  // One replay (simulateRecording()), and extractFeatures()' passes over it
+  // (with extras.residual's), plus auditTiming()'s when extras.timing is set.
+  Result<FeatureSet> run(std::uint64_t seed, const EffectList& effects, ReplayExtras extras = {}) const;
 
  private:
-  Result<FeatureSet> runUncounted(std::uint64_t seed, const EffectList& effects) const;
+  Result<FeatureSet> runUncounted(std::uint64_t seed, const EffectList& effects, ReplayExtras extras) const;
 };
 
 // printf of one number, for messages.
@@ -303,12 +316,17 @@ std::vector<SignatureJob> signatureJobs(const DiagnosisOptions& options);
 // estimate, for the progress bar).
 std::size_t laterReplays(const DiagnosisOptions& options);
 
-// Runs the jobs on `threads` threads; gives their features in job order.
+// Runs the jobs on `threads` threads, one replay each; gives their features
+// in job order, the first job's with its cumulative gyro residual (the
+// views draw it) and its timing audit in *firstTiming when that is given
+// (the first job is the nominal replay at options.seed: its stamps are the
+// nominal chain's, which the start phase a seed draws does not move).
 // Refuses kCancelled after a cancel, the first failed replay's status
 // ("replay: ..."), and kInternal when a replay's features are not `cells`
 // long.
 Result<std::vector<FeatureSet>> runReplays(const Replay& replay, const std::vector<SignatureJob>& jobs,
-                                           std::size_t cells, int threads, const Progress& progress);
+                                           std::size_t cells, int threads, const Progress& progress,
+                                           TimingAudit* firstTiming = nullptr);
 
 // The gap map's statistics: each cell's replay mean and spread, its z, the
 // nuisance directions every fit includes, and z with them taken out.

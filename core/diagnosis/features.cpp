@@ -6,6 +6,7 @@
 #include <tuple>
 
 #include "core/common/units.h"
+#include "core/diagnosis/replay_passes.h"
 
 namespace fog::diagnosis {
 
@@ -44,6 +45,7 @@ void gyroBasis(double w, double tau, double* out) {
 // frame, and for the first, the start is one frame before t_k).
 template <typename F>
 void forEachIncrementRow(const std::vector<ImuSample>& imu, double w, double frame, double mid, const F& f) {
+  countRecordingPass(analysis::SampleStream::kGyro);
   double phiEnd[kGyroCols], phiStart[kGyroCols], dx[kGyroCols];
   for (std::size_t k = 0; k < imu.size(); ++k) {
     const ImuSample& m = imu[k];
@@ -254,6 +256,7 @@ void emitSegment(Emitter& e, const SegmentFit& f, const SegmentSums& s, const Po
 }
 
 double medianInterval(const std::vector<ImuSample>& imu) {
+  countRecordingPass(analysis::SampleStream::kGyro);
   std::vector<double> d;
   d.reserve(imu.size());
   for (std::size_t k = 1; k < imu.size(); ++k) d.push_back(imu[k].timeS - imu[k - 1].timeS);
@@ -332,7 +335,8 @@ int segmentsFor(double durationS, double frequencyHz) {
   return std::clamp(static_cast<int>(std::floor(periods / 2.0)), 1, 4);
 }
 
-Result<FeatureSet> extractFeatures(const Recording& recording, const FeatureReference& reference) {
+Result<FeatureSet> extractFeatures(const Recording& recording, const FeatureReference& reference,
+                                   ResidualView residual) {
   if (recording.testPoints.size() != reference.points.size())
     return invalidArgument("the recording has " + std::to_string(recording.testPoints.size()) +
                            " test points, the feature reference " + std::to_string(reference.points.size()));
@@ -363,6 +367,7 @@ Result<FeatureSet> extractFeatures(const Recording& recording, const FeatureRefe
     RowBlock<kGyroCols, kAxisCount> gyroRows;
 
     double row[kTableCols];
+    countRecordingPass(analysis::SampleStream::kTable);
     for (std::size_t i = 0; i < tp.table.size(); ++i) {
       const double tau = tp.table[i].timeS - mid;
       harmonics(w * tau, row);
@@ -427,6 +432,10 @@ Result<FeatureSet> extractFeatures(const Recording& recording, const FeatureRefe
     }
     sp.gainPpm = (gAmp / tAmp - 1.0) * 1e6;
     sp.delayUs = wrapPi(std::atan2(wf->table(1), wf->table(0)) - std::atan2(wf->gyro(1, ax), wf->gyro(0, ax))) / w * 1e6;
+    if (residual == ResidualView::kSkip) {
+      out.spectra.push_back(std::move(sp));
+      continue;
+    }
     const std::size_t stride = std::max<std::size_t>(1, tp.imu.size() / 400);
     double cumulative = 0.0;
     const GyroVector beta = wf->gyro.col(ax);
@@ -461,6 +470,8 @@ TimingAudit auditTiming(const Recording& recording, double tablePeriodS, double 
     }
   };
   for (const auto& tp : recording.testPoints) {
+    countRecordingPass(analysis::SampleStream::kTable);
+    countRecordingPass(analysis::SampleStream::kGyro);
     scan(tp.table, tablePeriodS, t, a.table);
     scan(tp.imu, imuPeriodS, m, a.imu);
   }

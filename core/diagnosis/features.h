@@ -104,9 +104,19 @@ struct FeatureSet {
 // (at least 2 periods per segment), at least 1.
 int segmentsFor(double durationS, double frequencyHz);
 
+// Whether extractFeatures() fills PointSpectrum's cumulative gyro residual
+// (residualTimeS, gyroResidualDeg): a whole pass over the IMU samples with a
+// harmonic basis per sample, drawn for the session and its first replay
+// only. kSkip leaves them empty; every other feature and spectrum value is
+// the same either way.
+enum class ResidualView { kCompute, kSkip };
+
 // Fails when a test point has too little data or the reference does not
-// match the recording's test points.
-Result<FeatureSet> extractFeatures(const Recording& recording, const FeatureReference& reference);
+// match the recording's test points. Walks each test point's table samples
+// once and its IMU samples twice (the frame interval's median, the fit),
+// three times with the residual view (core/diagnosis/replay_passes.h).
+Result<FeatureSet> extractFeatures(const Recording& recording, const FeatureReference& reference,
+                                   ResidualView residual = ResidualView::kCompute);
 
 // Timing audit of one stream (docs/diagnosis.md).
 struct StreamTiming {
@@ -120,6 +130,8 @@ struct TimingAudit {
   StreamTiming table, imu;
   std::uint64_t lostFrames = 0, duplicateFrames = 0, counterWraps = 0, checksumFailures = 0, outOfOrderFrames = 0;
 };
+// One pass over the table stamps and one over the IMU stamps; reads only the
+// samples' times and the recording's health, not their values.
 TimingAudit auditTiming(const Recording& recording, double tablePeriodS, double imuPeriodS);
 
 }  // namespace fog::diagnosis

@@ -140,9 +140,14 @@ std::size_t laterReplays(const DiagnosisOptions& options) {
 }
 
 Result<std::vector<FeatureSet>> runReplays(const Replay& replay, const std::vector<SignatureJob>& jobs,
-                                           std::size_t cells, int threads, const Progress& progress) {
+                                           std::size_t cells, int threads, const Progress& progress,
+                                           TimingAudit* firstTiming) {
   std::vector<Result<FeatureSet>> outputs(jobs.size(), Status(StatusCode::kInternal, "not run"));
-  parallelFor(jobs.size(), threads, [&](std::size_t i) { outputs[i] = replay.run(jobs[i].seed, jobs[i].effects); });
+  parallelFor(jobs.size(), threads, [&](std::size_t i) {
+    ReplayExtras extras;
+    if (i == 0) extras = {ResidualView::kCompute, firstTiming};
+    outputs[i] = replay.run(jobs[i].seed, jobs[i].effects, extras);
+  });
   if (progress.cancelled()) return cancelledByCaller();
   std::vector<FeatureSet> features;
   features.reserve(outputs.size());

@@ -1,6 +1,7 @@
 // The replay of a session on the simulator, and the messages every stage of
 // the diagnosis uses (diagnosis_stages.h).
 #include "core/diagnosis/diagnosis_stages.h"
+#include "core/diagnosis/replay_passes.h"
 
 #include <cmath>
 #include <cstdio>
@@ -28,6 +29,7 @@ Result<Recording> simulateRecording(const model::SimConfig& config, const TestPl
   constexpr double kChunkS = 2.0;
   auto sim = model::Simulator::create(config, plan, maxFrames);
   if (!sim) return sim.status();
+  countReplay();
   for (auto& e : effects) (*sim)->addEffect(std::move(e));
   protocol::StreamDecoder decoder;
   std::vector<protocol::Frame> frames;
@@ -39,14 +41,14 @@ Result<Recording> simulateRecording(const model::SimConfig& config, const TestPl
   return decoder.finish();
 }
 
-Result<FeatureSet> Replay::run(std::uint64_t seed, const EffectList& effects) const {
+Result<FeatureSet> Replay::run(std::uint64_t seed, const EffectList& effects, ReplayExtras extras) const {
   if (progress && progress->cancelled()) return cancelledByCaller();
-  auto features = runUncounted(seed, effects);
+  auto features = runUncounted(seed, effects, extras);
   if (progress) progress->replayDone();
   return features;
 }
 
-Result<FeatureSet> Replay::runUncounted(std::uint64_t seed, const EffectList& effects) const {
+Result<FeatureSet> Replay::runUncounted(std::uint64_t seed, const EffectList& effects, ReplayExtras extras) const {
   model::SimConfig config = cal.config;
   config.seed = seed;
   std::vector<std::unique_ptr<model::Effect>> list;
@@ -65,7 +67,8 @@ Result<FeatureSet> Replay::runUncounted(std::uint64_t seed, const EffectList& ef
   for (auto& p : plan.points) p.startPhaseDeg += 0.1 * (phase.uniform() - 0.5);
   auto rec = simulateRecording(config, plan, maxFrames, std::move(list));
   if (!rec) return rec.status();
-  return extractFeatures(*rec, ref);
+  if (extras.timing) *extras.timing = auditTiming(*rec, ref.tablePeriodS, ref.imuPeriodS);
+  return extractFeatures(*rec, ref, extras.residual);
 }
 
 std::string fmt(const char* f, double v) {
