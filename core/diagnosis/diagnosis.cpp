@@ -247,8 +247,13 @@ Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, cons
   // the one a separate replay at that seed gave (the same stamps, lost
   // frames and counter wraps), for one pass over its stamps instead of a
   // whole simulation (2 % of the diagnosis' CPU, its last serial step).
-  auto outputs = runReplays(replay, jobs, real.values.size(), options.threads, progress, &d.simTiming);
+  std::shared_ptr<model::GyroTape> tape;
+  auto outputs = runReplays(replay, jobs, real.values.size(), options.threads, progress, &d.simTiming, &tape);
   if (!outputs) return outputs.status();
+  // The refinement's and the pairs' replays run at the signatures' seed:
+  // they play the first replay's tape too.
+  calibrated->replay.tape = std::move(tape);
+  calibrated->replay.tapeSeed = jobs.front().seed;
   const double counterTickUs = 1e6 / replay.cal.config.samplingBoard.counterHz;
   auto gapMap = buildGapMap(real, jobs, *outputs, counterTickUs, options, d);
   if (!gapMap) return gapMap.status();

@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <condition_variable>
 #include <map>
+#include <mutex>
 
 #include "core/common/parallel.h"
 
@@ -141,13 +143,38 @@ std::size_t laterReplays(const DiagnosisOptions& options) {
 
 Result<std::vector<FeatureSet>> runReplays(const Replay& replay, const std::vector<SignatureJob>& jobs,
                                            std::size_t cells, int threads, const Progress& progress,
-                                           TimingAudit* firstTiming) {
+                                           TimingAudit* firstTiming, std::shared_ptr<model::GyroTape>* tapeOut) {
   std::vector<Result<FeatureSet>> outputs(jobs.size(), Status(StatusCode::kInternal, "not run"));
+  // The first job records its gyro tape; the others at its seed wait for it
+  // (jobs are taken in order, so it is already running) and play it. Its
+  // Monte Carlo siblings at other seeds run meanwhile.
+  auto tape = std::make_shared<model::GyroTape>();
+  const bool useTape = replay.tapeSenses > 0 && !jobs.empty() && jobs[0].effects.empty();
+  if (useTape) tape->senses.reserve(replay.tapeSenses);
+  std::mutex mutex;
+  std::condition_variable recorded;
+  bool tapeDone = false, tapeOk = false;
   parallelFor(jobs.size(), threads, [&](std::size_t i) {
     ReplayExtras extras;
-    if (i == 0) extras = {ResidualView::kCompute, firstTiming};
+    if (i == 0) {
+      extras = {ResidualView::kCompute, firstTiming, useTape ? tape.get() : nullptr, nullptr};
+      outputs[i] = replay.run(jobs[i].seed, jobs[i].effects, extras);
+      {
+        std::lock_guard lock(mutex);
+        tapeDone = true;
+        tapeOk = useTape && outputs[i].isOk();
+      }
+      recorded.notify_all();
+      return;
+    }
+    if (useTape && jobs[i].seed == jobs[0].seed) {
+      std::unique_lock lock(mutex);
+      recorded.wait(lock, [&] { return tapeDone; });
+      if (tapeOk) extras.playTape = tape.get();
+    }
     outputs[i] = replay.run(jobs[i].seed, jobs[i].effects, extras);
   });
+  if (tapeOut && useTape && outputs[0]) *tapeOut = tape;
   if (progress.cancelled()) return cancelledByCaller();
   std::vector<FeatureSet> features;
   features.reserve(outputs.size());

@@ -40,6 +40,23 @@ struct TestPointTruth {
 // create() instead of running for ever.
 inline constexpr double kMaxSimulatedFrames = 1e9;
 
+// What the gyro stage sensed at each instant of one run, before any effect's
+// onGyroAngle: the context effects read and the sensed angles (motion, body
+// rotation, Earth rate, bias and noise). The instants, the motion and the
+// noise draws depend on the configuration, the plan and the seed alone when
+// no effect changes the table's motion, so a run of the same chain at the
+// same seed with other such effects can play the tape instead of computing
+// them: bit for bit what it would compute (a replay's physics, about 40 % of
+// its time). 22 doubles per sensed instant (once per IMU frame, or per
+// register update).
+struct GyroTape {
+  struct Sense {
+    GyroContext context;
+    std::array<double, kAxisCount> sensed{};
+  };
+  std::vector<Sense> senses;
+};
+
 class Simulator {
  public:
   // The configuration and plan must be valid (see create()).
@@ -70,6 +87,18 @@ class Simulator {
   // Effects must be added before the first advance().
   void addEffect(std::unique_ptr<Effect> effect);
 
+  // Before the first advance(): the run appends its gyro stage to *tape
+  // (which must outlive the run), or plays *tape, recorded by a run of the
+  // same configuration (seed included) and plan, instead of computing the
+  // stage. A tape is played only when no effect changesTableMotion(); else it
+  // is ignored and the stage computed. A run that asks for a sensed instant
+  // the tape does not hold (another configuration's tape) computes the rest
+  // with its stage state lost: tapeMatched() is then false, and the caller
+  // must run again without the tape.
+  void recordGyroTape(GyroTape* tape) { recordTape_ = tape; }
+  void playGyroTape(const GyroTape* tape) { playTape_ = tape; }
+  bool tapeMatched() const;
+
   // Appends every frame stamped before untilS (true seconds since the start)
   // to out. Returns false once the whole plan has been emitted. At most
   // frameBound() frames over the whole run.
@@ -96,6 +125,8 @@ class Simulator {
   TestPlan plan_;
   Turntable turntable_;
   std::vector<std::unique_ptr<Effect>> effects_;
+  GyroTape* recordTape_ = nullptr;
+  const GyroTape* playTape_ = nullptr;
   std::unique_ptr<Impl> impl_;
   double nowS_ = 0.0;
 };
