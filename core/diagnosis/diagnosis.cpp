@@ -247,7 +247,7 @@ Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, cons
   // the one a separate replay at that seed gave (the same stamps, lost
   // frames and counter wraps), for one pass over its stamps instead of a
   // whole simulation (2 % of the diagnosis' CPU, its last serial step).
-  std::shared_ptr<model::GyroTape> tape;
+  std::shared_ptr<model::MotionTape> tape;
   auto outputs = runReplays(replay, jobs, real.values.size(), options.threads, progress, &d.simTiming, &tape);
   if (!outputs) return outputs.status();
   // The refinement's and the pairs' replays run at the signatures' seed:

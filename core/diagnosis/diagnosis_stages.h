@@ -96,13 +96,13 @@ class Progress {
 // maxFrames, before anything runs; a chain the simulator refuses otherwise
 // is refused with its status.
 //
-// recordTape / playTape (Simulator::recordGyroTape / playGyroTape): the run
-// records its gyro stage, or plays one recorded by a run of the same
+// recordTape / playTape (Simulator::recordMotionTape / playMotionTape): the run
+// records its gyro and encoder stages, or plays one recorded by a run of the same
 // configuration and plan. *tapeMatched (when given) is false when the tape
 // played was not this chain's: the recording is then not to be used.
 Result<Recording> simulateRecording(const model::SimConfig& config, const TestPlan& plan, double maxFrames,
                                     std::vector<std::unique_ptr<model::Effect>> effects = {},
-                                    model::GyroTape* recordTape = nullptr, const model::GyroTape* playTape = nullptr,
+                                    model::MotionTape* recordTape = nullptr, const model::MotionTape* playTape = nullptr,
                                     bool* tapeMatched = nullptr);
 
 // What a replay gives besides its features, taken from the same recording
@@ -114,12 +114,12 @@ struct ReplayExtras {
   // When set, receives the replay's timing audit (auditTiming() against
   // ref's periods).
   TimingAudit* timing = nullptr;
-  // When set, receives the replay's gyro tape (model::GyroTape).
-  model::GyroTape* recordTape = nullptr;
+  // When set, receives the replay's motion tape (model::MotionTape).
+  model::MotionTape* recordTape = nullptr;
   // When set, a tape of the replay at this seed without effects: the replay
   // plays it (unless an effect changes the table's motion) instead of
-  // computing its gyro stage, with the same result.
-  const model::GyroTape* playTape = nullptr;
+  // computing its gyro and encoder stages, with the same result.
+  const model::MotionTape* playTape = nullptr;
 };
 
 // The simulated chain calibrated to a session (cal), the reference its
@@ -133,13 +133,14 @@ struct Replay {
   // Frames one replay's stream may hold (set by budgetReplays()); a replay over
   // it fails with kOutOfRange instead of growing.
   double maxFrames = model::kMaxSimulatedFrames;
-  // Sensed instants a gyro tape of one replay holds (set by budgetReplays());
+  // Sensed instants and encoder readings a motion tape of one replay holds
+  // (set by budgetReplays());
   // 0 when no tape fits the memory budget, and none is recorded.
-  std::size_t tapeSenses = 0;
+  std::size_t tapeSenses = 0, tapeReadings = 0;
   // The gap map's first replay's tape (seed tapeSeed, no effect), set once
   // it has run: every later replay at that seed plays it (the refinement's
   // and the pairs' replays run at the signatures' seed).
-  std::shared_ptr<const model::GyroTape> tape;
+  std::shared_ptr<const model::MotionTape> tape;
   std::uint64_t tapeSeed = 0;
 
   // The features of the replay at `seed` with `effects` added, against ref.
@@ -342,7 +343,7 @@ std::size_t laterReplays(const DiagnosisOptions& options);
 // views draw it) and its timing audit in *firstTiming when that is given
 // (the first job is the nominal replay at options.seed: its stamps are the
 // nominal chain's, which the start phase a seed draws does not move). When
-// replay.tapeSenses > 0 the first job records its gyro tape into *tape
+// replay.tapeSenses > 0 the first job records its motion tape into *tape
 // (when given) and the later jobs at its seed wait for it and play it
 // (the signature jobs: common random numbers with the first).
 // Refuses kCancelled after a cancel, the first failed replay's status
@@ -351,7 +352,7 @@ std::size_t laterReplays(const DiagnosisOptions& options);
 Result<std::vector<FeatureSet>> runReplays(const Replay& replay, const std::vector<SignatureJob>& jobs,
                                            std::size_t cells, int threads, const Progress& progress,
                                            TimingAudit* firstTiming = nullptr,
-                                           std::shared_ptr<model::GyroTape>* tape = nullptr);
+                                           std::shared_ptr<model::MotionTape>* tape = nullptr);
 
 // The gap map's statistics: each cell's replay mean and spread, its z, the
 // nuisance directions every fit includes, and z with them taken out.

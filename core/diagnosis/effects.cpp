@@ -22,8 +22,8 @@ using Angles = std::array<double, kAxisCount>;
 
 // Every effect here but the table harmonic distortion leaves the table's
 // motion as planned (changesTableMotion() false): their replays at the
-// signatures' seed play the first replay's gyro tape instead of computing
-// the gyro stage again (model::GyroTape).
+// signatures' seed play the first replay's motion tape instead of computing
+// the gyro and encoder stages again (model::MotionTape).
 
 // Integrates a rate error (deg/s, a function of the true table angles) along
 // the instants the FOG is sampled, trapezoidal; the simulator calls the gyro

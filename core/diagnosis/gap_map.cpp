@@ -143,14 +143,17 @@ std::size_t laterReplays(const DiagnosisOptions& options) {
 
 Result<std::vector<FeatureSet>> runReplays(const Replay& replay, const std::vector<SignatureJob>& jobs,
                                            std::size_t cells, int threads, const Progress& progress,
-                                           TimingAudit* firstTiming, std::shared_ptr<model::GyroTape>* tapeOut) {
+                                           TimingAudit* firstTiming, std::shared_ptr<model::MotionTape>* tapeOut) {
   std::vector<Result<FeatureSet>> outputs(jobs.size(), Status(StatusCode::kInternal, "not run"));
-  // The first job records its gyro tape; the others at its seed wait for it
+  // The first job records its motion tape; the others at its seed wait for it
   // (jobs are taken in order, so it is already running) and play it. Its
   // Monte Carlo siblings at other seeds run meanwhile.
-  auto tape = std::make_shared<model::GyroTape>();
+  auto tape = std::make_shared<model::MotionTape>();
   const bool useTape = replay.tapeSenses > 0 && !jobs.empty() && jobs[0].effects.empty();
-  if (useTape) tape->senses.reserve(replay.tapeSenses);
+  if (useTape) {
+    tape->senses.reserve(replay.tapeSenses);
+    tape->readings.reserve(replay.tapeReadings);
+  }
   std::mutex mutex;
   std::condition_variable recorded;
   bool tapeDone = false, tapeOk = false;

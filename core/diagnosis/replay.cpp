@@ -25,15 +25,15 @@ Status cancelledByCaller() { return cancelled("diagnosis cancelled: nothing was 
 // maxFrames: the stream's budget (Simulator::frameBound()); a configuration
 // that could emit more is refused before anything runs.
 Result<Recording> simulateRecording(const model::SimConfig& config, const TestPlan& plan, double maxFrames,
-                                    std::vector<std::unique_ptr<model::Effect>> effects, model::GyroTape* recordTape,
-                                    const model::GyroTape* playTape, bool* tapeMatched) {
+                                    std::vector<std::unique_ptr<model::Effect>> effects, model::MotionTape* recordTape,
+                                    const model::MotionTape* playTape, bool* tapeMatched) {
   constexpr double kChunkS = 2.0;
   auto sim = model::Simulator::create(config, plan, maxFrames);
   if (!sim) return sim.status();
   countReplay();
   for (auto& e : effects) (*sim)->addEffect(std::move(e));
-  (*sim)->recordGyroTape(recordTape);
-  (*sim)->playGyroTape(playTape);
+  (*sim)->recordMotionTape(recordTape);
+  (*sim)->playMotionTape(playTape);
   protocol::StreamDecoder decoder;
   std::vector<protocol::Frame> frames;
   for (double until = kChunkS; (*sim)->advance(until, frames); until += kChunkS) {
@@ -70,7 +70,7 @@ Result<FeatureSet> Replay::runUncounted(std::uint64_t seed, const EffectList& ef
   TestPlan plan = cal.plan;
   model::Random phase(model::Random::derive(seed, 0x7ab1e));
   for (auto& p : plan.points) p.startPhaseDeg += 0.1 * (phase.uniform() - 0.5);
-  const model::GyroTape* play = extras.playTape;
+  const model::MotionTape* play = extras.playTape;
   if (!play && tape && seed == tapeSeed) play = tape.get();
   bool matched = true;
   auto rec = simulateRecording(config, plan, maxFrames, effectList(), extras.recordTape, play, &matched);

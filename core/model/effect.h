@@ -46,7 +46,7 @@ class Effect {
   }
   // Whether onTableMotion may change the motion. A run whose effects all
   // say false senses what the same chain and seed sense without them, so it
-  // may replay their GyroTape (Simulator::playGyroTape). True unless an
+  // may replay their MotionTape (Simulator::playMotionTape). True unless an
   // effect states otherwise: a motion taken as unchanged would be wrong.
   virtual bool changesTableMotion() const { return true; }
   // Encoder stage: the reading about to be quantised.

@@ -63,7 +63,7 @@ std::int32_t toMicroDeg(double deg) { return static_cast<std::int32_t>(std::llro
 class Simulator::Impl {
  public:
   Impl(const SimConfig& config, const Turntable& table, double slackS,
-       std::vector<std::unique_ptr<Effect>>& effects, GyroTape* record, const GyroTape* play)
+       std::vector<std::unique_ptr<Effect>>& effects, MotionTape* record, const MotionTape* play)
       : c_(config), table_(table), slackS_(slackS), effects_(effects), attitude_(config.earth, config.turntable),
         noiseRng_(Random::derive(config.seed, 0)), lostRng_(Random::derive(config.seed, 1)), filters_(config.fog) {
     // A tape holds the motion as planned: one is neither played nor recorded
@@ -159,7 +159,7 @@ class Simulator::Impl {
   std::array<double, kAxisCount> sensedAngles(double u) {
     if (play_ && tapeMatched_) {
       if (playIndex_ < play_->senses.size() && play_->senses[playIndex_].context.timeS == u) {
-        const GyroTape::Sense& s = play_->senses[playIndex_++];
+        const MotionTape::Sense& s = play_->senses[playIndex_++];
         GyroContext context = s.context;
         std::array<double, kAxisCount> sensed = s.sensed;
         for (const auto& e : effects_) e->onGyroAngle(context, sensed);
@@ -215,9 +215,17 @@ class Simulator::Impl {
 
   void prepareTable() {
     const double stamp = static_cast<double>(tableIndex_) * c_.encoder.samplePeriodS;
-    auto reading = motion(stamp - c_.encoder.readDelayS);
-    if (const double e = c_.encoder.eccentricityPeakDeg(); e > 0.0)
-      for (double& r : reading) r += e * std::sin((r + c_.encoder.eccentricityPhaseDeg) * kRadPerDeg);
+    const double readS = stamp - c_.encoder.readDelayS;
+    std::array<double, kAxisCount> reading;
+    if (play_ && tapeMatched_ && readIndex_ < play_->readings.size() && play_->readings[readIndex_].timeS == readS) {
+      reading = play_->readings[readIndex_++].deg;
+    } else {
+      if (play_) tapeMatched_ = false;
+      reading = motion(readS);
+      if (const double e = c_.encoder.eccentricityPeakDeg(); e > 0.0)
+        for (double& r : reading) r += e * std::sin((r + c_.encoder.eccentricityPhaseDeg) * kRadPerDeg);
+      if (record_) record_->readings.push_back({readS, reading});
+    }
     for (const auto& e : effects_) e->onEncoderReading(stamp - c_.encoder.readDelayS, reading);
     for (int a = 0; a < kAxisCount; ++a) {
       const double q = c_.encoder.quantumDeg;
@@ -289,9 +297,9 @@ class Simulator::Impl {
 
   const SimConfig& c_;
   const Turntable& table_;
-  GyroTape* record_ = nullptr;
-  const GyroTape* play_ = nullptr;
-  std::size_t playIndex_ = 0;
+  MotionTape* record_ = nullptr;
+  const MotionTape* play_ = nullptr;
+  std::size_t playIndex_ = 0, readIndex_ = 0;
   bool tapeMatched_ = true;
 
  public:

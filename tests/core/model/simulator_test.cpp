@@ -86,25 +86,25 @@ class ScaleAndDropUnstated : public ScaleAndDrop {
 };
 
 // The run's bytes with `effect`, recording into or playing `tape`.
-std::vector<std::uint8_t> runWith(const SimConfig& c, std::unique_ptr<Effect> effect, GyroTape* record,
-                                  const GyroTape* play, bool* matched = nullptr) {
+std::vector<std::uint8_t> runWith(const SimConfig& c, std::unique_ptr<Effect> effect, MotionTape* record,
+                                  const MotionTape* play, bool* matched = nullptr) {
   auto sim = Simulator::create(c, shortPlan());
   EXPECT_TRUE(sim.isOk());
   if (effect) (*sim)->addEffect(std::move(effect));
-  (*sim)->recordGyroTape(record);
-  (*sim)->playGyroTape(play);
+  (*sim)->recordMotionTape(record);
+  (*sim)->playMotionTape(play);
   std::vector<std::uint8_t> bytes;
   (*sim)->runToEnd(bytes);
   if (matched) *matched = (*sim)->tapeMatched();
   return bytes;
 }
 
-// The diagnosis' signature replays play the first replay's gyro tape: the
+// The diagnosis' signature replays play the first replay's motion tape: the
 // stream must be bit for bit the one the stage computed gives.
-TEST(GyroTape, PlayedGivesTheStreamComputedGives) {
+TEST(MotionTape, PlayedGivesTheStreamComputedGives) {
   SimConfig c;
   c.seed = 7;
-  GyroTape tape;
+  MotionTape tape;
   const auto nominal = runWith(c, nullptr, &tape, nullptr);
   EXPECT_EQ(nominal, runWith(c, nullptr, nullptr, nullptr));
   ASSERT_FALSE(tape.senses.empty());
