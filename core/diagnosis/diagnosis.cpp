@@ -248,11 +248,13 @@ Result<Diagnosis> diagnose(const Recording& input, const SessionInfo* info, cons
   // frames and counter wraps), for one pass over its stamps instead of a
   // whole simulation (2 % of the diagnosis' CPU, its last serial step).
   std::shared_ptr<model::MotionTape> tape;
-  auto outputs = runReplays(replay, jobs, real.values.size(), options.threads, progress, &d.simTiming, &tape);
+  std::shared_ptr<FeatureSums> sums;
+  auto outputs = runReplays(replay, jobs, real.values.size(), options.threads, progress, &d.simTiming, &tape, &sums);
   if (!outputs) return outputs.status();
   // The refinement's and the pairs' replays run at the signatures' seed:
-  // they play the first replay's tape too.
+  // they play the first replay's tape and reuse its sums too.
   calibrated->replay.tape = std::move(tape);
+  calibrated->replay.sums = std::move(sums);
   calibrated->replay.tapeSeed = jobs.front().seed;
   const double counterTickUs = 1e6 / replay.cal.config.samplingBoard.counterHz;
   auto gapMap = buildGapMap(real, jobs, *outputs, counterTickUs, options, d);

@@ -120,6 +120,10 @@ struct ReplayExtras {
   // plays it (unless an effect changes the table's motion) instead of
   // computing its gyro and encoder stages, with the same result.
   const model::MotionTape* playTape = nullptr;
+  // The same for the features' sums (FeatureSums): recorded, or reused where
+  // the replay's stamps and readings are the recorded ones.
+  FeatureSums* recordSums = nullptr;
+  const FeatureSums* reuseSums = nullptr;
 };
 
 // The simulated chain calibrated to a session (cal), the reference its
@@ -141,6 +145,7 @@ struct Replay {
   // it has run: every later replay at that seed plays it (the refinement's
   // and the pairs' replays run at the signatures' seed).
   std::shared_ptr<const model::MotionTape> tape;
+  std::shared_ptr<const FeatureSums> sums;  // that replay's features' sums
   std::uint64_t tapeSeed = 0;
 
   // The features of the replay at `seed` with `effects` added, against ref.
@@ -344,15 +349,17 @@ std::size_t laterReplays(const DiagnosisOptions& options);
 // (the first job is the nominal replay at options.seed: its stamps are the
 // nominal chain's, which the start phase a seed draws does not move). When
 // replay.tapeSenses > 0 the first job records its motion tape into *tape
-// (when given) and the later jobs at its seed wait for it and play it
-// (the signature jobs: common random numbers with the first).
+// and its features' sums into *sums (when given) and the later jobs at its
+// seed wait for them and play and reuse them (the signature jobs: common
+// random numbers with the first).
 // Refuses kCancelled after a cancel, the first failed replay's status
 // ("replay: ..."), and kInternal when a replay's features are not `cells`
 // long.
 Result<std::vector<FeatureSet>> runReplays(const Replay& replay, const std::vector<SignatureJob>& jobs,
                                            std::size_t cells, int threads, const Progress& progress,
                                            TimingAudit* firstTiming = nullptr,
-                                           std::shared_ptr<model::MotionTape>* tape = nullptr);
+                                           std::shared_ptr<model::MotionTape>* tape = nullptr,
+                                           std::shared_ptr<FeatureSums>* sums = nullptr);
 
 // The gap map's statistics: each cell's replay mean and spread, its z, the
 // nuisance directions every fit includes, and z with them taken out.

@@ -15,6 +15,7 @@
 // in quadrature with it (ppm), so they do not depend on the swing's start phase.
 // Qt-free; pure functions, thread-safe.
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -111,12 +112,32 @@ int segmentsFor(double durationS, double frequencyHz);
 // the same either way.
 enum class ResidualView { kCompute, kSkip };
 
+// The sums one recording's features were taken from that depend on its
+// stamps and table readings alone: per test point, the table fit's sums and
+// interval statistics, the gyro fit's normal matrix and the IMU frame
+// interval, with the samples they came from. A recording whose table samples
+// (stamps and swing-axis angles) or IMU stamps (and lost-frame counts) are
+// those same ones takes them instead of summing again, with the same values
+// to the bit: the replays at one seed whose effects act on the gyro alone
+// differ from the first only in their gyro increments.
+class FeatureSums {
+ public:
+  FeatureSums();
+  ~FeatureSums();
+  struct Point;
+  std::vector<Point> points;
+};
+
 // Fails when a test point has too little data or the reference does not
 // match the recording's test points. Walks each test point's table samples
 // once and its IMU samples twice (the frame interval's median, the fit),
-// three times with the residual view (core/diagnosis/replay_passes.h).
+// three times with the residual view (core/diagnosis/replay_passes.h); a
+// test point whose table samples or IMU stamps are those of `reuse` is
+// compared with them in that pass instead of summed (or its median taken).
+// `record`, when given, receives the sums of this recording.
 Result<FeatureSet> extractFeatures(const Recording& recording, const FeatureReference& reference,
-                                   ResidualView residual = ResidualView::kCompute);
+                                   ResidualView residual = ResidualView::kCompute, FeatureSums* record = nullptr,
+                                   const FeatureSums* reuse = nullptr);
 
 // Timing audit of one stream (docs/diagnosis.md).
 struct StreamTiming {

@@ -143,12 +143,14 @@ std::size_t laterReplays(const DiagnosisOptions& options) {
 
 Result<std::vector<FeatureSet>> runReplays(const Replay& replay, const std::vector<SignatureJob>& jobs,
                                            std::size_t cells, int threads, const Progress& progress,
-                                           TimingAudit* firstTiming, std::shared_ptr<model::MotionTape>* tapeOut) {
+                                           TimingAudit* firstTiming, std::shared_ptr<model::MotionTape>* tapeOut,
+                                           std::shared_ptr<FeatureSums>* sumsOut) {
   std::vector<Result<FeatureSet>> outputs(jobs.size(), Status(StatusCode::kInternal, "not run"));
   // The first job records its motion tape; the others at its seed wait for it
   // (jobs are taken in order, so it is already running) and play it. Its
   // Monte Carlo siblings at other seeds run meanwhile.
   auto tape = std::make_shared<model::MotionTape>();
+  auto sums = std::make_shared<FeatureSums>();
   const bool useTape = replay.tapeSenses > 0 && !jobs.empty() && jobs[0].effects.empty();
   if (useTape) {
     tape->senses.reserve(replay.tapeSenses);
@@ -160,7 +162,8 @@ Result<std::vector<FeatureSet>> runReplays(const Replay& replay, const std::vect
   parallelFor(jobs.size(), threads, [&](std::size_t i) {
     ReplayExtras extras;
     if (i == 0) {
-      extras = {ResidualView::kCompute, firstTiming, useTape ? tape.get() : nullptr, nullptr};
+      extras = {ResidualView::kCompute, firstTiming, useTape ? tape.get() : nullptr, nullptr,
+                useTape ? sums.get() : nullptr, nullptr};
       outputs[i] = replay.run(jobs[i].seed, jobs[i].effects, extras);
       {
         std::lock_guard lock(mutex);
@@ -173,11 +176,12 @@ Result<std::vector<FeatureSet>> runReplays(const Replay& replay, const std::vect
     if (useTape && jobs[i].seed == jobs[0].seed) {
       std::unique_lock lock(mutex);
       recorded.wait(lock, [&] { return tapeDone; });
-      if (tapeOk) extras.playTape = tape.get();
+      if (tapeOk) extras.playTape = tape.get(), extras.reuseSums = sums.get();
     }
     outputs[i] = replay.run(jobs[i].seed, jobs[i].effects, extras);
   });
   if (tapeOut && useTape && outputs[0]) *tapeOut = tape;
+  if (sumsOut && useTape && outputs[0]) *sumsOut = sums;
   if (progress.cancelled()) return cancelledByCaller();
   std::vector<FeatureSet> features;
   features.reserve(outputs.size());

@@ -71,7 +71,9 @@ Result<FeatureSet> Replay::runUncounted(std::uint64_t seed, const EffectList& ef
   model::Random phase(model::Random::derive(seed, 0x7ab1e));
   for (auto& p : plan.points) p.startPhaseDeg += 0.1 * (phase.uniform() - 0.5);
   const model::MotionTape* play = extras.playTape;
+  const FeatureSums* reuse = extras.reuseSums;
   if (!play && tape && seed == tapeSeed) play = tape.get();
+  if (!reuse && sums && seed == tapeSeed) reuse = sums.get();
   bool matched = true;
   auto rec = simulateRecording(config, plan, maxFrames, effectList(), extras.recordTape, play, &matched);
   // A tape that was not this chain's cannot happen within one diagnosis (one
@@ -79,7 +81,7 @@ Result<FeatureSet> Replay::runUncounted(std::uint64_t seed, const EffectList& ef
   if (rec && !matched) rec = simulateRecording(config, plan, maxFrames, effectList());
   if (!rec) return rec.status();
   if (extras.timing) *extras.timing = auditTiming(*rec, ref.tablePeriodS, ref.imuPeriodS);
-  return extractFeatures(*rec, ref, extras.residual);
+  return extractFeatures(*rec, ref, extras.residual, extras.recordSums, reuse);
 }
 
 std::string fmt(const char* f, double v) {
