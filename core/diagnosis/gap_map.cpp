@@ -136,9 +136,10 @@ std::vector<SignatureJob> signatureJobs(const DiagnosisOptions& options) {
 
 // Replays beyond the calibration's and the signature jobs: the exact
 // re-evaluations, a Ceres fit or two (a few rounds of a replay per
-// parameter), a pair, the timing replay. An estimate, for the progress bar.
+// parameter), a pair (the timing audit has no replay of its own: it is the
+// first job's). An estimate, for the progress bar.
 std::size_t laterReplays(const DiagnosisOptions& options) {
-  return 4 * static_cast<std::size_t>(std::max(0, options.refineTop)) + 2;
+  return 4 * static_cast<std::size_t>(std::max(0, options.refineTop)) + 1;
 }
 
 Result<std::vector<FeatureSet>> runReplays(const Replay& replay, const std::vector<SignatureJob>& jobs,
