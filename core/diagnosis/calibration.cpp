@@ -626,6 +626,20 @@ Status budgetReplays(const Recording& input, Replay& replay, DiagnosisOptions& o
                     " threads, to stay within the " + megabytes(kDiagnosisMemoryBudgetBytes) + " memory limit");
   options.threads = threads;
   replay.maxFrames = frames.total();
+  // The motion tape the signature replays share (one sensed instant per IMU
+  // frame at most, and the first; one reading per table frame): taken when
+  // it fits beside them, else every replay computes its stages, with the
+  // same answers.
+  const double senses = frames.imu + 2.0, readings = frames.table + 1.0;
+  // With the first replay's features' sums, which keep its table samples
+  // and IMU stamps (FeatureSums).
+  const double tapeBytes = senses * static_cast<double>(sizeof(model::MotionTape::Sense)) +
+                           readings * static_cast<double>(sizeof(model::MotionTape::Reading)) +
+                           frames.table * static_cast<double>(sizeof(TableSample)) +
+                           frames.imu * static_cast<double>(sizeof(double) + sizeof(std::uint64_t));
+  const bool tapeFits = sessionPeak + threads * perReplay + tapeBytes <= kDiagnosisSampleBudgetBytes;
+  replay.tapeSenses = tapeFits ? static_cast<std::size_t>(senses) : 0;
+  replay.tapeReadings = tapeFits ? static_cast<std::size_t>(readings) : 0;
   return Status::ok();
 }
 

@@ -95,8 +95,36 @@ class Progress {
 // model::Simulator::create) a configuration whose stream could pass
 // maxFrames, before anything runs; a chain the simulator refuses otherwise
 // is refused with its status.
+//
+// recordTape / playTape (Simulator::recordMotionTape / playMotionTape): the run
+// records its gyro and encoder stages, or plays one recorded by a run of the same
+// configuration and plan. *tapeMatched (when given) is false when the tape
+// played was not this chain's: the recording is then not to be used.
 Result<Recording> simulateRecording(const model::SimConfig& config, const TestPlan& plan, double maxFrames,
-                                    std::vector<std::unique_ptr<model::Effect>> effects = {});
+                                    std::vector<std::unique_ptr<model::Effect>> effects = {},
+                                    model::MotionTape* recordTape = nullptr, const model::MotionTape* playTape = nullptr,
+                                    bool* tapeMatched = nullptr);
+
+// What a replay gives besides its features, taken from the same recording
+// (simulating the chain again for them would cost a whole replay).
+struct ReplayExtras {
+  // The features' cumulative gyro residual, a pass over the IMU samples that
+  // only the views of the first replay draw.
+  ResidualView residual = ResidualView::kSkip;
+  // When set, receives the replay's timing audit (auditTiming() against
+  // ref's periods).
+  TimingAudit* timing = nullptr;
+  // When set, receives the replay's motion tape (model::MotionTape).
+  model::MotionTape* recordTape = nullptr;
+  // When set, a tape of the replay at this seed without effects: the replay
+  // plays it (unless an effect changes the table's motion) instead of
+  // computing its gyro and encoder stages, with the same result.
+  const model::MotionTape* playTape = nullptr;
+  // The same for the features' sums (FeatureSums): recorded, or reused where
+  // the replay's stamps and readings are the recorded ones.
+  FeatureSums* recordSums = nullptr;
+  const FeatureSums* reuseSums = nullptr;
+};
 
 // The simulated chain calibrated to a session (cal), the reference its
 // features are taken against (ref) and the effects' context: run() replays
@@ -109,16 +137,28 @@ struct Replay {
   // Frames one replay's stream may hold (set by budgetReplays()); a replay over
   // it fails with kOutOfRange instead of growing.
   double maxFrames = model::kMaxSimulatedFrames;
+  // Sensed instants and encoder readings a motion tape of one replay holds
+  // (set by budgetReplays());
+  // 0 when no tape fits the memory budget, and none is recorded.
+  std::size_t tapeSenses = 0, tapeReadings = 0;
+  // The gap map's first replay's tape (seed tapeSeed, no effect), set once
+  // it has run: every later replay at that seed plays it (the refinement's
+  // and the pairs' replays run at the signatures' seed).
+  std::shared_ptr<const model::MotionTape> tape;
+  std::shared_ptr<const FeatureSums> sums;  // that replay's features' sums
+  std::uint64_t tapeSeed = 0;
 
   // The features of the replay at `seed` with `effects` added, against ref.
   // Counts one replay in `progress` once it starts. Refuses kCancelled at
   // once (nothing run) after a cancel, an effect whose parameters are
   // outside its modelled range (checkParameters(); never replayed), a
   // stream over maxFrames (kOutOfRange), and the features' own refusals.
-  Result<FeatureSet> run(std::uint64_t seed, const EffectList& effects) const;
+  // One replay (simulateRecording()), and extractFeatures()' passes over it
+  // (with extras.residual's), plus auditTiming()'s when extras.timing is set.
+  Result<FeatureSet> run(std::uint64_t seed, const EffectList& effects, ReplayExtras extras = {}) const;
 
  private:
-  Result<FeatureSet> runUncounted(std::uint64_t seed, const EffectList& effects) const;
+  Result<FeatureSet> runUncounted(std::uint64_t seed, const EffectList& effects, ReplayExtras extras) const;
 };
 
 // printf of one number, for messages.
@@ -303,12 +343,23 @@ std::vector<SignatureJob> signatureJobs(const DiagnosisOptions& options);
 // estimate, for the progress bar).
 std::size_t laterReplays(const DiagnosisOptions& options);
 
-// Runs the jobs on `threads` threads; gives their features in job order.
+// Runs the jobs on `threads` threads, one replay each; gives their features
+// in job order, the first job's with its cumulative gyro residual (the
+// views draw it) and its timing audit in *firstTiming when that is given
+// (the first job is the nominal replay at options.seed: its stamps are the
+// nominal chain's, which the start phase a seed draws does not move). When
+// replay.tapeSenses > 0 the first job records its motion tape into *tape
+// and its features' sums into *sums (when given) and the later jobs at its
+// seed wait for them and play and reuse them (the signature jobs: common
+// random numbers with the first).
 // Refuses kCancelled after a cancel, the first failed replay's status
 // ("replay: ..."), and kInternal when a replay's features are not `cells`
 // long.
 Result<std::vector<FeatureSet>> runReplays(const Replay& replay, const std::vector<SignatureJob>& jobs,
-                                           std::size_t cells, int threads, const Progress& progress);
+                                           std::size_t cells, int threads, const Progress& progress,
+                                           TimingAudit* firstTiming = nullptr,
+                                           std::shared_ptr<model::MotionTape>* tape = nullptr,
+                                           std::shared_ptr<FeatureSums>* sums = nullptr);
 
 // The gap map's statistics: each cell's replay mean and spread, its z, the
 // nuisance directions every fit includes, and z with them taken out.

@@ -20,11 +20,17 @@ std::string fmtValue(double v) {
 
 using Angles = std::array<double, kAxisCount>;
 
+// Every effect here but the table harmonic distortion leaves the table's
+// motion as planned (changesTableMotion() false): their replays at the
+// signatures' seed play the first replay's motion tape instead of computing
+// the gyro and encoder stages again (model::MotionTape).
+
 // Integrates a rate error (deg/s, a function of the true table angles) along
 // the instants the FOG is sampled, trapezoidal; the simulator calls the gyro
 // hook every 2 ms in time order, far finer than any swing period.
 class RateErrorEffect : public model::Effect {
  public:
+  bool changesTableMotion() const override { return false; }
   void onGyroAngle(const model::GyroContext& c, Angles& sensed) override {
     const Angles rate = rateErrorDegPerS(c);
     if (started_) {
@@ -90,6 +96,7 @@ class GSensitivity final : public RateErrorEffect {
 // gyro samples: asymmetry (|dtheta|) and cubic nonlinearity (dtheta * rate^2).
 class IncrementEffect : public model::Effect {
  public:
+  bool changesTableMotion() const override { return false; }
   void onGyroAngle(const model::GyroContext& c, Angles& sensed) override {
     if (started_) {
       const double dt = c.timeS - lastS_;
@@ -143,6 +150,7 @@ class ScaleFactorNonlinearity final : public IncrementEffect {
 
 class ScaleFactorError final : public model::Effect {
  public:
+  bool changesTableMotion() const override { return false; }
   explicit ScaleFactorError(double ppm) : k_(ppm * 1e-6) {}
   std::string name() const override { return "scale_factor_error"; }
   void onGyroAngle(const model::GyroContext& c, Angles& sensed) override {
@@ -158,6 +166,7 @@ class ScaleFactorError final : public model::Effect {
 // The rates are constant linear maps, so the sensed angles are too.
 class Misalignment final : public model::Effect {
  public:
+  bool changesTableMotion() const override { return false; }
   explicit Misalignment(const std::array<double, 6>& microRad) {
     // m_xy, m_xz, m_yx, m_yz, m_zx, m_zy
     int k = 0;
@@ -184,6 +193,7 @@ class Misalignment final : public model::Effect {
 // solution p = x - tau x' + tau^2 x''. The delay at low frequency is tau.
 class FirstOrderLag final : public model::Effect {
  public:
+  bool changesTableMotion() const override { return false; }
   explicit FirstOrderLag(double tauMs) : tau_(tauMs * 1e-3) {}
   std::string name() const override { return "first_order_lag"; }
   void onGyroAngle(const model::GyroContext& c, Angles& sensed) override {
@@ -247,6 +257,7 @@ class TableHarmonicDistortion final : public model::Effect {
 // period kPeriodDeg: es * sin(2 pi theta / P) + ec * cos(2 pi theta / P).
 class EncoderCyclicError final : public model::Effect {
  public:
+  bool changesTableMotion() const override { return false; }
   static constexpr double kPeriodDeg = 10.0;
   EncoderCyclicError(double sinArcsec, double cosArcsec) : s_(sinArcsec / kArcsecPerDeg), c_(cosArcsec / kArcsecPerDeg) {}
   std::string name() const override { return "encoder_cyclic_error"; }
@@ -263,6 +274,7 @@ class EncoderCyclicError final : public model::Effect {
 
 class TimestampJitter final : public model::Effect {
  public:
+  bool changesTableMotion() const override { return false; }
   explicit TimestampJitter(double varianceUs2) : sigmaS_(std::sqrt(std::max(varianceUs2, 0.0)) * 1e-6) {}
   std::string name() const override { return "timestamp_jitter"; }
   // The simulator keeps the Random it hands out in a growing vector, so the
@@ -278,6 +290,7 @@ class TimestampJitter final : public model::Effect {
 // The IMU frames' stamps run eps off the table's: stamp * (1 + eps).
 class ClockDrift final : public model::Effect {
  public:
+  bool changesTableMotion() const override { return false; }
   explicit ClockDrift(double ppm) : eps_(ppm * 1e-6) {}
   std::string name() const override { return "clock_drift"; }
   void onImuStamp(double& stampS, bool&) override { stampS += eps_ * stampS; }
@@ -290,6 +303,7 @@ class ClockDrift final : public model::Effect {
 // running sum of p crosses an integer (the expected count, evenly spaced).
 class DroppedFrames final : public model::Effect {
  public:
+  bool changesTableMotion() const override { return false; }
   DroppedFrames(double perMille, bool expected) : p_(perMille * 1e-3), expected_(expected) {}
   std::string name() const override { return "dropped_frames"; }
   void reset(model::Random& rng) override {

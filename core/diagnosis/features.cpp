@@ -6,6 +6,7 @@
 #include <tuple>
 
 #include "core/common/units.h"
+#include "core/diagnosis/replay_passes.h"
 
 namespace fog::diagnosis {
 
@@ -44,6 +45,7 @@ void gyroBasis(double w, double tau, double* out) {
 // frame, and for the first, the start is one frame before t_k).
 template <typename F>
 void forEachIncrementRow(const std::vector<ImuSample>& imu, double w, double frame, double mid, const F& f) {
+  countRecordingPass(analysis::SampleStream::kGyro);
   double phiEnd[kGyroCols], phiStart[kGyroCols], dx[kGyroCols];
   for (std::size_t k = 0; k < imu.size(); ++k) {
     const ImuSample& m = imu[k];
@@ -99,6 +101,8 @@ struct SegmentSums {
 template <int Cols, int Rhs>
 class RowBlock {
  public:
+  // Without X'X: the rows' normal matrix is known already (FeatureSums).
+  explicit RowBlock(bool withXtX = true) : withXtX_(withXtX) {}
   // Adds a row to the block; a row of another segment, or a full block,
   // sends the block to its own segment's sums first.
   template <typename Sums>
@@ -113,7 +117,7 @@ class RowBlock {
   void flush(Sums& sums) {
     if (n_ == 0) return;
     auto [xtx, xty] = sums(segment_);  // references into the segment
-    xtx.template selfadjointView<Eigen::Upper>().rankUpdate(x_.topRows(n_).transpose());
+    if (withXtX_) xtx.template selfadjointView<Eigen::Upper>().rankUpdate(x_.topRows(n_).transpose());
     xty.noalias() += x_.topRows(n_).transpose() * y_.topRows(n_);
     n_ = 0;
   }
@@ -123,6 +127,7 @@ class RowBlock {
   Eigen::Matrix<double, kRows, Cols> x_;
   Eigen::Matrix<double, kRows, Rhs> y_;
   int n_ = 0, segment_ = 0;
+  bool withXtX_ = true;
 };
 
 struct SegmentFit {
@@ -254,6 +259,7 @@ void emitSegment(Emitter& e, const SegmentFit& f, const SegmentSums& s, const Po
 }
 
 double medianInterval(const std::vector<ImuSample>& imu) {
+  countRecordingPass(analysis::SampleStream::kGyro);
   std::vector<double> d;
   d.reserve(imu.size());
   for (std::size_t k = 1; k < imu.size(); ++k) d.push_back(imu[k].timeS - imu[k - 1].timeS);
@@ -262,7 +268,39 @@ double medianInterval(const std::vector<ImuSample>& imu) {
   return d[d.size() / 2];
 }
 
+bool sameTable(const std::vector<TableSample>& a, const std::vector<TableSample>& b, int axis) {
+  if (a.size() != b.size()) return false;
+  const auto ax = static_cast<std::size_t>(axis);
+  for (std::size_t i = 0; i < a.size(); ++i)
+    if (a[i].timeS != b[i].timeS || a[i].angleDeg[ax] != b[i].angleDeg[ax]) return false;
+  return true;
+}
+
+struct ImuStamp {
+  double timeS;
+  std::uint32_t lostBefore;
+};
+
+bool sameStamps(const std::vector<ImuSample>& a, const std::vector<ImuStamp>& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    if (a[i].timeS != b[i].timeS || a[i].lostBefore != b[i].lostBefore) return false;
+  return true;
+}
+
 }  // namespace
+
+// Per test point: the samples the sums came from, the segments' sums (the
+// table's whole, the gyro's normal matrix only; before the lower triangles
+// are filled) and the IMU frame interval.
+struct FeatureSums::Point {
+  std::vector<TableSample> table;
+  std::vector<ImuStamp> imu;
+  std::vector<SegmentSums> seg;
+  double frame = 0.0;
+};
+FeatureSums::FeatureSums() = default;
+FeatureSums::~FeatureSums() = default;
 
 std::string quantityName(const FeatureKey& key) {
   switch (key.quantity) {
@@ -332,7 +370,9 @@ int segmentsFor(double durationS, double frequencyHz) {
   return std::clamp(static_cast<int>(std::floor(periods / 2.0)), 1, 4);
 }
 
-Result<FeatureSet> extractFeatures(const Recording& recording, const FeatureReference& reference) {
+Result<FeatureSet> extractFeatures(const Recording& recording, const FeatureReference& reference,
+                                   ResidualView residual, FeatureSums* record, const FeatureSums* reuse) {
+  if (record) record->points.assign(recording.testPoints.size(), {});
   if (recording.testPoints.size() != reference.points.size())
     return invalidArgument("the recording has " + std::to_string(recording.testPoints.size()) +
                            " test points, the feature reference " + std::to_string(reference.points.size()));
@@ -359,11 +399,28 @@ Result<FeatureSet> extractFeatures(const Recording& recording, const FeatureRefe
       SegmentSums& s = seg[static_cast<std::size_t>(i)];
       return std::tie(s.gXtX, s.gXty);
     };
+    const FeatureSums::Point* known =
+        reuse && p < reuse->points.size() && reuse->points[p].seg.size() == seg.size() ? &reuse->points[p] : nullptr;
+    // One pass over the table samples and one over the IMU stamps either
+    // way: a comparison that holds stands for the sums (the median) it
+    // spares; one that fails stops at the first difference (within the first
+    // second for every effect of the library that moves a stamp or a
+    // reading) and is not counted.
+    const bool tableKnown = known && sameTable(tp.table, known->table, ref.swingAxis);
+    const bool imuKnown = known && sameStamps(tp.imu, known->imu);
+    countRecordingPass(analysis::SampleStream::kTable);
+    if (imuKnown) countRecordingPass(analysis::SampleStream::kGyro);
+    if (tableKnown)
+      for (std::size_t i = 0; i < seg.size(); ++i) {
+        const SegmentSums& k = known->seg[i];
+        seg[i].tXtX = k.tXtX, seg[i].tXty = k.tXty, seg[i].tyty = k.tyty, seg[i].tn = k.tn;
+        seg[i].tableIntervalUs = k.tableIntervalUs, seg[i].tableLost = k.tableLost;
+      }
     RowBlock<kTableCols, 1> tableRows;
-    RowBlock<kGyroCols, kAxisCount> gyroRows;
+    RowBlock<kGyroCols, kAxisCount> gyroRows(!imuKnown);
 
     double row[kTableCols];
-    for (std::size_t i = 0; i < tp.table.size(); ++i) {
+    for (std::size_t i = 0; i < tp.table.size() && !tableKnown; ++i) {
       const double tau = tp.table[i].timeS - mid;
       harmonics(w * tau, row);
       row[kTableCols - 2] = 1.0;
@@ -382,7 +439,8 @@ Result<FeatureSet> extractFeatures(const Recording& recording, const FeatureRefe
       }
     }
 
-    const double frame = medianInterval(tp.imu);
+    // The stamps' pass above stands for the median's when they are known.
+    const double frame = imuKnown ? known->frame : medianInterval(tp.imu);
     forEachIncrementRow(tp.imu, w, frame, mid, [&](std::size_t k, const double* dx) {
       const ImuSample& m = tp.imu[k];
       const int segment = segmentOf(m.timeS);
@@ -400,6 +458,18 @@ Result<FeatureSet> extractFeatures(const Recording& recording, const FeatureRefe
 
     tableRows.flush(tableSums);
     gyroRows.flush(gyroSums);
+    if (imuKnown)
+      for (std::size_t i = 0; i < seg.size(); ++i) seg[i].gXtX = known->seg[i].gXtX;
+    if (record) {  // a copy of the samples' stamps: one pass over each stream
+      countRecordingPass(analysis::SampleStream::kTable);
+      countRecordingPass(analysis::SampleStream::kGyro);
+      FeatureSums::Point& r = record->points[p];
+      r.table = tp.table;
+      r.imu.reserve(tp.imu.size());
+      for (const auto& m : tp.imu) r.imu.push_back({m.timeS, m.lostBefore});
+      r.seg = seg;
+      r.frame = frame;
+    }
     SegmentSums whole;
     for (auto& s : seg) {
       s.tXtX = s.tXtX.selfadjointView<Eigen::Upper>();
@@ -427,6 +497,10 @@ Result<FeatureSet> extractFeatures(const Recording& recording, const FeatureRefe
     }
     sp.gainPpm = (gAmp / tAmp - 1.0) * 1e6;
     sp.delayUs = wrapPi(std::atan2(wf->table(1), wf->table(0)) - std::atan2(wf->gyro(1, ax), wf->gyro(0, ax))) / w * 1e6;
+    if (residual == ResidualView::kSkip) {
+      out.spectra.push_back(std::move(sp));
+      continue;
+    }
     const std::size_t stride = std::max<std::size_t>(1, tp.imu.size() / 400);
     double cumulative = 0.0;
     const GyroVector beta = wf->gyro.col(ax);
@@ -461,6 +535,8 @@ TimingAudit auditTiming(const Recording& recording, double tablePeriodS, double 
     }
   };
   for (const auto& tp : recording.testPoints) {
+    countRecordingPass(analysis::SampleStream::kTable);
+    countRecordingPass(analysis::SampleStream::kGyro);
     scan(tp.table, tablePeriodS, t, a.table);
     scan(tp.imu, imuPeriodS, m, a.imu);
   }

@@ -15,6 +15,7 @@
 // in quadrature with it (ppm), so they do not depend on the swing's start phase.
 // Qt-free; pure functions, thread-safe.
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -104,9 +105,39 @@ struct FeatureSet {
 // (at least 2 periods per segment), at least 1.
 int segmentsFor(double durationS, double frequencyHz);
 
+// Whether extractFeatures() fills PointSpectrum's cumulative gyro residual
+// (residualTimeS, gyroResidualDeg): a whole pass over the IMU samples with a
+// harmonic basis per sample, drawn for the session and its first replay
+// only. kSkip leaves them empty; every other feature and spectrum value is
+// the same either way.
+enum class ResidualView { kCompute, kSkip };
+
+// The sums one recording's features were taken from that depend on its
+// stamps and table readings alone: per test point, the table fit's sums and
+// interval statistics, the gyro fit's normal matrix and the IMU frame
+// interval, with the samples they came from. A recording whose table samples
+// (stamps and swing-axis angles) or IMU stamps (and lost-frame counts) are
+// those same ones takes them instead of summing again, with the same values
+// to the bit: the replays at one seed whose effects act on the gyro alone
+// differ from the first only in their gyro increments.
+class FeatureSums {
+ public:
+  FeatureSums();
+  ~FeatureSums();
+  struct Point;
+  std::vector<Point> points;
+};
+
 // Fails when a test point has too little data or the reference does not
-// match the recording's test points.
-Result<FeatureSet> extractFeatures(const Recording& recording, const FeatureReference& reference);
+// match the recording's test points. Walks each test point's table samples
+// once and its IMU samples twice (the frame interval's median, the fit),
+// three times with the residual view (core/diagnosis/replay_passes.h); a
+// test point whose table samples or IMU stamps are those of `reuse` is
+// compared with them in that pass instead of summed (or its median taken).
+// `record`, when given, receives the sums of this recording.
+Result<FeatureSet> extractFeatures(const Recording& recording, const FeatureReference& reference,
+                                   ResidualView residual = ResidualView::kCompute, FeatureSums* record = nullptr,
+                                   const FeatureSums* reuse = nullptr);
 
 // Timing audit of one stream (docs/diagnosis.md).
 struct StreamTiming {
@@ -120,6 +151,8 @@ struct TimingAudit {
   StreamTiming table, imu;
   std::uint64_t lostFrames = 0, duplicateFrames = 0, counterWraps = 0, checksumFailures = 0, outOfOrderFrames = 0;
 };
+// One pass over the table stamps and one over the IMU stamps; reads only the
+// samples' times and the recording's health, not their values.
 TimingAudit auditTiming(const Recording& recording, double tablePeriodS, double imuPeriodS);
 
 }  // namespace fog::diagnosis

@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <condition_variable>
 #include <map>
+#include <mutex>
 
 #include "core/common/parallel.h"
 
@@ -134,15 +136,53 @@ std::vector<SignatureJob> signatureJobs(const DiagnosisOptions& options) {
 
 // Replays beyond the calibration's and the signature jobs: the exact
 // re-evaluations, a Ceres fit or two (a few rounds of a replay per
-// parameter), a pair, the timing replay. An estimate, for the progress bar.
+// parameter), a pair (the timing audit has no replay of its own: it is the
+// first job's). An estimate, for the progress bar.
 std::size_t laterReplays(const DiagnosisOptions& options) {
-  return 4 * static_cast<std::size_t>(std::max(0, options.refineTop)) + 2;
+  return 4 * static_cast<std::size_t>(std::max(0, options.refineTop)) + 1;
 }
 
 Result<std::vector<FeatureSet>> runReplays(const Replay& replay, const std::vector<SignatureJob>& jobs,
-                                           std::size_t cells, int threads, const Progress& progress) {
+                                           std::size_t cells, int threads, const Progress& progress,
+                                           TimingAudit* firstTiming, std::shared_ptr<model::MotionTape>* tapeOut,
+                                           std::shared_ptr<FeatureSums>* sumsOut) {
   std::vector<Result<FeatureSet>> outputs(jobs.size(), Status(StatusCode::kInternal, "not run"));
-  parallelFor(jobs.size(), threads, [&](std::size_t i) { outputs[i] = replay.run(jobs[i].seed, jobs[i].effects); });
+  // The first job records its motion tape; the others at its seed wait for it
+  // (jobs are taken in order, so it is already running) and play it. Its
+  // Monte Carlo siblings at other seeds run meanwhile.
+  auto tape = std::make_shared<model::MotionTape>();
+  auto sums = std::make_shared<FeatureSums>();
+  const bool useTape = replay.tapeSenses > 0 && !jobs.empty() && jobs[0].effects.empty();
+  if (useTape) {
+    tape->senses.reserve(replay.tapeSenses);
+    tape->readings.reserve(replay.tapeReadings);
+  }
+  std::mutex mutex;
+  std::condition_variable recorded;
+  bool tapeDone = false, tapeOk = false;
+  parallelFor(jobs.size(), threads, [&](std::size_t i) {
+    ReplayExtras extras;
+    if (i == 0) {
+      extras = {ResidualView::kCompute, firstTiming, useTape ? tape.get() : nullptr, nullptr,
+                useTape ? sums.get() : nullptr, nullptr};
+      outputs[i] = replay.run(jobs[i].seed, jobs[i].effects, extras);
+      {
+        std::lock_guard lock(mutex);
+        tapeDone = true;
+        tapeOk = useTape && outputs[i].isOk();
+      }
+      recorded.notify_all();
+      return;
+    }
+    if (useTape && jobs[i].seed == jobs[0].seed) {
+      std::unique_lock lock(mutex);
+      recorded.wait(lock, [&] { return tapeDone; });
+      if (tapeOk) extras.playTape = tape.get(), extras.reuseSums = sums.get();
+    }
+    outputs[i] = replay.run(jobs[i].seed, jobs[i].effects, extras);
+  });
+  if (tapeOut && useTape && outputs[0]) *tapeOut = tape;
+  if (sumsOut && useTape && outputs[0]) *sumsOut = sums;
   if (progress.cancelled()) return cancelledByCaller();
   std::vector<FeatureSet> features;
   features.reserve(outputs.size());

@@ -1,6 +1,7 @@
 // The replay of a session on the simulator, and the messages every stage of
 // the diagnosis uses (diagnosis_stages.h).
 #include "core/diagnosis/diagnosis_stages.h"
+#include "core/diagnosis/replay_passes.h"
 
 #include <cmath>
 #include <cstdio>
@@ -24,11 +25,15 @@ Status cancelledByCaller() { return cancelled("diagnosis cancelled: nothing was 
 // maxFrames: the stream's budget (Simulator::frameBound()); a configuration
 // that could emit more is refused before anything runs.
 Result<Recording> simulateRecording(const model::SimConfig& config, const TestPlan& plan, double maxFrames,
-                                    std::vector<std::unique_ptr<model::Effect>> effects) {
+                                    std::vector<std::unique_ptr<model::Effect>> effects, model::MotionTape* recordTape,
+                                    const model::MotionTape* playTape, bool* tapeMatched) {
   constexpr double kChunkS = 2.0;
   auto sim = model::Simulator::create(config, plan, maxFrames);
   if (!sim) return sim.status();
+  countReplay();
   for (auto& e : effects) (*sim)->addEffect(std::move(e));
+  (*sim)->recordMotionTape(recordTape);
+  (*sim)->playMotionTape(playTape);
   protocol::StreamDecoder decoder;
   std::vector<protocol::Frame> frames;
   for (double until = kChunkS; (*sim)->advance(until, frames); until += kChunkS) {
@@ -36,25 +41,27 @@ Result<Recording> simulateRecording(const model::SimConfig& config, const TestPl
     frames.clear();
   }
   decoder.push(std::span<const protocol::Frame>(frames));
+  if (tapeMatched) *tapeMatched = (*sim)->tapeMatched();
   return decoder.finish();
 }
 
-Result<FeatureSet> Replay::run(std::uint64_t seed, const EffectList& effects) const {
+Result<FeatureSet> Replay::run(std::uint64_t seed, const EffectList& effects, ReplayExtras extras) const {
   if (progress && progress->cancelled()) return cancelledByCaller();
-  auto features = runUncounted(seed, effects);
+  auto features = runUncounted(seed, effects, extras);
   if (progress) progress->replayDone();
   return features;
 }
 
-Result<FeatureSet> Replay::runUncounted(std::uint64_t seed, const EffectList& effects) const {
+Result<FeatureSet> Replay::runUncounted(std::uint64_t seed, const EffectList& effects, ReplayExtras extras) const {
   model::SimConfig config = cal.config;
   config.seed = seed;
-  std::vector<std::unique_ptr<model::Effect>> list;
-  for (const auto& [id, p] : effects) {
-    // A fitted value outside the effect's modelled range is never replayed.
-    FOG_RETURN_IF_ERROR(checkParameters(id, p));
-    list.push_back(makeEffect(id, p, context));
-  }
+  // A fitted value outside the effect's modelled range is never replayed.
+  for (const auto& [id, p] : effects) FOG_RETURN_IF_ERROR(checkParameters(id, p));
+  auto effectList = [&] {
+    std::vector<std::unique_ptr<model::Effect>> list;
+    for (const auto& [id, p] : effects) list.push_back(makeEffect(id, p, context));
+    return list;
+  };
   // The encoder quantises exact motion, so without a change of phase every
   // replay would read the table alike and the table cells would have no
   // spread; a start phase drawn per seed (well under a sample period's
@@ -63,9 +70,18 @@ Result<FeatureSet> Replay::runUncounted(std::uint64_t seed, const EffectList& ef
   TestPlan plan = cal.plan;
   model::Random phase(model::Random::derive(seed, 0x7ab1e));
   for (auto& p : plan.points) p.startPhaseDeg += 0.1 * (phase.uniform() - 0.5);
-  auto rec = simulateRecording(config, plan, maxFrames, std::move(list));
+  const model::MotionTape* play = extras.playTape;
+  const FeatureSums* reuse = extras.reuseSums;
+  if (!play && tape && seed == tapeSeed) play = tape.get();
+  if (!reuse && sums && seed == tapeSeed) reuse = sums.get();
+  bool matched = true;
+  auto rec = simulateRecording(config, plan, maxFrames, effectList(), extras.recordTape, play, &matched);
+  // A tape that was not this chain's cannot happen within one diagnosis (one
+  // calibrated chain); were it to, the replay is run again without it.
+  if (rec && !matched) rec = simulateRecording(config, plan, maxFrames, effectList());
   if (!rec) return rec.status();
-  return extractFeatures(*rec, ref);
+  if (extras.timing) *extras.timing = auditTiming(*rec, ref.tablePeriodS, ref.imuPeriodS);
+  return extractFeatures(*rec, ref, extras.residual, extras.recordSums, reuse);
 }
 
 std::string fmt(const char* f, double v) {

@@ -44,6 +44,11 @@ class Effect {
   virtual void onTableMotion(double timeS, std::array<double, kAxisCount>& angleDeg) const {
     (void)timeS, (void)angleDeg;
   }
+  // Whether onTableMotion may change the motion. A run whose effects all
+  // say false senses what the same chain and seed sense without them, so it
+  // may replay their MotionTape (Simulator::playMotionTape). True unless an
+  // effect states otherwise: a motion taken as unchanged would be wrong.
+  virtual bool changesTableMotion() const { return true; }
   // Encoder stage: the reading about to be quantised.
   virtual void onEncoderReading(double timeS, std::array<double, kAxisCount>& readingDeg) {
     (void)timeS, (void)readingDeg;

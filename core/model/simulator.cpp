@@ -63,9 +63,15 @@ std::int32_t toMicroDeg(double deg) { return static_cast<std::int32_t>(std::llro
 class Simulator::Impl {
  public:
   Impl(const SimConfig& config, const Turntable& table, double slackS,
-       std::vector<std::unique_ptr<Effect>>& effects)
+       std::vector<std::unique_ptr<Effect>>& effects, MotionTape* record, const MotionTape* play)
       : c_(config), table_(table), slackS_(slackS), effects_(effects), attitude_(config.earth, config.turntable),
         noiseRng_(Random::derive(config.seed, 0)), lostRng_(Random::derive(config.seed, 1)), filters_(config.fog) {
+    // A tape holds the motion as planned: one is neither played nor recorded
+    // where an effect may change it.
+    if (std::none_of(effects_.begin(), effects_.end(), [](const auto& e) { return e->changesTableMotion(); })) {
+      play_ = play;
+      record_ = play ? nullptr : record;
+    }
     for (int a = 0; a < kAxisCount; ++a) {
       GyroChannel& g = gyro_[a];
       g.constantRateDegPerS = degPerHourToDegPerS(c_.fog.biasDegPerH[a]);
@@ -151,6 +157,16 @@ class Simulator::Impl {
   // 5e-7 of a 1.9 deg/h modulation at 0.2 Hz with h = 2 ms; Simpson's rule
   // cost a fifth of a replay for nothing measurable), plus bias and noise.
   std::array<double, kAxisCount> sensedAngles(double u) {
+    if (play_ && tapeMatched_) {
+      if (playIndex_ < play_->senses.size() && play_->senses[playIndex_].context.timeS == u) {
+        const MotionTape::Sense& s = play_->senses[playIndex_++];
+        GyroContext context = s.context;
+        std::array<double, kAxisCount> sensed = s.sensed;
+        for (const auto& e : effects_) e->onGyroAngle(context, sensed);
+        return sensed;
+      }
+      tapeMatched_ = false;  // another chain's tape: the state below was never kept
+    }
     GyroContext context{u, motion(u)};
     const Eigen::Matrix3d bodyToTable = attitude_.bodyToTable(context.tableAngleDeg, rotations_);
     const Eigen::Vector3d earth = attitude_.earthRateBodyDegPerH(bodyToTable);
@@ -171,6 +187,7 @@ class Simulator::Impl {
       for (int k = 0; k < kAxisCount; ++k) context.bodyToLocal[a][k] = bodyToLocal(a, k);
       sensed[a] = bodyAngleDeg_[a] + earthAngleDeg_[a] + gyro_[a].noiseAngleDeg(u, noiseRng_);
     }
+    if (record_) record_->senses.push_back({context, sensed});
     for (const auto& e : effects_) e->onGyroAngle(context, sensed);
     return sensed;
   }
@@ -198,9 +215,17 @@ class Simulator::Impl {
 
   void prepareTable() {
     const double stamp = static_cast<double>(tableIndex_) * c_.encoder.samplePeriodS;
-    auto reading = motion(stamp - c_.encoder.readDelayS);
-    if (const double e = c_.encoder.eccentricityPeakDeg(); e > 0.0)
-      for (double& r : reading) r += e * std::sin((r + c_.encoder.eccentricityPhaseDeg) * kRadPerDeg);
+    const double readS = stamp - c_.encoder.readDelayS;
+    std::array<double, kAxisCount> reading;
+    if (play_ && tapeMatched_ && readIndex_ < play_->readings.size() && play_->readings[readIndex_].timeS == readS) {
+      reading = play_->readings[readIndex_++].deg;
+    } else {
+      if (play_) tapeMatched_ = false;
+      reading = motion(readS);
+      if (const double e = c_.encoder.eccentricityPeakDeg(); e > 0.0)
+        for (double& r : reading) r += e * std::sin((r + c_.encoder.eccentricityPhaseDeg) * kRadPerDeg);
+      if (record_) record_->readings.push_back({readS, reading});
+    }
     for (const auto& e : effects_) e->onEncoderReading(stamp - c_.encoder.readDelayS, reading);
     for (int a = 0; a < kAxisCount; ++a) {
       const double q = c_.encoder.quantumDeg;
@@ -272,6 +297,15 @@ class Simulator::Impl {
 
   const SimConfig& c_;
   const Turntable& table_;
+  MotionTape* record_ = nullptr;
+  const MotionTape* play_ = nullptr;
+  std::size_t playIndex_ = 0, readIndex_ = 0;
+  bool tapeMatched_ = true;
+
+ public:
+  bool tapeMatched() const { return tapeMatched_; }
+
+ private:
   const double slackS_;  // Simulator::streamSlackS()
   std::vector<std::unique_ptr<Effect>>& effects_;
   Attitude attitude_;
@@ -340,7 +374,11 @@ Simulator::FrameCounts Simulator::frameCounts() const {
 
 void Simulator::addEffect(std::unique_ptr<Effect> effect) { effects_.push_back(std::move(effect)); }
 
-void Simulator::start() { impl_ = std::make_unique<Impl>(config_, turntable_, streamSlackS(), effects_); }
+void Simulator::start() {
+  impl_ = std::make_unique<Impl>(config_, turntable_, streamSlackS(), effects_, recordTape_, playTape_);
+}
+
+bool Simulator::tapeMatched() const { return !impl_ || impl_->tapeMatched(); }
 
 bool Simulator::advance(double untilS, std::vector<std::uint8_t>& out) { return advanceInto(untilS, out); }
 

@@ -40,6 +40,30 @@ struct TestPointTruth {
 // create() instead of running for ever.
 inline constexpr double kMaxSimulatedFrames = 1e9;
 
+// What the physical stages computed at each instant of one run, before any
+// effect's hook: what the gyros sensed (the context effects read and the
+// sensed angles: motion, body rotation, Earth rate, bias and noise; before
+// onGyroAngle) and what the encoder read (the motion at the reading instant,
+// with the grating's eccentricity; before onEncoderReading). The instants,
+// the motion and the noise draws depend on the configuration, the plan and
+// the seed alone when no effect changes the table's motion, so a run of the
+// same chain at the same seed with other such effects can play the tape
+// instead of computing them: bit for bit what it would compute (a replay's
+// physics, about half of its time). 22 doubles per sensed instant (once per
+// IMU frame, or per register update) and 4 per table frame.
+struct MotionTape {
+  struct Sense {
+    GyroContext context;
+    std::array<double, kAxisCount> sensed{};
+  };
+  struct Reading {
+    double timeS = 0.0;
+    std::array<double, kAxisCount> deg{};
+  };
+  std::vector<Sense> senses;
+  std::vector<Reading> readings;
+};
+
 class Simulator {
  public:
   // The configuration and plan must be valid (see create()).
@@ -70,6 +94,18 @@ class Simulator {
   // Effects must be added before the first advance().
   void addEffect(std::unique_ptr<Effect> effect);
 
+  // Before the first advance(): the run appends its gyro and encoder stages to *tape
+  // (which must outlive the run), or plays *tape, recorded by a run of the
+  // same configuration (seed included) and plan, instead of computing the
+  // stages. A tape is played only when no effect changesTableMotion(); else it
+  // is ignored and the stages computed. A run that asks for an instant the
+  // tape does not hold (another configuration's tape) computes the rest
+  // with its gyro stage's state lost: tapeMatched() is then false, and the
+  // caller must run again without the tape.
+  void recordMotionTape(MotionTape* tape) { recordTape_ = tape; }
+  void playMotionTape(const MotionTape* tape) { playTape_ = tape; }
+  bool tapeMatched() const;
+
   // Appends every frame stamped before untilS (true seconds since the start)
   // to out. Returns false once the whole plan has been emitted. At most
   // frameBound() frames over the whole run.
@@ -96,6 +132,8 @@ class Simulator {
   TestPlan plan_;
   Turntable turntable_;
   std::vector<std::unique_ptr<Effect>> effects_;
+  MotionTape* recordTape_ = nullptr;
+  const MotionTape* playTape_ = nullptr;
   std::unique_ptr<Impl> impl_;
   double nowS_ = 0.0;
 };

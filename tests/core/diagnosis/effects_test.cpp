@@ -232,3 +232,34 @@ TEST(TimingAudit, CountsGapsAndMeasuresIntervals) {
 
 }  // namespace
 }  // namespace fog::diagnosis
+
+namespace fog::diagnosis {
+namespace {
+
+// The replays at one seed reuse the first replay's sums where their stamps
+// and readings are its own (FeatureSums): every feature must be the one
+// summing gives, bit for bit, whether the sums are reused (a gyro-only
+// effect), partly reused (the encoder's readings changed, the stamps not)
+// or not at all (the stamps moved).
+TEST(FeatureSums, ReusedGiveTheFeaturesSummingGives) {
+  const TestPlan plan = onePoint(Axis::kX, 1.0, 3.0, 12.0);
+  FeatureSums sums;
+  auto first = extractFeatures(simulateWith(plan), referenceFor(plan), ResidualView::kCompute, &sums);
+  ASSERT_TRUE(first.isOk());
+  for (auto [id, p] : {std::pair{EffectId::kScaleFactorError, std::vector<double>{1000.0}},
+                       std::pair{EffectId::kEncoderCyclicError, std::vector<double>{1.0, 0.0}},
+                       std::pair{EffectId::kTimestampJitter, std::vector<double>{100.0}}}) {
+    std::vector<std::unique_ptr<model::Effect>> e;
+    e.push_back(makeEffect(id, p));
+    const Recording rec = simulateWith(plan, std::move(e));
+    auto summed = extractFeatures(rec, referenceFor(plan));
+    auto reused = extractFeatures(rec, referenceFor(plan), ResidualView::kCompute, nullptr, &sums);
+    ASSERT_TRUE(summed.isOk() && reused.isOk());
+    EXPECT_EQ(summed->values, reused->values) << effectSpec(id).name;
+    EXPECT_EQ(summed->formalStd, reused->formalStd) << effectSpec(id).name;
+    EXPECT_EQ(summed->spectra[0].gyroResidualDeg, reused->spectra[0].gyroResidualDeg) << effectSpec(id).name;
+  }
+}
+
+}  // namespace
+}  // namespace fog::diagnosis

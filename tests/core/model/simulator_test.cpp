@@ -69,6 +69,59 @@ class DropSome : public Effect {
   int imu_ = 0, table_ = 0;
 };
 
+// A gyro-stage effect that leaves the motion as planned (a scale error of
+// 1e-3 on the sensed angle, and the stamps of DropSome).
+class ScaleAndDrop : public DropSome {
+ public:
+  bool changesTableMotion() const override { return false; }
+  void onGyroAngle(const GyroContext& c, std::array<double, kAxisCount>& sensed) override {
+    for (int a = 0; a < kAxisCount; ++a) sensed[a] += 1e-3 * c.bodyAngleDeg[a];
+  }
+};
+
+// The same, not saying whether it moves the table (the default: it may).
+class ScaleAndDropUnstated : public ScaleAndDrop {
+ public:
+  bool changesTableMotion() const override { return Effect::changesTableMotion(); }
+};
+
+// The run's bytes with `effect`, recording into or playing `tape`.
+std::vector<std::uint8_t> runWith(const SimConfig& c, std::unique_ptr<Effect> effect, MotionTape* record,
+                                  const MotionTape* play, bool* matched = nullptr) {
+  auto sim = Simulator::create(c, shortPlan());
+  EXPECT_TRUE(sim.isOk());
+  if (effect) (*sim)->addEffect(std::move(effect));
+  (*sim)->recordMotionTape(record);
+  (*sim)->playMotionTape(play);
+  std::vector<std::uint8_t> bytes;
+  (*sim)->runToEnd(bytes);
+  if (matched) *matched = (*sim)->tapeMatched();
+  return bytes;
+}
+
+// The diagnosis' signature replays play the first replay's motion tape: the
+// stream must be bit for bit the one the stage computed gives.
+TEST(MotionTape, PlayedGivesTheStreamComputedGives) {
+  SimConfig c;
+  c.seed = 7;
+  MotionTape tape;
+  const auto nominal = runWith(c, nullptr, &tape, nullptr);
+  EXPECT_EQ(nominal, runWith(c, nullptr, nullptr, nullptr));
+  ASSERT_FALSE(tape.senses.empty());
+  bool matched = false;
+  EXPECT_EQ(runWith(c, std::make_unique<ScaleAndDrop>(), nullptr, &tape, &matched),
+            runWith(c, std::make_unique<ScaleAndDrop>(), nullptr, nullptr));
+  EXPECT_TRUE(matched);
+  // An effect that may move the table does not play it (same bytes as computed).
+  EXPECT_EQ(runWith(c, std::make_unique<ScaleAndDropUnstated>(), nullptr, &tape, &matched),
+            runWith(c, std::make_unique<ScaleAndDropUnstated>(), nullptr, nullptr));
+  // Another chain's tape is noticed.
+  c.fog.arwDegPerSqrtH *= 2.0;
+  c.imuBoard.firstSampleS += 1e-4;
+  runWith(c, nullptr, nullptr, &tape, &matched);
+  EXPECT_FALSE(matched);
+}
+
 TEST(SimulatorFrames, GiveTheRecordingTheirBytesGive) {
   // The frame overload (a diagnosis replay) must be the byte stream without
   // the encoding: the same frames, lost ones and counter wraps included.
