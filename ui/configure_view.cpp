@@ -14,8 +14,10 @@
 #include <QVBoxLayout>
 #include <limits>
 
+#include "core/common/gyro_signs.h"
 #include "core/serial/serial_source.h"
 #include "ui/commanded_motion.h"
+#include "ui/core_text.h"
 #include "ui/plan_editor.h"
 
 namespace fog::ui {
@@ -302,17 +304,19 @@ void ConfigureView::setIdentity(const QString& operatorName, const QString& imuM
   imuSerialEdit_->setText(imuSerial);
 }
 
-void ConfigureView::showBenchConstants(const BenchConstants& s) {
+void ConfigureView::showBenchConstants(const BenchConstants& s, const std::array<int, kAxisCount>& gyroSign) {
   // Line breaks of its own, no word wrap: a wrapping label would let the
   // column be squeezed under its real height on a small screen.
   constantsLabel_->setText(tr("table read delay %1 ms · board delay %2 ms\nlatitude %3° · pulse equivalent %4°\n"
-                              "counter %5 MHz / %6 bit")
+                              "counter %5 MHz / %6 bit\ngyro signs %7\nIMU frame %8")
                                .arg(s.tableReadDelayMs)
                                .arg(s.boardDelayMs)
                                .arg(s.latitudeDeg)
                                .arg(s.pulseEquivalentDeg)
                                .arg(s.counterHz / 1e6)
-                               .arg(s.counterBits));
+                               .arg(s.counterBits)
+                               .arg(QString::fromStdString(describeGyroSigns(gyroSign)))
+                               .arg(coreText(describeImuFrame(s.imuFrame))));
 }
 
 void ConfigureView::setMessage(const QString& html) { message_->setText(html); }

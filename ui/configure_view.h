@@ -73,7 +73,9 @@ class ConfigureView : public QWidget {
   QString notes() const;
   void setIdentity(const QString& operatorName, const QString& imuModel, const QString& imuSerial);
 
-  void showBenchConstants(const BenchConstants& settings);
+  // The constants and the gyro signs the next analysis uses (Tools → Bench
+  // constants chooses both).
+  void showBenchConstants(const BenchConstants& settings, const std::array<int, kAxisCount>& gyroSign);
   // Rich text under the source and session: why a run cannot start, or how
   // the last one ended.
   void setMessage(const QString& html);

@@ -375,6 +375,7 @@ const char* const kTemplates[] = {
     QT_TRANSLATE_NOOP("core_text", "INCOMPLETE RUN: %1"),
     QT_TRANSLATE_NOOP("core_text", "stream: %1 table, %2 IMU, %3 status frames; %4 checksum failures, %5 lost, %6 duplicated, %7 bytes skipped"),
     QT_TRANSLATE_NOOP("core_text", "bench constants: table read delay %1 ± %2 ms, board delay %3 ± %4 ms"),
+    QT_TRANSLATE_NOOP("core_text", "gyro signs: %1 (-1: the gyro axis counts against the table's); IMU frame: %2"),
     QT_TRANSLATE_NOOP("core_text", "Test point %1: %2 axis, %3 Hz / %4 deg, %5 s (%6 periods)"),
     QT_TRANSLATE_NOOP("core_text", "fits (angle = A sin(2 pi (t - t0) / T); t0 is the phase):"),
     QT_TRANSLATE_NOOP("core_text", "%1 period %2 (nominal) ms phase %3 ± %4 ms amplitude %5 deg"),

@@ -189,8 +189,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   tableDock_->hide();
   buildToolBar();
   buildMenus();
-  setBenchConstants(loadBenchConstants());
   analysis_ = loadAnalysisChoices();
+  setBenchConstants(loadBenchConstants());
 
   framesLabel_ = new QLabel();
   framesLabel_->setObjectName("framesLabel");
@@ -244,9 +244,9 @@ MainWindow::~MainWindow() {
 void MainWindow::editBenchConstants() {
   BenchSettingsDialog dialog(bench_, analysis_, this);
   if (dialog.exec() == QDialog::Accepted) {
+    setAnalysisChoices(dialog.analysisChoices());
     setBenchConstants(dialog.settings());
     saveBenchConstants(bench_);
-    analysis_ = dialog.analysisChoices();
     saveAnalysisChoices(analysis_);
   }
 }
@@ -703,7 +703,12 @@ QString MainWindow::sessionFolder() const { return configureView_->sessionFolder
 
 void MainWindow::setBenchConstants(const BenchConstants& s) {
   bench_ = s;
-  configureView_->showBenchConstants(s);
+  configureView_->showBenchConstants(bench_, analysis_.gyroSign);
+}
+
+void MainWindow::setAnalysisChoices(const AnalysisChoices& choices) {
+  analysis_ = choices;
+  configureView_->showBenchConstants(bench_, analysis_.gyroSign);
 }
 
 const RunOutcome* MainWindow::lastOutcome() const { return shown_.get(); }

@@ -132,7 +132,7 @@ class MainWindow : public QMainWindow {
   // The gyro signs and acceptance limit every run and re-analysis uses and
   // stores with its result (the bench-constants dialog).
   const AnalysisChoices& analysisChoices() const { return analysis_; }
-  void setAnalysisChoices(const AnalysisChoices& choices) { analysis_ = choices; }
+  void setAnalysisChoices(const AnalysisChoices& choices);
 
   bool isRunning() const { return runner_.isRunning(); }
   // The last run's or opened session's result (null before one).

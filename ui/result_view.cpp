@@ -37,6 +37,7 @@
 #include <qwt_scale_div.h>
 #include <qwt_symbol.h>
 
+#include "core/common/gyro_signs.h"
 #include "core/analysis/theory.h"
 #include "ui/data_export.h"
 #include "core/session/shown_csv.h"
@@ -90,14 +91,14 @@ QString importText(const ImportSettings& imported) {
   return parts.isEmpty() ? QString() : QObject::tr(", imported with %1").arg(parts.join(QObject::tr("; ")));
 }
 
-// A stored result's settings in a few words: its constants, any reversed
-// gyro axis, its limit and what the import applied.
-QString settingsText(const ResultRecord& r) {
+// A stored result's settings in a few words: its constants, the gyro signs,
+// the session's IMU frame, its limit and what the import applied.
+QString settingsText(const ResultRecord& r, const ImuFrame& sessionFrame) {
   QString text = constantsText(r.constants);
-  QStringList reversed;
-  for (int a = 0; a < kAxisCount; ++a)
-    if (r.constants.gyroSign[static_cast<std::size_t>(a)] < 0) reversed << QString(axisName(static_cast<Axis>(a))).toUpper();
-  if (!reversed.isEmpty()) text += QObject::tr(", gyro sign −1 on %1").arg(reversed.join(", "));
+  // The signs always (a +1 is a statement too), and the session's IMU frame.
+  text += QObject::tr(", gyro signs %1, IMU frame %2")
+              .arg(QString::fromStdString(describeGyroSigns(r.constants.gyroSign)),
+                   coreText(describeImuFrame(sessionFrame)));
   return text + QObject::tr(", limit %1 ms").arg(num(r.imuDelayLimitMs, 3)) + importText(r.imported);
 }
 
@@ -445,8 +446,12 @@ QString ResultView::resultDescription() const {
   if (!outcome_) return QString();
   const ResultRecord* r = outcome_->shownResult();
   if (!r) {
-    const QString constants = (outcome_->report ? constantsText(outcome_->report->constants) : QString()) +
-                              importText(outcome_->info.imported);
+    QString constants = outcome_->report ? constantsText(outcome_->report->constants) : QString();
+    if (outcome_->report)
+      constants += tr(", gyro signs %1, IMU frame %2")
+                       .arg(QString::fromStdString(describeGyroSigns(outcome_->report->constants.gyroSign)),
+                            coreText(describeImuFrame(outcome_->info.bench.imuFrame)));
+    constants += importText(outcome_->info.imported);
     if (outcome_->sessionPath.empty())
       return tr("this run's, not recorded in a session; computed by fogbench %1 with %2")
           .arg(QStringLiteral(FOG_VERSION), constants);
@@ -457,7 +462,8 @@ QString ResultView::resultDescription() const {
       .arg(outcome_->shownResultNumber())
       .arg(outcome_->results.size())
       .arg(storedText(*r), versionText(*r),
-           r->analysedBy.empty() ? tr("analysis") : QString::fromStdString(r->analysedBy), settingsText(*r),
+           r->analysedBy.empty() ? tr("analysis") : QString::fromStdString(r->analysedBy),
+           settingsText(*r, outcome_->info.bench.imuFrame),
            verdictWord(r->verdict));
 }
 
@@ -470,7 +476,8 @@ void ResultView::fillResultCombo() {
     QString text = r.usable ? tr("%1 of %2 · %6 · %3 · %4 · %5")
                                   .arg(i + 1)
                                   .arg(count)
-                                  .arg(storedText(r), versionText(r), settingsText(r), verdictWord(r.verdict))
+                                  .arg(storedText(r), versionText(r), settingsText(r, outcome_->info.bench.imuFrame),
+                                       verdictWord(r.verdict))
                             : tr("%1 of %2 · %3 · %4 · %5")
                                   .arg(i + 1)
                                   .arg(count)

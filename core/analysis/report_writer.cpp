@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/analysis/uncertainty_bound.h"
+#include "core/common/gyro_signs.h"
 #include "core/common/text.h"
 
 namespace fog::analysis {
@@ -79,6 +80,9 @@ std::string formatReportText(const DelayReport& report, const ReportContext& con
   o << "bench constants: table read delay " << f("%.4f", c.tableReadDelayMs) << " ± "
     << f("%.4f", c.tableReadDelayStdMs) << " ms, board delay " << f("%.4f", c.boardDelayMs) << " ± "
     << f("%.4f", c.boardDelayStdMs) << " ms\n";
+  // The conventions the numbers depend on, stated with them.
+  o << "gyro signs: " << describeGyroSigns(c.gyroSign) << " (-1: the gyro axis counts against the table's); IMU frame: "
+    << describeImuFrame(c.imuFrame) << "\n";
 
   for (std::size_t pi = 0; pi < report.points.size(); ++pi) {
     const auto& p = report.points[pi];

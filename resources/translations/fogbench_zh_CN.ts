@@ -838,7 +838,7 @@
 <context>
     <name>fog::ui::ConfigureView</name>
     <message>
-        <location filename="../../ui/configure_view.cpp" line="+50"/>
+        <location filename="../../ui/configure_view.cpp" line="+51"/>
         <source>Test plan</source>
         <translation>测试计划</translation>
     </message>
@@ -1004,7 +1004,20 @@
         <translation>IMU 型号</translation>
     </message>
     <message>
-        <location line="-2"/>
+        <location line="+108"/>
+        <source>table read delay %1 ms · board delay %2 ms
+latitude %3° · pulse equivalent %4°
+counter %5 MHz / %6 bit
+gyro signs %7
+IMU frame %8</source>
+        <translation>转台读数延迟 %1 ms · 处理板延迟 %2 ms
+纬度 %3° · 脉冲当量 %4°
+计数器 %5 MHz / %6 位
+陀螺符号 %7
+IMU 坐标系 %8</translation>
+    </message>
+    <message>
+        <location line="-110"/>
         <source>IMU serial</source>
         <translation>IMU 序列号</translation>
     </message>
@@ -1047,15 +1060,6 @@
         <location line="+46"/>
         <source>%1× real time</source>
         <translation>%1 倍实时</translation>
-    </message>
-    <message>
-        <location line="+56"/>
-        <source>table read delay %1 ms · board delay %2 ms
-latitude %3° · pulse equivalent %4°
-counter %5 MHz / %6 bit</source>
-        <translation>转台读数延迟 %1 ms · 处理板延迟 %2 ms
-纬度 %3° · 脉冲当量 %4°
-计数器 %5 MHz / %6 位</translation>
     </message>
 </context>
 <context>
@@ -1704,12 +1708,12 @@ Press Diagnose in the Results view to start it again.</source>
     <name>fog::ui::MainWindow</name>
     <message>
         <location filename="../../ui/main_window.cpp" line="+153"/>
-        <location line="+1011"/>
+        <location line="+1030"/>
         <source>fogbench %1 — FOG IMU delay bench</source>
         <translation>fogbench %1 —— 光纤陀螺 IMU 延迟测试台</translation>
     </message>
     <message>
-        <location line="-1003"/>
+        <location line="-1022"/>
         <source>Configure</source>
         <translation>配置</translation>
     </message>
@@ -1730,17 +1734,17 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+1083"/>
+        <location line="+1102"/>
         <source>Diagnosis</source>
         <translation>诊断</translation>
     </message>
     <message>
-        <location line="-1080"/>
+        <location line="-1099"/>
         <source>Noise</source>
         <translation>噪声</translation>
     </message>
     <message>
-        <location line="+56"/>
+        <location line="+58"/>
         <source>Configure a plan and press Run.</source>
         <translation>请配置测试计划并按“运行”。</translation>
     </message>
@@ -1818,12 +1822,12 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+747"/>
+        <location line="+764"/>
         <source>Open session</source>
         <translation>打开会话</translation>
     </message>
     <message>
-        <location line="-746"/>
+        <location line="-763"/>
         <source>fogbench sessions (*.fbs);;All files (*)</source>
         <translation>fogbench 会话 (*.fbs);;所有文件 (*)</translation>
     </message>
@@ -1986,7 +1990,7 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>测试计划已保存为 %1</translation>
     </message>
     <message>
-        <location line="+111"/>
+        <location line="+123"/>
         <source>Saved %1 — File ▸ Open the export folder shows it</source>
         <translation>已保存 %1 —— “文件 ▸ 打开导出文件夹”可查看</translation>
     </message>
@@ -2031,12 +2035,12 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>停止运行并关闭</translation>
     </message>
     <message>
-        <location line="-452"/>
+        <location line="-466"/>
         <source>Table</source>
         <translation>转台</translation>
     </message>
     <message>
-        <location line="+92"/>
+        <location line="+94"/>
         <source>EMERGENCY STOP</source>
         <translation>急停</translation>
     </message>
@@ -2121,12 +2125,12 @@ Plots: wheel zooms, drag pans, double-click shows all, click sets cursors A/B</s
 曲线图：滚轮缩放，拖动平移，双击显示全部，单击设置光标 A/B</translation>
     </message>
     <message>
-        <location line="+188"/>
+        <location line="+200"/>
         <source>Keep running</source>
         <translation>继续运行</translation>
     </message>
     <message>
-        <location line="+77"/>
+        <location line="+82"/>
         <source>a run is under way</source>
         <translation>正在运行</translation>
     </message>
@@ -2865,7 +2869,7 @@ File: %1</source>
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location filename="../../ui/main_window.cpp" line="-1226"/>
+        <location filename="../../ui/main_window.cpp" line="-1245"/>
         <location filename="../../ui/plan_editor.cpp" line="-323"/>
         <location filename="../../ui/plots/delta_picker.cpp" line="+1"/>
         <source>%1 s</source>
@@ -2892,7 +2896,7 @@ File: %1</source>
         <translation>PNG 图像 (*.png);;SVG 矢量图 (*.svg);;PDF 文档 (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../../ui/report/calibration_report.cpp" line="+71"/>
+        <location filename="../../ui/report/calibration_report.cpp" line="+72"/>
         <location line="+251"/>
         <source>not recorded</source>
         <translation>未记录</translation>
@@ -3136,18 +3140,18 @@ File: %1</source>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+228"/>
+        <location line="+230"/>
         <source>quantity</source>
         <translation>量</translation>
     </message>
     <message>
-        <location line="-227"/>
-        <location line="+312"/>
+        <location line="-229"/>
+        <location line="+314"/>
         <source>value</source>
         <translation>数值</translation>
     </message>
     <message>
-        <location line="-311"/>
+        <location line="-313"/>
         <source>std. uncertainty</source>
         <translation>标准不确定度</translation>
     </message>
@@ -3227,7 +3231,7 @@ File: %1</source>
         <translation>地球自转角速率，由拟合的陀螺趋势项吸收</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
         <source>Test plan</source>
         <translation>测试计划</translation>
     </message>
@@ -3284,13 +3288,13 @@ File: %1</source>
         <translation>记录时长 (s)</translation>
     </message>
     <message>
-        <location line="-36"/>
-        <location line="+39"/>
+        <location line="-38"/>
+        <location line="+41"/>
         <source>not stated</source>
         <translation>未给出</translation>
     </message>
     <message>
-        <location line="-324"/>
+        <location line="-326"/>
         <source>SIMULATED DATA — not a measurement of a real IMU</source>
         <translation>仿真数据 —— 并非对真实 IMU 的测量</translation>
     </message>
@@ -3315,7 +3319,7 @@ File: %1</source>
         <translation>数据流给出的值，否则为测试台常数：把脉冲换算为度</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+10"/>
         <source>IMU frame</source>
         <translation>IMU 坐标系</translation>
     </message>
@@ -3375,7 +3379,7 @@ File: %1</source>
         <translation>跳过字节</translation>
     </message>
     <message>
-        <location line="-145"/>
+        <location line="-147"/>
         <source>Delay budget</source>
         <translation>延迟预算</translation>
     </message>
@@ -3391,12 +3395,12 @@ File: %1</source>
     </message>
     <message>
         <location line="+12"/>
-        <location line="+140"/>
+        <location line="+142"/>
         <source>#%1: %2</source>
         <translation>#%1：%2</translation>
     </message>
     <message>
-        <location line="-139"/>
+        <location line="-141"/>
         <source>#%1: refused (%2, %3)</source>
         <translation>#%1：被拒绝（%2，%3）</translation>
     </message>
@@ -3412,12 +3416,12 @@ File: %1</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+278"/>
+        <location line="+280"/>
         <source>basis</source>
         <translation>依据</translation>
     </message>
     <message>
-        <location line="-277"/>
+        <location line="-279"/>
         <source>measured (ms)</source>
         <translation>测量值 (ms)</translation>
     </message>
@@ -3462,7 +3466,17 @@ File: %1</source>
         <translation>按论文参数的理论值：光纤 %1 m（本征周期 %2 µs），回路延迟 ≤ %3 个本征周期，脉冲输出每 %4 ms 更新，处理板时钟 %5 MHz，%6 字节帧、%7 Mbaud。</translation>
     </message>
     <message>
-        <location line="+100"/>
+        <location line="+43"/>
+        <source>gyro signs</source>
+        <translation>陀螺符号</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>−1: the gyro axis counts against the table&apos;s; its increments are negated</source>
+        <translation>−1：陀螺轴与转台轴反向计数；其增量取反</translation>
+    </message>
+    <message>
+        <location line="+58"/>
         <source>test point</source>
         <translation>测试点</translation>
     </message>
@@ -4207,7 +4221,7 @@ File: %1</source>
         <translation>IMU 延迟标定报告：%1 %2</translation>
     </message>
     <message>
-        <location filename="../../ui/result_view.cpp" line="+69"/>
+        <location filename="../../ui/result_view.cpp" line="+70"/>
         <source>%1: %2 axis, %3 Hz / %4°</source>
         <translation>%1：%2 轴，%3 Hz / %4°</translation>
     </message>
@@ -4242,12 +4256,12 @@ File: %1</source>
         <translation>；</translation>
     </message>
     <message>
-        <location line="+10"/>
-        <source>, gyro sign −1 on %1</source>
-        <translation>，%1 轴陀螺符号 −1</translation>
+        <location line="+8"/>
+        <source>, gyro signs %1, IMU frame %2</source>
+        <translation>，陀螺符号 %1，IMU 坐标系 %2</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source>, limit %1 ms</source>
         <translation>，限值 %1 ms</translation>
     </message>
@@ -4504,12 +4518,12 @@ Run a test plan (Run), or open a session (Sessions).</source>
         <translation>尚无结果：请运行测试计划（运行）或打开会话（会话）。</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+64"/>
         <source>result %1 of %2: %7, stored %3 by %4 (%5), %6</source>
         <translation>结果 %1/%2：%7，%3 由 %4（%5）保存，%6</translation>
     </message>
     <message>
-        <location line="-113"/>
+        <location line="-117"/>
         <source>PDF document (*.pdf)</source>
         <translation>PDF 文档 (*.pdf)</translation>
     </message>
@@ -4607,7 +4621,12 @@ The session itself is unchanged.</source>
         <translation>&lt;b&gt;无延迟结果：&lt;/b&gt;%1</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+23"/>
+        <source>, gyro signs %1, IMU frame %2</source>
+        <translation>，陀螺符号 %1，IMU 坐标系 %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>this run&apos;s, not recorded in a session; computed by fogbench %1 with %2</source>
         <translation>本次运行的结果，未记录到会话；由 fogbench %1 使用 %2 计算</translation>
     </message>
@@ -4622,12 +4641,12 @@ The session itself is unchanged.</source>
         <translation>分析</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>%1 of %2 · %6 · %3 · %4 · %5</source>
         <translation>%1/%2 · %6 · %3 · %4 · %5</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>%1 of %2 · %3 · %4 · %5</source>
         <translation>%1 / %2 · %3 · %4 · %5</translation>
     </message>
@@ -7097,6 +7116,11 @@ The session itself is unchanged.</source>
         <location line="+1"/>
         <source>bench constants: table read delay %1 ± %2 ms, board delay %3 ± %4 ms</source>
         <translation>台架常数：转台读数延迟 %1 ± %2 ms，板延迟 %3 ± %4 ms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>gyro signs: %1 (-1: the gyro axis counts against the table&apos;s); IMU frame: %2</source>
+        <translation>陀螺符号：%1（−1：陀螺轴与转台轴反向计数）；IMU 坐标系：%2</translation>
     </message>
     <message>
         <location line="+1"/>

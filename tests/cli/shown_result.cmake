@@ -90,6 +90,16 @@ pdf_text(${dir}/q.pdf text)
 if(NOT text MATCHES "SHA-256 +[0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f]")
   message(FATAL_ERROR "the PDF's text has no whole 64-digit SHA-256 (ligatures?):\n${text}")
 endif()
+# The conventions the delays depend on are stated in the CLI's PDF as in the
+# GUI's (the same page): the gyro signs and the IMU frame.
+if(NOT text MATCHES "gyro signs +X \\+1, Y \\+1, Z \\+1" OR NOT text MATCHES "IMU frame")
+  message(FATAL_ERROR "the PDF does not state the gyro signs and the IMU frame:\n${text}")
+endif()
+# And the text report (analyze without storing a result).
+cli(o c analyze ${s} --no-store)
+if(NOT o MATCHES "\ngyro signs: X \\+1, Y \\+1, Z \\+1 [^\n]*; IMU frame: ")
+  message(FATAL_ERROR "the text report does not state the gyro signs and the IMU frame:\n${o}")
+endif()
 
 # 2. An INVALID result's delays are refused in every list and CSV.
 cli(o c analyze ${s} --gyro-sign x=-1)

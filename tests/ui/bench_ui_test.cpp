@@ -699,6 +699,10 @@ class BenchUiTest : public QObject {
     auto w = window();
     // The GUI's own limit and signs are not the record's: they change nothing shown.
     w->setAnalysisChoices(fog::ui::AnalysisChoices{{1, 1, 1}, 5.0});
+    // Configure states the signs the next analysis uses, and the IMU frame.
+    const QString configured = w->configureView()->findChild<QLabel*>("constantsLabel")->text();
+    QVERIFY2(configured.contains("gyro signs X +1, Y +1, Z +1") && configured.contains("IMU frame "),
+             qPrintable(configured));
     QSignalSpy opened(w.get(), &MainWindow::sessionOpened);
     w->openSession(reversed);
     QTRY_VERIFY_WITH_TIMEOUT(!opened.isEmpty(), 30000);
@@ -708,7 +712,7 @@ class BenchUiTest : public QObject {
                  verdict.contains("limit 0.800 ms") && verdict.contains("turns against the table"),
              qPrintable(verdict));
     QVERIFY2(results->resultDescription().startsWith("result 2 of 2: INVALID") &&
-                 results->resultDescription().contains("gyro sign −1 on X"),
+                 results->resultDescription().contains("gyro signs X -1, Y +1, Z +1, IMU frame "),
              qPrintable(results->resultDescription()));
     // The headline never shows the refused delay bare; the title names it all.
     const QString headline = w->findChild<QLabel*>("lagLabel")->text();

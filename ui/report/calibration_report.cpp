@@ -12,6 +12,7 @@
 #include <tuple>
 #include <qwt_plot.h>
 
+#include "core/common/gyro_signs.h"
 #include "core/analysis/theory.h"
 #include "core/analysis/uncertainty_bound.h"
 #include "core/analysis/verdict.h"
@@ -482,6 +483,8 @@ void constantsAndPlanPage(PageFlow& flow, const Content& c) {
                 : QObject::tr("common time base of both channels")},
       {QObject::tr("latitude"), QObject::tr("%1°").arg(info.bench.latitudeDeg), "",
        QObject::tr("Earth rate, absorbed by the fitted gyro trend")},
+      {QObject::tr("gyro signs"), QString::fromStdString(describeGyroSigns(k.gyroSign)), "",
+       QObject::tr("−1: the gyro axis counts against the table's; its increments are negated")},
       {QObject::tr("IMU frame"), coreText(describeImuFrame(info.bench.imuFrame)), "",
        QObject::tr("the IMU's axes at zero table angles; the diagnosis checks it against the data")},
   };
