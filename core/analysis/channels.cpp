@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/analysis/sample_passes.h"
+#include "core/analysis/statistics.h"
 #include "core/common/units.h"
 
 namespace fog::analysis {
@@ -16,10 +17,39 @@ void GyroChannel::setNoise(double qDeg2PerS, double s2Deg2) {
   countPass(SampleStream::kGyro);
   cholDiag.assign(n, 0.0);
   cholSub.assign(n, 0.0);
+  // Each factor entry is a division and a square root that wait for the
+  // previous entry: about 40 cycles a frame. With equal intervals the
+  // recursion settles (to the bit, or into a short cycle) within some
+  // hundreds of frames, so the last few (diag, previous entry) -> (sub,
+  // entry) results are kept and reused when the same inputs come again:
+  // the same inputs give the same doubles, so the factor is unchanged.
+  constexpr int kMemo = 4;
+  double memoDiag[kMemo], memoPrev[kMemo], memoSub[kMemo], memoChol[kMemo];
+  int memoSize = 0, memoNext = 0;
   for (std::size_t k = 0; k < n; ++k) {
     const double diag = qDeg2PerS * (endS[k] - startS[k]) + 2.0 * s2Deg2;
     double sub = 0.0;
-    if (k > 0 && continuesPrevious[k]) sub = -s2Deg2 / cholDiag[k - 1];
+    if (k > 0 && continuesPrevious[k]) {
+      const double prev = cholDiag[k - 1];
+      int hit = -1;
+      for (int m = 0; m < memoSize; ++m)
+        if (memoDiag[m] == diag && memoPrev[m] == prev) hit = m;
+      if (hit >= 0) {
+        cholSub[k] = memoSub[hit];
+        cholDiag[k] = memoChol[hit];
+        continue;
+      }
+      sub = -s2Deg2 / prev;
+      cholSub[k] = sub;
+      cholDiag[k] = std::sqrt(std::max(diag - sub * sub, 1e-30));
+      memoDiag[memoNext] = diag;
+      memoPrev[memoNext] = prev;
+      memoSub[memoNext] = sub;
+      memoChol[memoNext] = cholDiag[k];
+      memoNext = (memoNext + 1) % kMemo;
+      memoSize = std::min(memoSize + 1, kMemo);
+      continue;
+    }
     cholSub[k] = sub;
     cholDiag[k] = std::sqrt(std::max(diag - sub * sub, 1e-30));
   }
@@ -154,14 +184,6 @@ void estimateGyroNoise(GyroChannel& gyro, const std::vector<double>& r, double b
   estimateGyroNoise(gyro, incrementResidualSums(gyro, r), blockS);
 }
 
-namespace {
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
-  return v[v.size() / 2];
-}
-}  // namespace
-
 Result<Channels> makeChannels(const TestPointData& data, double incrementScale) {
   const int axis = static_cast<int>(data.axis);
   if (data.table.size() < 16 || data.imu.size() < 16)
@@ -193,7 +215,7 @@ Result<Channels> makeChannels(const TestPointData& data, double incrementScale) 
   for (std::size_t k = 1; k < data.imu.size(); ++k)
     if (data.imu[k].lostBefore == 0) intervals.push_back(data.imu[k].timeS - data.imu[k - 1].timeS);
   GyroChannel& g = ch.gyro;
-  g.framePeriodS = median(intervals);
+  g.framePeriodS = medianElement(intervals);
   if (!(g.framePeriodS > 0.0)) return corruptData("IMU frame times do not increase");
 
   const std::size_t n = data.imu.size() - 1;
