@@ -116,6 +116,9 @@ struct PointWork {
   // The per-period track as columns, and the lags' spread.
   std::vector<double> lags, times, amplitudes;
   MeanAndSpread spread;
+  // The harmonics' amplitude in the table residual (steady_sine), started on
+  // the second core as soon as the joint frequency is known.
+  std::future<double> harmonics;
 };
 
 // Thresholds of the validity checks (docs/method.md, "Validity checks").
@@ -173,17 +176,19 @@ void checkSteadySine(PointWork& work) {
   {
     const double windowS = std::max(periodS / 20.0, 3.0 * periodS / std::max(1.0, static_cast<double>(r.tableSamples) / r.periods));
     const auto& tableResidual = work.tableResidual;
-    // The harmonics (a 9-column fit over every table sample) on the second
-    // core, beside the smooth-residual checks.
-    auto harmonics = std::async(std::launch::async, [&] {
-      return harmonicAmplitude(ch.table.timeS, tableResidual, w, SampleStream::kTable);
-    });
+    // The harmonics (a 9-column fit over every table sample) run on the
+    // second core from the joint fit on (fitAndCheck), beside the uncertainty
+    // and the smooth-residual checks.
+    if (!work.harmonics.valid())
+      work.harmonics = std::async(std::launch::deferred, [&] {
+        return harmonicAmplitude(ch.table.timeS, tableResidual, w, SampleStream::kTable);
+      });
     r.tableMisfitFraction = smoothResidualRms(ch.table.timeS, tableResidual, windowS, SampleStream::kTable) / amplitude;
     const bool gyroChecked = ch.gyro.lostFrames == 0;  // lost increments make steps in the cumulative angle
     if (gyroChecked)
       r.gyroMisfitFraction = smoothResidualRms(ch.gyro.endS, gyroAngleResidual, windowS, SampleStream::kGyro) /
                              (amplitude * std::abs(r.magnitudeRatio));
-    r.harmonicFraction = harmonics.get() / amplitude;
+    r.harmonicFraction = work.harmonics.get() / amplitude;
     double amplitudeZ = 0.0;
     std::optional<LineFit> amplitudeLine;
     if (amplitudes.size() >= 3) amplitudeLine = fitLine(times, amplitudes);
@@ -419,8 +424,21 @@ namespace {
 Status prepare(PointWork& work) {
   const TestPointData& data = work.data;
   const int sign = work.constants.gyroSign[static_cast<std::size_t>(data.axis)] < 0 ? -1 : 1;
-  FOG_ASSIGN_OR_RETURN(work.ch, makeChannels(data, sign));  // refuses too few samples
-  FOG_RETURN_IF_ERROR(checkSamples(data));
+  // The samples' own checks and what is missing read only the recording:
+  // they run on the second core beside the channels. Coverage waits for the
+  // checks (it assumes finite, increasing stamps), and the refusals come in
+  // the order they did in series: the channels', then the checks'.
+  DataCoverage coverageOfData;
+  auto checked = std::async(std::launch::async, [&data, &coverageOfData] {
+    Status s = checkSamples(data);
+    if (s.isOk()) coverageOfData = measureCoverage(data);
+    return s;
+  });
+  auto channels = makeChannels(data, sign);  // refuses too few samples
+  const Status samplesChecked = checked.get();
+  if (!channels) return channels.status();
+  work.ch = std::move(*channels);
+  FOG_RETURN_IF_ERROR(samplesChecked);
   Channels& ch = work.ch;
   TestPointResult& r = work.r;
   r.index = data.index;
@@ -433,7 +451,7 @@ Status prepare(PointWork& work) {
 
   // What is missing, and whether the rest can still support a delay: checked
   // before the frequency is estimated from data a gap would distort.
-  work.coverage = measureCoverage(data);
+  work.coverage = coverageOfData;
   const DataCoverage& coverage = work.coverage;
   r.lostTableFrames = coverage.lostTableFrames;
   r.coveredS = coverage.coveredS();
@@ -559,7 +577,8 @@ Status fitGyro(PointWork& work) {
 void computeResiduals(PointWork& work) {
   const Channels& ch = work.ch;
   TestPointResult& r = work.r;
-  work.tableResidual = tableResiduals(ch.table, r.tableFit);
+  // The table's on the second core, beside the gyro's.
+  auto tableResidual = std::async(std::launch::async, [&ch, &r] { return tableResiduals(ch.table, r.tableFit); });
   // The cumulative gyro angle's offset (for plots that overlay the fit) and
   // its residuals, in one pass: the running sum of the increments, the fit
   // and their difference (the offset, their mean, is taken off after).
@@ -578,6 +597,7 @@ void computeResiduals(PointWork& work) {
   }
   r.gyroFit.offsetDeg = sum / static_cast<double>(g.size());
   for (auto& v : residual) v -= r.gyroFit.offsetDeg;
+  work.tableResidual = tableResidual.get();
 }
 
   // 4. Joint fit: one frequency, the delay as a parameter. The per-period
@@ -758,6 +778,12 @@ Result<TestPointResult> fitAndCheck(PointWork& work) {
   FOG_RETURN_IF_ERROR(fitGyro(work));
   computeResiduals(work);
   FOG_RETURN_IF_ERROR(fitJointAndTrack(work));
+  // The harmonics need only the table residual and the joint frequency: they
+  // take the second core while this one does the uncertainty.
+  work.harmonics = std::async(std::launch::async, [&table = work.ch.table, &residual = work.tableResidual,
+                                                   w = work.r.joint.omegaRadPerS] {
+    return harmonicAmplitude(table.timeS, residual, w, SampleStream::kTable);
+  });
   honestUncertainty(work);
   FOG_RETURN_IF_ERROR(breakDown(work));
   addValidityChecks(work);

@@ -111,4 +111,44 @@ MeanAndSpread meanAndSpread(const std::vector<double>& v) {
   return m;
 }
 
+double medianElement(std::vector<double>& v) {
+  if (v.empty()) return 0.0;
+  const std::size_t middle = v.size() / 2;
+  // Distinct values and how often each occurs, compared bit for bit (a NaN
+  // is never equal to itself, so it overflows the table and goes the
+  // general way).
+  constexpr std::size_t kDistinct = 16;
+  double value[kDistinct];
+  std::size_t count[kDistinct] = {};
+  std::size_t distinct = 0;
+  bool few = true;
+  for (double x : v) {
+    std::size_t j = 0;
+    while (j < distinct && !(value[j] == x && std::signbit(value[j]) == std::signbit(x))) ++j;
+    if (j == distinct) {
+      if (distinct == kDistinct) {
+        few = false;
+        break;
+      }
+      value[distinct++] = x;
+    }
+    ++count[j];
+  }
+  if (few) {
+    std::size_t order[kDistinct];
+    for (std::size_t j = 0; j < distinct; ++j) order[j] = j;
+    // -0 before +0, as a strict weak order on the distinct values.
+    std::sort(order, order + distinct, [&](std::size_t a, std::size_t b) {
+      return value[a] < value[b] || (value[a] == value[b] && std::signbit(value[a]) && !std::signbit(value[b]));
+    });
+    std::size_t seen = 0;
+    for (std::size_t j = 0; j < distinct; ++j) {
+      seen += count[order[j]];
+      if (seen > middle) return value[order[j]];
+    }
+  }
+  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(middle), v.end());
+  return v[middle];
+}
+
 }  // namespace fog::analysis
