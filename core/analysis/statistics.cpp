@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 
 namespace fog::analysis {
 
@@ -116,23 +118,35 @@ double medianElement(std::vector<double>& v) {
   const std::size_t middle = v.size() / 2;
   // Distinct values and how often each occurs, compared bit for bit (a NaN
   // is never equal to itself, so it overflows the table and goes the
-  // general way).
+  // general way). Stamps alternate among a few intervals: the value last
+  // seen is tried first.
   constexpr std::size_t kDistinct = 16;
   double value[kDistinct];
+  std::uint64_t bits[kDistinct];
   std::size_t count[kDistinct] = {};
-  std::size_t distinct = 0;
+  std::size_t distinct = 0, last = 0;
   bool few = true;
   for (double x : v) {
-    std::size_t j = 0;
-    while (j < distinct && !(value[j] == x && std::signbit(value[j]) == std::signbit(x))) ++j;
-    if (j == distinct) {
-      if (distinct == kDistinct) {
-        few = false;
-        break;
-      }
-      value[distinct++] = x;
+    if (x != x) {
+      few = false;
+      break;
     }
-    ++count[j];
+    std::uint64_t b;
+    std::memcpy(&b, &x, sizeof b);
+    if (distinct == 0 || bits[last] != b) {
+      std::size_t j = 0;
+      while (j < distinct && bits[j] != b) ++j;
+      if (j == distinct) {
+        if (distinct == kDistinct) {
+          few = false;
+          break;
+        }
+        value[distinct] = x;
+        bits[distinct++] = b;
+      }
+      last = j;
+    }
+    ++count[last];
   }
   if (few) {
     std::size_t order[kDistinct];
