@@ -119,45 +119,21 @@ IncrementResidualSums incrementResidualSums(const GyroChannel& gyro, const std::
   return out;
 }
 
-double estimateWhiteRateVariance(const GyroChannel& gyro, const IncrementResidualSums& sums, double blockS) {
-  const std::size_t n = sums.prefix.size() - 1;
-  const double s2 = sums.quantisationVarianceDeg2;
-  const Blocks b = blocksOf(gyro, sums, blockS);
-  countPass(SampleStream::kGyro);
-  double v = 0.0;
-  std::size_t pairs = 0;
-  for (std::size_t k = 0; k + 2 * b.m <= n; ++k) {
-    const double d = b.sum(k) - b.sum(k + b.m);
-    v += d * d;
-    ++pairs;
-  }
+namespace {
+// The white rate noise from the sum of squared differences of adjacent
+// block sums (v over `pairs` of them).
+double whiteRateFromSums(double v, std::size_t pairs, double s2, const Blocks& b) {
   if (pairs == 0) return 0.0;
   v /= static_cast<double>(pairs);
   return std::max(v - 6.0 * s2, 1e-6 * v) / (2.0 * b.blockS);
 }
 
-double estimateWhiteRateVariance(const GyroChannel& gyro, const std::vector<double>& r, double blockS) {
-  return estimateWhiteRateVariance(gyro, incrementResidualSums(gyro, r), blockS);
-}
-
-BlockRateVariance blockRateVariance(const GyroChannel& gyro, const IncrementResidualSums& sums, double blockS) {
-  const std::size_t n = sums.prefix.size() - 1;
-  const double s2 = sums.quantisationVarianceDeg2;
-  // Angle random walk from overlapping sums of M increments: their variance
-  // is q*M*dt + 2*s2 (quantisation enters only at the two ends). Block sums
-  // see the noise at low frequencies, near the swing, where the lag is
-  // decided; per-frame variances would be swamped by quantisation.
-  const Blocks b = blocksOf(gyro, sums, blockS);
+// q and its standard error from the sum of squared block sums (v over
+// `blocks` of them).
+BlockRateVariance blockRateFromSums(const GyroChannel& gyro, double v, std::size_t blocks, std::size_t n, double s2,
+                                    const Blocks& b) {
   const std::size_t m = b.m;
   const double usedBlockS = b.blockS;
-  countPass(SampleStream::kGyro);
-  double v = 0.0;
-  std::size_t blocks = 0;
-  for (std::size_t k = 0; k + m <= n; ++k) {
-    const double sum = b.sum(k);
-    v += sum * sum;
-    ++blocks;
-  }
   v /= static_cast<double>(std::max<std::size_t>(blocks, 1));
   const double floorVar = 1e-6 * (v + 2.0 * s2) + 1e-30;
   const double q = std::max(v - 2.0 * s2, floorVar) / usedBlockS;
@@ -172,6 +148,73 @@ BlockRateVariance blockRateVariance(const GyroChannel& gyro, const IncrementResi
   const double v1 = 2.0 * s2 + q * gyro.framePeriodS;
   const double varV = 2.0 * walk * walk * (4.0 / 3.0) * static_cast<double>(m) / nd + 16.0 * s2 * s2 / nd;
   return {q, std::sqrt(varV + 4.0 * v1 * v1 / nd) / usedBlockS};
+}
+}  // namespace
+
+double estimateWhiteRateVariance(const GyroChannel& gyro, const IncrementResidualSums& sums, double blockS) {
+  const std::size_t n = sums.prefix.size() - 1;
+  const Blocks b = blocksOf(gyro, sums, blockS);
+  countPass(SampleStream::kGyro);
+  double v = 0.0;
+  std::size_t pairs = 0;
+  for (std::size_t k = 0; k + 2 * b.m <= n; ++k) {
+    const double d = b.sum(k) - b.sum(k + b.m);
+    v += d * d;
+    ++pairs;
+  }
+  return whiteRateFromSums(v, pairs, sums.quantisationVarianceDeg2, b);
+}
+
+double estimateWhiteRateVariance(const GyroChannel& gyro, const std::vector<double>& r, double blockS) {
+  return estimateWhiteRateVariance(gyro, incrementResidualSums(gyro, r), blockS);
+}
+
+BlockRateVariance blockRateVariance(const GyroChannel& gyro, const IncrementResidualSums& sums, double blockS) {
+  const std::size_t n = sums.prefix.size() - 1;
+  // Angle random walk from overlapping sums of M increments: their variance
+  // is q*M*dt + 2*s2 (quantisation enters only at the two ends). Block sums
+  // see the noise at low frequencies, near the swing, where the lag is
+  // decided; per-frame variances would be swamped by quantisation.
+  const Blocks b = blocksOf(gyro, sums, blockS);
+  countPass(SampleStream::kGyro);
+  double v = 0.0;
+  std::size_t blocks = 0;
+  for (std::size_t k = 0; k + b.m <= n; ++k) {
+    const double sum = b.sum(k);
+    v += sum * sum;
+    ++blocks;
+  }
+  return blockRateFromSums(gyro, v, blocks, n, sums.quantisationVarianceDeg2, b);
+}
+
+GyroNoiseViews gyroNoiseViews(const GyroChannel& gyro, const IncrementResidualSums& sums, double blockS,
+                              double weightBlockS) {
+  const std::size_t n = sums.prefix.size() - 1;
+  const double s2 = sums.quantisationVarianceDeg2;
+  const Blocks b = blocksOf(gyro, sums, blockS), w = blocksOf(gyro, sums, weightBlockS);
+  // The three sums side by side, each over k in order as in its own pass.
+  countPass(SampleStream::kGyro);
+  double white = 0.0, swing = 0.0, weight = 0.0;
+  std::size_t pairs = 0, swingBlocks = 0, weightBlocks = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    if (k + 2 * b.m <= n) {
+      const double d = b.sum(k) - b.sum(k + b.m);
+      white += d * d;
+      ++pairs;
+    }
+    if (k + b.m <= n) {
+      const double sum = b.sum(k);
+      swing += sum * sum;
+      ++swingBlocks;
+    }
+    if (k + w.m <= n) {
+      const double sum = w.sum(k);
+      weight += sum * sum;
+      ++weightBlocks;
+    }
+  }
+  return {whiteRateFromSums(white, pairs, s2, b), blockRateFromSums(gyro, swing, swingBlocks, n, s2, b),
+          blockRateFromSums(gyro, weight, weightBlocks, n, s2, w)};
 }
 
 void estimateGyroNoise(GyroChannel& gyro, const IncrementResidualSums& sums, double blockS) {

@@ -544,12 +544,17 @@ void measureGyroNoise(PointWork& work) {
   const double f0 = work.f0;
   const SineFit& table4 = r.tableFit;
   const SineFit gyroStart = fitGyroLinear(ch.gyro, table4.omegaRadPerS, ch.referenceS, false);
-  const auto startResiduals = gyroIncrementResiduals(ch.gyro, gyroStart);
   const double blockS = std::clamp(0.05 / f0, 0.05, 1.0);
-  const IncrementResidualSums sums = incrementResidualSums(ch.gyro, startResiduals);  // shared by all three
-  r.noise.gyroArwDegPerSqrtH = std::sqrt(estimateWhiteRateVariance(ch.gyro, sums, blockS)) * 60.0;
-  const double whiteRateVariance = blockRateVariance(ch.gyro, sums, blockS).varianceDeg2PerS;
-  estimateGyroNoise(ch.gyro, sums, std::clamp(0.25 / f0, 0.05, std::max(0.05, r.durationS / 8.0)));
+  // The start fit's residuals' sums, shared by all three, in one pass.
+  const IncrementResidualSums sums = gyroIncrementResidualSums(ch.gyro, gyroStart);
+  // The three views of the sums in one pass over them.
+  const GyroNoiseViews views =
+      gyroNoiseViews(ch.gyro, sums, blockS, std::clamp(0.25 / f0, 0.05, std::max(0.05, r.durationS / 8.0)));
+  r.noise.gyroArwDegPerSqrtH = std::sqrt(views.whiteRateVarianceDeg2PerS) * 60.0;
+  const double whiteRateVariance = views.swingBlocks.varianceDeg2PerS;
+  // What estimateGyroNoise applies.
+  ch.gyro.setNoise(views.weightBlocks.varianceDeg2PerS, sums.quantisationVarianceDeg2);
+  ch.gyro.arwVarianceStdDeg2PerS = views.weightBlocks.stdDeg2PerS;
   work.gyroStart = gyroStart;
   work.whiteRateVariance = whiteRateVariance;
 }

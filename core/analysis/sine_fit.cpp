@@ -301,4 +301,33 @@ std::vector<double> gyroIncrementResiduals(const GyroChannel& gyro, const SineFi
   return r;
 }
 
+IncrementResidualSums gyroIncrementResidualSums(const GyroChannel& gyro, const SineFit& f) {
+  // The residual, the lag-1 products of neighbours that share an end point
+  // and the prefix sums, each summed in the order the three separate passes
+  // (gyroIncrementResiduals, then incrementResidualSums) sum them.
+  countPass(SampleStream::kGyro);
+  const std::size_t n = gyro.size();
+  IncrementResidualSums out;
+  out.prefix.resize(n + 1);
+  out.prefix[0] = 0.0;
+  GyroSinCosStream phase(gyro, f.omegaRadPerS, 0.0);
+  double g1 = 0.0, previous = 0.0;
+  std::size_t n1 = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    double s1, c1, s0, c0;
+    phase.next(k, s1, c1, s0, c0);
+    const double r = gyro.incrementDeg[k] -
+                     (f.a * (s1 - s0) + f.b * (c1 - c0) + f.trendDegPerS * (gyro.endS[k] - gyro.startS[k]));
+    if (k > 0 && gyro.continuesPrevious[k]) {
+      g1 += r * previous;
+      ++n1;
+    }
+    out.prefix[k + 1] = out.prefix[k] + r;
+    previous = r;
+  }
+  g1 = n1 ? g1 / static_cast<double>(n1) : 0.0;
+  out.quantisationVarianceDeg2 = std::max(-g1, 0.0);
+  return out;
+}
+
 }  // namespace fog::analysis
