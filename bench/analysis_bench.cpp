@@ -10,6 +10,7 @@
 #include "core/analysis/frequency_response.h"
 #include "core/analysis/joint_fit.h"
 #include "core/analysis/sine_fit.h"
+#include "core/analysis/validity.h"
 #include "core/common/units.h"
 #include "core/model/simulator.h"
 #include "core/protocol/recording_builder.h"
@@ -144,6 +145,28 @@ void BM_StageJoint(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(fog::analysis::fitJoint(s.ch, s.table4, s.gyro4));
 }
 BENCHMARK(BM_StageJoint)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
+
+// The checks' passes over the 4-parameter fits' table residual: the
+// repeating errors' correlation at up to 20 period lags, and the harmonics
+// 2..5 (a 9-column fit).
+void BM_StagePeriodicInflation(benchmark::State& state) {
+  const auto& s = slowStages();
+  const auto residual = fog::analysis::tableResiduals(s.ch.table, s.table4);
+  const double samplesPerPeriod = (fog::kTwoPi / s.table4.omegaRadPerS) / 1e-3;
+  for (auto _ : state)
+    benchmark::DoNotOptimize(fog::analysis::periodicResidualInflation(
+        residual, samplesPerPeriod, 29.4, s.ch.table.noiseDeg * s.ch.table.noiseDeg, fog::analysis::SampleStream::kTable));
+}
+BENCHMARK(BM_StagePeriodicInflation)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
+
+void BM_StageHarmonics(benchmark::State& state) {
+  const auto& s = slowStages();
+  const auto residual = fog::analysis::tableResiduals(s.ch.table, s.table4);
+  for (auto _ : state)
+    benchmark::DoNotOptimize(fog::analysis::harmonicAmplitude(s.ch.table.timeS, residual, s.table4.omegaRadPerS,
+                                                              fog::analysis::SampleStream::kTable));
+}
+BENCHMARK(BM_StageHarmonics)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
 
 // Simulator speed: seconds of simulated session per second of wall time.
 void BM_SimulateSlowSession(benchmark::State& state) {
