@@ -44,38 +44,92 @@ bool windowPhase(const NormalSums<4>& gram, std::size_t rows, double& psi, doubl
   return true;
 }
 
-// gyroTurnsAgainst: the gyro is in antiphase with the table (a reversed axis);
-// its phase is then taken half a turn round, as in the joint fit.
-std::vector<PeriodDelay> periodTrack(const Channels& ch, double w, double referenceS, bool gyroTurnsAgainst) {
-  std::vector<PeriodDelay> out;
-  const double period = kTwoPi / w;
+// The per-period track's windows: whole periods at the track's frequency w
+// from the first time both channels cover; none when the count is beyond
+// reason (checked before the cast: a fit run from a wild start, a planned
+// frequency of 1e300 Hz in fog_fuzz_analysis, gave 1e301 periods).
+struct PeriodWindows {
+  double first = 0.0, period = 0.0;
+  int count = 0;
+  double start(int j) const { return first + j * period; }
+};
+PeriodWindows periodWindows(const Channels& ch, double w) {
   const auto& tt = ch.table.timeS;
   const auto& g = ch.gyro;
-  countPass(SampleStream::kTable);
-  countPass(SampleStream::kGyro);
-  SinCosStream tablePhase(w, 0.0);
-  GyroSinCosStream gyroPhase(g, w, 0.0);
-  const double first = std::max(tt.front(), g.startS.front());
+  PeriodWindows out;
+  out.period = kTwoPi / w;
+  out.first = std::max(tt.front(), g.startS.front());
   const double last = std::min(tt.back(), g.endS.back());
-  // Checked before the cast: a fit run from a wild start (a planned
-  // frequency of 1e300 Hz, fog_fuzz_analysis) gave 1e301 periods.
-  const double periods = std::floor((last - first) / period);
-  if (!(periods >= 0.0 && periods <= static_cast<double>(tt.size()))) return out;
-  const int count = static_cast<int>(periods);
-  std::size_t i = 0, k = 0;
-  for (int j = 0; j < count; ++j) {
-    const double a = first + j * period, b = a + period;
-    // One small 3-parameter fit per channel and period, at the joint frequency.
-    // The phase streams must see every sample in order, also those skipped.
-    double sn, cs, s1, c1, s0, c0;
-    for (; i < tt.size() && tt[i] < a; ++i) tablePhase.next(tt[i], sn, cs);
-    NormalSums<4> table, gyro;
-    const std::size_t i0 = i;
-    for (; i < tt.size() && tt[i] < b; ++i) {
-      double v[4] = {0.0, 0.0, 1.0, ch.table.angleDeg[i]};
-      tablePhase.next(tt[i], v[0], v[1]);
-      table.add(v, 0.0);
+  const double periods = std::floor((last - out.first) / out.period);
+  if (periods >= 0.0 && periods <= static_cast<double>(tt.size())) out.count = static_cast<int>(periods);
+  return out;
+}
+
+// The table's part of the track: the Gram matrix of [sin, cos, 1, angle]
+// over each window [start, start + period), with its row count.
+struct TablePeriodSums {
+  std::vector<NormalSums<4>> gram;
+  std::vector<std::size_t> rows;
+};
+
+// The 4-parameter table fit's residuals and, in the same pass (the same
+// sines and cosines, at the fit's frequency, which the track uses), the
+// track's table sums: the samples are assigned to windows as the track's
+// own loop would (skip to a window's start, take samples before its end).
+std::vector<double> tableResidualsAndPeriodSums(const TableChannel& table, const SineFit& f,
+                                                const PeriodWindows& windows, TablePeriodSums& sums) {
+  const auto& tt = table.timeS;
+  const std::size_t n = tt.size();
+  countPass(SampleStream::kTable);
+  std::vector<double> r(n);
+  sums.gram.assign(static_cast<std::size_t>(windows.count), NormalSums<4>{});
+  sums.rows.assign(static_cast<std::size_t>(windows.count), 0);
+  SinCosStream phase(f.omegaRadPerS, 0.0);
+  int j = 0;
+  bool inside = false;  // past window j's start
+  double a = windows.start(0), b = a + windows.period;
+  for (std::size_t i = 0; i < n; ++i) {
+    double sn, cs;
+    phase.next(tt[i], sn, cs);
+    r[i] = table.angleDeg[i] - (f.a * sn + f.b * cs + f.offsetDeg);
+    while (j < windows.count) {
+      if (!inside) {
+        if (tt[i] < a) break;  // before the window: skipped
+        inside = true;
+      }
+      if (tt[i] < b) {
+        const double v[4] = {sn, cs, 1.0, table.angleDeg[i]};
+        sums.gram[static_cast<std::size_t>(j)].add(v, 0.0);
+        ++sums.rows[static_cast<std::size_t>(j)];
+        break;
+      }
+      // Past the window's end: the next window looks at this sample.
+      ++j;
+      inside = false;
+      a = windows.start(j);
+      b = a + windows.period;
     }
+  }
+  return r;
+}
+
+// The per-period track from the table's sums and the gyro's increments.
+// gyroTurnsAgainst: the gyro is in antiphase with the table (a reversed axis);
+// its phase is then taken half a turn round, as in the joint fit.
+std::vector<PeriodDelay> periodTrack(const Channels& ch, double w, double referenceS, bool gyroTurnsAgainst,
+                                     const PeriodWindows& windows, const TablePeriodSums& tableSums) {
+  std::vector<PeriodDelay> out;
+  const double period = windows.period;
+  const auto& g = ch.gyro;
+  countPass(SampleStream::kGyro);
+  GyroSinCosStream gyroPhase(g, w, 0.0);
+  std::size_t k = 0;
+  for (int j = 0; j < windows.count; ++j) {
+    const double a = windows.start(j), b = a + period;
+    // One small 3-parameter fit per channel and period, at the joint frequency.
+    // The phase stream must see every sample in order, also those skipped.
+    double s1, c1, s0, c0;
+    NormalSums<4> gyro;
     for (; k < g.size() && g.startS[k] < a; ++k) gyroPhase.next(k, s1, c1, s0, c0);
     const std::size_t k0 = k;
     for (; k < g.size() && g.endS[k] <= b; ++k) {
@@ -84,7 +138,8 @@ std::vector<PeriodDelay> periodTrack(const Channels& ch, double w, double refere
       gyro.add(v, 0.0);
     }
     double psiT = 0.0, psiG = 0.0, ampT = 0.0, ampG = 0.0;
-    if (windowPhase(table, i - i0, psiT, ampT) && windowPhase(gyro, k - k0, psiG, ampG)) {
+    const auto jj = static_cast<std::size_t>(j);
+    if (windowPhase(tableSums.gram[jj], tableSums.rows[jj], psiT, ampT) && windowPhase(gyro, k - k0, psiG, ampG)) {
       if (gyroTurnsAgainst) psiG += kPi;
       out.push_back({referenceS + 0.5 * (a + b), wrapToHalfPeriod((psiT - psiG) / w, period) * 1e3, ampT});
     }
@@ -110,6 +165,10 @@ struct PointWork {
   // Residuals of the 4-parameter fits, one per sample: table angles, and the
   // cumulative gyro angle's (its offset removed).
   std::vector<double> tableResidual, gyroAngleResidual;
+  // The per-period track's windows and table sums, taken with the table
+  // residual (computeResiduals).
+  PeriodWindows trackWindows;
+  TablePeriodSums trackTableSums;
   // From the joint fit: the table's amplitude, its frequency (rad/s) and the
   // mean table sample interval.
   double amplitude = 0.0, w = 0.0, tableInterval = 0.0;
@@ -582,8 +641,12 @@ Status fitGyro(PointWork& work) {
 void computeResiduals(PointWork& work) {
   const Channels& ch = work.ch;
   TestPointResult& r = work.r;
-  // The table's on the second core, beside the gyro's.
-  auto tableResidual = std::async(std::launch::async, [&ch, &r] { return tableResiduals(ch.table, r.tableFit); });
+  // The table's on the second core, beside the gyro's, with the per-period
+  // track's table sums (at the table fit's frequency, as the residuals).
+  work.trackWindows = periodWindows(ch, r.tableFit.omegaRadPerS);
+  auto tableResidual = std::async(std::launch::async, [&ch, &r, &work] {
+    return tableResidualsAndPeriodSums(ch.table, r.tableFit, work.trackWindows, work.trackTableSums);
+  });
   // The cumulative gyro angle's offset (for plots that overlay the fit) and
   // its residuals, in one pass: the running sum of the increments, the fit
   // and their difference (the offset, their mean, is taken off after).
@@ -613,7 +676,8 @@ Status fitJointAndTrack(PointWork& work) {
   const double trackOmega = r.tableFit.omegaRadPerS;
   const bool gyroTurnsAgainst = work.gyroTurnsAgainst;
   auto track = std::async(std::launch::async,
-                          [&] { return periodTrack(ch, trackOmega, ch.referenceS, gyroTurnsAgainst); });
+                          [&] { return periodTrack(ch, trackOmega, ch.referenceS, gyroTurnsAgainst, work.trackWindows,
+                                                   work.trackTableSums); });
   const double whiteRateVariance = work.whiteRateVariance;
   auto joint = fitJoint(ch, r.tableFit, r.gyroFit);
   r.periodTrack = track.get();
