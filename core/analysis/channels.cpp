@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/analysis/sample_passes.h"
+#include "core/analysis/statistics.h"
 #include "core/common/units.h"
 
 namespace fog::analysis {
@@ -16,10 +17,39 @@ void GyroChannel::setNoise(double qDeg2PerS, double s2Deg2) {
   countPass(SampleStream::kGyro);
   cholDiag.assign(n, 0.0);
   cholSub.assign(n, 0.0);
+  // Each factor entry is a division and a square root that wait for the
+  // previous entry: about 40 cycles a frame. With equal intervals the
+  // recursion settles (to the bit, or into a short cycle) within some
+  // hundreds of frames, so the last few (diag, previous entry) -> (sub,
+  // entry) results are kept and reused when the same inputs come again:
+  // the same inputs give the same doubles, so the factor is unchanged.
+  constexpr int kMemo = 4;
+  double memoDiag[kMemo], memoPrev[kMemo], memoSub[kMemo], memoChol[kMemo];
+  int memoSize = 0, memoNext = 0;
   for (std::size_t k = 0; k < n; ++k) {
     const double diag = qDeg2PerS * (endS[k] - startS[k]) + 2.0 * s2Deg2;
     double sub = 0.0;
-    if (k > 0 && continuesPrevious[k]) sub = -s2Deg2 / cholDiag[k - 1];
+    if (k > 0 && continuesPrevious[k]) {
+      const double prev = cholDiag[k - 1];
+      int hit = -1;
+      for (int m = 0; m < memoSize; ++m)
+        if (memoDiag[m] == diag && memoPrev[m] == prev) hit = m;
+      if (hit >= 0) {
+        cholSub[k] = memoSub[hit];
+        cholDiag[k] = memoChol[hit];
+        continue;
+      }
+      sub = -s2Deg2 / prev;
+      cholSub[k] = sub;
+      cholDiag[k] = std::sqrt(std::max(diag - sub * sub, 1e-30));
+      memoDiag[memoNext] = diag;
+      memoPrev[memoNext] = prev;
+      memoSub[memoNext] = sub;
+      memoChol[memoNext] = cholDiag[k];
+      memoNext = (memoNext + 1) % kMemo;
+      memoSize = std::min(memoSize + 1, kMemo);
+      continue;
+    }
     cholSub[k] = sub;
     cholDiag[k] = std::sqrt(std::max(diag - sub * sub, 1e-30));
   }
@@ -89,45 +119,21 @@ IncrementResidualSums incrementResidualSums(const GyroChannel& gyro, const std::
   return out;
 }
 
-double estimateWhiteRateVariance(const GyroChannel& gyro, const IncrementResidualSums& sums, double blockS) {
-  const std::size_t n = sums.prefix.size() - 1;
-  const double s2 = sums.quantisationVarianceDeg2;
-  const Blocks b = blocksOf(gyro, sums, blockS);
-  countPass(SampleStream::kGyro);
-  double v = 0.0;
-  std::size_t pairs = 0;
-  for (std::size_t k = 0; k + 2 * b.m <= n; ++k) {
-    const double d = b.sum(k) - b.sum(k + b.m);
-    v += d * d;
-    ++pairs;
-  }
+namespace {
+// The white rate noise from the sum of squared differences of adjacent
+// block sums (v over `pairs` of them).
+double whiteRateFromSums(double v, std::size_t pairs, double s2, const Blocks& b) {
   if (pairs == 0) return 0.0;
   v /= static_cast<double>(pairs);
   return std::max(v - 6.0 * s2, 1e-6 * v) / (2.0 * b.blockS);
 }
 
-double estimateWhiteRateVariance(const GyroChannel& gyro, const std::vector<double>& r, double blockS) {
-  return estimateWhiteRateVariance(gyro, incrementResidualSums(gyro, r), blockS);
-}
-
-BlockRateVariance blockRateVariance(const GyroChannel& gyro, const IncrementResidualSums& sums, double blockS) {
-  const std::size_t n = sums.prefix.size() - 1;
-  const double s2 = sums.quantisationVarianceDeg2;
-  // Angle random walk from overlapping sums of M increments: their variance
-  // is q*M*dt + 2*s2 (quantisation enters only at the two ends). Block sums
-  // see the noise at low frequencies, near the swing, where the lag is
-  // decided; per-frame variances would be swamped by quantisation.
-  const Blocks b = blocksOf(gyro, sums, blockS);
+// q and its standard error from the sum of squared block sums (v over
+// `blocks` of them).
+BlockRateVariance blockRateFromSums(const GyroChannel& gyro, double v, std::size_t blocks, std::size_t n, double s2,
+                                    const Blocks& b) {
   const std::size_t m = b.m;
   const double usedBlockS = b.blockS;
-  countPass(SampleStream::kGyro);
-  double v = 0.0;
-  std::size_t blocks = 0;
-  for (std::size_t k = 0; k + m <= n; ++k) {
-    const double sum = b.sum(k);
-    v += sum * sum;
-    ++blocks;
-  }
   v /= static_cast<double>(std::max<std::size_t>(blocks, 1));
   const double floorVar = 1e-6 * (v + 2.0 * s2) + 1e-30;
   const double q = std::max(v - 2.0 * s2, floorVar) / usedBlockS;
@@ -143,6 +149,73 @@ BlockRateVariance blockRateVariance(const GyroChannel& gyro, const IncrementResi
   const double varV = 2.0 * walk * walk * (4.0 / 3.0) * static_cast<double>(m) / nd + 16.0 * s2 * s2 / nd;
   return {q, std::sqrt(varV + 4.0 * v1 * v1 / nd) / usedBlockS};
 }
+}  // namespace
+
+double estimateWhiteRateVariance(const GyroChannel& gyro, const IncrementResidualSums& sums, double blockS) {
+  const std::size_t n = sums.prefix.size() - 1;
+  const Blocks b = blocksOf(gyro, sums, blockS);
+  countPass(SampleStream::kGyro);
+  double v = 0.0;
+  std::size_t pairs = 0;
+  for (std::size_t k = 0; k + 2 * b.m <= n; ++k) {
+    const double d = b.sum(k) - b.sum(k + b.m);
+    v += d * d;
+    ++pairs;
+  }
+  return whiteRateFromSums(v, pairs, sums.quantisationVarianceDeg2, b);
+}
+
+double estimateWhiteRateVariance(const GyroChannel& gyro, const std::vector<double>& r, double blockS) {
+  return estimateWhiteRateVariance(gyro, incrementResidualSums(gyro, r), blockS);
+}
+
+BlockRateVariance blockRateVariance(const GyroChannel& gyro, const IncrementResidualSums& sums, double blockS) {
+  const std::size_t n = sums.prefix.size() - 1;
+  // Angle random walk from overlapping sums of M increments: their variance
+  // is q*M*dt + 2*s2 (quantisation enters only at the two ends). Block sums
+  // see the noise at low frequencies, near the swing, where the lag is
+  // decided; per-frame variances would be swamped by quantisation.
+  const Blocks b = blocksOf(gyro, sums, blockS);
+  countPass(SampleStream::kGyro);
+  double v = 0.0;
+  std::size_t blocks = 0;
+  for (std::size_t k = 0; k + b.m <= n; ++k) {
+    const double sum = b.sum(k);
+    v += sum * sum;
+    ++blocks;
+  }
+  return blockRateFromSums(gyro, v, blocks, n, sums.quantisationVarianceDeg2, b);
+}
+
+GyroNoiseViews gyroNoiseViews(const GyroChannel& gyro, const IncrementResidualSums& sums, double blockS,
+                              double weightBlockS) {
+  const std::size_t n = sums.prefix.size() - 1;
+  const double s2 = sums.quantisationVarianceDeg2;
+  const Blocks b = blocksOf(gyro, sums, blockS), w = blocksOf(gyro, sums, weightBlockS);
+  // The three sums side by side, each over k in order as in its own pass.
+  countPass(SampleStream::kGyro);
+  double white = 0.0, swing = 0.0, weight = 0.0;
+  std::size_t pairs = 0, swingBlocks = 0, weightBlocks = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    if (k + 2 * b.m <= n) {
+      const double d = b.sum(k) - b.sum(k + b.m);
+      white += d * d;
+      ++pairs;
+    }
+    if (k + b.m <= n) {
+      const double sum = b.sum(k);
+      swing += sum * sum;
+      ++swingBlocks;
+    }
+    if (k + w.m <= n) {
+      const double sum = w.sum(k);
+      weight += sum * sum;
+      ++weightBlocks;
+    }
+  }
+  return {whiteRateFromSums(white, pairs, s2, b), blockRateFromSums(gyro, swing, swingBlocks, n, s2, b),
+          blockRateFromSums(gyro, weight, weightBlocks, n, s2, w)};
+}
 
 void estimateGyroNoise(GyroChannel& gyro, const IncrementResidualSums& sums, double blockS) {
   const BlockRateVariance q = blockRateVariance(gyro, sums, blockS);
@@ -153,14 +226,6 @@ void estimateGyroNoise(GyroChannel& gyro, const IncrementResidualSums& sums, dou
 void estimateGyroNoise(GyroChannel& gyro, const std::vector<double>& r, double blockS) {
   estimateGyroNoise(gyro, incrementResidualSums(gyro, r), blockS);
 }
-
-namespace {
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
-  return v[v.size() / 2];
-}
-}  // namespace
 
 Result<Channels> makeChannels(const TestPointData& data, double incrementScale) {
   const int axis = static_cast<int>(data.axis);
@@ -193,7 +258,7 @@ Result<Channels> makeChannels(const TestPointData& data, double incrementScale) 
   for (std::size_t k = 1; k < data.imu.size(); ++k)
     if (data.imu[k].lostBefore == 0) intervals.push_back(data.imu[k].timeS - data.imu[k - 1].timeS);
   GyroChannel& g = ch.gyro;
-  g.framePeriodS = median(intervals);
+  g.framePeriodS = medianElement(intervals);
   if (!(g.framePeriodS > 0.0)) return corruptData("IMU frame times do not increase");
 
   const std::size_t n = data.imu.size() - 1;

@@ -114,6 +114,17 @@ struct BlockRateVariance {
 };
 BlockRateVariance blockRateVariance(const GyroChannel& gyro, const IncrementResidualSums& sums, double blockS);
 
+// What measureGyroNoise (delay_analysis.cpp) takes from one set of sums, in
+// one pass over them: estimateWhiteRateVariance and blockRateVariance at
+// blockS, and blockRateVariance at weightBlockS (what estimateGyroNoise
+// applies), each the same number, to the bit, as from its own pass.
+struct GyroNoiseViews {
+  double whiteRateVarianceDeg2PerS = 0.0;
+  BlockRateVariance swingBlocks, weightBlocks;
+};
+GyroNoiseViews gyroNoiseViews(const GyroChannel& gyro, const IncrementResidualSums& sums, double blockS,
+                              double weightBlockS);
+
 // Estimates q and s2 from residuals of increments and applies them to the
 // channel: s2 from the lag-1 autocovariance, q from the variance of sums of
 // increments over blockS seconds.

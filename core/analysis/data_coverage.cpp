@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/analysis/sample_passes.h"
+#include "core/analysis/statistics.h"
 #include "core/common/test_plan.h"
 
 namespace fog::analysis {
@@ -29,9 +30,7 @@ double medianInterval(const std::vector<Sample>& s, bool imu) {
       if (imu && s[i].lostBefore != 0) continue;
     d.push_back(s[i].timeS - s[i - 1].timeS);
   }
-  if (d.empty()) return 0.0;
-  std::nth_element(d.begin(), d.begin() + static_cast<std::ptrdiff_t>(d.size() / 2), d.end());
-  return d[d.size() / 2];
+  return medianElement(d);
 }
 
 }  // namespace

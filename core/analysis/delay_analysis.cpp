@@ -44,38 +44,92 @@ bool windowPhase(const NormalSums<4>& gram, std::size_t rows, double& psi, doubl
   return true;
 }
 
-// gyroTurnsAgainst: the gyro is in antiphase with the table (a reversed axis);
-// its phase is then taken half a turn round, as in the joint fit.
-std::vector<PeriodDelay> periodTrack(const Channels& ch, double w, double referenceS, bool gyroTurnsAgainst) {
-  std::vector<PeriodDelay> out;
-  const double period = kTwoPi / w;
+// The per-period track's windows: whole periods at the track's frequency w
+// from the first time both channels cover; none when the count is beyond
+// reason (checked before the cast: a fit run from a wild start, a planned
+// frequency of 1e300 Hz in fog_fuzz_analysis, gave 1e301 periods).
+struct PeriodWindows {
+  double first = 0.0, period = 0.0;
+  int count = 0;
+  double start(int j) const { return first + j * period; }
+};
+PeriodWindows periodWindows(const Channels& ch, double w) {
   const auto& tt = ch.table.timeS;
   const auto& g = ch.gyro;
-  countPass(SampleStream::kTable);
-  countPass(SampleStream::kGyro);
-  SinCosStream tablePhase(w, 0.0);
-  GyroSinCosStream gyroPhase(g, w, 0.0);
-  const double first = std::max(tt.front(), g.startS.front());
+  PeriodWindows out;
+  out.period = kTwoPi / w;
+  out.first = std::max(tt.front(), g.startS.front());
   const double last = std::min(tt.back(), g.endS.back());
-  // Checked before the cast: a fit run from a wild start (a planned
-  // frequency of 1e300 Hz, fog_fuzz_analysis) gave 1e301 periods.
-  const double periods = std::floor((last - first) / period);
-  if (!(periods >= 0.0 && periods <= static_cast<double>(tt.size()))) return out;
-  const int count = static_cast<int>(periods);
-  std::size_t i = 0, k = 0;
-  for (int j = 0; j < count; ++j) {
-    const double a = first + j * period, b = a + period;
-    // One small 3-parameter fit per channel and period, at the joint frequency.
-    // The phase streams must see every sample in order, also those skipped.
-    double sn, cs, s1, c1, s0, c0;
-    for (; i < tt.size() && tt[i] < a; ++i) tablePhase.next(tt[i], sn, cs);
-    NormalSums<4> table, gyro;
-    const std::size_t i0 = i;
-    for (; i < tt.size() && tt[i] < b; ++i) {
-      double v[4] = {0.0, 0.0, 1.0, ch.table.angleDeg[i]};
-      tablePhase.next(tt[i], v[0], v[1]);
-      table.add(v, 0.0);
+  const double periods = std::floor((last - out.first) / out.period);
+  if (periods >= 0.0 && periods <= static_cast<double>(tt.size())) out.count = static_cast<int>(periods);
+  return out;
+}
+
+// The table's part of the track: the Gram matrix of [sin, cos, 1, angle]
+// over each window [start, start + period), with its row count.
+struct TablePeriodSums {
+  std::vector<NormalSums<4>> gram;
+  std::vector<std::size_t> rows;
+};
+
+// The 4-parameter table fit's residuals and, in the same pass (the same
+// sines and cosines, at the fit's frequency, which the track uses), the
+// track's table sums: the samples are assigned to windows as the track's
+// own loop would (skip to a window's start, take samples before its end).
+std::vector<double> tableResidualsAndPeriodSums(const TableChannel& table, const SineFit& f,
+                                                const PeriodWindows& windows, TablePeriodSums& sums) {
+  const auto& tt = table.timeS;
+  const std::size_t n = tt.size();
+  countPass(SampleStream::kTable);
+  std::vector<double> r(n);
+  sums.gram.assign(static_cast<std::size_t>(windows.count), NormalSums<4>{});
+  sums.rows.assign(static_cast<std::size_t>(windows.count), 0);
+  SinCosStream phase(f.omegaRadPerS, 0.0);
+  int j = 0;
+  bool inside = false;  // past window j's start
+  double a = windows.start(0), b = a + windows.period;
+  for (std::size_t i = 0; i < n; ++i) {
+    double sn, cs;
+    phase.next(tt[i], sn, cs);
+    r[i] = table.angleDeg[i] - (f.a * sn + f.b * cs + f.offsetDeg);
+    while (j < windows.count) {
+      if (!inside) {
+        if (tt[i] < a) break;  // before the window: skipped
+        inside = true;
+      }
+      if (tt[i] < b) {
+        const double v[4] = {sn, cs, 1.0, table.angleDeg[i]};
+        sums.gram[static_cast<std::size_t>(j)].add(v, 0.0);
+        ++sums.rows[static_cast<std::size_t>(j)];
+        break;
+      }
+      // Past the window's end: the next window looks at this sample.
+      ++j;
+      inside = false;
+      a = windows.start(j);
+      b = a + windows.period;
     }
+  }
+  return r;
+}
+
+// The per-period track from the table's sums and the gyro's increments.
+// gyroTurnsAgainst: the gyro is in antiphase with the table (a reversed axis);
+// its phase is then taken half a turn round, as in the joint fit.
+std::vector<PeriodDelay> periodTrack(const Channels& ch, double w, double referenceS, bool gyroTurnsAgainst,
+                                     const PeriodWindows& windows, const TablePeriodSums& tableSums) {
+  std::vector<PeriodDelay> out;
+  const double period = windows.period;
+  const auto& g = ch.gyro;
+  countPass(SampleStream::kGyro);
+  GyroSinCosStream gyroPhase(g, w, 0.0);
+  std::size_t k = 0;
+  for (int j = 0; j < windows.count; ++j) {
+    const double a = windows.start(j), b = a + period;
+    // One small 3-parameter fit per channel and period, at the joint frequency.
+    // The phase stream must see every sample in order, also those skipped.
+    double s1, c1, s0, c0;
+    NormalSums<4> gyro;
     for (; k < g.size() && g.startS[k] < a; ++k) gyroPhase.next(k, s1, c1, s0, c0);
     const std::size_t k0 = k;
     for (; k < g.size() && g.endS[k] <= b; ++k) {
@@ -84,7 +138,8 @@ std::vector<PeriodDelay> periodTrack(const Channels& ch, double w, double refere
       gyro.add(v, 0.0);
     }
     double psiT = 0.0, psiG = 0.0, ampT = 0.0, ampG = 0.0;
-    if (windowPhase(table, i - i0, psiT, ampT) && windowPhase(gyro, k - k0, psiG, ampG)) {
+    const auto jj = static_cast<std::size_t>(j);
+    if (windowPhase(tableSums.gram[jj], tableSums.rows[jj], psiT, ampT) && windowPhase(gyro, k - k0, psiG, ampG)) {
       if (gyroTurnsAgainst) psiG += kPi;
       out.push_back({referenceS + 0.5 * (a + b), wrapToHalfPeriod((psiT - psiG) / w, period) * 1e3, ampT});
     }
@@ -110,12 +165,19 @@ struct PointWork {
   // Residuals of the 4-parameter fits, one per sample: table angles, and the
   // cumulative gyro angle's (its offset removed).
   std::vector<double> tableResidual, gyroAngleResidual;
+  // The per-period track's windows and table sums, taken with the table
+  // residual (computeResiduals).
+  PeriodWindows trackWindows;
+  TablePeriodSums trackTableSums;
   // From the joint fit: the table's amplitude, its frequency (rad/s) and the
   // mean table sample interval.
   double amplitude = 0.0, w = 0.0, tableInterval = 0.0;
   // The per-period track as columns, and the lags' spread.
   std::vector<double> lags, times, amplitudes;
   MeanAndSpread spread;
+  // The harmonics' amplitude in the table residual (steady_sine), started on
+  // the second core as soon as the joint frequency is known.
+  std::future<double> harmonics;
 };
 
 // Thresholds of the validity checks (docs/method.md, "Validity checks").
@@ -173,17 +235,19 @@ void checkSteadySine(PointWork& work) {
   {
     const double windowS = std::max(periodS / 20.0, 3.0 * periodS / std::max(1.0, static_cast<double>(r.tableSamples) / r.periods));
     const auto& tableResidual = work.tableResidual;
-    // The harmonics (a 9-column fit over every table sample) on the second
-    // core, beside the smooth-residual checks.
-    auto harmonics = std::async(std::launch::async, [&] {
-      return harmonicAmplitude(ch.table.timeS, tableResidual, w, SampleStream::kTable);
-    });
+    // The harmonics (a 9-column fit over every table sample) run on the
+    // second core from the joint fit on (fitAndCheck), beside the uncertainty
+    // and the smooth-residual checks.
+    if (!work.harmonics.valid())
+      work.harmonics = std::async(std::launch::deferred, [&] {
+        return harmonicAmplitude(ch.table.timeS, tableResidual, w, SampleStream::kTable);
+      });
     r.tableMisfitFraction = smoothResidualRms(ch.table.timeS, tableResidual, windowS, SampleStream::kTable) / amplitude;
     const bool gyroChecked = ch.gyro.lostFrames == 0;  // lost increments make steps in the cumulative angle
     if (gyroChecked)
       r.gyroMisfitFraction = smoothResidualRms(ch.gyro.endS, gyroAngleResidual, windowS, SampleStream::kGyro) /
                              (amplitude * std::abs(r.magnitudeRatio));
-    r.harmonicFraction = harmonics.get() / amplitude;
+    r.harmonicFraction = work.harmonics.get() / amplitude;
     double amplitudeZ = 0.0;
     std::optional<LineFit> amplitudeLine;
     if (amplitudes.size() >= 3) amplitudeLine = fitLine(times, amplitudes);
@@ -419,8 +483,21 @@ namespace {
 Status prepare(PointWork& work) {
   const TestPointData& data = work.data;
   const int sign = work.constants.gyroSign[static_cast<std::size_t>(data.axis)] < 0 ? -1 : 1;
-  FOG_ASSIGN_OR_RETURN(work.ch, makeChannels(data, sign));  // refuses too few samples
-  FOG_RETURN_IF_ERROR(checkSamples(data));
+  // The samples' own checks and what is missing read only the recording:
+  // they run on the second core beside the channels. Coverage waits for the
+  // checks (it assumes finite, increasing stamps), and the refusals come in
+  // the order they did in series: the channels', then the checks'.
+  DataCoverage coverageOfData;
+  auto checked = std::async(std::launch::async, [&data, &coverageOfData] {
+    Status s = checkSamples(data);
+    if (s.isOk()) coverageOfData = measureCoverage(data);
+    return s;
+  });
+  auto channels = makeChannels(data, sign);  // refuses too few samples
+  const Status samplesChecked = checked.get();
+  if (!channels) return channels.status();
+  work.ch = std::move(*channels);
+  FOG_RETURN_IF_ERROR(samplesChecked);
   Channels& ch = work.ch;
   TestPointResult& r = work.r;
   r.index = data.index;
@@ -433,7 +510,7 @@ Status prepare(PointWork& work) {
 
   // What is missing, and whether the rest can still support a delay: checked
   // before the frequency is estimated from data a gap would distort.
-  work.coverage = measureCoverage(data);
+  work.coverage = coverageOfData;
   const DataCoverage& coverage = work.coverage;
   r.lostTableFrames = coverage.lostTableFrames;
   r.coveredS = coverage.coveredS();
@@ -526,12 +603,17 @@ void measureGyroNoise(PointWork& work) {
   const double f0 = work.f0;
   const SineFit& table4 = r.tableFit;
   const SineFit gyroStart = fitGyroLinear(ch.gyro, table4.omegaRadPerS, ch.referenceS, false);
-  const auto startResiduals = gyroIncrementResiduals(ch.gyro, gyroStart);
   const double blockS = std::clamp(0.05 / f0, 0.05, 1.0);
-  const IncrementResidualSums sums = incrementResidualSums(ch.gyro, startResiduals);  // shared by all three
-  r.noise.gyroArwDegPerSqrtH = std::sqrt(estimateWhiteRateVariance(ch.gyro, sums, blockS)) * 60.0;
-  const double whiteRateVariance = blockRateVariance(ch.gyro, sums, blockS).varianceDeg2PerS;
-  estimateGyroNoise(ch.gyro, sums, std::clamp(0.25 / f0, 0.05, std::max(0.05, r.durationS / 8.0)));
+  // The start fit's residuals' sums, shared by all three, in one pass.
+  const IncrementResidualSums sums = gyroIncrementResidualSums(ch.gyro, gyroStart);
+  // The three views of the sums in one pass over them.
+  const GyroNoiseViews views =
+      gyroNoiseViews(ch.gyro, sums, blockS, std::clamp(0.25 / f0, 0.05, std::max(0.05, r.durationS / 8.0)));
+  r.noise.gyroArwDegPerSqrtH = std::sqrt(views.whiteRateVarianceDeg2PerS) * 60.0;
+  const double whiteRateVariance = views.swingBlocks.varianceDeg2PerS;
+  // What estimateGyroNoise applies.
+  ch.gyro.setNoise(views.weightBlocks.varianceDeg2PerS, sums.quantisationVarianceDeg2);
+  ch.gyro.arwVarianceStdDeg2PerS = views.weightBlocks.stdDeg2PerS;
   work.gyroStart = gyroStart;
   work.whiteRateVariance = whiteRateVariance;
 }
@@ -559,7 +641,12 @@ Status fitGyro(PointWork& work) {
 void computeResiduals(PointWork& work) {
   const Channels& ch = work.ch;
   TestPointResult& r = work.r;
-  work.tableResidual = tableResiduals(ch.table, r.tableFit);
+  // The table's on the second core, beside the gyro's, with the per-period
+  // track's table sums (at the table fit's frequency, as the residuals).
+  work.trackWindows = periodWindows(ch, r.tableFit.omegaRadPerS);
+  auto tableResidual = std::async(std::launch::async, [&ch, &r, &work] {
+    return tableResidualsAndPeriodSums(ch.table, r.tableFit, work.trackWindows, work.trackTableSums);
+  });
   // The cumulative gyro angle's offset (for plots that overlay the fit) and
   // its residuals, in one pass: the running sum of the increments, the fit
   // and their difference (the offset, their mean, is taken off after).
@@ -578,6 +665,7 @@ void computeResiduals(PointWork& work) {
   }
   r.gyroFit.offsetDeg = sum / static_cast<double>(g.size());
   for (auto& v : residual) v -= r.gyroFit.offsetDeg;
+  work.tableResidual = tableResidual.get();
 }
 
   // 4. Joint fit: one frequency, the delay as a parameter. The per-period
@@ -588,7 +676,8 @@ Status fitJointAndTrack(PointWork& work) {
   const double trackOmega = r.tableFit.omegaRadPerS;
   const bool gyroTurnsAgainst = work.gyroTurnsAgainst;
   auto track = std::async(std::launch::async,
-                          [&] { return periodTrack(ch, trackOmega, ch.referenceS, gyroTurnsAgainst); });
+                          [&] { return periodTrack(ch, trackOmega, ch.referenceS, gyroTurnsAgainst, work.trackWindows,
+                                                   work.trackTableSums); });
   const double whiteRateVariance = work.whiteRateVariance;
   auto joint = fitJoint(ch, r.tableFit, r.gyroFit);
   r.periodTrack = track.get();
@@ -758,6 +847,12 @@ Result<TestPointResult> fitAndCheck(PointWork& work) {
   FOG_RETURN_IF_ERROR(fitGyro(work));
   computeResiduals(work);
   FOG_RETURN_IF_ERROR(fitJointAndTrack(work));
+  // The harmonics need only the table residual and the joint frequency: they
+  // take the second core while this one does the uncertainty.
+  work.harmonics = std::async(std::launch::async, [&table = work.ch.table, &residual = work.tableResidual,
+                                                   w = work.r.joint.omegaRadPerS] {
+    return harmonicAmplitude(table.timeS, residual, w, SampleStream::kTable);
+  });
   honestUncertainty(work);
   FOG_RETURN_IF_ERROR(breakDown(work));
   addValidityChecks(work);

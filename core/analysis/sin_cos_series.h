@@ -6,7 +6,9 @@
 // interleaved chains keep the CPU's pipelines full). The rotation is
 // re-derived whenever that difference changes by more than 1e-12 s, and the
 // chains restart from exact sincos every 256 samples, so the error is at
-// most that of a 0.1 ns timing error, far below anything measured.
+// most that of a 0.1 ns timing error, far below anything measured
+// (tests/core/analysis/sin_cos_series_test.cpp checks it, sample by sample
+// and in the sums the fits build, over 10 h at 1 kHz and 1 h at 11 Hz).
 //
 // Streaming matters: the fits are limited by memory traffic, not arithmetic,
 // so nothing per-sample is stored.

@@ -257,20 +257,34 @@ Result<SineFit> fitGyroNonlinear(const GyroChannel& gyro, const SineFit& start) 
   f.iterations = sol->iterations;
   f.chiSquarePerDof = sol->chiSquare / static_cast<double>(sol->residuals - 4);
   finishFit(f, &sol->covariance, 0, 1, 3);
-  const auto r = gyroIncrementResiduals(gyro, f);
-  double raw = 0.0;
+  // The raw residuals' RMS, summed as they are computed (the residuals
+  // gyroIncrementResiduals gives, in the same order) rather than stored.
   countPass(SampleStream::kGyro);
-  for (double v : r) raw += v * v;
-  f.residualRmsDeg = std::sqrt(raw / static_cast<double>(r.size()));
+  GyroSinCosStream phase(gyro, f.omegaRadPerS, 0.0);
+  double raw = 0.0;
+  for (std::size_t k = 0; k < gyro.size(); ++k) {
+    double s1, c1, s0, c0;
+    phase.next(k, s1, c1, s0, c0);
+    const double r = gyro.incrementDeg[k] -
+                     (f.a * (s1 - s0) + f.b * (c1 - c0) + f.trendDegPerS * (gyro.endS[k] - gyro.startS[k]));
+    raw += r * r;
+  }
+  f.residualRmsDeg = std::sqrt(raw / static_cast<double>(gyro.size()));
   return f;
 }
 
 std::vector<double> tableResiduals(const TableChannel& table, const SineFit& f) {
   const std::size_t n = table.timeS.size();
   countPass(SampleStream::kTable);
-  std::vector<double> r(n), sn(n), cs(n);
-  sinCosSeries(table.timeS.data(), n, f.omegaRadPerS, 0.0, sn.data(), cs.data());
-  for (std::size_t i = 0; i < n; ++i) r[i] = table.angleDeg[i] - (f.a * sn[i] + f.b * cs[i] + f.offsetDeg);
+  // Streamed: the sines and cosines are the series sinCosSeries would store,
+  // used as they come rather than written out and read back.
+  std::vector<double> r(n);
+  SinCosStream phase(f.omegaRadPerS, 0.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    double sn, cs;
+    phase.next(table.timeS[i], sn, cs);
+    r[i] = table.angleDeg[i] - (f.a * sn + f.b * cs + f.offsetDeg);
+  }
   return r;
 }
 
@@ -285,6 +299,35 @@ std::vector<double> gyroIncrementResiduals(const GyroChannel& gyro, const SineFi
            (f.a * (s1 - s0) + f.b * (c1 - c0) + f.trendDegPerS * (gyro.endS[k] - gyro.startS[k]));
   }
   return r;
+}
+
+IncrementResidualSums gyroIncrementResidualSums(const GyroChannel& gyro, const SineFit& f) {
+  // The residual, the lag-1 products of neighbours that share an end point
+  // and the prefix sums, each summed in the order the three separate passes
+  // (gyroIncrementResiduals, then incrementResidualSums) sum them.
+  countPass(SampleStream::kGyro);
+  const std::size_t n = gyro.size();
+  IncrementResidualSums out;
+  out.prefix.resize(n + 1);
+  out.prefix[0] = 0.0;
+  GyroSinCosStream phase(gyro, f.omegaRadPerS, 0.0);
+  double g1 = 0.0, previous = 0.0;
+  std::size_t n1 = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    double s1, c1, s0, c0;
+    phase.next(k, s1, c1, s0, c0);
+    const double r = gyro.incrementDeg[k] -
+                     (f.a * (s1 - s0) + f.b * (c1 - c0) + f.trendDegPerS * (gyro.endS[k] - gyro.startS[k]));
+    if (k > 0 && gyro.continuesPrevious[k]) {
+      g1 += r * previous;
+      ++n1;
+    }
+    out.prefix[k + 1] = out.prefix[k] + r;
+    previous = r;
+  }
+  g1 = n1 ? g1 / static_cast<double>(n1) : 0.0;
+  out.quantisationVarianceDeg2 = std::max(-g1, 0.0);
+  return out;
 }
 
 }  // namespace fog::analysis

@@ -45,6 +45,11 @@ Result<SineFit> fitGyroNonlinear(const GyroChannel& gyro, const SineFit& start);
 // Residuals of a fit: table angle residuals, or (unweighted) gyro increment residuals.
 std::vector<double> tableResiduals(const TableChannel& table, const SineFit& fit);
 std::vector<double> gyroIncrementResiduals(const GyroChannel& gyro, const SineFit& fit);
+// What every gyro noise estimate starts from (channels.h), from the
+// increment residuals of a fit, in one pass that stores no residual: the
+// same numbers, to the bit, as
+// incrementResidualSums(gyro, gyroIncrementResiduals(gyro, fit)).
+IncrementResidualSums gyroIncrementResidualSums(const GyroChannel& gyro, const SineFit& fit);
 
 // Wraps t (s) into (-period/2, period/2].
 double wrapToHalfPeriod(double t, double period);

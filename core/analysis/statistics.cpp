@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 
 namespace fog::analysis {
 
@@ -109,6 +111,58 @@ MeanAndSpread meanAndSpread(const std::vector<double>& v) {
   m.stdDev = std::sqrt(ss / static_cast<double>(v.size() - 1));
   m.stdOfMean = m.stdDev / std::sqrt(static_cast<double>(v.size()));
   return m;
+}
+
+double medianElement(std::vector<double>& v) {
+  if (v.empty()) return 0.0;
+  const std::size_t middle = v.size() / 2;
+  // Distinct values and how often each occurs, compared bit for bit (a NaN
+  // is never equal to itself, so it overflows the table and goes the
+  // general way). Stamps alternate among a few intervals: the value last
+  // seen is tried first.
+  constexpr std::size_t kDistinct = 16;
+  double value[kDistinct];
+  std::uint64_t bits[kDistinct];
+  std::size_t count[kDistinct] = {};
+  std::size_t distinct = 0, last = 0;
+  bool few = true;
+  for (double x : v) {
+    if (x != x) {
+      few = false;
+      break;
+    }
+    std::uint64_t b;
+    std::memcpy(&b, &x, sizeof b);
+    if (distinct == 0 || bits[last] != b) {
+      std::size_t j = 0;
+      while (j < distinct && bits[j] != b) ++j;
+      if (j == distinct) {
+        if (distinct == kDistinct) {
+          few = false;
+          break;
+        }
+        value[distinct] = x;
+        bits[distinct++] = b;
+      }
+      last = j;
+    }
+    ++count[last];
+  }
+  if (few) {
+    std::size_t order[kDistinct];
+    for (std::size_t j = 0; j < distinct; ++j) order[j] = j;
+    // -0 before +0, as a strict weak order on the distinct values.
+    std::sort(order, order + distinct, [&](std::size_t a, std::size_t b) {
+      return value[a] < value[b] || (value[a] == value[b] && std::signbit(value[a]) && !std::signbit(value[b]));
+    });
+    std::size_t seen = 0;
+    for (std::size_t j = 0; j < distinct; ++j) {
+      seen += count[order[j]];
+      if (seen > middle) return value[order[j]];
+    }
+  }
+  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(middle), v.end());
+  return v[middle];
 }
 
 }  // namespace fog::analysis

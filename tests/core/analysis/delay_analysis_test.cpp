@@ -2,7 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <random>
+#include <vector>
 
 #include "core/analysis/statistics.h"
 #include "core/analysis/theory.h"
@@ -81,6 +84,23 @@ TEST(Statistics, StudentTTailsMatchTables) {
   EXPECT_NEAR(studentTwoSidedP(5.0, 100000), std::erfc(5.0 / std::sqrt(2.0)), 1e-8);  // the normal's 5 sigma
   EXPECT_NEAR(studentTwoSidedP(0.0, 7), 1.0, 1e-12);
   EXPECT_NEAR(regularisedBeta(0.3, 2.0, 3.0), 0.3483, 1e-4);
+}
+
+// The counted median is the element nth_element gives, with few distinct
+// intervals (counted) and with many (the fallback), in any order.
+TEST(Statistics, MedianElementIsNthElements) {
+  std::mt19937_64 rng(3);
+  for (int distinct : {1, 2, 3, 9, 16, 17, 1000}) {
+    for (std::size_t n : {1u, 2u, 5u, 1000u, 1001u}) {
+      std::vector<double> v(n);
+      for (auto& x : v) x = 1e-3 + 1e-9 * static_cast<double>(rng() % static_cast<unsigned>(distinct));
+      std::vector<double> w = v;
+      std::nth_element(w.begin(), w.begin() + static_cast<std::ptrdiff_t>(n / 2), w.end());
+      EXPECT_EQ(medianElement(v), w[n / 2]) << distinct << " distinct of " << n;
+    }
+  }
+  std::vector<double> empty;
+  EXPECT_EQ(medianElement(empty), 0.0);
 }
 
 TEST(SwingFrequency, EstimatedFromThePeriodogram) {

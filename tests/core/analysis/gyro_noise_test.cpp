@@ -9,6 +9,9 @@
 #include <vector>
 
 #include "core/analysis/channels.h"
+#include "core/analysis/sine_fit.h"
+#include "core/common/units.h"
+#include "synthetic.h"
 
 namespace fog::analysis {
 namespace {
@@ -73,6 +76,34 @@ TEST(GyroNoise, WhiteRateVarianceIgnoresASlowBiasWander) {
   const double blockArw = std::sqrt(s.gyro.arwVarianceDeg2PerS) * 60.0;
   EXPECT_GT(blockArw, 1.3 * kArwDegPerSqrtH) << "the block sums no longer see the wander: this test proves nothing";
   EXPECT_NEAR(std::sqrt(estimateWhiteRateVariance(s.gyro, s.r, 0.5)) * 60.0, arw, 1e-6);
+}
+
+// The one-pass forms measureGyroNoise uses give the same doubles as the
+// passes they replace: the residual sums straight from a fit, and the three
+// block views of them.
+TEST(GyroNoise, OnePassSumsAndViewsEqualTheSeparatePasses) {
+  testing::SyntheticSpec spec;
+  spec.arwDegPerSqrtS = 2e-4;
+  spec.durationS = 60.0;
+  const auto data = testing::makeSynthetic(spec);
+  auto ch = makeChannels(data, 1.0);
+  ASSERT_TRUE(ch.isOk());
+  const SineFit fit = fitGyroLinear(ch->gyro, kTwoPi * spec.frequencyHz, ch->referenceS, false);
+  const IncrementResidualSums fused = gyroIncrementResidualSums(ch->gyro, fit);
+  const IncrementResidualSums separate = incrementResidualSums(ch->gyro, gyroIncrementResiduals(ch->gyro, fit));
+  EXPECT_EQ(fused.quantisationVarianceDeg2, separate.quantisationVarianceDeg2);
+  ASSERT_EQ(fused.prefix.size(), separate.prefix.size());
+  for (std::size_t k = 0; k < fused.prefix.size(); ++k) ASSERT_EQ(fused.prefix[k], separate.prefix[k]) << k;
+  for (const auto& [blockS, weightS] : {std::pair{0.05, 0.25}, {0.25, 0.05}, {1.0, 7.5}}) {
+    const GyroNoiseViews views = gyroNoiseViews(ch->gyro, separate, blockS, weightS);
+    EXPECT_EQ(views.whiteRateVarianceDeg2PerS, estimateWhiteRateVariance(ch->gyro, separate, blockS));
+    const BlockRateVariance swing = blockRateVariance(ch->gyro, separate, blockS);
+    const BlockRateVariance weight = blockRateVariance(ch->gyro, separate, weightS);
+    EXPECT_EQ(views.swingBlocks.varianceDeg2PerS, swing.varianceDeg2PerS);
+    EXPECT_EQ(views.swingBlocks.stdDeg2PerS, swing.stdDeg2PerS);
+    EXPECT_EQ(views.weightBlocks.varianceDeg2PerS, weight.varianceDeg2PerS);
+    EXPECT_EQ(views.weightBlocks.stdDeg2PerS, weight.stdDeg2PerS);
+  }
 }
 
 }  // namespace
