@@ -53,6 +53,10 @@ launcher=()
 if command -v ccache >/dev/null 2>&1; then
   launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
   export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$PWD}"
+  # The asan and fuzz legs build with debug info, which ccache would key on
+  # the build folder's path: a clone elsewhere (CI's clean clone) would then
+  # miss every object. Their paths are relative (CCACHE_BASEDIR) anyway.
+  export CCACHE_NOHASHDIR=1
 fi
 
 # Prints the Qt + Qwt pair a configured build tree uses.
