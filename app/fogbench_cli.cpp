@@ -95,9 +95,10 @@ usage:
       --rate-convention says how a gyro file of rates was sampled when its metadata
       does not (with the IMU's frame period for frame_average). Both are stored with
       the session and every result of it.
-  fogbench-cli export SESSION.fbs [--csv DIR] [--results-json FILE.json] [--overwrite] [constants]
+  fogbench-cli export SESSION.fbs [--csv DIR] [--hdf5 FILE.h5] [--results-json FILE.json] [--overwrite] [constants]
       Decoded samples, fits and residuals as CSV (readable back by import);
-      the stored results and the current analysis as JSON.
+      the same values, the per-period track and the shown result in one HDF5
+      file (docs/formats.md, "HDF5 export"); the stored results and the current analysis as JSON.
   fogbench-cli theory [--freq-hz F --amp-deg A --duration-s T] [--stability-deg-h S]
                       [--fibre-length-m L] [--arw-deg-sqrt-h N] [--json]
       The paper's delay budget and resolution figure, and the bench's bound.

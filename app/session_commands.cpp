@@ -16,6 +16,7 @@
 #include "core/common/text.h"
 #include "core/common/version.h"
 #include "core/io/csv_export.h"
+#include "core/io/hdf5_export.h"
 #include "core/io/csv_import.h"
 #include "core/io/imported_session.h"
 #include "core/session/session_file.h"
@@ -297,6 +298,7 @@ int importCommand(CliArguments& args) {
 int exportCommand(CliArguments& args) {
   const auto csvDir = args.text("csv");
   const auto jsonPath = args.text("results-json");
+  const auto hdf5Path = args.text("hdf5");
   const bool overwrite = args.flag("overwrite");
   int failed = 0;
   auto opened = openFileArgument(args, "export needs exactly one SESSION.fbs", failed, session::OpenOptions::session());
@@ -309,10 +311,14 @@ int exportCommand(CliArguments& args) {
   const BenchConstants* constants = &settings->constants;
   const double* limit = &settings->imuDelayLimitMs;
   if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
-  if (!csvDir && !jsonPath) return fail(invalidArgument("export needs --csv DIR and/or --results-json FILE.json"), 2);
+  if (!csvDir && !jsonPath && !hdf5Path)
+    return fail(invalidArgument("export needs --csv DIR, --hdf5 FILE.h5 and/or --results-json FILE.json"), 2);
   std::error_code ec;
   if (jsonPath)
     if (auto s = checkOutputFile(*jsonPath, overwrite, "--results-json"); !s.isOk()) return fail(s, 2);
+  // Checked before any work, as --results-json: a session is never replaced.
+  if (hdf5Path)
+    if (auto s = checkOutputFile(*hdf5Path, overwrite, "--hdf5"); !s.isOk()) return fail(s, 2);
 
   const Recording& recording = opened->recording;
   // The fits and residuals come from an analysis with the shown result's
@@ -339,6 +345,26 @@ int exportCommand(CliArguments& args) {
       return fail(overwrite || s.code() != StatusCode::kInvalidArgument ? s : Status(s.code(), s.message() + " (--overwrite)"), 2);
     std::cout << "CSV export of " << path << ": " << *csvDir << "\n";
     if (!settings->note.empty()) std::cerr << "fogbench-cli: note: " << forTerminal(settings->note) << "\n";
+  }
+  if (hdf5Path) {
+    // The same inputs as the CSV export (info with these constants, this
+    // analysis, the shown result's verdict), so the files hold the same doubles.
+    SessionInfo info = opened->info;
+    storeConstants(*constants, info.bench);
+    const auto verdict = session::judgeShown(settings->shownResult, report ? &*report : nullptr, opened->complete,
+                                             opened->incompleteReason, *limit);
+    io::Hdf5ExportInput in;
+    in.info = &info;
+    in.recording = &recording;
+    in.report = report ? &*report : nullptr;
+    in.shown = &verdict;
+    in.constants = constants;
+    in.sessionPath = path;
+    in.source = opened->sourceLine();
+    if (auto s = io::exportHdf5(*hdf5Path, in, overwrite); !s.isOk())
+      return fail(overwrite || s.code() != StatusCode::kInvalidArgument ? s : Status(s.code(), s.message() + " (--overwrite)"), 2);
+    std::cout << "HDF5 export of " << path << ": " << *hdf5Path << "\n";
+    if (!csvDir && !settings->note.empty()) std::cerr << "fogbench-cli: note: " << forTerminal(settings->note) << "\n";
   }
   if (jsonPath) {
     const SessionInfo& info = opened->info;

@@ -20,7 +20,8 @@ packages=(
   qt6-l10n-tools qt6-qpa-plugins qmake6 libgl-dev bzip2
   clang libclang-rt-14-dev
   xvfb xauth openbox fonts-wqy-microhei
-  python3 python3-numpy
+  python3 python3-numpy python3-h5py
+  libhdf5-dev
   poppler-utils
   qt6-translations-l10n qttranslations5-l10n
 )

@@ -175,17 +175,29 @@ std::string fitsCsv(const analysis::DelayReport& report) {
 }
 
 Result<std::string> residualsCsv(const TestPointData& data, const analysis::TestPointResult& p) {
+  FOG_ASSIGN_OR_RETURN(auto r, exportResiduals(data, p));
+  Text t;
+  t.reserve((r.tableTimeS.size() + r.gyroTimeS.size()) * 50 + 256);
+  t.raw("# fogbench residuals of test point ").integer(static_cast<std::uint64_t>(p.index + 1));
+  t.raw(", 4-parameter fits: table = angle - fit at time_s; gyro = increment - fitted increment over the frame "
+        "ending at time_s; docs/formats.md\n");
+  t.raw("channel,time_s,residual_deg\n");
+  for (std::size_t i = 0; i < r.tableTimeS.size(); ++i)
+    t.raw("table,").num(r.tableTimeS[i]).comma().num(r.tableResidualDeg[i]).eol();
+  for (std::size_t i = 0; i < r.gyroTimeS.size(); ++i)
+    t.raw("gyro,").num(r.gyroTimeS[i]).comma().num(r.gyroResidualDeg[i]).eol();
+  return t.str();
+}
+
+}  // namespace
+
+Result<ExportResiduals> exportResiduals(const TestPointData& data, const analysis::TestPointResult& p) {
   // The channels exactly as the analysis built them (with the gyro sign it
   // applied), so the residuals are those of the reported fits.
   FOG_ASSIGN_OR_RETURN(auto ch, analysis::makeChannels(data, p.gyroSign));
   const auto table = analysis::tableResiduals(ch.table, p.tableFit);
   const auto gyro = analysis::gyroIncrementResiduals(ch.gyro, p.gyroFit);
-  Text t;
-  t.reserve((table.size() + gyro.size()) * 50 + 256);
-  t.raw("# fogbench residuals of test point ").integer(static_cast<std::uint64_t>(p.index + 1));
-  t.raw(", 4-parameter fits: table = angle - fit at time_s; gyro = increment - fitted increment over the frame "
-        "ending at time_s; docs/formats.md\n");
-  t.raw("channel,time_s,residual_deg\n");
+  ExportResiduals r;
   // Times as recorded (not re-added to the channel's reference, which would
   // round them): the channel holds the table samples with a finite time and
   // swing-axis angle, and every IMU frame but the first, in order.
@@ -194,14 +206,15 @@ Result<std::string> residualsCsv(const TestPointData& data, const analysis::Test
   for (const auto& s : data.table) {
     if (!std::isfinite(s.timeS) || !std::isfinite(s.angleDeg[axis])) continue;
     if (i == table.size()) break;
-    t.raw("table,").num(s.timeS).comma().num(table[i++]).eol();
+    r.tableTimeS.push_back(s.timeS);
+    r.tableResidualDeg.push_back(table[i++]);
   }
-  for (std::size_t k = 0; k < gyro.size() && k + 1 < data.imu.size(); ++k)
-    t.raw("gyro,").num(data.imu[k + 1].timeS).comma().num(gyro[k]).eol();
-  return t.str();
+  for (std::size_t k = 0; k < gyro.size() && k + 1 < data.imu.size(); ++k) {
+    r.gyroTimeS.push_back(data.imu[k + 1].timeS);
+    r.gyroResidualDeg.push_back(gyro[k]);
+  }
+  return r;
 }
-
-}  // namespace
 
 std::string formatDouble(double v) {
   Text t;
@@ -209,8 +222,7 @@ std::string formatDouble(double v) {
   return t.str();
 }
 
-Status exportCsv(const std::string& dirText, const SessionInfo& info, const Recording& rec,
-                 const analysis::DelayReport* report, bool overwrite, const std::string& delaysCsv) {
+Result<std::string> exportMetadataJson(const SessionInfo& info, const Recording& rec) {
   // The increments are in degrees (protocol::RecordingBuilder); the metadata
   // states the pulse equivalent they were made with.
   if (!(rec.pulseEquivalentDeg > 0.0))
@@ -249,9 +261,15 @@ Status exportCsv(const std::string& dirText, const SessionInfo& info, const Reco
     if (p.kind == TestPointKind::kStatic) m.kind = TestPointKind::kStatic;
   }
 
+  return detail::metadataToJson(meta);
+}
+
+Status exportCsv(const std::string& dirText, const SessionInfo& info, const Recording& rec,
+                 const analysis::DelayReport* report, bool overwrite, const std::string& delaysCsv) {
+  FOG_ASSIGN_OR_RETURN(auto metaJson, exportMetadataJson(info, rec));
   const fs::path dir(dirText);
   if (Status s = prepareDirectory(dir, overwrite); !s.isOk()) return s;
-  if (Status s = writeFile(dir / "metadata.json", detail::metadataToJson(meta)); !s.isOk()) return s;
+  if (Status s = writeFile(dir / "metadata.json", metaJson); !s.isOk()) return s;
   if (Status s = writeFile(dir / "table.csv", tableCsv(rec)); !s.isOk()) return s;
   if (Status s = writeFile(dir / "gyro.csv", gyroCsv(rec)); !s.isOk()) return s;
   if (!report) return Status::ok();

@@ -25,6 +25,7 @@
 // write).
 
 #include <string>
+#include <vector>
 
 #include "core/analysis/delay_analysis.h"
 #include "core/common/recording.h"
@@ -42,5 +43,19 @@ Status exportCsv(const std::string& dir, const SessionInfo& info, const Recordin
 // The text the exporter writes for a double (std::to_chars, shortest
 // round-trip form). Exposed so that converters and tests use the same rule.
 std::string formatDouble(double v);
+
+// metadata.json's text for this session and recording (the same text
+// exportCsv writes; the HDF5 export stores it too). Errors as exportCsv's
+// (no pulse equivalent, a negative test point index).
+Result<std::string> exportMetadataJson(const SessionInfo& info, const Recording& rec);
+
+// The residuals residuals_<N>.csv holds for one test point, in its row order:
+// the table rows (time as recorded, angle - 4-parameter fit), then the gyro
+// rows (time of the frame's end as recorded, increment - fitted increment).
+struct ExportResiduals {
+  std::vector<double> tableTimeS, tableResidualDeg;
+  std::vector<double> gyroTimeS, gyroResidualDeg;
+};
+Result<ExportResiduals> exportResiduals(const TestPointData& data, const analysis::TestPointResult& point);
 
 }  // namespace fog::io

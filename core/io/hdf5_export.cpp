@@ -1,0 +1,510 @@
+#include "core/io/hdf5_export.h"
+
+#include <hdf5.h>
+
+#include <array>
+#include <cerrno>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <limits>
+#include <memory>
+#include <system_error>
+#include <vector>
+
+#include "core/common/version.h"
+#include "core/io/csv_export.h"
+
+namespace fog::io {
+
+namespace {
+
+namespace fs = std::filesystem;
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// ---- SHA-256 (FIPS 180-4), so the file states which session it came from
+// without a crypto library dependency.
+class Sha256 {
+ public:
+  void update(const unsigned char* p, std::size_t n) {
+    total_ += n;
+    while (n > 0) {
+      const std::size_t take = std::min(n, 64 - fill_);
+      std::memcpy(buf_.data() + fill_, p, take);
+      fill_ += take;
+      p += take;
+      n -= take;
+      if (fill_ == 64) {
+        block(buf_.data());
+        fill_ = 0;
+      }
+    }
+  }
+  std::string hex() {
+    const std::uint64_t bits = total_ * 8;
+    const unsigned char pad = 0x80;
+    update(&pad, 1);
+    const unsigned char zero = 0;
+    while (fill_ != 56) update(&zero, 1);
+    unsigned char len[8];
+    for (int i = 0; i < 8; ++i) len[i] = static_cast<unsigned char>(bits >> (56 - 8 * i));
+    update(len, 8);
+    std::string out;
+    char b[9];
+    for (std::uint32_t v : h_) {
+      std::snprintf(b, sizeof b, "%08x", v);
+      out += b;
+    }
+    return out;
+  }
+
+ private:
+  static std::uint32_t rotr(std::uint32_t x, int n) { return (x >> n) | (x << (32 - n)); }
+  void block(const unsigned char* p) {
+    static constexpr std::uint32_t k[64] = {
+        0x428a2f98, 0x71374491, 0xb5c0fbcf, 0xe9b5dba5, 0x3956c25b, 0x59f111f1, 0x923f82a4, 0xab1c5ed5,
+        0xd807aa98, 0x12835b01, 0x243185be, 0x550c7dc3, 0x72be5d74, 0x80deb1fe, 0x9bdc06a7, 0xc19bf174,
+        0xe49b69c1, 0xefbe4786, 0x0fc19dc6, 0x240ca1cc, 0x2de92c6f, 0x4a7484aa, 0x5cb0a9dc, 0x76f988da,
+        0x983e5152, 0xa831c66d, 0xb00327c8, 0xbf597fc7, 0xc6e00bf3, 0xd5a79147, 0x06ca6351, 0x14292967,
+        0x27b70a85, 0x2e1b2138, 0x4d2c6dfc, 0x53380d13, 0x650a7354, 0x766a0abb, 0x81c2c92e, 0x92722c85,
+        0xa2bfe8a1, 0xa81a664b, 0xc24b8b70, 0xc76c51a3, 0xd192e819, 0xd6990624, 0xf40e3585, 0x106aa070,
+        0x19a4c116, 0x1e376c08, 0x2748774c, 0x34b0bcb5, 0x391c0cb3, 0x4ed8aa4a, 0x5b9cca4f, 0x682e6ff3,
+        0x748f82ee, 0x78a5636f, 0x84c87814, 0x8cc70208, 0x90befffa, 0xa4506ceb, 0xbef9a3f7, 0xc67178f2};
+    std::uint32_t w[64];
+    for (int i = 0; i < 16; ++i)
+      w[i] = (std::uint32_t(p[4 * i]) << 24) | (std::uint32_t(p[4 * i + 1]) << 16) |
+             (std::uint32_t(p[4 * i + 2]) << 8) | std::uint32_t(p[4 * i + 3]);
+    for (int i = 16; i < 64; ++i) {
+      const std::uint32_t s0 = rotr(w[i - 15], 7) ^ rotr(w[i - 15], 18) ^ (w[i - 15] >> 3);
+      const std::uint32_t s1 = rotr(w[i - 2], 17) ^ rotr(w[i - 2], 19) ^ (w[i - 2] >> 10);
+      w[i] = w[i - 16] + s0 + w[i - 7] + s1;
+    }
+    std::uint32_t a = h_[0], b = h_[1], c = h_[2], d = h_[3], e = h_[4], f = h_[5], g = h_[6], h = h_[7];
+    for (int i = 0; i < 64; ++i) {
+      const std::uint32_t t1 = h + (rotr(e, 6) ^ rotr(e, 11) ^ rotr(e, 25)) + ((e & f) ^ (~e & g)) + k[i] + w[i];
+      const std::uint32_t t2 = (rotr(a, 2) ^ rotr(a, 13) ^ rotr(a, 22)) + ((a & b) ^ (a & c) ^ (b & c));
+      h = g;
+      g = f;
+      f = e;
+      e = d + t1;
+      d = c;
+      c = b;
+      b = a;
+      a = t1 + t2;
+    }
+    h_[0] += a; h_[1] += b; h_[2] += c; h_[3] += d; h_[4] += e; h_[5] += f; h_[6] += g; h_[7] += h;
+  }
+  std::array<std::uint32_t, 8> h_{0x6a09e667, 0xbb67ae85, 0x3c6ef372, 0xa54ff53a,
+                                  0x510e527f, 0x9b05688c, 0x1f83d9ab, 0x5be0cd19};
+  std::array<unsigned char, 64> buf_{};
+  std::size_t fill_ = 0;
+  std::uint64_t total_ = 0;
+};
+
+// ---- HDF5: every call checked; a failure becomes a Status with HDF5's words.
+
+// The innermost message of HDF5's error stack (its automatic printing is off).
+std::string hdf5Message() {
+  std::string msg;
+  H5Ewalk2(
+      H5E_DEFAULT, H5E_WALK_DOWNWARD,
+      [](unsigned n, const H5E_error2_t* e, void* data) -> herr_t {
+        auto* out = static_cast<std::string*>(data);
+        if (n == 0 && e->desc) *out = e->desc;
+        return 0;
+      },
+      &msg);
+  return msg.empty() ? "unknown HDF5 error" : msg;
+}
+
+// An HDF5 identifier closed when it leaves scope.
+class Id {
+ public:
+  Id(hid_t id, herr_t (*closer)(hid_t)) : id_(id), close_(closer) {}
+  Id(const Id&) = delete;
+  Id& operator=(const Id&) = delete;
+  ~Id() {
+    if (id_ >= 0) close_(id_);
+  }
+  hid_t get() const { return id_; }
+  bool ok() const { return id_ >= 0; }
+  // Closes now, reporting whether the close succeeded (a file's close writes).
+  bool close() {
+    const herr_t r = id_ >= 0 ? close_(id_) : 0;
+    id_ = -1;
+    return r >= 0;
+  }
+
+ private:
+  hid_t id_;
+  herr_t (*close_)(hid_t);
+};
+
+class Writer {
+ public:
+  explicit Writer(std::string file) : file_(std::move(file)) {}
+
+  Status fail(const std::string& what) const {
+    return ioError("HDF5 export: could not " + what + " in " + file_ + " (" + hdf5Message() + "; disk full?)");
+  }
+
+  Result<hid_t> group(hid_t parent, const std::string& name, std::vector<std::unique_ptr<Id>>& keep) {
+    auto g = std::make_unique<Id>(H5Gcreate2(parent, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+    if (!g->ok()) return fail("create group " + name);
+    const hid_t id = g->get();
+    keep.push_back(std::move(g));
+    return id;
+  }
+
+  Status stringAttr(hid_t obj, const char* name, const std::string& value) {
+    Id type(H5Tcopy(H5T_C_S1), H5Tclose);
+    if (!type.ok() || H5Tset_size(type.get(), H5T_VARIABLE) < 0 || H5Tset_cset(type.get(), H5T_CSET_UTF8) < 0)
+      return fail(std::string("make the string type of attribute ") + name);
+    Id space(H5Screate(H5S_SCALAR), H5Sclose);
+    Id attr(H5Acreate2(obj, name, type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+    const char* p = value.c_str();
+    if (!attr.ok() || H5Awrite(attr.get(), type.get(), &p) < 0) return fail(std::string("write attribute ") + name);
+    return Status::ok();
+  }
+
+  Status numberAttr(hid_t obj, const char* name, double value) { return scalarAttr(obj, name, H5T_NATIVE_DOUBLE, &value); }
+  Status intAttr(hid_t obj, const char* name, std::int64_t value) { return scalarAttr(obj, name, H5T_NATIVE_INT64, &value); }
+
+  // A dataset of `dims` (1 or 2 dimensions) of `memType` values, with its unit.
+  Status dataset(hid_t parent, const std::string& name, hid_t fileType, hid_t memType, const void* data,
+                 std::vector<hsize_t> dims, const std::string& unit) {
+    Id space(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr), H5Sclose);
+    if (!space.ok()) return fail("describe dataset " + name);
+    Id set(H5Dcreate2(parent, name.c_str(), fileType, space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+           H5Dclose);
+    if (!set.ok()) return fail("create dataset " + name);
+    hsize_t count = 1;
+    for (hsize_t d : dims) count *= d;
+    if (count > 0 && H5Dwrite(set.get(), memType, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0)
+      return fail("write dataset " + name);
+    return stringAttr(set.get(), "unit", unit);
+  }
+
+  Status doubles(hid_t parent, const std::string& name, const std::vector<double>& v, const std::string& unit) {
+    return dataset(parent, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, v.data(), {v.size()}, unit);
+  }
+  Status triples(hid_t parent, const std::string& name, const std::vector<double>& rowMajor, const std::string& unit) {
+    return dataset(parent, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, rowMajor.data(), {rowMajor.size() / 3, 3}, unit);
+  }
+  Status integers(hid_t parent, const std::string& name, const std::vector<std::int64_t>& v, const std::string& unit) {
+    return dataset(parent, name, H5T_STD_I64LE, H5T_NATIVE_INT64, v.data(), {v.size()}, unit);
+  }
+  Status strings(hid_t parent, const std::string& name, const std::vector<std::string>& v) {
+    Id type(H5Tcopy(H5T_C_S1), H5Tclose);
+    if (!type.ok() || H5Tset_size(type.get(), H5T_VARIABLE) < 0 || H5Tset_cset(type.get(), H5T_CSET_UTF8) < 0)
+      return fail("make the string type of " + name);
+    std::vector<const char*> p;
+    for (const auto& s : v) p.push_back(s.c_str());
+    return dataset(parent, name, type.get(), type.get(), p.data(), {v.size()}, "");
+  }
+
+ private:
+  Status scalarAttr(hid_t obj, const char* name, hid_t memType, const void* value) {
+    Id space(H5Screate(H5S_SCALAR), H5Sclose);
+    const hid_t fileType = memType == H5T_NATIVE_DOUBLE ? H5T_IEEE_F64LE : H5T_STD_I64LE;
+    Id attr(H5Acreate2(obj, name, fileType, space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+    if (!attr.ok() || H5Awrite(attr.get(), memType, value) < 0) return fail(std::string("write attribute ") + name);
+    return Status::ok();
+  }
+  std::string file_;
+};
+
+std::string pointName(int index) {
+  std::string n = std::to_string(index + 1);
+  return n.size() < 2 ? "0" + n : n;
+}
+
+// fits.csv's rows of one test point, as columns (same doubles, NaN = empty).
+Status writeFits(Writer& w, hid_t g, const analysis::TestPointResult& p) {
+  struct Col {
+    const char* name;
+    const char* unit;
+    std::vector<double> v;
+  };
+  std::vector<Col> cols = {{"frequency_hz", "Hz", {}},       {"frequency_std_hz", "Hz", {}},
+                           {"period_ms", "ms", {}},           {"period_std_ms", "ms", {}},
+                           {"phase_ms", "ms", {}},            {"phase_std_ms", "ms", {}},
+                           {"amplitude_deg", "deg", {}},      {"amplitude_std_deg", "deg", {}},
+                           {"offset_deg", "deg", {}},         {"trend_deg_per_s", "deg/s", {}},
+                           {"trend_std_deg_per_s", "deg/s", {}}, {"residual_rms_deg", "deg", {}},
+                           {"chi2_per_dof", "1", {}},         {"lag_ms", "ms", {}},
+                           {"lag_std_ms", "ms", {}},          {"magnitude_ratio", "1", {}},
+                           {"magnitude_ratio_std", "1", {}}};
+  std::vector<std::string> channel, model;
+  std::vector<std::int64_t> samples;
+  auto push = [&](std::array<double, 17> row) {
+    for (std::size_t i = 0; i < row.size(); ++i) cols[i].v.push_back(row[i]);
+  };
+  auto fit = [&](const char* ch, const char* mo, const analysis::SineFit& f, bool gyro) {
+    channel.push_back(ch);
+    model.push_back(mo);
+    samples.push_back(static_cast<std::int64_t>(f.samples));
+    push({f.frequencyHz, f.frequencyStdHz, f.periodMs, f.periodStdMs, f.phaseMs, f.phaseStdMs, f.amplitudeDeg,
+          f.amplitudeStdDeg, f.offsetDeg, gyro ? f.trendDegPerS : kNaN, gyro ? f.trendStdDegPerS : kNaN,
+          f.residualRmsDeg, f.chiSquarePerDof, kNaN, kNaN, kNaN, kNaN});
+  };
+  fit("table", "3-parameter", p.tableNominal, false);
+  fit("gyro", "3-parameter", p.gyroNominal, true);
+  fit("table", "4-parameter", p.tableFit, false);
+  fit("gyro", "4-parameter", p.gyroFit, true);
+  // The joint row exactly as fits.csv computes it (csv_export.cpp).
+  const auto& j = p.joint;
+  const double periodMs = j.frequencyHz > 0.0 ? 1e3 / j.frequencyHz : 0.0;
+  const double periodStdMs = j.frequencyHz > 0.0 ? 1e3 * j.frequencyStdHz / (j.frequencyHz * j.frequencyHz) : 0.0;
+  channel.push_back("table+gyro");
+  model.push_back("joint");
+  samples.push_back(static_cast<std::int64_t>(p.tableSamples + p.imuSamples));
+  push({j.frequencyHz, j.frequencyStdHz, periodMs, periodStdMs, kNaN, kNaN, std::hypot(j.a, j.b), kNaN, j.offsetDeg,
+        j.trendDegPerS, j.trendStdDegPerS, kNaN, j.chiSquarePerDof, j.lagS * 1e3, j.lagStdS * 1e3, j.gain,
+        j.gainStd});
+  FOG_RETURN_IF_ERROR(w.strings(g, "channel", channel));
+  FOG_RETURN_IF_ERROR(w.strings(g, "model", model));
+  FOG_RETURN_IF_ERROR(w.integers(g, "samples", samples, "1"));
+  for (const auto& c : cols) FOG_RETURN_IF_ERROR(w.doubles(g, c.name, c.v, c.unit));
+  return Status::ok();
+}
+
+Status writePoint(Writer& w, hid_t parent, const TestPointData& data, const analysis::TestPointResult* p) {
+  std::vector<std::unique_ptr<Id>> keep;
+  FOG_ASSIGN_OR_RETURN(hid_t g, w.group(parent, pointName(data.index), keep));
+  FOG_RETURN_IF_ERROR(w.intAttr(g, "test_point", data.index + 1));
+  FOG_RETURN_IF_ERROR(w.stringAttr(g, "axis", axisLabel(data.axis)));
+  FOG_RETURN_IF_ERROR(w.numberAttr(g, "nominal_frequency_hz", data.nominalFrequencyHz));
+  FOG_RETURN_IF_ERROR(w.numberAttr(g, "nominal_amplitude_deg", data.nominalAmplitudeDeg));
+  FOG_RETURN_IF_ERROR(w.stringAttr(g, "kind", data.kind == TestPointKind::kStatic ? "static" : "swing"));
+  {
+    FOG_ASSIGN_OR_RETURN(hid_t t, w.group(g, "table", keep));
+    std::vector<double> time, angle;
+    time.reserve(data.table.size());
+    angle.reserve(data.table.size() * 3);
+    for (const auto& s : data.table) {
+      time.push_back(s.timeS);
+      angle.insert(angle.end(), s.angleDeg.begin(), s.angleDeg.end());
+    }
+    FOG_RETURN_IF_ERROR(w.doubles(t, "time_s", time, "s"));
+    FOG_RETURN_IF_ERROR(w.triples(t, "angle_deg", angle, "deg"));
+  }
+  {
+    FOG_ASSIGN_OR_RETURN(hid_t t, w.group(g, "gyro", keep));
+    std::vector<double> time, inc, temp;
+    std::vector<std::int64_t> lost;
+    time.reserve(data.imu.size());
+    inc.reserve(data.imu.size() * 3);
+    for (const auto& s : data.imu) {
+      time.push_back(s.timeS);
+      inc.insert(inc.end(), s.incrementDeg.begin(), s.incrementDeg.end());
+      temp.push_back(s.temperatureC);
+      lost.push_back(s.lostBefore);
+    }
+    FOG_RETURN_IF_ERROR(w.doubles(t, "time_s", time, "s"));
+    FOG_RETURN_IF_ERROR(w.triples(t, "increment_deg", inc, "deg"));
+    FOG_RETURN_IF_ERROR(w.doubles(t, "temperature_c", temp, "degC"));
+    FOG_RETURN_IF_ERROR(w.integers(t, "lost_before", lost, "frames"));
+  }
+  if (!p) return Status::ok();
+  {
+    FOG_ASSIGN_OR_RETURN(hid_t f, w.group(g, "fits", keep));
+    FOG_RETURN_IF_ERROR(writeFits(w, f, *p));
+  }
+  {
+    FOG_ASSIGN_OR_RETURN(auto r, exportResiduals(data, *p));
+    FOG_ASSIGN_OR_RETURN(hid_t t, w.group(g, "residuals", keep));
+    FOG_RETURN_IF_ERROR(w.doubles(t, "table_time_s", r.tableTimeS, "s"));
+    FOG_RETURN_IF_ERROR(w.doubles(t, "table_residual_deg", r.tableResidualDeg, "deg"));
+    FOG_RETURN_IF_ERROR(w.doubles(t, "gyro_time_s", r.gyroTimeS, "s"));
+    FOG_RETURN_IF_ERROR(w.doubles(t, "gyro_residual_deg", r.gyroResidualDeg, "deg"));
+  }
+  {
+    FOG_ASSIGN_OR_RETURN(hid_t t, w.group(g, "period_track", keep));
+    std::vector<double> time, lag, amp;
+    for (const auto& d : p->periodTrack) {
+      time.push_back(d.timeS);
+      lag.push_back(d.lagMs);
+      amp.push_back(d.tableAmplitudeDeg);
+    }
+    FOG_RETURN_IF_ERROR(w.doubles(t, "time_s", time, "s"));
+    FOG_RETURN_IF_ERROR(w.doubles(t, "lag_ms", lag, "ms"));
+    FOG_RETURN_IF_ERROR(w.doubles(t, "table_amplitude_deg", amp, "deg"));
+    FOG_RETURN_IF_ERROR(w.numberAttr(t, "mean_lag_ms", p->periodMeanLagMs));
+    FOG_RETURN_IF_ERROR(w.numberAttr(t, "scatter_ms", p->periodScatterMs));
+  }
+  return Status::ok();
+}
+
+Status scalar(Writer& w, hid_t g, const char* name, double v, const char* unit) {
+  return w.doubles(g, name, std::vector<double>{v}, unit);
+}
+
+// The shown result: its verdict and reasons as judgeShown gives them, and per
+// point delays.csv's numbers beside the point's verdict, so a refused delay
+// never appears without its mark.
+Status writeResult(Writer& w, hid_t root, const Hdf5ExportInput& in) {
+  std::vector<std::unique_ptr<Id>> keep;
+  FOG_ASSIGN_OR_RETURN(hid_t g, w.group(root, "result", keep));
+  const session::ShownVerdict none;
+  const auto& v = in.shown ? *in.shown : none;
+  FOG_RETURN_IF_ERROR(w.stringAttr(g, "verdict", session::shownVerdictName(v.verdict)));
+  FOG_RETURN_IF_ERROR(w.stringAttr(g, "data_verdict", session::shownVerdictName(v.dataVerdict)));
+  FOG_RETURN_IF_ERROR(w.intAttr(g, "stored", v.stored ? 1 : 0));
+  FOG_RETURN_IF_ERROR(w.numberAttr(g, "limit_ms", v.limitMs));
+  FOG_RETURN_IF_ERROR(w.stringAttr(g, "incomplete_reason", v.incompleteReason));
+  FOG_RETURN_IF_ERROR(w.strings(g, "reasons", v.reasons));
+
+  const BenchConstants* c = in.constants ? in.constants : in.report ? &in.report->constants : nullptr;
+  if (c) {
+    FOG_ASSIGN_OR_RETURN(hid_t k, w.group(g, "constants", keep));
+    FOG_RETURN_IF_ERROR(scalar(w, k, "table_read_delay_ms", c->tableReadDelayMs, "ms"));
+    FOG_RETURN_IF_ERROR(scalar(w, k, "table_read_delay_std_ms", c->tableReadDelayStdMs, "ms"));
+    FOG_RETURN_IF_ERROR(scalar(w, k, "processing_board_delay_ms", c->boardDelayMs, "ms"));
+    FOG_RETURN_IF_ERROR(scalar(w, k, "processing_board_delay_std_ms", c->boardDelayStdMs, "ms"));
+    FOG_RETURN_IF_ERROR(scalar(w, k, "latitude_deg", c->latitudeDeg, "deg"));
+    FOG_RETURN_IF_ERROR(scalar(w, k, "gain_tolerance_fraction", c->gainToleranceFraction, "1"));
+    FOG_RETURN_IF_ERROR(w.integers(k, "gyro_sign", {c->gyroSign[0], c->gyroSign[1], c->gyroSign[2]}, "1"));
+  }
+  if (!in.report) return Status::ok();
+  // delays.csv's rows (session::delayBreakdownCsv), one entry a test point.
+  FOG_ASSIGN_OR_RETURN(hid_t pg, w.group(g, "points", keep));
+  const auto& rc = in.report->constants;
+  std::vector<std::int64_t> index;
+  std::vector<std::string> axis, verdict, dataVerdict, reason;
+  std::vector<std::int64_t> vouched;
+  std::vector<double> freq, lag, lagStd, tr, trStd, imu, imuStd, board, boardStd, gyro, gyroStd;
+  for (const auto& p : in.report->points) {
+    session::ShownPoint shown;  // a point the verdict does not state: refused (as delays.csv)
+    if (const auto* sp = v.point(p.index)) shown = *sp;
+    index.push_back(p.index + 1);
+    axis.push_back(axisLabel(p.axis));
+    freq.push_back(p.nominalFrequencyHz);
+    lag.push_back(p.lagMs);
+    lagStd.push_back(p.lagStdMs);
+    tr.push_back(rc.tableReadDelayMs);
+    trStd.push_back(rc.tableReadDelayStdMs);
+    imu.push_back(p.imuDelayMs);
+    imuStd.push_back(p.imuDelayStdMs);
+    board.push_back(rc.boardDelayMs);
+    boardStd.push_back(rc.boardDelayStdMs);
+    gyro.push_back(p.gyroDelayMs);
+    gyroStd.push_back(p.gyroDelayStdMs);
+    verdict.push_back(session::shownVerdictName(shown.verdict));
+    dataVerdict.push_back(session::shownVerdictName(shown.dataVerdict));
+    vouched.push_back(shown.vouched() ? 1 : 0);
+    std::string r;
+    for (const auto& s : shown.reasons) r += (r.empty() ? "" : "; ") + s;
+    reason.push_back(r);
+  }
+  FOG_RETURN_IF_ERROR(w.integers(pg, "test_point", index, "1"));
+  FOG_RETURN_IF_ERROR(w.strings(pg, "axis", axis));
+  FOG_RETURN_IF_ERROR(w.doubles(pg, "frequency_hz", freq, "Hz"));
+  FOG_RETURN_IF_ERROR(w.doubles(pg, "measured_lag_ms", lag, "ms"));
+  FOG_RETURN_IF_ERROR(w.doubles(pg, "measured_lag_std_ms", lagStd, "ms"));
+  FOG_RETURN_IF_ERROR(w.doubles(pg, "table_read_delay_ms", tr, "ms"));
+  FOG_RETURN_IF_ERROR(w.doubles(pg, "table_read_delay_std_ms", trStd, "ms"));
+  FOG_RETURN_IF_ERROR(w.doubles(pg, "imu_delay_ms", imu, "ms"));
+  FOG_RETURN_IF_ERROR(w.doubles(pg, "imu_delay_std_ms", imuStd, "ms"));
+  FOG_RETURN_IF_ERROR(w.doubles(pg, "processing_board_delay_ms", board, "ms"));
+  FOG_RETURN_IF_ERROR(w.doubles(pg, "processing_board_delay_std_ms", boardStd, "ms"));
+  FOG_RETURN_IF_ERROR(w.doubles(pg, "gyro_delay_ms", gyro, "ms"));
+  FOG_RETURN_IF_ERROR(w.doubles(pg, "gyro_delay_std_ms", gyroStd, "ms"));
+  FOG_RETURN_IF_ERROR(w.strings(pg, "verdict", verdict));
+  FOG_RETURN_IF_ERROR(w.strings(pg, "data_verdict", dataVerdict));
+  FOG_RETURN_IF_ERROR(w.integers(pg, "vouched", vouched, "1"));
+  FOG_RETURN_IF_ERROR(w.strings(pg, "reason", reason));
+  return Status::ok();
+}
+
+Status writeFile(const std::string& tmp, const Hdf5ExportInput& in, const std::string& metadataJson,
+                 const std::string& sha) {
+  Writer w(tmp);
+  Id file(H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
+  if (!file.ok()) return w.fail("create the file");
+  const hid_t root = file.get();
+  FOG_RETURN_IF_ERROR(w.stringAttr(root, "format", "fogbench-hdf5"));
+  FOG_RETURN_IF_ERROR(w.intAttr(root, "format_version", 1));
+  FOG_RETURN_IF_ERROR(w.stringAttr(root, "session_sha256", sha));
+  FOG_RETURN_IF_ERROR(w.stringAttr(root, "session_file", in.sessionPath));
+  FOG_RETURN_IF_ERROR(w.stringAttr(root, "fogbench_version", FOG_VERSION));
+  FOG_RETURN_IF_ERROR(w.stringAttr(root, "source", in.source));
+  {
+    std::vector<std::unique_ptr<Id>> keep;
+    FOG_ASSIGN_OR_RETURN(hid_t m, w.group(root, "metadata", keep));
+    FOG_RETURN_IF_ERROR(w.stringAttr(m, "json", metadataJson));
+    FOG_RETURN_IF_ERROR(writeResult(w, root, in));
+    FOG_ASSIGN_OR_RETURN(hid_t tps, w.group(root, "test_points", keep));
+    for (const auto& data : in.recording->testPoints) {
+      const analysis::TestPointResult* p = nullptr;
+      if (in.report)
+        for (const auto& r : in.report->points)
+          if (r.index == data.index) p = &r;
+      FOG_RETURN_IF_ERROR(writePoint(w, tps, data, p));
+    }
+    if (in.report)
+      for (const auto& r : in.report->points) {
+        bool found = false;
+        for (const auto& d : in.recording->testPoints) found = found || d.index == r.index;
+        if (!found)
+          return invalidArgument("the report has test point " + std::to_string(r.index + 1) +
+                                 ", which the recording does not; export the report with its own recording");
+      }
+  }
+  // The close flushes everything: a full disk shows here at the latest.
+  if (!file.close()) return w.fail("finish (flush and close) the file");
+  return Status::ok();
+}
+
+}  // namespace
+
+Result<std::string> sha256OfFile(const std::string& path) {
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (!f) return ioError("cannot read " + path + " to state its SHA-256: " + std::strerror(errno));
+  Sha256 h;
+  std::vector<unsigned char> buf(1 << 16);
+  std::size_t n;
+  while ((n = std::fread(buf.data(), 1, buf.size(), f)) > 0) h.update(buf.data(), n);
+  const bool bad = std::ferror(f) != 0;
+  std::fclose(f);
+  if (bad) return ioError("could not read all of " + path + " to state its SHA-256");
+  return h.hex();
+}
+
+Status exportHdf5(const std::string& path, const Hdf5ExportInput& in, bool overwrite) {
+  if (!in.info || !in.recording) return invalidArgument("HDF5 export: no session to export");
+  std::error_code ec;
+  const auto st = fs::status(path, ec);
+  if (!ec && fs::exists(st)) {
+    if (fs::is_directory(st)) return invalidArgument(path + " is a folder; give the HDF5 file's name");
+    if (!overwrite) return invalidArgument(path + " already exists; allow overwriting to replace it");
+  }
+  FOG_ASSIGN_OR_RETURN(auto metadataJson, exportMetadataJson(*in.info, *in.recording));
+  std::string sha;
+  if (!in.sessionPath.empty()) {
+    FOG_ASSIGN_OR_RETURN(sha, sha256OfFile(in.sessionPath));
+  }
+
+  // HDF5 prints its error stack on stderr by default; the Status says it.
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  const std::string tmp = path + ".partial";
+  {
+    // A plain open first: its errno names why the folder takes no file.
+    std::FILE* probe = std::fopen(tmp.c_str(), "wb");
+    if (!probe)
+      return ioError("cannot create " + tmp + ": " + std::strerror(errno) +
+                     "; check that the folder exists and is writable");
+    std::fclose(probe);
+  }
+  Status s = writeFile(tmp, in, metadataJson, sha);
+  if (s.isOk()) {
+    fs::rename(tmp, path, ec);
+    if (ec) s = ioError("cannot rename " + tmp + " to " + path + ": " + ec.message());
+  }
+  if (!s.isOk()) fs::remove(tmp, ec);  // never leave a partial file behind
+  return s;
+}
+
+}  // namespace fog::io

@@ -1,0 +1,218 @@
+#!/usr/bin/python3
+"""`fogbench-cli export --hdf5` read back with h5py: every dataset holds the
+CSV export's values bit for bit and carries its unit; the root states the
+format version and the session file's SHA-256; the shown result's verdict is
+analyze --json's and delays.csv's; a second export to the same name is refused.
+
+h5py and numpy are required: a missing module fails the test (no skip), since
+a skipped round trip would vouch for nothing.
+"""
+import argparse
+import csv
+import hashlib
+import json
+import math
+import os
+import struct
+import subprocess
+import sys
+import tempfile
+
+import h5py  # noqa: E402  (ImportError = test failure, on purpose)
+import numpy as np
+
+failures = []
+
+
+def check(cond, what):
+    if not cond:
+        failures.append(what)
+
+
+def bits(x):
+    x = float(x)
+    # NaN: the CSV's empty cell / "nan"; any NaN is the same missing value.
+    return "nan" if math.isnan(x) else struct.pack("<d", x)
+
+
+def same(csv_values, h5_values, what):
+    """csv_values: texts as the CSV prints them ('' = empty = NaN)."""
+    h5_values = list(np.asarray(h5_values, dtype=np.float64).ravel())
+    if len(csv_values) != len(h5_values):
+        failures.append(f"{what}: {len(csv_values)} CSV values, {len(h5_values)} in HDF5")
+        return
+    for i, (c, h) in enumerate(zip(csv_values, h5_values)):
+        if bits(float(c) if c != "" else float("nan")) != bits(h):
+            failures.append(f"{what}[{i}]: CSV {c!r} != HDF5 {h!r}")
+            return
+
+
+def rows(path):
+    with open(path, newline="") as f:
+        return list(csv.DictReader(line for line in f if not line.startswith("#")))
+
+
+def unit(ds, expected):
+    check("unit" in ds.attrs, f"{ds.name} has no unit attribute")
+    got = ds.attrs.get("unit")
+    check(got == expected, f"{ds.name}: unit {got!r}, expected {expected!r}")
+
+
+def text(v):
+    return v.decode() if isinstance(v, bytes) else str(v)
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--cli", required=True)
+    args = ap.parse_args()
+    cli = args.cli
+    work = tempfile.mkdtemp(prefix="fog_hdf5_")
+    run = lambda *a, **k: subprocess.run([cli, *a], cwd=work, capture_output=True, text=True, **k)
+
+    r = run("run", "--preset", "quick", "--seed", "3", "--out", "S.fbs")
+    check(r.returncode == 0, f"run failed: {r.stderr}")
+    r = run("export", "S.fbs", "--csv", "csv", "--hdf5", "S.h5")
+    check(r.returncode == 0, f"export failed: {r.stderr}")
+    if failures:
+        return finish()
+    c = os.path.join(work, "csv")
+    # Hashed before `analyze` below, which stores a result in the session and
+    # so changes its bytes: the HDF5 states the file as it was exported.
+    with open(os.path.join(work, "S.fbs"), "rb") as f:
+        sha = hashlib.sha256(f.read()).hexdigest()
+    version = run("--version").stdout.split()[-1]
+
+    with h5py.File(os.path.join(work, "S.h5"), "r") as h:
+        # Root attributes.
+        check(h.attrs["format"] == "fogbench-hdf5", f"format {h.attrs['format']!r}")
+        check(int(h.attrs["format_version"]) == 1, "format_version is not 1")
+        check(h.attrs["session_sha256"] == sha, f"session_sha256 {h.attrs['session_sha256']} != sha256 {sha}")
+        check(h.attrs["fogbench_version"] == version, f"fogbench_version {h.attrs['fogbench_version']} != {version}")
+        with open(os.path.join(c, "metadata.json")) as f:
+            check(h["metadata"].attrs["json"] == f.read(), "/metadata json differs from metadata.json")
+
+        # Every dataset carries a unit.
+        def visit(name, obj):
+            if isinstance(obj, h5py.Dataset):
+                check("unit" in obj.attrs, f"/{name} has no unit attribute")
+        h.visititems(visit)
+
+        # table.csv and gyro.csv, per test point.
+        table, gyro = rows(os.path.join(c, "table.csv")), rows(os.path.join(c, "gyro.csv"))
+        points = sorted({int(x["test_point"]) for x in table} | {int(x["test_point"]) for x in gyro})
+        check(sorted(int(g.attrs["test_point"]) for g in h["test_points"].values()) == points,
+              "test point groups differ from the CSV's test points")
+        for n in points:
+            g = h["test_points"][f"{n:02d}"]
+            t = [x for x in table if int(x["test_point"]) == n]
+            same([x["time_s"] for x in t], g["table/time_s"], f"tp{n} table time_s")
+            same([x[k] for x in t for k in ("x_deg", "y_deg", "z_deg")], g["table/angle_deg"], f"tp{n} angle_deg")
+            check(g["table/angle_deg"].shape == (len(t), 3), f"tp{n} angle_deg shape")
+            unit(g["table/time_s"], "s")
+            unit(g["table/angle_deg"], "deg")
+            y = [x for x in gyro if int(x["test_point"]) == n]
+            same([x["time_s"] for x in y], g["gyro/time_s"], f"tp{n} gyro time_s")
+            same([x[k] for x in y for k in ("x_inc_deg", "y_inc_deg", "z_inc_deg")], g["gyro/increment_deg"],
+                 f"tp{n} increment_deg")
+            same([x["temperature_c"] for x in y], g["gyro/temperature_c"], f"tp{n} temperature_c")
+            check([int(x["lost_before"]) for x in y] == list(g["gyro/lost_before"][()]), f"tp{n} lost_before")
+            unit(g["gyro/time_s"], "s")
+            unit(g["gyro/increment_deg"], "deg")
+            unit(g["gyro/temperature_c"], "degC")
+            unit(g["gyro/lost_before"], "frames")
+
+        # fits.csv: every column, rows in the CSV's order, empty cell = NaN.
+        fits = rows(os.path.join(c, "fits.csv"))
+        fit_units = {"frequency_hz": "Hz", "frequency_std_hz": "Hz", "period_ms": "ms", "period_std_ms": "ms",
+                     "phase_ms": "ms", "phase_std_ms": "ms", "amplitude_deg": "deg", "amplitude_std_deg": "deg",
+                     "offset_deg": "deg", "trend_deg_per_s": "deg/s", "trend_std_deg_per_s": "deg/s",
+                     "residual_rms_deg": "deg", "chi2_per_dof": "1", "lag_ms": "ms", "lag_std_ms": "ms",
+                     "magnitude_ratio": "1", "magnitude_ratio_std": "1"}
+        fitted = sorted({int(x["test_point"]) for x in fits})
+        check(len(fitted) > 0, "fits.csv holds no fit (the quick preset should be analysed)")
+        with open(os.path.join(c, "report.json")) as f:
+            report = json.load(f)
+        for n in fitted:
+            g = h["test_points"][f"{n:02d}"]
+            f_rows = [x for x in fits if int(x["test_point"]) == n]
+            check([text(v) for v in g["fits/channel"][()]] == [x["channel"] for x in f_rows], f"tp{n} fit channels")
+            check([text(v) for v in g["fits/model"][()]] == [x["model"] for x in f_rows], f"tp{n} fit models")
+            check([int(x["samples"]) for x in f_rows] == list(g["fits/samples"][()]), f"tp{n} fit samples")
+            for col, u in fit_units.items():
+                same([x[col] for x in f_rows], g["fits"][col], f"tp{n} fits {col}")
+                unit(g["fits"][col], u)
+            res = rows(os.path.join(c, f"residuals_{n}.csv"))
+            for ch in ("table", "gyro"):
+                rr = [x for x in res if x["channel"] == ch]
+                same([x["time_s"] for x in rr], g[f"residuals/{ch}_time_s"], f"tp{n} {ch} residual time")
+                same([x["residual_deg"] for x in rr], g[f"residuals/{ch}_residual_deg"], f"tp{n} {ch} residuals")
+                unit(g[f"residuals/{ch}_time_s"], "s")
+                unit(g[f"residuals/{ch}_residual_deg"], "deg")
+            # The per-period track: report.json's (the CSV export has no file of it).
+            jp = [p for p in report["test_points"] if p["index"] == n - 1]  # report.json: 0-based
+            track = jp[0]["period_track"] if jp else None
+            check(track is not None and len(track) > 0, f"tp{n}: report.json has no period track to compare")
+            if track:
+                for key, u in (("time_s", "s"), ("lag_ms", "ms"), ("table_amplitude_deg", "deg")):
+                    same([repr(float(d[key])) for d in track], g["period_track"][key], f"tp{n} period_track {key}")
+                    unit(g["period_track"][key], u)
+
+        # The shown result: delays.csv's rows, verdict and marks.
+        delays = rows(os.path.join(c, "delays.csv"))
+        pts = h["result/points"]
+        for q in ("measured_lag", "table_read_delay", "imu_delay", "processing_board_delay", "gyro_delay"):
+            d = [x for x in delays if x["quantity"] == q]
+            same([x["value_ms"] for x in d], pts[f"{q}_ms"], f"result {q}_ms")
+            same([x["std_ms"] for x in d], pts[f"{q}_std_ms"], f"result {q}_std_ms")
+            unit(pts[f"{q}_ms"], "ms")
+            check([text(v) for v in pts["verdict"][()]] == [x["verdict"] for x in d], f"result verdicts ({q})")
+            check([bool(v) for v in pts["vouched"][()]] == [x["vouched"] == "true" for x in d], f"vouched ({q})")
+            check([text(v) for v in pts["reason"][()]] == [x["reason"] for x in d], f"reasons ({q})")
+            check(list(pts["test_point"][()]) == [int(x["test_point"]) for x in d], f"result test points ({q})")
+        with open(os.path.join(c, "delays.csv")) as f:
+            line = [x for x in f if x.startswith("# result verdict:")][0]
+        shown = h["result"].attrs["verdict"]
+        check(line.startswith(f"# result verdict: {shown.upper()} ("), f"delays.csv says {line!r}, HDF5 {shown!r}")
+        a = run("analyze", "S.fbs", "--json")
+        check(a.returncode == 0, f"analyze --json failed: {a.stderr}")
+        analysed = json.loads(a.stdout)
+        check(shown == analysed["verdict"], f"HDF5 verdict {shown!r} != analyze --json {analysed['verdict']!r}")
+        check(shown in ("pass", "fail", "invalid", "incomplete"), f"verdict {shown!r} is not a verdict word")
+        reasons = [text(v) for v in h["result/reasons"][()]]
+        check(len(reasons) > 0, "the result states no reasons")
+        check(reasons == analysed["verdict_reasons"], f"reasons {reasons} != analyze --json {analysed['verdict_reasons']}")
+        check(float(h["result"].attrs["limit_ms"]) == float(analysed["imu_delay_limit_ms"]), "limit_ms differs")
+        k = h["result/constants"]
+        for name in ("table_read_delay_ms", "processing_board_delay_ms"):
+            unit(k[name], "ms")
+        same([x["value_ms"] for x in delays if x["quantity"] == "table_read_delay"][:1],
+             k["table_read_delay_ms"], "constants table_read_delay_ms")
+        same([x["value_ms"] for x in delays if x["quantity"] == "processing_board_delay"][:1],
+             k["processing_board_delay_ms"], "constants processing_board_delay_ms")
+
+    # A second export to the same name is refused and leaves the file alone.
+    before = open(os.path.join(work, "S.h5"), "rb").read()
+    r = run("export", "S.fbs", "--hdf5", "S.h5")
+    check(r.returncode != 0, "a second export to the same name was not refused")
+    check("already exists" in r.stderr and "--overwrite" in r.stderr, f"refusal words: {r.stderr!r}")
+    check(open(os.path.join(work, "S.h5"), "rb").read() == before, "the refused export changed the file")
+    r = run("export", "S.fbs", "--hdf5", "S.h5", "--overwrite")
+    check(r.returncode == 0, f"--overwrite export failed: {r.stderr}")
+    # A folder that does not exist: a clear error, no crash, no HDF5 stack dump.
+    r = run("export", "S.fbs", "--hdf5", "no/such/folder/S.h5")
+    check(r.returncode == 2, f"export into a missing folder: exit {r.returncode}")
+    check("cannot create" in r.stderr and "HDF5-DIAG" not in r.stderr, f"missing folder words: {r.stderr!r}")
+    check(not any(n.endswith(".partial") for n in os.listdir(work)), "a .partial file was left behind")
+    return finish()
+
+
+def finish():
+    for f in failures:
+        print("FAIL:", f, file=sys.stderr)
+    print(f"hdf5 round trip: {len(failures)} failure(s)")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
