@@ -147,7 +147,7 @@ class Writer {
   explicit Writer(std::string file) : file_(std::move(file)) {}
 
   Status fail(const std::string& what) const {
-    return ioError("HDF5 export: could not " + what + " in " + file_ + " (" + hdf5Message() + "; disk full?)");
+    return ioError("HDF5 export: could not " + what + " for " + file_ + " (HDF5: " + hdf5Message() + ")");
   }
 
   Result<hid_t> group(hid_t parent, const std::string& name, std::vector<std::unique_ptr<Id>>& keep) {
@@ -419,10 +419,18 @@ Status writeResult(Writer& w, hid_t root, const Hdf5ExportInput& in) {
   return Status::ok();
 }
 
-Status writeFile(const std::string& tmp, const Hdf5ExportInput& in, const std::string& metadataJson,
-                 const std::string& sha) {
+// Builds the file in memory (HDF5's core driver, no backing store) and returns
+// its bytes. Why not let HDF5 write the disk file itself: when a write fails
+// there (disk full), HDF5 1.10 keeps the file open with its unwritten cache,
+// and its exit handler then crashes trying to flush it again. In memory, no
+// HDF5 call can meet a disk error; the bytes are written with plain stdio.
+Result<std::vector<unsigned char>> buildImage(const std::string& tmp, const Hdf5ExportInput& in,
+                                              const std::string& metadataJson, const std::string& sha) {
   Writer w(tmp);
-  Id file(H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
+  Id fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+  if (!fapl.ok() || H5Pset_fapl_core(fapl.get(), std::size_t{4} << 20, false) < 0)
+    return w.fail("set up the in-memory file");
+  Id file(H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl.get()), H5Fclose);
   if (!file.ok()) return w.fail("create the file");
   const hid_t root = file.get();
   FOG_RETURN_IF_ERROR(w.stringAttr(root, "format", "fogbench-hdf5"));
@@ -453,9 +461,13 @@ Status writeFile(const std::string& tmp, const Hdf5ExportInput& in, const std::s
                                  ", which the recording does not; export the report with its own recording");
       }
   }
-  // The close flushes everything: a full disk shows here at the latest.
-  if (!file.close()) return w.fail("finish (flush and close) the file");
-  return Status::ok();
+  if (H5Fflush(root, H5F_SCOPE_GLOBAL) < 0) return w.fail("finish the file");
+  const ssize_t size = H5Fget_file_image(root, nullptr, 0);
+  if (size < 0) return w.fail("take the file's image");
+  std::vector<unsigned char> image(static_cast<std::size_t>(size));
+  if (H5Fget_file_image(root, image.data(), image.size()) != size) return w.fail("take the file's image");
+  if (!file.close()) return w.fail("close the file");
+  return image;
 }
 
 }  // namespace
@@ -498,7 +510,22 @@ Status exportHdf5(const std::string& path, const Hdf5ExportInput& in, bool overw
                      "; check that the folder exists and is writable");
     std::fclose(probe);
   }
-  Status s = writeFile(tmp, in, metadataJson, sha);
+  Status s = Status::ok();
+  if (auto image = buildImage(tmp, in, metadataJson, sha); !image.isOk()) {
+    s = image.status();
+  } else {
+    std::FILE* f = std::fopen(tmp.c_str(), "wb");
+    if (!f) {
+      s = ioError("cannot create " + tmp + ": " + std::strerror(errno));
+    } else {
+      const bool written = std::fwrite(image.value().data(), 1, image.value().size(), f) == image.value().size();
+      const int err = errno;
+      const bool closed = std::fclose(f) == 0;
+      if (!written || !closed)
+        s = ioError("could not write all of " + tmp + " (" + std::strerror(written ? errno : err) +
+                    "; disk full?); " + path + " was not written");
+    }
+  }
   if (s.isOk()) {
     fs::rename(tmp, path, ec);
     if (ec) s = ioError("cannot rename " + tmp + " to " + path + ": " + ec.message());

@@ -13,6 +13,8 @@ import hashlib
 import json
 import math
 import os
+import resource
+import signal
 import struct
 import subprocess
 import sys
@@ -203,6 +205,15 @@ def main():
     r = run("export", "S.fbs", "--hdf5", "no/such/folder/S.h5")
     check(r.returncode == 2, f"export into a missing folder: exit {r.returncode}")
     check("cannot create" in r.stderr and "HDF5-DIAG" not in r.stderr, f"missing folder words: {r.stderr!r}")
+    # A write that fails midway (a 64 KiB file size limit: EFBIG, as a full
+    # disk gives ENOSPC): exit 2 with words, no crash, nothing left behind.
+    def small_files():
+        signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
+        resource.setrlimit(resource.RLIMIT_FSIZE, (64 * 1024, resource.getrlimit(resource.RLIMIT_FSIZE)[1]))
+    r = run("export", "S.fbs", "--hdf5", "full.h5", preexec_fn=small_files)
+    check(r.returncode == 2, f"export onto a 'full disk': exit {r.returncode} (negative = killed by a signal)")
+    check("disk full?" in r.stderr, f"full disk words: {r.stderr!r}")
+    check(not os.path.exists(os.path.join(work, "full.h5")), "a failed export left full.h5")
     check(not any(n.endswith(".partial") for n in os.listdir(work)), "a .partial file was left behind")
     return finish()
 
