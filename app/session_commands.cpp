@@ -15,6 +15,7 @@
 #include "core/acquisition/replay_source.h"
 #include "core/common/text.h"
 #include "core/common/version.h"
+#include "core/analysis/frequency_response.h"
 #include "core/io/csv_export.h"
 #include "core/io/hdf5_export.h"
 #include "core/io/csv_import.h"
@@ -361,6 +362,11 @@ int exportCommand(CliArguments& args) {
     in.constants = constants;
     in.sessionPath = path;
     in.source = opened->sourceLine();
+    // The frequency response `response` shows (its default --at-hz); none
+    // unless an axis has two or more points that passed their checks.
+    std::vector<analysis::ResponseAnalysis> responses;
+    if (report) responses = analysis::analyzeResponses(*report, analysis::kDefaultGroupDelayAtHz);
+    in.responses = &responses;
     if (auto s = io::exportHdf5(*hdf5Path, in, overwrite); !s.isOk())
       return fail(overwrite || s.code() != StatusCode::kInvalidArgument ? s : Status(s.code(), s.message() + " (--overwrite)"), 2);
     std::cout << "HDF5 export of " << path << ": " << *hdf5Path << "\n";

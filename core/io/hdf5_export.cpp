@@ -338,8 +338,107 @@ Status writePoint(Writer& w, hid_t parent, const TestPointData& data, const anal
   return Status::ok();
 }
 
-Status scalar(Writer& w, hid_t g, const char* name, double v, const char* unit) {
+Status scalar(Writer& w, hid_t g, const std::string& name, double v, const std::string& unit) {
   return w.doubles(g, name, std::vector<double>{v}, unit);
+}
+
+// A response model parameter's unit, by its name (frequency_response.h).
+std::string parameterUnit(const std::string& name) {
+  if (name.size() > 3 && name.compare(name.size() - 3, 3, "_ms") == 0) return "ms";
+  if (name.size() > 3 && name.compare(name.size() - 3, 3, "_hz") == 0) return "Hz";
+  return "1";  // K, zeta
+}
+
+// One axis' frequency response, under the names `response --json` uses.
+Status writeResponse(Writer& w, hid_t parent, const analysis::ResponseAnalysis& r) {
+  std::vector<std::unique_ptr<Id>> keep;
+  FOG_ASSIGN_OR_RETURN(hid_t g, w.group(parent, axisName(r.axis), keep));
+  FOG_RETURN_IF_ERROR(w.numberAttr(g, "group_delay_at_hz", r.groupDelayAtHz));
+  FOG_RETURN_IF_ERROR(w.stringAttr(g, "chosen_model", r.chosen >= 0 ? analysis::responseModelName(
+                                                                          r.models[static_cast<std::size_t>(r.chosen)].kind)
+                                                                    : ""));
+  FOG_RETURN_IF_ERROR(w.stringAttr(g, "no_model_reason", r.chosen >= 0 ? "" : r.noModelReason));
+  FOG_RETURN_IF_ERROR(w.numberAttr(g, "adequacy_p_threshold", analysis::kModelAdequacyP));
+  FOG_RETURN_IF_ERROR(w.strings(g, "skipped_models", r.skipped));
+  {
+    FOG_ASSIGN_OR_RETURN(hid_t pg, w.group(g, "points", keep));
+    std::vector<std::int64_t> index;
+    std::vector<double> f, m, ms, db, dbs, ph, phs, lag, lags, cov, harm;
+    for (const auto& p : r.points) {
+      index.push_back(p.index + 1);
+      f.push_back(p.frequencyHz);
+      m.push_back(p.magnitude);
+      ms.push_back(p.magnitudeStd);
+      db.push_back(p.magnitudeDb);
+      dbs.push_back(p.magnitudeDbStd);
+      ph.push_back(p.phaseDeg);
+      phs.push_back(p.phaseStdDeg);
+      lag.push_back(p.lagMs);
+      lags.push_back(p.lagStdMs);
+      cov.push_back(p.magnitudePhaseCovDeg);
+      harm.push_back(p.harmonicFraction);
+    }
+    FOG_RETURN_IF_ERROR(w.integers(pg, "test_point", index, "1"));
+    FOG_RETURN_IF_ERROR(w.doubles(pg, "frequency_hz", f, "Hz"));
+    FOG_RETURN_IF_ERROR(w.doubles(pg, "magnitude", m, "1"));
+    FOG_RETURN_IF_ERROR(w.doubles(pg, "magnitude_std", ms, "1"));
+    FOG_RETURN_IF_ERROR(w.doubles(pg, "magnitude_db", db, "dB"));
+    FOG_RETURN_IF_ERROR(w.doubles(pg, "magnitude_db_std", dbs, "dB"));
+    FOG_RETURN_IF_ERROR(w.doubles(pg, "phase_deg", ph, "deg"));
+    FOG_RETURN_IF_ERROR(w.doubles(pg, "phase_std_deg", phs, "deg"));
+    FOG_RETURN_IF_ERROR(w.doubles(pg, "lag_ms", lag, "ms"));
+    FOG_RETURN_IF_ERROR(w.doubles(pg, "lag_std_ms", lags, "ms"));
+    FOG_RETURN_IF_ERROR(w.doubles(pg, "magnitude_phase_cov_deg", cov, "deg"));
+    FOG_RETURN_IF_ERROR(w.doubles(pg, "harmonic_fraction", harm, "1"));
+  }
+  {
+    FOG_ASSIGN_OR_RETURN(hid_t lg, w.group(g, "left_out", keep));
+    std::vector<std::int64_t> index;
+    std::vector<double> f;
+    std::vector<std::string> reason;
+    for (const auto& p : r.leftOut) {
+      index.push_back(p.index + 1);
+      f.push_back(p.frequencyHz);
+      reason.push_back(p.reason);
+    }
+    FOG_RETURN_IF_ERROR(w.integers(lg, "test_point", index, "1"));
+    FOG_RETURN_IF_ERROR(w.doubles(lg, "frequency_hz", f, "Hz"));
+    FOG_RETURN_IF_ERROR(w.strings(lg, "reason", reason));
+  }
+  FOG_ASSIGN_OR_RETURN(hid_t mg, w.group(g, "models", keep));
+  for (const auto& m : r.models) {
+    FOG_ASSIGN_OR_RETURN(hid_t k, w.group(mg, analysis::responseModelName(m.kind), keep));
+    FOG_RETURN_IF_ERROR(scalar(w, k, "chi_square", m.chiSquare, "1"));
+    FOG_RETURN_IF_ERROR(w.integers(k, "dof", {m.dof}, "1"));
+    FOG_RETURN_IF_ERROR(scalar(w, k, "aic", m.aic, "1"));
+    FOG_RETURN_IF_ERROR(scalar(w, k, "bic", m.bic, "1"));
+    FOG_RETURN_IF_ERROR(scalar(w, k, "p_value", m.pValue, "1"));
+    FOG_RETURN_IF_ERROR(w.integers(k, "adequate", {m.adequate ? 1 : 0}, "1"));
+    FOG_RETURN_IF_ERROR(w.integers(k, "admissible", {m.admissible() ? 1 : 0}, "1"));
+    FOG_RETURN_IF_ERROR(scalar(w, k, "low_frequency_delay_ms", m.lowFrequencyDelayMs.value, "ms"));
+    FOG_RETURN_IF_ERROR(scalar(w, k, "low_frequency_delay_std_ms", m.lowFrequencyDelayMs.stdDev, "ms"));
+    FOG_RETURN_IF_ERROR(scalar(w, k, "group_delay_ms", m.groupDelayMs.value, "ms"));
+    FOG_RETURN_IF_ERROR(scalar(w, k, "group_delay_std_ms", m.groupDelayMs.stdDev, "ms"));
+    // NaN: the pure delay has no bandwidth (`response --json`: null).
+    FOG_RETURN_IF_ERROR(scalar(w, k, "bandwidth_hz", m.bandwidthHz ? m.bandwidthHz->value : kNaN, "Hz"));
+    FOG_RETURN_IF_ERROR(scalar(w, k, "bandwidth_std_hz", m.bandwidthHz ? m.bandwidthHz->stdDev : kNaN, "Hz"));
+    FOG_RETURN_IF_ERROR(w.strings(k, "notes", m.notes));
+    FOG_RETURN_IF_ERROR(w.strings(k, "inadmissible", m.inadmissible));
+    FOG_ASSIGN_OR_RETURN(hid_t pg, w.group(k, "parameters", keep));
+    for (const auto& p : m.parameters) {
+      FOG_RETURN_IF_ERROR(scalar(w, pg, p.name, p.value, parameterUnit(p.name)));
+      FOG_RETURN_IF_ERROR(scalar(w, pg, p.name + "_std", p.stdDev, parameterUnit(p.name)));
+    }
+    // The parameters' correlation, row-major, in `parameters`' order.
+    const auto n = static_cast<std::size_t>(m.correlation.rows());
+    std::vector<double> corr;
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = 0; j < static_cast<std::size_t>(m.correlation.cols()); ++j)
+        corr.push_back(m.correlation(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)));
+    FOG_RETURN_IF_ERROR(w.dataset(k, "correlation", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, corr.data(),
+                                  {n, static_cast<hsize_t>(m.correlation.cols())}, "1"));
+  }
+  return Status::ok();
 }
 
 // The shown result: its verdict and reasons as judgeShown gives them, and per
@@ -451,6 +550,10 @@ Result<std::vector<unsigned char>> buildImage(const std::string& tmp, const Hdf5
         for (const auto& r : in.report->points)
           if (r.index == data.index) p = &r;
       FOG_RETURN_IF_ERROR(writePoint(w, tps, data, p));
+    }
+    if (in.responses && !in.responses->empty()) {
+      FOG_ASSIGN_OR_RETURN(hid_t rg, w.group(root, "response", keep));
+      for (const auto& r : *in.responses) FOG_RETURN_IF_ERROR(writeResponse(w, rg, r));
     }
     if (in.report)
       for (const auto& r : in.report->points) {

@@ -18,6 +18,9 @@
 //       fits/{channel, model, <fits.csv's numeric columns>}    (analysis only)
 //       residuals/{table_time_s, table_residual_deg, gyro_time_s, gyro_residual_deg}
 //       period_track/{time_s, lag_ms, table_amplitude_deg}
+//   /response/<x|y|z>       when given: the frequency response of an axis
+//                           (analysis::analyzeResponses, as `response --json`)
+//       points/, left_out/, models/<delay|first_order|second_order>/
 // Every dataset has a `unit` string attribute ("s", "deg", "ms", "Hz",
 // "deg/s", "degC", "frames", "1" for dimensionless or a count, "" for text).
 // A CSV cell that is empty (not a parameter of that fit) is NaN here.
@@ -32,6 +35,7 @@
 #include <string>
 
 #include "core/analysis/delay_analysis.h"
+#include "core/analysis/frequency_response.h"
 #include "core/common/bench_constants.h"
 #include "core/common/recording.h"
 #include "core/common/session_info.h"
@@ -48,6 +52,9 @@ struct Hdf5ExportInput {
   const BenchConstants* constants = nullptr;    // the shown result's constants (null: report's, if any)
   std::string sessionPath;                      // the .fbs whose SHA-256 is stated
   std::string source;                           // the session's source line (as report.json's)
+  // The frequency responses (analysis::analyzeResponses of `report`); null or
+  // empty: no /response group.
+  const std::vector<analysis::ResponseAnalysis>* responses = nullptr;
 };
 
 Status exportHdf5(const std::string& path, const Hdf5ExportInput& in, bool overwrite);

@@ -64,15 +64,60 @@ def text(v):
     return v.decode() if isinstance(v, bytes) else str(v)
 
 
+def check_response(h, doc):
+    check("response" in h, "`response` gives a response, the HDF5 has no /response")
+    if "response" not in h:
+        return
+    check(sorted(h["response"].keys()) == sorted(r["axis"] for r in doc["responses"]), "response axes differ")
+    point_units = {"frequency_hz": "Hz", "magnitude": "1", "magnitude_std": "1", "magnitude_db": "dB",
+                   "magnitude_db_std": "dB", "phase_deg": "deg", "phase_std_deg": "deg", "lag_ms": "ms",
+                   "lag_std_ms": "ms", "magnitude_phase_cov_deg": "deg", "harmonic_fraction": "1"}
+    model_units = {"chi_square": "1", "aic": "1", "bic": "1", "p_value": "1", "low_frequency_delay_ms": "ms",
+                   "low_frequency_delay_std_ms": "ms", "group_delay_ms": "ms", "group_delay_std_ms": "ms",
+                   "bandwidth_hz": "Hz", "bandwidth_std_hz": "Hz"}
+    # JSON numbers are nlohmann's shortest round-trip text: float() gives the double back.
+    js = lambda v: "" if v is None else repr(float(v))
+    for r in doc["responses"]:
+        g = h["response"][r["axis"]]
+        where = f"response {r['axis']}"
+        check(g.attrs["chosen_model"] == (r["chosen_model"] or ""), f"{where}: chosen model")
+        check(g.attrs["no_model_reason"] == (r["no_model_reason"] or ""), f"{where}: no-model reason")
+        same([js(r["group_delay_at_hz"])], [g.attrs["group_delay_at_hz"]], f"{where} group_delay_at_hz")
+        check(list(g["points/test_point"][()]) == [p["test_point"] for p in r["points"]], f"{where}: points")
+        for key, u in point_units.items():
+            same([js(p[key]) for p in r["points"]], g["points"][key], f"{where} points {key}")
+            unit(g["points"][key], u)
+        check(list(g["left_out/test_point"][()]) == [p["test_point"] for p in r["left_out"]], f"{where}: left out")
+        check([text(v) for v in g["left_out/reason"][()]] == [p["reason"] for p in r["left_out"]],
+              f"{where}: left-out reasons")
+        check(sorted(g["models"].keys()) == sorted(m["model"] for m in r["models"]), f"{where}: models")
+        for m in r["models"]:
+            k = g["models"][m["model"]]
+            for key, u in model_units.items():
+                same([js(m[key])], k[key], f"{where} {m['model']} {key}")
+                unit(k[key], u)
+            check(int(k["dof"][0]) == m["dof"], f"{where} {m['model']} dof")
+            check(bool(k["adequate"][0]) == m["adequate"], f"{where} {m['model']} adequate")
+            check(bool(k["admissible"][0]) == m["admissible"], f"{where} {m['model']} admissible")
+            for name, pv in m["parameters"].items():
+                same([js(pv["value"])], k["parameters"][name], f"{where} {m['model']} {name}")
+                same([js(pv["std"])], k["parameters"][name + "_std"], f"{where} {m['model']} {name}_std")
+            same([js(v) for row in m["correlation"] for v in row], k["correlation"],
+                 f"{where} {m['model']} correlation")
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--cli", required=True)
+    # CTest uses the quick preset; a longer session can be checked by hand.
+    ap.add_argument("--preset", default="quick")
+    ap.add_argument("--seed", default="3")
     args = ap.parse_args()
     cli = args.cli
     work = tempfile.mkdtemp(prefix="fog_hdf5_")
     run = lambda *a, **k: subprocess.run([cli, *a], cwd=work, capture_output=True, text=True, **k)
 
-    r = run("run", "--preset", "quick", "--seed", "3", "--out", "S.fbs")
+    r = run("run", "--preset", args.preset, "--seed", args.seed, "--out", "S.fbs")
     check(r.returncode == 0, f"run failed: {r.stderr}")
     r = run("export", "S.fbs", "--csv", "csv", "--hdf5", "S.h5")
     check(r.returncode == 0, f"export failed: {r.stderr}")
@@ -176,6 +221,15 @@ def main():
             line = [x for x in f if x.startswith("# result verdict:")][0]
         shown = h["result"].attrs["verdict"]
         check(line.startswith(f"# result verdict: {shown.upper()} ("), f"delays.csv says {line!r}, HDF5 {shown!r}")
+        # The frequency response: `response --json`'s numbers (same constants,
+        # same default --at-hz); none when no axis has two passed points.
+        rj = run("response", "S.fbs", "--json")
+        if rj.returncode == 0:
+            check_response(h, json.loads(rj.stdout))
+        else:
+            check(rj.returncode == 1, f"response failed: {rj.stderr}")
+            check("response" not in h, "/response exists although `response` finds no response")
+
         a = run("analyze", "S.fbs", "--json")
         check(a.returncode == 0, f"analyze --json failed: {a.stderr}")
         analysed = json.loads(a.stdout)
