@@ -4,7 +4,10 @@
 #include <QDir>
 #include <QSaveFile>
 
+#include "core/analysis/frequency_response.h"
 #include "core/io/csv_export.h"
+#include "core/io/hdf5_export.h"
+#include "core/session/session_file.h"
 #include "core/session/shown_csv.h"
 
 namespace fog::ui {
@@ -20,6 +23,26 @@ using session::oneLine;
 Status exportSessionData(const RunOutcome& outcome, const QString& dir) {
   const analysis::DelayReport* report = outcome.report ? &*outcome.report : nullptr;
   return io::exportCsv(QDir::toNativeSeparators(dir).toStdString(), outcome.info, outcome.recording, report, false);
+}
+
+Status exportSessionHdf5(const RunOutcome& outcome, const QString& path) {
+  const std::string file = QDir::toNativeSeparators(path).toStdString();
+  if (session::isSqliteFile(file))
+    return invalidArgument(file + " is a session (or another database); a session is never overwritten: "
+                           "choose another name");
+  const analysis::DelayReport* report = outcome.report ? &*outcome.report : nullptr;
+  const session::ShownVerdict verdict = outcome.shownVerdict();
+  std::vector<analysis::ResponseAnalysis> responses;
+  if (report) responses = analysis::analyzeResponses(*report, analysis::kDefaultGroupDelayAtHz);
+  io::Hdf5ExportInput in;
+  in.info = &outcome.info;
+  in.recording = &outcome.recording;
+  in.report = report;
+  in.shown = &verdict;
+  in.sessionPath = outcome.sessionPath;  // empty (no SHA-256) for a run without a session
+  in.source = outcome.info.source;
+  in.responses = &responses;
+  return io::exportHdf5(file, in, true);
 }
 
 std::string comparisonCsv(const std::vector<PointComparison>& rows, const analysis::DelayReport& a,

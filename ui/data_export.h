@@ -5,6 +5,9 @@
 //                       residuals and report, exactly as `fogbench-cli export
 //                       --csv DIR` writes them (io::exportCsv, docs/formats.md):
 //                       into a new or empty folder, never over other files
+//   exportSessionHdf5   the same and the shown result in one HDF5 file, as
+//                       `fogbench-cli export --hdf5 FILE.h5` writes it
+//                       (io::exportHdf5, docs/formats.md "HDF5 export")
 //   (the delay table: session::delayBreakdownCsv, the core's, which the
 //   CLI's export writes too)
 //   comparisonCsv       Compare's rows: per test point A's and B's IMU delay
@@ -30,6 +33,12 @@ namespace fog::ui {
 // one) into `dir`, which must be new or empty (a file there is never
 // replaced; the core's refusal says so).
 Status exportSessionData(const RunOutcome& outcome, const QString& dir);
+
+// io::exportHdf5 of the outcome (its report's constants, its shown verdict,
+// the frequency response when it has one) into `path`. `path` may be
+// replaced (the save dialog asked), but never when it is a session or other
+// database (kInvalidArgument).
+Status exportSessionHdf5(const RunOutcome& outcome, const QString& path);
 
 // Columns (test_point: the row's number, 1-based; amplitude_deg: the table's
 // fitted amplitude, as Compare matches points): test_point,axis,frequency_hz,amplitude_deg,a_imu_delay_ms,

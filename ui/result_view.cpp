@@ -368,6 +368,18 @@ void ResultView::buildExportMenu() {
       emit exportFailed(tr("Session data (CSV)"),
                         tr("%1\nThe session itself is unchanged.").arg(coreText(s.message())));
   });
+  menu->addAction(tr("Session data and result (HDF5 file)…"), this, [this] {
+    if (!outcome_) return;
+    // The dialog asks before replacing a file; a session is never replaced.
+    const QString path = QFileDialog::getSaveFileName(this, tr("Session data (HDF5)"),
+                                                      defaultExportPath("data", "h5"), tr("HDF5 file (*.h5)"));
+    if (path.isEmpty()) return;
+    if (auto s = exportSessionHdf5(*outcome_, path); !s.isOk())
+      emit exportFailed(tr("Session data (HDF5)"),
+                        tr("%1\nThe session itself is unchanged.").arg(coreText(s.message())));
+    else
+      emit exported(path);
+  });
   menu->addSeparator();
   menu->addAction(tr("Open the export folder"), this, &ResultView::openExportFolderRequested);
   exportButton_->setMenu(menu);

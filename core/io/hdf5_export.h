@@ -50,7 +50,7 @@ struct Hdf5ExportInput {
   const analysis::DelayReport* report = nullptr;  // null: samples only, no fits/result points
   const session::ShownVerdict* shown = nullptr;   // the shown result (null: none stated)
   const BenchConstants* constants = nullptr;    // the shown result's constants (null: report's, if any)
-  std::string sessionPath;                      // the .fbs whose SHA-256 is stated
+  std::string sessionPath;                      // the .fbs whose SHA-256 is stated (empty: none, "")
   std::string source;                           // the session's source line (as report.json's)
   // The frequency responses (analysis::analyzeResponses of `report`); null or
   // empty: no /response group.

@@ -838,7 +838,7 @@
 <context>
     <name>fog::ui::ConfigureView</name>
     <message>
-        <location filename="../../ui/configure_view.cpp" line="+51"/>
+        <location filename="../../ui/configure_view.cpp" line="+52"/>
         <source>Test plan</source>
         <translation>测试计划</translation>
     </message>
@@ -4296,7 +4296,7 @@ File: %1</source>
         <translation>%1（%3 个中的第 %2 个%4）</translation>
     </message>
     <message>
-        <location filename="../../ui/data_export.cpp" line="+59"/>
+        <location filename="../../ui/data_export.cpp" line="+82"/>
         <source>Cannot create %1: %2. Nothing was written; choose another folder.</source>
         <translation>无法创建 %1：%2。未写入任何内容；请选择其他文件夹。</translation>
     </message>
@@ -4513,7 +4513,7 @@ Run a test plan (Run), or open a session (Sessions).</source>
         <translation>标定报告</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+62"/>
         <source>No result yet: run a test plan (Run) or open a session (Sessions).</source>
         <translation>尚无结果：请运行测试计划（运行）或打开会话（会话）。</translation>
     </message>
@@ -4523,7 +4523,7 @@ Run a test plan (Run), or open a session (Sessions).</source>
         <translation>结果 %1/%2：%7，%3 由 %4（%5）保存，%6</translation>
     </message>
     <message>
-        <location line="-117"/>
+        <location line="-129"/>
         <source>PDF document (*.pdf)</source>
         <translation>PDF 文档 (*.pdf)</translation>
     </message>
@@ -4580,13 +4580,30 @@ Run a test plan (Run), or open a session (Sessions).</source>
     </message>
     <message>
         <location line="+1"/>
+        <location line="+10"/>
         <source>%1
 The session itself is unchanged.</source>
         <translation>%1
 会话本身未被改动。</translation>
     </message>
     <message>
+        <location line="-8"/>
+        <source>Session data and result (HDF5 file)…</source>
+        <translation>会话数据与结果（HDF5 文件）…</translation>
+    </message>
+    <message>
         <location line="+3"/>
+        <location line="+4"/>
+        <source>Session data (HDF5)</source>
+        <translation>会话数据（HDF5）</translation>
+    </message>
+    <message>
+        <location line="-3"/>
+        <source>HDF5 file (*.h5)</source>
+        <translation>HDF5 文件 (*.h5)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>Open the export folder</source>
         <translation>打开导出文件夹</translation>
     </message>

@@ -74,6 +74,7 @@
 #include "ui/plots/delta_picker.h"
 #include "core/io/csv_import.h"
 #include "ui/live_view.h"
+#include "ui/data_export.h"
 #include "ui/main_window.h"
 #include "ui/messages.h"
 #include "ui/noise_view.h"
@@ -2163,8 +2164,9 @@ class BenchUiTest : public QObject {
 
   // CSV out of Results, read back: the delay rows are the stored result's
   // numbers; the session data is the CLI's export (its fits.csv holds the
-  // shown lag); a folder that holds anything is refused and its file left
-  // as it was; a path that cannot be written says so and writes nothing.
+  // shown lag); the HDF5 file is written and never over the session; a
+  // folder that holds anything is refused and its file left as it was; a
+  // path that cannot be written says so and writes nothing.
   void csvExportsReadBackAsTheStoredResult() {
     auto w = window();
     QVERIFY(w->planEditor()->loadPreset("paper"));
@@ -2244,6 +2246,25 @@ class BenchUiTest : public QObject {
       ++joints;
     }
     QCOMPARE(joints, 2);
+
+    // The same data and the shown result in one HDF5 file (Export menu,
+    // "Session data and result (HDF5 file)"; its values are compared with the
+    // CSV export's by tests/hdf5). A session is never the file replaced.
+    const QString h5 = out.filePath("data.h5");
+    const auto h5Written = fog::ui::exportSessionHdf5(*outcome, h5);
+    QVERIFY2(h5Written.isOk(), h5Written.message().c_str());
+    QFile h5File(h5);
+    QVERIFY(h5File.open(QIODevice::ReadOnly));
+    QVERIFY(h5File.read(8) == QByteArray("\x89HDF\r\n\x1a\n", 8));  // the HDF5 signature
+    h5File.close();
+    const QByteArray sessionBytes = [&] {
+      QFile f(session);
+      return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+    }();
+    QVERIFY(!fog::ui::exportSessionHdf5(*outcome, session).isOk());
+    QFile sessionAfter(session);
+    QVERIFY(sessionAfter.open(QIODevice::ReadOnly));
+    QCOMPARE(sessionAfter.readAll(), sessionBytes);
 
     // Never over a file the operator did not name: a folder holding one is
     // refused, the file untouched.
