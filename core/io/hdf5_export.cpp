@@ -1,6 +1,8 @@
 #include "core/io/hdf5_export.h"
 
+#include <fcntl.h>
 #include <hdf5.h>
+#include <unistd.h>
 
 #include <array>
 #include <cerrno>
@@ -604,30 +606,40 @@ Status exportHdf5(const std::string& path, const Hdf5ExportInput& in, bool overw
 
   // HDF5 prints its error stack on stderr by default; the Status says it.
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  const std::string tmp = path + ".partial";
-  {
-    // A plain open first: its errno names why the folder takes no file.
-    std::FILE* probe = std::fopen(tmp.c_str(), "wb");
-    if (!probe)
+  // The temporary file: created exclusively (O_EXCL; mode 0666 less the
+  // umask, as any new file), so that a file already named OUT.h5.partial,
+  // which is not ours, is never truncated: the next free OUT.h5.N.partial.
+  std::string tmp;
+  int fd = -1;
+  for (int i = 0; i < 100 && fd < 0; ++i) {
+    tmp = path + (i == 0 ? std::string() : "." + std::to_string(i)) + ".partial";
+    fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd < 0 && errno != EEXIST)
       return ioError("cannot create " + tmp + ": " + std::strerror(errno) +
                      "; check that the folder exists and is writable");
-    std::fclose(probe);
+  }
+  if (fd < 0)
+    return ioError("cannot create a temporary file beside " + path + ": " + tmp +
+                   " and 99 others exist (left by failed exports?); remove them");
+  std::FILE* f = ::fdopen(fd, "wb");
+  if (!f) {
+    const int err = errno;
+    ::close(fd);
+    std::error_code ignored;
+    fs::remove(tmp, ignored);
+    return ioError("cannot write " + tmp + ": " + std::strerror(err));
   }
   Status s = Status::ok();
   if (auto image = buildImage(tmp, in, metadataJson, sha); !image.isOk()) {
     s = image.status();
+    std::fclose(f);
   } else {
-    std::FILE* f = std::fopen(tmp.c_str(), "wb");
-    if (!f) {
-      s = ioError("cannot create " + tmp + ": " + std::strerror(errno));
-    } else {
-      const bool written = std::fwrite(image.value().data(), 1, image.value().size(), f) == image.value().size();
-      const int err = errno;
-      const bool closed = std::fclose(f) == 0;
-      if (!written || !closed)
-        s = ioError("could not write all of " + tmp + " (" + std::strerror(written ? errno : err) +
-                    "; disk full?); " + path + " was not written");
-    }
+    const bool written = std::fwrite(image.value().data(), 1, image.value().size(), f) == image.value().size();
+    const int err = errno;
+    const bool closed = std::fclose(f) == 0;
+    if (!written || !closed)
+      s = ioError("could not write all of " + tmp + " (" + std::strerror(written ? errno : err) + "; disk full?); " +
+                  path + " was not written");
   }
   if (s.isOk()) {
     fs::rename(tmp, path, ec);

@@ -25,8 +25,11 @@
 // "deg/s", "degC", "frames", "1" for dimensionless or a count, "" for text).
 // A CSV cell that is empty (not a parameter of that fit) is NaN here.
 //
-// The file is written to `<path>.partial` in the same folder and renamed
-// over `path` only when complete: a failed export leaves no partial OUT.h5.
+// The file is built in memory (HDF5's core driver), written to a new
+// `<path>.partial` (or `<path>.N.partial` when that name is taken: no file
+// is truncated that the export did not create) in the same folder and
+// renamed over `path` only when complete: a failed export leaves neither
+// OUT.h5 nor the partial file.
 // Errors (never an exception, never HDF5's own printing on stderr):
 // kInvalidArgument (path exists and overwrite is false; path is a folder;
 // a recording without gyro samples), kIoError (folder not writable, disk

@@ -77,6 +77,24 @@ TEST(Hdf5Export, AnExistingFileIsReplacedOnlyWhenAllowed) {
   EXPECT_EQ(exportHdf5(dir, in, true).code(), StatusCode::kInvalidArgument);  // a folder is never the file
 }
 
+// A file already named like the temporary file is not the export's: it is
+// left as it was, and the export uses the next free name.
+TEST(Hdf5Export, AForeignPartialFileIsNeverTruncated) {
+  const std::string dir = freshDir();
+  const SessionInfo info;
+  const Recording rec = smallRecording(10);
+  Hdf5ExportInput in;
+  in.info = &info;
+  in.recording = &rec;
+  const std::string path = dir + "/out.h5";
+  std::ofstream(path + ".partial") << "someone's";
+  const Status s = exportHdf5(path, in, false);
+  ASSERT_TRUE(s.isOk()) << s.message();
+  EXPECT_GT(fs::file_size(path), 0u);
+  EXPECT_EQ(fs::file_size(path + ".partial"), 9u);
+  EXPECT_FALSE(fs::exists(path + ".1.partial"));
+}
+
 // A file size limit (RLIMIT_FSIZE, SIGXFSZ ignored) makes writes fail with
 // EFBIG the way a full disk fails them with ENOSPC: the failure must come back
 // as a kIoError with words, the partial file must be gone, and the process
