@@ -275,7 +275,7 @@ class ReadSession(unittest.TestCase):
         recorder = subprocess.Popen([CLI, "run", "--preset", "quick", "--seed", "4", "--speed", "5", "--out", path],
                                     stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
         try:
-            seen, deadline = None, time.monotonic() + 4.0
+            seen, deadline = None, time.monotonic() + 30.0  # the loop ends when the recorder does
             while time.monotonic() < deadline and recorder.poll() is None:
                 try:
                     s = fogbench.read_session(path, samples=False)
