@@ -122,9 +122,12 @@ usage:
       Blind check of the diagnosis on sessions with withheld effects.
   fogbench-cli noise SESSION.fbs|FILE.bin [--json] [--axis x|y|z] [--taus-per-octave N]
                      [--freq-hz F --amp-deg A --duration-s T] [--latitude-deg L] [--imu-frame F]
+                     [--kalibr-yaml IMU.yaml [--overwrite]]
       Gyro noise from the static segments (docs/noise.md): Allan deviation with
-      confidence intervals, IEEE 952 noise terms, bias, Earth-corrected bias and
-      the predicted lag sigma of a swing test. Exit 1 when there is no static segment.
+      confidence intervals, IEEE 952 noise terms (also in SI units), bias,
+      Earth-corrected bias and the predicted lag sigma of a swing test;
+      --kalibr-yaml writes the IMU noise file kalibr and OpenVINS read. Exit 1
+      when there is no static segment.
   fogbench-cli --version | help
 
 constants: --read-delay-ms (0.05) --read-delay-std-ms (0) --board-delay-ms (0.28)

@@ -1,6 +1,7 @@
 #include "app/noise_command.h"
 
 #include <cmath>
+#include <fstream>
 #include <iostream>
 #include <iterator>
 
@@ -60,7 +61,11 @@ int noiseCommand(CliArguments& args) {
   auto frame = readImuFrame(args, bench.imuFrame);
   if (!frame) return fail(frame.status(), 2);
   model::applyImuFrame(*frame, options.earth);
+  const auto yamlPath = args.text("kalibr-yaml");
+  const bool overwrite = args.flag("overwrite");
   if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
+  if (yamlPath)
+    if (auto s = checkOutputFile(*yamlPath, overwrite, "--kalibr-yaml"); !s.isOk()) return fail(s, 2);
 
   auto reports = noise::analyzeGyroNoise(recording, options);
   if (!reports) return fail(reports.status(), exitCodeFor(reports.status()));
@@ -69,6 +74,17 @@ int noiseCommand(CliArguments& args) {
   for (const auto& t : planned) predictions.push_back(noise::predictSwing(reports->front(), t));
   std::cout << (json ? noise::formatNoiseJson(*reports, predictions) + "\n"
                      : noise::formatNoiseText(*reports, predictions));
+  if (yamlPath) {
+    // The first static segment (the one a plan normally has), as for the
+    // prediction; serialised before the file is opened.
+    const std::string text = noise::formatKalibrYaml(reports->front(), opened->sourceLine());
+    std::ofstream file(*yamlPath, std::ios::binary | std::ios::trunc);
+    file << text;
+    file.close();
+    if (!file) return fail(ioError("cannot write '" + *yamlPath + "'; check the folder and the free space"), 2);
+    std::cerr << "fogbench-cli: kalibr / OpenVINS IMU noise of static segment " << reports->front().testPointIndex + 1
+              << " written to " << *yamlPath << "\n";
+  }
   return 0;
 }
 

@@ -307,16 +307,21 @@ void ConfigureView::setIdentity(const QString& operatorName, const QString& imuM
 void ConfigureView::showBenchConstants(const BenchConstants& s, const std::array<int, kAxisCount>& gyroSign) {
   // Line breaks of its own, no word wrap: a wrapping label would let the
   // column be squeezed under its real height on a small screen.
-  constantsLabel_->setText(tr("table read delay %1 ms · board delay %2 ms\nlatitude %3° · pulse equivalent %4°\n"
-                              "counter %5 MHz / %6 bit\ngyro signs %7\nIMU frame %8")
+  // Three lines, as before the signs and the frame joined them: a laptop's
+  // 768 px leave no room for a fourth. The frame as its code (NED, FRD:30),
+  // its words in the tooltip.
+  const std::string frameCode = imuFrameToText(s.imuFrame);
+  constantsLabel_->setText(tr("table read delay %1 ms · board delay %2 ms · latitude %3°\n"
+                              "pulse equivalent %4° · counter %5 MHz / %6 bit\ngyro signs %7 · IMU frame %8")
                                .arg(s.tableReadDelayMs)
                                .arg(s.boardDelayMs)
                                .arg(s.latitudeDeg)
                                .arg(s.pulseEquivalentDeg)
                                .arg(s.counterHz / 1e6)
                                .arg(s.counterBits)
-                               .arg(QString::fromStdString(describeGyroSigns(gyroSign)))
-                               .arg(coreText(describeImuFrame(s.imuFrame))));
+                               .arg(QString::fromStdString(describeGyroSigns(gyroSign)),
+                                    frameCode.empty() ? tr("not stated") : QString::fromStdString(frameCode)));
+  constantsLabel_->setToolTip(tr("IMU frame: %1").arg(coreText(describeImuFrame(s.imuFrame))));
 }
 
 void ConfigureView::setMessage(const QString& html) { message_->setText(html); }

@@ -40,8 +40,10 @@ QString verdictText(const session::SessionSummary& s) {
 
 // Each point's number with its mark: "0.4655 / refused (0.5155, INVALID)".
 // Up to this many points a delay column lists them all; beyond, it gives the
-// count and the range of those vouched for (a 20-point response session
-// would otherwise push the columns off screen), the list in the tooltip.
+// range of those vouched for, the Axes column the count (a 20-point
+// response session would otherwise push the columns off screen), the list
+// in the tooltip. The range is no wider than the column's header, so the
+// delays stay in view at 1024 px whatever the fonts.
 constexpr int kListedPoints = 3;
 
 // The column's text and tooltip for one delay quantity of every point.
@@ -62,12 +64,9 @@ std::pair<QString, QString> delaysMs(const session::ShownVerdict& shown, double 
     hi = std::max(hi, p.*value);
   }
   const int n = static_cast<int>(parts.size());
-  // n > kListedPoints: always a plural.
-  QString text = refused == n ? SessionBrowser::tr("%1 points, all refused").arg(n)
-                              : SessionBrowser::tr("%1 points: %2 to %3")
-                                    .arg(n)
-                                    .arg(QString::number(lo, 'f', 4), QString::number(hi, 'f', 4));
-  if (refused > 0 && refused < n) text += " " + SessionBrowser::tr("(%1 refused)").arg(refused);
+  QString text = refused == n ? SessionBrowser::tr("all refused")
+                              : QStringLiteral("%1–%2").arg(QString::number(lo, 'f', 4), QString::number(hi, 'f', 4));
+  if (refused > 0 && refused < n) text += SessionBrowser::tr(", %1 refused").arg(refused);
   return {text, parts.join("\n")};
 }
 
@@ -226,7 +225,11 @@ void SessionBrowser::refresh() {
     set(kCreated, QString::fromStdString(s.info.createdUtc));
     set(kOperator, QString::fromStdString(s.info.operatorName));
     set(kImu, imu);
-    set(kAxes, QString::fromStdString(session::axesOf(s.info.plan)).toUpper());
+    QString axes = QString::fromStdString(session::axesOf(s.info.plan)).toUpper();
+    // Many points: their count here, their delays as a range (delaysMs).
+    if (static_cast<int>(s.shown.points.size()) > kListedPoints)
+      axes += tr(", %1 points").arg(static_cast<int>(s.shown.points.size()));
+    set(kAxes, axes);
     set(kState, s.complete ? tr("complete") : tr("incomplete: %1").arg(coreText(s.incompleteReason)));
     if (!s.complete) table_->item(row, kState)->setForeground(QColor(170, 90, 0));
     if (!s.rawDamage.empty()) {

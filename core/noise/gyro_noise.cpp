@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/common/units.h"
+#include "core/common/version.h"
 
 namespace fog::noise {
 
@@ -140,6 +141,57 @@ TermInUnits termInGyroUnits(const NoiseTerm& t) {
   return {t.value * f, t.stdError * f, unit};
 }
 
+TermInUnits termInSiUnits(const NoiseTerm& t) {
+  // Native units are deg and deg/s times a power of s (noise_terms.h); only
+  // the angle changes: deg -> rad. N in deg/sqrt(s) is rad/s/sqrt(Hz) once
+  // in radians, since sqrt(s) = 1/sqrt(Hz); likewise K in deg/s/sqrt(s).
+  constexpr double kRadPerDeg = 3.14159265358979323846 / 180.0;
+  const char* unit = "";
+  switch (t.kind) {
+    case NoiseTermKind::kQuantisation: unit = "rad"; break;
+    case NoiseTermKind::kAngleRandomWalk: unit = "rad/s/sqrt(Hz)"; break;
+    case NoiseTermKind::kBiasInstability: unit = "rad/s"; break;
+    case NoiseTermKind::kRateRandomWalk: unit = "rad/s^2/sqrt(Hz)"; break;
+    case NoiseTermKind::kRateRamp: unit = "rad/s^2"; break;
+    case NoiseTermKind::kMarkov: unit = "rad/s"; break;
+  }
+  return {t.value * kRadPerDeg, t.stdError * kRadPerDeg, unit};
+}
+
+std::string formatKalibrYaml(const GyroNoiseReport& report, const std::string& source) {
+  auto value = [&](NoiseTermKind kind, const char* why) {
+    const NoiseTerm* t = report.model.find(kind);
+    if (!t) return std::string(".nan  # ") + why;
+    const auto si = termInSiUnits(*t);
+    const auto native = termInGyroUnits(*t);
+    return fmt("%.9g", si.value) + "  # " + si.unit + " (" + fmt("%.6g", native.value) + " " + native.unit + " ± " +
+           fmt("%.2g", native.stdError) + ", IEEE Std 952 " + noiseTermName(kind) + ")";
+  };
+  std::string oneLine = source;  // a comment ends at a line break: the name stays in it
+  std::replace_if(oneLine.begin(), oneLine.end(), [](char c) { return c == '\n' || c == '\r'; }, ' ');
+  std::ostringstream o;
+  o << "# IMU noise model for kalibr / OpenVINS (imu.yaml), written by fogbench " << FOG_VERSION << "\n"
+    << "# from the static segment of test point " << report.testPointIndex + 1 << " (" << upperAxis(report.gyroAxis)
+    << " gyro, " << fmt("%.1f", report.durationS) << " s at rest) of " << oneLine << "\n"
+    << "# Continuous-time densities, SI units, angles in radians: the angle random walk N in deg/sqrt(h)\n"
+    << "# is N / 60 deg/sqrt(s) = N / 60 * pi / 180 rad/s/sqrt(Hz); the rate random walk K in\n"
+    << "# deg/h/sqrt(h) is K / 3600 / 60 * pi / 180 rad/s^2/sqrt(Hz). Only this gyro axis was measured;\n"
+    << "# kalibr takes one value for all three gyros.\n"
+    << "rostopic: /imu0\n"
+    << "update_rate: " << fmt("%.6g", report.intervalS > 0.0 ? 1.0 / report.intervalS : 0.0)
+    << "  # Hz, 1 / the IMU's mean frame interval (" << fmt("%.6g", report.intervalS * 1e3) << " ms)\n"
+    << "gyroscope_noise_density: "
+    << value(NoiseTermKind::kAngleRandomWalk, "not identified in this record (no white rate above the other terms)")
+    << "\n"
+    << "gyroscope_random_walk: "
+    << value(NoiseTermKind::kRateRandomWalk,
+             "not identified in this record (too short to see a rate random walk; a longer rest shows it)")
+    << "\n"
+    << "accelerometer_noise_density: .nan  # not measured: fogbench measures the gyro, not the accelerometer\n"
+    << "accelerometer_random_walk: .nan  # not measured: fogbench measures the gyro, not the accelerometer\n";
+  return o.str();
+}
+
 SimulatorFeed simulatorFeed(const GyroNoiseReport& report, const model::SimConfig& base) {
   SimulatorFeed feed;
   feed.config = base;
@@ -197,8 +249,10 @@ std::string formatNoiseText(const std::vector<GyroNoiseReport>& reports, const s
       << r.model.dof << " dof):\n";
     for (const auto& t : r.model.terms) {
       const auto u = termInGyroUnits(t);
+      const auto si = termInSiUnits(t);
       o << "    " << noiseTermName(t.kind) << ": " << fmt("%.4g", u.value) << " ± " << fmt("%.2g", u.stdError) << " "
-        << u.unit << "  (tau " << fmt("%.3g", t.tauLowS) << " .. " << fmt("%.3g", t.tauHighS) << " s";
+        << u.unit << " = " << fmt("%.4g", si.value) << " ± " << fmt("%.2g", si.stdError) << " " << si.unit << "  (tau "
+        << fmt("%.3g", t.tauLowS) << " .. " << fmt("%.3g", t.tauHighS) << " s";
       if (t.kind == NoiseTermKind::kMarkov)
         o << "; correlation time " << fmt("%.3g", t.correlationTimeS) << " s, " << fmt("%.3g", t.correlationTimeLowS)
           << " .. " << fmt("%.3g", t.correlationTimeHighS);
@@ -241,8 +295,10 @@ std::string formatNoiseJson(const std::vector<GyroNoiseReport>& reports, const s
     s["terms"] = json::array();
     for (const auto& t : r.model.terms) {
       const auto u = termInGyroUnits(t);
-      json e = {{"term", noiseTermKey(t.kind)}, {"value", u.value},       {"std", u.stdError},
-                {"unit", u.unit},               {"tau_low_s", t.tauLowS}, {"tau_high_s", t.tauHighS},
+      const auto si = termInSiUnits(t);
+      json e = {{"term", noiseTermKey(t.kind)}, {"value", u.value},         {"std", u.stdError},
+                {"unit", u.unit},               {"value_si", si.value},     {"std_si", si.stdError},
+                {"unit_si", si.unit},           {"tau_low_s", t.tauLowS},   {"tau_high_s", t.tauHighS},
                 {"significance", t.significance}};
       if (t.kind == NoiseTermKind::kMarkov) {
         e["correlation_time_s"] = t.correlationTimeS;

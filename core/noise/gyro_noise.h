@@ -61,6 +61,21 @@ struct TermInUnits {
   const char* unit = "";  // "arcsec", "deg/sqrt(h)", "deg/h", "deg/h/sqrt(h)", "deg/h^2", "deg/h"
 };
 TermInUnits termInGyroUnits(const NoiseTerm& term);
+// The same term in SI units, as other tools (kalibr, OpenVINS, ROS) take
+// them, angles in radians: quantisation rad; angle random walk rad/s/sqrt(Hz)
+// (= rad/sqrt(s), the white rate's one-sided density); bias instability and
+// the Markov sigma rad/s; rate random walk rad/s^2/sqrt(Hz); rate ramp rad/s^2.
+TermInUnits termInSiUnits(const NoiseTerm& term);
+
+// The IMU noise file kalibr and OpenVINS read (imu.yaml; kalibr's
+// "IMU Noise Model" wiki): gyroscope_noise_density = the angle random walk N
+// in rad/s/sqrt(Hz), gyroscope_random_walk = the rate random walk K in
+// rad/s^2/sqrt(Hz), update_rate = 1 / the IMU's frame interval in Hz. A term
+// the record did not identify, and the accelerometer's keys (a gyro bench
+// measures no accelerometer), are written as .nan with a comment saying so:
+// a value that was not measured is never made up. `source` (the session's
+// path) is named in the header comment with the conversion used.
+std::string formatKalibrYaml(const GyroNoiseReport& report, const std::string& source);
 
 // Simulator parameters that make a simulated session sound like this one:
 // angle random walk N, the Markov term (or, for a flicker bias instability B,

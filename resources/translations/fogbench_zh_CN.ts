@@ -1004,20 +1004,26 @@
         <translation>IMU 型号</translation>
     </message>
     <message>
-        <location line="+108"/>
-        <source>table read delay %1 ms · board delay %2 ms
-latitude %3° · pulse equivalent %4°
-counter %5 MHz / %6 bit
-gyro signs %7
-IMU frame %8</source>
-        <translation>转台读数延迟 %1 ms · 处理板延迟 %2 ms
-纬度 %3° · 脉冲当量 %4°
-计数器 %5 MHz / %6 位
-陀螺符号 %7
-IMU 坐标系 %8</translation>
+        <location line="+112"/>
+        <source>table read delay %1 ms · board delay %2 ms · latitude %3°
+pulse equivalent %4° · counter %5 MHz / %6 bit
+gyro signs %7 · IMU frame %8</source>
+        <translation>转台读数延迟 %1 ms · 处理板延迟 %2 ms · 纬度 %3°
+脉冲当量 %4° · 计数器 %5 MHz / %6 位
+陀螺符号 %7 · IMU 坐标系 %8</translation>
     </message>
     <message>
-        <location line="-110"/>
+        <location line="+9"/>
+        <source>not stated</source>
+        <translation>未声明</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>IMU frame: %1</source>
+        <translation>IMU 坐标系：%1</translation>
+    </message>
+    <message>
+        <location line="-124"/>
         <source>IMU serial</source>
         <translation>IMU 序列号</translation>
     </message>
@@ -4914,19 +4920,14 @@ The session itself is unchanged.</source>
 <context>
     <name>fog::ui::SessionBrowser</name>
     <message>
-        <location filename="../../ui/session_browser.cpp" line="+28"/>
-        <source>%1 points, all refused</source>
-        <translation>%1 个测试点，全部被拒绝</translation>
+        <location filename="../../ui/session_browser.cpp" line="+29"/>
+        <source>all refused</source>
+        <translation>全部被拒绝</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>%1 points: %2 to %3</source>
-        <translation>%1 个测试点：%2 至 %3</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>(%1 refused)</source>
-        <translation>（%1 个被拒绝）</translation>
+        <location line="+2"/>
+        <source>, %1 refused</source>
+        <translation>，%1 个被拒绝</translation>
     </message>
     <message>
         <location line="+9"/>
@@ -5049,7 +5050,12 @@ The session itself is unchanged.</source>
         <translation>无法读取：%1</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+12"/>
+        <source>, %1 points</source>
+        <translation>，%1 个测试点</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>complete</source>
         <translation>完成</translation>
     </message>

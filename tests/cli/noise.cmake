@@ -22,6 +22,24 @@ expect_match("${text}" "tau s +adev deg/h +low deg/h +high deg/h +EDF" "noise te
 expect_match("${text}" "angle random walk: [0-9.e-]+ ± [0-9.e-]+ deg/sqrt\\(h\\)" "noise text")
 expect_match("${text}" "Swing test with this gyro: 0\\.1 Hz / 10 deg for 294 s gives a lag sigma of [0-9.]+ us" "noise text")
 
+# Every term in SI units too.
+expect_match("${text}" "angle random walk: [0-9.e-]+ ± [0-9.e-]+ deg/sqrt\\(h\\) = [0-9.e-]+ ± [0-9.e-]+ rad/s/sqrt\\(Hz\\)" "noise text in SI")
+
+# kalibr / OpenVINS's IMU file: the angle random walk in rad/s/sqrt(Hz), the
+# JSON's deg/sqrt(h) converted here by hand; never over an existing file
+# without --overwrite.
+run_expect(0 yaml noise ${dir}/noise.fbs --kalibr-yaml ${dir}/imu.yaml)
+file(READ ${dir}/imu.yaml imu)
+expect_match("${imu}" "\ngyroscope_noise_density: [0-9.e-]+  # rad/s/sqrt\\(Hz\\)" "kalibr yaml")
+expect_match("${imu}" "\nupdate_rate: 500  # Hz" "kalibr yaml")
+expect_match("${imu}" "\naccelerometer_noise_density: \\.nan  # not measured" "kalibr yaml")
+expect_match("${imu}" "noise\\.fbs" "kalibr yaml names the session")
+string(REGEX MATCH "\ngyroscope_noise_density: ([0-9.e-]+)" _ "${imu}")
+set(density ${CMAKE_MATCH_1})
+run_expect(2 again noise ${dir}/noise.fbs --kalibr-yaml ${dir}/imu.yaml)
+expect_match("${again_err}" "--kalibr-yaml.*--overwrite" "kalibr yaml not overwritten silently")
+run_expect(0 over noise ${dir}/noise.fbs --kalibr-yaml ${dir}/imu.yaml --overwrite)
+
 run_expect(0 json noise ${dir}/noise.fbs --json)
 string(JSON axis GET "${json}" segments 0 axis)
 string(JSON bias GET "${json}" segments 0 earth_corrected_bias_deg_h)
@@ -34,6 +52,29 @@ string(JSON lag GET "${json}" swing_predictions 0 lag_std_us)
 if(NOT axis STREQUAL "x" OR tau0 LESS 0.00199 OR tau0 GREATER 0.00201 OR NOT lo LESS hi OR NOT edf GREATER 1 OR term STREQUAL ""
    OR NOT lag GREATER 0)
   message(FATAL_ERROR "noise --json: unexpected values axis=${axis} tau0=${tau0} ci=${lo}..${hi} edf=${edf} term=${term} lag=${lag}")
+endif()
+# The YAML's density is the JSON's angle random walk (deg/sqrt(h)) / 60 * pi / 180.
+string(JSON nterms LENGTH "${json}" segments 0 terms)
+math(EXPR last "${nterms} - 1")
+set(arw "")
+foreach(i RANGE ${last})
+  string(JSON key GET "${json}" segments 0 terms ${i} term)
+  if(key STREQUAL "angle_random_walk")
+    string(JSON arw GET "${json}" segments 0 terms ${i} value)
+    string(JSON arw_si GET "${json}" segments 0 terms ${i} value_si)
+    string(JSON arw_unit GET "${json}" segments 0 terms ${i} unit_si)
+  endif()
+endforeach()
+if(arw STREQUAL "" OR NOT arw_unit STREQUAL "rad/s/sqrt(Hz)")
+  message(FATAL_ERROR "noise --json: no angle random walk with its SI value: ${json}")
+endif()
+# CMake's math() is integer only: compare in units of 1e-12 rad/s/sqrt(Hz)
+# through the decimal text (the density has 9 significant digits).
+execute_process(COMMAND /usr/bin/python3 -c
+  "import math,sys; a=float(sys.argv[1])/60*math.pi/180; y=float(sys.argv[2]); s=float(sys.argv[3]); sys.exit(0 if abs(y-a)<=1e-8*a and abs(s-a)<=1e-12*a else 1)"
+  ${arw} ${density} ${arw_si} RESULT_VARIABLE conv)
+if(NOT conv EQUAL 0)
+  message(FATAL_ERROR "kalibr yaml density ${density} and JSON value_si ${arw_si} are not the JSON's ARW ${arw} deg/sqrt(h) / 60 * pi / 180")
 endif()
 # The simulator's X gyro: bias 0.3 deg/h, Earth rate 0 on the east axis.
 if(bias LESS -1.5 OR bias GREATER 2.1)

@@ -209,3 +209,68 @@ TEST(GyroNoise, AGyroWhoseIncrementsNeverChangeIsRefusedInWords) {
 
 }  // namespace
 }  // namespace fog::noise
+
+namespace fog::noise {
+
+// Issue 43: the terms in the SI units other tools take, and kalibr's IMU
+// file, each value converted here by hand from the native units (deg, s).
+namespace {
+double yamlNumber(const std::string& yaml, const std::string& key) {
+  const auto at = yaml.find("\n" + key + ": ");
+  if (at == std::string::npos) return -1.0;
+  const std::string rest = yaml.substr(at + key.size() + 3);
+  if (rest.rfind(".nan", 0) == 0) return std::nan("");
+  return std::stod(rest);
+}
+}  // namespace
+
+TEST(GyroNoise, TermsInSiUnitsAndTheKalibrYamlAreConvertedByHand) {
+  GyroNoiseReport r;
+  r.testPointIndex = 1;
+  r.gyroAxis = Axis::kY;
+  r.durationS = 600.0;
+  r.intervalS = 0.002;
+  NoiseTerm n;
+  n.kind = NoiseTermKind::kAngleRandomWalk;
+  n.value = 0.005 / 60.0;  // 0.005 deg/sqrt(h), in deg/sqrt(s)
+  n.stdError = n.value / 10.0;
+  NoiseTerm k;
+  k.kind = NoiseTermKind::kRateRandomWalk;
+  k.value = 0.02 / 3600.0 / 60.0;  // 0.02 deg/h/sqrt(h), in deg/s/sqrt(s)
+  NoiseTerm b;
+  b.kind = NoiseTermKind::kBiasInstability;
+  b.value = 0.01 / 3600.0;  // 0.01 deg/h, in deg/s
+  r.model.terms = {n, b, k};
+
+  const double pi = 3.14159265358979323846;
+  const double arwSi = 0.005 / 60.0 * pi / 180.0;  // rad/s/sqrt(Hz)
+  const double rrwSi = 0.02 / 3600.0 / 60.0 * pi / 180.0;  // rad/s^2/sqrt(Hz)
+  EXPECT_NEAR(termInSiUnits(n).value, arwSi, 1e-15 * arwSi);
+  EXPECT_STREQ(termInSiUnits(n).unit, "rad/s/sqrt(Hz)");
+  EXPECT_NEAR(termInSiUnits(k).value, rrwSi, 1e-15 * rrwSi);
+  EXPECT_STREQ(termInSiUnits(k).unit, "rad/s^2/sqrt(Hz)");
+  EXPECT_NEAR(termInSiUnits(b).value, 0.01 / 3600.0 * pi / 180.0, 1e-20);
+  EXPECT_STREQ(termInSiUnits(b).unit, "rad/s");
+
+  const std::string yaml = formatKalibrYaml(r, "session /tmp/a\nb.fbs");
+  EXPECT_NEAR(yamlNumber(yaml, "gyroscope_noise_density"), arwSi, 1e-8 * arwSi) << yaml;
+  EXPECT_NEAR(yamlNumber(yaml, "gyroscope_random_walk"), rrwSi, 1e-8 * rrwSi) << yaml;
+  EXPECT_DOUBLE_EQ(yamlNumber(yaml, "update_rate"), 500.0) << yaml;
+  EXPECT_TRUE(std::isnan(yamlNumber(yaml, "accelerometer_noise_density"))) << yaml;
+  EXPECT_TRUE(std::isnan(yamlNumber(yaml, "accelerometer_random_walk"))) << yaml;
+  EXPECT_NE(yaml.find("not measured"), std::string::npos);
+  // The source is named in a comment, on one line.
+  EXPECT_NE(yaml.find("of session /tmp/a b.fbs\n"), std::string::npos) << yaml;
+  for (std::size_t at = 0; (at = yaml.find('\n', at)) != std::string::npos && at + 1 < yaml.size(); ++at) {
+    const std::string line = yaml.substr(at + 1, yaml.find('\n', at + 1) - at - 1);
+    EXPECT_TRUE(line.empty() || line[0] == '#' || line.find(": ") != std::string::npos) << line;
+  }
+
+  // A rate random walk the record did not identify is not made up.
+  r.model.terms = {n};
+  const std::string without = formatKalibrYaml(r, "s.fbs");
+  EXPECT_TRUE(std::isnan(yamlNumber(without, "gyroscope_random_walk"))) << without;
+  EXPECT_NE(without.find("gyroscope_random_walk: .nan  # not identified"), std::string::npos) << without;
+}
+
+}  // namespace fog::noise
