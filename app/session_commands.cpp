@@ -362,11 +362,11 @@ int exportCommand(CliArguments& args) {
     in.constants = constants;
     in.sessionPath = path;
     in.source = opened->sourceLine();
-    // The frequency response `response` shows (its default --at-hz); none
-    // unless an axis has two or more points that passed their checks.
-    std::vector<analysis::ResponseAnalysis> responses;
-    if (report) responses = analysis::analyzeResponses(*report, analysis::kDefaultGroupDelayAtHz);
-    in.responses = &responses;
+    // The frequency responses and the static segments' noise, as `response`
+    // and `noise` give them by default.
+    const io::Hdf5Extras extras = io::hdf5Extras(recording, in.report, info.bench);
+    in.responses = &extras.responses;
+    in.noise = &extras.noise;
     if (auto s = io::exportHdf5(*hdf5Path, in, overwrite); !s.isOk())
       return fail(overwrite || s.code() != StatusCode::kInvalidArgument ? s : Status(s.code(), s.message() + " (--overwrite)"), 2);
     std::cout << "HDF5 export of " << path << ": " << *hdf5Path << "\n";

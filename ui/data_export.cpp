@@ -32,8 +32,7 @@ Status exportSessionHdf5(const RunOutcome& outcome, const QString& path) {
                            "choose another name");
   const analysis::DelayReport* report = outcome.report ? &*outcome.report : nullptr;
   const session::ShownVerdict verdict = outcome.shownVerdict();
-  std::vector<analysis::ResponseAnalysis> responses;
-  if (report) responses = analysis::analyzeResponses(*report, analysis::kDefaultGroupDelayAtHz);
+  const io::Hdf5Extras extras = io::hdf5Extras(outcome.recording, report, outcome.info.bench);
   io::Hdf5ExportInput in;
   in.info = &outcome.info;
   in.recording = &outcome.recording;
@@ -41,7 +40,8 @@ Status exportSessionHdf5(const RunOutcome& outcome, const QString& path) {
   in.shown = &verdict;
   in.sessionPath = outcome.sessionPath;  // empty (no SHA-256) for a run without a session
   in.source = outcome.info.source;
-  in.responses = &responses;
+  in.responses = &extras.responses;
+  in.noise = &extras.noise;
   return io::exportHdf5(file, in, true);
 }
 

@@ -18,6 +18,9 @@
 
 #include "core/common/version.h"
 #include "core/io/csv_export.h"
+#include "core/common/units.h"
+#include "core/model/sim_config.h"
+#include "core/noise/gyro_noise.h"
 
 namespace fog::io {
 
@@ -344,6 +347,53 @@ Status scalar(Writer& w, hid_t g, const std::string& name, double v, const std::
   return w.doubles(g, name, std::vector<double>{v}, unit);
 }
 
+// One static segment's gyro noise, under the names `noise --json` uses: the
+// Allan curve and each IEEE 952 term in its customary and its SI unit.
+Status writeNoise(Writer& w, hid_t parent, const noise::GyroNoiseReport& r) {
+  std::vector<std::unique_ptr<Id>> keep;
+  char name[32];
+  std::snprintf(name, sizeof name, "segment_%02d", r.testPointIndex + 1);
+  FOG_ASSIGN_OR_RETURN(hid_t g, w.group(parent, name, keep));
+  FOG_RETURN_IF_ERROR(w.stringAttr(g, "axis", axisName(r.gyroAxis)));
+  FOG_RETURN_IF_ERROR(w.integers(g, "test_point", {r.testPointIndex + 1}, "1"));
+  FOG_RETURN_IF_ERROR(scalar(w, g, "duration_s", r.durationS, "s"));
+  FOG_RETURN_IF_ERROR(scalar(w, g, "interval_s", r.intervalS, "s"));
+  FOG_RETURN_IF_ERROR(scalar(w, g, "bias_deg_h", r.biasDegPerH, "deg/h"));
+  FOG_RETURN_IF_ERROR(scalar(w, g, "bias_std_deg_h", r.biasStdDegPerH, "deg/h"));
+  FOG_RETURN_IF_ERROR(scalar(w, g, "earth_rate_deg_h", r.earthRateDegPerH, "deg/h"));
+  FOG_RETURN_IF_ERROR(scalar(w, g, "earth_corrected_bias_deg_h", r.earthCorrectedBiasDegPerH, "deg/h"));
+  FOG_RETURN_IF_ERROR(scalar(w, g, "confidence", r.curve.confidence, "1"));
+  {
+    FOG_ASSIGN_OR_RETURN(hid_t a, w.group(g, "allan", keep));
+    std::vector<double> tau, adev, low, high, edf;
+    for (const auto& p : r.curve.points) {
+      tau.push_back(p.tauS);
+      adev.push_back(p.deviation * kSecondsPerHour);
+      low.push_back(p.interval.low * kSecondsPerHour);
+      high.push_back(p.interval.high * kSecondsPerHour);
+      edf.push_back(p.edf);
+    }
+    FOG_RETURN_IF_ERROR(w.doubles(a, "tau_s", tau, "s"));
+    FOG_RETURN_IF_ERROR(w.doubles(a, "adev_deg_h", adev, "deg/h"));
+    FOG_RETURN_IF_ERROR(w.doubles(a, "low_deg_h", low, "deg/h"));
+    FOG_RETURN_IF_ERROR(w.doubles(a, "high_deg_h", high, "deg/h"));
+    FOG_RETURN_IF_ERROR(w.doubles(a, "edf", edf, "1"));
+  }
+  FOG_ASSIGN_OR_RETURN(hid_t terms, w.group(g, "terms", keep));
+  for (const auto& t : r.model.terms) {
+    FOG_ASSIGN_OR_RETURN(hid_t k, w.group(terms, noise::noiseTermKey(t.kind), keep));
+    const auto u = noise::termInGyroUnits(t);
+    const auto si = noise::termInSiUnits(t);
+    FOG_RETURN_IF_ERROR(scalar(w, k, "value", u.value, u.unit));
+    FOG_RETURN_IF_ERROR(scalar(w, k, "std", u.stdError, u.unit));
+    FOG_RETURN_IF_ERROR(scalar(w, k, "value_si", si.value, si.unit));
+    FOG_RETURN_IF_ERROR(scalar(w, k, "std_si", si.stdError, si.unit));
+    FOG_RETURN_IF_ERROR(scalar(w, k, "tau_low_s", t.tauLowS, "s"));
+    FOG_RETURN_IF_ERROR(scalar(w, k, "tau_high_s", t.tauHighS, "s"));
+  }
+  return Status::ok();
+}
+
 // A response model parameter's unit, by its name (frequency_response.h).
 std::string parameterUnit(const std::string& name) {
   if (name.size() > 3 && name.compare(name.size() - 3, 3, "_ms") == 0) return "ms";
@@ -557,6 +607,10 @@ Result<std::vector<unsigned char>> buildImage(const std::string& tmp, const Hdf5
       FOG_ASSIGN_OR_RETURN(hid_t rg, w.group(root, "response", keep));
       for (const auto& r : *in.responses) FOG_RETURN_IF_ERROR(writeResponse(w, rg, r));
     }
+    if (in.noise && !in.noise->empty()) {
+      FOG_ASSIGN_OR_RETURN(hid_t ng, w.group(root, "noise", keep));
+      for (const auto& r : *in.noise) FOG_RETURN_IF_ERROR(writeNoise(w, ng, r));
+    }
     if (in.report)
       for (const auto& r : in.report->points) {
         bool found = false;
@@ -576,6 +630,16 @@ Result<std::vector<unsigned char>> buildImage(const std::string& tmp, const Hdf5
 }
 
 }  // namespace
+
+Hdf5Extras hdf5Extras(const Recording& recording, const analysis::DelayReport* report, const BenchConstants& bench) {
+  Hdf5Extras extras;
+  if (report) extras.responses = analysis::analyzeResponses(*report, analysis::kDefaultGroupDelayAtHz);
+  noise::GyroNoiseOptions options;
+  options.earth.latitudeDeg = bench.latitudeDeg;
+  model::applyImuFrame(bench.imuFrame, options.earth);
+  if (auto reports = noise::analyzeGyroNoise(recording, options)) extras.noise = std::move(*reports);
+  return extras;
+}
 
 Result<std::string> sha256OfFile(const std::string& path) {
   std::FILE* f = std::fopen(path.c_str(), "rb");

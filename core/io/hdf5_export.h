@@ -21,6 +21,11 @@
 //   /response/<x|y|z>       when given: the frequency response of an axis
 //                           (analysis::analyzeResponses, as `response --json`)
 //       points/, left_out/, models/<delay|first_order|second_order>/
+//   /noise/segment_NN       when given: a static segment's gyro noise (as
+//                           `noise --json`): scalars, allan/{tau_s, adev_deg_h,
+//                           low_deg_h, high_deg_h, edf}, terms/<term>/{value,
+//                           std (customary unit), value_si, std_si, tau_low_s,
+//                           tau_high_s}
 // Every dataset has a `unit` string attribute ("s", "deg", "ms", "Hz",
 // "deg/s", "degC", "frames", "1" for dimensionless or a count, "" for text).
 // A CSV cell that is empty (not a parameter of that fit) is NaN here.
@@ -43,6 +48,7 @@
 #include "core/common/recording.h"
 #include "core/common/session_info.h"
 #include "core/common/status.h"
+#include "core/noise/gyro_noise.h"
 #include "core/session/shown_verdict.h"
 
 namespace fog::io {
@@ -58,9 +64,23 @@ struct Hdf5ExportInput {
   // The frequency responses (analysis::analyzeResponses of `report`); null or
   // empty: no /response group.
   const std::vector<analysis::ResponseAnalysis>* responses = nullptr;
+  // The static segments' gyro noise (noise::analyzeGyroNoise); null or
+  // empty: no /noise group.
+  const std::vector<noise::GyroNoiseReport>* noise = nullptr;
 };
 
 Status exportHdf5(const std::string& path, const Hdf5ExportInput& in, bool overwrite);
+
+// What the export carries beyond the delay report, computed once here for
+// the command line and the GUI alike: the frequency responses as `response`
+// gives them (its default --at-hz), and the static segments' noise as
+// `noise` gives it by default (`bench`'s latitude and IMU frame); each empty
+// when the recording has none.
+struct Hdf5Extras {
+  std::vector<analysis::ResponseAnalysis> responses;
+  std::vector<noise::GyroNoiseReport> noise;
+};
+Hdf5Extras hdf5Extras(const Recording& recording, const analysis::DelayReport* report, const BenchConstants& bench);
 
 // Lower-case hex SHA-256 of a file's bytes (what `sha256sum FILE` prints).
 Result<std::string> sha256OfFile(const std::string& path);

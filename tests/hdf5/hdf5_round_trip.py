@@ -106,6 +106,41 @@ def check_response(h, doc):
                  f"{where} {m['model']} correlation")
 
 
+def check_noise(h, doc):
+    """/noise against `noise --json`: every segment, its Allan curve and terms,
+    customary and SI values bit for bit, with their units."""
+    check("noise" in h, "`noise` finds static segments, the HDF5 has no /noise")
+    if "noise" not in h:
+        return
+    js = lambda v: repr(float(v))
+    segments = doc["segments"]
+    check(len(h["noise"].keys()) == len(segments), f"noise segments: {list(h['noise'].keys())} vs {len(segments)}")
+    for s in segments:
+        name = f"segment_{s['test_point']:02d}"
+        check(name in h["noise"], f"no /noise/{name}")
+        if name not in h["noise"]:
+            continue
+        g = h["noise"][name]
+        check(g.attrs["axis"] == s["axis"], f"{name}: axis")
+        for key, u in {"duration_s": "s", "interval_s": "s", "bias_deg_h": "deg/h", "bias_std_deg_h": "deg/h",
+                       "earth_rate_deg_h": "deg/h", "earth_corrected_bias_deg_h": "deg/h", "confidence": "1"}.items():
+            same([js(s[key])], g[key], f"{name} {key}")
+            unit(g[key], u)
+        for key, u in {"tau_s": "s", "adev_deg_h": "deg/h", "low_deg_h": "deg/h", "high_deg_h": "deg/h",
+                       "edf": "1"}.items():
+            same([js(p[key]) for p in s["allan"]], g["allan"][key], f"{name} allan {key}")
+            unit(g["allan"][key], u)
+        check(sorted(g["terms"].keys()) == sorted(t["term"] for t in s["terms"]), f"{name}: terms")
+        for t in s["terms"]:
+            k = g["terms"][t["term"]]
+            for key, ukey in (("value", "unit"), ("std", "unit"), ("value_si", "unit_si"), ("std_si", "unit_si")):
+                same([js(t[key])], k[key], f"{name} {t['term']} {key}")
+                unit(k[key], t[ukey])
+            for key in ("tau_low_s", "tau_high_s"):
+                same([js(t[key])], k[key], f"{name} {t['term']} {key}")
+                unit(k[key], "s")
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--cli", required=True)
@@ -229,6 +264,14 @@ def main():
         else:
             check(rj.returncode == 1, f"response failed: {rj.stderr}")
             check("response" not in h, "/response exists although `response` finds no response")
+
+        # The static segments' noise: `noise --json`'s numbers; none without one.
+        nj = run("noise", "S.fbs", "--json")
+        if nj.returncode == 0:
+            check_noise(h, json.loads(nj.stdout))
+        else:
+            check(nj.returncode == 1, f"noise failed: {nj.stderr}")
+            check("noise" not in h, "/noise exists although `noise` finds no static segment")
 
         a = run("analyze", "S.fbs", "--json")
         check(a.returncode == 0, f"analyze --json failed: {a.stderr}")
