@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Set up, build and run every test, each test once per build flavour that it
-# proves something in (docs/benchmarks.md "CI" has the stage times):
+# proves something in (docs/benchmarks.md, "CI and the first result", has the
+# stage times):
 #   release   the full build (core, CLI, GUI on Qt 6 + Qwt 6.3) and every test;
 #   qt5       the GUI and its UI tests on Qt 5.15 + Qwt 6.1 (only the GUI's
 #             targets, only the `ui` and `translations` tests), so both Qt
