@@ -93,13 +93,17 @@ QString importText(const ImportSettings& imported) {
 
 // A stored result's settings in a few words: its constants, the gyro signs,
 // the session's IMU frame, its limit and what the import applied.
+// Constants with the conventions their numbers depend on: the gyro signs
+// always (a +1 is a statement too) and the session's IMU frame.
+QString constantsAndConventionsText(const BenchConstants& constants, const ImuFrame& sessionFrame) {
+  return constantsText(constants) + QObject::tr(", gyro signs %1, IMU frame %2")
+                                        .arg(QString::fromStdString(describeGyroSigns(constants.gyroSign)),
+                                             coreText(describeImuFrame(sessionFrame)));
+}
+
 QString settingsText(const ResultRecord& r, const ImuFrame& sessionFrame) {
-  QString text = constantsText(r.constants);
-  // The signs always (a +1 is a statement too), and the session's IMU frame.
-  text += QObject::tr(", gyro signs %1, IMU frame %2")
-              .arg(QString::fromStdString(describeGyroSigns(r.constants.gyroSign)),
-                   coreText(describeImuFrame(sessionFrame)));
-  return text + QObject::tr(", limit %1 ms").arg(num(r.imuDelayLimitMs, 3)) + importText(r.imported);
+  return constantsAndConventionsText(r.constants, sessionFrame) +
+         QObject::tr(", limit %1 ms").arg(num(r.imuDelayLimitMs, 3)) + importText(r.imported);
 }
 
 QString versionText(const ResultRecord& r) {
@@ -458,12 +462,10 @@ QString ResultView::resultDescription() const {
   if (!outcome_) return QString();
   const ResultRecord* r = outcome_->shownResult();
   if (!r) {
-    QString constants = outcome_->report ? constantsText(outcome_->report->constants) : QString();
-    if (outcome_->report)
-      constants += tr(", gyro signs %1, IMU frame %2")
-                       .arg(QString::fromStdString(describeGyroSigns(outcome_->report->constants.gyroSign)),
-                            coreText(describeImuFrame(outcome_->info.bench.imuFrame)));
-    constants += importText(outcome_->info.imported);
+    const QString constants =
+        (outcome_->report ? constantsAndConventionsText(outcome_->report->constants, outcome_->info.bench.imuFrame)
+                          : QString()) +
+        importText(outcome_->info.imported);
     if (outcome_->sessionPath.empty())
       return tr("this run's, not recorded in a session; computed by fogbench %1 with %2")
           .arg(QStringLiteral(FOG_VERSION), constants);

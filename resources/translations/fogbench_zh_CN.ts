@@ -4267,7 +4267,7 @@ File: %1</source>
         <translation>，陀螺符号 %1，IMU 坐标系 %2</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+7"/>
         <source>, limit %1 ms</source>
         <translation>，限值 %1 ms</translation>
     </message>
@@ -4524,12 +4524,12 @@ Run a test plan (Run), or open a session (Sessions).</source>
         <translation>尚无结果：请运行测试计划（运行）或打开会话（会话）。</translation>
     </message>
     <message>
-        <location line="+64"/>
+        <location line="+62"/>
         <source>result %1 of %2: %7, stored %3 by %4 (%5), %6</source>
         <translation>结果 %1/%2：%7，%3 由 %4（%5）保存，%6</translation>
     </message>
     <message>
-        <location line="-129"/>
+        <location line="-127"/>
         <source>PDF document (*.pdf)</source>
         <translation>PDF 文档 (*.pdf)</translation>
     </message>
@@ -4644,12 +4644,7 @@ The session itself is unchanged.</source>
         <translation>&lt;b&gt;无延迟结果：&lt;/b&gt;%1</translation>
     </message>
     <message>
-        <location line="+23"/>
-        <source>, gyro signs %1, IMU frame %2</source>
-        <translation>，陀螺符号 %1，IMU 坐标系 %2</translation>
-    </message>
-    <message>
-        <location line="+5"/>
+        <location line="+26"/>
         <source>this run&apos;s, not recorded in a session; computed by fogbench %1 with %2</source>
         <translation>本次运行的结果，未记录到会话；由 fogbench %1 使用 %2 计算</translation>
     </message>

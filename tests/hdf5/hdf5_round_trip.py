@@ -256,22 +256,16 @@ def main():
             line = [x for x in f if x.startswith("# result verdict:")][0]
         shown = h["result"].attrs["verdict"]
         check(line.startswith(f"# result verdict: {shown.upper()} ("), f"delays.csv says {line!r}, HDF5 {shown!r}")
-        # The frequency response: `response --json`'s numbers (same constants,
-        # same default --at-hz); none when no axis has two passed points.
-        rj = run("response", "S.fbs", "--json")
-        if rj.returncode == 0:
-            check_response(h, json.loads(rj.stdout))
-        else:
-            check(rj.returncode == 1, f"response failed: {rj.stderr}")
-            check("response" not in h, "/response exists although `response` finds no response")
-
-        # The static segments' noise: `noise --json`'s numbers; none without one.
-        nj = run("noise", "S.fbs", "--json")
-        if nj.returncode == 0:
-            check_noise(h, json.loads(nj.stdout))
-        else:
-            check(nj.returncode == 1, f"noise failed: {nj.stderr}")
-            check("noise" not in h, "/noise exists although `noise` finds no static segment")
+        # The frequency response and the static segments' noise: the numbers
+        # `response --json` and `noise --json` give (same constants, default
+        # options); no group when the command finds none (exit 1).
+        for command, group, compare in (("response", "response", check_response), ("noise", "noise", check_noise)):
+            r = run(command, "S.fbs", "--json")
+            if r.returncode == 0:
+                compare(h, json.loads(r.stdout))
+            else:
+                check(r.returncode == 1, f"{command} failed: {r.stderr}")
+                check(group not in h, f"/{group} exists although `{command}` finds none")
 
         a = run("analyze", "S.fbs", "--json")
         check(a.returncode == 0, f"analyze --json failed: {a.stderr}")
