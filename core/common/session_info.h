@@ -31,6 +31,10 @@ struct SessionInfo {
   std::string operatorName;
   std::string imuModel;
   std::string imuSerial;
+  // The production lot the IMU belongs to and the bench (station) that
+  // recorded the session: what the catalog groups results by (docs/catalog.md).
+  std::string lot;
+  std::string benchId;
   std::string source;           // "simulator, seed 1", "serial /dev/ttyUSB0 at 921600", "import run1/"
   std::string softwareVersion;  // FOG_VERSION of the program that recorded it
   std::string createdUtc;       // ISO 8601, e.g. "2026-11-22T02:45:00Z"
