@@ -82,7 +82,5 @@ struct Hdf5Extras {
 };
 Hdf5Extras hdf5Extras(const Recording& recording, const analysis::DelayReport* report, const BenchConstants& bench);
 
-// Lower-case hex SHA-256 of a file's bytes (what `sha256sum FILE` prints).
-Result<std::string> sha256OfFile(const std::string& path);
 
 }  // namespace fog::io

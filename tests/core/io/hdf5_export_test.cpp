@@ -11,6 +11,7 @@
 
 #include <sys/resource.h>
 
+#include "core/common/sha256.h"
 #include "core/io/hdf5_export.h"
 #include "io_test_util.h"
 
