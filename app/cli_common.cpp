@@ -40,6 +40,25 @@ void printIncompleteRun(const acquisition::AcquisitionResult& run) {
             << "\n";
 }
 
+void printColumns(const std::vector<std::vector<std::string>>& rows) {
+  if (rows.empty()) return;
+  std::vector<std::size_t> width(rows[0].size(), 0);
+  // Widths in code points, so that "±" and "°C" do not push columns apart.
+  auto length = [](const std::string& t) {
+    std::size_t n = 0;
+    for (unsigned char c : t) n += (c & 0xC0) != 0x80 ? 1 : 0;
+    return n;
+  };
+  for (const auto& row : rows)
+    for (std::size_t c = 0; c < row.size() && c < width.size(); ++c) width[c] = std::max(width[c], length(row[c]));
+  for (const auto& row : rows) {
+    std::string line;
+    for (std::size_t c = 0; c < row.size(); ++c)
+      line += row[c] + (c + 1 < row.size() && c < width.size() ? std::string(width[c] - length(row[c]) + 2, ' ') : "");
+    std::cout << forTerminal(line) << "\n";
+  }
+}
+
 int exitCodeFor(const Status& s) {
   return s.code() == StatusCode::kInsufficientData || s.code() == StatusCode::kNotConverged ? 1 : 2;
 }

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <string>
+#include <vector>
 
 #include "core/acquisition/acquisition.h"
 #include "core/analysis/delay_analysis.h"
@@ -27,6 +28,10 @@ int fail(const Status& s, int code);
 void printIncompleteRun(const acquisition::AcquisitionResult& run);
 // 1 for kInsufficientData / kNotConverged, 2 for everything else.
 int exitCodeFor(const Status& s);
+
+// Prints rows as aligned columns (two spaces apart) on stdout, each line
+// made safe for a terminal. rows[0] is the header.
+void printColumns(const std::vector<std::vector<std::string>>& rows);
 
 // An output file a command is about to write (--pdf, --save-raw,
 // --results-json): a session is never overwritten, not even with

@@ -2,10 +2,12 @@
 // analysis together; see `fogbench-cli help`.
 
 #include <iostream>
+#include <set>
 #include <string>
 #include <vector>
 
 #include "app/cli_arguments.h"
+#include "app/catalog_command.h"
 #include "app/cli_commands.h"
 #include "core/common/memory.h"
 #include "core/common/version.h"
@@ -128,6 +130,20 @@ usage:
       Earth-corrected bias and the predicted lag sigma of a swing test;
       --kalibr-yaml writes the IMU noise file kalibr and OpenVINS read. Exit 1
       when there is no static segment.
+  fogbench-cli catalog index DIR|FILE... [--db FILE|FOLDER|postgresql://...] [--json]
+      The lab's record (docs/catalog.md): one row per stored result of every
+      session under the folders (unit, lot, bench, verdict, IMU delay per point
+      only when vouched for, constants, software, who analysed it, the file's
+      SHA-256). Unchanged files are not reopened; a damaged file is one refusal.
+      Default catalog: the first folder's fogbench-catalog.sqlite.
+  fogbench-cli catalog units [--lot L] | unit SERIAL | lot LOT [--limit-ms L] | refused
+                       [--db ...] [--json | --csv]
+      Units and their latest verdicts; one unit's history (verdict, delay +- sigma,
+      temperature, constants, software, who; its delay against temperature); a
+      lot's pass rate, first-pass yield, delay mean and spread, and Cpk.
+  fogbench-cli catalog push --from LOCAL.sqlite|FOLDER --db postgresql://...
+      Sends the results not yet sent to a shared catalog (a bench that indexed
+      offline pushes when the server is back; a repeated push adds nothing).
   fogbench-cli --version | help
 
 constants: --read-delay-ms (0.05) --read-delay-std-ms (0) --board-delay-ms (0.28)
@@ -161,12 +177,16 @@ int main(int argc, char** argv) {
       return 0;
     }
   }
-  auto parsed = fog::app::CliArguments::parse(args, {"json", "no-store", "afap", "overwrite", "no-board-commands"});
+  // `catalog` reads --csv as a flag (CSV on stdout); `export --csv DIR` takes a folder.
+  std::set<std::string> flags = {"json", "no-store", "afap", "overwrite", "no-board-commands"};
+  if (command == "catalog") flags.insert("csv");
+  auto parsed = fog::app::CliArguments::parse(args, flags);
   if (!parsed) {
     std::cerr << "fogbench-cli: " << parsed.status().message() << "\n";
     return 2;
   }
   if (command == "run") return fog::app::runCommand(*parsed);
+  if (command == "catalog") return fog::app::catalogCommand(*parsed);
   if (command == "ports") {
     return fog::app::portsCommand(*parsed);
   }

@@ -191,15 +191,7 @@ int sessionsCommand(CliArguments& args) {
                         (e.contains("raw_stream_damaged") ? ", raw stream damaged" : ""),
                     resultColumn(e), joinMs(e["test_points"], "lag_ms"), joinMs(e["test_points"], "imu_delay_ms")});
   }
-  std::vector<std::size_t> width(rows[0].size(), 0);
-  for (const auto& row : rows)
-    for (std::size_t c = 0; c < row.size(); ++c) width[c] = std::max(width[c], row[c].size());
-  for (const auto& row : rows) {
-    std::string line;
-    for (std::size_t c = 0; c < row.size(); ++c)
-      line += row[c] + (c + 1 < row.size() ? std::string(width[c] - row[c].size() + 2, ' ') : "");
-    std::cout << forTerminal(line) << "\n";
-  }
+  printColumns(rows);
   const int skipped = listing->skippedFiles;
   std::cout << list.size() << (list.size() == 1 ? " session" : " sessions") << " in " << dir << "; " << skipped
             << " other " << (skipped == 1 ? "file" : "files") << " skipped\n";

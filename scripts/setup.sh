@@ -22,6 +22,7 @@ packages=(
   xvfb xauth openbox fonts-wqy-microhei
   python3 python3-numpy python3-h5py
   libhdf5-dev
+  libpq-dev postgresql-15
   poppler-utils
   qt6-translations-l10n qttranslations5-l10n
 )

@@ -1,0 +1,473 @@
+#include "app/catalog_command.h"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <map>
+
+#include <nlohmann/json.hpp>
+
+#include "app/cli_common.h"
+#include "core/analysis/verdict.h"
+#include "core/catalog/catalog.h"
+#include "core/common/text.h"
+#include "core/session/shown_csv.h"
+
+namespace fog::app {
+
+namespace {
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+using catalog::CatalogResult;
+
+std::string upper(std::string s) {
+  for (auto& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return s.empty() ? "NO VERDICT" : s;
+}
+
+std::string fixed(double v, int decimals) {
+  if (!std::isfinite(v)) return "-";
+  char b[64];
+  std::snprintf(b, sizeof b, "%.*f", decimals, v);
+  return b;
+}
+
+json number(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
+
+// The catalog a command works on. `--db` names a SQLite file, a folder (its
+// fogbench-catalog.sqlite) or a PostgreSQL server; without it, `index` uses
+// its first folder's catalog and the other commands the current folder's.
+// Only `index` creates a SQLite catalog: a query never leaves an empty file
+// where a catalog was mistyped.
+Result<std::unique_ptr<catalog::Catalog>> openCatalog(CliArguments& args, const std::string& defaultFolder,
+                                                       bool mayCreate) {
+  std::string target = args.text("db").value_or("");
+  std::error_code ec;
+  if (target.empty()) target = defaultFolder;
+  if (!catalog::isPostgresTarget(target)) {
+    if (fs::is_directory(target, ec)) target = (fs::path(target) / catalog::kDefaultCatalogFileName).string();
+    if (!mayCreate && !fs::exists(target, ec))
+      return invalidArgument("no catalog at '" + target +
+                             "'; index a folder first (fogbench-cli catalog index DIR) or name the catalog with "
+                             "--db FILE|FOLDER|postgresql://…");
+  }
+  FOG_ASSIGN_OR_RETURN(auto db, catalog::CatalogDb::open(target));
+  return catalog::Catalog::open(std::move(db));
+}
+
+std::string pointText(const catalog::CatalogPoint& p) {
+  const std::string where = p.axis + " " + fixed(p.frequencyHz, 3) + " Hz";
+  if (p.vouched()) {
+    const int d = analysis::decimalsFor(p.imuDelayStdMs);
+    return where + ": " + fixed(p.imuDelayMs, d) + " ± " + fixed(p.imuDelayStdMs, d) + " ms " + upper(p.verdict);
+  }
+  return where + ": refused (" + p.refusal + ")";
+}
+
+json pointJson(const catalog::CatalogPoint& p) {
+  json j = {{"index", p.index},
+            {"axis", p.axis},
+            {"frequency_hz", number(p.frequencyHz)},
+            {"amplitude_deg", number(p.amplitudeDeg)},
+            {"verdict", p.verdict},
+            {"vouched", p.vouched()}};
+  // A refused delay leaves without its number, with why (shown_verdict.h).
+  if (p.vouched()) {
+    j["imu_delay_ms"] = number(p.imuDelayMs);
+    j["imu_delay_std_ms"] = number(p.imuDelayStdMs);
+  } else {
+    j["refusal"] = p.refusal;
+  }
+  return j;
+}
+
+json resultJson(const CatalogResult& r) {
+  json points = json::array();
+  for (const auto& p : r.points) points.push_back(pointJson(p));
+  json audit = r.auditJson.empty() ? json(nullptr) : json::parse(r.auditJson, nullptr, false);
+  if (audit.is_discarded()) audit = nullptr;
+  return {{"imu_serial", r.imuSerial},
+          {"imu_model", r.imuModel},
+          {"lot", r.lot},
+          {"bench_id", r.benchId},
+          {"operator", r.operatorName},
+          {"session_created_utc", r.sessionCreatedUtc},
+          {"result", r.resultNumber},
+          {"result_created_utc", r.resultCreatedUtc},
+          {"shown", r.shown},
+          {"run_complete", r.runComplete},
+          {"mean_temperature_c", number(r.meanTemperatureC)},
+          {"verdict", r.verdict},
+          {"verdict_reason", r.verdictReason},
+          {"limit_ms", number(r.limitMs)},
+          {"constants_hash", r.constantsHash},
+          {"constants", r.constantsJson.empty() ? json(nullptr) : json::parse(r.constantsJson, nullptr, false)},
+          {"software_version", r.softwareVersion},
+          {"analysed_by", r.analysedBy},
+          {"audit", audit},
+          {"path", r.path},
+          {"file_sha256", r.fileSha256},
+          {"test_points", points}};
+}
+
+// Who analysed a result, from its audit ("" when not recorded).
+std::string whoOf(const CatalogResult& r) {
+  if (r.auditJson.empty()) return r.analysedBy.empty() ? "not recorded" : r.analysedBy;
+  const json a = json::parse(r.auditJson, nullptr, false);
+  if (!a.is_object()) return r.analysedBy;
+  std::string who = a.value("who", std::string());
+  const std::string tool = a.value("tool", r.analysedBy);
+  return who.empty() ? tool : who + " (" + tool + ")";
+}
+
+// CSV: one row per result and test point, the refused ones without a number.
+void printResultsCsv(const std::vector<CatalogResult>& results) {
+  std::cout << "imu_serial,imu_model,lot,bench_id,operator,session_created_utc,result,result_created_utc,shown,"
+               "mean_temperature_c,verdict,limit_ms,point,axis,frequency_hz,point_verdict,imu_delay_ms,"
+               "imu_delay_std_ms,refusal,constants_hash,software_version,analysed_by,path,file_sha256\n";
+  for (const auto& r : results) {
+    const std::string head = session::csvField(r.imuSerial) + "," + session::csvField(r.imuModel) + "," +
+                             session::csvField(r.lot) + "," + session::csvField(r.benchId) + "," +
+                             session::csvField(r.operatorName) + "," + r.sessionCreatedUtc + "," +
+                             std::to_string(r.resultNumber) + "," + r.resultCreatedUtc + "," + (r.shown ? "1" : "0") +
+                             "," + catalog::textOf(catalog::numberValue(r.meanTemperatureC)) + "," + r.verdict + "," +
+                             catalog::textOf(catalog::numberValue(r.limitMs));
+    const std::string tail = "," + r.constantsHash + "," + session::csvField(r.softwareVersion) + "," +
+                             session::csvField(whoOf(r)) + "," + session::csvField(r.path) + "," + r.fileSha256;
+    if (r.points.empty()) std::cout << head << ",,,,,,,," << session::csvField(r.verdictReason) << tail << "\n";
+    for (const auto& p : r.points) {
+      std::cout << head << "," << p.index << "," << p.axis << ","
+                << catalog::textOf(catalog::numberValue(p.frequencyHz)) << "," << p.verdict << ","
+                << (p.vouched() ? catalog::textOf(catalog::numberValue(p.imuDelayMs)) : "") << ","
+                << (p.vouched() ? catalog::textOf(catalog::numberValue(p.imuDelayStdMs)) : "") << ","
+                << session::csvField(p.refusal) << tail << "\n";
+    }
+  }
+}
+
+// The IMU delay's least-squares slope against the mean IMU temperature over
+// the vouched points of a unit's shown results: how the unit's delay moves
+// with temperature, with the slope's standard error. Empty when fewer than
+// three points at two or more temperatures.
+struct Slope {
+  int n = 0;
+  double perC = NAN, stdPerC = NAN;
+};
+Slope delayAgainstTemperature(const std::vector<CatalogResult>& results) {
+  std::vector<std::pair<double, double>> xy;
+  for (const auto& r : results)
+    if (r.shown && std::isfinite(r.meanTemperatureC))
+      for (const auto& p : r.points)
+        if (p.vouched()) xy.emplace_back(r.meanTemperatureC, p.imuDelayMs);
+  Slope s;
+  s.n = static_cast<int>(xy.size());
+  if (s.n < 3) return s;
+  double mx = 0, my = 0;
+  for (auto [x, y] : xy) mx += x, my += y;
+  mx /= s.n;
+  my /= s.n;
+  double sxx = 0, sxy = 0;
+  for (auto [x, y] : xy) sxx += (x - mx) * (x - mx), sxy += (x - mx) * (y - my);
+  if (!(sxx > 1e-12)) return s;
+  s.perC = sxy / sxx;
+  double rss = 0;
+  for (auto [x, y] : xy) rss += std::pow(y - my - s.perC * (x - mx), 2);
+  s.stdPerC = std::sqrt(rss / (s.n - 2) / sxx);
+  return s;
+}
+
+int indexCommand(CliArguments& args, const std::vector<std::string>& dirs) {
+  const bool asJson = args.flag("json");
+  if (dirs.empty()) return fail(invalidArgument("catalog index: name one or more folders (or session files)"), 2);
+  std::error_code ec;
+  const std::string firstFolder = fs::is_directory(dirs[0], ec) ? dirs[0] : fs::path(dirs[0]).parent_path().string();
+  auto cat = openCatalog(args, firstFolder.empty() ? "." : firstFolder, true);
+  if (!cat) return fail(cat.status(), 2);
+  if (Status s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
+  const bool tty = ::isatty(2) == 1;
+  auto report = (*cat)->index(dirs, [&](int done, int total) {
+    if (tty && (done % 10 == 0 || done == total))
+      std::cerr << "\rcatalog: " << done << "/" << total << " files" << (done == total ? "\n" : "") << std::flush;
+  });
+  if (!report) return fail(report.status(), 2);
+  if (asJson) {
+    json refusals = json::array();
+    for (const auto& [p, why] : report->refusals) refusals.push_back({{"path", p}, {"refusal", why}});
+    std::cout << json({{"catalog", (*cat)->describe()},
+                       {"files_found", report->filesFound},
+                       {"indexed", report->indexed},
+                       {"unchanged", report->unchanged},
+                       {"refused", report->refused},
+                       {"results_stored", report->resultsStored},
+                       {"refusals", refusals}})
+                     .dump(2)
+              << "\n";
+  } else {
+    std::cout << (*cat)->describe() << "\n"
+              << report->filesFound << " session files: " << report->indexed << " indexed ("
+              << report->resultsStored << " results), " << report->unchanged << " unchanged since last indexed, "
+              << report->refused << " refused\n";
+    for (const auto& [p, why] : report->refusals) std::cout << "  refused " << forTerminal(p) << ": " << forTerminal(why) << "\n";
+  }
+  return 0;
+}
+
+int unitsCommand(CliArguments& args) {
+  const bool asJson = args.flag("json"), asCsv = args.flag("csv");
+  const std::string lot = args.text("lot").value_or("");
+  auto cat = openCatalog(args, ".", false);
+  if (!cat) return fail(cat.status(), 2);
+  if (Status s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
+  auto results = (*cat)->results("", lot, false);
+  if (!results) return fail(results.status(), 2);
+  const auto units = catalog::summariseUnits(*results);
+  auto joinList = [](const std::vector<std::string>& v) {
+    std::string s;
+    for (const auto& x : v) s += (s.empty() ? "" : ",") + x;
+    return s;
+  };
+  if (asJson) {
+    json out = json::array();
+    for (const auto& u : units)
+      out.push_back({{"imu_serial", u.serial}, {"imu_model", u.model}, {"lots", u.lots}, {"benches", u.benches},
+                     {"sessions", u.sessions}, {"results", u.results}, {"latest_session_utc", u.latestUtc},
+                     {"latest_verdict", u.latestVerdict}});
+    std::cout << out.dump(2) << "\n";
+    return 0;
+  }
+  if (asCsv) {
+    std::cout << "imu_serial,imu_model,lots,benches,sessions,results,latest_session_utc,latest_verdict\n";
+    for (const auto& u : units)
+      std::cout << session::csvField(u.serial) << "," << session::csvField(u.model) << ","
+                << session::csvField(joinList(u.lots)) << "," << session::csvField(joinList(u.benches)) << ","
+                << u.sessions << "," << u.results << "," << u.latestUtc << "," << u.latestVerdict << "\n";
+    return 0;
+  }
+  std::vector<std::vector<std::string>> rows = {
+      {"IMU serial", "model", "lot", "benches", "sessions", "results", "latest session (UTC)", "its verdict"}};
+  for (const auto& u : units)
+    rows.push_back({u.serial.empty() ? "(none)" : u.serial, u.model.empty() ? "-" : u.model,
+                    u.lots.empty() ? "-" : joinList(u.lots), u.benches.empty() ? "-" : joinList(u.benches),
+                    std::to_string(u.sessions), std::to_string(u.results), u.latestUtc.empty() ? "-" : u.latestUtc,
+                    u.latestUtc.empty() ? "-" : upper(u.latestVerdict)});
+  printColumns(rows);
+  std::cout << units.size() << (units.size() == 1 ? " unit" : " units") << " in the " << (*cat)->describe() << "\n";
+  return 0;
+}
+
+int unitCommand(CliArguments& args, const std::string& serial) {
+  const bool asJson = args.flag("json"), asCsv = args.flag("csv");
+  auto cat = openCatalog(args, ".", false);
+  if (!cat) return fail(cat.status(), 2);
+  if (Status s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
+  auto results = (*cat)->results(serial, "", false);
+  if (!results) return fail(results.status(), 2);
+  if (results->empty())
+    return fail(invalidArgument("no result for IMU serial '" + serial + "' in the " + (*cat)->describe() +
+                                "; `catalog units` lists the serials it holds"),
+                1);
+  const Slope slope = delayAgainstTemperature(*results);
+  if (asJson) {
+    json history = json::array();
+    for (const auto& r : *results) history.push_back(resultJson(r));
+    json t = {{"vouched_points", slope.n}};
+    if (std::isfinite(slope.perC)) {
+      t["slope_ms_per_c"] = slope.perC;
+      t["slope_std_ms_per_c"] = slope.stdPerC;
+    }
+    std::cout << json({{"imu_serial", serial}, {"history", history}, {"delay_against_temperature", t}}).dump(2) << "\n";
+    return 0;
+  }
+  if (asCsv) {
+    printResultsCsv(*results);
+    return 0;
+  }
+  const auto& first = results->front();
+  std::cout << "IMU " << forTerminal(serial) << (first.imuModel.empty() ? "" : " (" + forTerminal(first.imuModel) + ")")
+            << ": " << results->size() << " results, oldest session first; a superseded result is marked "
+            << "\"superseded\" (a later analysis of the same session is shown)\n";
+  std::vector<std::vector<std::string>> rows = {{"session (UTC)", "result", "lot", "bench", "operator", "temp (°C)",
+                                                 "verdict", "IMU delay per test point", "limit (ms)", "constants",
+                                                 "software", "analysed by", "file"}};
+  for (const auto& r : *results) {
+    std::string points;
+    for (const auto& p : r.points) points += (points.empty() ? "" : " / ") + pointText(p);
+    if (r.points.empty()) points = r.verdictReason.empty() ? "-" : r.verdictReason;
+    rows.push_back({r.sessionCreatedUtc, std::to_string(r.resultNumber) + (r.shown ? "" : " superseded"),
+                    r.lot.empty() ? "-" : r.lot, r.benchId.empty() ? "-" : r.benchId,
+                    r.operatorName.empty() ? "-" : r.operatorName, fixed(r.meanTemperatureC, 1), upper(r.verdict),
+                    points, fixed(r.limitMs, 3), r.constantsHash.empty() ? "-" : r.constantsHash,
+                    r.softwareVersion.empty() ? "-" : r.softwareVersion, whoOf(r),
+                    fs::path(r.path).filename().string()});
+  }
+  printColumns(rows);
+  if (std::isfinite(slope.perC))
+    std::cout << "IMU delay against temperature: " << fixed(slope.perC * 1000.0, 3) << " ± "
+              << fixed(slope.stdPerC * 1000.0, 3) << " µs/°C (least squares over " << slope.n
+              << " vouched points of shown results)\n";
+  else
+    std::cout << "IMU delay against temperature: not stated (needs 3 or more vouched points at two or more "
+                 "temperatures; has "
+              << slope.n << ")\n";
+  return 0;
+}
+
+int lotCommand(CliArguments& args, const std::string& lot) {
+  const bool asJson = args.flag("json"), asCsv = args.flag("csv");
+  double limit = NAN;
+  if (args.has("limit-ms")) {
+    auto l = readDelayLimit(args);
+    if (!l) return fail(l.status(), 2);
+    limit = *l;
+  }
+  auto cat = openCatalog(args, ".", false);
+  if (!cat) return fail(cat.status(), 2);
+  if (Status s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
+  auto results = (*cat)->results("", lot, false);
+  if (!results) return fail(results.status(), 2);
+  if (results->empty())
+    return fail(invalidArgument("no result of lot '" + lot + "' in the " + (*cat)->describe()), 1);
+  auto stats = catalog::lotStatistics(lot, *results, limit);
+  if (!stats) return fail(stats.status(), 2);
+  const auto& s = *stats;
+  if (asJson || asCsv) {
+    json delay = json::array();
+    for (const auto& d : s.delay)
+      delay.push_back({{"axis", d.axis}, {"n", d.n}, {"mean_ms", number(d.meanMs)}, {"std_ms", number(d.stdMs)},
+                       {"cpk", number(d.cpk)}});
+    if (asCsv) {
+      std::cout << "lot,units,sessions,pass,fail,invalid,incomplete,no_verdict,superseded,pass_rate,first_pass_yield,"
+                   "limit_ms,limit_source,axis,n,mean_ms,std_ms,cpk\n";
+      for (const auto& d : s.delay)
+        std::cout << session::csvField(lot) << "," << s.units << "," << s.sessions << "," << s.pass << "," << s.fail
+                  << "," << s.invalid << "," << s.incomplete << "," << s.noVerdict << "," << s.superseded << ","
+                  << catalog::textOf(catalog::numberValue(s.passRate)) << ","
+                  << catalog::textOf(catalog::numberValue(s.firstPassYield)) << ","
+                  << catalog::textOf(catalog::numberValue(s.limitMs)) << "," << s.limitSource << "," << d.axis << ","
+                  << d.n << "," << catalog::textOf(catalog::numberValue(d.meanMs)) << ","
+                  << catalog::textOf(catalog::numberValue(d.stdMs)) << "," << catalog::textOf(catalog::numberValue(d.cpk))
+                  << "\n";
+      return 0;
+    }
+    std::cout << json({{"lot", lot},
+                       {"units", s.units},
+                       {"sessions", s.sessions},
+                       {"by_verdict",
+                        {{"pass", s.pass}, {"fail", s.fail}, {"invalid", s.invalid}, {"incomplete", s.incomplete},
+                         {"no_verdict", s.noVerdict}}},
+                       {"superseded_results", s.superseded},
+                       {"pass_rate", number(s.passRate)},
+                       {"first_pass_yield", number(s.firstPassYield)},
+                       {"limit_ms", number(s.limitMs)},
+                       {"limit_source", s.limitSource},
+                       {"imu_delay", delay},
+                       {"definitions",
+                        {{"pass_rate", "units whose latest session's shown result is PASS, over units"},
+                         {"first_pass_yield", "units whose first session's shown result is PASS, over units"},
+                         {"imu_delay", "over the vouched test points (PASS or FAIL) of shown PASS or FAIL results; "
+                                       "INVALID and INCOMPLETE results are counted, never averaged"},
+                         {"cpk", "(limit - mean) / (3 s), one-sided: the IMU delay has an upper limit only"}}}})
+                     .dump(2)
+              << "\n";
+    return 0;
+  }
+  auto pct = [](double f, int of) {
+    return fixed(f * 100.0, 1) + " % (" + std::to_string(static_cast<int>(std::lround(f * of))) + " of " +
+           std::to_string(of) + ")";
+  };
+  std::cout << "lot " << forTerminal(lot) << ": " << s.units << (s.units == 1 ? " unit, " : " units, ") << s.sessions
+            << " sessions — PASS " << s.pass << ", FAIL " << s.fail << ", INVALID " << s.invalid << ", INCOMPLETE "
+            << s.incomplete << (s.noVerdict ? ", no verdict " + std::to_string(s.noVerdict) : std::string()) << "; "
+            << s.superseded << " superseded results (re-analysed) not counted\n"
+            << "pass rate:        " << pct(s.passRate, s.units) << " — units whose latest session shows PASS\n"
+            << "first-pass yield: " << pct(s.firstPassYield, s.units) << " — units whose first session shows PASS\n"
+            << "IMU delay over the vouched test points of PASS and FAIL results (INVALID and INCOMPLETE results are "
+               "counted above, never averaged):\n";
+  std::vector<std::vector<std::string>> rows = {
+      {"axis", "points", "mean (ms)", "s (ms)",
+       "Cpk against " + fixed(s.limitMs, 3) + " ms (" + (s.limitSource.empty() ? "none" : s.limitSource) + ")"}};
+  for (const auto& d : s.delay)
+    rows.push_back({d.axis, std::to_string(d.n), fixed(d.meanMs, 4), fixed(d.stdMs, 4), fixed(d.cpk, 2)});
+  if (s.delay.empty()) rows.push_back({"-", "0", "-", "-", "-"});
+  printColumns(rows);
+  std::cout << "Cpk = (limit − mean) / (3 s), one-sided (the IMU delay has an upper limit only); s is the spread "
+               "of the units' delays, not their measurement σ\n";
+  return 0;
+}
+
+int pushCommand(CliArguments& args) {
+  const auto from = args.text("from");
+  if (!from) return fail(invalidArgument("catalog push: name the local catalog with --from FILE|FOLDER"), 2);
+  if (!args.has("db") || !catalog::isPostgresTarget(*args.text("db")))
+    return fail(invalidArgument("catalog push: name the shared catalog with --db postgresql://…"), 2);
+  std::error_code ec;
+  std::string local = *from;
+  if (fs::is_directory(local, ec)) local = (fs::path(local) / catalog::kDefaultCatalogFileName).string();
+  if (!fs::exists(local, ec)) return fail(invalidArgument("no local catalog at '" + local + "'"), 2);
+  auto localDb = catalog::CatalogDb::open(local);
+  if (!localDb) return fail(localDb.status(), 2);
+  auto localCat = catalog::Catalog::open(std::move(*localDb));
+  if (!localCat) return fail(localCat.status(), 2);
+  auto remote = openCatalog(args, "", true);
+  if (!remote) return fail(remote.status(), 3);
+  if (Status s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
+  auto report = (*localCat)->pushTo(**remote);
+  if (!report) return fail(report.status(), 3);
+  std::cout << "pushed " << report->pushed << " results from the " << (*localCat)->describe() << " to the "
+            << (*remote)->describe() << "; " << report->alreadyPushed << " pushed before and unchanged\n";
+  return 0;
+}
+
+int refusedCommand(CliArguments& args) {
+  const bool asJson = args.flag("json");
+  auto cat = openCatalog(args, ".", false);
+  if (!cat) return fail(cat.status(), 2);
+  if (Status s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
+  auto refusals = (*cat)->refusals();
+  if (!refusals) return fail(refusals.status(), 2);
+  if (asJson) {
+    json out = json::array();
+    for (const auto& [p, why] : *refusals) out.push_back({{"path", p}, {"refusal", why}});
+    std::cout << out.dump(2) << "\n";
+    return 0;
+  }
+  for (const auto& [p, why] : *refusals) std::cout << forTerminal(p) << ": " << forTerminal(why) << "\n";
+  std::cout << refusals->size() << " refused files in the " << (*cat)->describe() << "\n";
+  return 0;
+}
+
+}  // namespace
+
+int catalogCommand(CliArguments& args) {
+  const auto& pos = args.positionals();
+  if (pos.empty())
+    return fail(invalidArgument("catalog: say what to do: index DIR…, units, unit SERIAL, lot LOT, push, refused"), 2);
+  const std::string what = pos[0];
+  const std::vector<std::string> rest(pos.begin() + 1, pos.end());
+  auto one = [&](const char* name) -> std::optional<std::string> {
+    if (rest.size() != 1) return std::nullopt;
+    (void)name;
+    return rest[0];
+  };
+  if (what == "index") return indexCommand(args, rest);
+  if (what == "units" && rest.empty()) return unitsCommand(args);
+  if (what == "unit") {
+    if (auto s = one("SERIAL")) return unitCommand(args, *s);
+    return fail(invalidArgument("catalog unit: name one IMU serial"), 2);
+  }
+  if (what == "lot") {
+    if (auto s = one("LOT")) return lotCommand(args, *s);
+    return fail(invalidArgument("catalog lot: name one lot"), 2);
+  }
+  if (what == "push" && rest.empty()) return pushCommand(args);
+  if (what == "refused" && rest.empty()) return refusedCommand(args);
+  return fail(invalidArgument("catalog: unknown or misused '" + what +
+                              "'; use index DIR…, units, unit SERIAL, lot LOT, push, refused"),
+              2);
+}
+
+}  // namespace fog::app

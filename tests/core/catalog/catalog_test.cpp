@@ -1,0 +1,373 @@
+// The catalog (core/catalog/catalog.h) on both back ends: the same tests run
+// on a SQLite file and on a throwaway PostgreSQL server (CTest label
+// `postgres`; tests/core/catalog/postgres_server.sh starts it and writes its
+// address to the file FOG_TEST_POSTGRES_DSN_FILE names).
+
+#include "core/catalog/catalog.h"
+
+#include <gtest/gtest.h>
+#include <sqlite3.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <string>
+
+#include "../session/session_test_util.h"
+#include "core/protocol/recording_builder.h"
+#include "core/session/session_api.h"
+
+namespace fog::catalog {
+namespace {
+
+using fog::test::ScratchDir;
+
+// The server's address, from the file the fixture wrote; a Postgres test
+// without it fails (never skips): the CTest fixture must have run.
+std::string postgresBaseDsn() {
+  const char* file = std::getenv("FOG_TEST_POSTGRES_DSN_FILE");
+  if (!file) return "";
+  std::ifstream in(file);
+  std::string dsn;
+  std::getline(in, dsn);
+  return dsn;
+}
+
+// A fresh database per test on the server (tests may run side by side).
+std::string freshPostgresDatabase(const std::string& which) {
+  const std::string base = postgresBaseDsn();
+  EXPECT_FALSE(base.empty()) << "FOG_TEST_POSTGRES_DSN_FILE is not set or empty: run the Postgres tests through "
+                                "ctest (label postgres), which starts the throwaway server";
+  if (base.empty()) return "";
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  std::string name = "t_";
+  for (char c : std::string(info->name())) name += std::isalnum(static_cast<unsigned char>(c)) ? static_cast<char>(std::tolower(c)) : '_';
+  name = name.substr(0, 50) + "_" + which;
+  auto admin = CatalogDb::open(base + " dbname=postgres");
+  EXPECT_TRUE(admin.isOk()) << admin.status().message();
+  if (!admin) return "";
+  EXPECT_TRUE((*admin)->exec("DROP DATABASE IF EXISTS " + name).isOk());
+  EXPECT_TRUE((*admin)->exec("CREATE DATABASE " + name).isOk());
+  return base + " dbname=" + name;
+}
+
+// A SQLite catalog file, opened (created when new).
+std::unique_ptr<Catalog> catalogFile(const std::string& path) {
+  auto db = CatalogDb::open(path);
+  EXPECT_TRUE(db.isOk()) << db.status().message();
+  if (!db) return nullptr;
+  auto c = Catalog::open(std::move(db).value());
+  EXPECT_TRUE(c.isOk()) << c.status().message();
+  return c ? std::move(c).value() : nullptr;
+}
+
+class CatalogTest : public ::testing::TestWithParam<std::string> {
+ protected:
+  // A new, empty catalog on this test's back end; `n` tells several apart.
+  std::string target(const std::string& n = "cat") {
+    if (GetParam() == "sqlite") return dir_.file(n + ".sqlite");
+    if (!pgTargets_.count(n)) pgTargets_[n] = freshPostgresDatabaseFor(n);
+    return pgTargets_[n];
+  }
+  std::unique_ptr<Catalog> openCatalog(const std::string& n = "cat") {
+    auto db = CatalogDb::open(target(n));
+    EXPECT_TRUE(db.isOk()) << db.status().message();
+    if (!db) return nullptr;
+    auto c = Catalog::open(std::move(*db));
+    EXPECT_TRUE(c.isOk()) << c.status().message();
+    return c ? std::move(*c) : nullptr;
+  }
+
+  // A session of the short simulated run with this identity, analysed once
+  // with `constants` (result stored); returns its path.
+  std::string session(const std::string& name, const std::string& serial, const std::string& createdUtc,
+                      const BenchConstants& constants = {}, bool complete = true, double limitMs = 0.8) {
+    SessionInfo info;
+    info.source = "simulator, seed 3";
+    info.plan = fog::test::shortPlan();
+    info.imuSerial = serial;
+    info.imuModel = "FOG-3";
+    info.lot = "L7";
+    info.benchId = "bench-1";
+    info.operatorName = "ann";
+    info.createdUtc = createdUtc;
+    const std::string path = fog::test::recordedSession(dir_, name, info, complete);
+    analyse(path, constants, limitMs);
+    return path;
+  }
+  // Analyses and stores; returns the IMU delay of the one test point.
+  double analyse(const std::string& path, const BenchConstants& constants, double limitMs = 0.8) {
+    auto opened = session::openSessionOrStream(path);
+    EXPECT_TRUE(opened.isOk()) << opened.status().message();
+    if (!opened) return NAN;
+    session::AnalysisSettings s;
+    s.constants = constants;
+    s.imuDelayLimitMs = limitMs;
+    s.producedBy = "catalog_test";
+    const auto r = session::analyseAndStore(*opened, s);
+    EXPECT_TRUE(r.stored) << r.notStored << r.storeStatus.message();
+    return r.report ? r.report->points.at(0).imuDelayMs : NAN;
+  }
+
+  ScratchDir dir_;
+
+ private:
+  std::string freshPostgresDatabaseFor(const std::string& n) { return freshPostgresDatabase(n); }
+  std::map<std::string, std::string> pgTargets_;
+};
+
+TEST_P(CatalogTest, ALotCountsInvalidAndIncompleteButNeverAveragesThem) {
+  BenchConstants good;
+  BenchConstants late = good;  // no read or board delay subtracted: the IMU delay lands above 0.8 ms
+  late.tableReadDelayMs = 0.0;
+  late.boardDelayMs = 0.0;
+  BenchConstants backwards = good;  // every gyro axis stated reversed: the gyro turns against the table
+  backwards.gyroSign = {-1, -1, -1};
+
+  const std::string a = session("a.fbs", "SN-A", "2026-11-01T08:00:00Z", good);
+  session("b.fbs", "SN-B", "2026-11-01T09:00:00Z", backwards);
+  session("c.fbs", "SN-C", "2026-11-01T10:00:00Z", good, /*complete=*/false);
+  const std::string d = session("d.fbs", "SN-D", "2026-11-01T11:00:00Z", late);
+  // Unit A re-analysed with another read delay: result 1 is superseded.
+  BenchConstants regood = good;
+  regood.tableReadDelayMs = 0.06;
+  const double delayA = analyse(a, regood);
+  auto od = session::openSessionOrStream(d);
+  ASSERT_TRUE(od.isOk());
+  ASSERT_FALSE(od->results.empty());
+  const double delayD = od->results.back().points.at(0).imuDelayMs;
+  { std::ofstream(dir_.file("damaged.fbs")) << "not a session at all"; }
+
+  // The mean IMU temperature, from the decoded stream here.
+  auto decoded = protocol::decodeRecording(fog::test::shortRun().bytes);
+  ASSERT_TRUE(decoded.isOk());
+  double sum = 0.0;
+  std::size_t n = 0;
+  for (const auto& tp : decoded->testPoints)
+    for (const auto& f : tp.imu) sum += f.temperatureC, ++n;
+  ASSERT_GT(n, 0u);
+  const double expectedTemperature = sum / static_cast<double>(n);
+
+  auto cat = openCatalog();
+  ASSERT_TRUE(cat);
+  auto report = cat->index({dir_.path().string()});
+  ASSERT_TRUE(report.isOk()) << report.status().message();
+  EXPECT_EQ(report->filesFound, 5);
+  EXPECT_EQ(report->indexed, 4);
+  EXPECT_EQ(report->refused, 1);
+  ASSERT_EQ(report->refusals.size(), 1u);
+  EXPECT_NE(report->refusals[0].first.find("damaged.fbs"), std::string::npos);
+  EXPECT_EQ(report->resultsStored, 5);
+
+  auto results = cat->results("", "L7", false);
+  ASSERT_TRUE(results.isOk()) << results.status().message();
+  ASSERT_EQ(results->size(), 5u);
+  std::map<std::string, std::string> verdictOf;
+  for (const auto& r : *results)
+    if (r.shown) verdictOf[r.imuSerial] = r.verdict;
+  EXPECT_EQ(verdictOf["SN-A"], "pass");
+  EXPECT_EQ(verdictOf["SN-B"], "invalid");
+  EXPECT_EQ(verdictOf["SN-C"], "incomplete");
+  EXPECT_EQ(verdictOf["SN-D"], "fail");
+  for (const auto& r : *results) {
+    ASSERT_EQ(r.points.size(), 1u);
+    const bool vouched = r.verdict == "pass" || r.verdict == "fail";
+    // A refused delay is stored without its number, with why.
+    EXPECT_EQ(std::isfinite(r.points[0].imuDelayMs), vouched) << r.imuSerial << " " << r.verdict;
+    EXPECT_EQ(r.points[0].refusal.empty(), vouched) << r.points[0].refusal;
+    EXPECT_EQ(r.lot, "L7");
+    EXPECT_EQ(r.benchId, "bench-1");
+    EXPECT_EQ(r.fileSha256.size(), 64u);
+    EXPECT_NEAR(r.meanTemperatureC, expectedTemperature, 1e-9);
+  }
+
+  auto stats = lotStatistics("L7", *results, NAN);
+  ASSERT_TRUE(stats.isOk()) << stats.status().message();
+  EXPECT_EQ(stats->units, 4);
+  EXPECT_EQ(stats->sessions, 4);
+  EXPECT_EQ(stats->pass, 1);
+  EXPECT_EQ(stats->fail, 1);
+  EXPECT_EQ(stats->invalid, 1);
+  EXPECT_EQ(stats->incomplete, 1);
+  EXPECT_EQ(stats->superseded, 1);
+  EXPECT_DOUBLE_EQ(stats->passRate, 0.25);
+  EXPECT_DOUBLE_EQ(stats->firstPassYield, 0.25);
+  EXPECT_EQ(stats->limitSource, "stored");
+  EXPECT_DOUBLE_EQ(stats->limitMs, 0.8);
+  // The delays: A's latest (re-analysed) and D's, nothing of B or C.
+  ASSERT_EQ(stats->delay.size(), 1u);  // one axis (z): no separate "all"
+  const auto& z = stats->delay[0];
+  EXPECT_EQ(z.axis, "z");
+  EXPECT_EQ(z.n, 2);
+  const double mean = (delayA + delayD) / 2.0;
+  const double s = std::abs(delayA - delayD) / std::sqrt(2.0);
+  EXPECT_NEAR(z.meanMs, mean, 1e-12);
+  EXPECT_NEAR(z.stdMs, s, 1e-12);
+  EXPECT_NEAR(z.cpk, (0.8 - mean) / (3.0 * s), 1e-9);
+}
+
+TEST_P(CatalogTest, UnchangedFilesAreNotReopenedAndAReanalysisSupersedes) {
+  const std::string a = session("a.fbs", "SN-A", "2026-11-01T08:00:00Z");
+  session("b.fbs", "SN-B", "2026-11-01T09:00:00Z");
+  auto cat = openCatalog();
+  ASSERT_TRUE(cat);
+  auto first = cat->index({dir_.path().string()});
+  ASSERT_TRUE(first.isOk()) << first.status().message();
+  EXPECT_EQ(first->indexed, 2);
+  auto again = cat->index({dir_.path().string()});
+  ASSERT_TRUE(again.isOk());
+  EXPECT_EQ(again->unchanged, 2);
+  EXPECT_EQ(again->indexed, 0);
+
+  BenchConstants other;
+  other.boardDelayMs = 0.3;
+  analyse(a, other);
+  auto third = cat->index({dir_.path().string()});
+  ASSERT_TRUE(third.isOk());
+  EXPECT_EQ(third->unchanged, 1);
+  EXPECT_EQ(third->indexed, 1);
+  auto history = cat->results("SN-A", "", false);
+  ASSERT_TRUE(history.isOk());
+  ASSERT_EQ(history->size(), 2u);  // two results of one session, never a duplicate row
+  EXPECT_FALSE((*history)[0].shown);
+  EXPECT_TRUE((*history)[1].shown);
+  EXPECT_EQ((*history)[0].resultNumber, 1);
+  EXPECT_EQ((*history)[1].resultNumber, 2);
+  EXPECT_NE((*history)[0].constantsHash, (*history)[1].constantsHash);
+  EXPECT_NE((*history)[1].constantsJson.find("\"board_delay_ms\":0.29999999999999999"), std::string::npos)
+      << (*history)[1].constantsJson;
+  // A copy of the session elsewhere is the same session: counted once.
+  std::filesystem::create_directories(dir_.file("copy"));
+  std::filesystem::copy_file(a, dir_.file("copy/a.fbs"));
+  ASSERT_TRUE(cat->index({dir_.path().string()}).isOk());
+  auto after = cat->results("SN-A", "", false);
+  ASSERT_TRUE(after.isOk());
+  EXPECT_EQ(after->size(), 2u);
+}
+
+TEST_P(CatalogTest, TwoBenchesPushToOneCatalogOneOfflineFirst) {
+  session("a.fbs", "SN-A", "2026-11-01T08:00:00Z");
+  std::filesystem::create_directories(dir_.file("bench2"));
+  {
+    SessionInfo info;
+    info.source = "simulator, seed 3";
+    info.plan = fog::test::shortPlan();
+    info.imuSerial = "SN-B";
+    info.lot = "L7";
+    info.benchId = "bench-2";
+    info.createdUtc = "2026-11-02T08:00:00Z";
+    analyse(fog::test::recordedSession(dir_, "bench2/b.fbs", info), {});
+  }
+  // Each bench indexes into its own SQLite catalog.
+  auto bench1 = catalogFile(dir_.file("bench1.sqlite"));
+  auto bench2 = catalogFile(dir_.file("bench2/bench2.sqlite"));
+  ASSERT_TRUE(bench1 && bench2);
+  ASSERT_TRUE(bench1->index({dir_.file("a.fbs")}).isOk());
+  ASSERT_TRUE(bench2->index({dir_.file("bench2")}).isOk());
+
+  // Bench 2 is offline: the shared catalog does not answer; it says so.
+  auto offline = CatalogDb::open("postgresql://fogbench@127.0.0.1:1/none?connect_timeout=2");
+  ASSERT_FALSE(offline.isOk());
+  EXPECT_EQ(offline.status().code(), StatusCode::kIoError);
+  EXPECT_NE(offline.status().message().find("catalog push"), std::string::npos) << offline.status().message();
+
+  auto shared = openCatalog("shared");
+  ASSERT_TRUE(shared);
+  auto p1 = bench1->pushTo(*shared);
+  ASSERT_TRUE(p1.isOk()) << p1.status().message();
+  EXPECT_EQ(p1->pushed, 1);
+  // Back online: bench 2 pushes; then both push again and nothing doubles.
+  auto p2 = bench2->pushTo(*shared);
+  ASSERT_TRUE(p2.isOk()) << p2.status().message();
+  EXPECT_EQ(p2->pushed, 1);
+  auto again1 = bench1->pushTo(*shared);
+  auto again2 = bench2->pushTo(*shared);
+  ASSERT_TRUE(again1.isOk() && again2.isOk());
+  EXPECT_EQ(again1->pushed, 0);
+  EXPECT_EQ(again1->alreadyPushed, 1);
+  EXPECT_EQ(again2->pushed, 0);
+  auto all = shared->results("", "L7", false);
+  ASSERT_TRUE(all.isOk());
+  ASSERT_EQ(all->size(), 2u);
+  EXPECT_EQ((*all)[0].benchId, "bench-1");
+  EXPECT_EQ((*all)[1].benchId, "bench-2");
+  // A re-analysis on bench 1 is pushed as an update plus a new row.
+  BenchConstants other;
+  other.boardDelayMs = 0.3;
+  analyse(dir_.file("a.fbs"), other);
+  ASSERT_TRUE(bench1->index({dir_.file("a.fbs")}).isOk());
+  auto p3 = bench1->pushTo(*shared);
+  ASSERT_TRUE(p3.isOk());
+  EXPECT_EQ(p3->pushed, 2);  // the superseded row changed (shown -> not), the new one
+  auto unitA = shared->results("SN-A", "", false);
+  ASSERT_TRUE(unitA.isOk());
+  ASSERT_EQ(unitA->size(), 2u);
+  EXPECT_FALSE((*unitA)[0].shown);
+  EXPECT_TRUE((*unitA)[1].shown);
+}
+
+TEST_P(CatalogTest, RefusedDelaysAreStoredAsNullNotAsNumbers) {
+  BenchConstants backwards;
+  backwards.gyroSign = {-1, -1, -1};
+  session("b.fbs", "SN-B", "2026-11-01T09:00:00Z", backwards);
+  auto cat = openCatalog();
+  ASSERT_TRUE(cat);
+  ASSERT_TRUE(cat->index({dir_.path().string()}).isOk());
+  auto rows = cat->db().query("SELECT verdict, imu_delay_ms, imu_delay_std_ms, refusal FROM result_point");
+  ASSERT_TRUE(rows.isOk());
+  ASSERT_EQ(rows->size(), 1u);
+  EXPECT_EQ(textOf((*rows)[0][0]), "invalid");
+  EXPECT_FALSE((*rows)[0][1].has_value());
+  EXPECT_FALSE((*rows)[0][2].has_value());
+  EXPECT_NE(textOf((*rows)[0][3]).find("INVALID"), std::string::npos) << textOf((*rows)[0][3]);
+}
+
+INSTANTIATE_TEST_SUITE_P(Sqlite, CatalogTest, ::testing::Values("sqlite"));
+INSTANTIATE_TEST_SUITE_P(Postgres, CatalogTest, ::testing::Values("postgres"));
+
+// SQLite only: what a file named by mistake is, and catalogs of other versions.
+TEST(CatalogFile, ASessionOrAForeignDatabaseNamedAsTheCatalogIsNeverWritten) {
+  ScratchDir dir;
+  SessionInfo info;
+  info.plan = fog::test::shortPlan();
+  const std::string s = fog::test::recordedSession(dir, "s.fbs", info);
+  const auto before = fog::test::readFile(s);
+  auto db = CatalogDb::open(s);
+  ASSERT_FALSE(db.isOk());
+  EXPECT_NE(db.status().message().find("a fogbench session file, not a catalog"), std::string::npos)
+      << db.status().message();
+  EXPECT_EQ(fog::test::readFile(s), before);
+
+  const std::string other = dir.file("other.sqlite");
+  {
+    sqlite3* raw = nullptr;
+    ASSERT_EQ(sqlite3_open_v2(other.c_str(), &raw, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE, nullptr), SQLITE_OK);
+    ASSERT_EQ(sqlite3_exec(raw, "CREATE TABLE t (x INTEGER)", nullptr, nullptr, nullptr), SQLITE_OK);
+    sqlite3_close(raw);
+  }
+  const auto otherBefore = fog::test::readFile(other);
+  auto db2 = CatalogDb::open(other);
+  ASSERT_FALSE(db2.isOk());
+  EXPECT_NE(db2.status().message().find("another SQLite database"), std::string::npos);
+  EXPECT_EQ(fog::test::readFile(other), otherBefore);
+
+  auto folder = CatalogDb::open(dir.path().string());
+  ASSERT_FALSE(folder.isOk());
+  EXPECT_NE(folder.status().message().find("is a folder"), std::string::npos);
+}
+
+TEST(CatalogFile, ANewerCatalogIsRefused) {
+  ScratchDir dir;
+  const std::string p = dir.file("c.sqlite");
+  ASSERT_TRUE(catalogFile(p));
+  fog::test::runSql(p, "UPDATE catalog_info SET value = '99' WHERE key = 'schema_version'");
+  auto db = CatalogDb::open(p);
+  ASSERT_TRUE(db.isOk());
+  auto c = Catalog::open(std::move(db).value());
+  ASSERT_FALSE(c.isOk());
+  EXPECT_NE(c.status().message().find("update fogbench"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace fog::catalog
