@@ -8,9 +8,11 @@
 #include <filesystem>
 #include <map>
 #include <set>
+#include <thread>
 
 #include <nlohmann/json.hpp>
 
+#include "core/common/parallel.h"
 #include "core/common/sha256.h"
 #include "core/common/text.h"
 #include "core/session/session_file.h"
@@ -364,6 +366,11 @@ Status Catalog::storeResult(const CatalogResult& r, bool pushed) {
 Status Catalog::store(const IndexedFile& file) {
   Transaction t(*db_);
   FOG_RETURN_IF_ERROR(t.begun());
+  FOG_RETURN_IF_ERROR(storeRows(file));
+  return t.commit();
+}
+
+Status Catalog::storeRows(const IndexedFile& file) {
   FOG_RETURN_IF_ERROR(db_->exec(
       "DELETE FROM result_point WHERE result_key IN (SELECT result_key FROM result WHERE path = ?)", {file.path}));
   FOG_RETURN_IF_ERROR(db_->exec("DELETE FROM result WHERE path = ?", {file.path}));
@@ -376,7 +383,7 @@ Status Catalog::store(const IndexedFile& file) {
       {file.path, integerValue(file.sizeBytes), integerValue(file.mtimeNs),
        file.sessionKey.empty() ? Value{} : Value{file.sessionKey},
        file.fileSha256.empty() ? Value{} : Value{file.fileSha256}, nowUtc(), file.refusal}));
-  return t.commit();
+  return Status::ok();
 }
 
 Result<IndexReport> Catalog::index(const std::vector<std::string>& paths,
@@ -394,24 +401,40 @@ Result<IndexReport> Catalog::index(const std::vector<std::string>& paths,
   std::map<std::string, std::pair<long long, long long>> seen;
   for (const auto& row : known) seen[textOf(row[0])] = {integerOf(row[1], -1), integerOf(row[2], -1)};
 
-  int done = 0;
+  // Changed files are read side by side (reading is most of the work: the
+  // SHA-256 and the checks of every byte) and stored in order, a batch per
+  // transaction.
+  std::vector<std::string> changed;
   for (const auto& path : files) {
     std::int64_t size = 0, mtime = 0;
     auto it = seen.find(path);
     if (it != seen.end() && statFile(path, size, mtime) && it->second.first == size && it->second.second == mtime) {
       ++report.unchanged;
     } else {
-      const IndexedFile f = describeSessionFile(path);
-      FOG_RETURN_IF_ERROR(store(f));
+      changed.push_back(path);
+    }
+  }
+  if (progress && report.unchanged > 0) progress(report.unchanged, static_cast<int>(files.size()));
+  const int threads = static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 4u));
+  const std::size_t batch = 8 * static_cast<std::size_t>(threads);
+  for (std::size_t from = 0; from < changed.size(); from += batch) {
+    const std::size_t n = std::min(batch, changed.size() - from);
+    std::vector<IndexedFile> read(n);
+    parallelFor(n, threads, [&](std::size_t i) { read[i] = describeSessionFile(changed[from + i]); });
+    Transaction t(*db_);
+    FOG_RETURN_IF_ERROR(t.begun());
+    for (const auto& f : read) {
+      FOG_RETURN_IF_ERROR(storeRows(f));
       if (f.refusal.empty()) {
         ++report.indexed;
         report.resultsStored += static_cast<int>(f.results.size());
       } else {
         ++report.refused;
-        report.refusals.emplace_back(path, f.refusal);
+        report.refusals.emplace_back(f.path, f.refusal);
       }
     }
-    if (progress) progress(++done, static_cast<int>(files.size()));
+    FOG_RETURN_IF_ERROR(t.commit());
+    if (progress) progress(report.unchanged + static_cast<int>(from + n), static_cast<int>(files.size()));
   }
   return report;
 }

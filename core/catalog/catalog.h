@@ -126,6 +126,7 @@ class Catalog {
  private:
   explicit Catalog(std::unique_ptr<CatalogDb> db) : db_(std::move(db)) {}
   Status storeResult(const CatalogResult& r, bool pushed);
+  Status storeRows(const IndexedFile& file);  // inside the caller's transaction
   std::unique_ptr<CatalogDb> db_;
 };
 

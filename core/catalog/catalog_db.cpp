@@ -50,6 +50,11 @@ class SqliteDb final : public CatalogDb {
       }
       FOG_RETURN_IF_ERROR(db->exec("PRAGMA application_id = " + std::to_string(kCatalogApplicationId), {}));
     }
+    // The catalog is derived from the session files (an index run rebuilds
+    // any row): WAL with synchronous=NORMAL spares an fsync per commit, and
+    // readers (the GUI) never wait for an indexing writer.
+    FOG_RETURN_IF_ERROR(db->exec("PRAGMA journal_mode = WAL", {}));
+    FOG_RETURN_IF_ERROR(db->exec("PRAGMA synchronous = NORMAL", {}));
     return std::unique_ptr<CatalogDb>(std::move(db));
   }
 
