@@ -273,6 +273,13 @@ BatchLine batchOneFile(const std::string& path, const BatchSettings& settings) {
     return line;
   }
   line.note = opened->damageNote();
+  // Never analysed half-recorded: its result would be a partial run's, and
+  // the recorder holds the write lock anyway (analyseAndStore would not store).
+  if (opened->beingRecorded) {
+    line.error = "session '" + path + "' is being recorded right now; when the recording has finished, analyse it "
+                 "with analyze or a batch with another --jsonl (this one lists it)";
+    return line;
+  }
   auto constants = readConstants(*options, opened->info.bench);
   if (!constants) {
     line.error = constants.status().message();

@@ -171,3 +171,36 @@ if(NOT mine STREQUAL "{\"my\": 1}\n")
 endif()
 run_expect(2 ignored batch ${dir}/in)
 expect_match("${ignored_err}" "batch needs --jsonl OUT.jsonl" "the missing --jsonl")
+
+# A run stopped early and a session being recorded, given as FILEs: the
+# first is stored INCOMPLETE, its delays refused (never written bare); the
+# second is refused, untouched, and the batch goes on.
+file(MAKE_DIRECTORY ${dir}/live)
+execute_process(
+  COMMAND sh -c "\"$0\" run --axis z --freq-hz 2 --amp-deg 2 --duration-s 60 --settle-s 0.3 --speed 1 --out \"$1\" >/dev/null 2>&1 & pid=$!; sleep 3.5; kill -INT $pid; wait $pid"
+          ${CLI} ${dir}/live/stopped.fbs
+  RESULT_VARIABLE c TIMEOUT 60)
+execute_process(
+  COMMAND sh -c "\"$0\" run --axis z --freq-hz 2 --amp-deg 2 --duration-s 60 --settle-s 0.3 --speed 1 --out \"$1\" >/dev/null 2>&1 & pid=$!
+                 sleep 2; \"$0\" batch \"$1\" \"$2\" --jsonl \"$3\"; echo \"exit $?\"; kill -INT $pid; wait $pid"
+          ${CLI} ${dir}/live/recording.fbs ${dir}/live/stopped.fbs ${dir}/live.jsonl
+  RESULT_VARIABLE c OUTPUT_VARIABLE live ERROR_VARIABLE live_err TIMEOUT 60)
+expect_match("${live}" "2 files into .*: 1 stored, 0 already stored, 1 refused.*1 INCOMPLETE.*exit 1" "the live batch's summary")
+set(out ${dir}/live.jsonl)
+unset(by_path_recording)
+unset(by_path_stopped)
+read_out()
+string(JSON status GET "${by_path_recording}" status)
+string(JSON error GET "${by_path_recording}" error)
+if(NOT status STREQUAL "refused" OR NOT error MATCHES "is being recorded right now")
+  message(FATAL_ERROR "the session being recorded is not refused as such:\n${by_path_recording}")
+endif()
+string(JSON status GET "${by_path_stopped}" status)
+string(JSON verdict GET "${by_path_stopped}" verdict)
+string(JSON data_verdict GET "${by_path_stopped}" data_verdict)
+string(JSON refusal ERROR_VARIABLE no_refusal GET "${by_path_stopped}" points 0 refusal)
+string(JSON bare ERROR_VARIABLE no_bare GET "${by_path_stopped}" points 0 imu_delay_ms)
+if(NOT status STREQUAL "stored" OR NOT verdict STREQUAL "incomplete" OR NOT data_verdict STREQUAL "pass"
+   OR NOT refusal MATCHES "^INCOMPLETE: " OR no_bare STREQUAL "")
+  message(FATAL_ERROR "the stopped run is not stored INCOMPLETE with its delay refused:\n${by_path_stopped}")
+endif()
