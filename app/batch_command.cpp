@@ -93,7 +93,8 @@ Result<BatchOutput> openBatchOutput(const std::string& path, const BatchSettings
   std::error_code ec;
   if (fs::is_directory(path, ec)) return invalidArgument("--jsonl '" + path + "' is a folder; give a file name");
   if (fs::exists(path, ec) && session::isSqliteFile(path))
-    return refuseOut(path, "is a session (or another database), never overwritten");
+    return invalidArgument("--jsonl '" + path + "' is a session (or another database), never written by batch: "
+                           "name another --jsonl");
   BatchOutput out;
   out.fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
   if (out.fd < 0) return ioError("cannot open --jsonl '" + path + "': " + errnoText());
@@ -102,7 +103,8 @@ Result<BatchOutput> openBatchOutput(const std::string& path, const BatchSettings
     return s;
   };
   if (::flock(out.fd, LOCK_EX | LOCK_NB) != 0)
-    return closeWith(refuseOut(path, "is being written by another batch right now"));
+    return closeWith(invalidArgument("--jsonl '" + path + "' is being written by another batch right now; wait for "
+                                     "it to finish (then run this one again to resume) or name another --jsonl"));
   std::string text;
   char buf[1 << 16];
   for (off_t at = 0;;) {
@@ -348,6 +350,9 @@ int batchCommand(CliArguments& args) {
     std::error_code ec;
     if (fs::is_directory(p, ec)) {
       if (auto s = findSessions(p, found); !s.isOk()) return fail(s, 2);
+    } else if (!fs::exists(fs::symlink_status(p, ec))) {
+      // A typo, most likely: said before OUT is made or written.
+      return fail(invalidArgument("'" + p + "' does not exist; give folders of sessions or session files"), 2);
     } else {
       found.push_back(p);  // a FILE as given; if it is no session its line says so
     }
