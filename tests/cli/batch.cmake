@@ -204,3 +204,18 @@ if(NOT status STREQUAL "stored" OR NOT verdict STREQUAL "incomplete" OR NOT data
    OR NOT refusal MATCHES "^INCOMPLETE: " OR no_bare STREQUAL "")
   message(FATAL_ERROR "the stopped run is not stored INCOMPLETE with its delay refused:\n${by_path_stopped}")
 endif()
+
+# A path that does not exist (a typo) is refused before OUT is made; a
+# session named as OUT is never written.
+run_expect(2 ignored batch ${dir}/in ${dir}/no-such-folder --jsonl ${dir}/typo.jsonl)
+expect_match("${ignored_err}" "no-such-folder' does not exist; give folders of sessions or session files" "a typo")
+if(EXISTS ${dir}/typo.jsonl)
+  message(FATAL_ERROR "a refused batch made its OUT")
+endif()
+file(SHA256 ${dir}/in/a.fbs a_before)
+run_expect(2 ignored batch ${dir}/in --jsonl ${dir}/in/a.fbs --read-delay-ms 0.07 --limit-ms 0.9)
+expect_match("${ignored_err}" "is a session \\(or another database\\), never written by batch" "a session as OUT")
+file(SHA256 ${dir}/in/a.fbs a_after)
+if(NOT a_before STREQUAL a_after)
+  message(FATAL_ERROR "a session named as --jsonl was changed")
+endif()
