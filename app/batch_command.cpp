@@ -105,6 +105,15 @@ Result<BatchOutput> openBatchOutput(const std::string& path, const BatchSettings
   if (::flock(out.fd, LOCK_EX | LOCK_NB) != 0)
     return closeWith(invalidArgument("--jsonl '" + path + "' is being written by another batch right now; wait for "
                                      "it to finish (then run this one again to resume) or name another --jsonl"));
+  // Every header this writes starts so; a file that does not is someone
+  // else's, refused after its first bytes (never read whole, never written).
+  const std::string start = "{\"batch\":";
+  auto startsLikeABatch = [&](const std::string& text) {
+    const std::size_t n = std::min(text.size(), start.size());
+    return text.compare(0, n, start, 0, n) == 0;
+  };
+  const Status foreign = refuseOut(path, "exists and is not the output of fogbench-cli batch (its first line is not "
+                                         "a batch header)");
   std::string text;
   char buf[1 << 16];
   for (off_t at = 0;;) {
@@ -114,25 +123,22 @@ Result<BatchOutput> openBatchOutput(const std::string& path, const BatchSettings
     if (n == 0) break;
     text.append(buf, static_cast<std::size_t>(n));
     at += n;
+    if (!startsLikeABatch(text)) return closeWith(foreign);
   }
   const std::size_t complete = text.rfind('\n') == std::string::npos ? 0 : text.rfind('\n') + 1;
   const std::string partial = text.substr(complete);
   if (complete == 0) {
-    // Nothing, or a header cut short by a kill: nothing of a batch is lost
-    // by starting it anew. Anything else is someone's file.
-    const std::string start = "{\"batch\"";
-    if (!partial.empty() && partial.compare(0, std::min(partial.size(), start.size()), start, 0,
-                                            std::min(partial.size(), start.size())) != 0)
-      return closeWith(refuseOut(path, "exists and is not the output of fogbench-cli batch (its first line is not a "
-                                       "batch header)"));
+    // Nothing, or a header cut short by a kill (it starts like one): no line
+    // of a file is lost by starting the batch anew.
     if (!partial.empty() && ::ftruncate(out.fd, 0) != 0)
       return closeWith(ioError("cannot truncate --jsonl '" + path + "': " + errnoText()));
     out.batchId = settings.batchId;
-    const nlohmann::ordered_json header = {{"batch", 1},
-                                           {"batch_id", out.batchId},
-                                           {"settings", nlohmann::ordered_json::parse(settings.settingsJson().dump())},
-                         {"software_version", FOG_VERSION},
-                         {"started_utc", session::utcNow()}};
+    const nlohmann::ordered_json header = {
+        {"batch", 1},
+        {"batch_id", out.batchId},
+        {"settings", nlohmann::ordered_json::parse(settings.settingsJson().dump())},
+        {"software_version", FOG_VERSION},
+        {"started_utc", session::utcNow()}};
     if (auto s = appendDurably(out.fd, header.dump() + "\n", path); !s.isOk()) return closeWith(s);
     // The new file's name on the disk too (the folder's entry).
     const fs::path parent = fs::absolute(fs::path(path), ec).parent_path();
@@ -156,8 +162,7 @@ Result<BatchOutput> openBatchOutput(const std::string& path, const BatchSettings
     if (lineNumber == 1) {
       if (!has("batch", json::value_t::number_unsigned) || doc.at("batch") != 1 ||
           !has("settings", json::value_t::object) || !has("batch_id", json::value_t::string))
-        return closeWith(refuseOut(path, "exists and is not the output of fogbench-cli batch (its first line is not "
-                                         "a batch header)"));
+        return closeWith(foreign);
       if (doc.at("settings") != settings.settingsJson())
         return closeWith(invalidArgument("--jsonl '" + path + "' holds a batch with other settings (" +
                                          doc.at("settings").dump() + ", not " + settings.settingsJson().dump() +
@@ -441,8 +446,9 @@ int batchCommand(CliArguments& args) {
                 2);
 
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  std::printf("batch of %zu files into %s: %zu stored, %zu already stored, %zu refused, %zu skipped (listed before)\n",
-              files.size(), forTerminal(*outPath).c_str(), stored, alreadyStored, refused, skipped);
+  std::printf("batch of %zu file%s into %s: %zu stored, %zu already stored, %zu refused, %zu skipped (listed before)\n",
+              files.size(), files.size() == 1 ? "" : "s", forTerminal(*outPath).c_str(), stored, alreadyStored, refused,
+              skipped);
   std::string byVerdict;
   for (auto kind : {session::ShownVerdictKind::kPass, session::ShownVerdictKind::kFail,
                     session::ShownVerdictKind::kInvalid, session::ShownVerdictKind::kIncomplete,
