@@ -11,6 +11,7 @@
 #include "app/cli_commands.h"
 #include "core/common/memory.h"
 #include "core/common/version.h"
+#include "app/batch_command.h"
 #include "app/diagnose_command.h"
 #include "app/noise_command.h"
 #include "app/response_command.h"
@@ -84,6 +85,18 @@ usage:
       in the session as a new row unless --no-store). The verdict is pass, fail
       (IMU delay + 2 sigma >= limit) or invalid (a validity check failed:
       reversed axis, clock rate, not a steady sinusoid, negative delay).
+  fogbench-cli batch DIR|FILE... --jsonl OUT.jsonl [--jobs N] [constants] [--limit-ms 0.8]
+      Re-analyse many sessions (the *.fbs files under each DIR, recursively; FILEs as
+      given) with the constants given (each session's own where not given) and store
+      each result as a new one, as analyze does. OUT.jsonl gets a header line (the
+      settings) and one line per file as it finishes: "stored", "already_stored" or
+      "refused" with the error; the verdict and, only where vouched for, each test
+      point's IMU delay (else why it is refused). --jobs: files at a time (default the
+      number of cores, at most 8). Run it again with the same OUT to resume: files
+      listed are skipped, a line cut short by a kill is discarded, a result stored
+      before its line was written is not stored twice; an OUT of other settings is
+      refused. Progress on a terminal; a summary at the end. Exit 1 when a file was
+      refused (every file still has its line).
   fogbench-cli sessions DIR [--json]
       List the sessions in a folder: date, operator, IMU, axes, state, latest lag.
   fogbench-cli replay SESSION.fbs [--speed X | --afap] [constants] [--json]
@@ -191,6 +204,7 @@ int main(int argc, char** argv) {
     return fog::app::portsCommand(*parsed);
   }
   if (command == "analyze") return fog::app::analyzeCommand(*parsed);
+  if (command == "batch") return fog::app::batchCommand(*parsed);
   if (command == "sessions") return fog::app::sessionsCommand(*parsed);
   if (command == "replay") return fog::app::replayCommand(*parsed);
   if (command == "import") return fog::app::importCommand(*parsed);
