@@ -19,6 +19,7 @@
 #include <set>
 #include <thread>
 
+#include "app/catalog_command.h"
 #include "app/cli_common.h"
 #include "core/common/text.h"
 #include "core/common/version.h"
@@ -342,6 +343,7 @@ int batchCommand(CliArguments& args) {
   auto limit = readDelayLimit(args);
   if (!limit) return fail(limit.status(), 2);
   settings.imuDelayLimitMs = *limit;
+  const std::string catalogDb = args.text("db").value_or("");
   if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
   if (!outPath)
     return fail(invalidArgument("batch needs --jsonl OUT.jsonl: the file that gets one line per session"), 2);
@@ -461,6 +463,15 @@ int batchCommand(CliArguments& args) {
   std::snprintf(wallText, sizeof wallText, wall < 10 ? "%.2f s" : wall < 600 ? "%.1f s" : "%.0f s", wall);
   std::printf("wall time %s (%.2f files/s, %d job%s)\n", wallText, wall > 0 ? static_cast<double>(doneNow) / wall : 0.0,
               threads, threads == 1 ? "" : "s");
+  std::fflush(stdout);
+  // The catalog follows the new results (docs/catalog.md).
+  std::error_code ec;
+  const std::string& first = args.positionals()[0];
+  const std::string folder = fs::is_directory(first, ec) ? first : fs::path(first).parent_path().string();
+  if (Status s = updateCatalogAfterBatch(catalogDb, folder, files); !s.isOk())
+    return fail(Status(s.code(), s.message() + "; the new results are stored in the sessions: run fogbench-cli "
+                                                "catalog index when the catalog can be reached"),
+                3);
   return refused > 0 ? 1 : 0;
 }
 

@@ -442,6 +442,29 @@ int refusedCommand(CliArguments& args) {
 
 }  // namespace
 
+Status updateCatalogAfterBatch(const std::string& db, const std::string& folder, const std::vector<std::string>& files) {
+  std::string target = db;
+  std::error_code ec;
+  if (target.empty()) {
+    const fs::path own = fs::path(folder) / catalog::kDefaultCatalogFileName;
+    if (folder.empty() || !fs::exists(own, ec)) {
+      std::cout << "catalog: none updated (no " << catalog::kDefaultCatalogFileName << " in " << forTerminal(folder)
+                << "; give --db, or run fogbench-cli catalog index)\n";
+      return Status::ok();
+    }
+    target = own.string();
+  } else if (!catalog::isPostgresTarget(target) && fs::is_directory(target, ec)) {
+    target = (fs::path(target) / catalog::kDefaultCatalogFileName).string();
+  }
+  FOG_ASSIGN_OR_RETURN(auto opened, catalog::CatalogDb::open(target));
+  FOG_ASSIGN_OR_RETURN(auto cat, catalog::Catalog::open(std::move(opened)));
+  FOG_ASSIGN_OR_RETURN(auto report, cat->index(files));
+  std::cout << "catalog: " << cat->describe() << " updated: " << report.indexed << " sessions re-indexed ("
+            << report.resultsStored << " results), " << report.unchanged << " unchanged, " << report.refused
+            << " refused\n";
+  return Status::ok();
+}
+
 int catalogCommand(CliArguments& args) {
   const auto& pos = args.positionals();
   if (pos.empty())

@@ -85,7 +85,7 @@ usage:
       in the session as a new row unless --no-store). The verdict is pass, fail
       (IMU delay + 2 sigma >= limit) or invalid (a validity check failed:
       reversed axis, clock rate, not a steady sinusoid, negative delay).
-  fogbench-cli batch DIR|FILE... --jsonl OUT.jsonl [--jobs N] [constants] [--limit-ms 0.8]
+  fogbench-cli batch DIR|FILE... --jsonl OUT.jsonl [--jobs N] [constants] [--limit-ms 0.8] [--db CATALOG]
       Re-analyse many sessions (the *.fbs files under each DIR, recursively; FILEs as
       given) with the constants given (each session's own where not given) and store
       each result as a new one, as analyze does. OUT.jsonl gets a header line (the
@@ -95,8 +95,10 @@ usage:
       number of cores, at most 8). Run it again with the same OUT to resume: files
       listed are skipped, a line cut short by a kill is discarded, a result stored
       before its line was written is not stored twice; an OUT of other settings is
-      refused. Progress on a terminal; a summary at the end. Exit 1 when a file was
-      refused (every file still has its line).
+      refused. Progress on a terminal; a summary at the end. Then the catalog (--db, else
+      the first DIR's fogbench-catalog.sqlite when there is one) re-indexes the sessions
+      changed. Exit 1 when a file was refused (every file still has its line); 3 when
+      the catalog could not be updated (the results are stored).
   fogbench-cli sessions DIR [--json]
       List the sessions in a folder: date, operator, IMU, axes, state, latest lag.
   fogbench-cli replay SESSION.fbs [--speed X | --afap] [constants] [--json]
