@@ -19,7 +19,7 @@ class Sha256 {
   std::string hex();
 
  private:
-  void block(const unsigned char* p);
+  void blocks(const unsigned char* p, std::size_t count);  // whole 64-byte blocks
   std::array<std::uint32_t, 8> h_{0x6a09e667, 0xbb67ae85, 0x3c6ef372, 0xa54ff53a,
                                   0x510e527f, 0x9b05688c, 0x1f83d9ab, 0x5be0cd19};
   std::array<unsigned char, 64> buf_{};
@@ -31,5 +31,9 @@ class Sha256 {
 Result<std::string> sha256OfFile(const std::string& path);
 // Of a string's bytes.
 std::string sha256Hex(const std::string& bytes);
+
+// Whether the CPU's SHA extensions do the work (else portable C++; both give
+// the same digest, tests/core/common compares them).
+bool sha256UsesCpuExtensions();
 
 }  // namespace fog
