@@ -1,7 +1,7 @@
-// fog_make_sessions DIR COUNT [PRESET|short]: writes COUNT distinct finished
+// fog_make_sessions DIR COUNT [PRESET|short [FIRST]]: writes COUNT distinct finished
 // session files of one simulated run (as `fogbench-cli run --out` leaves
 // them: raw stream, decoded samples, one stored result), with serials
-// SN-0001…, lots of 40 units (L01, L02, …), two benches and creation times an
+// SN-0001… (from FIRST, default 1: two processes can share the work), lots of 40 units (L01, L02, …), two benches and creation times an
 // hour apart — the input of the catalog and batch benchmarks
 // (bench/catalog_bench.sh, docs/benchmarks.md). "short": 8 s at 1 Hz on z.
 // Simulating once and writing COUNT times keeps making 1 000 4.9-min
@@ -22,12 +22,13 @@
 int main(int argc, char** argv) {
   using namespace fog;
   if (argc < 3) {
-    std::fprintf(stderr, "usage: fog_make_sessions DIR COUNT [PRESET|short]\n");
+    std::fprintf(stderr, "usage: fog_make_sessions DIR COUNT [PRESET|short [FIRST]]\n");
     return 2;
   }
   const std::string dir = argv[1];
   const int count = std::atoi(argv[2]);
   const std::string preset = argc > 3 ? argv[3] : "paper-slow";
+  const int first = argc > 4 ? std::atoi(argv[4]) : 1;
   TestPlan plan;
   if (preset == "short") {
     TestPoint p;
@@ -53,7 +54,7 @@ int main(int argc, char** argv) {
   if (!decoded) return std::fprintf(stderr, "%s\n", decoded.status().message().c_str()), 1;
   std::filesystem::create_directories(dir);
   const std::time_t start = 1793520000;  // 2026-11-01T00:00:00Z
-  for (int i = 0; i < count; ++i) {
+  for (int i = first - 1; i < first - 1 + count; ++i) {
     SessionInfo info;
     char serial[32], lot[16], when[32];
     std::snprintf(serial, sizeof serial, "SN-%04d", i + 1);
