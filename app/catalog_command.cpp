@@ -471,19 +471,14 @@ int catalogCommand(CliArguments& args) {
     return fail(invalidArgument("catalog: say what to do: index DIR…, units, unit SERIAL, lot LOT, push, refused"), 2);
   const std::string what = pos[0];
   const std::vector<std::string> rest(pos.begin() + 1, pos.end());
-  auto one = [&](const char* name) -> std::optional<std::string> {
-    if (rest.size() != 1) return std::nullopt;
-    (void)name;
-    return rest[0];
-  };
   if (what == "index") return indexCommand(args, rest);
   if (what == "units" && rest.empty()) return unitsCommand(args);
   if (what == "unit") {
-    if (auto s = one("SERIAL")) return unitCommand(args, *s);
+    if (rest.size() == 1 && !rest[0].empty()) return unitCommand(args, rest[0]);
     return fail(invalidArgument("catalog unit: name one IMU serial"), 2);
   }
   if (what == "lot") {
-    if (auto s = one("LOT")) return lotCommand(args, *s);
+    if (rest.size() == 1 && !rest[0].empty()) return lotCommand(args, rest[0]);
     return fail(invalidArgument("catalog lot: name one lot"), 2);
   }
   if (what == "push" && rest.empty()) return pushCommand(args);

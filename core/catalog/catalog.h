@@ -43,7 +43,7 @@ struct CatalogPoint {
   // NaN unless the point is vouched for (PASS or FAIL); then `refusal` is "".
   double imuDelayMs = kNaN, imuDelayStdMs = kNaN;
   std::string refusal;
-  bool vouched() const { return refusal.empty() && verdict != "" && (verdict == "pass" || verdict == "fail"); }
+  bool vouched() const { return refusal.empty() && (verdict == "pass" || verdict == "fail"); }
 };
 
 struct CatalogResult {
