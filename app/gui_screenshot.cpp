@@ -49,7 +49,14 @@ void armScreenshot(fog::ui::MainWindow& window, const ScreenshotRequest& request
     *once = QObject::connect(units, &fog::ui::UnitsView::loaded, &window, [&window, units, screenshot, once](bool ok) {
       QObject::disconnect(*once);
       if (units->lotCombo()->count() > 1) units->lotCombo()->setCurrentIndex(1);
-      if (units->unitTable()->rowCount() > 0) units->unitTable()->selectRow(0);
+      // The unit with the most results (the first of equals): the richest history.
+      int richest = -1, most = -1;
+      for (int row = 0; row < units->unitTable()->rowCount(); ++row)
+        if (const int n = units->unitTable()->item(row, 5)->text().toInt(); n > most) {
+          most = n;
+          richest = row;
+        }
+      if (richest >= 0) units->unitTable()->selectRow(richest);
       window.showView(MainWindow::kUnits);
       saveAndQuit(window, screenshot, ok);
     });

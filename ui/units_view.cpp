@@ -12,6 +12,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QSplitter>
 #include <QTableWidget>
 #include <QTimer>
@@ -244,7 +245,13 @@ UnitsView::UnitsView(QWidget* parent) : QWidget(parent) {
   lotSummary_->setWordWrap(true);
   lotSummary_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
   lotSummary_->setTextInteractionFlags(Qt::TextSelectableByMouse);
-  lotLayout->addWidget(lotSummary_, 1);
+  // A long lot (many axes) scrolls here rather than pushing the tables.
+  auto* lotScroll = new QScrollArea();
+  lotScroll->setObjectName("lotSummaryScroll");
+  lotScroll->setWidget(lotSummary_);
+  lotScroll->setWidgetResizable(true);
+  lotScroll->setFrameShape(QFrame::NoFrame);
+  lotLayout->addWidget(lotScroll, 1);
   auto* unitsSplit = new QSplitter(Qt::Horizontal);
   unitsSplit->setObjectName("unitsLotSplitter");
   unitsSplit->addWidget(unitTable_);
@@ -271,33 +278,42 @@ UnitsView::UnitsView(QWidget* parent) : QWidget(parent) {
                                               tr("Temp. (°C)"), tr("Verdict"), tr("IMU delay per test point"),
                                               tr("Constants"), tr("Software"), tr("Analysed by")});
   historyTable_->setObjectName("historyTable");
-  historyTable_->horizontalHeader()->setSectionResizeMode(kDelay, QHeaderView::Stretch);
+  // The delays are what the history is for: their column is as wide as
+  // they are (up to a bound, a many-point session's whole list is in the
+  // tooltip) and never elided to make room for the hash or the software;
+  // the table scrolls sideways instead.
+  historyTable_->horizontalHeader()->setMaximumSectionSize(440);
+  historyTable_->horizontalHeader()->setStretchLastSection(true);
   historyLayout->addWidget(historyTable_, 1);
 
   datePlot_ = makePlot(tr("IMU delay against the session date"), tr("session recorded (UTC)"));
   datePlot_->setObjectName("unitDatePlot");
   auto* dateDraw = new QwtDateScaleDraw(Qt::UTC);
   dateDraw->setDateFormat(QwtDate::Day, "yyyy-MM-dd");
+  dateDraw->setDateFormat(QwtDate::Week, "yyyy-MM-dd");  // a date, not "W42 2026"
+  dateDraw->setDateFormat(QwtDate::Month, "yyyy-MM");
   dateDraw->setDateFormat(QwtDate::Hour, "MM-dd HH:mm");
   dateDraw->setDateFormat(QwtDate::Minute, "HH:mm");
   dateDraw->setDateFormat(QwtDate::Second, "HH:mm:ss");
   datePlot_->setAxisScaleDraw(QwtPlot::xBottom, dateDraw);
   datePlot_->setAxisScaleEngine(QwtPlot::xBottom, new QwtDateScaleEngine(Qt::UTC));
+  datePlot_->setAxisMaxMajor(QwtPlot::xBottom, 4);  // whole dates, side by side at 1024 px
   temperaturePlot_ = makePlot(tr("IMU delay against the IMU temperature"), tr("mean IMU temperature (°C)"));
   temperaturePlot_->setObjectName("unitTemperaturePlot");
   auto* plots = new QSplitter(Qt::Horizontal);
   plots->setObjectName("unitPlotsSplitter");
   plots->addWidget(datePlot_);
   plots->addWidget(temperaturePlot_);
+  plots->setSizes({1000, 1000});  // halves, whatever the legends' widths
 
   auto* split = new QSplitter(Qt::Vertical);
   split->setObjectName("unitsSplitter");
   split->addWidget(unitsSplit);
   split->addWidget(historyBox);
   split->addWidget(plots);
-  split->setStretchFactor(0, 2);
-  split->setStretchFactor(1, 2);
-  split->setStretchFactor(2, 3);
+  split->setStretchFactor(0, 3);
+  split->setStretchFactor(1, 3);
+  split->setStretchFactor(2, 5);
   split->setChildrenCollapsible(false);
   layout->addWidget(split, 1);
 
@@ -592,22 +608,26 @@ void UnitsView::showLotSummary() {
     if (!std::isfinite(f)) return QStringLiteral("-");
     return tr("%1 % (%2 of %3)").arg(localNumber(f * 100.0, 'f', 1)).arg(std::lround(f * of)).arg(of);
   };
+  // Four short lines: the counts, the rates, the delay per axis with its
+  // Cpk; the definitions are in the tooltip.
   QStringList lines;
-  lines << tr("<b>Lot %1</b>: %2 units, %3 sessions").arg(lot.toHtmlEscaped()).arg(s.units).arg(s.sessions);
-  lines << tr("<span style='color:%1'>%2 %3</span>, <span style='color:%4'>%5 %6</span>, "
-              "<span style='color:%7'>%8 %9</span>, %10 %11")
-               .arg(verdictColour(session::ShownVerdictKind::kPass), verdictWord(session::ShownVerdictKind::kPass))
-               .arg(s.pass)
-               .arg(verdictColour(session::ShownVerdictKind::kFail), verdictWord(session::ShownVerdictKind::kFail))
-               .arg(s.fail)
-               .arg(verdictColour(session::ShownVerdictKind::kInvalid),
-                    verdictWord(session::ShownVerdictKind::kInvalid))
-               .arg(s.invalid)
-               .arg(verdictWord(session::ShownVerdictKind::kIncomplete))
-               .arg(s.incomplete);
-  if (s.superseded > 0) lines << tr("%1 superseded results (re-analysed) not counted").arg(s.superseded);
-  lines << tr("Pass rate: %1").arg(pct(s.passRate, s.units));
-  lines << tr("First-pass yield: %1").arg(pct(s.firstPassYield, s.units));
+  QString counts = tr("<b>Lot %1</b>: %2 units, %3 sessions").arg(lot.toHtmlEscaped()).arg(s.units).arg(s.sessions) +
+                   " — " +
+                   tr("<span style='color:%1'>%2 %3</span>, <span style='color:%4'>%5 %6</span>, "
+                      "<span style='color:%7'>%8 %9</span>, %10 %11")
+                       .arg(verdictColour(session::ShownVerdictKind::kPass), verdictWord(session::ShownVerdictKind::kPass))
+                       .arg(s.pass)
+                       .arg(verdictColour(session::ShownVerdictKind::kFail), verdictWord(session::ShownVerdictKind::kFail))
+                       .arg(s.fail)
+                       .arg(verdictColour(session::ShownVerdictKind::kInvalid),
+                            verdictWord(session::ShownVerdictKind::kInvalid))
+                       .arg(s.invalid)
+                       .arg(verdictWord(session::ShownVerdictKind::kIncomplete))
+                       .arg(s.incomplete);
+  if (s.superseded > 0) counts += "; " + tr("%1 superseded results (re-analysed) not counted").arg(s.superseded);
+  lines << counts;
+  lines << tr("Pass rate: %1").arg(pct(s.passRate, s.units)) + " · " +
+               tr("First-pass yield: %1").arg(pct(s.firstPassYield, s.units));
   const QString limit = std::isfinite(s.limitMs) ? tr("%1 ms (%2)").arg(fixed(s.limitMs, 3), coreText(s.limitSource))
                                                  : tr("no limit");
   for (const auto& d : s.delay)
@@ -729,7 +749,7 @@ void UnitsView::plotHistory(const std::vector<const CatalogResult*>& shown) {
   double yLo = 0.0, yHi = 1.0;
   if (hi >= lo) {
     const double span = std::max(hi - lo, 1e-3);
-    yLo = lo - 0.2 * span;
+    yLo = lo - 0.4 * span;  // room below the values for the refused marks
     yHi = hi + 0.15 * span;
   }
   const QColor pass(verdictColour(session::ShownVerdictKind::kPass));
@@ -750,7 +770,8 @@ void UnitsView::plotHistory(const std::vector<const CatalogResult*>& shown) {
     if (!series->refusedX.isEmpty()) {
       // Not a value: a mark on the axis's foot saying a result is there.
       QVector<QPointF> marks;
-      const double foot = yLo + 0.04 * (yHi - yLo);
+      // Above the canvas's own hint line at its foot, below every value.
+      const double foot = yLo + 0.12 * (yHi - yLo);
       for (double x : series->refusedX) marks.push_back({x, foot});
       addPoints(plot, tr("refused (INVALID or INCOMPLETE): no delay"), refused, marks, {}, QwtSymbol::XCross);
     }
