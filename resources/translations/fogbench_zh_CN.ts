@@ -5416,7 +5416,7 @@ The session itself is unchanged.</source>
 <context>
     <name>fog::ui::UnitsView</name>
     <message>
-        <location filename="../../ui/units_view.cpp" line="+92"/>
+        <location filename="../../ui/units_view.cpp" line="+93"/>
         <source>%1 %2 Hz</source>
         <translation>%1 %2 Hz</translation>
     </message>
@@ -5521,7 +5521,7 @@ The session itself is unchanged.</source>
         <translation>批次</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+35"/>
         <source>Open in Results</source>
         <translation>在“结果”中打开</translation>
     </message>
@@ -5581,7 +5581,7 @@ The session itself is unchanged.</source>
         <translation>分析者</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+10"/>
         <source>IMU delay against the session date</source>
         <translation>IMU 延迟随会话日期</translation>
     </message>
@@ -5591,7 +5591,7 @@ The session itself is unchanged.</source>
         <translation>会话记录时间（UTC）</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+12"/>
         <source>IMU delay against the IMU temperature</source>
         <translation>IMU 延迟随 IMU 温度</translation>
     </message>
@@ -5601,7 +5601,7 @@ The session itself is unchanged.</source>
         <translation>IMU 平均温度（°C）</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+24"/>
         <source>Indexing %1: %2 of %3 files…</source>
         <translation>正在索引 %1：%3 个文件中的第 %2 个…</translation>
     </message>
@@ -5725,12 +5725,12 @@ Cpk：%4。</translation>
         <translation>%1 %（%3 个中的 %2 个）</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+5"/>
         <source>&lt;b&gt;Lot %1&lt;/b&gt;: %2 units, %3 sessions</source>
         <translation>&lt;b&gt;批次 %1&lt;/b&gt;：%2 个单元，%3 个会话</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>&lt;span style=&apos;color:%1&apos;&gt;%2 %3&lt;/span&gt;, &lt;span style=&apos;color:%4&apos;&gt;%5 %6&lt;/span&gt;, &lt;span style=&apos;color:%7&apos;&gt;%8 %9&lt;/span&gt;, %10 %11</source>
         <translation>&lt;span style=&apos;color:%1&apos;&gt;%2 %3&lt;/span&gt;，&lt;span style=&apos;color:%4&apos;&gt;%5 %6&lt;/span&gt;，&lt;span style=&apos;color:%7&apos;&gt;%8 %9&lt;/span&gt;，%10 %11</translation>
     </message>
@@ -5740,7 +5740,7 @@ Cpk：%4。</translation>
         <translation>%1 个已被取代的结果（已重新分析）不计入</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Pass rate: %1</source>
         <translation>通过率：%1</translation>
     </message>
@@ -5822,7 +5822,7 @@ result analysed %2</source>
         <translation>&lt;b&gt;%1&lt;/b&gt;%2：%3 个结果，最早的会话在前（%4 个已被其会话的较新分析取代）；曲线图显示各会话显示中的结果</translation>
     </message>
     <message>
-        <location line="+87"/>
+        <location line="+88"/>
         <source>refused (INVALID or INCOMPLETE): no delay</source>
         <translation>被拒绝（无效或不完整）：无延迟</translation>
     </message>
