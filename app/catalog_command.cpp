@@ -114,16 +114,6 @@ json resultJson(const CatalogResult& r) {
           {"test_points", points}};
 }
 
-// Who analysed a result, from its audit ("" when not recorded).
-std::string whoOf(const CatalogResult& r) {
-  if (r.auditJson.empty()) return r.analysedBy.empty() ? "not recorded" : r.analysedBy;
-  const json a = json::parse(r.auditJson, nullptr, false);
-  if (!a.is_object()) return r.analysedBy;
-  std::string who = a.value("who", std::string());
-  const std::string tool = a.value("tool", r.analysedBy);
-  return who.empty() ? tool : who + " (" + tool + ")";
-}
-
 // CSV: one row per result and test point, the refused ones without a number.
 void printResultsCsv(const std::vector<CatalogResult>& results) {
   std::cout << "imu_serial,imu_model,lot,bench_id,operator,session_created_utc,result,result_created_utc,shown,"
@@ -137,7 +127,7 @@ void printResultsCsv(const std::vector<CatalogResult>& results) {
                              "," + catalog::textOf(catalog::numberValue(r.meanTemperatureC)) + "," + r.verdict + "," +
                              catalog::textOf(catalog::numberValue(r.limitMs));
     const std::string tail = "," + r.constantsHash + "," + session::csvField(r.softwareVersion) + "," +
-                             session::csvField(whoOf(r)) + "," + session::csvField(r.path) + "," + r.fileSha256;
+                             session::csvField(catalog::analysedByText(r)) + "," + session::csvField(r.path) + "," + r.fileSha256;
     if (r.points.empty()) std::cout << head << ",,,,,,,," << session::csvField(r.verdictReason) << tail << "\n";
     for (const auto& p : r.points) {
       std::cout << head << "," << p.index << "," << p.axis << ","
@@ -147,37 +137,6 @@ void printResultsCsv(const std::vector<CatalogResult>& results) {
                 << session::csvField(p.refusal) << tail << "\n";
     }
   }
-}
-
-// The IMU delay's least-squares slope against the mean IMU temperature over
-// the vouched points of a unit's shown results: how the unit's delay moves
-// with temperature, with the slope's standard error. Empty when fewer than
-// three points at two or more temperatures.
-struct Slope {
-  int n = 0;
-  double perC = NAN, stdPerC = NAN;
-};
-Slope delayAgainstTemperature(const std::vector<CatalogResult>& results) {
-  std::vector<std::pair<double, double>> xy;
-  for (const auto& r : results)
-    if (r.shown && std::isfinite(r.meanTemperatureC))
-      for (const auto& p : r.points)
-        if (p.vouched()) xy.emplace_back(r.meanTemperatureC, p.imuDelayMs);
-  Slope s;
-  s.n = static_cast<int>(xy.size());
-  if (s.n < 3) return s;
-  double mx = 0, my = 0;
-  for (auto [x, y] : xy) mx += x, my += y;
-  mx /= s.n;
-  my /= s.n;
-  double sxx = 0, sxy = 0;
-  for (auto [x, y] : xy) sxx += (x - mx) * (x - mx), sxy += (x - mx) * (y - my);
-  if (!(sxx > 1e-12)) return s;
-  s.perC = sxy / sxx;
-  double rss = 0;
-  for (auto [x, y] : xy) rss += std::pow(y - my - s.perC * (x - mx), 2);
-  s.stdPerC = std::sqrt(rss / (s.n - 2) / sxx);
-  return s;
 }
 
 int indexCommand(CliArguments& args, const std::vector<std::string>& dirs) {
@@ -270,14 +229,14 @@ int unitCommand(CliArguments& args, const std::string& serial) {
     return fail(invalidArgument("no result for IMU serial '" + serial + "' in the " + (*cat)->describe() +
                                 "; `catalog units` lists the serials it holds"),
                 1);
-  const Slope slope = delayAgainstTemperature(*results);
+  const auto slope = catalog::delayAgainstTemperature(*results);
   if (asJson) {
     json history = json::array();
     for (const auto& r : *results) history.push_back(resultJson(r));
     json t = {{"vouched_points", slope.n}};
-    if (std::isfinite(slope.perC)) {
-      t["slope_ms_per_c"] = slope.perC;
-      t["slope_std_ms_per_c"] = slope.stdPerC;
+    if (std::isfinite(slope.msPerC)) {
+      t["slope_ms_per_c"] = slope.msPerC;
+      t["slope_std_ms_per_c"] = slope.stdMsPerC;
     }
     std::cout << json({{"imu_serial", serial}, {"history", history}, {"delay_against_temperature", t}}).dump(2) << "\n";
     return 0;
@@ -301,13 +260,13 @@ int unitCommand(CliArguments& args, const std::string& serial) {
                     r.lot.empty() ? "-" : r.lot, r.benchId.empty() ? "-" : r.benchId,
                     r.operatorName.empty() ? "-" : r.operatorName, fixed(r.meanTemperatureC, 1), upper(r.verdict),
                     points, fixed(r.limitMs, 3), r.constantsHash.empty() ? "-" : r.constantsHash,
-                    r.softwareVersion.empty() ? "-" : r.softwareVersion, whoOf(r),
+                    r.softwareVersion.empty() ? "-" : r.softwareVersion, catalog::analysedByText(r),
                     fs::path(r.path).filename().string()});
   }
   printColumns(rows);
-  if (std::isfinite(slope.perC))
-    std::cout << "IMU delay against temperature: " << fixed(slope.perC * 1000.0, 3) << " ± "
-              << fixed(slope.stdPerC * 1000.0, 3) << " µs/°C (least squares over " << slope.n
+  if (std::isfinite(slope.msPerC))
+    std::cout << "IMU delay against temperature: " << fixed(slope.msPerC * 1000.0, 3) << " ± "
+              << fixed(slope.stdMsPerC * 1000.0, 3) << " µs/°C (least squares over " << slope.n
               << " vouched points of shown results)\n";
   else
     std::cout << "IMU delay against temperature: not stated (needs 3 or more vouched points at two or more "
@@ -366,11 +325,10 @@ int lotCommand(CliArguments& args, const std::string& lot) {
                        {"limit_source", s.limitSource},
                        {"imu_delay", delay},
                        {"definitions",
-                        {{"pass_rate", "units whose latest session's shown result is PASS, over units"},
-                         {"first_pass_yield", "units whose first session's shown result is PASS, over units"},
-                         {"imu_delay", "over the vouched test points (PASS or FAIL) of shown PASS or FAIL results; "
-                                       "INVALID and INCOMPLETE results are counted, never averaged"},
-                         {"cpk", "(limit - mean) / (3 s), one-sided: the IMU delay has an upper limit only"}}}})
+                        {{"pass_rate", catalog::kPassRateDefinition},
+                         {"first_pass_yield", catalog::kFirstPassYieldDefinition},
+                         {"imu_delay", catalog::kLotDelayDefinition},
+                         {"cpk", catalog::kCpkDefinition}}}})
                      .dump(2)
               << "\n";
     return 0;

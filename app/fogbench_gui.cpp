@@ -56,7 +56,7 @@ int fail(const QString& message) {
 struct Options {
   QStringList presetNames;
   // response: Results (or Compare) with the frequency response shown.
-  QStringList views = {"configure", "live", "results", "response", "sessions", "diagnosis", "noise"};
+  QStringList views = {"configure", "live", "results", "response", "sessions", "units", "diagnosis", "noise"};
   QCommandLineOption runOption{"run", "Start the run at once."};
   QCommandLineOption presetOption{"preset", "", "NAME"};
   QCommandLineOption seedOption{"seed", "Simulator seed (default 1).", "N"};
@@ -192,7 +192,7 @@ int main(int argc, char* argv[]) {
   const std::map<QString, fog::ui::MainWindow::View> viewOf = {
       {"configure", fog::ui::MainWindow::kConfigure}, {"live", fog::ui::MainWindow::kLive},
       {"results", fog::ui::MainWindow::kResults},     {"response", fog::ui::MainWindow::kResults},
-      {"sessions", fog::ui::MainWindow::kSessions},
+      {"sessions", fog::ui::MainWindow::kSessions},  {"units", fog::ui::MainWindow::kUnits},
       {"diagnosis", fog::ui::MainWindow::kDiagnosis}, {"noise", fog::ui::MainWindow::kNoise}};
   const auto asked = viewOf.find(view);
   if (asked != viewOf.end()) {

@@ -2,11 +2,15 @@
 
 #include <QApplication>
 #include <QPixmap>
+#include <QComboBox>
+#include <QTableWidget>
 #include <QTimer>
+#include <memory>
 #include <cstdio>
 
 #include "ui/compare_view.h"
 #include "ui/main_window.h"
+#include "ui/units_view.h"
 
 namespace fog::app {
 namespace {
@@ -37,6 +41,25 @@ void armScreenshot(fog::ui::MainWindow& window, const ScreenshotRequest& request
   } else if (view == "live") {
     QTimer::singleShot(static_cast<int>(request.afterS * 1000.0) + 200, &window,
                        [&window, screenshot] { saveAndQuit(window, screenshot, window.isRunning()); });
+  } else if (view == "units") {
+    // The catalog is read in the background; once it is there, the first
+    // lot (its statistics) and the first unit (its history and plots).
+    auto* units = window.unitsView();
+    auto once = std::make_shared<QMetaObject::Connection>();
+    *once = QObject::connect(units, &fog::ui::UnitsView::loaded, &window, [&window, units, screenshot, once](bool ok) {
+      QObject::disconnect(*once);
+      if (units->lotCombo()->count() > 1) units->lotCombo()->setCurrentIndex(1);
+      // The unit with the most results (the first of equals): the richest history.
+      int richest = -1, most = -1;
+      for (int row = 0; row < units->unitTable()->rowCount(); ++row)
+        if (const int n = units->unitTable()->item(row, 5)->text().toInt(); n > most) {
+          most = n;
+          richest = row;
+        }
+      if (richest >= 0) units->unitTable()->selectRow(richest);
+      window.showView(MainWindow::kUnits);
+      saveAndQuit(window, screenshot, ok);
+    });
   } else if (view == "noise") {
     QObject::connect(&window, &MainWindow::noiseAnalysed, &window, [&window, screenshot](bool succeeded) {
       window.showView(MainWindow::kNoise);

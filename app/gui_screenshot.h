@@ -6,6 +6,9 @@
 //   configure            at once
 //   live                 afterS seconds into the run (default 3)
 //   results, sessions    when the run (or --open) ended
+//   units                when the catalog of the session folder was read,
+//                        its first lot and the unit with the most
+//                        results chosen
 //   noise                when the noise analysis of that result ended
 //   diagnosis            when its diagnosis ended, or afterS seconds into it
 //                        when afterS was given (its progress)

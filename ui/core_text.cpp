@@ -462,6 +462,18 @@ const char* const kTemplates[] = {
     QT_TRANSLATE_NOOP("core_text", "T_ms"),
     QT_TRANSLATE_NOOP("core_text", "fn_hz"),
     QT_TRANSLATE_NOOP("core_text", "zeta"),
+    // core/catalog: a catalog's description, who analysed a result, the
+    // lot statistics' limit source and definitions (catalog.h).
+    QT_TRANSLATE_NOOP("core_text", "SQLite catalog %1"),
+    QT_TRANSLATE_NOOP("core_text", "PostgreSQL catalog %1"),
+    QT_TRANSLATE_NOOP("core_text", "not recorded"),
+    QT_TRANSLATE_NOOP("core_text", "stored"),
+    QT_TRANSLATE_NOOP("core_text", "given"),
+    QT_TRANSLATE_NOOP("core_text", "units whose latest session's shown result is PASS, over units"),
+    QT_TRANSLATE_NOOP("core_text", "units whose first session's shown result is PASS, over units"),
+    QT_TRANSLATE_NOOP("core_text", "over the vouched test points (PASS or FAIL) of shown PASS or FAIL results; "
+                                   "INVALID and INCOMPLETE results are counted, never averaged"),
+    QT_TRANSLATE_NOOP("core_text", "(limit - mean) / (3 s), one-sided: the IMU delay has an upper limit only"),
 };
 
 struct Template {

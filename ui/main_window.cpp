@@ -63,6 +63,7 @@
 #include "ui/result_view.h"
 #include "ui/session_browser.h"
 #include "ui/table_drive.h"
+#include "ui/units_view.h"
 
 namespace fog::ui {
 
@@ -168,6 +169,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   sessionBrowser_ = new SessionBrowser();
   sessionBrowser_->setObjectName("sessionBrowser");
   tabs_->addTab(scrollable(sessionBrowser_), tr("Sessions"));
+  unitsView_ = new UnitsView();
+  unitsView_->setObjectName("unitsView");
+  tabs_->addTab(scrollable(unitsView_), tr("Units"));
   diagnosisView_ = new DiagnosisView();
   diagnosisView_->setObjectName("diagnosisView");
   tabs_->addTab(scrollable(diagnosisView_), tr("Diagnosis"));
@@ -207,6 +211,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   connect(resultView_, &ResultView::resultChosen, this, &MainWindow::chooseResult);
   connect(sessionBrowser_, &SessionBrowser::compareRequested, this, &MainWindow::compareSessions);
   connect(sessionBrowser_, &SessionBrowser::importRequested, this, &MainWindow::chooseImportOptions);
+  // Units shows the catalog of the folder Sessions shows, and opens a
+  // result's session the way Sessions does.
+  connect(sessionBrowser_, &SessionBrowser::folderChanged, unitsView_, &UnitsView::setSessionFolder);
+  connect(unitsView_, &UnitsView::openSessionRequested, this, &MainWindow::openSession);
+  connect(unitsView_, &UnitsView::statusMessage, this, &MainWindow::tell);
   connect(resultView_, &ResultView::diagnoseRequested, this, &MainWindow::diagnoseShown);
   connect(diagnosisView_, &DiagnosisView::cancelRequested, this, &MainWindow::cancelDiagnosis);
   connect(resultView_, &ResultView::exported, this, &MainWindow::exported);
@@ -405,8 +414,8 @@ void MainWindow::buildMenus() {
   reanalyse->setShortcut(QKeySequence(QStringLiteral("Ctrl+Shift+R")));
 
   auto* view = menuBar()->addMenu(tr("&View"));
-  const QStringList names = {tr("&Configure"), tr("&Live"), tr("&Results"), tr("&Sessions"), tr("&Diagnosis"),
-                             tr("&Noise")};
+  const QStringList names = {tr("&Configure"), tr("&Live"), tr("&Results"), tr("&Sessions"), tr("&Units"),
+                             tr("&Diagnosis"), tr("&Noise")};
   for (int i = 0; i < names.size(); ++i) {
     auto* action = view->addAction(names[i], this, [this, i] { showView(static_cast<View>(i)); });
     action->setObjectName(QString("viewAction%1").arg(i));
@@ -452,7 +461,7 @@ void MainWindow::buildMenus() {
     showMessage(this, MessageKind::kInformation, tr("Shortcuts"), tr("Keyboard shortcuts"),
                 tr("Run: F5 or Ctrl+R\nStop: Shift+F5 or Ctrl+.\nDiagnose the shown result: Ctrl+D\n"
                    "Re-analyse the shown session: Ctrl+Shift+R\nOpen a session: Ctrl+O\nLoad a test plan: Ctrl+L\n"
-                   "Save the test plan: Ctrl+S\nViews: Ctrl+1 … Ctrl+6\nQuit: Ctrl+Q\n"
+                   "Save the test plan: Ctrl+S\nViews: Ctrl+1 … Ctrl+7\nQuit: Ctrl+Q\n"
                    "Plots: wheel zooms, drag pans, double-click shows all, click sets cursors A/B"));
   });
   guide->setObjectName("shortcutsAction");

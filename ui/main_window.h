@@ -7,6 +7,7 @@
 //   Live       the scrolling table and gyro angles, progress, counters
 //   Results    curves, fits, delay breakdown, delay vs frequency, report
 //   Sessions   the session browser: review, re-analyse, compare
+//   Units      the lab's catalog by unit and lot (ui/units_view.h)
 // Run and Stop are always at hand; Stop ends the run and keeps everything
 // recorded so far. Bench constants are set in a dialog and remembered.
 //
@@ -57,12 +58,13 @@ class ResultView;
 class SessionBrowser;
 class TableDrive;
 class TablePanel;
+class UnitsView;
 
 class MainWindow : public QMainWindow {
   Q_OBJECT
 
  public:
-  enum View { kConfigure = 0, kLive, kResults, kSessions, kDiagnosis, kNoise };
+  enum View { kConfigure = 0, kLive, kResults, kSessions, kUnits, kDiagnosis, kNoise };
   using SourceKind = ConfigureView::SourceKind;
 
   explicit MainWindow(QWidget* parent = nullptr);
@@ -83,6 +85,7 @@ class MainWindow : public QMainWindow {
   // is stopped.
   void emergencyStop();
   SessionBrowser* sessionBrowser() const { return sessionBrowser_; }
+  UnitsView* unitsView() const { return unitsView_; }
   DiagnosisView* diagnosisView() const { return diagnosisView_; }
   NoiseView* noiseView() const { return noiseView_; }
   void showView(View view);
@@ -267,6 +270,7 @@ class MainWindow : public QMainWindow {
   QAction* emergencyStopAction_ = nullptr;
   void updateEmergencyStop();
   SessionBrowser* sessionBrowser_ = nullptr;
+  UnitsView* unitsView_ = nullptr;
   DiagnosisView* diagnosisView_ = nullptr;
   NoiseView* noiseView_ = nullptr;
 

@@ -645,4 +645,36 @@ Result<LotStatistics> lotStatistics(const std::string& lot, const std::vector<Ca
   return s;
 }
 
+std::string analysedByText(const CatalogResult& r) {
+  if (r.auditJson.empty()) return r.analysedBy.empty() ? "not recorded" : r.analysedBy;
+  const json a = json::parse(r.auditJson, nullptr, false);
+  if (!a.is_object()) return r.analysedBy;
+  const std::string who = a.value("who", std::string());
+  const std::string tool = a.value("tool", r.analysedBy);
+  return who.empty() ? tool : who + " (" + tool + ")";
+}
+
+TemperatureSlope delayAgainstTemperature(const std::vector<CatalogResult>& results) {
+  std::vector<std::pair<double, double>> xy;
+  for (const auto& r : results)
+    if (r.shown && std::isfinite(r.meanTemperatureC))
+      for (const auto& p : r.points)
+        if (p.vouched()) xy.emplace_back(r.meanTemperatureC, p.imuDelayMs);
+  TemperatureSlope s;
+  s.n = static_cast<int>(xy.size());
+  if (s.n < 3) return s;
+  double mx = 0, my = 0;
+  for (auto [x, y] : xy) mx += x, my += y;
+  mx /= s.n;
+  my /= s.n;
+  double sxx = 0, sxy = 0;
+  for (auto [x, y] : xy) sxx += (x - mx) * (x - mx), sxy += (x - mx) * (y - my);
+  if (!(sxx > 1e-12)) return s;
+  s.msPerC = sxy / sxx;
+  double rss = 0;
+  for (auto [x, y] : xy) rss += std::pow(y - my - s.msPerC * (x - mx), 2);
+  s.stdMsPerC = std::sqrt(rss / (s.n - 2) / sxx);
+  return s;
+}
+
 }  // namespace fog::catalog

@@ -165,4 +165,28 @@ struct LotStatistics {
 Result<LotStatistics> lotStatistics(const std::string& lot, const std::vector<CatalogResult>& shownResults,
                                     double limitMs);
 
+// ---- Words the CLI and the GUI share (the GUI shows them through its
+// translation layer, ui/core_text.h), so that both say the same.
+
+// Who analysed a result, from its audit: "who (tool)", the tool, or
+// "not recorded".
+std::string analysedByText(const CatalogResult& r);
+
+// The IMU delay's least-squares slope against the mean IMU temperature over
+// the vouched points of a unit's shown results, with the slope's standard
+// error; NaN when fewer than three points or a single temperature.
+struct TemperatureSlope {
+  int n = 0;  // vouched points of shown results with a temperature
+  double msPerC = kNaN, stdMsPerC = kNaN;
+};
+TemperatureSlope delayAgainstTemperature(const std::vector<CatalogResult>& results);
+
+// The lot statistics' definitions (`catalog lot --json`, the GUI's tooltip).
+inline constexpr const char* kPassRateDefinition = "units whose latest session's shown result is PASS, over units";
+inline constexpr const char* kFirstPassYieldDefinition = "units whose first session's shown result is PASS, over units";
+inline constexpr const char* kLotDelayDefinition =
+    "over the vouched test points (PASS or FAIL) of shown PASS or FAIL results; INVALID and INCOMPLETE results are "
+    "counted, never averaged";
+inline constexpr const char* kCpkDefinition = "(limit - mean) / (3 s), one-sided: the IMU delay has an upper limit only";
+
 }  // namespace fog::catalog

@@ -1713,13 +1713,13 @@ Press Diagnose in the Results view to start it again.</source>
 <context>
     <name>fog::ui::MainWindow</name>
     <message>
-        <location filename="../../ui/main_window.cpp" line="+153"/>
-        <location line="+1030"/>
+        <location filename="../../ui/main_window.cpp" line="+154"/>
+        <location line="+1038"/>
         <source>fogbench %1 — FOG IMU delay bench</source>
         <translation>fogbench %1 —— 光纤陀螺 IMU 延迟测试台</translation>
     </message>
     <message>
-        <location line="-1022"/>
+        <location line="-1030"/>
         <source>Configure</source>
         <translation>配置</translation>
     </message>
@@ -1739,18 +1739,18 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>会话</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <location line="+1102"/>
+        <location line="+6"/>
+        <location line="+1107"/>
         <source>Diagnosis</source>
         <translation>诊断</translation>
     </message>
     <message>
-        <location line="-1099"/>
+        <location line="-1104"/>
         <source>Noise</source>
         <translation>噪声</translation>
     </message>
     <message>
-        <location line="+58"/>
+        <location line="+63"/>
         <source>Configure a plan and press Run.</source>
         <translation>请配置测试计划并按“运行”。</translation>
     </message>
@@ -1796,7 +1796,12 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>运行</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-101"/>
+        <source>Units</source>
+        <translation>单元</translation>
+    </message>
+    <message>
+        <location line="+103"/>
         <source>Stop</source>
         <translation>停止</translation>
     </message>
@@ -1952,11 +1957,16 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+0"/>
+        <source>&amp;Units</source>
+        <translation>单元(&amp;U)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>&amp;Diagnosis</source>
         <translation>诊断(&amp;D)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
         <source>&amp;Noise</source>
         <translation>噪声(&amp;N)</translation>
     </message>
@@ -1981,7 +1991,30 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>键盘快捷键</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+1"/>
+        <source>Run: F5 or Ctrl+R
+Stop: Shift+F5 or Ctrl+.
+Diagnose the shown result: Ctrl+D
+Re-analyse the shown session: Ctrl+Shift+R
+Open a session: Ctrl+O
+Load a test plan: Ctrl+L
+Save the test plan: Ctrl+S
+Views: Ctrl+1 … Ctrl+7
+Quit: Ctrl+Q
+Plots: wheel zooms, drag pans, double-click shows all, click sets cursors A/B</source>
+        <translation>运行：F5 或 Ctrl+R
+停止：Shift+F5 或 Ctrl+.
+诊断所显示的结果：Ctrl+D
+重新分析所显示的会话：Ctrl+Shift+R
+打开会话：Ctrl+O
+载入测试计划：Ctrl+L
+保存测试计划：Ctrl+S
+视图：Ctrl+1 … Ctrl+7
+退出：Ctrl+Q
+曲线图：滚轮缩放，拖动平移，双击显示全部，单击设置光标 A/B</translation>
+    </message>
+    <message>
+        <location line="+20"/>
         <source>(none yet)</source>
         <translation>（暂无）</translation>
     </message>
@@ -2041,12 +2074,12 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>停止运行并关闭</translation>
     </message>
     <message>
-        <location line="-466"/>
+        <location line="-471"/>
         <source>Table</source>
         <translation>转台</translation>
     </message>
     <message>
-        <location line="+94"/>
+        <location line="+99"/>
         <source>EMERGENCY STOP</source>
         <translation>急停</translation>
     </message>
@@ -2108,30 +2141,7 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>运行或诊断结束后才能更改语言。</translation>
     </message>
     <message>
-        <location line="+11"/>
-        <source>Run: F5 or Ctrl+R
-Stop: Shift+F5 or Ctrl+.
-Diagnose the shown result: Ctrl+D
-Re-analyse the shown session: Ctrl+Shift+R
-Open a session: Ctrl+O
-Load a test plan: Ctrl+L
-Save the test plan: Ctrl+S
-Views: Ctrl+1 … Ctrl+6
-Quit: Ctrl+Q
-Plots: wheel zooms, drag pans, double-click shows all, click sets cursors A/B</source>
-        <translation>运行：F5 或 Ctrl+R
-停止：Shift+F5 或 Ctrl+.
-诊断所显示的结果：Ctrl+D
-重新分析所显示的会话：Ctrl+Shift+R
-打开会话：Ctrl+O
-载入测试计划：Ctrl+L
-保存测试计划：Ctrl+S
-视图：Ctrl+1 … Ctrl+6
-退出：Ctrl+Q
-曲线图：滚轮缩放，拖动平移，双击显示全部，单击设置光标 A/B</translation>
-    </message>
-    <message>
-        <location line="+200"/>
+        <location line="+211"/>
         <source>Keep running</source>
         <translation>继续运行</translation>
     </message>
@@ -2875,7 +2885,7 @@ File: %1</source>
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location filename="../../ui/main_window.cpp" line="-1245"/>
+        <location filename="../../ui/main_window.cpp" line="-1253"/>
         <location filename="../../ui/plan_editor.cpp" line="-323"/>
         <location filename="../../ui/plots/delta_picker.cpp" line="+1"/>
         <source>%1 s</source>
@@ -5404,6 +5414,435 @@ The session itself is unchanged.</source>
     </message>
 </context>
 <context>
+    <name>fog::ui::UnitsView</name>
+    <message>
+        <location filename="../../ui/units_view.cpp" line="+93"/>
+        <source>%1 %2 Hz</source>
+        <translation>%1 %2 Hz</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1: %2 ± %3 ms %4</source>
+        <translation>%1：%2 ± %3 ms %4</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1: refused (%2)</source>
+        <translation>%1：被拒绝（%2）</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>IMU delay (ms), ±1σ</source>
+        <translation>IMU 延迟（ms），±1σ</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>No catalog at %1 yet. Index folder… makes one from the sessions of a folder; Open catalog… opens another.</source>
+        <translation>%1 处尚无目录。“索引文件夹…”可由一个文件夹中的会话建立目录；“打开目录…”可打开其他目录。</translation>
+    </message>
+    <message>
+        <location line="+39"/>
+        <source>Catalog</source>
+        <translation>目录</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>a catalog file (.sqlite), a sessions folder, or postgresql://…</source>
+        <translation>目录文件（.sqlite）、会话文件夹或 postgresql://…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>By default the catalog of the sessions folder (fogbench-catalog.sqlite there). A PostgreSQL address (postgresql://host/db) shows a catalog shared by benches.</source>
+        <translation>默认使用会话文件夹中的目录（其中的 fogbench-catalog.sqlite）。PostgreSQL 地址（postgresql://host/db）显示多个测试台共享的目录。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Open catalog…</source>
+        <translation>打开目录…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Index folder…</source>
+        <translation>索引文件夹…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Reads the sessions under a folder into this catalog, in the background; files unchanged since they were last indexed are not read again</source>
+        <translation>在后台将文件夹下的会话读入此目录；自上次索引以来未改变的文件不再重读</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Reload</source>
+        <translation>重新读取</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>IMU serial</source>
+        <translation>IMU 序列号</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Model</source>
+        <translation>型号</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Lots</source>
+        <translation>批次</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Benches</source>
+        <translation>测试台</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Sessions</source>
+        <translation>会话</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Results</source>
+        <translation>结果</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Latest session (UTC)</source>
+        <translation>最近会话（UTC）</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Its verdict</source>
+        <translation>其判定</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Lot</source>
+        <translation>批次</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>Open in Results</source>
+        <translation>在“结果”中打开</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Opens the chosen result&apos;s session read-only in Results (double-click a row does the same); Results shows its newest result, the others are chosen there</source>
+        <translation>以只读方式在“结果”中打开所选结果的会话（双击一行效果相同）；“结果”显示其最新结果，其他结果可在那里选择</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Session (UTC)</source>
+        <translation>会话（UTC）</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Result</source>
+        <translation>结果</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Bench</source>
+        <translation>测试台</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Operator</source>
+        <translation>操作员</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Temp. (°C)</source>
+        <translation>温度（°C）</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Verdict</source>
+        <translation>判定</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>IMU delay per test point</source>
+        <translation>各测试点的 IMU 延迟</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Constants</source>
+        <translation>常数</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Software</source>
+        <translation>软件</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Analysed by</source>
+        <translation>分析者</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>IMU delay against the session date</source>
+        <translation>IMU 延迟随会话日期</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>session recorded (UTC)</source>
+        <translation>会话记录时间（UTC）</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>IMU delay against the IMU temperature</source>
+        <translation>IMU 延迟随 IMU 温度</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>mean IMU temperature (°C)</source>
+        <translation>IMU 平均温度（°C）</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>Indexing %1: %2 of %3 files…</source>
+        <translation>正在索引 %1：%3 个文件中的第 %2 个…</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+119"/>
+        <source>Indexing %1: looking for session files…</source>
+        <translation>正在索引 %1：查找会话文件…</translation>
+    </message>
+    <message>
+        <location line="-107"/>
+        <source>Open catalog</source>
+        <translation>打开目录</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Catalogs (*.sqlite *.db);;All files (*)</source>
+        <translation>目录 (*.sqlite *.db);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Folder of sessions to index</source>
+        <translation>要索引的会话文件夹</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Choose a catalog: the sessions folder&apos;s, a catalog file, or a PostgreSQL address.</source>
+        <translation>请选择目录：会话文件夹的目录、目录文件或 PostgreSQL 地址。</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>Reading %1…</source>
+        <translation>正在读取 %1…</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>The catalog could not be read.</source>
+        <translation>无法读取目录。</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1: %2 results of %3 units.</source>
+        <translation>%1：%3 个单元的 %2 个结果。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 files refused when indexed (unreadable or damaged): `fogbench-cli catalog refused` lists them with why.</source>
+        <translation>索引时拒绝了 %1 个文件（无法读取或已损坏）：`fogbench-cli catalog refused` 列出它们及原因。</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>An indexing is under way; it ends before another starts.</source>
+        <translation>索引正在进行；须待其结束后才能开始新的索引。</translation>
+    </message>
+    <message>
+        <location line="+46"/>
+        <location line="+2"/>
+        <source>Indexing %1 failed</source>
+        <translation>索引 %1 失败</translation>
+    </message>
+    <message>
+        <location line="-1"/>
+        <location line="+18"/>
+        <source>Index folder</source>
+        <translation>索引文件夹</translation>
+    </message>
+    <message>
+        <location line="-12"/>
+        <source>Indexed %1: %2 session files, %3 read (%4 results), %5 unchanged, %6 refused</source>
+        <translation>已索引 %1：会话文件 %2 个，读取 %3 个（%4 个结果），未改变 %5 个，拒绝 %6 个</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 files were refused and are not in the catalog</source>
+        <translation>%1 个文件被拒绝，未收入目录</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>A refused file is read again at the next indexing once it changes; restore a damaged one from a backup.</source>
+        <translation>被拒绝的文件改变后会在下次索引时重新读取；损坏的文件请从备份恢复。</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>All lots</source>
+        <translation>所有批次</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>(none)</source>
+        <translation>（无）</translation>
+    </message>
+    <message>
+        <location line="+42"/>
+        <source>Pass rate: %1.
+First-pass yield: %2.
+IMU delay mean and s: %3.
+Cpk: %4.</source>
+        <translation>通过率：%1。
+一次通过率：%2。
+IMU 延迟均值与 s：%3。
+Cpk：%4。</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Choose a lot for its statistics: pass rate, first-pass yield, the IMU delay&apos;s mean and spread, Cpk against the limit.</source>
+        <translation>选择一个批次以查看其统计：通过率、一次通过率、IMU 延迟的均值与离散、相对限值的 Cpk。</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Lot %1: %2</source>
+        <translation>批次 %1：%2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 % (%2 of %3)</source>
+        <translation>%1 %（%3 个中的 %2 个）</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&lt;b&gt;Lot %1&lt;/b&gt;: %2 units, %3 sessions</source>
+        <translation>&lt;b&gt;批次 %1&lt;/b&gt;：%2 个单元，%3 个会话</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&lt;span style=&apos;color:%1&apos;&gt;%2 %3&lt;/span&gt;, &lt;span style=&apos;color:%4&apos;&gt;%5 %6&lt;/span&gt;, &lt;span style=&apos;color:%7&apos;&gt;%8 %9&lt;/span&gt;, %10 %11</source>
+        <translation>&lt;span style=&apos;color:%1&apos;&gt;%2 %3&lt;/span&gt;，&lt;span style=&apos;color:%4&apos;&gt;%5 %6&lt;/span&gt;，&lt;span style=&apos;color:%7&apos;&gt;%8 %9&lt;/span&gt;，%10 %11</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1 superseded results (re-analysed) not counted</source>
+        <translation>%1 个已被取代的结果（已重新分析）不计入</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Pass rate: %1</source>
+        <translation>通过率：%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>First-pass yield: %1</source>
+        <translation>一次通过率：%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 ms (%2)</source>
+        <translation>%1 ms（%2）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no limit</source>
+        <translation>无限值</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>IMU delay %1: %2 points, mean %3 ms, s %4 ms, Cpk %5</source>
+        <translation>IMU 延迟 %1：%2 个点，均值 %3 ms，s %4 ms，Cpk %5</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>all axes</source>
+        <translation>所有轴</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>IMU delay: no vouched test point in this lot</source>
+        <translation>IMU 延迟：此批次中没有可担保的测试点</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Cpk against %1; definitions in the tooltip</source>
+        <translation>Cpk 相对于 %1；定义见工具提示</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Choose a unit for its history.</source>
+        <translation>选择一个单元以查看其历史。</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>%1
+result analysed %2</source>
+        <translation>%1
+结果分析于 %2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1, shown</source>
+        <translation>%1，显示中</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1, superseded</source>
+        <translation>%1，已被取代</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The session&apos;s shown result</source>
+        <translation>该会话显示的结果</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>A later analysis of the same session is shown</source>
+        <translation>显示的是同一会话的较新分析</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>(no serial)</source>
+        <translation>（无序列号）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&lt;b&gt;%1&lt;/b&gt;%2: %3 results, oldest session first (%4 superseded by a later analysis of their session); the plots show the shown results</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt;%2：%3 个结果，最早的会话在前（%4 个已被其会话的较新分析取代）；曲线图显示各会话显示中的结果</translation>
+    </message>
+    <message>
+        <location line="+88"/>
+        <source>refused (INVALID or INCOMPLETE): no delay</source>
+        <translation>被拒绝（无效或不完整）：无延迟</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>slope %1 ± %2 µs/°C over %3 points</source>
+        <translation>斜率 %1 ± %2 µs/°C（%3 个点）</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>slope: needs 3 or more vouched points at two or more temperatures (has %1)</source>
+        <translation>斜率：需要在两个或以上温度下的 3 个或以上可担保的点（现有 %1 个）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 results without a temperature not plotted</source>
+        <translation>%1 个无温度的结果未绘制</translation>
+    </message>
+</context>
+<context>
     <name>core_text</name>
     <message>
         <location filename="../../ui/core_text.cpp" line="+21"/>
@@ -7554,6 +7993,51 @@ The session itself is unchanged.</source>
         <location line="+1"/>
         <source>zeta</source>
         <translation>ζ</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>SQLite catalog %1</source>
+        <translation>SQLite 目录 %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PostgreSQL catalog %1</source>
+        <translation>PostgreSQL 目录 %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not recorded</source>
+        <translation>未记录</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>stored</source>
+        <translation>已保存</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>given</source>
+        <translation>给定</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>units whose latest session&apos;s shown result is PASS, over units</source>
+        <translation>最近一次会话显示的结果为通过的单元数，除以单元数</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>units whose first session&apos;s shown result is PASS, over units</source>
+        <translation>第一次会话显示的结果为通过的单元数，除以单元数</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>over the vouched test points (PASS or FAIL) of shown PASS or FAIL results; INVALID and INCOMPLETE results are counted, never averaged</source>
+        <translation>取自显示中的通过或不通过结果的可担保测试点（通过或不通过）；无效和不完整的结果只计数，从不参与平均</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>(limit - mean) / (3 s), one-sided: the IMU delay has an upper limit only</source>
+        <translation>(限值 − 均值) / (3 s)，单侧：IMU 延迟只有上限</translation>
     </message>
 </context>
 </TS>

@@ -210,7 +210,7 @@ class DeskTest : public QObject {
   // Every view: no label over another, and in zh_CN no English left.
   void everyViewIsReadable_data() {
     QTest::addColumn<int>("view");
-    const char* names[] = {"configure", "live", "results", "sessions", "diagnosis", "noise"};
+    const char* names[] = {"configure", "live", "results", "sessions", "units", "diagnosis", "noise"};
     for (int v = MainWindow::kConfigure; v <= MainWindow::kNoise; ++v) QTest::newRow(names[v]) << v;
   }
   void everyViewIsReadable() {
