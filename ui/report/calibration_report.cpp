@@ -316,6 +316,8 @@ void firstPage(PageFlow& flow, const Content& c) {
       {
           {QObject::tr("IMU model"), orNotRecorded(info.imuModel)},
           {QObject::tr("IMU serial number"), orNotRecorded(info.imuSerial)},
+          {QObject::tr("Lot"), orNotRecorded(info.lot)},
+          {QObject::tr("Bench id"), orNotRecorded(info.benchId)},
           {QObject::tr("Operator"), orNotRecorded(info.operatorName)},
           {QObject::tr("Recorded (UTC)"), orNotRecorded(info.createdUtc)},
           {QObject::tr("Data source"), info.source.empty() ? orNotRecorded(info.source) : coreText(info.source)},
@@ -538,6 +540,17 @@ void constantsAndPlanPage(PageFlow& flow, const Content& c) {
                   n(h.duplicateFrames) + " / " + n(h.outOfOrderFrames)},
                  {QObject::tr("counter wraps"), n(h.counterWraps), QObject::tr("bytes skipped"), n(h.bytesSkipped)}};
   flow.table(health);
+
+  // The audit trail: every stored analysis of the session, who made it with
+  // what on which data (the lines as the core words them, never re-judged).
+  if (!c.in.auditTrail.empty()) {
+    flow.heading(QObject::tr("Analyses of this session"));
+    for (const auto& line : c.in.auditTrail) flow.paragraph(QString::fromStdString(line), PageFlow::font(7.5));
+    flow.paragraph(QObject::tr("Each line: number, when stored (UTC), who (operator named, or login), tool and "
+                               "command, constants, software version, SHA-256 of the raw data analysed (first 12 "
+                               "digits), verdict as stored."),
+                   PageFlow::font(7.0), kMuted);
+  }
 
   budgetSection(flow, c, imported);
 

@@ -63,6 +63,10 @@ struct ReportInput {
   // Unset `stored` only: why the run stopped early ("" for a complete run);
   // the verdict is then INCOMPLETE.
   std::string incompleteReason;
+  // The session's audit trail (session::auditTrailLines): one line per
+  // stored result, printed under "Analyses of this session". Empty for data
+  // without a session (a preset, a raw stream) or without stored results.
+  std::vector<std::string> auditTrail;
 };
 
 // The one place a report's input is put together (fogbench-cli report, the
