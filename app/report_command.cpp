@@ -173,7 +173,7 @@ int reportCommand(CliArguments& args) {
                                  std::move(opened->rawBytes), shown.record ? &*shown.record : nullptr,
                                  shown.context.imuDelayLimitMs, shown.context.incompleteReason,
                                  QString::fromStdString(shown.description));
-    in.auditTrail = session::auditTrailLines(opened->results);
+    in.analyses = opened->results;
   }
   if (imuModel) in.info.imuModel = *imuModel;
   if (imuSerial) in.info.imuSerial = *imuSerial;
@@ -216,9 +216,9 @@ int reportCommand(CliArguments& args) {
             << forTerminal(orDash(in.info.imuSerial)) << ", lot " << forTerminal(orDash(in.info.lot)) << ", bench "
             << forTerminal(orDash(in.info.benchId)) << ", operator " << forTerminal(orDash(in.info.operatorName))
             << "\n";
-  if (!in.auditTrail.empty()) {
+  if (!in.analyses.empty()) {
     std::cout << "analyses of this session:\n";
-    for (const auto& line : in.auditTrail) std::cout << "  " << forTerminal(line) << "\n";
+    for (const auto& line : session::auditTrailLines(in.analyses)) std::cout << "  " << forTerminal(line) << "\n";
   }
   if (!in.resultShown.isEmpty()) std::cout << "result shown: " << in.resultShown.toStdString() << "\n";
   std::cout << verdict.headline.toStdString() << "\n";

@@ -421,6 +421,8 @@ int exportCommand(CliArguments& args) {
                   {"operator", info.operatorName},
                   {"imu_model", info.imuModel},
                   {"imu_serial", info.imuSerial},
+                  {"lot", info.lot},
+                  {"bench_id", info.benchId},
                   {"source", info.source},
                   {"software_version", info.softwareVersion},
                   {"created_utc", info.createdUtc},

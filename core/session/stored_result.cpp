@@ -272,10 +272,14 @@ std::vector<std::string> auditTrailLines(const std::vector<StoredResultRecord>& 
               " (audit not recorded)";
     }
     const auto& c = r.constants;
-    std::snprintf(buf, sizeof buf,
-                  " | constants: table read %.3f ± %.3f ms, board %.3f ± %.3f ms, pulse %.6g deg, limit %.3f ms%s",
-                  c.tableReadDelayMs, c.tableReadDelayStdMs, c.boardDelayMs, c.boardDelayStdMs,
-                  c.pulseEquivalentDeg, r.imuDelayLimitMs, r.limitStated ? "" : " (not stated: default)");
+    std::snprintf(buf, sizeof buf, " | constants: table read %.3f ± %.3f ms, board %.3f ± %.3f ms",
+                  c.tableReadDelayMs, c.tableReadDelayStdMs, c.boardDelayMs, c.boardDelayStdMs);
+    line += buf;
+    // 0: none given, the stream's own statement converted the pulses.
+    if (c.pulseEquivalentDeg > 0.0) std::snprintf(buf, sizeof buf, ", pulse %.6g deg", c.pulseEquivalentDeg);
+    else std::snprintf(buf, sizeof buf, ", pulse as the stream states");
+    line += buf;
+    std::snprintf(buf, sizeof buf, ", limit %.3f ms%s", r.imuDelayLimitMs, r.limitStated ? "" : " (not stated: default)");
     line += buf;
     if (c.gyroSign != std::array<int, kAxisCount>{1, 1, 1})
       line += ", gyro signs x" + std::string(c.gyroSign[0] < 0 ? "-" : "+") + " y" +
