@@ -93,6 +93,12 @@ int analyzeCommand(CliArguments& args) {
   // login name. It describes the analysis, not the session: nothing else.
   settings.operatorName = toValidUtf8(args.text("operator").value_or(""));
   settings.command = auditCommandLine();
+  // As a session's operator is bounded (SessionWriter::create): every
+  // reader of the results holds it in memory and prints it.
+  if (settings.operatorName.size() > 4096)
+    return fail(invalidArgument("--operator is " + std::to_string(settings.operatorName.size()) +
+                                " bytes; at most 4096: give the operator's name"),
+                2);
   auto constants = readConstants(args, opened->info.bench);
   if (!constants) return fail(constants.status(), 2);
   auto limit = readDelayLimit(args);

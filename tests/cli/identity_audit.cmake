@@ -48,6 +48,12 @@ endif()
 
 run_ok(o analyze ${s} --board-delay-ms 0.31 --operator "Wang Fang")
 run_ok(o analyze ${s} --board-delay-ms 0.22)
+# An operator name beyond a session text's bound is refused, storing nothing.
+string(REPEAT "a" 5000 long)
+execute_process(COMMAND ${CLI} analyze ${s} --operator ${long} RESULT_VARIABLE c ERROR_VARIABLE e OUTPUT_QUIET)
+if(NOT c EQUAL 2 OR NOT e MATCHES "--operator is 5000 bytes; at most 4096")
+  message(FATAL_ERROR "analyze --operator of 5000 bytes: expected exit 2 with the bound, got ${c}: ${e}")
+endif()
 run_ok(o export ${s} --results-json ${dir}/results.json)
 file(READ ${dir}/results.json results)
 string(JSON n LENGTH "${results}" stored_results)
