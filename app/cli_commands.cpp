@@ -169,6 +169,7 @@ int runCommand(CliArguments& args) {
     options.sessionPath = (*sessionOut)->path;
     options.info = simulatedSessionInfo((*sessionOut)->info, *plan, *config, *constants);
     options.info.source = options.reportContext.source;
+    options.auditCommand = auditCommandLine();
   }
   std::unique_ptr<RawFileTee> tee;
   acquisition::ByteSource* from = simulator->get();

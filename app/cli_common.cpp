@@ -12,6 +12,16 @@
 
 namespace fog::app {
 
+namespace {
+std::string& commandLineStore() {
+  static std::string line;
+  return line;
+}
+}  // namespace
+
+void setAuditCommandLine(const std::string& line) { commandLineStore() = line; }
+const std::string& auditCommandLine() { return commandLineStore(); }
+
 int fail(const Status& s, int code) {
   std::cerr << "fogbench-cli: " << forTerminal(s.message()) << "\n";
   return code;

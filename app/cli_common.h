@@ -21,6 +21,12 @@
 
 namespace fog::app {
 
+// The command line as the audit trail of a stored result states it
+// ("fogbench-cli analyze s.fbs --board-delay-ms 0.2"; session::commandLineOf),
+// set once by main().
+void setAuditCommandLine(const std::string& line);
+const std::string& auditCommandLine();
+
 // Prints "fogbench-cli: <message>" on stderr and returns `code`.
 int fail(const Status& s, int code);
 // On stderr: why a run (simulator or serial) ended early, the bytes received

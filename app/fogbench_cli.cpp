@@ -16,6 +16,8 @@
 #include "app/noise_command.h"
 #include "app/response_command.h"
 #include "app/session_commands.h"
+#include "app/cli_common.h"
+#include "core/session/stored_result.h"
 #ifdef FOG_HAVE_REPORT
 #include "app/report_command.h"
 #endif
@@ -52,8 +54,11 @@ usage:
       --lost-table-per-mille L (table frames lost),
       --effect NAME=V[,V][+NAME=V...] (unmodelled effects from docs/diagnosis.md,
       e.g. scale_factor_error=200)
-      --out SESSION.fbs [--operator NAME --imu-model M --imu-serial S --notes TEXT]:
-            record the run into a new session file (raw stream, samples, result)
+      --out SESSION.fbs [--operator NAME --imu-model M --imu-serial S --lot L --bench-id B --notes TEXT]:
+            record the run into a new session file (raw stream, samples, result); --lot: the
+            IMU's production lot, --bench-id: the bench (station) recording it. The result's
+            audit entry names the operator (else the login name), the command line and the
+            SHA-256 of the raw stream.
   fogbench-cli run --source serial --port DEV [--baud 921600] [--parity none|even|odd]
                   [--data-bits 8] [--stop-bits 1] [--stall-warning-s 2] [--stall-timeout-s 10]
                   [plan] [constants] [--out SESSION.fbs ...] [--json]
@@ -79,12 +84,14 @@ usage:
       sigma, then the pure-delay, first-order and second-order models fitted to
       them (sigma, correlation, chi2, AIC, BIC; chosen by AIC), the -3 dB
       bandwidth and the group delay at --at-hz. run --preset response records one.
-  fogbench-cli analyze FILE [constants] [--limit-ms 0.8] [--json] [--no-store]
+  fogbench-cli analyze FILE [constants] [--limit-ms 0.8] [--json] [--no-store] [--operator NAME]
       The same report from a saved raw sampling-board byte stream, or from a
       session file (its own bench constants unless given; the result is stored
       in the session as a new row unless --no-store). The verdict is pass, fail
       (IMU delay + 2 sigma >= limit) or invalid (a validity check failed:
       reversed axis, clock rate, not a steady sinusoid, negative delay).
+      The stored result's audit entry: who (--operator, else the login name), this
+      command line, the constants, the version and the SHA-256 of the raw stream.
   fogbench-cli batch DIR|FILE... --jsonl OUT.jsonl [--jobs N] [constants] [--limit-ms 0.8] [--db CATALOG]
       Re-analyse many sessions (the *.fbs files under each DIR, recursively; FILEs as
       given) with the constants given (each session's own where not given) and store
@@ -100,13 +107,13 @@ usage:
       changed. Exit 1 when a file was refused (every file still has its line); 3 when
       the catalog could not be updated (the results are stored).
   fogbench-cli sessions DIR [--json]
-      List the sessions in a folder: date, operator, IMU, axes, state, latest lag.
+      List the sessions in a folder: date, operator, IMU, lot, bench, axes, state, latest lag.
   fogbench-cli replay SESSION.fbs [--speed X | --afap] [constants] [--json]
       Feed a session's raw stream through the decoder at X times real time
       (default 1) or as fast as possible, and report.
   fogbench-cli import DIR | META.json TABLE.csv GYRO.csv --out SESSION.fbs [--segment auto|S-E,...]
                      [--rate-convention frame_average|sample_at_stamp] [--frame-period-ms P]
-                     [--operator NAME ...]
+                     [--operator NAME --imu-model M --imu-serial S --lot L --bench-id B --notes TEXT]
       Make a session of data from another bench (the CSV layout of docs/formats.md);
       --segment cuts a continuous recording into its steady-swing windows;
       --rate-convention says how a gyro file of rates was sampled when its metadata
@@ -123,12 +130,15 @@ usage:
       Monte Carlo study of both paper conditions (docs/accuracy.md).
   fogbench-cli report (SESSION.fbs | FILE.bin | --preset NAME [--seed N]) [--pdf OUT.pdf] [--png-dir DIR [--dpi 100]]
                       [--overwrite] [--limit-ms 0.8] [--imu-model M --imu-serial S --operator NAME]
+                      [--lot L --bench-id B]
                       [--language en|zh_CN] [constants]
       The calibration report (docs/report.md): PASS when every validity check passes
       and IMU delay + 2 sigma < limit; a session brings its own identity and constants.
       A session with a stored result is reported as stored (its settings, limit and
       verdict; INCOMPLETE for a run stopped early): --limit-ms and constants apply only
-      to data without one (analyze stores another analysis first).
+      to data without one (analyze stores another analysis first). Prints the unit (IMU,
+      serial, lot, bench, operator) and the session's audit trail, one line per stored
+      result; the PDF has it under "Analyses of this session".
   fogbench-cli diagnose SESSION.fbs|FILE.bin [--json] [--seeds K] [--threads T]
                         [--bias-instability DEG_H [--bias-correlation S]] [constants]
       Sim-to-real gap diagnosis (docs/diagnosis.md): where real and simulated data
@@ -175,6 +185,7 @@ exit codes: 0 ok, 1 the data gave no result, 2 bad command line or input.
 
 int main(int argc, char** argv) {
   fog::keepFreedMemoryForReuse();
+  fog::app::setAuditCommandLine(fog::session::commandLineOf("fogbench-cli", argc, argv));
   std::vector<std::string> args(argv + 1, argv + argc);
   if (args.empty() || args[0] == "help" || args[0] == "--help" || args[0] == "-h") {
     std::cout << kHelp;

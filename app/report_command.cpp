@@ -11,6 +11,7 @@
 
 #include "core/analysis/delay_analysis.h"
 #include "app/cli_common.h"
+#include "core/common/text.h"
 #include "core/common/version.h"
 #include "core/model/simulator.h"
 #include "core/protocol/recording_builder.h"
@@ -90,6 +91,8 @@ int reportCommand(CliArguments& args) {
   const auto imuModel = args.text("imu-model");
   const auto imuSerial = args.text("imu-serial");
   const auto operatorName = args.text("operator");
+  const auto lot = args.text("lot");
+  const auto benchId = args.text("bench-id");
   const auto language = args.text("language");
   const bool overwrite = args.flag("overwrite");
   for (const auto* r : {&seed, &limit, &dpi})
@@ -170,10 +173,15 @@ int reportCommand(CliArguments& args) {
                                  std::move(opened->rawBytes), shown.record ? &*shown.record : nullptr,
                                  shown.context.imuDelayLimitMs, shown.context.incompleteReason,
                                  QString::fromStdString(shown.description));
+    in.analyses = opened->results;
   }
   if (imuModel) in.info.imuModel = *imuModel;
   if (imuSerial) in.info.imuSerial = *imuSerial;
   if (operatorName) in.info.operatorName = *operatorName;
+  // A terminal in another encoding passes bytes that are not UTF-8 (as
+  // readSessionOutput does for a recorded session's texts).
+  if (lot) in.info.lot = toValidUtf8(*lot);
+  if (benchId) in.info.benchId = toValidUtf8(*benchId);
 
   chooseQtPlatform();
   qInstallMessageHandler(quietQtMessages);
@@ -201,6 +209,17 @@ int reportCommand(CliArguments& args) {
     }
   }
   const auto verdict = report::calibrationVerdict(in);
+  // The unit, then the session's audit trail: every stored analysis of it,
+  // who made it with what on which data (a preset or a raw stream has none).
+  auto orDash = [](const std::string& t) { return t.empty() ? std::string("not recorded") : t; };
+  std::cout << "unit: IMU " << forTerminal(orDash(in.info.imuModel)) << ", serial "
+            << forTerminal(orDash(in.info.imuSerial)) << ", lot " << forTerminal(orDash(in.info.lot)) << ", bench "
+            << forTerminal(orDash(in.info.benchId)) << ", operator " << forTerminal(orDash(in.info.operatorName))
+            << "\n";
+  if (!in.analyses.empty()) {
+    std::cout << "analyses of this session:\n";
+    for (const auto& line : session::auditTrailLines(in.analyses)) std::cout << "  " << forTerminal(line) << "\n";
+  }
   if (!in.resultShown.isEmpty()) std::cout << "result shown: " << in.resultShown.toStdString() << "\n";
   std::cout << verdict.headline.toStdString() << "\n";
   for (const auto& p : verdict.points) std::cout << "  test point " << p.index + 1 << ": " << p.line.toStdString() << "\n";

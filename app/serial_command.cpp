@@ -100,6 +100,7 @@ int runSerialCommand(CliArguments& args) {
     options.sessionPath = (*sessionOut)->path;
     options.info = (*sessionOut)->info;
     options.info.source = (*source)->description();
+    options.auditCommand = auditCommandLine();
     options.info.softwareVersion = FOG_VERSION;
     options.info.createdUtc = session::utcNow();
     options.info.plan = plan;

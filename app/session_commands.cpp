@@ -40,11 +40,13 @@ Result<std::optional<SessionOutput>> readSessionOutput(CliArguments& args) {
   auto op = args.text("operator");
   auto model = args.text("imu-model");
   auto serial = args.text("imu-serial");
+  auto lot = args.text("lot");
+  auto benchId = args.text("bench-id");
   auto notes = args.text("notes");
   if (!out) {
-    if (op || model || serial || notes)
-      return invalidArgument("--operator, --imu-model, --imu-serial and --notes describe a session: give --out "
-                             "SESSION.fbs too");
+    if (op || model || serial || lot || benchId || notes)
+      return invalidArgument("--operator, --imu-model, --imu-serial, --lot, --bench-id and --notes describe a "
+                             "session: give --out SESSION.fbs too");
     return std::optional<SessionOutput>();
   }
   std::error_code ec;
@@ -56,6 +58,8 @@ Result<std::optional<SessionOutput>> readSessionOutput(CliArguments& args) {
   s.info.operatorName = toValidUtf8(op.value_or(""));
   s.info.imuModel = toValidUtf8(model.value_or(""));
   s.info.imuSerial = toValidUtf8(serial.value_or(""));
+  s.info.lot = toValidUtf8(lot.value_or(""));
+  s.info.benchId = toValidUtf8(benchId.value_or(""));
   s.info.notes = toValidUtf8(notes.value_or(""));
   return std::optional<SessionOutput>(std::move(s));
 }
@@ -85,6 +89,16 @@ int analyzeCommand(CliArguments& args) {
   // command line can supply one (openSessionOrStream leaves it 0).
   session::AnalysisSettings settings;
   settings.producedBy = "fogbench-cli analyze";
+  // Who analysed it (the audit trail): the operator named here, else the
+  // login name. It describes the analysis, not the session: nothing else.
+  settings.operatorName = toValidUtf8(args.text("operator").value_or(""));
+  settings.command = auditCommandLine();
+  // As a session's operator is bounded (SessionWriter::create): every
+  // reader of the results holds it in memory and prints it.
+  if (settings.operatorName.size() > 4096)
+    return fail(invalidArgument("--operator is " + std::to_string(settings.operatorName.size()) +
+                                " bytes; at most 4096: give the operator's name"),
+                2);
   auto constants = readConstants(args, opened->info.bench);
   if (!constants) return fail(constants.status(), 2);
   auto limit = readDelayLimit(args);
@@ -122,6 +136,8 @@ int sessionsCommand(CliArguments& args) {
     e["operator"] = s.info.operatorName;
     e["imu_model"] = s.info.imuModel;
     e["imu_serial"] = s.info.imuSerial;
+    e["lot"] = s.info.lot;
+    e["bench_id"] = s.info.benchId;
     e["axes"] = session::axesOf(s.info.plan);
     e["complete"] = s.complete;
     if (!s.complete) e["incomplete_reason"] = s.incompleteReason;
@@ -167,7 +183,8 @@ int sessionsCommand(CliArguments& args) {
     return s.empty() ? std::string("-") : s;
   };
   std::vector<std::vector<std::string>> rows = {
-      {"file", "created (UTC)", "operator", "IMU", "axes", "state", "result", "lag (ms)", "IMU delay (ms)"}};
+      {"file", "created (UTC)", "operator", "IMU", "lot", "bench", "axes", "state", "result", "lag (ms)",
+       "IMU delay (ms)"}};
   // "PASS (2 of 2)", "INVALID (1 of 3; 2 damaged)", "damaged (1 of 1)", "-".
   auto resultColumn = [](const json& e) {
     const std::size_t n = e["results"], damaged = e["damaged_results"], shown = e["shown_result"];
@@ -178,15 +195,17 @@ int sessionsCommand(CliArguments& args) {
     return (verdict.empty() ? std::string("stored") : verdict) + " (" + std::to_string(shown) + " of " +
            std::to_string(n) + (damaged > 0 ? "; " + std::to_string(damaged) + " damaged" : std::string()) + ")";
   };
+  auto orDash = [](const json& text) { return text.get<std::string>().empty() ? std::string("-") : text.get<std::string>(); };
   for (const auto& e : list) {
     if (e.contains("error")) {
-      rows.push_back({e["file"], "-", "-", "-", "-", "unreadable: " + e["error"].get<std::string>(), "-", "-", "-"});
+      rows.push_back(
+          {e["file"], "-", "-", "-", "-", "-", "-", "unreadable: " + e["error"].get<std::string>(), "-", "-", "-"});
       continue;
     }
     std::string imu = e["imu_model"].get<std::string>();
     if (!e["imu_serial"].get<std::string>().empty()) imu += (imu.empty() ? "" : " ") + e["imu_serial"].get<std::string>();
     rows.push_back({e["file"], e["created_utc"], e["operator"].get<std::string>().empty() ? "-" : e["operator"],
-                    imu.empty() ? "-" : imu, e["axes"],
+                    imu.empty() ? "-" : imu, orDash(e["lot"]), orDash(e["bench_id"]), e["axes"],
                     std::string(e["complete"].get<bool>() ? "complete" : "incomplete") +
                         (e.contains("raw_stream_damaged") ? ", raw stream damaged" : ""),
                     resultColumn(e), joinMs(e["test_points"], "lag_ms"), joinMs(e["test_points"], "imu_delay_ms")});
@@ -272,7 +291,8 @@ int importCommand(CliArguments& args) {
   const SessionInfo& cli = (*out)->info;
   SessionInfo& info = imported->info;
   for (auto [field, given] : {std::pair{&info.operatorName, &cli.operatorName}, {&info.imuModel, &cli.imuModel},
-                              {&info.imuSerial, &cli.imuSerial}, {&info.notes, &cli.notes}})
+                              {&info.imuSerial, &cli.imuSerial}, {&info.lot, &cli.lot},
+                              {&info.benchId, &cli.benchId}, {&info.notes, &cli.notes}})
     if (!given->empty()) *field = *given;
   if (auto s = io::saveImportedSession(*imported, from, (*out)->path); !s.isOk()) return fail(s, 2);
 
@@ -399,6 +419,8 @@ int exportCommand(CliArguments& args) {
                   {"operator", info.operatorName},
                   {"imu_model", info.imuModel},
                   {"imu_serial", info.imuSerial},
+                  {"lot", info.lot},
+                  {"bench_id", info.benchId},
                   {"source", info.source},
                   {"software_version", info.softwareVersion},
                   {"created_utc", info.createdUtc},

@@ -182,6 +182,7 @@ int runTableCommand(CliArguments& args, const std::string& tableSpec) {
     options.sessionPath = (*sessionOut)->path;
     options.info = (*sessionOut)->info;
     options.info.source = options.reportContext.source;
+    options.auditCommand = auditCommandLine();
     options.info.softwareVersion = FOG_VERSION;
     options.info.createdUtc = session::utcNow();
     options.info.plan = *plan;

@@ -190,6 +190,10 @@ QGroupBox* ConfigureView::buildSessionGroup() {
   imuModelEdit_->setObjectName("imuModelEdit");
   imuSerialEdit_ = new QLineEdit();
   imuSerialEdit_->setObjectName("imuSerialEdit");
+  lotEdit_ = new QLineEdit();
+  lotEdit_->setObjectName("lotEdit");
+  benchIdEdit_ = new QLineEdit();
+  benchIdEdit_->setObjectName("benchIdEdit");
   notesEdit_ = new QLineEdit();
   sessionForm->addRow(recordCheck_);
   sessionForm->addRow(tr("Folder"), folderRow);
@@ -200,9 +204,15 @@ QGroupBox* ConfigureView::buildSessionGroup() {
   imuRow->addWidget(new QLabel(tr("IMU serial")));
   imuRow->addWidget(imuSerialEdit_, 1);
   sessionForm->addRow(tr("IMU model"), imuRow);
+  // Lot and bench id share a row too, for the same reason.
+  auto* lotRow = new QHBoxLayout();
+  lotRow->addWidget(lotEdit_, 1);
+  lotRow->addWidget(new QLabel(tr("Bench id")));
+  lotRow->addWidget(benchIdEdit_, 1);
+  sessionForm->addRow(tr("Lot"), lotRow);
   sessionForm->addRow(tr("Notes"), notesEdit_);
 
-  for (QLineEdit* e : {operatorEdit_, imuModelEdit_, imuSerialEdit_})
+  for (QLineEdit* e : {operatorEdit_, imuModelEdit_, imuSerialEdit_, lotEdit_, benchIdEdit_})
     connect(e, &QLineEdit::textChanged, this, &ConfigureView::identityChanged);
   connect(chooseFolder, &QPushButton::clicked, this, [this] {
     const QString dir = QFileDialog::getExistingDirectory(this, tr("Session folder"), sessionFolder());
@@ -296,7 +306,14 @@ void ConfigureView::setSessionFolder(const QString& folder) {
 QString ConfigureView::operatorName() const { return operatorEdit_->text(); }
 QString ConfigureView::imuModel() const { return imuModelEdit_->text(); }
 QString ConfigureView::imuSerial() const { return imuSerialEdit_->text(); }
+QString ConfigureView::lot() const { return lotEdit_->text(); }
+QString ConfigureView::benchId() const { return benchIdEdit_->text(); }
 QString ConfigureView::notes() const { return notesEdit_->text(); }
+
+void ConfigureView::setLotAndBench(const QString& lot, const QString& benchId) {
+  lotEdit_->setText(lot);
+  benchIdEdit_->setText(benchId);
+}
 
 void ConfigureView::setIdentity(const QString& operatorName, const QString& imuModel, const QString& imuSerial) {
   operatorEdit_->setText(operatorName);

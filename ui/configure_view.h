@@ -66,12 +66,16 @@ class ConfigureView : public QWidget {
   // Shows `folder` and turns recording on (off for an empty folder).
   void setSessionFolder(const QString& folder);
 
-  // Operator, IMU model and serial, notes.
+  // Operator, IMU model and serial, notes; the production lot and the bench
+  // (station) id stored with the session (docs/sessions.md, schema 6).
   QString operatorName() const;
   QString imuModel() const;
   QString imuSerial() const;
+  QString lot() const;
+  QString benchId() const;
   QString notes() const;
   void setIdentity(const QString& operatorName, const QString& imuModel, const QString& imuSerial);
+  void setLotAndBench(const QString& lot, const QString& benchId);
 
   // The constants and the gyro signs the next analysis uses (Tools → Bench
   // constants chooses both).
@@ -116,6 +120,8 @@ class ConfigureView : public QWidget {
   QLineEdit* operatorEdit_ = nullptr;
   QLineEdit* imuModelEdit_ = nullptr;
   QLineEdit* imuSerialEdit_ = nullptr;
+  QLineEdit* lotEdit_ = nullptr;
+  QLineEdit* benchIdEdit_ = nullptr;
   QLineEdit* notesEdit_ = nullptr;
   QLabel* message_ = nullptr;
   QLabel* constantsLabel_ = nullptr;

@@ -522,6 +522,9 @@ void MainWindow::rememberState() {
   s.setValue("operator", configureView_->operatorName());
   s.setValue("imuModel", configureView_->imuModel());
   s.setValue("imuSerial", configureView_->imuSerial());
+  s.setValue("lot", configureView_->lot());
+  // The station is set up once, like the serial port below.
+  s.setValue("benchId", configureView_->benchId());
   // Where the data come from and who drives the table: a lab bench is set up
   // once, not at every start.
   s.setValue("source", static_cast<int>(configureView_->sourceKind()));
@@ -539,6 +542,7 @@ void MainWindow::restoreState() {
   if (s.contains("pace") && s.value("pace").toDouble() >= 0.0) configureView_->setPace(s.value("pace").toDouble());
   configureView_->setIdentity(s.value("operator").toString(), s.value("imuModel").toString(),
                               s.value("imuSerial").toString());
+  configureView_->setLotAndBench(s.value("lot").toString(), s.value("benchId").toString());
   if (const int source = s.value("source", -1).toInt(); source >= 0 && source <= 2)
     configureView_->setSourceKind(static_cast<ConfigureView::SourceKind>(source));
   if (s.contains("serialPort")) configureView_->setSerialPort(s.value("serialPort").toString());
@@ -732,6 +736,8 @@ SessionInfo MainWindow::sessionInfo() const {
   info.operatorName = configureView_->operatorName().toStdString();
   info.imuModel = configureView_->imuModel().toStdString();
   info.imuSerial = configureView_->imuSerial().toStdString();
+  info.lot = configureView_->lot().toStdString();
+  info.benchId = configureView_->benchId().toStdString();
   info.notes = configureView_->notes().toStdString();
   info.softwareVersion = FOG_VERSION;
   info.createdUtc = session::utcNow();
@@ -768,6 +774,7 @@ Result<RunRequest> MainWindow::buildRunRequest() const {
   const SourceKind kind = sourceKind();
   RunRequest request;
   request.options.info = sessionInfo();
+  request.options.auditCommand = "fogbench GUI Configure: Run";
   // The gyro signs are chosen with the analysis settings and stored with the
   // session's bench constants, so that the session reads with them later.
   request.options.info.bench.gyroSign = analysis_.gyroSign;
@@ -1035,6 +1042,9 @@ void MainWindow::loadSession(const QString& path, bool reanalyse, std::int64_t r
   if (announce) tell(reanalyse ? tr("Re-analysing %1 …").arg(name) : tr("Opening %1 …").arg(name));
   const BenchConstants bench = bench_;
   const AnalysisChoices choices = analysis_;
+  // Who re-analyses (the audit trail): the operator in the Configure view,
+  // else the login name.
+  const std::string analyst = configureView_->operatorName().trimmed().toStdString();
   // QFuture needs a default-constructible value: the outcome, or why not.
   struct Loaded {
     std::shared_ptr<RunOutcome> outcome;
@@ -1042,7 +1052,7 @@ void MainWindow::loadSession(const QString& path, bool reanalyse, std::int64_t r
   };
   // Reading and fitting a long session takes a while: off the GUI thread.
   inBackground(
-      this, [path, reanalyse, resultId, bench, choices]() -> Loaded {
+      this, [path, reanalyse, resultId, bench, choices, analyst]() -> Loaded {
         // The session's own pulse equivalent first; a session that states
         // none (nor its stream) takes the bench constants' (as the CLI's
         // --pulse-equivalent-deg), else the refusal says what to set.
@@ -1075,6 +1085,9 @@ void MainWindow::loadSession(const QString& path, bool reanalyse, std::int64_t r
             if (choices.gyroSign[a] < 0) settings.constants.gyroSign[a] = -1;
           settings.imuDelayLimitMs = choices.imuDelayLimitMs;
           settings.producedBy = "fogbench GUI";
+          settings.tool = "fogbench GUI Results";
+          settings.command = "Results view: re-analyse with the bench constants";
+          settings.operatorName = analyst;
           auto result = session::analyseAndStore(*opened, settings);
           if (!result.storeStatus.isOk()) return {nullptr, result.storeStatus};
           // A session being recorded is not written to: a re-analysis that

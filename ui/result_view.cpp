@@ -914,14 +914,20 @@ Result<report::ReportInput> ResultView::reportInput() const {
   if (!outcome_ || !outcome_->report) return insufficientData("there is no delay result to report");
   // The report carries the hash of the raw stream the result came from.
   std::vector<std::uint8_t> rawBytes;
+  std::vector<session::StoredResultRecord> analyses;
   if (!outcome_->sessionPath.empty()) {
     FOG_ASSIGN_OR_RETURN(auto opened,
                          session::openSessionOrStream(outcome_->sessionPath, session::OpenOptions::sessionStream()));
     rawBytes = std::move(opened.rawBytes);
+    // The file's trail as it is now: every analysis stored so far.
+    analyses = opened.results;
   }
-  return report::makeReportInput(outcome_->info, outcome_->recording, *outcome_->report, std::move(rawBytes),
-                                 outcome_->shownResult(), outcome_->imuDelayLimitMs,
-                                 outcome_->complete ? std::string() : outcome_->incompleteReason, resultDescription());
+  auto in = report::makeReportInput(outcome_->info, outcome_->recording, *outcome_->report, std::move(rawBytes),
+                                    outcome_->shownResult(), outcome_->imuDelayLimitMs,
+                                    outcome_->complete ? std::string() : outcome_->incompleteReason,
+                                    resultDescription());
+  in.analyses = std::move(analyses);
+  return in;
 }
 
 Status ResultView::writeReportPdf(const QString& path) const {

@@ -75,9 +75,16 @@ static Status finishSession(std::unique_ptr<session::SessionWriter> writer, cons
   result.sessionBytes = writer->committedBytes();
   writer.reset();  // closed before the result is added
   if (!result.report) return Status::ok();
+  // The hash of the raw stream just finished: what every later analysis of
+  // the session states too (a stream that cannot be read back states none).
+  std::string inputSha256;
+  if (auto reader = session::SessionReader::open(options.sessionPath))
+    if (auto sha = (*reader)->rawSha256()) inputSha256 = std::move(*sha);
+  const auto audit = session::makeAudit(options.info.operatorName, "acquisition", options.auditCommand, inputSha256);
   return session::addResult(
       options.sessionPath,
-      session::analysisSettingsJson(options.constants, options.reportContext.imuDelayLimitMs, "acquisition"),
+      session::analysisSettingsJson(options.constants, options.reportContext.imuDelayLimitMs, "acquisition", {},
+                                    &audit),
       analysis::formatReportJson(*result.report, reportContextOf(result, options)));
 }
 

@@ -56,6 +56,10 @@ struct AcquisitionOptions {
   // does not state its own (protocol::RecordingBuilder::finish).
   BenchConstants constants;
   analysis::ReportContext reportContext;  // source line and truth for the stored report
+  // The stored result's audit command (AnalysisAudit::command): the CLI's
+  // argument line or the GUI view's name. Its who is the info's operator
+  // (else the login name), its tool "acquisition".
+  std::string auditCommand;
   std::chrono::milliseconds readTimeout{20};
   std::chrono::milliseconds batchInterval{33};  // ~30 batches per second
   std::chrono::milliseconds stallWarning{1000}; // "no data for 1.0 s" from here on

@@ -189,10 +189,12 @@ Result<std::string> sha256OfFile(const std::string& path) {
   return h.hex();
 }
 
-std::string sha256Hex(const std::string& bytes) {
+std::string sha256Hex(const void* p, std::size_t n) {
   Sha256 h;
-  h.update(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size());
+  h.update(static_cast<const unsigned char*>(p), n);
   return h.hex();
 }
+
+std::string sha256Hex(const std::string& bytes) { return sha256Hex(bytes.data(), bytes.size()); }
 
 }  // namespace fog

@@ -29,8 +29,9 @@ class Sha256 {
 
 // Lower-case hex SHA-256 of a file's bytes (what `sha256sum FILE` prints).
 Result<std::string> sha256OfFile(const std::string& path);
-// Of a string's bytes.
+// Of a string's bytes; of `n` bytes at `p`.
 std::string sha256Hex(const std::string& bytes);
+std::string sha256Hex(const void* p, std::size_t n);
 
 // Whether the CPU's SHA extensions do the work (else portable C++; both give
 // the same digest, tests/core/common compares them).

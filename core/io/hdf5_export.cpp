@@ -512,6 +512,12 @@ Result<std::vector<unsigned char>> buildImage(const std::string& tmp, const Hdf5
   FOG_RETURN_IF_ERROR(w.stringAttr(root, "session_file", in.sessionPath));
   FOG_RETURN_IF_ERROR(w.stringAttr(root, "fogbench_version", FOG_VERSION));
   FOG_RETURN_IF_ERROR(w.stringAttr(root, "source", in.source));
+  // The unit's identity at the top, where a lab's indexer looks first (also
+  // in /metadata's json); "" when the session states none.
+  FOG_RETURN_IF_ERROR(w.stringAttr(root, "imu_model", in.info->imuModel));
+  FOG_RETURN_IF_ERROR(w.stringAttr(root, "imu_serial", in.info->imuSerial));
+  FOG_RETURN_IF_ERROR(w.stringAttr(root, "lot", in.info->lot));
+  FOG_RETURN_IF_ERROR(w.stringAttr(root, "bench_id", in.info->benchId));
   {
     std::vector<std::unique_ptr<Id>> keep;
     FOG_ASSIGN_OR_RETURN(hid_t m, w.group(root, "metadata", keep));

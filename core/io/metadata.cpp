@@ -120,6 +120,8 @@ std::string metadataToJson(const Metadata& meta) {
   j["operator"] = s.operatorName;
   j["imu_model"] = s.imuModel;
   j["imu_serial"] = s.imuSerial;
+  j["lot"] = s.lot;
+  j["bench_id"] = s.benchId;
   j["source"] = s.source;
   j["software_version"] = s.softwareVersion;
   j["created_utc"] = s.createdUtc;
@@ -397,8 +399,8 @@ Result<Metadata> metadataFromJson(const std::string& path, const std::string& te
   Metadata meta;
   SessionInfo& s = meta.info;
   const Reader top(path, j, "");
-  FOG_RETURN_IF_ERROR(top.checkKeys({"format", "format_version", "operator", "imu_model", "imu_serial", "source",
-                                     "software_version", "created_utc", "notes", "bench", "rest_between_s",
+  FOG_RETURN_IF_ERROR(top.checkKeys({"format", "format_version", "operator", "imu_model", "imu_serial", "lot",
+                                     "bench_id", "source", "software_version", "created_utc", "notes", "bench", "rest_between_s",
                                      "test_points", "stream"}));
   std::string format;
   FOG_RETURN_IF_ERROR(top.string("format", format));
@@ -413,6 +415,10 @@ Result<Metadata> metadataFromJson(const std::string& path, const std::string& te
   FOG_RETURN_IF_ERROR(top.string("operator", s.operatorName));
   FOG_RETURN_IF_ERROR(top.string("imu_model", s.imuModel));
   FOG_RETURN_IF_ERROR(top.string("imu_serial", s.imuSerial));
+  // Optional (format version 1 files before them read ""): what the catalog
+  // groups results by.
+  FOG_RETURN_IF_ERROR(top.string("lot", s.lot));
+  FOG_RETURN_IF_ERROR(top.string("bench_id", s.benchId));
   FOG_RETURN_IF_ERROR(top.string("source", s.source));
   FOG_RETURN_IF_ERROR(top.string("software_version", s.softwareVersion));
   FOG_RETURN_IF_ERROR(top.string("created_utc", s.createdUtc));

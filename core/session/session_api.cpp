@@ -148,9 +148,17 @@ NewResult analyseAndStore(const OpenedSession& session, const AnalysisSettings& 
                     "' is being recorded right now; analyse it again when the recording has finished";
     return out;
   }
-  out.storeStatus =
-      addResult(session.path, analysisSettingsJson(settings.constants, settings.imuDelayLimitMs, settings.producedBy, session.info.imported),
-                analysis::formatReportJson(*out.report, out.context));
+  // The data analysed, by the hash of the raw stream (the source of truth,
+  // never changed once committed): the same for every analysis of the
+  // session. A damaged stream has none to state ("" reads "not known").
+  std::string inputSha256;
+  if (auto reader = SessionReader::open(session.path))
+    if (auto sha = (*reader)->rawSha256()) inputSha256 = std::move(*sha);
+  const AnalysisAudit audit = makeAudit(settings.operatorName, settings.tool.empty() ? settings.producedBy : settings.tool, settings.command, inputSha256);
+  out.storeStatus = addResult(session.path,
+                              analysisSettingsJson(settings.constants, settings.imuDelayLimitMs, settings.producedBy,
+                                                   session.info.imported, &audit),
+                              analysis::formatReportJson(*out.report, out.context));
   if (!out.storeStatus.isOk()) return out;
   out.stored = true;
   // The records again, the new one among them (its id is the file's).

@@ -109,7 +109,15 @@ Result<OpenedSession> openSessionOrStream(const std::string& path, const OpenOpt
 struct AnalysisSettings {
   BenchConstants constants;
   double imuDelayLimitMs = analysis::kDefaultImuDelayLimitMs;
-  std::string producedBy;  // "fogbench-cli analyze", "fogbench GUI"
+  std::string producedBy;  // "fogbench-cli analyze", "fogbench GUI Results": the audit's tool too
+  // The audit entry's who and command (AnalysisAudit): the operator named to
+  // the analysing command ("" = the login name) and its argument line or the
+  // GUI view's name. analyseAndStore adds the raw stream's SHA-256.
+  std::string operatorName;
+  std::string command;
+  // The audit's tool when it says more than `producedBy` ("fogbench GUI
+  // Results" where analysed_by stays "fogbench GUI"); "" = producedBy.
+  std::string tool;
 };
 
 struct NewResult {

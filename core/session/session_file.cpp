@@ -20,6 +20,7 @@
 #include <utility>
 
 #include "core/common/file_read.h"
+#include "core/common/sha256.h"
 #include "core/common/text.h"
 #include "core/common/version.h"
 #include "core/protocol/recording_builder.h"
@@ -151,6 +152,14 @@ constexpr const char* kSchemaV5Step = R"sql(
 ALTER TABLE session ADD COLUMN imu_frame TEXT NOT NULL DEFAULT '';
 )sql";
 
+// Schema 6: the unit's identity beyond its serial: the production lot it
+// belongs to and the bench (station) that recorded it, what the catalog
+// groups results by ('' = not stated, what files of older schemas read).
+constexpr const char* kSchemaV6Step = R"sql(
+ALTER TABLE session ADD COLUMN lot TEXT NOT NULL DEFAULT '';
+ALTER TABLE session ADD COLUMN bench_id TEXT NOT NULL DEFAULT '';
+)sql";
+
 // Sample blocks: small enough to stay far below SQLite's 1 GB value limit
 // whatever the test point's length, large enough that a block costs little.
 constexpr std::size_t kSamplesPerBlock = 65536;
@@ -266,11 +275,13 @@ constexpr const char* kMetadataColumns =
     " counter_bits, test_plan_json, state, incomplete_reason, finished_utc";
 constexpr const char* kSchemaV4MetadataColumns = ", gyro_sign_x, gyro_sign_y, gyro_sign_z, import_json";
 constexpr const char* kSchemaV5MetadataColumns = ", imu_frame";
+constexpr const char* kSchemaV6MetadataColumns = ", lot, bench_id";
 
 // Over the metadata columns the file's schema has.
 Result<std::int64_t> metadataChecksum(sqlite3* db, int schemaVersion = kSchemaVersion) {
   const std::string columns = std::string(kMetadataColumns) + (schemaVersion >= 4 ? kSchemaV4MetadataColumns : "") +
-                              (schemaVersion >= 5 ? kSchemaV5MetadataColumns : "");
+                              (schemaVersion >= 5 ? kSchemaV5MetadataColumns : "") +
+                              (schemaVersion >= 6 ? kSchemaV6MetadataColumns : "");
   Stmt s(db, ("SELECT " + columns + " FROM session WHERE id = 1").c_str());
   if (!s.ok() || s.step() != SQLITE_ROW) return ioError(sqliteMessage(db));
   std::uint64_t h = 0xcbf29ce484222325ULL;
@@ -486,7 +497,7 @@ Status migrate(sqlite3* db, int from) {
       return ioError("migrating from schema 2 to 3 failed: " + sqliteMessage(db));
   }
   // 3 -> 4: gyro signs, +1 (what the file was analysed with), and no
-  // import settings; 4 -> 5: no stated IMU frame. A checked metadata row
+  // import settings; 4 -> 5: no stated IMU frame; 5 -> 6: no lot, no bench. A checked metadata row
   // stays checked over the new columns only if it still matches its
   // checksum: a damaged row is never blessed.
   auto addMetadataColumns = [&](int to, const char* step) -> Status {
@@ -505,6 +516,7 @@ Status migrate(sqlite3* db, int from) {
   };
   if (from < 4) FOG_RETURN_IF_ERROR(addMetadataColumns(4, kSchemaV4Step));
   if (from < 5) FOG_RETURN_IF_ERROR(addMetadataColumns(5, kSchemaV5Step));
+  if (from < 6) FOG_RETURN_IF_ERROR(addMetadataColumns(6, kSchemaV6Step));
   return Status::ok();
 }
 
@@ -592,6 +604,7 @@ Result<std::unique_ptr<SessionWriter>> SessionWriter::create(const std::string& 
                            std::to_string(kMaxNotesBytes) + " (attach long documents beside the session)");
   for (const auto& [name, text] : {std::pair<const char*, const std::string*>{"operator", &info.operatorName},
                                    {"IMU model", &info.imuModel}, {"IMU serial", &info.imuSerial},
+                                   {"lot", &info.lot}, {"bench id", &info.benchId},
                                    {"source", &info.source}, {"software version", &info.softwareVersion},
                                    {"creation time", &info.createdUtc}})
     if (text->size() > kMaxFieldBytes)
@@ -646,16 +659,17 @@ Result<std::unique_ptr<SessionWriter>> SessionWriter::create(const std::string& 
   const std::string ids = "PRAGMA application_id = " + std::to_string(kApplicationId) +
                           "; PRAGMA user_version = " + std::to_string(kSchemaVersion) + ";";
   if (!exec(w->db_, "BEGIN") || !exec(w->db_, ids.c_str()) || !exec(w->db_, kSchemaV1) ||
-      !exec(w->db_, kSchemaV2Step) || !exec(w->db_, kSchemaV3Step) || !exec(w->db_, kSchemaV4Step) || !exec(w->db_, kSchemaV5Step))
+      !exec(w->db_, kSchemaV2Step) || !exec(w->db_, kSchemaV3Step) || !exec(w->db_, kSchemaV4Step) || !exec(w->db_, kSchemaV5Step) ||
+      !exec(w->db_, kSchemaV6Step))
     return abandon("schema");
   {
     Stmt s(w->db_,
            "INSERT INTO session (id, operator, imu_model, imu_serial, source, software_version, created_utc, notes,"
            " table_read_delay_ms, table_read_delay_std_ms, board_delay_ms, board_delay_std_ms, latitude_deg,"
            " pulse_equivalent_deg, counter_hz, counter_bits, test_plan_json, state, gyro_sign_x, gyro_sign_y,"
-           " gyro_sign_z, import_json, imu_frame)"
+           " gyro_sign_z, import_json, imu_frame, lot, bench_id)"
            " VALUES (1, ?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, 'recording', ?17, ?18,"
-           " ?19, ?20, ?21)");
+           " ?19, ?20, ?21, ?22, ?23)");
     if (!s.ok()) return abandon("metadata");
     s.bind(1, info.operatorName);
     s.bind(2, info.imuModel);
@@ -677,6 +691,8 @@ Result<std::unique_ptr<SessionWriter>> SessionWriter::create(const std::string& 
       s.bind(17 + a, std::int64_t{info.bench.gyroSign[static_cast<std::size_t>(a)] < 0 ? -1 : 1});
     s.bind(20, importSettingsToJson(info.imported));
     s.bind(21, frameText);
+    s.bind(22, info.lot);
+    s.bind(23, info.benchId);
     if (s.step() != SQLITE_DONE) return abandon("metadata");
   }
   if (!updateMetadataChecksum(w->db_)) return abandon("metadata checksum");
@@ -942,6 +958,7 @@ Result<std::unique_ptr<SessionReader>> SessionReader::open(const std::string& pa
       cut("incomplete_reason", field) + ", length(CAST(notes AS BLOB))" +
       (r->schemaVersion_ >= 4 ? ", gyro_sign_x, gyro_sign_y, gyro_sign_z, " + cut("import_json", notes) : "") +
       (r->schemaVersion_ >= 5 ? ", " + cut("imu_frame", field) : "") +
+      (r->schemaVersion_ >= 6 ? ", " + cut("lot", field) + ", " + cut("bench_id", field) : "") +
       " FROM session WHERE id = 1";
   Stmt s(r->db_, sql.c_str());
   if (!s.ok()) return r->readError("reading its metadata");
@@ -991,6 +1008,10 @@ Result<std::unique_ptr<SessionReader>> SessionReader::open(const std::string& pa
       return corruptData("session '" + path + "': its stored IMU frame is unreadable (" + frame.status().message() +
                          ")");
     info.bench.imuFrame = *frame;
+  }
+  if (r->schemaVersion_ >= 6) {  // older schemas state neither: ''
+    info.lot = toValidUtf8(s.text(24));
+    info.benchId = toValidUtf8(s.text(25));
   }
   r->state_ = s.text(16);
   r->reason_ = toValidUtf8(s.text(17));
@@ -1042,7 +1063,15 @@ Result<std::vector<std::uint8_t>> SessionReader::rawBytes() const {
   return out;
 }
 
-Status SessionReader::checkRawStream() const {
+Status SessionReader::checkRawStream() const { return walkRawStream({}); }
+
+Result<std::string> SessionReader::rawSha256() const {
+  Sha256 h;
+  FOG_RETURN_IF_ERROR(walkRawStream([&h](const std::uint8_t* p, std::size_t n) { h.update(p, n); }));
+  return h.hex();
+}
+
+Status SessionReader::walkRawStream(const std::function<void(const std::uint8_t*, std::size_t)>& each) const {
   Stmt s(db_, "SELECT seq, byte_offset, data, data_fnv1a FROM raw_chunk ORDER BY seq");
   if (!s.ok()) return readError("reading the raw stream");
   int rc;
@@ -1056,6 +1085,7 @@ Status SessionReader::checkRawStream() const {
       return corruptData("session '" + path_ + "': raw stream chunk " + std::to_string(expectSeq) + " (bytes " +
                          std::to_string(at) + ".." + std::to_string(at + static_cast<std::int64_t>(data.size())) +
                          ") fails its checksum; the file is damaged, restore it from a backup");
+    if (each) each(data.data(), data.size());
     at += static_cast<std::int64_t>(data.size());
     ++expectSeq;
   }

@@ -30,6 +30,7 @@
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -42,7 +43,7 @@ struct sqlite3;
 
 namespace fog::session {
 
-inline constexpr int kSchemaVersion = 5;
+inline constexpr int kSchemaVersion = 6;
 // 'F' 'O' 'G' 'B' at offset 68 of the SQLite header.
 inline constexpr std::int32_t kApplicationId = 0x464F4742;
 inline constexpr const char* kFileExtension = ".fbs";
@@ -158,6 +159,12 @@ class SessionReader {
   // keeping none of them (memory: one chunk). kCorruptData names the first
   // damaged chunk.
   Status checkRawStream() const;
+  // The SHA-256 (lower-case hex) of the whole raw stream, checked as
+  // checkRawStream() does (memory: one chunk): what a stored result's audit
+  // states as the data it analysed (docs/sessions.md). The raw stream never
+  // changes once committed, so every analysis of a finished session states
+  // the same hash.
+  Result<std::string> rawSha256() const;
   std::uint64_t rawByteCount() const;
   // Whether decoded samples were stored (false after a crash).
   bool hasStoredRecording() const;
@@ -175,6 +182,9 @@ class SessionReader {
  private:
   SessionReader() = default;
   Status readError(const std::string& what) const;
+  // Every raw chunk in order, checked (order, offsets, checksums); `each`
+  // (when set) is given each chunk's bytes.
+  Status walkRawStream(const std::function<void(const std::uint8_t*, std::size_t)>& each) const;
 
   sqlite3* db_ = nullptr;
   std::string path_;

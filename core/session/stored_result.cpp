@@ -1,9 +1,15 @@
 #include "core/session/stored_result.h"
 
 #include <algorithm>
+#include <array>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
+#include <pwd.h>
+#include <unistd.h>
+
+#include <cstdlib>
 
 #include "core/common/version.h"
 
@@ -99,6 +105,11 @@ StoredResultRecord readStoredResult(const session::StoredResult& stored, const B
           r.gyroSignStated = true;
         }
     }
+  if (settings.contains("audit") && settings["audit"].is_object()) {
+    const json& a = settings["audit"];
+    r.audit = AnalysisAudit{textOr(a, "who"), textOr(a, "who_source"), textOr(a, "tool"), textOr(a, "command"),
+                            textOr(a, "input_sha256")};
+  }
   if (settings.contains("import")) {
     auto imported = importSettingsFromJson(settings["import"].dump());
     if (imported) r.imported = std::move(*imported);
@@ -178,7 +189,8 @@ std::vector<std::string> differencesFromRecord(const StoredResultRecord& record,
 }
 
 std::string analysisSettingsJson(const BenchConstants& c, double imuDelayLimitMs,
-                                 const std::string& producedBy, const ImportSettings& imported) {
+                                 const std::string& producedBy, const ImportSettings& imported,
+                                 const AnalysisAudit* audit) {
   json doc = {{"table_read_delay_ms", c.tableReadDelayMs},
               {"table_read_delay_std_ms", c.tableReadDelayStdMs},
               {"board_delay_ms", c.boardDelayMs},
@@ -190,7 +202,101 @@ std::string analysisSettingsJson(const BenchConstants& c, double imuDelayLimitMs
               {"software_version", FOG_VERSION},
               {"analysed_by", producedBy}};
   if (!imported.empty()) doc["import"] = json::parse(importSettingsToJson(imported));
-  return doc.dump();
+  if (audit)
+    doc["audit"] = {{"who", audit->who},
+                    {"who_source", audit->whoSource},
+                    {"tool", audit->tool},
+                    {"command", audit->command},
+                    {"input_sha256", audit->inputSha256}};
+  // Replaced, not thrown: an argument line or a name that is not UTF-8
+  // must not cost the result.
+  return doc.dump(-1, ' ', false, json::error_handler_t::replace);
+}
+
+std::string loginName() {
+  // getpwuid: the account's name even under sudo -u or without $USER set
+  // (a service, a cron job); $USER only when the passwd entry is missing.
+  if (const passwd* pw = ::getpwuid(::geteuid()); pw && pw->pw_name && *pw->pw_name) return pw->pw_name;
+  if (const char* user = std::getenv("USER"); user && *user) return user;
+  return "uid " + std::to_string(::geteuid());
+}
+
+AnalysisAudit makeAudit(const std::string& operatorName, std::string tool, std::string command,
+                        std::string inputSha256) {
+  AnalysisAudit a;
+  const bool named = !operatorName.empty();
+  a.who = named ? operatorName : loginName();
+  a.whoSource = named ? "operator" : "login";
+  a.tool = std::move(tool);
+  a.command = std::move(command);
+  a.inputSha256 = std::move(inputSha256);
+  return a;
+}
+
+std::string commandLineOf(const std::string& program, int argc, const char* const* argv) {
+  std::string out = program;
+  for (int i = 1; i < argc; ++i) {
+    std::string arg = argv[i] ? argv[i] : "";
+    if (arg.empty() || arg.find_first_of(" \t'\"") != std::string::npos) {
+      std::string q = "'";
+      for (char ch : arg) q += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
+      arg = q + "'";
+    }
+    if (!out.empty()) out += ' ';
+    out += arg;
+  }
+  return out;
+}
+
+std::vector<std::string> auditTrailLines(const std::vector<StoredResultRecord>& records) {
+  std::vector<std::string> out;
+  char buf[512];
+  for (std::size_t i = 0; i < records.size(); ++i) {
+    const auto& r = records[i];
+    std::string line = "#";
+    line += std::to_string(i + 1);
+    line += ' ';
+    line += r.createdUtc.empty() ? std::string("(no time)") : r.createdUtc;
+    if (!r.usable) {
+      out.push_back(line + " | cannot be read: " + r.problem);
+      continue;
+    }
+    if (r.audit) {
+      const auto& a = *r.audit;
+      line += " by " + (a.who.empty() ? std::string("(no one named)") : a.who);
+      if (!a.whoSource.empty()) line += " (" + a.whoSource + ")";
+      line += " " + (a.tool.empty() ? r.analysedBy : a.tool);
+      if (!a.command.empty()) line += " [" + a.command + "]";
+    } else {
+      line += " " + (r.analysedBy.empty() ? std::string("(tool not stated)") : r.analysedBy) +
+              " (audit not recorded)";
+    }
+    const auto& c = r.constants;
+    std::snprintf(buf, sizeof buf, " | constants: table read %.3f ± %.3f ms, board %.3f ± %.3f ms",
+                  c.tableReadDelayMs, c.tableReadDelayStdMs, c.boardDelayMs, c.boardDelayStdMs);
+    line += buf;
+    // 0: none given, the stream's own statement converted the pulses.
+    if (c.pulseEquivalentDeg > 0.0) std::snprintf(buf, sizeof buf, ", pulse %.6g deg", c.pulseEquivalentDeg);
+    else std::snprintf(buf, sizeof buf, ", pulse as the stream states");
+    line += buf;
+    std::snprintf(buf, sizeof buf, ", limit %.3f ms%s", r.imuDelayLimitMs, r.limitStated ? "" : " (not stated: default)");
+    line += buf;
+    if (c.gyroSign != std::array<int, kAxisCount>{1, 1, 1})
+      line += ", gyro signs x" + std::string(c.gyroSign[0] < 0 ? "-" : "+") + " y" +
+              (c.gyroSign[1] < 0 ? "-" : "+") + " z" + (c.gyroSign[2] < 0 ? "-" : "+");
+    line += " | fogbench " + (r.softwareVersion.empty() ? std::string("(version not stated)") : r.softwareVersion);
+    if (!r.audit) line += " | input not recorded";
+    else if (r.audit->inputSha256.empty()) line += " | input hash not known";
+    else line += " | input " + r.audit->inputSha256.substr(0, 12);
+    // The verdict as stored, never re-judged (shown_verdict.h): the record's
+    // word; a row that states none says so.
+    std::string verdict = r.verdict;
+    for (auto& ch : verdict) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+    line += " | " + (verdict.empty() ? std::string("NO VERDICT") : verdict);
+    if (r.verdict == "incomplete" && !r.dataVerdict.empty()) line += " (its data give " + r.dataVerdict + ")";
+    out.push_back(std::move(line));
+  }
+  return out;
 }
 
 }  // namespace fog::session

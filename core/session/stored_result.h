@@ -23,6 +23,29 @@
 
 namespace fog::session {
 
+// Who analysed a session, with what, on which data: a stored result's audit
+// trail entry (settings_json `audit`, docs/sessions.md). Stored result rows
+// are append-only and checksummed, so the rows are the trail.
+struct AnalysisAudit {
+  std::string who;          // the operator named to the analysing command, else the login name
+  std::string whoSource;    // "operator" (named) or "login" (the account the program ran as)
+  std::string tool;         // "fogbench-cli analyze", "fogbench GUI Results", "acquisition", ...
+  std::string command;      // the CLI's argument line, or the GUI view's name
+  std::string inputSha256;  // SHA-256 (hex) of the session's raw byte stream analysed; "" not known
+};
+
+// The login name of the account this program runs as (getpwuid(geteuid())),
+// else $USER, else "uid N".
+std::string loginName();
+// An audit entry: `who` is `operatorName` when one was named, else the
+// login name, and `whoSource` says which.
+AnalysisAudit makeAudit(const std::string& operatorName, std::string tool, std::string command,
+                        std::string inputSha256);
+// `program` and argv[1..] joined with spaces, an argument holding a space or
+// a quote quoted ('...'): the command line as the audit states it
+// ("fogbench-cli analyze s.fbs --board-delay-ms 0.2"; argv[0] is a path).
+std::string commandLineOf(const std::string& program, int argc, const char* const* argv);
+
 // One test point's stored verdict.
 struct StoredPointVerdict {
   int index = 0;                     // test point index (0-based)
@@ -55,6 +78,9 @@ struct StoredResultRecord {
   // windows), as the settings state it; empty for a recorded session or a
   // row stored before the settings held it.
   ImportSettings imported;
+  // Who analysed it, with what, on which data; unset for a row stored before
+  // the audit trail was kept ("not recorded").
+  std::optional<AnalysisAudit> audit;
 
   // The verdict (report_json): "pass", "fail", "invalid", "incomplete";
   // "" when the stored report states none (a very old row).
@@ -90,8 +116,19 @@ std::vector<std::string> differencesFromRecord(const StoredResultRecord& record,
 // The settings a stored result was produced with, as JSON (settings_json):
 // the bench constants with the gyro signs, the acceptance limit, the
 // software version, what produced it and, for an imported session, what the
-// import applied (its rate convention and swing windows: `import`).
+// import applied (its rate convention and swing windows: `import`), and the
+// audit entry (`audit`; left out when `audit` is null: an export's settings,
+// which store nothing).
 std::string analysisSettingsJson(const BenchConstants& constants, double imuDelayLimitMs,
-                                 const std::string& producedBy, const ImportSettings& imported = {});
+                                 const std::string& producedBy, const ImportSettings& imported = {},
+                                 const AnalysisAudit* audit = nullptr);
+
+// The session's audit trail: one line per stored result, oldest first:
+// "#2 2026-11-29T05:10:00Z by li (operator) fogbench-cli analyze [analyze
+// s.fbs --board-delay-ms 0.2] | constants: table read 0.100 ± 0.010 ms,
+// board 0.200 ± 0.010 ms, limit 1.000 ms | fogbench 0.9.0 | input
+// 3fa9c1d2e4b5 | PASS". A row that cannot be read says so; a row stored
+// before the trail says "audit not recorded".
+std::vector<std::string> auditTrailLines(const std::vector<StoredResultRecord>& records);
 
 }  // namespace fog::session

@@ -18,7 +18,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 APPLICATION_ID = 0x464F4742  # "FOGB": PRAGMA application_id of a session
-SCHEMA_VERSION = 5  # the newest layout read (PRAGMA user_version)
+SCHEMA_VERSION = 6  # the newest layout read (PRAGMA user_version)
 SAMPLES_PER_BLOCK = 65536  # at most this many records per table_block/imu_block row
 MAX_TEST_POINT_INDEX = 0xFFFF  # the board numbers test points with 16 bits
 READER_BUSY_TIMEOUT_S = 5.0  # as the C++ reader: a recorder may be checkpointing
@@ -40,6 +40,7 @@ _METADATA_COLUMNS = ["operator", "imu_model", "imu_serial", "source", "software_
                      "incomplete_reason", "finished_utc"]
 _METADATA_COLUMNS_V4 = ["gyro_sign_x", "gyro_sign_y", "gyro_sign_z", "import_json"]
 _METADATA_COLUMNS_V5 = ["imu_frame"]
+_METADATA_COLUMNS_V6 = ["lot", "bench_id"]  # the production lot, the bench (station) id
 # sqlite3_column_type() codes, which the metadata checksum covers.
 _SQLITE_TYPE = {"integer": 1, "real": 2, "text": 3, "blob": 4, "null": 5}
 
@@ -275,7 +276,8 @@ class _Reader:
 
     def metadata(self):
         columns = _METADATA_COLUMNS + (_METADATA_COLUMNS_V4 if self.version >= 4 else []) + \
-            (_METADATA_COLUMNS_V5 if self.version >= 5 else [])
+            (_METADATA_COLUMNS_V5 if self.version >= 5 else []) + \
+            (_METADATA_COLUMNS_V6 if self.version >= 6 else [])
         if self.version >= 2:
             stored = self._one("SELECT metadata_fnv1a FROM session WHERE id = 1")
             if stored is None:
@@ -295,6 +297,8 @@ class _Reader:
             meta.update(gyro_sign_x=1, gyro_sign_y=1, gyro_sign_z=1, import_json="")
         if self.version < 5:
             meta["imu_frame"] = ""
+        if self.version < 6:  # older schemas state neither
+            meta.update(lot="", bench_id="")
         meta["schema_version"] = self.version
         meta["being_recorded"] = self.live
         state = meta["state"]

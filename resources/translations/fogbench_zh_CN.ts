@@ -989,7 +989,7 @@
         <translation>选择…</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+16"/>
         <source>Folder</source>
         <translation>文件夹</translation>
     </message>
@@ -1004,7 +1004,17 @@
         <translation>IMU 型号</translation>
     </message>
     <message>
-        <location line="+112"/>
+        <location line="+4"/>
+        <source>Bench id</source>
+        <translation>工位编号</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Lot</source>
+        <translation>批次</translation>
+    </message>
+    <message>
+        <location line="+119"/>
         <source>table read delay %1 ms · board delay %2 ms · latitude %3°
 pulse equivalent %4° · counter %5 MHz / %6 bit
 gyro signs %7 · IMU frame %8</source>
@@ -1023,12 +1033,12 @@ gyro signs %7 · IMU frame %8</source>
         <translation>IMU 坐标系：%1</translation>
     </message>
     <message>
-        <location line="-124"/>
+        <location line="-137"/>
         <source>IMU serial</source>
         <translation>IMU 序列号</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+9"/>
         <source>Notes</source>
         <translation>备注</translation>
     </message>
@@ -1048,7 +1058,7 @@ gyro signs %7 · IMU frame %8</source>
         <translation>编辑测试台常数</translation>
     </message>
     <message>
-        <location line="-118"/>
+        <location line="-128"/>
         <source>Session to replay</source>
         <translation>要回放的会话</translation>
     </message>
@@ -1058,7 +1068,7 @@ gyro signs %7 · IMU frame %8</source>
         <translation>fogbench 会话 (*.fbs)</translation>
     </message>
     <message>
-        <location line="+95"/>
+        <location line="+105"/>
         <source>Session folder</source>
         <translation>会话文件夹</translation>
     </message>
@@ -1714,12 +1724,12 @@ Press Diagnose in the Results view to start it again.</source>
     <name>fog::ui::MainWindow</name>
     <message>
         <location filename="../../ui/main_window.cpp" line="+154"/>
-        <location line="+1038"/>
+        <location line="+1051"/>
         <source>fogbench %1 — FOG IMU delay bench</source>
         <translation>fogbench %1 —— 光纤陀螺 IMU 延迟测试台</translation>
     </message>
     <message>
-        <location line="-1030"/>
+        <location line="-1043"/>
         <source>Configure</source>
         <translation>配置</translation>
     </message>
@@ -1740,12 +1750,12 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+6"/>
-        <location line="+1107"/>
+        <location line="+1120"/>
         <source>Diagnosis</source>
         <translation>诊断</translation>
     </message>
     <message>
-        <location line="-1104"/>
+        <location line="-1117"/>
         <source>Noise</source>
         <translation>噪声</translation>
     </message>
@@ -1833,12 +1843,12 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+764"/>
+        <location line="+777"/>
         <source>Open session</source>
         <translation>打开会话</translation>
     </message>
     <message>
-        <location line="-763"/>
+        <location line="-776"/>
         <source>fogbench sessions (*.fbs);;All files (*)</source>
         <translation>fogbench 会话 (*.fbs);;所有文件 (*)</translation>
     </message>
@@ -2029,7 +2039,7 @@ Plots: wheel zooms, drag pans, double-click shows all, click sets cursors A/B</s
         <translation>测试计划已保存为 %1</translation>
     </message>
     <message>
-        <location line="+123"/>
+        <location line="+127"/>
         <source>Saved %1 — File ▸ Open the export folder shows it</source>
         <translation>已保存 %1 —— “文件 ▸ 打开导出文件夹”可查看</translation>
     </message>
@@ -2074,7 +2084,7 @@ Plots: wheel zooms, drag pans, double-click shows all, click sets cursors A/B</s
         <translation>停止运行并关闭</translation>
     </message>
     <message>
-        <location line="-471"/>
+        <location line="-475"/>
         <source>Table</source>
         <translation>转台</translation>
     </message>
@@ -2141,12 +2151,12 @@ Plots: wheel zooms, drag pans, double-click shows all, click sets cursors A/B</s
         <translation>运行或诊断结束后才能更改语言。</translation>
     </message>
     <message>
-        <location line="+211"/>
+        <location line="+215"/>
         <source>Keep running</source>
         <translation>继续运行</translation>
     </message>
     <message>
-        <location line="+82"/>
+        <location line="+84"/>
         <source>a run is under way</source>
         <translation>正在运行</translation>
     </message>
@@ -2186,7 +2196,7 @@ Plots: wheel zooms, drag pans, double-click shows all, click sets cursors A/B</s
         <translation>&lt;span style=&apos;color:#b00000&apos;&gt;无法运行：%1&lt;/span&gt;</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+30"/>
         <source>the baud rate must be a whole number</source>
         <translation>波特率必须是整数</translation>
     </message>
@@ -2356,7 +2366,7 @@ Plots: wheel zooms, drag pans, double-click shows all, click sets cursors A/B</s
         <translation>正在打开 %1 …</translation>
     </message>
     <message>
-        <location line="+77"/>
+        <location line="+83"/>
         <location line="+10"/>
         <source>Re-analyse</source>
         <translation>重新分析</translation>
@@ -2885,7 +2895,7 @@ File: %1</source>
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location filename="../../ui/main_window.cpp" line="-1253"/>
+        <location filename="../../ui/main_window.cpp" line="-1266"/>
         <location filename="../../ui/plan_editor.cpp" line="-323"/>
         <location filename="../../ui/plots/delta_picker.cpp" line="+1"/>
         <source>%1 s</source>
@@ -2913,12 +2923,12 @@ File: %1</source>
     </message>
     <message>
         <location filename="../../ui/report/calibration_report.cpp" line="+72"/>
-        <location line="+251"/>
+        <location line="+253"/>
         <source>not recorded</source>
         <translation>未记录</translation>
     </message>
     <message>
-        <location line="-244"/>
+        <location line="-246"/>
         <source>%1 axis
 %2 Hz / %3°, %4 s</source>
         <translation>%1 轴
@@ -3030,7 +3040,7 @@ File: %1</source>
         <translation>IMU 序列号</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source>Operator</source>
         <translation>操作员</translation>
     </message>
@@ -3150,24 +3160,24 @@ File: %1</source>
         <translation>签署</translation>
     </message>
     <message>
-        <location line="+85"/>
+        <location line="+128"/>
         <source>Bench constants</source>
         <translation>测试台常数</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+230"/>
+        <location line="+242"/>
         <source>quantity</source>
         <translation>量</translation>
     </message>
     <message>
-        <location line="-229"/>
-        <location line="+314"/>
+        <location line="-241"/>
+        <location line="+326"/>
         <source>value</source>
         <translation>数值</translation>
     </message>
     <message>
-        <location line="-313"/>
+        <location line="-325"/>
         <source>std. uncertainty</source>
         <translation>标准不确定度</translation>
     </message>
@@ -3259,12 +3269,12 @@ File: %1</source>
     </message>
     <message>
         <location line="-17"/>
-        <location line="+324"/>
+        <location line="+336"/>
         <source>frequency (Hz)</source>
         <translation>频率 (Hz)</translation>
     </message>
     <message>
-        <location line="-323"/>
+        <location line="-335"/>
         <source>amplitude (°)</source>
         <translation>幅值 (°)</translation>
     </message>
@@ -3310,12 +3320,12 @@ File: %1</source>
         <translation>未给出</translation>
     </message>
     <message>
-        <location line="-326"/>
+        <location line="-371"/>
         <source>SIMULATED DATA — not a measurement of a real IMU</source>
         <translation>仿真数据 —— 并非对真实 IMU 的测量</translation>
     </message>
     <message>
-        <location line="+130"/>
+        <location line="+132"/>
         <source>Result reported</source>
         <translation>报告的结果</translation>
     </message>
@@ -3330,7 +3340,7 @@ File: %1</source>
         <translation>未计入 %1 个被拒绝的测试点：其有效性检查未通过。</translation>
     </message>
     <message>
-        <location line="+108"/>
+        <location line="+151"/>
         <source>the stream&apos;s statement, else the bench constant: turns pulses into degrees</source>
         <translation>数据流给出的值，否则为测试台常数：把脉冲换算为度</translation>
     </message>
@@ -3395,12 +3405,22 @@ File: %1</source>
         <translation>跳过字节</translation>
     </message>
     <message>
-        <location line="-147"/>
+        <location line="-190"/>
         <source>Delay budget</source>
         <translation>延迟预算</translation>
     </message>
     <message>
+        <location line="-75"/>
+        <source>Lot</source>
+        <translation>批次</translation>
+    </message>
+    <message>
         <location line="+1"/>
+        <source>Bench id</source>
+        <translation>工位编号</translation>
+    </message>
+    <message>
+        <location line="+75"/>
         <source>Not shown: the paper&apos;s theoretical budget describes its own gyro and processing board, and this recording was made on another bench (imported).</source>
         <translation>未显示：论文的理论预算描述的是其自身的陀螺和处理板，而本记录来自另一台架（导入）。</translation>
     </message>
@@ -3411,12 +3431,12 @@ File: %1</source>
     </message>
     <message>
         <location line="+12"/>
-        <location line="+142"/>
+        <location line="+197"/>
         <source>#%1: %2</source>
         <translation>#%1：%2</translation>
     </message>
     <message>
-        <location line="-141"/>
+        <location line="-196"/>
         <source>#%1: refused (%2, %3)</source>
         <translation>#%1：被拒绝（%2，%3）</translation>
     </message>
@@ -3432,12 +3452,12 @@ File: %1</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+280"/>
+        <location line="+335"/>
         <source>basis</source>
         <translation>依据</translation>
     </message>
     <message>
-        <location line="-279"/>
+        <location line="-334"/>
         <source>measured (ms)</source>
         <translation>测量值 (ms)</translation>
     </message>
@@ -3482,7 +3502,82 @@ File: %1</source>
         <translation>按论文参数的理论值：光纤 %1 m（本征周期 %2 µs），回路延迟 ≤ %3 个本征周期，脉冲输出每 %4 ms 更新，处理板时钟 %5 MHz，%6 字节帧、%7 Mbaud。</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+18"/>
+        <source>(no time)</source>
+        <translation>（无时间）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>#%1 %2 · cannot be read: %3</source>
+        <translation>#%1 %2 · 无法读取：%3</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>operator</source>
+        <translation>操作员</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>login name</source>
+        <translation>登录名</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>recording run</source>
+        <translation>记录运行</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>command-line analysis</source>
+        <translation>命令行分析</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>GUI Results view</source>
+        <translation>图形界面“结果”视图</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>by %1 (%2) · %3</source>
+        <translation>分析者 %1（%2）· %3</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>who and with what: not recorded (stored before the audit trail)</source>
+        <translation>分析者与工具：未记录（保存于审计记录之前）</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>table read delay %1 ± %2 ms, board delay %3 ± %4 ms, limit %5 ms</source>
+        <translation>转台读数延迟 %1 ± %2 ms，处理板延迟 %3 ± %4 ms，限值 %5 ms</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>gyro signs %1</source>
+        <translation>陀螺符号 %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>version not recorded</source>
+        <translation>版本未记录</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>raw data not recorded</source>
+        <translation>原始数据未记录</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>raw data hash not known</source>
+        <translation>原始数据哈希未知</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>#%1 %2 %3 · %4 · %5 · %6 · %7</source>
+        <translation>#%1 %2 %3 · %4 · %5 · %6 · %7</translation>
+    </message>
+    <message>
+        <location line="+34"/>
         <source>gyro signs</source>
         <translation>陀螺符号</translation>
     </message>
@@ -3493,6 +3588,16 @@ File: %1</source>
     </message>
     <message>
         <location line="+58"/>
+        <source>Analyses of this session</source>
+        <translation>本会话的分析记录</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Each line: number, when stored (UTC), who (operator named, or login), tool and command, constants, software version, SHA-256 of the raw data analysed (first 12 digits), verdict as stored.</source>
+        <translation>每行：序号、保存时间（UTC）、分析者（所填操作员或登录名）、工具与命令、常数、软件版本、所分析原始数据的 SHA-256（前 12 位）、所保存的判定。</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>test point</source>
         <translation>测试点</translation>
     </message>

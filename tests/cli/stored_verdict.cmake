@@ -39,12 +39,23 @@ if(NOT sign EQUAL -1 OR NOT limit EQUAL 0.8)
   message(FATAL_ERROR "result 2's settings do not hold the gyro sign and the limit:\n${j}")
 endif()
 cli(o c report ${s} --pdf ${dir}/reversed.pdf)
+# The audit trail lists every stored result with its own stored verdict (the
+# run's PASS among them): a record of what was stored, not the verdict shown.
+string(REGEX REPLACE "\n  #[0-9][^\n]*" "" shown "${o}")
 if(NOT c EQUAL 0 OR NOT o MATCHES "result shown: result 2 of 2" OR NOT o MATCHES "\nINVALID: "
-   OR NOT o MATCHES "test point 1: INVALID: " OR o MATCHES "PASS")
+   OR NOT o MATCHES "test point 1: INVALID: " OR shown MATCHES "PASS"
+   OR NOT o MATCHES "\n  #1 [^\n]* acquisition [^\n]*\\| PASS\n  #2 [^\n]*--gyro-sign x=-1[^\n]*\\| INVALID\n")
   message(FATAL_ERROR "report does not print the stored INVALID (${c}):\n${o}")
 endif()
 pdf_text(${dir}/reversed.pdf text)
-if(NOT text MATCHES "INVALID" OR NOT text MATCHES "result 2 of 2" OR text MATCHES "PASS")
+# The PDF's audit trail lists the run's stored PASS too (a record of what was
+# stored): it must be there, and the verdict shown elsewhere never PASS.
+string(REGEX MATCH "Analyses of this session.*verdict as stored\\." trail "${text}")
+string(REGEX REPLACE "Analyses of this session.*verdict as stored\\." "" shown "${text}")
+if(NOT trail MATCHES "#1 .*PASS.*#2 .*INVALID")
+  message(FATAL_ERROR "the PDF's audit trail does not list both stored results:\n${text}")
+endif()
+if(NOT text MATCHES "INVALID" OR NOT text MATCHES "result 2 of 2" OR shown MATCHES "PASS")
   message(FATAL_ERROR "the PDF does not show the stored INVALID:\n${text}")
 endif()
 message(STATUS "report of the reversed session:\n${o}")

@@ -37,6 +37,14 @@ endif()
 string(REPLACE "s.fbs" " " rest "${text}")
 string(REGEX REPLACE "[0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f]+" " " rest "${text}")
 string(REPLACE "s.fbs" " " rest "${rest}")
+# The audit trail's data, shown as stored: the command line that made each
+# result (in [...], wrapped over lines by the layout) and who ran it (the
+# login name: no operator was named).
+string(REGEX REPLACE "\\[[^]]*\\]" " " rest "${rest}")
+execute_process(COMMAND id -un OUTPUT_VARIABLE login OUTPUT_STRIP_TRAILING_WHITESPACE)
+if(login)
+  string(REPLACE "${login}" " " rest "${rest}")
+endif()
 string(REGEX MATCHALL "[A-Za-z][A-Za-z]+" words "${rest}")
 set(allowed IMU fogbench SHA CRLB Cram Rao Allan dof RMS MHz Hz kHz ms sin cos UTC Sagnac Mbaud baud IEEE Std
             arcsec)

@@ -152,7 +152,8 @@ def main():
     work = tempfile.mkdtemp(prefix="fog_hdf5_")
     run = lambda *a, **k: subprocess.run([cli, *a], cwd=work, capture_output=True, text=True, **k)
 
-    r = run("run", "--preset", args.preset, "--seed", args.seed, "--out", "S.fbs")
+    r = run("run", "--preset", args.preset, "--seed", args.seed, "--out", "S.fbs", "--imu-serial", "SN-5",
+            "--lot", "L-2026-11", "--bench-id", "bench-3")
     check(r.returncode == 0, f"run failed: {r.stderr}")
     r = run("export", "S.fbs", "--csv", "csv", "--hdf5", "S.h5")
     check(r.returncode == 0, f"export failed: {r.stderr}")
@@ -172,7 +173,13 @@ def main():
         check(h.attrs["session_sha256"] == sha, f"session_sha256 {h.attrs['session_sha256']} != sha256 {sha}")
         check(h.attrs["fogbench_version"] == version, f"fogbench_version {h.attrs['fogbench_version']} != {version}")
         with open(os.path.join(c, "metadata.json")) as f:
-            check(h["metadata"].attrs["json"] == f.read(), "/metadata json differs from metadata.json")
+            meta_text = f.read()
+            check(h["metadata"].attrs["json"] == meta_text, "/metadata json differs from metadata.json")
+        # The unit's identity at the root, as the session states it (and the CSV metadata).
+        meta = json.loads(meta_text)
+        for key, given in (("imu_serial", "SN-5"), ("lot", "L-2026-11"), ("bench_id", "bench-3")):
+            check(h.attrs[key] == given and meta[key] == given,
+                  f"{key}: root {h.attrs[key]!r}, metadata.json {meta.get(key)!r}, given {given!r}")
 
         # Every dataset carries a unit.
         def visit(name, obj):

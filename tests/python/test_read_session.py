@@ -61,7 +61,7 @@ class ReadSession(unittest.TestCase):
     def setUpClass(cls):
         cls.dir = tempfile.mkdtemp(prefix="fogbench-py-")
         cls.quick = os.path.join(cls.dir, "quick.fbs")
-        cli("run", "--preset", "quick", "--seed", "3", "--out", cls.quick)
+        cli("run", "--preset", "quick", "--seed", "3", "--out", cls.quick, "--lot", "L-2026-11", "--bench-id", "bench 3")
         plan = os.path.join(cls.dir, "two_axes.json")
         with open(plan, "w") as f:
             json.dump(TWO_AXES_PLAN, f)
@@ -117,7 +117,7 @@ class ReadSession(unittest.TestCase):
             self.assertGreater(np.ptp(p.table_angle_deg), 1.0)
         with open(os.path.join(out, "metadata.json")) as f:
             meta = json.load(f)
-        for key in ("operator", "source", "software_version", "created_utc", "notes"):
+        for key in ("operator", "lot", "bench_id", "source", "software_version", "created_utc", "notes"):
             self.assertEqual(s.metadata[key], meta[key], key)
         for key in ("table_read_delay_ms", "board_delay_ms", "latitude_deg", "pulse_equivalent_deg", "counter_hz"):
             self.assertEqual(s.metadata[key], meta["bench"][key], key)
@@ -127,7 +127,8 @@ class ReadSession(unittest.TestCase):
         s = self.assert_samples_equal_csv(self.quick, ["x"])
         self.assertEqual(s.metadata["state"], "complete")
         self.assertFalse(s.metadata["being_recorded"])
-        self.assertEqual(s.metadata["schema_version"], 5)
+        self.assertEqual(s.metadata["schema_version"], 6)
+        self.assertEqual((s.metadata["lot"], s.metadata["bench_id"]), ("L-2026-11", "bench 3"))
 
     def test_two_axes_session_samples_equal_the_csv_export(self):
         s = self.assert_samples_equal_csv(self.two, ["x", "y"])
@@ -229,7 +230,13 @@ class ReadSession(unittest.TestCase):
                 db.execute("UPDATE session SET notes = 'changed afterwards' WHERE id = 1")
             db.close()
 
+        def lot(path):  # one byte of the lot changed, its checksum left as it was
+            with sqlite3.connect(path) as db:
+                db.execute("UPDATE session SET lot = 'L-2026-12' WHERE id = 1")
+            db.close()
+
         cases = {
+            "lot": damaged("l.fbs", lot),
             "truncated": damaged("t.fbs", lambda p: os.truncate(p, os.path.getsize(p) // 2)),
             "metadata": damaged("m.fbs", metadata),
             "application id": damaged("a.fbs", write_at(68, b"\0\0\0\1")),
@@ -241,7 +248,8 @@ class ReadSession(unittest.TestCase):
         with open(text, "w") as f:
             f.write("not a session, a text file long enough to have a header of a hundred bytes\n" * 3)
         cases["not SQLite"] = text
-        expected_start = {"truncated": "is truncated", "metadata": "its metadata (who, bench constants, plan, "
+        expected_start = {"lot": "its metadata (who, bench constants, plan, state) fails its checksum",
+                          "truncated": "is truncated", "metadata": "its metadata (who, bench constants, plan, "
                           "state) fails its checksum", "application id": "is an SQLite database but not a fogbench",
                           "newer schema": "was written by a newer fogbench (schema 9", "header":
                           "is a fogbench session whose SQLite header", "empty": "is empty (0 bytes)",

@@ -729,7 +729,14 @@ class BenchUiTest : public QObject {
     auto input = results->reportInput();
     QVERIFY(input.isOk());
     QVERIFY(fog::report::renderCalibrationPages(*input, 30, &drawn).isOk());
-    QVERIFY2(drawn.contains("INVALID") && !drawn.join("\n").contains("PASS"), qPrintable(drawn.join("\n").left(3000)));
+    // The audit trail lists both stored results with their own stored
+    // verdicts (the older PASS among them): records, not the verdict shown.
+    const QStringList trail = drawn.filter(QRegularExpression("^#[0-9]+ "));
+    QCOMPARE(trail.size(), 2);
+    QVERIFY2(trail[0].endsWith("PASS") && trail[1].endsWith("INVALID"), qPrintable(trail.join("\n")));
+    QStringList shownText = drawn;
+    for (const auto& line : trail) shownText.removeAll(line);
+    QVERIFY2(drawn.contains("INVALID") && !shownText.join("\n").contains("PASS"), qPrintable(drawn.join("\n").left(3000)));
     const QString pdf = dir.filePath("reversed.pdf");
     QVERIFY(results->writeReportPdf(pdf).isOk());
 
@@ -2027,6 +2034,8 @@ class BenchUiTest : public QObject {
       first.findChild<QLineEdit*>("operatorEdit")->setText("Ann Lee");
       first.findChild<QLineEdit*>("imuModelEdit")->setText("FOG-9");
       first.findChild<QLineEdit*>("imuSerialEdit")->setText("SN-77");
+      first.findChild<QLineEdit*>("lotEdit")->setText("L-2026-11");
+      first.findChild<QLineEdit*>("benchIdEdit")->setText("bench-3");
       first.setRemembering(false);
       first.setSessionFolder(oneOff.path());
       first.setRemembering(true);
@@ -2048,7 +2057,40 @@ class BenchUiTest : public QObject {
     QCOMPARE(second.findChild<QLineEdit*>("operatorEdit")->text(), QString("Ann Lee"));
     QCOMPARE(second.findChild<QLineEdit*>("imuModelEdit")->text(), QString("FOG-9"));
     QCOMPARE(second.findChild<QLineEdit*>("imuSerialEdit")->text(), QString("SN-77"));
+    QCOMPARE(second.findChild<QLineEdit*>("lotEdit")->text(), QString("L-2026-11"));
+    QCOMPARE(second.findChild<QLineEdit*>("benchIdEdit")->text(), QString("bench-3"));
     QCOMPARE(second.sessionFolder(), sessions_.path());
+  }
+
+  // The lot and the bench id of the Configure view reach the session a GUI
+  // run records; its stored result carries its audit entry (the run's).
+  void aGuiRunStoresTheLotTheBenchAndItsAudit() {
+    auto w = window();
+    w->findChild<QLineEdit*>("operatorEdit")->setText("Zhao Min");
+    w->findChild<QLineEdit*>("lotEdit")->setText("L-7");
+    w->findChild<QLineEdit*>("benchIdEdit")->setText("bench-2");
+    QVERIFY(w->planEditor()->loadPreset("quick"));
+    w->useSimulator(0.0, 6);
+    QSignalSpy ended(w.get(), &MainWindow::runEnded);
+    click(*w, "runButton");
+    QTRY_VERIFY_WITH_TIMEOUT(!ended.isEmpty(), 60000);
+    const auto* outcome = w->lastOutcome();
+    QVERIFY(outcome && !outcome->sessionPath.empty());
+    auto reader = fog::session::SessionReader::open(outcome->sessionPath);
+    QVERIFY2(reader.isOk(), reader.status().message().c_str());
+    QCOMPARE((*reader)->info().lot, std::string("L-7"));
+    QCOMPARE((*reader)->info().benchId, std::string("bench-2"));
+    auto rows = (*reader)->results();
+    QVERIFY(rows.isOk() && rows->size() == 1);
+    const auto record = fog::session::readStoredResult(rows->front(), (*reader)->info().bench);
+    QVERIFY(record.audit.has_value());
+    QCOMPARE(record.audit->who, std::string("Zhao Min"));
+    QCOMPARE(record.audit->whoSource, std::string("operator"));
+    QCOMPARE(record.audit->tool, std::string("acquisition"));
+    QCOMPARE(record.audit->command, std::string("fogbench GUI Configure: Run"));
+    auto sha = (*reader)->rawSha256();
+    QVERIFY(sha.isOk() && sha->size() == 64);
+    QCOMPARE(record.audit->inputSha256, *sha);
   }
 
   // The source, the serial port and who drives the table (with the remote

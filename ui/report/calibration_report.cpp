@@ -316,6 +316,8 @@ void firstPage(PageFlow& flow, const Content& c) {
       {
           {QObject::tr("IMU model"), orNotRecorded(info.imuModel)},
           {QObject::tr("IMU serial number"), orNotRecorded(info.imuSerial)},
+          {QObject::tr("Lot"), orNotRecorded(info.lot)},
+          {QObject::tr("Bench id"), orNotRecorded(info.benchId)},
           {QObject::tr("Operator"), orNotRecorded(info.operatorName)},
           {QObject::tr("Recorded (UTC)"), orNotRecorded(info.createdUtc)},
           {QObject::tr("Data source"), info.source.empty() ? orNotRecorded(info.source) : coreText(info.source)},
@@ -454,6 +456,49 @@ void budgetSection(PageFlow& flow, const Content& c, bool imported) {
   }
 }
 
+// One stored result of the audit trail in the report's language (the
+// words of session::auditTrailLines): who, tool and command line are data,
+// shown as stored; the verdict is the record's, never re-judged.
+QString auditLine(int number, const session::StoredResultRecord& r) {
+  const QString when = r.createdUtc.empty() ? QObject::tr("(no time)") : QString::fromStdString(r.createdUtc);
+  if (!r.usable)
+    return QObject::tr("#%1 %2 · cannot be read: %3").arg(number).arg(when, coreText(r.problem));
+  QString by;
+  if (r.audit) {
+    const auto& a = *r.audit;
+    const QString whoSource = a.whoSource == "operator" ? QObject::tr("operator")
+                              : a.whoSource == "login"  ? QObject::tr("login name")
+                                                        : QString::fromStdString(a.whoSource);
+    // The tools fogbench names itself, in the report's language.
+    const std::string toolName = a.tool.empty() ? r.analysedBy : a.tool;
+    const QString tool = toolName == "acquisition"            ? QObject::tr("recording run")
+                         : toolName == "fogbench-cli analyze" ? QObject::tr("command-line analysis")
+                         : toolName == "fogbench GUI Results" ? QObject::tr("GUI Results view")
+                                                              : QString::fromStdString(toolName);
+    by = QObject::tr("by %1 (%2) · %3").arg(QString::fromStdString(a.who), whoSource, tool);
+    if (!a.command.empty()) by += " [" + QString::fromStdString(a.command) + "]";
+  } else {
+    by = QObject::tr("who and with what: not recorded (stored before the audit trail)");
+  }
+  const auto& k = r.constants;
+  QString constants = QObject::tr("table read delay %1 ± %2 ms, board delay %3 ± %4 ms, limit %5 ms")
+                          .arg(fixed(k.tableReadDelayMs, 3), fixed(k.tableReadDelayStdMs, 3),
+                               fixed(k.boardDelayMs, 3), fixed(k.boardDelayStdMs, 3), fixed(r.imuDelayLimitMs, 3));
+  if (k.gyroSign != std::array<int, kAxisCount>{1, 1, 1})
+    constants += ", " + QObject::tr("gyro signs %1").arg(QString("x%1 y%2 z%3")
+                                                             .arg(k.gyroSign[0] < 0 ? "−" : "+")
+                                                             .arg(k.gyroSign[1] < 0 ? "−" : "+")
+                                                             .arg(k.gyroSign[2] < 0 ? "−" : "+"));
+  const QString software = r.softwareVersion.empty() ? QObject::tr("version not recorded")
+                                                     : "fogbench " + QString::fromStdString(r.softwareVersion);
+  const QString input = !r.audit                      ? QObject::tr("raw data not recorded")
+                        : r.audit->inputSha256.empty() ? QObject::tr("raw data hash not known")
+                                                       : "SHA-256 " + QString::fromStdString(r.audit->inputSha256.substr(0, 12)) + "…";
+  return QObject::tr("#%1 %2 %3 · %4 · %5 · %6 · %7")
+      .arg(number)
+      .arg(when, by, constants, software, input, ui::verdictWord(r.verdict));
+}
+
 void constantsAndPlanPage(PageFlow& flow, const Content& c) {
   const auto& info = c.in.info;
   const auto& d = c.in.delays;
@@ -538,6 +583,18 @@ void constantsAndPlanPage(PageFlow& flow, const Content& c) {
                   n(h.duplicateFrames) + " / " + n(h.outOfOrderFrames)},
                  {QObject::tr("counter wraps"), n(h.counterWraps), QObject::tr("bytes skipped"), n(h.bytesSkipped)}};
   flow.table(health);
+
+  // The audit trail: every stored analysis of the session, who made it with
+  // what on which data (the lines as the core words them, never re-judged).
+  if (!c.in.analyses.empty()) {
+    flow.heading(QObject::tr("Analyses of this session"));
+    for (std::size_t i = 0; i < c.in.analyses.size(); ++i)
+      flow.paragraph(auditLine(static_cast<int>(i) + 1, c.in.analyses[i]), PageFlow::font(7.5));
+    flow.paragraph(QObject::tr("Each line: number, when stored (UTC), who (operator named, or login), tool and "
+                               "command, constants, software version, SHA-256 of the raw data analysed (first 12 "
+                               "digits), verdict as stored."),
+                   PageFlow::font(7.0), kMuted);
+  }
 
   budgetSection(flow, c, imported);
 

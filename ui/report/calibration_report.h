@@ -63,6 +63,11 @@ struct ReportInput {
   // Unset `stored` only: why the run stopped early ("" for a complete run);
   // the verdict is then INCOMPLETE.
   std::string incompleteReason;
+  // The session's stored results, oldest first: its audit trail, printed
+  // under "Analyses of this session" (one line each, as
+  // session::auditTrailLines has them, in the report's language). Empty for
+  // data without a session (a preset, a raw stream) or without results.
+  std::vector<session::StoredResultRecord> analyses;
 };
 
 // The one place a report's input is put together (fogbench-cli report, the

@@ -319,11 +319,16 @@ TEST(SessionFaults, TwoRecordersRacingForOneFileNeverHarmTheWinner) {
 
 // A complete session with stored samples; `sql` then edits it as an attacker
 // would (SQLite and the blob checksums stay valid).
-// What turns a session of this schema into one written before schema 5:
-// schema 5 added the stated IMU frame.
-constexpr const char* kDropImuFrame = " ALTER TABLE session DROP COLUMN imu_frame;";
+// What turns a session of this schema into one written before schema 6:
+// schema 6 added the lot and the bench id.
+constexpr const char* kDropIdentity = " ALTER TABLE session DROP COLUMN lot; ALTER TABLE session DROP COLUMN bench_id;";
+// ... and before schema 5, which added the stated IMU frame.
+constexpr const char* kDropImuFrame =
+    " ALTER TABLE session DROP COLUMN lot; ALTER TABLE session DROP COLUMN bench_id;"
+    " ALTER TABLE session DROP COLUMN imu_frame;";
 // ... and before schema 4, which added the gyro signs and the import settings.
 constexpr const char* kDropGyroSigns =
+    " ALTER TABLE session DROP COLUMN lot; ALTER TABLE session DROP COLUMN bench_id;"
     " ALTER TABLE session DROP COLUMN imu_frame;"
     " ALTER TABLE session DROP COLUMN gyro_sign_x; ALTER TABLE session DROP COLUMN gyro_sign_y;"
     " ALTER TABLE session DROP COLUMN gyro_sign_z; ALTER TABLE session DROP COLUMN import_json;";
@@ -655,7 +660,7 @@ TEST(SessionFaults, ASchemaFourSessionStatesNoFrameAndKeepsItsChecksumWhenMigrat
   ASSERT_TRUE(addResult(path, "{}", R"({"lag_ms":0.466})").isOk());
   auto r = SessionReader::open(path);
   ASSERT_TRUE(r.isOk()) << r.status().message();
-  EXPECT_EQ((*r)->schemaVersion(), 5);
+  EXPECT_EQ((*r)->schemaVersion(), kSchemaVersion);
   EXPECT_FALSE((*r)->info().bench.imuFrame.stated());
   // Checked over the frame too: a frame written behind the checksum's back
   // (z up where the bench stated nothing) is damage, not a statement.
@@ -663,6 +668,76 @@ TEST(SessionFaults, ASchemaFourSessionStatesNoFrameAndKeepsItsChecksumWhenMigrat
   auto damaged = SessionReader::open(path);
   ASSERT_FALSE(damaged.isOk());
   EXPECT_NE(damaged.status().message().find("checksum"), std::string::npos) << damaged.status().message();
+}
+
+TEST(SessionFaults, ASchemaFiveSessionStatesNoLotNorBenchAndKeepsItsChecksumWhenMigrated) {
+  ScratchDir dir;
+  const auto path = craftedSession(dir, "v5.fbs", std::string(kDropIdentity) + " PRAGMA user_version = 5;");
+  {
+    // The checksum schema 5 computed, over its own columns (independently of
+    // the reader's code).
+    sqlite3* db = nullptr;
+    ASSERT_EQ(sqlite3_open_v2(path.c_str(), &db, SQLITE_OPEN_READWRITE, nullptr), SQLITE_OK);
+    const std::string sql =
+        "UPDATE session SET metadata_fnv1a = " +
+        std::to_string(schemaThreeMetadataChecksum(db, ", gyro_sign_x, gyro_sign_y, gyro_sign_z, import_json, imu_frame"));
+    ASSERT_EQ(sqlite3_exec(db, sql.c_str(), nullptr, nullptr, nullptr), SQLITE_OK);
+    sqlite3_close(db);
+  }
+  {
+    auto r = SessionReader::open(path);
+    ASSERT_TRUE(r.isOk()) << r.status().message();
+    EXPECT_EQ((*r)->schemaVersion(), 5);
+    EXPECT_EQ((*r)->info().lot, "");
+    EXPECT_EQ((*r)->info().benchId, "");
+  }
+  ASSERT_TRUE(addResult(path, "{}", R"({"lag_ms":0.466})").isOk());
+  {
+    auto r = SessionReader::open(path);
+    ASSERT_TRUE(r.isOk()) << r.status().message();
+    EXPECT_EQ((*r)->schemaVersion(), 6);
+    EXPECT_EQ((*r)->info().lot, "");
+    EXPECT_EQ((*r)->info().benchId, "");
+    sqlite3* db = nullptr;
+    ASSERT_EQ(sqlite3_open_v2(path.c_str(), &db, SQLITE_OPEN_READONLY, nullptr), SQLITE_OK);
+    sqlite3_stmt* s = nullptr;
+    ASSERT_EQ(sqlite3_prepare_v2(db, "SELECT metadata_fnv1a FROM session", -1, &s, nullptr), SQLITE_OK);
+    ASSERT_EQ(sqlite3_step(s), SQLITE_ROW);
+    // Checked, and over the new columns too.
+    EXPECT_EQ(sqlite3_column_int64(s, 0),
+              schemaThreeMetadataChecksum(db, ", gyro_sign_x, gyro_sign_y, gyro_sign_z, import_json, imu_frame, lot, bench_id"));
+    sqlite3_finalize(s);
+    sqlite3_close(db);
+  }
+  // A lot written behind the checksum's back is damage, not a statement.
+  fog::test::runSql(path, "UPDATE session SET lot = 'L-2026-11'");
+  auto damaged = SessionReader::open(path);
+  ASSERT_FALSE(damaged.isOk());
+  EXPECT_NE(damaged.status().message().find("checksum"), std::string::npos) << damaged.status().message();
+}
+
+TEST(SessionFaults, LotAndBenchAreStoredAndAByteFlippedInTheLotFailsTheChecksum) {
+  ScratchDir dir;
+  SessionInfo info;
+  info.lot = "L-2026-11-A";
+  info.benchId = "bench-3";
+  const auto path = fog::test::recordedSession(dir, "ident.fbs", info);
+  {
+    auto r = SessionReader::open(path);
+    ASSERT_TRUE(r.isOk()) << r.status().message();
+    EXPECT_EQ((*r)->schemaVersion(), kSchemaVersion);
+    EXPECT_EQ((*r)->info().lot, "L-2026-11-A");
+    EXPECT_EQ((*r)->info().benchId, "bench-3");
+  }
+  // One byte of the lot ('A' -> 'B'), the rest of the row untouched.
+  fog::test::runSql(path, "UPDATE session SET lot = 'L-2026-11-B'");
+  auto damaged = SessionReader::open(path);
+  ASSERT_FALSE(damaged.isOk());
+  EXPECT_NE(damaged.status().message().find("checksum"), std::string::npos) << damaged.status().message();
+  // And the bench id.
+  const auto other = fog::test::recordedSession(dir, "ident2.fbs", info);
+  fog::test::runSql(other, "UPDATE session SET bench_id = 'bench-4'");
+  EXPECT_FALSE(SessionReader::open(other).isOk());
 }
 
 TEST(SessionFaults, AnUnreadableStoredFrameIsRefusedWithItsReason) {

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cctype>
+#include <cstdio>
 #include <fstream>
 #include <string>
 
@@ -270,6 +272,82 @@ TEST(SessionApi, ShowResultTakesTheAskedForRecordAndItsConstants) {
   ASSERT_TRUE(older.report.isOk());
   EXPECT_DOUBLE_EQ(older.report->constants.boardDelayMs, 0.25) << "re-analysed with the record's constants";
   EXPECT_EQ(describeResult(both->results, *older.record), older.description);
+}
+
+// The SHA-256 of `bytes` as coreutils' sha256sum prints it: computed outside
+// fogbench, so the audit's hash is checked against an independent one.
+std::string sha256sumOf(const ScratchDir& dir, const std::vector<std::uint8_t>& bytes) {
+  const std::string path = dir.file("stream.bin");
+  fog::test::writeFile(path, bytes);
+  std::FILE* p = ::popen(("sha256sum '" + path + "'").c_str(), "r");
+  if (!p) return "sha256sum did not run";
+  char out[65] = {};
+  const std::size_t n = std::fread(out, 1, 64, p);
+  ::pclose(p);
+  return std::string(out, n);
+}
+
+TEST(SessionApi, EveryStoredAnalysisCarriesItsAuditEntryWithTheSameInputHash) {
+  ScratchDir dir;
+  auto s = openSimulated(dir, "audit.fbs");
+  ASSERT_TRUE(s.isOk()) << s.status().message();
+  auto first = settingsWithLimit(0.8, 0.25);
+  first.producedBy = "fogbench-cli analyze";
+  first.operatorName = "Wang Fang";
+  first.command = "fogbench-cli analyze audit.fbs --board-delay-ms 0.25";
+  ASSERT_TRUE(analyseAndStore(*s, first).stored);
+  auto second = settingsWithLimit(0.8, 0.31);
+  second.producedBy = "fogbench GUI";
+  second.tool = "fogbench GUI Results";
+  second.command = "Results view";  // no operator named: the login name
+  const auto result = analyseAndStore(*s, second);
+  ASSERT_TRUE(result.stored) << result.storeStatus.message();
+  ASSERT_EQ(result.results.size(), 2u);
+
+  const std::string expected = sha256sumOf(dir, fog::test::shortRun().bytes);
+  ASSERT_EQ(expected.size(), 64u) << expected;
+  const auto& a = result.results[0];
+  const auto& b = result.results[1];
+  ASSERT_TRUE(a.audit && b.audit);
+  EXPECT_EQ(a.audit->who, "Wang Fang");
+  EXPECT_EQ(a.audit->whoSource, "operator");
+  EXPECT_EQ(a.audit->tool, "fogbench-cli analyze");
+  EXPECT_EQ(a.audit->command, first.command);
+  EXPECT_DOUBLE_EQ(a.constants.boardDelayMs, 0.25);
+  EXPECT_EQ(b.audit->who, loginName());
+  EXPECT_FALSE(b.audit->who.empty());
+  EXPECT_EQ(b.audit->whoSource, "login");
+  EXPECT_EQ(b.audit->tool, "fogbench GUI Results");
+  EXPECT_EQ(b.analysedBy, "fogbench GUI");  // what analysed_by said before the trail, unchanged
+  EXPECT_DOUBLE_EQ(b.constants.boardDelayMs, 0.31);
+  // Both analysed the same data: the raw stream's hash, as sha256sum gives it.
+  EXPECT_EQ(a.audit->inputSha256, expected);
+  EXPECT_EQ(b.audit->inputSha256, expected);
+
+  // The trail: one line each, in order, with who, tool, constants, hash and verdict.
+  const auto lines = auditTrailLines(result.results);
+  ASSERT_EQ(lines.size(), 2u);
+  EXPECT_EQ(lines[0].rfind("#1 ", 0), 0u) << lines[0];
+  EXPECT_NE(lines[0].find("by Wang Fang (operator) fogbench-cli analyze [" + first.command + "]"), std::string::npos)
+      << lines[0];
+  EXPECT_NE(lines[0].find("board 0.250 ± "), std::string::npos) << lines[0];
+  EXPECT_NE(lines[0].find("input " + expected.substr(0, 12)), std::string::npos) << lines[0];
+  EXPECT_NE(lines[1].find("(login) fogbench GUI Results [Results view]"), std::string::npos) << lines[1];
+  EXPECT_NE(lines[1].find("board 0.310 ± "), std::string::npos) << lines[1];
+  std::string verdict = a.verdict;
+  for (auto& c : verdict) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  ASSERT_FALSE(verdict.empty());
+  EXPECT_EQ(lines[0].substr(lines[0].size() - verdict.size()), verdict) << lines[0];
+}
+
+TEST(SessionApi, TheRawStreamHashIsSha256sums) {
+  ScratchDir dir;
+  const auto path = simulatedSession(dir, "hash.fbs");
+  auto r = SessionReader::open(path);
+  ASSERT_TRUE(r.isOk());
+  auto sha = (*r)->rawSha256();
+  ASSERT_TRUE(sha.isOk()) << sha.status().message();
+  EXPECT_EQ(*sha, sha256sumOf(dir, fog::test::shortRun().bytes));
 }
 
 }  // namespace

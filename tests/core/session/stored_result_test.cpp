@@ -48,6 +48,47 @@ TEST(StoredResult, SettingsCarryTheGyroSignsAndTheLimit) {
   EXPECT_EQ(r.point(1), nullptr);
 }
 
+TEST(StoredResult, TheAuditIsStoredAndReadBack) {
+  const AnalysisAudit audit{"Li Wei", "operator", "fogbench-cli analyze", "fogbench-cli analyze s.fbs",
+                            std::string(64, 'a')};
+  const session::StoredResult row{3, "2026-11-29T05:00:00Z", analysisSettingsJson({}, 0.8, "fogbench-cli analyze", {}, &audit),
+                                  reportWith("pass", 0.51, "pass").dump(), true};
+  const auto r = readStoredResult(row, {});
+  ASSERT_TRUE(r.usable) << r.problem;
+  ASSERT_TRUE(r.audit.has_value());
+  EXPECT_EQ(r.audit->who, "Li Wei");
+  EXPECT_EQ(r.audit->whoSource, "operator");
+  EXPECT_EQ(r.audit->command, "fogbench-cli analyze s.fbs");
+  EXPECT_EQ(r.audit->inputSha256, std::string(64, 'a'));
+  // Without an audit (an export's settings): no key at all.
+  EXPECT_EQ(json::parse(analysisSettingsJson({}, 0.8, "x")).count("audit"), 0u);
+}
+
+TEST(StoredResult, ARowStoredBeforeTheAuditReadsNotRecorded) {
+  // settings_json as fogbench wrote it before the audit trail.
+  const json settings = {{"board_delay_ms", 0.28}, {"software_version", "0.8.0"}, {"analysed_by", "fogbench GUI"}};
+  const session::StoredResult row{1, "2026-11-01T00:00:00Z", settings.dump(), reportWith("fail", 0.9, "fail").dump(),
+                                  true};
+  const auto r = readStoredResult(row, {});
+  ASSERT_TRUE(r.usable) << r.problem;
+  EXPECT_FALSE(r.audit.has_value());
+  const auto lines = auditTrailLines({r});
+  ASSERT_EQ(lines.size(), 1u);
+  EXPECT_NE(lines[0].find("fogbench GUI (audit not recorded)"), std::string::npos) << lines[0];
+  EXPECT_NE(lines[0].find("input not recorded"), std::string::npos) << lines[0];
+  EXPECT_NE(lines[0].find("fogbench 0.8.0"), std::string::npos) << lines[0];
+  EXPECT_NE(lines[0].find("| FAIL"), std::string::npos) << lines[0];
+  // A damaged row says so, never a verdict.
+  const session::StoredResult damaged{2, "2026-11-02T00:00:00Z", "{}", "{}", false};
+  const auto dl = auditTrailLines({readStoredResult(damaged, {})});
+  EXPECT_NE(dl[0].find("cannot be read: the stored result fails its checksum"), std::string::npos) << dl[0];
+}
+
+TEST(StoredResult, CommandLinesQuoteWhatASpaceWouldSplit) {
+  const char* argv[] = {"/path/to/fogbench-cli", "analyze", "my run.fbs", "--operator", "O'Brien"};
+  EXPECT_EQ(commandLineOf("fogbench-cli", 5, argv), "fogbench-cli analyze 'my run.fbs' --operator 'O'\\''Brien'");
+}
+
 TEST(StoredResult, TheGainToleranceIsStoredAndReadBack) {
   BenchConstants c;
   c.gainToleranceFraction = 0.025;
