@@ -609,7 +609,11 @@ Result<LotStatistics> lotStatistics(const std::string& lot, const std::vector<Ca
     s.limitSource = "stored";
   } else if (limits.size() > 1) {
     std::string list;
-    for (double l : limits) list += (list.empty() ? "" : ", ") + textOf(numberValue(l)) + " ms";
+    for (double l : limits) {
+      char b[32];
+      std::snprintf(b, sizeof b, "%.6g ms", l);
+      list += (list.empty() ? "" : ", ") + std::string(b);
+    }
     return invalidArgument("the results of lot '" + lot + "' were judged against different limits (" + list +
                            "); give the limit Cpk is computed against with --limit-ms");
   }

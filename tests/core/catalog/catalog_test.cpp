@@ -119,16 +119,14 @@ class CatalogTest : public ::testing::TestWithParam<std::string> {
 
 TEST_P(CatalogTest, ALotCountsInvalidAndIncompleteButNeverAveragesThem) {
   BenchConstants good;
-  BenchConstants late = good;  // no read or board delay subtracted: the IMU delay lands above 0.8 ms
-  late.tableReadDelayMs = 0.0;
-  late.boardDelayMs = 0.0;
   BenchConstants backwards = good;  // every gyro axis stated reversed: the gyro turns against the table
   backwards.gyroSign = {-1, -1, -1};
 
   const std::string a = session("a.fbs", "SN-A", "2026-11-01T08:00:00Z", good);
   session("b.fbs", "SN-B", "2026-11-01T09:00:00Z", backwards);
   session("c.fbs", "SN-C", "2026-11-01T10:00:00Z", good, /*complete=*/false);
-  const std::string d = session("d.fbs", "SN-D", "2026-11-01T11:00:00Z", late);
+  // D judged against a limit its IMU delay (about 0.5 ms) exceeds: FAIL.
+  const std::string d = session("d.fbs", "SN-D", "2026-11-01T11:00:00Z", good, true, /*limitMs=*/0.4);
   // Unit A re-analysed with another read delay: result 1 is superseded.
   BenchConstants regood = good;
   regood.tableReadDelayMs = 0.06;
@@ -182,7 +180,13 @@ TEST_P(CatalogTest, ALotCountsInvalidAndIncompleteButNeverAveragesThem) {
     EXPECT_NEAR(r.meanTemperatureC, expectedTemperature, 1e-9);
   }
 
-  auto stats = lotStatistics("L7", *results, NAN);
+  // Judged against 0.8 and 0.4 ms: Cpk needs the limit named.
+  auto unnamed = lotStatistics("L7", *results, NAN);
+  ASSERT_FALSE(unnamed.isOk());
+  EXPECT_NE(unnamed.status().message().find("different limits (0.4 ms, 0.8 ms)"),
+            std::string::npos)
+      << unnamed.status().message();
+  auto stats = lotStatistics("L7", *results, 0.8);
   ASSERT_TRUE(stats.isOk()) << stats.status().message();
   EXPECT_EQ(stats->units, 4);
   EXPECT_EQ(stats->sessions, 4);
@@ -193,7 +197,7 @@ TEST_P(CatalogTest, ALotCountsInvalidAndIncompleteButNeverAveragesThem) {
   EXPECT_EQ(stats->superseded, 1);
   EXPECT_DOUBLE_EQ(stats->passRate, 0.25);
   EXPECT_DOUBLE_EQ(stats->firstPassYield, 0.25);
-  EXPECT_EQ(stats->limitSource, "stored");
+  EXPECT_EQ(stats->limitSource, "given");
   EXPECT_DOUBLE_EQ(stats->limitMs, 0.8);
   // The delays: A's latest (re-analysed) and D's, nothing of B or C.
   ASSERT_EQ(stats->delay.size(), 1u);  // one axis (z): no separate "all"
