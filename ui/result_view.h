@@ -59,6 +59,7 @@ class ResultView : public QWidget {
   // is INCOMPLETE. Says when this version's analysis differs from the record.
   QString verdictHtml(const analysis::TestPointResult& point) const;
   QString headlineHtml(const analysis::TestPointResult& point) const;
+  QString decisionRuleHtml(const session::ShownVerdict& shown, const session::ShownPoint* point) const;
 
   SeriesPlot* anglePlot() const { return anglePlot_; }
   SeriesPlot* residualPlot() const { return residualPlot_; }

@@ -77,7 +77,8 @@ static Status finishSession(std::unique_ptr<session::SessionWriter> writer, cons
   if (!result.report) return Status::ok();
   return session::addResult(
       options.sessionPath,
-      session::analysisSettingsJson(options.constants, options.reportContext.imuDelayLimitMs, "acquisition"),
+      session::analysisSettingsJson(options.constants, options.reportContext.imuDelayLimitMs, "acquisition", {},
+                                    options.reportContext.coverageK),
       analysis::formatReportJson(*result.report, reportContextOf(result, options)));
 }
 
