@@ -39,7 +39,7 @@ string(REGEX REPLACE "[0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0
 string(REPLACE "s.fbs" " " rest "${rest}")
 string(REGEX MATCHALL "[A-Za-z][A-Za-z]+" words "${rest}")
 set(allowed IMU fogbench SHA CRLB Cram Rao Allan dof RMS MHz Hz kHz ms sin cos UTC Sagnac Mbaud baud IEEE Std
-            arcsec)
+            arcsec ISO IEC ILAC)
 set(left "")
 foreach(w IN LISTS words)
   list(FIND allowed "${w}" at)
