@@ -212,6 +212,11 @@ const char* const kTemplates[] = {
     QT_TRANSLATE_NOOP("core_text", "every test point passed its validity checks and its IMU delay + %1σ is below the %2 ms limit"),
     QT_TRANSLATE_NOOP("core_text", "IMU delay %1 ± %2 ms; + %3σ = %4 ms < %5 ms limit (margin %6 ms)"),
     QT_TRANSLATE_NOOP("core_text", "IMU delay %1 ± %2 ms; + %3σ = %4 ms ≥ %5 ms limit (over by %6 ms)"),
+    // The text report's decision rule and each point's risk (analysis/decision_rule.h, report_writer.cpp)
+    QT_TRANSLATE_NOOP("core_text", "decision rule: PASS when IMU delay + k·σ < limit (k = %1, one-sided guarded acceptance, ISO/IEC 17025:2017 §7.8.6 / ILAC-G8:09/2019); FAIL otherwise; INVALID when a validity check fails; maximum probability of false accept 1 − Φ(k) = %2 (a delay measured just at the acceptance boundary, with a Gaussian error of the stated σ); limit %3 ms"),
+    QT_TRANSLATE_NOOP("core_text", "guard band %1σ = %2 ms; probability that the true delay is at or above the limit: %3"),
+    QT_TRANSLATE_NOOP("core_text", "no false-accept probability: the delay is refused (INVALID)"),
+    QT_TRANSLATE_NOOP("core_text", "no false-accept probability: the run stopped before its plan ended (INCOMPLETE)"),
     // session::decisionRuleProvenance: a row stored before k was kept
     QT_TRANSLATE_NOOP("core_text", "not stored: the rule of that version, k = %1"),
     QT_TRANSLATE_NOOP("core_text", "the gyro turns with the table (gyro/table ratio %1)"),

@@ -223,6 +223,14 @@ void ResultView::buildHeader(QVBoxLayout* layout) {
   verdictLabel_->setWordWrap(true);
   verdictLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   layout->addWidget(verdictLabel_);
+  // Under it, the rule the verdict applied with its k and risk (ISO/IEC
+  // 17025 §7.8.6): the shown result's, never today's setting. A label of its
+  // own, so the verdict's words stay the verdict's.
+  decisionRuleLabel_ = new QLabel();
+  decisionRuleLabel_->setObjectName("decisionRuleLabel");
+  decisionRuleLabel_->setWordWrap(true);
+  decisionRuleLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  layout->addWidget(decisionRuleLabel_);
   connect(testPointCombo_, qOverload<int>(&QComboBox::currentIndexChanged), this, &ResultView::showTestPoint);
 }
 
@@ -416,6 +424,7 @@ void ResultView::clear() {
   }
   lagLabel_->setText(tr("No result yet: run a test plan (Run) or open a session (Sessions)."));
   verdictLabel_->clear();
+  decisionRuleLabel_->clear();
   resultCombo_->clear();
   resultCombo_->setEnabled(false);
   anglePlot_->clearCurves();
@@ -653,9 +662,6 @@ QString ResultView::verdictHtml(const analysis::TestPointResult& p) const {
                 .arg(coreText(v.incompleteReason).toHtmlEscaped(), verdictWord(v.dataVerdict));
   }
   html += tr("  ·  %1 (limit %2 ms)").arg(whose, num(v.limitMs, 3));
-  // The rule the verdict applied, with its k and risk (ISO/IEC 17025 §7.8.6):
-  // the shown result's, never today's setting.
-  html += "<br>" + decisionRuleHtml(v, sp);
   const K pointVerdict = sp ? sp->verdict : K::kNone;
   if (pointVerdict == K::kIncomplete)  // no point of an incomplete run passes
     html += tr("<br>Test point: <span style='color:%1'><b>%2</b></span> (its data give %3): %4")
@@ -711,6 +717,10 @@ void ResultView::showTestPoint(int position) {
   const auto& p = outcome_->report->points[i];
   lagLabel_->setText(headlineHtml(p));
   verdictLabel_->setText(verdictHtml(p));
+  {
+    const session::ShownVerdict v = outcome_->shownVerdict();
+    decisionRuleLabel_->setText(decisionRuleHtml(v, v.point(p.index)));
+  }
   fillTables(i);
 
   // Aliasing pointers: the plots share the outcome, nothing is copied.

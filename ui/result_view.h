@@ -143,6 +143,7 @@ class ResultView : public QWidget {
   QComboBox* resultCombo_ = nullptr;
   QLabel* lagLabel_ = nullptr;
   QLabel* verdictLabel_ = nullptr;
+  QLabel* decisionRuleLabel_ = nullptr;  // the shown result's decision rule and the point's risk
   QToolButton* exportButton_ = nullptr;
   QPushButton* diagnoseButton_ = nullptr;
   SeriesPlot* anglePlot_ = nullptr;

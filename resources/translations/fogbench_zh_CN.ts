@@ -3417,7 +3417,7 @@ File: %1</source>
     <message>
         <location line="+31"/>
         <source>Lag: gyro output behind the stamped table angle (joint fit). IMU delay = lag + table read delay; gyro delay = IMU delay − processing-board delay. CRLB: Cramér–Rao bound on the lag for the noise measured in this session. P(false accept): the probability that the true IMU delay is at or above the limit, 1 − Φ((limit − delay)/σ), for a Gaussian error of the stated σ; none for a refused (INVALID or INCOMPLETE) delay.</source>
-        <translation>滞后：陀螺输出相对于打时间戳的转台角度的滞后（联合拟合）。IMU 延迟 = 滞后 + 转台读数延迟；陀螺延迟 = IMU 延迟 − 处理板延迟。CRLB：按本次会话实测噪声计算的滞后 Cramér–Rao 界。P(误接受)：真实 IMU 延迟达到或超过限值的概率 1 − Φ((限值 − 延迟)/σ)（误差为所给 σ 的高斯分布）；被拒绝（无效或未完成）的延迟不给出。</translation>
+        <translation>滞后：陀螺输出相对于打时间戳的转台角度的滞后（联合拟合）。IMU 延迟 = 滞后 + 转台读数延迟；陀螺延迟 = IMU 延迟 − 处理板延迟。CRLB：按本次会话实测噪声计算的滞后 Cramér–Rao 界。P(误接受)：真实 IMU 延迟达到或超过限值的概率 1 − Φ((限值 − 延迟)/σ)（误差为所给 σ 的高斯分布）；被拒绝（无效或不完整）的延迟不给出。</translation>
     </message>
     <message>
         <location line="+21"/>
@@ -6434,6 +6434,26 @@ The session itself is unchanged.</source>
         <location line="+1"/>
         <source>IMU delay %1 ± %2 ms; + %3σ = %4 ms ≥ %5 ms limit (over by %6 ms)</source>
         <translation>IMU 延迟 %1 ± %2 ms；+ %3σ = %4 ms ≥ %5 ms 限值（超出 %6 ms）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>decision rule: PASS when IMU delay + k·σ &lt; limit (k = %1, one-sided guarded acceptance, ISO/IEC 17025:2017 §7.8.6 / ILAC-G8:09/2019); FAIL otherwise; INVALID when a validity check fails; maximum probability of false accept 1 − Φ(k) = %2 (a delay measured just at the acceptance boundary, with a Gaussian error of the stated σ); limit %3 ms</source>
+        <translation>判定规则：IMU 延迟 + k·σ &lt; 限值时合格（k = %1，单侧保护带验收，ISO/IEC 17025:2017 §7.8.6 / ILAC-G8:09/2019）；否则不合格；有效性检查未通过时无效；最大误接受概率 1 − Φ(k) = %2（恰好在验收边界上测得的延迟，误差为所给 σ 的高斯分布）；限值 %3 ms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>guard band %1σ = %2 ms; probability that the true delay is at or above the limit: %3</source>
+        <translation>保护带 %1σ = %2 ms；真实延迟达到或超过限值的概率：%3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no false-accept probability: the delay is refused (INVALID)</source>
+        <translation>不给出误接受概率：该延迟被拒绝（无效）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no false-accept probability: the run stopped before its plan ended (INCOMPLETE)</source>
+        <translation>不给出误接受概率：运行在计划结束前停止（不完整）</translation>
     </message>
     <message>
         <location line="+2"/>
