@@ -40,7 +40,8 @@ std::string coverageFactorText(double k) { return printed("%g", k); }
 std::string probabilityText(double p) {
   if (!std::isfinite(p)) return "not defined";
   const double percent = 100.0 * p;
-  if (percent == 0.0) return "0 %";
+  // A Gaussian tail is never 0: a double that underflowed (beyond ~37σ) is
+  // as true a "< 1e-6 %" as any other tiny risk.
   if (percent < 1e-6) return "< 1e-6 %";
   if (percent >= 99.9999 && p < 1.0) return "> 99.9999 %";
   // Three significant digits below 10 %, one decimal above.

@@ -54,7 +54,8 @@ inline double guardBandMs(double k, double sigmaMs) { return k * sigmaMs; }
 std::string coverageFactorText(double k);
 
 // A probability as a percentage with enough digits to tell it from its
-// neighbours: "2.28 %", "0.135 %", "< 1e-6 %", "50.0 %".
+// neighbours: "2.28 %", "0.135 %", "50.0 %"; "< 1e-6 %" below 1e-8 (and for
+// a tail that underflowed to 0), "> 99.9999 %" just below 1.
 std::string probabilityText(double p);
 
 // The rule in one sentence: "PASS when IMU delay + k·σ < limit (k = 2,

@@ -2918,12 +2918,12 @@ File: %1</source>
     </message>
     <message>
         <location filename="../../ui/report/calibration_report.cpp" line="+71"/>
-        <location line="+268"/>
+        <location line="+269"/>
         <source>not recorded</source>
         <translation>未记录</translation>
     </message>
     <message>
-        <location line="-261"/>
+        <location line="-262"/>
         <source>%1 axis
 %2 Hz / %3°, %4 s</source>
         <translation>%1 轴
@@ -2975,7 +2975,12 @@ File: %1</source>
         <translation>采样板数据流 %1 字节</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+23"/>
+        <source>— refused</source>
+        <translation>— 被拒绝</translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>Test point %1 (%2): %3</source>
         <translation>测试点 %1（%2）：%3</translation>
     </message>
@@ -3090,7 +3095,7 @@ File: %1</source>
         <translation>结果</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>condition</source>
         <translation>条件</translation>
     </message>
@@ -3305,12 +3310,12 @@ File: %1</source>
         <translation>未给出</translation>
     </message>
     <message>
-        <location line="-346"/>
+        <location line="-348"/>
         <source>SIMULATED DATA — not a measurement of a real IMU</source>
         <translation>仿真数据 —— 并非对真实 IMU 的测量</translation>
     </message>
     <message>
-        <location line="+147"/>
+        <location line="+148"/>
         <source>Result reported</source>
         <translation>报告的结果</translation>
     </message>
@@ -3320,7 +3325,7 @@ File: %1</source>
         <translation>生成本报告时计算，使用第 2 页的常数</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+45"/>
         <source> %1 refused test point(s) left out: their checks failed.</source>
         <translation>未计入 %1 个被拒绝的测试点：其有效性检查未通过。</translation>
     </message>
@@ -3395,7 +3400,7 @@ File: %1</source>
         <translation>延迟预算</translation>
     </message>
     <message>
-        <location line="-178"/>
+        <location line="-180"/>
         <source>Decision rule (ISO/IEC 17025:2017 §7.8.6; ILAC-G8:09/2019 guarded acceptance, one-sided): a test point is invalid when a validity check fails (reversed gyro axis, clock-rate mismatch, a swing that is not a steady sinusoid, a negative IMU delay); otherwise it passes when its IMU delay plus k = %1 standard uncertainties (1σ, including the bench constants; guard band kσ) is below the limit of %2 ms, and fails if not; the session passes when every test point of the plan gave a delay and passes. Maximum probability of false accept 1 − Φ(k) = %3: a delay measured just at the acceptance boundary, with a Gaussian error of the stated σ.</source>
         <translation>判定规则（ISO/IEC 17025:2017 §7.8.6；ILAC-G8:09/2019 保护带验收，单侧）：有效性检查未通过（陀螺轴反向、时钟速率不一致、摆动不是稳定正弦、IMU 延迟为负）的测试点无效；否则，其 IMU 延迟加 k = %1 倍标准不确定度（1σ，含台架常数；保护带 kσ）低于 %2 ms 限值时合格，否则不合格；计划中每个测试点都得到延迟且都合格时，会话合格。最大误接受概率 1 − Φ(k) = %3：即恰好在验收边界上测得的延迟（误差为所给 σ 的高斯分布）。</translation>
     </message>
@@ -3405,12 +3410,7 @@ File: %1</source>
         <translation>k %1。</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>— (%1)</source>
-        <translation>—（%1）</translation>
-    </message>
-    <message>
-        <location line="+112"/>
+        <location line="+120"/>
         <source>P(false accept)</source>
         <translation>P(误接受)</translation>
     </message>
@@ -4395,7 +4395,7 @@ File: %1</source>
         <translation>会话保存对它的每次分析（记录时的、每次重新分析的）及其所用常数和软件版本；所选的一个用于显示、报告和导出</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+33"/>
         <source>Normalised angles and fits</source>
         <translation>归一化角度及拟合</translation>
     </message>
@@ -4574,12 +4574,12 @@ Run a test plan (Run), or open a session (Sessions).</source>
         <translation>尚无结果：请运行测试计划（运行）或打开会话（会话）。</translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+63"/>
         <source>result %1 of %2: %7, stored %3 by %4 (%5), %6</source>
         <translation>结果 %1/%2：%7，%3 由 %4（%5）保存，%6</translation>
     </message>
     <message>
-        <location line="-127"/>
+        <location line="-128"/>
         <source>PDF document (*.pdf)</source>
         <translation>PDF 文档 (*.pdf)</translation>
     </message>
@@ -4679,7 +4679,7 @@ The session itself is unchanged.</source>
         <translation>滞后 (ms)，±1σ</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+30"/>
         <source>No frequency response yet.</source>
         <translation>尚无频率响应。</translation>
     </message>
@@ -4864,7 +4864,7 @@ The session itself is unchanged.</source>
         <translation>  ·  %1（限值 %2 ms）</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+3"/>
         <source>&lt;br&gt;Test point: &lt;span style=&apos;color:%1&apos;&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/span&gt; (its data give %3): %4</source>
         <translation>&lt;br&gt;测试点：&lt;span style=&apos;color:%1&apos;&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/span&gt;（其数据给出 %3）：%4</translation>
     </message>
@@ -4899,7 +4899,7 @@ The session itself is unchanged.</source>
         <translation>  ·  &lt;span style=&apos;color:#b00000&apos;&gt;运行未完成&lt;/span&gt;</translation>
     </message>
     <message>
-        <location line="+109"/>
+        <location line="+113"/>
         <source>+ fitted lag %1 ms, refused (%2)</source>
         <translation>+ 拟合滞后 %1 ms，被拒绝（%2）</translation>
     </message>

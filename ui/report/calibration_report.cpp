@@ -243,9 +243,10 @@ QString decisionRuleParagraph(const Verdict& v) {
   return s;
 }
 
-// A point's own risk for the results table: vouched points only.
+// A point's own risk for the results table: vouched points only (the
+// verdict beside it and the note under the table say why not).
 QString pointRiskText(const PointVerdict& p) {
-  if (!p.vouched || !std::isfinite(p.falseAcceptProbability)) return QObject::tr("— (%1)").arg(p.word);
+  if (!p.vouched || !std::isfinite(p.falseAcceptProbability)) return QObject::tr("— refused");
   return QString::fromStdString(analysis::probabilityText(p.falseAcceptProbability));
 }
 
@@ -351,14 +352,15 @@ void firstPage(PageFlow& flow, const Content& c) {
 
   flow.heading(QObject::tr("Results"));
   Table t;
-  t.columns = {{"#", 6, Qt::AlignLeft},
+  // 174 mm, the content width, with the risk column beside the verdict.
+  t.columns = {{"#", 5, Qt::AlignLeft},
                {QObject::tr("condition"), 29, Qt::AlignLeft},
-               {QObject::tr("lag ± 1σ (ms)"), 29, Qt::AlignRight},
-               {QObject::tr("CRLB (ms)"), 15, Qt::AlignRight},
-               {QObject::tr("IMU delay ± 1σ (ms)"), 30, Qt::AlignRight},
-               {QObject::tr("gyro delay ± 1σ (ms)"), 30, Qt::AlignRight},
-               {QObject::tr("P(false accept)"), 21, Qt::AlignRight},
-               {QObject::tr("verdict"), 19, Qt::AlignHCenter}};
+               {QObject::tr("lag ± 1σ (ms)"), 26, Qt::AlignRight},
+               {QObject::tr("CRLB (ms)"), 17, Qt::AlignRight},
+               {QObject::tr("IMU delay ± 1σ (ms)"), 27, Qt::AlignRight},
+               {QObject::tr("gyro delay ± 1σ (ms)"), 27, Qt::AlignRight},
+               {QObject::tr("P(false accept)"), 22, Qt::AlignRight},
+               {QObject::tr("verdict"), 21, Qt::AlignHCenter}};
   for (std::size_t i = 0; i < d.points.size(); ++i) {
     const auto& p = d.points[i];
     const int dec = decimalsFor(p.lagStdMs);

@@ -42,6 +42,10 @@ TEST(DecisionRule, TheMaximumFalseAcceptRiskIsTheNormalTailAtK) {
   EXPECT_NEAR(maxFalseAcceptProbability(10.0) / 7.619853024160527e-24, 1.0, 1e-12);
   EXPECT_EQ(probabilityText(maxFalseAcceptProbability(2.0)), "2.28 %");
   EXPECT_EQ(probabilityText(maxFalseAcceptProbability(3.0)), "0.135 %");
+  // Far beyond the limit's reach the tail underflows to 0: never shown as "0 %".
+  EXPECT_EQ(falseAcceptProbability(0.5, 1e-4, 0.8), 0.0);
+  EXPECT_EQ(probabilityText(falseAcceptProbability(0.5, 1e-4, 0.8)), "< 1e-6 %");
+  EXPECT_EQ(probabilityText(0.5), "50.0 %");
 }
 
 TEST(DecisionRule, APointJustAtTheBoundaryCarriesTheRulesMaximumRisk) {
