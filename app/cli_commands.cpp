@@ -127,6 +127,8 @@ int runCommand(CliArguments& args) {
   if (!constants) return fail(constants.status(), 2);
   auto limit = readDelayLimit(args);
   if (!limit) return fail(limit.status(), 2);
+  auto coverageK = readCoverageK(args);
+  if (!coverageK) return fail(coverageK.status(), 2);
   auto plan = readPlan(args);
   if (!plan) return fail(plan.status(), 2);
   const bool headingGiven = args.has("heading-deg");
@@ -165,6 +167,7 @@ int runCommand(CliArguments& args) {
                                  (effectText ? ", effect " + *effectText : std::string()) + ", fogbench " + FOG_VERSION;
   for (const auto& t : (*simulator)->truth()) options.reportContext.trueLagMs.push_back(t.lagS * 1e3);
   options.reportContext.imuDelayLimitMs = *limit;
+  options.reportContext.coverageK = *coverageK;
   if (*sessionOut) {
     options.sessionPath = (*sessionOut)->path;
     options.info = simulatedSessionInfo((*sessionOut)->info, *plan, *config, *constants);

@@ -152,6 +152,14 @@ Result<double> readDelayLimit(CliArguments& args) {
   return limit;
 }
 
+Result<double> readCoverageK(CliArguments& args) {
+  FOG_ASSIGN_OR_RETURN(auto k, args.number("coverage-k", analysis::kDefaultCoverageFactor));
+  if (const std::string why = analysis::coverageFactorProblem(k); !why.empty())
+    return invalidArgument("--coverage-k: " + why + " ('" + args.text("coverage-k").value_or("") +
+                           "'); give e.g. --coverage-k 2 (2.28 % false-accept risk) or 3 (0.135 %)");
+  return k;
+}
+
 std::string reportOutput(const analysis::DelayReport& report, const analysis::ReportContext& context, bool json) {
   auto responses = analysis::analyzeResponses(report);
   std::erase_if(responses, [](const auto& r) { return r.points.size() < 3; });

@@ -66,6 +66,9 @@ Result<std::array<int, kAxisCount>> parseGyroSigns(const std::string& text,
                                                    std::array<int, kAxisCount> signs = {1, 1, 1});
 // --limit-ms: the IMU delay limit of the verdict (default 0.8 ms).
 Result<double> readDelayLimit(CliArguments& args);
+// --coverage-k: the decision rule's coverage factor k (PASS when IMU delay +
+// k sigma < limit; default 2; a finite number in (0, 10]).
+Result<double> readCoverageK(CliArguments& args);
 // Writes the constants back into the settings a session stores.
 void storeConstants(const BenchConstants& constants, BenchConstants& bench);
 

@@ -28,7 +28,8 @@ namespace {
 const char* kHelp = R"(fogbench-cli: measure how late a fiber-optic gyro IMU reports rotation.
 
 usage:
-  fogbench-cli run [plan] [simulator options] [constants] [--save-raw FILE [--overwrite]] [--json]
+  fogbench-cli run [plan] [simulator options] [constants] [--limit-ms 0.8] [--coverage-k 2]
+                  [--save-raw FILE [--overwrite]] [--json]
       Run a test plan on the built-in simulator and print the delay report.
       plan: --plan FILE.json | --preset paper|paper-slow|paper-fast|quick|noise|response (default paper:
             0.1 Hz / 10 deg for 294 s and 1 Hz / 3 deg for 60 s on X; response: 20 frequencies
@@ -84,12 +85,15 @@ usage:
       sigma, then the pure-delay, first-order and second-order models fitted to
       them (sigma, correlation, chi2, AIC, BIC; chosen by AIC), the -3 dB
       bandwidth and the group delay at --at-hz. run --preset response records one.
-  fogbench-cli analyze FILE [constants] [--limit-ms 0.8] [--json] [--no-store] [--operator NAME]
+  fogbench-cli analyze FILE [constants] [--limit-ms 0.8] [--coverage-k 2] [--json] [--no-store] [--operator NAME]
       The same report from a saved raw sampling-board byte stream, or from a
       session file (its own bench constants unless given; the result is stored
       in the session as a new row unless --no-store). The verdict is pass, fail
-      (IMU delay + 2 sigma >= limit) or invalid (a validity check failed:
+      (IMU delay + k sigma >= limit) or invalid (a validity check failed:
       reversed axis, clock rate, not a steady sinusoid, negative delay).
+      --coverage-k K: the decision rule's coverage factor (default 2, within
+      (0, 10]), stored with the result; every report states the rule and its
+      false-accept risk 1 - Phi(k) (2.28 % at k = 2; docs/report.md).
       The stored result's audit entry: who (--operator, else the login name), this
       command line, the constants, the version and the SHA-256 of the raw stream.
   fogbench-cli batch DIR|FILE... --jsonl OUT.jsonl [--jobs N] [constants] [--limit-ms 0.8] [--db CATALOG]
@@ -108,7 +112,7 @@ usage:
       the catalog could not be updated (the results are stored).
   fogbench-cli sessions DIR [--json]
       List the sessions in a folder: date, operator, IMU, lot, bench, axes, state, latest lag.
-  fogbench-cli replay SESSION.fbs [--speed X | --afap] [constants] [--json]
+  fogbench-cli replay SESSION.fbs [--speed X | --afap] [constants] [--limit-ms 0.8] [--coverage-k 2] [--json]
       Feed a session's raw stream through the decoder at X times real time
       (default 1) or as fast as possible, and report.
   fogbench-cli import DIR | META.json TABLE.csv GYRO.csv --out SESSION.fbs [--segment auto|S-E,...]
@@ -120,6 +124,7 @@ usage:
       does not (with the IMU's frame period for frame_average). Both are stored with
       the session and every result of it.
   fogbench-cli export SESSION.fbs [--csv DIR] [--hdf5 FILE.h5] [--results-json FILE.json] [--overwrite] [constants]
+                     [--limit-ms L] [--coverage-k K]
       Decoded samples, fits and residuals as CSV (readable back by import);
       the same values, the per-period track and the shown result in one HDF5
       file (docs/formats.md, "HDF5 export"); the stored results and the current analysis as JSON.
@@ -129,16 +134,18 @@ usage:
   fogbench-cli accuracy [--seeds N] [--threads K]
       Monte Carlo study of both paper conditions (docs/accuracy.md).
   fogbench-cli report (SESSION.fbs | FILE.bin | --preset NAME [--seed N]) [--pdf OUT.pdf] [--png-dir DIR [--dpi 100]]
-                      [--overwrite] [--limit-ms 0.8] [--imu-model M --imu-serial S --operator NAME]
+                      [--overwrite] [--limit-ms 0.8] [--coverage-k 2] [--imu-model M --imu-serial S --operator NAME]
                       [--lot L --bench-id B]
                       [--language en|zh_CN] [constants]
       The calibration report (docs/report.md): PASS when every validity check passes
-      and IMU delay + 2 sigma < limit; a session brings its own identity and constants.
-      A session with a stored result is reported as stored (its settings, limit and
-      verdict; INCOMPLETE for a run stopped early): --limit-ms and constants apply only
-      to data without one (analyze stores another analysis first). Prints the unit (IMU,
-      serial, lot, bench, operator) and the session's audit trail, one line per stored
-      result; the PDF has it under "Analyses of this session".
+      and IMU delay + k sigma < limit (k = 2 unless --coverage-k); the report states
+      this decision rule, its k and its false-accept risk. A session brings its own
+      identity and constants. A session with a stored result is reported as stored
+      (its settings, limit, k and verdict; INCOMPLETE for a run stopped early):
+      --limit-ms, --coverage-k and constants apply only to data without one
+      (analyze stores another analysis first). Prints the unit (IMU, serial, lot,
+      bench, operator) and the session's audit trail, one line per stored result;
+      the PDF has it under "Analyses of this session".
   fogbench-cli diagnose SESSION.fbs|FILE.bin [--json] [--seeds K] [--threads T]
                         [--bias-instability DEG_H [--bias-correlation S]] [constants]
       Sim-to-real gap diagnosis (docs/diagnosis.md): where real and simulated data

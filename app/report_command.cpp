@@ -87,6 +87,7 @@ int reportCommand(CliArguments& args) {
   const auto preset = args.text("preset");
   auto seed = args.number("seed", 1.0);
   auto limit = args.number("limit-ms", 0.8);
+  auto coverageK = readCoverageK(args);
   auto dpi = args.number("dpi", 100.0);
   const auto imuModel = args.text("imu-model");
   const auto imuSerial = args.text("imu-serial");
@@ -95,7 +96,7 @@ int reportCommand(CliArguments& args) {
   const auto benchId = args.text("bench-id");
   const auto language = args.text("language");
   const bool overwrite = args.flag("overwrite");
-  for (const auto* r : {&seed, &limit, &dpi})
+  for (const auto* r : {&seed, &limit, &dpi, &coverageK})
     if (!*r) return fail(r->status(), 2);
   const auto& files = args.positionals();
   Status bad;
@@ -136,6 +137,7 @@ int reportCommand(CliArguments& args) {
     storeConstants(*constants, in.info.bench);
     in.delays = std::move(*delays);
     in.imuDelayLimitMs = *limit;
+    in.coverageK = *coverageK;
   } else {
     // A session file (recorded or imported) or a saved raw sampling-board
     // stream, read as every command reads them. A session brings its own
@@ -147,7 +149,7 @@ int reportCommand(CliArguments& args) {
       // A stored result is a record: reported with the settings and verdict
       // it was stored with. Other settings are another analysis, stored as a
       // new result first; never a silent re-judgement on paper.
-      for (const char* option : {"limit-ms", "read-delay-ms", "read-delay-std-ms", "board-delay-ms",
+      for (const char* option : {"limit-ms", "coverage-k", "read-delay-ms", "read-delay-std-ms", "board-delay-ms",
                                  "board-delay-std-ms", "pulse-equivalent-deg", "gyro-sign", "imu-frame"})
         if (args.has(option)) {
           (void)args.checkAllUsed();
@@ -164,7 +166,7 @@ int reportCommand(CliArguments& args) {
     auto constants = readConstants(args, opened->info.bench);
     if (!constants) return fail(constants.status(), 2);
     if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
-    auto shown = session::showResult(*opened, 0, *constants, *limit);
+    auto shown = session::showResult(*opened, 0, *constants, *limit, *coverageK);
     if (!shown.report) return fail(shown.report.status(), exitCodeFor(shown.report.status()));
     SessionInfo info = opened->info;
     info.source = shown.context.source;
@@ -172,7 +174,7 @@ int reportCommand(CliArguments& args) {
     in = report::makeReportInput(std::move(info), std::move(opened->recording), std::move(*shown.report),
                                  std::move(opened->rawBytes), shown.record ? &*shown.record : nullptr,
                                  shown.context.imuDelayLimitMs, shown.context.incompleteReason,
-                                 QString::fromStdString(shown.description));
+                                 QString::fromStdString(shown.description), shown.context.coverageK);
     in.analyses = opened->results;
   }
   if (imuModel) in.info.imuModel = *imuModel;
@@ -222,7 +224,18 @@ int reportCommand(CliArguments& args) {
   }
   if (!in.resultShown.isEmpty()) std::cout << "result shown: " << in.resultShown.toStdString() << "\n";
   std::cout << verdict.headline.toStdString() << "\n";
-  for (const auto& p : verdict.points) std::cout << "  test point " << p.index + 1 << ": " << p.line.toStdString() << "\n";
+  // The rule the verdict applied, with the shown result's own k (ISO/IEC 17025 §7.8.6).
+  std::cout << analysis::decisionRuleStatement(verdict.coverageK, verdict.limitMs)
+            << (verdict.ruleProvenance.isEmpty() ? std::string() : " (k " + verdict.ruleProvenance.toStdString() + ")")
+            << "\n";
+  for (const auto& p : verdict.points) {
+    std::cout << "  test point " << p.index + 1 << ": " << p.line.toStdString() << "\n";
+    if (p.vouched && std::isfinite(p.falseAcceptProbability))
+      std::cout << "    guard band " << analysis::coverageFactorText(verdict.coverageK) << "σ = "
+                << QString::number(p.guardBandMs, 'g', 4).toStdString()
+                << " ms; probability that the true delay is at or above the limit: "
+                << analysis::probabilityText(p.falseAcceptProbability) << "\n";
+  }
   return 0;
 }
 

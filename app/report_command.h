@@ -4,7 +4,7 @@
 // (FOG_HAVE_REPORT); the headless build says so instead.
 //
 //   fogbench-cli report (FILE.bin | --preset NAME [--seed N]) [--pdf OUT.pdf]
-//                       [--png-dir DIR [--dpi 100]] [--limit-ms 0.8]
+//                       [--png-dir DIR [--dpi 100]] [--limit-ms 0.8] [--coverage-k 2]
 //                       [--imu-model M --imu-serial S --operator NAME] [constants]
 //
 // Exit codes as the other commands: 0 the report was written (whatever its

@@ -103,9 +103,12 @@ int analyzeCommand(CliArguments& args) {
   if (!constants) return fail(constants.status(), 2);
   auto limit = readDelayLimit(args);
   if (!limit) return fail(limit.status(), 2);
+  auto coverageK = readCoverageK(args);
+  if (!coverageK) return fail(coverageK.status(), 2);
   if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
   settings.constants = *constants;
   settings.imuDelayLimitMs = *limit;
+  settings.coverageK = *coverageK;
   const auto result = session::analyseAndStore(*opened, settings, !noStore);
   if (!result.report) return fail(result.report.status(), exitCodeFor(result.report.status()));
   std::cout << reportOutput(*result.report, result.context, json);
@@ -234,6 +237,8 @@ int replayCommand(CliArguments& args) {
   if (!constants) return fail(constants.status(), 2);
   auto limit = readDelayLimit(args);
   if (!limit) return fail(limit.status(), 2);
+  auto coverageK = readCoverageK(args);
+  if (!coverageK) return fail(coverageK.status(), 2);
   if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
 
   acquisition::ReplaySource source(std::move(opened->rawBytes), afap ? 0.0 : *speed, "session " + path);
@@ -249,6 +254,7 @@ int replayCommand(CliArguments& args) {
   context.source = opened->sourceLine("replay of session");
   if (!opened->complete) context.incompleteReason = opened->incompleteReason;
   context.imuDelayLimitMs = *limit;
+  context.coverageK = *coverageK;
   const auto& report = replayed->report;
   if (!report) return fail(report.status(), exitCodeFor(report.status()));
   std::cout << reportOutput(*report, context, json);
@@ -345,6 +351,7 @@ int exportCommand(CliArguments& args) {
   context.source = opened->sourceLine();
   if (!opened->complete) context.incompleteReason = opened->incompleteReason;
   context.imuDelayLimitMs = *limit;
+  context.coverageK = settings->coverageK;
 
   if (csvDir) {
     SessionInfo info = opened->info;
@@ -352,7 +359,8 @@ int exportCommand(CliArguments& args) {
     // delays.csv: the numbers with the verdict shown with them (the stored
     // result's when these are its settings, else judged now).
     const auto verdict = session::judgeShown(settings->shownResult, report ? &*report : nullptr, opened->complete,
-                                             opened->incompleteReason, *limit);
+                                             opened->incompleteReason, *limit,
+                                             settings->coverageK);
     const std::string delays = report ? session::delayBreakdownCsv(*report, verdict, opened->sourceLine()) : "";
     if (auto s = io::exportCsv(*csvDir, info, recording, report ? &*report : nullptr, overwrite, delays); !s.isOk())
       return fail(overwrite || s.code() != StatusCode::kInvalidArgument ? s : Status(s.code(), s.message() + " (--overwrite)"), 2);
@@ -365,7 +373,8 @@ int exportCommand(CliArguments& args) {
     SessionInfo info = opened->info;
     storeConstants(*constants, info.bench);
     const auto verdict = session::judgeShown(settings->shownResult, report ? &*report : nullptr, opened->complete,
-                                             opened->incompleteReason, *limit);
+                                             opened->incompleteReason, *limit,
+                                             settings->coverageK);
     io::Hdf5ExportInput in;
     in.info = &info;
     in.recording = &recording;
@@ -430,7 +439,7 @@ int exportCommand(CliArguments& args) {
                   {"raw_bytes", opened->rawByteCount}}},
                 {"stored_results", results},
                 {"current_analysis",
-                 report ? json{{"settings", json::parse(session::analysisSettingsJson(*constants, context.imuDelayLimitMs, "fogbench-cli export", info.imported))},
+                 report ? json{{"settings", json::parse(session::analysisSettingsJson(*constants, context.imuDelayLimitMs, "fogbench-cli export", info.imported, nullptr, context.coverageK))},
                                {"report", json::parse(analysis::formatReportJson(*report, context))}}
                         : json{{"error", report.status().message()}}}};
     // Serialised before the file is opened: nothing can leave it empty.

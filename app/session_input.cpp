@@ -48,11 +48,15 @@ Result<CommandSettings> shownResultSettings(CliArguments& args, const session::O
   }
   FOG_ASSIGN_OR_RETURN(out.constants, readConstants(args, base));
   out.imuDelayLimitMs = shown ? shown->imuDelayLimitMs : analysis::kDefaultImuDelayLimitMs;
+  out.coverageK = shown ? shown->coverageK : analysis::kDefaultCoverageFactor;
   if (withLimit && args.has("limit-ms")) {
     FOG_ASSIGN_OR_RETURN(out.imuDelayLimitMs, readDelayLimit(args));
   }
+  if (withLimit && args.has("coverage-k")) {
+    FOG_ASSIGN_OR_RETURN(out.coverageK, readCoverageK(args));
+  }
   if (!shown) return out;
-  if (!given && !(withLimit && args.has("limit-ms"))) out.shownResult = shown;
+  if (!given && !(withLimit && (args.has("limit-ms") || args.has("coverage-k")))) out.shownResult = shown;
   const std::string which = session::describeResult(opened.results, *shown);
   out.note = given ? "analysed with the constants given on the command line over the session's own, not those of "
                      "the result shown (" + which + ")"

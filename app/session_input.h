@@ -37,6 +37,7 @@ std::optional<session::OpenedSession> openFileArgument(CliArguments& args, const
 struct CommandSettings {
   BenchConstants constants;
   double imuDelayLimitMs = 0.0;
+  double coverageK = analysis::kDefaultCoverageFactor;  // --coverage-k with the limit, else the shown result's
   std::string note;
   // The shown stored result whose settings these are exactly (null when the
   // command line gave others, or none is stored): its verdict is the one

@@ -75,6 +75,7 @@ bool AcquisitionRunner::start(RunRequest request) {
       outcome->report = std::move(result->report);
       outcome->truth = request.truth;
       outcome->imuDelayLimitMs = request.options.reportContext.imuDelayLimitMs;
+      outcome->coverageK = request.options.reportContext.coverageK;
       // The result the run stored is the session's first: shown as such.
       if (!outcome->sessionPath.empty() && outcome->report)
         if (auto opened = session::openSessionOrStream(outcome->sessionPath, session::OpenOptions::sessionRecords())) {

@@ -4,6 +4,7 @@
 #include <QDialogButtonBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
 #include <QSettings>
@@ -12,6 +13,7 @@
 
 #include <algorithm>
 
+#include "core/analysis/decision_rule.h"
 #include "ui/core_text.h"
 
 namespace fog::ui {
@@ -91,6 +93,8 @@ AnalysisChoices loadAnalysisChoices() {
         q.value(QString("gyro_sign_%1").arg(axisName(static_cast<Axis>(a))), 1).toInt() < 0 ? -1 : 1;
   const double limit = q.value("imu_delay_limit_ms", c.imuDelayLimitMs).toDouble();
   if (limit > 0.0 && limit <= 1e6) c.imuDelayLimitMs = limit;
+  const double k = q.value("coverage_factor_k", c.coverageK).toDouble();
+  if (analysis::coverageFactorProblem(k).empty()) c.coverageK = k;  // a hand-edited bad k: the default
   return c;
 }
 
@@ -100,6 +104,7 @@ void saveAnalysisChoices(const AnalysisChoices& c) {
   for (int a = 0; a < kAxisCount; ++a)
     q.setValue(QString("gyro_sign_%1").arg(axisName(static_cast<Axis>(a))), c.gyroSign[static_cast<std::size_t>(a)]);
   q.setValue("imu_delay_limit_ms", c.imuDelayLimitMs);
+  q.setValue("coverage_factor_k", c.coverageK);
 }
 
 BenchSettingsDialog::BenchSettingsDialog(const BenchConstants& s, const AnalysisChoices& choices, QWidget* parent)
@@ -173,11 +178,30 @@ BenchSettingsDialog::BenchSettingsDialog(const BenchConstants& s, const Analysis
   limit_ = spin(0.001, 1000.0, 3, tr(" ms"), choices.imuDelayLimitMs);
   limit_->setObjectName("limitSpin");
   form->addRow(tr("IMU delay limit (acceptance)"), limit_);
+  // Beside the limit: the rule is "IMU delay + k·σ < limit" (decision_rule.h).
+  coverageK_ = spin(0.1, analysis::kMaxCoverageFactor, 2, QString(), choices.coverageK);
+  coverageK_->setObjectName("coverageKSpin");
+  coverageK_->setSingleStep(0.5);
+  coverageK_->setToolTip(tr("PASS when IMU delay + k·σ < limit (one-sided guarded acceptance, ISO/IEC 17025:2017 "
+                            "§7.8.6); the guard band below the limit is k·σ"));
+  coverageRisk_ = new QLabel();
+  coverageRisk_->setObjectName("coverageKRisk");
+  auto showRisk = [this] {
+    coverageRisk_->setText(tr("maximum false-accept risk 1 − Φ(k) = %1")
+                               .arg(QString::fromStdString(analysis::probabilityText(
+                                   analysis::maxFalseAcceptProbability(coverageK_->value())))));
+  };
+  showRisk();
+  connect(coverageK_, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, showRisk);
+  auto* kRow = new QHBoxLayout();
+  kRow->addWidget(coverageK_);
+  kRow->addWidget(coverageRisk_, 1);
+  form->addRow(tr("  coverage factor k (PASS: delay + k·σ < limit)"), kRow);
 
   auto* note = new QLabel(tr("IMU delay = measured lag + table read delay; gyro's own delay = IMU delay − "
                              "processing-board delay. The pulse equivalent is used only when the board's stream "
                              "does not state it; the simulator uses these values for the chain it simulates. "
-                             "The gyro signs and the limit are stored with every result: changing them changes "
+                             "The gyro signs, the limit and k are stored with every result: changing them changes "
                              "no stored verdict; re-analyse a session to store a new result with them."));
   note->setWordWrap(true);
   // What checkBenchConstants refuses, shown here when OK is pressed (the
@@ -206,6 +230,7 @@ BenchSettingsDialog::BenchSettingsDialog(const BenchConstants& s, const Analysis
     imuFrame_->setCurrentIndex(0);
     forwardHeading_->setValue(forwardHeading_->minimum());
     limit_->setValue(AnalysisChoices{}.imuDelayLimitMs);
+    coverageK_->setValue(AnalysisChoices{}.coverageK);
   });
   auto* layout = new QVBoxLayout(this);
   layout->addLayout(form);
@@ -250,6 +275,7 @@ AnalysisChoices BenchSettingsDialog::analysisChoices() const {
   AnalysisChoices c;
   for (std::size_t a = 0; a < gyroSign_.size(); ++a) c.gyroSign[a] = gyroSign_[a]->currentData().toInt() < 0 ? -1 : 1;
   c.imuDelayLimitMs = limit_->value();
+  c.coverageK = coverageK_->value();
   return c;
 }
 

@@ -208,9 +208,17 @@ const char* const kTemplates[] = {
     QT_TRANSLATE_NOOP("core_text", "%1 (no delay)"),
     QT_TRANSLATE_NOOP("core_text", "no test point gave a delay"),
     QT_TRANSLATE_NOOP("core_text", "the delay or its uncertainty is not a finite number"),
-    QT_TRANSLATE_NOOP("core_text", "every test point passed its validity checks and its IMU delay + 2σ is below the %1 ms limit"),
-    QT_TRANSLATE_NOOP("core_text", "IMU delay %1 ± %2 ms; + 2σ = %3 ms < %4 ms limit (margin %5 ms)"),
-    QT_TRANSLATE_NOOP("core_text", "IMU delay %1 ± %2 ms; + 2σ = %3 ms ≥ %4 ms limit (over by %5 ms)"),
+    // analysis::judgePoint/judgeReport: k is the decision rule's coverage factor (decision_rule.h)
+    QT_TRANSLATE_NOOP("core_text", "every test point passed its validity checks and its IMU delay + %1σ is below the %2 ms limit"),
+    QT_TRANSLATE_NOOP("core_text", "IMU delay %1 ± %2 ms; + %3σ = %4 ms < %5 ms limit (margin %6 ms)"),
+    QT_TRANSLATE_NOOP("core_text", "IMU delay %1 ± %2 ms; + %3σ = %4 ms ≥ %5 ms limit (over by %6 ms)"),
+    // The text report's decision rule and each point's risk (analysis/decision_rule.h, report_writer.cpp)
+    QT_TRANSLATE_NOOP("core_text", "decision rule: PASS when IMU delay + k·σ < limit (k = %1, one-sided guarded acceptance, ISO/IEC 17025:2017 §7.8.6 / ILAC-G8:09/2019); FAIL otherwise; INVALID when a validity check fails; maximum probability of false accept 1 − Φ(k) = %2 (a delay measured just at the acceptance boundary, with a Gaussian error of the stated σ); limit %3 ms"),
+    QT_TRANSLATE_NOOP("core_text", "guard band %1σ = %2 ms; probability that the true delay is at or above the limit: %3"),
+    QT_TRANSLATE_NOOP("core_text", "no false-accept probability: the delay is refused (INVALID)"),
+    QT_TRANSLATE_NOOP("core_text", "no false-accept probability: the run stopped before its plan ended (INCOMPLETE)"),
+    // session::decisionRuleProvenance: a row stored before k was kept
+    QT_TRANSLATE_NOOP("core_text", "not stored: the rule of that version, k = %1"),
     QT_TRANSLATE_NOOP("core_text", "the gyro turns with the table (gyro/table ratio %1)"),
     QT_TRANSLATE_NOOP("core_text", "the gyro turns with the table (gyro/table ratio %1, after the stated sign -1)"),
     QT_TRANSLATE_NOOP("core_text", "the gyro's %1 axis turns against the table (gyro/table ratio %2): the axis is mounted the other way round or its sign convention differs from the table's; the delay is refused (read as a normal axis it would be a half-period lag). If the IMU is mounted so, state it (metadata bench.gyro_sign {\"%3\": -1}, or --gyro-sign %4=-1) and analyse again"),

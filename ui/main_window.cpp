@@ -780,6 +780,7 @@ Result<RunRequest> MainWindow::buildRunRequest() const {
   request.options.info.bench.gyroSign = analysis_.gyroSign;
   request.options.constants = request.options.info.bench;
   request.options.reportContext.imuDelayLimitMs = analysis_.imuDelayLimitMs;
+  request.options.reportContext.coverageK = analysis_.coverageK;
   TestPlan plan;
   if (kind == SourceKind::kSimulator) {
     plan = planEditor_->plan();
@@ -1084,6 +1085,7 @@ void MainWindow::loadSession(const QString& path, bool reanalyse, std::int64_t r
           for (std::size_t a = 0; a < settings.constants.gyroSign.size(); ++a)
             if (choices.gyroSign[a] < 0) settings.constants.gyroSign[a] = -1;
           settings.imuDelayLimitMs = choices.imuDelayLimitMs;
+          settings.coverageK = choices.coverageK;
           settings.producedBy = "fogbench GUI";
           settings.tool = "fogbench GUI Results";
           settings.command = "Results view: re-analyse with the bench constants";
@@ -1102,7 +1104,7 @@ void MainWindow::loadSession(const QString& path, bool reanalyse, std::int64_t r
           if (const ResultRecord* shown = outcome->shownResult(); shown && outcome->report)
             outcome->differences = session::differencesFromRecord(*shown, *outcome->report);
         } else {
-          auto shown = session::showResult(*opened, resultId, constants, choices.imuDelayLimitMs);
+          auto shown = session::showResult(*opened, resultId, constants, choices.imuDelayLimitMs, choices.coverageK);
           constants = shown.constants;
           if (shown.record) outcome->shownResultId = shown.record->id;
           outcome->report = std::move(shown.report);

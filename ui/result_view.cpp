@@ -38,6 +38,7 @@
 #include <qwt_symbol.h>
 
 #include "core/common/gyro_signs.h"
+#include "core/analysis/decision_rule.h"
 #include "core/analysis/theory.h"
 #include "ui/data_export.h"
 #include "core/session/shown_csv.h"
@@ -103,7 +104,10 @@ QString constantsAndConventionsText(const BenchConstants& constants, const ImuFr
 
 QString settingsText(const ResultRecord& r, const ImuFrame& sessionFrame) {
   return constantsAndConventionsText(r.constants, sessionFrame) +
-         QObject::tr(", limit %1 ms").arg(num(r.imuDelayLimitMs, 3)) + importText(r.imported);
+         QObject::tr(", limit %1 ms").arg(num(r.imuDelayLimitMs, 3)) +
+         (r.coverageKStated ? QObject::tr(", k = %1").arg(QString::fromStdString(analysis::coverageFactorText(r.coverageK)))
+                            : QObject::tr(", k = 2 (not stored: the rule of that version)")) +
+         importText(r.imported);
 }
 
 QString versionText(const ResultRecord& r) {
@@ -219,6 +223,14 @@ void ResultView::buildHeader(QVBoxLayout* layout) {
   verdictLabel_->setWordWrap(true);
   verdictLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   layout->addWidget(verdictLabel_);
+  // Under it, the rule the verdict applied with its k and risk (ISO/IEC
+  // 17025 §7.8.6): the shown result's, never today's setting. A label of its
+  // own, so the verdict's words stay the verdict's.
+  decisionRuleLabel_ = new QLabel();
+  decisionRuleLabel_->setObjectName("decisionRuleLabel");
+  decisionRuleLabel_->setWordWrap(true);
+  decisionRuleLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  layout->addWidget(decisionRuleLabel_);
   connect(testPointCombo_, qOverload<int>(&QComboBox::currentIndexChanged), this, &ResultView::showTestPoint);
 }
 
@@ -412,6 +424,7 @@ void ResultView::clear() {
   }
   lagLabel_->setText(tr("No result yet: run a test plan (Run) or open a session (Sessions)."));
   verdictLabel_->clear();
+  decisionRuleLabel_->clear();
   resultCombo_->clear();
   resultCombo_->setEnabled(false);
   anglePlot_->clearCurves();
@@ -615,6 +628,23 @@ bool ResultView::eventFilter(QObject* watched, QEvent* event) {
   return QWidget::eventFilter(watched, event);
 }
 
+// One line: the decision rule with the shown result's k, its maximum
+// false-accept risk, and the point's own risk when its delay is vouched for.
+QString ResultView::decisionRuleHtml(const session::ShownVerdict& v, const session::ShownPoint* sp) const {
+  const QString k = QString::fromStdString(analysis::coverageFactorText(v.coverageK));
+  QString line = tr("Decision rule: PASS when IMU delay + k·σ < limit (k = %1, guarded acceptance, ISO/IEC "
+                    "17025:2017 §7.8.6); maximum false-accept risk 1 − Φ(k) = %2")
+                     .arg(k, QString::fromStdString(
+                                 analysis::probabilityText(analysis::maxFalseAcceptProbability(v.coverageK))));
+  if (!v.ruleProvenance.empty()) line += tr(" (k %1)").arg(coreText(v.ruleProvenance));
+  if (sp && sp->vouched() && std::isfinite(sp->falseAcceptProbability))
+    line += tr("; this point: guard band %1 ms, P(true delay ≥ limit) = %2")
+                .arg(num(sp->guardBandMs, 4), QString::fromStdString(analysis::probabilityText(sp->falseAcceptProbability)));
+  else
+    line += tr("; this point: no risk stated, its delay is refused");
+  return "<span style='color:#555555'>" + line.toHtmlEscaped() + "</span>";
+}
+
 QString ResultView::verdictHtml(const analysis::TestPointResult& p) const {
   // Core's one rule (session::judgeShown): the record's verdict, reasons and
   // limit, never re-judged here; a result not stored is judged there once.
@@ -687,6 +717,10 @@ void ResultView::showTestPoint(int position) {
   const auto& p = outcome_->report->points[i];
   lagLabel_->setText(headlineHtml(p));
   verdictLabel_->setText(verdictHtml(p));
+  {
+    const session::ShownVerdict v = outcome_->shownVerdict();
+    decisionRuleLabel_->setText(decisionRuleHtml(v, v.point(p.index)));
+  }
   fillTables(i);
 
   // Aliasing pointers: the plots share the outcome, nothing is copied.
@@ -925,7 +959,7 @@ Result<report::ReportInput> ResultView::reportInput() const {
   auto in = report::makeReportInput(outcome_->info, outcome_->recording, *outcome_->report, std::move(rawBytes),
                                     outcome_->shownResult(), outcome_->imuDelayLimitMs,
                                     outcome_->complete ? std::string() : outcome_->incompleteReason,
-                                    resultDescription());
+                                    resultDescription(), outcome_->coverageK);
   in.analyses = std::move(analyses);
   return in;
 }

@@ -59,6 +59,7 @@ class ResultView : public QWidget {
   // is INCOMPLETE. Says when this version's analysis differs from the record.
   QString verdictHtml(const analysis::TestPointResult& point) const;
   QString headlineHtml(const analysis::TestPointResult& point) const;
+  QString decisionRuleHtml(const session::ShownVerdict& shown, const session::ShownPoint* point) const;
 
   SeriesPlot* anglePlot() const { return anglePlot_; }
   SeriesPlot* residualPlot() const { return residualPlot_; }
@@ -142,6 +143,7 @@ class ResultView : public QWidget {
   QComboBox* resultCombo_ = nullptr;
   QLabel* lagLabel_ = nullptr;
   QLabel* verdictLabel_ = nullptr;
+  QLabel* decisionRuleLabel_ = nullptr;  // the shown result's decision rule and the point's risk
   QToolButton* exportButton_ = nullptr;
   QPushButton* diagnoseButton_ = nullptr;
   SeriesPlot* anglePlot_ = nullptr;

@@ -31,7 +31,8 @@ int RunOutcome::shownResultNumber() const {
 }
 
 session::ShownVerdict RunOutcome::shownVerdict() const {
-  return session::judgeShown(shownResult(), report ? &*report : nullptr, complete, incompleteReason, imuDelayLimitMs);
+  return session::judgeShown(shownResult(), report ? &*report : nullptr, complete, incompleteReason, imuDelayLimitMs,
+                             coverageK);
 }
 
 void completeOutcome(RunOutcome& outcome, const std::string& source) {
@@ -62,6 +63,7 @@ void completeOutcome(RunOutcome& outcome, const std::string& source) {
   context.source = source;
   const ResultRecord* shown = outcome.shownResult();
   context.imuDelayLimitMs = shown ? shown->imuDelayLimitMs : outcome.imuDelayLimitMs;
+  context.coverageK = shown ? shown->coverageK : outcome.coverageK;
   if (!outcome.complete) context.incompleteReason = outcome.incompleteReason;
   // The report pairs trueLagMs with its points by position; a test point that
   // gave no delay is missing from report.points, so match by index.

@@ -42,6 +42,7 @@ struct RunOutcome {
   // The limit a result not stored in a session is judged with (the run's
   // setting); a stored result's verdict and limit are its record's.
   double imuDelayLimitMs = analysis::kDefaultImuDelayLimitMs;
+  double coverageK = analysis::kDefaultCoverageFactor;  // likewise the decision rule's k
   // The session's stored results, oldest first (empty when not recorded),
   // and which of them `report` is (0: none; the report was computed from
   // the session's own constants because none is stored).

@@ -84,7 +84,7 @@ static Status finishSession(std::unique_ptr<session::SessionWriter> writer, cons
   return session::addResult(
       options.sessionPath,
       session::analysisSettingsJson(options.constants, options.reportContext.imuDelayLimitMs, "acquisition", {},
-                                    &audit),
+                                    &audit, options.reportContext.coverageK),
       analysis::formatReportJson(*result.report, reportContextOf(result, options)));
 }
 

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "core/analysis/decision_rule.h"
 #include "core/analysis/uncertainty_bound.h"
 #include "core/common/gyro_signs.h"
 #include "core/common/text.h"
@@ -50,6 +51,23 @@ nlohmann::json fitJson(const SineFit& s) {
           {"chi2_per_dof", s.chiSquarePerDof}, {"samples", s.samples}};
 }
 
+// Why a point carries no risk number ("" when it does): its delay is refused
+// (INVALID), or the run stopped early (every point INCOMPLETE).
+std::string riskRefusal(const PointVerdict& v, const ReportContext& context) {
+  if (v.verdict == Verdict::kInvalid) return "no false-accept probability: the delay is refused (INVALID)";
+  if (!context.incompleteReason.empty())
+    return "no false-accept probability: the run stopped before its plan ended (INCOMPLETE)";
+  return {};
+}
+
+// "risk: guard band k·σ = 0.0030 ms; probability that the true delay is at
+// or above the limit 1e-6 %" or why there is none.
+std::string pointRiskText(const PointVerdict& v, const ReportContext& context) {
+  if (const std::string why = riskRefusal(v, context); !why.empty()) return why;
+  return "guard band " + coverageFactorText(context.coverageK) + "σ = " + f("%.4g", v.guardBandMs) +
+         " ms; probability that the true delay is at or above the limit: " + probabilityText(v.falseAcceptProbability);
+}
+
 }  // namespace
 
 std::string incompleteRunText(const ReportContext& context) {
@@ -64,7 +82,7 @@ std::string formatReportText(const DelayReport& report, const ReportContext& con
   std::ostringstream o;
   const auto& c = report.constants;
   const auto& h = report.health;
-  const ReportVerdict verdict = judgeReport(report, context.imuDelayLimitMs);
+  const ReportVerdict verdict = judgeReport(report, context.imuDelayLimitMs, context.coverageK);
   o << "fogbench delay report\n";
   if (!context.source.empty()) o << "source: " << context.source << "\n";
   if (!context.incompleteReason.empty())
@@ -74,6 +92,8 @@ std::string formatReportText(const DelayReport& report, const ReportContext& con
   else
     o << "verdict: " << upper(verdictName(verdict.verdict)) << "\n";
   for (const auto& why : verdict.reasons) o << "  " << why << "\n";
+  // ISO/IEC 17025 §7.8.6: a statement of conformity states its rule and risk.
+  o << decisionRuleStatement(context.coverageK, context.imuDelayLimitMs) << "\n";
   o << "stream: " << h.tableFrames << " table, " << h.imuFrames << " IMU, " << h.statusFrames
     << " status frames; " << h.checksumFailures << " checksum failures, " << h.lostFrames << " lost, "
     << h.duplicateFrames << " duplicated, " << h.bytesSkipped << " bytes skipped\n";
@@ -139,6 +159,7 @@ std::string formatReportText(const DelayReport& report, const ReportContext& con
     o << "  verdict: " << upper(verdictName(pv.verdict)) << (pv.verdict == Verdict::kInvalid ? " (delay refused)" : "")
       << "\n";
     for (const auto& why : pv.reasons) o << "    " << why << "\n";
+    o << "    " << pointRiskText(pv, context) << "\n";
   }
   for (const auto& s : report.staticSegments)
     o << "\nTest point " << s.index + 1 << ": static segment, " << axisLabel(s.axis) << " axis, "
@@ -162,7 +183,7 @@ std::string formatReportText(const DelayReport& report, const ReportContext& con
 
 std::string formatReportJson(const DelayReport& report, const ReportContext& context) {
   using nlohmann::json;
-  const ReportVerdict verdict = judgeReport(report, context.imuDelayLimitMs);
+  const ReportVerdict verdict = judgeReport(report, context.imuDelayLimitMs, context.coverageK);
   json doc;
   doc["report_format"] = 1;  // bump on any incompatible change (docs/report.md)
   doc["verdict"] = verdictName(verdict.verdict);
@@ -176,6 +197,11 @@ std::string formatReportJson(const DelayReport& report, const ReportContext& con
                   {"planned_s", context.plannedS}};
   }
   doc["imu_delay_limit_ms"] = verdict.limitMs;
+  doc["decision_rule"] = {{"rule", kDecisionRuleName},
+                          {"coverage_factor_k", verdict.coverageK},
+                          {"limit_ms", verdict.limitMs},
+                          {"max_false_accept_probability", maxFalseAcceptProbability(verdict.coverageK)},
+                          {"statement", decisionRuleStatement(verdict.coverageK, verdict.limitMs)}};
   doc["software"] = "fogbench";
   doc["source"] = context.source;
   const auto& c = report.constants;
@@ -196,6 +222,8 @@ std::string formatReportJson(const DelayReport& report, const ReportContext& con
     json tp = {{"index", p.index},
                {"verdict", verdictName(verdict.points[pi].verdict)},
                {"verdict_reasons", verdict.points[pi].reasons},
+               {"guard_band_ms", nullptr},
+               {"false_accept_probability", nullptr},
                {"axis", axisName(p.axis)},
                {"frequency_hz", p.nominalFrequencyHz},
                {"amplitude_deg", p.tableFit.amplitudeDeg},
@@ -257,6 +285,13 @@ std::string formatReportJson(const DelayReport& report, const ReportContext& con
     for (const auto& d : p.periodTrack)
       track.push_back({{"time_s", d.timeS}, {"lag_ms", d.lagMs}, {"table_amplitude_deg", d.tableAmplitudeDeg}});
     tp["period_track"] = track;
+    // Only a vouched delay carries a risk number (shown_verdict.h).
+    if (const std::string why = riskRefusal(verdict.points[pi], context); why.empty()) {
+      tp["guard_band_ms"] = verdict.points[pi].guardBandMs;
+      tp["false_accept_probability"] = verdict.points[pi].falseAcceptProbability;
+    } else {
+      tp["false_accept_note"] = why;
+    }
     tp["period_mean_lag_ms"] = p.periodMeanLagMs;
     tp["period_scatter_ms"] = p.periodScatterMs;
     json checks = json::array();

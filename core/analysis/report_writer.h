@@ -5,11 +5,14 @@
 // JSON layout: {"verdict": "pass"|"fail"|"invalid"|"incomplete", "verdict_reasons": [...],
 //   "run": {"complete", "incomplete_reason", "recorded_s", "planned_s"} and
 //   "data_verdict" (only for an incomplete run),
-//   "imu_delay_limit_ms": ..., "software": ..., "source": ..., "constants": {...},
+//   "imu_delay_limit_ms": ..., "decision_rule": {"rule", "coverage_factor_k",
+//   "limit_ms", "max_false_accept_probability", "statement"}, "software": ..., "source": ..., "constants": {...},
 //   "stream": {...}, "test_points": [{"axis", "frequency_hz", "amplitude_deg",
 //   "table_fit": {"period_ms", "phase_ms", "amplitude_deg", ...},
 //   "gyro_fit": {...}, "lag_ms", "lag_std_ms", "crlb_ms", "imu_delay_ms",
-//   "gyro_delay_ms", "verdict", "verdict_reasons", "checks": [{"id", "passed",
+//   "gyro_delay_ms", "verdict", "verdict_reasons", "guard_band_ms",
+//   "false_accept_probability" (null, with "false_accept_note", for a point
+//   whose delay is refused), "checks": [{"id", "passed",
 //   "detail"}], ...}], "frequency_consistency": [...], "failed_points": [...]}
 // (docs/report.md lists every key.)
 
@@ -29,6 +32,9 @@ struct ReportContext {
   std::vector<double> trueLagMs;
   // The acceptance limit of the verdict (verdict.h).
   double imuDelayLimitMs = kDefaultImuDelayLimitMs;
+  // The decision rule's coverage factor k (decision_rule.h): PASS needs
+  // IMU delay + k sigma < the limit.
+  double coverageK = kDefaultCoverageFactor;
   // The run ended before its plan did (stopped by the operator, a vanished
   // port, a full disk, the memory budget): why; empty for a complete run or
   // data of unknown completeness. The report's verdict is then "incomplete",

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "core/common/text.h"
 
@@ -29,10 +30,12 @@ const char* verdictName(Verdict v) {
   return "invalid";
 }
 
-PointVerdict judgePoint(const TestPointResult& p, double limitMs) {
+PointVerdict judgePoint(const TestPointResult& p, double limitMs, double k) {
   PointVerdict v;
   v.index = p.index;
-  v.upperMs = p.imuDelayMs + kVerdictCoverageFactor * p.imuDelayStdMs;
+  v.guardBandMs = guardBandMs(k, p.imuDelayStdMs);
+  v.upperMs = p.imuDelayMs + v.guardBandMs;
+  v.falseAcceptProbability = std::numeric_limits<double>::quiet_NaN();
   for (const auto& c : p.checks)
     if (c.judged && !c.passed) v.reasons.push_back(c.detail);
   if (!std::isfinite(p.imuDelayMs) || !std::isfinite(p.imuDelayStdMs))
@@ -44,18 +47,21 @@ PointVerdict judgePoint(const TestPointResult& p, double limitMs) {
   const int d = decimalsFor(p.imuDelayStdMs);
   const bool pass = v.upperMs < limitMs;
   v.verdict = pass ? Verdict::kPass : Verdict::kFail;
-  v.reasons.push_back("IMU delay " + fixed(p.imuDelayMs, d) + " ± " + fixed(p.imuDelayStdMs, d) + " ms; + 2σ = " +
+  v.falseAcceptProbability = falseAcceptProbability(p.imuDelayMs, p.imuDelayStdMs, limitMs);
+  v.reasons.push_back("IMU delay " + fixed(p.imuDelayMs, d) + " ± " + fixed(p.imuDelayStdMs, d) + " ms; + " +
+                      coverageFactorText(k) + "σ = " +
                       fixed(v.upperMs, d) + " ms " + (pass ? "<" : "≥") + " " + limitText(limitMs) + " ms limit (" +
                       (pass ? "margin " : "over by ") + fixed(std::abs(limitMs - v.upperMs), d) + " ms)");
   return v;
 }
 
-ReportVerdict judgeReport(const DelayReport& report, double limitMs) {
+ReportVerdict judgeReport(const DelayReport& report, double limitMs, double k) {
   ReportVerdict r;
   r.limitMs = limitMs;
+  r.coverageK = k;
   int invalid = 0, failed = 0;
   for (const auto& p : report.points) {
-    PointVerdict v = judgePoint(p, limitMs);
+    PointVerdict v = judgePoint(p, limitMs, k);
     if (v.verdict != Verdict::kPass)
       for (const auto& why : v.reasons) r.reasons.push_back("test point " + std::to_string(p.index + 1) + ": " + why);
     invalid += v.verdict == Verdict::kInvalid;
@@ -68,8 +74,8 @@ ReportVerdict judgeReport(const DelayReport& report, double limitMs) {
   else if (failed > 0) r.verdict = Verdict::kFail;
   else r.verdict = Verdict::kPass;
   if (r.verdict == Verdict::kPass)
-    r.reasons.push_back("every test point passed its validity checks and its IMU delay + 2σ is below the " +
-                        limitText(limitMs) + " ms limit");
+    r.reasons.push_back("every test point passed its validity checks and its IMU delay + " +
+                        coverageFactorText(k) + "σ is below the " + limitText(limitMs) + " ms limit");
   return r;
 }
 

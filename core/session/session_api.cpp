@@ -137,6 +137,7 @@ NewResult analyseAndStore(const OpenedSession& session, const AnalysisSettings& 
   NewResult out;
   out.context.source = session.sourceLine();
   out.context.imuDelayLimitMs = settings.imuDelayLimitMs;
+  out.context.coverageK = settings.coverageK;
   if (!session.complete) out.context.incompleteReason = session.incompleteReason;
   out.results = session.results;
   out.report = analysis::analyzeRecording(session.recording, settings.constants);
@@ -157,7 +158,7 @@ NewResult analyseAndStore(const OpenedSession& session, const AnalysisSettings& 
   const AnalysisAudit audit = makeAudit(settings.operatorName, settings.tool.empty() ? settings.producedBy : settings.tool, settings.command, inputSha256);
   out.storeStatus = addResult(session.path,
                               analysisSettingsJson(settings.constants, settings.imuDelayLimitMs, settings.producedBy,
-                                                   session.info.imported, &audit),
+                                                   session.info.imported, &audit, settings.coverageK),
                               analysis::formatReportJson(*out.report, out.context));
   if (!out.storeStatus.isOk()) return out;
   out.stored = true;
@@ -186,7 +187,7 @@ std::string describeResult(const std::vector<StoredResultRecord>& results, const
 }
 
 ShownResult showResult(const OpenedSession& session, std::int64_t resultId, const BenchConstants& fallback,
-                       double fallbackLimitMs) {
+                       double fallbackLimitMs, double fallbackCoverageK) {
   ShownResult shown;
   const StoredResultRecord* chosen = newestUsable(session.results);
   for (const auto& r : session.results)
@@ -194,10 +195,12 @@ ShownResult showResult(const OpenedSession& session, std::int64_t resultId, cons
   shown.constants = fallback;
   shown.context.source = session.sourceLine();
   shown.context.imuDelayLimitMs = fallbackLimitMs;
+  shown.context.coverageK = fallbackCoverageK;
   if (chosen) {
     shown.record = *chosen;
     shown.constants = chosen->constants;
     shown.context.imuDelayLimitMs = chosen->imuDelayLimitMs;
+    shown.context.coverageK = chosen->coverageK;
     for (std::size_t i = 0; i < session.results.size(); ++i)
       if (session.results[i].id == chosen->id) shown.number = static_cast<int>(i) + 1;
     shown.description = describeResult(session.results, *chosen);
@@ -208,7 +211,8 @@ ShownResult showResult(const OpenedSession& session, std::int64_t resultId, cons
   shown.report = analysis::analyzeRecording(session.recording, shown.constants);
   if (shown.record && shown.report) shown.differences = differencesFromRecord(*shown.record, *shown.report);
   shown.verdict = judgeShown(shown.record ? &*shown.record : nullptr, shown.report ? &*shown.report : nullptr,
-                             session.complete, session.incompleteReason, shown.context.imuDelayLimitMs);
+                             session.complete, session.incompleteReason, shown.context.imuDelayLimitMs,
+                             shown.context.coverageK);
   return shown;
 }
 

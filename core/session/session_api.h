@@ -109,6 +109,7 @@ Result<OpenedSession> openSessionOrStream(const std::string& path, const OpenOpt
 struct AnalysisSettings {
   BenchConstants constants;
   double imuDelayLimitMs = analysis::kDefaultImuDelayLimitMs;
+  double coverageK = analysis::kDefaultCoverageFactor;  // the decision rule's k (decision_rule.h)
   std::string producedBy;  // "fogbench-cli analyze", "fogbench GUI Results": the audit's tool too
   // The audit entry's who and command (AnalysisAudit): the operator named to
   // the analysing command ("" = the login name) and its argument line or the
@@ -165,9 +166,10 @@ struct ShownResult {
 };
 
 // The stored result `resultId` when it is usable, else the newest usable one,
-// else none (then `fallback` constants and `fallbackLimitMs` judge).
+// else none (then `fallback` constants, `fallbackLimitMs` and
+// `fallbackCoverageK` judge; a record's own k and limit win).
 ShownResult showResult(const OpenedSession& session, std::int64_t resultId, const BenchConstants& fallback,
-                       double fallbackLimitMs);
+                       double fallbackLimitMs, double fallbackCoverageK = analysis::kDefaultCoverageFactor);
 
 // "result 2 of 3, stored T by X (fogbench V)": `record` among `results`
 // (ShownResult::description; the CLI's report names it when it refuses

@@ -73,7 +73,8 @@ Result<SessionListing> listSessions(const std::string& dirText) {
       if (const StoredResultRecord* latest = newestUsable(records)) {
         for (std::size_t i = 0; i < records.size(); ++i)
           if (records[i].id == latest->id) s.shownResult = i + 1;
-        s.shown = judgeShown(latest, nullptr, s.complete, s.incompleteReason, latest->imuDelayLimitMs);
+        s.shown = judgeShown(latest, nullptr, s.complete, s.incompleteReason, latest->imuDelayLimitMs,
+                             latest->coverageK);
       }
     }
     listing.sessions.push_back(std::move(s));

@@ -29,18 +29,31 @@ ShownPoint withNumbersOf(const analysis::TestPointResult& a) {
   return p;
 }
 
+// A point's specific risk from its shown numbers and the shown rule; only a
+// vouched point has one (a refused delay carries no number).
+void withRisk(ShownPoint& p, const ShownVerdict& v) {
+  const bool vouched = p.vouched() && v.verdict != ShownVerdictKind::kIncomplete;
+  p.guardBandMs = vouched ? analysis::guardBandMs(v.coverageK, p.imuDelayStdMs) : NAN;
+  p.falseAcceptProbability = vouched ? analysis::falseAcceptProbability(p.imuDelayMs, p.imuDelayStdMs, v.limitMs) : NAN;
+}
+
 // An INCOMPLETE result: no point of it passes; each keeps its data's verdict.
 void markIncomplete(ShownVerdict& v, const std::string& why) {
   v.dataVerdict = v.verdict;
   v.verdict = ShownVerdictKind::kIncomplete;
   v.incompleteReason = why;
-  for (auto& p : v.points) p.verdict = ShownVerdictKind::kIncomplete;
+  for (auto& p : v.points) {
+    p.verdict = ShownVerdictKind::kIncomplete;
+    p.falseAcceptProbability = p.guardBandMs = NAN;
+  }
 }
 
 ShownVerdict fromRecord(const StoredResultRecord& r, const analysis::DelayReport* report) {
   ShownVerdict v;
   v.stored = true;
   v.limitMs = r.imuDelayLimitMs;
+  v.coverageK = r.coverageK;
+  v.ruleProvenance = decisionRuleProvenance(r);
   v.verdict = shownVerdictKind(r.verdict);
   v.dataVerdict = v.verdict == ShownVerdictKind::kIncomplete ? shownVerdictKind(r.dataVerdict) : v.verdict;
   v.reasons = r.verdictReasons;
@@ -55,6 +68,7 @@ ShownVerdict fromRecord(const StoredResultRecord& r, const analysis::DelayReport
     p.lagStdMs = s.lagStdMs;
     p.imuDelayMs = s.imuDelayMs;
     p.imuDelayStdMs = s.imuDelayStdMs;
+    withRisk(p, v);
     return p;
   };
   if (!report) {
@@ -75,16 +89,18 @@ ShownVerdict fromRecord(const StoredResultRecord& r, const analysis::DelayReport
   return v;
 }
 
-ShownVerdict judgedNow(const analysis::DelayReport& report, double limitMs) {
+ShownVerdict judgedNow(const analysis::DelayReport& report, double limitMs, double k) {
   ShownVerdict v;
   v.limitMs = limitMs;
-  const analysis::ReportVerdict judged = analysis::judgeReport(report, limitMs);
+  v.coverageK = k;
+  const analysis::ReportVerdict judged = analysis::judgeReport(report, limitMs, k);
   v.verdict = v.dataVerdict = kindOf(judged.verdict);
   v.reasons = judged.reasons;
   for (std::size_t i = 0; i < report.points.size() && i < judged.points.size(); ++i) {
     ShownPoint p = withNumbersOf(report.points[i]);
     p.verdict = p.dataVerdict = kindOf(judged.points[i].verdict);
     p.reasons = judged.points[i].reasons;
+    withRisk(p, v);
     v.points.push_back(std::move(p));
   }
   return v;
@@ -147,13 +163,20 @@ bool ShownVerdict::allVouched() const {
 }
 
 ShownVerdict judgeShown(const StoredResultRecord* record, const analysis::DelayReport* report, bool complete,
-                        const std::string& incompleteReason, double limitMs) {
+                        const std::string& incompleteReason, double limitMs, double coverageK) {
   if (record) return fromRecord(*record, report);
   ShownVerdict v;
   v.limitMs = limitMs;
-  if (report) v = judgedNow(*report, limitMs);
+  v.coverageK = coverageK;
+  if (report) v = judgedNow(*report, limitMs, coverageK);
   if (!complete) markIncomplete(v, incompleteReason);
   return v;
+}
+
+std::string decisionRuleLine(const ShownVerdict& shown) {
+  std::string s = analysis::decisionRuleStatement(shown.coverageK, shown.limitMs);
+  if (!shown.ruleProvenance.empty()) s += " (k " + shown.ruleProvenance + ")";
+  return s;
 }
 
 }  // namespace fog::session

@@ -17,6 +17,7 @@
 //    number is never printed bare and no arithmetic (B − A, a mean, a trend
 //    line) uses it; `refusal` says why in one sentence.
 
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -48,6 +49,10 @@ struct ShownPoint {
   // where a stored row states none).
   double lagMs = 0.0, lagStdMs = 0.0;
   double imuDelayMs = 0.0, imuDelayStdMs = 0.0;
+  // The point's specific risk (vouched points only; NaN otherwise):
+  // P(true delay >= limit | delay, sigma) and the guard band k sigma, ms.
+  double falseAcceptProbability = std::numeric_limits<double>::quiet_NaN();
+  double guardBandMs = std::numeric_limits<double>::quiet_NaN();
   // Only PASS and FAIL points' delays may be shown bare and used.
   bool vouched() const { return verdict == ShownVerdictKind::kPass || verdict == ShownVerdictKind::kFail; }
   // Why the delay is refused, one sentence ("" when vouched): "INVALID: the
@@ -62,6 +67,11 @@ struct ShownVerdict {
   ShownVerdictKind dataVerdict = ShownVerdictKind::kNone;  // an INCOMPLETE result's data; else = verdict
   bool stored = false;            // from a stored record (else judged now, not stored)
   double limitMs = analysis::kDefaultImuDelayLimitMs;
+  // The decision rule's k (decision_rule.h): the record's (k = 2 for a row
+  // stored before k was kept: `ruleProvenance` says so), else the run's.
+  // Every view states the rule with this k, never today's default.
+  double coverageK = analysis::kDefaultCoverageFactor;
+  std::string ruleProvenance;  // "" or "not stored: the rule of that version, k = 2"
   std::vector<std::string> reasons;  // the result's, as stored or judged
   std::string incompleteReason;      // an INCOMPLETE result: why the run stopped
   // One per point of the analysis when there is one (its order), else one
@@ -76,8 +86,14 @@ struct ShownVerdict {
 // The rule above. `record`: the stored result shown, or null. `report`: this
 // version's analysis (with the record's settings), or null when the data gave
 // none. `complete`/`incompleteReason`: the session's run. `limitMs`: the
-// limit a result not stored is judged with (a record's own limit wins).
+// limit a result not stored is judged with (a record's own limit wins);
+// `coverageK` likewise (a record's own k wins).
 ShownVerdict judgeShown(const StoredResultRecord* record, const analysis::DelayReport* report, bool complete,
-                        const std::string& incompleteReason, double limitMs);
+                        const std::string& incompleteReason, double limitMs,
+                        double coverageK = analysis::kDefaultCoverageFactor);
+
+// The rule and its risk as a view states them: decisionRuleStatement with the
+// shown k and limit, and "(k not stored: ...)" for a row stored before k was.
+std::string decisionRuleLine(const ShownVerdict& shown);
 
 }  // namespace fog::session

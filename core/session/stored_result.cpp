@@ -120,6 +120,13 @@ StoredResultRecord readStoredResult(const session::StoredResult& stored, const B
     r.imuDelayLimitMs = limit;
     r.limitStated = true;
   }
+  // The rule's k: the report's own decision_rule judged it, as the limit.
+  const auto ruleOf = [](const json& o) { return o.is_object() && o.contains("decision_rule") ? o["decision_rule"] : json(); };
+  const double k = numberOr(ruleOf(report), "coverage_factor_k", numberOr(ruleOf(settings), "coverage_factor_k", NAN));
+  if (analysis::coverageFactorProblem(k).empty()) {
+    r.coverageK = k;
+    r.coverageKStated = true;
+  }
   r.verdict = textOr(report, "verdict");
   r.verdictReasons = texts(report, "verdict_reasons");
   r.dataVerdict = textOr(report, "data_verdict");
@@ -152,6 +159,11 @@ std::vector<StoredResultRecord> readStoredResults(const std::vector<session::Sto
   return out;
 }
 
+std::string decisionRuleProvenance(const StoredResultRecord& record) {
+  if (record.coverageKStated) return {};
+  return "not stored: the rule of that version, k = " + analysis::coverageFactorText(analysis::kDefaultCoverageFactor);
+}
+
 const StoredResultRecord* newestUsable(const std::vector<StoredResultRecord>& records) {
   for (auto r = records.rbegin(); r != records.rend(); ++r)
     if (r->usable) return &*r;
@@ -174,7 +186,7 @@ std::vector<std::string> differencesFromRecord(const StoredResultRecord& record,
                     s->imuDelayMs, p.imuDelayMs);
       out.push_back(buf);
     }
-    const std::string judged = analysis::verdictName(analysis::judgePoint(p, record.imuDelayLimitMs).verdict);
+    const std::string judged = analysis::verdictName(analysis::judgePoint(p, record.imuDelayLimitMs, record.coverageK).verdict);
     if (!s->verdict.empty() && s->verdict != judged) out.push_back(tp + ": " + s->verdict + " stored, " + judged +
                                                                    " by this version's analysis");
   }
@@ -190,7 +202,7 @@ std::vector<std::string> differencesFromRecord(const StoredResultRecord& record,
 
 std::string analysisSettingsJson(const BenchConstants& c, double imuDelayLimitMs,
                                  const std::string& producedBy, const ImportSettings& imported,
-                                 const AnalysisAudit* audit) {
+                                 const AnalysisAudit* audit, double coverageK) {
   json doc = {{"table_read_delay_ms", c.tableReadDelayMs},
               {"table_read_delay_std_ms", c.tableReadDelayStdMs},
               {"board_delay_ms", c.boardDelayMs},
@@ -208,6 +220,9 @@ std::string analysisSettingsJson(const BenchConstants& c, double imuDelayLimitMs
                     {"tool", audit->tool},
                     {"command", audit->command},
                     {"input_sha256", audit->inputSha256}};
+  doc["decision_rule"] = {{"rule", analysis::kDecisionRuleName},
+                          {"coverage_factor_k", coverageK},
+                          {"limit_ms", imuDelayLimitMs}};
   // Replaced, not thrown: an argument line or a name that is not UTF-8
   // must not cost the result.
   return doc.dump(-1, ' ', false, json::error_handler_t::replace);

@@ -74,6 +74,11 @@ struct StoredResultRecord {
   bool gyroSignStated = false;
   double imuDelayLimitMs = analysis::kDefaultImuDelayLimitMs;
   bool limitStated = false;     // false: neither the settings nor the report state it
+  // The decision rule's coverage factor k (decision_rule.h) the verdict was
+  // judged with: the settings' or report's `decision_rule`; a row stored
+  // before k was kept was judged with k = 2 (coverageKStated false).
+  double coverageK = analysis::kDefaultCoverageFactor;
+  bool coverageKStated = false;
   // What the import applied to make the recording (rate convention, swing
   // windows), as the settings state it; empty for a recorded session or a
   // row stored before the settings held it.
@@ -104,6 +109,11 @@ StoredResultRecord readStoredResult(const session::StoredResult& stored, const B
 std::vector<StoredResultRecord> readStoredResults(const std::vector<session::StoredResult>& stored,
                                                   const BenchConstants& fallback);
 
+// Where the record's decision rule comes from, for every view that states
+// it: "" when the record stores its k, else "not stored: the rule of that
+// version, k = 2".
+std::string decisionRuleProvenance(const StoredResultRecord& record);
+
 // The newest usable record, or null.
 const StoredResultRecord* newestUsable(const std::vector<StoredResultRecord>& records);
 
@@ -118,10 +128,12 @@ std::vector<std::string> differencesFromRecord(const StoredResultRecord& record,
 // software version, what produced it and, for an imported session, what the
 // import applied (its rate convention and swing windows: `import`), and the
 // audit entry (`audit`; left out when `audit` is null: an export's settings,
-// which store nothing).
+// which store nothing) and the decision rule (`decision_rule`: {"rule",
+// "coverage_factor_k", "limit_ms"}).
 std::string analysisSettingsJson(const BenchConstants& constants, double imuDelayLimitMs,
                                  const std::string& producedBy, const ImportSettings& imported = {},
-                                 const AnalysisAudit* audit = nullptr);
+                                 const AnalysisAudit* audit = nullptr,
+                                 double coverageK = analysis::kDefaultCoverageFactor);
 
 // The session's audit trail: one line per stored result, oldest first:
 // "#2 2026-11-29T05:10:00Z by li (operator) fogbench-cli analyze [analyze

@@ -37,7 +37,7 @@
 <context>
     <name>fog::ui::BenchSettingsDialog</name>
     <message>
-        <location filename="../../ui/bench_settings_dialog.cpp" line="+107"/>
+        <location filename="../../ui/bench_settings_dialog.cpp" line="+112"/>
         <source>Bench constants</source>
         <translation>测试台常数</translation>
     </message>
@@ -193,9 +193,24 @@
         <translation>IMU 延迟限值（验收）</translation>
     </message>
     <message>
+        <location line="+5"/>
+        <source>PASS when IMU delay + k·σ &lt; limit (one-sided guarded acceptance, ISO/IEC 17025:2017 §7.8.6); the guard band below the limit is k·σ</source>
+        <translation>IMU 延迟 + k·σ &lt; 限值时为合格（单侧保护带验收，ISO/IEC 17025:2017 §7.8.6）；限值以下的保护带为 k·σ</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>maximum false-accept risk 1 − Φ(k) = %1</source>
+        <translation>最大误接受风险 1 − Φ(k) = %1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>  coverage factor k (PASS: delay + k·σ &lt; limit)</source>
+        <translation>  包含因子 k（合格：延迟 + k·σ &lt; 限值）</translation>
+    </message>
+    <message>
         <location line="+2"/>
-        <source>IMU delay = measured lag + table read delay; gyro&apos;s own delay = IMU delay − processing-board delay. The pulse equivalent is used only when the board&apos;s stream does not state it; the simulator uses these values for the chain it simulates. The gyro signs and the limit are stored with every result: changing them changes no stored verdict; re-analyse a session to store a new result with them.</source>
-        <translation>IMU 延迟 = 测得滞后 + 转台读数延迟；陀螺自身延迟 = IMU 延迟 − 处理板延迟。仅当采样板数据流未给出脉冲当量时才使用此处的脉冲当量；仿真器按这些值仿真其链路。陀螺符号和限值随每个结果一起保存：修改它们不会改变任何已保存的判定；重新分析会话即可按新设置保存新结果。</translation>
+        <source>IMU delay = measured lag + table read delay; gyro&apos;s own delay = IMU delay − processing-board delay. The pulse equivalent is used only when the board&apos;s stream does not state it; the simulator uses these values for the chain it simulates. The gyro signs, the limit and k are stored with every result: changing them changes no stored verdict; re-analyse a session to store a new result with them.</source>
+        <translation>IMU 延迟 = 测得滞后 + 转台读数延迟；陀螺自身延迟 = IMU 延迟 − 处理板延迟。仅当采样板数据流未给出脉冲当量时才使用此处的脉冲当量；仿真器按这些值仿真其链路。陀螺符号、限值和 k 随每个结果一起保存：修改它们不会改变任何已保存的判定；重新分析会话即可按新设置保存新结果。</translation>
     </message>
 </context>
 <context>
@@ -1724,12 +1739,12 @@ Press Diagnose in the Results view to start it again.</source>
     <name>fog::ui::MainWindow</name>
     <message>
         <location filename="../../ui/main_window.cpp" line="+154"/>
-        <location line="+1051"/>
+        <location line="+1053"/>
         <source>fogbench %1 — FOG IMU delay bench</source>
         <translation>fogbench %1 —— 光纤陀螺 IMU 延迟测试台</translation>
     </message>
     <message>
-        <location line="-1043"/>
+        <location line="-1045"/>
         <source>Configure</source>
         <translation>配置</translation>
     </message>
@@ -1750,12 +1765,12 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+6"/>
-        <location line="+1120"/>
+        <location line="+1122"/>
         <source>Diagnosis</source>
         <translation>诊断</translation>
     </message>
     <message>
-        <location line="-1117"/>
+        <location line="-1119"/>
         <source>Noise</source>
         <translation>噪声</translation>
     </message>
@@ -1843,12 +1858,12 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+777"/>
+        <location line="+779"/>
         <source>Open session</source>
         <translation>打开会话</translation>
     </message>
     <message>
-        <location line="-776"/>
+        <location line="-778"/>
         <source>fogbench sessions (*.fbs);;All files (*)</source>
         <translation>fogbench 会话 (*.fbs);;所有文件 (*)</translation>
     </message>
@@ -2196,7 +2211,7 @@ Plots: wheel zooms, drag pans, double-click shows all, click sets cursors A/B</s
         <translation>&lt;span style=&apos;color:#b00000&apos;&gt;无法运行：%1&lt;/span&gt;</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+31"/>
         <source>the baud rate must be a whole number</source>
         <translation>波特率必须是整数</translation>
     </message>
@@ -2366,7 +2381,7 @@ Plots: wheel zooms, drag pans, double-click shows all, click sets cursors A/B</s
         <translation>正在打开 %1 …</translation>
     </message>
     <message>
-        <location line="+83"/>
+        <location line="+84"/>
         <location line="+10"/>
         <source>Re-analyse</source>
         <translation>重新分析</translation>
@@ -2895,7 +2910,7 @@ File: %1</source>
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location filename="../../ui/main_window.cpp" line="-1266"/>
+        <location filename="../../ui/main_window.cpp" line="-1268"/>
         <location filename="../../ui/plan_editor.cpp" line="-323"/>
         <location filename="../../ui/plots/delta_picker.cpp" line="+1"/>
         <source>%1 s</source>
@@ -2922,13 +2937,13 @@ File: %1</source>
         <translation>PNG 图像 (*.png);;SVG 矢量图 (*.svg);;PDF 文档 (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../../ui/report/calibration_report.cpp" line="+72"/>
-        <location line="+253"/>
+        <location filename="../../ui/report/calibration_report.cpp" line="+71"/>
+        <location line="+271"/>
         <source>not recorded</source>
         <translation>未记录</translation>
     </message>
     <message>
-        <location line="-246"/>
+        <location line="-264"/>
         <source>%1 axis
 %2 Hz / %3°, %4 s</source>
         <translation>%1 轴
@@ -2980,7 +2995,12 @@ File: %1</source>
         <translation>采样板数据流 %1 字节</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+23"/>
+        <source>— refused</source>
+        <translation>— 被拒绝</translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>Test point %1 (%2): %3</source>
         <translation>测试点 %1（%2）：%3</translation>
     </message>
@@ -2990,12 +3010,7 @@ File: %1</source>
         <translation>无效：%1 未给出延迟</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>Rule: a test point is invalid when a validity check fails (reversed gyro axis, clock-rate mismatch, a swing that is not a steady sinusoid, a negative IMU delay); otherwise it passes when its IMU delay plus %1 standard uncertainties (1σ, including the bench constants) is below the limit of %2 ms; the session passes when every test point of the plan gave a delay and passes.</source>
-        <translation>规则：有效性检查未通过（陀螺轴反向、时钟速率不一致、摆动不是稳定正弦、IMU 延迟为负）的测试点判为无效；否则，当其 IMU 延迟加 %1 倍标准不确定度（1σ，含台架常数）低于 %2 ms 限值时判为合格；计划中每个测试点都给出延迟且都合格时，本次测试合格。</translation>
-    </message>
-    <message>
-        <location line="+37"/>
+        <location line="+33"/>
         <source>Tested by</source>
         <translation>测试人</translation>
     </message>
@@ -3100,7 +3115,7 @@ File: %1</source>
         <translation>结果</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>condition</source>
         <translation>条件</translation>
     </message>
@@ -3125,7 +3140,7 @@ File: %1</source>
         <translation>陀螺延迟 ± 1σ (ms)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>verdict</source>
         <translation>结论</translation>
     </message>
@@ -3150,12 +3165,7 @@ File: %1</source>
         <translation>不是纯延迟（随频率变化）</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>Lag: gyro output behind the stamped table angle (joint fit). IMU delay = lag + table read delay; gyro delay = IMU delay − processing-board delay. CRLB: Cramér–Rao bound on the lag for the noise measured in this session.</source>
-        <translation>滞后：陀螺输出相对于打时间戳的转台角度的滞后（联合拟合）。IMU 延迟 = 滞后 + 转台读数延迟；陀螺延迟 = IMU 延迟 − 处理板延迟。CRLB：按本次会话实测噪声计算的滞后 Cramér–Rao 界。</translation>
-    </message>
-    <message>
-        <location line="+5"/>
+        <location line="+13"/>
         <source>Sign-off</source>
         <translation>签署</translation>
     </message>
@@ -3172,12 +3182,12 @@ File: %1</source>
     </message>
     <message>
         <location line="-241"/>
-        <location line="+326"/>
+        <location line="+334"/>
         <source>value</source>
         <translation>数值</translation>
     </message>
     <message>
-        <location line="-325"/>
+        <location line="-333"/>
         <source>std. uncertainty</source>
         <translation>标准不确定度</translation>
     </message>
@@ -3269,12 +3279,12 @@ File: %1</source>
     </message>
     <message>
         <location line="-17"/>
-        <location line="+336"/>
+        <location line="+344"/>
         <source>frequency (Hz)</source>
         <translation>频率 (Hz)</translation>
     </message>
     <message>
-        <location line="-335"/>
+        <location line="-343"/>
         <source>amplitude (°)</source>
         <translation>幅值 (°)</translation>
     </message>
@@ -3320,12 +3330,12 @@ File: %1</source>
         <translation>未给出</translation>
     </message>
     <message>
-        <location line="-371"/>
+        <location line="-393"/>
         <source>SIMULATED DATA — not a measurement of a real IMU</source>
         <translation>仿真数据 —— 并非对真实 IMU 的测量</translation>
     </message>
     <message>
-        <location line="+132"/>
+        <location line="+150"/>
         <source>Result reported</source>
         <translation>报告的结果</translation>
     </message>
@@ -3335,12 +3345,12 @@ File: %1</source>
         <translation>生成本报告时计算，使用第 2 页的常数</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+45"/>
         <source> %1 refused test point(s) left out: their checks failed.</source>
         <translation>未计入 %1 个被拒绝的测试点：其有效性检查未通过。</translation>
     </message>
     <message>
-        <location line="+151"/>
+        <location line="+153"/>
         <source>the stream&apos;s statement, else the bench constant: turns pulses into degrees</source>
         <translation>数据流给出的值，否则为测试台常数：把脉冲换算为度</translation>
     </message>
@@ -3410,7 +3420,17 @@ File: %1</source>
         <translation>延迟预算</translation>
     </message>
     <message>
-        <location line="-75"/>
+        <location line="-182"/>
+        <source>Decision rule (ISO/IEC 17025:2017 §7.8.6; ILAC-G8:09/2019 guarded acceptance, one-sided): a test point is invalid when a validity check fails (reversed gyro axis, clock-rate mismatch, a swing that is not a steady sinusoid, a negative IMU delay); otherwise it passes when its IMU delay plus k = %1 standard uncertainties (1σ, including the bench constants; guard band kσ) is below the limit of %2 ms, and fails if not; the session passes when every test point of the plan gave a delay and passes. Maximum probability of false accept 1 − Φ(k) = %3: a delay measured just at the acceptance boundary, with a Gaussian error of the stated σ.</source>
+        <translation>判定规则（ISO/IEC 17025:2017 §7.8.6；ILAC-G8:09/2019 保护带验收，单侧）：有效性检查未通过（陀螺轴反向、时钟速率不一致、摆动不是稳定正弦、IMU 延迟为负）的测试点无效；否则，其 IMU 延迟加 k = %1 倍标准不确定度（1σ，含台架常数；保护带 kσ）低于 %2 ms 限值时合格，否则不合格；计划中每个测试点都得到延迟且都合格时，会话合格。最大误接受概率 1 − Φ(k) = %3：即恰好在验收边界上测得的延迟（误差为所给 σ 的高斯分布）。</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>k %1.</source>
+        <translation>k %1。</translation>
+    </message>
+    <message>
+        <location line="+94"/>
         <source>Lot</source>
         <translation>批次</translation>
     </message>
@@ -3420,7 +3440,17 @@ File: %1</source>
         <translation>工位编号</translation>
     </message>
     <message>
-        <location line="+75"/>
+        <location line="+27"/>
+        <source>P(false accept)</source>
+        <translation>P(误接受)</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>Lag: gyro output behind the stamped table angle (joint fit). IMU delay = lag + table read delay; gyro delay = IMU delay − processing-board delay. CRLB: Cramér–Rao bound on the lag for the noise measured in this session. P(false accept): the probability that the true IMU delay is at or above the limit, 1 − Φ((limit − delay)/σ), for a Gaussian error of the stated σ; none for a refused (INVALID or INCOMPLETE) delay.</source>
+        <translation>滞后：陀螺输出相对于打时间戳的转台角度的滞后（联合拟合）。IMU 延迟 = 滞后 + 转台读数延迟；陀螺延迟 = IMU 延迟 − 处理板延迟。CRLB：按本次会话实测噪声计算的滞后 Cramér–Rao 界。P(误接受)：真实 IMU 延迟达到或超过限值的概率 1 − Φ((限值 − 延迟)/σ)（误差为所给 σ 的高斯分布）；被拒绝（无效或不完整）的延迟不给出。</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>Not shown: the paper&apos;s theoretical budget describes its own gyro and processing board, and this recording was made on another bench (imported).</source>
         <translation>未显示：论文的理论预算描述的是其自身的陀螺和处理板，而本记录来自另一台架（导入）。</translation>
     </message>
@@ -3641,12 +3671,12 @@ File: %1</source>
         <location line="+16"/>
         <location line="+16"/>
         <location line="+12"/>
-        <location line="+85"/>
+        <location line="+93"/>
         <source>time (s)</source>
         <translation>时间 (s)</translation>
     </message>
     <message>
-        <location line="-128"/>
+        <location line="-136"/>
         <location line="+16"/>
         <source>angle (°)</source>
         <translation>角度 (°)</translation>
@@ -3739,12 +3769,12 @@ File: %1</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+174"/>
+        <location line="+182"/>
         <source>χ²/dof</source>
         <translation>χ²/dof</translation>
     </message>
     <message>
-        <location line="-173"/>
+        <location line="-181"/>
         <source>table, 3-parameter</source>
         <translation>转台，三参数</translation>
     </message>
@@ -3845,7 +3875,17 @@ File: %1</source>
         <translation>延迟</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+4"/>
+        <source>Guard band kσ = %1 ms (k = %2); probability that the true IMU delay is at or above the limit: %3.</source>
+        <translation>保护带 kσ = %1 ms（k = %2）；真实 IMU 延迟达到或超过限值的概率：%3。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>No false-accept probability: the delay is refused (%1).</source>
+        <translation>不给出误接受概率：该延迟被拒绝（%1）。</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Lag per swing period</source>
         <translation>各摆动周期的滞后</translation>
     </message>
@@ -4212,12 +4252,7 @@ File: %1</source>
         <translation>无判定</translation>
     </message>
     <message>
-        <location filename="../../ui/report/calibration_report.cpp" line="+133"/>
-        <source>PASS: every test point passed its validity checks and its IMU delay + 2σ is below the %1 ms limit.</source>
-        <translation>合格：每个测试点都通过有效性检查，且其 IMU 延迟 + 2σ 低于 %1 ms 限值。</translation>
-    </message>
-    <message>
-        <location line="+12"/>
+        <location filename="../../ui/report/calibration_report.cpp" line="+153"/>
         <source>%1 of %2 test points failed a validity check</source>
         <translation>%2 个测试点中有 %1 个未通过有效性检查</translation>
     </message>
@@ -4237,12 +4272,17 @@ File: %1</source>
         <translation>对 %1 ms 限值不合格：%3 个测试点中有 %2 个超限。</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="-5"/>
+        <source>PASS: every test point passed its validity checks and its IMU delay + %1σ is below the %2 ms limit.</source>
+        <translation>合格：每个测试点都通过有效性检查，且其 IMU 延迟 + %1σ 低于 %2 ms 限值。</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>%1 test point(s) gave no delay</source>
         <translation>%1 个测试点未得到延迟</translation>
     </message>
     <message>
-        <location line="-430"/>
+        <location line="-446"/>
         <source>table angle (encoder, %1 ms)</source>
         <translation>转台角度（编码器，%1 ms）</translation>
     </message>
@@ -4252,7 +4292,7 @@ File: %1</source>
         <translation>陀螺角度（增量累加，%1 ms）</translation>
     </message>
     <message>
-        <location line="+391"/>
+        <location line="+407"/>
         <source>INCOMPLETE (the run stopped early); its data give %1</source>
         <translation>不完整（运行提前停止）；其数据给出 %1</translation>
     </message>
@@ -4262,7 +4302,7 @@ File: %1</source>
         <translation>不完整</translation>
     </message>
     <message>
-        <location filename="../../ui/report/calibration_report.cpp" line="-192"/>
+        <location filename="../../ui/report/calibration_report.cpp" line="-200"/>
         <source>model (chosen)</source>
         <translation>模型（所选）</translation>
     </message>
@@ -4322,7 +4362,7 @@ File: %1</source>
         <translation>被拒绝（%1，%2）</translation>
     </message>
     <message>
-        <location filename="../../ui/report/calibration_report.cpp" line="+161"/>
+        <location filename="../../ui/report/calibration_report.cpp" line="+169"/>
         <source>INCOMPLETE: the run stopped before its plan ended (%1); no calibration verdict. The data recorded give %2.</source>
         <translation>不完整：运行在计划结束前停止（%1）；没有校准判定。已记录的数据给出 %2。</translation>
     </message>
@@ -4332,17 +4372,17 @@ File: %1</source>
         <translation>无判定：已保存的结果未给出判定；请重新分析会话以保存判定。</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+22"/>
         <source>This version&apos;s analysis of the same data with the stored settings differs from the stored result (%1); the verdict is the stored one.</source>
         <translation>本版本用已保存的设置对同一数据的分析与已保存结果不同（%1）；判定以已保存的为准。</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+22"/>
         <source>IMU delay calibration report: %1 %2</source>
         <translation>IMU 延迟标定报告：%1 %2</translation>
     </message>
     <message>
-        <location filename="../../ui/result_view.cpp" line="+70"/>
+        <location filename="../../ui/result_view.cpp" line="+71"/>
         <source>%1: %2 axis, %3 Hz / %4°</source>
         <translation>%1：%2 轴，%3 Hz / %4°</translation>
     </message>
@@ -4387,7 +4427,17 @@ File: %1</source>
         <translation>，限值 %1 ms</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+1"/>
+        <source>, k = %1</source>
+        <translation>，k = %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>, k = 2 (not stored: the rule of that version)</source>
+        <translation>，k = 2（未保存：该版本的规则）</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>version not stated</source>
         <translation>未注明版本</translation>
     </message>
@@ -4460,7 +4510,7 @@ File: %1</source>
         <translation>会话保存对它的每次分析（记录时的、每次重新分析的）及其所用常数和软件版本；所选的一个用于显示、报告和导出</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+33"/>
         <source>Normalised angles and fits</source>
         <translation>归一化角度及拟合</translation>
     </message>
@@ -4639,12 +4689,12 @@ Run a test plan (Run), or open a session (Sessions).</source>
         <translation>尚无结果：请运行测试计划（运行）或打开会话（会话）。</translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+63"/>
         <source>result %1 of %2: %7, stored %3 by %4 (%5), %6</source>
         <translation>结果 %1/%2：%7，%3 由 %4（%5）保存，%6</translation>
     </message>
     <message>
-        <location line="-127"/>
+        <location line="-128"/>
         <source>PDF document (*.pdf)</source>
         <translation>PDF 文档 (*.pdf)</translation>
     </message>
@@ -4744,7 +4794,7 @@ The session itself is unchanged.</source>
         <translation>滞后 (ms)，±1σ</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+30"/>
         <source>No frequency response yet.</source>
         <translation>尚无频率响应。</translation>
     </message>
@@ -4884,7 +4934,27 @@ The session itself is unchanged.</source>
         <translation>敏感、闭环与脉冲更新</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+46"/>
+        <source>Decision rule: PASS when IMU delay + k·σ &lt; limit (k = %1, guarded acceptance, ISO/IEC 17025:2017 §7.8.6); maximum false-accept risk 1 − Φ(k) = %2</source>
+        <translation>判定规则：IMU 延迟 + k·σ &lt; 限值时合格（k = %1，保护带验收，ISO/IEC 17025:2017 §7.8.6）；最大误接受风险 1 − Φ(k) = %2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source> (k %1)</source>
+        <translation>（k %1）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>; this point: guard band %1 ms, P(true delay ≥ limit) = %2</source>
+        <translation>；本测试点：保护带 %1 ms，P(真实延迟 ≥ 限值) = %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>; this point: no risk stated, its delay is refused</source>
+        <translation>；本测试点：不给出风险，其延迟被拒绝</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>stored verdict</source>
         <translation>已保存的判定</translation>
     </message>
@@ -4944,7 +5014,7 @@ The session itself is unchanged.</source>
         <translation>  ·  &lt;span style=&apos;color:#b00000&apos;&gt;运行未完成&lt;/span&gt;</translation>
     </message>
     <message>
-        <location line="+109"/>
+        <location line="+113"/>
         <source>+ fitted lag %1 ms, refused (%2)</source>
         <translation>+ 拟合滞后 %1 ms，被拒绝（%2）</translation>
     </message>
@@ -6895,19 +6965,44 @@ result analysed %2</source>
         <translation>延迟或其不确定度不是有限数</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>every test point passed its validity checks and its IMU delay + 2σ is below the %1 ms limit</source>
-        <translation>每个测试点都通过了有效性检查，其 IMU 延迟 + 2σ 低于 %1 ms 限值</translation>
+        <location line="+2"/>
+        <source>every test point passed its validity checks and its IMU delay + %1σ is below the %2 ms limit</source>
+        <translation>每个测试点都通过了有效性检查，其 IMU 延迟 + %1σ 低于 %2 ms 限值</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>IMU delay %1 ± %2 ms; + 2σ = %3 ms &lt; %4 ms limit (margin %5 ms)</source>
-        <translation>IMU 延迟 %1 ± %2 ms；+ 2σ = %3 ms &lt; %4 ms 限值（余量 %5 ms）</translation>
+        <source>IMU delay %1 ± %2 ms; + %3σ = %4 ms &lt; %5 ms limit (margin %6 ms)</source>
+        <translation>IMU 延迟 %1 ± %2 ms；+ %3σ = %4 ms &lt; %5 ms 限值（余量 %6 ms）</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>IMU delay %1 ± %2 ms; + 2σ = %3 ms ≥ %4 ms limit (over by %5 ms)</source>
-        <translation>IMU 延迟 %1 ± %2 ms；+ 2σ = %3 ms ≥ %4 ms 限值（超出 %5 ms）</translation>
+        <source>IMU delay %1 ± %2 ms; + %3σ = %4 ms ≥ %5 ms limit (over by %6 ms)</source>
+        <translation>IMU 延迟 %1 ± %2 ms；+ %3σ = %4 ms ≥ %5 ms 限值（超出 %6 ms）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>decision rule: PASS when IMU delay + k·σ &lt; limit (k = %1, one-sided guarded acceptance, ISO/IEC 17025:2017 §7.8.6 / ILAC-G8:09/2019); FAIL otherwise; INVALID when a validity check fails; maximum probability of false accept 1 − Φ(k) = %2 (a delay measured just at the acceptance boundary, with a Gaussian error of the stated σ); limit %3 ms</source>
+        <translation>判定规则：IMU 延迟 + k·σ &lt; 限值时合格（k = %1，单侧保护带验收，ISO/IEC 17025:2017 §7.8.6 / ILAC-G8:09/2019）；否则不合格；有效性检查未通过时无效；最大误接受概率 1 − Φ(k) = %2（恰好在验收边界上测得的延迟，误差为所给 σ 的高斯分布）；限值 %3 ms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>guard band %1σ = %2 ms; probability that the true delay is at or above the limit: %3</source>
+        <translation>保护带 %1σ = %2 ms；真实延迟达到或超过限值的概率：%3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no false-accept probability: the delay is refused (INVALID)</source>
+        <translation>不给出误接受概率：该延迟被拒绝（无效）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no false-accept probability: the run stopped before its plan ended (INCOMPLETE)</source>
+        <translation>不给出误接受概率：运行在计划结束前停止（不完整）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>not stored: the rule of that version, k = %1</source>
+        <translation>未保存：该版本的规则，k = %1</translation>
     </message>
     <message>
         <location line="+1"/>

@@ -47,7 +47,7 @@ if(login)
 endif()
 string(REGEX MATCHALL "[A-Za-z][A-Za-z]+" words "${rest}")
 set(allowed IMU fogbench SHA CRLB Cram Rao Allan dof RMS MHz Hz kHz ms sin cos UTC Sagnac Mbaud baud IEEE Std
-            arcsec)
+            arcsec ISO IEC ILAC)
 set(left "")
 foreach(w IN LISTS words)
   list(FIND allowed "${w}" at)

@@ -699,8 +699,8 @@ class BenchUiTest : public QObject {
     });
 
     auto w = window();
-    // The GUI's own limit and signs are not the record's: they change nothing shown.
-    w->setAnalysisChoices(fog::ui::AnalysisChoices{{1, 1, 1}, 5.0});
+    // The GUI's own limit, k and signs are not the record's: they change nothing shown.
+    w->setAnalysisChoices(fog::ui::AnalysisChoices{{1, 1, 1}, 5.0, 3.0});
     // Configure states the signs the next analysis uses, and the IMU frame.
     const QString configured = w->configureView()->findChild<QLabel*>("constantsLabel")->text();
     QVERIFY2(configured.contains("gyro signs X +1, Y +1, Z +1") && configured.contains("IMU frame "),
@@ -713,6 +713,13 @@ class BenchUiTest : public QObject {
     QVERIFY2(verdict.contains("INVALID") && !verdict.contains("PASS") && verdict.contains("stored verdict") &&
                  verdict.contains("limit 0.800 ms") && verdict.contains("turns against the table"),
              qPrintable(verdict));
+    // The decision rule under it: the record's k (2), not the GUI's 3; an
+    // INVALID point states no risk.
+    const QString rule = w->findChild<QLabel*>("decisionRuleLabel")->text();
+    QVERIFY2(rule.contains("Decision rule: PASS when IMU delay + k·σ &lt; limit (k = 2,") &&
+                 rule.contains("1 − Φ(k) = 2.28 %") && rule.contains("no risk stated, its delay is refused") &&
+                 !rule.contains("k = 3"),
+             qPrintable(rule));
     QVERIFY2(results->resultDescription().startsWith("result 2 of 2: INVALID") &&
                  results->resultDescription().contains("gyro signs X -1, Y +1, Z +1, IMU frame "),
              qPrintable(results->resultDescription()));
@@ -840,9 +847,17 @@ class BenchUiTest : public QObject {
                  differing.contains("Re-analyse") && differing.contains("pass by this version's analysis"),
              qPrintable(differing));
 
-    // The bench-constants dialog sets what the CLI sets: gyro signs, limit.
+    // The bench-constants dialog sets what the CLI sets: gyro signs, limit, k.
     {
-      fog::ui::BenchSettingsDialog dialog(w->benchConstants(), fog::ui::AnalysisChoices{{1, 1, -1}, 0.6});
+      fog::ui::BenchSettingsDialog dialog(w->benchConstants(), fog::ui::AnalysisChoices{{1, 1, -1}, 0.6, 3.0});
+      auto* k = dialog.findChild<QDoubleSpinBox*>("coverageKSpin");
+      auto* risk = dialog.findChild<QLabel*>("coverageKRisk");
+      QVERIFY(k && risk);
+      QCOMPARE(k->value(), 3.0);
+      QVERIFY2(risk->text().contains("0.135 %"), qPrintable(risk->text()));
+      k->setValue(2.5);
+      QCOMPARE(dialog.analysisChoices().coverageK, 2.5);
+      QVERIFY2(risk->text().contains("0.621 %"), qPrintable(risk->text()));
       auto* z = dialog.findChild<QComboBox*>("gyroSignZCombo");
       auto* limit = dialog.findChild<QDoubleSpinBox*>("limitSpin");
       QVERIFY(z && limit && dialog.findChild<QComboBox*>("gyroSignXCombo"));
@@ -880,8 +895,8 @@ class BenchUiTest : public QObject {
       fog::ui::saveBenchConstants(w->benchConstants());
     }
 
-    // A re-analysis stores the GUI's gyro signs and limit with its result.
-    w->setAnalysisChoices(fog::ui::AnalysisChoices{{-1, 1, 1}, 0.5});
+    // A re-analysis stores the GUI's gyro signs, limit and k with its result.
+    w->setAnalysisChoices(fog::ui::AnalysisChoices{{-1, 1, 1}, 0.5, 3.0});
     opened.clear();
     QSignalSpy reanalysed(w.get(), &MainWindow::reanalysed);
     w->reanalyseSession(reversed);
@@ -895,6 +910,8 @@ class BenchUiTest : public QObject {
     QCOMPARE(newest.constants.gyroSign[0], -1);
     QVERIFY(newest.gyroSignStated);
     QCOMPARE(newest.imuDelayLimitMs, 0.5);
+    QVERIFY(newest.coverageKStated);
+    QCOMPARE(newest.coverageK, 3.0);
     QCOMPARE(newest.verdict, std::string("invalid"));
     QVERIFY(newest.analysedBy == "fogbench GUI");
   }

@@ -39,7 +39,8 @@ using namespace fog;
 // Words a Chinese operator reads as they are: units, acronyms, names.
 const QStringList kKept = {"IMU", "ARW", "chi", "ppm", "rms", "dof", "Hz", "ms", "fogbench", "SQLite", "Allan",
                            "IEEE", "printf", "dd", "COPY", "fbs", "conv", "notrunc", "of", "format", "urad",
-                           "udeg", "us", "sigma", "CRLB", "AIC", "BIC", "sin", "cos", "ioctl", "KiB", "MiB", "FIFO"};
+                           "udeg", "us", "sigma", "CRLB", "AIC", "BIC", "sin", "cos", "ioctl", "KiB", "MiB", "FIFO",
+                           "ISO", "IEC", "ILAC"};  // the decision rule's standards
 
 // English left in a translated text: runs of three or more Latin letters that
 // are not kept words, identifiers (with _ . or -), a command with its option

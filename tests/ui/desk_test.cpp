@@ -45,6 +45,7 @@ namespace {
 const QStringList kKept = {"IMU", "CRLB", "fogbench", "Hz", "ms", "MHz", "ppm", "dof", "RMS", "Allan", "IEEE",
                            "Std", "SHA", "UTC", "FOG", "tcp", "HOST", "PORT", "dev", "ttyS", "ttyUSB", "fbs",
                            "json", "csv", "CSV", "PDF", "PNG", "JSON", "Sagnac", "Qwt",
+                           "ISO", "IEC", "ILAC",  // the decision rule's standards
                            "Ctrl"};  // a key as its keycap reads
 
 // English in a text: runs of three or more Latin letters that are not kept

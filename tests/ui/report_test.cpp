@@ -180,6 +180,71 @@ class ReportTest : public QObject {
     QVERIFY(!text.contains("PASS"));
   }
 
+  // The decision rule (ISO/IEC 17025 §7.8.6) is stated with the shown k: k
+  // changes the verdict of a point between d + 2σ and d + 3σ; the page states
+  // k, 1 − Φ(k) and the point's own risk; a stored record's k wins over the
+  // one asked, and a record stored before k was kept says k = 2, not stored.
+  void statesTheDecisionRuleWithTheShownK() {
+    const double d = point().imuDelayMs, sd = point().imuDelayStdMs;
+    ReportInput in = session_;
+    in.imuDelayLimitMs = d + 2.5 * sd;
+    in.coverageK = 2.0;
+    QVERIFY(fog::report::calibrationVerdict(in).pass);
+    in.coverageK = 3.0;
+    const auto v = fog::report::calibrationVerdict(in);
+    QVERIFY(!v.pass);
+    QCOMPARE(v.word, QString("FAIL"));
+    QCOMPARE(v.coverageK, 3.0);
+    // The point's own risk: 1 − Φ(2.5), whatever k.
+    QVERIFY(std::abs(v.points.front().falseAcceptProbability - 0.5 * std::erfc(2.5 / std::sqrt(2.0))) < 1e-9);
+    QStringList text;
+    QVERIFY(fog::report::renderCalibrationPages(in, 40, &text).isOk());
+    const QString all = text.join("\n");
+    QVERIFY2(all.contains("Decision rule (ISO/IEC 17025:2017 §7.8.6; ILAC-G8:09/2019 guarded acceptance"), qPrintable(all));
+    QVERIFY(all.contains("k = 3 standard uncertainties"));
+    QVERIFY(all.contains("1 − Φ(k) = 0.135 %"));
+    QVERIFY(text.contains("P(false accept)"));
+    QVERIFY(text.contains("0.621 %"));  // 1 − Φ(2.5) in the results table
+    QVERIFY(all.contains("Guard band kσ = "));
+
+    // A stored record: its k (3), not the one asked (2).
+    fog::session::StoredResultRecord record;
+    record.usable = true;
+    record.verdict = "fail";
+    record.imuDelayLimitMs = in.imuDelayLimitMs;
+    record.coverageK = 3.0;
+    record.coverageKStated = true;
+    fog::session::StoredPointVerdict sp;
+    sp.index = point().index;
+    sp.verdict = "fail";
+    sp.imuDelayMs = d;
+    sp.imuDelayStdMs = sd;
+    record.points = {sp};
+    const ReportInput stored = fog::report::makeReportInput(session_.info, session_.recording, session_.delays, {},
+                                                            &record, 0.8, {}, "result 1 of 1", 2.0);
+    QCOMPARE(stored.coverageK, 3.0);
+    QCOMPARE(fog::report::calibrationVerdict(stored).coverageK, 3.0);
+    record.coverageK = 2.0;
+    record.coverageKStated = false;
+    const ReportInput older = fog::report::makeReportInput(session_.info, session_.recording, session_.delays, {},
+                                                           &record, 0.8, {}, "result 1 of 1", 3.0);
+    QCOMPARE(fog::report::calibrationVerdict(older).coverageK, 2.0);
+    text.clear();
+    QVERIFY(fog::report::renderCalibrationPages(older, 30, &text).isOk());
+    QVERIFY2(text.join("\n").contains("k not stored: the rule of that version, k = 2."), qPrintable(text.join("\n")));
+  }
+
+  // A bad k is refused before drawing.
+  void aCoverageFactorOutsideZeroToTenIsRefused() {
+    ReportInput bad = session_;
+    for (double k : {0.0, -2.0, 11.0, std::nan("")}) {
+      bad.coverageK = k;
+      const auto status = fog::report::checkReportInput(bad);
+      QVERIFY(!status.isOk());
+      QVERIFY(QString::fromStdString(status.message()).contains("coverage factor k"));
+    }
+  }
+
   // A test point that gave no delay fails the session even when the others pass.
   void aMissingTestPointFailsTheSession() {
     auto delays = session_.delays;

@@ -45,7 +45,6 @@ const QColor kPassColour(20, 110, 40);
 const QColor kFailColour(180, 20, 20);
 const QColor kMuted(90, 90, 90);
 
-constexpr double kCoverage = analysis::kVerdictCoverageFactor;  // the acceptance rule's k
 
 // ---- numbers -------------------------------------------------------------
 
@@ -227,6 +226,30 @@ QString rawDataText(const Content& c) {
   return QObject::tr("%1 bytes of sampling-board stream").arg(digits);
 }
 
+// The decision rule and its risk (ISO/IEC 17025:2017 §7.8.6): the shown
+// result's k and limit, never today's default.
+QString decisionRuleParagraph(const Verdict& v) {
+  QString s =
+      QObject::tr("Decision rule (ISO/IEC 17025:2017 §7.8.6; ILAC-G8:09/2019 guarded acceptance, one-sided): a test "
+                  "point is invalid when a validity check fails (reversed gyro axis, clock-rate mismatch, a swing "
+                  "that is not a steady sinusoid, a negative IMU delay); otherwise it passes when its IMU delay plus "
+                  "k = %1 standard uncertainties (1σ, including the bench constants; guard band kσ) is below the "
+                  "limit of %2 ms, and fails if not; the session passes when every test point of the plan gave a "
+                  "delay and passes. Maximum probability of false accept 1 − Φ(k) = %3: a delay measured just at "
+                  "the acceptance boundary, with a Gaussian error of the stated σ.")
+          .arg(QString::fromStdString(analysis::coverageFactorText(v.coverageK)), limitText(v.limitMs),
+               QString::fromStdString(analysis::probabilityText(analysis::maxFalseAcceptProbability(v.coverageK))));
+  if (!v.ruleProvenance.isEmpty()) s += " " + QObject::tr("k %1.").arg(coreText(v.ruleProvenance.toStdString()));
+  return s;
+}
+
+// A point's own risk for the results table: vouched points only (the
+// verdict beside it and the note under the table say why not).
+QString pointRiskText(const PointVerdict& p) {
+  if (!p.vouched || !std::isfinite(p.falseAcceptProbability)) return QObject::tr("— refused");
+  return QString::fromStdString(analysis::probabilityText(p.falseAcceptProbability));
+}
+
 void verdictBox(PageFlow& flow, const Content& c) {
   const double left = PageFlow::kLeftMm, width = PageFlow::kContentWidthMm;
   const double wordWidth = 36.0, pad = 3.0;
@@ -242,13 +265,7 @@ void verdictBox(PageFlow& flow, const Content& c) {
   }
   for (const auto& f : c.in.delays.failedPoints)
     lines << QObject::tr("INVALID: no delay from %1").arg(coreText(f));
-  const QString rule =
-      QObject::tr("Rule: a test point is invalid when a validity check fails (reversed gyro axis, clock-rate "
-                  "mismatch, a swing that is not a steady sinusoid, a negative IMU delay); otherwise it passes when "
-                  "its IMU delay plus %1 standard uncertainties (1σ, including the bench constants) is below the "
-                  "limit of %2 ms; the session passes when every test point of the plan gave a delay and passes.")
-          .arg(kCoverage)
-          .arg(limitText(c.in.imuDelayLimitMs));
+  const QString rule = decisionRuleParagraph(c.verdict);
 
   const QString& headline = c.verdict.headline;
   double h = flow.textHeightMm(headline, head, textWidth) + 1.5;
@@ -337,13 +354,15 @@ void firstPage(PageFlow& flow, const Content& c) {
 
   flow.heading(QObject::tr("Results"));
   Table t;
-  t.columns = {{"#", 6, Qt::AlignLeft},
+  // 174 mm, the content width, with the risk column beside the verdict.
+  t.columns = {{"#", 5, Qt::AlignLeft},
                {QObject::tr("condition"), 29, Qt::AlignLeft},
-               {QObject::tr("lag ± 1σ (ms)"), 33, Qt::AlignRight},
-               {QObject::tr("CRLB (ms)"), 18, Qt::AlignRight},
-               {QObject::tr("IMU delay ± 1σ (ms)"), 33, Qt::AlignRight},
-               {QObject::tr("gyro delay ± 1σ (ms)"), 33, Qt::AlignRight},
-               {QObject::tr("verdict"), 22, Qt::AlignHCenter}};
+               {QObject::tr("lag ± 1σ (ms)"), 26, Qt::AlignRight},
+               {QObject::tr("CRLB (ms)"), 17, Qt::AlignRight},
+               {QObject::tr("IMU delay ± 1σ (ms)"), 27, Qt::AlignRight},
+               {QObject::tr("gyro delay ± 1σ (ms)"), 27, Qt::AlignRight},
+               {QObject::tr("P(false accept)"), 22, Qt::AlignRight},
+               {QObject::tr("verdict"), 21, Qt::AlignHCenter}};
   for (std::size_t i = 0; i < d.points.size(); ++i) {
     const auto& p = d.points[i];
     const int dec = decimalsFor(p.lagStdMs);
@@ -351,7 +370,7 @@ void firstPage(PageFlow& flow, const Content& c) {
                       fixed(p.crlbMs, dec),
                       valueWithStd(p.imuDelayMs, p.imuDelayStdMs, dec),
                       valueWithStd(p.gyroDelayMs, p.gyroDelayStdMs, dec),
-                      c.verdict.points[i].word});
+                      pointRiskText(c.verdict.points[i]), c.verdict.points[i].word});
   }
   flow.table(t);
   for (const auto& f : d.failedPoints)
@@ -375,7 +394,9 @@ void firstPage(PageFlow& flow, const Content& c) {
   }
   flow.paragraph(QObject::tr("Lag: gyro output behind the stamped table angle (joint fit). IMU delay = lag + table "
                              "read delay; gyro delay = IMU delay − processing-board delay. CRLB: Cramér–Rao bound "
-                             "on the lag for the noise measured in this session."),
+                             "on the lag for the noise measured in this session. P(false accept): the probability "
+                             "that the true IMU delay is at or above the limit, 1 − Φ((limit − delay)/σ), for a "
+                             "Gaussian error of the stated σ; none for a refused (INVALID or INCOMPLETE) delay."),
                  PageFlow::font(7.5), kMuted);
 
   flow.heading(QObject::tr("Sign-off"));
@@ -773,6 +794,14 @@ void resultsPage(PageFlow& flow, const Content& c, const TestPointResult& p, con
   flow.heading(QObject::tr("Delay"));
   flow.table(delay);
   flow.paragraph(v.line, PageFlow::font(9.0, true), v.pass ? kPassColour : kFailColour);
+  flow.paragraph(v.vouched && std::isfinite(v.falseAcceptProbability)
+                     ? QObject::tr("Guard band kσ = %1 ms (k = %2); probability that the true IMU delay is at or "
+                                   "above the limit: %3.")
+                           .arg(fixed(v.guardBandMs, dec),
+                                QString::fromStdString(analysis::coverageFactorText(c.verdict.coverageK)),
+                                pointRiskText(v))
+                     : QObject::tr("No false-accept probability: the delay is refused (%1).").arg(v.word),
+                 PageFlow::font(8.0), kMuted);
 
   if (!p.periodTrack.empty()) {
     flow.plot(58.0, [&](double wMm, double) {
@@ -1008,7 +1037,8 @@ void render(Target& target, const Content& c, QStringList* drawn) {
 
 ReportInput makeReportInput(SessionInfo info, Recording recording, analysis::DelayReport delays,
                             std::vector<std::uint8_t> rawBytes, const session::StoredResultRecord* stored,
-                            double limitMs, const std::string& incompleteReason, QString resultShown) {
+                            double limitMs, const std::string& incompleteReason, QString resultShown,
+                            double coverageK) {
   ReportInput in;
   in.info = std::move(info);
   in.recording = std::move(recording);
@@ -1019,8 +1049,10 @@ ReportInput makeReportInput(SessionInfo info, Recording recording, analysis::Del
     // A record: printed with the limit it was judged with, as stored.
     in.stored = *stored;
     in.imuDelayLimitMs = stored->imuDelayLimitMs;
+    in.coverageK = stored->coverageK;
   } else {
     in.imuDelayLimitMs = limitMs;
+    in.coverageK = coverageK;
     in.incompleteReason = incompleteReason;
   }
   return in;
@@ -1051,6 +1083,9 @@ Verdict formatVerdict(const session::ShownVerdict& shown, const DelayReport& del
   Verdict v;
   v.pass = shown.verdict == K::kPass;
   v.word = ui::verdictWord(shown.verdict);
+  v.limitMs = shown.limitMs;
+  v.coverageK = shown.coverageK;
+  v.ruleProvenance = QString::fromStdString(shown.ruleProvenance);
   int failed = 0, invalid = 0;
   for (const auto& p : shown.points) {
     PointVerdict pv;
@@ -1058,6 +1093,8 @@ Verdict formatVerdict(const session::ShownVerdict& shown, const DelayReport& del
     pv.pass = p.verdict == K::kPass;
     pv.vouched = p.vouched();
     pv.word = ui::verdictWord(p.verdict);
+    pv.falseAcceptProbability = p.falseAcceptProbability;
+    pv.guardBandMs = p.guardBandMs;
     QStringList why;
     for (const auto& reason : p.reasons) why << coreText(reason);
     pv.line = ui::verdictWord(p.dataVerdict) + ": " + why.join("; ");
@@ -1072,9 +1109,9 @@ Verdict formatVerdict(const session::ShownVerdict& shown, const DelayReport& del
   const QString limit = limitText(shown.limitMs);
   switch (shown.verdict) {
     case K::kPass:
-      v.headline = QObject::tr("PASS: every test point passed its validity checks and its IMU delay + 2σ is below "
-                               "the %1 ms limit.")
-                       .arg(limit);
+      v.headline = QObject::tr("PASS: every test point passed its validity checks and its IMU delay + %1σ is below "
+                               "the %2 ms limit.")
+                       .arg(QString::fromStdString(analysis::coverageFactorText(shown.coverageK)), limit);
       break;
     case K::kFail:
       v.headline = QObject::tr("FAIL against the %1 ms limit: %2 of %3 test points exceed the limit.")
@@ -1112,7 +1149,8 @@ Verdict calibrationVerdict(const DelayReport& delays, double limitMs) {
 
 Verdict calibrationVerdict(const ReportInput& in) {
   Verdict v = formatVerdict(session::judgeShown(in.stored ? &*in.stored : nullptr, &in.delays,
-                                                in.incompleteReason.empty(), in.incompleteReason, in.imuDelayLimitMs),
+                                                in.incompleteReason.empty(), in.incompleteReason, in.imuDelayLimitMs,
+                                                in.coverageK),
                             in.delays);
   if (!in.stored) return v;
   const auto differences = session::differencesFromRecord(*in.stored, in.delays);
@@ -1129,6 +1167,7 @@ Verdict calibrationVerdict(const ReportInput& in) {
 Status checkReportInput(const ReportInput& in) {
   if (!std::isfinite(in.imuDelayLimitMs) || !(in.imuDelayLimitMs > 0.0))
     return invalidArgument("the IMU delay limit must be a number > 0 ms");
+  if (const std::string why = analysis::coverageFactorProblem(in.coverageK); !why.empty()) return invalidArgument(why);
   for (const auto& p : in.delays.points) {
     const auto& tps = in.recording.testPoints;
     if (std::none_of(tps.begin(), tps.end(), [&](const TestPointData& d) { return d.index == p.index; }))

@@ -19,9 +19,13 @@
 // is INCOMPLETE, whatever its data give.
 //
 // Acceptance rule (analysis/verdict.h): a test point is INVALID when a
-// validity check failed; otherwise it PASSES when IMU delay + 2 sigma < limit
-// (one-sided, k = 2) and FAILS if not. The session passes when every test
-// point of the plan gave a delay and every one passes.
+// validity check failed; otherwise it PASSES when IMU delay + k sigma < limit
+// (one-sided guarded acceptance, k the result's stored coverage factor, 2 by
+// default) and FAILS if not. The session passes when every test point of the
+// plan gave a delay and every one passes. The first page states this
+// decision rule with its k and maximum false-accept risk, and the results
+// table each vouched point's own risk (analysis/decision_rule.h; ISO/IEC
+// 17025:2017 §7.8.6).
 //
 // Needs a QApplication (the plots are Qwt widgets); any platform works,
 // including offscreen. Not thread-safe: call from the GUI thread.
@@ -30,6 +34,7 @@
 #include <QString>
 #include <QStringList>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -50,6 +55,8 @@ struct ReportInput {
   // imported data: the report then says "no raw stream (imported)".
   std::vector<std::uint8_t> rawBytes;
   double imuDelayLimitMs = 0.8;
+  // The decision rule's coverage factor k (a stored record's own k wins).
+  double coverageK = analysis::kDefaultCoverageFactor;
   // Which of the session's stored results the report shows, in words
   // (when it was stored, by which version, with which constants); the
   // report prints it on its first page. Empty: computed for the report
@@ -78,7 +85,8 @@ struct ReportInput {
 // ReportInput.
 ReportInput makeReportInput(SessionInfo info, Recording recording, analysis::DelayReport delays,
                             std::vector<std::uint8_t> rawBytes, const session::StoredResultRecord* stored,
-                            double limitMs, const std::string& incompleteReason, QString resultShown);
+                            double limitMs, const std::string& incompleteReason, QString resultShown,
+                            double coverageK = analysis::kDefaultCoverageFactor);
 
 // SHA-256 of the bytes, 64 lower-case hex digits; empty for no bytes.
 QString rawDataSha256(const std::vector<std::uint8_t>& bytes);
@@ -93,12 +101,19 @@ struct PointVerdict {
   bool vouched = false;  // its delay may be printed bare (PASS or FAIL)
   QString word;  // "PASS", "FAIL", "INVALID", "INCOMPLETE" or "NO VERDICT"
   QString line;
+  // Vouched points only (else NaN): P(true delay >= limit | delay, sigma)
+  // and the guard band k sigma (ms).
+  double falseAcceptProbability = std::numeric_limits<double>::quiet_NaN();
+  double guardBandMs = std::numeric_limits<double>::quiet_NaN();
 };
 struct Verdict {
   bool pass = false;
   QString word;      // "PASS", "FAIL", "INVALID" or "INCOMPLETE"
   QString headline;  // the word and the reason in a few words
   std::vector<PointVerdict> points;  // one per analysed test point, report order
+  double limitMs = 0.8;
+  double coverageK = analysis::kDefaultCoverageFactor;  // the shown (stored) rule's k
+  QString ruleProvenance;  // "" or why k is not stored (a row stored before k was)
 };
 Verdict calibrationVerdict(const analysis::DelayReport& delays, double imuDelayLimitMs);
 // The verdict the report of `in` prints: the stored record's when there is

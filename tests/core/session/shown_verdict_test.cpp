@@ -167,5 +167,42 @@ TEST(ShownCsv, EveryDelayRowCarriesItsPointsVerdict) {
   EXPECT_EQ(csvField("plain"), "plain");
 }
 
+// The shown verdict carries the rule's k: a record's own (never today's
+// default), a result not stored the run's; each vouched point its risk.
+TEST(ShownVerdict, CarriesTheRecordsKNotTodaysDefault) {
+  StoredResultRecord record = recordOf("pass", {{0, "pass"}, {1, "invalid"}});
+  record.coverageK = 3.0;
+  record.coverageKStated = true;
+  const ShownVerdict v = judgeShown(&record, nullptr, true, {}, 0.8, 2.0);
+  EXPECT_EQ(v.coverageK, 3.0);
+  EXPECT_EQ(v.ruleProvenance, "");
+  EXPECT_NE(decisionRuleLine(v).find("(k = 3,"), std::string::npos) << decisionRuleLine(v);
+  EXPECT_NE(decisionRuleLine(v).find("limit 0.6 ms"), std::string::npos) << decisionRuleLine(v);
+  // Point 1: 0.2 ± 0.002 ms against 0.6 ms; point 2 is INVALID: no risk.
+  EXPECT_NEAR(v.points[0].falseAcceptProbability, 0.5 * std::erfc(200.0 / std::sqrt(2.0)), 1e-300);
+  EXPECT_NEAR(v.points[0].guardBandMs, 0.006, 1e-15);
+  EXPECT_TRUE(std::isnan(v.points[1].falseAcceptProbability));
+
+  StoredResultRecord older = recordOf("pass", {{0, "pass"}});
+  const ShownVerdict o = judgeShown(&older, nullptr, true, {}, 0.8, 3.0);
+  EXPECT_EQ(o.coverageK, 2.0);  // the rule of that version, not the 3 asked now
+  EXPECT_NE(decisionRuleLine(o).find("(k not stored: the rule of that version, k = 2)"), std::string::npos)
+      << decisionRuleLine(o);
+}
+
+TEST(ShownVerdict, AResultNotStoredIsJudgedWithTheRunsK) {
+  const analysis::DelayReport report = threePoints();
+  // Point 1: 0.52 + 3 × 0.01 = 0.55 < 0.6; point 2: 0.79 > 0.6.
+  const ShownVerdict at3 = judgeShown(nullptr, &report, true, {}, 0.55, 3.0);
+  EXPECT_EQ(at3.coverageK, 3.0);
+  EXPECT_EQ(at3.points[0].verdict, K::kFail);  // 0.55 is not below 0.55
+  const ShownVerdict at2 = judgeShown(nullptr, &report, true, {}, 0.55, 2.0);
+  EXPECT_EQ(at2.points[0].verdict, K::kPass);  // 0.54 < 0.55
+  EXPECT_NEAR(at2.points[0].falseAcceptProbability, 0.5 * std::erfc(3.0 / std::sqrt(2.0)), 1e-12);
+  // Stopped early: nothing vouched, no risk.
+  const ShownVerdict stopped = judgeShown(nullptr, &report, false, "stopped", 0.55, 2.0);
+  EXPECT_TRUE(std::isnan(stopped.points[0].falseAcceptProbability));
+}
+
 }  // namespace
 }  // namespace fog::session

@@ -168,3 +168,42 @@ TEST(StoredResult, DifferencesBeyondRoundingAreNamed) {
 
 }  // namespace
 }  // namespace fog::session
+
+namespace fog::session {
+namespace {
+
+// The decision rule's k is a stored setting: written into the settings'
+// `decision_rule`, read back; the report's own k (what judged it) wins; a row
+// stored before k was kept reads as k = 2, saying so.
+TEST(StoredResult, TheCoverageFactorIsStoredAndReadBack) {
+  const std::string settings = analysisSettingsJson(BenchConstants{}, 0.6, "fogbench-cli analyze", {}, nullptr, 3.0);
+  const auto stored = nlohmann::json::parse(settings);
+  EXPECT_EQ(stored["decision_rule"]["coverage_factor_k"].get<double>(), 3.0);
+  EXPECT_EQ(stored["decision_rule"]["limit_ms"].get<double>(), 0.6);
+  EXPECT_NE(stored["decision_rule"]["rule"].get<std::string>().find("k*sigma < limit"), std::string::npos);
+
+  const auto r = readStoredResult({4, "", settings, reportWith("pass", 0.51, "pass").dump(), true}, {});
+  ASSERT_TRUE(r.usable) << r.problem;
+  EXPECT_TRUE(r.coverageKStated);
+  EXPECT_EQ(r.coverageK, 3.0);
+  EXPECT_EQ(decisionRuleProvenance(r), "");
+
+  json report = reportWith("pass", 0.51, "pass");
+  report["decision_rule"] = {{"coverage_factor_k", 2.5}};
+  EXPECT_EQ(readStoredResult({5, "", settings, report.dump(), true}, {}).coverageK, 2.5);
+}
+
+TEST(StoredResult, ARowStoredBeforeKWasKeptReadsAsKTwoAndSaysSo) {
+  const auto r = readStoredResult({1, "", R"({"imu_delay_limit_ms":0.8})", reportWith("pass", 0.51, "pass").dump(), true}, {});
+  ASSERT_TRUE(r.usable);
+  EXPECT_FALSE(r.coverageKStated);
+  EXPECT_EQ(r.coverageK, 2.0);
+  EXPECT_EQ(decisionRuleProvenance(r), "not stored: the rule of that version, k = 2");
+  // A stored k the rule refuses (a hand-edited row) is not taken either.
+  json bad = reportWith("pass", 0.51, "pass");
+  bad["decision_rule"] = {{"coverage_factor_k", -4}};
+  EXPECT_FALSE(readStoredResult({2, "", "{}", bad.dump(), true}, {}).coverageKStated);
+}
+
+}  // namespace
+}  // namespace fog::session
