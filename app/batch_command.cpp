@@ -57,13 +57,13 @@ Status appendDurably(int fd, const std::string& text, const std::string& path) {
 
 // The record's settings are these (exactly: the settings JSON keeps every
 // double to the last bit).
-bool sameSettings(const session::StoredResultRecord& r, const BenchConstants& c, double limitMs) {
+bool sameSettings(const session::StoredResultRecord& r, const BenchConstants& c, double limitMs, double k) {
   return r.constants.tableReadDelayMs == c.tableReadDelayMs &&
          r.constants.tableReadDelayStdMs == c.tableReadDelayStdMs && r.constants.boardDelayMs == c.boardDelayMs &&
          r.constants.boardDelayStdMs == c.boardDelayStdMs &&
          r.constants.pulseEquivalentDeg == c.pulseEquivalentDeg &&
          r.constants.gainToleranceFraction == c.gainToleranceFraction && r.constants.gyroSign == c.gyroSign &&
-         r.imuDelayLimitMs == limitMs;
+         r.imuDelayLimitMs == limitMs && r.coverageK == k;
 }
 
 std::string newBatchId() {
@@ -219,7 +219,7 @@ json BatchSettings::settingsJson() const {
                                       [&](const char* n) { return name == n; }) != std::end(kNumericConstants);
     constants[name] = numeric ? nlohmann::json(std::strtod(value.c_str(), nullptr)) : nlohmann::json(value);
   }
-  return {{"constants", constants}, {"imu_delay_limit_ms", imuDelayLimitMs}};
+  return {{"constants", constants}, {"imu_delay_limit_ms", imuDelayLimitMs}, {"coverage_factor_k", coverageK}};
 }
 
 const char* batchStatusName(BatchLine::Status status) {
@@ -297,7 +297,7 @@ BatchLine batchOneFile(const std::string& path, const BatchSettings& settings) {
   if (!opened->results.empty()) {
     const auto& newest = opened->results.back();
     if (newest.usable && newest.analysedBy == settings.producedBy() &&
-        sameSettings(newest, *constants, settings.imuDelayLimitMs)) {
+        sameSettings(newest, *constants, settings.imuDelayLimitMs, settings.coverageK)) {
       line.status = BatchLine::Status::kAlreadyStored;
       line.result = static_cast<int>(opened->results.size());
       line.verdict = session::judgeShown(&newest, nullptr, opened->complete, opened->incompleteReason,
@@ -309,6 +309,9 @@ BatchLine batchOneFile(const std::string& path, const BatchSettings& settings) {
   analysis.constants = *constants;
   analysis.imuDelayLimitMs = settings.imuDelayLimitMs;
   analysis.producedBy = settings.producedBy();
+  analysis.coverageK = settings.coverageK;
+  analysis.operatorName = settings.operatorName;
+  analysis.command = settings.command;
   const auto made = session::analyseAndStore(*opened, analysis, true);
   if (!made.report) {
     line.error = made.report.status().message();
@@ -343,6 +346,11 @@ int batchCommand(CliArguments& args) {
   auto limit = readDelayLimit(args);
   if (!limit) return fail(limit.status(), 2);
   settings.imuDelayLimitMs = *limit;
+  auto coverageK = readCoverageK(args);
+  if (!coverageK) return fail(coverageK.status(), 2);
+  settings.coverageK = *coverageK;
+  settings.operatorName = toValidUtf8(args.text("operator").value_or(""));
+  settings.command = auditCommandLine();
   const std::string catalogDb = args.text("db").value_or("");
   if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
   if (!outPath)

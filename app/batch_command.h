@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli_arguments.h"
+#include "core/analysis/decision_rule.h"
 #include "core/session/shown_verdict.h"
 
 namespace fog::app {
@@ -27,12 +28,17 @@ struct BatchSettings {
   // applies them; the options not given are each session's own.
   std::vector<std::pair<std::string, std::string>> constantOptions;
   double imuDelayLimitMs = 0.0;
+  double coverageK = analysis::kDefaultCoverageFactor;  // the decision rule's k (--coverage-k)
+  // The audit entry of every result stored (stored_result.h): who ran the
+  // batch (--operator, else the login name) and its command line.
+  std::string operatorName, command;
   // Names this batch (OUT's header): a result it stored says so in its
   // settings' `analysed_by` ("fogbench-cli batch <id>").
   std::string batchId;
 
   std::string producedBy() const { return "fogbench-cli batch " + batchId; }
-  // The header's "settings": {"constants": {option: value given}, "imu_delay_limit_ms": L}.
+  // The header's "settings": {"constants": {option: value given}, "imu_delay_limit_ms": L,
+  // "coverage_factor_k": k}.
   // Two batches with equal settings analyse every file alike.
   nlohmann::json settingsJson() const;
 };

@@ -96,10 +96,12 @@ usage:
       false-accept risk 1 - Phi(k) (2.28 % at k = 2; docs/report.md).
       The stored result's audit entry: who (--operator, else the login name), this
       command line, the constants, the version and the SHA-256 of the raw stream.
-  fogbench-cli batch DIR|FILE... --jsonl OUT.jsonl [--jobs N] [constants] [--limit-ms 0.8] [--db CATALOG]
+  fogbench-cli batch DIR|FILE... --jsonl OUT.jsonl [--jobs N] [constants] [--limit-ms 0.8] [--coverage-k 2]
+                     [--operator NAME] [--db CATALOG]
       Re-analyse many sessions (the *.fbs files under each DIR, recursively; FILEs as
       given) with the constants given (each session's own where not given) and store
-      each result as a new one, as analyze does. OUT.jsonl gets a header line (the
+      each result as a new one, as analyze does (with its audit entry: --operator or
+      the login name, this command line). OUT.jsonl gets a header line (the
       settings) and one line per file as it finishes: "stored", "already_stored" or
       "refused" with the error; the verdict and, only where vouched for, each test
       point's IMU delay (else why it is refused). --jobs: files at a time (default the

@@ -79,7 +79,7 @@ struct IndexedFile {
 // read, or whose raw stream or metadata fails its checks, gives a refusal).
 IndexedFile describeSessionFile(const std::string& path);
 
-// The canonical JSON of bench constants (fixed keys, 17 significant digits)
+// The canonical JSON of bench constants (fixed keys, round-trip exact numbers)
 // and its hash, as the catalog stores them.
 std::string constantsJsonOf(const BenchConstants& constants);
 

@@ -224,8 +224,13 @@ Result<std::unique_ptr<CatalogDb>> CatalogDb::open(const std::string& target) {
 
 Value numberValue(double v) {
   if (!std::isfinite(v)) return std::nullopt;
+  // The fewest significant digits that read back as the same double: 0.06,
+  // not 0.059999999999999998 (17 always round-trips).
   char b[40];
-  std::snprintf(b, sizeof b, "%.17g", v);
+  for (int digits = 15; digits <= 17; ++digits) {
+    std::snprintf(b, sizeof b, "%.*g", digits, v);
+    if (std::strtod(b, nullptr) == v) break;
+  }
   return std::string(b);
 }
 Value integerValue(long long v) { return std::to_string(v); }

@@ -6,7 +6,8 @@
 //    libpq's "host=… dbname=…" form), through libpq.
 // Statements use `?` placeholders; every value is bound as text (NULL for an
 // empty optional) and read back as text, so both back ends see the same SQL
-// and the same values. Numbers are written with 17 significant digits.
+// and the same values. Numbers are written with the fewest significant
+// digits that read back as the same double (at most 17).
 // Qt-free; errors are Status values; nothing throws.
 
 #include <memory>
@@ -42,7 +43,7 @@ class CatalogDb {
 // Whether `target` names a PostgreSQL server rather than a SQLite file.
 bool isPostgresTarget(const std::string& target);
 
-// Text of a number as bound (17 significant digits); NULL for NaN/inf.
+// Text of a number as bound (round-trip exact); NULL for NaN/inf.
 Value numberValue(double v);
 Value integerValue(long long v);
 // A NULL or unparsable value reads as NaN / `fallback`.

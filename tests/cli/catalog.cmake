@@ -4,7 +4,8 @@
 # and lot give what the sessions hold in text, JSON and CSV, a refused delay
 # never with a number; a session or a missing catalog named as --db is
 # refused and left untouched. With -DDSN_FILE, the same folder is pushed to a
-# throwaway PostgreSQL server twice and its rows are not doubled.
+# throwaway PostgreSQL server twice and its rows are not doubled. A batch
+# re-analysis stores new results with their audit and updates the catalog.
 #   -DCLI=path -DDIR=scratch folder [-DDSN_FILE=file holding a libpq address]
 set(dir ${DIR}/catalog_test)
 file(REMOVE_RECURSE ${dir})
@@ -96,6 +97,28 @@ if(NOT units EQUAL 2 OR NOT sessions EQUAL 3 OR NOT invalid EQUAL 1 OR NOT pass 
   message(FATAL_ERROR "catalog lot L7: expected 2 units, 3 sessions (2 PASS, 1 INVALID), 2 delays, FPY 0.5:\n${o}")
 endif()
 
+# A batch re-analysis with another read delay: stored as new results with
+# their audit (who, the batch's command line), and the folder's catalog follows.
+# (exit 1: broken.fbs is refused, and has its line)
+execute_process(COMMAND ${CLI} batch ${s} --jsonl ${dir}/batch.jsonl --read-delay-ms 0.06 --operator "Li Wei"
+                RESULT_VARIABLE c OUTPUT_VARIABLE o ERROR_VARIABLE e)
+if(NOT c EQUAL 1)
+  message(FATAL_ERROR "batch: expected exit 1 (one file refused), got ${c}: ${e}\n${o}")
+endif()
+expect_match("${o}" "catalog: SQLite catalog .* updated: 3 sessions re-indexed" "batch's catalog update")
+run_ok(o catalog unit SN-A --db ${s} --json)
+string(JSON n LENGTH "${o}" history)
+math(EXPR last "${n} - 1")
+string(JSON who GET "${o}" history ${last} audit who)
+string(JSON command GET "${o}" history ${last} audit command)
+string(JSON read GET "${o}" history ${last} constants table_read_delay_ms)
+string(JSON first_shown GET "${o}" history 0 shown)
+if(NOT n EQUAL 4 OR NOT who STREQUAL "Li Wei" OR NOT command MATCHES "batch .*--read-delay-ms 0.06"
+   OR NOT (read GREATER 0.05999999 AND read LESS 0.06000001) OR first_shown)
+  message(FATAL_ERROR "catalog unit SN-A after the batch (${n}, ${who}, ${command}, ${read}, ${first_shown}): expected 4 results, the last by Li Wei with the batch's "
+                      "command and read delay 0.06, the first superseded:\n${o}")
+endif()
+
 # Named by mistake: a session as the catalog, a catalog that is not there.
 file(SHA256 ${s}/a1.fbs before)
 expect_fail(2 "a fogbench session file, not a catalog" catalog units --db ${s}/a1.fbs)
@@ -114,13 +137,13 @@ if(DSN_FILE)
   string(STRIP "${dsn}" dsn)
   set(pg "${dsn} dbname=postgres")
   run_ok(o catalog push --from ${s} --db "${pg}")
-  expect_match("${o}" "pushed 4 results" "first push")
+  expect_match("${o}" "pushed 7 results" "first push")
   run_ok(o catalog push --from ${s} --db "${pg}")
-  expect_match("${o}" "pushed 0 results.*4 pushed before and unchanged" "second push")
+  expect_match("${o}" "pushed 0 results.*7 pushed before and unchanged" "second push")
   run_ok(o catalog units --db "${pg}" --json)
   string(JSON units LENGTH "${o}")
   string(JSON sa GET "${o}" 0 results)
-  if(NOT units EQUAL 2 OR NOT sa EQUAL 2)
-    message(FATAL_ERROR "the shared catalog after two pushes: expected 2 units, SN-A with 2 results:\n${o}")
+  if(NOT units EQUAL 2 OR NOT sa EQUAL 4)
+    message(FATAL_ERROR "the shared catalog after two pushes: expected 2 units, SN-A with 4 results:\n${o}")
   endif()
 endif()
