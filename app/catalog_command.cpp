@@ -122,12 +122,13 @@ void printResultsCsv(const std::vector<CatalogResult>& results) {
   for (const auto& r : results) {
     const std::string head = session::csvField(r.imuSerial) + "," + session::csvField(r.imuModel) + "," +
                              session::csvField(r.lot) + "," + session::csvField(r.benchId) + "," +
-                             session::csvField(r.operatorName) + "," + r.sessionCreatedUtc + "," +
-                             std::to_string(r.resultNumber) + "," + r.resultCreatedUtc + "," + (r.shown ? "1" : "0") +
-                             "," + catalog::textOf(catalog::numberValue(r.meanTemperatureC)) + "," + r.verdict + "," +
+                             session::csvField(r.operatorName) + "," + session::csvField(r.sessionCreatedUtc) + "," +
+                             std::to_string(r.resultNumber) + "," + session::csvField(r.resultCreatedUtc) + "," +
+                             (r.shown ? "1" : "0") + "," + catalog::textOf(catalog::numberValue(r.meanTemperatureC)) +
+                             "," + r.verdict + "," +
                              catalog::textOf(catalog::numberValue(r.limitMs));
-    const std::string tail = "," + r.constantsHash + "," + session::csvField(r.softwareVersion) + "," +
-                             session::csvField(catalog::analysedByText(r)) + "," + session::csvField(r.path) + "," + r.fileSha256;
+    const std::string tail = "," + session::csvField(r.constantsHash) + "," + session::csvField(r.softwareVersion) + "," +
+                             session::csvField(catalog::analysedByText(r)) + "," + session::csvField(r.path) + "," + session::csvField(r.fileSha256);
     if (r.points.empty()) std::cout << head << ",,,,,,,," << session::csvField(r.verdictReason) << tail << "\n";
     for (const auto& p : r.points) {
       std::cout << head << "," << p.index << "," << p.axis << ","
@@ -203,7 +204,7 @@ int unitsCommand(CliArguments& args) {
     for (const auto& u : units)
       std::cout << session::csvField(u.serial) << "," << session::csvField(u.model) << ","
                 << session::csvField(joinList(u.lots)) << "," << session::csvField(joinList(u.benches)) << ","
-                << u.sessions << "," << u.results << "," << u.latestUtc << "," << u.latestVerdict << "\n";
+                << u.sessions << "," << u.results << "," << session::csvField(u.latestUtc) << "," << u.latestVerdict << "\n";
     return 0;
   }
   std::vector<std::vector<std::string>> rows = {
@@ -301,7 +302,11 @@ int lotCommand(CliArguments& args, const std::string& lot) {
     if (asCsv) {
       std::cout << "lot,units,sessions,pass,fail,invalid,incomplete,no_verdict,superseded,pass_rate,first_pass_yield,"
                    "limit_ms,limit_source,axis,n,mean_ms,std_ms,cpk\n";
-      for (const auto& d : s.delay)
+      // A lot without a vouched delay still has its row (its counts and
+      // yields), with empty delay cells.
+      std::vector<catalog::DelayStatistics> rows = s.delay;
+      if (rows.empty()) rows.emplace_back();
+      for (const auto& d : rows)
         std::cout << session::csvField(lot) << "," << s.units << "," << s.sessions << "," << s.pass << "," << s.fail
                   << "," << s.invalid << "," << s.incomplete << "," << s.noVerdict << "," << s.superseded << ","
                   << catalog::textOf(catalog::numberValue(s.passRate)) << ","

@@ -9,6 +9,7 @@
 #include <map>
 #include <set>
 #include <thread>
+#include <tuple>
 
 #include <nlohmann/json.hpp>
 
@@ -136,9 +137,17 @@ class Transaction {
 // SQLite's side files of a session are not sessions of their own.
 void collect(const std::string& p, std::vector<std::string>& out, std::vector<std::pair<std::string, std::string>>& bad) {
   std::error_code ec;
+  // One name per file, whichever working folder or spelling (./s, s, a
+  // symbolic link) named it: the catalog's rows and the incremental check go
+  // by path.
+  auto canonical = [](const fs::path& f) {
+    std::error_code e;
+    const fs::path c = fs::weakly_canonical(fs::absolute(f, e), e);
+    return e ? fs::absolute(f, e).lexically_normal().string() : c.string();
+  };
   if (!fs::is_directory(p, ec)) {
     if (fs::exists(p, ec)) {
-      out.push_back(p);
+      out.push_back(canonical(p));
     } else {
       bad.emplace_back(p, "no such file or folder");
     }
@@ -148,7 +157,7 @@ void collect(const std::string& p, std::vector<std::string>& out, std::vector<st
        !ec && it != end; it.increment(ec)) {
     if (!it->is_regular_file(ec)) continue;
     const std::string f = it->path().string();
-    if (it->path().extension() == ".fbs" || session::looksLikeSession(f)) out.push_back(f);
+    if (it->path().extension() == ".fbs" || session::looksLikeSession(f)) out.push_back(canonical(it->path()));
   }
   if (ec) bad.emplace_back(p, "cannot list it: " + ec.message());
 }
@@ -191,8 +200,11 @@ IndexedFile describeSessionFile(const std::string& path) {
     f.refusal = "being recorded; it is indexed once the run has finished";
     return f;
   }
-  if (Status raw = r.checkRawStream(); !raw.isOk()) {
-    f.refusal = toValidUtf8(raw.message());
+  // The raw stream's checks (order, offsets, checksums) and its SHA-256 in
+  // one walk: a damaged source of truth is a refusal.
+  auto rawSha = r.rawSha256();
+  if (!rawSha) {
+    f.refusal = toValidUtf8(rawSha.status().message());
     return f;
   }
   auto sha = sha256OfFile(path);
@@ -202,11 +214,12 @@ IndexedFile describeSessionFile(const std::string& path) {
   }
   f.fileSha256 = *sha;
   const SessionInfo& info = r.info();
-  // What names the session wherever its file lies: a copy or a move of the
-  // file is the same session (its results are counted once).
+  // What names the session wherever its file lies: its identity and the
+  // hash of its raw stream (the data). A copy or a move of the file is the
+  // same session (its results are counted once); two sessions with the same
+  // identity but other data are two.
   f.sessionKey = sha256Hex(info.createdUtc + "\n" + info.source + "\n" + info.operatorName + "\n" + info.imuModel +
-                           "\n" + info.imuSerial + "\n" + info.lot + "\n" + info.benchId + "\n" +
-                           std::to_string(r.rawByteCount()))
+                           "\n" + info.imuSerial + "\n" + info.lot + "\n" + info.benchId + "\n" + *rawSha)
                      .substr(0, 32);
 
   double temperature = kNaN;
@@ -232,7 +245,10 @@ IndexedFile describeSessionFile(const std::string& path) {
     const auto& rec = records[i];
     CatalogResult c;
     c.sessionKey = f.sessionKey;
-    c.resultKey = f.sessionKey + ":" + std::to_string(rec.id);
+    // The row id and its content: two copies of a session re-analysed apart
+    // both have a row 3, and they are two results.
+    c.resultKey = f.sessionKey + ":" + std::to_string(rec.id) + ":" +
+                  sha256Hex((*stored)[i].settingsJson + "\n" + (*stored)[i].reportJson).substr(0, 12);
     c.resultNumber = static_cast<int>(i + 1);
     c.path = path;
     c.fileSha256 = f.fileSha256;
@@ -245,7 +261,9 @@ IndexedFile describeSessionFile(const std::string& path) {
     c.resultCreatedUtc = rec.createdUtc;
     c.meanTemperatureC = temperature;
     c.runComplete = r.complete();
-    c.shown = newest && rec.id == newest->id;
+    // The session's result: the newest usable one; when none can be read,
+    // the newest row (no verdict, its reason): the session still counts.
+    c.shown = newest ? rec.id == newest->id : i + 1 == records.size();
     if (!rec.usable) {
       c.verdictReason = "the stored result cannot be read: " + rec.problem;
       f.results.push_back(std::move(c));
@@ -380,7 +398,9 @@ Status Catalog::storeRows(const IndexedFile& file) {
       "VALUES (?, ?, ?, ?, ?, ?, ?) ON CONFLICT (path) DO UPDATE SET size_bytes = excluded.size_bytes, "
       "mtime_ns = excluded.mtime_ns, session_key = excluded.session_key, file_sha256 = excluded.file_sha256, "
       "indexed_utc = excluded.indexed_utc, refusal = excluded.refusal",
-      {file.path, integerValue(file.sizeBytes), integerValue(file.mtimeNs),
+      // A refused file is read again next time (-1 never matches): what
+      // refused it may have been passing (a lock, a read error, a recording).
+      {file.path, integerValue(file.sizeBytes), integerValue(file.refusal.empty() ? file.mtimeNs : -1),
        file.sessionKey.empty() ? Value{} : Value{file.sessionKey},
        file.fileSha256.empty() ? Value{} : Value{file.fileSha256}, nowUtc(), file.refusal}));
   return Status::ok();
@@ -451,9 +471,8 @@ Result<std::vector<CatalogResult>> Catalog::results(const std::string& serial, c
     params.emplace_back(lot);
   }
   if (shownOnly) where += " AND shown = 1";
-  FOG_ASSIGN_OR_RETURN(auto rows, db_->query(std::string("SELECT ") + kResultColumns + " FROM result" + where +
-                                                 " ORDER BY session_created_utc, session_key, result_number",
-                                             params));
+  FOG_ASSIGN_OR_RETURN(auto rows,
+                       db_->query(std::string("SELECT ") + kResultColumns + " FROM result" + where, params));
   std::vector<CatalogResult> out;
   std::map<std::string, std::size_t> byKey;
   for (const auto& row : rows) {
@@ -505,13 +524,21 @@ Result<std::vector<CatalogResult>> Catalog::results(const std::string& serial, c
     p.refusal = textOf(row[8]);
     out[it->second].points.push_back(std::move(p));
   }
+  // Ordered here, by bytes, as on every back end (PostgreSQL would order
+  // text by its locale): oldest session first, then by result number.
+  std::stable_sort(out.begin(), out.end(), [](const CatalogResult& a, const CatalogResult& b) {
+    return std::tie(a.sessionCreatedUtc, a.sessionKey, a.resultNumber) <
+           std::tie(b.sessionCreatedUtc, b.sessionKey, b.resultNumber);
+  });
   return out;
 }
 
 Result<std::vector<std::pair<std::string, std::string>>> Catalog::refusals() {
-  FOG_ASSIGN_OR_RETURN(auto rows, db_->query("SELECT path, refusal FROM indexed_file WHERE refusal <> '' ORDER BY path"));
+  FOG_ASSIGN_OR_RETURN(auto rows, db_->query("SELECT path, refusal FROM indexed_file WHERE refusal <> ''"));
   std::vector<std::pair<std::string, std::string>> out;
   for (const auto& row : rows) out.emplace_back(textOf(row[0]), textOf(row[1]));
+  // Sorted here: SQLite orders text by bytes, PostgreSQL by its locale.
+  std::sort(out.begin(), out.end());
   return out;
 }
 
@@ -575,8 +602,17 @@ Result<LotStatistics> lotStatistics(const std::string& lot, const std::vector<Ca
   // Each unit's first and latest session (by when it was recorded).
   std::map<std::string, std::pair<const CatalogResult*, const CatalogResult*>> firstLatest;
   std::set<double> limits;
+  // One shown result per session: two copies of a session analysed apart
+  // each show one; the later analysis counts, the other is superseded.
+  std::map<std::string, const CatalogResult*> shownOf;
+  for (const auto& r : results)
+    if (r.shown) {
+      const CatalogResult*& best = shownOf[r.sessionKey];
+      if (!best || r.resultCreatedUtc > best->resultCreatedUtc) best = &r;
+    }
+  auto counts = [&](const CatalogResult& r) { return r.shown && shownOf[r.sessionKey] == &r; };
   for (const auto& r : results) {
-    if (!r.shown) {
+    if (!counts(r)) {
       ++s.superseded;
       continue;
     }
@@ -621,7 +657,7 @@ Result<LotStatistics> lotStatistics(const std::string& lot, const std::vector<Ca
   // FAIL. An INVALID or INCOMPLETE result is counted above, never averaged.
   std::map<std::string, std::vector<double>> byAxis;
   for (const auto& r : results) {
-    if (!r.shown || (r.verdict != "pass" && r.verdict != "fail")) continue;
+    if (!counts(r) || (r.verdict != "pass" && r.verdict != "fail")) continue;
     for (const auto& p : r.points)
       if (p.vouched() && std::isfinite(p.imuDelayMs)) {
         byAxis[p.axis].push_back(p.imuDelayMs);
@@ -642,7 +678,9 @@ Result<LotStatistics> lotStatistics(const std::string& lot, const std::vector<Ca
       double ss = 0.0;
       for (double v : it->second) ss += (v - d.meanMs) * (v - d.meanMs);
       d.stdMs = std::sqrt(ss / (d.n - 1));
-      if (std::isfinite(s.limitMs) && d.stdMs > 0.0) d.cpk = (s.limitMs - d.meanMs) / (3.0 * d.stdMs);
+      // Not stated for a spread below a picosecond: the delays are the same
+      // (rounding apart), and a Cpk of 1e14 would say nothing true.
+      if (std::isfinite(s.limitMs) && d.stdMs > kMinSpreadForCpkMs) d.cpk = (s.limitMs - d.meanMs) / (3.0 * d.stdMs);
     }
     s.delay.push_back(d);
   }
@@ -661,9 +699,9 @@ std::string analysedByText(const CatalogResult& r) {
 TemperatureSlope delayAgainstTemperature(const std::vector<CatalogResult>& results) {
   std::vector<std::pair<double, double>> xy;
   for (const auto& r : results)
-    if (r.shown && std::isfinite(r.meanTemperatureC))
+    if (r.shown && (r.verdict == "pass" || r.verdict == "fail") && std::isfinite(r.meanTemperatureC))
       for (const auto& p : r.points)
-        if (p.vouched()) xy.emplace_back(r.meanTemperatureC, p.imuDelayMs);
+        if (p.vouched() && std::isfinite(p.imuDelayMs)) xy.emplace_back(r.meanTemperatureC, p.imuDelayMs);
   TemperatureSlope s;
   s.n = static_cast<int>(xy.size());
   if (s.n < 3) return s;

@@ -143,11 +143,14 @@ struct UnitSummary {
 std::vector<UnitSummary> summariseUnits(const std::vector<CatalogResult>& results);
 
 // Statistics of a lot's shown results (docs/catalog.md, "Lot statistics").
+// Below this spread of the units' delays (1 ps) Cpk is not stated.
+inline constexpr double kMinSpreadForCpkMs = 1e-9;
+
 struct DelayStatistics {
   std::string axis;  // "x", "y", "z" or "all"
   int n = 0;         // vouched points
   double meanMs = kNaN, stdMs = kNaN;  // sample mean and standard deviation (n − 1)
-  double cpk = kNaN;                   // (limit − mean) / (3 s): one-sided, upper limit only
+  double cpk = kNaN;  // (limit − mean) / (3 s): one-sided, upper limit only; NaN when n < 2 or s < 1 ps
 };
 struct LotStatistics {
   std::string lot;

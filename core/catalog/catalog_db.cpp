@@ -3,7 +3,7 @@
 #include <libpq-fe.h>
 #include <sqlite3.h>
 
-#include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -224,29 +224,29 @@ Result<std::unique_ptr<CatalogDb>> CatalogDb::open(const std::string& target) {
 
 Value numberValue(double v) {
   if (!std::isfinite(v)) return std::nullopt;
-  // The fewest significant digits that read back as the same double: 0.06,
-  // not 0.059999999999999998 (17 always round-trips).
+  // The shortest text that reads back as the same double (0.06, not
+  // 0.059999999999999998), and never the locale's decimal comma: the GUI
+  // runs under the user's locale, and the same catalog is read by the CLI
+  // and PostgreSQL.
   char b[40];
-  for (int digits = 15; digits <= 17; ++digits) {
-    std::snprintf(b, sizeof b, "%.*g", digits, v);
-    if (std::strtod(b, nullptr) == v) break;
-  }
-  return std::string(b);
+  const auto r = std::to_chars(b, b + sizeof b, v);
+  return std::string(b, r.ptr);
 }
 Value integerValue(long long v) { return std::to_string(v); }
 
 double numberOf(const Value& v) {
   if (!v || v->empty()) return std::nan("");
-  char* end = nullptr;
-  errno = 0;
-  const double d = std::strtod(v->c_str(), &end);
-  return end && *end == '\0' ? d : std::nan("");
+  double d = 0.0;
+  const char* end = v->data() + v->size();
+  const auto r = std::from_chars(v->data(), end, d);
+  return r.ec == std::errc() && r.ptr == end ? d : std::nan("");
 }
 long long integerOf(const Value& v, long long fallback) {
   if (!v || v->empty()) return fallback;
-  char* end = nullptr;
-  const long long n = std::strtoll(v->c_str(), &end, 10);
-  return end && *end == '\0' ? n : fallback;
+  long long n = 0;
+  const char* end = v->data() + v->size();
+  const auto r = std::from_chars(v->data(), end, n);
+  return r.ec == std::errc() && r.ptr == end ? n : fallback;
 }
 std::string textOf(const Value& v) { return v ? *v : std::string(); }
 

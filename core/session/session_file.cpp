@@ -580,8 +580,8 @@ Result<std::unique_ptr<SessionWriter>> SessionWriter::create(const std::string& 
   if (fs::exists(path, ec)) return ioError(exists);
   SessionInfo info = infoIn;
   // Stored text is UTF-8 (JSON output, other tools): convert what is not.
-  for (std::string* text : {&info.operatorName, &info.imuModel, &info.imuSerial, &info.source,
-                            &info.softwareVersion, &info.createdUtc, &info.notes})
+  for (std::string* text : {&info.operatorName, &info.imuModel, &info.imuSerial, &info.lot, &info.benchId,
+                            &info.source, &info.softwareVersion, &info.createdUtc, &info.notes})
     *text = toValidUtf8(*text);
   // A frame whose text does not read back (a heading beyond +-360) would
   // make the file unreadable once recorded: refused before anything is written.

@@ -294,7 +294,8 @@ std::vector<std::string> auditTrailLines(const std::vector<StoredResultRecord>& 
     if (c.pulseEquivalentDeg > 0.0) std::snprintf(buf, sizeof buf, ", pulse %.6g deg", c.pulseEquivalentDeg);
     else std::snprintf(buf, sizeof buf, ", pulse as the stream states");
     line += buf;
-    std::snprintf(buf, sizeof buf, ", limit %.3f ms%s", r.imuDelayLimitMs, r.limitStated ? "" : " (not stated: default)");
+    std::snprintf(buf, sizeof buf, ", limit %g ms%s, k %g%s", r.imuDelayLimitMs,
+                  r.limitStated ? "" : " (not stated: default)", r.coverageK, r.coverageKStated ? "" : " (not stated)");
     line += buf;
     if (c.gyroSign != std::array<int, kAxisCount>{1, 1, 1})
       line += ", gyro signs x" + std::string(c.gyroSign[0] < 0 ? "-" : "+") + " y" +

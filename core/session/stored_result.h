@@ -138,7 +138,7 @@ std::string analysisSettingsJson(const BenchConstants& constants, double imuDela
 // The session's audit trail: one line per stored result, oldest first:
 // "#2 2026-11-29T05:10:00Z by li (operator) fogbench-cli analyze [analyze
 // s.fbs --board-delay-ms 0.2] | constants: table read 0.100 ± 0.010 ms,
-// board 0.200 ± 0.010 ms, limit 1.000 ms | fogbench 0.9.0 | input
+// board 0.200 ± 0.010 ms, limit 1 ms, k 2 | fogbench 0.9.0 | input
 // 3fa9c1d2e4b5 | PASS". A row that cannot be read says so; a row stored
 // before the trail says "audit not recorded".
 std::vector<std::string> auditTrailLines(const std::vector<StoredResultRecord>& records);

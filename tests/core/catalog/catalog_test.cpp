@@ -327,6 +327,29 @@ TEST_P(CatalogTest, RefusedDelaysAreStoredAsNullNotAsNumbers) {
   EXPECT_NE(textOf((*rows)[0][3]).find("INVALID"), std::string::npos) << textOf((*rows)[0][3]);
 }
 
+TEST_P(CatalogTest, ASessionWhoseResultsCannotBeReadStillCountsWithoutAVerdict) {
+  const std::string a = session("a.fbs", "SN-A", "2026-11-01T08:00:00Z");
+  session("b.fbs", "SN-B", "2026-11-01T09:00:00Z");
+  // A's one result damaged behind its checksum: unreadable.
+  fog::test::runSql(a, "UPDATE result SET report_json = '{\"verdict\": \"pass\"}'");
+  auto cat = openCatalog();
+  ASSERT_TRUE(cat);
+  ASSERT_TRUE(cat->index({dir_.path().string()}).isOk());
+  auto results = cat->results("", "L7", false);
+  ASSERT_TRUE(results.isOk());
+  ASSERT_EQ(results->size(), 2u);
+  EXPECT_TRUE((*results)[0].shown);
+  EXPECT_EQ((*results)[0].verdict, "");
+  EXPECT_NE((*results)[0].verdictReason.find("cannot be read"), std::string::npos) << (*results)[0].verdictReason;
+  auto stats = lotStatistics("L7", *results, NAN);
+  ASSERT_TRUE(stats.isOk()) << stats.status().message();
+  EXPECT_EQ(stats->units, 2);
+  EXPECT_EQ(stats->sessions, 2);
+  EXPECT_EQ(stats->noVerdict, 1);
+  EXPECT_EQ(stats->pass, 1);
+  EXPECT_EQ(stats->superseded, 0);
+}
+
 INSTANTIATE_TEST_SUITE_P(Sqlite, CatalogTest, ::testing::Values("sqlite"));
 INSTANTIATE_TEST_SUITE_P(Postgres, CatalogTest, ::testing::Values("postgres"));
 
@@ -359,6 +382,22 @@ TEST(CatalogFile, ASessionOrAForeignDatabaseNamedAsTheCatalogIsNeverWritten) {
   auto folder = CatalogDb::open(dir.path().string());
   ASSERT_FALSE(folder.isOk());
   EXPECT_NE(folder.status().message().find("is a folder"), std::string::npos);
+}
+
+// Numbers are bound as the shortest text that reads back exactly, whatever
+// the C locale's decimal point (the GUI runs under the user's locale).
+TEST(CatalogFile, NumbersRoundTripExactlyAndIgnoreTheLocale) {
+  for (double v : {0.06, 0.1 + 0.2, 1e-300, -2.5e17, 0.51552, 123456789.123456789}) {
+    const Value text = numberValue(v);
+    ASSERT_TRUE(text.has_value());
+    EXPECT_EQ(numberOf(text), v) << *text;
+    EXPECT_EQ(text->find(','), std::string::npos) << *text;
+  }
+  EXPECT_EQ(*numberValue(0.06), "0.06");
+  EXPECT_FALSE(numberValue(NAN).has_value());
+  EXPECT_TRUE(std::isnan(numberOf(std::string("0,06"))));  // a decimal comma is not a number here
+  EXPECT_TRUE(std::isnan(numberOf(std::string("0.06x"))));
+  EXPECT_EQ(integerOf(std::string("12x"), -7), -7);
 }
 
 TEST(CatalogFile, ANewerCatalogIsRefused) {
