@@ -1009,27 +1009,27 @@
         <translation>文件夹</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+7"/>
         <source>Operator</source>
         <translation>操作员</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>IMU model</source>
         <translation>IMU 型号</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="-9"/>
         <source>Bench id</source>
         <translation>工位编号</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+7"/>
         <source>Lot</source>
         <translation>批次</translation>
     </message>
     <message>
-        <location line="+119"/>
+        <location line="+121"/>
         <source>table read delay %1 ms · board delay %2 ms · latitude %3°
 pulse equivalent %4° · counter %5 MHz / %6 bit
 gyro signs %7 · IMU frame %8</source>
@@ -1048,12 +1048,12 @@ gyro signs %7 · IMU frame %8</source>
         <translation>IMU 坐标系：%1</translation>
     </message>
     <message>
-        <location line="-137"/>
+        <location line="-133"/>
         <source>IMU serial</source>
         <translation>IMU 序列号</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+5"/>
         <source>Notes</source>
         <translation>备注</translation>
     </message>
@@ -1073,7 +1073,7 @@ gyro signs %7 · IMU frame %8</source>
         <translation>编辑测试台常数</translation>
     </message>
     <message>
-        <location line="-128"/>
+        <location line="-129"/>
         <source>Session to replay</source>
         <translation>要回放的会话</translation>
     </message>
@@ -1083,7 +1083,7 @@ gyro signs %7 · IMU frame %8</source>
         <translation>fogbench 会话 (*.fbs)</translation>
     </message>
     <message>
-        <location line="+105"/>
+        <location line="+106"/>
         <source>Session folder</source>
         <translation>会话文件夹</translation>
     </message>
@@ -4642,7 +4642,7 @@ Run a test plan (Run), or open a session (Sessions).</source>
         <translation>各测试点的滞后随摆动频率的变化</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+47"/>
         <source>The delay report appears here after a run.</source>
         <translation>运行结束后，延迟报告显示在这里。</translation>
     </message>
@@ -4934,12 +4934,7 @@ The session itself is unchanged.</source>
         <translation>敏感、闭环与脉冲更新</translation>
     </message>
     <message>
-        <location line="+46"/>
-        <source>Decision rule: PASS when IMU delay + k·σ &lt; limit (k = %1, guarded acceptance, ISO/IEC 17025:2017 §7.8.6); maximum false-accept risk 1 − Φ(k) = %2</source>
-        <translation>判定规则：IMU 延迟 + k·σ &lt; 限值时合格（k = %1，保护带验收，ISO/IEC 17025:2017 §7.8.6）；最大误接受风险 1 − Φ(k) = %2</translation>
-    </message>
-    <message>
-        <location line="+4"/>
+        <location line="+52"/>
         <source> (k %1)</source>
         <translation>（k %1）</translation>
     </message>
@@ -4954,7 +4949,12 @@ The session itself is unchanged.</source>
         <translation>；本测试点：不给出风险，其延迟被拒绝</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+2"/>
+        <source>ISO/IEC 17025:2017 §7.8.6 asks a statement of conformity to state its decision rule and risk; this one is ILAC-G8:09/2019&apos;s guarded acceptance: the guard band is k·σ, and 1 − Φ(k) is the largest probability that a delay accepted at the boundary truly reaches the limit (a Gaussian error with the stated σ)</source>
+        <translation>ISO/IEC 17025:2017 §7.8.6 要求符合性声明写明所用的判定规则及其风险；此处为 ILAC-G8:09/2019 的保护带验收：保护带为 k·σ，1 − Φ(k) 是在验收边界上被接受的延迟其真值达到限值的最大概率（误差按所述 σ 的高斯分布）</translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>stored verdict</source>
         <translation>已保存的判定</translation>
     </message>
@@ -5031,7 +5031,12 @@ The session itself is unchanged.</source>
         <translation>转台</translation>
     </message>
     <message>
-        <location line="-55"/>
+        <location line="-154"/>
+        <source>Decision rule: PASS when IMU delay + k·σ &lt; limit (k = %1, guarded acceptance); false-accept risk ≤ 1 − Φ(k) = %2</source>
+        <translation>判定规则：IMU 延迟 + k·σ &lt; 限值时合格（k = %1，保护带验收）；误接受风险 ≤ 1 − Φ(k) = %2</translation>
+    </message>
+    <message>
+        <location line="+99"/>
         <location line="+56"/>
         <source>gyro (integrated, trend removed)</source>
         <translation>陀螺（积分，已去除趋势）</translation>
