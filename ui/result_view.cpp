@@ -640,11 +640,14 @@ QString ResultView::decisionRuleHtml(const session::ShownVerdict& v, const sessi
                      .arg(k, QString::fromStdString(
                                  analysis::probabilityText(analysis::maxFalseAcceptProbability(v.coverageK))));
   if (!v.ruleProvenance.empty()) line += tr(" (k %1)").arg(coreText(v.ruleProvenance));
-  if (sp && sp->vouched() && std::isfinite(sp->falseAcceptProbability))
-    line += tr("; this point: guard band %1 ms, P(true delay ≥ limit) = %2")
-                .arg(num(sp->guardBandMs, 4), QString::fromStdString(analysis::probabilityText(sp->falseAcceptProbability)));
-  else
+  if (sp && sp->vouched() && std::isfinite(sp->falseAcceptProbability)) {
+    // "= 2.3 %", or "< 1e-6 %" as it stands (never "= < 1e-6 %").
+    const QString risk = QString::fromStdString(analysis::probabilityText(sp->falseAcceptProbability));
+    line += tr("; this point: guard band %1 ms, P(true delay ≥ limit) %2")
+                .arg(num(sp->guardBandMs, 4), risk.startsWith('<') ? risk : "= " + risk);
+  } else {
     line += tr("; this point: no risk stated, its delay is refused");
+  }
   decisionRuleLabel_->setToolTip(
       tr("ISO/IEC 17025:2017 §7.8.6 asks a statement of conformity to state its decision rule and risk; this one is "
          "ILAC-G8:09/2019's guarded acceptance: the guard band is k·σ, and 1 − Φ(k) is the largest probability that "

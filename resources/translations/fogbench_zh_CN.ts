@@ -4939,9 +4939,9 @@ The session itself is unchanged.</source>
         <translation>（k %1）</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>; this point: guard band %1 ms, P(true delay ≥ limit) = %2</source>
-        <translation>；本测试点：保护带 %1 ms，P(真实延迟 ≥ 限值) = %2</translation>
+        <location line="+4"/>
+        <source>; this point: guard band %1 ms, P(true delay ≥ limit) %2</source>
+        <translation>；本测试点：保护带 %1 ms，P(真实延迟 ≥ 限值) %2</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -4949,7 +4949,7 @@ The session itself is unchanged.</source>
         <translation>；本测试点：不给出风险，其延迟被拒绝</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>ISO/IEC 17025:2017 §7.8.6 asks a statement of conformity to state its decision rule and risk; this one is ILAC-G8:09/2019&apos;s guarded acceptance: the guard band is k·σ, and 1 − Φ(k) is the largest probability that a delay accepted at the boundary truly reaches the limit (a Gaussian error with the stated σ)</source>
         <translation>ISO/IEC 17025:2017 §7.8.6 要求符合性声明写明所用的判定规则及其风险；此处为 ILAC-G8:09/2019 的保护带验收：保护带为 k·σ，1 − Φ(k) 是在验收边界上被接受的延迟其真值达到限值的最大概率（误差按所述 σ 的高斯分布）</translation>
     </message>
@@ -5031,12 +5031,12 @@ The session itself is unchanged.</source>
         <translation>转台</translation>
     </message>
     <message>
-        <location line="-154"/>
+        <location line="-157"/>
         <source>Decision rule: PASS when IMU delay + k·σ &lt; limit (k = %1, guarded acceptance); false-accept risk ≤ 1 − Φ(k) = %2</source>
         <translation>判定规则：IMU 延迟 + k·σ &lt; 限值时合格（k = %1，保护带验收）；误接受风险 ≤ 1 − Φ(k) = %2</translation>
     </message>
     <message>
-        <location line="+99"/>
+        <location line="+102"/>
         <location line="+56"/>
         <source>gyro (integrated, trend removed)</source>
         <translation>陀螺（积分，已去除趋势）</translation>
