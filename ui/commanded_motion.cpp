@@ -4,6 +4,7 @@
 #include <QColor>
 #include <QHeaderView>
 #include <QLabel>
+#include <QStringList>
 #include <QTableWidget>
 #include <QVBoxLayout>
 #include <cmath>
@@ -15,7 +16,27 @@ namespace {
 
 QString axisLetter(Axis a) { return QString(QChar('X' + static_cast<int>(a))); }
 
+bool sameLimits(const TurntableLimits& a, const TurntableLimits& b) {
+  return a.maxAmplitudeDeg == b.maxAmplitudeDeg && a.maxFrequencyHz == b.maxFrequencyHz &&
+         a.maxRateDegPerS == b.maxRateDegPerS && a.maxAccelDegPerS2 == b.maxAccelDegPerS2;
+}
+
+QString axisLimitsText(const TurntableLimits& l) {
+  return CommandedMotionTable::tr("amplitude %1°, frequency %2 Hz, peak rate %3 °/s, peak acceleration %4 °/s²")
+      .arg(l.maxAmplitudeDeg)
+      .arg(l.maxFrequencyHz)
+      .arg(l.maxRateDegPerS)
+      .arg(l.maxAccelDegPerS2);
+}
+
 }  // namespace
+
+table::TableLimits simulatorLimits() {
+  table::TableLimits l;
+  l.axes.fill(TurntableLimits{});
+  l.maxPositionDeg = kMaxPositionDeg;
+  return l;
+}
 
 CommandedMotionTable::CommandedMotionTable(QWidget* parent) : QWidget(parent) {
   auto* layout = new QVBoxLayout(this);
@@ -43,22 +64,28 @@ void CommandedMotionTable::setPlan(const TestPlan& plan) {
   rebuild();
 }
 
-void CommandedMotionTable::setLimits(const TurntableLimits& limits, double maxPositionDeg, const QString& source) {
+void CommandedMotionTable::setLimits(const table::TableLimits& limits, const QString& source) {
   limits_ = limits;
-  maxPositionDeg_ = maxPositionDeg;
   source_ = source;
   rebuild();
 }
 
+QString CommandedMotionTable::limitsText() const { return limitsLabel_->text(); }
+
 void CommandedMotionTable::rebuild() {
-  limitsLabel_->setText(tr("Limits of %1, per axis: amplitude %2°, frequency %3 Hz, peak rate %4 °/s, "
-                           "peak acceleration %5 °/s², angle within ±%6°. Red: beyond a limit.")
-                            .arg(source_)
-                            .arg(limits_.maxAmplitudeDeg)
-                            .arg(limits_.maxFrequencyHz)
-                            .arg(limits_.maxRateDegPerS)
-                            .arg(limits_.maxAccelDegPerS2)
-                            .arg(maxPositionDeg_));
+  const auto& axes = limits_.axes;
+  QString perAxis;
+  if (sameLimits(axes[0], axes[1]) && sameLimits(axes[0], axes[2])) {
+    perAxis = tr("per axis: %1").arg(axisLimitsText(axes[0]));
+  } else {
+    QStringList each;
+    for (std::size_t a = 0; a < axes.size(); ++a)
+      each << tr("%1: %2").arg(axisLetter(static_cast<Axis>(a)), axisLimitsText(axes[a]));
+    perAxis = each.join(tr("; "));
+  }
+  limitsLabel_->setText(tr("Limits of %1, %2; angle within ±%3°. Red: beyond a limit.")
+                            .arg(source_, perAxis)
+                            .arg(limits_.maxPositionDeg));
   flagged_ = 0;
   table_->setRowCount(static_cast<int>(plan_.points.size()));
   const QBrush over(QColor(255, 205, 205));
@@ -70,6 +97,7 @@ void CommandedMotionTable::rebuild() {
     const double w = swing ? 2.0 * std::numbers::pi * p.frequencyHz : 0.0;
     const double centre = p.positionDeg[static_cast<std::size_t>(p.axis)];
     const double rate = w * amp, accel = w * w * amp;
+    const TurntableLimits& lim = limits_.axes[static_cast<std::size_t>(p.axis)];
     auto put = [&](int column, const QString& text, const QString& problem) {
       auto* item = new QTableWidgetItem(text);
       item->setTextAlignment(column <= kAxis ? Qt::AlignCenter : Qt::AlignRight | Qt::AlignVCenter);
@@ -84,31 +112,31 @@ void CommandedMotionTable::rebuild() {
     put(kPoint, QString::number(row + 1), {});
     put(kAxis, axis, {});
     QString freqProblem;
-    if (swing && p.frequencyHz > limits_.maxFrequencyHz)
-      freqProblem = tr("frequency beyond the table's %1 Hz on %2").arg(limits_.maxFrequencyHz).arg(axis);
+    if (swing && p.frequencyHz > lim.maxFrequencyHz)
+      freqProblem = tr("frequency beyond the table's %1 Hz on %2").arg(lim.maxFrequencyHz).arg(axis);
     put(kFrequency, swing ? QString::number(p.frequencyHz, 'g', 6) : tr("at rest"), freqProblem);
     // The angle the swing axis covers; the others hold their positions.
     QString angleProblem;
-    if (amp > limits_.maxAmplitudeDeg)
+    if (amp > lim.maxAmplitudeDeg)
       angleProblem = tr("amplitude %1° is beyond the table's %2° on %3")
                          .arg(amp)
-                         .arg(limits_.maxAmplitudeDeg)
+                         .arg(lim.maxAmplitudeDeg)
                          .arg(axis);
-    else if (std::abs(centre) + amp > maxPositionDeg_)
-      angleProblem = tr("the angle leaves the table's ±%1°").arg(maxPositionDeg_);
+    else if (std::abs(centre) + amp > limits_.maxPositionDeg)
+      angleProblem = tr("the angle leaves the table's ±%1°").arg(limits_.maxPositionDeg);
     put(kAngle,
         tr("%1 … %2 (±%3)")
             .arg(centre - amp, 0, 'f', 2)
             .arg(centre + amp, 0, 'f', 2)
             .arg(QString::number(amp, 'g', 6)),
         angleProblem);
-    put(kRate, tr("%1 / %2").arg(rate, 0, 'f', 2).arg(limits_.maxRateDegPerS),
-        rate > limits_.maxRateDegPerS
-            ? tr("peak rate beyond the table's %1 °/s on %2").arg(limits_.maxRateDegPerS).arg(axis)
+    put(kRate, tr("%1 / %2").arg(rate, 0, 'f', 2).arg(lim.maxRateDegPerS),
+        rate > lim.maxRateDegPerS
+            ? tr("peak rate beyond the table's %1 °/s on %2").arg(lim.maxRateDegPerS).arg(axis)
             : QString());
-    put(kAccel, tr("%1 / %2").arg(accel, 0, 'f', 1).arg(limits_.maxAccelDegPerS2),
-        accel > limits_.maxAccelDegPerS2
-            ? tr("peak acceleration beyond the table's %1 °/s² on %2").arg(limits_.maxAccelDegPerS2).arg(axis)
+    put(kAccel, tr("%1 / %2").arg(accel, 0, 'f', 1).arg(lim.maxAccelDegPerS2),
+        accel > lim.maxAccelDegPerS2
+            ? tr("peak acceleration beyond the table's %1 °/s² on %2").arg(lim.maxAccelDegPerS2).arg(axis)
             : QString());
   }
 }

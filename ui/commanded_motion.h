@@ -1,19 +1,26 @@
 #pragma once
 // What the table is asked to do, point by point (issue 17): the angle range
 // (position ± amplitude), the peak rate 2πfA and the peak acceleration
-// (2πf)²A of the swing axis, each beside the table's limit and flagged (red,
-// with a tooltip saying which limit) when beyond it. The limits are the
-// table controller's when one is connected, else the simulator's turntable
-// (TurntableLimits defaults, positions within ±kMaxPositionDeg).
+// (2πf)²A of the swing axis, each beside its axis's limit and flagged (red,
+// with a tooltip saying which limit) when beyond it. Whose limits they are is
+// set by the Configure view (ConfigureView::setConnectedTable): the
+// connected controller's as it reported them, else the simulator's turntable
+// (TurntableLimits defaults, positions within ±kMaxPositionDeg); the label
+// above the table names them.
 
 #include <QWidget>
 
 #include "core/common/test_plan.h"
+#include "core/table/table_controller.h"
 
 class QLabel;
 class QTableWidget;
 
 namespace fog::ui {
+
+// The simulator's turntable: TurntableLimits' defaults on every axis,
+// positions within ±kMaxPositionDeg.
+table::TableLimits simulatorLimits();
 
 class CommandedMotionTable : public QWidget {
   Q_OBJECT
@@ -25,7 +32,8 @@ class CommandedMotionTable : public QWidget {
 
   void setPlan(const TestPlan& plan);
   // `source` says whose limits they are ("the simulator's turntable").
-  void setLimits(const TurntableLimits& limits, double maxPositionDeg, const QString& source);
+  void setLimits(const table::TableLimits& limits, const QString& source);
+  QString limitsText() const;
 
   QTableWidget* table() const { return table_; }
   // Cells beyond a limit, over the whole plan.
@@ -35,8 +43,7 @@ class CommandedMotionTable : public QWidget {
   void rebuild();
 
   TestPlan plan_;
-  TurntableLimits limits_;
-  double maxPositionDeg_ = kMaxPositionDeg;
+  table::TableLimits limits_ = simulatorLimits();
   QString source_;
   QLabel* limitsLabel_ = nullptr;
   QTableWidget* table_ = nullptr;

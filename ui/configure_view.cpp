@@ -46,6 +46,41 @@ ConfigureView::ConfigureView(QWidget* parent) : QWidget(parent) {
   split->addWidget(sideWidget);
   split->setStretchFactor(0, 3);
   split->setStretchFactor(1, 2);
+  connect(this, &ConfigureView::sourceChanged, this, &ConfigureView::applyTableLimits);
+  applyTableLimits();
+}
+
+void ConfigureView::setConnectedTable(const QString& description, const table::TableLimits& limits) {
+  connected_ = ConnectedTable{description, limits};
+  applyTableLimits();
+}
+
+void ConfigureView::clearConnectedTable() {
+  connected_.reset();
+  applyTableLimits();
+}
+
+// The plan is checked against the table that will swing it: the connected
+// controller's limits when the bench drives a remote controller, the
+// simulator's turntable when the simulator runs (or a session is replayed).
+// A table the bench does not command has limits it cannot know: the
+// simulator's stand in, and the label says so.
+void ConfigureView::applyTableLimits() {
+  table::TableLimits limits = simulatorLimits();
+  QString source = tr("the simulator's turntable");
+  if (sourceKind() == SourceKind::kSerial) {
+    if (tableDriver() == TableDriver::kRemote && connected_) {
+      limits = connected_->limits;
+      source = tr("the connected controller %1").arg(connected_->description);
+    } else if (tableDriver() == TableDriver::kRemote) {
+      source = tr("the simulator's turntable (no controller connected: connect it in Table controls to check the "
+                  "plan against its own limits)");
+    } else {
+      source = tr("the simulator's turntable (the bench does not command this table and cannot read its limits)");
+    }
+  }
+  planEditor_->setLimits(limits);
+  commandedMotion_->setLimits(limits, source);
 }
 
 QGroupBox* ConfigureView::buildPlanGroup() {

@@ -9,8 +9,10 @@
 
 #include <QString>
 #include <QWidget>
+#include <optional>
 
 #include "core/common/session_info.h"
+#include "core/table/table_controller.h"
 
 class QCheckBox;
 class QComboBox;
@@ -85,6 +87,13 @@ class ConfigureView : public QWidget {
   void setMessage(const QString& html);
   // During a run the plan, source and folder are locked.
   void setRunning(bool running);
+  // The controller the table panel is connected to, as it described itself,
+  // and the limits it reported: while the source is the serial board with a
+  // remote controller, the plan and the commanded motion are checked against
+  // them and the limits are named as the controller's. Otherwise (and after
+  // clearConnectedTable()) against the simulator's turntable, saying so.
+  void setConnectedTable(const QString& description, const table::TableLimits& limits);
+  void clearConnectedTable();
 
  signals:
   void sourceChanged();
@@ -104,6 +113,13 @@ class ConfigureView : public QWidget {
   void addSerialRows(QFormLayout* sourceForm);
   QGroupBox* buildSessionGroup();
   QGroupBox* buildConstantsGroup();
+  void applyTableLimits();
+
+  struct ConnectedTable {
+    QString description;
+    table::TableLimits limits;
+  };
+  std::optional<ConnectedTable> connected_;
 
   PlanEditor* planEditor_ = nullptr;
   CommandedMotionTable* commandedMotion_ = nullptr;

@@ -295,6 +295,13 @@ void MainWindow::buildToolBar() {
                           "QToolButton:disabled { background: #d8b0b0; color: #f4f4f4; }");
   }
   connect(tablePanel_, &TablePanel::availabilityChanged, this, &MainWindow::updateEmergencyStop);
+  connect(tablePanel_, &TablePanel::controllerLimits, this,
+          [this](const QString& description, const std::optional<table::TableLimits>& limits) {
+            if (limits)
+              configureView_->setConnectedTable(description, *limits);
+            else
+              configureView_->clearConnectedTable();
+          });
   // The emergency stop's outcome comes later (it never waits): a failure is
   // for the operator to read whole.
   connect(tablePanel_, &TablePanel::emergencyStopReport, this, [this](const QString& text, bool failed) {

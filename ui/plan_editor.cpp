@@ -290,7 +290,7 @@ void PlanEditor::showPresetOfPlan() {
   presetCombo_->setCurrentIndex(std::max(0, presetCombo_->findData(shownPreset_)));
 }
 
-void PlanEditor::setLimits(const TurntableLimits& limits) {
+void PlanEditor::setLimits(const table::TableLimits& limits) {
   limits_ = limits;
   validate();
 }
@@ -325,7 +325,7 @@ void PlanEditor::validate() {
   double totalS = restSpin_->value();
   for (int r = 0; r < table_->rowCount(); ++r) {
     const TestPoint p = rowPoint(r);
-    const std::vector<PointProblem> found = pointProblems(p, limits_);
+    const std::vector<PointProblem> found = pointProblems(p, limits_.axes[static_cast<std::size_t>(p.axis)]);
     const bool ok = found.empty();
     QStringList texts;
     for (const auto& f : found) texts << f.text;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/common/test_plan.h"
+#include "core/table/table_controller.h"
 
 class QComboBox;
 class QDoubleSpinBox;
@@ -49,7 +50,9 @@ class PlanEditor : public QWidget {
   QString problem() const { return problem_; }
   // Loads the preset called `name` (see benchPresets()); false if unknown.
   bool loadPreset(const QString& name);
-  void setLimits(const TurntableLimits& limits);
+  // The limits each point is checked against, its axis's (the simulator's
+  // turntable until the Configure view says otherwise).
+  void setLimits(const table::TableLimits& limits);
   void setReadOnly(bool readOnly);
 
   QTableWidget* table() const { return table_; }
@@ -71,7 +74,7 @@ class PlanEditor : public QWidget {
   TestPoint rowPoint(int row) const;
   QDoubleSpinBox* spin(int row, Column column) const;
 
-  TurntableLimits limits_;
+  table::TableLimits limits_;
   QTableWidget* table_ = nullptr;
   QComboBox* presetCombo_ = nullptr;
   QDoubleSpinBox* restSpin_ = nullptr;

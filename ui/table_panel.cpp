@@ -290,6 +290,7 @@ void TablePanel::dropLink() {
   refusalShown_ = false;
   connectButton_->setText(tr("Connect"));
   emit availabilityChanged(false);
+  emit controllerLimits(QString(), std::nullopt);
 }
 
 void TablePanel::onOpening(const QString& address, bool again) {
@@ -303,6 +304,7 @@ void TablePanel::onOpened(const QString& description, const table::TableLimits& 
   description_ = description;
   limits_ = limits;
   link_ = Link::kConnected;
+  emit controllerLimits(description, limits);
   // The emergency line's own connection, opened while the controller answers
   // (again after a reconnect): a fire then only writes.
   if (!address_.isEmpty()) emergencyLine_->arm(address_.toStdString());

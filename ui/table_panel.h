@@ -130,6 +130,9 @@ class TablePanel : public QWidget {
   // What came of an emergency stop, as shown in the panel; `failed`: it
   // reached the controller on no path.
   void emergencyStopReport(const QString& text, bool failed);
+  // The controller answered (again) and reported its limits, or the link was
+  // dropped (none): whose limits the Configure view checks the plan against.
+  void controllerLimits(const QString& description, const std::optional<fog::table::TableLimits>& limits);
 
  private:
   struct AxisRow {

@@ -456,7 +456,7 @@
 <context>
     <name>fog::ui::CommandedMotionTable</name>
     <message>
-        <location filename="../../ui/commanded_motion.cpp" line="+28"/>
+        <location filename="../../ui/commanded_motion.cpp" line="+49"/>
         <source>Point</source>
         <translation>测试点</translation>
     </message>
@@ -486,12 +486,7 @@
         <translation>峰值角加速度 (°/s²)</translation>
     </message>
     <message>
-        <location line="+25"/>
-        <source>Limits of %1, per axis: amplitude %2°, frequency %3 Hz, peak rate %4 °/s, peak acceleration %5 °/s², angle within ±%6°. Red: beyond a limit.</source>
-        <translation>%1 的限值（每轴）：幅值 %2°，频率 %3 Hz，峰值角速率 %4 °/s，峰值角加速度 %5 °/s²，角度在 ±%6° 以内。红色：超出限值。</translation>
-    </message>
-    <message>
-        <location line="+39"/>
+        <location line="+71"/>
         <source>amplitude %1° is beyond the table&apos;s %2° on %3</source>
         <translation>幅值 %1° 超出转台 %3 轴的 %2°</translation>
     </message>
@@ -511,12 +506,37 @@
         <translation>峰值角加速度超出转台 %2 轴的 %1 °/s²</translation>
     </message>
     <message>
-        <location line="-74"/>
+        <location line="-81"/>
         <source>the simulator&apos;s turntable</source>
         <translation>仿真器的转台</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="-33"/>
+        <source>amplitude %1°, frequency %2 Hz, peak rate %3 °/s, peak acceleration %4 °/s²</source>
+        <translation>幅值 %1°，频率 %2 Hz，峰值角速率 %3 °/s，峰值角加速度 %4 °/s²</translation>
+    </message>
+    <message>
+        <location line="+54"/>
+        <source>per axis: %1</source>
+        <translation>每轴：%1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>; </source>
+        <translation>；</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Limits of %1, %2; angle within ±%3°. Red: beyond a limit.</source>
+        <translation>%1 的限值，%2；角度在 ±%3° 以内。红色：超出限值。</translation>
+    </message>
+    <message>
+        <location line="+30"/>
         <source>frequency beyond the table&apos;s %1 Hz on %2</source>
         <translation>频率超出转台 %2 轴的 %1 Hz</translation>
     </message>
@@ -853,7 +873,7 @@
 <context>
     <name>fog::ui::ConfigureView</name>
     <message>
-        <location filename="../../ui/configure_view.cpp" line="+52"/>
+        <location filename="../../ui/configure_view.cpp" line="+87"/>
         <source>Test plan</source>
         <translation>测试计划</translation>
     </message>
@@ -1024,7 +1044,27 @@
         <translation>工位编号</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="-169"/>
+        <source>the simulator&apos;s turntable</source>
+        <translation>仿真器的转台</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the connected controller %1</source>
+        <translation>已连接的控制器 %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the simulator&apos;s turntable (no controller connected: connect it in Table controls to check the plan against its own limits)</source>
+        <translation>仿真器的转台（未连接控制器：在“转台控制”中连接后，按其自身限值检查计划）</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the simulator&apos;s turntable (the bench does not command this table and cannot read its limits)</source>
+        <translation>仿真器的转台（测试台不指令此转台，无法读取其限值）</translation>
+    </message>
+    <message>
+        <location line="+167"/>
         <source>Lot</source>
         <translation>批次</translation>
     </message>
@@ -1739,12 +1779,12 @@ Press Diagnose in the Results view to start it again.</source>
     <name>fog::ui::MainWindow</name>
     <message>
         <location filename="../../ui/main_window.cpp" line="+154"/>
-        <location line="+1053"/>
+        <location line="+1060"/>
         <source>fogbench %1 — FOG IMU delay bench</source>
         <translation>fogbench %1 —— 光纤陀螺 IMU 延迟测试台</translation>
     </message>
     <message>
-        <location line="-1045"/>
+        <location line="-1052"/>
         <source>Configure</source>
         <translation>配置</translation>
     </message>
@@ -1765,12 +1805,12 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+6"/>
-        <location line="+1122"/>
+        <location line="+1129"/>
         <source>Diagnosis</source>
         <translation>诊断</translation>
     </message>
     <message>
-        <location line="-1119"/>
+        <location line="-1126"/>
         <source>Noise</source>
         <translation>噪声</translation>
     </message>
@@ -1785,7 +1825,7 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>&lt;h3&gt;fogbench %1&lt;/h3&gt;&lt;p&gt;光纤陀螺 IMU 延迟测试台：转台带动 IMU 摆动，用同一计数器为转台角度和陀螺增量打时间戳，对两者拟合正弦，并将相位差换算为 IMU 延迟及其不确定度。&lt;/p&gt;&lt;p&gt;基于 Qt %2（运行于 %3）和 Qwt %4 构建。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location line="+169"/>
+        <location line="+176"/>
         <source>&amp;Bench constants…</source>
         <translation>测试台常数(&amp;B)…</translation>
     </message>
@@ -1815,7 +1855,7 @@ Press Diagnose in the Results view to start it again.</source>
         <translation>关于 fogbench</translation>
     </message>
     <message>
-        <location line="-199"/>
+        <location line="-206"/>
         <location line="+3"/>
         <source>Run</source>
         <translation>运行</translation>
@@ -1832,7 +1872,7 @@ Press Diagnose in the Results view to start it again.</source>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+123"/>
+        <location line="+130"/>
         <source>End the run now; everything received so far is kept and analysed</source>
         <translation>立即结束运行；已接收的全部数据都会保留并分析</translation>
     </message>
@@ -2099,7 +2139,7 @@ Plots: wheel zooms, drag pans, double-click shows all, click sets cursors A/B</s
         <translation>停止运行并关闭</translation>
     </message>
     <message>
-        <location line="-475"/>
+        <location line="-482"/>
         <source>Table</source>
         <translation>转台</translation>
     </message>
@@ -2109,7 +2149,7 @@ Plots: wheel zooms, drag pans, double-click shows all, click sets cursors A/B</s
         <translation>急停</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+29"/>
         <source>Stop every axis of the table at once (latched at the controller)</source>
         <translation>立即停止转台所有轴（在控制器处锁定）</translation>
     </message>
@@ -2910,7 +2950,7 @@ File: %1</source>
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location filename="../../ui/main_window.cpp" line="-1268"/>
+        <location filename="../../ui/main_window.cpp" line="-1275"/>
         <location filename="../../ui/plan_editor.cpp" line="-323"/>
         <location filename="../../ui/plots/delta_picker.cpp" line="+1"/>
         <source>%1 s</source>
@@ -5290,12 +5330,12 @@ The session itself is unchanged.</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+530"/>
+        <location line="+532"/>
         <source>emergency stop</source>
         <translation>急停</translation>
     </message>
     <message>
-        <location line="-529"/>
+        <location line="-531"/>
         <location line="+2"/>
         <source>unknown</source>
         <translation>未知</translation>
@@ -5418,7 +5458,7 @@ The session itself is unchanged.</source>
         <translation>断开</translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+49"/>
         <source>Cannot connect to the table: %1</source>
         <translation>无法连接转台：%1</translation>
     </message>

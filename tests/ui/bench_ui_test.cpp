@@ -413,9 +413,10 @@ class BenchUiTest : public QObject {
              qPrintable(table->item(0, M::kRate)->toolTip()));
     QVERIFY(!table->item(0, M::kAngle)->toolTip().contains("beyond"));
     // A controller's own limits replace the simulator's.
-    fog::TurntableLimits tight;
-    tight.maxAmplitudeDeg = 5.0;
-    motion->setLimits(tight, 180.0, "remote tcp:127.0.0.1:5025");
+    fog::table::TableLimits tight;
+    tight.axes[0].maxAmplitudeDeg = 5.0;
+    tight.maxPositionDeg = 180.0;
+    motion->setLimits(tight, "remote tcp:127.0.0.1:5025");
     QVERIFY(table->item(0, M::kAngle)->toolTip().contains("amplitude 10° is beyond the table's 5° on X"));
     QCOMPARE(motion->flaggedCells(), 3);
   }

@@ -26,7 +26,10 @@
 
 #include "core/table/emulator_link.h"
 #include "tests/core/table/fake_tcp_controller.h"
+#include "ui/commanded_motion.h"
+#include "ui/configure_view.h"
 #include "ui/main_window.h"
+#include "ui/plan_editor.h"
 #include "ui/table_panel.h"
 
 using fog::Axis;
@@ -298,6 +301,54 @@ class TablePanelTest : public QObject {
     QTRY_COMPARE_WITH_TIMEOUT(w.tablePanel()->stateText(Axis::kX), QString("emergency stop"), 5000);
     w.tablePanel()->setController(nullptr);
     QVERIFY(!estop->isEnabled());
+  }
+
+  // Configure checks the plan against the table that will swing it: with the
+  // serial board and a remote controller, the connected controller's limits
+  // (here a Y axis limited to 2 Hz), named as its; back to the simulator's
+  // turntable, saying so, when the panel disconnects.
+  void configureNamesTheConnectedTablesLimits() {
+    fog::ui::MainWindow w;
+    auto* configure = w.configureView();
+    configure->setSourceKind(fog::ui::ConfigureView::SourceKind::kSerial);
+    configure->setTableDriver(fog::ui::ConfigureView::TableDriver::kRemote, "tcp:127.0.0.1:5025");
+    const QString before = configure->commandedMotion()->limitsText();
+    QVERIFY2(before.contains("simulator") && before.contains("no controller connected"), qPrintable(before));
+    fog::TestPlan plan;
+    fog::TestPoint point;
+    point.axis = Axis::kY;
+    point.frequencyHz = 5.0;
+    point.amplitudeDeg = 1.0;
+    point.durationS = 10.0;
+    plan.points = {point};
+    configure->planEditor()->setPlan(plan);
+    QVERIFY2(configure->planEditor()->isValid(), qPrintable(configure->planEditor()->problem()));
+    QCOMPARE(configure->commandedMotion()->flaggedCells(), 0);
+
+    table::EmulatorLinkOptions options;
+    options.speed = 20.0;
+    options.table.limits.axes[1].maxFrequencyHz = 2.0;
+    auto controller = table::connectEmulatedTable(options);
+    QVERIFY(controller);
+    w.tablePanel()->setController(std::move(*controller));
+    QTRY_VERIFY_WITH_TIMEOUT(configure->commandedMotion()->limitsText().contains("connected controller"), 5000);
+    const QString connected = configure->commandedMotion()->limitsText();
+    QVERIFY2(connected.contains("table-emu") && connected.contains("Y: amplitude") && connected.contains("2 Hz"),
+             qPrintable(connected));
+    QCOMPARE(configure->commandedMotion()->flaggedCells(), 1);  // 5 Hz beyond Y's 2 Hz
+    QVERIFY(!configure->planEditor()->isValid());
+    QVERIFY2(configure->planEditor()->problem().contains("2 Hz"), qPrintable(configure->planEditor()->problem()));
+
+    // The simulator swings its own turntable, whatever the panel holds.
+    configure->setSourceKind(fog::ui::ConfigureView::SourceKind::kSimulator);
+    QCOMPARE(configure->commandedMotion()->limitsText().contains("connected controller"), false);
+    QVERIFY(configure->planEditor()->isValid());
+    configure->setSourceKind(fog::ui::ConfigureView::SourceKind::kSerial);
+    QVERIFY(!configure->planEditor()->isValid());
+
+    w.tablePanel()->setController(nullptr);
+    QVERIFY(configure->commandedMotion()->limitsText().contains("no controller connected"));
+    QVERIFY(configure->planEditor()->isValid());
   }
 
   // fogbench-table-emu stopped (SIGSTOP) mid-session: the window keeps
