@@ -169,7 +169,9 @@ usage:
       session under the folders (unit, lot, bench, verdict, IMU delay per point
       only when vouched for, constants, software, who analysed it, the file's
       SHA-256). Unchanged files are not reopened; a damaged file is one refusal.
-      Default catalog: the first folder's fogbench-catalog.sqlite.
+      Default catalog: the first folder's fogbench-catalog.sqlite. --db: a SQLite
+      file, a folder (its fogbench-catalog.sqlite) or a PostgreSQL server, named
+      only as a postgresql:// or postgres:// URI (anything else is a file).
   fogbench-cli catalog units [--lot L] | unit SERIAL | lot LOT [--limit-ms L] | refused
                        [--db ...] [--json | --csv]
       Units and their latest verdicts; one unit's history (verdict, delay +- sigma,

@@ -212,8 +212,10 @@ class PostgresDb final : public CatalogDb {
 }  // namespace
 
 bool isPostgresTarget(const std::string& t) {
-  return t.rfind("postgresql://", 0) == 0 || t.rfind("postgres://", 0) == 0 ||
-         t.find("dbname=") != std::string::npos || t.find("host=") != std::string::npos;
+  // Only libpq's URI form: a file or folder whose name holds "host=" or
+  // "dbname=" (a folder named after a setting, an export) is a SQLite
+  // catalog, never a server to connect to.
+  return t.rfind("postgresql://", 0) == 0 || t.rfind("postgres://", 0) == 0;
 }
 
 Result<std::unique_ptr<CatalogDb>> CatalogDb::open(const std::string& target) {

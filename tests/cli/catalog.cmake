@@ -6,7 +6,7 @@
 # refused and left untouched. With -DDSN_FILE, the same folder is pushed to a
 # throwaway PostgreSQL server twice and its rows are not doubled. A batch
 # re-analysis stores new results with their audit and updates the catalog.
-#   -DCLI=path -DDIR=scratch folder [-DDSN_FILE=file holding a libpq address]
+#   -DCLI=path -DDIR=scratch folder [-DDSN_FILE=file holding a libpq URI without a database]
 set(dir ${DIR}/catalog_test)
 file(REMOVE_RECURSE ${dir})
 file(MAKE_DIRECTORY ${dir}/sessions)
@@ -123,7 +123,7 @@ expect_fail(1 "no result for IMU serial 'SN-Z'" catalog unit SN-Z --db ${s})
 if(DSN_FILE)
   file(READ ${DSN_FILE} dsn)
   string(STRIP "${dsn}" dsn)
-  set(pg "${dsn} dbname=postgres")
+  set(pg "${dsn}&dbname=postgres")
   run_expect(0 o catalog push --from ${s} --db "${pg}")
   expect_match("${o}" "pushed 7 results" "first push")
   run_expect(0 o catalog push --from ${s} --db "${pg}")

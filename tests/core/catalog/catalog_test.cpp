@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <string>
@@ -44,12 +45,13 @@ std::string freshPostgresDatabase(const std::string& which) {
   std::string name = "t_";
   for (char c : std::string(info->name())) name += std::isalnum(static_cast<unsigned char>(c)) ? static_cast<char>(std::tolower(c)) : '_';
   name = name.substr(0, 50) + "_" + which;
-  auto admin = CatalogDb::open(base + " dbname=postgres");
+  // The address is a libpq URI without a database (postgres_server.sh).
+  auto admin = CatalogDb::open(base + "&dbname=postgres");
   EXPECT_TRUE(admin.isOk()) << admin.status().message();
   if (!admin) return "";
   EXPECT_TRUE((*admin)->exec("DROP DATABASE IF EXISTS " + name).isOk());
   EXPECT_TRUE((*admin)->exec("CREATE DATABASE " + name).isOk());
-  return base + " dbname=" + name;
+  return base + "&dbname=" + name;
 }
 
 // A SQLite catalog file, opened (created when new).
@@ -398,6 +400,25 @@ TEST(CatalogFile, NumbersRoundTripExactlyAndIgnoreTheLocale) {
   EXPECT_TRUE(std::isnan(numberOf(std::string("0,06"))));  // a decimal comma is not a number here
   EXPECT_TRUE(std::isnan(numberOf(std::string("0.06x"))));
   EXPECT_EQ(integerOf(std::string("12x"), -7), -7);
+}
+
+// Only a postgresql:// or postgres:// URI names a server: a catalog file in
+// a folder whose name holds "host=" or "dbname=" is a SQLite file.
+TEST(CatalogFile, OnlyAPostgresUriNamesAServer) {
+  EXPECT_TRUE(isPostgresTarget("postgresql://fogbench@labdb/fogbench"));
+  EXPECT_TRUE(isPostgresTarget("postgres://labdb/fogbench"));
+  EXPECT_FALSE(isPostgresTarget("host=labdb dbname=fogbench"));
+  EXPECT_FALSE(isPostgresTarget("/data/host=bench-2/fogbench-catalog.sqlite"));
+  EXPECT_FALSE(isPostgresTarget("runs dbname=x.sqlite"));
+  EXPECT_FALSE(isPostgresTarget("my-postgresql://notes.sqlite"));
+  ScratchDir dir;
+  std::filesystem::create_directories(dir.file("host=bench-2 dbname=lab"));
+  const std::string path = dir.file("host=bench-2 dbname=lab/fogbench-catalog.sqlite");
+  auto db = CatalogDb::open(path);
+  ASSERT_TRUE(db.isOk()) << db.status().message();
+  EXPECT_EQ((*db)->kind(), CatalogDb::Kind::kSqlite);
+  ASSERT_TRUE(Catalog::open(std::move(*db)).isOk());
+  EXPECT_TRUE(std::filesystem::exists(path));
 }
 
 TEST(CatalogFile, ANewerCatalogIsRefused) {
