@@ -572,6 +572,32 @@ Result<PushReport> Catalog::pushTo(Catalog& remote) {
   return report;
 }
 
+Result<int> Catalog::pendingCount() {
+  FOG_ASSIGN_OR_RETURN(auto rows, db_->query("SELECT count(*) FROM result WHERE pushed = 0"));
+  return rows.empty() ? 0 : static_cast<int>(integerOf(rows[0][0]));
+}
+
+Result<SyncReport> pushPending(Catalog& local, const std::string& sharedTarget) {
+  SyncReport r;
+  r.shared = describeTarget(sharedTarget);
+  auto problem = [&](const Status& s) -> Result<SyncReport> {
+    r.problem = s.message();
+    FOG_ASSIGN_OR_RETURN(r.pending, local.pendingCount());
+    return r;
+  };
+  auto db = CatalogDb::open(sharedTarget);
+  if (!db) return problem(db.status());
+  auto shared = Catalog::open(std::move(*db));
+  if (!shared) return problem(shared.status());
+  r.shared = (*shared)->describe();
+  auto pushed = local.pushTo(**shared);
+  if (!pushed) return problem(pushed.status());
+  r.reached = true;
+  r.push = *pushed;
+  FOG_ASSIGN_OR_RETURN(r.pending, local.pendingCount());
+  return r;
+}
+
 std::vector<UnitSummary> summariseUnits(const std::vector<CatalogResult>& results) {
   std::map<std::string, UnitSummary> units;
   for (const auto& r : results) {

@@ -45,6 +45,10 @@ class CatalogDb {
 // starts with postgresql:// or postgres://.
 bool isPostgresTarget(const std::string& target);
 
+// `target` as it may be shown: a URI's password (user:PASSWORD@,
+// password=…) replaced by "***".
+std::string describeTarget(const std::string& target);
+
 // Text of a number as bound (round-trip exact); NULL for NaN/inf.
 Value numberValue(double v);
 Value integerValue(long long v);
