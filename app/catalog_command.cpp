@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 
@@ -140,38 +141,63 @@ void printResultsCsv(const std::vector<CatalogResult>& results) {
   }
 }
 
+json sharedJson(const catalog::SyncReport& s) {
+  return {{"catalog", s.shared},
+          {"answered", s.reached},
+          {"pushed", s.push.pushed},
+          {"already_pushed", s.push.alreadyPushed},
+          {"pending", s.pending},
+          {"problem", s.problem}};
+}
+
+std::string catalogFileIn(const std::string& folder) {
+  return (fs::path(folder.empty() ? "." : folder) / catalog::kDefaultCatalogFileName).string();
+}
+
+Result<std::unique_ptr<catalog::Catalog>> openTarget(const std::string& target) {
+  FOG_ASSIGN_OR_RETURN(auto db, catalog::CatalogDb::open(target));
+  return catalog::Catalog::open(std::move(db));
+}
+
 int indexCommand(CliArguments& args, const std::vector<std::string>& dirs) {
   const bool asJson = args.flag("json");
+  const std::string db = args.text("db").value_or("");
   if (dirs.empty()) return fail(invalidArgument("catalog index: name one or more folders (or session files)"), 2);
+  if (Status s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
   std::error_code ec;
   const std::string firstFolder = fs::is_directory(dirs[0], ec) ? dirs[0] : fs::path(dirs[0]).parent_path().string();
-  auto cat = openCatalog(args, firstFolder.empty() ? "." : firstFolder, true);
-  if (!cat) return fail(cat.status(), 2);
-  if (Status s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
   const bool tty = ::isatty(2) == 1;
-  auto report = (*cat)->index(dirs, [&](int done, int total) {
+  auto update = updateCatalog(db, firstFolder, dirs, true, [&](int done, int total) {
     if (tty && (done % 10 == 0 || done == total))
       std::cerr << "\rcatalog: " << done << "/" << total << " files" << (done == total ? "\n" : "") << std::flush;
   });
-  if (!report) return fail(report.status(), 2);
+  if (!update) return fail(update.status(), 2);
+  const auto& report = update->index;
+  if (!update->note.empty()) std::cerr << "fogbench-cli: note: " << forTerminal(update->note) << "\n";
   if (asJson) {
     json refusals = json::array();
-    for (const auto& [p, why] : report->refusals) refusals.push_back({{"path", p}, {"refusal", why}});
-    std::cout << json({{"catalog", (*cat)->describe()},
-                       {"files_found", report->filesFound},
-                       {"indexed", report->indexed},
-                       {"unchanged", report->unchanged},
-                       {"refused", report->refused},
-                       {"results_stored", report->resultsStored},
-                       {"refusals", refusals}})
-                     .dump(2)
-              << "\n";
+    for (const auto& [p, why] : report.refusals) refusals.push_back({{"path", p}, {"refusal", why}});
+    json out = {{"catalog", update->catalog},
+                {"files_found", report.filesFound},
+                {"indexed", report.indexed},
+                {"unchanged", report.unchanged},
+                {"refused", report.refused},
+                {"results_stored", report.resultsStored},
+                {"refusals", refusals}};
+    if (update->shared) out["shared"] = sharedJson(*update->shared);
+    std::cout << out.dump(2) << "\n";
   } else {
-    std::cout << (*cat)->describe() << "\n"
-              << report->filesFound << " session files: " << report->indexed << " indexed ("
-              << report->resultsStored << " results), " << report->unchanged << " unchanged since last indexed, "
-              << report->refused << " refused\n";
-    for (const auto& [p, why] : report->refusals) std::cout << "  refused " << forTerminal(p) << ": " << forTerminal(why) << "\n";
+    std::cout << update->catalog << "\n"
+              << report.filesFound << " session files: " << report.indexed << " indexed ("
+              << report.resultsStored << " results), " << report.unchanged << " unchanged since last indexed, "
+              << report.refused << " refused\n";
+    for (const auto& [p, why] : report.refusals) std::cout << "  refused " << forTerminal(p) << ": " << forTerminal(why) << "\n";
+    if (update->shared) std::cout << "shared catalog: " << forTerminal(sharedCatalogText(*update->shared, update->catalog)) << "\n";
+  }
+  // The bench's rows are in its own catalog; the shared one did not take them.
+  if (update->shared && !update->shared->reached) {
+    std::cerr << "fogbench-cli: the shared catalog was not updated; the rows wait in the " << update->catalog << "\n";
+    return 3;
   }
   return 0;
 }
@@ -405,27 +431,98 @@ int refusedCommand(CliArguments& args) {
 
 }  // namespace
 
-Status updateCatalogAfterBatch(const std::string& db, const std::string& folder, const std::vector<std::string>& files) {
-  std::string target = db;
+Result<CatalogUpdate> updateCatalog(const std::string& db, const std::string& folder,
+                                    const std::vector<std::string>& paths, bool create,
+                                    const std::function<void(int, int)>& progress) {
+  CatalogUpdate u;
   std::error_code ec;
+  const std::string own = catalogFileIn(folder);
+  std::string target = db;
   if (target.empty()) {
-    const fs::path own = fs::path(folder) / catalog::kDefaultCatalogFileName;
-    if (folder.empty() || !fs::exists(own, ec)) {
-      std::cout << "catalog: none updated (no " << catalog::kDefaultCatalogFileName << " in " << forTerminal(folder)
-                << "; give --db, or run fogbench-cli catalog index)\n";
-      return Status::ok();
+    if (!create && !fs::exists(own, ec)) {
+      u.none = true;
+      return u;
     }
-    target = own.string();
+    target = own;
   } else if (!catalog::isPostgresTarget(target) && fs::is_directory(target, ec)) {
-    target = (fs::path(target) / catalog::kDefaultCatalogFileName).string();
+    target = catalogFileIn(target);
   }
-  FOG_ASSIGN_OR_RETURN(auto opened, catalog::CatalogDb::open(target));
-  FOG_ASSIGN_OR_RETURN(auto cat, catalog::Catalog::open(std::move(opened)));
-  FOG_ASSIGN_OR_RETURN(auto report, cat->index(files));
-  std::cout << "catalog: " << cat->describe() << " updated: " << report.indexed << " sessions re-indexed ("
-            << report.resultsStored << " results), " << report.unchanged << " unchanged, " << report.refused
+  if (!catalog::isPostgresTarget(target)) {
+    FOG_ASSIGN_OR_RETURN(auto cat, openTarget(target));
+    FOG_ASSIGN_OR_RETURN(u.index, cat->index(paths, progress));
+    u.catalog = cat->describe();
+    return u;
+  }
+  // A shared catalog: the bench's own catalog first, which works offline;
+  // then what it holds pending is pushed (docs/catalog.md, "A bench offline").
+  auto local = openTarget(own);
+  if (!local) {
+    // A folder the bench cannot write (an archive): straight into the server.
+    auto shared = openTarget(target);
+    if (!shared)
+      return Status(shared.status().code(), shared.status().message() + "; and the bench's own catalog " + own +
+                                                " cannot be written either (" + local.status().message() + ")");
+    FOG_ASSIGN_OR_RETURN(u.index, (*shared)->index(paths, progress));
+    u.catalog = (*shared)->describe();
+    u.note = "the bench's own catalog " + own + " cannot be written (" + local.status().message() +
+             "): indexed straight into the " + u.catalog + ", nothing kept pending";
+    return u;
+  }
+  FOG_ASSIGN_OR_RETURN(u.index, (*local)->index(paths, progress));
+  u.catalog = (*local)->describe();
+  FOG_ASSIGN_OR_RETURN(auto sync, catalog::pushPending(**local, target));
+  u.shared = std::move(sync);
+  return u;
+}
+
+std::string sharedCatalogText(const catalog::SyncReport& s, const std::string& local) {
+  const std::string pending = std::to_string(s.pending) + (s.pending == 1 ? " result" : " results");
+  if (s.reached)
+    return "pushed " + std::to_string(s.push.pushed) + " results to the " + s.shared + " (" +
+           std::to_string(s.push.alreadyPushed) + " pushed before and unchanged); " +
+           (s.pending == 0 ? std::string("none pending") : pending + " pending");
+  return "not updated: " + s.problem + "; " + pending + " pending in the " + local +
+         ": the next catalog index, batch or catalog push sends them";
+}
+
+Status updateCatalogAfterBatch(const std::string& db, const std::string& folder, const std::vector<std::string>& files) {
+  FOG_ASSIGN_OR_RETURN(auto u, updateCatalog(db, folder, files, false));
+  if (u.none) {
+    std::cout << "catalog: none updated (no " << catalog::kDefaultCatalogFileName << " in " << forTerminal(folder)
+              << "; give --db, or run fogbench-cli catalog index)\n";
+    return Status::ok();
+  }
+  if (!u.note.empty()) std::cerr << "fogbench-cli: note: " << forTerminal(u.note) << "\n";
+  std::cout << "catalog: " << u.catalog << " updated: " << u.index.indexed << " sessions re-indexed ("
+            << u.index.resultsStored << " results), " << u.index.unchanged << " unchanged, " << u.index.refused
             << " refused\n";
+  if (u.shared) {
+    std::cout << "shared catalog: " << forTerminal(sharedCatalogText(*u.shared, u.catalog)) << "\n";
+    if (!u.shared->reached) return ioError("the shared catalog was not updated: " + u.shared->problem);
+  }
   return Status::ok();
+}
+
+void updateCatalogAfterAnalysis(const std::string& db, const std::string& sessionPath, bool quiet) {
+  std::string folder = fs::path(sessionPath).parent_path().string();
+  if (folder.empty()) folder = ".";
+  const std::string catchUp = "fogbench-cli catalog index " + folder + (db.empty() ? "" : " --db " + catalog::describeTarget(db));
+  auto u = updateCatalog(db, folder, {sessionPath}, false);
+  if (!u) {
+    std::cerr << "fogbench-cli: note: the catalog was not updated (" << forTerminal(u.status().message())
+              << "); the result is stored in the session; catch up with: " << forTerminal(catchUp) << "\n";
+    return;
+  }
+  if (u->none) return;  // this folder keeps no catalog
+  if (!u->note.empty()) std::cerr << "fogbench-cli: note: " << forTerminal(u->note) << "\n";
+  if (u->index.refused > 0 && !u->index.refusals.empty())
+    std::cerr << "fogbench-cli: note: the " << u->catalog << " refused the session ("
+              << forTerminal(u->index.refusals.front().second) << "); catch up with: " << forTerminal(catchUp) << "\n";
+  else if (!quiet)
+    std::cout << "Catalog updated: " << u->catalog << ".\n";
+  if (u->shared && !u->shared->reached)
+    std::cerr << "fogbench-cli: note: the shared catalog was " << forTerminal(sharedCatalogText(*u->shared, u->catalog))
+              << "\n";
 }
 
 int catalogCommand(CliArguments& args) {

@@ -59,7 +59,9 @@ usage:
             record the run into a new session file (raw stream, samples, result); --lot: the
             IMU's production lot, --bench-id: the bench (station) recording it. The result's
             audit entry names the operator (else the login name), the command line and the
-            SHA-256 of the raw stream.
+            SHA-256 of the raw stream. --db CATALOG: the catalog the stored result goes to
+            (else the folder's fogbench-catalog.sqlite when it has one; docs/catalog.md); a
+            catalog that cannot be reached never fails the run (stderr says how to catch up).
   fogbench-cli run --source serial --port DEV [--baud 921600] [--parity none|even|odd]
                   [--data-bits 8] [--stop-bits 1] [--stall-warning-s 2] [--stall-timeout-s 10]
                   [plan] [constants] [--out SESSION.fbs ...] [--json]
@@ -86,6 +88,7 @@ usage:
       them (sigma, correlation, chi2, AIC, BIC; chosen by AIC), the -3 dB
       bandwidth and the group delay at --at-hz. run --preset response records one.
   fogbench-cli analyze FILE [constants] [--limit-ms 0.8] [--coverage-k 2] [--json] [--no-store] [--operator NAME]
+                       [--db CATALOG]
       The same report from a saved raw sampling-board byte stream, or from a
       session file (its own bench constants unless given; the result is stored
       in the session as a new row unless --no-store). The verdict is pass, fail
@@ -96,6 +99,9 @@ usage:
       false-accept risk 1 - Phi(k) (2.28 % at k = 2; docs/report.md).
       The stored result's audit entry: who (--operator, else the login name), this
       command line, the constants, the version and the SHA-256 of the raw stream.
+      The session is then re-indexed into the catalog (--db, else its folder's
+      fogbench-catalog.sqlite when there is one); one that cannot be reached never
+      fails the analysis: stderr says so and how to catch up (catalog index DIR).
   fogbench-cli batch DIR|FILE... --jsonl OUT.jsonl [--jobs N] [constants] [--limit-ms 0.8] [--coverage-k 2]
                      [--operator NAME] [--db CATALOG]
       Re-analyse many sessions (the *.fbs files under each DIR, recursively; FILEs as
@@ -171,7 +177,10 @@ usage:
       SHA-256). Unchanged files are not reopened; a damaged file is one refusal.
       Default catalog: the first folder's fogbench-catalog.sqlite. --db: a SQLite
       file, a folder (its fogbench-catalog.sqlite) or a PostgreSQL server, named
-      only as a postgresql:// or postgres:// URI (anything else is a file).
+      only as a postgresql:// or postgres:// URI (anything else is a file); with a
+      server, the first folder's own catalog is indexed and its pending rows pushed
+      (exit 3 when the server does not answer: they stay pending for the next index,
+      batch or push).
   fogbench-cli catalog units [--lot L] | unit SERIAL | lot LOT [--limit-ms L] | refused
                        [--db ...] [--json | --csv]
       Units and their latest verdicts; one unit's history (verdict, delay +- sigma,
