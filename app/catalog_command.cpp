@@ -245,6 +245,35 @@ int unitsCommand(CliArguments& args) {
   return 0;
 }
 
+// "session 2026-11-01T08:00:00Z result 2: analysed 2026-11-02T09:10:00Z by
+// li (operator) with fogbench-cli analyze [analyze s.fbs --board-delay-ms 0.2]
+// | constants 3fa9c1d2e4b5a6f7 | fogbench 0.9.0 | input 3fa9c1d2e4b5".
+std::string auditText(const CatalogResult& r) {
+  std::string line = "session " + r.sessionCreatedUtc + " result " + std::to_string(r.resultNumber) + ": ";
+  if (r.constantsHash.empty())  // a stored result that cannot be read: its reason
+    return line + (r.verdictReason.empty() ? "the stored result cannot be read" : r.verdictReason);
+  const json a = r.auditJson.empty() ? json() : json::parse(r.auditJson, nullptr, false);
+  auto field = [&](const char* key) {
+    return a.is_object() && a.contains(key) && a[key].is_string() ? a[key].get<std::string>() : std::string();
+  };
+  line += "analysed " + (r.resultCreatedUtc.empty() ? std::string("(time not stated)") : r.resultCreatedUtc);
+  if (!a.is_object()) {
+    line += " with " + (r.analysedBy.empty() ? std::string("(tool not stated)") : r.analysedBy) +
+            " (audit not recorded)";
+  } else {
+    const std::string who = field("who"), source = field("who_source"), command = field("command");
+    const std::string tool = field("tool").empty() ? r.analysedBy : field("tool");
+    if (!who.empty()) line += " by " + who + (source.empty() ? "" : " (" + source + ")");
+    line += " with " + (tool.empty() ? std::string("(tool not stated)") : tool);
+    if (!command.empty()) line += " [" + command + "]";
+  }
+  line += " | constants " + (r.constantsHash.empty() ? std::string("-") : r.constantsHash);
+  line += " | fogbench " + (r.softwareVersion.empty() ? std::string("?") : r.softwareVersion);
+  const std::string input = field("input_sha256");
+  line += " | input " + (input.empty() ? std::string("not recorded") : input.substr(0, 12));
+  return line;
+}
+
 int unitCommand(CliArguments& args, const std::string& serial) {
   const bool asJson = args.flag("json"), asCsv = args.flag("csv");
   auto cat = openCatalog(args, ".", false);
@@ -291,6 +320,11 @@ int unitCommand(CliArguments& args, const std::string& serial) {
                     fs::path(r.path).filename().string()});
   }
   printColumns(rows);
+  // The audit trail (docs/sessions.md): per result when it was analysed, by
+  // whom, with which command, constants and software, on which raw stream.
+  // The hashes shortened here; the JSON has them whole.
+  std::cout << "audit trail, one line per result (hashes shortened; --json has them whole):\n";
+  for (const auto& r : *results) std::cout << "  " << forTerminal(auditText(r)) << "\n";
   if (std::isfinite(slope.msPerC))
     std::cout << "IMU delay against temperature: " << fixed(slope.msPerC * 1000.0, 3) << " ± "
               << fixed(slope.stdMsPerC * 1000.0, 3) << " µs/°C (least squares over " << slope.n

@@ -70,6 +70,17 @@ endif()
 run_expect(0 o catalog unit SN-B --db ${s})
 expect_match("${o}" "superseded" "unit text")
 expect_match("${o}" "refused \\(INVALID" "unit text")
+# The audit trail: when (UTC), who, the tool and command, the constants hash,
+# the software and the raw stream's SHA-256 (shortened; the JSON's whole).
+run_expect(0 j catalog unit SN-B --db ${s} --json)
+string(JSON input GET "${j}" history 1 audit input_sha256)
+string(JSON when GET "${j}" history 1 result_created_utc)
+string(JSON hash GET "${j}" history 1 constants_hash)
+string(SUBSTRING "${input}" 0 12 input12)
+expect_match("${o}" "audit trail, one line per result[^\n]*\n  session [^\n]* result 1: analysed [0-9T:-]+Z by [^\n]* with acquisition \\[fogbench-cli run [^\n]*\\] [|] constants [0-9a-f]+ [|] fogbench [0-9.]+[^|\n]* [|] input [0-9a-f]+\n"
+             "unit text: the audit of the run's result")
+expect_match("${o}" "\n  session [^\n]* result 2: analysed ${when} by [^\n]* with fogbench-cli analyze \\[fogbench-cli analyze [^\n]*--gyro-sign x=-1,y=-1,z=-1\\] [|] constants ${hash} [|] fogbench [^|\n]* [|] input ${input12}\n"
+             "unit text: the audit of the re-analysis")
 run_expect(0 o catalog unit SN-B --db ${s} --csv)
 expect_match("${o}" "\n[^\n]*,invalid,,,\"?INVALID" "unit CSV: the refused point has empty delay cells")
 
