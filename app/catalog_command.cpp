@@ -39,6 +39,9 @@ std::string fixed(double v, int decimals) {
 
 json number(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
 
+// A CSV field of text (RFC 4180 quoting).
+std::string csvText(const std::string& text) { return session::csvField(text); }
+
 // The catalog a command works on. `--db` names a SQLite file, a folder (its
 // fogbench-catalog.sqlite) or a PostgreSQL server; without it, `index` uses
 // its first folder's catalog and the other commands the current folder's.
@@ -160,7 +163,7 @@ Result<std::unique_ptr<catalog::Catalog>> openTarget(const std::string& target) 
 }
 
 int indexCommand(CliArguments& args, const std::vector<std::string>& dirs) {
-  const bool asJson = args.flag("json");
+  const bool asJson = args.flag("json"), asCsv = args.flag("csv");
   const std::string db = args.text("db").value_or("");
   if (dirs.empty()) return fail(invalidArgument("catalog index: name one or more folders (or session files)"), 2);
   if (Status s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
@@ -174,7 +177,22 @@ int indexCommand(CliArguments& args, const std::vector<std::string>& dirs) {
   if (!update) return fail(update.status(), 2);
   const auto& report = update->index;
   if (!update->note.empty()) std::cerr << "fogbench-cli: note: " << forTerminal(update->note) << "\n";
-  if (asJson) {
+  if (asCsv) {
+    // One row per file refused by this run (the counts repeated), or one
+    // row without a refusal: the counts always have their row.
+    std::cout << "catalog,files_found,indexed,unchanged,refused,results_stored,shared_catalog,shared_answered,"
+                 "pushed,pending,path,refusal\n";
+    std::string head = csvText(update->catalog) + "," + std::to_string(report.filesFound) + "," +
+                       std::to_string(report.indexed) + "," + std::to_string(report.unchanged) + "," +
+                       std::to_string(report.refused) + "," + std::to_string(report.resultsStored) + ",";
+    if (update->shared)
+      head += csvText(update->shared->shared) + "," + (update->shared->reached ? "1" : "0") + "," +
+              std::to_string(update->shared->push.pushed) + "," + std::to_string(update->shared->pending);
+    else
+      head += ",,,";
+    if (report.refusals.empty()) std::cout << head << ",,\n";
+    for (const auto& [p, why] : report.refusals) std::cout << head << "," << csvText(p) << "," << csvText(why) << "\n";
+  } else if (asJson) {
     json refusals = json::array();
     for (const auto& [p, why] : report.refusals) refusals.push_back({{"path", p}, {"refusal", why}});
     json out = {{"catalog", update->catalog},
@@ -423,6 +441,7 @@ int lotCommand(CliArguments& args, const std::string& lot) {
 }
 
 int pushCommand(CliArguments& args) {
+  const bool asJson = args.flag("json"), asCsv = args.flag("csv");
   const auto from = args.text("from");
   if (!from) return fail(invalidArgument("catalog push: name the local catalog with --from FILE|FOLDER"), 2);
   if (!args.has("db") || !catalog::isPostgresTarget(*args.text("db")))
@@ -440,18 +459,38 @@ int pushCommand(CliArguments& args) {
   if (Status s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
   auto report = (*localCat)->pushTo(**remote);
   if (!report) return fail(report.status(), 3);
+  if (asCsv) {
+    std::cout << "from,to,pushed,already_pushed\n"
+              << csvText((*localCat)->describe()) << "," << csvText((*remote)->describe()) << "," << report->pushed
+              << "," << report->alreadyPushed << "\n";
+    return 0;
+  }
+  if (asJson) {
+    std::cout << json({{"from", (*localCat)->describe()},
+                       {"to", (*remote)->describe()},
+                       {"pushed", report->pushed},
+                       {"already_pushed", report->alreadyPushed}})
+                     .dump(2)
+              << "\n";
+    return 0;
+  }
   std::cout << "pushed " << report->pushed << " results from the " << (*localCat)->describe() << " to the "
             << (*remote)->describe() << "; " << report->alreadyPushed << " pushed before and unchanged\n";
   return 0;
 }
 
 int refusedCommand(CliArguments& args) {
-  const bool asJson = args.flag("json");
+  const bool asJson = args.flag("json"), asCsv = args.flag("csv");
   auto cat = openCatalog(args, ".", false);
   if (!cat) return fail(cat.status(), 2);
   if (Status s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
   auto refusals = (*cat)->refusals();
   if (!refusals) return fail(refusals.status(), 2);
+  if (asCsv) {
+    std::cout << "path,refusal\n";
+    for (const auto& [p, why] : *refusals) std::cout << csvText(p) << "," << csvText(why) << "\n";
+    return 0;
+  }
   if (asJson) {
     json out = json::array();
     for (const auto& [p, why] : *refusals) out.push_back({{"path", p}, {"refusal", why}});

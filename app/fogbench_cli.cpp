@@ -170,7 +170,7 @@ usage:
       Earth-corrected bias and the predicted lag sigma of a swing test;
       --kalibr-yaml writes the IMU noise file kalibr and OpenVINS read. Exit 1
       when there is no static segment.
-  fogbench-cli catalog index DIR|FILE... [--db FILE|FOLDER|postgresql://...] [--json]
+  fogbench-cli catalog index DIR|FILE... [--db FILE|FOLDER|postgresql://...] [--json | --csv]
       The lab's record (docs/catalog.md): one row per stored result of every
       session under the folders (unit, lot, bench, verdict, IMU delay per point
       only when vouched for, constants, software, who analysed it, the file's
@@ -186,7 +186,7 @@ usage:
       Units and their latest verdicts; one unit's history (verdict, delay +- sigma,
       temperature, constants, software, who; its delay against temperature); a
       lot's pass rate, first-pass yield, delay mean and spread, and Cpk.
-  fogbench-cli catalog push --from LOCAL.sqlite|FOLDER --db postgresql://...
+  fogbench-cli catalog push --from LOCAL.sqlite|FOLDER --db postgresql://... [--json | --csv]
       Sends the results not yet sent to a shared catalog (a bench that indexed
       offline pushes when the server is back; a repeated push adds nothing).
   fogbench-cli --version | help
