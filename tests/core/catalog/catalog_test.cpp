@@ -138,6 +138,13 @@ TEST_P(CatalogTest, ALotCountsInvalidAndIncompleteButNeverAveragesThem) {
   ASSERT_FALSE(od->results.empty());
   const double delayD = od->results.back().points.at(0).imuDelayMs;
   { std::ofstream(dir_.file("damaged.fbs")) << "not a session at all"; }
+  // A real session cut short (a copy interrupted, a full disk): half its bytes.
+  std::filesystem::copy_file(d, dir_.file("truncated.fbs"));
+  std::filesystem::resize_file(dir_.file("truncated.fbs"), std::filesystem::file_size(d) / 2);
+  // A session whose one stored result fails its checksum (changed behind
+  // it): indexed, its result one row that says why and has no verdict.
+  const std::string e = session("e.fbs", "SN-E", "2026-11-01T12:00:00Z", good);
+  fog::test::runSql(e, "UPDATE result SET report_json = '{\"verdict\": \"pass\"}'");
 
   // The mean IMU temperature, from the decoded stream here.
   auto decoded = protocol::decodeRecording(fog::test::shortRun().bytes);
@@ -153,15 +160,50 @@ TEST_P(CatalogTest, ALotCountsInvalidAndIncompleteButNeverAveragesThem) {
   ASSERT_TRUE(cat);
   auto report = cat->index({dir_.path().string()});
   ASSERT_TRUE(report.isOk()) << report.status().message();
-  EXPECT_EQ(report->filesFound, 5);
-  EXPECT_EQ(report->indexed, 4);
-  EXPECT_EQ(report->refused, 1);
-  ASSERT_EQ(report->refusals.size(), 1u);
+  // Each damaged file is one refusal row; indexing went on past both.
+  EXPECT_EQ(report->filesFound, 7);
+  EXPECT_EQ(report->indexed, 5);
+  EXPECT_EQ(report->refused, 2);
+  ASSERT_EQ(report->refusals.size(), 2u);
   EXPECT_NE(report->refusals[0].first.find("damaged.fbs"), std::string::npos);
-  EXPECT_EQ(report->resultsStored, 5);
+  EXPECT_NE(report->refusals[1].first.find("truncated.fbs"), std::string::npos);
+  EXPECT_FALSE(report->refusals[1].second.empty());
+  EXPECT_EQ(report->resultsStored, 6);
+  auto refusedRows = cat->refusals();
+  ASSERT_TRUE(refusedRows.isOk());
+  ASSERT_EQ(refusedRows->size(), 2u);
+  EXPECT_NE((*refusedRows)[1].first.find("truncated.fbs"), std::string::npos);
+  EXPECT_EQ((*refusedRows)[1].second, report->refusals[1].second);
+  auto truncatedRows = cat->db().query("SELECT count(*) FROM result WHERE path LIKE '%truncated.fbs'");
+  ASSERT_TRUE(truncatedRows.isOk());
+  EXPECT_EQ(integerOf((*truncatedRows)[0][0]), 0);
 
-  auto results = cat->results("", "L7", false);
-  ASSERT_TRUE(results.isOk()) << results.status().message();
+  auto all = cat->results("", "L7", false);
+  ASSERT_TRUE(all.isOk()) << all.status().message();
+  ASSERT_EQ(all->size(), 6u);
+  // E's result: one row, no verdict, no point, why.
+  std::vector<CatalogResult> unreadable;
+  for (const auto& r : *all)
+    if (r.imuSerial == "SN-E") unreadable.push_back(r);
+  ASSERT_EQ(unreadable.size(), 1u);
+  EXPECT_TRUE(unreadable[0].shown);
+  EXPECT_EQ(unreadable[0].verdict, "");
+  EXPECT_TRUE(unreadable[0].points.empty());
+  EXPECT_NE(unreadable[0].verdictReason.find("fails its checksum"), std::string::npos) << unreadable[0].verdictReason;
+
+  auto withE = lotStatistics("L7", *all, 0.8);
+  ASSERT_TRUE(withE.isOk()) << withE.status().message();
+  EXPECT_EQ(withE->units, 5);
+  EXPECT_EQ(withE->sessions, 5);
+  EXPECT_EQ(withE->noVerdict, 1);  // counted, never averaged
+  ASSERT_EQ(withE->delay.size(), 1u);
+  EXPECT_EQ(withE->delay[0].n, 2);
+
+  // The rest of the test: the four sessions A to D.
+  std::vector<CatalogResult> fourUnits;
+  for (const auto& r : *all)
+    if (r.imuSerial != "SN-E") fourUnits.push_back(r);
+  const std::vector<CatalogResult>* results = &fourUnits;
   ASSERT_EQ(results->size(), 5u);
   std::map<std::string, std::string> verdictOf;
   for (const auto& r : *results)
