@@ -105,7 +105,7 @@ usage:
   fogbench-cli batch DIR|FILE... --jsonl OUT.jsonl [--jobs N] [constants] [--limit-ms 0.8] [--coverage-k 2]
                      [--operator NAME] [--db CATALOG]
       Re-analyse many sessions (the *.fbs files under each DIR, recursively; FILEs as
-      given) with the constants given (each session's own where not given) and store
+      given; each file once however named: in, ./in, a link) with the constants given (each session's own where not given) and store
       each result as a new one, as analyze does (with its audit entry: --operator or
       the login name, this command line). OUT.jsonl gets a header line (the
       settings) and one line per file as it finishes: "stored", "already_stored" or
