@@ -39,8 +39,9 @@ std::string fixed(double v, int decimals) {
 
 json number(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
 
-// A CSV field of text (RFC 4180 quoting).
-std::string csvText(const std::string& text) { return session::csvField(text); }
+// A CSV field of text (RFC 4180 quoting; one starting like a formula is
+// prefixed with a single quote, shown_csv.h). Numbers never go through it.
+std::string csvText(const std::string& text) { return session::csvTextField(text); }
 
 // The catalog a command works on. `--db` names a SQLite file, a folder (its
 // fogbench-catalog.sqlite) or a PostgreSQL server; without it, `index` uses
@@ -116,32 +117,6 @@ json resultJson(const CatalogResult& r) {
           {"path", r.path},
           {"file_sha256", r.fileSha256},
           {"test_points", points}};
-}
-
-// CSV: one row per result and test point, the refused ones without a number.
-void printResultsCsv(const std::vector<CatalogResult>& results) {
-  std::cout << "imu_serial,imu_model,lot,bench_id,operator,session_created_utc,result,result_created_utc,shown,"
-               "mean_temperature_c,verdict,limit_ms,point,axis,frequency_hz,point_verdict,imu_delay_ms,"
-               "imu_delay_std_ms,refusal,constants_hash,software_version,analysed_by,path,file_sha256\n";
-  for (const auto& r : results) {
-    const std::string head = session::csvField(r.imuSerial) + "," + session::csvField(r.imuModel) + "," +
-                             session::csvField(r.lot) + "," + session::csvField(r.benchId) + "," +
-                             session::csvField(r.operatorName) + "," + session::csvField(r.sessionCreatedUtc) + "," +
-                             std::to_string(r.resultNumber) + "," + session::csvField(r.resultCreatedUtc) + "," +
-                             (r.shown ? "1" : "0") + "," + catalog::textOf(catalog::numberValue(r.meanTemperatureC)) +
-                             "," + r.verdict + "," +
-                             catalog::textOf(catalog::numberValue(r.limitMs));
-    const std::string tail = "," + session::csvField(r.constantsHash) + "," + session::csvField(r.softwareVersion) + "," +
-                             session::csvField(catalog::analysedByText(r)) + "," + session::csvField(r.path) + "," + session::csvField(r.fileSha256);
-    if (r.points.empty()) std::cout << head << ",,,,,,,," << session::csvField(r.verdictReason) << tail << "\n";
-    for (const auto& p : r.points) {
-      std::cout << head << "," << p.index << "," << p.axis << ","
-                << catalog::textOf(catalog::numberValue(p.frequencyHz)) << "," << p.verdict << ","
-                << (p.vouched() ? catalog::textOf(catalog::numberValue(p.imuDelayMs)) : "") << ","
-                << (p.vouched() ? catalog::textOf(catalog::numberValue(p.imuDelayStdMs)) : "") << ","
-                << session::csvField(p.refusal) << tail << "\n";
-    }
-  }
 }
 
 json sharedJson(const catalog::SyncReport& s) {
@@ -246,9 +221,9 @@ int unitsCommand(CliArguments& args) {
   if (asCsv) {
     std::cout << "imu_serial,imu_model,lots,benches,sessions,results,latest_session_utc,latest_verdict\n";
     for (const auto& u : units)
-      std::cout << session::csvField(u.serial) << "," << session::csvField(u.model) << ","
-                << session::csvField(joinList(u.lots)) << "," << session::csvField(joinList(u.benches)) << ","
-                << u.sessions << "," << u.results << "," << session::csvField(u.latestUtc) << "," << u.latestVerdict << "\n";
+      std::cout << session::csvTextField(u.serial) << "," << session::csvTextField(u.model) << ","
+                << session::csvTextField(joinList(u.lots)) << "," << session::csvTextField(joinList(u.benches)) << ","
+                << u.sessions << "," << u.results << "," << session::csvTextField(u.latestUtc) << "," << u.latestVerdict << "\n";
     return 0;
   }
   std::vector<std::vector<std::string>> rows = {
@@ -316,7 +291,7 @@ int unitCommand(CliArguments& args, const std::string& serial) {
     return 0;
   }
   if (asCsv) {
-    printResultsCsv(*results);
+    std::cout << catalog::resultsCsv(*results);
     return 0;
   }
   const auto& first = results->front();
@@ -385,7 +360,7 @@ int lotCommand(CliArguments& args, const std::string& lot) {
       std::vector<catalog::DelayStatistics> rows = s.delay;
       if (rows.empty()) rows.emplace_back();
       for (const auto& d : rows)
-        std::cout << session::csvField(lot) << "," << s.units << "," << s.sessions << "," << s.pass << "," << s.fail
+        std::cout << session::csvTextField(lot) << "," << s.units << "," << s.sessions << "," << s.pass << "," << s.fail
                   << "," << s.invalid << "," << s.incomplete << "," << s.noVerdict << "," << s.superseded << ","
                   << catalog::textOf(catalog::numberValue(s.passRate)) << ","
                   << catalog::textOf(catalog::numberValue(s.firstPassYield)) << ","

@@ -193,6 +193,14 @@ Result<LotStatistics> lotStatistics(const std::string& lot, const std::vector<Ca
 // "not recorded".
 std::string analysedByText(const CatalogResult& r);
 
+// Results as CSV (`catalog unit --csv`): a header, then one row per result
+// and test point (a result without points: one row, its reason in
+// `refusal`); a refused point has empty delay cells and its refusal. Text
+// fields go through session::csvTextField (one starting with = + - @ is
+// prefixed with a single quote, so a spreadsheet never runs it); numbers
+// are written as numbers, a negative one included.
+std::string resultsCsv(const std::vector<CatalogResult>& results);
+
 // The IMU delay's least-squares slope against the mean IMU temperature over
 // the vouched points of a unit's shown results, with the slope's standard
 // error; NaN when fewer than three points or a single temperature.

@@ -111,3 +111,16 @@ results_in_catalog(n SN-B ${s})
 if(NOT n EQUAL 4)
   message(FATAL_ERROR "analyze --db offline server: SN-B has ${n} results in the folder's catalog, expected 4")
 endif()
+
+# CSV: text that looks like a formula is written as text (a single quote
+# first), numbers as numbers (docs/catalog.md, "CSV").
+file(MAKE_DIRECTORY ${dir}/csv)
+run_expect(0 o run ${quick} --seed 6 --out ${dir}/csv/x.fbs --imu-serial "=1+2" --lot "+L9" --bench-id "-B2" --operator "@ann")
+run_expect(0 o catalog index ${dir}/csv)
+run_expect(0 o catalog unit "=1+2" --db ${dir}/csv --csv)
+expect_match("${o}" "\n'=1\\+2,,'\\+L9,'-B2,'@ann,[0-9T:-]+Z,1,[0-9T:-]+Z,1,[0-9.]+,pass,0.8,0,x,1,pass,0\\.[0-9]+,[0-9.e-]+,,"
+             "unit --csv: formula-like text quoted, numbers bare")
+run_expect(0 o catalog units --db ${dir}/csv --csv)
+expect_match("${o}" "\n'=1\\+2,,'\\+L9,'-B2,1,1," "units --csv")
+run_expect(0 o catalog lot "+L9" --db ${dir}/csv --csv)
+expect_match("${o}" "\n'\\+L9,1,1,1,0,0,0,0,0,1,1,0.8,stored,x,1,0\\.[0-9]+,,\n" "lot --csv")

@@ -484,6 +484,34 @@ TEST_P(OfflineBenchTest, ABenchPushesWhenTheServerIsBackExactlyOnce) {
 
 INSTANTIATE_TEST_SUITE_P(Postgres, OfflineBenchTest, ::testing::Values("postgres"));
 
+// The results' CSV: text that looks like a formula (serial, lot, bench,
+// operator) is written as text; numbers, negative ones included, as numbers.
+TEST(CatalogFile, CsvWritesFormulaLikeTextAsTextAndNumbersAsNumbers) {
+  CatalogResult r;
+  r.imuSerial = "=1+2";
+  r.imuModel = "FOG-3";
+  r.lot = "+L7";
+  r.benchId = "-B1";
+  r.operatorName = "@ann";
+  r.sessionCreatedUtc = "2026-11-01T08:00:00Z";
+  r.resultNumber = 1;
+  r.shown = true;
+  r.meanTemperatureC = -12.5;
+  r.verdict = "pass";
+  r.limitMs = 0.8;
+  CatalogPoint p;
+  p.axis = "z";
+  p.frequencyHz = 1.0;
+  p.verdict = "pass";
+  p.imuDelayMs = -0.25;  // not a delay a PASS would have: only the number's form matters here
+  p.imuDelayStdMs = 0.001;
+  r.points.push_back(p);
+  const std::string csv = resultsCsv({r});
+  const std::string row = csv.substr(csv.find('\n') + 1);
+  EXPECT_EQ(row.rfind("'=1+2,FOG-3,'+L7,'-B1,'@ann,2026-11-01T08:00:00Z,1,,1,-12.5,pass,0.8,0,z,1,pass,-0.25,0.001,,", 0), 0u)
+      << row;
+}
+
 // A password never shows in what is said about a server.
 TEST(CatalogFile, APasswordIsNeverShown) {
   EXPECT_EQ(describeTarget("postgresql://fogbench:s3cret@labdb:5432/fogbench"),
