@@ -202,6 +202,16 @@ Status findSessions(const std::string& dir, std::vector<std::string>& files) {
   return Status::ok();
 }
 
+// The one name of a file: absolute, symbolic links resolved, "." and ".."
+// gone (as the catalog names it).
+std::string canonicalPath(const std::string& path) {
+  std::error_code ec;
+  const fs::path absolute = fs::absolute(path, ec);
+  if (ec) return path;
+  const fs::path c = fs::weakly_canonical(absolute, ec);
+  return ec ? absolute.lexically_normal().string() : c.string();
+}
+
 std::string durationText(double s) {
   char buf[48];
   if (s < 90) std::snprintf(buf, sizeof buf, "%.0f s", std::max(1.0, s));
@@ -372,10 +382,13 @@ int batchCommand(CliArguments& args) {
       found.push_back(p);  // a FILE as given; if it is no session its line says so
     }
   }
+  // One file, however it was named ("in" and "./in", a symbolic link, a
+  // folder and a file in it): analysed once, never by two jobs at once. The
+  // first name given is the one its line states.
   std::vector<std::string> files;
   std::set<std::string> seen;
   for (auto& f : found)
-    if (seen.insert(f).second) files.push_back(std::move(f));
+    if (seen.insert(canonicalPath(f)).second) files.push_back(std::move(f));
   if (files.empty())
     return fail(invalidArgument("no *.fbs session found under " + args.positionals()[0] +
                                 (args.positionals().size() > 1 ? " and the others given" : "")),
@@ -387,9 +400,12 @@ int batchCommand(CliArguments& args) {
   settings.batchId = out->batchId;  // resuming: the id of the batch in OUT
   if (!out->note.empty()) std::cerr << "fogbench-cli: note: " << forTerminal(out->note) << "\n";
 
+  // Listed by an earlier run under another name of the same file: done too.
+  std::set<std::string> listedFiles;
+  for (const auto& l : out->listed) listedFiles.insert(canonicalPath(l));
   std::vector<std::string> todo;
   for (const auto& f : files)
-    if (!out->listed.count(toValidUtf8(f))) todo.push_back(f);
+    if (!out->listed.count(toValidUtf8(f)) && !listedFiles.count(canonicalPath(f))) todo.push_back(f);
   const std::size_t skipped = files.size() - todo.size();
 
   const bool terminal = ::isatty(2) == 1;

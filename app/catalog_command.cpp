@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 
@@ -37,6 +38,10 @@ std::string fixed(double v, int decimals) {
 }
 
 json number(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
+
+// A CSV field of text (RFC 4180 quoting; one starting like a formula is
+// prefixed with a single quote, shown_csv.h). Numbers never go through it.
+std::string csvText(const std::string& text) { return session::csvTextField(text); }
 
 // The catalog a command works on. `--db` names a SQLite file, a folder (its
 // fogbench-catalog.sqlite) or a PostgreSQL server; without it, `index` uses
@@ -114,64 +119,78 @@ json resultJson(const CatalogResult& r) {
           {"test_points", points}};
 }
 
-// CSV: one row per result and test point, the refused ones without a number.
-void printResultsCsv(const std::vector<CatalogResult>& results) {
-  std::cout << "imu_serial,imu_model,lot,bench_id,operator,session_created_utc,result,result_created_utc,shown,"
-               "mean_temperature_c,verdict,limit_ms,point,axis,frequency_hz,point_verdict,imu_delay_ms,"
-               "imu_delay_std_ms,refusal,constants_hash,software_version,analysed_by,path,file_sha256\n";
-  for (const auto& r : results) {
-    const std::string head = session::csvField(r.imuSerial) + "," + session::csvField(r.imuModel) + "," +
-                             session::csvField(r.lot) + "," + session::csvField(r.benchId) + "," +
-                             session::csvField(r.operatorName) + "," + session::csvField(r.sessionCreatedUtc) + "," +
-                             std::to_string(r.resultNumber) + "," + session::csvField(r.resultCreatedUtc) + "," +
-                             (r.shown ? "1" : "0") + "," + catalog::textOf(catalog::numberValue(r.meanTemperatureC)) +
-                             "," + r.verdict + "," +
-                             catalog::textOf(catalog::numberValue(r.limitMs));
-    const std::string tail = "," + session::csvField(r.constantsHash) + "," + session::csvField(r.softwareVersion) + "," +
-                             session::csvField(catalog::analysedByText(r)) + "," + session::csvField(r.path) + "," + session::csvField(r.fileSha256);
-    if (r.points.empty()) std::cout << head << ",,,,,,,," << session::csvField(r.verdictReason) << tail << "\n";
-    for (const auto& p : r.points) {
-      std::cout << head << "," << p.index << "," << p.axis << ","
-                << catalog::textOf(catalog::numberValue(p.frequencyHz)) << "," << p.verdict << ","
-                << (p.vouched() ? catalog::textOf(catalog::numberValue(p.imuDelayMs)) : "") << ","
-                << (p.vouched() ? catalog::textOf(catalog::numberValue(p.imuDelayStdMs)) : "") << ","
-                << session::csvField(p.refusal) << tail << "\n";
-    }
-  }
+json sharedJson(const catalog::SyncReport& s) {
+  return {{"catalog", s.shared},
+          {"answered", s.reached},
+          {"pushed", s.push.pushed},
+          {"already_pushed", s.push.alreadyPushed},
+          {"pending", s.pending},
+          {"problem", s.problem}};
+}
+
+std::string catalogFileIn(const std::string& folder) {
+  return (fs::path(folder.empty() ? "." : folder) / catalog::kDefaultCatalogFileName).string();
+}
+
+Result<std::unique_ptr<catalog::Catalog>> openTarget(const std::string& target) {
+  FOG_ASSIGN_OR_RETURN(auto db, catalog::CatalogDb::open(target));
+  return catalog::Catalog::open(std::move(db));
 }
 
 int indexCommand(CliArguments& args, const std::vector<std::string>& dirs) {
-  const bool asJson = args.flag("json");
+  const bool asJson = args.flag("json"), asCsv = args.flag("csv");
+  const std::string db = args.text("db").value_or("");
   if (dirs.empty()) return fail(invalidArgument("catalog index: name one or more folders (or session files)"), 2);
+  if (Status s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
   std::error_code ec;
   const std::string firstFolder = fs::is_directory(dirs[0], ec) ? dirs[0] : fs::path(dirs[0]).parent_path().string();
-  auto cat = openCatalog(args, firstFolder.empty() ? "." : firstFolder, true);
-  if (!cat) return fail(cat.status(), 2);
-  if (Status s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
   const bool tty = ::isatty(2) == 1;
-  auto report = (*cat)->index(dirs, [&](int done, int total) {
+  auto update = updateCatalog(db, firstFolder, dirs, true, [&](int done, int total) {
     if (tty && (done % 10 == 0 || done == total))
       std::cerr << "\rcatalog: " << done << "/" << total << " files" << (done == total ? "\n" : "") << std::flush;
   });
-  if (!report) return fail(report.status(), 2);
-  if (asJson) {
+  if (!update) return fail(update.status(), 2);
+  const auto& report = update->index;
+  if (!update->note.empty()) std::cerr << "fogbench-cli: note: " << forTerminal(update->note) << "\n";
+  if (asCsv) {
+    // One row per file refused by this run (the counts repeated), or one
+    // row without a refusal: the counts always have their row.
+    std::cout << "catalog,files_found,indexed,unchanged,refused,results_stored,shared_catalog,shared_answered,"
+                 "pushed,pending,path,refusal\n";
+    std::string head = csvText(update->catalog) + "," + std::to_string(report.filesFound) + "," +
+                       std::to_string(report.indexed) + "," + std::to_string(report.unchanged) + "," +
+                       std::to_string(report.refused) + "," + std::to_string(report.resultsStored) + ",";
+    if (update->shared)
+      head += csvText(update->shared->shared) + "," + (update->shared->reached ? "1" : "0") + "," +
+              std::to_string(update->shared->push.pushed) + "," + std::to_string(update->shared->pending);
+    else
+      head += ",,,";
+    if (report.refusals.empty()) std::cout << head << ",,\n";
+    for (const auto& [p, why] : report.refusals) std::cout << head << "," << csvText(p) << "," << csvText(why) << "\n";
+  } else if (asJson) {
     json refusals = json::array();
-    for (const auto& [p, why] : report->refusals) refusals.push_back({{"path", p}, {"refusal", why}});
-    std::cout << json({{"catalog", (*cat)->describe()},
-                       {"files_found", report->filesFound},
-                       {"indexed", report->indexed},
-                       {"unchanged", report->unchanged},
-                       {"refused", report->refused},
-                       {"results_stored", report->resultsStored},
-                       {"refusals", refusals}})
-                     .dump(2)
-              << "\n";
+    for (const auto& [p, why] : report.refusals) refusals.push_back({{"path", p}, {"refusal", why}});
+    json out = {{"catalog", update->catalog},
+                {"files_found", report.filesFound},
+                {"indexed", report.indexed},
+                {"unchanged", report.unchanged},
+                {"refused", report.refused},
+                {"results_stored", report.resultsStored},
+                {"refusals", refusals}};
+    if (update->shared) out["shared"] = sharedJson(*update->shared);
+    std::cout << out.dump(2) << "\n";
   } else {
-    std::cout << (*cat)->describe() << "\n"
-              << report->filesFound << " session files: " << report->indexed << " indexed ("
-              << report->resultsStored << " results), " << report->unchanged << " unchanged since last indexed, "
-              << report->refused << " refused\n";
-    for (const auto& [p, why] : report->refusals) std::cout << "  refused " << forTerminal(p) << ": " << forTerminal(why) << "\n";
+    std::cout << update->catalog << "\n"
+              << report.filesFound << " session files: " << report.indexed << " indexed ("
+              << report.resultsStored << " results), " << report.unchanged << " unchanged since last indexed, "
+              << report.refused << " refused\n";
+    for (const auto& [p, why] : report.refusals) std::cout << "  refused " << forTerminal(p) << ": " << forTerminal(why) << "\n";
+    if (update->shared) std::cout << "shared catalog: " << forTerminal(sharedCatalogText(*update->shared, update->catalog)) << "\n";
+  }
+  // The bench's rows are in its own catalog; the shared one did not take them.
+  if (update->shared && !update->shared->reached) {
+    std::cerr << "fogbench-cli: the shared catalog was not updated; the rows wait in the " << update->catalog << "\n";
+    return 3;
   }
   return 0;
 }
@@ -202,9 +221,9 @@ int unitsCommand(CliArguments& args) {
   if (asCsv) {
     std::cout << "imu_serial,imu_model,lots,benches,sessions,results,latest_session_utc,latest_verdict\n";
     for (const auto& u : units)
-      std::cout << session::csvField(u.serial) << "," << session::csvField(u.model) << ","
-                << session::csvField(joinList(u.lots)) << "," << session::csvField(joinList(u.benches)) << ","
-                << u.sessions << "," << u.results << "," << session::csvField(u.latestUtc) << "," << u.latestVerdict << "\n";
+      std::cout << session::csvTextField(u.serial) << "," << session::csvTextField(u.model) << ","
+                << session::csvTextField(joinList(u.lots)) << "," << session::csvTextField(joinList(u.benches)) << ","
+                << u.sessions << "," << u.results << "," << session::csvTextField(u.latestUtc) << "," << u.latestVerdict << "\n";
     return 0;
   }
   std::vector<std::vector<std::string>> rows = {
@@ -217,6 +236,35 @@ int unitsCommand(CliArguments& args) {
   printColumns(rows);
   std::cout << units.size() << (units.size() == 1 ? " unit" : " units") << " in the " << (*cat)->describe() << "\n";
   return 0;
+}
+
+// "session 2026-11-01T08:00:00Z result 2: analysed 2026-11-02T09:10:00Z by
+// li (operator) with fogbench-cli analyze [analyze s.fbs --board-delay-ms 0.2]
+// | constants 3fa9c1d2e4b5a6f7 | fogbench 0.9.0 | input 3fa9c1d2e4b5".
+std::string auditText(const CatalogResult& r) {
+  std::string line = "session " + r.sessionCreatedUtc + " result " + std::to_string(r.resultNumber) + ": ";
+  if (r.constantsHash.empty())  // a stored result that cannot be read: its reason
+    return line + (r.verdictReason.empty() ? "the stored result cannot be read" : r.verdictReason);
+  const json a = r.auditJson.empty() ? json() : json::parse(r.auditJson, nullptr, false);
+  auto field = [&](const char* key) {
+    return a.is_object() && a.contains(key) && a[key].is_string() ? a[key].get<std::string>() : std::string();
+  };
+  line += "analysed " + (r.resultCreatedUtc.empty() ? std::string("(time not stated)") : r.resultCreatedUtc);
+  if (!a.is_object()) {
+    line += " with " + (r.analysedBy.empty() ? std::string("(tool not stated)") : r.analysedBy) +
+            " (audit not recorded)";
+  } else {
+    const std::string who = field("who"), source = field("who_source"), command = field("command");
+    const std::string tool = field("tool").empty() ? r.analysedBy : field("tool");
+    if (!who.empty()) line += " by " + who + (source.empty() ? "" : " (" + source + ")");
+    line += " with " + (tool.empty() ? std::string("(tool not stated)") : tool);
+    if (!command.empty()) line += " [" + command + "]";
+  }
+  line += " | constants " + (r.constantsHash.empty() ? std::string("-") : r.constantsHash);
+  line += " | fogbench " + (r.softwareVersion.empty() ? std::string("?") : r.softwareVersion);
+  const std::string input = field("input_sha256");
+  line += " | input " + (input.empty() ? std::string("not recorded") : input.substr(0, 12));
+  return line;
 }
 
 int unitCommand(CliArguments& args, const std::string& serial) {
@@ -243,7 +291,7 @@ int unitCommand(CliArguments& args, const std::string& serial) {
     return 0;
   }
   if (asCsv) {
-    printResultsCsv(*results);
+    std::cout << catalog::resultsCsv(*results);
     return 0;
   }
   const auto& first = results->front();
@@ -265,6 +313,11 @@ int unitCommand(CliArguments& args, const std::string& serial) {
                     fs::path(r.path).filename().string()});
   }
   printColumns(rows);
+  // The audit trail (docs/sessions.md): per result when it was analysed, by
+  // whom, with which command, constants and software, on which raw stream.
+  // The hashes shortened here; the JSON has them whole.
+  std::cout << "audit trail, one line per result (hashes shortened; --json has them whole):\n";
+  for (const auto& r : *results) std::cout << "  " << forTerminal(auditText(r)) << "\n";
   if (std::isfinite(slope.msPerC))
     std::cout << "IMU delay against temperature: " << fixed(slope.msPerC * 1000.0, 3) << " ± "
               << fixed(slope.stdMsPerC * 1000.0, 3) << " µs/°C (least squares over " << slope.n
@@ -307,7 +360,7 @@ int lotCommand(CliArguments& args, const std::string& lot) {
       std::vector<catalog::DelayStatistics> rows = s.delay;
       if (rows.empty()) rows.emplace_back();
       for (const auto& d : rows)
-        std::cout << session::csvField(lot) << "," << s.units << "," << s.sessions << "," << s.pass << "," << s.fail
+        std::cout << session::csvTextField(lot) << "," << s.units << "," << s.sessions << "," << s.pass << "," << s.fail
                   << "," << s.invalid << "," << s.incomplete << "," << s.noVerdict << "," << s.superseded << ","
                   << catalog::textOf(catalog::numberValue(s.passRate)) << ","
                   << catalog::textOf(catalog::numberValue(s.firstPassYield)) << ","
@@ -363,6 +416,7 @@ int lotCommand(CliArguments& args, const std::string& lot) {
 }
 
 int pushCommand(CliArguments& args) {
+  const bool asJson = args.flag("json"), asCsv = args.flag("csv");
   const auto from = args.text("from");
   if (!from) return fail(invalidArgument("catalog push: name the local catalog with --from FILE|FOLDER"), 2);
   if (!args.has("db") || !catalog::isPostgresTarget(*args.text("db")))
@@ -380,18 +434,38 @@ int pushCommand(CliArguments& args) {
   if (Status s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
   auto report = (*localCat)->pushTo(**remote);
   if (!report) return fail(report.status(), 3);
+  if (asCsv) {
+    std::cout << "from,to,pushed,already_pushed\n"
+              << csvText((*localCat)->describe()) << "," << csvText((*remote)->describe()) << "," << report->pushed
+              << "," << report->alreadyPushed << "\n";
+    return 0;
+  }
+  if (asJson) {
+    std::cout << json({{"from", (*localCat)->describe()},
+                       {"to", (*remote)->describe()},
+                       {"pushed", report->pushed},
+                       {"already_pushed", report->alreadyPushed}})
+                     .dump(2)
+              << "\n";
+    return 0;
+  }
   std::cout << "pushed " << report->pushed << " results from the " << (*localCat)->describe() << " to the "
             << (*remote)->describe() << "; " << report->alreadyPushed << " pushed before and unchanged\n";
   return 0;
 }
 
 int refusedCommand(CliArguments& args) {
-  const bool asJson = args.flag("json");
+  const bool asJson = args.flag("json"), asCsv = args.flag("csv");
   auto cat = openCatalog(args, ".", false);
   if (!cat) return fail(cat.status(), 2);
   if (Status s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
   auto refusals = (*cat)->refusals();
   if (!refusals) return fail(refusals.status(), 2);
+  if (asCsv) {
+    std::cout << "path,refusal\n";
+    for (const auto& [p, why] : *refusals) std::cout << csvText(p) << "," << csvText(why) << "\n";
+    return 0;
+  }
   if (asJson) {
     json out = json::array();
     for (const auto& [p, why] : *refusals) out.push_back({{"path", p}, {"refusal", why}});
@@ -405,27 +479,98 @@ int refusedCommand(CliArguments& args) {
 
 }  // namespace
 
-Status updateCatalogAfterBatch(const std::string& db, const std::string& folder, const std::vector<std::string>& files) {
-  std::string target = db;
+Result<CatalogUpdate> updateCatalog(const std::string& db, const std::string& folder,
+                                    const std::vector<std::string>& paths, bool create,
+                                    const std::function<void(int, int)>& progress) {
+  CatalogUpdate u;
   std::error_code ec;
+  const std::string own = catalogFileIn(folder);
+  std::string target = db;
   if (target.empty()) {
-    const fs::path own = fs::path(folder) / catalog::kDefaultCatalogFileName;
-    if (folder.empty() || !fs::exists(own, ec)) {
-      std::cout << "catalog: none updated (no " << catalog::kDefaultCatalogFileName << " in " << forTerminal(folder)
-                << "; give --db, or run fogbench-cli catalog index)\n";
-      return Status::ok();
+    if (!create && !fs::exists(own, ec)) {
+      u.none = true;
+      return u;
     }
-    target = own.string();
+    target = own;
   } else if (!catalog::isPostgresTarget(target) && fs::is_directory(target, ec)) {
-    target = (fs::path(target) / catalog::kDefaultCatalogFileName).string();
+    target = catalogFileIn(target);
   }
-  FOG_ASSIGN_OR_RETURN(auto opened, catalog::CatalogDb::open(target));
-  FOG_ASSIGN_OR_RETURN(auto cat, catalog::Catalog::open(std::move(opened)));
-  FOG_ASSIGN_OR_RETURN(auto report, cat->index(files));
-  std::cout << "catalog: " << cat->describe() << " updated: " << report.indexed << " sessions re-indexed ("
-            << report.resultsStored << " results), " << report.unchanged << " unchanged, " << report.refused
+  if (!catalog::isPostgresTarget(target)) {
+    FOG_ASSIGN_OR_RETURN(auto cat, openTarget(target));
+    FOG_ASSIGN_OR_RETURN(u.index, cat->index(paths, progress));
+    u.catalog = cat->describe();
+    return u;
+  }
+  // A shared catalog: the bench's own catalog first, which works offline;
+  // then what it holds pending is pushed (docs/catalog.md, "A bench offline").
+  auto local = openTarget(own);
+  if (!local) {
+    // A folder the bench cannot write (an archive): straight into the server.
+    auto shared = openTarget(target);
+    if (!shared)
+      return Status(shared.status().code(), shared.status().message() + "; and the bench's own catalog " + own +
+                                                " cannot be written either (" + local.status().message() + ")");
+    FOG_ASSIGN_OR_RETURN(u.index, (*shared)->index(paths, progress));
+    u.catalog = (*shared)->describe();
+    u.note = "the bench's own catalog " + own + " cannot be written (" + local.status().message() +
+             "): indexed straight into the " + u.catalog + ", nothing kept pending";
+    return u;
+  }
+  FOG_ASSIGN_OR_RETURN(u.index, (*local)->index(paths, progress));
+  u.catalog = (*local)->describe();
+  FOG_ASSIGN_OR_RETURN(auto sync, catalog::pushPending(**local, target));
+  u.shared = std::move(sync);
+  return u;
+}
+
+std::string sharedCatalogText(const catalog::SyncReport& s, const std::string& local) {
+  const std::string pending = std::to_string(s.pending) + (s.pending == 1 ? " result" : " results");
+  if (s.reached)
+    return "pushed " + std::to_string(s.push.pushed) + " results to the " + s.shared + " (" +
+           std::to_string(s.push.alreadyPushed) + " pushed before and unchanged); " +
+           (s.pending == 0 ? std::string("none pending") : pending + " pending");
+  return "not updated: " + s.problem + "; " + pending + " pending in the " + local +
+         ": the next catalog index, batch or catalog push sends them";
+}
+
+Status updateCatalogAfterBatch(const std::string& db, const std::string& folder, const std::vector<std::string>& files) {
+  FOG_ASSIGN_OR_RETURN(auto u, updateCatalog(db, folder, files, false));
+  if (u.none) {
+    std::cout << "catalog: none updated (no " << catalog::kDefaultCatalogFileName << " in " << forTerminal(folder)
+              << "; give --db, or run fogbench-cli catalog index)\n";
+    return Status::ok();
+  }
+  if (!u.note.empty()) std::cerr << "fogbench-cli: note: " << forTerminal(u.note) << "\n";
+  std::cout << "catalog: " << u.catalog << " updated: " << u.index.indexed << " sessions re-indexed ("
+            << u.index.resultsStored << " results), " << u.index.unchanged << " unchanged, " << u.index.refused
             << " refused\n";
+  if (u.shared) {
+    std::cout << "shared catalog: " << forTerminal(sharedCatalogText(*u.shared, u.catalog)) << "\n";
+    if (!u.shared->reached) return ioError("the shared catalog was not updated: " + u.shared->problem);
+  }
   return Status::ok();
+}
+
+void updateCatalogAfterAnalysis(const std::string& db, const std::string& sessionPath, bool quiet) {
+  std::string folder = fs::path(sessionPath).parent_path().string();
+  if (folder.empty()) folder = ".";
+  const std::string catchUp = "fogbench-cli catalog index " + folder + (db.empty() ? "" : " --db " + catalog::describeTarget(db));
+  auto u = updateCatalog(db, folder, {sessionPath}, false);
+  if (!u) {
+    std::cerr << "fogbench-cli: note: the catalog was not updated (" << forTerminal(u.status().message())
+              << "); the result is stored in the session; catch up with: " << forTerminal(catchUp) << "\n";
+    return;
+  }
+  if (u->none) return;  // this folder keeps no catalog
+  if (!u->note.empty()) std::cerr << "fogbench-cli: note: " << forTerminal(u->note) << "\n";
+  if (u->index.refused > 0 && !u->index.refusals.empty())
+    std::cerr << "fogbench-cli: note: the " << u->catalog << " refused the session ("
+              << forTerminal(u->index.refusals.front().second) << "); catch up with: " << forTerminal(catchUp) << "\n";
+  else if (!quiet)
+    std::cout << "Catalog updated: " << u->catalog << ".\n";
+  if (u->shared && !u->shared->reached)
+    std::cerr << "fogbench-cli: note: the shared catalog was " << forTerminal(sharedCatalogText(*u->shared, u->catalog))
+              << "\n";
 }
 
 int catalogCommand(CliArguments& args) {

@@ -21,6 +21,7 @@
 #include "core/diagnosis/accuracy_study.h"
 #include "core/diagnosis/effects.h"
 #include "core/model/simulator.h"
+#include "app/catalog_command.h"
 #include "app/cli_common.h"
 #include "app/session_commands.h"
 #include "app/sim_options.h"
@@ -148,6 +149,8 @@ int runCommand(CliArguments& args) {
   model::applyImuFrame(constants->imuFrame, config->earth);
   auto sessionOut = readSessionOutput(args);
   if (!sessionOut) return fail(sessionOut.status(), 2);
+  auto catalogDb = readCatalogDb(args);
+  if (!catalogDb) return fail(catalogDb.status(), 2);
   const auto effectText = args.text("effect");
   if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
   if (!args.positionals().empty()) return fail(invalidArgument("unexpected argument '" + args.positionals()[0] + "'"), 2);
@@ -191,7 +194,10 @@ int runCommand(CliArguments& args) {
   if (tee && !tee->close()) return fail(ioError("cannot write raw stream to '" + *savePath + "'"), 2);
   if (!run->complete) printIncompleteRun(*run);
   if (!run->recordingStatus.isOk()) return fail(run->recordingStatus, 1);
-  return printReport(run->report, acquisition::reportContextOf(*run, options), json);
+  const int code = printReport(run->report, acquisition::reportContextOf(*run, options), json);
+  // The stored result reaches the catalog (docs/catalog.md).
+  if (!run->sessionPath.empty() && run->report) updateCatalogAfterAnalysis(*catalogDb, run->sessionPath, json);
+  return code;
 }
 
 int theoryCommand(CliArguments& args) {

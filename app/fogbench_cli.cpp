@@ -59,7 +59,9 @@ usage:
             record the run into a new session file (raw stream, samples, result); --lot: the
             IMU's production lot, --bench-id: the bench (station) recording it. The result's
             audit entry names the operator (else the login name), the command line and the
-            SHA-256 of the raw stream.
+            SHA-256 of the raw stream. --db CATALOG: the catalog the stored result goes to
+            (else the folder's fogbench-catalog.sqlite when it has one; docs/catalog.md); a
+            catalog that cannot be reached never fails the run (stderr says how to catch up).
   fogbench-cli run --source serial --port DEV [--baud 921600] [--parity none|even|odd]
                   [--data-bits 8] [--stop-bits 1] [--stall-warning-s 2] [--stall-timeout-s 10]
                   [plan] [constants] [--out SESSION.fbs ...] [--json]
@@ -86,6 +88,7 @@ usage:
       them (sigma, correlation, chi2, AIC, BIC; chosen by AIC), the -3 dB
       bandwidth and the group delay at --at-hz. run --preset response records one.
   fogbench-cli analyze FILE [constants] [--limit-ms 0.8] [--coverage-k 2] [--json] [--no-store] [--operator NAME]
+                       [--db CATALOG]
       The same report from a saved raw sampling-board byte stream, or from a
       session file (its own bench constants unless given; the result is stored
       in the session as a new row unless --no-store). The verdict is pass, fail
@@ -96,10 +99,13 @@ usage:
       false-accept risk 1 - Phi(k) (2.28 % at k = 2; docs/report.md).
       The stored result's audit entry: who (--operator, else the login name), this
       command line, the constants, the version and the SHA-256 of the raw stream.
+      The session is then re-indexed into the catalog (--db, else its folder's
+      fogbench-catalog.sqlite when there is one); one that cannot be reached never
+      fails the analysis: stderr says so and how to catch up (catalog index DIR).
   fogbench-cli batch DIR|FILE... --jsonl OUT.jsonl [--jobs N] [constants] [--limit-ms 0.8] [--coverage-k 2]
                      [--operator NAME] [--db CATALOG]
       Re-analyse many sessions (the *.fbs files under each DIR, recursively; FILEs as
-      given) with the constants given (each session's own where not given) and store
+      given; each file once however named: in, ./in, a link) with the constants given (each session's own where not given) and store
       each result as a new one, as analyze does (with its audit entry: --operator or
       the login name, this command line). OUT.jsonl gets a header line (the
       settings) and one line per file as it finishes: "stored", "already_stored" or
@@ -164,18 +170,23 @@ usage:
       Earth-corrected bias and the predicted lag sigma of a swing test;
       --kalibr-yaml writes the IMU noise file kalibr and OpenVINS read. Exit 1
       when there is no static segment.
-  fogbench-cli catalog index DIR|FILE... [--db FILE|FOLDER|postgresql://...] [--json]
+  fogbench-cli catalog index DIR|FILE... [--db FILE|FOLDER|postgresql://...] [--json | --csv]
       The lab's record (docs/catalog.md): one row per stored result of every
       session under the folders (unit, lot, bench, verdict, IMU delay per point
       only when vouched for, constants, software, who analysed it, the file's
       SHA-256). Unchanged files are not reopened; a damaged file is one refusal.
-      Default catalog: the first folder's fogbench-catalog.sqlite.
+      Default catalog: the first folder's fogbench-catalog.sqlite. --db: a SQLite
+      file, a folder (its fogbench-catalog.sqlite) or a PostgreSQL server, named
+      only as a postgresql:// or postgres:// URI (anything else is a file); with a
+      server, the first folder's own catalog is indexed and its pending rows pushed
+      (exit 3 when the server does not answer: they stay pending for the next index,
+      batch or push).
   fogbench-cli catalog units [--lot L] | unit SERIAL | lot LOT [--limit-ms L] | refused
                        [--db ...] [--json | --csv]
       Units and their latest verdicts; one unit's history (verdict, delay +- sigma,
       temperature, constants, software, who; its delay against temperature); a
       lot's pass rate, first-pass yield, delay mean and spread, and Cpk.
-  fogbench-cli catalog push --from LOCAL.sqlite|FOLDER --db postgresql://...
+  fogbench-cli catalog push --from LOCAL.sqlite|FOLDER --db postgresql://... [--json | --csv]
       Sends the results not yet sent to a shared catalog (a bench that indexed
       offline pushes when the server is back; a repeated push adds nothing).
   fogbench-cli --version | help

@@ -9,6 +9,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "app/catalog_command.h"
 #include "app/cli_common.h"
 #include "core/session/shown_csv.h"
 #include "core/acquisition/acquisition.h"
@@ -64,6 +65,13 @@ Result<std::optional<SessionOutput>> readSessionOutput(CliArguments& args) {
   return std::optional<SessionOutput>(std::move(s));
 }
 
+Result<std::string> readCatalogDb(CliArguments& args) {
+  auto db = args.text("db");
+  if (db && !args.has("out"))
+    return invalidArgument("--db names the catalog the run's stored result goes to: give --out SESSION.fbs too");
+  return db.value_or("");
+}
+
 SessionInfo simulatedSessionInfo(const SessionInfo& given, const TestPlan& plan, const model::SimConfig& config,
                                  const BenchConstants& constants) {
   SessionInfo info = given;
@@ -105,6 +113,10 @@ int analyzeCommand(CliArguments& args) {
   if (!limit) return fail(limit.status(), 2);
   auto coverageK = readCoverageK(args);
   if (!coverageK) return fail(coverageK.status(), 2);
+  // The catalog the stored result goes to (else the session folder's, when it has one).
+  const std::string catalogDb = args.text("db").value_or("");
+  if (!catalogDb.empty() && noStore)
+    return fail(invalidArgument("--db names the catalog a stored result goes to; --no-store stores none"), 2);
   if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
   settings.constants = *constants;
   settings.imuDelayLimitMs = *limit;
@@ -116,6 +128,7 @@ int analyzeCommand(CliArguments& args) {
   if (!result.notStored.empty())
     std::cerr << "fogbench-cli: note: the result was not stored: " << forTerminal(result.notStored) << "\n";
   if (result.stored && !json) std::cout << "Result stored in session " << opened->path << ".\n";
+  if (result.stored) updateCatalogAfterAnalysis(catalogDb, opened->path, json);
   return 0;
 }
 

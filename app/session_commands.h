@@ -28,6 +28,9 @@ struct SessionOutput {
 // Reads --out and the metadata options (marks them used). Empty without
 // --out; an error when metadata options come without --out or the file exists.
 Result<std::optional<SessionOutput>> readSessionOutput(CliArguments& args);
+// A run's --db (the catalog its stored result goes to; "" when not given:
+// the session folder's, when it has one). An error without --out.
+Result<std::string> readCatalogDb(CliArguments& args);
 
 // The metadata of a session recorded from the simulator: what the command
 // line gave, plus the plan, the bench constants and the simulated chain's

@@ -22,6 +22,7 @@
 #include "core/acquisition/acquisition.h"
 #include "core/analysis/report_writer.h"
 #include "core/acquisition/board_commander.h"
+#include "app/catalog_command.h"
 #include "app/cli_common.h"
 #include "core/common/text.h"
 #include "core/common/version.h"
@@ -139,6 +140,8 @@ int runTableCommand(CliArguments& args, const std::string& tableSpec) {
   if (!plan) return fail(plan.status(), 2);
   auto sessionOut = readSessionOutput(args);
   if (!sessionOut) return fail(sessionOut.status(), 2);
+  auto catalogDb = readCatalogDb(args);
+  if (!catalogDb) return fail(catalogDb.status(), 2);
   const bool boardCommands = !args.flag("no-board-commands");
   (void)args.text("table");
   if (auto s = args.checkAllUsed(); !s.isOk()) return fail(s, 2);
@@ -247,6 +250,8 @@ int runTableCommand(CliArguments& args, const std::string& tableSpec) {
   if (!run->report) return fail(run->report.status(), exitCodeFor(run->report.status()));
   const auto context = acquisition::reportContextOf(*run, options);
   std::cout << reportOutput(*run->report, context, json);
+  // The stored result (and the table log) reach the catalog (docs/catalog.md).
+  if (!run->sessionPath.empty()) updateCatalogAfterAnalysis(*catalogDb, run->sessionPath, json);
   return 0;
 }
 

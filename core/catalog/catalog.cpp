@@ -17,6 +17,7 @@
 #include "core/common/sha256.h"
 #include "core/common/text.h"
 #include "core/session/session_file.h"
+#include "core/session/shown_csv.h"
 #include "core/session/shown_verdict.h"
 #include "core/session/stored_result.h"
 
@@ -572,6 +573,32 @@ Result<PushReport> Catalog::pushTo(Catalog& remote) {
   return report;
 }
 
+Result<int> Catalog::pendingCount() {
+  FOG_ASSIGN_OR_RETURN(auto rows, db_->query("SELECT count(*) FROM result WHERE pushed = 0"));
+  return rows.empty() ? 0 : static_cast<int>(integerOf(rows[0][0]));
+}
+
+Result<SyncReport> pushPending(Catalog& local, const std::string& sharedTarget) {
+  SyncReport r;
+  r.shared = describeTarget(sharedTarget);
+  auto problem = [&](const Status& s) -> Result<SyncReport> {
+    r.problem = s.message();
+    FOG_ASSIGN_OR_RETURN(r.pending, local.pendingCount());
+    return r;
+  };
+  auto db = CatalogDb::open(sharedTarget);
+  if (!db) return problem(db.status());
+  auto shared = Catalog::open(std::move(*db));
+  if (!shared) return problem(shared.status());
+  r.shared = (*shared)->describe();
+  auto pushed = local.pushTo(**shared);
+  if (!pushed) return problem(pushed.status());
+  r.reached = true;
+  r.push = *pushed;
+  FOG_ASSIGN_OR_RETURN(r.pending, local.pendingCount());
+  return r;
+}
+
 std::vector<UnitSummary> summariseUnits(const std::vector<CatalogResult>& results) {
   std::map<std::string, UnitSummary> units;
   for (const auto& r : results) {
@@ -694,6 +721,30 @@ std::string analysedByText(const CatalogResult& r) {
   const std::string who = a.value("who", std::string());
   const std::string tool = a.value("tool", r.analysedBy);
   return who.empty() ? tool : who + " (" + tool + ")";
+}
+
+std::string resultsCsv(const std::vector<CatalogResult>& results) {
+  auto text = [](const std::string& t) { return session::csvTextField(t); };
+  auto num = [](double v) { return textOf(numberValue(v)); };
+  std::string out =
+      "imu_serial,imu_model,lot,bench_id,operator,session_created_utc,result,result_created_utc,shown,"
+      "mean_temperature_c,verdict,limit_ms,point,axis,frequency_hz,point_verdict,imu_delay_ms,"
+      "imu_delay_std_ms,refusal,constants_hash,software_version,analysed_by,path,file_sha256\n";
+  for (const auto& r : results) {
+    const std::string head = text(r.imuSerial) + "," + text(r.imuModel) + "," + text(r.lot) + "," + text(r.benchId) +
+                             "," + text(r.operatorName) + "," + text(r.sessionCreatedUtc) + "," +
+                             std::to_string(r.resultNumber) + "," + text(r.resultCreatedUtc) + "," +
+                             (r.shown ? "1" : "0") + "," + num(r.meanTemperatureC) + "," + text(r.verdict) + "," +
+                             num(r.limitMs);
+    const std::string tail = "," + text(r.constantsHash) + "," + text(r.softwareVersion) + "," +
+                             text(analysedByText(r)) + "," + text(r.path) + "," + text(r.fileSha256);
+    if (r.points.empty()) out += head + ",,,,,,,," + text(r.verdictReason) + tail + "\n";
+    for (const auto& p : r.points)
+      out += head + "," + std::to_string(p.index) + "," + text(p.axis) + "," + num(p.frequencyHz) + "," +
+             text(p.verdict) + "," + (p.vouched() ? num(p.imuDelayMs) : "") + "," +
+             (p.vouched() ? num(p.imuDelayStdMs) : "") + "," + text(p.refusal) + tail + "\n";
+  }
+  return out;
 }
 
 TemperatureSlope delayAgainstTemperature(const std::vector<CatalogResult>& results) {

@@ -119,6 +119,8 @@ class Catalog {
   // Sends every result not pushed since it last changed to `remote` (upsert:
   // a repeated push adds nothing), then marks them pushed here.
   Result<PushReport> pushTo(Catalog& remote);
+  // Results not on a shared catalog yet, or changed since they were sent.
+  Result<int> pendingCount();
 
   CatalogDb& db() { return *db_; }
   std::string describe() const { return db_->describe(); }
@@ -129,6 +131,22 @@ class Catalog {
   Status storeRows(const IndexedFile& file);  // inside the caller's transaction
   std::unique_ptr<CatalogDb> db_;
 };
+
+// A bench's own catalog and the lab's shared one (docs/catalog.md, "A
+// bench offline"): after each index the bench's catalog sends what is
+// pending. A shared catalog that does not answer, or goes away during the
+// push, is no error: the report says so and the rows stay pending for the
+// next push, which sends them once.
+struct SyncReport {
+  std::string shared;    // the shared catalog's describe(), or its address without a password
+  bool reached = false;  // it answered and took every pending row
+  std::string problem;   // why not (libpq's words, no password)
+  PushReport push;
+  int pending = 0;       // results still to send after this
+};
+// Opens `sharedTarget` (a postgresql:// URI, or a SQLite file) and pushes
+// `local`'s pending results to it. An error only when `local` cannot be read.
+Result<SyncReport> pushPending(Catalog& local, const std::string& sharedTarget);
 
 // ---- Views over results (computed here, the same for every back end).
 
@@ -174,6 +192,14 @@ Result<LotStatistics> lotStatistics(const std::string& lot, const std::vector<Ca
 // Who analysed a result, from its audit: "who (tool)", the tool, or
 // "not recorded".
 std::string analysedByText(const CatalogResult& r);
+
+// Results as CSV (`catalog unit --csv`): a header, then one row per result
+// and test point (a result without points: one row, its reason in
+// `refusal`); a refused point has empty delay cells and its refusal. Text
+// fields go through session::csvTextField (one starting with = + - @ is
+// prefixed with a single quote, so a spreadsheet never runs it); numbers
+// are written as numbers, a negative one included.
+std::string resultsCsv(const std::vector<CatalogResult>& results);
 
 // The IMU delay's least-squares slope against the mean IMU temperature over
 // the vouched points of a unit's shown results, with the slope's standard

@@ -125,6 +125,21 @@ class SqliteDb final : public CatalogDb {
   std::string path_;
 };
 
+// libpq's message on one line: "…failed: Connection refused\n\tIs the
+// server running…\n" -> "…failed: Connection refused; Is the server running…".
+std::string oneLine(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    if (c == '\n') {
+      out += "; ";
+    } else if (c != '\t' && c != '\r') {
+      out += c;
+    }
+  }
+  while (!out.empty() && (out.back() == ' ' || out.back() == ';')) out.pop_back();
+  return out;
+}
+
 class PostgresDb final : public CatalogDb {
  public:
   ~PostgresDb() override {
@@ -132,14 +147,17 @@ class PostgresDb final : public CatalogDb {
   }
   static Result<std::unique_ptr<CatalogDb>> open(const std::string& target) {
     auto db = std::unique_ptr<PostgresDb>(new PostgresDb);
-    db->conn_ = PQconnectdb(target.c_str());
+    // A server that does not answer is said within 10 s (a bench offline
+    // must not hang an analysis on TCP's retries); the URI's own
+    // connect_timeout, expanded from `dbname` after it, wins.
+    const char* keys[] = {"connect_timeout", "dbname", nullptr};
+    const char* values[] = {"10", target.c_str(), nullptr};
+    db->conn_ = PQconnectdbParams(keys, values, /*expand_dbname=*/1);
     if (!db->conn_) return ioError("cannot reach the PostgreSQL catalog: out of memory");
     if (PQstatus(db->conn_) != CONNECTION_OK) {
-      std::string msg = PQerrorMessage(db->conn_);
-      while (!msg.empty() && (msg.back() == '\n' || msg.back() == ' ')) msg.pop_back();
-      return ioError("cannot reach the PostgreSQL catalog (" + msg +
-                     "); check the server is up and the address, or index into the local catalog now and run "
-                     "`fogbench-cli catalog push` when the server is back");
+      std::string msg = oneLine(PQerrorMessage(db->conn_));
+      return ioError("cannot reach the PostgreSQL catalog " + describeTarget(target) + " (" + msg +
+                     "); check the server is up and the address");
     }
     // CREATE TABLE IF NOT EXISTS says NOTICE for every table: not for users.
     PQsetNoticeProcessor(db->conn_, [](void*, const char*) {}, nullptr);
@@ -184,8 +202,7 @@ class PostgresDb final : public CatalogDb {
                                        values.data(), nullptr, nullptr, 0);
     const auto status = PQresultStatus(res);
     if (status != PGRES_COMMAND_OK && status != PGRES_TUPLES_OK) {
-      std::string msg = res ? PQresultErrorMessage(res) : PQerrorMessage(conn_);
-      while (!msg.empty() && (msg.back() == '\n' || msg.back() == ' ')) msg.pop_back();
+      std::string msg = oneLine(res ? PQresultErrorMessage(res) : PQerrorMessage(conn_));
       PQclear(res);
       if (PQstatus(conn_) != CONNECTION_OK)
         return ioError("the PostgreSQL catalog " + where_ + " went away (" + msg + "); nothing half-written is kept");
@@ -212,14 +229,32 @@ class PostgresDb final : public CatalogDb {
 }  // namespace
 
 bool isPostgresTarget(const std::string& t) {
-  return t.rfind("postgresql://", 0) == 0 || t.rfind("postgres://", 0) == 0 ||
-         t.find("dbname=") != std::string::npos || t.find("host=") != std::string::npos;
+  // Only libpq's URI form: a file or folder whose name holds "host=" or
+  // "dbname=" (a folder named after a setting, an export) is a SQLite
+  // catalog, never a server to connect to.
+  return t.rfind("postgresql://", 0) == 0 || t.rfind("postgres://", 0) == 0;
 }
 
 Result<std::unique_ptr<CatalogDb>> CatalogDb::open(const std::string& target) {
   if (target.empty()) return invalidArgument("no catalog named: give --db FILE or --db postgresql://…");
   if (isPostgresTarget(target)) return PostgresDb::open(target);
   return SqliteDb::open(target);
+}
+
+std::string describeTarget(const std::string& target) {
+  if (!isPostgresTarget(target)) return target;
+  std::string t = target;
+  const std::size_t scheme = t.find("://") + 3;
+  const std::size_t at = t.find('@', scheme), slash = t.find('/', scheme);
+  if (at != std::string::npos && (slash == std::string::npos || at < slash)) {
+    const std::size_t colon = t.find(':', scheme);
+    if (colon != std::string::npos && colon < at) t.replace(colon + 1, at - colon - 1, "***");
+  }
+  for (std::size_t p = t.find("password="); p != std::string::npos; p = t.find("password=", p + 1)) {
+    const std::size_t end = t.find('&', p);
+    t.replace(p + 9, (end == std::string::npos ? t.size() : end) - p - 9, "***");
+  }
+  return t;
 }
 
 Value numberValue(double v) {

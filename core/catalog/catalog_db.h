@@ -2,8 +2,9 @@
 // The catalog's database, behind one small interface so that the same schema,
 // statements and tests serve both back ends (docs/catalog.md):
 //  - SQLite: a file (embedded; the default, one per sessions folder);
-//  - PostgreSQL: a shared server (`postgresql://…` or `postgres://…`, or
-//    libpq's "host=… dbname=…" form), through libpq.
+//  - PostgreSQL: a shared server, named only by a libpq URI
+//    (`postgresql://…` or `postgres://…`), through libpq. Anything else,
+//    "host=… dbname=…" included, names a SQLite file.
 // Statements use `?` placeholders; every value is bound as text (NULL for an
 // empty optional) and read back as text, so both back ends see the same SQL
 // and the same values. Numbers are written with the fewest significant
@@ -40,8 +41,13 @@ class CatalogDb {
   virtual Result<std::vector<Row>> query(const std::string& sql, const std::vector<Value>& params = {}) = 0;
 };
 
-// Whether `target` names a PostgreSQL server rather than a SQLite file.
+// Whether `target` names a PostgreSQL server rather than a SQLite file: it
+// starts with postgresql:// or postgres://.
 bool isPostgresTarget(const std::string& target);
+
+// `target` as it may be shown: a URI's password (user:PASSWORD@,
+// password=…) replaced by "***".
+std::string describeTarget(const std::string& target);
 
 // Text of a number as bound (round-trip exact); NULL for NaN/inf.
 Value numberValue(double v);

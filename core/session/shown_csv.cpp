@@ -24,6 +24,11 @@ std::string csvField(const std::string& text) {
   return out + "\"";
 }
 
+std::string csvTextField(const std::string& text) {
+  const bool formula = !text.empty() && std::string("=+-@\t\r").find(text.front()) != std::string::npos;
+  return csvField(formula ? "'" + text : text);
+}
+
 std::string delayBreakdownCsv(const analysis::DelayReport& report, const ShownVerdict& verdict,
                               const std::string& source) {
   std::string t = "# fogbench delay breakdown: measured lag + table read delay = IMU delay; "

@@ -29,4 +29,12 @@ std::string oneLine(std::string text);
 // (a line break becomes a space).
 std::string csvField(const std::string& text);
 
+// One CSV field of text a person typed or a file states (an IMU serial, a
+// lot, an operator, a path): csvField, and when it starts with '=', '+',
+// '-', '@', a tab or a carriage return, a single quote before it, so that a
+// spreadsheet shows it as text and never runs it as a formula ("=HYPERLINK(…)"
+// shows as "'=HYPERLINK(…)"). Numbers are never written through it: a
+// negative delay stays a number.
+std::string csvTextField(const std::string& text);
+
 }  // namespace fog::session

@@ -158,6 +158,23 @@ TEST_F(SerialBench, EndToEndLagMatchesTheEmulatorsTruth) {
               r.trueLagMs, (p["lag_ms"].get<double>() - r.trueLagMs) * 1e3, p["lag_std_ms"].get<double>() * 1e3);
 }
 
+// The board's stored result reaches the folder's catalog without another
+// `catalog index` (docs/catalog.md, "After each analysis").
+TEST_F(SerialBench, TheStoredResultReachesTheFoldersCatalog) {
+  {
+    Child index({FOG_CLI, "catalog", "index", dir_.string()});  // the folder's catalog, empty
+    ASSERT_EQ(index.finish(30), 0) << index.err;
+  }
+  const BenchRun r = run({}, {"--imu-serial", "SN-S"});
+  ASSERT_FALSE(r.pty.empty()) << r.emuErr;
+  ASSERT_EQ(r.cliExit, 0) << r.cliErr;
+  const std::string catalog = (dir_ / "fogbench-catalog.sqlite").string();
+  EXPECT_NE(r.cliOut.find("Catalog updated: SQLite catalog " + catalog), std::string::npos) << r.cliOut << r.cliErr;
+  Child unit({FOG_CLI, "catalog", "unit", "SN-S", "--db", catalog, "--json"});
+  ASSERT_EQ(unit.finish(30), 0) << unit.err;
+  EXPECT_EQ(nlohmann::json::parse(unit.out).at("history").size(), 1u) << unit.out;
+}
+
 // fogbench-cli itself sends the host-to-board commands (docs/protocol.md):
 // the pulse equivalent the operator gave, start streaming before the run and
 // stop streaming after it; the board emulator applies and prints them.

@@ -111,9 +111,24 @@ TEST_F(TableBench, AThreeAxisPlanRunsThroughTheWholeHardwarePathAndMeasuresTheTr
   ASSERT_FALSE(emu.table.empty()) << emu.child->err;
   ASSERT_FALSE(std::isnan(emu.trueLagMs));
   const auto session = file("three.fbs");
-  Child cli(cliRun(emu, writePlan(kThreeAxisPlan), session, {"--json"}));
+  const auto catalog = file("lab.sqlite");
+  Child cli(cliRun(emu, writePlan(kThreeAxisPlan), session, {"--json", "--db", catalog}));
   ASSERT_EQ(cli.finish(120), 0) << cli.err;
   stopEmulator(emu);
+  // The stored result reached the catalog --db names, after the table log
+  // was appended: indexing the folder again finds the session unchanged.
+  {
+    Child units({FOG_CLI, "catalog", "units", "--db", catalog, "--json"});
+    ASSERT_EQ(units.finish(30), 0) << units.err;
+    const auto listed = nlohmann::json::parse(units.out);
+    ASSERT_EQ(listed.size(), 1u) << units.out;
+    EXPECT_EQ(listed[0].at("results"), 1) << units.out;
+    Child again({FOG_CLI, "catalog", "index", dir_.string(), "--db", catalog, "--json"});
+    ASSERT_EQ(again.finish(30), 0) << again.err;
+    const auto indexed = nlohmann::json::parse(again.out);
+    EXPECT_EQ(indexed.at("files_found"), 1) << again.out;
+    EXPECT_EQ(indexed.at("unchanged"), 1) << again.out;
+  }
   // What the table did: three swings, in the plan's order.
   EXPECT_NE(emu.child->out.find("swing: X 2 Hz 2 deg about 0 deg started"), std::string::npos) << emu.child->out;
   EXPECT_LT(emu.child->out.find("swing: X 2 Hz"), emu.child->out.find("swing: Y 2 Hz 1.5 deg"));

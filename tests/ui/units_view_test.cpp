@@ -6,6 +6,9 @@
 #include <QComboBox>
 #include <QDir>
 #include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QLabel>
 #include <QProcess>
 #include <QPushButton>
@@ -20,6 +23,7 @@
 #include <qwt_text.h>
 
 #include "core/catalog/catalog.h"
+#include "ui/language/language.h"
 #include "ui/main_window.h"
 #include "ui/units_view.h"
 #include "ui/verdict_text.h"
@@ -72,6 +76,16 @@ class UnitsViewTest : public QObject {
     }
     return true;
   }
+  // fogbench-cli's stdout, or "" when it failed.
+  QByteArray cliOutput(const QStringList& args) {
+    QProcess p;
+    p.start(QStringLiteral(FOG_CLI), args);
+    if (!p.waitForFinished(120000) || p.exitCode() != 0) {
+      qWarning() << "fogbench-cli" << args << "failed:" << p.readAllStandardError();
+      return {};
+    }
+    return p.readAllStandardOutput();
+  }
 
   std::vector<fog::catalog::CatalogResult> catalogResults(const std::string& serial) {
     auto db = fog::catalog::CatalogDb::open(dir_.filePath("fogbench-catalog.sqlite").toStdString());
@@ -97,16 +111,17 @@ class UnitsViewTest : public QObject {
  private slots:
   void initTestCase() {
     QVERIFY(dir_.isValid());
-    // Two sessions of U-100, one of U-200 re-analysed with the x gyro's
-    // sign reversed: its shown (second) result is INVALID.
+    // Two sessions of U-100 (lot L-7), one of U-200 (lot L-8) re-analysed
+    // with the x gyro's sign reversed: its shown (second) result is INVALID.
     const struct {
       const char* file;
       const char* serial;
+      const char* lot;
       int seed;
-    } sessions[] = {{"a1.fbs", "U-100", 1}, {"a2.fbs", "U-100", 2}, {"b1.fbs", "U-200", 3}};
+    } sessions[] = {{"a1.fbs", "U-100", "L-7", 1}, {"a2.fbs", "U-100", "L-7", 2}, {"b1.fbs", "U-200", "L-8", 3}};
     for (const auto& s : sessions)
       QVERIFY(cli({"run", "--preset", "quick", "--speed", "0", "--seed", QString::number(s.seed), "--out",
-                   dir_.filePath(s.file), "--imu-serial", s.serial}));
+                   dir_.filePath(s.file), "--imu-serial", s.serial, "--lot", s.lot}));
     invalidSession_ = dir_.filePath("b1.fbs");
     QVERIFY(cli({"analyze", invalidSession_, "--gyro-sign", "x=-1"}));
   }
@@ -203,27 +218,10 @@ class UnitsViewTest : public QObject {
     for (std::size_t i = 0; i < ys.size(); ++i) QCOMPARE(ys[i], expected[i]);
   }
 
-  // Lots written into the catalog by hand (the session file does not store
-  // its lot yet): the filter and the lot's statistics.
+  // Lots as the sessions recorded them (a session stores its lot, schema
+  // 6): the filter and the lot's statistics, the Cpk shown the catalog's
+  // (`fogbench-cli catalog lot` over the same catalog).
   void aLotShowsItsStatistics() {
-    {
-      auto db = fog::catalog::CatalogDb::open(dir_.filePath("fogbench-catalog.sqlite").toStdString());
-      QVERIFY(db.isOk());
-      auto cat = fog::catalog::Catalog::open(std::move(*db));
-      QVERIFY(cat.isOk());
-      auto all = (*cat)->results("", "", false);
-      QVERIFY(all.isOk());
-      std::map<std::string, fog::catalog::IndexedFile> files;
-      for (auto r : *all) {
-        r.lot = r.imuSerial == "U-100" ? "L-7" : "L-8";
-        auto& f = files[r.path];
-        f.path = r.path;
-        f.sessionKey = r.sessionKey;
-        f.fileSha256 = r.fileSha256;
-        f.results.push_back(r);
-      }
-      for (const auto& [path, f] : files) QVERIFY((*cat)->store(f).isOk());
-    }
     auto v = view();
     QVERIFY(v);
     QCOMPARE(v->lotCombo()->count(), 3);  // all lots, L-7, L-8
@@ -233,7 +231,19 @@ class UnitsViewTest : public QObject {
     const QString summary = v->lotSummary()->text();
     QVERIFY2(summary.contains("Lot L-7") && summary.contains("1 units, 2 sessions"), qPrintable(summary));
     QVERIFY2(summary.contains("Pass rate: 100.0 % (1 of 1)"), qPrintable(summary));
-    QVERIFY2(summary.contains("Cpk"), qPrintable(summary));
+    const QJsonDocument lot = QJsonDocument::fromJson(
+        cliOutput({"catalog", "lot", "L-7", "--db", dir_.filePath("fogbench-catalog.sqlite"), "--json"}));
+    QVERIFY(lot.isObject());
+    const QJsonArray delay = lot.object().value("imu_delay").toArray();
+    QCOMPARE(delay.size(), 1);  // one axis
+    const QJsonObject x = delay.at(0).toObject();
+    QCOMPARE(x.value("n").toInt(), 2);  // U-100's two sessions
+    QVERIFY2(x.value("cpk").isDouble(), "the catalog states no Cpk for L-7");
+    const QString cpk = fog::ui::localNumber(x.value("cpk").toDouble(), 'f', 2);
+    const QString line = QString("IMU delay %1: 2 points, mean %2 ms, s %3 ms, Cpk %4")
+                             .arg(x.value("axis").toString(), fog::ui::localNumber(x.value("mean_ms").toDouble(), 'f', 4),
+                                  fog::ui::localNumber(x.value("std_ms").toDouble(), 'f', 4), cpk);
+    QVERIFY2(summary.contains(line + "<br>"), qPrintable(line + " not in " + summary));
     QVERIFY(v->lotSummary()->toolTip().contains("one-sided"));
     QVERIFY(v->selectLot("L-8"));
     const QString other = v->lotSummary()->text();

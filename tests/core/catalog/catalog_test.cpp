@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <string>
@@ -44,12 +45,13 @@ std::string freshPostgresDatabase(const std::string& which) {
   std::string name = "t_";
   for (char c : std::string(info->name())) name += std::isalnum(static_cast<unsigned char>(c)) ? static_cast<char>(std::tolower(c)) : '_';
   name = name.substr(0, 50) + "_" + which;
-  auto admin = CatalogDb::open(base + " dbname=postgres");
+  // The address is a libpq URI without a database (postgres_server.sh).
+  auto admin = CatalogDb::open(base + "&dbname=postgres");
   EXPECT_TRUE(admin.isOk()) << admin.status().message();
   if (!admin) return "";
   EXPECT_TRUE((*admin)->exec("DROP DATABASE IF EXISTS " + name).isOk());
   EXPECT_TRUE((*admin)->exec("CREATE DATABASE " + name).isOk());
-  return base + " dbname=" + name;
+  return base + "&dbname=" + name;
 }
 
 // A SQLite catalog file, opened (created when new).
@@ -136,6 +138,13 @@ TEST_P(CatalogTest, ALotCountsInvalidAndIncompleteButNeverAveragesThem) {
   ASSERT_FALSE(od->results.empty());
   const double delayD = od->results.back().points.at(0).imuDelayMs;
   { std::ofstream(dir_.file("damaged.fbs")) << "not a session at all"; }
+  // A real session cut short (a copy interrupted, a full disk): half its bytes.
+  std::filesystem::copy_file(d, dir_.file("truncated.fbs"));
+  std::filesystem::resize_file(dir_.file("truncated.fbs"), std::filesystem::file_size(d) / 2);
+  // A session whose one stored result fails its checksum (changed behind
+  // it): indexed, its result one row that says why and has no verdict.
+  const std::string e = session("e.fbs", "SN-E", "2026-11-01T12:00:00Z", good);
+  fog::test::runSql(e, "UPDATE result SET report_json = '{\"verdict\": \"pass\"}'");
 
   // The mean IMU temperature, from the decoded stream here.
   auto decoded = protocol::decodeRecording(fog::test::shortRun().bytes);
@@ -151,15 +160,50 @@ TEST_P(CatalogTest, ALotCountsInvalidAndIncompleteButNeverAveragesThem) {
   ASSERT_TRUE(cat);
   auto report = cat->index({dir_.path().string()});
   ASSERT_TRUE(report.isOk()) << report.status().message();
-  EXPECT_EQ(report->filesFound, 5);
-  EXPECT_EQ(report->indexed, 4);
-  EXPECT_EQ(report->refused, 1);
-  ASSERT_EQ(report->refusals.size(), 1u);
+  // Each damaged file is one refusal row; indexing went on past both.
+  EXPECT_EQ(report->filesFound, 7);
+  EXPECT_EQ(report->indexed, 5);
+  EXPECT_EQ(report->refused, 2);
+  ASSERT_EQ(report->refusals.size(), 2u);
   EXPECT_NE(report->refusals[0].first.find("damaged.fbs"), std::string::npos);
-  EXPECT_EQ(report->resultsStored, 5);
+  EXPECT_NE(report->refusals[1].first.find("truncated.fbs"), std::string::npos);
+  EXPECT_FALSE(report->refusals[1].second.empty());
+  EXPECT_EQ(report->resultsStored, 6);
+  auto refusedRows = cat->refusals();
+  ASSERT_TRUE(refusedRows.isOk());
+  ASSERT_EQ(refusedRows->size(), 2u);
+  EXPECT_NE((*refusedRows)[1].first.find("truncated.fbs"), std::string::npos);
+  EXPECT_EQ((*refusedRows)[1].second, report->refusals[1].second);
+  auto truncatedRows = cat->db().query("SELECT count(*) FROM result WHERE path LIKE '%truncated.fbs'");
+  ASSERT_TRUE(truncatedRows.isOk());
+  EXPECT_EQ(integerOf((*truncatedRows)[0][0]), 0);
 
-  auto results = cat->results("", "L7", false);
-  ASSERT_TRUE(results.isOk()) << results.status().message();
+  auto all = cat->results("", "L7", false);
+  ASSERT_TRUE(all.isOk()) << all.status().message();
+  ASSERT_EQ(all->size(), 6u);
+  // E's result: one row, no verdict, no point, why.
+  std::vector<CatalogResult> unreadable;
+  for (const auto& r : *all)
+    if (r.imuSerial == "SN-E") unreadable.push_back(r);
+  ASSERT_EQ(unreadable.size(), 1u);
+  EXPECT_TRUE(unreadable[0].shown);
+  EXPECT_EQ(unreadable[0].verdict, "");
+  EXPECT_TRUE(unreadable[0].points.empty());
+  EXPECT_NE(unreadable[0].verdictReason.find("fails its checksum"), std::string::npos) << unreadable[0].verdictReason;
+
+  auto withE = lotStatistics("L7", *all, 0.8);
+  ASSERT_TRUE(withE.isOk()) << withE.status().message();
+  EXPECT_EQ(withE->units, 5);
+  EXPECT_EQ(withE->sessions, 5);
+  EXPECT_EQ(withE->noVerdict, 1);  // counted, never averaged
+  ASSERT_EQ(withE->delay.size(), 1u);
+  EXPECT_EQ(withE->delay[0].n, 2);
+
+  // The rest of the test: the four sessions A to D.
+  std::vector<CatalogResult> fourUnits;
+  for (const auto& r : *all)
+    if (r.imuSerial != "SN-E") fourUnits.push_back(r);
+  const std::vector<CatalogResult>* results = &fourUnits;
   ASSERT_EQ(results->size(), 5u);
   std::map<std::string, std::string> verdictOf;
   for (const auto& r : *results)
@@ -274,7 +318,9 @@ TEST_P(CatalogTest, TwoBenchesPushToOneCatalogOneOfflineFirst) {
   auto offline = CatalogDb::open("postgresql://fogbench@127.0.0.1:1/none?connect_timeout=2");
   ASSERT_FALSE(offline.isOk());
   EXPECT_EQ(offline.status().code(), StatusCode::kIoError);
-  EXPECT_NE(offline.status().message().find("catalog push"), std::string::npos) << offline.status().message();
+  EXPECT_NE(offline.status().message().find("cannot reach the PostgreSQL catalog postgresql://fogbench@127.0.0.1:1/"),
+            std::string::npos)
+      << offline.status().message();
 
   auto shared = openCatalog("shared");
   ASSERT_TRUE(shared);
@@ -353,6 +399,131 @@ TEST_P(CatalogTest, ASessionWhoseResultsCannotBeReadStillCountsWithoutAVerdict) 
 INSTANTIATE_TEST_SUITE_P(Sqlite, CatalogTest, ::testing::Values("sqlite"));
 INSTANTIATE_TEST_SUITE_P(Postgres, CatalogTest, ::testing::Values("postgres"));
 
+// A bench offline, end to end, on a server of its own (the shared fixture's
+// server serves tests running side by side; this one is stopped midway):
+// postgres_server.sh start, pause (the server gone, its data kept), resume.
+class OfflineBenchTest : public CatalogTest {
+ protected:
+  int server(const std::string& what) {
+    const std::string command = std::string("bash '") + FOG_POSTGRES_SERVER_SCRIPT + "' " + what + " '" + dsnFile_ + "'";
+    return std::system(command.c_str());
+  }
+  void TearDown() override { server("stop"); }
+  std::string dsnFile_ = dir_.file("offline-dsn");
+};
+
+TEST_P(OfflineBenchTest, ABenchPushesWhenTheServerIsBackExactlyOnce) {
+  ASSERT_EQ(server("start"), 0) << "postgres_server.sh start failed";
+  std::ifstream in(dsnFile_);
+  std::string base;
+  std::getline(in, base);
+  ASSERT_FALSE(base.empty());
+  const std::string sharedTarget = base + "&dbname=postgres&connect_timeout=5";
+
+  const std::string a = session("a.fbs", "SN-A", "2026-11-01T08:00:00Z");
+  auto bench = catalogFile(dir_.file("bench.sqlite"));
+  ASSERT_TRUE(bench);
+  ASSERT_TRUE(bench->index({dir_.path().string()}).isOk());
+  auto first = pushPending(*bench, sharedTarget);
+  ASSERT_TRUE(first.isOk()) << first.status().message();
+  ASSERT_TRUE(first->reached) << first->problem;
+  EXPECT_EQ(first->push.pushed, 1);
+  EXPECT_EQ(first->pending, 0);
+
+  // A connection opened while the server answered, then the server gone.
+  auto opened = CatalogDb::open(sharedTarget);
+  ASSERT_TRUE(opened.isOk()) << opened.status().message();
+  auto openedShared = Catalog::open(std::move(*opened));
+  ASSERT_TRUE(openedShared.isOk());
+  ASSERT_EQ(server("pause"), 0) << "postgres_server.sh pause failed";
+
+  // Offline, the bench goes on: a new session and a re-analysis of A (its
+  // two rows change: the first is superseded) are pending.
+  session("b.fbs", "SN-B", "2026-11-01T09:00:00Z");
+  BenchConstants other;
+  other.boardDelayMs = 0.3;
+  analyse(a, other);
+  ASSERT_TRUE(bench->index({dir_.path().string()}).isOk());
+  ASSERT_EQ(*bench->pendingCount(), 3);
+  auto midway = bench->pushTo(**openedShared);
+  ASSERT_FALSE(midway.isOk());
+  EXPECT_EQ(*bench->pendingCount(), 3);  // nothing marked sent
+  auto down = pushPending(*bench, sharedTarget);
+  ASSERT_TRUE(down.isOk()) << down.status().message();
+  EXPECT_FALSE(down->reached);
+  EXPECT_NE(down->problem.find("cannot reach the PostgreSQL catalog"), std::string::npos) << down->problem;
+  EXPECT_EQ(down->pending, 3);
+  EXPECT_EQ(down->push.pushed, 0);
+
+  // Back: the next push sends the three once; a repeat sends nothing.
+  ASSERT_EQ(server("resume"), 0) << "postgres_server.sh resume failed";
+  auto back = pushPending(*bench, sharedTarget);
+  ASSERT_TRUE(back.isOk()) << back.status().message();
+  ASSERT_TRUE(back->reached) << back->problem;
+  EXPECT_EQ(back->push.pushed, 3);
+  EXPECT_EQ(back->pending, 0);
+  auto again = pushPending(*bench, sharedTarget);
+  ASSERT_TRUE(again.isOk() && again->reached);
+  EXPECT_EQ(again->push.pushed, 0);
+  EXPECT_EQ(again->push.alreadyPushed, 3);
+
+  auto shared = CatalogDb::open(sharedTarget);
+  ASSERT_TRUE(shared.isOk());
+  auto sharedCatalog = Catalog::open(std::move(*shared));
+  ASSERT_TRUE(sharedCatalog.isOk());
+  auto rows = (*sharedCatalog)->db().query("SELECT count(*), count(DISTINCT result_key) FROM result");
+  ASSERT_TRUE(rows.isOk());
+  EXPECT_EQ(integerOf((*rows)[0][0]), 3);  // A's two results and B's, no duplicate
+  EXPECT_EQ(integerOf((*rows)[0][1]), 3);
+  auto unitA = (*sharedCatalog)->results("SN-A", "", false);
+  ASSERT_TRUE(unitA.isOk());
+  ASSERT_EQ(unitA->size(), 2u);
+  EXPECT_FALSE((*unitA)[0].shown);  // the update of the superseded row arrived too
+  EXPECT_TRUE((*unitA)[1].shown);
+}
+
+INSTANTIATE_TEST_SUITE_P(Postgres, OfflineBenchTest, ::testing::Values("postgres"));
+
+// The results' CSV: text that looks like a formula (serial, lot, bench,
+// operator) is written as text; numbers, negative ones included, as numbers.
+TEST(CatalogFile, CsvWritesFormulaLikeTextAsTextAndNumbersAsNumbers) {
+  CatalogResult r;
+  r.imuSerial = "=1+2";
+  r.imuModel = "FOG-3";
+  r.lot = "+L7";
+  r.benchId = "-B1";
+  r.operatorName = "@ann";
+  r.sessionCreatedUtc = "2026-11-01T08:00:00Z";
+  r.resultNumber = 1;
+  r.shown = true;
+  r.meanTemperatureC = -12.5;
+  r.verdict = "pass";
+  r.limitMs = 0.8;
+  CatalogPoint p;
+  p.axis = "z";
+  p.frequencyHz = 1.0;
+  p.verdict = "pass";
+  p.imuDelayMs = -0.25;  // not a delay a PASS would have: only the number's form matters here
+  p.imuDelayStdMs = 0.001;
+  r.points.push_back(p);
+  const std::string csv = resultsCsv({r});
+  const std::string row = csv.substr(csv.find('\n') + 1);
+  EXPECT_EQ(row.rfind("'=1+2,FOG-3,'+L7,'-B1,'@ann,2026-11-01T08:00:00Z,1,,1,-12.5,pass,0.8,0,z,1,pass,-0.25,0.001,,", 0), 0u)
+      << row;
+}
+
+// A password never shows in what is said about a server.
+TEST(CatalogFile, APasswordIsNeverShown) {
+  EXPECT_EQ(describeTarget("postgresql://fogbench:s3cret@labdb:5432/fogbench"),
+            "postgresql://fogbench:***@labdb:5432/fogbench");
+  EXPECT_EQ(describeTarget("postgresql://labdb/fogbench?password=s3cret&sslmode=require"),
+            "postgresql://labdb/fogbench?password=***&sslmode=require");
+  EXPECT_EQ(describeTarget("postgresql://fogbench@labdb:5432/fogbench"), "postgresql://fogbench@labdb:5432/fogbench");
+  auto db = CatalogDb::open("postgresql://fogbench:s3cret@127.0.0.1:1/none?connect_timeout=2");
+  ASSERT_FALSE(db.isOk());
+  EXPECT_EQ(db.status().message().find("s3cret"), std::string::npos) << db.status().message();
+}
+
 // SQLite only: what a file named by mistake is, and catalogs of other versions.
 TEST(CatalogFile, ASessionOrAForeignDatabaseNamedAsTheCatalogIsNeverWritten) {
   ScratchDir dir;
@@ -398,6 +569,25 @@ TEST(CatalogFile, NumbersRoundTripExactlyAndIgnoreTheLocale) {
   EXPECT_TRUE(std::isnan(numberOf(std::string("0,06"))));  // a decimal comma is not a number here
   EXPECT_TRUE(std::isnan(numberOf(std::string("0.06x"))));
   EXPECT_EQ(integerOf(std::string("12x"), -7), -7);
+}
+
+// Only a postgresql:// or postgres:// URI names a server: a catalog file in
+// a folder whose name holds "host=" or "dbname=" is a SQLite file.
+TEST(CatalogFile, OnlyAPostgresUriNamesAServer) {
+  EXPECT_TRUE(isPostgresTarget("postgresql://fogbench@labdb/fogbench"));
+  EXPECT_TRUE(isPostgresTarget("postgres://labdb/fogbench"));
+  EXPECT_FALSE(isPostgresTarget("host=labdb dbname=fogbench"));
+  EXPECT_FALSE(isPostgresTarget("/data/host=bench-2/fogbench-catalog.sqlite"));
+  EXPECT_FALSE(isPostgresTarget("runs dbname=x.sqlite"));
+  EXPECT_FALSE(isPostgresTarget("my-postgresql://notes.sqlite"));
+  ScratchDir dir;
+  std::filesystem::create_directories(dir.file("host=bench-2 dbname=lab"));
+  const std::string path = dir.file("host=bench-2 dbname=lab/fogbench-catalog.sqlite");
+  auto db = CatalogDb::open(path);
+  ASSERT_TRUE(db.isOk()) << db.status().message();
+  EXPECT_EQ((*db)->kind(), CatalogDb::Kind::kSqlite);
+  ASSERT_TRUE(Catalog::open(std::move(*db)).isOk());
+  EXPECT_TRUE(std::filesystem::exists(path));
 }
 
 TEST(CatalogFile, ANewerCatalogIsRefused) {

@@ -167,6 +167,19 @@ TEST(ShownCsv, EveryDelayRowCarriesItsPointsVerdict) {
   EXPECT_EQ(csvField("plain"), "plain");
 }
 
+// Text a person typed is never run by a spreadsheet as a formula: a field
+// starting with = + - @ (or a tab, a carriage return) gets a single quote.
+TEST(ShownCsv, TextThatLooksLikeAFormulaIsWrittenAsText) {
+  EXPECT_EQ(csvTextField("=HYPERLINK(\"http://x\",\"y\")"), "\"'=HYPERLINK(\"\"http://x\"\",\"\"y\"\")\"");
+  EXPECT_EQ(csvTextField("+L7"), "'+L7");
+  EXPECT_EQ(csvTextField("-B1"), "'-B1");
+  EXPECT_EQ(csvTextField("@ann"), "'@ann");
+  EXPECT_EQ(csvTextField("\tcmd"), "'\tcmd");
+  EXPECT_EQ(csvTextField("SN-0042"), "SN-0042");  // only a leading sign
+  EXPECT_EQ(csvTextField(""), "");
+  EXPECT_EQ(csvTextField("a, b"), "\"a, b\"");
+}
+
 // The shown verdict carries the rule's k: a record's own (never today's
 // default), a result not stored the run's; each vouched point its risk.
 TEST(ShownVerdict, CarriesTheRecordsKNotTodaysDefault) {
