@@ -87,7 +87,11 @@ usage:
       point of an axis that passed its checks: magnitude and phase with their
       sigma, then the pure-delay, first-order and second-order models fitted to
       them (sigma, correlation, chi2, AIC, BIC; chosen by AIC), the -3 dB
-      bandwidth and the group delay at --at-hz. run --preset response records one.
+      bandwidth and the group delay at --at-hz; per point the phase against the
+      table's motion with its expanded uncertainty U (k = 2) in deg and ms, the
+      table read delay's uncertainty (--read-delay-std-ms, else the session's) in
+      the budget. run --preset response records one; --preset response-third-octave
+      the standard plan.
   fogbench-cli analyze FILE [constants] [--limit-ms 0.8] [--coverage-k 2] [--json] [--no-store] [--operator NAME]
       The same report from a saved raw sampling-board byte stream, or from a
       session file (its own bench constants unless given; the result is stored
