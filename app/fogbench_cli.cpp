@@ -31,9 +31,12 @@ usage:
   fogbench-cli run [plan] [simulator options] [constants] [--limit-ms 0.8] [--coverage-k 2]
                   [--save-raw FILE [--overwrite]] [--json]
       Run a test plan on the built-in simulator and print the delay report.
-      plan: --plan FILE.json | --preset paper|paper-slow|paper-fast|quick|noise|response (default paper:
-            0.1 Hz / 10 deg for 294 s and 1 Hz / 3 deg for 60 s on X; response: 20 frequencies
-            0.05 .. 11 Hz on X, or on the axis --axis names)
+      plan: --plan FILE.json
+            | --preset paper|paper-slow|paper-fast|quick|noise|response|response-third-octave (default
+            paper: 0.1 Hz / 10 deg for 294 s and 1 Hz / 3 deg for 60 s on X; response: 20 frequencies
+            0.05 .. 11 Hz on X; response-third-octave: the standard plan, the 21 nominal one-third
+            octaves 0.1 .. 10 Hz (0.1, 0.125, 0.16 .. 8, 10) on X, the table's whole reach; either
+            response on the axis --axis names)
             | --axis x --freq-hz 0.1 --amp-deg 10 --duration-s 294 [--settle-s 5]
       --source sim (default), --seed N, --speed X (X times real time; default 0:
       as fast as possible),
@@ -86,7 +89,11 @@ usage:
       point of an axis that passed its checks: magnitude and phase with their
       sigma, then the pure-delay, first-order and second-order models fitted to
       them (sigma, correlation, chi2, AIC, BIC; chosen by AIC), the -3 dB
-      bandwidth and the group delay at --at-hz. run --preset response records one.
+      bandwidth and the group delay at --at-hz; per point the phase against the
+      table's motion with its expanded uncertainty U (k = 2) in deg and ms, the
+      table read delay's uncertainty (--read-delay-std-ms, else the session's) in
+      the budget. run --preset response records one; --preset response-third-octave
+      the standard plan.
   fogbench-cli analyze FILE [constants] [--limit-ms 0.8] [--coverage-k 2] [--json] [--no-store] [--operator NAME]
                        [--db CATALOG]
       The same report from a saved raw sampling-board byte stream, or from a

@@ -24,8 +24,8 @@ Result<TestPlan> readPlan(CliArguments& args) {
   auto settle = args.number("settle-s", -1.0);
   for (const auto* r : {&freq, &amp, &duration, &settle})
     if (!*r) return r->status();
-  // --preset response --axis y: the response plan of that axis.
-  const bool responseAxis = axis && preset && *preset == "response";
+  // --preset response --axis y (or response-third-octave): the response plan of that axis.
+  const bool responseAxis = axis && preset && isResponsePreset(*preset);
   const bool single =
       (axis && !responseAxis) || args.text("freq-hz") || args.text("amp-deg") || args.text("duration-s");
   if ((file ? 1 : 0) + (preset ? 1 : 0) + (single ? 1 : 0) > 1)
@@ -51,9 +51,7 @@ Result<TestPlan> readPlan(CliArguments& args) {
   }
   if (responseAxis) {
     FOG_ASSIGN_OR_RETURN(auto a, parseAxis(*axis));
-    ResponsePlanOptions options;
-    options.axis = a;
-    return responsePlan(TurntableLimits{}, options);
+    return responsePreset(*preset, a);
   }
   return presetPlan(preset.value_or("paper"));
 }

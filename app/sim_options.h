@@ -12,9 +12,10 @@
 
 namespace fog::app {
 
-// --plan FILE.json | --preset paper|paper-slow|paper-fast |
+// --plan FILE.json | --preset paper|paper-slow|paper-fast|quick|noise|response|response-third-octave |
 // --axis A --freq-hz F --amp-deg A [--duration-s T --settle-s S]; default
-// preset paper. Marks the options used.
+// preset paper; a response preset with --axis A is that axis' response.
+// Marks the options used.
 Result<TestPlan> readPlan(CliArguments& args);
 // True when any plan option was given (so `run --source serial` knows
 // whether the operator stated the board's plan). Does not mark them used.

@@ -14,7 +14,9 @@ const std::vector<BenchPreset>& benchPresets() {
         {"paper-fast", QT_TRANSLATE_NOOP("BenchPreset", "Paper fast: 1 Hz / 3°, 60 s")},
         {"quick", QT_TRANSLATE_NOOP("BenchPreset", "Quick: 1 Hz / 3°, 20 s")},
         {"noise", QT_TRANSLATE_NOOP("BenchPreset", "Gyro noise: 10 min at rest on X, then 1 Hz / 3°, 60 s")},
-        {"response", QT_TRANSLATE_NOOP("BenchPreset", "Frequency response: X, 20 frequencies 0.05 – 11 Hz, 11 min")}};
+        {"response", QT_TRANSLATE_NOOP("BenchPreset", "Frequency response: X, 20 frequencies 0.05 – 11 Hz, 11 min")},
+        {"response-third-octave",
+         QT_TRANSLATE_NOOP("BenchPreset", "Frequency response, standard: X, 21 one-third octaves 0.1 – 10 Hz, 7.6 min")}};
     std::vector<BenchPreset> all;
     for (const auto& name : presetPlanNames()) {
       QString label = QString::fromStdString(name);

@@ -7,6 +7,7 @@
 #include <QPen>
 #include <QScrollBar>
 #include <QSplitter>
+#include <QTabWidget>
 #include <QTableWidget>
 #include <QVBoxLayout>
 #include <algorithm>
@@ -32,6 +33,13 @@ const QColor kSingle(8, 48, 107);
 const QColor kA(31, 119, 180);
 const QColor kB(230, 110, 0);
 const QColor kDifference(90, 90, 90);
+
+// Decimals that show a value to its uncertainty's second significant digit
+// (valueWithStdText's rule).
+int decimalsFor(double stdDev) {
+  if (!(stdDev > 0.0) || !std::isfinite(stdDev)) return 4;
+  return std::clamp(1 - static_cast<int>(std::floor(std::log10(stdDev))), 0, 8);
+}
 
 QString axisText(Axis axis) { return BodeView::tr("%1 axis").arg(QString(axisName(axis)).toUpper()); }
 
@@ -155,11 +163,40 @@ BodeView::BodeView(QWidget* parent) : QWidget(parent) {
                                 3 * modelTable_->verticalHeader()->defaultSectionSize() +
                                 modelTable_->horizontalScrollBar()->sizeHint().height() + 4);
 
+  pointTable_ = new QTableWidget(0, 9);
+  pointTable_->setObjectName("bodePointTable");
+  pointTable_->setHorizontalHeaderLabels({tr("series"), tr("point"), tr("f (Hz)"), tr("|H| (dB) ± 1σ"),
+                                          tr("phase (°) ± 1σ"), tr("phase vs motion (°)"), tr("U (k = 2), °"),
+                                          tr("U (k = 2), ms"), tr("lag (ms) ± 1σ")});
+  const QString motionTip = tr("The phase against the table's motion: the phase against the stamped table angle "
+                               "corrected by the table read delay (the bench constant), as a certificate states it");
+  const QString expandedTip = tr("Expanded uncertainty of the phase against the table's motion, k = 2: the point's "
+                                 "phase σ and the table read delay's uncertainty in quadrature, times 2");
+  pointTable_->horizontalHeaderItem(4)->setToolTip(
+      tr("Against the stamped table angle (−ω·lag), as the models are fitted; ±1σ"));
+  pointTable_->horizontalHeaderItem(5)->setToolTip(motionTip);
+  pointTable_->horizontalHeaderItem(6)->setToolTip(expandedTip);
+  pointTable_->horizontalHeaderItem(7)->setToolTip(expandedTip + tr(", as a time (U / ω)"));
+  pointTable_->verticalHeader()->setVisible(false);
+  pointTable_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+  pointTable_->setSelectionBehavior(QAbstractItemView::SelectRows);
+  pointTable_->setWordWrap(false);
+  pointTable_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+  // The tabs take the model table's place: a tab bar more, the same rows.
+  tableTabs_ = new QTabWidget();
+  tableTabs_->setObjectName("bodeTableTabs");
+  tableTabs_->setDocumentMode(true);
+  tableTabs_->addTab(modelTable_, tr("Models"));
+  tableTabs_->addTab(pointTable_, tr("Points, phase U (k = 2)"));
+  tableTabs_->setTabToolTip(0, tr("Every model fitted to the points"));
+  tableTabs_->setTabToolTip(1, tr("Every point with its phase against the table's motion and that phase's expanded "
+                                  "uncertainty (k = 2), the table read delay's uncertainty in the budget"));
+
   auto* split = new QSplitter(Qt::Vertical);
   split->setObjectName("bodeSplitter");
   split->addWidget(magnitudePlot_);
   split->addWidget(phasePlot_);
-  split->addWidget(modelTable_);
+  split->addWidget(tableTabs_);
   // The plots share what the table (as tall as its rows) leaves.
   split->setStretchFactor(0, 1);
   split->setStretchFactor(1, 1);
@@ -271,11 +308,47 @@ void BodeView::addModelRow(const QString& series, const analysis::ResponseModelF
   }
 }
 
+void BodeView::addPointRows(const QString& series, const analysis::ResponseAnalysis& r) {
+  for (const auto& p : r.points) {
+    const analysis::CertifiedPhase c = analysis::certifiedPhase(p, r);
+    const int row = pointTable_->rowCount();
+    pointTable_->insertRow(row);
+    const QStringList cells = {series,
+                               QString::number(p.index + 1),
+                               localNumber(p.frequencyHz, 'g', 4),
+                               valueWithStdText(p.magnitudeDb, p.magnitudeDbStd),
+                               valueWithStdText(p.phaseDeg, p.phaseStdDeg),
+                               QString::number(c.phaseDeg, 'f', decimalsFor(c.standardDeg)),
+                               localNumber(c.expandedDeg, 'g', 2),
+                               localNumber(c.expandedMs, 'g', 2),
+                               valueWithStdText(p.lagMs, p.lagStdMs)};
+    for (int col = 0; col < cells.size(); ++col) {
+      auto* item = new QTableWidgetItem(cells[col]);
+      if (col >= 2) item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+      item->setToolTip(col >= 5 && col <= 7
+                           ? tr("U (k = %1) = %2° = %3 ms: the fit's σ %4° and the table read delay's %5° (its "
+                                "uncertainty %6 ms of the read delay %7 ms) in quadrature")
+                                 .arg(localNumber(c.coverageK, 'g', 2), localNumber(c.expandedDeg, 'g', 3),
+                                      localNumber(c.expandedMs, 'g', 3), localNumber(c.fitStdDeg, 'g', 2),
+                                      localNumber(c.readDelayStdDeg, 'g', 2), localNumber(r.tableReadDelayStdMs, 'g', 3),
+                                      localNumber(r.tableReadDelayMs, 'g', 4))
+                           : cells[col]);
+      pointTable_->setItem(row, col, item);
+    }
+  }
+}
+
+std::optional<Axis> BodeView::shownAxis() const {
+  if (!plotShown() || axisCombo_->currentIndex() < 0) return std::nullopt;
+  return static_cast<Axis>(axisCombo_->currentData().toInt());
+}
+
 void BodeView::showAxis(int position) {
   if (position < 0 || position >= axisCombo_->count()) return;
   const auto axis = static_cast<Axis>(axisCombo_->itemData(position).toInt());
   series_.clear();
   modelTable_->setRowCount(0);
+  pointTable_->setRowCount(0);
   QStringList summary;
   auto describe = [&](const QString& who, const analysis::ResponseAnalysis& r) {
     const auto* m = chosenModel(r);
@@ -299,6 +372,7 @@ void BodeView::showAxis(int position) {
     if (!m) summary << coreText(r.noModelReason).toHtmlEscaped();
     for (std::size_t i = 0; i < r.models.size(); ++i)
       addModelRow(who.isEmpty() ? axisText(r.axis) : who, r.models[i], static_cast<int>(i) == r.chosen, r.groupDelayAtHz);
+    addPointRows(who.isEmpty() ? axisText(r.axis) : who, r);
     for (const auto& s : r.skipped) summary << tr("model left out: %1").arg(coreText(s));
   };
   if (!comparison_) {

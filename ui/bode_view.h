@@ -8,6 +8,12 @@
 // bandwidth beyond the highest point). Both plots share one frequency axis
 // and have measuring cursors (ui/plots/plot_interaction.h).
 //
+// Beside the model table, a points table lists every point shown: its
+// magnitude and phase with ±1σ, and the phase a certificate states —
+// against the table's motion, with its expanded uncertainty U (k = 2) in
+// degrees and in ms, the table read delay's uncertainty in its budget
+// (analysis::certifiedPhase).
+//
 // Results shows one recording's responses (RunOutcome::responses, one per
 // axis, chosen in the axis box); Compare shows two sessions' of the same axis
 // and their difference B − A at the frequencies both have
@@ -15,6 +21,7 @@
 // core's analysis.
 
 #include <QWidget>
+#include <optional>
 #include <vector>
 
 #include "core/analysis/frequency_response.h"
@@ -23,6 +30,7 @@
 class QComboBox;
 class QLabel;
 class QTableWidget;
+class QTabWidget;
 class QwtPlot;
 
 namespace fog::ui {
@@ -54,6 +62,14 @@ class BodeView : public QWidget {
   PlotInteraction* magnitudeInteraction() const { return magnitudeInteraction_; }
   PlotInteraction* phaseInteraction() const { return phaseInteraction_; }
   QTableWidget* modelTable() const { return modelTable_; }
+  // One row per point of the series shown (A's and B's in Compare, not the
+  // difference): series, test point, f, |H| dB ± 1σ, phase ± 1σ, phase
+  // against the table's motion, U (k = 2) in ° and in ms, lag ± 1σ.
+  QTableWidget* pointTable() const { return pointTable_; }
+  // The models' and the points' tables, one tab each.
+  QTabWidget* tableTabs() const { return tableTabs_; }
+  // The axis shown (its response's axis), or nothing while only a message is shown.
+  std::optional<Axis> shownAxis() const;
   QString summaryText() const;
   // What the points cannot separate, per model (the table's last column).
   QString notesText() const;
@@ -65,6 +81,7 @@ class BodeView : public QWidget {
   void showAxes(const std::vector<int>& axes);
   void showAxis(int position);
   void addModelRow(const QString& series, const analysis::ResponseModelFit& m, bool chosen, double atHz);
+  void addPointRows(const QString& series, const analysis::ResponseAnalysis& r);
 
   // Both inputs are kept: the series point at their models.
   std::vector<analysis::ResponseAnalysis> a_, b_;
@@ -80,6 +97,8 @@ class BodeView : public QWidget {
   PlotInteraction* magnitudeInteraction_ = nullptr;
   PlotInteraction* phaseInteraction_ = nullptr;
   QTableWidget* modelTable_ = nullptr;
+  QTableWidget* pointTable_ = nullptr;
+  QTabWidget* tableTabs_ = nullptr;
 };
 
 // Why a report has no frequency response: how many passed test points each

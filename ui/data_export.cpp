@@ -2,7 +2,10 @@
 
 #include <QObject>
 #include <QDir>
+#include <QFileInfo>
 #include <QSaveFile>
+#include <algorithm>
+#include <cmath>
 
 #include "core/analysis/frequency_response.h"
 #include "core/io/csv_export.h"
@@ -74,6 +77,98 @@ std::string comparisonCsv(const std::vector<PointComparison>& rows, const analys
     t += "," + session::csvField(note) + "\n";
   }
   return t;
+}
+
+namespace {
+
+// A number, or an empty cell when there is none.
+std::string cell(double v) { return std::isfinite(v) ? num(v) : std::string(); }
+
+std::string axisComment(const analysis::ResponseAnalysis& r) {
+  return std::string("# ") + axisLabel(r.axis) + " axis";
+}
+
+}  // namespace
+
+std::string responsePointsCsv(const std::vector<analysis::ResponseAnalysis>& responses, const std::string& source) {
+  std::string t = "# fogbench frequency response: the points (gyro angle / table angle; std: 1 sigma)\n";
+  t += "# source: " + oneLine(source) + "\n";
+  t += "# phase_deg is against the stamped table angle (-omega lag); phase_vs_table_motion_deg against the table's "
+       "motion (corrected by the table read delay), with its expanded uncertainty at coverage_factor, the read "
+       "delay's uncertainty in the budget\n";
+  for (const auto& r : responses) {
+    t += axisComment(r) + ": table read delay " + num(r.tableReadDelayMs) + " ms, standard uncertainty " +
+         num(r.tableReadDelayStdMs) + " ms" +
+         (r.tableReadDelayStdMs > 0.0 ? std::string() : std::string(" (not stated: taken as exact)")) + "\n";
+    for (const auto& left : r.leftOut)
+      t += axisComment(r) + ": left out test point " + std::to_string(left.index + 1) + " (" +
+           num(left.frequencyHz) + " Hz): " + oneLine(left.reason) + "\n";
+  }
+  t += "axis,test_point,frequency_hz,magnitude,magnitude_std,magnitude_db,magnitude_db_std,phase_deg,phase_std_deg,"
+       "lag_ms,lag_std_ms,magnitude_phase_cov_deg,harmonic_fraction,phase_vs_table_motion_deg,"
+       "phase_standard_uncertainty_deg,coverage_factor,phase_expanded_uncertainty_deg,"
+       "phase_expanded_uncertainty_ms\n";
+  for (const auto& r : responses)
+    for (const auto& p : r.points) {
+      const analysis::CertifiedPhase c = analysis::certifiedPhase(p, r);
+      t += std::string(axisLabel(r.axis)) + "," + std::to_string(p.index + 1);
+      for (double v : {p.frequencyHz, p.magnitude, p.magnitudeStd, p.magnitudeDb, p.magnitudeDbStd, p.phaseDeg,
+                       p.phaseStdDeg, p.lagMs, p.lagStdMs, p.magnitudePhaseCovDeg, p.harmonicFraction, c.phaseDeg,
+                       c.standardDeg, c.coverageK, c.expandedDeg, c.expandedMs})
+        t += "," + cell(v);
+      t += "\n";
+    }
+  return t;
+}
+
+std::string responseModelsCsv(const std::vector<analysis::ResponseAnalysis>& responses, const std::string& source) {
+  std::string t = "# fogbench frequency response: the models fitted to the points (std: 1 sigma)\n";
+  t += "# source: " + oneLine(source) + "\n";
+  t += "# a model is adequate when p_value >= " + num(analysis::kModelAdequacyP) +
+       "; only an adequate, admissible model is chosen\n";
+  for (const auto& r : responses)
+    t += axisComment(r) + ": " +
+         (r.chosen >= 0 ? std::string("chosen ") + analysis::responseModelName(r.models[r.chosen].kind)
+                        : oneLine(r.noModelReason)) +
+         "\n";
+  t += "axis,model,chosen,adequate,admissible,chi_square,dof,p_value,aic,bic,K,K_std,tau_ms,tau_ms_std,T_ms,T_ms_std,"
+       "fn_hz,fn_hz_std,zeta,zeta_std,low_frequency_delay_ms,low_frequency_delay_std_ms,group_delay_at_hz,"
+       "group_delay_ms,group_delay_std_ms,bandwidth_hz,bandwidth_std_hz,correlations,inadmissible,notes\n";
+  auto yes = [](bool b) { return std::string(b ? "true" : "false"); };
+  for (const auto& r : responses)
+    for (std::size_t i = 0; i < r.models.size(); ++i) {
+      const analysis::ResponseModelFit& m = r.models[i];
+      t += std::string(axisLabel(r.axis)) + "," + analysis::responseModelName(m.kind) + "," +
+           yes(static_cast<int>(i) == r.chosen) + "," + yes(m.adequate) + "," + yes(m.admissible()) + "," +
+           cell(m.chiSquare) + "," + std::to_string(m.dof) + "," + cell(m.pValue) + "," + cell(m.aic) + "," +
+           cell(m.bic);
+      for (const char* name : {"K", "tau_ms", "T_ms", "fn_hz", "zeta"}) {
+        const auto it = std::find_if(m.parameters.begin(), m.parameters.end(),
+                                     [name](const analysis::ResponseParameter& p) { return p.name == name; });
+        t += it == m.parameters.end() ? std::string(",,") : "," + cell(it->value) + "," + cell(it->stdDev);
+      }
+      t += "," + cell(m.lowFrequencyDelayMs.value) + "," + cell(m.lowFrequencyDelayMs.stdDev) + "," +
+           cell(r.groupDelayAtHz) + "," + cell(m.groupDelayMs.value) + "," + cell(m.groupDelayMs.stdDev) + ",";
+      t += m.bandwidthHz ? cell(m.bandwidthHz->value) + "," + cell(m.bandwidthHz->stdDev) : std::string(",");
+      std::string correlations;
+      for (int a = 0; a < m.correlation.rows(); ++a)
+        for (int b = a + 1; b < m.correlation.cols(); ++b)
+          if (a < static_cast<int>(m.parameters.size()) && b < static_cast<int>(m.parameters.size()))
+            correlations += (correlations.empty() ? "" : "; ") + m.parameters[a].name + "/" + m.parameters[b].name +
+                            " " + (std::isfinite(m.correlation(a, b)) ? num(m.correlation(a, b)) : "undefined");
+      std::string inadmissible, notes;
+      for (const auto& why : m.inadmissible) inadmissible += (inadmissible.empty() ? "" : "; ") + oneLine(why);
+      for (const auto& n : m.notes) notes += (notes.empty() ? "" : "; ") + oneLine(n);
+      t += "," + session::csvField(correlations) + "," + session::csvField(inadmissible) + "," +
+           session::csvField(notes) + "\n";
+    }
+  return t;
+}
+
+QString responseModelsPath(const QString& pointsPath) {
+  const QFileInfo info(pointsPath);
+  const QString suffix = info.suffix().isEmpty() ? QStringLiteral("csv") : info.suffix();
+  return info.dir().filePath(info.completeBaseName() + QStringLiteral("-models.") + suffix);
 }
 
 QString writeTextFile(const QString& path, const std::string& text) {

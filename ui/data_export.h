@@ -12,6 +12,11 @@
 //   CLI's export writes too)
 //   comparisonCsv       Compare's rows: per test point A's and B's IMU delay
 //                       with their verdicts, B − A, its σ and |B − A|/σ
+//   responsePointsCsv   the frequency response's points (Results' Bode plot):
+//                       per axis and point magnitude, phase and lag with
+//                       their sigma, and the phase against the table's motion
+//                       with its expanded uncertainty (k = 2)
+//   responseModelsCsv   the models fitted to them, one row each
 //   writeTextFile       writes a file whole or not at all
 //
 // Numbers are written as the core's exporter writes them (io::formatDouble:
@@ -49,6 +54,31 @@ Status exportSessionHdf5(const RunOutcome& outcome, const QString& path);
 // the comment lines.
 std::string comparisonCsv(const std::vector<PointComparison>& rows, const analysis::DelayReport& a,
                           const analysis::DelayReport& b, const std::string& aName, const std::string& bName);
+
+// The response points of every axis (analysis::ResponseAnalysis::points, in
+// frequency order), one row each. Columns: axis,test_point,frequency_hz,
+// magnitude,magnitude_std,magnitude_db,magnitude_db_std,phase_deg,
+// phase_std_deg,lag_ms,lag_std_ms,magnitude_phase_cov_deg,harmonic_fraction,
+// phase_vs_table_motion_deg,phase_standard_uncertainty_deg,coverage_factor,
+// phase_expanded_uncertainty_deg,phase_expanded_uncertainty_ms: the names
+// and meanings of `fogbench-cli response --json` (docs/report.md); the
+// comment lines give `source`, each axis' table read delay with its
+// uncertainty, and the points left out and why.
+std::string responsePointsCsv(const std::vector<analysis::ResponseAnalysis>& responses, const std::string& source);
+// The models of every axis, one row each. Columns: axis,model,chosen,adequate,
+// admissible,chi_square,dof,p_value,aic,bic,K,K_std,tau_ms,tau_ms_std,T_ms,
+// T_ms_std,fn_hz,fn_hz_std,zeta,zeta_std,low_frequency_delay_ms,
+// low_frequency_delay_std_ms,group_delay_at_hz,group_delay_ms,
+// group_delay_std_ms,bandwidth_hz,bandwidth_std_hz,correlations,inadmissible,
+// notes; a parameter the model does not have, and the pure delay's
+// bandwidth, are empty; correlations "a/b r" for each pair, "; "-joined
+// ("undefined" where the fit gives none: a parameter whose sigma is 0). The
+// comment lines give `source`, the adequacy threshold and each axis' chosen
+// model or why none is chosen.
+std::string responseModelsCsv(const std::vector<analysis::ResponseAnalysis>& responses, const std::string& source);
+// Where responsePointsCsv's companion goes when the points are written to
+// `pointsPath`: beside it, "<name>-models.<suffix>" (suffix csv when it has none).
+QString responseModelsPath(const QString& pointsPath);
 
 // Writes `text` to `path` through a temporary file renamed over it at the
 // end (QSaveFile): a write that fails (disk full, read-only folder) leaves

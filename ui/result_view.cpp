@@ -351,6 +351,15 @@ void ResultView::buildExportMenu() {
   addPlotExport(tr("Residuals plot…"), residualPlot_);
   addPlotExport(tr("Zero crossing plot…"), zeroCrossingPlot_);
   addPlotExport(tr("Delay vs frequency plot…"), frequencyPlot_);
+  menu->addAction(tr("Bode plot (frequency response)…"), this, [this] {
+    if (!outcome_) return;
+    const auto axis = bodeView_->shownAxis();
+    const QString what = axis ? QStringLiteral("bode-") + QString(axisName(*axis)) : QStringLiteral("bode");
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export the Bode plot"),
+                                                      defaultExportPath(what, "png"), plotExportFilter());
+    if (path.isEmpty()) return;
+    if (const QString why = exportBodePlotTo(path); !why.isEmpty()) emit exportFailed(tr("Export the Bode plot"), why);
+  });
   menu->addSeparator();
   menu->addAction(tr("Calibration report (PDF)…"), this, [this] {
     if (!outcome_ || !outcome_->report) return;
@@ -372,6 +381,14 @@ void ResultView::buildExportMenu() {
                                                       defaultExportPath("delays", "csv"), tr("CSV file (*.csv)"));
     if (path.isEmpty()) return;
     if (const QString why = exportDelayRowsTo(path); !why.isEmpty()) emit exportFailed(tr("Delay table (CSV)"), why);
+  });
+  menu->addAction(tr("Frequency response: points and models (CSV)…"), this, [this] {
+    if (!outcome_) return;
+    const QString path = QFileDialog::getSaveFileName(this, tr("Frequency response (CSV): the points; the models go beside them"),
+                                                      defaultExportPath("response", "csv"), tr("CSV file (*.csv)"));
+    if (path.isEmpty()) return;
+    if (const QString why = exportResponseTo(path); !why.isEmpty())
+      emit exportFailed(tr("Frequency response (CSV)"), why);
   });
   menu->addAction(tr("Session data and fits (CSV folder)…"), this, [this] {
     if (!outcome_) return;
@@ -926,6 +943,39 @@ QString ResultView::exportDelayRowsTo(const QString& path) {
   const QString why = writeTextFile(path, session::delayBreakdownCsv(*outcome_->report, outcome_->shownVerdict(), source.toStdString()));
   if (why.isEmpty()) emit exported(path);
   return why;
+}
+
+QString ResultView::exportResponseTo(const QString& path) {
+  if (!outcome_ || !outcome_->report) return tr("There is no result to export.");
+  if (outcome_->responses.empty())
+    return tr("There is no frequency response to export: %1").arg(responseMissingText(*outcome_->report));
+  const QString models = responseModelsPath(path);
+  // The dialog asked before replacing `path`; nobody asked about the models'
+  // file, so one already there is never replaced.
+  if (QFileInfo(models).absoluteFilePath() == QFileInfo(path).absoluteFilePath())
+    return tr("%1 cannot hold both the points and the models; choose another name.")
+        .arg(QDir::toNativeSeparators(path));
+  if (QFileInfo::exists(models))
+    return tr("Nothing was exported: the models go beside the points as %1, and that file already exists. It was "
+              "not named in the dialog and is not replaced: move or delete it, or choose another name for the points.")
+        .arg(QDir::toNativeSeparators(models));
+  const std::string source = outcome_->sessionPath.empty() ? outcome_->info.source : outcome_->sessionPath;
+  if (QString why = writeTextFile(path, responsePointsCsv(outcome_->responses, source)); !why.isEmpty()) return why;
+  if (QString why = writeTextFile(models, responseModelsCsv(outcome_->responses, source)); !why.isEmpty())
+    return tr("%1\nThe points were written to %2; the models were not.").arg(why, QDir::toNativeSeparators(path));
+  emit exported(path);
+  emit exported(models);
+  return QString();
+}
+
+QString ResultView::exportBodePlotTo(const QString& path) {
+  if (!outcome_ || !outcome_->report) return tr("There is no result to export.");
+  if (!bodeView_->plotShown())
+    return tr("There is no Bode plot to export: %1").arg(responseMissingText(*outcome_->report));
+  if (auto s = exportPlots({bodeView_->magnitudePlot(), bodeView_->phasePlot()}, path); !s.isOk())
+    return coreText(s.message());
+  emit exported(path);
+  return QString();
 }
 
 Status ResultView::exportDataTo(const QString& dir) {

@@ -96,6 +96,18 @@ class ResultView : public QWidget {
   // The delay rows of every test point of the shown result as one CSV
   // (ui/data_export.h); empty, or why not (the file is then as it was).
   QString exportDelayRowsTo(const QString& path);
+  // The frequency response shown in the Bode tab (every axis): its points
+  // to `path` (ui/data_export.h responsePointsCsv) and its models beside it
+  // (responseModelsCsv, to responseModelsPath(path)). `path` was named in the
+  // save dialog and may be replaced; the models' file was not, so an export
+  // that would replace one is refused before anything is written. Empty, or
+  // why not (nothing was written then).
+  QString exportResponseTo(const QString& path);
+  // The Bode plot shown (magnitude over phase of the axis shown) as one
+  // PNG, SVG or PDF file (ui/plots/plot_export.h exportPlots). Empty, or
+  // why not in the GUI's language.
+  QString exportBodePlotTo(const QString& path);
+
   // The session's data with the shown result's fits, residuals and report,
   // as `fogbench-cli export --csv` writes them, into a new or empty folder.
   Status exportDataTo(const QString& dir);

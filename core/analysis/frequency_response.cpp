@@ -403,6 +403,24 @@ std::vector<ResponsePoint> responsePoints(const DelayReport& report, Axis axis) 
   return out;
 }
 
+CertifiedPhase certifiedPhase(const ResponsePoint& p, double readDelayMs, double readDelayStdMs, double k) {
+  CertifiedPhase c;
+  const double degPerMs = 360.0 * p.frequencyHz * 1e-3;  // omega in deg per ms
+  // Within (-180, 180] as the point's own phase.
+  c.phaseDeg = -std::remainder(-(p.phaseDeg - degPerMs * readDelayMs), 360.0);
+  c.fitStdDeg = p.phaseStdDeg;
+  c.readDelayStdDeg = degPerMs * readDelayStdMs;
+  c.standardDeg = std::hypot(c.fitStdDeg, c.readDelayStdDeg);
+  c.coverageK = k;
+  c.expandedDeg = k * c.standardDeg;
+  c.expandedMs = c.expandedDeg / degPerMs;  // k sqrt(lagStdMs^2 + u_d^2) when phaseStdDeg = omega lagStdMs
+  return c;
+}
+
+CertifiedPhase certifiedPhase(const ResponsePoint& p, const ResponseAnalysis& r) {
+  return certifiedPhase(p, r.tableReadDelayMs, r.tableReadDelayStdMs);
+}
+
 Result<ResponseAnalysis> analyzeResponse(std::vector<ResponsePoint> points, Axis axis, double groupDelayAtHz) {
   if (!(groupDelayAtHz > 0.0 && groupDelayAtHz <= kMaxGroupDelayAtHz))
     return invalidArgument("the group delay's frequency must be in (0, " +
@@ -449,6 +467,8 @@ std::vector<ResponseAnalysis> analyzeResponses(const DelayReport& report, double
     if (points.size() < 2) continue;
     auto r = analyzeResponse(std::move(points), static_cast<Axis>(a), groupDelayAtHz);
     if (!r) continue;
+    r->tableReadDelayMs = report.constants.tableReadDelayMs;
+    r->tableReadDelayStdMs = report.constants.tableReadDelayStdMs;
     for (const auto& tp : report.points) {
       if (tp.axis != static_cast<Axis>(a) || passedItsChecks(tp)) continue;
       LeftOutPoint left{tp.index, tp.joint.frequencyHz, {}};
@@ -511,6 +531,23 @@ std::string formatResponseText(const std::vector<ResponseAnalysis>& responses) {
                     p.phaseStdDeg, p.lagMs, p.lagStdMs, corr);
       o << line;
     }
+    // The certificate's phase (certifiedPhase): against the table's motion,
+    // with its expanded uncertainty and the budget behind it.
+    o << "  phase against the table's motion (the stamped phase corrected by the table read delay "
+      << fmt(r.tableReadDelayMs, 4) << " ± " << fmt(r.tableReadDelayStdMs, 4) << " ms), expanded uncertainty U (k = "
+      << fmt(kResponseCoverageK, 2) << "):\n";
+    std::snprintf(line, sizeof line, "  %9s %10s %9s %9s   %s\n", "f Hz", "phase deg", "U deg", "U ms",
+                  "u: fit deg, read delay deg");
+    o << line;
+    for (const auto& p : r.points) {
+      const CertifiedPhase c = certifiedPhase(p, r);
+      std::snprintf(line, sizeof line, "  %9.4f %10.5f %9.2e %9.2e   %8.1e, %8.1e\n", p.frequencyHz, c.phaseDeg,
+                    c.expandedDeg, c.expandedMs, c.fitStdDeg, c.readDelayStdDeg);
+      o << line;
+    }
+    if (!(r.tableReadDelayStdMs > 0.0))
+      o << "  (the table read delay's uncertainty is not stated, 0 ms: U holds the fit's share only; give it with "
+           "--read-delay-std-ms or in the bench constants)\n";
     for (const auto& left : r.leftOut)
       o << "  left out: test point " << left.index + 1 << " (" << fmt(left.frequencyHz, 5) << " Hz): " << left.reason
         << "\n";
@@ -551,7 +588,11 @@ std::string formatResponseJson(const std::vector<ResponseAnalysis>& responses) {
     axis["axis"] = axisName(r.axis);
     axis["group_delay_at_hz"] = r.groupDelayAtHz;
     axis["points"] = json::array();
-    for (const auto& p : r.points)
+    axis["table_read_delay_ms"] = r.tableReadDelayMs;
+    axis["table_read_delay_std_ms"] = r.tableReadDelayStdMs;
+    axis["coverage_factor"] = kResponseCoverageK;
+    for (const auto& p : r.points) {
+      const CertifiedPhase c = certifiedPhase(p, r);
       axis["points"].push_back({{"test_point", p.index + 1},
                                 {"frequency_hz", p.frequencyHz},
                                 {"magnitude", p.magnitude},
@@ -563,7 +604,14 @@ std::string formatResponseJson(const std::vector<ResponseAnalysis>& responses) {
                                 {"lag_ms", p.lagMs},
                                 {"lag_std_ms", p.lagStdMs},
                                 {"magnitude_phase_cov_deg", p.magnitudePhaseCovDeg},
-                                {"harmonic_fraction", p.harmonicFraction}});
+                                {"harmonic_fraction", p.harmonicFraction},
+                                {"phase_vs_table_motion_deg", c.phaseDeg},
+                                {"phase_standard_uncertainty_deg", c.standardDeg},
+                                {"phase_read_delay_std_deg", c.readDelayStdDeg},
+                                {"coverage_factor", c.coverageK},
+                                {"phase_expanded_uncertainty_deg", c.expandedDeg},
+                                {"phase_expanded_uncertainty_ms", c.expandedMs}});
+    }
     axis["left_out"] = json::array();
     for (const auto& left : r.leftOut)
       axis["left_out"].push_back(

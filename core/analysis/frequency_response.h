@@ -109,6 +109,10 @@ struct LeftOutPoint {
 struct ResponseAnalysis {
   Axis axis = Axis::kX;
   std::vector<ResponsePoint> points;
+  // The bench constants the analysis was made with (DelayReport::constants,
+  // analyzeResponses sets them): the table read delay and its standard
+  // uncertainty, for the phase against the table's motion (certifiedPhase).
+  double tableReadDelayMs = 0.0, tableReadDelayStdMs = 0.0;
   std::vector<LeftOutPoint> leftOut;  // set by analyzeResponses; the text and JSON list them
   std::vector<ResponseModelFit> models;  // those with enough points, in kind order
   std::vector<std::string> skipped;      // models left out and why (too few points)
@@ -124,6 +128,37 @@ struct ResponseAnalysis {
   std::string noModelReason;
   double groupDelayAtHz = 0.0;
 };
+
+// The coverage factor of the expanded uncertainties the response states
+// (GUM, JCGM 100 6.2: U = k u; k = 2, about 95 % for a normal distribution,
+// as calibration certificates state them).
+inline constexpr double kResponseCoverageK = 2.0;
+
+// A point's phase as a calibration certificate states it (issue 40,
+// docs/method.md "The standard plan"): the gyro's phase against the table's
+// motion, and its expanded uncertainty at k = kResponseCoverageK. The point's
+// phase is against the stamped table angle, which was latched the table read
+// delay d earlier than its stamp (docs/method.md "The measurement"); against
+// the motion the gyro is d later:
+//   phase   = phaseDeg - omega d                  (= -omega (lag + d): the IMU delay's phase)
+//   u       = sqrt(phaseStdDeg^2 + (omega u_d)^2) (the point's phase sigma, the read delay's uncertainty)
+//   U       = k u, in degrees and as a time, U / omega = k sqrt(lagStdMs^2 + u_d^2) ms
+// with d and u_d the bench constants (tableReadDelayMs, tableReadDelayStdMs),
+// independent of the fit. The models are fitted to phaseDeg (a delay d is a
+// part of every model's tau); this is the figure per point.
+struct CertifiedPhase {
+  double phaseDeg = 0.0;            // against the table's motion
+  double standardDeg = 0.0;         // u, k = 1
+  double fitStdDeg = 0.0;           // the point's phaseStdDeg: its share of u
+  double readDelayStdDeg = 0.0;     // omega u_d: the read delay's share of u
+  double coverageK = kResponseCoverageK;
+  double expandedDeg = 0.0;         // U = k u
+  double expandedMs = 0.0;          // U as a time: U / omega
+};
+CertifiedPhase certifiedPhase(const ResponsePoint& point, double tableReadDelayMs, double tableReadDelayStdMs,
+                              double coverageK = kResponseCoverageK);
+// The same with the response's own constants.
+CertifiedPhase certifiedPhase(const ResponsePoint& point, const ResponseAnalysis& response);
 
 // A model whose chi^2 p-value is below this is rejected as inadequate
 // (docs/method.md "Frequency response"): about 3.1 sigma one-sided, the

@@ -209,7 +209,7 @@ TestPlan TestPlan::paperFast() {
 
 const std::vector<std::string>& presetPlanNames() {
   static const std::vector<std::string> names = {"paper", "paper-slow", "paper-fast", "quick", "noise",
-                                                    "response"};
+                                                    "response", "response-third-octave"};
   return names;
 }
 
@@ -234,18 +234,50 @@ Result<TestPlan> presetPlan(std::string_view name) {
     plan.points.push_back(TestPlan::paperFast().points.front());
     return plan;
   }
-  if (name == "response") return responsePlan(TurntableLimits{});
+  if (isResponsePreset(name)) return responsePreset(name, Axis::kX);
   std::string known;
   for (const auto& n : presetPlanNames()) known += (known.empty() ? "" : ", ") + n;
   return invalidArgument("unknown preset '" + std::string(name) + "' (" + known + ")");
 }
 
-Result<TestPlan> responsePlan(const TurntableLimits& limits, const ResponsePlanOptions& o) {
+namespace {
+
+Status checkResponseOptions(const ResponsePlanOptions& o) {
   if (!(o.lowestHz > 0.0) || o.frequencies < 2 || o.frequencies > 200 || !(o.minAmplitudeDeg > 0.0) ||
       !(o.maxAmplitudeDeg >= o.minAmplitudeDeg) || !(o.limitMargin > 0.0 && o.limitMargin <= 1.0) ||
       !(o.minPeriods >= 2.0) || !(o.minDurationS >= 0.0))
     return invalidArgument("response plan: needs a lowest frequency > 0, 2 .. 200 frequencies, amplitudes "
                            "0 < min <= max, a limit margin in (0, 1] and at least 2 periods per point");
+  return Status::ok();
+}
+
+// The largest amplitude the margin allows at f: within limitMargin of the
+// angle, rate and acceleration limits and at most maxAmplitudeDeg, rounded
+// down to 0.001 deg.
+double responseAmplitudeDeg(const TurntableLimits& limits, double maxAmplitudeDeg, double margin, double f) {
+  const double w = kTwoPi * f;
+  const double amplitude = std::min({maxAmplitudeDeg, margin * limits.maxAmplitudeDeg,
+                                     margin * limits.maxRateDegPerS / w, margin * limits.maxAccelDegPerS2 / (w * w)});
+  // A round figure, never above the margin by more than rounding.
+  return std::floor(amplitude * 1000.0 + 1e-6) / 1000.0;
+}
+
+// One point of a response plan: whole periods, settle max(1 period, 1 s),
+// record max(minPeriods, minDurationS).
+TestPoint responsePoint(Axis axis, double f, double amplitudeDeg, const ResponsePlanOptions& o) {
+  TestPoint p;
+  p.axis = axis;
+  p.frequencyHz = f;
+  p.amplitudeDeg = amplitudeDeg;
+  p.settleS = std::ceil(std::max(1.0, f) - 1e-9) / f;
+  p.durationS = std::ceil(std::max(o.minPeriods, o.minDurationS * f) - 1e-9) / f;
+  return p;
+}
+
+}  // namespace
+
+Result<TestPlan> responsePlan(const TurntableLimits& limits, const ResponsePlanOptions& o) {
+  FOG_RETURN_IF_ERROR(checkResponseOptions(o));
   const double rate = o.limitMargin * limits.maxRateDegPerS, accel = o.limitMargin * limits.maxAccelDegPerS2;
   // Highest frequency at which the margin still allows minAmplitudeDeg.
   const double highest = std::min({limits.maxFrequencyHz, rate / (kTwoPi * o.minAmplitudeDeg),
@@ -256,20 +288,52 @@ Result<TestPlan> responsePlan(const TurntableLimits& limits, const ResponsePlanO
   TestPlan plan;
   for (int i = 0; i < o.frequencies; ++i) {
     const double f = o.lowestHz * std::pow(highest / o.lowestHz, static_cast<double>(i) / (o.frequencies - 1));
-    const double w = kTwoPi * f;
-    const double amplitude =
-        std::min({o.maxAmplitudeDeg, o.limitMargin * limits.maxAmplitudeDeg, rate / w, accel / (w * w)});
-    TestPoint p;
-    p.axis = o.axis;
-    p.frequencyHz = f;
-    // A round figure, never above the margin by more than rounding.
-    p.amplitudeDeg = std::floor(amplitude * 1000.0 + 1e-6) / 1000.0;
-    p.settleS = std::ceil(std::max(1.0, f) - 1e-9) / f;
-    p.durationS = std::ceil(std::max(o.minPeriods, o.minDurationS * f) - 1e-9) / f;
-    plan.points.push_back(p);
+    plan.points.push_back(
+        responsePoint(o.axis, f, responseAmplitudeDeg(limits, o.maxAmplitudeDeg, o.limitMargin, f), o));
   }
   if (Status s = plan.validate(limits); !s.isOk()) return invalidArgument("response plan: " + s.message());
   return plan;
+}
+
+const std::vector<double>& thirdOctaveNominalHz() {
+  // ISO 266's R10 preferred numbers over two decades: IEC 61260-1's nominal
+  // mid-band frequencies of the base-10 one-third-octave bands k = -10 .. 10
+  // (exact: 10^(k/10) Hz).
+  static const std::vector<double> grid = {0.1, 0.125, 0.16, 0.2, 0.25, 0.315, 0.4, 0.5, 0.63, 0.8, 1.0,
+                                           1.25, 1.6, 2.0, 2.5, 3.15, 4.0, 5.0, 6.3, 8.0, 10.0};
+  return grid;
+}
+
+Result<TestPlan> thirdOctaveResponsePlan(const TurntableLimits& limits, const ResponsePlanOptions& o) {
+  FOG_RETURN_IF_ERROR(checkResponseOptions(o));
+  TestPlan plan;
+  for (const double f : thirdOctaveNominalHz()) {
+    const std::string where = "one-third-octave response plan: at " + num(f) + " Hz ";
+    if (f > limits.maxFrequencyHz)
+      return invalidArgument(where + "the table's frequency limit (" + num(limits.maxFrequencyHz) +
+                             " Hz) is exceeded; the standard grid reaches 10 Hz and no frequency of it is dropped");
+    // The whole table: the angle limit within the margin, not the 10-deg cap.
+    const double amplitude = responseAmplitudeDeg(limits, limits.maxAmplitudeDeg, o.limitMargin, f);
+    if (!(amplitude >= o.minAmplitudeDeg))
+      return invalidArgument(where + "the table's limits within " + num(o.limitMargin * 100.0) +
+                             " % allow " + num(amplitude) + " deg, under the " + num(o.minAmplitudeDeg) +
+                             " deg a point needs; the standard grid reaches 10 Hz and no frequency of it is dropped");
+    plan.points.push_back(responsePoint(o.axis, f, amplitude, o));
+  }
+  if (Status s = plan.validate(limits); !s.isOk())
+    return invalidArgument("one-third-octave response plan: " + s.message());
+  return plan;
+}
+
+bool isResponsePreset(std::string_view name) { return name == "response" || name == "response-third-octave"; }
+
+Result<TestPlan> responsePreset(std::string_view name, Axis axis) {
+  ResponsePlanOptions options;
+  options.axis = axis;
+  if (name == "response") return responsePlan(TurntableLimits{}, options);
+  if (name == "response-third-octave") return thirdOctaveResponsePlan(TurntableLimits{}, options);
+  return invalidArgument("'" + std::string(name) + "' is not a frequency-response preset (response, "
+                         "response-third-octave)");
 }
 
 Result<TestPlan> loadTestPlanFile(const std::string& path) {

@@ -159,6 +159,9 @@ Result<TestPlan> loadTestPlanFile(const std::string& path);
 //   quick       1 Hz / 3 deg, 20 s: a result in seconds
 //   noise       10 minutes at rest on X (gyro noise), then the paper-fast swing
 //   response    a frequency response of X: responsePlan() for the default limits
+//   response-third-octave
+//               the standard frequency response of X: thirdOctaveResponsePlan()
+//               for the default limits (21 one-third-octave frequencies 0.1 .. 10 Hz)
 const std::vector<std::string>& presetPlanNames();
 // kInvalidArgument naming the presets for an unknown name.
 Result<TestPlan> presetPlan(std::string_view name);
@@ -187,5 +190,38 @@ struct ResponsePlanOptions {
 // kInvalidArgument when the options are out of range or the table cannot
 // swing minAmplitudeDeg at lowestHz; the plan returned passes validate(limits).
 Result<TestPlan> responsePlan(const TurntableLimits& limits, const ResponsePlanOptions& options = {});
+
+// The standard frequency-response plan (issue 40, docs/method.md "The
+// standard plan"): the one-third-octave grid 0.1 .. 10 Hz of the CCAUV.V-K3
+// low-frequency key comparison, base-10 third octaves (IEC 61260-1: band k's
+// exact mid-band frequency is 10^(k/10) Hz) swung at their nominal values
+// (ISO 266's preferred numbers, as IEC 61260-1 labels the bands):
+// thirdOctaveNominalHz(). The nominal values, not 10^(k/10), so that a
+// session compares with another lab's and with another session at the same
+// frequency (they differ by up to 0.95 %, at 0.16 and 1.6 Hz; Compare matches
+// frequencies within 0.5 %). At each frequency the amplitude is the largest
+// the table's limits allow within responsePlan's margin (limitMargin of the
+// angle, rate and acceleration limits; the angle limit, not
+// ResponsePlanOptions' 10 deg cap: a standard plan uses the whole table), and
+// the dwell is responsePlan's: settle max(1 period, 1 s), record max(6
+// periods, 10 s), both rounded up to whole periods. For the default limits:
+// 36 deg up to 1.25 Hz, falling as 1/f^2 to 0.607 deg at 10 Hz; 454 s in all.
+// Uses options.axis, limitMargin, minPeriods, minDurationS and
+// minAmplitudeDeg (the grid is fixed: lowestHz, frequencies and
+// maxAmplitudeDeg are not used). kInvalidArgument when the options are out
+// of range, or for a table whose limits allow less than minAmplitudeDeg at a
+// frequency of the grid or do not reach 10 Hz: it names the frequency and
+// the limit; a frequency of the standard grid is never dropped.
+Result<TestPlan> thirdOctaveResponsePlan(const TurntableLimits& limits, const ResponsePlanOptions& options = {});
+// The 21 nominal one-third-octave frequencies 0.1 .. 10 Hz, in Hz, ascending:
+// 0.1, 0.125, 0.16, 0.2, 0.25, 0.315, 0.4, 0.5, 0.63, 0.8, 1, 1.25, 1.6, 2,
+// 2.5, 3.15, 4, 5, 6.3, 8, 10.
+const std::vector<double>& thirdOctaveNominalHz();
+// The names of the presets that are frequency responses of one axis (`run
+// --preset NAME --axis y` makes that axis' plan): "response",
+// "response-third-octave".
+bool isResponsePreset(std::string_view name);
+// The response preset `name` for `axis` (the default limits).
+Result<TestPlan> responsePreset(std::string_view name, Axis axis);
 
 }  // namespace fog

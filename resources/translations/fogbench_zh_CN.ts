@@ -33,6 +33,11 @@
         <source>Frequency response: X, 20 frequencies 0.05 – 11 Hz, 11 min</source>
         <translation>频率响应：X 轴，0.05 – 11 Hz 共 20 个频率，11 分钟</translation>
     </message>
+    <message>
+        <location line="+2"/>
+        <source>Frequency response, standard: X, 21 one-third octaves 0.1 – 10 Hz, 7.6 min</source>
+        <translation>频率响应（标准）：X 轴，0.1 – 10 Hz 共 21 个三分之一倍频程，7.6 分钟</translation>
+    </message>
 </context>
 <context>
     <name>fog::ui::BenchSettingsDialog</name>
@@ -234,7 +239,7 @@
 <context>
     <name>fog::ui::BodeView</name>
     <message>
-        <location filename="../../ui/bode_view.cpp" line="+36"/>
+        <location filename="../../ui/bode_view.cpp" line="+44"/>
         <source>%1 axis</source>
         <translation>%1 轴</translation>
     </message>
@@ -255,23 +260,24 @@
     </message>
     <message>
         <location line="+21"/>
-        <location line="+133"/>
-        <location line="+39"/>
+        <location line="+162"/>
+        <location line="+75"/>
         <source>Hz</source>
         <translation>Hz</translation>
     </message>
     <message>
-        <location line="-170"/>
+        <location line="-235"/>
         <source>dB</source>
         <translation>dB</translation>
     </message>
     <message>
         <location line="+22"/>
+        <location line="+17"/>
         <source>series</source>
         <translation>序列</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="-17"/>
         <source>model</source>
         <translation>模型</translation>
     </message>
@@ -316,7 +322,87 @@
         <translation>数据点无法区分的内容</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+15"/>
+        <source>point</source>
+        <translation>测试点</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>f (Hz)</source>
+        <translation>f（Hz）</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>|H| (dB) ± 1σ</source>
+        <translation>|H| (dB) ± 1σ</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>phase (°) ± 1σ</source>
+        <translation>相位 (°) ± 1σ</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>phase vs motion (°)</source>
+        <translation>相对转台运动的相位 (°)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>U (k = 2), °</source>
+        <translation>U (k = 2)，°</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>U (k = 2), ms</source>
+        <translation>U (k = 2)，ms</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>lag (ms) ± 1σ</source>
+        <translation>滞后 (ms) ± 1σ</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The phase against the table&apos;s motion: the phase against the stamped table angle corrected by the table read delay (the bench constant), as a certificate states it</source>
+        <translation>相对转台运动的相位：相对带时间戳的转台角度的相位经转台读数延迟（台架常数）修正，即校准证书给出的相位</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Expanded uncertainty of the phase against the table&apos;s motion, k = 2: the point&apos;s phase σ and the table read delay&apos;s uncertainty in quadrature, times 2</source>
+        <translation>相对转台运动的相位的扩展不确定度，k = 2：该点相位的 σ 与转台读数延迟的不确定度按方和根合成，再乘以 2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Against the stamped table angle (−ω·lag), as the models are fitted; ±1σ</source>
+        <translation>相对带时间戳的转台角度（−ω·滞后），模型即按此拟合；±1σ</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>, as a time (U / ω)</source>
+        <translation>，以时间表示（U / ω）</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Models</source>
+        <translation>模型</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Points, phase U (k = 2)</source>
+        <translation>测试点，相位 U (k = 2)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Every model fitted to the points</source>
+        <translation>对这些测试点拟合的每个模型</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Every point with its phase against the table&apos;s motion and that phase&apos;s expanded uncertainty (k = 2), the table read delay&apos;s uncertainty in the budget</source>
+        <translation>每个测试点相对转台运动的相位及其扩展不确定度 (k = 2)，不确定度预算中包含转台读数延迟的不确定度</translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>No frequency response yet.</source>
         <translation>尚无频率响应。</translation>
     </message>
@@ -347,12 +433,12 @@
     </message>
     <message>
         <location line="+0"/>
-        <location line="+36"/>
+        <location line="+72"/>
         <source>ms</source>
         <translation>ms</translation>
     </message>
     <message>
-        <location line="-28"/>
+        <location line="-64"/>
         <source>The probability of a χ² this large were the model true: below %1 the model is rejected and never chosen</source>
         <translation>若模型成立，χ² 不小于此值的概率：低于 %1 时模型被拒绝，绝不被选中</translation>
     </message>
@@ -362,7 +448,12 @@
         <translation>所选模型：AIC 最低；较大的模型仅当其使 χ² 比它所包含的较简单模型降低 3σ（多 1 个参数为 9，多 2 个为 11.83）时才选它</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+27"/>
+        <source>U (k = %1) = %2° = %3 ms: the fit&apos;s σ %4° and the table read delay&apos;s %5° (its uncertainty %6 ms of the read delay %7 ms) in quadrature</source>
+        <translation>U (k = %1) = %2° = %3 ms：拟合的 σ %4° 与转台读数延迟的 %5°（读数延迟 %7 ms 的不确定度 %6 ms）按方和根合成</translation>
+    </message>
+    <message>
+        <location line="+31"/>
         <source>; &lt;b&gt;%1&lt;/b&gt; (chosen): group delay at %2 Hz &lt;b&gt;%3&lt;/b&gt;</source>
         <translation>；&lt;b&gt;%1&lt;/b&gt;（所选）：%2 Hz 处群延迟 &lt;b&gt;%3&lt;/b&gt;</translation>
     </message>
@@ -372,12 +463,12 @@
         <translation>；&lt;b&gt;没有模型拟合&lt;/b&gt;：响应仅由测量点给出</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>model (chosen)</source>
         <translation>模型（所选）</translation>
     </message>
     <message>
-        <location line="-25"/>
+        <location line="-26"/>
         <source>%1%2 points, %3 – %4 Hz</source>
         <translation>%1%2 个点，%3 – %4 Hz</translation>
     </message>
@@ -392,7 +483,7 @@
         <translation>（外推至最高测试点 %1 Hz 之外）</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>model left out: %1</source>
         <translation>未拟合的模型：%1</translation>
     </message>
@@ -2972,7 +3063,7 @@ File: %1</source>
         <translation>%1 分钟</translation>
     </message>
     <message>
-        <location filename="../../ui/plots/plot_export.cpp" line="+11"/>
+        <location filename="../../ui/plots/plot_export.cpp" line="+13"/>
         <source>PNG image (*.png);;SVG drawing (*.svg);;PDF document (*.pdf)</source>
         <translation>PNG 图像 (*.png);;SVG 矢量图 (*.svg);;PDF 文档 (*.pdf)</translation>
     </message>
@@ -4507,7 +4598,7 @@ File: %1</source>
         <translation>%1（%3 个中的第 %2 个%4）</translation>
     </message>
     <message>
-        <location filename="../../ui/data_export.cpp" line="+82"/>
+        <location filename="../../ui/data_export.cpp" line="+177"/>
         <source>Cannot create %1: %2. Nothing was written; choose another folder.</source>
         <translation>无法创建 %1：%2。未写入任何内容；请选择其他文件夹。</translation>
     </message>
@@ -4713,7 +4804,7 @@ Run a test plan (Run), or open a session (Sessions).</source>
         <translation>延迟-频率曲线…</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+11"/>
         <source>Calibration report (PDF)…</source>
         <translation>标定报告（PDF）…</translation>
     </message>
@@ -4724,7 +4815,7 @@ Run a test plan (Run), or open a session (Sessions).</source>
         <translation>标定报告</translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+70"/>
         <source>No result yet: run a test plan (Run) or open a session (Sessions).</source>
         <translation>尚无结果：请运行测试计划（运行）或打开会话（会话）。</translation>
     </message>
@@ -4734,12 +4825,12 @@ Run a test plan (Run), or open a session (Sessions).</source>
         <translation>结果 %1/%2：%7，%3 由 %4（%5）保存，%6</translation>
     </message>
     <message>
-        <location line="-128"/>
+        <location line="-136"/>
         <source>PDF document (*.pdf)</source>
         <translation>PDF 文档 (*.pdf)</translation>
     </message>
     <message>
-        <location line="-54"/>
+        <location line="-63"/>
         <source>Fits</source>
         <translation>拟合</translation>
     </message>
@@ -4759,7 +4850,18 @@ Run a test plan (Run), or open a session (Sessions).</source>
         <translation>某轴各测试频率下陀螺角度 / 转台角度的幅值与相位，及对其拟合的延迟模型（伯德图）</translation>
     </message>
     <message>
-        <location line="+59"/>
+        <location line="+44"/>
+        <source>Bode plot (frequency response)…</source>
+        <translation>伯德图（频率响应）…</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+3"/>
+        <source>Export the Bode plot</source>
+        <translation>导出伯德图</translation>
+    </message>
+    <message>
+        <location line="+17"/>
         <source>Delay table (CSV)…</source>
         <translation>延迟表（CSV）…</translation>
     </message>
@@ -4771,11 +4873,27 @@ Run a test plan (Run), or open a session (Sessions).</source>
     </message>
     <message>
         <location line="-2"/>
+        <location line="+7"/>
         <source>CSV file (*.csv)</source>
         <translation>CSV 文件 (*.csv)</translation>
     </message>
     <message>
+        <location line="-3"/>
+        <source>Frequency response: points and models (CSV)…</source>
+        <translation>频率响应：测试点与模型 (CSV)…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Frequency response (CSV): the points; the models go beside them</source>
+        <translation>频率响应 (CSV)：测试点；模型写在其旁</translation>
+    </message>
+    <message>
         <location line="+4"/>
+        <source>Frequency response (CSV)</source>
+        <translation>频率响应 (CSV)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Session data and fits (CSV folder)…</source>
         <translation>会话数据与拟合（CSV 文件夹）…</translation>
     </message>
@@ -5064,7 +5182,40 @@ The session itself is unchanged.</source>
         <translation>没有可导出的延迟结果。</translation>
     </message>
     <message>
-        <location line="-184"/>
+        <location line="+9"/>
+        <location line="+23"/>
+        <source>There is no result to export.</source>
+        <translation>没有可导出的结果。</translation>
+    </message>
+    <message>
+        <location line="-21"/>
+        <source>There is no frequency response to export: %1</source>
+        <translation>没有可导出的频率响应：%1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 cannot hold both the points and the models; choose another name.</source>
+        <translation>%1 不能同时保存测试点和模型；请另选文件名。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Nothing was exported: the models go beside the points as %1, and that file already exists. It was not named in the dialog and is not replaced: move or delete it, or choose another name for the points.</source>
+        <translation>未导出任何内容：模型写在测试点旁，即 %1，而该文件已存在。它不是在对话框中指定的文件，不会被替换：请移走或删除它，或为测试点另选文件名。</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1
+The points were written to %2; the models were not.</source>
+        <translation>%1
+测试点已写入 %2；模型未写入。</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>There is no Bode plot to export: %1</source>
+        <translation>没有可导出的伯德图：%1</translation>
+    </message>
+    <message>
+        <location line="-218"/>
         <location line="+8"/>
         <location line="+48"/>
         <source>table</source>
