@@ -147,15 +147,15 @@ void BM_StageJoint(benchmark::State& state) {
 BENCHMARK(BM_StageJoint)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
 
 // The checks' passes over the 4-parameter fits' table residual: the
-// repeating errors' correlation at up to 20 period lags, and the harmonics
-// 2..5 (a 9-column fit).
+// repeating errors' covariance (every period lag, folded by phase), and the
+// harmonics 2..5 (a 9-column fit).
 void BM_StagePeriodicInflation(benchmark::State& state) {
   const auto& s = slowStages();
   const auto residual = fog::analysis::tableResiduals(s.ch.table, s.table4);
-  const double samplesPerPeriod = (fog::kTwoPi / s.table4.omegaRadPerS) / 1e-3;
   for (auto _ : state)
-    benchmark::DoNotOptimize(fog::analysis::periodicResidualInflation(
-        residual, samplesPerPeriod, 29.4, s.ch.table.noiseDeg * s.ch.table.noiseDeg, fog::analysis::SampleStream::kTable));
+    benchmark::DoNotOptimize(fog::analysis::periodicErrorCovariance(s.ch.table.timeS, residual, s.table4.omegaRadPerS,
+                                                                    s.table4.a, s.table4.b,
+                                                                    fog::analysis::SampleStream::kTable));
 }
 BENCHMARK(BM_StagePeriodicInflation)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
 

@@ -716,9 +716,10 @@ Status fitJointAndTrack(PointWork& work) {
 
   // 5. An honest uncertainty. (a) White-noise terms assume errors that
   // average down sample by sample; with stamps commensurate with the swing,
-  // quantisation errors repeat every period and do not: the table and
-  // pulse-output parts of the variance grow by the residuals' correlation
-  // one, two, ... periods apart. (b) The per-period lags are independent
+  // quantisation errors repeat every period and do not: what they add to
+  // each channel's amplitude and phase is read from its residual
+  // (periodicErrorCovariance) and added to the lag's, the phase's and the
+  // gain's variance alike. (b) The per-period lags are independent
   // estimates whose scatter does not rest on the noise model (errors that
   // repeat every period do not scatter, so (a) is added to it): when it is
   // significantly larger than the fit's uncertainty it is taken; with 20 or
@@ -731,19 +732,21 @@ void honestUncertainty(PointWork& work) {
   const double w = work.w, amplitude = work.amplitude, tableInterval = work.tableInterval;
   const auto& lags = work.lags;
   const auto& spread = work.spread;
-  const double periodS = kTwoPi / w;
-  const double tableTerm =
-      2.0 * ch.table.noiseDeg * ch.table.noiseDeg * tableInterval / (amplitude * amplitude * r.durationS * w * w);
-  const double gyroAmp = amplitude * std::abs(joint->gain);
-  const double quantTerm = 2.0 * ch.gyro.quantisationVarianceDeg2 * ch.gyro.framePeriodS /
-                           (gyroAmp * gyroAmp * r.durationS * w * w);
-  const double inflT =
-      periodicResidualInflation(work.tableResidual, periodS / tableInterval, r.periods,
-                                ch.table.noiseDeg * ch.table.noiseDeg, SampleStream::kTable);
-  const double inflG =
-      periodicResidualInflation(work.gyroAngleResidual, periodS / ch.gyro.framePeriodS, r.periods,
-                                ch.gyro.quantisationVarianceDeg2, SampleStream::kGyro);
-  const double addedMs2 = 1e6 * (tableTerm * inflT + quantTerm * inflG);
+  // (a) Errors that repeat every period, per channel (validity.h): the
+  // variance they add to the relative amplitude and the phase of each
+  // channel's sinusoid, and the covariance. gain = A_gyro / A_table and
+  // omega * lag = theta_table - theta_gyro, so the gain's relative variance
+  // gets both channels' amplitude terms, omega * lag both phase terms, and
+  // their covariance minus both cross terms. One allowance for gain, phase
+  // and lag alike.
+  const PeriodicErrorCovariance tableRepeats = periodicErrorCovariance(
+      ch.table.timeS, work.tableResidual, r.tableFit.omegaRadPerS, r.tableFit.a, r.tableFit.b, SampleStream::kTable);
+  const PeriodicErrorCovariance gyroRepeats = periodicErrorCovariance(
+      ch.gyro.endS, work.gyroAngleResidual, r.gyroFit.omegaRadPerS, r.gyroFit.a, r.gyroFit.b, SampleStream::kGyro);
+  const double addedLogGain = tableRepeats.amplitude + gyroRepeats.amplitude;
+  const double addedPhaseRad2 = tableRepeats.phase + gyroRepeats.phase;
+  const double addedCross = -(tableRepeats.cross + gyroRepeats.cross);  // cov(ln gain, omega lag), rad
+  const double addedMs2 = 1e6 * addedPhaseRad2 / (w * w);
   r.periodicInflation = addedMs2 / (r.fitLagStdMs * r.fitLagStdMs);
   double baseMs = r.fitLagStdMs;
   if (r.periodicInflation > 0.1) r.lagStdSource = "fit, with errors that repeat every period";
@@ -771,6 +774,7 @@ void honestUncertainty(PointWork& work) {
     // pulses 3x too low in 1 of 5 records of 3.8 periods), is taken at its
     // upper 2-sigma bound.
     const double q = ch.gyro.arwVarianceDeg2PerS, qHigh = q + 2.0 * ch.gyro.arwVarianceStdDeg2PerS;
+    const double gyroAmp = amplitude * std::abs(joint->gain);
     auto bound = [&](double arw) {
       return lagCramerRaoBoundS(w, r.durationS, amplitude, tableInterval, ch.table.noiseDeg, gyroAmp,
                                 ch.gyro.framePeriodS, ch.gyro.quantisationVarianceDeg2, arw);
@@ -783,6 +787,15 @@ void honestUncertainty(PointWork& work) {
   }
   const double stdMs = std::sqrt(baseMs * baseMs + addedMs2);
   r.lagStdMs = stdMs;
+  // The gain: the joint fit's standard error with the same allowance, and
+  // its covariance with the lag: the fit's correlation on the fit's part
+  // (taken with the lag's base, the fit's or the per-period scatter's),
+  // plus the repeating errors' own.
+  const double gain = joint->gain;
+  const double addedGain2 = gain * gain * addedLogGain;
+  r.gainStd = std::sqrt(joint->gainStd * joint->gainStd + addedGain2);
+  r.periodicGainInflation = joint->gainStd > 0.0 ? addedGain2 / (joint->gainStd * joint->gainStd) : 0.0;
+  r.gainLagCovMs = joint->gainLagCorrelation * joint->gainStd * baseMs + 1e3 * gain * addedCross / w;
 }
 
 // The breakdown into IMU and gyro delay, and the refusal of numbers the fits

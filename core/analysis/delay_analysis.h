@@ -67,7 +67,7 @@ struct TestPointResult {
   // show it is too small (lagStdSource says which).
   double lagMs = 0.0, lagStdMs = 0.0;
   double fitLagStdMs = 0.0;        // the joint fit's standard error
-  double periodicInflation = 0.0;  // variance added by errors that repeat every period (validity.h)
+  double periodicInflation = 0.0;  // variance added by errors that repeat every period (validity.h), / fit's
   double trackLagStdMs = 0.0;      // per-period scatter / sqrt(periods)
   std::string lagStdSource = "fit";  // "fit", "fit, commensurate sampling", "per-period scatter"
   double crlbMs = 0.0;                 // Cramer-Rao bound on the lag for the measured noise
@@ -76,7 +76,16 @@ struct TestPointResult {
   double gyroDelayMs = 0.0, gyroDelayStdMs = 0.0;
   // ISO 16063-15 style: gyro/table amplitude ratio and phase (deg) at this frequency.
   double magnitudeRatio = 0.0;
-  double phaseDeg = 0.0;
+  double phaseDeg = 0.0;  // -omega lag: its uncertainty is omega lagStdMs
+  // The ratio's reported uncertainty: the joint fit's standard error
+  // (joint.gainStd) with the same allowance for errors that repeat every
+  // period as the lag's (periodicErrorCovariance, validity.h: their
+  // in-phase part moves the gain, their quadrature part the phase), and its
+  // covariance with the lag (ratio x ms). periodicGainInflation: the
+  // variance that allowance adds, as a fraction of the fit's.
+  double gainStd = 0.0;
+  double gainLagCovMs = 0.0;
+  double periodicGainInflation = 0.0;
 
   std::vector<PeriodDelay> periodTrack;
   double periodMeanLagMs = 0.0, periodScatterMs = 0.0;

@@ -387,15 +387,15 @@ std::vector<ResponsePoint> responsePoints(const DelayReport& report, Axis axis) 
     p.frequencyHz = r.joint.frequencyHz;
     const double w = kTwoPi * p.frequencyHz;
     p.magnitude = r.magnitudeRatio;
-    p.magnitudeStd = r.joint.gainStd;
+    p.magnitudeStd = r.gainStd;
     p.magnitudeDb = 20.0 * std::log10(p.magnitude);
     p.magnitudeDbStd = 20.0 / std::log(10.0) * p.magnitudeStd / p.magnitude;
     p.lagMs = r.lagMs;
     p.lagStdMs = r.lagStdMs;
     p.phaseDeg = -w * r.lagMs * 1e-3 * kDegPerRad;
     p.phaseStdDeg = w * r.lagStdMs * 1e-3 * kDegPerRad;
-    // phase = -omega lag: the correlation changes sign.
-    p.magnitudePhaseCovDeg = -r.joint.gainLagCorrelation * p.magnitudeStd * p.phaseStdDeg;
+    // phase = -omega lag: the covariance changes sign.
+    p.magnitudePhaseCovDeg = -w * 1e-3 * kDegPerRad * r.gainLagCovMs;
     p.harmonicFraction = r.harmonicFraction;
     out.push_back(p);
   }

@@ -41,8 +41,9 @@ struct ResponsePoint {
   double magnitudeDb = 0.0, magnitudeDbStd = 0.0;  // 20 log10(magnitude)
   double phaseDeg = 0.0, phaseStdDeg = 0.0;
   double lagMs = 0.0, lagStdMs = 0.0;              // the point's reported lag and its uncertainty
-  // Covariance of magnitude (ratio) and phase (deg): the joint fit's gain-lag
-  // correlation times magnitudeStd * phaseStdDeg, with the sign phase = -omega lag gives.
+  // Covariance of magnitude (ratio) and phase (deg): the point's gain-lag
+  // covariance (TestPointResult::gainLagCovMs) with the sign and scale
+  // phase = -omega lag gives.
   double magnitudePhaseCovDeg = 0.0;
   double harmonicFraction = 0.0;  // harmonics 2..5 of the table / amplitude (the point's)
 };
@@ -50,7 +51,8 @@ struct ResponsePoint {
 // The points of `axis` whose validity checks passed (passedItsChecks), in
 // order of frequency. The phase uncertainty is omega * lagStdMs (the point's
 // reported lag uncertainty, which may exceed the fit's), the magnitude's the
-// joint fit's gainStd.
+// point's gainStd: both with the allowance for errors that repeat every
+// period (delay_analysis.h).
 std::vector<ResponsePoint> responsePoints(const DelayReport& report, Axis axis);
 
 enum class ResponseModelKind { kDelay = 0, kFirstOrder = 1, kSecondOrder = 2 };

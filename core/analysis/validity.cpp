@@ -203,90 +203,100 @@ double harmonicAmplitude(const std::vector<double>& timeS, const std::vector<dou
   return std::sqrt(sumSq);
 }
 
-double periodicResidualInflation(const std::vector<double>& r, double samplesPerPeriod, double periods,
-                                 double whiteVariance, SampleStream stream) {
-  const std::size_t n = r.size();
-  if (n < 16 || !(samplesPerPeriod >= 2.0) || periods < 2.0 || !(whiteVariance > 0.0)) return 0.0;
-  // The residual's second differences d_i = r_(i+1) - 2 r_i + r_(i-1). A
-  // white error of variance s2 gives d of variance 6 s2 whose covariance one
-  // period apart is 6 s2 rho when the error repeats with correlation rho;
-  // the residual's other parts drop out: an angle random walk (the gyro's
-  // cumulative angle) leaves d uncorrelated beyond one sample, where the
-  // residual itself is correlated near 1 one period apart in any record of
-  // many periods (read from it, an incommensurate 11-Hz point had 3x the
-  // fit's variance added), and a smooth misfit at harmonic m shrinks by
-  // (m w dt)^4.
-  // Their mean is the ends' slopes' difference over n - 2: it telescopes.
+PeriodicErrorCovariance periodicErrorCovariance(const std::vector<double>& t, const std::vector<double>& r,
+                                                double w, double a, double b, SampleStream stream) {
+  PeriodicErrorCovariance out;
+  const std::size_t n = std::min(t.size(), r.size());
+  const double amplitude = std::hypot(a, b);
+  if (n < 16 || !(w > 0.0) || !std::isfinite(w) || !(amplitude > 0.0) || !std::isfinite(amplitude)) return out;
+  const double cycles = (t[n - 1] - t[0]) * w / kTwoPi;  // periods the samples span
+  const double samplesPerPeriod = static_cast<double>(n - 1) / cycles;
+  if (!(cycles >= 2.0) || !(samplesPerPeriod >= 4.0) || samplesPerPeriod > 1e7) return out;
+  // One bin per sample of a period, at the sample phases of the first
+  // period: with commensurate stamps every period's samples fall on the
+  // same bins. Two samples of one period never share a bin (they are a
+  // sample apart, a bin is no wider), so a bin's pairs are always whole
+  // periods apart.
+  const auto bins = static_cast<std::size_t>(std::llround(samplesPerPeriod));
+  std::vector<double> sum(bins, 0.0), sumSq(bins, 0.0);
+  // The second differences' mean is the ends' slopes' difference over n - 2: it telescopes.
   const double mean = (r[n - 1] - r[n - 2] - r[1] + r[0]) / static_cast<double>(n - 2);
-  // The shifts of one, two, ... periods that fit in the record.
-  constexpr int kMaxLags = 20;
-  std::array<std::size_t, kMaxLags> shift{};
-  std::size_t lags = 0;
-  for (int k = 1; k <= std::min(kMaxLags, static_cast<int>(periods) - 1); ++k) {
-    const auto s = static_cast<std::size_t>(std::llround(k * samplesPerPeriod));
-    if (s + 2 >= n) break;
-    shift[lags++] = s;
-  }
-  if (lags == 0) return 0.0;
-  // Every lag's sum in one pass over the residual rather than one pass per
-  // lag: the residual is walked in blocks that stay in the cache. Within a
-  // block the lags are taken four at a time, each with its own running sum:
-  // one sum alone waits for its previous addition at every sample (the
-  // pass was a tenth of the analysis), four interleaved keep the adder
-  // busy and share the second difference at i. Each sum still runs over i
-  // in order, so it is the same number, to the bit, as one loop per lag.
-  constexpr std::size_t kBlock = 2048;
-  constexpr std::size_t kGroup = 4;
-  const std::size_t count = n - 2;  // second differences, centred on 1 .. n - 2
-  auto second = [](const double* x) { return x[2] - 2.0 * x[1] + x[0]; };
-  std::array<double, kMaxLags> c{};
-  auto end = [&](std::size_t from, std::size_t k) {
-    return std::min(from + kBlock, count - std::min(count, shift[k]));
-  };
+  const double cyclesPerS = w / kTwoPi;
   countPass(stream);
-  for (std::size_t from = 0; from < count; from += kBlock) {
-    std::size_t k = 0;
-    for (; k + kGroup <= lags; k += kGroup) {
-      // The shifts grow with k, so the group's last lag ends first.
-      const std::size_t common = std::max(from, end(from, k + kGroup - 1));
-      const double* a0 = r.data() + shift[k];
-      const double* a1 = r.data() + shift[k + 1];
-      const double* a2 = r.data() + shift[k + 2];
-      const double* a3 = r.data() + shift[k + 3];
-      double s0 = c[k], s1 = c[k + 1], s2 = c[k + 2], s3 = c[k + 3];
-      for (std::size_t i = from; i < common; ++i) {
-        const double here = second(r.data() + i) - mean;
-        s0 += here * (second(a0 + i) - mean);
-        s1 += here * (second(a1 + i) - mean);
-        s2 += here * (second(a2 + i) - mean);
-        s3 += here * (second(a3 + i) - mean);
-      }
-      c[k] = s0;
-      c[k + 1] = s1;
-      c[k + 2] = s2;
-      c[k + 3] = s3;
-      // What the group's shorter lags have left of the block, in order.
-      for (std::size_t j = k; j < k + kGroup; ++j) {
-        const double* ahead = r.data() + shift[j];
-        double sum = c[j];
-        for (std::size_t i = std::max(from, common); i < end(from, j); ++i)
-          sum += (second(r.data() + i) - mean) * (second(ahead + i) - mean);
-        c[j] = sum;
-      }
-    }
-    for (; k < lags; ++k) {
-      const double* ahead = r.data() + shift[k];
-      double sum = c[k];
-      for (std::size_t i = from; i < end(from, k); ++i) sum += (second(r.data() + i) - mean) * (second(ahead + i) - mean);
-      c[k] = sum;
-    }
+  for (std::size_t i = 1; i + 1 < n; ++i) {
+    const double d = r[i + 1] - 2.0 * r[i] + r[i - 1] - mean;
+    const double x = (t[i] - t[0]) * cyclesPerS;
+    auto j = static_cast<std::size_t>(std::floor((x - std::floor(x)) * static_cast<double>(bins) + 0.5));
+    if (j >= bins) j -= bins;
+    sum[j] += d;
+    sumSq[j] += d * d;
   }
-  double inflation = 0.0;
-  for (std::size_t k = 0; k < lags; ++k) {
-    const double rho = std::min(1.0, c[k] / (static_cast<double>(count - shift[k]) * 6.0 * whiteVariance));
-    if (rho > 0.0) inflation += 2.0 * (1.0 - static_cast<double>(k + 1) / periods) * rho;
+  // Harmonics 0..5 of the period out of the folded sums: a smooth error that
+  // repeats (a table harmonic the fit leaves) is not one the fundamental's
+  // estimate carries. An error white within the period loses the share of
+  // its second differences' power there, eps = sum over the harmonics of
+  // (2 sin(pi m / B))^4 / (6 B), which is restored below (0.15 % at 50 bins,
+  // 4 % at 25).
+  const int harmonics = static_cast<int>(std::min<std::size_t>(5, (bins - 1) / 2));
+  const double binsD = static_cast<double>(bins);
+  double eps = 0.0;
+  {
+    double m0 = 0.0;
+    for (double v : sum) m0 += v;
+    m0 /= binsD;
+    for (double& v : sum) v -= m0;
   }
-  return inflation;
+  for (int m = 1; m <= harmonics; ++m) {
+    double cs = 0.0, sn = 0.0;
+    for (std::size_t j = 0; j < bins; ++j) {
+      const double phase = kTwoPi * m * static_cast<double>(j) / binsD;
+      cs += sum[j] * std::cos(phase);
+      sn += sum[j] * std::sin(phase);
+    }
+    cs *= 2.0 / binsD;
+    sn *= 2.0 / binsD;
+    for (std::size_t j = 0; j < bins; ++j) {
+      const double phase = kTwoPi * m * static_cast<double>(j) / binsD;
+      sum[j] -= cs * std::cos(phase) + sn * std::sin(phase);
+    }
+    eps += 2.0 * std::pow(2.0 * std::sin(kPi * m / binsD), 4) / (6.0 * binsD);
+  }
+  // The swing's phase psi = w t + theta at each bin; the weights of the
+  // in-phase (amplitude) and quadrature (phase) projections.
+  // With an even number of bins, the fold half a period on as well: a
+  // quantisation error is an odd function of the angle about a grid point,
+  // so a swing about a centre on the grid (0, commanded) reads -theta half a
+  // period after it read theta, and its error repeats with the sign
+  // flipped every half period. Such a pattern holds odd harmonics of the
+  // period only, and the fundamental (odd, absorbed by the fit) carries
+  // twice the average power the bins' own squares give: the cross products
+  // -D_j D_(j+B/2) add it (their expectation is 0 when nothing relates the
+  // halves: samples half a period apart share no white error).
+  const std::size_t half = bins % 2 == 0 ? bins / 2 : 0;
+  const double psi0 = w * t[0] + std::atan2(b, a);
+  double qss = 0.0, qcc = 0.0, qsc = 0.0;
+  for (std::size_t j = 0; j < bins; ++j) {
+    double pairs = sum[j] * sum[j] - (1.0 - eps) * sumSq[j];
+    if (half > 0) pairs -= sum[j] * sum[(j + half) % bins];
+    const double psi = psi0 + kTwoPi * static_cast<double>(j) / binsD;
+    const double s = std::sin(psi), c = std::cos(psi);
+    qss += s * s * pairs;
+    qcc += c * c * pairs;
+    qsc += s * c * pairs;
+  }
+  const double nD = static_cast<double>(n);
+  const double scale = 4.0 / (6.0 * nD * nD * amplitude * amplitude * (1.0 - eps));
+  // Clipped to positive semi-definite: the estimate of a variance that is
+  // not there scatters about 0.
+  const Eigen::Matrix2d q = (Eigen::Matrix2d() << qss, qsc, qsc, qcc).finished() * scale;
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(q);
+  const Eigen::Vector2d lambda = eig.eigenvalues().cwiseMax(0.0);
+  const Eigen::Matrix2d psd = eig.eigenvectors() * lambda.asDiagonal() * eig.eigenvectors().transpose();
+  if (!psd.allFinite()) return out;
+  out.amplitude = psd(0, 0);
+  out.phase = psd(1, 1);
+  out.cross = psd(0, 1);
+  return out;
 }
 
 std::optional<LineFit> fitLine(const std::vector<double>& x, const std::vector<double>& y) {

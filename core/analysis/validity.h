@@ -59,20 +59,48 @@ double smoothResidualRms(const std::vector<double>& timeS, const std::vector<dou
 double harmonicAmplitude(const std::vector<double>& timeS, const std::vector<double>& residual, double omegaRadPerS,
                          SampleStream stream);
 
-// How much errors that repeat every swing period add to a phase estimate's
-// variance: 2*sum_k (1 - k/n) rho_k over k = 1 .. K (rho_k > 0), rho_k the
-// correlation one, two, ... periods apart (at the nearest sample) of the
-// white error of variance whiteVariance in the residual. When stamps are
-// commensurate with the swing (1 Hz at 1 kHz), quantisation errors repeat
-// every period and do not average down; the variance then grows by
-// (1 + this sum). About 0 for incommensurate stamps. rho_k is read from the
-// residual's second differences (whose covariance one period apart is
-// 6 * whiteVariance * rho_k), so neither an angle random walk (the gyro's
-// cumulative angle; its second differences are uncorrelated beyond one
-// sample) nor a smooth misfit (a table harmonic) counts as an error that
-// repeats. One pass, all the lags' sums together.
-double periodicResidualInflation(const std::vector<double>& residual, double samplesPerPeriod, double periods,
-                                 double whiteVariance, SampleStream stream);
+// What errors that repeat every swing period add to the estimate of a
+// sinusoid A sin(w t + theta) = a sin(w t) + b cos(w t) fitted to a series:
+// the covariance of its relative amplitude dA/A and its phase dtheta. With
+// stamps commensurate with the swing (20 Hz at 1 kHz: 50 samples a period)
+// quantisation errors repeat every period and do not average down.
+//
+// A repeating error e moves the amplitude by its in-phase part (2/N) sum e
+// sin(psi) and the phase by its quadrature part (2/(N A)) sum e cos(psi),
+// psi = w t + theta. The fit absorbs exactly those projections, so they
+// cannot be read from its residual (the folded residual's projection onto
+// sin and cos is zero by construction); their variance can, from how much
+// of each phase of the period repeats. The residual's second differences
+// are folded by the swing's phase (B bins, one per sample of a period): D_j
+// their sum over periods at bin j, S_j the sum of their squares. D_j^2 - S_j
+// sums d d' over every pair of periods (every lag), 6 times the error's
+// covariance one period apart at that phase for an error white within the
+// period; weighted by sin^2(psi_j), cos^2(psi_j) and sin cos they give the
+// added variance of the two projections and their covariance, 4 / (6 N^2
+// A^2) sum_j w_j (D_j^2 - S_j). An error that repeats near the turning
+// points moves the amplitude, one near the zero crossings the phase; one
+// alike at every phase both equally (isotropic), and then this is the
+// phase's 2 sum_k (1 - k/n) rho_k times the white variance, with every lag.
+// With B even, the bins half a period apart count too (-D_j D_(j+B/2)):
+// quantisation is odd about a grid point, so a swing about a centre on the
+// grid repeats its error with the sign flipped every half period, which
+// doubles what the fit carries.
+//
+// Not counted: an angle random walk (the gyro's cumulative angle; its
+// second differences are uncorrelated beyond one sample) and smooth misfits
+// (second differences shrink harmonic m by (m w dt)^4, and harmonics 0..5 of
+// the period are taken out of the folded sums: a table harmonic repeats
+// exactly but the fundamental's estimate is not biased by it; the white
+// error's small share there is restored). About 0 for incommensurate stamps;
+// clipped to a positive semi-definite matrix. One pass over the residual;
+// timeS is the fit's time axis.
+struct PeriodicErrorCovariance {
+  double amplitude = 0.0;  // variance added to dA / A (1)
+  double phase = 0.0;      // variance added to dtheta (rad^2)
+  double cross = 0.0;      // their covariance (rad)
+};
+PeriodicErrorCovariance periodicErrorCovariance(const std::vector<double>& timeS, const std::vector<double>& residual,
+                                                double omegaRadPerS, double a, double b, SampleStream stream);
 
 // Straight-line fit y = a + b*x with the standard error of b from the
 // scatter about the line (needs 3 or more points).

@@ -144,6 +144,11 @@ def run_trial(args):
         rec["failed_checks"] = [c for c in tp.get("checks", []) if not c.get("passed", True)]
         rec["warnings"] = tp.get("warnings", [])
         rec["magnitude_ratio"] = tp.get("joint_fit", {}).get("magnitude_ratio")
+        # The gain against the truth (informative, not a target): 1 less the trapezoid's (w dt)^2 / 12.
+        jf = tp.get("joint_fit", {})
+        if jf.get("magnitude_ratio_std"):
+            w = 2 * math.pi * jf["frequency_hz"]
+            rec["gain_z"] = (jf["magnitude_ratio"] - (1.0 - (w * res["fine_dt_s"]) ** 2 / 12.0)) / jf["magnitude_ratio_std"]
         return rec
     except Exception as e:  # a generator or parsing problem is a result too
         rec["error"] = "%s: %s" % (type(e).__name__, e)
@@ -276,6 +281,10 @@ def main(argv=None):
             if zz.size > 1:
                 print("    %-15s n=%3d  std(z) %.3f  mean(z) %+.3f  |z|<=3 %.3f" % (
                     tm, zz.size, np.std(zz, ddof=1), np.mean(zz), np.mean(np.abs(zz) <= 3)))
+    gz = np.array([r["gain_z"] for r in good if "gain_z" in r])
+    if gz.size > 1:
+        print("  gain (informative): std(z) %.3f, mean(z) %+.3f, |z|<=3 %.3f over %d trials" % (
+            np.std(gz, ddof=1), np.mean(gz), np.mean(np.abs(gz) <= 3), gz.size))
     print("  verdicts: %s" % ", ".join("%s %d" % kv for kv in sorted(verdicts.items())))
     print("  judgement: %s" % ", ".join("%s %d" % kv for kv in sorted(counts.items())))
     wrong = [r for r in recs if r["judgement"] in ("wrong", "no result")]

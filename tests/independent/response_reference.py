@@ -44,12 +44,19 @@ integral and the filters' rate-linear-between-points each lose (w dt)^2 / 12 of 
 11 Hz (at 10 kHz 4e-6, several sigma of a point: a pure delay then looks like a first-order lag
 of ~0.04 ms).
 
+Every point's magnitude and phase are also compared with the generated response at its frequency
+(z printed per frequency; asserted with --point-z-range, --point-max-abs-z). Issue 40's check of the
+gain's sigma: `--plan hf20 --timing commensurate --encoder-arcsec 0.36` (12.5 and 20 Hz at 0.057 deg
+on exact 1-kHz stamps: 80 and 50 table samples a period, a 1e-4-deg encoder, whose quantisation
+repeats every period).
+
 Run from the repository root:
     /usr/bin/python3 tests/independent/response_reference.py --cli build/release/app/fogbench-cli \\
-        [--trials 50] [--seed 1] [--jobs 2] [--plan full|short] [--cases a,b] [--json OUT.json]
+        [--trials 50] [--seed 1] [--jobs 2] [--plan full|short|hf20] [--timing commensurate]
+        [--encoder-arcsec Q] [--cases a,b] [--json OUT.json]
 Exit status 0 when every case meets the targets (--min-chosen, --min-within-3, --std-z-range per
-parameter or --pooled over all, --max-abs-z; each may be relaxed for a small sample), 1 when not,
-2 on bad usage.
+parameter or --pooled over all, --max-abs-z, --point-z-range, --point-max-abs-z; each may be relaxed
+for a small sample), 1 when not, 2 on bad usage.
 """
 
 from __future__ import annotations
@@ -101,7 +108,15 @@ def response_plan(lowest_hz=0.05, n=20, max_amp=10.0, min_amp=0.5, margin=0.8, m
     return out
 
 
+# Issue 40's high-frequency points: stamps commensurate with the swing at 1 kHz (20 Hz: 50 table
+# samples a period, 12.5 Hz: 80), a 0.057-deg swing (570 quanta of a 1e-4-deg encoder), 10 s each
+# (200 and 125 periods): where encoder quantisation repeats every period.
+HF_PLAN = [(12.5, 0.057, 1.0, 10.0), (20.0, 0.057, 1.0, 10.0)]
+
+
 def plan_points(name):
+    if name == "hf20":
+        return list(HF_PLAN)
     pts = response_plan()
     return pts if name == "full" else pts[8:]
 
@@ -110,8 +125,10 @@ def loguni(rng, lo, hi):
     return float(math.exp(rng.uniform(math.log(lo), math.log(hi))))
 
 
-def draw(case, i, seed, plan, fine_hz, settle_s=0.0):
-    """One trial: (refgen parameters, what was drawn)."""
+def draw(case, i, seed, plan, fine_hz, settle_s=0.0, timing="incommensurate", encoder_arcsec=None):
+    """One trial: (refgen parameters, what was drawn). timing "commensurate": exact 1-ms / 2-ms
+    stamps and no table frequency error (every period samples the same phases), each point's start
+    phase drawn; encoder_arcsec: the encoder quantum instead of a drawn one."""
     rng = np.random.default_rng([seed, CASES.index(case), i])
     imu, read = float(rng.uniform(0.2, 1.5)), float(rng.uniform(0.0, 0.3))
     p = refgen.default_params()
@@ -128,6 +145,13 @@ def draw(case, i, seed, plan, fine_hz, settle_s=0.0):
         "table_freq_error_ppm": float(rng.uniform(-20.0, 20.0)),
         "timing": "incommensurate", "fine_hz": float(fine_hz), "axes_out": "swing",
     })
+    if timing == "commensurate":
+        p["timing"] = "commensurate"
+        p["table_freq_error_ppm"] = 0.0
+        for sg in p["segments"]:
+            sg["start_phase_deg"] = float(rng.uniform(0.0, 360.0))
+    if encoder_arcsec is not None:
+        p["encoder_arcsec"] = float(encoder_arcsec)
     jit = float(rng.uniform(0.9, 1.1))
     if case == "first_order":
         p["lag_tau_ms"] = 2.0 * jit
@@ -141,7 +165,7 @@ def draw(case, i, seed, plan, fine_hz, settle_s=0.0):
         p["register_offset_ms"] = float(rng.uniform(0.0, 0.5))
     drawn = {k: p[k] for k in ("imu_delay_ms", "table_read_delay_ms", "arw_deg_sqrt_h", "pulse_arcsec",
                                "encoder_arcsec", "table_freq_error_ppm", "lag_tau_ms", "second_order_fn_hz",
-                               "second_order_zeta", "boxcar_ms", "register_offset_ms")}
+                               "second_order_zeta", "boxcar_ms", "register_offset_ms", "timing")}
     return p, drawn
 
 
@@ -181,6 +205,26 @@ def truth_of(case, res, tr):
     return t
 
 
+def point_truth(case, truth, res, f):
+    """The generated response at f: (magnitude, phase deg). The trapezoid integral on the fine grid
+    loses (w dt)^2 / 12 of the gain (1.3e-7 at 20 Hz on 100 kHz)."""
+    w = 2 * math.pi * f
+    h = complex(1.0, 0.0)
+    p = res["params"]
+    if case == "first_order":
+        h = 1.0 / complex(1.0, w * p["lag_tau_ms"] * 1e-3)
+    elif case.startswith("second_order"):
+        wn, z = 2 * math.pi * truth["fn_hz"], truth["zeta"]
+        h = wn * wn / complex(wn * wn - w * w, 2 * z * wn * w)
+    elif case == "boxcar":
+        tb = truth["boxcar_true_ms"] * 1e-3
+        x = w * tb / 2
+        h = complex(math.sin(x) / x if x else 1.0, 0.0) * complex(math.cos(-x), math.sin(-x))
+    mag = abs(h) * (1.0 - (w * res["fine_dt_s"]) ** 2 / 12.0)
+    phase = math.degrees(math.atan2(h.imag, h.real)) - math.degrees(w * truth["tau_ms"] * 1e-3)
+    return mag, phase
+
+
 def run_trial(args):
     case, i, params, drawn, cli, workdir, keep = args
     rec = {"case": case, "trial": i, "drawn": drawn}
@@ -210,6 +254,13 @@ def run_trial(args):
             return rec
         x = resp[0]
         rec["points"] = len(x["points"])
+        # Every point's magnitude and phase against the generated response: z = (measured - truth) / sigma.
+        rec["point_z"] = []
+        for pt in x["points"]:
+            mag, phase = point_truth(case, truth, res, pt["frequency_hz"])
+            rec["point_z"].append({"frequency_hz": pt["frequency_hz"],
+                                   "magnitude": (pt["magnitude"] - mag) / pt["magnitude_std"],
+                                   "phase": (pt["phase_deg"] - phase) / pt["phase_std_deg"]})
         rec["chosen"] = x["chosen_model"]
         rec["skipped"] = x.get("skipped_models", [])
         rec["aic"] = {m["model"]: m["aic"] for m in x["models"]}
@@ -266,7 +317,18 @@ def main(argv=None):
     ap.add_argument("--trials", type=int, default=50, help="per case (default 50)")
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--jobs", type=int, default=2)
-    ap.add_argument("--plan", choices=["full", "short"], default="full")
+    ap.add_argument("--plan", choices=["full", "short", "hf20"], default="full",
+                    help="full: the response preset's 20 points; short: its 12 highest; hf20: 12.5 and 20 Hz at "
+                    "0.057 deg, 10 s each (issue 40's repeating quantisation, with --timing commensurate)")
+    ap.add_argument("--timing", choices=["incommensurate", "commensurate"], default="incommensurate",
+                    help="commensurate: exact 1-ms / 2-ms stamps, no table frequency error, start phases drawn")
+    ap.add_argument("--encoder-arcsec", type=float, default=None,
+                    help="the encoder quantum of every trial (default: drawn 0.1-1\" log-uniform; 0.36\" = 1e-4 deg)")
+    ap.add_argument("--point-z-range", type=float, nargs=2, default=None,
+                    help="target: the rms z of every point's magnitude and, apart, of its phase against the "
+                    "generated response, pooled over points and trials, within this range (default: not asserted)")
+    ap.add_argument("--point-max-abs-z", type=float, default=None,
+                    help="target: every point's |z| of magnitude and phase at most this (default: none)")
     ap.add_argument("--fine-hz", type=float, default=100000.0, help="refgen's fine grid (default 100 kHz)")
     ap.add_argument("--settle-s", type=float, default=0.0,
                     help="steady swing between refgen's ramp and each window (default 0: the window starts "
@@ -304,7 +366,7 @@ def main(argv=None):
     for i in range(a.trials):
         for c in cases:
             if only is None or i in only:
-                p, drawn = draw(c, i, a.seed, a.plan, a.fine_hz, a.settle_s)
+                p, drawn = draw(c, i, a.seed, a.plan, a.fine_hz, a.settle_s, a.timing, a.encoder_arcsec)
                 jobs.append((c, i, p, drawn, os.path.abspath(a.cli), workdir, bool(a.keep)))
     t0 = time.perf_counter()
     recs = []
@@ -322,8 +384,10 @@ def main(argv=None):
     pts = plan_points(a.plan)
     print("fogbench frequency response against the independent generator (refgen.py)")
     print("  cli: %s" % a.cli)
-    print("  plan %s: %d points %.4g-%.4g Hz, %.0f s recorded; fine grid %g Hz; seed %d, %d jobs, %.0f s wall" % (
-        a.plan, len(pts), pts[0][0], pts[-1][0], sum(x[3] for x in pts), a.fine_hz, a.seed, a.jobs, wall))
+    print("  plan %s: %d points %.4g-%.4g Hz, %.0f s recorded; fine grid %g Hz; %s stamps; encoder %s; seed %d, "
+          "%d jobs, %.0f s wall" % (
+              a.plan, len(pts), pts[0][0], pts[-1][0], sum(x[3] for x in pts), a.fine_hz, a.timing,
+              "%g\"" % a.encoder_arcsec if a.encoder_arcsec is not None else "drawn", a.seed, a.jobs, wall))
     ok = True
     summaries = []
     pooled = []
@@ -333,7 +397,7 @@ def main(argv=None):
         summaries.append(s)
         print("  %s (%d trials, expected %s): chosen %s; errors %d" % (
             c, s["trials"], s["expected_model"],
-            ", ".join("%s %d" % kv for kv in sorted(s["chosen"].items())), s["errors"]))
+            ", ".join("%s %d" % kv for kv in sorted(s["chosen"].items(), key=lambda kv: str(kv[0]))), s["errors"]))
         if s["errors"]:
             ok = False
             for r in rs:
@@ -376,6 +440,31 @@ def main(argv=None):
         if not (a.std_z_range[0] <= sz <= a.std_z_range[1]):
             ok = False
             print("    MISS: pooled std(z) outside %.2f-%.2f" % tuple(a.std_z_range))
+    # Every point's magnitude and phase against the generated response (issue 40: the gain's sigma).
+    pz = [(r["case"], q) for r in recs if "error" not in r for q in r.get("point_z", [])]
+    if pz:
+        print("  points against the generated response (rms z over trials; |z| max):")
+        for f in sorted({round(q["frequency_hz"], 1) for _, q in pz}):
+            at = [q for _, q in pz if round(q["frequency_hz"], 1) == f]
+            zm = np.array([q["magnitude"] for q in at])
+            zp = np.array([q["phase"] for q in at])
+            print("    %7.3f Hz: magnitude %.2f (%.1f), phase %.2f (%.1f), %d values" % (
+                f, math.sqrt(np.mean(zm ** 2)), np.max(np.abs(zm)), math.sqrt(np.mean(zp ** 2)),
+                np.max(np.abs(zp)), zm.size))
+        zm = np.array([q["magnitude"] for _, q in pz])
+        zp = np.array([q["phase"] for _, q in pz])
+        rm, rp = math.sqrt(np.mean(zm ** 2)), math.sqrt(np.mean(zp ** 2))
+        print("    all: magnitude %.2f, phase %.2f over %d points" % (rm, rp, zm.size))
+        if a.point_z_range is not None:
+            for name, v in (("magnitude", rm), ("phase", rp)):
+                if not (a.point_z_range[0] <= v <= a.point_z_range[1]):
+                    ok = False
+                    print("    MISS: the points' %s rms z %.2f outside %.2f-%.2f" % (name, v, *a.point_z_range))
+        if a.point_max_abs_z is not None:
+            worst = float(max(np.max(np.abs(zm)), np.max(np.abs(zp))))
+            if worst > a.point_max_abs_z:
+                ok = False
+                print("    MISS: a point's |z| %.2f above %.1f" % (worst, a.point_max_abs_z))
     gen = [r["time_generate_s"] for r in recs if "time_generate_s" in r]
     bench = [r["time_bench_s"] for r in recs if "time_bench_s" in r]
     if gen:

@@ -767,7 +767,7 @@ void resultsPage(PageFlow& flow, const Content& c, const TestPointResult& p, con
                              "above 1 says the table's frequency is off nominal), 4-parameter fits with the frequency "
                              "free, and the joint fit: one frequency for both channels and the lag (gyro t₀ − table "
                              "t₀) as a parameter; its gyro/table amplitude ratio is %1 ± %2.")
-                     .arg(fixed(p.magnitudeRatio, 6), plain2(p.joint.gainStd)),
+                     .arg(fixed(p.magnitudeRatio, 6), plain2(p.gainStd)),
                  PageFlow::font(7.5), kMuted);
 
   Table delay;
