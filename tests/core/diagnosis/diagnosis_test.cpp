@@ -1,7 +1,11 @@
-// Blind regression set: a few short sessions (the blind-check plan, two
-// minutes of data) simulated with a withheld effect and diagnosed blind.
-// A change that breaks naming, fitting, held-out shrink or the "unexplained"
-// answer fails here.
+// Self-consistency regression set: a few short sessions (the
+// self-consistency plan, blindCheckPlan(), two minutes of data) simulated
+// with one of the library's own effects (or an outside one) that the
+// diagnosis is not told about, and diagnosed with the same library. Not
+// blind: the effect is the library's own model, so a factor or sign between
+// the library and a standard's definition cannot show here (the reference
+// checks in tests/independent can). A change that breaks naming, fitting,
+// held-out shrink or the "unexplained" answer fails here.
 
 #include <gtest/gtest.h>
 
@@ -17,7 +21,7 @@
 namespace fog::diagnosis {
 namespace {
 
-// A session of `plan` simulated with `effects`, diagnosed blind.
+// A session of `plan` simulated with `effects`, diagnosed without being told them.
 Diagnosis diagnoseSimulated(const model::SimConfig& c, const TestPlan& plan,
                             std::vector<std::unique_ptr<model::Effect>> effects, const DiagnosisOptions& options = {}) {
   auto run = model::simulate(c, plan, std::move(effects));
@@ -31,7 +35,7 @@ Diagnosis diagnoseSimulated(const model::SimConfig& c, const TestPlan& plan,
   return *d;
 }
 
-// The blind-check plan with a gyro delay of 0.31 ms.
+// The self-consistency plan (blindCheckPlan()) with a gyro delay of 0.31 ms.
 Diagnosis diagnoseWith(std::vector<std::unique_ptr<model::Effect>> effects, std::uint64_t seed) {
   model::SimConfig c;
   c.seed = seed;
@@ -358,7 +362,7 @@ TEST(Diagnosis, OutOfLibraryBiasStepIsUnexplained) {
   EXPECT_NE(d.verdictReason.find("gyro channel"), std::string::npos) << d.verdictReason;
 }
 
-// Regression set for the fixes of the blind-check misses (docs/diagnosis.md).
+// Regression set for the fixes of the self-consistency check's misses (docs/diagnosis.md).
 
 // bias_drift: the signature used to be taken at 0.1 deg/h per min, where the
 // re-drawn pulse quantisation outweighed the trend ramp (fit pulled to ~0,
