@@ -134,11 +134,15 @@ class ScaleFactorAsymmetry final : public IncrementEffect {
   double halfA_;
 };
 
-// Rate error k * rate * (rate / 100 deg/s)^2: k is the scale-factor error at
-// 100 deg/s.
+// Scale-factor nonlinearity N as IEEE Std 528 states it over an input range
+// of +-100 deg/s: the largest deviation of the output from its least-squares
+// straight line over the range, as a fraction of the full-scale output. As a
+// cubic rate error k * rate * (rate / 100 deg/s)^2 the least-squares line
+// over +-R has slope 1 + 0.6 k and the deviation k R (x^3 - 0.6 x),
+// x = rate / R, whose largest magnitude (at x = +-1) is 0.4 k R: k = 2.5 N.
 class ScaleFactorNonlinearity final : public IncrementEffect {
  public:
-  explicit ScaleFactorNonlinearity(double ppmAt100) : k_(ppmAt100 * 1e-6) {}
+  explicit ScaleFactorNonlinearity(double ieeePpm) : k_(2.5 * ieeePpm * 1e-6) {}
   std::string name() const override { return "scale_factor_nonlinearity"; }
 
  protected:
@@ -404,12 +408,12 @@ std::vector<EffectSpec> buildLibrary() {
          "positive input rates and Kbar (1 - a/2) for negative ones",
          s528 + ", scale factor asymmetry; " + s952, "asymmetry_k", 2.0}}},
       {E::kScaleFactorNonlinearity, "scale_factor_nonlinearity", "scale-factor nonlinearity", "cubic scale-factor nonlinearity (error at 100 deg/s)",
-       {{"nonlinearity", "ppm at 100 deg/s", 20000.0, true, 1e6,
-         "cubic coefficient c: the scale factor deviates by c (w / 100 deg/s)^2 at rate w, both signs (the output "
-         "is w + c w^3 / (100 deg/s)^2). Not yet IEEE Std 528's number: its scale-factor nonlinearity over +-R "
-         "(the largest deviation from the least-squares line, as a fraction of the full-scale output R) is "
-         "0.4 c (R / 100 deg/s)^2",
-         "own (cubic term); " + s528 + " scale factor nonlinearity = 0.4 c (R / 100 deg/s)^2 over +-R"}}},
+       {{"nonlinearity", "ppm of full scale over +-100 deg/s", 8000.0, true, 4e5,
+         "scale-factor nonlinearity over the input range +-100 deg/s: the largest deviation of the output from its "
+         "least-squares straight line over the range, as a fraction of the full-scale output (100 deg/s), for a "
+         "cubic deviation (odd in the rate: the output is w + 2.5 N w^3 / (100 deg/s)^2); over +-R it is "
+         "N (R / 100 deg/s)^2",
+         s528 + ", scale factor nonlinearity (least-squares line)", "nonlinearity_at_100", 0.4}}},
       {E::kMisalignment, "misalignment", "misalignment", "gyro triad misalignment / non-orthogonality (gyro i senses m_ij of axis j)",
        {{"m_xy", "urad", 200.0, true, 1e5, "input-axis misalignment of gyro x toward body axis y (small angle): gyro x senses +m_xy times the rate about y", s528 + ", input axis misalignment; " + s952},
         {"m_xz", "urad", 200.0, true, 1e5, "input-axis misalignment of gyro x toward body axis z: gyro x senses +m_xz times the rate about z", s528 + ", input axis misalignment; " + s952},

@@ -83,7 +83,7 @@ def _scalar(key, transform=lambda v: v):
 MAKERS = {
     "scale_factor_error": _scalar("scale_factor_ppm"),
     "scale_factor_asymmetry": _scalar("sf_asymmetry_ieee_ppm"),          # (K+ - K-) / Kbar, IEEE Std 528
-    "scale_factor_nonlinearity": _scalar("sf_nonlinearity_ppm_at_100"),
+    "scale_factor_nonlinearity": _scalar("sf_nonlinearity_ieee_ppm"),    # IEEE Std 528 over +-100 deg/s
     "misalignment": lambda v: {"misalignment_urad": list(v)},
     "g_sensitivity": _scalar("g_sens_deg_h_g"),
     "first_order_lag": _scalar("lag_tau_ms"),

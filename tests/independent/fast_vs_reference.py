@@ -91,9 +91,11 @@ CASES = {
         # refgen: K+ = Kbar (1 + a/2) on positive rates, K- = Kbar (1 - a/2) on negative ones
         effect=("scale_factor_asymmetry=600", {"sf_asymmetry_ieee_ppm": 600.0})),
     "scale_factor_nonlinearity": dict(
-        what="cubic scale-factor nonlinearity 1000 ppm at 100 deg/s: X swing 2 Hz / 5 deg (63 deg/s)",
+        what="scale-factor nonlinearity 400 ppm of full scale over +-100 deg/s (IEEE Std 528, least-squares "
+             "line): X swing 2 Hz / 5 deg (63 deg/s)",
         axis="x", f=2.0, a=5.0, d=20.0, pos=[0, 0, 0], lat=40.0, heading=0.0,
-        effect=("scale_factor_nonlinearity=1000", {"sf_nonlinearity_ppm_at_100": 1000.0})),
+        # refgen: the least-squares line (1 + 1.5 N) w plus N 100 P3(w / 100)
+        effect=("scale_factor_nonlinearity=400", {"sf_nonlinearity_ieee_ppm": 400.0})),
     "bias_drift": dict(
         what="bias ramp 2 deg/h per min on every gyro: X swing 1 Hz / 3 deg",
         axis="x", f=1.0, a=3.0, d=30.0, pos=[0, 0, 0], lat=40.0, heading=0.0,

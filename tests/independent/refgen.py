@@ -140,13 +140,18 @@ def default_params():
         # scale-factor asymmetry a = (K+ - K-) / Kbar of IEEE Std 528 as
         # sf_asymmetry_ieee_ppm: the rate is multiplied by K+ = Kbar (1 + a/2)
         # where it is positive and by K- = Kbar (1 - a/2) where it is
-        # negative; plus sf_nonlinearity_ppm_at_100 * rate * (rate / 100)^2
-        # (deg/s); a bias growing by bias_drift_deg_h_per_min from the first
+        # negative; after the scale-factor nonlinearity N of IEEE Std 528 over
+        # +-100 deg/s (sf_nonlinearity_ieee_ppm: the largest deviation from
+        # the least-squares line over the range, fraction of full scale), the
+        # rate written as its least-squares line (1 + 1.5 N) w plus the
+        # deviation N 100 P3(w / 100), P3 the Legendre polynomial
+        # (5 x^3 - 3 x) / 2 (orthogonal to every line on [-1, 1], |P3| <= 1
+        # there, 1 at the ends); a bias growing by bias_drift_deg_h_per_min from the first
         # instant; IMU frames lost at random at drop_per_mille (the next row's
         # lost_before counts them).
         "scale_factor_ppm": 0.0,
         "sf_asymmetry_ieee_ppm": 0.0,
-        "sf_nonlinearity_ppm_at_100": 0.0,
+        "sf_nonlinearity_ieee_ppm": 0.0,
         "bias_drift_deg_h_per_min": 0.0,
         "drop_per_mille": 0.0,
         # Table errors: harmonics added to every swing's commanded motion
@@ -751,7 +756,22 @@ def _vec3(v, name):
 LEGACY_KEYS = {
     "sf_asymmetry_ppm": "give sf_asymmetry_ieee_ppm = (K+ - K-) / Kbar = 2 x its value",
     "table_poly_ppm": "give table_harmonics_ppm [h2, h3] = [c2 / 2, -c3 / 4] (phases 0)",
+    "sf_nonlinearity_ppm_at_100": "give sf_nonlinearity_ieee_ppm = 0.4 x its value (IEEE Std 528 over +-100 deg/s)",
 }
+
+
+def scale_factor_transfer(w, p):
+    """The gyro's static rate transfer (deg/s in, deg/s out): the IEEE Std 528
+    nonlinearity N over +-100 deg/s as the least-squares line (1 + 1.5 N) w
+    plus the deviation N 100 P3(w / 100), then the scale factor K+ = Kbar
+    (1 + a/2) on positive and K- = Kbar (1 - a/2) on negative rates."""
+    n_sf = p["sf_nonlinearity_ieee_ppm"] * 1e-6
+    if n_sf:
+        x = w / 100.0
+        w = w * (1.0 + 1.5 * n_sf) + n_sf * 100.0 * 0.5 * (5.0 * x ** 3 - 3.0 * x)
+    k_bar = 1.0 + p["scale_factor_ppm"] * 1e-6
+    a = p["sf_asymmetry_ieee_ppm"] * 1e-6                   # (K+ - K-) / Kbar
+    return w * np.where(w >= 0.0, k_bar * (1.0 + 0.5 * a), k_bar * (1.0 - 0.5 * a))
 
 
 def resolve(params):
@@ -1042,9 +1062,6 @@ def generate(params, chunk_frames=5000):
         r_, p_, y_ = (v * ARCSEC for v in p["mount_rpy_arcsec"])
         mount = rot("x", r_) @ rot("y", p_) @ rot("z", y_)   # the IMU's axes in the table's inner frame
     gsens = np.asarray(p["g_sens_deg_h_g"], dtype=float)
-    k_bar = 1.0 + p["scale_factor_ppm"] * 1e-6
-    k_plus = k_bar * (1.0 + 0.5 * p["sf_asymmetry_ieee_ppm"] * 1e-6)    # (K+ - K-) / Kbar = a
-    k_minus = k_bar * (1.0 - 0.5 * p["sf_asymmetry_ieee_ppm"] * 1e-6)
 
     def sensed_rate(tf):
         """What the gyros sense before the lag: body rate (of the fixture)
@@ -1060,8 +1077,7 @@ def generate(params, chunk_frames=5000):
             if mount is not None:
                 f_b = f_b @ mount
             w = w + gsens / 3600.0 * f_b
-        w = w + p["sf_nonlinearity_ppm_at_100"] * 1e-6 * w * (w / 100.0) ** 2
-        w = w * np.where(w >= 0.0, k_plus, k_minus)
+        w = scale_factor_transfer(w, p)
         if p["bias_drift_deg_h_per_min"] != 0.0:
             w = w + (p["bias_drift_deg_h_per_min"] / 3600.0 / 60.0 * (tf - t_first))[:, None]
         return w
@@ -1572,7 +1588,8 @@ def build_parser():
     g.add_argument("--sample-hold-ms", type=float)
     g.add_argument("--scale-factor-ppm", type=float)
     g.add_argument("--sf-asymmetry-ieee-ppm", type=float, help="(K+ - K-) / Kbar, IEEE Std 528")
-    g.add_argument("--sf-nonlinearity-ppm-at-100", type=float)
+    g.add_argument("--sf-nonlinearity-ieee-ppm", type=float,
+                   help="IEEE Std 528 nonlinearity over +-100 deg/s (least-squares line, fraction of full scale)")
     g.add_argument("--bias-drift-deg-h-per-min", type=float)
     g.add_argument("--drop-per-mille", type=float, help="IMU frames lost at random (lost_before column)")
     g.add_argument("--bias-instability-deg-h", type=float, help="Gauss-Markov bias, 1 sigma ...")

@@ -758,8 +758,23 @@ class StandardDefinitions(unittest.TestCase):
             ang, rate = refgen.table_state(t, res["swings"], res["params"])
             np.testing.assert_allclose(np.gradient(ang[:, 0], t)[1:-1], rate[1:-1, 0], rtol=0, atol=1e-6)
 
+    def test_nonlinearity_is_ieee_528_over_100_deg_s(self):
+        # The generator's static rate transfer over +-100 deg/s: the largest
+        # deviation from its least-squares line, as a fraction of full scale.
+        n_ppm = 500.0
+        w = -100.0 + 200.0 * (np.arange(200000) + 0.5) / 200000      # midpoints: the continuous least squares
+        out = refgen.scale_factor_transfer(w, {"scale_factor_ppm": 0.0, "sf_asymmetry_ieee_ppm": 0.0,
+                                                "sf_nonlinearity_ieee_ppm": n_ppm})
+        slope, icpt = np.polyfit(w, out, 1)
+        dev = out - (slope * w + icpt)
+        self.assertAlmostEqual(np.max(np.abs(dev)) / 100.0 * 1e6, n_ppm, delta=0.02)
+        self.assertAlmostEqual((slope - 1.0) * 1e6, 1.5 * n_ppm, delta=0.01)
+        # the library's cubic form: w + 2.5 N w^3 / 100^2
+        np.testing.assert_allclose(out, w + 2.5 * n_ppm * 1e-6 * w ** 3 / 1e4, atol=1e-12)
+
     def test_version_one_parameters_are_refused(self):
-        for key, v in (("sf_asymmetry_ppm", 100.0), ("table_poly_ppm", [1.0, 2.0])):
+        for key, v in (("sf_asymmetry_ppm", 100.0), ("table_poly_ppm", [1.0, 2.0]),
+                       ("sf_nonlinearity_ppm_at_100", 10.0)):
             with self.assertRaises(ValueError):
                 refgen.resolve(quiet(**{key: v}))
 
