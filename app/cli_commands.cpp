@@ -59,12 +59,40 @@ Result<std::vector<std::unique_ptr<model::Effect>>> readEffects(const std::strin
     std::stringstream numbers(eq == std::string::npos ? "" : item.substr(eq + 1));
     std::string number;
     while (std::getline(numbers, number, ',')) {
+      // A value may be written in a parameter's meaning before issue 44
+      // (e.g. asymmetry_k:49.4 or h2_at_10deg:-2.83): converted, with a note.
+      const std::size_t j = values.size();
+      const auto colon = number.find(':');
+      double scale = 1.0;
+      if (colon != std::string::npos) {
+        const std::string old = number.substr(0, colon);
+        if (j >= spec.parameters.size() || spec.parameters[j].legacyName.empty() || spec.parameters[j].legacyName != old)
+          return invalidArgument("--effect " + spec.name + ": '" + old + ":' names no earlier definition of value " +
+                                 std::to_string(j + 1) +
+                                 (j < spec.parameters.size() && !spec.parameters[j].legacyName.empty()
+                                      ? " (it is " + spec.parameters[j].legacyName + ":)"
+                                      : ""));
+        scale = spec.parameters[j].legacyScale;
+        number = number.substr(colon + 1);
+      }
       char* end = nullptr;
       const double v = std::strtod(number.c_str(), &end);
       if (number.empty() || *end != '\0' || !std::isfinite(v))
         return invalidArgument("--effect " + spec.name + ": '" + number + "' is not a number");
-      values.push_back(v);
+      if (colon != std::string::npos) {
+        const auto& q = spec.parameters[j];
+        std::cerr << "note: --effect " << spec.name << ": " << q.legacyName << " " << v << " (its definition before "
+                  << "issue 44) is " << q.name << " " << scale * v << " " << q.unit << ": " << q.definition << "\n";
+      }
+      values.push_back(scale * v);
     }
+    // Values typed without a name are in today's definitions; say so where
+    // a definition changed (docs/diagnosis.md, "Parameters and their definitions").
+    for (std::size_t j = 0; j < values.size() && j < spec.parameters.size(); ++j)
+      if (!spec.parameters[j].legacyName.empty() && (eq == std::string::npos || item.find(':', eq) == std::string::npos))
+        std::cerr << "note: --effect " << spec.name << ": " << spec.parameters[j].name << " is " << spec.parameters[j].definition
+                  << " (since issue 44; a value in the earlier definition is written " << spec.parameters[j].legacyName
+                  << ":V, = " << spec.parameters[j].legacyScale << " x V today)\n";
     if (values.size() != spec.parameters.size()) {
       std::string names;
       for (const auto& p : spec.parameters) names += (names.empty() ? "" : ",") + p.name + " (" + p.unit + ")";

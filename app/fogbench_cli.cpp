@@ -168,7 +168,9 @@ usage:
       The IMU's bias instability (its static noise test) sharpens the gyro-trend
       test; unstated, 0.5 deg/h over 300 s is assumed.
   fogbench-cli bench-diagnosis [--trials N] [--seed S] [--threads T]
-      Blind check of the diagnosis on sessions with withheld effects.
+      Self-consistency check of the diagnosis: fogbench's own simulator with the
+      library's effects withheld, diagnosed with the same library (not blind to
+      its parameterisation; tests/independent/blind_reference.py is).
   fogbench-cli noise SESSION.fbs|FILE.bin [--json] [--axis x|y|z] [--taus-per-octave N]
                      [--freq-hz F --amp-deg A --duration-s T] [--latitude-deg L] [--imu-frame F]
                      [--kalibr-yaml IMU.yaml [--overwrite]]

@@ -1,8 +1,11 @@
 #pragma once
-// Blind check of the diagnosis (docs/diagnosis.md):
-// sessions are simulated with an effect the diagnosis is not told about —
-// one from the library at 1x..10x its detection threshold, none, two at once,
-// or one outside the library — diagnosed blind, and scored.
+// Self-consistency check of the diagnosis (docs/diagnosis.md; called the
+// blind check before issue 44, and its identifiers still are): sessions are
+// simulated with an effect the diagnosis is not told about — one from the
+// library at 1x..10x its detection threshold, none, two at once, or one
+// outside the library — diagnosed with the same library, and scored. Not
+// blind to the library's own parameterisation: tests/independent's
+// blind_reference.py is the check on sessions the library did not make.
 //
 // Deterministic for a given seed and trial count (threads change only the
 // order of work). Qt-free; runs its own worker threads.
@@ -21,7 +24,7 @@
 
 namespace fog::diagnosis {
 
-// The plan of the blind sessions: X 1 Hz / 3 deg 30 s, X 0.1 Hz / 10 deg 60 s,
+// The plan of the self-consistency sessions: X 1 Hz / 3 deg 30 s, X 0.1 Hz / 10 deg 60 s,
 // Y 1 Hz / 3 deg 30 s (two frequencies and two axes in two minutes).
 TestPlan blindCheckPlan();
 

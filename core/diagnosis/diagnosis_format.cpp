@@ -37,6 +37,8 @@ std::string formatDiagnosisJson(const Diagnosis& d) {
       params[e.parameters[p].name] = {{"value", e.values[p]},
                                       {"std", e.standardErrors[p]},
                                       {"unit", e.parameters[p].unit},
+                                      {"definition", e.parameters[p].definition},
+                                      {"standard", e.parameters[p].standard},
                                       {"detection_threshold",
                                        p < e.detectionThresholds.size() ? e.detectionThresholds[p] : 0.0}};
     json per = json::object();
@@ -91,7 +93,12 @@ std::string formatDiagnosisJson(const Diagnosis& d) {
                       {"bias_deg_h", c.biasDegPerH},
                       {"bias_instability_deg_h", c.config.fog.biasInstabilityDegPerH},
                       {"bias_correlation_s", c.config.fog.biasCorrelationS},
-                      {"bias_instability_stated", c.biasInstabilityStated}};
+                      {"bias_instability_stated", c.biasInstabilityStated},
+                      {"bias_instability_definition",
+                       "1-sigma of a first-order Gauss-Markov bias wander with correlation time bias_correlation_s "
+                       "(what the replay simulates), not IEEE Std 952-1997's bias instability coefficient B (the "
+                       "Allan-deviation floor, sigma_min = 0.664 B); a Gauss-Markov's Allan deviation peaks at "
+                       "0.617 sigma at 1.89 correlation times (so B = 0.93 sigma for it)"}};
   json cells = json::array();
   for (const auto& g : d.gapMap)
     cells.push_back({{"channel", channelName(g.key.channel)}, {"quantity", quantityName(g.key)}, {"unit", unitName(g.key.unit)},

@@ -118,24 +118,31 @@ class IncrementEffect : public model::Effect {
   Angles last_{}, accumulated_{};
 };
 
-// Scale factor (1 + k) for positive rates and (1 - k) for negative ones.
+// Scale-factor asymmetry a as IEEE Std 528 defines it, (K+ - K-) / Kbar
+// with Kbar = (K+ + K-) / 2: the scale factor is Kbar (1 + a/2) for
+// positive rates and Kbar (1 - a/2) for negative ones, so the sensed
+// increment gains (a/2) |dtheta| (Kbar is the scale_factor_error's).
 class ScaleFactorAsymmetry final : public IncrementEffect {
  public:
-  explicit ScaleFactorAsymmetry(double ppm) : k_(ppm * 1e-6) {}
+  explicit ScaleFactorAsymmetry(double ieeePpm) : halfA_(0.5 * ieeePpm * 1e-6) {}
   std::string name() const override { return "scale_factor_asymmetry"; }
 
  protected:
-  double error(double d, double) const override { return k_ * std::abs(d); }
+  double error(double d, double) const override { return halfA_ * std::abs(d); }
 
  private:
-  double k_;
+  double halfA_;
 };
 
-// Rate error k * rate * (rate / 100 deg/s)^2: k is the scale-factor error at
-// 100 deg/s.
+// Scale-factor nonlinearity N as IEEE Std 528 states it over an input range
+// of +-100 deg/s: the largest deviation of the output from its least-squares
+// straight line over the range, as a fraction of the full-scale output. As a
+// cubic rate error k * rate * (rate / 100 deg/s)^2 the least-squares line
+// over +-R has slope 1 + 0.6 k and the deviation k R (x^3 - 0.6 x),
+// x = rate / R, whose largest magnitude (at x = +-1) is 0.4 k R: k = 2.5 N.
 class ScaleFactorNonlinearity final : public IncrementEffect {
  public:
-  explicit ScaleFactorNonlinearity(double ppmAt100) : k_(ppmAt100 * 1e-6) {}
+  explicit ScaleFactorNonlinearity(double ieeePpm) : k_(2.5 * ieeePpm * 1e-6) {}
   std::string name() const override { return "scale_factor_nonlinearity"; }
 
  protected:
@@ -235,17 +242,24 @@ class FirstOrderLag final : public model::Effect {
 };
 
 // The table's motion itself is distorted, as a pure function of the angle
-// (so the encoder and the gyro both see it): theta + c2 * theta^2 / 10 deg -
-// c3 * theta^3 / (10 deg)^2. At 10 deg amplitude c2 / 2 and c3 / 4 are the
-// relative 2nd and 3rd harmonics.
+// (so the encoder and the gyro both see it). The parameters are the 2nd and
+// 3rd harmonic amplitudes relative to the fundamental of a swing of 10 deg
+// amplitude about zero, each with phase zero at the fundamental's positive
+// peak: a commanded 10 cos(chi) becomes 10 [cos(chi) + h2 cos(2 chi) +
+// h3 cos(3 chi)] + 10 h2 + 30 h3 cos(chi) (an offset and a change of the
+// fundamental by 3 h3 of it). As a function of the angle that is
+// theta + 10 (2 h2 x^2 + 4 h3 x^3), x = theta / 10 deg
+// (cos^2 = (1 + cos 2chi) / 2, cos^3 = (3 cos chi + cos 3chi) / 4); at an
+// amplitude A the harmonics are h2 (A / 10) and h3 (A / 10)^2 of the
+// fundamental. A negative h_n is the same harmonic at phase 180 deg.
 class TableHarmonicDistortion final : public model::Effect {
  public:
-  TableHarmonicDistortion(double c2Ppm, double c3Ppm) : c2_(c2Ppm * 1e-6), c3_(c3Ppm * 1e-6) {}
+  TableHarmonicDistortion(double h2Ppm, double h3Ppm) : c2_(2.0 * h2Ppm * 1e-6), c3_(4.0 * h3Ppm * 1e-6) {}
   std::string name() const override { return "table_harmonic_distortion"; }
   void onTableMotion(double, Angles& angle) const override {
     for (double& th : angle) {
       const double x = th / 10.0;
-      th += 10.0 * (c2_ * x * x - c3_ * x * x * x);
+      th += 10.0 * (c2_ * x * x + c3_ * x * x * x);
     }
   }
 
@@ -373,38 +387,85 @@ class EarthRateProjection final : public RateErrorEffect {
 // central difference leaves that part to the exact evaluation.
 std::vector<EffectSpec> buildLibrary() {
   using E = EffectId;
-  // {name, unit, reference, can be negative, largest magnitude modelled}
+  // {name, unit, reference, can be negative, largest magnitude modelled,
+  //  definition, standard, name and factor before issue 44 (new = factor * old)}
+  const std::string s528 = "IEEE Std 528-2001 (inertial sensor terminology)";
+  const std::string s952 = "IEEE Std 952-1997 (single-axis interferometric FOG)";
   return {
       {E::kBiasDrift, "bias_drift", "bias drift", "gyro bias ramp (temperature-like), all axes",
-       {{"drift", "deg/h per min", 2.0, true, 1000.0}}},
+       {{"drift", "deg/h per min", 2.0, true, 1000.0,
+         "deterministic bias ramp: every gyro's bias grows by this much per minute from the first sample (a linear "
+         "drift rate; the random bias instability is the replay's stated Gauss-Markov wander, not this). "
+         "IEEE Std 952's rate ramp coefficient R = 60 x this value in deg/h^2",
+         s952 + ", rate ramp R (deg/h^2)"}}},
       {E::kScaleFactorError, "scale_factor_error", "scale-factor error", "gyro scale factor error",
-       {{"scale_factor", "ppm", 1000.0, true, 1e6}}},
+       {{"scale_factor", "ppm", 1000.0, true, 1e6,
+         "scale-factor error (K - K0) / K0: the output is (1 + s) times the input rate, both signs, every gyro",
+         s528 + ", scale factor error"}}},
       {E::kScaleFactorAsymmetry, "scale_factor_asymmetry", "scale-factor asymmetry", "scale factor differs for positive / negative rate",
-       {{"asymmetry", "ppm", 1000.0, true, 1e6}}},
+       {{"asymmetry", "ppm", 2000.0, true, 2e6,
+         "scale-factor asymmetry (K+ - K-) / Kbar, Kbar = (K+ + K-) / 2: the scale factor is Kbar (1 + a/2) for "
+         "positive input rates and Kbar (1 - a/2) for negative ones",
+         s528 + ", scale factor asymmetry; " + s952, "asymmetry_k", 2.0}}},
       {E::kScaleFactorNonlinearity, "scale_factor_nonlinearity", "scale-factor nonlinearity", "cubic scale-factor nonlinearity (error at 100 deg/s)",
-       {{"nonlinearity", "ppm at 100 deg/s", 20000.0, true, 1e6}}},
+       {{"nonlinearity", "ppm of full scale over +-100 deg/s", 8000.0, true, 4e5,
+         "scale-factor nonlinearity over the input range +-100 deg/s: the largest deviation of the output from its "
+         "least-squares straight line over the range, as a fraction of the full-scale output (100 deg/s), for a "
+         "cubic deviation (odd in the rate: the output is w + 2.5 N w^3 / (100 deg/s)^2); over +-R it is "
+         "N (R / 100 deg/s)^2",
+         s528 + ", scale factor nonlinearity (least-squares line)", "nonlinearity_at_100", 0.4}}},
       {E::kMisalignment, "misalignment", "misalignment", "gyro triad misalignment / non-orthogonality (gyro i senses m_ij of axis j)",
-       {{"m_xy", "urad", 200.0, true, 1e5}, {"m_xz", "urad", 200.0, true, 1e5}, {"m_yx", "urad", 200.0, true, 1e5},
-        {"m_yz", "urad", 200.0, true, 1e5}, {"m_zx", "urad", 200.0, true, 1e5}, {"m_zy", "urad", 200.0, true, 1e5}}},
+       {{"m_xy", "urad", 200.0, true, 1e5, "input-axis misalignment of gyro x toward body axis y (small angle): gyro x senses +m_xy times the rate about y", s528 + ", input axis misalignment; " + s952},
+        {"m_xz", "urad", 200.0, true, 1e5, "input-axis misalignment of gyro x toward body axis z: gyro x senses +m_xz times the rate about z", s528 + ", input axis misalignment; " + s952},
+        {"m_yx", "urad", 200.0, true, 1e5, "input-axis misalignment of gyro y toward body axis x: gyro y senses +m_yx times the rate about x", s528 + ", input axis misalignment; " + s952},
+        {"m_yz", "urad", 200.0, true, 1e5, "input-axis misalignment of gyro y toward body axis z: gyro y senses +m_yz times the rate about z", s528 + ", input axis misalignment; " + s952},
+        {"m_zx", "urad", 200.0, true, 1e5, "input-axis misalignment of gyro z toward body axis x: gyro z senses +m_zx times the rate about x", s528 + ", input axis misalignment; " + s952},
+        {"m_zy", "urad", 200.0, true, 1e5, "input-axis misalignment of gyro z toward body axis y: gyro z senses +m_zy times the rate about y", s528 + ", input axis misalignment; " + s952}}},
       {E::kGSensitivity, "g_sensitivity", "g-sensitivity", "g-sensitive bias: each gyro's rate error k times the specific force along it",
-       {{"g_sensitivity", "deg/h/g", 50.0, true, 1e4}}},
+       {{"g_sensitivity", "deg/h/g", 50.0, true, 1e4,
+         "g-sensitive bias along the input axis: each gyro's rate error is k times the specific force along its own "
+         "input axis (the same k for the three gyros)",
+         s528 + ", g-sensitive drift (acceleration-sensitive drift coefficient along the input axis)"}}},
       {E::kFirstOrderLag, "first_order_lag", "first-order lag", "first-order low-pass of the gyro output",
-       {{"time_constant", "ms", 2.0, false, 1000.0}}, false},
+       {{"time_constant", "ms", 2.0, false, 1000.0,
+         "time constant tau of a first-order low-pass 1 / (1 + s tau) of the gyro output; its -3 dB bandwidth is "
+         "1 / (2 pi tau)",
+         s528 + ", bandwidth (= 1 / (2 pi tau) for a first-order response)"}}, false},
       {E::kTableHarmonicDistortion, "table_harmonic_distortion", "table harmonic distortion", "2nd/3rd harmonic in the table motion",
-       {{"h2_at_10deg", "ppm", 200.0, true, 1e6}, {"h3_at_10deg", "ppm", 400.0, true, 1e6}}},
+       {{"h2", "ppm", 100.0, true, 5e5,
+         "2nd-harmonic amplitude of the table's angle relative to its fundamental, for a swing of 10 deg amplitude "
+         "about zero, phase 0 at the fundamental's positive peak: 10 cos(chi) becomes 10 [cos(chi) + h2 cos(2 chi)] "
+         "(negative: phase 180 deg); a static distortion of the angle, so h2 (A / 10 deg) at amplitude A",
+         "amplitude ratio of the harmonic to the fundamental (harmonic distortion as IEEE Std 1057 states it); "
+         "phase convention this project's", "h2_at_10deg", 0.5},
+        {"h3", "ppm", 100.0, true, 2.5e5,
+         "3rd-harmonic amplitude of the table's angle relative to its fundamental, for a swing of 10 deg amplitude "
+         "about zero, phase 0 at the fundamental's positive peak: + 10 h3 cos(3 chi) (negative: phase 180 deg); "
+         "h3 (A / 10 deg)^2 at amplitude A",
+         "amplitude ratio of the harmonic to the fundamental (harmonic distortion as IEEE Std 1057 states it); "
+         "phase convention this project's", "h3_at_10deg", -0.25}}},
       {E::kEncoderCyclicError, "encoder_cyclic_error", "encoder cyclic error", "encoder error periodic in angle (10 deg period)",
-       {{"sin_amplitude", "arcsec", 1.0, true, 3600.0}, {"cos_amplitude", "arcsec", 1.0, true, 3600.0}}},
+       {{"sin_amplitude", "arcsec", 1.0, true, 3600.0,
+         "encoder reading error s sin(2 pi theta / 10 deg) + c cos(2 pi theta / 10 deg): s", "own"},
+        {"cos_amplitude", "arcsec", 1.0, true, 3600.0,
+         "encoder reading error s sin(2 pi theta / 10 deg) + c cos(2 pi theta / 10 deg): c", "own"}}},
       // Up to 10 ms rms: beyond, frames of a 2-ms stream swap order.
       {E::kTimestampJitter, "timestamp_jitter", "time-stamp jitter", "white jitter on the IMU frame stamps",
-       {{"jitter_variance", "us^2", 100.0, false, 1e8}}},
+       {{"jitter_variance", "us^2", 100.0, false, 1e8,
+         "variance of a white, Gaussian error added to every IMU frame's stamp", "own"}}},
       // The IMU board's own clock error is modelled up to 1000 ppm
       // (SimConfig::validate); at -1e6 ppm its stamps would run backwards.
       {E::kClockDrift, "clock_drift", "IMU clock drift", "IMU stamps drift against the table's time base",
-       {{"drift", "ppm", 1.0, true, 1000.0}}},
+       {{"drift", "ppm", 1.0, true, 1000.0,
+         "fractional frequency offset y of the IMU's time base against the table's: a stamp t reads t (1 + y)",
+         "fractional frequency deviation y (IEEE Std 1139-2008)"}}},
       {E::kDroppedFrames, "dropped_frames", "dropped frames", "IMU frames lost at random",
-       {{"loss_rate", "per mille", 5.0, false, 1000.0}}},
+       {{"loss_rate", "per mille", 5.0, false, 1000.0,
+         "probability that an IMU frame is lost, each frame independently (Bernoulli)", "own"}}},
       {E::kEarthRateProjection, "earth_rate_projection", "Earth-rate projection", "wrong latitude / heading for the Earth-rate projection",
-       {{"latitude_error", "deg", 5.0, true, 180.0}, {"heading_error", "deg", 5.0, true, 360.0}}, false, false},
+       {{"latitude_error", "deg", 5.0, true, 180.0, "true latitude minus the nominal one", "own"},
+        {"heading_error", "deg", 5.0, true, 360.0,
+         "true heading minus the nominal one, the table turned further about down", "own"}}, false, false},
   };
 }
 

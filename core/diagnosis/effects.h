@@ -55,6 +55,18 @@ struct EffectParameter {
   // and stamps its frames backwards). The diagnosis never replays such a
   // value (checkParameters()).
   double maxMagnitude = 0.0;
+  // What the number is, in the words of the standard that defines it
+  // (docs/diagnosis.md, "Parameters and their definitions"), and which
+  // standard that is ("" where no standard defines the quantity; then the
+  // definition is the project's own and says so).
+  std::string definition;
+  std::string standard;
+  // The parameter's name before issue 44 where its meaning changed, and the
+  // factor that turns a value in that old meaning into this one (new =
+  // legacyScale * old); "" where it did not change. readEffects() accepts
+  // `legacyName:value` for it, with a note.
+  std::string legacyName;
+  double legacyScale = 1.0;
 };
 
 struct EffectSpec {

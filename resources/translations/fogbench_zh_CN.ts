@@ -6532,6 +6532,16 @@ result analysed %2</source>
     </message>
     <message>
         <location line="+1"/>
+        <source>h2</source>
+        <translation>二次谐波</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>h3</source>
+        <translation>三次谐波</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>nonlinearity</source>
         <translation>非线性度</translation>
     </message>
@@ -6579,6 +6589,11 @@ result analysed %2</source>
         <location line="+1"/>
         <source>ppm at 100 deg/s</source>
         <translation>ppm（100 °/s 处）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>ppm of full scale over +-100 deg/s</source>
+        <translation>满量程 ppm（±100 °/s 范围）</translation>
     </message>
     <message>
         <location line="+1"/>

@@ -86,13 +86,16 @@ CASES = {
         axis="x", f=1.0, a=3.0, d=30.0, pos=[0, 0, 0], lat=40.0, heading=0.0,
         effect=("scale_factor_error=300", {"scale_factor_ppm": 300.0})),
     "scale_factor_asymmetry": dict(
-        what="scale-factor asymmetry 300 ppm of the rate's magnitude: X swing 1 Hz / 3 deg",
+        what="scale-factor asymmetry (K+ - K-) / Kbar = 600 ppm (IEEE Std 528): X swing 1 Hz / 3 deg",
         axis="x", f=1.0, a=3.0, d=30.0, pos=[0, 0, 0], lat=40.0, heading=0.0,
-        effect=("scale_factor_asymmetry=300", {"sf_asymmetry_ppm": 300.0})),
+        # refgen: K+ = Kbar (1 + a/2) on positive rates, K- = Kbar (1 - a/2) on negative ones
+        effect=("scale_factor_asymmetry=600", {"sf_asymmetry_ieee_ppm": 600.0})),
     "scale_factor_nonlinearity": dict(
-        what="cubic scale-factor nonlinearity 1000 ppm at 100 deg/s: X swing 2 Hz / 5 deg (63 deg/s)",
+        what="scale-factor nonlinearity 400 ppm of full scale over +-100 deg/s (IEEE Std 528, least-squares "
+             "line): X swing 2 Hz / 5 deg (63 deg/s)",
         axis="x", f=2.0, a=5.0, d=20.0, pos=[0, 0, 0], lat=40.0, heading=0.0,
-        effect=("scale_factor_nonlinearity=1000", {"sf_nonlinearity_ppm_at_100": 1000.0})),
+        # refgen: the least-squares line (1 + 1.5 N) w plus N 100 P3(w / 100)
+        effect=("scale_factor_nonlinearity=400", {"sf_nonlinearity_ieee_ppm": 400.0})),
     "bias_drift": dict(
         what="bias ramp 2 deg/h per min on every gyro: X swing 1 Hz / 3 deg",
         axis="x", f=1.0, a=3.0, d=30.0, pos=[0, 0, 0], lat=40.0, heading=0.0,
@@ -103,9 +106,11 @@ CASES = {
         # calibrates. The ramp itself is compared.
         skip=("trend_",)),
     "table_harmonic_distortion": dict(
-        what="table motion distorted by 50 / 30 ppm (2nd / 3rd, at 10 deg): X swing 0.2 Hz / 10 deg",
+        what="table motion's 2nd / 3rd harmonics 25 / -7.5 ppm of the fundamental at 10 deg (phase 0 at its "
+             "peak): X swing 0.2 Hz / 10 deg",
         axis="x", f=0.2, a=10.0, d=30.0, pos=[0, 0, 0], lat=40.0, heading=0.0,
-        effect=("table_harmonic_distortion=50,30", {"table_poly_ppm": [50.0, 30.0]})),
+        # refgen: the harmonics added to the commanded swing, amplitude ratio and phase
+        effect=("table_harmonic_distortion=25,-7.5", {"table_harmonics_ppm": [25.0, -7.5]})),
     "encoder_cyclic_error": dict(
         what="encoder cyclic error 0.5 sin + 0.3 cos arcsec (10 deg period): X swing 0.2 Hz / 8 deg",
         axis="x", f=0.2, a=8.0, d=30.0, pos=[0, 0, 0], lat=40.0, heading=0.0,

@@ -59,7 +59,7 @@ import time
 
 import numpy as np
 
-GENERATOR_VERSION = 1
+GENERATOR_VERSION = 2
 EARTH_RATE_DEG_H = 15.041067
 AXES = "xyz"
 ARCSEC = 1.0 / 3600.0  # degrees per arc second
@@ -136,22 +136,35 @@ def default_params():
         "misalignment_urad": [0.0] * 6,
         "g_sens_deg_h_g": 0.0,     # one k for every gyro, or three (x, y, z): each gyro its own
         "lag_tau_ms": 0.0,
-        # ... and a scale factor 1 + scale_factor_ppm, plus sf_asymmetry_ppm
-        # of |rate| and sf_nonlinearity_ppm_at_100 * rate * (rate / 100)^2
-        # (deg/s); a bias growing by bias_drift_deg_h_per_min from the first
+        # ... and a scale factor: Kbar = 1 + scale_factor_ppm, and the
+        # scale-factor asymmetry a = (K+ - K-) / Kbar of IEEE Std 528 as
+        # sf_asymmetry_ieee_ppm: the rate is multiplied by K+ = Kbar (1 + a/2)
+        # where it is positive and by K- = Kbar (1 - a/2) where it is
+        # negative; after the scale-factor nonlinearity N of IEEE Std 528 over
+        # +-100 deg/s (sf_nonlinearity_ieee_ppm: the largest deviation from
+        # the least-squares line over the range, fraction of full scale), the
+        # rate written as its least-squares line (1 + 1.5 N) w plus the
+        # deviation N 100 P3(w / 100), P3 the Legendre polynomial
+        # (5 x^3 - 3 x) / 2 (orthogonal to every line on [-1, 1], |P3| <= 1
+        # there, 1 at the ends); a bias growing by bias_drift_deg_h_per_min from the first
         # instant; IMU frames lost at random at drop_per_mille (the next row's
         # lost_before counts them).
         "scale_factor_ppm": 0.0,
-        "sf_asymmetry_ppm": 0.0,
-        "sf_nonlinearity_ppm_at_100": 0.0,
+        "sf_asymmetry_ieee_ppm": 0.0,
+        "sf_nonlinearity_ieee_ppm": 0.0,
         "bias_drift_deg_h_per_min": 0.0,
         "drop_per_mille": 0.0,
-        # Table errors: the motion distorted as a function of the angle of
-        # every axis, theta + 10 (c2 x^2 - c3 x^3) with x = theta / 10 deg
-        # (table_poly_ppm = [c2, c3]; seen by encoder and gyros alike), and
-        # an encoder reading error s sin(2 pi theta / 10 deg) + c cos(...)
+        # Table errors: harmonics added to every swing's commanded motion
+        # (seen by encoder and gyros alike), table_harmonics_ppm = [h2, h3]
+        # of the fundamental at 10 deg amplitude with phases
+        # table_harmonic_phases_deg = [p2, p3] from the fundamental's positive
+        # peak: a swing e cos(chi) (chi = 0 at its positive peak, e its
+        # envelope) gains h_n (e / 10 deg)^(n-1) e cos(n chi + p_n), the
+        # amplitude law of a static distortion of the angle; and an encoder
+        # reading error s sin(2 pi theta / 10 deg) + c cos(...)
         # (encoder_cyclic_arcsec = [s, c]).
-        "table_poly_ppm": [0.0, 0.0],
+        "table_harmonics_ppm": [0.0, 0.0],
+        "table_harmonic_phases_deg": [0.0, 0.0],
         "encoder_cyclic_arcsec": [0.0, 0.0],
         # ---- Effects in their own physical form (README "Outside effects");
         # every one is off by default and then leaves every output as before.
@@ -544,6 +557,8 @@ class Swing:
         self.drift = float(p["amp_drift_per_s"])
         self.h2 = float(p["h2"])
         self.h2_phase = math.radians(p["h2_phase_deg"])
+        self.dist = [(n, float(h) * 1e-6, math.radians(ph)) for n, h, ph in
+                     zip((2, 3), p["table_harmonics_ppm"], p["table_harmonic_phases_deg"]) if h]
         self.kick_period = float(p["rekick_period_s"])
         self.kick = float(p["rekick_duration_s"])
         if self.kick_period > 0:
@@ -627,6 +642,12 @@ class Swing:
             psi2 = 2 * psi + self.h2_phase
             ang = ang + self.h2 * e * np.sin(psi2)
             rate = rate + self.h2 * (de * np.sin(psi2) + e * 2 * w * np.cos(psi2))
+        for n, h, ph in self.dist:
+            # h (e / 10)^(n-1) e cos(n chi + ph), chi = psi - 90 deg
+            arg = n * (psi - 0.5 * math.pi) + ph
+            scale = h / 10.0 ** (n - 1)
+            ang = ang + scale * e ** n * np.cos(arg)
+            rate = rate + scale * (n * e ** (n - 1) * de * np.cos(arg) - e ** n * n * w * np.sin(arg))
         return ang, rate
 
 
@@ -679,11 +700,6 @@ def table_state(t, swings, p, fixture=False):
             delta, ddelta = d, dc * np.deg2rad(rate[:, SERVO_AXES])
         ang[:, SERVO_AXES] += delta
         rate[:, SERVO_AXES] += ddelta
-    c2, c3 = (v * 1e-6 for v in p["table_poly_ppm"])
-    if c2 or c3:
-        x = ang / 10.0
-        rate = rate * (1.0 + 2.0 * c2 * x - 3.0 * c3 * x * x)
-        ang = ang + 10.0 * (c2 * x * x - c3 * x ** 3)
     if fixture and p.get("compliance_fn_hz", 0.0) > 0:
         t0, h, v, dv = p["_compliance"]
         e, de = hermite(t, t0, h, v, dv)
@@ -736,9 +752,35 @@ def _vec3(v, name):
     return v
 
 
+# Version 1's parameters that copied the diagnosis library's form.
+LEGACY_KEYS = {
+    "sf_asymmetry_ppm": "give sf_asymmetry_ieee_ppm = (K+ - K-) / Kbar = 2 x its value",
+    "table_poly_ppm": "give table_harmonics_ppm [h2, h3] = [c2 / 2, -c3 / 4] (phases 0)",
+    "sf_nonlinearity_ppm_at_100": "give sf_nonlinearity_ieee_ppm = 0.4 x its value (IEEE Std 528 over +-100 deg/s)",
+}
+
+
+def scale_factor_transfer(w, p):
+    """The gyro's static rate transfer (deg/s in, deg/s out): the IEEE Std 528
+    nonlinearity N over +-100 deg/s as the least-squares line (1 + 1.5 N) w
+    plus the deviation N 100 P3(w / 100), then the scale factor K+ = Kbar
+    (1 + a/2) on positive and K- = Kbar (1 - a/2) on negative rates."""
+    n_sf = p["sf_nonlinearity_ieee_ppm"] * 1e-6
+    if n_sf:
+        x = w / 100.0
+        w = w * (1.0 + 1.5 * n_sf) + n_sf * 100.0 * 0.5 * (5.0 * x ** 3 - 3.0 * x)
+    k_bar = 1.0 + p["scale_factor_ppm"] * 1e-6
+    a = p["sf_asymmetry_ieee_ppm"] * 1e-6                   # (K+ - K-) / Kbar
+    return w * np.where(w >= 0.0, k_bar * (1.0 + 0.5 * a), k_bar * (1.0 - 0.5 * a))
+
+
 def resolve(params):
     """Fill the random and derived parameters; returns a new dict."""
     p = default_params()
+    for old, new in LEGACY_KEYS.items():
+        if old in params:
+            raise ValueError("%s is no longer a parameter (generator version 1, the library's own form): %s"
+                             % (old, new))
     p.update(copy.deepcopy(params))
     rng = np.random.default_rng([int(p["seed"]), 0x5EED])
     if p["timing"] not in ("commensurate", "incommensurate"):
@@ -1035,8 +1077,7 @@ def generate(params, chunk_frames=5000):
             if mount is not None:
                 f_b = f_b @ mount
             w = w + gsens / 3600.0 * f_b
-        w = (w * (1.0 + p["scale_factor_ppm"] * 1e-6) + p["sf_asymmetry_ppm"] * 1e-6 * np.abs(w)
-             + p["sf_nonlinearity_ppm_at_100"] * 1e-6 * w * (w / 100.0) ** 2)
+        w = scale_factor_transfer(w, p)
         if p["bias_drift_deg_h_per_min"] != 0.0:
             w = w + (p["bias_drift_deg_h_per_min"] / 3600.0 / 60.0 * (tf - t_first))[:, None]
         return w
@@ -1245,9 +1286,12 @@ def physical_effects(res):
         eps = math.radians(p["servo_unbalance_arcsec"] * ARCSEC)
         phi = math.radians(p["servo_unbalance_phase_deg"])
         ten = math.radians(10.0)
-        # eps sin(theta + phi) about 0: the library's 10 deg (c2 x^2 - c3 x^3) form (static servo)
-        out["servo_equivalent_table_poly_ppm"] = [-eps * math.sin(phi) * ten / 2.0 * 1e6,
-                                                  eps * math.cos(phi) * ten * ten / 6.0 * 1e6]
+        # eps sin(theta + phi) about 0 (static servo), theta = 10 deg cos(chi):
+        # -eps sin(phi) theta^2 / 2 gives the 2nd harmonic -eps sin(phi) (10 deg)^2 / 4 cos(2 chi),
+        # -eps cos(phi) theta^3 / 6 the 3rd -eps cos(phi) (10 deg)^3 / 24 cos(3 chi) (rad), each
+        # relative to the fundamental's 10 deg: the table's 2nd and 3rd harmonics (phase 0 at its peak)
+        out["servo_equivalent_table_harmonics_ppm"] = [-eps * math.sin(phi) * ten / 4.0 * 1e6,
+                                                       -eps * math.cos(phi) * ten * ten / 24.0 * 1e6]
     if any(p["mount_rpy_arcsec"]):
         r_, q_, y_ = (math.radians(v * ARCSEC) * 1e6 for v in p["mount_rpy_arcsec"])
         out["mount_equivalent_misalignment_urad"] = [y_, -q_, -y_, r_, q_, -r_]
@@ -1512,7 +1556,10 @@ def build_parser():
     g.add_argument("--servo-unbalance-phase-deg", type=float)
     g.add_argument("--servo-corner-hz", type=float, help="the loop's first-order disturbance response (0: static)")
     g.add_argument("--table-drop-per-mille", type=float, help="table rows lost at random")
-    g.add_argument("--table-poly-ppm", type=_floats, help="c2,c3: theta + 10 (c2 x^2 - c3 x^3), x = theta / 10 deg")
+    g.add_argument("--table-harmonics-ppm", type=_floats,
+                   help="h2,h3: 2nd and 3rd harmonics of the table's motion, ppm of the fundamental at 10 deg")
+    g.add_argument("--table-harmonic-phases-deg", type=_floats,
+                   help="p2,p3: their phases from the fundamental's positive peak (default 0,0)")
     g.add_argument("--encoder-cyclic-arcsec", type=_floats, help="s,c: s sin(2 pi theta / 10 deg) + c cos(..)")
     g = ap.add_argument_group("site")
     g.add_argument("--latitude-deg", type=float)
@@ -1540,8 +1587,9 @@ def build_parser():
     g.add_argument("--rate-lsb-deg-s", type=float)
     g.add_argument("--sample-hold-ms", type=float)
     g.add_argument("--scale-factor-ppm", type=float)
-    g.add_argument("--sf-asymmetry-ppm", type=float)
-    g.add_argument("--sf-nonlinearity-ppm-at-100", type=float)
+    g.add_argument("--sf-asymmetry-ieee-ppm", type=float, help="(K+ - K-) / Kbar, IEEE Std 528")
+    g.add_argument("--sf-nonlinearity-ieee-ppm", type=float,
+                   help="IEEE Std 528 nonlinearity over +-100 deg/s (least-squares line, fraction of full scale)")
     g.add_argument("--bias-drift-deg-h-per-min", type=float)
     g.add_argument("--drop-per-mille", type=float, help="IMU frames lost at random (lost_before column)")
     g.add_argument("--bias-instability-deg-h", type=float, help="Gauss-Markov bias, 1 sigma ...")

@@ -710,6 +710,75 @@ class PhysicalForms(unittest.TestCase):
         self.assertEqual(res["table_t"][0], base["table_t"][0])
 
 
+class StandardDefinitions(unittest.TestCase):
+    """The library's effects as the standards define them (docs/diagnosis.md,
+    "Parameters and their definitions"), each against a closed form that a
+    factor 2 or a sign in the definition fails."""
+
+    def test_asymmetry_is_ieee_528(self):
+        # (K+ - K-) / Kbar from the gyro's increments over the frames of
+        # positive and of negative rate (frames where the rate turns are left
+        # out); latitude 90: no Earth rate about the horizontal x axis.
+        a_ppm, s_ppm = 800.0, 300.0
+        p = quiet(sf_asymmetry_ieee_ppm=a_ppm, scale_factor_ppm=s_ppm, latitude_deg=90.0, pulse_arcsec=1e-7,
+                  segments=[{"axis": "x", "freq_hz": 1.0, "amp_deg": 3.0, "duration_s": 6.0}])
+        res = refgen.generate(p)
+        sw = res["swings"][0]
+        tt = res["frame_t_true"] - p["imu_delay_ms"] * 1e-3
+        true_ang, true_rate = sw.eval(tt)
+        d_true, d_gyro = np.diff(true_ang), np.diff(res["frame_theta"][:, 0])
+        same = np.sign(true_rate[1:]) == np.sign(true_rate[:-1])
+        pos, neg = same & (true_rate[1:] > 0), same & (true_rate[1:] < 0)
+        k_plus = d_gyro[pos].sum() / d_true[pos].sum()
+        k_minus = d_gyro[neg].sum() / d_true[neg].sum()
+        k_bar = 0.5 * (k_plus + k_minus)
+        self.assertAlmostEqual((k_plus - k_minus) / k_bar * 1e6, a_ppm, delta=0.5)
+        self.assertAlmostEqual((k_bar - 1.0) * 1e6, s_ppm, delta=0.5)
+
+    def test_table_harmonics_are_ratios_to_the_fundamental_with_phase_from_its_peak(self):
+        h2, h3 = 400.0, -250.0        # ppm of the fundamental at 10 deg
+        for amp, start, phases in ((10.0, 0.0, (0.0, 0.0)), (10.0, 37.0, (30.0, -60.0)), (3.0, 110.0, (0.0, 0.0))):
+            p = quiet(table_harmonics_ppm=[h2, h3], table_harmonic_phases_deg=list(phases), timing="commensurate",
+                      segments=[{"axis": "x", "freq_hz": 0.5, "amp_deg": amp, "duration_s": 8.0,
+                                 "start_phase_deg": start}])
+            res = refgen.generate(p)
+            a, b = res["windows"][0]
+            sel = (res["table_t"] >= a) & (res["table_t"] < a + 8.0)   # whole periods
+            y = res["table_true"][sel, 0]
+            spec = np.fft.rfft(y) / y.size * 2.0
+            k1 = int(round(0.5 * 8.0))                # bin of the fundamental
+            z1 = spec[k1]
+            peak = -np.angle(z1)                      # fundamental |z1| cos(w t - peak): chi = w t - peak
+            for n, h, ph in ((2, h2, phases[0]), (3, h3, phases[1])):
+                zn = spec[n * k1] * np.exp(1j * n * peak)   # referred to chi
+                want = h * 1e-6 * (amp / 10.0) ** (n - 1) * np.exp(1j * math.radians(ph))
+                self.assertAlmostEqual(abs(zn / abs(z1) - want) * 1e6, 0.0, delta=0.02, msg=(amp, start, n))
+            # the rate is the angle's derivative
+            t = np.linspace(a + 1.0, a + 1.01, 201)
+            ang, rate = refgen.table_state(t, res["swings"], res["params"])
+            np.testing.assert_allclose(np.gradient(ang[:, 0], t)[1:-1], rate[1:-1, 0], rtol=0, atol=1e-6)
+
+    def test_nonlinearity_is_ieee_528_over_100_deg_s(self):
+        # The generator's static rate transfer over +-100 deg/s: the largest
+        # deviation from its least-squares line, as a fraction of full scale.
+        n_ppm = 500.0
+        w = -100.0 + 200.0 * (np.arange(200000) + 0.5) / 200000      # midpoints: the continuous least squares
+        out = refgen.scale_factor_transfer(w, {"scale_factor_ppm": 0.0, "sf_asymmetry_ieee_ppm": 0.0,
+                                                "sf_nonlinearity_ieee_ppm": n_ppm})
+        slope, icpt = np.polyfit(w, out, 1)
+        dev = out - (slope * w + icpt)
+        self.assertAlmostEqual(np.max(np.abs(dev)) / 100.0 * 1e6, n_ppm, delta=0.02)
+        self.assertAlmostEqual((slope - 1.0) * 1e6, 1.5 * n_ppm, delta=0.01)
+        # the library's cubic form: w + 2.5 N w^3 / 100^2
+        np.testing.assert_allclose(out, w + 2.5 * n_ppm * 1e-6 * w ** 3 / 1e4, atol=1e-12)
+
+    def test_version_one_parameters_are_refused(self):
+        for key, v in (("sf_asymmetry_ppm", 100.0), ("table_poly_ppm", [1.0, 2.0]),
+                       ("sf_nonlinearity_ppm_at_100", 10.0)):
+            with self.assertRaises(ValueError):
+                refgen.resolve(quiet(**{key: v}))
+
+
 class Output(unittest.TestCase):
     def read_csv(self, path):
         with open(path) as fh:

@@ -96,20 +96,24 @@ TEST(EffectSignature, ScaleFactorErrorIsAGain) {
   EXPECT_NEAR(feature(f.with, "gain") - feature(f.clean, "gain"), 500.0, 2.0);
 }
 
-// Asymmetry k adds k * mean|rate| = k * (2/pi) * A * w to the trend:
-// 10000 ppm at 1 Hz / 3 deg -> 432 deg/h, within 2 %.
+// Asymmetry a = (K+ - K-) / Kbar (IEEE Std 528): the scale factor is
+// 1 + a/2 for positive rates and 1 - a/2 for negative ones, which adds
+// (a/2) * mean|rate| = (a/2) * (2/pi) * A * w to the trend: 20000 ppm at
+// 1 Hz / 3 deg -> 432 deg/h, within 2 % (a factor 2 in the definition fails).
 TEST(EffectSignature, ScaleFactorAsymmetryAddsATrendAndEvenHarmonics) {
-  const auto f = features(onePoint(Axis::kX, 1.0, 3.0, 20.0), EffectId::kScaleFactorAsymmetry, {10000.0});
+  const auto f = features(onePoint(Axis::kX, 1.0, 3.0, 20.0), EffectId::kScaleFactorAsymmetry, {20000.0});
   const double expected = 0.01 * (2.0 / kPi) * 3.0 * kTwoPi * kSecondsPerHour;
   EXPECT_NEAR(feature(f.with, "trend", 0) - feature(f.clean, "trend", 0), expected, 0.02 * expected);
   EXPECT_GT(std::abs(feature(f.with, "h2_in_phase", 0) - feature(f.clean, "h2_in_phase", 0)), 1000.0);
 }
 
-// Cubic term k (r/100)^2 r with r = R cos: gain + 3/4 k (R/100)^2 and, once
-// integrated to an angle, a 3rd harmonic k/12 (R/100)^2; k = 10 % at
-// R = 18.85 deg/s -> 2665 ppm gain (3 %) and 296 ppm at 3rd harmonic (5 %).
+// IEEE Std 528's nonlinearity N over +-100 deg/s (largest deviation from the
+// least-squares line, fraction of full scale) is a cubic term k (r/100)^2 r
+// with k = N / 0.4. With r = R cos: gain + 3/4 k (R/100)^2 and, once
+// integrated to an angle, a 3rd harmonic k/12 (R/100)^2; N = 4 % (k = 10 %)
+// at R = 18.85 deg/s -> 2665 ppm gain (3 %) and 296 ppm at 3rd harmonic (5 %).
 TEST(EffectSignature, ScaleFactorNonlinearityGivesAmplitudeDependentGainAndThirdHarmonic) {
-  const auto f = features(onePoint(Axis::kX, 1.0, 3.0, 20.0), EffectId::kScaleFactorNonlinearity, {1e5});
+  const auto f = features(onePoint(Axis::kX, 1.0, 3.0, 20.0), EffectId::kScaleFactorNonlinearity, {4e4});
   const double r = 3.0 * kTwoPi / 100.0;
   EXPECT_NEAR(feature(f.with, "gain") - feature(f.clean, "gain"), 0.75 * 1e5 * r * r, 0.03 * 0.75 * 1e5 * r * r);
   const double h3 = std::hypot(feature(f.with, "h3_in_phase", 0) - feature(f.clean, "h3_in_phase", 0),
@@ -171,12 +175,28 @@ TEST(EffectSignature, BiasDriftRampsTheTrendAcrossSegments) {
   EXPECT_NEAR(last - first, 6.0 * 40.0 / 60.0, 0.05);
 }
 
-// theta - c3 theta^3 / (10 deg)^2: at 10 deg the 3rd harmonic is +c3/4 in
-// phase, in table and gyro alike (gyro - table: nothing).
+// h3 is the 3rd harmonic relative to the fundamental at 10 deg, phase 0 at
+// the fundamental's positive peak: 10 cos(chi) + 10 h3 cos(3 chi). With the
+// fundamental as 10 sin(phi) (chi = phi - 90 deg) that is -10 h3 sin(3 phi):
+// h3 = -1000 ppm is +1000 ppm in phase, in table and gyro alike (gyro -
+// table: nothing).
 TEST(EffectSignature, TableDistortionShowsInBothChannels) {
-  const auto f = features(onePoint(Axis::kX, 0.1, 10.0, 40.0), EffectId::kTableHarmonicDistortion, {0.0, 4000.0});
+  const auto f = features(onePoint(Axis::kX, 0.1, 10.0, 40.0), EffectId::kTableHarmonicDistortion, {0.0, -1000.0});
   EXPECT_NEAR(feature(f.with, "h3_in_phase", -1) - feature(f.clean, "h3_in_phase", -1), 1000.0, 20.0);
   EXPECT_NEAR(feature(f.with, "h3_in_phase", 0) - feature(f.clean, "h3_in_phase", 0), 0.0, 5.0);
+}
+
+// h2 is the 2nd harmonic relative to the fundamental at 10 deg, phase 0 at
+// the fundamental's positive peak: 10 cos(chi) + 10 h2 cos(2 chi). With the
+// fundamental as 10 sin(phi), cos(2 chi) = -cos(2 phi): h2 = 1000 ppm is
+// -1000 ppm in quadrature and nothing in phase; at 3 deg it is h2 (3 / 10)
+// = 300 ppm (a static distortion of the angle).
+TEST(EffectSignature, TableDistortionH2IsTheHarmonicRatioAtTenDegrees) {
+  const auto f = features(onePoint(Axis::kX, 0.1, 10.0, 40.0), EffectId::kTableHarmonicDistortion, {1000.0, 0.0});
+  EXPECT_NEAR(feature(f.with, "h2_quadrature", -1) - feature(f.clean, "h2_quadrature", -1), -1000.0, 20.0);
+  EXPECT_NEAR(feature(f.with, "h2_in_phase", -1) - feature(f.clean, "h2_in_phase", -1), 0.0, 20.0);
+  const auto g = features(onePoint(Axis::kX, 0.1, 3.0, 40.0), EffectId::kTableHarmonicDistortion, {1000.0, 0.0});
+  EXPECT_NEAR(feature(g.with, "h2_quadrature", -1) - feature(g.clean, "h2_quadrature", -1), -300.0, 20.0);
 }
 
 // Encoder error es sin(2 pi theta / 10 deg) at 0.3 deg swing is nearly a
