@@ -6531,7 +6531,7 @@ result analysed %2</source>
         <translation>不对称度</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+12"/>
         <source>h2</source>
         <translation>二次谐波</translation>
     </message>
@@ -6541,7 +6541,7 @@ result analysed %2</source>
         <translation>三次谐波</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-12"/>
         <source>nonlinearity</source>
         <translation>非线性度</translation>
     </message>
@@ -6596,7 +6596,7 @@ result analysed %2</source>
         <translation>满量程 ppm（±100 °/s 范围）</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source>per mille</source>
         <translation>‰</translation>
     </message>
