@@ -226,6 +226,7 @@ PeriodicErrorCovariance periodicErrorCovariance(const std::vector<double>& t, co
   for (std::size_t i = 1; i + 1 < n; ++i) {
     const double d = r[i + 1] - 2.0 * r[i] + r[i - 1] - mean;
     const double x = (t[i] - t[0]) * cyclesPerS;
+    if (!std::isfinite(x)) continue;  // a stamp no bin holds (never cast to an index)
     auto j = static_cast<std::size_t>(std::floor((x - std::floor(x)) * static_cast<double>(bins) + 0.5));
     if (j >= bins) j -= bins;
     sum[j] += d;
