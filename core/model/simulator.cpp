@@ -36,15 +36,27 @@ struct GyroChannel {
   double noiseAngleDeg(double t, Random& rng) {
     const double dt = t - lastTimeS;
     if (dt > 0.0) {
-      arwAngleDeg += arwDegPerSqrtS * std::sqrt(dt) * rng.normal();
+      // The step's factors depend on dt alone, which repeats from frame to
+      // frame: kept from the last step when dt is the same (bit for bit the
+      // same values; an exp and two square roots per axis and sample were a
+      // tenth of a diagnosis' replays).
+      if (dt != stepS) {
+        stepS = dt;
+        arwStepDeg = arwDegPerSqrtS * std::sqrt(dt);
+        decay = std::exp(-dt / wanderCorrelationS);
+        wanderStepDegPerS = wanderSigmaDegPerS * std::sqrt(1.0 - decay * decay);
+      }
+      arwAngleDeg += arwStepDeg * rng.normal();
       wanderAngleDeg += wanderRateDegPerS * dt;
-      const double decay = std::exp(-dt / wanderCorrelationS);
-      wanderRateDegPerS = wanderRateDegPerS * decay +
-                          wanderSigmaDegPerS * std::sqrt(1.0 - decay * decay) * rng.normal();
+      wanderRateDegPerS = wanderRateDegPerS * decay + wanderStepDegPerS * rng.normal();
       lastTimeS = t;
     }
     return constantRateDegPerS * t + arwAngleDeg + wanderAngleDeg;
   }
+
+ private:
+  double stepS = NAN;  // the dt that arwStepDeg, decay and wanderStepDegPerS are for
+  double arwStepDeg = 0.0, decay = 1.0, wanderStepDegPerS = 0.0;
 };
 
 std::uint32_t toCounter(double stampS, const SamplingBoardParams& b) {
