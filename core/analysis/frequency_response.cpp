@@ -102,7 +102,22 @@ double bandwidthHz(ResponseModelKind kind, const Eigen::VectorXd& x) {
   return std::numeric_limits<double>::quiet_NaN();
 }
 
-// Whitened residuals (model - data) of every point: 2 per point.
+// The second order as it is fitted: H = K e^(-s tau) / (1 + b s + a s^2),
+// x = (K, tau_ms, b_ms, a_ms2) with b = 2 zeta / wn and a = 1 / wn^2. The
+// pure delay (a = b = 0) and the first-order lag (a = 0, b = T) are inner
+// points of this form; in (f_n, zeta) they lie at f_n -> infinity, where a
+// fit of their data ran off from every start and never converged.
+double polynomialMagnitude(const Eigen::VectorXd& x, double f) {
+  const double w = kTwoPi * f * 1e-3;  // rad per ms
+  return x[0] / std::hypot(1.0 - x[3] * w * w, x[2] * w);
+}
+double polynomialPhase(const Eigen::VectorXd& x, double f) {
+  const double w = kTwoPi * f * 1e-3;
+  return -w * x[1] - std::atan2(x[2] * w, 1.0 - x[3] * w * w);
+}
+
+// Whitened residuals (model - data) of every point: 2 per point. The second
+// order in its polynomial form (above).
 class ResponseProblem : public LeastSquaresProblem {
  public:
   ResponseProblem(ResponseModelKind kind, const std::vector<ResponsePoint>& points) : kind_(kind), points_(points) {
@@ -122,8 +137,11 @@ class ResponseProblem : public LeastSquaresProblem {
     Eigen::VectorXd r(numResiduals());
     for (std::size_t i = 0; i < points_.size(); ++i) {
       const auto& p = points_[i];
-      const Eigen::Vector2d d(modelMagnitude(kind_, x, p.frequencyHz) - p.magnitude,
-                              wrapPi(modelPhase(kind_, x, p.frequencyHz) - p.phaseDeg * kRadPerDeg));
+      const bool polynomial = kind_ == ResponseModelKind::kSecondOrder;
+      const double magnitude = polynomial ? polynomialMagnitude(x, p.frequencyHz)
+                                          : modelMagnitude(kind_, x, p.frequencyHz);
+      const double phase = polynomial ? polynomialPhase(x, p.frequencyHz) : modelPhase(kind_, x, p.frequencyHz);
+      const Eigen::Vector2d d(magnitude - p.magnitude, wrapPi(phase - p.phaseDeg * kRadPerDeg));
       r.segment<2>(2 * i) = whiten_[i] * d;
     }
     return r;
@@ -188,10 +206,14 @@ std::vector<Eigen::VectorXd> startingPoints(ResponseModelKind kind, const std::v
       for (double share : {0.05, 0.5, 0.95}) starts.push_back(Eigen::Vector3d(k, tau * (1.0 - share), tau * share));
       break;
     case ResponseModelKind::kSecondOrder:
+      // (K, tau, b, a): the nested models first, then resonances above the points.
+      starts.push_back(Eigen::Vector4d(k, tau, 0.0, 0.0));
+      starts.push_back(Eigen::Vector4d(k, 0.5 * tau, 0.5 * tau, 0.0));
       for (double fn : {2.0 * fMax, 5.0 * fMax, 20.0 * fMax})
         for (double zeta : {0.15, 0.7, 1.5}) {
-          const double filter = 2.0 * zeta / (kTwoPi * fn) * 1e3;
-          starts.push_back(Eigen::Vector4d(k, tau - filter, fn, zeta));
+          const double wn = kTwoPi * fn * 1e-3;  // rad per ms
+          const double b = 2.0 * zeta / wn;
+          starts.push_back(Eigen::Vector4d(k, tau - b, b, 1.0 / (wn * wn)));
         }
       break;
   }
@@ -252,10 +274,27 @@ Result<ResponseModelFit> fitModel(ResponseModelKind kind, const std::vector<Resp
   ResponseModelFit fit;
   fit.kind = kind;
   Eigen::VectorXd x = best->x;
-  // The second order depends on zeta / f_n only through zeta * f / f_n: both
-  // negative is the stable model, one negative an unstable one (judged below).
-  const bool unstable = kind == ResponseModelKind::kSecondOrder && x[2] * x[3] < 0.0;
-  if (kind == ResponseModelKind::kSecondOrder) x[2] = std::abs(x[2]), x[3] = std::abs(x[3]);
+  Eigen::MatrixXd cov = best->covariance;
+  bool unstable = false;
+  if (kind == ResponseModelKind::kSecondOrder) {
+    // From (b, a) to f_n = 1 / (2 pi sqrt(a)) and zeta = b / (2 sqrt(a)),
+    // the covariance through the map's Jacobian. a <= 0 has no natural
+    // frequency: the points are the nested models' (a -> 0) or beyond them.
+    const double b = x[2], a = x[3];
+    if (!(a > 0.0) || !std::isfinite(a))
+      return Status(StatusCode::kNotConverged,
+                    std::string(responseModelName(kind)) + ": its best fit has 1/wn^2 = " + fmt(a, 3) +
+                        " ms^2, not above 0: the points hold no resonance (the first-order lag, T = " + fmt(b, 4) +
+                        " ms, is its limit)");
+    const double root = std::sqrt(a);
+    const double fn = 1e3 / (kTwoPi * root), zeta = std::abs(b) / (2.0 * root);
+    unstable = b < 0.0;  // a negative damping: poles in the right half-plane (judged below)
+    Eigen::Matrix4d j = Eigen::Matrix4d::Identity();
+    j(2, 2) = 0.0, j(2, 3) = -fn / (2.0 * a);
+    j(3, 2) = (b < 0.0 ? -1.0 : 1.0) / (2.0 * root), j(3, 3) = -zeta / (2.0 * a);
+    cov = j * cov * j.transpose();
+    x[2] = fn, x[3] = zeta;
+  }
   fit.values = x;
   const int k = parameterCount(kind);
   const int n = static_cast<int>(problem.numResiduals());
@@ -266,7 +305,6 @@ Result<ResponseModelFit> fitModel(ResponseModelKind kind, const std::vector<Resp
   // The solver scales its covariance by chi^2/dof; undo that, then raise it
   // only when the points scatter more than their stated uncertainties.
   const double birge = fit.chiSquare / fit.dof;
-  Eigen::MatrixXd cov = best->covariance;
   if (birge > 0.0) cov /= birge;
   if (birge > 1.0) cov *= birge;
   const auto names = parameterNames(kind);
@@ -344,23 +382,42 @@ void chooseModel(ResponseAnalysis& out) {
   // degrees of freedom (9.0 for one, 11.8 for two); otherwise the simplest
   // model it does not beat is chosen, and a note on it says why.
   auto claimAt = [](int extra) { return extra == 1 ? kFilterClaimChiSquareDrop : kTwoParameterClaimChiSquareDrop; };
+  auto extraOver = [&out](std::size_t larger, std::size_t smaller) {
+    return parameterCount(out.models[larger].kind) - parameterCount(out.models[smaller].kind);
+  };
+  auto note = [&](std::size_t larger, std::size_t smaller) {
+    const int extra = extraOver(larger, smaller);
+    out.models[larger].notes.push_back(
+        "AIC prefers it to " + std::string(modelTitle(out.models[smaller].kind)) + " by " +
+        fmt(out.models[smaller].aic - out.models[larger].aic, 3) + ", but it lowers chi^2 by " +
+        fmt(out.models[smaller].chiSquare - out.models[larger].chiSquare, 3) + " only (" + std::to_string(extra) +
+        " more parameter" + (extra > 1 ? "s" : "") + " claimed at " + fmt(claimAt(extra), 3) +
+        ", 3 sigma): " + modelTitle(out.models[smaller].kind) + " is chosen");
+  };
   for (bool moved = true; moved && out.chosen >= 0;) {
     moved = false;
     const auto c = static_cast<std::size_t>(out.chosen);
     for (std::size_t i = 0; i < out.models.size(); ++i) {
-      const int extra = parameterCount(out.models[c].kind) - parameterCount(out.models[i].kind);
+      const int extra = extraOver(c, i);
       if (extra <= 0 || !out.models[i].eligible()) continue;
       const double drop = out.models[i].chiSquare - out.models[c].chiSquare;
       if (drop >= claimAt(extra)) continue;
-      out.models[c].notes.push_back("AIC prefers it to " + std::string(modelTitle(out.models[i].kind)) + " by " +
-                                    fmt(out.models[i].aic - out.models[c].aic, 3) + ", but it lowers chi^2 by " +
-                                    fmt(drop, 3) + " only (" + std::to_string(extra) + " more parameter" +
-                                    (extra > 1 ? "s" : "") + " claimed at " + fmt(claimAt(extra), 3) +
-                                    ", 3 sigma): " + modelTitle(out.models[i].kind) + " is chosen");
+      note(c, i);
       out.chosen = static_cast<int>(i);  // the models are in order of size: the simplest first
       moved = true;
       break;
     }
+  }
+  // Every other larger model AIC prefers to the one chosen says why it is
+  // not the answer (the walk above may pass it by: from the second order
+  // straight to the delay).
+  const auto chosen = static_cast<std::size_t>(out.chosen);
+  const std::string prefix = "AIC prefers it to " + std::string(modelTitle(out.models[chosen].kind)) + " by";
+  for (std::size_t i = 0; i < out.models.size(); ++i) {
+    const auto& m = out.models[i];
+    if (extraOver(i, chosen) <= 0 || !m.eligible() || !(m.aic < out.models[chosen].aic)) continue;
+    if (std::none_of(m.notes.begin(), m.notes.end(), [&](const std::string& n) { return n.rfind(prefix, 0) == 0; }))
+      note(i, chosen);
   }
 }
 

@@ -423,6 +423,8 @@ class CoreTextTest : public QObject {
                             "the fit's parameters are not determined by the data", "the fit's covariance is not positive"})
       expectChinese(std::string("second_order: no fit from any of its 9 starting points (") + why +
                     "); the points may not hold such a filter");
+    expectChinese("second_order: its best fit has 1/wn^2 = -0.00412 ms^2, not above 0: the points hold no "
+                  "resonance (the first-order lag, T = 1.998 ms, is its limit)");
   }
 
   void noiseTermNames() {

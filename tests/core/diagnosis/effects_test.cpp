@@ -6,8 +6,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "core/analysis/delay_analysis.h"
+#include "core/analysis/frequency_response.h"
 #include "core/common/units.h"
 #include "core/diagnosis/effects.h"
 #include "core/diagnosis/features.h"
@@ -155,6 +157,49 @@ TEST(EffectSignature, GSensitivityActsAlongEachGyrosOwnSpecificForce) {
 // angular frequency w by atan(w tau) / w and scales it by 1 / sqrt(1 + (w tau)^2),
 // however tau compares with the 2 ms frames: 0.3 ms -> 300.0 us (within
 // 3 us) and 20 ms -> 19896 us (within 20 us), gain -7810 ppm.
+// Issue 40: the library's 2-ms lag at the bench's own 2-ms gyro frames is a
+// delay plus a first-order lag at the points' noise level, as generated. A
+// quadratic between frames (the effect's first form) left 1.7e-4 of the
+// swing at 11 Hz: chi^2 6 300 on 37 dof on the response preset, the first
+// order refused, a negative delay "chosen". On a 10-frequency response plan
+// (0.5 Hz .. the table's limit), seeds 1..20: the first order chosen with
+// T within 3 sigma in at least 19, and never a rejected or unphysical model.
+TEST(EffectSignature, TheLibrarysTwoMillisecondLagIsAFirstOrderResponse) {
+  ResponsePlanOptions o;
+  o.lowestHz = 0.5;
+  o.frequencies = 10;
+  o.minDurationS = 4.0;
+  const TestPlan plan = *responsePlan(TurntableLimits{}, o);
+  int right = 0;
+  for (int seed = 1; seed <= 20; ++seed) {
+    model::SimConfig c;
+    c.seed = static_cast<std::uint64_t>(seed);
+    std::vector<std::unique_ptr<model::Effect>> e;
+    e.push_back(makeEffect(EffectId::kFirstOrderLag, {2.0}));
+    auto run = model::simulate(c, plan, std::move(e));
+    ASSERT_TRUE(run.isOk()) << run.status().message();
+    auto rec = protocol::decodeRecording(run->bytes);
+    ASSERT_TRUE(rec.isOk());
+    auto report = analysis::analyzeRecording(*rec, BenchConstants{});
+    ASSERT_TRUE(report.isOk()) << report.status().message();
+    auto r = analysis::analyzeResponse(analysis::responsePoints(*report, Axis::kX), Axis::kX, 5.0);
+    ASSERT_TRUE(r.isOk()) << r.status().message();
+    if (r->chosen < 0) {
+      std::printf("  seed %d: %s\n", seed, r->noModelReason.c_str());
+      continue;
+    }
+    const auto& chosen = r->models[static_cast<std::size_t>(r->chosen)];
+    EXPECT_TRUE(chosen.eligible()) << "seed " << seed;
+    double t = NAN, sigma = NAN;
+    for (const auto& p : chosen.parameters)
+      if (p.name == "T_ms") t = p.value, sigma = p.stdDev;
+    std::printf("  seed %2d: %s, p %.3f, T %.6f ± %.2g ms (%+.2f σ)\n", seed,
+                analysis::responseModelName(chosen.kind), chosen.pValue, t, sigma, (t - 2.0) / sigma);
+    if (chosen.kind == analysis::ResponseModelKind::kFirstOrder && std::abs(t - 2.0) <= 3.0 * sigma) ++right;
+  }
+  EXPECT_GE(right, 19);
+}
+
 TEST(EffectSignature, FirstOrderLagIsTheContinuousFilter) {
   const double w = kTwoPi * 1.0;
   for (double tau : {0.3e-3, 20e-3}) {
