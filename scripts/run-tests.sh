@@ -9,8 +9,10 @@
 #   headless  core and the CLI built without Qt, and the CLI's tests on that
 #             build (core's own suites test the same code and ran in release);
 #   asan      AddressSanitizer + UndefinedBehaviorSanitizer (-O1 -g1): every
-#             test but the labels independent, memory_budget, desk and python, and
-#             any sanitizer report fails the run;
+#             test but the labels independent, memory_budget, desk, python,
+#             package, statistics and scenario (Monte Carlo trials and the
+#             diagnosis' named-effect cases: the same code paths as the cases
+#             kept, at 5 times the cost), and any sanitizer report fails the run;
 #   fuzz      the libFuzzer targets for a bounded time each (FUZZ_SECONDS,
 #             default 60), two at a time on the two cores.
 # ccache, when installed, is the compiler launcher, so later legs reuse the
@@ -88,7 +90,7 @@ cmake --preset headless "${launcher[@]}"
 cmake --build --preset headless
 ctest --preset headless --output-on-failure -j2
 
-stage 10 "asan: every test but the labels independent, memory_budget, desk and python under ASan + UBSan"
+stage 9 "asan: every test but the labels independent, memory_budget, desk, python, package, statistics and scenario under ASan + UBSan"
 # The preset's environment sets the sanitizer options and tests/lsan.supp
 # (Qt 5's offscreen leaks; nothing is suppressed on Qt 6). A report must fail
 # the run even from a process whose failure a test expects (a CLI error path
