@@ -449,6 +449,7 @@ const char* const kTemplates[] = {
     QT_TRANSLATE_NOOP("core_text", "%1: no fit from any of its %2 starting points (%3); the points may not hold such a filter"),
     QT_TRANSLATE_NOOP("core_text", "the fit did not converge in %1 iterations"),
     QT_TRANSLATE_NOOP("core_text", "%1: its best fit has 1/wn^2 = %2 ms^2, not above 0: the points hold no resonance (the first-order lag, T = %3 ms, is its limit)"),
+    QT_TRANSLATE_NOOP("core_text", "%1: its best fit has 1/wn^2 = %2 ms^2, not above 0: the points hold no resonance (a magnitude droop without a filter's phase, as an average over about %3 ms would give)"),
     QT_TRANSLATE_NOOP("core_text", "AIC prefers it to %1 by %2, but it lowers chi^2 by %3 only (1 more parameter claimed at %4, 3 sigma): %5 is chosen"),
     QT_TRANSLATE_NOOP("core_text", "AIC prefers it to %1 by %2, but it lowers chi^2 by %3 only (%4 more parameters claimed at %5, 3 sigma): %6 is chosen"),
     // Each model judged before one is chosen (issue 40).

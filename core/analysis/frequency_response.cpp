@@ -117,10 +117,11 @@ double polynomialPhase(const Eigen::VectorXd& x, double f) {
 }
 
 // Whitened residuals (model - data) of every point: 2 per point. The second
-// order in its polynomial form (above).
+// order in (f_n, zeta) or, `polynomial`, in (b, a) (above).
 class ResponseProblem : public LeastSquaresProblem {
  public:
-  ResponseProblem(ResponseModelKind kind, const std::vector<ResponsePoint>& points) : kind_(kind), points_(points) {
+  ResponseProblem(ResponseModelKind kind, const std::vector<ResponsePoint>& points, bool polynomial = false)
+      : kind_(kind), polynomial_(polynomial && kind == ResponseModelKind::kSecondOrder), points_(points) {
     for (const auto& p : points) {
       const double sm = p.magnitudeStd, sp = p.phaseStdDeg * kRadPerDeg;
       const double c = p.magnitudePhaseCovDeg * kRadPerDeg;
@@ -137,10 +138,9 @@ class ResponseProblem : public LeastSquaresProblem {
     Eigen::VectorXd r(numResiduals());
     for (std::size_t i = 0; i < points_.size(); ++i) {
       const auto& p = points_[i];
-      const bool polynomial = kind_ == ResponseModelKind::kSecondOrder;
-      const double magnitude = polynomial ? polynomialMagnitude(x, p.frequencyHz)
-                                          : modelMagnitude(kind_, x, p.frequencyHz);
-      const double phase = polynomial ? polynomialPhase(x, p.frequencyHz) : modelPhase(kind_, x, p.frequencyHz);
+      const double magnitude = polynomial_ ? polynomialMagnitude(x, p.frequencyHz)
+                                           : modelMagnitude(kind_, x, p.frequencyHz);
+      const double phase = polynomial_ ? polynomialPhase(x, p.frequencyHz) : modelPhase(kind_, x, p.frequencyHz);
       const Eigen::Vector2d d(magnitude - p.magnitude, wrapPi(phase - p.phaseDeg * kRadPerDeg));
       r.segment<2>(2 * i) = whiten_[i] * d;
     }
@@ -167,6 +167,7 @@ class ResponseProblem : public LeastSquaresProblem {
 
  private:
   ResponseModelKind kind_;
+  bool polynomial_;
   const std::vector<ResponsePoint>& points_;
   std::vector<Eigen::Matrix2d> whiten_;
 };
@@ -206,14 +207,11 @@ std::vector<Eigen::VectorXd> startingPoints(ResponseModelKind kind, const std::v
       for (double share : {0.05, 0.5, 0.95}) starts.push_back(Eigen::Vector3d(k, tau * (1.0 - share), tau * share));
       break;
     case ResponseModelKind::kSecondOrder:
-      // (K, tau, b, a): the nested models first, then resonances above the points.
-      starts.push_back(Eigen::Vector4d(k, tau, 0.0, 0.0));
-      starts.push_back(Eigen::Vector4d(k, 0.5 * tau, 0.5 * tau, 0.0));
+      // In (f_n, zeta): resonances above the points (secondOrderStartsNearTheNested: the others).
       for (double fn : {2.0 * fMax, 5.0 * fMax, 20.0 * fMax})
         for (double zeta : {0.15, 0.7, 1.5}) {
-          const double wn = kTwoPi * fn * 1e-3;  // rad per ms
-          const double b = 2.0 * zeta / wn;
-          starts.push_back(Eigen::Vector4d(k, tau - b, b, 1.0 / (wn * wn)));
+          const double filter = 2.0 * zeta / (kTwoPi * fn) * 1e3;
+          starts.push_back(Eigen::Vector4d(k, tau - filter, fn, zeta));
         }
       break;
   }
@@ -252,49 +250,89 @@ void judgeModel(ResponseModelFit& fit, bool unstable) {
     fit.inadmissible.push_back("the fit ran past zeta = 0: its poles are unstable (a lead that grows to the resonance)");
 }
 
+// A second-order solution in (f_n, zeta), from one in (b, a) with a > 0:
+// f_n = 1 / (2 pi sqrt(a)), zeta = b / (2 sqrt(a)), the covariance through
+// the map's Jacobian.
+LeastSquaresSolution toNatural(LeastSquaresSolution s) {
+  const double b = s.x[2], a = s.x[3], root = std::sqrt(a);
+  const double fn = 1e3 / (kTwoPi * root), zeta = b / (2.0 * root);
+  Eigen::Matrix4d j = Eigen::Matrix4d::Identity();
+  j(2, 2) = 0.0, j(2, 3) = -fn / (2.0 * a);
+  j(3, 2) = 1.0 / (2.0 * root), j(3, 3) = -zeta / (2.0 * a);
+  s.covariance = j * s.covariance * j.transpose();
+  s.x[2] = fn, s.x[3] = zeta;
+  return s;
+}
+
 Result<ResponseModelFit> fitModel(ResponseModelKind kind, const std::vector<ResponsePoint>& points,
                                   double groupDelayAtHz) {
   const ResponseProblem problem(kind, points);
   std::optional<LeastSquaresSolution> best;
   Status lastError = Status::ok();
+  auto keep = [&best](LeastSquaresSolution s) {
+    if (!best || s.chiSquare < best->chiSquare) best = std::move(s);
+  };
+  std::size_t starts = 0;
   for (const auto& x0 : startingPoints(kind, points)) {
+    ++starts;
     auto sol = solveLeastSquares(problem, x0);
     if (!sol) {
       lastError = sol.status();
       continue;
     }
-    if (!best || sol->chiSquare < best->chiSquare) best = std::move(*sol);
+    keep(std::move(*sol));
+  }
+  // The second order also from the nested models, in its polynomial form
+  // K e^(-s tau) / (1 + b s + a s^2), b = 2 zeta / wn, a = 1 / wn^2, where
+  // the delay (a = b = 0) and the first-order lag (a = 0, b = T) are inner
+  // points: in (f_n, zeta) they lie at f_n -> infinity, and on their data
+  // every resonant start ran off and never converged. A solution there with
+  // a <= 0 has no natural frequency and is not kept (a -> 0 is the nested
+  // models; a < 0 beyond its sigma a magnitude droop without a filter's
+  // phase: an average, e.g. a boxcar of about sqrt(24 |a|)).
+  std::optional<LeastSquaresSolution> noResonance;
+  if (kind == ResponseModelKind::kSecondOrder) {
+    const ResponseProblem polynomial(kind, points, true);
+    const Eigen::VectorXd half = startingPoints(ResponseModelKind::kFirstOrder, points)[1];  // (K, tau/2, tau/2)
+    for (const Eigen::Vector4d x0 : {Eigen::Vector4d(half[0], half[1] + half[2], 0.0, 0.0),
+                                     Eigen::Vector4d(half[0], half[1], half[2], 0.0)}) {
+      ++starts;
+      auto sol = solveLeastSquares(polynomial, x0);
+      if (!sol) {
+        lastError = sol.status();
+        continue;
+      }
+      if (sol->x[3] > 0.0 && std::isfinite(sol->x[3]))
+        keep(toNatural(std::move(*sol)));
+      else if (!noResonance || sol->chiSquare < noResonance->chiSquare)
+        noResonance = std::move(*sol);
+    }
+  }
+  if (!best && noResonance) {
+    const double a = noResonance->x[3], b = noResonance->x[2];
+    std::string why = std::string(responseModelName(kind)) + ": its best fit has 1/wn^2 = " + fmt(a, 3) +
+                      " ms^2, not above 0: the points hold no resonance";
+    const double aStd = std::sqrt(std::max(0.0, noResonance->covariance(3, 3)));
+    if (a + 3.0 * aStd < 0.0)  // below 0 beyond 3 sigma: what the points show instead
+      why += " (a magnitude droop without a filter's phase, as an average over about " +
+             fmt(std::sqrt(24.0 * -a), 3) + " ms would give)";
+    else
+      why += " (the first-order lag, T = " + fmt(b, 4) + " ms, is its limit)";
+    return Status(StatusCode::kNotConverged, why);
   }
   if (!best)
     return Status(lastError.code(), std::string(responseModelName(kind)) + ": no fit from any of its " +
-                                        std::to_string(startingPoints(kind, points).size()) +
-                                        " starting points (" + lastError.message() +
+                                        std::to_string(starts) + " starting points (" + lastError.message() +
                                         "); the points may not hold such a filter");
 
   ResponseModelFit fit;
   fit.kind = kind;
   Eigen::VectorXd x = best->x;
   Eigen::MatrixXd cov = best->covariance;
-  bool unstable = false;
-  if (kind == ResponseModelKind::kSecondOrder) {
-    // From (b, a) to f_n = 1 / (2 pi sqrt(a)) and zeta = b / (2 sqrt(a)),
-    // the covariance through the map's Jacobian. a <= 0 has no natural
-    // frequency: the points are the nested models' (a -> 0) or beyond them.
-    const double b = x[2], a = x[3];
-    if (!(a > 0.0) || !std::isfinite(a))
-      return Status(StatusCode::kNotConverged,
-                    std::string(responseModelName(kind)) + ": its best fit has 1/wn^2 = " + fmt(a, 3) +
-                        " ms^2, not above 0: the points hold no resonance (the first-order lag, T = " + fmt(b, 4) +
-                        " ms, is its limit)");
-    const double root = std::sqrt(a);
-    const double fn = 1e3 / (kTwoPi * root), zeta = std::abs(b) / (2.0 * root);
-    unstable = b < 0.0;  // a negative damping: poles in the right half-plane (judged below)
-    Eigen::Matrix4d j = Eigen::Matrix4d::Identity();
-    j(2, 2) = 0.0, j(2, 3) = -fn / (2.0 * a);
-    j(3, 2) = (b < 0.0 ? -1.0 : 1.0) / (2.0 * root), j(3, 3) = -zeta / (2.0 * a);
-    cov = j * cov * j.transpose();
-    x[2] = fn, x[3] = zeta;
-  }
+  // The second order depends on zeta / f_n only through zeta * f / f_n: both
+  // negative is the stable model, one negative an unstable one (judged below).
+  const bool unstable = kind == ResponseModelKind::kSecondOrder && x[2] * x[3] < 0.0;
+  if (kind == ResponseModelKind::kSecondOrder) x[2] = std::abs(x[2]), x[3] = std::abs(x[3]);
   fit.values = x;
   const int k = parameterCount(kind);
   const int n = static_cast<int>(problem.numResiduals());

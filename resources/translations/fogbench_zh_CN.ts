@@ -8297,6 +8297,11 @@ result analysed %2</source>
     </message>
     <message>
         <location line="+1"/>
+        <source>%1: its best fit has 1/wn^2 = %2 ms^2, not above 0: the points hold no resonance (a magnitude droop without a filter&apos;s phase, as an average over about %3 ms would give)</source>
+        <translation>%1：最佳拟合的 1/ωn² = %2 ms²，不大于 0：这些点不含谐振（幅值下降而无滤波器的相位，如同约 %3 ms 的平均所致）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>AIC prefers it to %1 by %2, but it lowers chi^2 by %3 only (1 more parameter claimed at %4, 3 sigma): %5 is chosen</source>
         <translation>AIC 比%1更倾向于它（差 %2），但它只使 χ² 降低 %3（多 1 个参数须降低 %4，即 3σ）：选择%5</translation>
     </message>

@@ -425,6 +425,8 @@ class CoreTextTest : public QObject {
                     "); the points may not hold such a filter");
     expectChinese("second_order: its best fit has 1/wn^2 = -0.00412 ms^2, not above 0: the points hold no "
                   "resonance (the first-order lag, T = 1.998 ms, is its limit)");
+    expectChinese("second_order: its best fit has 1/wn^2 = -0.182 ms^2, not above 0: the points hold no resonance (a "
+                  "magnitude droop without a filter's phase, as an average over about 2.09 ms would give)");
   }
 
   void noiseTermNames() {
