@@ -49,7 +49,7 @@ summary() {
 }
 trap summary EXIT
 
-stage 2 "setup: Debian packages and Qwt for Qt 6 (scripts/setup.sh)"
+stage 1 "setup: Debian packages and Qwt for Qt 6 (scripts/setup.sh)"
 ./scripts/setup.sh
 
 launcher=()
@@ -66,7 +66,7 @@ fi
 qt_of() { sed -n 's/^-- fogbench: GUI uses //p' "$1"; }
 mkdir -p build
 
-stage 11 "release: the full build, Qt 6 + Qwt >= 6.2 by default, every test"
+stage 14 "release: the full build, Qt 6 + Qwt >= 6.2 by default, every test"
 cmake --preset release "${launcher[@]}" | tee build/.configure-release.log
 echo "== release build's GUI: $(qt_of build/.configure-release.log) =="
 if ! qt_of build/.configure-release.log | grep -q '^Qt 6'; then
@@ -75,13 +75,13 @@ fi
 cmake --build --preset release
 ctest --preset release --output-on-failure -j2
 
-stage 3 "qt5: the GUI and its UI tests on Qt 5.15 + Qwt 6.1"
+stage 2 "qt5: the GUI and its UI tests on Qt 5.15 + Qwt 6.1"
 cmake --preset qt5 "${launcher[@]}" | tee build/.configure-qt5.log
 echo "== Qt 5 build's GUI: $(qt_of build/.configure-qt5.log) =="
 cmake --build --preset qt5
 ctest --preset qt5 --output-on-failure -j2
 
-stage 2 "headless: core and the CLI without Qt, the CLI's tests"
+stage 1 "headless: core and the CLI without Qt, the CLI's tests"
 # What only this leg shows: core and the command line build and pass their
 # tests without Qt. Core's GoogleTest suites are not built here (the preset's
 # FOG_BUILD_CORE_TESTS=OFF): the same code ran them in the release leg; nor

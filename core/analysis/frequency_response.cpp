@@ -102,11 +102,9 @@ double bandwidthHz(ResponseModelKind kind, const Eigen::VectorXd& x) {
   return std::numeric_limits<double>::quiet_NaN();
 }
 
-// The second order as it is fitted: H = K e^(-s tau) / (1 + b s + a s^2),
-// x = (K, tau_ms, b_ms, a_ms2) with b = 2 zeta / wn and a = 1 / wn^2. The
-// pure delay (a = b = 0) and the first-order lag (a = 0, b = T) are inner
-// points of this form; in (f_n, zeta) they lie at f_n -> infinity, where a
-// fit of their data ran off from every start and never converged.
+// The second order in its polynomial form H = K e^(-s tau) / (1 + b s + a s^2),
+// x = (K, tau_ms, b_ms, a_ms2) with b = 2 zeta / wn and a = 1 / wn^2 (fitModel
+// says why).
 double polynomialMagnitude(const Eigen::VectorXd& x, double f) {
   const double w = kTwoPi * f * 1e-3;  // rad per ms
   return x[0] / std::hypot(1.0 - x[3] * w * w, x[2] * w);
@@ -207,7 +205,7 @@ std::vector<Eigen::VectorXd> startingPoints(ResponseModelKind kind, const std::v
       for (double share : {0.05, 0.5, 0.95}) starts.push_back(Eigen::Vector3d(k, tau * (1.0 - share), tau * share));
       break;
     case ResponseModelKind::kSecondOrder:
-      // In (f_n, zeta): resonances above the points (secondOrderStartsNearTheNested: the others).
+      // In (f_n, zeta): resonances above the points (fitModel adds two from the nested models).
       for (double fn : {2.0 * fMax, 5.0 * fMax, 20.0 * fMax})
         for (double zeta : {0.15, 0.7, 1.5}) {
           const double filter = 2.0 * zeta / (kTwoPi * fn) * 1e3;

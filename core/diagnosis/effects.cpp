@@ -205,7 +205,7 @@ class FirstOrderLag final : public model::Effect {
   std::string name() const override { return "first_order_lag"; }
   // The exact response of the low-pass to the input that the polynomial
   // through the last kNodes samples draws over the last interval (of lower
-  // degree at the start). The interpolation's error is about (w h)^kNodes
+  // degree at the start). The interpolation's error is of order (w h)^kNodes
   // of the swing: 11 Hz and h = 2 ms gave 1.7e-4 with three nodes, which a
   // 20-point response resolves (chi^2 6 300 on 37 dof), and still put T 6
   // sigma off with four; with six it is below 1e-7.
