@@ -421,7 +421,10 @@ void chooseModel(ResponseAnalysis& out) {
   auto extraOver = [&out](std::size_t larger, std::size_t smaller) {
     return parameterCount(out.models[larger].kind) - parameterCount(out.models[smaller].kind);
   };
+  // notedAbout[i]: the simpler model model i's note says is chosen instead.
+  std::vector<std::size_t> notedAbout(out.models.size(), out.models.size());
   auto note = [&](std::size_t larger, std::size_t smaller) {
+    notedAbout[larger] = smaller;
     const int extra = extraOver(larger, smaller);
     out.models[larger].notes.push_back(
         "AIC prefers it to " + std::string(modelTitle(out.models[smaller].kind)) + " by " +
@@ -448,11 +451,9 @@ void chooseModel(ResponseAnalysis& out) {
   // not the answer (the walk above may pass it by: from the second order
   // straight to the delay).
   const auto chosen = static_cast<std::size_t>(out.chosen);
-  const std::string prefix = "AIC prefers it to " + std::string(modelTitle(out.models[chosen].kind)) + " by";
   for (std::size_t i = 0; i < out.models.size(); ++i) {
     const auto& m = out.models[i];
-    if (extraOver(i, chosen) <= 0 || !m.eligible() || !(m.aic < out.models[chosen].aic)) continue;
-    if (std::none_of(m.notes.begin(), m.notes.end(), [&](const std::string& n) { return n.rfind(prefix, 0) == 0; }))
+    if (extraOver(i, chosen) > 0 && m.eligible() && m.aic < out.models[chosen].aic && notedAbout[i] != chosen)
       note(i, chosen);
   }
 }
