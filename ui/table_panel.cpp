@@ -354,8 +354,10 @@ void TablePanel::onCommandDone(const TableCommand& command, const TableCommandRe
   }
   switch (result.outcome) {
     case TableCommandResult::kDone:
-      if (command.kind == TableCommand::kStop)
+      if (command.kind == TableCommand::kStop) {
+        linkStopDone_ = true;
         showMessage(tr("Stop sent: every axis decelerates to rest."), false);
+      }
       return;
     case TableCommandResult::kDropped:  // the stop that dropped it says what happens
       return;
@@ -421,6 +423,12 @@ QString TablePanel::stop() {
     showMessage(why, true);
     return why;
   }
+  // Both paths, as for the emergency stop: the line's own connection (a
+  // call the controller hangs in does not hold it up) and the link's queue
+  // (which drops the moves queued before it and confirms the stop).
+  stopLineFired_ = !address_.isEmpty();
+  linkStopDone_ = false;
+  if (stopLineFired_) emergencyLine_->fire(address_.toStdString(), table::LineCommand::kStopAll);
   tableLink_->stopAll();
   refusalShown_ = false;
   showMessage(tr("Stopping every axis…"), false);
@@ -449,6 +457,23 @@ void TablePanel::emergencyStopAt(const QString& address) {
 }
 
 void TablePanel::onEmergencyLine(const table::EmergencyOutcome& outcome) {
+  if (outcome.command == table::LineCommand::kStopAll) {
+    lastStopLine_ = outcome;
+    if (!stopLineFired_ || outcome.address != address_.toStdString()) return;
+    stopLineFired_ = false;
+    if (linkStopDone_) return;  // the link's confirmation already said it
+    if (outcome.sent)
+      showMessage(tr("Stop sent %1 ms after the click on a connection of its own: every axis decelerates to rest "
+                     "(the panel's connection confirms it once the controller answers).")
+                      .arg(localNumber(outcome.sentAfterMs, 'f', 0)),
+                  false);
+    else
+      showMessage(tr("The stop's own connection failed (%1); it waits in the panel's connection until the "
+                     "controller answers. If the table must stop now, use the emergency stop.")
+                      .arg(coreText(outcome.why)),
+                  true);
+    return;
+  }
   lastLine_ = outcome;
   if (!lineFired_ || outcome.address != address_.toStdString()) return;  // a run's, or an older link's
   lineDone_ = true;
@@ -571,7 +596,7 @@ void TablePanel::updateEnabled() {
     }
   goButton_->setEnabled(movable);
   goButton_->setToolTip(why);
-  // Stop is queued on the link: offered whenever one is held (it goes once the controller answers).
+  // Stop goes on the line's own connection and in the link's queue: offered whenever a link is held.
   const bool stoppable = tableLink_ != nullptr && !runActive_;
   stopButton_->setEnabled(stoppable);
   stopButton_->setToolTip(stoppable ? tr("Every axis decelerates to rest (not latched); a move still queued is "

@@ -15,7 +15,10 @@
 // out on two paths at once: on the emergency line's connection of its own
 // (core/table/emergency_line.h: opened once the controller has answered and
 // kept, or opened on the click; no poll, connect or hung controller delays
-// it), and through the panel's link before anything queued there.
+// it), and through the panel's link before anything queued there. The
+// ordinary Stop goes the same two ways (on the line unconfirmed; through
+// the link, dropping the moves queued before it, confirmed), so a call the
+// controller hangs in does not hold it up either.
 //
 // Every move is checked before it is sent: against the table's position
 // range (table::checkPositionAgainstLimits, the limits the controller
@@ -120,8 +123,10 @@ class TablePanel : public QWidget {
   QDoubleSpinBox* stepSpin() const { return stepSpin_; }
   // Why the controls are disabled (the tooltip), empty when they are not.
   QString disabledReason() const;
-  // The emergency line's last outcome (none before the first).
+  // The emergency line's last outcome of an emergency stop, and of an
+  // ordinary stop (none before the first).
   std::optional<table::EmergencyOutcome> lastEmergencyLine() const { return lastLine_; }
+  std::optional<table::EmergencyOutcome> lastStopLine() const { return lastStopLine_; }
 
  signals:
   // Connected, disconnected, or the run took or gave back the table: the
@@ -173,10 +178,12 @@ class TablePanel : public QWidget {
   std::function<QString()> addressSource_;
   QTimer clock_;  // "no answer for N s" goes on counting while the controller is silent
 
-  // The emergency stop's two paths and what each said.
+  // The stops' two paths (the line's own connection, the link's queue) and
+  // what each said.
   std::unique_ptr<table::EmergencyLine> emergencyLine_;
-  std::optional<table::EmergencyOutcome> lastLine_;
+  std::optional<table::EmergencyOutcome> lastLine_, lastStopLine_;
   bool lineFired_ = false, lineDone_ = false, linkEstopDone_ = false;
+  bool stopLineFired_ = false, linkStopDone_ = false;
   TableCommandResult linkEstop_;
 
   QLabel* statusLabel_ = nullptr;

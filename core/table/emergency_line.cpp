@@ -35,11 +35,12 @@ std::string confirm(ByteTransport& link, std::chrono::milliseconds timeout) {
   }
 }
 
-// The emergency stop written on `link`, then confirmed (TCP only: on a
-// serial line the reply could reach the other link's reader).
+// The command written on `link`; an emergency stop then confirmed (TCP
+// only: on a serial line the reply could reach the other link's reader).
 void writeAndConfirm(ByteTransport& link, const EmergencyLineOptions& options, Clock::time_point requested,
                      EmergencyOutcome& out) {
-  const Status written = link.write("SYST:ESTOP\n");
+  const bool emergency = out.command == LineCommand::kEmergencyStop;
+  const Status written = link.write(emergency ? "SYST:ESTOP\n" : "STOP\n");
   out.sentAt = Clock::now();
   out.sentAfterMs = msBetween(requested, out.sentAt);
   if (!written.isOk()) {
@@ -48,7 +49,7 @@ void writeAndConfirm(ByteTransport& link, const EmergencyLineOptions& options, C
   }
   out.sent = true;
   out.why.clear();
-  if (out.address.rfind("tcp:", 0) == 0) {
+  if (emergency && out.address.rfind("tcp:", 0) == 0) {
     out.why = confirm(link, options.confirmTimeout);
     out.confirmed = out.why.empty();
   }
@@ -71,9 +72,10 @@ bool stillOpen(ByteTransport& link) {
 }  // namespace
 
 EmergencyOutcome sendEmergencyStop(const std::string& address, const EmergencyLineOptions& options,
-                                   Clock::time_point requested) {
+                                   Clock::time_point requested, LineCommand command) {
   EmergencyOutcome out;
   out.address = address;
+  out.command = command;
   auto link = openTransport(address, options.baud, options.connectTimeout, options.writeTimeout);
   if (!link) {
     out.sentAt = Clock::now();
@@ -106,12 +108,17 @@ void EmergencyLine::arm(const std::string& address) {
   wake_.notify_one();
 }
 
-void EmergencyLine::fire(const std::string& address) {
+void EmergencyLine::fire(const std::string& address, LineCommand command) {
   {
     std::lock_guard<std::mutex> lock(mutex_);
     // A fire while one is pending keeps the first request time: the latency
     // reported is the operator's wait from the first click.
-    if (!firePending_) requested_ = Clock::now();
+    if (!firePending_) {
+      requested_ = Clock::now();
+      fireCommand_ = command;
+    } else if (command == LineCommand::kEmergencyStop) {
+      fireCommand_ = command;
+    }
     firePending_ = true;
     fireAddress_ = address;
   }
@@ -127,6 +134,7 @@ void EmergencyLine::run() {
   for (;;) {
     std::string address;
     Clock::time_point requested;
+    LineCommand command = LineCommand::kEmergencyStop;
     bool fire = false;
     {
       std::unique_lock<std::mutex> lock(mutex_);
@@ -135,13 +143,14 @@ void EmergencyLine::run() {
       fire = firePending_;
       address = fire ? fireAddress_ : armAddress_;
       requested = requested_;
+      command = fireCommand_;
       (fire ? firePending_ : armPending_) = false;
     }
     if (!fire) {
       rearm(address);
       continue;
     }
-    const EmergencyOutcome outcome = send(address, requested);
+    const EmergencyOutcome outcome = send(address, requested, command);
     if (done_) done_(outcome);
     // The link that carried it is closed (an answer to its confirmation may
     // still come); a fresh one is armed unless a fire comes first.
@@ -165,8 +174,9 @@ void EmergencyLine::rearm(const std::string& address) {
   armedAt_ = linkAddress_;
 }
 
-EmergencyOutcome EmergencyLine::send(const std::string& address, Clock::time_point requested) {
+EmergencyOutcome EmergencyLine::send(const std::string& address, Clock::time_point requested, LineCommand command) {
   EmergencyOutcome out;
+  out.command = command;
   if (link_ && linkAddress_ == address && stillOpen(*link_)) {
     out.address = address;
     out.armedLink = true;
@@ -181,7 +191,7 @@ EmergencyOutcome EmergencyLine::send(const std::string& address, Clock::time_poi
   // Not armed there, or the armed link failed on the write: a link of its own, now.
   if (!out.sent) {
     const std::string armedWhy = out.why;
-    out = sendEmergencyStop(address, options_, requested);
+    out = sendEmergencyStop(address, options_, requested, command);
     if (!armedWhy.empty() && !out.sent) out.why = armedWhy + "; then " + out.why;
   }
   return out;

@@ -5481,12 +5481,12 @@ The points were written to %2; the models were not.</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+532"/>
+        <location line="+557"/>
         <source>emergency stop</source>
         <translation>急停</translation>
     </message>
     <message>
-        <location line="-531"/>
+        <location line="-556"/>
         <location line="+2"/>
         <source>unknown</source>
         <translation>未知</translation>
@@ -5614,12 +5614,12 @@ The points were written to %2; the models were not.</source>
         <translation>无法连接转台：%1</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+39"/>
         <source>Stop sent: every axis decelerates to rest.</source>
         <translation>停止指令已发送：所有轴减速至静止。</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>%1 did not reach the controller: %2</source>
         <translation>%1未到达控制器：%2</translation>
     </message>
@@ -5659,7 +5659,7 @@ The points were written to %2; the models were not.</source>
         <translation>运行正在驱动转台；请改为停止运行（工具栏）。</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+13"/>
         <source>Stopping every axis…</source>
         <translation>正在停止所有轴…</translation>
     </message>
@@ -5669,7 +5669,17 @@ The points were written to %2; the models were not.</source>
         <translation>急停：正在发送…</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+15"/>
+        <source>Stop sent %1 ms after the click on a connection of its own: every axis decelerates to rest (the panel&apos;s connection confirms it once the controller answers).</source>
+        <translation>停止指令已在点击后 %1 ms 通过其专用连接发送：所有轴减速至静止（控制器应答后，面板的连接将予以确认）。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The stop&apos;s own connection failed (%1); it waits in the panel&apos;s connection until the controller answers. If the table must stop now, use the emergency stop.</source>
+        <translation>停止指令的专用连接失败（%1）；它在面板的连接中等待，直到控制器应答。如需转台立即停止，请使用急停。</translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>Reset it at the controller before the table moves again.</source>
         <translation>转台再次运动前，请在控制器处复位。</translation>
     </message>

@@ -433,6 +433,40 @@ class TablePanelTest : public QObject {
     QVERIFY(!panel.jogButton(Axis::kX, 1)->isEnabled());
   }
 
+  // The ordinary Stop, clicked while the controller hangs mid-move (a
+  // fake that stops answering while the panel's link waits for a reply):
+  // no freeze, and "STOP" arrives within 50 ms on the line's connection of
+  // its own, not queued behind the hung call; the panel says it was sent.
+  void aStopClickedWhileTheControllerHangsGoesOutAtOnce() {
+    fogtest::FakeTableController fake;
+    QVERIFY(fake.listening());
+    TablePanel panel;
+    panel.show();
+    panel.setAddressSource([&] { return QString::fromStdString(fake.address()); });
+    panel.connectButton()->click();
+    QTRY_VERIFY_WITH_TIMEOUT(ready(panel), 10000);
+    QTRY_COMPARE_WITH_TIMEOUT(fake.connections(), 2, 5000);
+
+    GuiTicks ticks;
+    fake.hang();
+    QVERIFY(panel.stopButton()->isEnabled());
+    LaterClick click(panel.stopButton(), 300);  // the link's poll is hung by then (every 250 ms)
+    spin(1500);
+    const auto clickedAt = click.at();
+    const double gap = ticks.maxGapMs();
+    const auto arrived = fake.firstLine("STOP", clickedAt);
+    const double latency = arrived.text.empty() ? -1.0 : msBetween(clickedAt, arrived.at);
+    qInfo("controller hung: GUI max gap %.1f ms; Stop arrived %.1f ms after the click", gap, latency);
+    QVERIFY2(gap < 200.0, qPrintable(QString("the GUI thread stalled %1 ms").arg(gap)));
+    QVERIFY2(!arrived.text.empty(), "the stop never arrived");
+    QVERIFY2(arrived.connection == 2, "it came on the panel's hung connection, not on the line's own");
+    QVERIFY2(latency < 50.0, qPrintable(QString("arrived %1 ms after the click").arg(latency)));
+    QVERIFY(panel.lastStopLine().has_value() && panel.lastStopLine()->sent && panel.lastStopLine()->armedLink);
+    QVERIFY2(panel.message().contains("on a connection of its own"), qPrintable(panel.message()));
+    QVERIFY(!panel.lastEmergencyLine().has_value());  // a stop, not an emergency stop
+    QVERIFY(fake.firstLine("SYST:ESTOP").text.empty());
+  }
+
   // A controller that accepts the connection and never answers: Connect
   // returns at once, the panel says it is connecting and for how long, the
   // emergency stop is offered and arrives within 50 ms; after the reply

@@ -135,5 +135,80 @@ TEST(EmergencyLine, AnArmedLineStillReachesAControllerThatTakesNoNewConnection) 
   EXPECT_NE(unarmed.why.find("cannot connect"), std::string::npos) << unarmed.why;
 }
 
+
+// The outcomes a line reports, collected on its thread.
+struct Outcomes {
+  std::mutex m;
+  std::condition_variable cv;
+  std::vector<EmergencyOutcome> got;
+  EmergencyLine::DoneFn fn() {
+    return [this](const EmergencyOutcome& o) {
+      std::lock_guard<std::mutex> lock(m);
+      got.push_back(o);
+      cv.notify_all();
+    };
+  }
+  bool waitFor(std::size_t n) {
+    std::unique_lock<std::mutex> lock(m);
+    return cv.wait_for(lock, std::chrono::seconds(5), [&] { return got.size() >= n; });
+  }
+};
+
+// The ordinary stop on the line: "STOP" written at once on the armed
+// connection of a controller that has hung, and not confirmed there (the
+// panel's own link confirms it when the controller answers): no SYST:STAT?.
+TEST(EmergencyLine, AnOrdinaryStopGoesOutAtOnceOnTheArmedConnection) {
+  fogtest::FakeTableController controller;
+  Outcomes outcomes;
+  EmergencyLine line(outcomes.fn());
+  line.arm(controller.address());
+  for (int i = 0; i < 500 && line.armedAt().empty(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  ASSERT_EQ(line.armedAt(), controller.address());
+  controller.hang();
+  const auto start = Clock::now();
+  line.fire(controller.address(), LineCommand::kStopAll);
+  ASSERT_TRUE(outcomes.waitFor(1));
+  const EmergencyOutcome o = outcomes.got[0];
+  EXPECT_EQ(o.command, LineCommand::kStopAll);
+  EXPECT_TRUE(o.sent) << o.why;
+  EXPECT_TRUE(o.armedLink);
+  EXPECT_FALSE(o.confirmed);
+  EXPECT_TRUE(o.why.empty()) << o.why;
+  // (the fake's own thread reads and times the line a moment after the write)
+  for (int i = 0; i < 500 && controller.firstLine("STOP").text.empty(); ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  const auto stop = controller.firstLine("STOP");
+  ASSERT_FALSE(stop.text.empty());
+  EXPECT_LT(msBetween(start, stop.at), 50.0);
+  EXPECT_TRUE(controller.firstLine("SYST:ESTOP").text.empty());
+  EXPECT_TRUE(controller.firstLine("SYST:STAT?").text.empty());
+}
+
+// Fires that arrive while a send is under way merge into one more send: an
+// emergency stop takes the place of a pending ordinary stop, and a stop
+// asked after a pending emergency stop leaves it one.
+TEST(EmergencyLine, AnEmergencyStopTakesThePlaceOfAPendingStopNeverTheOtherWayRound) {
+  fogtest::FakeTableController controller(/*hangFromStart=*/true);
+  EmergencyLineOptions options;
+  options.confirmTimeout = std::chrono::milliseconds(300);  // each emergency stop's send waits this long
+  Outcomes outcomes;
+  EmergencyLine line(outcomes.fn(), options);
+  for (const LineCommand second : {LineCommand::kStopAll, LineCommand::kEmergencyStop}) {
+    const std::size_t before = outcomes.got.size();
+    line.fire(controller.address());  // under way for 300 ms, waiting for its confirmation
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    line.fire(controller.address(), second);
+    line.fire(controller.address(), second == LineCommand::kStopAll ? LineCommand::kEmergencyStop
+                                                                     : LineCommand::kStopAll);
+    ASSERT_TRUE(outcomes.waitFor(before + 2));
+    std::this_thread::sleep_for(std::chrono::milliseconds(400));  // no third send
+    std::lock_guard<std::mutex> lock(outcomes.m);
+    ASSERT_EQ(outcomes.got.size(), before + 2);
+    EXPECT_EQ(outcomes.got[before + 1].command, LineCommand::kEmergencyStop);
+    EXPECT_TRUE(outcomes.got[before + 1].sent) << outcomes.got[before + 1].why;
+  }
+  EXPECT_TRUE(controller.firstLine("STOP").text.empty());
+}
+
 }  // namespace
 }  // namespace fog::table
