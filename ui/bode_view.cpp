@@ -2,6 +2,7 @@
 
 #include <QComboBox>
 #include <QHBoxLayout>
+#include <QEvent>
 #include <QHeaderView>
 #include <QLabel>
 #include <QPen>
@@ -156,6 +157,15 @@ BodeView::BodeView(QWidget* parent) : QWidget(parent) {
   modelTable_->setSelectionBehavior(QAbstractItemView::SelectRows);
   modelTable_->setWordWrap(false);
   modelTable_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+  // The notes take the width the other columns leave (at least their
+  // header's), shortened with "…", each whole in its tooltip: a note never
+  // makes the table scroll sideways by thousands of pixels.
+  modelTable_->horizontalHeader()->setSectionResizeMode(kNotesColumn, QHeaderView::Fixed);
+  modelTable_->setTextElideMode(Qt::ElideRight);
+  modelTable_->viewport()->installEventFilter(this);
+  connect(modelTable_->horizontalHeader(), &QHeaderView::sectionResized, this, [this](int column) {
+    if (column != kNotesColumn) fitNotesColumn();
+  });
   // Header and three models in view at least, as tall as its rows (Compare
   // has six).
   modelTable_->setSizeAdjustPolicy(QAbstractScrollArea::AdjustToContents);
@@ -306,6 +316,20 @@ void BodeView::addModelRow(const QString& series, const analysis::ResponseModelF
     }
     modelTable_->setItem(row, col, item);
   }
+}
+
+void BodeView::fitNotesColumn() {
+  int others = 0;
+  for (int c = 0; c < kNotesColumn; ++c)
+    if (!modelTable_->isColumnHidden(c)) others += modelTable_->columnWidth(c);
+  const int width = std::max(modelTable_->horizontalHeader()->sectionSizeHint(kNotesColumn),
+                             modelTable_->viewport()->width() - others);
+  if (modelTable_->columnWidth(kNotesColumn) != width) modelTable_->setColumnWidth(kNotesColumn, width);
+}
+
+bool BodeView::eventFilter(QObject* watched, QEvent* event) {
+  if (watched == modelTable_->viewport() && event->type() == QEvent::Resize) fitNotesColumn();
+  return QWidget::eventFilter(watched, event);
 }
 
 void BodeView::addPointRows(const QString& series, const analysis::ResponseAnalysis& r) {

@@ -82,6 +82,10 @@ class BodeView : public QWidget {
   void showAxis(int position);
   void addModelRow(const QString& series, const analysis::ResponseModelFit& m, bool chosen, double atHz);
   void addPointRows(const QString& series, const analysis::ResponseAnalysis& r);
+  // The notes column takes what the other columns leave of the table's
+  // width, at least its header's (the other columns fit their contents).
+  void fitNotesColumn();
+  bool eventFilter(QObject* watched, QEvent* event) override;
 
   // Both inputs are kept: the series point at their models.
   std::vector<analysis::ResponseAnalysis> a_, b_;

@@ -46,8 +46,10 @@ CommandedMotionTable::CommandedMotionTable(QWidget* parent) : QWidget(parent) {
   limitsLabel_->setWordWrap(true);
   table_ = new QTableWidget(0, kColumnCount);
   table_->setObjectName("commandedMotionTable");
-  table_->setHorizontalHeaderLabels({tr("Point"), tr("Axis"), tr("Frequency (Hz)"), tr("Angle (°)"),
-                                     tr("Peak rate (°/s)"), tr("Peak accel. (°/s²)")});
+  // Name and unit on two lines: the six columns fit beside Configure's
+  // source and session on a laptop's 1024 px.
+  table_->setHorizontalHeaderLabels({tr("Point"), tr("Axis"), tr("Frequency\n(Hz)"), tr("Angle\n(°)"),
+                                     tr("Peak rate\n(°/s)"), tr("Peak accel.\n(°/s²)")});
   table_->verticalHeader()->setVisible(false);
   table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
   table_->setSelectionMode(QAbstractItemView::NoSelection);
@@ -124,11 +126,10 @@ void CommandedMotionTable::rebuild() {
                          .arg(axis);
     else if (std::abs(centre) + amp > limits_.maxPositionDeg)
       angleProblem = tr("the angle leaves the table's ±%1°").arg(limits_.maxPositionDeg);
+    // About 0 the amplitude says it all (and the column stays narrow).
     put(kAngle,
-        tr("%1 … %2 (±%3)")
-            .arg(centre - amp, 0, 'f', 2)
-            .arg(centre + amp, 0, 'f', 2)
-            .arg(QString::number(amp, 'g', 6)),
+        centre == 0.0 ? tr("±%1").arg(amp, 0, 'f', 2)
+                      : tr("%1 … %2").arg(centre - amp, 0, 'f', 2).arg(centre + amp, 0, 'f', 2),
         angleProblem);
     put(kRate, tr("%1 / %2").arg(rate, 0, 'f', 2).arg(lim.maxRateDegPerS),
         rate > lim.maxRateDegPerS

@@ -11,6 +11,11 @@
 #include <QPushButton>
 #include <QSpinBox>
 #include <QSplitter>
+#include <QTimer>
+#include <algorithm>
+#include <QTableWidget>
+#include <QHeaderView>
+#include <QEvent>
 #include <QVBoxLayout>
 #include <limits>
 
@@ -25,7 +30,7 @@ namespace fog::ui {
 ConfigureView::ConfigureView(QWidget* parent) : QWidget(parent) {
   auto* layout = new QHBoxLayout(this);
   // The plan and the rest side by side; the operator moves the divider.
-  auto* split = new QSplitter(Qt::Horizontal);
+  auto* split = split_ = new QSplitter(Qt::Horizontal);
   split->setObjectName("configureSplitter");
   split->setChildrenCollapsible(false);
   layout->addWidget(split);
@@ -47,7 +52,72 @@ ConfigureView::ConfigureView(QWidget* parent) : QWidget(parent) {
   split->setStretchFactor(0, 3);
   split->setStretchFactor(1, 2);
   connect(this, &ConfigureView::sourceChanged, this, &ConfigureView::applyTableLimits);
+  // A plan of wider points may need the room beside it.
+  connect(planEditor_, &PlanEditor::planChanged, this, [this] {
+    horizontalNeeds_ = 0;  // learnt again for the new plan's widths
+    fitLayoutLater();
+  });
   applyTableLimits();
+}
+
+void ConfigureView::showEvent(QShowEvent* event) {
+  QWidget::showEvent(event);
+  // The room is the parent's (a scroll area's viewport gives its widget at
+  // least the widget's minimum width, so this view's own width cannot say).
+  if (QWidget* room = parentWidget(); room && room != watchedRoom_) {
+    if (watchedRoom_) watchedRoom_->removeEventFilter(this);
+    watchedRoom_ = room;
+    room->installEventFilter(this);
+  }
+  fitLayoutLater();
+}
+
+bool ConfigureView::eventFilter(QObject* watched, QEvent* event) {
+  if (watched == watchedRoom_ && event->type() == QEvent::Resize) fitLayoutLater();
+  return QWidget::eventFilter(watched, event);
+}
+
+// After the layout has settled: the tables' scroll bars say what is cut.
+void ConfigureView::fitLayoutLater() {
+  if (fitPending_) return;
+  fitPending_ = true;
+  QTimer::singleShot(0, this, [this] {
+    fitPending_ = false;
+    fitLayout();
+  });
+}
+
+void ConfigureView::fitLayout() {
+  if (!watchedRoom_ || !isVisible()) return;
+  const int room = watchedRoom_->width();
+  QWidget* plan = split_->widget(0);
+  if (split_->orientation() == Qt::Vertical) {
+    if (room < horizontalNeeds_) return;
+    split_->setOrientation(Qt::Horizontal);
+    plan->setMinimumHeight(0);
+    fitLayoutLater();
+    return;
+  }
+  int cut = 0;  // the most a table of the plan's is wider than its viewport, in pixels
+  for (QTableWidget* t : {planEditor_->table(), commandedMotion_->table()})
+    cut = std::max(cut, t->horizontalHeader()->length() - t->viewport()->width());
+  const int viewCut = std::max(0, minimumSizeHint().width() - room);
+  if (cut == 0 && viewCut == 0) return;
+  // The side gives the plan what it has beyond its minimum, first.
+  QList<int> sizes = split_->sizes();
+  const int spare = sizes.value(1) - split_->widget(1)->minimumSizeHint().width();
+  if (viewCut == 0 && spare >= cut + 2) {
+    sizes[0] += cut + 2;
+    sizes[1] -= cut + 2;
+    split_->setSizes(sizes);
+    fitLayoutLater();
+    return;
+  }
+  // Too narrow side by side: the plan above the rest, at the height its
+  // tables want (the view scrolls down), until the room grows by what was cut.
+  horizontalNeeds_ = room + std::max(cut - std::max(spare, 0), viewCut) + 2;
+  split_->setOrientation(Qt::Vertical);
+  plan->setMinimumHeight(plan->sizeHint().height());
 }
 
 void ConfigureView::setConnectedTable(const QString& description, const table::TableLimits& limits) {

@@ -21,6 +21,7 @@ class QGroupBox;
 class QLabel;
 class QLineEdit;
 class QSpinBox;
+class QSplitter;
 
 namespace fog::ui {
 
@@ -114,6 +115,14 @@ class ConfigureView : public QWidget {
   QGroupBox* buildSessionGroup();
   QGroupBox* buildConstantsGroup();
   void applyTableLimits();
+  // The plan beside the rest where the room shown (the scroll area's
+  // viewport) holds both with the plan's tables whole, the divider moved
+  // for them if need be; above it otherwise (a laptop with the table panel
+  // docked), so that nothing scrolls sideways.
+  bool eventFilter(QObject* watched, QEvent* event) override;
+  void showEvent(QShowEvent* event) override;
+  void fitLayoutLater();
+  void fitLayout();
 
   struct ConnectedTable {
     QString description;
@@ -121,6 +130,10 @@ class ConfigureView : public QWidget {
   };
   std::optional<ConnectedTable> connected_;
 
+  QSplitter* split_ = nullptr;
+  QWidget* watchedRoom_ = nullptr;
+  int horizontalNeeds_ = 0;  // the room side by side needs, learnt when it was too little
+  bool fitPending_ = false;
   PlanEditor* planEditor_ = nullptr;
   CommandedMotionTable* commandedMotion_ = nullptr;
   QComboBox* sourceCombo_ = nullptr;

@@ -1373,10 +1373,22 @@ QWidget* MainWindow::compareSessions(const QStringList& paths) {
           if (guard) guard->setOutcome(i, o, o ? QString() : tr("the session could not be read (see the message)"));
         },
         false);
-  // As large as the screen allows, up to 1600 x 900.
+  // As large as the screen allows with the window manager's frame, up to
+  // 1600 x 900, and on the screen: the frame's size is known only once the
+  // window is shown, so the main window's frame stands in for it (0.95 of the
+  // screen's height was 7 px too tall on a 700-px screen with a title bar).
   QSize size(1600, 900);
-  if (const QScreen* screen = this->screen()) size = size.boundedTo(screen->availableGeometry().size() * 0.95);
-  dialog->resize(size);
+  if (const QScreen* screen = this->screen()) {
+    const QRect free = screen->availableGeometry();
+    const QSize frame(std::max(16, frameGeometry().width() - geometry().width()),
+                      std::max(48, frameGeometry().height() - geometry().height()));
+    size = size.boundedTo(free.size() - frame);
+    dialog->resize(size);
+    dialog->move(free.topLeft() + QPoint((free.width() - size.width() - frame.width()) / 2,
+                                         (free.height() - size.height() - frame.height()) / 2));
+  } else {
+    dialog->resize(size);
+  }
   dialog->show();
   return dialog;
 }

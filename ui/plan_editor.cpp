@@ -12,6 +12,8 @@
 #include <QVBoxLayout>
 #include <cmath>
 
+#include <algorithm>
+
 #include "ui/bench_presets.h"
 #include "ui/core_text.h"
 #include "ui/messages.h"
@@ -20,8 +22,24 @@ namespace fog::ui {
 
 namespace {
 
+// A spin box as wide as the value it shows, not as its range's widest
+// ("-1000000.0 s"): the plan's columns fit their numbers, and the plan fits
+// beside the rest of Configure on a laptop.
+class ValueWideSpin : public QDoubleSpinBox {
+ public:
+  ValueWideSpin() {
+    connect(this, &QDoubleSpinBox::textChanged, this, [this] { updateGeometry(); });
+  }
+  QSize sizeHint() const override {
+    const QSize range = QDoubleSpinBox::sizeHint();
+    if (buttonSymbols() != QAbstractSpinBox::NoButtons) return range;  // (Rest, beside the preset)
+    return {std::min(range.width(), fontMetrics().horizontalAdvance(text()) + 14), range.height()};
+  }
+  QSize minimumSizeHint() const override { return sizeHint(); }
+};
+
 QDoubleSpinBox* makeSpin(double min, double max, int decimals, const QString& suffix) {
-  auto* s = new QDoubleSpinBox();
+  auto* s = new ValueWideSpin();
   s->setRange(min, max);
   s->setDecimals(decimals);
   s->setSuffix(suffix);
@@ -89,17 +107,12 @@ PlanEditor::PlanEditor(QWidget* parent) : QWidget(parent) {
   table_->setHorizontalHeaderLabels({tr("Kind"), tr("Axis"), tr("Frequency"), tr("Amplitude"), tr("Duration"), tr("Periods"),
                                      tr("Settle"), tr("Check")});
   table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-  table_->horizontalHeader()->setSectionResizeMode(kCheck, QHeaderView::Stretch);
+  // The check is a short word (every problem is below the table), whole: a
+  // table too narrow for it makes Configure give the plan more room.
   table_->setSelectionBehavior(QAbstractItemView::SelectRows);
   table_->setSelectionMode(QAbstractItemView::SingleSelection);
-  // A long check wraps in its row instead of being cut.
-  table_->setWordWrap(true);
+  table_->setWordWrap(false);
   table_->verticalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-  // The rows follow the width of the check column (queued: the header is
-  // still laying out when it reports the new width).
-  connect(table_->horizontalHeader(), &QHeaderView::sectionResized, this, [this](int column) {
-    if (column == kCheck) QMetaObject::invokeMethod(table_, &QTableView::resizeRowsToContents, Qt::QueuedConnection);
-  });
   layout->addWidget(table_, 1);
 
   auto* buttons = new QHBoxLayout();
@@ -330,13 +343,16 @@ void PlanEditor::validate() {
     QStringList texts;
     for (const auto& f : found) texts << f.text;
     auto* check = table_->item(r, kCheck);
-    // Every problem of the row, one a line; the cell wraps, its tooltip holds the whole text.
-    check->setText(ok ? (p.isStatic() ? tr("ok: table at rest, %1 in all").arg(durationText(p.settleS + p.durationS))
-                                      : tr("ok: %1 periods, %2 in all").arg(p.durationS * p.frequencyHz, 0, 'f', 1)
-                                            .arg(durationText(p.settleS + p.durationS)))
-                      : texts.join("\n"));
+    // A word the column always has room for (a long text wrapped in it made
+    // rows 100 px tall in a one-character column on a laptop); every
+    // problem is whole in the tooltip and in the list below the table.
+    const QString total = durationText(p.settleS + p.durationS);
+    check->setText(ok ? tr("ok") : (found.size() == 1 ? tr("1 problem") : tr("%1 problems").arg(found.size())));
     check->setForeground(ok ? QColor(0, 110, 0) : QColor(190, 0, 0));
-    check->setToolTip(check->text());
+    check->setToolTip(ok ? (p.isStatic() ? tr("ok: table at rest, %1 in all").arg(total)
+                                         : tr("ok: %1 periods, %2 in all").arg(p.durationS * p.frequencyHz, 0, 'f', 1)
+                                               .arg(total))
+                         : texts.join("\n"));
     // Mark each field a problem is about, its tooltip saying what.
     for (int c = kFrequency; c < kCheck; ++c) {  // the editable numbers
       QStringList about;

@@ -153,12 +153,9 @@ void setRow(QTableWidget* t, int row, const QStringList& cells, bool bold = fals
 ResultView::ResultView(QWidget* parent) : QWidget(parent) {
   auto* layout = new QVBoxLayout(this);
   buildHeader(layout);
-  auto* all = new QSplitter(Qt::Vertical);
-  all->addWidget(buildPlotsAndTables());
-  all->addWidget(buildReportView());
-  all->setStretchFactor(0, 4);
-  all->setStretchFactor(1, 1);
-  layout->addWidget(all, 1);
+  // The text report is a tab beside the fits (buildPlotsAndTables), not a
+  // pane below them: on a laptop's 700 px a pane there squeezed every plot.
+  layout->addWidget(buildPlotsAndTables(), 1);
   buildExportMenu();
   clear();
 }
@@ -253,6 +250,8 @@ QWidget* ResultView::buildPlotsAndTables() {
   timeLink->add(anglePlot_->interaction());
   timeLink->add(residualPlot_->interaction());
   auto* left = new QSplitter(Qt::Vertical);
+  left->setObjectName("resultFitsSplitter");
+  left->setChildrenCollapsible(false);
   left->addWidget(anglePlot_);
   left->addWidget(residualPlot_);
 
@@ -277,7 +276,10 @@ QWidget* ResultView::buildPlotsAndTables() {
   zeroCrossingPlot_ = new SeriesPlot(tr("Zero crossing: the gyro behind the table"), tr("angle − offset (°)"), tr("°"));
   zeroCrossingPlot_->setObjectName("zeroCrossingPlot");
   zeroCrossingPlot_->setTimeAxis(tr("time from the table fit's zero crossing (ms)"), 1e-3);
-  zeroCrossingPlot_->setMinimumSize(200, 120);
+  // A canvas of 120 px at least (the ticks of both axes readable) besides
+  // its title, time axis (ticks and title) and legend: some five lines of text
+  // (measured: 93-96 px of 17-px lines, so six; the desk tests check the canvas).
+  zeroCrossingPlot_->setMinimumSize(200, 120 + 6 * fontMetrics().lineSpacing() + 4);
   plotTabs_ = new QTabWidget();
   plotTabs_->setObjectName("resultPlotTabs");
   plotTabs_->addTab(zeroCrossingPlot_, tr("Zero crossing"));
@@ -285,13 +287,12 @@ QWidget* ResultView::buildPlotsAndTables() {
   plotTabs_->setTabToolTip(0, tr("Table and gyro angle around a zero crossing with the fitted lag marked: click twice "
                                  "to set cursors A and B and read Δt"));
   plotTabs_->setTabToolTip(1, tr("The lag of every test point against its swing frequency"));
-  // A plot with its title, legend and axis titles needs ~100 px besides its
-  // canvas: a restored divider left the canvas a 30 px sliver. (158, not
-  // more: the Results view, with its decision rule line, must still fit
-  // 1366x768 on Qt 5's fonts.)
-  plotTabs_->setMinimumHeight(158);
+  // A divider (remembered from a larger screen, or dragged) never squeezes
+  // the plots below their minimum: the view scrolls instead.
+  plotTabs_->setMinimumHeight(zeroCrossingPlot_->minimumHeight() + plotTabs_->tabBar()->sizeHint().height() + 8);
   auto* right = new QSplitter(Qt::Vertical);
   right->setObjectName("resultRightSplitter");
+  right->setChildrenCollapsible(false);
   right->addWidget(fitTable_);
   right->addWidget(delayTable_);
   right->addWidget(plotTabs_);
@@ -306,11 +307,15 @@ QWidget* ResultView::buildPlotsAndTables() {
   leftTabs_->setObjectName("resultLeftTabs");
   leftTabs_->addTab(left, tr("Fits"));
   leftTabs_->addTab(bodeView_, tr("Frequency response"));
+  leftTabs_->addTab(buildReportView(), tr("Report"));
   leftTabs_->setTabToolTip(0, tr("The chosen test point's angles with their fitted sinusoids, and the residuals"));
   leftTabs_->setTabToolTip(1, tr("Magnitude and phase of gyro angle / table angle at every test frequency of an axis, "
                                  "with the delay models fitted to them (Bode plot)"));
+  leftTabs_->setTabToolTip(2, tr("The delay report as text, as the command line prints it"));
 
   auto* top = new QSplitter(Qt::Horizontal);
+  top->setObjectName("resultTopSplitter");
+  top->setChildrenCollapsible(false);
   top->addWidget(leftTabs_);
   top->addWidget(right);
   top->setStretchFactor(0, 1);

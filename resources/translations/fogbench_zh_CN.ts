@@ -239,7 +239,7 @@
 <context>
     <name>fog::ui::BodeView</name>
     <message>
-        <location filename="../../ui/bode_view.cpp" line="+44"/>
+        <location filename="../../ui/bode_view.cpp" line="+45"/>
         <source>%1 axis</source>
         <translation>%1 轴</translation>
     </message>
@@ -260,24 +260,24 @@
     </message>
     <message>
         <location line="+21"/>
-        <location line="+162"/>
-        <location line="+75"/>
+        <location line="+171"/>
+        <location line="+89"/>
         <source>Hz</source>
         <translation>Hz</translation>
     </message>
     <message>
-        <location line="-235"/>
+        <location line="-258"/>
         <source>dB</source>
         <translation>dB</translation>
     </message>
     <message>
         <location line="+22"/>
-        <location line="+17"/>
+        <location line="+26"/>
         <source>series</source>
         <translation>序列</translation>
     </message>
     <message>
-        <location line="-17"/>
+        <location line="-26"/>
         <source>model</source>
         <translation>模型</translation>
     </message>
@@ -322,7 +322,7 @@
         <translation>数据点无法区分的内容</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+24"/>
         <source>point</source>
         <translation>测试点</translation>
     </message>
@@ -433,12 +433,12 @@
     </message>
     <message>
         <location line="+0"/>
-        <location line="+72"/>
+        <location line="+86"/>
         <source>ms</source>
         <translation>ms</translation>
     </message>
     <message>
-        <location line="-64"/>
+        <location line="-78"/>
         <source>The probability of a χ² this large were the model true: below %1 the model is rejected and never chosen</source>
         <translation>若模型成立，χ² 不小于此值的概率：低于 %1 时模型被拒绝，绝不被选中</translation>
     </message>
@@ -448,7 +448,7 @@
         <translation>所选模型：AIC 最低；较大的模型仅当其使 χ² 比它所包含的较简单模型降低 3σ（多 1 个参数为 9，多 2 个为 11.83）时才选它</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+41"/>
         <source>U (k = %1) = %2° = %3 ms: the fit&apos;s σ %4° and the table read delay&apos;s %5° (its uncertainty %6 ms of the read delay %7 ms) in quadrature</source>
         <translation>U (k = %1) = %2° = %3 ms：拟合的 σ %4° 与转台读数延迟的 %5°（读数延迟 %7 ms 的不确定度 %6 ms）按方和根合成</translation>
     </message>
@@ -547,7 +547,7 @@
 <context>
     <name>fog::ui::CommandedMotionTable</name>
     <message>
-        <location filename="../../ui/commanded_motion.cpp" line="+49"/>
+        <location filename="../../ui/commanded_motion.cpp" line="+51"/>
         <source>Point</source>
         <translation>测试点</translation>
     </message>
@@ -557,27 +557,7 @@
         <translation>轴</translation>
     </message>
     <message>
-        <location line="+0"/>
-        <source>Frequency (Hz)</source>
-        <translation>频率 (Hz)</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>Angle (°)</source>
-        <translation>角度 (°)</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Peak rate (°/s)</source>
-        <translation>峰值角速率 (°/s)</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>Peak accel. (°/s²)</source>
-        <translation>峰值角加速度 (°/s²)</translation>
-    </message>
-    <message>
-        <location line="+71"/>
+        <location line="+72"/>
         <source>amplitude %1° is beyond the table&apos;s %2° on %3</source>
         <translation>幅值 %1° 超出转台 %3 轴的 %2°</translation>
     </message>
@@ -587,7 +567,17 @@
         <translation>角度超出转台的 ±%1°</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+3"/>
+        <source>±%1</source>
+        <translation>±%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 … %2</source>
+        <translation>%1 … %2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>peak rate beyond the table&apos;s %1 °/s on %2</source>
         <translation>峰值角速率超出转台 %2 轴的 %1 °/s</translation>
     </message>
@@ -597,17 +587,45 @@
         <translation>峰值角加速度超出转台 %2 轴的 %1 °/s²</translation>
     </message>
     <message>
-        <location line="-81"/>
+        <location line="-80"/>
         <source>the simulator&apos;s turntable</source>
         <translation>仿真器的转台</translation>
     </message>
     <message>
-        <location line="-33"/>
+        <location line="-35"/>
         <source>amplitude %1°, frequency %2 Hz, peak rate %3 °/s, peak acceleration %4 °/s²</source>
         <translation>幅值 %1°，频率 %2 Hz，峰值角速率 %3 °/s，峰值角加速度 %4 °/s²</translation>
     </message>
     <message>
-        <location line="+54"/>
+        <location line="+26"/>
+        <source>Frequency
+(Hz)</source>
+        <translation>频率
+(Hz)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Angle
+(°)</source>
+        <translation>角度
+(°)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Peak rate
+(°/s)</source>
+        <translation>峰值角速率
+(°/s)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Peak accel.
+(°/s²)</source>
+        <translation>峰值角加速度
+(°/s²)</translation>
+    </message>
+    <message>
+        <location line="+29"/>
         <source>per axis: %1</source>
         <translation>每轴：%1</translation>
     </message>
@@ -637,12 +655,7 @@
         <translation>静止</translation>
     </message>
     <message>
-        <location line="+11"/>
-        <source>%1 … %2 (±%3)</source>
-        <translation>%1 … %2 (±%3)</translation>
-    </message>
-    <message>
-        <location line="+5"/>
+        <location line="+15"/>
         <location line="+4"/>
         <source>%1 / %2</source>
         <translation>%1 / %2</translation>
@@ -964,7 +977,7 @@
 <context>
     <name>fog::ui::ConfigureView</name>
     <message>
-        <location filename="../../ui/configure_view.cpp" line="+87"/>
+        <location filename="../../ui/configure_view.cpp" line="+160"/>
         <source>Test plan</source>
         <translation>测试计划</translation>
     </message>
@@ -2803,7 +2816,7 @@ File: %1</source>
 <context>
     <name>fog::ui::PlanEditor</name>
     <message>
-        <location filename="../../ui/plan_editor.cpp" line="+65"/>
+        <location filename="../../ui/plan_editor.cpp" line="+83"/>
         <source>Preset</source>
         <translation>预设</translation>
     </message>
@@ -2824,13 +2837,13 @@ File: %1</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+103"/>
+        <location line="+98"/>
         <location line="+2"/>
         <source> s</source>
         <translation> s</translation>
     </message>
     <message>
-        <location line="-101"/>
+        <location line="-96"/>
         <source>Rest between test points: the table at rest</source>
         <translation>测试点之间的静止时间：转台静止</translation>
     </message>
@@ -2875,7 +2888,7 @@ File: %1</source>
         <translation>检查</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+11"/>
         <source>Add test point</source>
         <translation>添加测试点</translation>
     </message>
@@ -2960,7 +2973,22 @@ File: %1</source>
         <translation>开始记录前的摆动时间</translation>
     </message>
     <message>
-        <location line="+140"/>
+        <location line="+143"/>
+        <source>1 problem</source>
+        <translation>1 个问题</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1 problems</source>
+        <translation>%1 个问题</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>ok</source>
+        <translation>正常</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>ok: table at rest, %1 in all</source>
         <translation>正常：转台静止，共 %1</translation>
     </message>
@@ -2970,7 +2998,7 @@ File: %1</source>
         <translation>正常：%1 个周期，共 %2</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+12"/>
         <source>test point %1: %2</source>
         <translation>测试点 %1：%2</translation>
     </message>
@@ -3042,7 +3070,7 @@ File: %1</source>
     </message>
     <message>
         <location filename="../../ui/main_window.cpp" line="-1275"/>
-        <location filename="../../ui/plan_editor.cpp" line="-323"/>
+        <location filename="../../ui/plan_editor.cpp" line="-321"/>
         <location filename="../../ui/plots/delta_picker.cpp" line="+1"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
@@ -4611,7 +4639,7 @@ File: %1</source>
 <context>
     <name>fog::ui::ResultView</name>
     <message>
-        <location filename="../../ui/result_view.cpp" line="+55"/>
+        <location filename="../../ui/result_view.cpp" line="+52"/>
         <source>Test point</source>
         <translation>测试点</translation>
     </message>
@@ -4678,7 +4706,7 @@ Run a test plan (Run), or open a session (Sessions).</source>
         <translation>拟合残差将显示在此处。</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+15"/>
         <source>fit</source>
         <translation>拟合</translation>
     </message>
@@ -4753,7 +4781,7 @@ Run a test plan (Run), or open a session (Sessions).</source>
         <translation>距转台拟合过零点的时间 (ms)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+7"/>
         <source>Zero crossing</source>
         <translation>过零点</translation>
     </message>
@@ -4773,7 +4801,7 @@ Run a test plan (Run), or open a session (Sessions).</source>
         <translation>各测试点的滞后随摆动频率的变化</translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+50"/>
         <source>The delay report appears here after a run.</source>
         <translation>运行结束后，延迟报告显示在这里。</translation>
     </message>
@@ -4830,7 +4858,7 @@ Run a test plan (Run), or open a session (Sessions).</source>
         <translation>PDF 文档 (*.pdf)</translation>
     </message>
     <message>
-        <location line="-63"/>
+        <location line="-67"/>
         <source>Fits</source>
         <translation>拟合</translation>
     </message>
@@ -4838,6 +4866,11 @@ Run a test plan (Run), or open a session (Sessions).</source>
         <location line="+1"/>
         <source>Frequency response</source>
         <translation>频率响应</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Report</source>
+        <translation>报告</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -4850,7 +4883,12 @@ Run a test plan (Run), or open a session (Sessions).</source>
         <translation>某轴各测试频率下陀螺角度 / 转台角度的幅值与相位，及对其拟合的延迟模型（伯德图）</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+2"/>
+        <source>The delay report as text, as the command line prints it</source>
+        <translation>文本形式的延迟报告，与命令行输出一致</translation>
+    </message>
+    <message>
+        <location line="+45"/>
         <source>Bode plot (frequency response)…</source>
         <translation>伯德图（频率响应）…</translation>
     </message>

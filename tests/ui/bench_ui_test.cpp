@@ -262,11 +262,11 @@ class BenchUiTest : public QObject {
     for (const QString& expected : {QString("frequency 30 Hz is beyond the table limit of 20 Hz"),
                                     QString("amplitude 50° is beyond the table limit of 45°"),
                                     QString("peak rate 9424.78 °/s exceeds the table limit of 400 °/s")}) {
-      QVERIFY2(check->text().contains(expected), qPrintable(check->text()));
       QVERIFY2(check->toolTip().contains(expected), qPrintable(check->toolTip()));
       QVERIFY2(editor->problem().contains("test point 1: " + expected), qPrintable(editor->problem()));
     }
     QCOMPARE(editor->problem().count("test point 1:"), 4);  // frequency, amplitude, rate, acceleration
+    QCOMPARE(check->text(), QString("4 problems"));  // each in the tooltip and the list below the table
     QVERIFY(editor->cellEditor(0, PlanEditor::kAmplitude)->toolTip().contains("amplitude 50°"));
     QVERIFY(!editor->cellEditor(0, PlanEditor::kAmplitude)->toolTip().contains("frequency 30 Hz"));
     QVERIFY(editor->cellEditor(0, PlanEditor::kFrequency)->toolTip().contains("frequency 30 Hz"));
@@ -328,7 +328,7 @@ class BenchUiTest : public QObject {
     QCOMPARE(presets->currentData().toString(), QString());
     QCOMPARE(presets->currentText(), QString("custom plan"));
     QVERIFY(!editor->isValid());
-    const QString check = editor->table()->item(0, PlanEditor::kCheck)->text();
+    const QString check = editor->table()->item(0, PlanEditor::kCheck)->toolTip();
     QVERIFY2(check.contains("frequency 30 Hz is beyond the table limit of 20 Hz"), qPrintable(check));
     QVERIFY(editor->cellEditor(0, PlanEditor::kFrequency)->toolTip().contains("beyond the table limit"));
     QVERIFY(!button(*w, "runButton")->isEnabled());
@@ -344,17 +344,19 @@ class BenchUiTest : public QObject {
              qPrintable(editor->problem()));
     QVERIFY(!editor->problem().contains(" deg"));
     QVERIFY(button(*w, "runButton")->toolTip().contains("test point 2: amplitude 50°"));
-    // The check column shows its whole text: the row is tall enough for it wrapped.
+    // The check column's word is whole in its cell on a laptop's window
+    // (the desk tests check the table's columns and rows at 1024 x 700).
     w->resize(1024, 700);
     settle();
     {
       auto* table = editor->table();
       auto* item = table->item(1, PlanEditor::kCheck);
+      QCOMPARE(editor->problem().count("test point 2:"), 1);
+      QCOMPARE(item->text(), QString("1 problem"));
       const QRect cell = table->visualItemRect(item);
-      const QRect needed = table->fontMetrics().boundingRect(QRect(0, 0, cell.width() - 6, 10000),
-                                                             Qt::TextWordWrap, item->text());
-      QVERIFY2(needed.height() <= cell.height(),
-               qPrintable(QString("'%1' needs %2 px, has %3 (%4 px wide)").arg(item->text()).arg(needed.height()).arg(cell.height()).arg(cell.width())));
+      const int needed = table->fontMetrics().horizontalAdvance(item->text());
+      QVERIFY2(needed <= cell.width(), qPrintable(QString("'%1' needs %2 px, has %3").arg(item->text()).arg(needed)
+                                                     .arg(cell.width())));
     }
     editor->table()->selectRow(1);
     click(*w, "removePointButton");
@@ -398,7 +400,7 @@ class BenchUiTest : public QObject {
     using M = fog::ui::CommandedMotionTable;
     const auto text = [&](int row, int column) { return table->item(row, column)->text(); };
     QCOMPARE(text(0, M::kFrequency), QString("1"));
-    QCOMPARE(text(0, M::kAngle), QString("-10.00 … 10.00 (±10)"));
+    QCOMPARE(text(0, M::kAngle), QString("±10.00"));
     QCOMPARE(text(0, M::kRate), QString("62.83 / 400"));
     QCOMPARE(text(0, M::kAccel), QString("394.8 / 3000"));
     QCOMPARE(motion->flaggedCells(), 0);

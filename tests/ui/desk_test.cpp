@@ -9,6 +9,7 @@
 #include <QAbstractButton>
 #include <QApplication>
 #include <QComboBox>
+#include <QDockWidget>
 #include <QFontMetrics>
 #include <QGroupBox>
 #include <QHeaderView>
@@ -16,7 +17,9 @@
 #include <QMessageBox>
 #include <QRegularExpression>
 #include <QScreen>
+#include <QScrollArea>
 #include <QScrollBar>
+#include <QSplitter>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QStatusBar>
@@ -26,16 +29,22 @@
 #include <QTextDocument>
 #include <QtTest>
 #include <memory>
+#include <qwt_abstract_legend.h>
 #include <qwt_plot.h>
 #include <qwt_scale_widget.h>
 #include <qwt_text.h>
 
 #include "core/acquisition/acquisition.h"
 #include "core/acquisition/simulator_source.h"
+#include "core/common/test_plan.h"
 #include "ui/language/language.h"
+#include "ui/bode_view.h"
+#include "ui/compare_view.h"
 #include "ui/diagnosis_view.h"
 #include "ui/main_window.h"
+#include "ui/plots/series_plot.h"
 #include "ui/result_view.h"
+#include "ui/table_panel.h"
 
 using fog::ui::MainWindow;
 
@@ -73,6 +82,34 @@ QString plainText(const QString& maybeRich) {
 QRect inWindow(const QWidget* w) { return QRect(w->mapTo(w->window(), QPoint(0, 0)), w->size()); }
 
 bool related(const QWidget* a, const QWidget* b) { return a->isAncestorOf(b) || b->isAncestorOf(a); }
+
+// What makes a table unreadable (issue 41): it scrolls sideways, a column is
+// narrower than its header's text (a one-character Check column), or a row
+// is taller than three lines (a wrapped text in a squeezed column).
+QStringList tableFaults(const QTableWidget* t) {
+  QStringList out;
+  // (in pixels: the scroll bar counts columns in a table's default mode)
+  if (const int cut = t->horizontalHeader()->length() - t->viewport()->width(); cut > 0)
+    out << QString("%1 is %2 px wider than its view (it scrolls sideways)").arg(t->objectName()).arg(cut);
+  const QFontMetrics fm(t->font());
+  for (int c = 0; c < t->columnCount(); ++c) {
+    const auto* h = t->horizontalHeaderItem(c);
+    if (t->isColumnHidden(c) || !h) continue;
+    int need = 0;  // the header's widest line
+    for (const QString& line : h->text().split('\n'))
+      need = std::max(need, QFontMetrics(t->horizontalHeader()->font()).horizontalAdvance(line));
+    if (t->columnWidth(c) < need)
+      out << QString("%1's column '%2' is %3 px, its header %4 px").arg(t->objectName(), h->text())
+                 .arg(t->columnWidth(c)).arg(need);
+  }
+  for (int r = 0; r < t->rowCount(); ++r)
+    if (t->rowHeight(r) > 3 * fm.lineSpacing() + 12)
+      out << QString("%1's row %2 is %3 px tall").arg(t->objectName()).arg(r + 1).arg(t->rowHeight(r));
+  return out;
+}
+
+// A widget inside `outer` (both in window coordinates): none of it cut.
+bool within(const QWidget* w, const QWidget* outer) { return inWindow(outer).contains(inWindow(w)); }
 
 }  // namespace
 
@@ -128,6 +165,25 @@ class DeskTest : public QObject {
     fog::acquisition::AcquisitionOptions options;
     options.sessionPath = dir_.filePath("desk.fbs").toStdString();
     options.info.plan = plan;
+    QVERIFY(fog::acquisition::acquire(**source, options, nullptr).isOk());
+    // A second to compare it with, and a short frequency response (8 points,
+    // a 2-ms first-order lag) whose model table has notes.
+    source = fog::acquisition::SimulatorSource::create(fog::model::SimConfig{}, plan, 0.0);
+    QVERIFY(source.isOk());
+    options.sessionPath = dir_.filePath("desk-b.fbs").toStdString();
+    QVERIFY(fog::acquisition::acquire(**source, options, nullptr).isOk());
+    fog::ResponsePlanOptions ro;
+    ro.lowestHz = 0.5;
+    ro.frequencies = 8;
+    ro.minDurationS = 3.0;
+    const auto responsePlan = fog::responsePlan(fog::TurntableLimits{}, ro);
+    QVERIFY(responsePlan.isOk());
+    fog::model::SimConfig lagged;
+    lagged.fog.rateFilterTimeConstantS = 2e-3;
+    source = fog::acquisition::SimulatorSource::create(lagged, *responsePlan, 0.0);
+    QVERIFY(source.isOk());
+    options.sessionPath = dir_.filePath("response.fbs").toStdString();
+    options.info.plan = *responsePlan;
     QVERIFY(fog::acquisition::acquire(**source, options, nullptr).isOk());
 
     w_ = std::make_unique<MainWindow>();
@@ -252,6 +308,127 @@ class DeskTest : public QObject {
           problems << QString("English '%1' in '%2' (%3)").arg(left.join("', '"), text, widget->objectName());
     problems.removeDuplicates();
     QVERIFY2(problems.isEmpty(), qPrintable(problems.join("\n")));
+  }
+
+  // Configure: the plan's and the commanded motion's tables read without
+  // scrolling sideways, every column as wide as its header, no row taller
+  // than three lines, and the view itself does not scroll sideways; the
+  // same with the table panel docked beside it, whose buttons and messages
+  // are all inside the dock.
+  void configureIsReadable_data() {
+    QTest::addColumn<bool>("docked");
+    QTest::newRow("alone") << false;
+    QTest::newRow("table panel docked") << true;
+  }
+  void configureIsReadable() {
+    QFETCH(bool, docked);
+    auto* dock = w_->findChild<QDockWidget*>("tableDock");
+    QVERIFY(dock);
+    dock->setVisible(docked);
+    w_->showView(MainWindow::kConfigure);
+    settle();
+    QStringList problems;
+    for (const char* name : {"planTable", "commandedMotionTable"}) {
+      auto* t = w_->findChild<QTableWidget*>(name);
+      QVERIFY2(t && t->isVisible(), name);
+      problems << tableFaults(t);
+      for (QWidget* p = t; p; p = p->parentWidget())
+        if (auto* area = qobject_cast<QScrollArea*>(p); area && area->horizontalScrollBar()->maximum() > 0)
+          problems << QString("the view scrolls sideways by %1 px").arg(area->horizontalScrollBar()->maximum());
+    }
+    if (docked) {
+      for (auto* b : w_->tablePanel()->findChildren<QAbstractButton*>())
+        if (b->isVisible() && !within(b, dock))
+          problems << QString("the table panel's '%1' is cut by the dock's edge").arg(b->text());
+      for (auto* l : w_->tablePanel()->findChildren<QLabel*>())
+        if (l->isVisible() && !l->text().isEmpty() &&
+            (!within(l, dock) || (!l->wordWrap() && l->sizeHint().width() > l->width())))
+          problems << QString("the table panel's '%1' is clipped").arg(plainText(l->text()));
+    }
+    dock->hide();
+    problems.removeDuplicates();
+    QVERIFY2(problems.isEmpty(), qPrintable(problems.join("\n")));
+  }
+
+  // Results: the zero-crossing plot keeps a readable canvas and its whole
+  // legend, also after a divider remembered from a larger screen squeezed it.
+  void theZeroCrossingPlotStaysReadable() {
+    w_->showView(MainWindow::kResults);
+    settle();
+    auto* right = w_->findChild<QSplitter*>("resultRightSplitter");
+    QVERIFY(right);
+    for (int squeezed = 0; squeezed < 2; ++squeezed) {
+      if (squeezed) {
+        right->setSizes({2000, 2000, 1});
+        settle();
+      }
+      auto* plot = w_->resultView()->zeroCrossingPlot();
+      QVERIFY(plot->isVisible());
+      QVERIFY2(plot->canvas()->height() >= 120,
+               qPrintable(QString("%1: its canvas is %2 px tall").arg(squeezed ? "squeezed" : "as laid out")
+                              .arg(plot->canvas()->height())));
+      QWidget* legend = plot->legend();
+      QVERIFY(legend && legend->isVisible());
+      QVERIFY2(legend->width() >= legend->sizeHint().width() && legend->height() >= legend->sizeHint().height(),
+               qPrintable(QString("%1: the legend is %2x%3 px, it needs %4x%5")
+                              .arg(squeezed ? "squeezed" : "as laid out")
+                              .arg(legend->width()).arg(legend->height())
+                              .arg(legend->sizeHint().width()).arg(legend->sizeHint().height())));
+    }
+  }
+
+  // Compare: the window with its frame on the screen.
+  void compareFitsTheScreen() {
+    QWidget* compare = w_->compareSessions({dir_.filePath("desk.fbs"), dir_.filePath("desk-b.fbs")});
+    auto* view = compare->findChild<fog::ui::CompareView*>();
+    QVERIFY(view);
+    QSignalSpy loaded(view, &fog::ui::CompareView::loaded);
+    QVERIFY(QTest::qWaitForWindowExposed(compare));
+    QTRY_VERIFY_WITH_TIMEOUT(!loaded.isEmpty(), 30000);
+    QTRY_VERIFY_WITH_TIMEOUT(compare->frameGeometry().height() > compare->geometry().height(), 5000);
+    settle();
+    const QRect screen = compare->screen()->availableGeometry();
+    const QRect frame = compare->frameGeometry();
+    compare->close();
+    QVERIFY2(screen.contains(frame), qPrintable(QString("Compare with its frame %1,%2 %3x%4 on a %5x%6 screen")
+                                                   .arg(frame.x()).arg(frame.y()).arg(frame.width())
+                                                   .arg(frame.height()).arg(screen.width()).arg(screen.height())));
+  }
+
+  // The response's model table: its notes column is shortened to the room
+  // the other columns leave (never a long sideways scroll for a note), each
+  // note whole in its tooltip.
+  void theModelTableShortensItsNotes() {
+    QSignalSpy opened(w_.get(), &MainWindow::sessionOpened);
+    w_->openSession(dir_.filePath("response.fbs"));
+    QTRY_VERIFY_WITH_TIMEOUT(!opened.isEmpty(), 30000);
+    QVERIFY(opened.front().front().toBool());
+    w_->showView(MainWindow::kResults);
+    w_->resultView()->leftTabs()->setCurrentWidget(w_->resultView()->bodeView());
+    settle();
+    QTableWidget* t = w_->resultView()->bodeView()->modelTable();
+    QVERIFY(t->isVisible());
+    QVERIFY(t->rowCount() >= 3);
+    const int notes = t->columnCount() - 1;
+    int others = 0;
+    for (int c = 0; c < notes; ++c) others += t->columnWidth(c);
+    const int header = t->horizontalHeader()->sectionSizeHint(notes);
+    const int room = std::max(t->viewport()->width() - others, header);
+    QVERIFY2(t->columnWidth(notes) <= room,
+             qPrintable(QString("the notes column is %1 px where %2 px are left").arg(t->columnWidth(notes)).arg(room)));
+    bool anyNote = false;
+    for (int r = 0; r < t->rowCount(); ++r)
+      if (auto* item = t->item(r, notes); item && !item->text().isEmpty()) {
+        anyNote = true;
+        QVERIFY2(plainText(item->toolTip()).remove(' ').contains(QString(item->text()).remove(' ').left(20)),
+                 qPrintable("a note's tooltip lacks it: " + item->text()));
+      }
+    QVERIFY(anyNote);
+    // Back to the recorded session the other cases look at.
+    QSignalSpy back(w_.get(), &MainWindow::sessionOpened);
+    w_->openSession(dir_.filePath("desk.fbs"));
+    QTRY_VERIFY_WITH_TIMEOUT(!back.isEmpty(), 30000);
+    w_->resultView()->leftTabs()->setCurrentIndex(0);
   }
 
   // Qt's own dialog words (message boxes, file dialogs) in the language.
