@@ -460,6 +460,8 @@ const char* const kTemplates[] = {
     QT_TRANSLATE_NOOP("core_text", "%1 = %2 ± %3 ms is negative beyond 3 sigma: the gyro would answer before the table moves"),
     QT_TRANSLATE_NOOP("core_text", "%1 = %2 ± %3 ms is negative beyond 3 sigma: a lead, not a lag"),
     QT_TRANSLATE_NOOP("core_text", "the low-frequency delay %1 ± %2 ms is negative beyond 3 sigma: the gyro would answer before the table moves"),
+    QT_TRANSLATE_NOOP("core_text", "%1 = %2 ± %3 ms is below -%4 ms (minus the table read delay) beyond 3 sigma: the gyro would answer before the table moves"),
+    QT_TRANSLATE_NOOP("core_text", "the low-frequency delay %1 ± %2 ms is below -%3 ms (minus the table read delay) beyond 3 sigma: the gyro would answer before the table moves"),
     QT_TRANSLATE_NOOP("core_text", "%1 = %2 ± %3 sits at its bound 0 within 3 sigma: the points do not place the resonance"),
     QT_TRANSLATE_NOOP("core_text", "the fit ran past zeta = 0: its poles are unstable (a lead that grows to the resonance)"),
     QT_TRANSLATE_NOOP("core_text", "the pure delay"),

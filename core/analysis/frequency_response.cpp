@@ -218,19 +218,28 @@ std::vector<Eigen::VectorXd> startingPoints(ResponseModelKind kind, const std::v
 
 // The model's goodness of fit and physical admissibility (docs/method.md
 // "Frequency response"): adequate when P(chi^2_dof >= chi^2) >= kModelAdequacyP;
-// not admissible, with the reason, when a delay, a time constant or the
-// low-frequency delay is negative beyond 3 sigma, or a second order's zeta or f_n sits at its bound 0 (within
-// 3 sigma of it, or the fit ran past it: `unstable`).
-void judgeModel(ResponseModelFit& fit, bool unstable) {
+// not admissible, with the reason, when the IMU's delay tau + d (d the table
+// read delay: tau is the lag behind the stamped angle) or the low-frequency
+// delay + d is negative beyond 3 sigma, a time constant is negative beyond 3
+// sigma, or a second order's zeta or f_n sits at its bound 0 (within 3 sigma
+// of it, or the fit ran past it: `unstable`).
+void judgeModel(ResponseModelFit& fit, bool unstable, double readDelayMs) {
   fit.pValue = fit.dof > 0 ? chiSquareSurvival(fit.chiSquare, fit.dof) : 1.0;
   fit.adequate = fit.pValue >= kModelAdequacyP;
   auto valueText = [](const ResponseParameter& p, const char* unit) {
     return p.name + " = " + fmt(p.value, 4) + " ± " + fmt(p.stdDev, 2) + unit;
   };
+  // Below -d beyond 3 sigma: said as the bench has always said it when d is
+  // 0, and with d named otherwise.
+  auto belowFloor = [readDelayMs](const std::string& what) {
+    return readDelayMs == 0.0 ? what + " is negative beyond 3 sigma: the gyro would answer before the table moves"
+                              : what + " is below -" + fmt(readDelayMs, 4) +
+                                    " ms (minus the table read delay) beyond 3 sigma: the gyro would answer before "
+                                    "the table moves";
+  };
   for (const auto& p : fit.parameters) {
-    if (p.name == "tau_ms" && p.value + 3.0 * p.stdDev < 0.0)
-      fit.inadmissible.push_back(valueText(p, " ms") +
-                                 " is negative beyond 3 sigma: the gyro would answer before the table moves");
+    if (p.name == "tau_ms" && p.value + readDelayMs + 3.0 * p.stdDev < 0.0)
+      fit.inadmissible.push_back(belowFloor(valueText(p, " ms")));
     if (p.name == "T_ms" && p.value + 3.0 * p.stdDev < 0.0)
       fit.inadmissible.push_back(valueText(p, " ms") + " is negative beyond 3 sigma: a lead, not a lag");
     if ((p.name == "zeta" || p.name == "fn_hz") && !(p.value - 3.0 * p.stdDev > 0.0))
@@ -241,9 +250,9 @@ void judgeModel(ResponseModelFit& fit, bool unstable) {
   // short: each alone may be vague while their sum, the low-frequency delay,
   // is sharp. A negative sum is the gyro ahead of the table as much.
   const DerivedValue& low = fit.lowFrequencyDelayMs;
-  if (fit.kind != ResponseModelKind::kDelay && low.value + 3.0 * low.stdDev < 0.0)
-    fit.inadmissible.push_back("the low-frequency delay " + fmt(low.value, 4) + " ± " + fmt(low.stdDev, 2) +
-                               " ms is negative beyond 3 sigma: the gyro would answer before the table moves");
+  if (fit.kind != ResponseModelKind::kDelay && low.value + readDelayMs + 3.0 * low.stdDev < 0.0)
+    fit.inadmissible.push_back(belowFloor("the low-frequency delay " + fmt(low.value, 4) + " ± " + fmt(low.stdDev, 2) +
+                                          " ms"));
   if (unstable)
     fit.inadmissible.push_back("the fit ran past zeta = 0: its poles are unstable (a lead that grows to the resonance)");
 }
@@ -263,7 +272,7 @@ LeastSquaresSolution toNatural(LeastSquaresSolution s) {
 }
 
 Result<ResponseModelFit> fitModel(ResponseModelKind kind, const std::vector<ResponsePoint>& points,
-                                  double groupDelayAtHz) {
+                                  double groupDelayAtHz, double readDelayMs) {
   const ResponseProblem problem(kind, points);
   std::optional<LeastSquaresSolution> best;
   Status lastError = Status::ok();
@@ -292,7 +301,7 @@ Result<ResponseModelFit> fitModel(ResponseModelKind kind, const std::vector<Resp
   if (kind == ResponseModelKind::kSecondOrder) {
     const ResponseProblem polynomial(kind, points, true);
     const Eigen::VectorXd half = startingPoints(ResponseModelKind::kFirstOrder, points)[1];  // (K, tau/2, tau/2)
-    for (const Eigen::Vector4d x0 : {Eigen::Vector4d(half[0], half[1] + half[2], 0.0, 0.0),
+    for (const Eigen::Vector4d& x0 : {Eigen::Vector4d(half[0], half[1] + half[2], 0.0, 0.0),
                                      Eigen::Vector4d(half[0], half[1], half[2], 0.0)}) {
       ++starts;
       auto sol = solveLeastSquares(polynomial, x0);
@@ -377,7 +386,7 @@ Result<ResponseModelFit> fitModel(ResponseModelKind kind, const std::vector<Resp
     if (names[i] != "tau_ms" && std::abs(x[i]) < 2.0 * fit.parameters[i].stdDev)
       fit.notes.push_back(names[i] + " = " + fmt(x[i], 4) + " ± " + fmt(fit.parameters[i].stdDev, 2) +
                           " is not distinguished from 0 by these points");
-  judgeModel(fit, unstable);
+  judgeModel(fit, unstable, readDelayMs);
   return fit;
 }
 
@@ -515,7 +524,8 @@ CertifiedPhase certifiedPhase(const ResponsePoint& p, const ResponseAnalysis& r)
   return certifiedPhase(p, r.tableReadDelayMs, r.tableReadDelayStdMs);
 }
 
-Result<ResponseAnalysis> analyzeResponse(std::vector<ResponsePoint> points, Axis axis, double groupDelayAtHz) {
+Result<ResponseAnalysis> analyzeResponse(std::vector<ResponsePoint> points, Axis axis, double groupDelayAtHz,
+                                         double tableReadDelayMs) {
   if (!(groupDelayAtHz > 0.0 && groupDelayAtHz <= kMaxGroupDelayAtHz))
     return invalidArgument("the group delay's frequency must be in (0, " +
                            std::to_string(static_cast<int>(kMaxGroupDelayAtHz)) + "] Hz, got " +
@@ -533,6 +543,7 @@ Result<ResponseAnalysis> analyzeResponse(std::vector<ResponsePoint> points, Axis
   ResponseAnalysis out;
   out.axis = axis;
   out.points = std::move(points);
+  out.tableReadDelayMs = tableReadDelayMs;
   out.groupDelayAtHz = groupDelayAtHz;
   const int n = 2 * static_cast<int>(out.points.size());
   for (auto kind : {ResponseModelKind::kDelay, ResponseModelKind::kFirstOrder, ResponseModelKind::kSecondOrder}) {
@@ -543,7 +554,7 @@ Result<ResponseAnalysis> analyzeResponse(std::vector<ResponsePoint> points, Axis
                             std::to_string(out.points.size()) + " points give " + std::to_string(n));
       continue;
     }
-    auto fit = fitModel(kind, out.points, groupDelayAtHz);
+    auto fit = fitModel(kind, out.points, groupDelayAtHz, tableReadDelayMs);
     if (!fit) {
       out.skipped.push_back(fit.status().message());
       continue;
@@ -559,9 +570,9 @@ std::vector<ResponseAnalysis> analyzeResponses(const DelayReport& report, double
   for (int a = 0; a < kAxisCount; ++a) {
     auto points = responsePoints(report, static_cast<Axis>(a));
     if (points.size() < 2) continue;
-    auto r = analyzeResponse(std::move(points), static_cast<Axis>(a), groupDelayAtHz);
+    auto r = analyzeResponse(std::move(points), static_cast<Axis>(a), groupDelayAtHz,
+                             report.constants.tableReadDelayMs);
     if (!r) continue;
-    r->tableReadDelayMs = report.constants.tableReadDelayMs;
     r->tableReadDelayStdMs = report.constants.tableReadDelayStdMs;
     for (const auto& tp : report.points) {
       if (tp.axis != static_cast<Axis>(a) || passedItsChecks(tp)) continue;

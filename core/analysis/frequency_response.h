@@ -175,7 +175,14 @@ inline constexpr double kModelAdequacyP = 1e-3;
 // a point without a positive magnitude and positive uncertainties.
 // Uncertainties: the inverse of the weighted normal matrix, raised by
 // sqrt(chi^2/dof) when that exceeds 1 (the points scatter more than stated).
-Result<ResponseAnalysis> analyzeResponse(std::vector<ResponsePoint> points, Axis axis, double groupDelayAtHz);
+// tableReadDelayMs: the bench constant d the points' phase is measured
+// against (the stamped table angle is d late), kept in the result. It sets
+// what is physical: tau is the lag behind the stamped angle, so the IMU's
+// own delay is tau + d, and a model is not admissible when tau + d (or the
+// low-frequency delay + d) is negative beyond 3 sigma; a negative tau above
+// -d is a gyro faster than the table's read-out, not a lead.
+Result<ResponseAnalysis> analyzeResponse(std::vector<ResponsePoint> points, Axis axis, double groupDelayAtHz,
+                                         double tableReadDelayMs = 0.0);
 
 // The frequency at which the views (CLI without --at-hz, GUI, report) give
 // the model's group delay.

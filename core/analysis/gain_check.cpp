@@ -88,7 +88,9 @@ void addGainChecks(DelayReport& report, double toleranceFraction) {
     // delay still describes how the gain falls or rises to well within the
     // tolerance, and a scale error is K, which is taken out either way.
     if (spans)
-      if (auto response = analyzeResponse(std::move(points), axis, kDefaultGroupDelayAtHz); response) {
+      if (auto response = analyzeResponse(std::move(points), axis, kDefaultGroupDelayAtHz,
+                                                report.constants.tableReadDelayMs);
+          response) {
         if (response->chosen >= 0) {
           chosen = response->models[static_cast<std::size_t>(response->chosen)];
         } else {

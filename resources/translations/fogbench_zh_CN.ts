@@ -977,7 +977,7 @@
 <context>
     <name>fog::ui::ConfigureView</name>
     <message>
-        <location filename="../../ui/configure_view.cpp" line="+160"/>
+        <location filename="../../ui/configure_view.cpp" line="+157"/>
         <source>Test plan</source>
         <translation>测试计划</translation>
     </message>
@@ -8392,6 +8392,16 @@ result analysed %2</source>
         <location line="+1"/>
         <source>the low-frequency delay %1 ± %2 ms is negative beyond 3 sigma: the gyro would answer before the table moves</source>
         <translation>低频延迟 %1 ± %2 ms 为负且超出 3σ：陀螺将在转台运动之前响应</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 = %2 ± %3 ms is below -%4 ms (minus the table read delay) beyond 3 sigma: the gyro would answer before the table moves</source>
+        <translation>%1 = %2 ± %3 ms 低于 -%4 ms（负的转台读数延迟）且超出 3σ：陀螺将在转台运动之前响应</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the low-frequency delay %1 ± %2 ms is below -%3 ms (minus the table read delay) beyond 3 sigma: the gyro would answer before the table moves</source>
+        <translation>低频延迟 %1 ± %2 ms 低于 -%3 ms（负的转台读数延迟）且超出 3σ：陀螺将在转台运动之前响应</translation>
     </message>
     <message>
         <location line="+1"/>

@@ -593,6 +593,30 @@ TEST(ResponseModelJudgement, ANegativeDelayIsNotAdmissible) {
   EXPECT_EQ(chosenModel(*good).kind, ResponseModelKind::kDelay);
 }
 
+// The same -0.05-ms lag behind a table read 0.2 ms late: the IMU's own delay
+// is +0.15 ms, a gyro faster than the table's read-out, so the delay is
+// admissible and chosen (the independent sweep found two such trials, lag
+// -0.0007 and -0.016 ms behind read delays of 0.29 and 0.27 ms, refused as
+// "negative"); behind a read delay of 0.02 ms the IMU's delay is -0.03 ms,
+// not admissible, and the reason names the read delay.
+TEST(ResponseModelJudgement, ANegativeLagAboveMinusTheReadDelayIsAdmissible) {
+  std::mt19937_64 rng(9);
+  const auto r = analyzeResponse(noisyPoints(rng, 0.0, -0.05), Axis::kX, 5.0, 0.2);
+  ASSERT_TRUE(r.isOk()) << r.status().message();
+  EXPECT_DOUBLE_EQ(r->tableReadDelayMs, 0.2);
+  EXPECT_TRUE(model(*r, ResponseModelKind::kDelay).admissible()) << model(*r, ResponseModelKind::kDelay).inadmissible.front();
+  ASSERT_GE(r->chosen, 0) << r->noModelReason;
+  EXPECT_EQ(chosenModel(*r).kind, ResponseModelKind::kDelay);
+  std::mt19937_64 again(9);
+  const auto late = analyzeResponse(noisyPoints(again, 0.0, -0.05), Axis::kX, 5.0, 0.02);
+  ASSERT_TRUE(late.isOk());
+  const auto& delay = model(*late, ResponseModelKind::kDelay);
+  ASSERT_FALSE(delay.admissible());
+  EXPECT_TRUE(mentions(delay.inadmissible.front(), "is below -0.02 ms (minus the table read delay) beyond 3 sigma"))
+      << delay.inadmissible.front();
+  EXPECT_EQ(late->chosen, -1);
+}
+
 // An undamped 40-Hz resonance (zeta = 0) behind a 0.5-ms delay, twelve points
 // 0.5-11 Hz: the delay and the first order miss the magnitude rise (8 % at
 // 11 Hz, 10^4 sigma); the second order fits it with zeta at its bound 0, is
