@@ -117,6 +117,13 @@ HF_PLAN = [(12.5, 0.057, 1.0, 10.0), (20.0, 0.057, 1.0, 10.0)]
 def plan_points(name):
     if name == "hf20":
         return list(HF_PLAN)
+    if name == "sweep20-top":
+        # The sweep's two highest points (15.7 and 20 Hz), for a quick look at its top end.
+        return response_plan(lowest_hz=0.2, min_amp=0.15)[-2:]
+    if name == "sweep20":
+        # Issue 40's acceptance sweep: 20 log-spaced points 0.2-20 Hz, the amplitudes the default
+        # table allows at 80 % (0.151 deg at 20 Hz, where the acceleration limit binds).
+        return response_plan(lowest_hz=0.2, min_amp=0.15)
     pts = response_plan()
     return pts if name == "full" else pts[8:]
 
@@ -125,7 +132,7 @@ def loguni(rng, lo, hi):
     return float(math.exp(rng.uniform(math.log(lo), math.log(hi))))
 
 
-def draw(case, i, seed, plan, fine_hz, settle_s=0.0, timing="incommensurate", encoder_arcsec=None):
+def draw(case, i, seed, plan, fine_hz, settle_s=0.0, timing="incommensurate", encoder_arcsec=None, arw=None):
     """One trial: (refgen parameters, what was drawn). timing "commensurate": exact 1-ms / 2-ms
     stamps and no table frequency error (every period samples the same phases), each point's start
     phase drawn; encoder_arcsec: the encoder quantum instead of a drawn one."""
@@ -152,6 +159,8 @@ def draw(case, i, seed, plan, fine_hz, settle_s=0.0, timing="incommensurate", en
             sg["start_phase_deg"] = float(rng.uniform(0.0, 360.0))
     if encoder_arcsec is not None:
         p["encoder_arcsec"] = float(encoder_arcsec)
+    if arw is not None:
+        p["arw_deg_sqrt_h"] = float(arw)
     jit = float(rng.uniform(0.9, 1.1))
     if case == "first_order":
         p["lag_tau_ms"] = 2.0 * jit
@@ -317,7 +326,7 @@ def main(argv=None):
     ap.add_argument("--trials", type=int, default=50, help="per case (default 50)")
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--jobs", type=int, default=2)
-    ap.add_argument("--plan", choices=["full", "short", "hf20"], default="full",
+    ap.add_argument("--plan", choices=["full", "short", "hf20", "sweep20", "sweep20-top"], default="full",
                     help="full: the response preset's 20 points; short: its 12 highest; hf20: 12.5 and 20 Hz at "
                     "0.057 deg, 10 s each (issue 40's repeating quantisation, with --timing commensurate)")
     ap.add_argument("--timing", choices=["incommensurate", "commensurate"], default="incommensurate",
@@ -327,6 +336,13 @@ def main(argv=None):
     ap.add_argument("--point-z-range", type=float, nargs=2, default=None,
                     help="target: the rms z of every point's magnitude and, apart, of its phase against the "
                     "generated response, pooled over points and trials, within this range (default: not asserted)")
+    ap.add_argument("--arw", type=float, default=None,
+                    help="the angle random walk of every trial, deg/sqrt(h) (default: drawn 0.002-0.01 log-uniform)")
+    ap.add_argument("--point-std-z-range", type=float, nargs=2, default=None,
+                    help="assert std(z) of the magnitude and of the phase at each frequency, every case pooled, "
+                    "within LO HI (issue 40: 0.85 1.15)")
+    ap.add_argument("--point-min-within-3", type=float, default=None,
+                    help="assert the share of points within 3 sigma at each frequency (issue 40: 0.98)")
     ap.add_argument("--point-max-abs-z", type=float, default=None,
                     help="target: every point's |z| of magnitude and phase at most this (default: none)")
     ap.add_argument("--fine-hz", type=float, default=100000.0, help="refgen's fine grid (default 100 kHz)")
@@ -366,7 +382,7 @@ def main(argv=None):
     for i in range(a.trials):
         for c in cases:
             if only is None or i in only:
-                p, drawn = draw(c, i, a.seed, a.plan, a.fine_hz, a.settle_s, a.timing, a.encoder_arcsec)
+                p, drawn = draw(c, i, a.seed, a.plan, a.fine_hz, a.settle_s, a.timing, a.encoder_arcsec, a.arw)
                 jobs.append((c, i, p, drawn, os.path.abspath(a.cli), workdir, bool(a.keep)))
     t0 = time.perf_counter()
     recs = []
@@ -443,18 +459,30 @@ def main(argv=None):
     # Every point's magnitude and phase against the generated response (issue 40: the gain's sigma).
     pz = [(r["case"], q) for r in recs if "error" not in r for q in r.get("point_z", [])]
     if pz:
-        print("  points against the generated response (rms z over trials; |z| max):")
+        print("  points against the generated response, every case pooled (rms z, std(z), |z| max, "
+              "share within 3 sigma):")
         for f in sorted({round(q["frequency_hz"], 1) for _, q in pz}):
             at = [q for _, q in pz if round(q["frequency_hz"], 1) == f]
-            zm = np.array([q["magnitude"] for q in at])
-            zp = np.array([q["phase"] for q in at])
-            print("    %7.3f Hz: magnitude %.2f (%.1f), phase %.2f (%.1f), %d values" % (
-                f, math.sqrt(np.mean(zm ** 2)), np.max(np.abs(zm)), math.sqrt(np.mean(zp ** 2)),
-                np.max(np.abs(zp)), zm.size))
+            line = "    %7.3f Hz:" % f
+            for name in ("magnitude", "phase"):
+                z = np.array([q[name] for q in at])
+                sd = float(np.std(z, ddof=1)) if z.size > 1 else float("nan")
+                w3 = float(np.mean(np.abs(z) <= 3))
+                line += " %s %.2f, std %.2f (%.1f), %.0f %%;" % (name, math.sqrt(np.mean(z ** 2)), sd,
+                                                                np.max(np.abs(z)), 100 * w3)
+                if a.point_std_z_range is not None and not (a.point_std_z_range[0] <= sd
+                                                            <= a.point_std_z_range[1]):
+                    ok = False
+                    line += " MISS std(z) outside %.2f-%.2f;" % tuple(a.point_std_z_range)
+                if a.point_min_within_3 is not None and w3 < a.point_min_within_3:
+                    ok = False
+                    line += " MISS |z| <= 3 below %.0f %%;" % (100 * a.point_min_within_3)
+            print(line + " %d values" % len(at))
         zm = np.array([q["magnitude"] for _, q in pz])
         zp = np.array([q["phase"] for _, q in pz])
         rm, rp = math.sqrt(np.mean(zm ** 2)), math.sqrt(np.mean(zp ** 2))
-        print("    all: magnitude %.2f, phase %.2f over %d points" % (rm, rp, zm.size))
+        print("    all: magnitude %.2f, phase %.2f over %d points; within 3 sigma %.1f %% / %.1f %%" % (
+            rm, rp, zm.size, 100 * np.mean(np.abs(zm) <= 3), 100 * np.mean(np.abs(zp) <= 3)))
         if a.point_z_range is not None:
             for name, v in (("magnitude", rm), ("phase", rp)):
                 if not (a.point_z_range[0] <= v <= a.point_z_range[1]):
