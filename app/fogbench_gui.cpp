@@ -113,12 +113,13 @@ int main(int argc, char* argv[]) {
         return 0;
       }
 
-  QApplication app(argc, argv);
-  nameApplication();
   // --language overrides the remembered choice for this run (tests, screenshots).
+  nameApplication();
   QString language = fog::ui::languageSetting();
   for (int i = 1; i + 1 < argc; ++i)
     if (QString(argv[i]) == "--language") language = argv[i + 1];
+  fog::ui::setSystemTimeLocaleFor(language);  // before the application object
+  QApplication app(argc, argv);
   fog::ui::installTranslations(app, language);
 
   QCommandLineParser parser;

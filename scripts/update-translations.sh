@@ -21,6 +21,8 @@ for ts in resources/translations/*.ts; do
   # (its complaint about every such context is expected and dropped)
   "$lupdate" -silent -no-obsolete -locations relative ui app/fogbench_gui.cpp -ts "$ts" 2>&1 |
     { grep -v 'Qualifying with unknown namespace/class' || true; } >&2
-  sed -i -E 's#<name>([A-Z][A-Za-z]+)</name>#<name>fog::ui::\1</name>#; s#<name>fog::ui::QObject</name>#<name>QObject</name>#' "$ts"
+  # Qt's own contexts (QObject, QAbstractFileIconProvider: words of Qt's
+  # dialogs ours carries) stay unqualified.
+  sed -i -E 's#<name>([A-Z][A-Za-z]+)</name>#<name>fog::ui::\1</name>#; s#<name>fog::ui::(Q[A-Z][A-Za-z]+)</name>#<name>\1</name>#' "$ts"
   echo "$ts: $(grep -c '<source>' "$ts") strings, $(grep -c 'type="unfinished"' "$ts" || true) unfinished"
 done

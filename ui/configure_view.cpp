@@ -2,21 +2,21 @@
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QEvent>
 #include <QFileDialog>
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
+#include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSpinBox>
 #include <QSplitter>
-#include <QTimer>
-#include <algorithm>
 #include <QTableWidget>
-#include <QHeaderView>
-#include <QEvent>
+#include <QTimer>
 #include <QVBoxLayout>
+#include <algorithm>
 #include <limits>
 
 #include "core/common/gyro_signs.h"
@@ -29,7 +29,8 @@ namespace fog::ui {
 
 ConfigureView::ConfigureView(QWidget* parent) : QWidget(parent) {
   auto* layout = new QHBoxLayout(this);
-  // The plan and the rest side by side; the operator moves the divider.
+  // The plan and the rest side by side, the operator moving the divider;
+  // one above the other where the room is too narrow (fitLayout).
   auto* split = split_ = new QSplitter(Qt::Horizontal);
   split->setObjectName("configureSplitter");
   split->setChildrenCollapsible(false);
@@ -52,11 +53,8 @@ ConfigureView::ConfigureView(QWidget* parent) : QWidget(parent) {
   split->setStretchFactor(0, 3);
   split->setStretchFactor(1, 2);
   connect(this, &ConfigureView::sourceChanged, this, &ConfigureView::applyTableLimits);
-  // A plan of wider points may need the room beside it.
-  connect(planEditor_, &PlanEditor::planChanged, this, [this] {
-    horizontalNeeds_ = 0;  // learnt again for the new plan's widths
-    fitLayoutLater();
-  });
+  // A plan of wider or narrower points may need, or fit, the room beside it.
+  connect(planEditor_, &PlanEditor::planChanged, this, &ConfigureView::fitLayoutLater);
   applyTableLimits();
 }
 
@@ -77,7 +75,8 @@ bool ConfigureView::eventFilter(QObject* watched, QEvent* event) {
   return QWidget::eventFilter(watched, event);
 }
 
-// After the layout has settled: the tables' scroll bars say what is cut.
+// After the layout has settled: the tables' header lengths against their
+// viewports say what is cut.
 void ConfigureView::fitLayoutLater() {
   if (fitPending_) return;
   fitPending_ = true;
@@ -91,8 +90,10 @@ void ConfigureView::fitLayout() {
   if (!watchedRoom_ || !isVisible()) return;
   const int room = watchedRoom_->width();
   QWidget* plan = split_->widget(0);
+  const int planLength = planEditor_->table()->horizontalHeader()->length();
   if (split_->orientation() == Qt::Vertical) {
-    if (room < horizontalNeeds_) return;
+    // (a plan narrower than when the room was learnt may fit beside again)
+    if (room < horizontalNeeds_ && planLength >= planLengthLearnt_) return;
     split_->setOrientation(Qt::Horizontal);
     plan->setMinimumHeight(0);
     fitLayoutLater();
@@ -116,6 +117,7 @@ void ConfigureView::fitLayout() {
   // Too narrow side by side: the plan above the rest, at the height its
   // tables want (the view scrolls down), until the room grows by what was cut.
   horizontalNeeds_ = room + std::max(cut - std::max(spare, 0), viewCut) + 2;
+  planLengthLearnt_ = planLength;
   split_->setOrientation(Qt::Vertical);
   plan->setMinimumHeight(plan->sizeHint().height());
 }

@@ -132,7 +132,8 @@ class ConfigureView : public QWidget {
 
   QSplitter* split_ = nullptr;
   QWidget* watchedRoom_ = nullptr;
-  int horizontalNeeds_ = 0;  // the room side by side needs, learnt when it was too little
+  int horizontalNeeds_ = 0;    // the room side by side needs, learnt when it was too little
+  int planLengthLearnt_ = 0;   // the plan table's width then
   bool fitPending_ = false;
   PlanEditor* planEditor_ = nullptr;
   CommandedMotionTable* commandedMotion_ = nullptr;

@@ -4,6 +4,7 @@
 #include <QRegularExpression>
 #include <QStringList>
 #include <algorithm>
+#include <utility>
 #include <vector>
 
 
@@ -152,6 +153,7 @@ const char* const kTemplates[] = {
     QT_TRANSLATE_NOOP("core_text", "rate random walk"),
     QT_TRANSLATE_NOOP("core_text", "rate ramp"),
     QT_TRANSLATE_NOOP("core_text", "simulator, seed %1, %2"),
+    QT_TRANSLATE_NOOP("core_text", "effect %1=%2"),
     QT_TRANSLATE_NOOP("core_text", "session %1 (%2)"),
     QT_TRANSLATE_NOOP("core_text", "result %1 of %2, stored %3 by %4 (fogbench %5)"),
     QT_TRANSLATE_NOOP("core_text", "acquisition"),
@@ -602,10 +604,23 @@ QString translatePart(const QString& text, int depth) {
 
 }  // namespace
 
+// The response models' parameter keys (the JSON's) as the GUI names them in
+// every language: the symbols.
+static QString displaySymbols(QString text) {
+  static const std::pair<QRegularExpression, QString> kSymbols[] = {
+      {QRegularExpression(QStringLiteral("\\btau_ms\\b")), QStringLiteral("τ")},
+      {QRegularExpression(QStringLiteral("\\bT_ms\\b")), QStringLiteral("T")},
+      {QRegularExpression(QStringLiteral("\\bfn_hz\\b")), QStringLiteral("fₙ")},
+      {QRegularExpression(QStringLiteral("\\bzeta\\b")), QStringLiteral("ζ")},
+  };
+  for (const auto& [pattern, symbol] : kSymbols) text.replace(pattern, symbol);
+  return text;
+}
+
 QString coreText(const QString& english) {
   QStringList lines = english.split(QLatin1Char('\n'));
   for (QString& line : lines) line = translateMessage(line, 0);
-  return displayUnits(lines.join(QLatin1Char('\n')));
+  return displayUnits(displaySymbols(lines.join(QLatin1Char('\n'))));
 }
 
 QString coreText(const std::string& english) { return coreText(QString::fromStdString(english)); }

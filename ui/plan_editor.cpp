@@ -10,9 +10,8 @@
 #include <QSignalBlocker>
 #include <QTableWidget>
 #include <QVBoxLayout>
-#include <cmath>
-
 #include <algorithm>
+#include <cmath>
 
 #include "ui/bench_presets.h"
 #include "ui/core_text.h"

@@ -977,7 +977,7 @@
 <context>
     <name>fog::ui::ConfigureView</name>
     <message>
-        <location filename="../../ui/configure_view.cpp" line="+157"/>
+        <location filename="../../ui/configure_view.cpp" line="+159"/>
         <source>Test plan</source>
         <translation>测试计划</translation>
     </message>
@@ -2816,7 +2816,7 @@ File: %1</source>
 <context>
     <name>fog::ui::PlanEditor</name>
     <message>
-        <location filename="../../ui/plan_editor.cpp" line="+83"/>
+        <location filename="../../ui/plan_editor.cpp" line="+82"/>
         <source>Preset</source>
         <translation>预设</translation>
     </message>
@@ -3054,6 +3054,20 @@ File: %1</source>
         <location line="+1"/>
         <source>B − A: Δ%1 = %2</source>
         <translation>B − A：Δ%1 = %2</translation>
+    </message>
+</context>
+<context>
+    <name>QAbstractFileIconProvider</name>
+    <message>
+        <location filename="../../ui/language/language.cpp" line="+49"/>
+        <source>Folder</source>
+        <comment>All other platforms</comment>
+        <translation>文件夹</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Drive</source>
+        <translation>驱动器</translation>
     </message>
 </context>
 <context>
@@ -6264,7 +6278,7 @@ result analysed %2</source>
 <context>
     <name>core_text</name>
     <message>
-        <location filename="../../ui/core_text.cpp" line="+21"/>
+        <location filename="../../ui/core_text.cpp" line="+22"/>
         <source>table</source>
         <translation>转台</translation>
     </message>
@@ -6934,7 +6948,7 @@ result analysed %2</source>
         <translation>仿真器，种子 %1，%2</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>session %1 (%2)</source>
         <translation>会话 %1（%2）</translation>
     </message>
@@ -7144,7 +7158,12 @@ result analysed %2</source>
         <translation>时长 %1 s 覆盖 %2 个摆动周期，不足两个摆动周期：测量延迟至少需要两个完整周期（%3 s）</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-42"/>
+        <source>effect %1=%2</source>
+        <translation>效应 %1=%2</translation>
+    </message>
+    <message>
+        <location line="+43"/>
         <source>the record covers %1 swing periods, under two swing periods: a delay needs at least two whole periods</source>
         <translation>记录覆盖 %1 个摆动周期，不足两个摆动周期：测量延迟至少需要两个完整周期</translation>
     </message>

@@ -418,6 +418,12 @@ class CoreTextTest : public QObject {
                             "fn_hz = 300 ± 400 Hz sits at its bound 0 within 3 sigma: the points do not place the resonance",
                             "the fit ran past zeta = 0: its poles are unstable (a lead that grows to the resonance)"})
       expectChinese(std::string("the second-order response is not admissible: ") + why);
+    // Behind a stated table read delay (issue 40: tau is the lag behind the stamped angle).
+    for (const char* why : {"tau_ms = -0.35 ± 0.01 ms is below -0.2 ms (minus the table read delay) beyond 3 sigma: "
+                            "the gyro would answer before the table moves",
+                            "the low-frequency delay -0.35 ± 0.01 ms is below -0.2 ms (minus the table read delay) "
+                            "beyond 3 sigma: the gyro would answer before the table moves"})
+      expectChinese(std::string("the first-order lag is not admissible: ") + why);
     for (const char* why : {"the fit did not converge in 50 iterations",
                             "the fit's sums are not finite numbers (a value in the data is far beyond its range)",
                             "the fit's parameters are not determined by the data", "the fit's covariance is not positive"})
@@ -427,6 +433,21 @@ class CoreTextTest : public QObject {
                   "resonance (the first-order lag, T = 1.998 ms, is its limit)");
     expectChinese("second_order: its best fit has 1/wn^2 = -0.182 ms^2, not above 0: the points hold no resonance (a "
                   "magnitude droop without a filter's phase, as an average over about 2.09 ms would give)");
+  }
+
+  // The English GUI and PDF name the models' parameters by the symbols the
+  // Chinese uses, not the JSON's keys (issue 41: "tau_ms and fn_hz
+  // correlate" in the English PDF, "τ 与 fₙ" in the Chinese).
+  void englishNamesParametersBySymbols() {
+    QCOMPARE(ui::installTranslations(*qApp, "en"), QString("en"));
+    const QString note = ui::coreText(
+        "tau_ms and fn_hz correlate at -0.998: the points barely separate them (the low-frequency delay 1.1723 ± "
+        "8.5e-06 ms is better determined than either)");
+    const QString bound = ui::coreText("zeta = 0.0001 ± 0.002 sits at its bound 0 within 3 sigma; T_ms = -0.5 ± 0.01 ms");
+    QCOMPARE(ui::installTranslations(*qApp, "zh_CN"), QString("zh_CN"));
+    QVERIFY2(note.startsWith(QString::fromUtf8("τ and fₙ correlate at -0.998")), qPrintable(note));
+    QVERIFY2(bound.startsWith(QString::fromUtf8("ζ = 0.0001")) && bound.contains("; T = -0.5"), qPrintable(bound));
+    QVERIFY(!note.contains("_ms") && !note.contains("_hz"));
   }
 
   void noiseTermNames() {

@@ -9,7 +9,10 @@
 #include <QAbstractButton>
 #include <QApplication>
 #include <QComboBox>
+#include <QDir>
 #include <QDockWidget>
+#include <QFileDialog>
+#include <QFileSystemModel>
 #include <QFontMetrics>
 #include <QGroupBox>
 #include <QHeaderView>
@@ -442,6 +445,39 @@ class DeskTest : public QObject {
     }
   }
 
+  // Qt's file dialog (its own widgets, as under any desktop without a
+  // platform dialog): the type of a folder and the modification dates in
+  // the language (Qt formats dates with the system locale and names a
+  // folder from a context Debian's Qt 6 translations lack).
+  void qtsFileDialogSpeaksTheLanguage() {
+    QVERIFY(QDir(dir_.path()).mkpath("a folder"));
+    QFileDialog dialog(nullptr, QString(), dir_.path());
+    dialog.setOption(QFileDialog::DontUseNativeDialog);
+    dialog.setViewMode(QFileDialog::Detail);
+    auto* model = dialog.findChild<QFileSystemModel*>();
+    QVERIFY(model);
+    dialog.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&dialog));
+    const QModelIndex root = model->index(dir_.path());
+    QTRY_VERIFY_WITH_TIMEOUT(model->rowCount(root) >= 2, 10000);
+    settle();
+    QStringList problems;
+    bool sawFolder = false;
+    for (int r = 0; r < model->rowCount(root); ++r) {
+      const QString name = model->index(r, 0, root).data().toString();
+      const QString type = model->index(r, 2, root).data().toString();
+      const QString date = model->index(r, 3, root).data().toString();
+      if (name == "a folder") sawFolder = true;
+      if (language_ == "zh_CN")
+        for (const QString& text : {name == "a folder" ? type : QString(), date})
+          if (const QStringList left = englishIn(text); !left.isEmpty())
+            problems << QString("'%1' in the file dialog's row of %2").arg(text, name);
+    }
+    dialog.close();
+    QVERIFY(sawFolder);
+    QVERIFY2(problems.isEmpty(), qPrintable(problems.join("\n")));
+  }
+
   void cleanupTestCase() {
     w_->setRemembering(false);
     w_->close();
@@ -449,5 +485,13 @@ class DeskTest : public QObject {
   }
 };
 
-QTEST_MAIN(DeskTest)
+// QTEST_MAIN, with the system's LC_TIME set for the language first, as the
+// GUI's main does (ui/language/language.h).
+int main(int argc, char* argv[]) {
+  fog::ui::setSystemTimeLocaleFor(qEnvironmentVariable("FOG_DESK_LANGUAGE", "en"));
+  QApplication app(argc, argv);
+  DeskTest test;
+  QTEST_SET_MAIN_SOURCE_PATH
+  return QTest::qExec(&test, argc, argv);
+}
 #include "desk_test.moc"

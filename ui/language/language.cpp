@@ -27,6 +27,29 @@ QString languageName(const QString& code) {
 
 QString localNumber(double value, char format, int precision) { return QLocale().toString(value, format, precision); }
 
+void setSystemTimeLocaleFor(QString language) {
+  if (language.isEmpty()) language = languageSetting();
+  if (language != "zh_CN" && language != "en") return;
+  // From the environment as the system locale reads it (asking QLocale
+  // here would fix the system locale before LC_TIME is set).
+  QString system;
+  for (const char* name : {"LC_ALL", "LC_TIME", "LANG"})
+    if (system = qEnvironmentVariable(name); !system.isEmpty()) break;
+  if (language == "zh_CN" && !system.startsWith("zh")) qputenv("LC_TIME", "zh_CN.UTF-8");
+  if (language == "en" && system.startsWith("zh")) qputenv("LC_TIME", "en_US.UTF-8");
+}
+
+// Words of Qt's file dialog that Debian's Qt 6 translations lack (6.4 moved
+// them to this context): ours carries them.
+struct QtWord {
+  const char* source;
+  const char* comment;
+};
+[[maybe_unused]] const QtWord kQtWordsOurTranslationCarries[] = {
+    QT_TRANSLATE_NOOP3("QAbstractFileIconProvider", "Folder", "All other platforms"),
+    QT_TRANSLATE_NOOP3("QAbstractFileIconProvider", "Drive", ""),
+};
+
 QString installTranslations(QCoreApplication& app, const QString& language) {
   QString code = language;
   if (code.isEmpty() || code == "system") code = QLocale::system().name().startsWith("zh") ? "zh_CN" : "en";

@@ -23,6 +23,16 @@ QString languageName(const QString& code);
 // digit grouping of the chosen language).
 QString localNumber(double value, char format = 'f', int precision = 4);
 
+// Qt's own widgets format some things with the system locale, not the
+// default one (the file dialog's "Date Modified" column): before the
+// application object exists, LC_TIME is set to the chosen language's
+// (zh_CN.UTF-8 or en_US.UTF-8) when the system's is another; "system"
+// leaves it. The C library's LC_TIME follows; the bench writes its own
+// dates with numeric formats only (ISO 8601), so no file depends on it.
+// Reads the remembered choice when `language` is empty (the organisation
+// and application names must be set).
+void setSystemTimeLocaleFor(QString language);
+
 // Installs the translators for `language` ("system" resolves through the
 // system locale), replacing those of an earlier call, and sets the default
 // locale. Returns the language code in effect ("en" when nothing matched).
