@@ -277,13 +277,19 @@ QWidget* ResultView::buildPlotsAndTables() {
   zeroCrossingPlot_->setObjectName("zeroCrossingPlot");
   zeroCrossingPlot_->setTimeAxis(tr("time from the table fit's zero crossing (ms)"), 1e-3);
   // A canvas of 120 px at least (the ticks of both axes readable) besides
-  // its title, time axis (ticks and title) and legend: some five lines of text
-  // (measured: 93-96 px of 17-px lines, so six; the desk tests check the canvas).
+  // its title, time axis (ticks and title) and legend: some six lines of
+  // text (measured: 93-96 px of 17-px lines on Qt 6; the desk tests check
+  // the canvas).
   zeroCrossingPlot_->setMinimumSize(200, 120 + 6 * fontMetrics().lineSpacing() + 4);
   plotTabs_ = new QTabWidget();
   plotTabs_->setObjectName("resultPlotTabs");
   plotTabs_->addTab(zeroCrossingPlot_, tr("Zero crossing"));
   plotTabs_->addTab(frequencyPlot_, tr("Lag vs frequency"));
+  // The fits' numbers in a tab of their own: above the delay table they
+  // took the height the zero-crossing plot needs on a laptop.
+  plotTabs_->addTab(fitTable_, tr("Fit table"));
+  plotTabs_->setTabToolTip(2, tr("The 3- and 4-parameter fits of table and gyro and the joint fit: period, phase, "
+                                 "amplitude, χ²/dof"));
   plotTabs_->setTabToolTip(0, tr("Table and gyro angle around a zero crossing with the fitted lag marked: click twice "
                                  "to set cursors A and B and read Δt"));
   plotTabs_->setTabToolTip(1, tr("The lag of every test point against its swing frequency"));
@@ -293,13 +299,11 @@ QWidget* ResultView::buildPlotsAndTables() {
   auto* right = new QSplitter(Qt::Vertical);
   right->setObjectName("resultRightSplitter");
   right->setChildrenCollapsible(false);
-  right->addWidget(fitTable_);
   right->addWidget(delayTable_);
   right->addWidget(plotTabs_);
-  // The tables keep what they need; the plot takes the rest.
+  // The delay table keeps what its rows need; the plots take the rest.
   right->setStretchFactor(0, 0);
-  right->setStretchFactor(1, 0);
-  right->setStretchFactor(2, 1);
+  right->setStretchFactor(1, 1);
 
   bodeView_ = new BodeView();
   bodeView_->setObjectName("resultBodeView");
@@ -621,8 +625,8 @@ void ResultView::fillTables(std::size_t i) {
 }
 
 // Every delay row stays in view (the gyro's own delay is the last): the
-// table is as tall as its rows; the fit table above and the plot below give
-// way (they scroll, the plot shrinks).
+// table is as tall as its rows; the plots below give way down to their
+// minimum.
 void ResultView::fitDelayTableHeight() {
   // The basis column only where it has room to be read.
   int fixed = 0;
@@ -633,16 +637,7 @@ void ResultView::fitDelayTableHeight() {
   int height = delayTable_->horizontalHeader()->height() + 2 * delayTable_->frameWidth();
   for (int r = 0; r < delayTable_->rowCount(); ++r) height += delayTable_->rowHeight(r);
   if (delayTable_->horizontalScrollBar()->isVisible()) height += delayTable_->horizontalScrollBar()->height();
-  if (delayTable_->minimumHeight() == height) return;
   delayTable_->setMinimumHeight(height);
-  // The fit table's own size hint would leave the zero-crossing plot a
-  // sliver on a laptop: when the plot is squeezed, the fit table gives way
-  // (it scrolls); a divider the operator set is kept otherwise.
-  if (auto* right = findChild<QSplitter*>("resultRightSplitter"); right && plotTabs_->height() < 200) {
-    const int total = right->height();
-    const int fits = std::min(fitTable_->height(), std::max(fitTable_->minimumHeight(), total / 6));
-    right->setSizes({fits, height, std::max(0, total - fits - height)});
-  }
 }
 
 bool ResultView::eventFilter(QObject* watched, QEvent* event) {

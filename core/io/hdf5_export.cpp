@@ -338,7 +338,16 @@ Status writeResponse(Writer& w, hid_t parent, const analysis::ResponseAnalysis& 
     FOG_ASSIGN_OR_RETURN(hid_t pg, w.group(g, "points", keep));
     std::vector<std::int64_t> index;
     std::vector<double> f, m, ms, db, dbs, ph, phs, lag, lags, cov, harm;
+    // The phase against the table's motion and its budget (certifiedPhase), as `response --json`.
+    std::vector<double> motion, u, ud, k, bigU, bigUms;
     for (const auto& p : r.points) {
+      const analysis::CertifiedPhase c = analysis::certifiedPhase(p, r);
+      motion.push_back(c.phaseDeg);
+      u.push_back(c.standardDeg);
+      ud.push_back(c.readDelayStdDeg);
+      k.push_back(c.coverageK);
+      bigU.push_back(c.expandedDeg);
+      bigUms.push_back(c.expandedMs);
       index.push_back(p.index + 1);
       f.push_back(p.frequencyHz);
       m.push_back(p.magnitude);
@@ -364,6 +373,12 @@ Status writeResponse(Writer& w, hid_t parent, const analysis::ResponseAnalysis& 
     FOG_RETURN_IF_ERROR(w.doubles(pg, "lag_std_ms", lags, "ms"));
     FOG_RETURN_IF_ERROR(w.doubles(pg, "magnitude_phase_cov_deg", cov, "deg"));
     FOG_RETURN_IF_ERROR(w.doubles(pg, "harmonic_fraction", harm, "1"));
+    FOG_RETURN_IF_ERROR(w.doubles(pg, "phase_vs_table_motion_deg", motion, "deg"));
+    FOG_RETURN_IF_ERROR(w.doubles(pg, "phase_standard_uncertainty_deg", u, "deg"));
+    FOG_RETURN_IF_ERROR(w.doubles(pg, "phase_read_delay_std_deg", ud, "deg"));
+    FOG_RETURN_IF_ERROR(w.doubles(pg, "coverage_factor", k, "1"));
+    FOG_RETURN_IF_ERROR(w.doubles(pg, "phase_expanded_uncertainty_deg", bigU, "deg"));
+    FOG_RETURN_IF_ERROR(w.doubles(pg, "phase_expanded_uncertainty_ms", bigUms, "ms"));
   }
   {
     FOG_ASSIGN_OR_RETURN(hid_t lg, w.group(g, "left_out", keep));

@@ -3942,12 +3942,12 @@ File: %1</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+182"/>
+        <location line="+205"/>
         <source>χ²/dof</source>
         <translation>χ²/dof</translation>
     </message>
     <message>
-        <location line="-181"/>
+        <location line="-204"/>
         <source>table, 3-parameter</source>
         <translation>转台，三参数</translation>
     </message>
@@ -4300,16 +4300,18 @@ File: %1</source>
     </message>
     <message>
         <location line="-3"/>
+        <location line="+19"/>
         <source>point</source>
         <translation>点</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="-19"/>
+        <location line="+20"/>
         <source>f (Hz)</source>
         <translation>f（Hz）</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-19"/>
         <source>|H|</source>
         <translation>|H|</translation>
     </message>
@@ -4339,7 +4341,32 @@ File: %1</source>
         <translation>每个通过检查的测试点的复增益，来自其联合拟合：幅值为陀螺/转台振幅之比，相位为 −2π f · 滞后；标准不确定度（1σ）。</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+9"/>
+        <source>phase vs motion (°)</source>
+        <translation>相对转台运动的相位 (°)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>u, fit (°)</source>
+        <translation>u，拟合 (°)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>u, read delay (°)</source>
+        <translation>u，读数延迟 (°)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>U (k = 2), °</source>
+        <translation>U (k = 2)，°</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>U (k = 2), ms</source>
+        <translation>U (k = 2)，ms</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>Models fitted to all points (weighted least squares on magnitude and phase)</source>
         <translation>对所有点拟合的模型（幅值与相位的加权最小二乘）</translation>
     </message>
@@ -4445,7 +4472,12 @@ File: %1</source>
         <translation>对 %1 ms 限值不合格：%3 个测试点中有 %2 个超限。</translation>
     </message>
     <message>
-        <location line="-5"/>
+        <location line="-192"/>
+        <source>The phase against the table&apos;s motion: the phase above less 2π f · d (d = %1 ms, the table read delay); its expanded uncertainty U = k·√(u_f² + u_d²) with k = 2, u_f the fit&apos;s and u_d = 2π f · %2 ms (the read delay&apos;s standard uncertainty).</source>
+        <translation>相对转台运动的相位：上表相位减去 2π f · d（d = %1 ms，转台读数延迟）；其扩展不确定度 U = k·√(u_f² + u_d²)，k = 2，u_f 为拟合分量，u_d = 2π f · %2 ms（读数延迟的标准不确定度）。</translation>
+    </message>
+    <message>
+        <location line="+187"/>
         <source>PASS: every test point passed its validity checks and its IMU delay + %1σ is below the %2 ms limit.</source>
         <translation>合格：每个测试点都通过有效性检查，且其 IMU 延迟 + %1σ 低于 %2 ms 限值。</translation>
     </message>
@@ -4455,7 +4487,7 @@ File: %1</source>
         <translation>%1 个测试点未得到延迟</translation>
     </message>
     <message>
-        <location line="-446"/>
+        <location line="-469"/>
         <source>table angle (encoder, %1 ms)</source>
         <translation>转台角度（编码器，%1 ms）</translation>
     </message>
@@ -4465,7 +4497,7 @@ File: %1</source>
         <translation>陀螺角度（增量累加，%1 ms）</translation>
     </message>
     <message>
-        <location line="+407"/>
+        <location line="+430"/>
         <source>INCOMPLETE (the run stopped early); its data give %1</source>
         <translation>不完整（运行提前停止）；其数据给出 %1</translation>
     </message>
@@ -4475,12 +4507,12 @@ File: %1</source>
         <translation>不完整</translation>
     </message>
     <message>
-        <location filename="../../ui/report/calibration_report.cpp" line="-200"/>
+        <location filename="../../ui/report/calibration_report.cpp" line="-223"/>
         <source>model (chosen)</source>
         <translation>模型（所选）</translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+85"/>
         <source>chosen (lowest AIC; a filter at 3σ)</source>
         <translation>所选（AIC 最低；滤波器须达 3σ）</translation>
     </message>
@@ -4795,7 +4827,7 @@ Run a test plan (Run), or open a session (Sessions).</source>
         <translation>距转台拟合过零点的时间 (ms)</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>Zero crossing</source>
         <translation>过零点</translation>
     </message>
@@ -4805,7 +4837,7 @@ Run a test plan (Run), or open a session (Sessions).</source>
         <translation>滞后与频率</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+6"/>
         <source>Table and gyro angle around a zero crossing with the fitted lag marked: click twice to set cursors A and B and read Δt</source>
         <translation>过零点附近的转台角与陀螺角，标出拟合滞后：单击两次设置光标 A 和 B，读出 Δt</translation>
     </message>
@@ -4815,7 +4847,7 @@ Run a test plan (Run), or open a session (Sessions).</source>
         <translation>各测试点的滞后随摆动频率的变化</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+48"/>
         <source>The delay report appears here after a run.</source>
         <translation>运行结束后，延迟报告显示在这里。</translation>
     </message>
@@ -4872,7 +4904,17 @@ Run a test plan (Run), or open a session (Sessions).</source>
         <translation>PDF 文档 (*.pdf)</translation>
     </message>
     <message>
-        <location line="-67"/>
+        <location line="-89"/>
+        <source>Fit table</source>
+        <translation>拟合表</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The 3- and 4-parameter fits of table and gyro and the joint fit: period, phase, amplitude, χ²/dof</source>
+        <translation>转台与陀螺的三参数、四参数拟合及联合拟合：周期、相位、幅值、χ²/dof</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>Fits</source>
         <translation>拟合</translation>
     </message>
@@ -5144,7 +5186,7 @@ The session itself is unchanged.</source>
         <translation>敏感、闭环与脉冲更新</translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+43"/>
         <source> (k %1)</source>
         <translation>（k %1）</translation>
     </message>

@@ -71,7 +71,11 @@ def check_response(h, doc):
     check(sorted(h["response"].keys()) == sorted(r["axis"] for r in doc["responses"]), "response axes differ")
     point_units = {"frequency_hz": "Hz", "magnitude": "1", "magnitude_std": "1", "magnitude_db": "dB",
                    "magnitude_db_std": "dB", "phase_deg": "deg", "phase_std_deg": "deg", "lag_ms": "ms",
-                   "lag_std_ms": "ms", "magnitude_phase_cov_deg": "deg", "harmonic_fraction": "1"}
+                   "lag_std_ms": "ms", "magnitude_phase_cov_deg": "deg", "harmonic_fraction": "1",
+                   # the phase against the table's motion with its budget and U (k = 2)
+                   "phase_vs_table_motion_deg": "deg", "phase_standard_uncertainty_deg": "deg",
+                   "phase_read_delay_std_deg": "deg", "coverage_factor": "1",
+                   "phase_expanded_uncertainty_deg": "deg", "phase_expanded_uncertainty_ms": "ms"}
     model_units = {"chi_square": "1", "aic": "1", "bic": "1", "p_value": "1", "low_frequency_delay_ms": "ms",
                    "low_frequency_delay_std_ms": "ms", "group_delay_ms": "ms", "group_delay_std_ms": "ms",
                    "bandwidth_hz": "Hz", "bandwidth_std_hz": "Hz"}

@@ -928,6 +928,29 @@ void responsePage(PageFlow& flow, const analysis::ResponseAnalysis& r) {
                              "gyro/table amplitude, phase −2π f · lag; standard uncertainties (1σ)."),
                  PageFlow::font(7.5), kMuted);
 
+  // The certificate's figure per point: the phase against the table's motion
+  // with its expanded uncertainty (certifiedPhase), as `response` gives it.
+  Table certified;
+  certified.columns = {{QObject::tr("point"), 12, Qt::AlignRight},
+                       {QObject::tr("f (Hz)"), 18, Qt::AlignRight},
+                       {QObject::tr("phase vs motion (°)"), 30, Qt::AlignRight},
+                       {QObject::tr("u, fit (°)"), 20, Qt::AlignRight},
+                       {QObject::tr("u, read delay (°)"), 24, Qt::AlignRight},
+                       {QObject::tr("U (k = 2), °"), 22, Qt::AlignRight},
+                       {QObject::tr("U (k = 2), ms"), 22, Qt::AlignRight}};
+  certified.fontPt = 7.5;
+  for (const auto& p : r.points) {
+    const analysis::CertifiedPhase c = analysis::certifiedPhase(p, r);
+    certified.rows.push_back({QString::number(p.index + 1), fixed(p.frequencyHz, 4), fixed(c.phaseDeg, 4),
+                              sci(c.fitStdDeg), sci(c.readDelayStdDeg), sci(c.expandedDeg), sci(c.expandedMs)});
+  }
+  flow.table(certified);
+  flow.paragraph(QObject::tr("The phase against the table's motion: the phase above less 2π f · d (d = %1 ms, the table "
+                             "read delay); its expanded uncertainty U = k·√(u_f² + u_d²) with k = 2, u_f the fit's and u_d = "
+                             "2π f · %2 ms (the read delay's standard uncertainty).")
+                     .arg(fixed(r.tableReadDelayMs, 4), sci(r.tableReadDelayStdMs)),
+                 PageFlow::font(7.5), kMuted);
+
   flow.heading(QObject::tr("Models fitted to all points (weighted least squares on magnitude and phase)"));
   Table models;
   models.columns = {{QObject::tr("model"), 40, Qt::AlignLeft},
