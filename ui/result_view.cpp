@@ -625,8 +625,8 @@ void ResultView::fillTables(std::size_t i) {
 }
 
 // Every delay row stays in view (the gyro's own delay is the last): the
-// table is as tall as its rows; the plots below give way down to their
-// minimum.
+// table is at least as tall as its rows; the plots below give way down to
+// their minimum.
 void ResultView::fitDelayTableHeight() {
   // The basis column only where it has room to be read.
   int fixed = 0;
