@@ -1,8 +1,8 @@
 #include "ui/bode_view.h"
 
 #include <QComboBox>
-#include <QHBoxLayout>
 #include <QEvent>
+#include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
 #include <QPen>
@@ -216,6 +216,11 @@ BodeView::BodeView(QWidget* parent) : QWidget(parent) {
   layout->addWidget(content_, 1);
   connect(axisCombo_, qOverload<int>(&QComboBox::currentIndexChanged), this, &BodeView::showAxis);
   showMessage(tr("No frequency response yet."));
+}
+
+BodeView::~BodeView() {
+  disconnect(modelTable_->horizontalHeader(), nullptr, this, nullptr);
+  modelTable_->viewport()->removeEventFilter(this);
 }
 
 bool BodeView::plotShown() const { return !content_->isHidden(); }

@@ -42,6 +42,9 @@ class BodeView : public QWidget {
 
  public:
   explicit BodeView(QWidget* parent = nullptr);
+  // Stops hearing the model table before the widgets go: their teardown
+  // resizes its sections, and fitNotesColumn must not run on a half-destroyed view.
+  ~BodeView() override;
 
   // One recording's responses; `emptyReason` is shown when there are none.
   // Each model's row states its χ² p-value (marked when rejected) and why it
