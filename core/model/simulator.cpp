@@ -1,6 +1,7 @@
 #include "core/model/simulator.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -36,27 +37,42 @@ struct GyroChannel {
   double noiseAngleDeg(double t, Random& rng) {
     const double dt = t - lastTimeS;
     if (dt > 0.0) {
-      // The step's factors depend on dt alone, which repeats from frame to
-      // frame: kept from the last step when dt is the same (bit for bit the
-      // same values; an exp and two square roots per axis and sample were a
-      // tenth of a diagnosis' replays).
-      if (dt != stepS) {
-        stepS = dt;
-        arwStepDeg = arwDegPerSqrtS * std::sqrt(dt);
-        decay = std::exp(-dt / wanderCorrelationS);
-        wanderStepDegPerS = wanderSigmaDegPerS * std::sqrt(1.0 - decay * decay);
-      }
-      arwAngleDeg += arwStepDeg * rng.normal();
+      // The step's factors depend on dt alone. dt is a difference of two
+      // stamps k P + c, so it takes a few values an ulp apart (the stamps'
+      // rounding), not one: the factors of the last kSteps distinct dt are
+      // kept and reused when dt is one of them exactly (bit for bit the same
+      // values; an exp and two square roots per axis and sample were a tenth
+      // of a diagnosis' replays).
+      const Step& f = factorsFor(dt);
+      arwAngleDeg += f.arwDeg * rng.normal();
       wanderAngleDeg += wanderRateDegPerS * dt;
-      wanderRateDegPerS = wanderRateDegPerS * decay + wanderStepDegPerS * rng.normal();
+      wanderRateDegPerS = wanderRateDegPerS * f.decay + f.wanderDegPerS * rng.normal();
       lastTimeS = t;
     }
     return constantRateDegPerS * t + arwAngleDeg + wanderAngleDeg;
   }
 
  private:
-  double stepS = NAN;  // the dt that arwStepDeg, decay and wanderStepDegPerS are for
-  double arwStepDeg = 0.0, decay = 1.0, wanderStepDegPerS = 0.0;
+  struct Step {
+    double dt = NAN;  // the step these factors are for (NaN: none yet)
+    double arwDeg = 0.0, decay = 1.0, wanderDegPerS = 0.0;
+  };
+  static constexpr int kSteps = 8;
+
+  const Step& factorsFor(double dt) {
+    for (const Step& s : steps)
+      if (s.dt == dt) return s;
+    Step& s = steps[nextStep];
+    nextStep = (nextStep + 1) % kSteps;
+    s.dt = dt;
+    s.arwDeg = arwDegPerSqrtS * std::sqrt(dt);
+    s.decay = std::exp(-dt / wanderCorrelationS);
+    s.wanderDegPerS = wanderSigmaDegPerS * std::sqrt(1.0 - s.decay * s.decay);
+    return s;
+  }
+
+  std::array<Step, kSteps> steps{};
+  int nextStep = 0;  // the entry the next new step replaces (oldest first)
 };
 
 std::uint32_t toCounter(double stampS, const SamplingBoardParams& b) {
