@@ -88,6 +88,16 @@ std::vector<double> tableResidualsAndPeriodSums(const TableChannel& table, const
   int j = 0;
   bool inside = false;  // past window j's start
   double a = windows.start(0), b = a + windows.period;
+  // Window j's sums are made in a local and stored when the window ends:
+  // summed in the vector, every add was a load and a store (the compiler
+  // cannot tell the sums from the residuals written beside them).
+  NormalSums<4> window;
+  std::size_t rows = 0;
+  auto store = [&] {
+    if (j >= windows.count) return;
+    sums.gram[static_cast<std::size_t>(j)] = window;
+    sums.rows[static_cast<std::size_t>(j)] = rows;
+  };
   for (std::size_t i = 0; i < n; ++i) {
     double sn, cs;
     phase.next(tt[i], sn, cs);
@@ -99,17 +109,21 @@ std::vector<double> tableResidualsAndPeriodSums(const TableChannel& table, const
       }
       if (tt[i] < b) {
         const double v[4] = {sn, cs, 1.0, table.angleDeg[i]};
-        sums.gram[static_cast<std::size_t>(j)].add(v, 0.0);
-        ++sums.rows[static_cast<std::size_t>(j)];
+        window.add(v, 0.0);
+        ++rows;
         break;
       }
       // Past the window's end: the next window looks at this sample.
+      store();
+      window = NormalSums<4>{};
+      rows = 0;
       ++j;
       inside = false;
       a = windows.start(j);
       b = a + windows.period;
     }
   }
+  store();
   return r;
 }
 

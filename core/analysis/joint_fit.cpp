@@ -45,8 +45,12 @@ class JointProblem final : public LeastSquaresProblem {
 
  private:
   // Table rows: a*sin(w*t) + b*cos(w*t) + c, parameters (w, a, b, c).
-  double accumulateTable(const double* x, bool withJacobian, NormalSums<4>& sums) const {
+  // Both accumulators sum into a local and copy it out at the end: summed
+  // into `out` directly, every add was a load and a store (the compiler
+  // cannot tell it from the samples).
+  double accumulateTable(const double* x, bool withJacobian, NormalSums<4>& out) const {
     const double w = x[kW], a = x[kA], b = x[kB], c = x[kC];
+    NormalSums<4> sums;
     const double inv = 1.0 / t_.noiseDeg;
     SinCosStream phase(w, 0.0);
     double rss = 0.0;
@@ -60,13 +64,15 @@ class JointProblem final : public LeastSquaresProblem {
         sums.add(row, r);
       }
     }
+    out = sums;
     return rss;
   }
 
   // Gyro rows: g*(a*sin(w*(t - lag)) + b*cos(w*(t - lag))) + d*t, differenced
   // over each frame and whitened.
-  double accumulateGyro(const double* x, bool withJacobian, NormalSums<kParams>& sums) const {
+  double accumulateGyro(const double* x, bool withJacobian, NormalSums<kParams>& out) const {
     const double w = x[kW], a = x[kA], b = x[kB], g = x[kG], lag = x[kLag], d = x[kD];
+    NormalSums<kParams> sums;
     GyroSinCosStream phase(g_, w, lag);
     double rss = 0.0;
     double prev[kParams + 1] = {};  // previous whitened row and residual
@@ -93,6 +99,7 @@ class JointProblem final : public LeastSquaresProblem {
       rss += prev[kParams] * prev[kParams];
       if (withJacobian) sums.add(prev, prev[kParams]);
     }
+    out = sums;
     return rss;
   }
 
