@@ -1,9 +1,12 @@
 #include "ui/core_text.h"
 
+#include "core/analysis/frequency_response.h"
+
 #include <QCoreApplication>
 #include <QRegularExpression>
 #include <QStringList>
 #include <algorithm>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -607,12 +610,14 @@ QString translatePart(const QString& text, int depth) {
 // The response models' parameter keys (the JSON's) as the GUI names them in
 // every language: the symbols.
 static QString displaySymbols(QString text) {
-  static const std::pair<QRegularExpression, QString> kSymbols[] = {
-      {QRegularExpression(QStringLiteral("\\btau_ms\\b")), QStringLiteral("τ")},
-      {QRegularExpression(QStringLiteral("\\bT_ms\\b")), QStringLiteral("T")},
-      {QRegularExpression(QStringLiteral("\\bfn_hz\\b")), QStringLiteral("fₙ")},
-      {QRegularExpression(QStringLiteral("\\bzeta\\b")), QStringLiteral("ζ")},
-  };
+  static const std::vector<std::pair<QRegularExpression, QString>> kSymbols = [] {
+    std::vector<std::pair<QRegularExpression, QString>> out;
+    for (const auto& s : analysis::responseParameterSymbols())
+      if (std::string_view(s.key) != s.symbol)
+        out.emplace_back(QRegularExpression(QStringLiteral("\\b") + QString::fromUtf8(s.key) + QStringLiteral("\\b")),
+                         QString::fromUtf8(s.symbol));
+    return out;
+  }();
   for (const auto& [pattern, symbol] : kSymbols) text.replace(pattern, symbol);
   return text;
 }

@@ -190,6 +190,19 @@ std::string fmt(double v, int digits) {
   return buf;
 }
 
+// A fitted value to the decimal of its uncertainty's second significant
+// digit (GUM 7.2.6), at least 2 and at most 7 significant digits: the
+// digits a fit does not determine (a time constant of 0.0106 ± 0.020 ms,
+// nearly degenerate with the delay) are not printed, for they change with
+// the order in which the points' sums were added. The JSON keeps every digit.
+std::string fmtToUncertainty(double v, double stdDev) {
+  int digits = 7;
+  if (std::isfinite(v) && v != 0.0 && std::isfinite(stdDev) && stdDev > 0.0)
+    digits = std::clamp(static_cast<int>(std::floor(std::log10(std::abs(v))) - std::floor(std::log10(stdDev))) + 2,
+                        2, 7);
+  return fmt(v, digits);
+}
+
 std::vector<Eigen::VectorXd> startingPoints(ResponseModelKind kind, const std::vector<ResponsePoint>& points) {
   double wk = 0.0, k = 0.0, wt = 0.0, tau = 0.0;
   for (const auto& p : points) {
@@ -469,6 +482,12 @@ void chooseModel(ResponseAnalysis& out) {
 
 }  // namespace
 
+const std::vector<ResponseParameterSymbol>& responseParameterSymbols() {
+  static const std::vector<ResponseParameterSymbol> kSymbols = {
+      {"K", "K", ""}, {"tau_ms", "τ", "ms"}, {"T_ms", "T", "ms"}, {"fn_hz", "fₙ", "Hz"}, {"zeta", "ζ", ""}};
+  return kSymbols;
+}
+
 const char* responseModelName(ResponseModelKind kind) {
   switch (kind) {
     case ResponseModelKind::kDelay: return "delay";
@@ -664,7 +683,8 @@ std::string formatResponseText(const std::vector<ResponseAnalysis>& responses) {
       o << "    fit: p = " << fmt(m.pValue, 3) << (m.adequate ? " (adequate: p >= " : " (NOT ADEQUATE: p below ")
         << fmt(kModelAdequacyP, 3) << ")\n";
       for (const auto& why : m.inadmissible) o << "    NOT ADMISSIBLE: " << why << "\n";
-      for (const auto& p : m.parameters) o << "    " << p.name << " = " << fmt(p.value, 7) << " ± " << fmt(p.stdDev, 2) << "\n";
+      for (const auto& p : m.parameters)
+        o << "    " << p.name << " = " << fmtToUncertainty(p.value, p.stdDev) << " ± " << fmt(p.stdDev, 2) << "\n";
       for (int a = 0; a < m.correlation.rows(); ++a)
         for (int b = a + 1; b < m.correlation.cols(); ++b)
           o << "    corr(" << m.parameters[a].name << ", " << m.parameters[b].name << ") = "
@@ -673,7 +693,7 @@ std::string formatResponseText(const std::vector<ResponseAnalysis>& responses) {
         << fmt(m.lowFrequencyDelayMs.stdDev, 2) << " ms; group delay at " << fmt(r.groupDelayAtHz, 4) << " Hz "
         << fmt(m.groupDelayMs.value, 6) << " ± " << fmt(m.groupDelayMs.stdDev, 2) << " ms\n";
       if (m.bandwidthHz)
-        o << "    -3 dB bandwidth " << fmt(m.bandwidthHz->value, 5) << " ± " << fmt(m.bandwidthHz->stdDev, 2) << " Hz\n";
+        o << "    -3 dB bandwidth " << fmtToUncertainty(m.bandwidthHz->value, m.bandwidthHz->stdDev) << " ± " << fmt(m.bandwidthHz->stdDev, 2) << " Hz\n";
       else
         o << "    -3 dB bandwidth: none (a pure delay keeps its magnitude)\n";
       for (const auto& n : m.notes) o << "    note: " << n << "\n";

@@ -63,6 +63,16 @@ struct ResponseParameter {
   double value = 0.0, stdDev = 0.0;
 };
 
+// How a reader sees a parameter: the JSON and the text report name it by
+// its key, the GUI and the PDF by its symbol (UTF-8), in every language.
+struct ResponseParameterSymbol {
+  const char* key;     // "tau_ms"
+  const char* symbol;  // "τ"
+  const char* unit;    // "ms"; "" when dimensionless
+};
+// Every parameter of the three models, K first.
+const std::vector<ResponseParameterSymbol>& responseParameterSymbols();
+
 // A derived quantity with its propagated standard uncertainty.
 struct DerivedValue {
   double value = 0.0, stdDev = 0.0;

@@ -135,10 +135,8 @@ QString responseParametersText(const analysis::ResponseModelFit& m) {
   QStringList parts;
   for (const auto& p : m.parameters) {
     QString symbol = QString::fromStdString(p.name), unit;
-    if (p.name == "tau_ms") symbol = QStringLiteral("τ"), unit = QStringLiteral("ms");
-    if (p.name == "T_ms") symbol = QStringLiteral("T"), unit = QStringLiteral("ms");
-    if (p.name == "fn_hz") symbol = QStringLiteral("fₙ"), unit = QStringLiteral("Hz");
-    if (p.name == "zeta") symbol = QStringLiteral("ζ");
+    for (const auto& s : analysis::responseParameterSymbols())
+      if (p.name == s.key) symbol = QString::fromUtf8(s.symbol), unit = QString::fromUtf8(s.unit);
     parts << symbol + QStringLiteral(" = ") + valueWithStdText(p.value, p.stdDev, unit);
   }
   return parts.join(QStringLiteral("; "));
