@@ -24,10 +24,22 @@ double power(const std::vector<double>& y, double binS, double w) {
   // up to 65 536 bins, and the full 3x3 outer product per bin was a tenth of
   // the analysis.
   double ss = 0.0, sc = 0.0, cc = 0.0, s1 = 0.0, c1 = 0.0, ys = 0.0, yc = 0.0, y1 = 0.0;
-  const std::complex<double> step = std::polar(1.0, w * binS);
-  std::complex<double> rot = 1.0;
+  // Four rotations, bin i from bin i - 4 (one rotation from the last, a
+  // multiply waiting on the previous one's, was the latency the loop waited
+  // on), each re-anchored every 1024 bins; the sums still taken in order.
+  constexpr std::size_t kChains = 4;
+  const double stepRe = std::cos(kChains * w * binS), stepIm = std::sin(kChains * w * binS);
+  double re[kChains], im[kChains];
+  auto anchor = [&](std::size_t first) {
+    for (std::size_t k = 0; k < kChains; ++k) {
+      re[k] = std::cos(w * binS * static_cast<double>(first + k));
+      im[k] = std::sin(w * binS * static_cast<double>(first + k));
+    }
+  };
+  anchor(0);
   for (std::size_t i = 0; i < y.size(); ++i) {
-    const double s = rot.imag(), c = rot.real();
+    const std::size_t k = i & (kChains - 1);
+    const double s = im[k], c = re[k];
     ss += s * s;
     sc += c * s;
     cc += c * c;
@@ -36,10 +48,9 @@ double power(const std::vector<double>& y, double binS, double w) {
     ys += s * y[i];
     yc += c * y[i];
     y1 += y[i];
-    // rot *= step, written out: the same products and sums, without the
-    // library's check for infinities after each (the rotation stays finite).
-    rot = {c * step.real() - s * step.imag(), c * step.imag() + s * step.real()};
-    if ((i & 1023) == 1023) rot = std::polar(1.0, w * binS * static_cast<double>(i + 1));  // no drift
+    re[k] = c * stepRe - s * stepIm;
+    im[k] = c * stepIm + s * stepRe;
+    if ((i & 1023) == 1023) anchor(i + 1);  // no drift
   }
   Eigen::Matrix3d ata;
   ata << ss, sc, s1, sc, cc, c1, s1, c1, static_cast<double>(y.size());
