@@ -28,13 +28,13 @@ def walk(old, new, path, args, out):
             return
         for i, (a, b) in enumerate(zip(old, new)):
             walk(a, b, f'{path}[{i}]', args, out)
-    elif isinstance(old, float) or isinstance(new, float):
-        if isinstance(old, bool) or isinstance(new, bool) or not isinstance(old, (int, float)) \
-                or not isinstance(new, (int, float)):
+    elif type(old) is float and type(new) is float:
+        if old == new or (math.isnan(old) and math.isnan(new)):
+            return
+        if not (math.isfinite(old) and math.isfinite(new)):
             out.append(f'{path}: {old!r} -> {new!r}')
-        elif old != new and not (math.isnan(old) and math.isnan(new)):
-            if not abs(old - new) <= max(args.rel * max(abs(old), abs(new)), args.abs):
-                out.append(f'{path}: {old!r} -> {new!r} (rel {abs(old - new) / max(abs(old), abs(new)):.2e})')
+        elif not abs(old - new) <= max(args.rel * max(abs(old), abs(new)), args.abs):
+            out.append(f'{path}: {old!r} -> {new!r} (rel {abs(old - new) / max(abs(old), abs(new)):.2e})')
     elif old != new or type(old) != type(new):
         out.append(f'{path}: {old!r} -> {new!r}')
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -191,16 +192,18 @@ std::string fmt(double v, int digits) {
 }
 
 // A fitted value to the decimal of its uncertainty's second significant
-// digit (GUM 7.2.6), at least 2 and at most 7 significant digits: the
-// digits a fit does not determine (a time constant of 0.0106 ± 0.020 ms,
-// nearly degenerate with the delay) are not printed, for they change with
-// the order in which the points' sums were added. The JSON keeps every digit.
-std::string fmtToUncertainty(double v, double stdDev) {
-  int digits = 7;
-  if (std::isfinite(v) && v != 0.0 && std::isfinite(stdDev) && stdDev > 0.0)
-    digits = std::clamp(static_cast<int>(std::floor(std::log10(std::abs(v))) - std::floor(std::log10(stdDev))) + 2,
-                        2, 7);
-  return fmt(v, digits);
+// digit (GUM 7.2.6), as that uncertainty is printed (two digits), at most 7
+// significant digits: the digits a fit does not determine (a time constant
+// of 0.0106 ± 0.020 ms, nearly degenerate with the delay) are not printed,
+// for they change with the order in which the points' sums were added. A
+// value below that decimal prints as 0. Without a usable uncertainty,
+// `fallbackDigits` significant digits. The JSON keeps every digit.
+std::string fmtToUncertainty(double v, double stdDev, int fallbackDigits = 7) {
+  const double printedStd = std::strtod(fmt(stdDev, 2).c_str(), nullptr);
+  if (!std::isfinite(v) || v == 0.0 || !std::isfinite(printedStd) || !(printedStd > 0.0))
+    return fmt(v, fallbackDigits);
+  const int digits = static_cast<int>(std::floor(std::log10(std::abs(v))) - std::floor(std::log10(printedStd))) + 2;
+  return digits < 1 ? std::string("0") : fmt(v, std::min(digits, 7));
 }
 
 std::vector<Eigen::VectorXd> startingPoints(ResponseModelKind kind, const std::vector<ResponsePoint>& points) {
@@ -693,7 +696,7 @@ std::string formatResponseText(const std::vector<ResponseAnalysis>& responses) {
         << fmt(m.lowFrequencyDelayMs.stdDev, 2) << " ms; group delay at " << fmt(r.groupDelayAtHz, 4) << " Hz "
         << fmt(m.groupDelayMs.value, 6) << " ± " << fmt(m.groupDelayMs.stdDev, 2) << " ms\n";
       if (m.bandwidthHz)
-        o << "    -3 dB bandwidth " << fmtToUncertainty(m.bandwidthHz->value, m.bandwidthHz->stdDev) << " ± " << fmt(m.bandwidthHz->stdDev, 2) << " Hz\n";
+        o << "    -3 dB bandwidth " << fmtToUncertainty(m.bandwidthHz->value, m.bandwidthHz->stdDev, 5) << " ± " << fmt(m.bandwidthHz->stdDev, 2) << " Hz\n";
       else
         o << "    -3 dB bandwidth: none (a pure delay keeps its magnitude)\n";
       for (const auto& n : m.notes) o << "    note: " << n << "\n";

@@ -7,7 +7,6 @@
 #include <complex>
 #include <unsupported/Eigen/FFT>
 
-#include "core/analysis/least_squares.h"
 #include "core/analysis/sin_cos_series.h"
 #include "core/common/units.h"
 
@@ -187,14 +186,14 @@ double harmonicAmplitude(const std::vector<double>& timeS, const std::vector<dou
   // product-to-sum identities (2 sin a sin b = cos(a - b) - cos(a + b), ...):
   // 20 sums a sample instead of its 45 products. sin/cos of m theta come from
   // the fundamental's by angle addition (tests/core/analysis/
-  // validity_test.cpp compares the amplitude with a direct fit's).
+  // harmonic_amplitude_test.cpp compares the amplitude with a direct fit's).
   SinCosStream phase(w, 0.0);
   double sumC[kTop + 1] = {}, sumS[kTop + 1] = {}, rs[kCols] = {};
   for (std::size_t i = 0; i < r.size(); ++i) {
     double sn[kTop + 1], cs[kTop + 1];
     phase.next(timeS[i], sn[1], cs[1]);
-    // m = j + k from j and k, nearly halves: a chain of nine additions in
-    // turn was latency that left the CPU waiting.
+    // m = j + k from j and k, nearly halves: four additions deep, where
+    // m = 2..10 in turn would be a chain of nine that the CPU waits on.
     for (const auto& [m, j] : {std::pair{2, 1}, {3, 2}, {4, 2}, {5, 3}, {6, 3}, {7, 4}, {8, 4}, {9, 5}, {10, 5}}) {
       const int k = m - j;
       sn[m] = sn[j] * cs[k] + cs[j] * sn[k];

@@ -646,3 +646,28 @@ TEST(ResponseModelJudgement, DampingAtItsBoundIsNotAdmissible) {
 
 }  // namespace
 }  // namespace fog::analysis
+
+namespace fog::analysis {
+namespace {
+
+// The text prints a fitted parameter to the decimal of its printed
+// uncertainty's second digit (GUM 7.2.6): the digits beyond it are not
+// determined, and moved with the order of the points' sums.
+TEST(FrequencyResponse, ParametersArePrintedToTheirUncertainty) {
+  ResponseAnalysis r;
+  r.axis = Axis::kX;
+  ResponseModelFit m;
+  m.kind = ResponseModelKind::kFirstOrder;
+  m.parameters = {{"K", 0.99999987, 1.4e-7}, {"tau_ms", 0.4552002374, 0.020074926},
+                  {"T_ms", 0.0105994081, 0.0200750002}, {"fn_hz", 0.0004, 0.02}, {"zeta", 0.7081043835, 0.0044342}};
+  m.correlation = Eigen::MatrixXd::Identity(5, 5);
+  m.bandwidthHz = DerivedValue{15015.4557, 0.0};  // no usable sigma: 5 digits, as before
+  r.models = {m};
+  const std::string text = formatResponseText({r});
+  for (const char* line : {"K = 0.9999999 ± 1.4e-07", "tau_ms = 0.455 ± 0.02", "T_ms = 0.011 ± 0.02",
+                           "fn_hz = 0 ± 0.02", "zeta = 0.7081 ± 0.0044", "bandwidth 15015 ± 0"})
+    EXPECT_TRUE(text.find(line) != std::string::npos) << line << "\n" << text;
+}
+
+}  // namespace
+}  // namespace fog::analysis
