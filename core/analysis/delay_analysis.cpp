@@ -736,9 +736,36 @@ Status fitJointAndTrack(PointWork& work) {
   // gain's variance alike. (b) The per-period lags are independent
   // estimates whose scatter does not rest on the noise model (errors that
   // repeat every period do not scatter, so (a) is added to it): when it is
-  // significantly larger than the fit's uncertainty it is taken; with 20 or
+  // significantly larger than the fit's uncertainty and the lags hold noise
+  // slower than a period (slowNoise) it is taken; with 20 or
   // more periods also when significantly smaller (time-stamp jitter, whose
   // errors follow the rate, makes the white-noise model pessimistic).
+// Whether the per-period lags hold noise slower than a period (bias
+// instability, a wandering clock): their means over blocks of about sqrt(n)
+// periods then scatter more than the lags themselves imply, (b - 1) s_b^2 m /
+// s^2 beyond chi^2(b - 1) at p < 1e-3. Without it a per-period scatter above
+// the fit's is the periods' own estimator erring more than the whole
+// record's fit does (quantisation within a period, which cancels between
+// periods; 50 to 64 samples a period at 15.7 and 20 Hz read std(z) 0.5 with
+// it): it is not the fit's uncertainty. With fewer than 5 blocks (under 25
+// periods) nothing can tell, and the scatter is taken as before.
+bool slowNoise(const std::vector<double>& lags) {
+  const std::size_t n = lags.size();
+  const auto m = static_cast<std::size_t>(std::llround(std::sqrt(static_cast<double>(n))));
+  const std::size_t blocks = m > 0 ? n / m : 0;
+  if (m < 2 || blocks < 5) return true;
+  std::vector<double> means(blocks, 0.0);
+  for (std::size_t b = 0; b < blocks; ++b) {
+    for (std::size_t i = b * m; i < (b + 1) * m; ++i) means[b] += lags[i];
+    means[b] /= static_cast<double>(m);
+  }
+  const double all = meanAndSpread(lags).stdDev, block = meanAndSpread(means).stdDev;
+  if (!(all > 0.0)) return false;
+  const int dof = static_cast<int>(blocks) - 1;
+  const double x = static_cast<double>(dof) * block * block * static_cast<double>(m) / (all * all);
+  return chiSquareSurvival(x, dof) < 1e-3;
+}
+
 void honestUncertainty(PointWork& work) {
   const Channels& ch = work.ch;
   TestPointResult& r = work.r;
@@ -764,18 +791,20 @@ void honestUncertainty(PointWork& work) {
   r.periodicInflation = addedMs2 / (r.fitLagStdMs * r.fitLagStdMs);
   double baseMs = r.fitLagStdMs;
   if (r.periodicInflation > 0.1) r.lagStdSource = "fit, with errors that repeat every period";
+  if (r.periodicInflation < -0.1) r.lagStdSource = "fit, less the errors that cancel between periods";
   if (lags.size() >= 5) {
     const auto n = static_cast<double>(lags.size());
     const int dof = static_cast<int>(lags.size()) - 1;
     r.trackLagStdMs = spread.stdDev / std::sqrt(n);
     // (n - 1) s^2 / (n sigma^2) is chi^2 with n - 1 dof when sigma is right.
     const double x = (n - 1.0) * r.trackLagStdMs * r.trackLagStdMs / (r.fitLagStdMs * r.fitLagStdMs);
-    const bool larger = r.trackLagStdMs > r.fitLagStdMs && chiSquareSurvival(x, dof) < 1e-3;
+    const bool larger = r.trackLagStdMs > r.fitLagStdMs && chiSquareSurvival(x, dof) < 1e-3 && slowNoise(lags);
     const bool smaller = lags.size() >= 20 && r.trackLagStdMs < r.fitLagStdMs && 1.0 - chiSquareSurvival(x, dof) < 1e-3;
     if (larger || smaller) {
       baseMs = r.trackLagStdMs;
-      r.lagStdSource = r.periodicInflation > 0.1 ? "per-period scatter, with errors that repeat every period"
-                                                 : "per-period scatter";
+      r.lagStdSource = r.periodicInflation > 0.1    ? "per-period scatter, with errors that repeat every period"
+                       : r.periodicInflation < -0.1 ? "per-period scatter, less the errors that cancel between periods"
+                                                    : "per-period scatter";
       r.warnings.push_back("the per-period lags scatter " + fmt(spread.stdDev, 4) + " ms, " +
                            (larger ? "more" : "less") +
                            " than the fit's noise model implies; the uncertainty rests on their scatter (" +
@@ -799,8 +828,13 @@ void honestUncertainty(PointWork& work) {
       r.lagStdSource = "fit, random walk at its upper bound (fewer than 5 periods to check it)";
     }
   }
-  const double stdMs = std::sqrt(baseMs * baseMs + addedMs2);
+  // A negative allowance (errors that cancel between periods: the phase's
+  // repeating part below the white model, validity.h) lowers the variance to
+  // a tenth of its base at most: the white model overstates an error that
+  // depends on the angle alone, but not by more than the fold can show.
+  const double stdMs = std::sqrt(std::max(baseMs * baseMs + addedMs2, 0.1 * baseMs * baseMs));
   r.lagStdMs = stdMs;
+  if (stdMs < 0.95 * baseMs) r.lagStdBeforeCancellingMs = baseMs;  // lowered by more than a tenth of the variance
   // The gain: the joint fit's standard error with the same allowance, and
   // its covariance with the lag: the fit's correlation on the fit's part
   // (taken with the lag's base, the fit's or the per-period scatter's),
@@ -810,6 +844,9 @@ void honestUncertainty(PointWork& work) {
   r.gainStd = std::sqrt(joint->gainStd * joint->gainStd + addedGain2);
   r.periodicGainInflation = joint->gainStd > 0.0 ? addedGain2 / (joint->gainStd * joint->gainStd) : 0.0;
   r.gainLagCovMs = joint->gainLagCorrelation * joint->gainStd * baseMs + 1e3 * gain * addedCross / w;
+  // A lag variance lowered below its base keeps the pair a covariance matrix.
+  const double most = r.gainStd * r.lagStdMs;
+  r.gainLagCovMs = std::clamp(r.gainLagCovMs, -most, most);
 }
 
 // The breakdown into IMU and gyro delay, and the refusal of numbers the fits

@@ -67,9 +67,14 @@ struct TestPointResult {
   // show it is too small (lagStdSource says which).
   double lagMs = 0.0, lagStdMs = 0.0;
   double fitLagStdMs = 0.0;        // the joint fit's standard error
-  double periodicInflation = 0.0;  // variance added by errors that repeat every period (validity.h), / fit's
+  double periodicInflation = 0.0;  // variance added by errors that repeat every period (validity.h), / fit's;
+                                   // negative when they cancel between periods (at most -0.9)
   double trackLagStdMs = 0.0;      // per-period scatter / sqrt(periods)
-  std::string lagStdSource = "fit";  // "fit", "fit, commensurate sampling", "per-period scatter"
+  // When errors that cancel between periods lowered lagStdMs (a negative
+  // periodicInflation): the σ before, which uncertainty_below_bound judges
+  // (the bound's white noise model does not see that cancelling); else 0.
+  double lagStdBeforeCancellingMs = 0.0;
+  std::string lagStdSource = "fit";  // "fit", "fit, with errors that repeat every period", "per-period scatter", ...
   double crlbMs = 0.0;                 // Cramer-Rao bound on the lag for the measured noise
   double stdOverCrlb = 0.0;
   double imuDelayMs = 0.0, imuDelayStdMs = 0.0;

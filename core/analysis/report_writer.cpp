@@ -250,6 +250,7 @@ std::string formatReportJson(const DelayReport& report, const ReportContext& con
                {"fit_lag_std_ms", p.fitLagStdMs},
                {"track_lag_std_ms", p.trackLagStdMs},
                {"periodic_inflation", p.periodicInflation},
+               {"lag_std_before_cancelling_ms", p.lagStdBeforeCancellingMs},
                {"gyro_sign", p.gyroSign},
                {"timing",
                 {{"rate_error_ppm", p.rateErrorPpm},

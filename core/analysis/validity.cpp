@@ -234,6 +234,48 @@ double harmonicAmplitude(const std::vector<double>& timeS, const std::vector<dou
   return std::sqrt(sumSq);
 }
 
+namespace {
+
+// The phase's repeating part when it is negative (periodicErrorCovariance's
+// fold, validity.h): an error that depends on the angle alone, read at
+// phases that drift slowly through it (quantisation, stamps a few ppm off
+// the swing), has no cos(psi) component in the limit, since the rising and
+// the falling half of the swing read the same angles with opposite cos(psi);
+// the fold then sums to less than the white noise model carries. Its total,
+// sum_j c_j^2 (D_j - D_(j+B/2))^2 (each bin with the one half a period on,
+// which an even B pairs), is a sum of squares: a chi^2 of nu degrees of
+// freedom (from the bins' weights; less the harmonics taken out), whose
+// white part is (1 - eps) sum_j c_j^2 S_j. Returned: the total at its
+// one-sided 69 % upper bound (half a sigma, Wilson-Hilferty) less that
+// white part, when negative and nu >= 8; 0 otherwise (too few bins to
+// vouch for less than white: the white model stands). In the fold's units
+// (times periodicErrorCovariance's scale).
+double phaseBelowWhite(const std::vector<double>& sum, const std::vector<double>& sumSq,
+                       const std::vector<double>& cosOf, const std::vector<double>& sinOf, double s0, double c0,
+                       std::size_t half, int harmonics, double eps) {
+  const std::size_t bins = sum.size();
+  const std::size_t terms = half > 0 ? half : bins;
+  double total = 0.0, white = 0.0, whiteSq = 0.0;
+  for (std::size_t j = 0; j < terms; ++j) {
+    const double c = c0 * cosOf[j] - s0 * sinOf[j], w = c * c;
+    const double d = half > 0 ? sum[j] - sum[j + half] : sum[j];
+    const double v = w * (half > 0 ? sumSq[j] + sumSq[j + half] : sumSq[j]);
+    total += w * d * d;
+    white += v;
+    whiteSq += v * v;
+  }
+  if (!(white > 0.0) || !(whiteSq > 0.0)) return 0.0;
+  const double binsD = static_cast<double>(bins);
+  const double nu = white * white / whiteSq * (binsD - 1.0 - 2.0 * harmonics) / binsD;
+  if (!(nu >= 8.0)) return 0.0;
+  // chi^2_nu's 31 % quantile, z = -0.5 (Wilson-Hilferty).
+  const double k = 2.0 / (9.0 * nu), lower = nu * std::pow(1.0 - k - 0.5 * std::sqrt(k), 3);
+  const double upper = total * nu / lower;
+  return std::min(0.0, upper - (1.0 - eps) * white);
+}
+
+}  // namespace
+
 PeriodicErrorCovariance periodicErrorCovariance(const std::vector<double>& t, const std::vector<double>& r,
                                                 double w, double a, double b, SampleStream stream) {
   PeriodicErrorCovariance out;
@@ -335,6 +377,13 @@ PeriodicErrorCovariance periodicErrorCovariance(const std::vector<double>& t, co
   out.amplitude = psd(0, 0);
   out.phase = psd(1, 1);
   out.cross = psd(0, 1);
+  if (qcc < 0.0) {
+    const double lowered = phaseBelowWhite(sum, sumSq, cosOf, sinOf, s0, c0, half, harmonics, eps);
+    if (lowered < 0.0) {
+      out.phase = lowered * scale;
+      out.cross = 0.0;  // no covariance with a variance taken below the white model's
+    }
+  }
   return out;
 }
 

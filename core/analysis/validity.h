@@ -92,11 +92,17 @@ double harmonicAmplitude(const std::vector<double>& timeS, const std::vector<dou
 // the period are taken out of the folded sums: a table harmonic repeats
 // exactly but the fundamental's estimate is not biased by it; the white
 // error's small share there is restored). About 0 for incommensurate stamps;
-// clipped to a positive semi-definite matrix. One pass over the residual;
-// timeS is the fit's time axis.
+// clipped to a positive semi-definite matrix, but for the phase: an error
+// that depends on the angle alone (quantisation) has no cos(psi) part where
+// the swing reads its angles rising and falling alike, so where stamps drift
+// slowly through it (a few ppm off the swing, or incommensurate) the phase
+// errs less than the white model says. A negative phase fold is then kept,
+// at its one-sided 69 % upper bound (half a sigma) and only with 8 or more
+// degrees of freedom (phaseBelowWhite, validity.cpp), and the cross term is
+// 0. One pass over the residual; timeS is the fit's time axis.
 struct PeriodicErrorCovariance {
   double amplitude = 0.0;  // variance added to dA / A (1)
-  double phase = 0.0;      // variance added to dtheta (rad^2)
+  double phase = 0.0;      // variance added to dtheta (rad^2); negative: removed from the white model's
   double cross = 0.0;      // their covariance (rad)
 };
 PeriodicErrorCovariance periodicErrorCovariance(const std::vector<double>& timeS, const std::vector<double>& residual,

@@ -260,13 +260,13 @@
     </message>
     <message>
         <location line="+21"/>
-        <location line="+171"/>
+        <location line="+176"/>
         <location line="+89"/>
         <source>Hz</source>
         <translation>Hz</translation>
     </message>
     <message>
-        <location line="-258"/>
+        <location line="-263"/>
         <source>dB</source>
         <translation>dB</translation>
     </message>
@@ -407,7 +407,7 @@
         <translation>尚无频率响应。</translation>
     </message>
     <message>
-        <location line="+68"/>
+        <location line="+73"/>
         <source>not admissible: %1</source>
         <translation>不可接受：%1</translation>
     </message>
@@ -6320,7 +6320,7 @@ result analysed %2</source>
 <context>
     <name>core_text</name>
     <message>
-        <location filename="../../ui/core_text.cpp" line="+22"/>
+        <location filename="../../ui/core_text.cpp" line="+25"/>
         <source>table</source>
         <translation>转台</translation>
     </message>
@@ -8171,6 +8171,16 @@ result analysed %2</source>
     </message>
     <message>
         <location line="+1"/>
+        <source>fit, less the errors that cancel between periods</source>
+        <translation>拟合，扣除周期之间相互抵消的误差</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>per-period scatter, less the errors that cancel between periods</source>
+        <translation>逐周期离散，扣除周期之间相互抵消的误差</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>per-period scatter</source>
         <translation>逐周期离散</translation>
     </message>
@@ -8343,6 +8353,11 @@ result analysed %2</source>
         <location line="+1"/>
         <source>σ %1 ms is %2 of the Cramér–Rao bound %3 ms (%4, %5 degrees of freedom; at least %6 expected)</source>
         <translation>σ %1 ms 为克拉美–罗界 %3 ms 的 %2 倍（%4，自由度 %5；应至少为 %6）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>σ %1 ms is %2 of the Cramér–Rao bound %3 ms; before the errors that cancel between periods, which the bound&apos;s white noise does not see, %4 ms, %5 of it (%6, %7 degrees of freedom; at least %8 expected)</source>
+        <translation>σ %1 ms 为克拉美–罗界 %3 ms 的 %2 倍；扣除周期之间相互抵消的误差（该界的白噪声模型看不到）之前为 %4 ms，即该界的 %5 倍（%6，自由度 %7；应至少为 %8）</translation>
     </message>
     <message>
         <location line="+1"/>

@@ -22,6 +22,7 @@ struct SyntheticSpec {
   double tableQuantumDeg = 1e-4;   // rounding of encoder readings (0 = none)
   double pulseEquivalentDeg = 5e-5; // gyro pulse quantisation (0 = none)
   double arwDegPerSqrtS = 0.0;
+  double rateWalkDegPerS = 0.0;     // a bias that wanders (deg/s per sqrt(s)): noise slower than a period
   double startS = 3.0;
   unsigned seed = 1;
 };
@@ -43,13 +44,15 @@ inline TestPointData makeSynthetic(const SyntheticSpec& s) {
     ts.angleDeg[1] = y;
     d.table.push_back(ts);
   }
-  double arw = 0.0, lastT = s.startS, lastSensed = 0.0;
+  double arw = 0.0, bias = 0.0, biasAngle = 0.0, lastT = s.startS, lastSensed = 0.0;
   long long lastCount = 0;
   bool first = true;
   for (double t = s.startS + 0.3e-3; t < s.startS + s.durationS; t += 2e-3) {
     arw += s.arwDegPerSqrtS * std::sqrt(t - lastT) * normal(rng);
+    biasAngle += bias * (t - lastT);
+    if (s.rateWalkDegPerS > 0.0) bias += s.rateWalkDegPerS * std::sqrt(t - lastT) * normal(rng);
     lastT = t;
-    const double sensed = s.gain * motion(t - s.lagS) + s.trendDegPerS * t + arw;
+    const double sensed = s.gain * motion(t - s.lagS) + s.trendDegPerS * t + arw + biasAngle;
     double increment = sensed - lastSensed;
     if (s.pulseEquivalentDeg > 0) {
       const auto count = static_cast<long long>(std::floor(sensed / s.pulseEquivalentDeg));

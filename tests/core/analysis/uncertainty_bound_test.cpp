@@ -42,6 +42,23 @@ TEST(UncertaintyBelowBound, ASigmaSixTimesBelowTheBoundFails) {
   EXPECT_EQ(c.id, "uncertainty_below_bound");
 }
 
+// Errors that cancel between periods lowered σ below the bound: the bound's
+// white noise model cannot see them, so the σ before is judged, and both
+// are said. A σ already below the bound before them still fails.
+TEST(UncertaintyBelowBound, ErrorsThatCancelBetweenPeriodsAreJudgedBeforeThem) {
+  auto p = pointWith(0.3e-3, 1e-3, "fit, less the errors that cancel between periods", 200);
+  p.lagStdBeforeCancellingMs = 0.9e-3;
+  const auto c = uncertaintyBelowBoundCheck(p);
+  EXPECT_TRUE(c.passed) << c.detail;
+  EXPECT_NE(c.detail.find("σ 0.0003 ms is 0.30 of the Cramér–Rao bound 0.001 ms; before the errors that cancel "
+                          "between periods, which the bound's white noise does not see, 0.0009 ms, 0.90 of it (fit, "
+                          "less the errors that cancel between periods, 89992 degrees of freedom"),
+            std::string::npos)
+      << c.detail;
+  p.lagStdBeforeCancellingMs = 0.33e-3;
+  EXPECT_FALSE(uncertaintyBelowBoundCheck(p).passed);
+}
+
 TEST(UncertaintyBelowBound, WhatTheIndependentMonteCarloSawPasses) {
   // The lowest σ/CRLB of 197 independent sessions with right z-scores: 0.54.
   EXPECT_TRUE(uncertaintyBelowBoundCheck(pointWith(0.54e-3, 1e-3, "fit", 14)).passed);
