@@ -407,12 +407,8 @@ class TablePanelTest : public QObject {
     fogtest::FakeTableController fake;
     QVERIFY(fake.listening());
     TablePanel panel;
-    panel.show();
-    panel.setAddressSource([&] { return QString::fromStdString(fake.address()); });
-    panel.connectButton()->click();
-    QTRY_VERIFY_WITH_TIMEOUT(ready(panel), 10000);
-    // The panel's link, and the emergency line's own connection, armed once the controller answered.
-    QTRY_COMPARE_WITH_TIMEOUT(fake.connections(), 2, 5000);
+    connectToFake(panel, fake);
+    if (QTest::currentTestFailed()) return;
 
     GuiTicks ticks;
     fake.hang();
@@ -441,11 +437,8 @@ class TablePanelTest : public QObject {
     fogtest::FakeTableController fake;
     QVERIFY(fake.listening());
     TablePanel panel;
-    panel.show();
-    panel.setAddressSource([&] { return QString::fromStdString(fake.address()); });
-    panel.connectButton()->click();
-    QTRY_VERIFY_WITH_TIMEOUT(ready(panel), 10000);
-    QTRY_COMPARE_WITH_TIMEOUT(fake.connections(), 2, 5000);
+    connectToFake(panel, fake);
+    if (QTest::currentTestFailed()) return;
 
     GuiTicks ticks;
     fake.hang();
@@ -505,6 +498,17 @@ class TablePanelTest : public QObject {
   }
 
  private:
+  // Shows the panel, connects it to the fake controller and waits until the
+  // panel's link and the emergency line's own connection (armed once the
+  // controller answered) are both up.
+  static void connectToFake(TablePanel& panel, fogtest::FakeTableController& fake) {
+    panel.show();
+    panel.setAddressSource([&fake] { return QString::fromStdString(fake.address()); });
+    panel.connectButton()->click();
+    QTRY_VERIFY_WITH_TIMEOUT(ready(panel), 10000);
+    QTRY_COMPARE_WITH_TIMEOUT(fake.connections(), 2, 5000);
+  }
+
   // fogbench-table-emu on a free TCP port, no board; it stays up while the
   // panel reconnects (--linger-s). Its address, or empty.
   static QString startEmulator(QProcess& emu) {
