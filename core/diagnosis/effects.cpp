@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "core/common/units.h"
+#include "core/model/gyro_filters.h"
 #include "core/model/random.h"
 
 namespace fog::diagnosis {
@@ -191,81 +192,21 @@ class Misalignment final : public model::Effect {
   std::array<std::array<double, kAxisCount>, kAxisCount> m_{};
 };
 
-// The gyro output is a first-order low-pass of time constant tau of the
-// sensed rate, a continuous-time filter: y' = (x - y) / tau on the sensed
-// angle (filtering the angle and the rate are the same LTI operation). The
-// simulator gives the angle every 2 ms; between samples it is taken as the
-// polynomial through the last six, and the filter is solved exactly for it:
-// y(t1) = p(t1) + exp(-h/tau) (y(t0) - p(t0)) with the particular solution
-// p = x - tau x' + tau^2 x'' - ... The delay at low frequency is tau.
+// The gyro's output through a first-order low-pass of the sensed rate, a
+// continuous-time filter: y' = (x - y) / tau on the sensed angle (filtering
+// the angle and the rate are the same LTI operation), the chain's own
+// first-order filter (model::FirstOrderFilter: solved exactly for the
+// polynomial through the last six 2-ms samples, whose error is of order
+// (w h)^6 of the swing). The delay at low frequency is tau.
 class FirstOrderLag final : public model::Effect {
  public:
   bool changesTableMotion() const override { return false; }
-  explicit FirstOrderLag(double tauMs) : tau_(tauMs * 1e-3) {}
+  explicit FirstOrderLag(double tauMs) : filter_(tauMs * 1e-3) {}
   std::string name() const override { return "first_order_lag"; }
-  // The exact response of the low-pass to the input that the polynomial
-  // through the last kNodes samples draws over the last interval (of lower
-  // degree at the start). The interpolation's error is of order (w h)^kNodes
-  // of the swing: 11 Hz and h = 2 ms gave 1.7e-4 with three nodes, which a
-  // 20-point response resolves (chi^2 6 300 on 37 dof), and still put T 6
-  // sigma off with four; with six it is below 1e-7.
-  void onGyroAngle(const model::GyroContext& c, Angles& sensed) override {
-    if (tau_ <= 0.0) return;
-    const double t = c.timeS;
-    if (kept_ == 0 || !(t > time_[0])) {
-      if (kept_ == 0) y_ = sensed;  // at rest before the first sample
-      kept_ = 1, time_[0] = t, x_[0] = sensed;
-      sensed = y_;
-      return;
-    }
-    const double h = t - time_[0];
-    const double a = std::exp(-h / tau_);
-    // Nodes in s = time - t1: the new sample at h, then the kept ones (0, ...).
-    const int n = kept_ + 1;
-    double s[kNodes];
-    s[0] = h;
-    for (int k = 1; k < n; ++k) s[k] = time_[k - 1] - time_[0];
-    for (int i = 0; i < kAxisCount; ++i) {
-      double v[kNodes];
-      v[0] = sensed[i];
-      for (int k = 1; k < n; ++k) v[k] = x_[k - 1][i];
-      // Newton's divided differences, then the monomial coefficients m of p(s).
-      for (int k = 1; k < n; ++k)
-        for (int j = n - 1; j >= k; --j) v[j] = (v[j] - v[j - 1]) / (s[j] - s[j - k]);
-      double m[kNodes] = {};
-      for (int k = n - 1; k >= 0; --k) {  // m <- m (s - s_k) + v_k
-        for (int j = kNodes - 1; j >= 1; --j) m[j] = m[j - 1] - s[k] * m[j];
-        m[0] = -s[k] * m[0] + v[k];
-      }
-      // The particular solution of tau y' + y = p: sum over k of (-tau)^k p^(k).
-      auto particular = [&](double x) {
-        double d[kNodes];
-        std::copy(m, m + kNodes, d);
-        double sum = 0.0, weight = 1.0;
-        for (int order = 0; order < n; ++order) {
-          double value = 0.0;
-          for (int j = n - 1 - order; j >= 0; --j) value = value * x + d[j];
-          sum += weight * value;
-          weight *= -tau_;
-          for (int j = 0; j + 1 < kNodes; ++j) d[j] = static_cast<double>(j + 1) * d[j + 1];  // d <- d'
-          d[kNodes - 1] = 0.0;
-        }
-        return sum;
-      };
-      y_[i] = particular(h) + a * (y_[i] - particular(0.0));
-    }
-    for (int k = kNodes - 2; k >= 1; --k) time_[k] = time_[k - 1], x_[k] = x_[k - 1];
-    time_[0] = t, x_[0] = sensed;
-    kept_ = std::min(kept_ + 1, kNodes - 1);
-    sensed = y_;
-  }
+  void onGyroAngle(const model::GyroContext& c, Angles& sensed) override { filter_.apply(c.timeS, sensed); }
 
  private:
-  static constexpr int kNodes = 6;
-  double tau_;
-  int kept_ = 0;                  // samples kept: 1 .. kNodes - 1, newest first
-  double time_[kNodes - 1] = {};  // their times
-  Angles x_[kNodes - 1]{}, y_{};
+  model::FirstOrderFilter filter_;
 };
 
 // The table's motion itself is distorted, as a pure function of the angle

@@ -35,20 +35,52 @@ bool SampleHistory::push(double t, const AxisAngles& x, std::array<QuadraticSegm
 }
 
 void FirstOrderFilter::apply(double t, AxisAngles& x) {
-  const bool first = history_.samples() == 0;
-  std::array<QuadraticSegment, kAxisCount> seg;
-  if (!history_.push(t, x, seg)) {
-    if (first) y_ = x;  // at rest before the first sample
+  if (tau_ <= 0.0) return;
+  if (kept_ == 0 || !(t > time_[0])) {
+    if (kept_ == 0) y_ = x;  // at rest before the first sample
+    kept_ = 1, time_[0] = t, x_[0] = x;
     x = y_;
     return;
   }
-  const double a = std::exp(-seg[0].h / tau_);
+  const double h = t - time_[0];
+  const double a = std::exp(-h / tau_);
+  // Nodes in s = time - t1: the new sample at h, then the kept ones (0, ...).
+  const int n = kept_ + 1;
+  double s[kNodes];
+  s[0] = h;
+  for (int k = 1; k < n; ++k) s[k] = time_[k - 1] - time_[0];
   for (int i = 0; i < kAxisCount; ++i) {
-    const QuadraticSegment& s = seg[i];
-    const double pStart = s.x1 - tau_ * s.b + 2.0 * s.q * tau_ * tau_;
-    const double pEnd = s.x - tau_ * (s.b + 2.0 * s.q * s.h) + 2.0 * s.q * tau_ * tau_;
-    y_[i] = pEnd + a * (y_[i] - pStart);
+    double v[kNodes];
+    v[0] = x[i];
+    for (int k = 1; k < n; ++k) v[k] = x_[k - 1][i];
+    // Newton's divided differences, then the monomial coefficients m of p(s).
+    for (int k = 1; k < n; ++k)
+      for (int j = n - 1; j >= k; --j) v[j] = (v[j] - v[j - 1]) / (s[j] - s[j - k]);
+    double m[kNodes] = {};
+    for (int k = n - 1; k >= 0; --k) {  // m <- m (s - s_k) + v_k
+      for (int j = kNodes - 1; j >= 1; --j) m[j] = m[j - 1] - s[k] * m[j];
+      m[0] = -s[k] * m[0] + v[k];
+    }
+    // The particular solution of tau y' + y = p: sum over k of (-tau)^k p^(k).
+    auto particular = [&](double at) {
+      double d[kNodes];
+      std::copy(m, m + kNodes, d);
+      double sum = 0.0, weight = 1.0;
+      for (int order = 0; order < n; ++order) {
+        double value = 0.0;
+        for (int j = n - 1 - order; j >= 0; --j) value = value * at + d[j];
+        sum += weight * value;
+        weight *= -tau_;
+        for (int j = 0; j + 1 < kNodes; ++j) d[j] = static_cast<double>(j + 1) * d[j + 1];  // d <- d'
+        d[kNodes - 1] = 0.0;
+      }
+      return sum;
+    };
+    y_[i] = particular(h) + a * (y_[i] - particular(0.0));
   }
+  for (int k = kNodes - 2; k >= 1; --k) time_[k] = time_[k - 1], x_[k] = x_[k - 1];
+  time_[0] = t, x_[0] = x;
+  kept_ = std::min(kept_ + 1, kNodes - 1);
   x = y_;
 }
 

@@ -245,6 +245,42 @@ class DeskTest : public QObject {
     QVERIFY2(window.contains(inWindow(table)), "the delay table is outside the window");
   }
 
+  // Results fit the screen without scrolling at either size: the view's
+  // scroll area needs no scroll bar (issue 41: 18 px at 1024 x 700, from the
+  // frequency response page's minimum).
+  void resultsNeedNoScrolling_data() {
+    QTest::addColumn<QString>("session");
+    QTest::addColumn<bool>("response");
+    QTest::newRow("one point") << "desk.fbs" << false;
+    QTest::newRow("frequency response, its Bode page") << "response.fbs" << true;
+  }
+  void resultsNeedNoScrolling() {
+    QFETCH(QString, session);
+    QFETCH(bool, response);
+    QSignalSpy opened(w_.get(), &MainWindow::sessionOpened);
+    w_->openSession(dir_.filePath(session));
+    QTRY_VERIFY_WITH_TIMEOUT(!opened.isEmpty(), 30000);
+    w_->showView(MainWindow::kResults);
+    if (response) w_->resultView()->leftTabs()->setCurrentWidget(w_->resultView()->bodeView());
+    settle();
+    auto* tabs = w_->findChild<QTabWidget*>("viewTabs");
+    auto* area = qobject_cast<QScrollArea*>(tabs->currentWidget());
+    QVERIFY(area);
+    QVERIFY2(area->verticalScrollBar()->maximum() == 0 && area->horizontalScrollBar()->maximum() == 0,
+             qPrintable(QString("Results scroll %1 px down and %2 px sideways in a %3x%4 window (view minimum %5x%6)")
+                            .arg(area->verticalScrollBar()->maximum())
+                            .arg(area->horizontalScrollBar()->maximum())
+                            .arg(w_->width()).arg(w_->height())
+                            .arg(area->widget()->minimumSizeHint().width())
+                            .arg(area->widget()->minimumSizeHint().height())));
+    if (response) {  // the other tests review the one-point session
+      QSignalSpy back(w_.get(), &MainWindow::sessionOpened);
+      w_->openSession(dir_.filePath("desk.fbs"));
+      QTRY_VERIFY_WITH_TIMEOUT(!back.isEmpty(), 30000);
+      settle();
+    }
+  }
+
   // Diagnosis: its plots keep the room their rows of labels need; a small
   // window scrolls the view instead of squeezing them.
   void diagnosisPlotsKeepTheirRoom() {

@@ -177,19 +177,18 @@ TEST(ChainConstants, FirstOrderFilterPhaseIsAtanOmegaT) {
   const double w = kTwoPi * 2.0 * (1.0 + off.turntable.frequencyErrorPpm * 1e-6), wt = w * 3e-3;
   print("first order 3 ms at 2 Hz: added lag", r.lagS * 1e6, std::atan(wt) / w * 1e6, "us");
   print("first order: gain", r.gain, 1.0 / std::sqrt(1.0 + wt * wt), "");
-  // The filter takes the angle between 2-ms samples as the quadratic
-  // through the last three: its error is of order (w h)^3, 0.05 us here.
-  EXPECT_NEAR(r.lagS, std::atan(wt) / w, 0.1e-6);
+  // The filter takes the angle between 2-ms samples as the polynomial
+  // through the last six: its error is of order (w h)^6, far below 0.01 us.
+  EXPECT_NEAR(r.lagS, std::atan(wt) / w, 0.01e-6);
   EXPECT_NEAR(r.gain, 1.0 / std::sqrt(1.0 + wt * wt), 2e-6);
   EXPECT_DOUBLE_EQ(on.trueGyroDelayS(), on.fog.ownDelayS() + 3e-3);
 }
 
 // The chain's first-order filter and the diagnosis library's first_order_lag
-// are the same continuous filter, each solved exactly for its interpolation
-// of the 2-ms samples (the chain's a quadratic through three, the library's
-// the polynomial through six): alone in the chain, at 1 Hz, the two give the
-// same gyro angle to within one pulse at every frame (the quadratic's error
-// is about (w h)^3 / 16 of the swing, 4e-7 deg here, under the 5e-5-deg pulse).
+// are one filter (model::FirstOrderFilter, solved exactly for the polynomial
+// through the last six 2-ms samples): alone in the chain, at 1 Hz, the two
+// give the same gyro angle at every frame. (With the chain's filter on the
+// quadratic through three, they were up to a pulse apart.)
 TEST(ChainConstants, FirstOrderFilterIsTheLibrarysFirstOrderLag) {
   const TestPlan plan = swing(Axis::kY, 1.0, 3.0, 6.0);
   SimConfig nominal;
@@ -213,7 +212,7 @@ TEST(ChainConstants, FirstOrderFilterIsTheLibrarysFirstOrderLag) {
     worst = std::max(worst, std::abs(sumA - sumB));
   }
   std::printf("chain filter against the library's lag: at most %.3g deg apart (pulse %.3g deg)\n", worst, pulse);
-  EXPECT_LE(worst, pulse * 1.000001);
+  EXPECT_EQ(worst, 0.0);
 }
 
 // A second-order rate filter: phase atan2(2 zeta r, 1 - r^2), gain
