@@ -834,7 +834,8 @@ void honestUncertainty(PointWork& work) {
   // depends on the angle alone, but not by more than the fold can show.
   const double stdMs = std::sqrt(std::max(baseMs * baseMs + addedMs2, 0.1 * baseMs * baseMs));
   r.lagStdMs = stdMs;
-  if (stdMs < 0.95 * baseMs) r.lagStdBeforeCancellingMs = baseMs;  // lowered by more than a tenth of the variance
+  // The σ before, kept where lagStdSource names the cancelling (by the same test).
+  if (r.periodicInflation < -0.1) r.lagStdBeforeCancellingMs = baseMs;
   // The gain: the joint fit's standard error with the same allowance, and
   // its covariance with the lag: the fit's correlation on the fit's part
   // (taken with the lag's base, the fit's or the per-period scatter's),

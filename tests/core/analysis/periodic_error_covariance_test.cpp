@@ -240,6 +240,13 @@ TEST(PeriodicErrorCovariance, AnErrorThatFlipsEveryHalfPeriodCountsTwice) {
   EXPECT_NEAR(white + meanP, scatter(1, 1), 0.3 * scatter(1, 1));
 }
 
+// std(z) about 0: the root mean square of the z-scores.
+double rmsOf(const std::vector<double>& z) {
+  double s = 0.0;
+  for (double x : z) s += x * x;
+  return std::sqrt(s / static_cast<double>(z.size()));
+}
+
 // Quantisation read at stamps a few ppm off the swing: each sample of a
 // period drifts slowly through the quantum grid over the record, so its
 // error changes sign from period to period, and the rising and the falling
@@ -282,11 +289,6 @@ TEST(PeriodicErrorCovariance, QuantisationThatDriftsThroughItsGridCancelsInThePh
     zPhaseClipped.push_back(e[1] / std::sqrt(white + std::max(c.phase, 0.0)));
     zAmplitude.push_back(e[0] / std::sqrt(white + c.amplitude));
   }
-  auto rmsOf = [](const std::vector<double>& v) {
-    double s = 0.0;
-    for (double x : v) s += x * x;
-    return std::sqrt(s / static_cast<double>(v.size()));
-  };
   std::printf("  std(z) phase %.2f (the estimate clipped at 0: %.2f), amplitude %.2f; phase lowered in %d of %d draws\n",
               rmsOf(zPhase), rmsOf(zPhaseClipped), rmsOf(zAmplitude), lowered, kDraws);
   // 300 draws know std(z) to about 4 % (1 sigma).
@@ -315,9 +317,7 @@ TEST(PeriodicErrorCovariance, WhiteNoiseIsNotTakenBelowItself) {
     for (std::size_t i = 0; i < g.size(); ++i) r[i] = y[i] - std::sin(g.psi(i));
     z.push_back(e[1] / std::sqrt(g.white(1e-6) + estimate(g, r).phase));
   }
-  double s = 0.0;
-  for (double x : z) s += x * x;
-  const double stdZ = std::sqrt(s / kDraws);
+  const double stdZ = rmsOf(z);
   std::printf("  std(z) phase %.2f over %d draws\n", stdZ, kDraws);
   EXPECT_GT(stdZ, 0.85);
   EXPECT_LT(stdZ, 1.15);
