@@ -16,6 +16,7 @@ import os
 import resource
 import signal
 import struct
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -154,6 +155,20 @@ def main():
     args = ap.parse_args()
     cli = args.cli
     work = tempfile.mkdtemp(prefix="fog_hdf5_")
+    status = 1
+    try:
+        status = check_in(cli, args, work)
+        return status
+    finally:
+        # A passing run leaves nothing behind (its session, CSV and HDF5 are
+        # about 150 MB); a failing or interrupted one keeps them for a look.
+        if status == 0:
+            shutil.rmtree(work, ignore_errors=True)
+        else:
+            print(f"hdf5 round trip: the files are kept in {work}", file=sys.stderr)
+
+
+def check_in(cli, args, work):
     run = lambda *a, **k: subprocess.run([cli, *a], cwd=work, capture_output=True, text=True, **k)
 
     r = run("run", "--preset", args.preset, "--seed", args.seed, "--out", "S.fbs", "--imu-serial", "SN-5",
